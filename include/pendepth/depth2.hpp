@@ -1,0 +1,109 @@
+// pendepth — 2D intersection depth of convex polygons (DHS §2-§3).
+//
+// Notation: P fixed, Q moving, placed at translation t (Q + t). M = P ⊕ (−Q); the interiors of
+// P and Q + t overlap ⇔ t ∈ int M (DHS Lemma 2.1). n = |P|, m = |Q|.
+//   σ_d(t): exit parameter of the ray t + s·d̂ from int M (0 when t ∉ int M);
+//   σ(t)  : dist(t, ∂M) for t ∈ int M, else 0.
+// Touching (t ∈ ∂M) is not overlapping: depth 0. All results are finite; queries on valid shapes
+// never throw except for an invalid direction (zero or non-finite d), which throws InvalidInput.
+#pragma once
+
+#include <pendepth/geometry.hpp>
+#include <pendepth/polygon.hpp>
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace pendepth {
+
+enum class FeatureKind { None, Vertex, Edge };
+
+/// A vertex or an edge of a normal-form polygon. Edge i joins vertex i and vertex i+1 (cyclic).
+/// Indices refer to the normal form (ConvexPolygon::operator[]); ConvexPolygon::input_index maps
+/// vertices back to the ring as given.
+struct Feature {
+  FeatureKind kind = FeatureKind::None;
+  int index = -1;
+  friend bool operator==(const Feature&, const Feature&) = default;
+};
+
+enum class DepthKind { Minimum, Directional, Separation };
+
+/// Result of a 2D depth query. When the interiors do not overlap: depth 0, translation 0,
+/// normal 0, overlapping false, features None, witnesses 0.
+struct Depth2 {
+  double depth = 0;          ///< length of the translation, input units, >= 0
+  Vec2 translation{0, 0};    ///< move to apply to Q (after its placement t) to separate
+  Vec2 normal{0, 0};         ///< unit direction of `translation` (d̂ for σ_d); outward normal of M
+                             ///< at the exit point for σ
+  Vec2 witness_p{0, 0};      ///< point of ∂P touching the moved Q (world frame)
+  Vec2 witness_q{0, 0};      ///< point of ∂(Q + t + translation) touching P (world frame)
+  Feature feature_p;         ///< feature of P at the contact after the move
+  Feature feature_q;         ///< feature of Q at the contact after the move
+  bool overlapping = false;  ///< interiors of P and Q + t overlap
+  DepthKind kind = DepthKind::Minimum;
+};
+
+/// σ_d: smallest s >= 0 such that P and Q + t + s·d̂ have disjoint interiors, by prune-and-search
+/// on the implicit front chains of P and −Q (DHS §3; notes §2.7). O(log n + log m), M never built.
+/// Throws InvalidInput if d is zero or non-finite, or t is non-finite.
+Depth2 directional_depth(const ConvexPolygon& P, const ConvexPolygon& Q, const Vec2& t, const Vec2& d);
+
+/// Complete separation along d (DHS §6): smallest s such that Q + t + s'·d̂ is interior-disjoint
+/// from P for all s' >= s. For two convex polygons this equals σ_d (M is convex, so the ray leaves
+/// M once); returned with kind Separation. O(log n + log m).
+Depth2 separation_depth(const ConvexPolygon& P, const ConvexPolygon& Q, const Vec2& t, const Vec2& d);
+
+/// σ: the shortest separating translation, by merging the edges of P and −Q in slope order and
+/// taking the nearest edge line of M (DHS §3). O(n + m). Throws InvalidInput if t is non-finite.
+Depth2 minimum_depth(const ConvexPolygon& P, const ConvexPolygon& Q, const Vec2& t);
+
+/// The explicit M = P ⊕ (−Q) in normal form (CCW, strictly convex, vertex 0 lowest-leftmost),
+/// vertices rounded to double. O(n + m). For export and drawing; queries never use it.
+std::vector<Vec2> minkowski_difference(const ConvexPolygon& P, const ConvexPolygon& Q);
+
+/// Preprocessed depth field for a fixed pair (DHS Theorem 3.2): the medial axis of M and a
+/// point-location structure over it (centroid decomposition of the medial-axis tree, 3-sector
+/// tests; notes §3). Build O((n + m) log(n + m)); query O(log(n + m)).
+/// The field keeps copies of what it needs; P and Q may be destroyed afterwards.
+class DepthField {
+ public:
+  DepthField(const ConvexPolygon& P, const ConvexPolygon& Q);
+  ~DepthField();
+  DepthField(DepthField&&) noexcept;
+  DepthField& operator=(DepthField&&) noexcept;
+
+  /// σ(t), same contract and result as minimum_depth(P, Q, t). O(log(n + m)).
+  Depth2 minimum(const Vec2& t) const;
+
+  /// Number of edges of M and of medial-axis nodes (for tests and benchmarks).
+  std::size_t edge_count() const;
+  std::size_t node_count() const;
+  /// Maximum number of point-location steps any query can take.
+  std::size_t max_search_depth() const;
+
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+/// Per-pair query object: validate once, preprocess once, query many (DESIGN.md §2).
+/// minimum() uses the DepthField (O(log)), along()/separation() the O(log n + log m) search.
+class DepthQuery2 {
+ public:
+  DepthQuery2(ConvexPolygon P, ConvexPolygon Q);
+  Depth2 minimum(const Vec2& t) const { return field_.minimum(t); }
+  Depth2 along(const Vec2& t, const Vec2& d) const { return directional_depth(P_, Q_, t, d); }
+  Depth2 separation(const Vec2& t, const Vec2& d) const { return separation_depth(P_, Q_, t, d); }
+  const ConvexPolygon& P() const { return P_; }
+  const ConvexPolygon& Q() const { return Q_; }
+  const DepthField& field() const { return field_; }
+
+ private:
+  ConvexPolygon P_, Q_;
+  DepthField field_;
+};
+
+}  // namespace pendepth

@@ -1,0 +1,56 @@
+// pendepth — validated 2D shapes.
+//
+// ConvexPolygon is the normal form every O(log n) search relies on (DESIGN.md §1, notes §2.1):
+// counter-clockwise, no duplicate or collinear vertices (strictly convex), vertex 0 the lowest
+// then leftmost. Then edge vectors e_i = v_{i+1} - v_i have strictly increasing polar angle in
+// [0, 2*pi), and extreme-vertex / front-chain questions are binary searches by exact angle order.
+#pragma once
+
+#include <pendepth/geometry.hpp>
+
+#include <cstddef>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace pendepth {
+
+class ConvexPolygon {
+ public:
+  /// Validates a ring (either orientation, closing vertex optional) and stores its normal form.
+  /// Consecutive duplicate vertices and collinear pass-through vertices are dropped.
+  /// Throws InvalidInput, naming `name` and the input vertex index (0-based), for: fewer than 3
+  /// distinct points, non-finite coordinates, zero area, a reflex vertex (non-convex), a spike
+  /// (edge folding back on itself), self-intersection (ring winding more than once). O(n).
+  explicit ConvexPolygon(std::span<const Vec2> ring, std::string_view name = "polygon");
+  ConvexPolygon(std::initializer_list<Vec2> ring, std::string_view name = "polygon")
+      : ConvexPolygon(std::span<const Vec2>(ring.begin(), ring.size()), name) {}
+
+  /// Convex hull of a point set (Andrew's monotone chain, exact orientation), in normal form.
+  /// Throws InvalidInput for non-finite coordinates or fewer than 3 non-collinear points.
+  /// O(n log n).
+  static ConvexPolygon hull(std::span<const Vec2> points, std::string_view name = "points");
+
+  std::size_t size() const { return v_.size(); }
+  const Vec2& operator[](std::size_t i) const { return v_[i]; }
+  /// Vertex i with cyclic indexing (i may be any integer >= 0).
+  const Vec2& at_cyclic(std::size_t i) const { return v_[i % v_.size()]; }
+  std::span<const Vec2> vertices() const { return v_; }
+  /// Index of the highest-then-rightmost vertex: vertex 0 of the normal form of -P.
+  std::size_t top() const { return top_; }
+  /// Input index (0-based, in the ring as given) of normal-form vertex i.
+  std::size_t input_index(std::size_t i) const { return input_index_[i]; }
+  double area() const;
+  const std::string& name() const { return name_; }
+
+ private:
+  ConvexPolygon() = default;
+  void finish();
+  std::vector<Vec2> v_;
+  std::vector<std::size_t> input_index_;
+  std::size_t top_ = 0;
+  std::string name_;
+};
+
+}  // namespace pendepth

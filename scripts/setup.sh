@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Installs the Debian packages pendepth needs to build, test and benchmark.
+# Idempotent: skips apt entirely when everything is already installed.
+set -euo pipefail
+PKGS=(cmake g++ make pkg-config libeigen3-dev libgmp-dev libcgal-dev libgtest-dev libgmock-dev
+      libbenchmark-dev libcli11-dev nlohmann-json3-dev libbox2d-dev)
+missing=()
+for p in "${PKGS[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  echo "setup: installing ${missing[*]}"
+  $SUDO apt-get update -q
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi

@@ -1,0 +1,204 @@
+// σ_d for two convex polygons in O(log n + log m) without building M (DHS §3; notes §2.7).
+//
+// Notation: A = P, B = −Q (normal form of −Q starts at Q's top vertex), t the placement of Q,
+// d the direction. X(v) = cross(d, v − t). Front edges of a polygon are those with
+// cross(d, e) > 0; they form one contiguous range in angle order (found by binary search over the
+// angle-sorted edges) along which X strictly increases. The front chain of M is the merge of the
+// front chains of A and B in slope order (ties: A first); the ray t + s·d̂ leaves M where X of the
+// merge path crosses 0. Simultaneous prune-and-search on the two median edges finds that crossing
+// in O(log p + log q) steps; every decision is an exact predicate on input coordinates.
+#include <pendepth/depth2.hpp>
+
+#include <cmath>
+
+#include "convex2/minkowski_sum.hpp"
+#include "geometry/exact.hpp"
+
+namespace pendepth {
+namespace {
+
+using predicates::compare_angle;
+
+// One polygon seen as A (= P) or B (= −Q), vertex k of its normal form.
+struct Side {
+  const ConvexPolygon& poly;
+  bool negated;
+  std::size_t size() const { return poly.size(); }
+  std::size_t input(std::size_t k) const {  // index into poly's normal form
+    return negated ? (poly.top() + k) % poly.size() : k % poly.size();
+  }
+  Vec2 v(std::size_t k) const { return negated ? Vec2(-poly[input(k)]) : poly[input(k)]; }
+};
+
+// First index in [lo, hi) where pred is true (pred monotone false...true); hi if none.
+template <class F>
+std::size_t partition_point(std::size_t lo, std::size_t hi, F&& pred) {
+  while (lo < hi) {
+    std::size_t mid = lo + (hi - lo) / 2;
+    if (pred(mid)) hi = mid;
+    else lo = mid + 1;
+  }
+  return lo;
+}
+
+// Front chain: start vertex index s (normal form) and number of edges p >= 1.
+struct Chain {
+  std::size_t start, edges;
+};
+
+Chain front_chain(const Side& S, const Vec2& d) {
+  const std::size_t n = S.size();
+  const Vec2 zero(0, 0), nd = -d;
+  // s: first edge with angle > angle(d); f: first edge with angle >= angle(−d).
+  std::size_t s = partition_point(0, n, [&](std::size_t i) { return compare_angle(zero, d, S.v(i), S.v(i + 1)) < 0; });
+  std::size_t f = partition_point(0, n, [&](std::size_t i) { return compare_angle(S.v(i), S.v(i + 1), zero, nd) >= 0; });
+  s %= n;
+  return {s, (f + n - s % n) % n};
+}
+
+struct Exit {
+  bool crosses = false;   // the line through t along d crosses int M
+  std::size_t ia = 0, iq = 0;     // path vertex u (X < 0) as P index, Q index (normal forms)
+  bool edge_from_p = true;        // the exit edge u->w is P's edge ia, else Q's edge iq (reversed)
+  bool at_vertex = false;         // the line passes exactly through w
+  std::size_t wa = 0, wq = 0;     // vertex w as P index, Q index
+  int s_sign = 0;                 // sign of the exit parameter s
+  Vec2 ua, ub;                    // u = ua + ub (P vertex, −Q vertex)
+  Vec2 e0, e1;                    // exit edge vector e = e1 − e0 (input coordinates, exact)
+};
+
+// cross(u − t, e): its sign is the sign of the exit parameter, its value the numerator of s.
+template <class L>
+auto exit_numerator(L lift, const Exit& ex, const Vec2& t) {
+  auto rx = lift(ex.ua.x()) + lift(ex.ub.x()) - lift(t.x());
+  auto ry = lift(ex.ua.y()) + lift(ex.ub.y()) - lift(t.y());
+  return rx * (lift(ex.e1.y()) - lift(ex.e0.y())) - ry * (lift(ex.e1.x()) - lift(ex.e0.x()));
+}
+
+Exit find_exit(const ConvexPolygon& P, const ConvexPolygon& Q, const Vec2& t, const Vec2& d) {
+  const Side A{P, false}, B{Q, true};
+  const Chain ca = front_chain(A, d), cb = front_chain(B, d);
+  const std::size_t p = ca.edges, q = cb.edges;
+  auto av = [&](std::size_t i) { return A.v(ca.start + i); };
+  auto bv = [&](std::size_t j) { return B.v(cb.start + j); };
+  // sign of X at merge-path point (i, j): cross(d, a_i + b_j − t)
+  auto X = [&](std::size_t i, std::size_t j) {
+    const Vec2 a = av(i), b = bv(j);
+    return exact::exact_sign([&](auto L) {
+      return L(d.x()) * (L(a.y()) + L(b.y()) - L(t.y())) - L(d.y()) * (L(a.x()) + L(b.x()) - L(t.x()));
+    });
+  };
+  // A-edge k precedes B-edge l in slope order (ties: A first).
+  auto before = [&](std::size_t k, std::size_t l) {
+    return predicates::cross_edges(av(k), av(k + 1), bv(l), bv(l + 1)) >= 0;
+  };
+
+  Exit ex;
+  if (X(0, 0) >= 0 || X(p, q) <= 0) return ex;  // the line misses int M (or is tangent)
+  ex.crosses = true;
+
+  std::size_t ilo = 0, ihi = p, jlo = 0, jhi = q;
+  while (ilo < ihi && jlo < jhi) {
+    std::size_t k = (ilo + ihi - 1) / 2, l = (jlo + jhi - 1) / 2;
+    if (before(k, l)) {
+      if (X(k + 1, l) < 0) ilo = k + 1;
+      else jhi = l;
+    } else {
+      if (X(k, l + 1) < 0) jlo = l + 1;
+      else ihi = k;
+    }
+  }
+  std::size_t i, j;
+  if (ilo == ihi) {
+    i = ilo;
+    std::size_t J0 = i == 0 ? 0 : partition_point(0, q, [&](std::size_t l) { return before(i - 1, l); });
+    std::size_t J1 = i == p ? q : partition_point(0, q, [&](std::size_t l) { return before(i, l); });
+    std::size_t lo = std::max(jlo, J0), hi = std::min(jhi, J1);
+    j = partition_point(lo, hi + 1, [&](std::size_t jj) { return X(i, jj) >= 0; });
+  } else {
+    j = jlo;
+    std::size_t I0 = j == 0 ? 0 : partition_point(0, p, [&](std::size_t k) { return !before(k, j - 1); });
+    std::size_t I1 = j == q ? p : partition_point(0, p, [&](std::size_t k) { return !before(k, j); });
+    std::size_t lo = std::max(ilo, I0), hi = std::min(ihi, I1);
+    i = partition_point(lo, hi + 1, [&](std::size_t ii) { return X(ii, j) >= 0; });
+  }
+  // Predecessor on the merge path: the last traversed edge is the later of A-edge i−1, B-edge j−1.
+  std::size_t ui = i, uj = j;
+  bool from_a;
+  if (i > 0 && j > 0) from_a = !before(i - 1, j - 1);
+  else from_a = i > 0;
+  if (from_a) ui = i - 1;
+  else uj = j - 1;
+
+  ex.ia = A.input(ca.start + ui);
+  ex.iq = B.input(cb.start + uj);
+  ex.edge_from_p = from_a;
+  ex.at_vertex = X(i, j) == 0;
+  ex.wa = A.input(ca.start + i);
+  ex.wq = B.input(cb.start + j);
+  // sign of s = sign of cross(u − t, e) where e is the exit edge vector.
+  ex.ua = av(ui);
+  ex.ub = bv(uj);
+  ex.e0 = from_a ? av(ui) : bv(uj);
+  ex.e1 = from_a ? av(ui + 1) : bv(uj + 1);
+  ex.s_sign = exact::exact_sign([&](auto L) { return exit_numerator(L, ex, t); });
+  return ex;
+}
+
+Depth2 none(DepthKind kind) {
+  Depth2 r;
+  r.kind = kind;
+  return r;
+}
+
+void check_query(const Vec2& t, const Vec2& d) {
+  convex2::require_finite(t, "placement t");
+  convex2::require_finite(d, "direction d");
+  if (d.x() == 0 && d.y() == 0) throw InvalidInput("direction d is the zero vector");
+}
+
+}  // namespace
+
+Depth2 directional_depth(const ConvexPolygon& P, const ConvexPolygon& Q, const Vec2& t, const Vec2& d) {
+  check_query(t, d);
+  const Exit ex = find_exit(P, Q, t, d);
+  if (!ex.crosses || ex.s_sign <= 0) return none(DepthKind::Directional);
+  const Exit en = find_exit(P, Q, t, Vec2(-d));  // t must also lie strictly after the entry
+  if (!en.crosses || en.s_sign <= 0) return none(DepthKind::Directional);
+
+  // s = |d| · cross(u − t, e) / cross(d, e), numerator and denominator accurate.
+  const Vec2 e0 = ex.e0, e1 = ex.e1;
+  double ratio = exact::accurate_ratio(
+      [&](auto L) { return exit_numerator(L, ex, t); },
+      [&](auto L) { return L(d.x()) * (L(e1.y()) - L(e0.y())) - L(d.y()) * (L(e1.x()) - L(e0.x())); });
+  const double dn = std::sqrt(exact::accurate_value([&](auto L) { return L(d.x()) * L(d.x()) + L(d.y()) * L(d.y()); }));
+  Depth2 r;
+  r.kind = DepthKind::Directional;
+  r.overlapping = true;
+  r.depth = ratio * dn;
+  r.normal = d / dn;
+  r.translation = r.depth * r.normal;
+  const Vec2 f = t + r.translation;
+  if (ex.at_vertex) {
+    r.feature_p = {FeatureKind::Vertex, int(ex.wa)};
+    r.feature_q = {FeatureKind::Vertex, int(ex.wq)};
+    r.witness_p = r.witness_q = P[ex.wa];
+  } else if (ex.edge_from_p) {
+    r.feature_p = {FeatureKind::Edge, int(ex.ia)};
+    r.feature_q = {FeatureKind::Vertex, int(ex.iq)};
+    r.witness_q = r.witness_p = Q[ex.iq] + f;
+  } else {
+    r.feature_p = {FeatureKind::Vertex, int(ex.ia)};
+    r.feature_q = {FeatureKind::Edge, int(ex.iq)};
+    r.witness_q = r.witness_p = P[ex.ia];
+  }
+  return r;
+}
+
+Depth2 separation_depth(const ConvexPolygon& P, const ConvexPolygon& Q, const Vec2& t, const Vec2& d) {
+  Depth2 r = directional_depth(P, Q, t, d);
+  r.kind = DepthKind::Separation;
+  return r;
+}
+
+}  // namespace pendepth
