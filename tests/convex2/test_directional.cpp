@@ -60,6 +60,28 @@ TEST(Directional, AnalyticSquares) {
   EXPECT_EQ(r.witness_p.y(), 0.0);  // Q (now at y = -1) touches P from below along y = 0
 }
 
+TEST(Directional, DirectionScaleDoesNotMatter) {
+  // Subnormal and huge directions: same answer as the unit direction, never NaN or inf.
+  ConvexPolygon P({{0, 0}, {2, 0}, {2, 2}, {0, 2}});
+  ConvexPolygon Q({{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+  const Vec2 t(0.25, 0.5);
+  for (Vec2 unit : {Vec2(1, 0), Vec2(1, 1), Vec2(-3, 1)}) {
+    const auto ref = pendepth::directional_depth(P, Q, t, unit);
+    for (double scale : {5e-324, 1e-310, 1e-300, 1e-8, 1e8, 1e300, 1.7e308}) {
+      const Vec2 d = unit * scale;
+      if ((d.x() == 0 && d.y() == 0) || !d.allFinite()) continue;
+      const bool exact_multiple = d.x() / scale == unit.x() && d.y() / scale == unit.y();
+      auto r = pendepth::directional_depth(P, Q, t, d);
+      ASSERT_TRUE(std::isfinite(r.depth) && r.translation.allFinite() && r.normal.allFinite()) << scale;
+      if (exact_multiple) {
+        ASSERT_LE(brute::ulps(r.depth, ref.depth), 4) << scale;  // same direction, other rounding
+      } else {
+        ASSERT_NEAR(r.depth, ref.depth, 1e-6) << scale;  // d rounded (subnormal), direction perturbed
+      }
+    }
+  }
+}
+
 TEST(Directional, InvalidDirection) {
   ConvexPolygon P({{0, 0}, {2, 0}, {2, 2}, {0, 2}});
   EXPECT_THROW(pendepth::directional_depth(P, P, {0, 0}, {0, 0}), pendepth::InvalidInput);
