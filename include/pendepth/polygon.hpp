@@ -37,6 +37,13 @@ class ConvexPolygon {
   /// Vertex i with cyclic indexing (i may be any integer >= 0).
   const Vec2& at_cyclic(std::size_t i) const { return v_[i % v_.size()]; }
   std::span<const Vec2> vertices() const { return v_; }
+  /// Vertices 64k and 64k+1 are also kept in a compact side array (n/32 entries) so the first
+  /// steps of every O(log n) search on a huge polygon stay in cache; same value as operator[].
+  static constexpr std::size_t kBlock = 64;
+  const Vec2& vertex_cached(std::size_t i) const {
+    const std::size_t r = i & (kBlock - 1);
+    return r < 2 ? sample_[2 * (i / kBlock) + r] : v_[i];
+  }
   /// Index of the highest-then-rightmost vertex: vertex 0 of the normal form of -P.
   std::size_t top() const { return top_; }
   /// Input index (0-based, in the ring as given) of normal-form vertex i.
@@ -49,6 +56,7 @@ class ConvexPolygon {
   void finish();
   std::vector<Vec2> v_;
   std::vector<std::size_t> input_index_;
+  std::vector<Vec2> sample_;  // v[64k], v[(64k+1) mod n]
   std::size_t top_ = 0;
   std::string name_;
 };

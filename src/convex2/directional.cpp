@@ -20,41 +20,71 @@ namespace {
 
 using predicates::compare_angle;
 
-// One polygon seen as A (= P) or B (= −Q), vertex k of its normal form.
+// One polygon seen as A (= P) or B (= −Q): vertex k of its normal form is poly[(base + k) mod n]
+// (negated for B, whose normal form starts at Q's top vertex).
 struct Side {
   const ConvexPolygon& poly;
   bool negated;
   std::size_t size() const { return poly.size(); }
+  std::size_t base() const { return negated ? poly.top() : 0; }
   std::size_t input(std::size_t k) const {  // index into poly's normal form
-    return negated ? (poly.top() + k) % poly.size() : k % poly.size();
+    std::size_t i = base() + k, n = poly.size();
+    while (i >= n) i -= n;
+    return i;
   }
-  Vec2 v(std::size_t k) const { return negated ? Vec2(-poly[input(k)]) : poly[input(k)]; }
+  Vec2 v(std::size_t k) const {
+    const Vec2& p = poly.vertex_cached(input(k));
+    return negated ? Vec2(-p) : p;
+  }
 };
+
+// A split point in [lo, hi) near the middle. On large ranges it is moved back to the start of a
+// 64-vertex block of the polygon (index base + k ≡ 0 mod 64), whose vertices k and k+1 live in
+// ConvexPolygon's compact sample array: the searches' first steps then stay in cache. Any split
+// point keeps the searches correct; this one keeps them O(log n).
+std::size_t split(std::size_t lo, std::size_t hi, std::size_t base, std::size_t n) {
+  const std::size_t mid = lo + (hi - lo - 1) / 2;
+  if (hi - lo < 2 * ConvexPolygon::kBlock) return mid;
+  return mid - (base + mid) % n % ConvexPolygon::kBlock;
+}
 
 // First index in [lo, hi) where pred is true (pred monotone false...true); hi if none.
 template <class F>
-std::size_t partition_point(std::size_t lo, std::size_t hi, F&& pred) {
+std::size_t partition_point(const Side& S, std::size_t start, std::size_t lo, std::size_t hi, F&& pred) {
   while (lo < hi) {
-    std::size_t mid = lo + (hi - lo) / 2;
+    std::size_t mid = split(lo, hi, S.base() + start, S.size());
     if (pred(mid)) hi = mid;
     else lo = mid + 1;
   }
   return lo;
 }
 
-// Front chain: start vertex index s (normal form) and number of edges p >= 1.
+// Front chain for d: start vertex index s (normal form) and number of edges p >= 1.
 struct Chain {
   std::size_t start, edges;
 };
+struct Chains {
+  Chain forward, backward;  // front chains for d and for −d
+};
 
-Chain front_chain(const Side& S, const Vec2& d) {
+// Edges are angle-sorted in [0, 2π). The front chain for d holds the edges with angle in
+// (θ, θ + π), θ = angle(d). One lower_bound per direction serves both d and −d: at most one
+// edge is parallel to each (strict convexity), and upper_bound = lower_bound + that edge.
+Chains front_chains(const Side& S, const Vec2& d) {
   const std::size_t n = S.size();
   const Vec2 zero(0, 0), nd = -d;
-  // s: first edge with angle > angle(d); f: first edge with angle >= angle(−d).
-  std::size_t s = partition_point(0, n, [&](std::size_t i) { return compare_angle(zero, d, S.v(i), S.v(i + 1)) < 0; });
-  std::size_t f = partition_point(0, n, [&](std::size_t i) { return compare_angle(S.v(i), S.v(i + 1), zero, nd) >= 0; });
-  s %= n;
-  return {s, (f + n - s % n) % n};
+  auto lower = [&](const Vec2& x, std::size_t& lb, std::size_t& ub) {
+    lb = partition_point(S, 0, 0, n, [&](std::size_t i) { return compare_angle(S.v(i), S.v(i + 1), zero, x) >= 0; });
+    ub = lb + (lb < n && compare_angle(S.v(lb), S.v(lb + 1), zero, x) == 0);
+  };
+  std::size_t ld, ud, lnd, und;
+  lower(d, ld, ud);
+  lower(nd, lnd, und);
+  auto make = [&](std::size_t s, std::size_t f) {
+    s %= n;
+    return Chain{s, (f + n - s) % n};
+  };
+  return {make(ud, lnd), make(und, ld)};
 }
 
 struct Exit {
@@ -76,16 +106,20 @@ auto exit_numerator(L lift, const Exit& ex, const Vec2& t) {
   return rx * (lift(ex.e1.y()) - lift(ex.e0.y())) - ry * (lift(ex.e1.x()) - lift(ex.e0.x()));
 }
 
-Exit find_exit(const ConvexPolygon& P, const ConvexPolygon& Q, const Vec2& t, const Vec2& d) {
-  const Side A{P, false}, B{Q, true};
-  const Chain ca = front_chain(A, d), cb = front_chain(B, d);
+Exit find_exit(const Side& A, const Side& B, const Chain& ca, const Chain& cb, const Vec2& t, const Vec2& d) {
   const std::size_t p = ca.edges, q = cb.edges;
   auto av = [&](std::size_t i) { return A.v(ca.start + i); };
   auto bv = [&](std::size_t j) { return B.v(cb.start + j); };
   // sign of X at merge-path point (i, j): cross(d, a_i + b_j − t)
   auto X = [&](std::size_t i, std::size_t j) {
     const Vec2 a = av(i), b = bv(j);
-    return exact::exact_sign([&](auto L) {
+    // Fast filter: sums of three doubles then two products and a difference; the error is at
+    // most 4u·(|d.x|·Sy + |d.y|·Sx) with S the sums of absolute values (see docs/algorithms.md).
+    const double sx = a.x() + b.x() - t.x(), sy = a.y() + b.y() - t.y();
+    const double Sx = std::abs(a.x()) + std::abs(b.x()) + std::abs(t.x());
+    const double Sy = std::abs(a.y()) + std::abs(b.y()) + std::abs(t.y());
+    const double bound = 5 * exact::kUnit * (std::abs(d.x()) * Sy + std::abs(d.y()) * Sx) + exact::kTiny;
+    return exact::exact_sign_filtered(d.x() * sy - d.y() * sx, bound, [&](auto L) {
       return L(d.x()) * (L(a.y()) + L(b.y()) - L(t.y())) - L(d.y()) * (L(a.x()) + L(b.x()) - L(t.x()));
     });
   };
@@ -100,7 +134,8 @@ Exit find_exit(const ConvexPolygon& P, const ConvexPolygon& Q, const Vec2& t, co
 
   std::size_t ilo = 0, ihi = p, jlo = 0, jhi = q;
   while (ilo < ihi && jlo < jhi) {
-    std::size_t k = (ilo + ihi - 1) / 2, l = (jlo + jhi - 1) / 2;
+    std::size_t k = split(ilo, ihi, A.base() + ca.start, A.size());
+    std::size_t l = split(jlo, jhi, B.base() + cb.start, B.size());
     if (before(k, l)) {
       if (X(k + 1, l) < 0) ilo = k + 1;
       else jhi = l;
@@ -109,19 +144,21 @@ Exit find_exit(const ConvexPolygon& P, const ConvexPolygon& Q, const Vec2& t, co
       else ihi = k;
     }
   }
+  // Finish along the one remaining row/column, clamped to the part of it the merge path visits
+  // (the clamp searches run inside [jlo, jhi] / [ilo, ihi], which is all the answer can use).
   std::size_t i, j;
   if (ilo == ihi) {
     i = ilo;
-    std::size_t J0 = i == 0 ? 0 : partition_point(0, q, [&](std::size_t l) { return before(i - 1, l); });
-    std::size_t J1 = i == p ? q : partition_point(0, q, [&](std::size_t l) { return before(i, l); });
-    std::size_t lo = std::max(jlo, J0), hi = std::min(jhi, J1);
-    j = partition_point(lo, hi + 1, [&](std::size_t jj) { return X(i, jj) >= 0; });
+    auto in_b = [&](std::size_t lo, std::size_t hi, auto&& pred) { return partition_point(B, cb.start, lo, hi, pred); };
+    std::size_t lo = i == 0 ? jlo : in_b(jlo, jhi, [&](std::size_t l) { return before(i - 1, l); });
+    std::size_t hi = i == p ? jhi : in_b(jlo, jhi, [&](std::size_t l) { return before(i, l); });
+    j = in_b(lo, std::max(lo, hi) + 1, [&](std::size_t jj) { return X(i, jj) >= 0; });
   } else {
     j = jlo;
-    std::size_t I0 = j == 0 ? 0 : partition_point(0, p, [&](std::size_t k) { return !before(k, j - 1); });
-    std::size_t I1 = j == q ? p : partition_point(0, p, [&](std::size_t k) { return !before(k, j); });
-    std::size_t lo = std::max(ilo, I0), hi = std::min(ihi, I1);
-    i = partition_point(lo, hi + 1, [&](std::size_t ii) { return X(ii, j) >= 0; });
+    auto in_a = [&](std::size_t lo, std::size_t hi, auto&& pred) { return partition_point(A, ca.start, lo, hi, pred); };
+    std::size_t lo = j == 0 ? ilo : in_a(ilo, ihi, [&](std::size_t k) { return !before(k, j - 1); });
+    std::size_t hi = j == q ? ihi : in_a(ilo, ihi, [&](std::size_t k) { return !before(k, j); });
+    i = in_a(lo, std::max(lo, hi) + 1, [&](std::size_t ii) { return X(ii, j) >= 0; });
   }
   // Predecessor on the merge path: the last traversed edge is the later of A-edge i−1, B-edge j−1.
   std::size_t ui = i, uj = j;
@@ -172,9 +209,12 @@ Vec2 normalized_scale(const Vec2& d) {
 Depth2 directional_depth(const ConvexPolygon& P, const ConvexPolygon& Q, const Vec2& t, const Vec2& d_in) {
   check_query(t, d_in);
   const Vec2 d = normalized_scale(d_in);
-  const Exit ex = find_exit(P, Q, t, d);
+  const Side A{P, false}, B{Q, true};
+  const Chains ca = front_chains(A, d), cb = front_chains(B, d);
+  const Exit ex = find_exit(A, B, ca.forward, cb.forward, t, d);
   if (!ex.crosses || ex.s_sign <= 0) return none(DepthKind::Directional);
-  const Exit en = find_exit(P, Q, t, Vec2(-d));  // t must also lie strictly after the entry
+  // t must also lie strictly after the entry: the exit along −d, on the back chains.
+  const Exit en = find_exit(A, B, ca.backward, cb.backward, t, Vec2(-d));
   if (!en.crosses || en.s_sign <= 0) return none(DepthKind::Directional);
 
   // s = |d| · cross(u − t, e) / cross(d, e), numerator and denominator accurate.

@@ -16,8 +16,23 @@ void require_finite(const Vec2& v, const char* what) {
 }
 
 MinkowskiSum::MinkowskiSum(const ConvexPolygon& P, const ConvexPolygon& Q)
-    : p_(P.vertices().begin(), P.vertices().end()), q_(Q.vertices().begin(), Q.vertices().end()) {
-  const std::size_t n = p_.size(), m = q_.size(), top = Q.top();
+    : own_p_(P.vertices().begin(), P.vertices().end()), own_q_(Q.vertices().begin(), Q.vertices().end()) {
+  p_ = own_p_;
+  q_ = own_q_;
+  merge(Q.top());
+}
+
+void MinkowskiSum::assign_view(const ConvexPolygon& P, const ConvexPolygon& Q) {
+  own_p_.clear();
+  own_q_.clear();
+  p_ = P.vertices();
+  q_ = Q.vertices();
+  merge(Q.top());
+}
+
+void MinkowskiSum::merge(std::size_t top) {
+  const std::size_t n = p_.size(), m = q_.size();
+  edges_.clear();
   edges_.reserve(n + m);
   std::size_t i = 0, j = 0;
   while (i < n || j < m) {
@@ -43,15 +58,18 @@ Vec2 MinkowskiSum::vertex(std::size_t k) const {
   return p_[e.ia] - q_[e.iq];
 }
 
-void MinkowskiSum::edge_points(std::size_t k, Vec2& from, Vec2& to) const {
-  const MEdge& e = edges_[k];
+void edge_points(std::span<const Vec2> p, std::span<const Vec2> q, const MEdge& e, Vec2& from, Vec2& to) {
   if (e.src == EdgeSource::Q) {
-    from = -q_[e.iq];
-    to = -q_[(e.iq + 1) % q_.size()];
+    from = -q[e.iq];
+    to = -q[(e.iq + 1) % q.size()];
   } else {
-    from = p_[e.ia];
-    to = p_[(e.ia + 1) % p_.size()];
+    from = p[e.ia];
+    to = p[(e.ia + 1) % p.size()];
   }
+}
+
+void MinkowskiSum::edge_points(std::size_t k, Vec2& from, Vec2& to) const {
+  convex2::edge_points(p_, q_, edges_[k], from, to);
 }
 
 Vec2 MinkowskiSum::outward_normal(std::size_t k) const {
@@ -84,14 +102,16 @@ int MinkowskiSum::side(std::size_t k, const Vec2& t) const {
   return exact::exact_sign([&](auto L) { return numerator(L, a, b, pa, qq, t); });
 }
 
-double MinkowskiSum::distance(std::size_t k, const Vec2& t) const {
+double edge_distance(std::span<const Vec2> p, std::span<const Vec2> q, const MEdge& e, const Vec2& t) {
   Vec2 a, b;
-  edge_points(k, a, b);
-  const Vec2 &pa = p_[edges_[k].ia], &qq = q_[edges_[k].iq];
+  edge_points(p, q, e, a, b);
+  const Vec2 &pa = p[e.ia], &qq = q[e.iq];
   double num = exact::accurate_value([&](auto L) { return numerator(L, a, b, pa, qq, t); });
   double len = std::sqrt(exact::accurate_value([&](auto L) { return length2(L, a, b); }));
   return num / len;
 }
+
+double MinkowskiSum::distance(std::size_t k, const Vec2& t) const { return edge_distance(p_, q_, edges_[k], t); }
 
 void MinkowskiSum::distance_estimate(std::size_t k, const Vec2& t, double& value, double& error) const {
   Vec2 a, b;
@@ -129,14 +149,16 @@ bool MinkowskiSum::contains_interior(const Vec2& t) const {
   return side(lo, t) > 0;
 }
 
-Depth2 MinkowskiSum::result_for_edge(std::size_t k, const Vec2& t, double dist) const {
+Depth2 edge_result(std::span<const Vec2> p_, std::span<const Vec2> q_, const MEdge& e, const Vec2& t, double dist) {
   Depth2 r;
   r.kind = DepthKind::Minimum;
   r.overlapping = true;
   r.depth = dist;
-  r.normal = outward_normal(k);
+  Vec2 from, to;
+  edge_points(p_, q_, e, from, to);
+  const Vec2 ev = to - from;
+  r.normal = Vec2(ev.y(), -ev.x()) / ev.norm();
   r.translation = dist * r.normal;
-  const MEdge& e = edges_[k];
   const std::size_t n = p_.size(), m = q_.size();
   const Vec2 f = t + r.translation;  // Q's final placement, on ∂M
   auto q_vertex_on_p_edge = [&](std::size_t iq) {
@@ -171,6 +193,10 @@ Depth2 MinkowskiSum::result_for_edge(std::size_t k, const Vec2& t, double dist) 
     }
   }
   return r;
+}
+
+Depth2 MinkowskiSum::result_for_edge(std::size_t k, const Vec2& t, double dist) const {
+  return edge_result(p_, q_, edges_[k], t, dist);
 }
 
 Nearest nearest_edge(const MinkowskiSum& M, const Vec2& t, const std::size_t* first, const std::size_t* last) {

@@ -7,6 +7,7 @@
 #include <pendepth/depth2.hpp>
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace pendepth::convex2 {
@@ -22,10 +23,28 @@ struct MEdge {
   EdgeSource src = EdgeSource::P;
 };
 
+/// Edge k's vector as exact endpoints (from, to): P's edge for sources P and Both, −(Q's edge)
+/// for source Q. p, q: normal-form vertices of P and Q.
+void edge_points(std::span<const Vec2> p, std::span<const Vec2> q, const MEdge& e, Vec2& from, Vec2& to);
+/// Signed distance from t to the line of edge e of M (positive inside), to a few ulps.
+double edge_distance(std::span<const Vec2> p, std::span<const Vec2> q, const MEdge& e, const Vec2& t);
+/// The σ result for placement t whose nearest edge of M is e at distance dist > 0.
+Depth2 edge_result(std::span<const Vec2> p, std::span<const Vec2> q, const MEdge& e, const Vec2& t, double dist);
+
 class MinkowskiSum {
  public:
   /// O(n + m) merge; vertex 0 is P[0] − Q[Q.top()], the lowest-leftmost vertex of M.
+  /// Owns copies of the vertices (P and Q may be destroyed afterwards).
   MinkowskiSum(const ConvexPolygon& P, const ConvexPolygon& Q);
+  /// An empty sum to be filled by assign_view (scratch objects reused across queries).
+  MinkowskiSum() = default;
+  MinkowskiSum(const MinkowskiSum&) = delete;
+  MinkowskiSum& operator=(const MinkowskiSum&) = delete;
+  MinkowskiSum(MinkowskiSum&&) noexcept = default;
+  MinkowskiSum& operator=(MinkowskiSum&&) noexcept = default;
+  /// Rebuilds as a view: P and Q must outlive this object's use. Reuses the edge buffer, so a
+  /// thread-local scratch object makes repeated O(n + m) queries allocation-free.
+  void assign_view(const ConvexPolygon& P, const ConvexPolygon& Q);
 
   std::size_t size() const { return edges_.size(); }
   const MEdge& edge(std::size_t k) const { return edges_[k]; }
@@ -51,11 +70,13 @@ class MinkowskiSum {
   /// translation dist·n_k, witnesses and features.
   Depth2 result_for_edge(std::size_t k, const Vec2& t, double dist) const;
 
-  const std::vector<Vec2>& p() const { return p_; }
-  const std::vector<Vec2>& q() const { return q_; }
+  std::span<const Vec2> p() const { return p_; }
+  std::span<const Vec2> q() const { return q_; }
 
  private:
-  std::vector<Vec2> p_, q_;  // copies of the normal-form vertices of P and Q
+  void merge(std::size_t top);
+  std::vector<Vec2> own_p_, own_q_;  // storage when owning
+  std::span<const Vec2> p_, q_;      // normal-form vertices of P and Q
   std::vector<MEdge> edges_;
 };
 

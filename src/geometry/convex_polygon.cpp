@@ -161,6 +161,11 @@ void ConvexPolygon::finish() {
   top_ = 0;
   for (std::size_t i = 1; i < n; ++i)
     if (lower_left(v_[top_], v_[i])) top_ = i;
+  sample_.clear();
+  for (std::size_t i = 0; i < n; i += kBlock) {
+    sample_.push_back(v_[i]);
+    sample_.push_back(v_[(i + 1) % n]);
+  }
 }
 
 ConvexPolygon ConvexPolygon::hull(std::span<const Vec2> points, std::string_view name) {

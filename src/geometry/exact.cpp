@@ -3,12 +3,15 @@
 
 #include "geometry/exact.hpp"
 
+#include <cmath>
+
 namespace pendepth::predicates {
 
 using exact::exact_sign;
 
 int orient2d(const Vec2& a, const Vec2& b, const Vec2& c) {
-  return exact_sign([&](auto L) {
+  const double p1 = (b.x() - a.x()) * (c.y() - a.y()), p2 = (b.y() - a.y()) * (c.x() - a.x());
+  return exact::exact_sign_filtered(p1 - p2, exact::kCrossBound * (std::abs(p1) + std::abs(p2)) + exact::kTiny, [&](auto L) {
     return (L(b.x()) - L(a.x())) * (L(c.y()) - L(a.y())) - (L(b.y()) - L(a.y())) * (L(c.x()) - L(a.x()));
   });
 }
@@ -18,7 +21,8 @@ int cross(const Vec2& a, const Vec2& b) {
 }
 
 int cross_edges(const Vec2& a0, const Vec2& a1, const Vec2& b0, const Vec2& b1) {
-  return exact_sign([&](auto L) {
+  const double p1 = (a1.x() - a0.x()) * (b1.y() - b0.y()), p2 = (a1.y() - a0.y()) * (b1.x() - b0.x());
+  return exact::exact_sign_filtered(p1 - p2, exact::kCrossBound * (std::abs(p1) + std::abs(p2)) + exact::kTiny, [&](auto L) {
     return (L(a1.x()) - L(a0.x())) * (L(b1.y()) - L(b0.y())) - (L(a1.y()) - L(a0.y())) * (L(b1.x()) - L(b0.x()));
   });
 }

@@ -2,7 +2,8 @@
 //
 // A formula is written once as a generic lambda `f(c)` where `c(x)` lifts an input double into
 // the number type. It is evaluated first with `Fl` (double value + rigorous forward error bound),
-// and only when the bound cannot decide with `mpq_class` (exact rationals; mpq_set_d is exact).
+// then, when that bound cannot decide, with `DD` (double-double, ~106-bit, with its own error
+// bound), and only when that cannot decide either with exact rationals (mpq_set_d is exact).
 //   exact_sign(f)      : exact sign of the polynomial
 //   accurate_value(f)  : the value to within ~1 ulp (relative), exact fallback when needed
 #pragma once
@@ -17,30 +18,97 @@ inline constexpr double kUnit = 0x1p-53;       // unit roundoff
 inline constexpr double kTiny = 0x1p-1000;     // absolute slack covering underflow in products
 
 /// Double with an absolute error bound: |exact - v| <= e for the real-number formula.
-/// e == 0 means every operation so far was exact (checked with TwoSum / FMA), so v is the exact
-/// value and even a zero sign is certified without the rational fallback — the common case for
-/// integer-like coordinates, where degenerate (zero) predicates are frequent.
 struct Fl {
   double v = 0, e = 0;
 };
-inline constexpr double kExactFloor = 0x1p-960;  // below this a product's error may be unrepresentable
 inline Fl operator+(Fl a, Fl b) {
   double v = a.v + b.v;
-  if (a.e == 0 && b.e == 0) {
-    double bv = v - a.v, av = v - bv;
-    if ((a.v - av) + (b.v - bv) == 0) return {v, 0};
-  }
   return {v, a.e + b.e + std::abs(v) * kUnit};
 }
-inline Fl operator-(Fl a, Fl b) { return a + Fl{-b.v, b.e}; }
+inline Fl operator-(Fl a, Fl b) {
+  double v = a.v - b.v;
+  return {v, a.e + b.e + std::abs(v) * kUnit};
+}
 inline Fl operator*(Fl a, Fl b) {
   double v = a.v * b.v;
-  if (a.e == 0 && b.e == 0 && (std::abs(v) > kExactFloor || a.v == 0 || b.v == 0) &&
-      std::fma(a.v, b.v, -v) == 0)
-    return {v, 0};
   return {v, std::abs(a.v) * b.e + std::abs(b.v) * a.e + a.e * b.e + std::abs(v) * kUnit + kTiny};
 }
 inline Fl operator-(Fl a) { return {-a.v, a.e}; }
+
+/// Double that knows whether every operation so far was exact (TwoSum / FMA checks). Used only
+/// when the Fl filter cannot decide: for integer-like coordinates the degenerate (zero) cases are
+/// then certified without the rational fallback.
+struct FlX {
+  double v = 0;
+  bool exact = true;
+};
+inline constexpr double kExactFloor = 0x1p-960;  // below this a product's error may be unrepresentable
+inline FlX operator+(FlX a, FlX b) {
+  double v = a.v + b.v;
+  bool ex = a.exact && b.exact;
+  if (ex) {
+    double bv = v - a.v, av = v - bv;
+    ex = (a.v - av) + (b.v - bv) == 0;
+  }
+  return {v, ex};
+}
+inline FlX operator-(FlX a) { return {-a.v, a.exact}; }
+inline FlX operator-(FlX a, FlX b) { return a + (-b); }
+inline FlX operator*(FlX a, FlX b) {
+  double v = a.v * b.v;
+  bool ex = a.exact && b.exact && (std::abs(v) > kExactFloor || a.v == 0 || b.v == 0) &&
+            std::isfinite(v) && std::fma(a.v, b.v, -v) == 0;
+  return {v, ex};
+}
+struct LiftFlX {
+  FlX operator()(double x) const { return {x, true}; }
+};
+
+/// Double-double (hi + lo, |lo| <= ulp(hi)/2) with an absolute error bound e. Error bounds are
+/// taken relative to the operands' magnitudes (not the result's), so they stay valid under
+/// cancellation. Unit: 2^-100 covers the ~2^-104 rounding of each double-double operation with
+/// a margin.
+struct DD {
+  double hi = 0, lo = 0, e = 0;
+};
+inline constexpr double kUnitDD = 0x1p-100;
+inline void two_sum(double a, double b, double& s, double& err) {
+  s = a + b;
+  double bb = s - a;
+  err = (a - (s - bb)) + (b - bb);
+}
+inline void quick_two_sum(double a, double b, double& s, double& err) {
+  s = a + b;
+  err = b - (s - a);
+}
+inline DD operator+(const DD& a, const DD& b) {
+  double s, e1, t, e2;
+  two_sum(a.hi, b.hi, s, e1);
+  two_sum(a.lo, b.lo, t, e2);
+  e1 += t;
+  quick_two_sum(s, e1, s, e1);
+  e1 += e2;
+  DD r;
+  quick_two_sum(s, e1, r.hi, r.lo);
+  r.e = a.e + b.e + (std::abs(a.hi) + std::abs(b.hi)) * kUnitDD;
+  return r;
+}
+inline DD operator-(const DD& a) { return {-a.hi, -a.lo, a.e}; }
+inline DD operator-(const DD& a, const DD& b) { return a + (-b); }
+inline DD operator*(const DD& a, const DD& b) {
+  double p = a.hi * b.hi;
+  double err = std::fma(a.hi, b.hi, -p);
+  err += a.hi * b.lo + a.lo * b.hi;
+  DD r;
+  quick_two_sum(p, err, r.hi, r.lo);
+  double ma = std::abs(a.hi) * (1 + 0x1p-50), mb = std::abs(b.hi) * (1 + 0x1p-50);
+  r.e = ma * b.e + mb * a.e + a.e * b.e + ma * mb * kUnitDD + kTiny;
+  return r;
+}
+struct LiftDD {
+  DD operator()(double x) const { return {x, 0, 0}; }
+};
+inline bool dd_finite(const DD& r) { return std::isfinite(r.hi) && std::isfinite(r.lo) && std::isfinite(r.e); }
 
 /// Exact rational evaluated eagerly (gmpxx's expression templates would dangle when returned
 /// from the generic formula lambdas).
@@ -67,7 +135,6 @@ inline int certified_sign(Fl r) {
   double b = safe_bound(r.e);
   if (r.v > b) return 1;
   if (r.v < -b) return -1;
-  if (r.e == 0) return (r.v > 0) - (r.v < 0);  // every operation was exact
   return 2;
 }
 
@@ -75,15 +142,65 @@ template <class F>
 int exact_sign(F&& f) {
   int s = certified_sign(f(LiftFl{}));
   if (s != 2) return s;
+  FlX x = f(LiftFlX{});
+  if (x.exact) return (x.v > 0) - (x.v < 0);
+  DD d = f(LiftDD{});
+  if (dd_finite(d)) {
+    double b = safe_bound(d.e);
+    if (d.hi > b) return 1;  // |lo| <= ulp(hi)/2, so hi beyond the bound fixes the sign
+    if (d.hi < -b) return -1;
+  }
   Rat q = f(LiftQ{});
   return sgn(q.v);
 }
 
-/// The value of f to within ~2 ulps relative (exact rational, then rounded, when needed).
+/// exact_sign with a caller-supplied fast filter: `approx` is the formula evaluated in plain
+/// double and `bound` a proven bound on its error (derived per formula, Shewchuk-style). Only if
+/// it cannot decide does the generic tiered evaluation run (skipping the redundant Fl tier).
+template <class F>
+int exact_sign_filtered(double approx, double bound, F&& f) {
+  if (approx > bound) return 1;
+  if (approx < -bound) return -1;
+  FlX x = f(LiftFlX{});
+  if (x.exact) return (x.v > 0) - (x.v < 0);
+  DD d = f(LiftDD{});
+  if (dd_finite(d)) {
+    double b = safe_bound(d.e);
+    if (d.hi > b) return 1;
+    if (d.hi < -b) return -1;
+  }
+  Rat q = f(LiftQ{});
+  return sgn(q.v);
+}
+
+/// Error bound factor for a difference of two products of differences, (a−b)(c−d) − (e−f)(g−h):
+/// |computed − exact| <= kCrossBound·(|p1| + |p2|) with p1, p2 the computed products
+/// (Shewchuk's ccwerrboundA, rounded up), plus kTiny for underflow.
+inline constexpr double kCrossBound = (3.0 + 16.0 * kUnit) * kUnit * (1 + 0x1p-40);
+
+namespace detail {
+// The value of f to within ~1 ulp if a floating tier can certify it; false otherwise.
+template <class F>
+bool floating_value(F&& f, double& out) {
+  Fl r = f(LiftFl{});
+  if (std::isfinite(r.v) && safe_bound(r.e) <= std::abs(r.v) * 0x1p-53) {
+    out = r.v;
+    return true;
+  }
+  DD d = f(LiftDD{});  // exact inputs combined exactly also land here (tiny bound)
+  if (dd_finite(d) && safe_bound(d.e) <= std::abs(d.hi) * 0x1p-54) {
+    out = d.hi;  // hi = round(hi + lo); the error bound is far below half an ulp of hi
+    return true;
+  }
+  return false;
+}
+}  // namespace detail
+
+/// The value of f to within ~1 ulp relative (exact rational, then rounded, when needed).
 template <class F>
 double accurate_value(F&& f) {
-  Fl r = f(LiftFl{});
-  if (std::isfinite(r.v) && (r.e == 0 || safe_bound(r.e) <= std::abs(r.v) * 0x1p-52)) return r.v;
+  double v;
+  if (detail::floating_value(f, v)) return v;
   Rat q = f(LiftQ{});
   return q.v.get_d();
 }
@@ -91,10 +208,11 @@ double accurate_value(F&& f) {
 /// num/den to within a few ulps, both evaluated accurately. Requires den != 0.
 template <class N, class D>
 double accurate_ratio(N&& num, D&& den) {
-  Fl rn = num(LiftFl{}), rd = den(LiftFl{});
-  bool ok = std::isfinite(rn.v) && std::isfinite(rd.v) &&
-            safe_bound(rn.e) <= std::abs(rn.v) * 0x1p-52 && safe_bound(rd.e) <= std::abs(rd.v) * 0x1p-52;
-  if (ok) return rn.v / rd.v;
+  double a, b;
+  if (detail::floating_value(num, a) && detail::floating_value(den, b) && b != 0) {
+    double r = a / b;
+    if (std::isfinite(r) && (r != 0 || a == 0)) return r;
+  }
   mpq_class q = num(LiftQ{}).v / den(LiftQ{}).v;
   return q.get_d();
 }
