@@ -31,7 +31,9 @@ struct Feature {
 enum class DepthKind { Minimum, Directional, Separation };
 
 /// Result of a 2D depth query. When the interiors do not overlap: depth 0, translation 0,
-/// normal 0, overlapping false, features None, witnesses 0.
+/// normal 0, overlapping false, features None, witnesses 0. `overlapping` is decided exactly; a
+/// depth below the double range (placements at subnormal scale) is reported as overlapping with
+/// depth 0 and a valid unit normal.
 struct Depth2 {
   double depth = 0;          ///< length of the translation, input units, >= 0
   Vec2 translation{0, 0};    ///< move to apply to Q (after its placement t) to separate

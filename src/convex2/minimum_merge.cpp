@@ -91,7 +91,14 @@ Depth2 minimum_depth(const ConvexPolygon& P, const ConvexPolygon& Q, const Vec2&
     const double d = convex2::edge_distance(p, q, k.edge, t);
     if (d < best) best = d, best_edge = k.edge;
   }
-  if (!(best > 0)) return Depth2{};
+  if (best < 0) return Depth2{};
+  if (best == 0) {
+    // Rounded to zero: decide overlap exactly. Edges outside the candidate set are certainly
+    // farther than best_hi >= σ, so t ∈ int M iff every candidate's exact side is positive; the
+    // depth is then below the double range (subnormal-scale placements) and reported as 0.
+    for (const Candidate& k : cand)
+      if (k.lower <= best_hi && convex2::edge_side(p, q, k.edge, t) <= 0) return Depth2{};
+  }
   return convex2::edge_result(p, q, best_edge, t, best);
 }
 

@@ -95,12 +95,14 @@ auto length2(L lift, const Vec2& from, const Vec2& to) {
 }
 }  // namespace
 
-int MinkowskiSum::side(std::size_t k, const Vec2& t) const {
+int edge_side(std::span<const Vec2> p, std::span<const Vec2> q, const MEdge& e, const Vec2& t) {
   Vec2 a, b;
-  edge_points(k, a, b);
-  const Vec2 &pa = p_[edges_[k].ia], &qq = q_[edges_[k].iq];
+  edge_points(p, q, e, a, b);
+  const Vec2 &pa = p[e.ia], &qq = q[e.iq];
   return exact::exact_sign([&](auto L) { return numerator(L, a, b, pa, qq, t); });
 }
+
+int MinkowskiSum::side(std::size_t k, const Vec2& t) const { return edge_side(p_, q_, edges_[k], t); }
 
 double edge_distance(std::span<const Vec2> p, std::span<const Vec2> q, const MEdge& e, const Vec2& t) {
   Vec2 a, b;

@@ -26,9 +26,12 @@ struct MEdge {
 /// Edge k's vector as exact endpoints (from, to): P's edge for sources P and Both, −(Q's edge)
 /// for source Q. p, q: normal-form vertices of P and Q.
 void edge_points(std::span<const Vec2> p, std::span<const Vec2> q, const MEdge& e, Vec2& from, Vec2& to);
+/// Exact sign of the signed distance from t to edge e's line (> 0: strictly inside its half-plane).
+int edge_side(std::span<const Vec2> p, std::span<const Vec2> q, const MEdge& e, const Vec2& t);
 /// Signed distance from t to the line of edge e of M (positive inside), to a few ulps.
 double edge_distance(std::span<const Vec2> p, std::span<const Vec2> q, const MEdge& e, const Vec2& t);
-/// The σ result for placement t whose nearest edge of M is e at distance dist > 0.
+/// The σ result for placement t ∈ int M whose nearest edge of M is e at distance dist >= 0
+/// (dist is 0 only when the true distance underflows the double range).
 Depth2 edge_result(std::span<const Vec2> p, std::span<const Vec2> q, const MEdge& e, const Vec2& t, double dist);
 
 class MinkowskiSum {
