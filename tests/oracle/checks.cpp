@@ -88,11 +88,24 @@ bool PairChecker::directional(const Vec2& t, const Vec2& d) {
   if (!inside) ++stats_.zeros;
   if (loc == oracle::Location::Boundary) ++stats_.boundary;
   std::string report;
+  const double want_sep = M_.separation_depth(t, d);
   for (const Method& m : methods) {
-    std::string why = compare(m.r, inside, want, stats_.worst_directional);
+    std::string why;
+    if (m.kind == DepthKind::Separation && !inside) {
+      // From outside M, complete separation is the end of the ray's interval in int M (or 0).
+      if (m.r.overlapping) why = "overlapping=true";
+      else if (!finite(m.r)) why = "non-finite result";
+      else if (want_sep == 0 ? (m.r.depth != 0 || m.r.translation != Vec2(0, 0))
+                             : !oracle::within(m.r.depth, want_sep, kDepthTol))
+        why = "separation " + fmt(m.r.depth) + " != exact " + fmt(want_sep);
+    } else {
+      why = compare(m.r, inside, want, stats_.worst_directional);
+      if (why.empty() && m.kind == DepthKind::Separation && !oracle::within(want_sep, want, kDepthTol))
+        why = "oracle: separation != σ_d from inside";  // the oracles must agree with each other
+    }
     if (why.empty() && m.r.kind != m.kind) why = "wrong kind";
     // σ_d moves along d̂.
-    if (why.empty() && inside && !((m.r.normal - dhat).norm() <= 4 * kEps)) why = "normal != d/|d|";
+    if (why.empty() && (inside || m.r.depth > 0) && !((m.r.normal - dhat).norm() <= 4 * kEps)) why = "normal != d/|d|";
     if (!why.empty())
       report += "\n  " + std::string(m.name) + ": " + why + "; got " + fmt(m.r.depth) +
                 " overlapping=" + (m.r.overlapping ? "true" : "false");

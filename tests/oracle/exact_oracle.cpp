@@ -303,6 +303,36 @@ double ExactDifference::directional_depth(const Vec2& t, const Vec2& d) const {
   return sqrt_to_double(exact_value(best));
 }
 
+double ExactDifference::separation_depth(const Vec2& t, const Vec2& d) const {
+  if (!std::isfinite(d.x()) || !std::isfinite(d.y()) || (d.x() == 0 && d.y() == 0))
+    throw std::invalid_argument("oracle: invalid direction");
+  // The line t + s·d meets convex M in [entry, exit]; complete separation is exit (scaled by |d|)
+  // when the line crosses int M (entry < exit) and exit > 0, else 0.
+  const Point tp = to_point(t);
+  const Vector dv(d.x(), d.y());
+  auto cross = [](const Vector& u, const Vector& v) { return u.x() * v.y() - u.y() * v.x(); };
+  bool have_entry = false, have_exit = false;
+  FT entry(0), exit(0);
+  for (const Segment& seg : impl_->edges) {
+    const Vector e = seg.target() - seg.source();
+    const FT den = cross(dv, e);
+    if (CGAL::is_zero(den)) {
+      if (!CGAL::is_positive(cross(e, tp - seg.source()))) return 0.0;  // line outside or along an edge
+      continue;
+    }
+    const FT s = cross(seg.source() - tp, e) / den;
+    if (CGAL::is_positive(den)) {
+      if (!have_exit || s < exit) exit = s;
+      have_exit = true;
+    } else {
+      if (!have_entry || s > entry) entry = s;
+      have_entry = true;
+    }
+  }
+  if (!have_entry || !have_exit || !(entry < exit) || !CGAL::is_positive(exit)) return 0.0;
+  return sqrt_to_double(exact_value(exit * exit * (dv * dv)));
+}
+
 bool ExactDifference::same_polygon(const ExactDifference& other) const {
   const auto &a = impl_->m, &b = other.impl_->m;
   if (a.size() != b.size()) return false;

@@ -64,6 +64,9 @@ class ExactDifference {
   /// σ_d(t) rounded to nearest: |p − t| for the exit point p of the ray t + s·d (s >= 0) from
   /// int M, else exactly 0. d must be finite and non-zero.
   double directional_depth(const Vec2& t, const Vec2& d) const;
+  /// Exact complete separation along d (DHS §6) for convex M: end of the line's interval in
+  /// int M when the ray reaches it, else 0 (correctly rounded).
+  double separation_depth(const Vec2& t, const Vec2& d) const;
 
   /// Exactly the same vertex cycle (both normalised).
   bool same_polygon(const ExactDifference& other) const;
