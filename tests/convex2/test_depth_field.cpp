@@ -16,6 +16,7 @@
 
 #include "convex2/medial_axis.hpp"
 #include "convex2/minkowski_sum.hpp"
+#include "test_scale.hpp"
 
 using pendepth::ConvexPolygon;
 using pendepth::Depth2;
@@ -285,7 +286,7 @@ void check_medial_axis(const ConvexPolygon& P, const ConvexPolygon& Q) {
 TEST(MedialAxis, MaximalDisksAndTreeOnRandomAndDegenerateShapes) {
   std::mt19937_64 rng(20240611);
   std::uniform_real_distribution<double> u(0, 1);
-  for (int trial = 0; trial < 150; ++trial) {
+  for (int trial = 0; trial < pendepth_test::scaled(150); ++trial) {
     const std::size_t n = 3 + rng() % 60, m = 3 + rng() % 60;
     switch (trial % 3) {
       case 0: {
@@ -303,7 +304,7 @@ TEST(MedialAxis, MaximalDisksAndTreeOnRandomAndDegenerateShapes) {
       }
     }
   }
-  for (std::size_t k = 3; k <= 64; ++k) {
+  for (std::size_t k = 3; k <= 64; k += (pendepth_test::kDivisor > 1 ? 7 : 1)) {
     check_medial_axis(regular(k, 1, 0), ConvexPolygon({{0, 0}, {1e-3, 0}, {0, 1e-3}}));
     check_medial_axis(regular(k, 1, 0.1), regular(k, 2, 0.1));
   }
@@ -319,7 +320,7 @@ TEST(DepthField, RandomPairsAgreeWithMerge) {
   auto size = [&] { return std::size_t(std::exp(std::log(3.0) + u(rng) * std::log(2000.0 / 3.0))); };
   int pairs = 0, queries = 0, overlapping = 0;
   double worst = 0;
-  for (int trial = 0; trial < 2400; ++trial) {
+  for (int trial = 0; trial < pendepth_test::scaled(2400); ++trial) {
     ConvexPolygon P = regular(3, 1, 0), Q = P;
     switch (trial % 4) {
       case 0: {  // points on ellipses: near-parallel edges, smooth medial axes
@@ -362,7 +363,7 @@ TEST(DepthField, RandomPairsAgreeWithMerge) {
 
 TEST(DepthField, RegularPolygonsSimultaneousEvents) {
   std::mt19937_64 rng(31);
-  for (std::size_t k = 3; k <= 64; ++k) {
+  for (std::size_t k = 3; k <= 64; k += (pendepth_test::kDivisor > 1 ? 7 : 1)) {
     for (const ConvexPolygon& Q : {regular(4, 0.25, 0), regular(k, 0.5, 0), regular(k, 0.5, kPi / double(k)),
                                    regular(3, 0.1, 0.3)}) {
       Checker c(regular(k, 1, 0), Q);
@@ -376,7 +377,7 @@ TEST(DepthField, RegularPolygonsSimultaneousEvents) {
 TEST(DepthField, RectanglesMatchAnalyticAnswer) {
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(0, 1);
-  for (int trial = 0; trial < 200; ++trial) {
+  for (int trial = 0; trial < pendepth_test::scaled(200); ++trial) {
     const double w = trial % 5 == 0 ? 1 : 0.1 + 10 * u(rng), h = trial % 5 == 0 ? 1 : 0.1 + 10 * u(rng);
     const double qw = trial % 7 == 0 ? w : 0.1 + 3 * u(rng), qh = trial % 7 == 0 ? h : 0.1 + 3 * u(rng);
     const ConvexPolygon P = rectangle(0, 0, w, h), Q = rectangle(-qw, -qh, 0, 0);
@@ -396,7 +397,7 @@ TEST(DepthField, RectanglesMatchAnalyticAnswer) {
 TEST(DepthField, IdenticalShapesAndTriangles) {
   std::mt19937_64 rng(99);
   std::uniform_real_distribution<double> u(0, 1);
-  for (int trial = 0; trial < 150; ++trial) {
+  for (int trial = 0; trial < pendepth_test::scaled(150); ++trial) {
     const std::size_t n = 3 + rng() % 300;
     const double phi = u(rng);
     const ConvexPolygon P = trial % 2 ? disk_points(rng, n, 1) : ellipse_points(rng, n, 2, 1, phi, {0, 0});
@@ -417,7 +418,7 @@ TEST(DepthField, IdenticalShapesAndTriangles) {
     const double r = 3 / (2 + std::sqrt(2.0));
     EXPECT_NEAR(c.field().minimum({r, r}).depth, r, 1e-15);
   }
-  for (int trial = 0; trial < 300; ++trial) {
+  for (int trial = 0; trial < pendepth_test::scaled(300); ++trial) {
     const ConvexPolygon A = disk_points(rng, 3, 1), B = disk_points(rng, 3, 1);
     Checker c(A, B);
     c.random_queries(rng, 20);
@@ -430,7 +431,7 @@ TEST(DepthField, IdenticalShapesAndTriangles) {
 TEST(DepthField, FarFromOrigin) {
   std::mt19937_64 rng(1000000);
   std::uniform_real_distribution<double> u(0, 1);
-  for (int trial = 0; trial < 100; ++trial) {
+  for (int trial = 0; trial < pendepth_test::scaled(100); ++trial) {
     const std::size_t n = 3 + rng() % 300, m = 3 + rng() % 50;
     const double phi = u(rng), ox = 1e6 * (1 + u(rng)), oy = -1e6 * (1 + u(rng));
     const ConvexPolygon P0 = ellipse_points(rng, n, 1, 0.5, phi, {0, 0});
@@ -451,7 +452,7 @@ TEST(DepthField, FarFromOrigin) {
 
 TEST(DepthField, BoundaryAndOutsideAreZero) {
   std::mt19937_64 rng(2718);
-  for (int trial = 0; trial < 200; ++trial) {
+  for (int trial = 0; trial < pendepth_test::scaled(200); ++trial) {
     // Integer shapes: M's vertices and edge midpoints are exact doubles on ∂M.
     const ConvexPolygon P = grid_points(rng, 3 + rng() % 30, 5 + trial % 20);
     const ConvexPolygon Q = grid_points(rng, 3 + rng() % 30, 5);

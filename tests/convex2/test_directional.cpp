@@ -9,6 +9,7 @@
 
 #include "convex2/brute_force.hpp"
 #include "convex2/random_shapes.hpp"
+#include "test_scale.hpp"
 
 using pendepth::ConvexPolygon;
 using pendepth::Vec2;
@@ -93,7 +94,7 @@ TEST(Directional, RandomPairsAgainstExactBruteForce) {
   std::mt19937_64 rng(20261121);
   double worst = 0;
   int checked = 0;
-  for (int trial = 0; trial < 1500; ++trial) {
+  for (int trial = 0; trial < pendepth_test::scaled(1500); ++trial) {
     auto [P, Q] = shapes::random_pair(rng, trial);
     auto M = brute::minkowski_difference(P, Q);
     for (int k = 0; k < 12; ++k) {
@@ -113,7 +114,7 @@ TEST(Directional, SeparationAgainstExactBruteForce) {
   // in int M (positive if the ray meets P later), 0 if the ray never meets int M.
   std::mt19937_64 rng(5);
   int outside_positive = 0;
-  for (int trial = 0; trial < 1500; ++trial) {
+  for (int trial = 0; trial < pendepth_test::scaled(1500); ++trial) {
     auto [P, Q] = shapes::random_pair(rng, trial);
     auto M = brute::minkowski_difference(P, Q);
     for (int k = 0; k < 6; ++k) {
