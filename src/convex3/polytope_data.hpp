@@ -1,0 +1,56 @@
+// Private: storage of a ConvexPolytope and its inner Dobkin–Kirkpatrick hierarchy (flat arrays).
+//
+// Every level is a closed triangulated surface over a subset of the polytope's vertices (global
+// vertex ids). Half-edge h = 3f + k runs from fv[h] to fv[3f + (k+1)%3]; rotations around the
+// origin of h (seen from outside): ccw(h) = twin(prev(h)), cw(h) = next(twin(h)).
+#pragma once
+
+#include <pendepth/polytope.hpp>
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace pendepth::convex3 {
+
+struct DKLevel {
+  std::vector<int> fv;    ///< 3 per triangle, global vertex ids, CCW from outside
+  std::vector<int> twin;  ///< opposite half-edge at this level
+  /// Link to the finer level (index - 1), empty on level 0. For h = (a -> b): the finer level's
+  /// half-edge (a -> b) if that edge exists there, else (a -> v) where v is the removed vertex
+  /// whose hole retriangulation created the diagonal (a, b) (its "umbrella" parent, DHS §5.1).
+  std::vector<int> down;
+  std::vector<int> verts;  ///< vertex ids present at this level
+
+  static int next(int h) { return h % 3 == 2 ? h - 2 : h + 1; }
+  static int prev(int h) { return h % 3 == 0 ? h + 2 : h - 1; }
+  int origin(int h) const { return fv[h]; }
+  int target(int h) const { return fv[next(h)]; }
+  int ccw(int h) const { return twin[prev(h)]; }
+  int cw(int h) const { return next(twin[h]); }
+};
+
+struct PolytopeData {
+  std::string name;
+  std::vector<Vec3> v;
+  std::vector<std::size_t> input_index;
+  std::vector<std::array<int, 3>> tris;
+  std::vector<DKLevel> levels;  ///< levels[0] = the polytope itself
+  std::array<int, 4> protected_tet{};
+};
+
+/// Exact incremental hull of pts restricted to `ids`, seeded by 4 affinely independent ids.
+/// Returns triangles (CCW from outside) over point ids. Points strictly inside or on the
+/// boundary of the current hull are never inserted; the result may still keep vertices that
+/// a later point made non-extreme (the caller filters). Expected O(k log k).
+std::vector<std::array<int, 3>> incremental_hull(const std::vector<Vec3>& pts, std::vector<int> ids,
+                                                 std::array<int, 4> seed);
+
+/// Builds the twin array of a closed triangle mesh given as fv (3 per triangle). O(F log F).
+/// Returns false if some half-edge has no unique twin (not a closed 2-manifold).
+bool build_twins(const std::vector<int>& fv, std::vector<int>& twin);
+
+/// Builds levels 1.. of the inner hierarchy from d.levels[0] (DHS §5.1, notes §4.2).
+void build_dk_hierarchy(PolytopeData& d);
+
+}  // namespace pendepth::convex3
