@@ -53,8 +53,9 @@ std::vector<char> non_extreme(const std::vector<Vec3>& p, const std::vector<std:
   std::vector<char> bad(p.size(), 0);
   auto on_plane = [&](int f, int g) {  // triangle g lies in the plane of triangle f
     const auto& t = tris[f];
-    for (int x : tris[g])
-      if (orient3d(p[t[0]], p[t[1]], p[t[2]], p[x]) != 0) return false;
+    for (int x : tris[g])  // shared vertices are skipped: exact zeros cost a GMP fallback
+      if (x != t[0] && x != t[1] && x != t[2] && orient3d(p[t[0]], p[t[1]], p[t[2]], p[x]) != 0)
+        return false;
     return true;
   };
   for (std::size_t v = 0; v < p.size(); ++v) {
@@ -124,6 +125,14 @@ ConvexPolytope ConvexPolytope::hull(std::span<const Vec3> points, std::string_vi
   assert(ok && "hull surface is not a closed 2-manifold");
   base.verts.resize(d->v.size());
   std::iota(base.verts.begin(), base.verts.end(), 0);
+  d->vertex_he.assign(d->v.size(), -1);
+  for (int h = 0; h < static_cast<int>(base.fv.size()); ++h) {
+    d->vertex_he[base.fv[h]] = h;
+    int g = base.twin[h];
+    if (h < g && orient3d(d->v[base.fv[h]], d->v[base.target(h)], d->v[base.target(base.next(h))],
+                          d->v[base.target(base.next(g))]) != 0)
+      d->edges.push_back(h);
+  }
   d->levels.push_back(std::move(base));
   convex3::build_dk_hierarchy(*d);
 

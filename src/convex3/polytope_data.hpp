@@ -36,6 +36,10 @@ struct PolytopeData {
   std::vector<std::size_t> input_index;
   std::vector<std::array<int, 3>> tris;
   std::vector<DKLevel> levels;  ///< levels[0] = the polytope itself
+  std::vector<int> vertex_he;   ///< one outgoing level-0 half-edge per vertex
+  /// One half-edge per true edge (h < twin(h), its two triangles not coplanar): edges of the
+  /// polytope proper, not diagonals of flat facets.
+  std::vector<int> edges;
   std::array<int, 4> protected_tet{};
 };
 
