@@ -202,6 +202,22 @@ TEST(Depth3, MoveByResultTouchesAndInvariance) {
   }
 }
 
+TEST(Depth3, LargeHullProperties) {
+  // 2000 vertices vs 20: no explicit oracle (40 000 differences); properties only.
+  std::mt19937_64 rng(2000);
+  auto P = ConvexPolytope::hull(test3::random_sphere(rng, 2000));
+  auto Q = ConvexPolytope::hull(test3::random_sphere(rng, 20, 0.3));
+  Pose3 pq(random_rotation(rng), Vec3(0.5, -0.3, 0.4));
+  Depth3 s = minimum_depth(P, Pose3(), Q, pq);
+  ASSERT_TRUE(s.overlapping);
+  for (const Vec3& d : random_dirs(rng, 4)) EXPECT_LE(s.depth, directional_depth(P, Pose3(), Q, pq, d).depth);
+  Pose3 moved = pq, short_of = pq;
+  moved.translation += s.translation * (1 + 1e-9);
+  short_of.translation += s.translation * (1 - 1e-6);
+  EXPECT_FALSE(minimum_depth(P, Pose3(), Q, moved).overlapping);
+  EXPECT_TRUE(minimum_depth(P, Pose3(), Q, short_of).overlapping);
+}
+
 TEST(Depth3, InvalidInput) {
   auto C = ConvexPolytope::hull(test3::grid(2));
   EXPECT_THROW(directional_depth(C, Pose3(), C, Pose3(), Vec3::Zero()), InvalidInput);
