@@ -9,6 +9,7 @@
 // in O(log p + log q) steps; every decision is an exact predicate on input coordinates.
 #include <pendepth/depth2.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "convex2/minkowski_sum.hpp"
@@ -159,8 +160,18 @@ void check_query(const Vec2& t, const Vec2& d) {
 
 }  // namespace
 
-Depth2 directional_depth(const ConvexPolygon& P, const ConvexPolygon& Q, const Vec2& t, const Vec2& d) {
-  check_query(t, d);
+namespace {
+// d scaled by a power of two (exact, same direction) so that its largest component is in [1, 2):
+// |d|, d·d and the cross products neither underflow nor overflow for any finite non-zero d.
+Vec2 normalized_scale(const Vec2& d) {
+  const int e = std::ilogb(std::max(std::abs(d.x()), std::abs(d.y())));
+  return Vec2(std::ldexp(d.x(), -e), std::ldexp(d.y(), -e));
+}
+}  // namespace
+
+Depth2 directional_depth(const ConvexPolygon& P, const ConvexPolygon& Q, const Vec2& t, const Vec2& d_in) {
+  check_query(t, d_in);
+  const Vec2 d = normalized_scale(d_in);
   const Exit ex = find_exit(P, Q, t, d);
   if (!ex.crosses || ex.s_sign <= 0) return none(DepthKind::Directional);
   const Exit en = find_exit(P, Q, t, Vec2(-d));  // t must also lie strictly after the entry

@@ -17,19 +17,27 @@ inline constexpr double kUnit = 0x1p-53;       // unit roundoff
 inline constexpr double kTiny = 0x1p-1000;     // absolute slack covering underflow in products
 
 /// Double with an absolute error bound: |exact - v| <= e for the real-number formula.
+/// e == 0 means every operation so far was exact (checked with TwoSum / FMA), so v is the exact
+/// value and even a zero sign is certified without the rational fallback — the common case for
+/// integer-like coordinates, where degenerate (zero) predicates are frequent.
 struct Fl {
   double v = 0, e = 0;
 };
+inline constexpr double kExactFloor = 0x1p-960;  // below this a product's error may be unrepresentable
 inline Fl operator+(Fl a, Fl b) {
   double v = a.v + b.v;
+  if (a.e == 0 && b.e == 0) {
+    double bv = v - a.v, av = v - bv;
+    if ((a.v - av) + (b.v - bv) == 0) return {v, 0};
+  }
   return {v, a.e + b.e + std::abs(v) * kUnit};
 }
-inline Fl operator-(Fl a, Fl b) {
-  double v = a.v - b.v;
-  return {v, a.e + b.e + std::abs(v) * kUnit};
-}
+inline Fl operator-(Fl a, Fl b) { return a + Fl{-b.v, b.e}; }
 inline Fl operator*(Fl a, Fl b) {
   double v = a.v * b.v;
+  if (a.e == 0 && b.e == 0 && (std::abs(v) > kExactFloor || a.v == 0 || b.v == 0) &&
+      std::fma(a.v, b.v, -v) == 0)
+    return {v, 0};
   return {v, std::abs(a.v) * b.e + std::abs(b.v) * a.e + a.e * b.e + std::abs(v) * kUnit + kTiny};
 }
 inline Fl operator-(Fl a) { return {-a.v, a.e}; }
@@ -59,7 +67,7 @@ inline int certified_sign(Fl r) {
   double b = safe_bound(r.e);
   if (r.v > b) return 1;
   if (r.v < -b) return -1;
-  if (r.e == 0 && r.v == 0) return 0;  // every operation was exact
+  if (r.e == 0) return (r.v > 0) - (r.v < 0);  // every operation was exact
   return 2;
 }
 
@@ -75,7 +83,7 @@ int exact_sign(F&& f) {
 template <class F>
 double accurate_value(F&& f) {
   Fl r = f(LiftFl{});
-  if (std::isfinite(r.v) && safe_bound(r.e) <= std::abs(r.v) * 0x1p-52) return r.v;
+  if (std::isfinite(r.v) && (r.e == 0 || safe_bound(r.e) <= std::abs(r.v) * 0x1p-52)) return r.v;
   Rat q = f(LiftQ{});
   return q.v.get_d();
 }

@@ -1,0 +1,102 @@
+// pendepth — reading shapes and writing results (DESIGN.md §3).
+//
+// Readers report bad input as InvalidInput with a message "SOURCE:LINE: problem" (SOURCE is the
+// file name or the name given for a string), so a command-line tool can print it as one line.
+// Writers print doubles with the shortest representation that reads back to the same double.
+#pragma once
+
+#include <pendepth/depth2.hpp>
+#include <pendepth/geometry.hpp>
+#include <pendepth/polygon.hpp>
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace pendepth::io {
+
+/// A polygon as written in a file: rings (outer first, then holes) in the order and orientation
+/// given, the repeated closing vertex of each ring dropped. line[r][i] is the 1-based source line
+/// of vertex i of ring r, for error messages.
+struct WktPolygon {
+  std::vector<std::vector<Vec2>> rings;
+  std::vector<std::vector<std::size_t>> lines;
+  std::size_t first_line = 1;  ///< line of the POLYGON keyword
+};
+
+/// Parses text holding exactly one `POLYGON ((x y, ...), (hole ...))`: keyword case-insensitive,
+/// whitespace and newlines anywhere, 2D coordinates only. Throws InvalidInput "SOURCE:LINE: ..."
+/// for: an unknown geometry type, POLYGON EMPTY, Z/M coordinates, a missing parenthesis or
+/// comma, a non-numeric token, a non-finite or out-of-range number, a ring with fewer than 3
+/// points (after dropping a repeated closing vertex), trailing text. O(length of text).
+WktPolygon parse_wkt_polygon(std::string_view text, std::string_view source = "<wkt>");
+
+/// Reads a file and parses it with parse_wkt_polygon (SOURCE = the path as given). Throws
+/// InvalidInput "PATH: cannot read file (reason)" if the file cannot be opened.
+WktPolygon read_wkt_polygon(const std::filesystem::path& path);
+
+/// Reads a WKT file holding one convex polygon without holes and validates it as a ConvexPolygon
+/// named `name`. A validation error is rethrown as "PATH:LINE: <ConvexPolygon message>", LINE
+/// being the line of the vertex the message names (else the line of the outer ring's first
+/// vertex). Holes: "PATH: convex polygons cannot have holes (...)". O(n log n).
+ConvexPolygon read_convex_polygon(const std::filesystem::path& path, std::string_view name);
+
+/// The whole content of a file. Throws InvalidInput "PATH: cannot read file (reason)".
+std::string read_text_file(const std::filesystem::path& path);
+
+/// One line of a batch query file: placement t, direction d (all zero: ask for σ), source line.
+struct Query2 {
+  Vec2 t{0, 0};
+  Vec2 d{0, 0};
+  std::size_t line = 0;
+};
+
+/// Parses batch queries, one `x,y,dx,dy` per line (spaces around fields allowed). Blank lines and
+/// lines starting with '#' are skipped, and so is a header: a first data line whose first field
+/// is not a number. Throws InvalidInput "SOURCE:LINE: problem" for a wrong field count ("expected
+/// 4 numbers, got 3"), an empty, non-numeric or non-finite field. O(length of text).
+std::vector<Query2> parse_queries_csv(std::string_view text, std::string_view source = "<csv>");
+std::vector<Query2> read_queries_csv(const std::filesystem::path& path);
+
+/// `POLYGON ((x0 y0, ..., x0 y0))`: the vertices in their stored order, ring closed explicitly,
+/// shortest round-trip doubles. Reading the text back gives the same doubles.
+std::string to_wkt(std::span<const Vec2> ring);
+std::string to_wkt(const ConvexPolygon& polygon);
+
+/// Appends the shortest decimal text that reads back as exactly x (std::to_chars). x finite.
+void append_double(std::string& out, double x);
+
+/// Appends one JSON object (no newline) for a 2D result: depth, translation [x,y], normal,
+/// witness_p, witness_q, kind ("minimum" | "directional" | "separation"), overlapping,
+/// feature_p / feature_q {"kind": "vertex" | "edge" | "none", "index": i}. Feature indices are
+/// input indices into the rings as given (ConvexPolygon::input_index); an edge reports its start
+/// vertex in counter-clockwise order and "end" its end vertex. No allocation once `out` has
+/// capacity.
+void append_json(std::string& out, const Depth2& r, const ConvexPolygon& P, const ConvexPolygon& Q);
+
+/// Appends one CSV row "depth,tx,ty\n".
+void append_csv_row(std::string& out, const Depth2& r);
+
+/// A multi-line human-readable summary of a 2D result (ends with a newline).
+std::string summary(const Depth2& r, const ConvexPolygon& P, const ConvexPolygon& Q);
+
+/// What write_svg draws besides P and Q.
+struct SvgOptions {
+  std::optional<Vec2> direction;  ///< σ_d / separation direction, drawn as an arrow
+  bool draw_M = true;             ///< add a configuration-space panel: M = P ⊕ (−Q), t, t → t + v
+};
+
+/// Writes an SVG picture of a 2D query: P (filled light blue), Q + t (light red, translucent),
+/// Q + t + r.translation (dashed outline), the move, the witness point, the direction, and,
+/// with draw_M, a second panel at the same scale with M, the point t and the arrow t → t + v.
+/// Y axis points up; the view fits the content; outlines are decimated to half a pixel so
+/// 10⁶-vertex shapes give small files. Throws InvalidInput if the file cannot be written.
+/// O(n + m).
+void write_svg(const std::filesystem::path& path, const ConvexPolygon& P, const ConvexPolygon& Q,
+               const Vec2& t, const Depth2& r, const SvgOptions& options = {});
+
+}  // namespace pendepth::io

@@ -1,0 +1,135 @@
+// Result writers: JSON object, CSV row, human summary (DESIGN.md §3).
+//
+// JSON is written by hand with std::to_chars rather than through a DOM: the values are numbers,
+// booleans and fixed words, and `pendepth batch` appends 10⁵ objects into one reused buffer
+// without a heap allocation per query. Tests parse the output with nlohmann-json.
+#include <pendepth/io.hpp>
+
+#include <cassert>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+
+namespace pendepth::io {
+
+void append_double(std::string& out, double x) {
+  assert(std::isfinite(x));
+  char buf[32];
+  auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, x);
+  assert(ec == std::errc());
+  (void)ec;
+  out.append(buf, ptr);
+}
+
+namespace {
+
+const char* kind_name(DepthKind k) {
+  switch (k) {
+    case DepthKind::Minimum: return "minimum";
+    case DepthKind::Directional: return "directional";
+    case DepthKind::Separation: return "separation";
+  }
+  return "minimum";
+}
+
+void append_vec(std::string& out, const Vec2& v) {
+  out += '[';
+  append_double(out, v.x());
+  out += ',';
+  append_double(out, v.y());
+  out += ']';
+}
+
+void append_uint(std::string& out, std::size_t k) {
+  char buf[24];
+  auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, k);
+  out.append(buf, ptr);
+}
+
+// Feature indices in the rings as given: normal-form vertex i is input vertex input_index(i);
+// normal-form edge i runs counter-clockwise from vertex i to vertex i + 1.
+void append_feature(std::string& out, const Feature& f, const ConvexPolygon& poly) {
+  if (f.kind == FeatureKind::None || f.index < 0) {
+    out += "{\"kind\":\"none\",\"index\":null}";
+    return;
+  }
+  const std::size_t i = static_cast<std::size_t>(f.index) % poly.size();
+  out += f.kind == FeatureKind::Vertex ? "{\"kind\":\"vertex\",\"index\":" : "{\"kind\":\"edge\",\"index\":";
+  append_uint(out, poly.input_index(i));
+  if (f.kind == FeatureKind::Edge) {
+    out += ",\"end\":";
+    append_uint(out, poly.input_index((i + 1) % poly.size()));
+  }
+  out += '}';
+}
+
+std::string feature_text(const Feature& f, const ConvexPolygon& poly) {
+  if (f.kind == FeatureKind::None || f.index < 0) return "none";
+  const std::size_t i = static_cast<std::size_t>(f.index) % poly.size();
+  if (f.kind == FeatureKind::Vertex) return "vertex " + std::to_string(poly.input_index(i));
+  return "edge from vertex " + std::to_string(poly.input_index(i)) + " to vertex " +
+         std::to_string(poly.input_index((i + 1) % poly.size()));
+}
+
+std::string vec_text(const Vec2& v) {
+  std::string s = "(";
+  append_double(s, v.x());
+  s += ", ";
+  append_double(s, v.y());
+  return s + ")";
+}
+
+}  // namespace
+
+void append_json(std::string& out, const Depth2& r, const ConvexPolygon& P, const ConvexPolygon& Q) {
+  out += "{\"depth\":";
+  append_double(out, r.depth);
+  out += ",\"translation\":";
+  append_vec(out, r.translation);
+  out += ",\"normal\":";
+  append_vec(out, r.normal);
+  out += ",\"witness_p\":";
+  append_vec(out, r.witness_p);
+  out += ",\"witness_q\":";
+  append_vec(out, r.witness_q);
+  out += ",\"kind\":\"";
+  out += kind_name(r.kind);
+  out += "\",\"overlapping\":";
+  out += r.overlapping ? "true" : "false";
+  out += ",\"feature_p\":";
+  append_feature(out, r.feature_p, P);
+  out += ",\"feature_q\":";
+  append_feature(out, r.feature_q, Q);
+  out += '}';
+}
+
+void append_csv_row(std::string& out, const Depth2& r) {
+  append_double(out, r.depth);
+  out += ',';
+  append_double(out, r.translation.x());
+  out += ',';
+  append_double(out, r.translation.y());
+  out += '\n';
+}
+
+std::string summary(const Depth2& r, const ConvexPolygon& P, const ConvexPolygon& Q) {
+  std::string s;
+  switch (r.kind) {
+    case DepthKind::Minimum: s += "minimum depth (shortest separating translation)\n"; break;
+    case DepthKind::Directional: s += "directional depth along the given direction\n"; break;
+    case DepthKind::Separation: s += "complete separation along the given direction\n"; break;
+  }
+  s += "  overlapping: ";
+  s += r.overlapping ? "yes\n" : "no (interiors disjoint; touching counts as not overlapping)\n";
+  s += "  depth:       ";
+  append_double(s, r.depth);
+  s += "\n  translation: " + vec_text(r.translation) + "  (move Q by this to separate)\n";
+  if (r.overlapping) {
+    s += "  normal:      " + vec_text(r.normal) + "\n";
+    s += "  witness P:   " + vec_text(r.witness_p) + "  on " + feature_text(r.feature_p, P) + " of P\n";
+    s += "  witness Q:   " + vec_text(r.witness_q) + "  on " + feature_text(r.feature_q, Q) + " of Q\n";
+  }
+  return s;
+}
+
+}  // namespace pendepth::io
