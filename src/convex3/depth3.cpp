@@ -95,8 +95,16 @@ Depth3 minimum_depth(const ConvexPolytope& P, const Pose3& pose_p, const ConvexP
   return finish(P, Q, pose_p, rel, *best, best->distance, best->unit, DepthKind::Minimum, cands.size());
 }
 
-Depth3 directional_depth(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q, const Pose3& pose_q,
-                         const Vec3& d) {
+namespace convex3 {
+
+// σ_d by Algorithm Compute-Depth-3D on the DK hierarchies (directional3.cpp).
+Depth3 directional_depth_dk(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
+                            const Pose3& pose_q, const Vec3& d);
+
+// Reference for tests: the exit facet as the minimum over ALL implicit facet normals of M
+// (minkowski_facets.cpp), O(n·m) exact predicates.
+Depth3 directional_depth_facets(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
+                                const Pose3& pose_q, const Vec3& d) {
   if (!d.allFinite() || d == Vec3::Zero()) throw InvalidInput("direction: zero or non-finite");
   RelativePose rel = relative(pose_p, pose_q);
   Vec3 dl = pose_p.matrix().transpose() * d;  // direction in P's frame
@@ -111,6 +119,13 @@ Depth3 directional_depth(const ConvexPolytope& P, const Pose3& pose_p, const Con
   }
   // 0 ∈ int M and M bounded: some facet faces d.
   return finish(P, Q, pose_p, rel, *best, best->exit, dl.normalized(), DepthKind::Directional, cands.size());
+}
+
+}  // namespace convex3
+
+Depth3 directional_depth(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q, const Pose3& pose_q,
+                         const Vec3& d) {
+  return convex3::directional_depth_dk(P, pose_p, Q, pose_q, d);
 }
 
 }  // namespace pendepth
