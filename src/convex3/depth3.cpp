@@ -8,6 +8,7 @@
 // would have to match.
 #include <pendepth/depth3.hpp>
 
+#include "convex3/minimum_expand.hpp"
 #include "convex3/minkowski_facets.hpp"
 
 #include <algorithm>
@@ -82,17 +83,11 @@ Depth3 finish(const ConvexPolytope& P, const ConvexPolytope& Q, const Pose3& pos
 
 }  // namespace
 
+// σ by certified expansion on the implicit M (minimum_expand.cpp); the O(n·m) enumeration of
+// minkowski_facets.cpp stays the reference in tests.
 Depth3 minimum_depth(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q, const Pose3& pose_q) {
   RelativePose rel = relative(pose_p, pose_q);
-  auto cands = convex3::minkowski_facets(P, Q, rel, std::nullopt);
-  Depth3 none;
-  none.candidates = cands.size();
-  const FacetCandidate* best = nullptr;
-  for (const auto& k : cands) {
-    if (k.sign <= 0) return none;  // 0 ∉ int M: touching or separated
-    if (!best || k.distance < best->distance) best = &k;
-  }
-  return finish(P, Q, pose_p, rel, *best, best->distance, best->unit, DepthKind::Minimum, cands.size());
+  return convex3::minimum_depth_expand(P, Q, rel, pose_p.matrix(), pose_p.translation);
 }
 
 namespace convex3 {

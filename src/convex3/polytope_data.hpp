@@ -8,6 +8,7 @@
 #include <pendepth/polytope.hpp>
 
 #include <array>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,22 @@ struct DKLevel {
   int cw(int h) const { return next(twin[h]); }
 };
 
+/// Vertex adjacency of level 0 in flat arrays (CSR) plus coordinate ranges, for support queries
+/// by hill climbing (minimum_expand.cpp). Built once per shape on first use (vertex_adjacency.cpp).
+struct VertexAdjacency {
+  std::vector<int> start;  ///< n + 1 offsets: vertex v's entries are [start[v], start[v+1])
+  std::vector<int> nbr;    ///< neighbour vertex (every level-0 edge, flat-facet diagonals too), CCW
+  std::vector<int> he;     ///< level-0 half-edge v -> nbr[k]
+  std::vector<double> nx, ny, nz;  ///< coordinates of nbr[k] (contiguous copies for the climbs)
+  Vec3 extent{0, 0, 0};    ///< max − min of each coordinate over the vertices
+  Vec3 centroid{0, 0, 0};  ///< mean of the vertices (rounded; an interior point up to rounding)
+  /// Cube map of seeds: direction u falls in cell (face of the largest |u_i|, then a k × k grid
+  /// of the other two coordinates divided by |u_i|); cube[cell] is a vertex maximising the
+  /// rounded u·v at the cell's centre direction (approximate: a starting point for exact climbs).
+  int cube_k = 1;
+  std::vector<int> cube;
+};
+
 struct PolytopeData {
   std::string name;
   std::vector<Vec3> v;
@@ -41,7 +58,24 @@ struct PolytopeData {
   /// polytope proper, not diagonals of flat facets.
   std::vector<int> edges;
   std::array<int, 4> protected_tet{};
+  /// Lazily built VertexAdjacency (thread-safe); a copy starts empty and rebuilds on use.
+  struct AdjacencyCache {
+    std::once_flag once;
+    VertexAdjacency value;
+    AdjacencyCache() = default;
+    AdjacencyCache(const AdjacencyCache&) {}
+    AdjacencyCache& operator=(const AdjacencyCache&) { return *this; }
+  };
+  mutable AdjacencyCache adjacency_cache;
 };
+
+/// The CSR adjacency of d's level 0 and its seed cube map, built on the first call (O(n)), then
+/// O(1).
+const VertexAdjacency& vertex_adjacency(const PolytopeData& d);
+
+/// A vertex near the maximiser of u·v (from the cube map; any vertex for a zero or non-finite
+/// u). O(1).
+int seed_vertex(const VertexAdjacency& a, const Vec3& u);
 
 /// Exact incremental hull of pts restricted to `ids`, seeded by 4 affinely independent ids.
 /// Returns triangles (CCW from outside) over point ids. Points strictly inside or on the
