@@ -116,14 +116,29 @@ struct Ctx {
   const PolytopeData& data(bool isq) const { return isq ? Q : P; }
 };
 
-// Lexicographic sign of a formal quantity given by its coefficients in order.
+// Lexicographic sign of a formal quantity given by its coefficients in order (from `start`).
 template <class Coef>
-int formal_sign(int n, Coef coef) {
-  for (int k = 0; k < n; ++k) {
+int formal_sign(int n, Coef coef, int start = 0) {
+  for (int k = start; k < n; ++k) {
     int s = exact_sign([&](auto L) { return coef(L, k); });
     if (s != 0) return s;
   }
   return 0;
+}
+
+// Fast paths: values cached as exact::Fl (double + certified error bound, valid for the
+// expression that produced them); `cert` is their certified sign or 2 (undecided), in which case
+// the exact formula is evaluated from scratch.
+using exact::Fl;
+using FV = V3<Fl>;
+inline int cert(const Fl& v) { return exact::certified_sign(v); }
+inline FV flv(const Vec3& v) { return {Fl{v.x(), 0}, Fl{v.y(), 0}, Fl{v.z(), 0}}; }
+inline FV fl_sub(const Vec3& a, const Vec3& b) { return {Fl{a.x(), 0} - Fl{b.x(), 0}, Fl{a.y(), 0} - Fl{b.y(), 0}, Fl{a.z(), 0} - Fl{b.z(), 0}}; }
+// Rᵀ u, exactly the functional u·(R q) on Q's local coordinates.
+inline FV fl_rt(const Eigen::Matrix3d& R, const FV& u) {
+  FV w;
+  for (int j = 0; j < 3; ++j) w[j] = Fl{R(0, j), 0} * u[0] + Fl{R(1, j), 0} * u[1] + Fl{R(2, j), 0} * u[2];
+  return w;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -135,6 +150,11 @@ struct Cand {
   int sgn = 1;                                   ///< orientation of the edge-edge normal
   int xs = -1, ys = -1;                          ///< support vertices: P max of u·x, Q min of u·y'
   int dsign = 0;                                 ///< formal sign of u·d_ε
+  Fl n0, dd[3];                                  ///< cached u·(x_s − y'_s) and u·dv[b]
+  bool same(const Cand& o) const {
+    return kind == o.kind && sgn == o.sgn && xs == o.xs && ys == o.ys && std::equal(x, x + 3, o.x) &&
+           std::equal(y, y + 3, o.y);
+  }
 };
 
 template <class Lf>
@@ -164,21 +184,37 @@ auto cand_d(const Ctx& c, const Cand& k, Lf L, int b) {
   return dot(cand_u(c, k, L), c.lift(L, c.dv[b]));
 }
 
-int cand_dsign(const Ctx& c, const Cand& k) {
-  return formal_sign(3, [&](auto L, int b) { return cand_d(c, k, L, b); });
+// Caches N's leading coefficient and D, and sets the formal sign of D = u·d_ε.
+void prepare(const Ctx& c, Cand& k) {
+  exact::LiftFl L;
+  FV u = cand_u(c, k, L);
+  k.n0 = dot(u, c.mpoint(L, k.xs, k.ys));
+  for (int b = 0; b < 3; ++b) k.dd[b] = dot(u, flv(c.dv[b]));
+  k.dsign = 0;
+  for (int b = 0; b < 3 && k.dsign == 0; ++b) {
+    int s = cert(k.dd[b]);
+    k.dsign = s != 2 ? s : formal_sign(3, [&](auto Lf, int bb) { return cand_d(c, k, Lf, bb); }, b);
+  }
 }
 
 // Sign of T1 − T2 (formal; monomials δ^a ε^b ordered by (a, b): δ ≪ ε).
 int compare_t(const Ctx& c, const Cand& k1, const Cand& k2) {
-  int s = formal_sign(12, [&](auto L, int ab) {
-    int a = ab / 3, b = ab % 3;
-    return cand_n(c, k1, L, a) * cand_d(c, k2, L, b) - cand_n(c, k2, L, a) * cand_d(c, k1, L, b);
-  });
+  if (k1.same(k2)) return 0;
+  int s = cert(k1.n0 * k2.dd[0] - k2.n0 * k1.dd[0]);
+  if (s == 2 || s == 0)
+    s = formal_sign(12, [&](auto L, int ab) {
+      int a = ab / 3, b = ab % 3;
+      return cand_n(c, k1, L, a) * cand_d(c, k2, L, b) - cand_n(c, k2, L, a) * cand_d(c, k1, L, b);
+    }, s == 0 ? 1 : 0);
   return s * k1.dsign * k2.dsign;
 }
 
 // Sign of det(d_ε, Z1 − o_δ, Z2 − o_δ) for Z = P[x] − Q'[y]; < 0: Z2 is more clockwise around ℓ.
 int compare_turn(const Ctx& c, int x1, int y1, int x2, int y2) {
+  if (x1 == x2 && y1 == y2) return 0;
+  exact::LiftFl Lf;
+  int s = cert(dot(flv(c.dv[0]), cross(c.mpoint(Lf, x1, y1), c.mpoint(Lf, x2, y2))));
+  if (s == 1 || s == -1) return s;
   // W[0] = Z, W[k] = −e_k (k = 1..3): coefficient of δ^a is Σ_{a1+a2=a} det(d_b, W1[a1], W2[a2]).
   return formal_sign(21, [&](auto L, int ab) {
     using T = decltype(L(0.0));
@@ -204,7 +240,20 @@ struct Small {
   std::vector<int> id;                    ///< global vertex ids
   std::vector<std::array<int, 3>> tri;    ///< local indices, CCW seen from outside
   std::vector<std::array<int, 4>> edge;   ///< local a, b, apex of (a,b)'s triangle, of (b,a)'s
+  // Cached in P's frame (see prepare_small): M's candidate normal per triangle (n for X,
+  // −n(Q') for Y) and, per edge, b − a, c − a, e − a.
+  std::vector<FV> tri_u;
+  std::vector<std::array<FV, 3>> edge_v;
 };
+
+void prepare_small(const Ctx& c, Small& s) {
+  exact::LiftFl L;
+  auto dv = [&](int a, int b) { return c.vdiff(L, s.isq, s.id[a], s.id[b]); };
+  s.tri_u.clear();
+  s.edge_v.clear();
+  for (const auto& t : s.tri) s.tri_u.push_back(s.isq ? cross(dv(t[2], t[0]), dv(t[1], t[0])) : cross(dv(t[1], t[0]), dv(t[2], t[0])));
+  for (const auto& e : s.edge) s.edge_v.push_back({dv(e[1], e[0]), dv(e[2], e[0]), dv(e[3], e[0])});
+}
 
 // Edges with their two apexes; diagonals of flat facets are left out (the apex test of an
 // edge-edge candidate is only meaningful at a true edge, and flat facets are face candidates).
@@ -295,6 +344,12 @@ struct State {
   int xc = -1, yc = -1;
 };
 
+// A triangle rotated to start at its lowest id (same orientation), so that equal features from
+// different subproblems compare equal structurally.
+void canonical(int* t) {
+  while (t[0] > t[1] || t[0] > t[2]) std::rotate(t, t + 1, t + 3);
+}
+
 // Brute force over the facet normals of X ⊕ (−Y) (a superset is fine: each candidate carries its
 // exact support pair, so its half-space contains the sum). O(|X|·|Y|) candidates.
 State solve_small(Ctx& c, const Small& X, const Small& Y) {
@@ -305,57 +360,78 @@ State solve_small(Ctx& c, const Small& X, const Small& Y) {
   bool has_exit = false, has_entry = false;
   auto consider = [&](Cand& k) {
     ++c.candidates;
-    k.dsign = cand_dsign(c, k);
+    prepare(c, k);
     if (k.dsign > 0) {
       if (!has_exit || compare_t(c, k, exit) < 0) exit = k, has_exit = true;
     } else if (k.dsign < 0) {
       if (!has_entry || compare_t(c, k, entry) > 0) entry = k, has_entry = true;
     }
   };
-  // Faces of X: Y's support minimises u·y'.
-  for (const auto& t : X.tri) {
+  // Faces of X: Y's support minimises u·y' = (Rᵀu)·q + const.
+  for (std::size_t f = 0; f < X.tri.size(); ++f) {
     Cand k;
     k.kind = Cand::FaceX;
-    for (int e = 0; e < 3; ++e) k.x[e] = X.id[t[e]];
+    for (int e = 0; e < 3; ++e) k.x[e] = X.id[X.tri[f][e]];
+    canonical(k.x);
     k.xs = k.x[0];
+    FV w = fl_rt(c.pose.R, X.tri_u[f]);
     int best = Y.id[0];
-    for (int g : Y.id)
-      if (g != best && exact_sign([&](auto L) { return dot(cand_u(c, k, L), c.qdiff(L, g, best)); }) < 0) best = g;
+    for (int g : Y.id) {
+      if (g == best) continue;
+      int sg = cert(dot(w, fl_sub(QV[g], QV[best])));
+      if (sg == 2) sg = exact_sign([&](auto L) { return dot(cand_u(c, k, L), c.qdiff(L, g, best)); });
+      if (sg < 0) best = g;
+    }
     k.ys = best;
     consider(k);
   }
   // Faces of Y: M's normal is −n(Q'), X's support maximises it.
-  for (const auto& t : Y.tri) {
+  for (std::size_t f = 0; f < Y.tri.size(); ++f) {
     Cand k;
     k.kind = Cand::FaceY;
-    for (int e = 0; e < 3; ++e) k.y[e] = Y.id[t[e]];
+    for (int e = 0; e < 3; ++e) k.y[e] = Y.id[Y.tri[f][e]];
+    canonical(k.y);
     k.ys = k.y[0];
+    const FV& u = Y.tri_u[f];
     int best = X.id[0];
-    for (int g : X.id)
-      if (g != best && exact_sign([&](auto L) { return dot(cand_u(c, k, L), c.pdiff(L, g, best)); }) > 0) best = g;
+    for (int g : X.id) {
+      if (g == best) continue;
+      int sg = cert(dot(u, fl_sub(PV[g], PV[best])));
+      if (sg == 2) sg = exact_sign([&](auto L) { return dot(cand_u(c, k, L), c.pdiff(L, g, best)); });
+      if (sg > 0) best = g;
+    }
     k.xs = best;
     consider(k);
   }
   // Edge pairs extreme for ±u (the test of minkowski_facets.cpp).
-  for (const auto& ex : X.edge) {
+  for (std::size_t i = 0; i < X.edge.size(); ++i) {
+    const auto& ex = X.edge[i];
+    const auto& xv = X.edge_v[i];
     int pa = X.id[ex[0]], pb = X.id[ex[1]], pc = X.id[ex[2]], pe = X.id[ex[3]];
-    for (const auto& ey : Y.edge) {
+    for (std::size_t j = 0; j < Y.edge.size(); ++j) {
+      const auto& ey = Y.edge[j];
+      const auto& yv = Y.edge_v[j];
       int qa = Y.id[ey[0]], qb = Y.id[ey[1]], qc = Y.id[ey[2]], qe = Y.id[ey[3]];
+      FV uf = cross(xv[0], yv[0]);
       auto U = [&](auto L) { return cross(c.pdiff(L, pb, pa), c.qdiff(L, qb, qa)); };
-      int s1 = exact_sign([&](auto L) { return dot(U(L), c.pdiff(L, pc, pa)); });
-      int s2 = exact_sign([&](auto L) { return dot(U(L), c.pdiff(L, pe, pa)); });
+      auto side = [&](const FV& off, bool isq, int v, int a) {
+        int sg = cert(dot(uf, off));
+        if (sg != 2) return sg;
+        return exact_sign([&](auto L) { return dot(U(L), c.vdiff(L, isq, v, a)); });
+      };
+      int s1 = side(xv[1], false, pc, pa);
+      int s2 = side(xv[2], false, pe, pa);
       if (s1 * s2 < 0 || (s1 == 0 && s2 == 0)) continue;
-      int s = s1 != 0 ? -s1 : -s2;  // P's edge is extreme for s·u
-      if (s * exact_sign([&](auto L) { return dot(U(L), c.qdiff(L, qc, qa)); }) < 0) continue;
-      if (s * exact_sign([&](auto L) { return dot(U(L), c.qdiff(L, qe, qa)); }) < 0) continue;
-      Cand k;
+      int sgn = s1 != 0 ? -s1 : -s2;  // P's edge is extreme for sgn·u
+      if (sgn * side(yv[1], true, qc, qa) < 0 || sgn * side(yv[2], true, qe, qa) < 0) continue;
+      Cand k;  // canonical: lower id first on each edge (each swap flips u)
       k.kind = Cand::EdgeEdge;
-      k.x[0] = pa, k.x[1] = pb, k.y[0] = qa, k.y[1] = qb, k.sgn = s;
-      k.xs = pa, k.ys = qa;
+      k.x[0] = std::min(pa, pb), k.x[1] = std::max(pa, pb), k.y[0] = std::min(qa, qb), k.y[1] = std::max(qa, qb);
+      k.sgn = sgn * (pa > pb ? -1 : 1) * (qa > qb ? -1 : 1);
+      k.xs = k.x[0], k.ys = k.y[0];
       consider(k);
     }
   }
-  (void)PV, (void)QV;
   State st;
   assert(has_exit && has_entry);
   if (compare_t(c, entry, exit) <= 0) {
@@ -403,6 +479,13 @@ struct Func {
   int sign(int a, int b) const {
     return formal_sign(ncoef(), [&](auto L, int k) { return diff(L, k, a, b); });
   }
+  // Vertices of the exit facet's feature on this side lie on its plane: F is exactly equal on
+  // them (the walk meets these ties at every level; certifying them needs no arithmetic).
+  bool on_feature(int v) const {
+    if (!st->hit) return false;
+    const int* f = isq ? st->cand.y : st->cand.x;
+    return v == f[0] || v == f[1] || v == f[2];
+  }
 };
 
 // The O'Rourke / Edelsbrunner–Maurer walk of extreme_query.cpp with the key (F, X, Y), F formal
@@ -411,7 +494,12 @@ struct Walker {
   const Func& f;
   const std::vector<Vec3>& V;
   int kx = 0, ky = 1;
+  FV w0;  ///< flip·U_0 on local coordinates (cached leading coefficient)
   explicit Walker(const Func& fn) : f(fn), V(fn.c->local(fn.isq)) {
+    FV u0 = f.U(exact::LiftFl{}, 0);
+    if (f.isq) u0 = fl_rt(f.c->pose.R, u0);
+    for (auto& x : u0) x = Fl{double(f.flip), 0} * x;
+    w0 = u0;
     Vec3 w = Vec3::Zero();
     for (int k = 0; k < f.ncoef() && w == Vec3::Zero(); ++k) {
       auto u = f.U(exact::LiftFl{}, k);
@@ -425,9 +513,28 @@ struct Walker {
         if (std::abs(w[a[t]]) < std::abs(w[a[s]])) std::swap(a[s], a[t]);
     kx = a[0], ky = a[1];
   }
+  // Sign of F(p) − F(q) (the formal functional only).
+  int fsign(int p, int q) const {
+    if (p == q || (f.on_feature(p) && f.on_feature(q))) return 0;
+    int s = cert(dot(w0, fl_sub(V[p], V[q])));
+    return s == 1 || s == -1 ? s : f.sign(p, q);
+  }
+  static int sgn(double a, double b) { return (a > b) - (a < b); }
+  // Sign of A1·F(c2 − m) − A2·F(c1 − m) for a coordinate A (exact when a factor is zero).
+  template <class A>
+  int cross_term(int m, int c1, int c2, int axis, A formal) const {
+    int f1 = fsign(c1, m), f2 = fsign(c2, m);
+    int a1 = sgn(V[c1][axis], V[m][axis]), a2 = sgn(V[c2][axis], V[m][axis]);
+    if (f1 == 0 || a2 == 0) return a1 * f2;
+    if (f2 == 0 || a1 == 0) return -a2 * f1;
+    exact::LiftFl Lf;
+    auto Ax = [&](int c) { return Fl{V[c][axis], 0} - Fl{V[m][axis], 0}; };
+    int s = cert(Ax(c1) * dot(w0, fl_sub(V[c2], V[m])) - Ax(c2) * dot(w0, fl_sub(V[c1], V[m])));
+    return s == 1 || s == -1 ? s : formal(Lf);
+  }
   int compare(int p, int q) const {
     if (p == q) return 0;
-    int s = f.sign(p, q);
+    int s = fsign(p, q);
     if (s != 0) return s;
     if (V[p][kx] != V[q][kx]) return V[p][kx] > V[q][kx] ? 1 : -1;
     if (V[p][ky] != V[q][ky]) return V[p][ky] > V[q][ky] ? 1 : -1;
@@ -436,14 +543,18 @@ struct Walker {
   int turn(int m, int c1, int c2) const {
     auto X = [&](auto L, int c) { return L(V[c][kx]) - L(V[m][kx]); };
     auto Y = [&](auto L, int c) { return L(V[c][ky]) - L(V[m][ky]); };
-    int s = formal_sign(f.ncoef(), [&](auto L, int k) {
-      return X(L, c1) * f.diff(L, k, c2, m) - X(L, c2) * f.diff(L, k, c1, m);
+    int s = cross_term(m, c1, c2, kx, [&](auto) {
+      return formal_sign(f.ncoef(), [&](auto L, int k) {
+        return X(L, c1) * f.diff(L, k, c2, m) - X(L, c2) * f.diff(L, k, c1, m);
+      });
     });
     if (s != 0) return s;
     s = exact_sign([&](auto L) { return X(L, c1) * Y(L, c2) - X(L, c2) * Y(L, c1); });
     if (s != 0) return s;
-    return formal_sign(f.ncoef(), [&](auto L, int k) {
-      return Y(L, c1) * f.diff(L, k, c2, m) - Y(L, c2) * f.diff(L, k, c1, m);
+    return cross_term(m, c1, c2, ky, [&](auto) {
+      return formal_sign(f.ncoef(), [&](auto L, int k) {
+        return Y(L, c1) * f.diff(L, k, c2, m) - Y(L, c2) * f.diff(L, k, c1, m);
+      });
     });
   }
 };
@@ -533,8 +644,9 @@ struct Query {
     Walker fr(f);
     WalkResult r = walk(D, fr, lev);
     int ref = isq ? (st.hit ? st.cand.ys : st.yc) : (st.hit ? st.cand.xs : st.xc);
-    if (r.m == ref || f.sign(r.m, ref) <= 0) return false;
+    if (fr.fsign(r.m, ref) <= 0) return false;
     out = make_cap(D, isq, lev, r.he);
+    prepare_small(c, out);
     return true;
   }
 
@@ -638,6 +750,8 @@ Depth3 directional_depth_dk(const ConvexPolytope& Pp, const Pose3& pose_p, const
     if (std::abs(d[i]) > std::abs(d[big])) big = i;
   Ctx c{Pp.data(), Qp.data(), pose, {}, 0};
   Query q{c, top_small(c.P, false), top_small(c.Q, true)};
+  prepare_small(c, q.topP);
+  prepare_small(c, q.topQ);
   auto run = [&](int s) {
     c.dv[0] = s * d;
     c.dv[1] = s * Vec3::Unit((big + 1) % 3);
