@@ -70,6 +70,7 @@ using exact::safe_bound;
 
 constexpr double kU = exact::kUnit;       // unit roundoff 2^-53
 constexpr double kInflate = 1 + 0x1p-20;  // covers the rounding of the bound formulas themselves
+constexpr int kSeedMinK = 4;              // cube maps this fine (n >~ 300) also seed warm starts
 
 // ---- double-double numbers with a running absolute error bound (accurate distances) ----------
 struct DD {
@@ -174,13 +175,13 @@ bool zero_pair(const Pairs& t, bool of_p, int v, int w) {
 }
 
 // ---- the expansion ---------------------------------------------------------------------------
-// Rounded values are formed relative to reference vertices c_P, c_Q (so that offsets of the
-// shapes or of the placement do not widen the bounds): p̂ = p − c_P, r̂ = R(q − c_Q),
-// m̂ = p̂ − r̂ − τ̂ with τ = t + R c_Q − c_P (double-double, then rounded). Per query, uniform
-// bounds on every rounded quantity (from the coordinate extents) give semi-static filters.
+// Rounded points are formed relative to reference vertices c_P, c_Q (so that offsets of the
+// shapes or of the placement do not widen the bounds): m̂ = (p − c_P) − R(q − c_Q) − τ̂ with
+// τ = t + R c_Q − c_P (double-double, then rounded). Per query, uniform bounds on every rounded
+// quantity (from the coordinate extents) give semi-static filters.
 struct Vert {
   int i = -1, j = -1;
-  double ph[3], rh[3], mh[3];  // p̂, r̂, m̂ (rounded)
+  double mh[3];  // m̂ (rounded p_i − q'_j)
 };
 
 struct Facet {
@@ -188,8 +189,8 @@ struct Facet {
   double n[3];                   // rounded outward normal (m_b − m_a) × (m_c − m_a)
   double h = 0, he = 0;          // rounded n·m_a (> 0: 0 strictly inside the half-space), bound
   double eo = 0;                 // bound of the rounded orient() value
-  double key = 0;                // Phase B: lower bound of the distance from 0 to the plane
   double dist = 0;               // accurate distance (once refined)
+  double unit[3];                // n/|n| from the double-double normal (once refined)
   int hsign = 1;                 // Phase A: exact sign of h
   bool refined = false;
 };
@@ -234,13 +235,13 @@ class Expander {
       double tau_err = std::abs(tau.lo) + safe_bound(tau.e);
       double ep = AP_.extent[k] * (1 + 4 * kU), erq = 0;
       for (int l = 0; l < 3; ++l) erq += std::abs(R_(k, l)) * AQ_.extent[l] * (1 + 4 * kU);
-      double dp = kU * ep, dr = 4.03 * kU * erq;  // |p̂ − (p − c_P)|, |r̂ − R(q − c_Q)|
+      double dp = kU * ep, dr = 4.03 * kU * erq;  // |fl(p − c_P) − (p − c_P)|, same for R(q − c_Q)
       ext_p_[k] = ep;
-      bd_[k] = (ep + erq) * kInflate;                            // >= |D_k|
-      ed_[k] = (2 * dp + 2 * dr + 2.02 * kU * bd_[k]) * kInflate + exact::kTiny;  // >= |D̂_k − D_k|
-      B_[k] = bd_[k] + ed_[k];                                   // >= |D̂_k|
-      mb_[k] = (ep + erq + std::abs(tau_[k]) + tau_err) * kInflate;  // >= |m_k|
+      mb_[k] = (ep + erq + std::abs(tau_[k]) + tau_err) * kInflate;                // >= |m_k|
       em_[k] = (dp + dr + tau_err + 2.02 * kU * mb_[k]) * kInflate + exact::kTiny;  // >= |m̂_k − m_k|
+      bd_[k] = (ep + erq) * kInflate;                                             // >= |m_x − m_a|_k
+      ed_[k] = (2 * em_[k] + 1.01 * kU * (bd_[k] + 2 * em_[k])) * kInflate;       // >= |D̂_k − D_k|
+      B_[k] = bd_[k] + ed_[k];                                                    // >= |D̂_k|
     }
     double nn = 0;
     for (int k = 0; k < 3; ++k) {  // cross product of two rounded differences
@@ -250,6 +251,23 @@ class Expander {
     }
     ne_norm_ = std::sqrt(nn) * kInflate;
     ed_max_ = std::max({ed_[0], ed_[1], ed_[2]});
+    // The bounds below are affine in |n_k| (and |w_l|) for facet normals: fold the constants.
+    // kInflate also covers the rounding of the short sums that evaluate them.
+    co_ = ch_ = cep_ = ceq_ = exact::kTiny;
+    for (int k = 0; k < 3; ++k) {
+      double eq = AQ_.extent[k] * (1 + 4 * kU), rq = 0, rne = 0;
+      for (int l = 0; l < 3; ++l) rq += std::abs(R_(k, l)) * AQ_.extent[l] * (1 + 4 * kU);
+      for (int l = 0; l < 3; ++l) rne += std::abs(R_(k, l)) * ne_[k] * AQ_.extent[l] * (1 + 4 * kU);
+      ch_ += kInflate * ne_[k] * mb_[k];
+      bh_[k] = kInflate * (em_[k] + 3.02 * kU * (mb_[k] + em_[k]));
+      co_ += 2 * kInflate * ne_[k] * mb_[k];  // orient = n·m̂_x − h̃: twice he, plus a rounding
+      bo_[k] = 2 * bh_[k] + kInflate * 2.02 * kU * (mb_[k] + em_[k]);
+      cep_ += kInflate * ne_[k] * ext_p_[k];
+      bp_[k] = kInflate * 4.02 * kU * ext_p_[k];
+      ceq_ += kInflate * kInflate * rne;
+      bqn_[k] = kInflate * kInflate * 3.02 * kU * rq;
+      bqw_[k] = kInflate * 4.02 * kU * eq;
+    }
   }
 
   Depth3 run(const Eigen::Matrix3d& Rp, const Vec3& tp) {
@@ -271,6 +289,7 @@ class Expander {
   Vec3 cp_, cq_;
   double thi_[3], tlo_[3], tau_[3];
   double ext_p_[3], bd_[3], ed_[3], B_[3], mb_[3], em_[3], ne_[3], ne_norm_, ed_max_;
+  double co_, bo_[3], ch_, bh_[3], cep_, bp_[3], ceq_, bqn_[3], bqw_[3];
   std::vector<Vert>& V_;
   std::vector<Facet>& F_;
   std::vector<int>& mark_;
@@ -333,8 +352,8 @@ class Expander {
   }
 
   // ---- rounded values ---------------------------------------------------------------------
-  void diff_r(const Vert& x, const Vert& a, double d[3]) const {  // D̂ = m̂_x − m̂_a, see ed_
-    for (int k = 0; k < 3; ++k) d[k] = (x.ph[k] - a.ph[k]) - (x.rh[k] - a.rh[k]);
+  static void diff_r(const Vert& x, const Vert& a, double d[3]) {  // D̂ = m̂_x − m̂_a, see ed_
+    for (int k = 0; k < 3; ++k) d[k] = x.mh[k] - a.mh[k];
   }
   static void cross_r(const double a[3], const double b[3], double n[3]) {
     n[0] = a[1] * b[2] - a[2] * b[1];
@@ -358,17 +377,15 @@ class Expander {
     x.i = i, x.j = j;
     const Vec3 &p = P_.v[i], &q = Q_.v[j];
     double dq[3] = {q[0] - cq_[0], q[1] - cq_[1], q[2] - cq_[2]};
-    for (int k = 0; k < 3; ++k) {
-      x.ph[k] = p[k] - cp_[k];
-      x.rh[k] = R_(k, 0) * dq[0] + R_(k, 1) * dq[1] + R_(k, 2) * dq[2];
-      x.mh[k] = (x.ph[k] - x.rh[k]) - tau_[k];
-    }
+    for (int k = 0; k < 3; ++k)
+      x.mh[k] = ((p[k] - cp_[k]) - (R_(k, 0) * dq[0] + R_(k, 1) * dq[1] + R_(k, 2) * dq[2])) - tau_[k];
     V_.push_back(x);
     return static_cast<int>(V_.size()) - 1;
   }
 
   int add_facet(int a, int b, int c) {
-    Facet f;
+    const int id = static_cast<int>(F_.size());
+    Facet& f = F_.emplace_back();
     f.v = {a, b, c};
     f.nb = {-1, -1, -1};
     double d1[3], d2[3];
@@ -377,11 +394,10 @@ class Expander {
     cross_r(d1, d2, f.n);
     const double* m = V_[a].mh;
     f.h = f.n[0] * m[0] + f.n[1] * m[1] + f.n[2] * m[2];
-    f.he = bound_zero(f.n, ne_);
-    f.eo = bound_side(f.n, ne_);
-    F_.push_back(f);
+    const double a0 = std::abs(f.n[0]), a1 = std::abs(f.n[1]), a2 = std::abs(f.n[2]);
+    f.he = ch_ + a0 * bh_[0] + a1 * bh_[1] + a2 * bh_[2];  // = bound_zero(n, ne_)
+    f.eo = co_ + a0 * bo_[0] + a1 * bo_[1] + a2 * bo_[2];  // = bound_side(n, ne_)
     mark_.push_back(0);
-    const int id = static_cast<int>(F_.size()) - 1;
     pos_.push_back(static_cast<int>(alive_.size()));
     alive_.push_back(id);
     keys_.push_back(std::numeric_limits<double>::infinity());
@@ -398,13 +414,12 @@ class Expander {
   // Sign of n_f·(m_x − m_a): > 0 iff x is strictly beyond facet f's plane.
   int orient(int f, int x) const {
     const Facet& F = F_[f];
-    const Vert &X = V_[x], &A = V_[F.v[0]];
-    double d[3];
-    diff_r(X, A, d);
-    double s = F.n[0] * d[0] + F.n[1] * d[1] + F.n[2] * d[2];
+    const Vert& X = V_[x];
+    double s = (F.n[0] * X.mh[0] + F.n[1] * X.mh[1] + F.n[2] * X.mh[2]) - F.h;
     if (s > F.eo) return 1;
     if (s < -F.eo) return -1;
     if (zero_orient(pairs(F.v[0], F.v[1], F.v[2]), X.i, X.j)) return 0;
+    const Vert& A = V_[F.v[0]];
     return exact_sign([&](auto L) { return dot(normal_l(L, F.v[0], F.v[1], F.v[2]), diff_l(L, X, A)); });
   }
   int hsign(int f) const {
@@ -437,11 +452,11 @@ class Expander {
   }
   // Sign of D·(p_w − p_v) (> 0: w is a strictly better P support).
   int cmp_p(const Dir& D, int v, int w) const {
-    if (v == w || (D.structural && zero_pair(D.t, true, v, w))) return 0;
     const Vec3 &pv = P_.v[v], &pw = P_.v[w];
     double s = D.n.dot(pw - pv);
     if (s > D.ep) return 1;
     if (s < -D.ep) return -1;
+    if (v == w || (D.structural && zero_pair(D.t, true, v, w))) return 0;
     return exact_sign([&](auto L) {
       V3<Num<decltype(L)>> e{L(pw[0]) - L(pv[0]), L(pw[1]) - L(pv[1]), L(pw[2]) - L(pv[2])};
       return dot(dir_l(L, D), e);
@@ -449,11 +464,11 @@ class Expander {
   }
   // Sign of D·R(q_v − q_w) (> 0: w is a strictly better Q' support, i.e. lower D·q').
   int cmp_q(const Dir& D, int v, int w) const {
-    if (v == w || (D.structural && zero_pair(D.t, false, v, w))) return 0;
     const Vec3 &qv = Q_.v[v], &qw = Q_.v[w];
     double s = D.w.dot(qv - qw);
     if (s > D.eq) return 1;
     if (s < -D.eq) return -1;
+    if (v == w || (D.structural && zero_pair(D.t, false, v, w))) return 0;
     return exact_sign([&](auto L) {
       auto n = dir_l(L, D);
       V3<Num<decltype(L)>> e{L(qv[0]) - L(qw[0]), L(qv[1]) - L(qw[1]), L(qv[2]) - L(qw[2])};
@@ -488,7 +503,14 @@ class Expander {
     D.n = Vec3(F.n[0], F.n[1], F.n[2]);
     D.structural = true;
     D.t = pairs(D.a, D.b, D.c);
-    finish_dir(D, ne_);
+    // finish_dir(D, ne_) with the folded constants.
+    const double a0 = std::abs(F.n[0]), a1 = std::abs(F.n[1]), a2 = std::abs(F.n[2]);
+    D.w = R_.transpose() * D.n;
+    D.ep = cep_ + a0 * bp_[0] + a1 * bp_[1] + a2 * bp_[2];
+    D.eq = ceq_ + a0 * bqn_[0] + a1 * bqn_[1] + a2 * bqn_[2] + std::abs(D.w[0]) * bqw_[0] +
+           std::abs(D.w[1]) * bqw_[1] + std::abs(D.w[2]) * bqw_[2];
+    D.es = F.eo;
+    D.e0 = F.he;
     return D;
   }
 
@@ -496,28 +518,29 @@ class Expander {
   // neighbours the semi-static bound cannot separate from v.
   int climb_p(const Dir& D, int v) const { return climb(D, P_, AP_, D.n, D.ep, true, v); }
   int climb_q(const Dir& D, int v) const { return climb(D, Q_, AQ_, -D.w, D.eq, false, v); }
-  // Maximises u·x over the vertices x of S (u = n for P, −Rᵀn for Q).
+  // Maximises u·x over the vertices x of S (u = n for P, −Rᵀn for Q). The rounded edge vectors
+  // are within u·extent of the exact ones, which eb accounts for; when eb is this small no
+  // product can overflow, so no rounded value is NaN.
   int climb(const Dir& D, const PolytopeData& S, const VertexAdjacency& A, const Vec3& u, double eb, bool of_p,
             int v) const {
+    (void)S;
     const double u0 = u[0], u1 = u[1], u2 = u[2];
-    const double *nx = A.nx.data(), *ny = A.ny.data(), *nz = A.nz.data();
+    const double *dx = A.dx.data(), *dy = A.dy.data(), *dz = A.dz.data();
+    const bool finite = eb < 1e280;
     for (;;) {
-      const Vec3& x = S.v[v];
       const int b = A.start[v], end = A.start[v + 1];
       double bv = -std::numeric_limits<double>::infinity();
       int be = b;
-      bool nan = false;
       for (int e = b; e < end; ++e) {
-        double s = u0 * (nx[e] - x[0]) + u1 * (ny[e] - x[1]) + u2 * (nz[e] - x[2]);
-        nan |= s != s;
+        double s = u0 * dx[e] + u1 * dy[e] + u2 * dz[e];
         be = s > bv ? e : be;
         bv = s > bv ? s : bv;
       }
-      if (bv > eb) {
+      if (finite && bv > eb) {
         v = A.nbr[be];
         continue;
       }
-      if (bv < -eb && !nan) return v;  // every neighbour certified lower
+      if (finite && bv < -eb) return v;  // every neighbour certified lower
       int next = -1;
       for (int e = b; e < end && next < 0; ++e)
         if ((of_p ? cmp_p(D, v, A.nbr[e]) : cmp_q(D, v, A.nbr[e])) > 0) next = A.nbr[e];
@@ -532,9 +555,12 @@ class Expander {
   }
   int support_cold(const Dir& D) { return support(D, seed_vertex(AP_, D.n), seed_vertex(AQ_, -D.w)); }
   int support_facet(int f, const Dir& D) {
-    // Warm start: the best of the facet's own pairs and the cube-map seed, by rounded values.
+    // Warm start: the best of the facet's own pairs and (for large shapes, where early facets
+    // are far from their supports) the cube-map seed, by rounded values.
     const auto& v = F_[f].v;
-    int p0 = seed_vertex(AP_, D.n), q0 = seed_vertex(AQ_, -D.w);
+    int p0 = V_[v[0]].i, q0 = V_[v[0]].j;
+    if (AP_.cube_k >= kSeedMinK) p0 = seed_vertex(AP_, D.n);
+    if (AQ_.cube_k >= kSeedMinK) q0 = seed_vertex(AQ_, -D.w);
     double bp = D.n.dot(P_.v[p0]), bq = D.w.dot(Q_.v[q0]);
     for (int k = 0; k < 3; ++k) {
       if (double s = D.n.dot(P_.v[V_[v[k]].i]); s > bp) bp = s, p0 = V_[v[k]].i;
@@ -598,13 +624,9 @@ class Expander {
     }
     assert(s4 >= 0 && "M is not full-dimensional");
     if (o > 0) std::swap(s2, s3);  // now s4 lies below the plane of (s1, s2, s3)
-    int f[4] = {add_facet(s1, s2, s3), add_facet(s1, s4, s2), add_facet(s2, s4, s3), add_facet(s3, s4, s1)};
-    for (int a : f)
-      for (int k = 0; k < 3; ++k)
-        for (int b : f)
-          for (int l = 0; l < 3; ++l)
-            if (F_[a].v[k] == F_[b].v[(l + 1) % 3] && F_[a].v[(k + 1) % 3] == F_[b].v[l]) F_[a].nb[k] = b;
-    for (int a : f) F_[a].hsign = hsign(a);
+    add_facet(s1, s2, s3), add_facet(s1, s4, s2), add_facet(s2, s4, s3), add_facet(s3, s4, s1);
+    F_[0].nb = {1, 2, 3}, F_[1].nb = {3, 2, 0}, F_[2].nb = {1, 3, 0}, F_[3].nb = {2, 1, 0};  // twins
+    for (int a = 0; a < 4; ++a) F_[a].hsign = hsign(a);
   }
 
   Vec3 approx(int x) const { return Vec3(V_[x].mh[0], V_[x].mh[1], V_[x].mh[2]); }
@@ -678,23 +700,33 @@ class Expander {
   }
 
   // ---- Phase B: nearest facet, certified -------------------------------------------------------
-  // A lower bound of the exact distance h/|n| from the rounded values and their bounds.
+  // Keys are squared distances (no square roots on the hot path). A lower bound of the exact
+  // (h/|n|)² from the rounded values and their bounds: |n| <= |ñ| + |ne|, |ñ|² <= nn(1 + 4u).
   double lower_key(int f) const {
     const Facet& F = F_[f];
     double hl = F.h - F.he;
-    double nr = std::sqrt(F.n[0] * F.n[0] + F.n[1] * F.n[1] + F.n[2] * F.n[2]);
-    return hl > 0 ? hl / (nr * (1 + 4 * kU) + ne_norm_) * (1 - 0x1p-50) : 0.0;
+    double nn = F.n[0] * F.n[0] + F.n[1] * F.n[1] + F.n[2] * F.n[2];
+    double nu = nn * (1 + 4 * kU) + ne_norm_ * (2 * std::abs(F.n[0]) + 2 * std::abs(F.n[1]) + 2 * std::abs(F.n[2]) + ne_norm_);
+    return hl > 0 ? hl * hl / nu * (1 - 0x1p-49) : 0.0;
   }
   void refine(int f) {
     const auto v = F_[f].v;
-    double h = accurate([&](auto L) { return dot(normal_l(L, v[0], v[1], v[2]), m_l(L, V_[v[0]])); });
-    double n2 = accurate([&](auto L) {
+    auto h_l = [&](auto L) { return dot(normal_l(L, v[0], v[1], v[2]), m_l(L, V_[v[0]])); };
+    auto n2_l = [&](auto L) {
       auto n = normal_l(L, v[0], v[1], v[2]);
       return dot(n, n);
-    });
-    F_[f].dist = h / std::sqrt(n2);
-    F_[f].key = F_[f].dist * (1 - 0x1p-49);  // h, n2 within ~ulp/2: dist within 2 ulps
+    };
+    // One double-double evaluation of the normal serves both values; rationals if needed.
+    auto n = normal_l(LiftDD{}, v[0], v[1], v[2]);
+    DD h = dot(n, m_l(LiftDD{}, V_[v[0]])), n2 = dot(n, n);
+    auto ok = [](const DD& r) {
+      return std::isfinite(r.hi) && std::isfinite(r.e) && safe_bound(r.e) <= std::abs(r.hi) * 0x1p-60;
+    };
+    double hv = ok(h) ? h.hi : accurate(h_l), n2v = ok(n2) ? n2.hi : accurate(n2_l);
+    F_[f].dist = hv / std::sqrt(n2v);
     F_[f].refined = true;
+    Vec3 u = Vec3(n[0].hi, n[1].hi, n[2].hi).normalized();
+    for (int k = 0; k < 3; ++k) F_[f].unit[k] = u[k];
   }
   bool coplanar(int f, int g) const {
     for (int x : F_[f].v)
@@ -726,13 +758,17 @@ class Expander {
       if (best >= 0 && !(key < best_hi)) break;  // every other facet is at least as far as best
       const int f = alive_[kmin];
       if (best >= 0) {
+        if (coplanar(f, best)) {  // same plane, same distance (often a symbolic identity)
+          keys_[kmin] = std::numeric_limits<double>::infinity();
+          continue;
+        }
         if (!F_[f].refined) {
           refine(f);
-          keys_[kmin] = F_[f].key;
+          keys_[kmin] = F_[f].dist * F_[f].dist * (1 - 0x1p-47);  // dist within 2 ulps
           continue;
         }
         keys_[kmin] = std::numeric_limits<double>::infinity();
-        if (coplanar(f, best) || closer(f, best) >= 0) continue;  // not nearer than best
+        if (closer(f, best) >= 0) continue;  // not nearer than best
       }
       Dir D = facet_dir(f);
       int s = support_facet(f, D);
@@ -742,7 +778,7 @@ class Expander {
         V_.pop_back();
         if (!F_[f].refined) refine(f);
         best = f;
-        best_hi = F_[f].dist * (1 + 0x1p-49);
+        best_hi = F_[f].dist * F_[f].dist * (1 + 0x1p-47);
         keys_[pos_[f]] = std::numeric_limits<double>::infinity();
         continue;
       }
@@ -785,8 +821,7 @@ class Expander {
     r.overlapping = true;
     r.candidates = iters_;
     r.depth = r.lower_bound = r.upper_bound = B.dist;
-    auto nn = normal_l(LiftDD{}, B.v[0], B.v[1], B.v[2]);
-    Vec3 u = Vec3(nn[0].hi, nn[1].hi, nn[2].hi).normalized();
+    const Vec3 u(B.unit[0], B.unit[1], B.unit[2]);
     Vec3 move = B.dist * u;
 
     // Witness: the foot of 0 on the plane lies in K's facet region there (B is nearest), so

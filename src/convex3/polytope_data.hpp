@@ -7,7 +7,9 @@
 
 #include <pendepth/polytope.hpp>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -37,7 +39,7 @@ struct VertexAdjacency {
   std::vector<int> start;  ///< n + 1 offsets: vertex v's entries are [start[v], start[v+1])
   std::vector<int> nbr;    ///< neighbour vertex (every level-0 edge, flat-facet diagonals too), CCW
   std::vector<int> he;     ///< level-0 half-edge v -> nbr[k]
-  std::vector<double> nx, ny, nz;  ///< coordinates of nbr[k] (contiguous copies for the climbs)
+  std::vector<double> dx, dy, dz;  ///< nbr[k] − v, rounded (contiguous, for the climbs)
   Vec3 extent{0, 0, 0};    ///< max − min of each coordinate over the vertices
   Vec3 centroid{0, 0, 0};  ///< mean of the vertices (rounded; an interior point up to rounding)
   /// Cube map of seeds: direction u falls in cell (face of the largest |u_i|, then a k × k grid
@@ -75,7 +77,17 @@ const VertexAdjacency& vertex_adjacency(const PolytopeData& d);
 
 /// A vertex near the maximiser of u·v (from the cube map; any vertex for a zero or non-finite
 /// u). O(1).
-int seed_vertex(const VertexAdjacency& a, const Vec3& u);
+inline int seed_vertex(const VertexAdjacency& a, const Vec3& u) {
+  const double x = std::abs(u[0]), y = std::abs(u[1]), z = std::abs(u[2]);
+  const int ax = x >= y ? (x >= z ? 0 : 2) : (y >= z ? 1 : 2);
+  const double m = ax == 0 ? x : ax == 1 ? y : z;
+  if (!(m > 0 && m <= 1.7e308)) return a.cube[0];
+  const int k = a.cube_k;
+  const double s = 0.5 * k / m;  // u_i + m lies in [0, 2m]
+  const int i = std::min(static_cast<int>((u[(ax + 1) % 3] + m) * s), k - 1);
+  const int j = std::min(static_cast<int>((u[(ax + 2) % 3] + m) * s), k - 1);
+  return a.cube[((2 * ax + (u[ax] < 0)) * k + i) * k + j];
+}
 
 /// Exact incremental hull of pts restricted to `ids`, seeded by 4 affinely independent ids.
 /// Returns triangles (CCW from outside) over point ids. Points strictly inside or on the

@@ -1,6 +1,6 @@
 // Vertex adjacency of a ConvexPolytope in flat arrays (CSR), built once per shape on first use:
 // the neighbours of v in counter-clockwise order (seen from outside) with their half-edge ids
-// and contiguous copies of their coordinates, coordinate extents, and a cube map of seed
+// and the rounded edge vectors, coordinate extents, and a cube map of seed
 // vertices for support queries. Hill-climbing support queries (minimum_expand.cpp) scan these
 // arrays instead of chasing half-edge twins, and start from the cube map when they have no
 // better warm start. O(n) time and memory (the cube map has about n/4 cells).
@@ -36,18 +36,6 @@ Vec3 cell_direction(int face, int i, int j, int k) {
 
 }  // namespace
 
-int seed_vertex(const VertexAdjacency& a, const Vec3& u) {
-  int ax = 0;
-  for (int i = 1; i < 3; ++i)
-    if (std::abs(u[i]) > std::abs(u[ax])) ax = i;
-  double m = std::abs(u[ax]);
-  if (!(m > 0) || !std::isfinite(m)) return a.cube[0];
-  int face = 2 * ax + (u[ax] < 0);
-  const int k = a.cube_k;
-  auto cell = [&](double s) { return std::clamp(static_cast<int>((s / m + 1) * 0.5 * k), 0, k - 1); };
-  return a.cube[(face * k + cell(u[(ax + 1) % 3])) * k + cell(u[(ax + 2) % 3])];
-}
-
 const VertexAdjacency& vertex_adjacency(const PolytopeData& d) {
   std::call_once(d.adjacency_cache.once, [&] {
     VertexAdjacency& a = d.adjacency_cache.value;
@@ -55,7 +43,7 @@ const VertexAdjacency& vertex_adjacency(const PolytopeData& d) {
     const int n = static_cast<int>(d.v.size());
     a.start.assign(n + 1, 0);
     for (auto* vec : {&a.nbr, &a.he}) vec->clear(), vec->reserve(L.fv.size());
-    for (auto* vec : {&a.nx, &a.ny, &a.nz}) vec->clear(), vec->reserve(L.fv.size());
+    for (auto* vec : {&a.dx, &a.dy, &a.dz}) vec->clear(), vec->reserve(L.fv.size());
     for (int v = 0; v < n; ++v) {
       a.start[v] = static_cast<int>(a.nbr.size());
       int h0 = d.vertex_he[v], h = h0;
@@ -63,7 +51,9 @@ const VertexAdjacency& vertex_adjacency(const PolytopeData& d) {
         int w = L.target(h);
         a.nbr.push_back(w);
         a.he.push_back(h);
-        a.nx.push_back(d.v[w].x()), a.ny.push_back(d.v[w].y()), a.nz.push_back(d.v[w].z());
+        a.dx.push_back(d.v[w].x() - d.v[v].x());
+        a.dy.push_back(d.v[w].y() - d.v[v].y());
+        a.dz.push_back(d.v[w].z() - d.v[v].z());
         h = L.ccw(h);
       } while (h != h0);
     }

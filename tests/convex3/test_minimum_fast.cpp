@@ -333,7 +333,7 @@ TEST(MinimumFast, AdjacencyMatchesHalfEdges) {
       for (int e = A.start[v]; e < A.start[v + 1]; ++e) {
         EXPECT_EQ(L.origin(A.he[e]), v);
         EXPECT_EQ(L.target(A.he[e]), A.nbr[e]);
-        EXPECT_EQ(Vec3(A.nx[e], A.ny[e], A.nz[e]), P[A.nbr[e]]);
+        EXPECT_EQ(Vec3(A.dx[e], A.dy[e], A.dz[e]), P[A.nbr[e]] - P[v]);
       }
     std::normal_distribution<double> g;
     for (int k = 0; k < 50; ++k) {
