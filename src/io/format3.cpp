@@ -165,8 +165,11 @@ std::string summary(const Depth3& r, const ConvexPolytope& P, const ConvexPolyto
   s += "\n  translation: " + vec_text(r.translation) + "  (move Q by this to separate)\n";
   if (r.overlapping) {
     s += "  normal:      " + vec_text(r.normal) + "\n";
-    s += "  witness P:   " + vec_text(r.witness_p) + "  on " + feature_text(r.feature_p, P) + " of P\n";
-    s += "  witness Q:   " + vec_text(r.witness_q) + "  on " + feature_text(r.feature_q, Q) + " of Q\n";
+    s += "  witness P:   " + vec_text(r.witness_p) + "\n";
+    s += "  witness Q:   " + vec_text(r.witness_q) + "\n";
+    // The features span the facet of M where the move ends; in a face-face or edge-face contact
+    // the witness is one point of the contact region, not necessarily on a named vertex.
+    s += "  features:    " + feature_text(r.feature_p, P) + " of P, " + feature_text(r.feature_q, Q) + " of Q\n";
     if (r.lower_bound != r.upper_bound) {
       s += "  bounds:      [";
       append_double(s, r.lower_bound);

@@ -185,14 +185,18 @@ TEST_F(Cli3, CubeMinimumJsonAnalyticAndLibrary) {
   EXPECT_EQ(j["depth"].get<double>(), 1.25);
   EXPECT_EQ(vec_of(j["translation"]), Vec3(0, -1.25, 0));
   EXPECT_EQ(vec_of(j["normal"]), Vec3(0, -1, 0));
-  // Q touches P's face y = 0 with its face y = 1: the witness is on both, P's feature a face,
-  // Q's a vertex of its top face (input indices of box(): y is bit 1 of the index).
+  // Face-face contact: Q's face y = 1, moved to [.5,1.5]×{0}×[.5,1.5], on P's face y = 0. The
+  // witness lies in that square; the features name P's face (its three input vertices have
+  // y = 0) and a vertex of Q's contact face (input y = 1).
   const Vec3 w = vec_of(j["witness_p"]);
+  EXPECT_EQ(vec_of(j["witness_q"]), w);
   EXPECT_EQ(w.y(), 0.0);
+  EXPECT_TRUE(w.x() >= 0.5 && w.x() <= 1.5 && w.z() >= 0.5 && w.z() <= 1.5) << w.transpose();
   EXPECT_EQ(j["feature_p"]["kind"], "face");
+  ASSERT_EQ(j["feature_p"]["vertices"].size(), 3u);
   for (const json& v : j["feature_p"]["vertices"]) EXPECT_EQ(box(2).at(v.get<std::size_t>()).y(), 0.0);
   EXPECT_EQ(j["feature_q"]["kind"], "vertex");
-  EXPECT_EQ(box(1).at(j["feature_q"]["index"].get<std::size_t>()) + Vec3(0.5, 0.25, 0.5) + Vec3(0, -1.25, 0), w);
+  EXPECT_EQ(box(1).at(j["feature_q"]["index"].get<std::size_t>()).y(), 1.0);
 
   const ConvexPolytope PP = io::read_convex_polytope(P, "P"), QQ = io::read_convex_polytope(Q, "Q");
   expect_same(j, pendepth::minimum_depth(PP, Pose3(), QQ, Pose3(Vec3(0.5, 0.25, 0.5))));

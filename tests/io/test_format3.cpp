@@ -140,5 +140,6 @@ TEST(Format3, NotOverlappingCsvAndSummary) {
   std::string depth_line = "depth:       ";
   io::append_double(depth_line, r.depth);
   EXPECT_NE(s.find(depth_line + "\n"), std::string::npos) << s;
-  EXPECT_NE(s.find(" of P\n"), std::string::npos) << s;
+  EXPECT_NE(s.find("  features:    "), std::string::npos) << s;
+  EXPECT_NE(s.find(" of Q\n"), std::string::npos) << s;
 }
