@@ -57,13 +57,15 @@ struct Depth3 {
   DepthKind kind = DepthKind::Minimum;
 };
 
-/// σ: exact minimum depth = distance from 0 to the nearest facet plane of M, as the minimum
-/// over a superset of M's facet normals of h_P(u) + h_{Q'}(−u) (every direction's value is an
-/// upper bound on σ, the facet normals attain it): face normals of P and of Q', and u = e_P ×
-/// e_Q' for every edge pair whose edges are both extreme for ±u (exact test: the EE facets of
-/// M). Supports for face normals come from the DK walk (O(log)), corrected by an exact local
-/// climb. O(n·m) predicate evaluations for the edge pairs (see the file header of
-/// src/convex3/minkowski_facets.cpp); O((n + m) log(n + m)) otherwise.
+/// σ: exact minimum depth = distance from 0 to the nearest facet plane of M (0 when touching or
+/// separated). Certified expansion of an inner polytope of the implicit M (exact EPA, see
+/// src/convex3/minimum_expand.cpp): vertices are pairs (P vertex, Q vertex), every decision an
+/// exact predicate, supports by exact warm-started hill climbing. On overlap lower_bound ==
+/// upper_bound == depth (a few ulps from the exact value); `candidates` counts support queries;
+/// features are the defining ones of M's facet (P face + Q vertex, P vertex + Q face, or two
+/// edges); the witnesses coincide on the contact after the move. Cost O(k log k + climbs) for
+/// k support queries (measured k ≈ 20–65 for 64–32,768-vertex round hulls); the shapes' CSR
+/// adjacency is built once on first use (O(n)). Thread-safe.
 /// Throws InvalidInput for non-finite or zero quaternions / non-finite translations.
 Depth3 minimum_depth(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
                      const Pose3& pose_q);

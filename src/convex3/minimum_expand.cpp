@@ -1,20 +1,20 @@
 // Exact minimum depth σ = dist(0, ∂M), M = P ⊕ (−Q'), by certified expansion of an inner
-// polytope of M (the Expanding Polytope Algorithm of van den Bergen 2001 / Ericson RTCD §9.5,
-// made exact). Replaces the O(n·m) facet enumeration (minkowski_facets.cpp, kept as the
-// reference) for σ. DEPARTURE from DHS §5: the paper computes σ from the explicit M (O(n²));
-// this is output-sensitive instead — the work is proportional to the number of support
-// queries, each an exact warm-started hill climb.
+// polytope of M: the Expanding Polytope Algorithm (van den Bergen 2001; Ericson, Real-Time
+// Collision Detection §9.5) made exact. DEPARTURE from DHS §5: the paper computes σ from the
+// explicit M (O(n²)); this is output-sensitive instead — the work is proportional to the number
+// of support queries, each an exact warm-started hill climb. The O(n·m) enumeration of every
+// implicit facet normal (minkowski_facets.cpp) stays as the test reference.
 //
 // Notation: P fixed (its own frame), Q' = R Q + t with t = tq − tp (exact semantics for the
 // doubles R, tq, tp, as in minkowski_facets.hpp). A point of M is kept symbolically as a pair
-// (i, j): m = p_i − q'_j, a polynomial of degree 2 in the inputs.
+// (i, j): m = p_i − q'_j, a polynomial of degree 2 in the inputs. K = the current polytope.
 //
-// Invariants and why the answer is exact:
-//  * K, the current polytope, has vertices that are points of M (pairs), triangles oriented
-//    outward, and is convex: a point is added only if it is strictly beyond the expanded facet,
-//    and a facet is replaced only if the point is strictly beyond its plane (exact orient3d of
-//    pair points; "on the plane" = not visible, so coplanar facets stay — no flat or degenerate
-//    triangle is ever created). Hence K ⊆ M.
+// Why the answer is exact:
+//  * K's vertices are points of M, its triangles are oriented outward and it is convex: a
+//    point is added only if it is strictly beyond the expanded facet, and a facet is replaced
+//    only if the point is strictly beyond its plane (exact orient3d of pair points; "on the
+//    plane" = not visible, so coplanar facets stay and no flat triangle is ever created; the
+//    visible facets form a disc, so the horizon is one cycle). Hence K ⊆ M.
 //  * Support of M along u: h_M(u) = max u·p − min u·q', each by hill climbing over the vertex
 //    adjacency (on a convex polytope a vertex with no strictly better neighbour is a global
 //    maximiser, ties included); every "strictly better" is an exact sign.
@@ -22,31 +22,31 @@
 //    of h_F = n_F·a), take the most violated one and the support s along n_F. If n_F·s ≤ 0,
 //    the plane {n_F·x = 0} supports M with 0 on it or outside: not overlapping, depth 0
 //    (touching = 0). Otherwise s is strictly beyond F: expand.
-//  * Phase B (0 strictly inside K): pop the facet F of K nearest to 0 (priority queue on
-//    rigorous lower bounds of the plane distance), get the support s along n_F. If s lies
-//    exactly on F's plane, that plane supports M: σ ≤ d_F. Since K ⊆ M, σ ≥ dist(0, ∂K) =
-//    min over K's facets of the plane distance. So σ = d_F once no facet of K is exactly nearer:
-//    facets whose lower bound is below d_F's accurate upper bound are refined, and remaining near
-//    ties are decided exactly (coplanarity, or the sign of h_F²|n_G|² − h_G²|n_F|²). Otherwise
-//    s is strictly beyond F: expand. Every step adds a new pair, so the loop is finite.
-//  * Values: d_F = h_F/|n_F| from h_F, |n_F|² evaluated in double-double with a rigorous error
-//    bound (exact rationals when that bound is not within half an ulp): a few ulps.
-// Predicates are filtered three times: a semi-static bound (per query, from coordinate
-// extents), then the running-error Fl values cached per vertex and facet, then exact::exact_sign
-// (Fl of the full polynomial, then GMP). Differences of pairs are formed as (p_x − p_a) −
-// R(q_x − q_a), so the translation cancels and huge offsets do not hurt the filters; identities
-// that hold by construction (a facet's own vertices, the fourth corner of an edge–edge
-// parallelogram, vertices sharing a P or Q index) are recognised symbolically, so the exact
-// zeros met at every termination never reach the rational fallback.
+//  * Phase B (0 strictly inside K): take the facet F of K nearest to 0 (least rigorous lower
+//    bound of the squared plane distance), get the support s along n_F. If s lies exactly on
+//    F's plane, that plane supports M: σ ≤ d_F. Since K ⊆ M, σ ≥ dist(0, ∂K) = min over K's
+//    facets of the plane distance. So σ = d_F once no facet of K is exactly nearer: facets whose
+//    lower bound is below d_F's accurate upper bound are discarded if coplanar with F, else
+//    refined, and remaining near ties are decided exactly (sign of h_F²|n_G|² − h_G²|n_F|²).
+//    Otherwise s is strictly beyond F: expand. Every step adds a new pair, so the loop ends.
+//  * Values: d_F = h_F/|n_F| from h_F and |n_F|² in double-double with a rigorous error bound
+//    (exact rationals when that bound is not within half an ulp): within ~2 ulps.
+// Predicates: a semi-static filter (uniform per-query bounds on every rounded quantity, from
+// the coordinate extents), then exact::exact_sign (running-error double of the full polynomial,
+// then GMP). Rounded points are taken relative to reference vertices of P and Q, so offsets of
+// the shapes or of the placement do not widen the bounds. Identities that hold by construction
+// (a facet's own vertices, the fourth corner of an edge–edge parallelogram, pairs sharing a P or
+// a Q index) are recognised symbolically, so the exact zeros met at every termination never
+// reach the exact fallback.
 //
 // Result: depth = d_F, lower_bound = upper_bound = depth, candidates = number of support queries,
 // features = the defining features of M's facet (a face of P and a vertex of Q, a vertex of P
 // and a face of Q, or two edges; P's face preferred, as in minkowski_facets), witnesses = the
-// point of K's facet nearest to 0 written as a convex combination of pairs.
-// Complexity: O(k (log k + c)) for k support queries, c the climb length (O(1) warm-started,
-// O(√n) for the cold starts from the top of the DK hierarchy). k is not bounded by a small
-// function of n, m in theory (at most n·m); in practice it grows slowly with n, m (measured in
-// tests/convex3/test_minimum_fast.cpp and the report).
+// point of K's facet nearest to 0 written as a convex combination of pairs (P part, Q' part).
+// Complexity: O(k (f + c)) for k support queries, f the facets of K (a branch-free scan for
+// the nearest one; f = O(k)), c the climb length (O(1) from warm starts or the cube-map seeds
+// of vertex_adjacency.cpp). k is at most n·m in theory; measured 20–65 for round random hulls
+// of 64–32,768 vertices (tests/convex3/test_minimum_fast.cpp prints the counts).
 #include "convex3/minimum_expand.hpp"
 
 #include "convex3/polytope_data.hpp"
@@ -70,7 +70,7 @@ using exact::safe_bound;
 
 constexpr double kU = exact::kUnit;       // unit roundoff 2^-53
 constexpr double kInflate = 1 + 0x1p-20;  // covers the rounding of the bound formulas themselves
-constexpr int kSeedMinK = 4;              // cube maps this fine (n >~ 300) also seed warm starts
+constexpr int kSeedMinK = 4;              // cube maps this fine (n > 54) also seed warm starts
 
 // ---- double-double numbers with a running absolute error bound (accurate distances) ----------
 struct DD {

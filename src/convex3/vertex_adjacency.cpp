@@ -3,7 +3,7 @@
 // and the rounded edge vectors, coordinate extents, and a cube map of seed
 // vertices for support queries. Hill-climbing support queries (minimum_expand.cpp) scan these
 // arrays instead of chasing half-edge twins, and start from the cube map when they have no
-// better warm start. O(n) time and memory (the cube map has about n/4 cells).
+// better warm start. O(n) time and memory (the cube map has about n cells).
 #include "convex3/polytope_data.hpp"
 
 #include <algorithm>
@@ -66,8 +66,8 @@ const VertexAdjacency& vertex_adjacency(const PolytopeData& d) {
     }
     a.extent = hi - lo;
     a.centroid = sum / double(n);
-    // About n/4 cells: a seed is then typically one or two edges from the maximiser.
-    a.cube_k = std::clamp(static_cast<int>(std::ceil(std::sqrt(n / 24.0))), 1, 64);
+    // About n cells: a seed is then typically at most one or two edges from the maximiser.
+    a.cube_k = std::clamp(static_cast<int>(std::ceil(std::sqrt(n / 6.0))), 1, 64);
     const int k = a.cube_k;
     a.cube.assign(6 * k * k, 0);
     int v = 0;
