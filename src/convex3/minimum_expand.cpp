@@ -197,9 +197,9 @@ struct Facet {
 
 // A direction of support queries, known exactly as a polynomial.
 struct Dir {
-  enum Kind { Vector, Normal, CrossAxis } kind = Vector;
-  Vec3 d{0, 0, 0};             // Vector
-  int a = -1, b = -1, c = -1;  // Normal: triangle a, b, c; CrossAxis: (m_b − m_a) × (sgn e_c)
+  enum Kind { Vector, Normal, Cross } kind = Vector;
+  Vec3 d{0, 0, 0};             // Vector: the direction; Cross: (m_b − m_a) × d
+  int a = -1, b = -1, c = -1;  // Normal: triangle a, b, c; Cross: a, b
   int sgn = 1;
   Vec3 n{0, 0, 0}, w{0, 0, 0};  // rounded direction and Rᵀ direction
   double ep = 0, eq = 0;        // bounds of the rounded P / Q comparisons (climbs)
@@ -342,9 +342,7 @@ class Expander {
     } else if (D.kind == Dir::Normal) {
       n = normal_l(lift, D.a, D.b, D.c);
     } else {
-      V3<Num<L>> ax{lift(0.0), lift(0.0), lift(0.0)};
-      ax[D.c] = lift(1.0);
-      n = cross(diff_l(lift, V_[D.b], V_[D.a]), ax);
+      n = cross(diff_l(lift, V_[D.b], V_[D.a]), V3<Num<L>>{lift(D.d[0]), lift(D.d[1]), lift(D.d[2])});
     }
     if (D.sgn < 0)
       for (auto& x : n) x = -x;
@@ -434,7 +432,7 @@ class Expander {
     const Vert &X = V_[x], &A = V_[a];
     if (X.i == A.i && X.j == A.j) return 0;
     if (D.structural && zero_orient(D.t, X.i, X.j)) return 0;
-    if (D.kind == Dir::CrossAxis && X.i == V_[D.b].i && X.j == V_[D.b].j) return 0;
+    if (D.kind == Dir::Cross && X.i == V_[D.b].i && X.j == V_[D.b].j) return 0;
     double d[3];
     diff_r(X, A, d);
     double s = D.n.dot(Vec3(d[0], d[1], d[2]));
@@ -570,10 +568,18 @@ class Expander {
   }
 
   // ---- the polytope ------------------------------------------------------------------------
+  // Directions of the first supports are generic (neither axis-aligned nor opposite), so that
+  // boxes and other axis-aligned or centrally symmetric shapes meet no exact ties there; any
+  // direction would be correct.
+  static constexpr double kGeneric[3][3] = {
+      {0.4612, -0.6287, 0.6262}, {-0.7033, 0.2117, 0.6786}, {0.3819, 0.8573, 0.3452}};
+
   void init_tetrahedron() {
-    // s1, s2: supports along ±d1, d1 from M's centre towards 0 (any non-zero d1 works).
+    // s1, s2: supports along d1 (from M's centre towards 0, tilted) and about −d1.
+    const Vec3 g0(kGeneric[0][0], kGeneric[0][1], kGeneric[0][2]), g1(kGeneric[1][0], kGeneric[1][1], kGeneric[1][2]);
     Vec3 d1 = R_ * AQ_.centroid + Vec3(thi_[0], thi_[1], thi_[2]) - AP_.centroid;
-    if (!(d1.allFinite() && d1.squaredNorm() > 0)) d1 = Vec3(1, 0, 0);
+    d1 += 0.125 * d1.norm() * g0;
+    if (!(d1.allFinite() && d1.squaredNorm() > 0)) d1 = g0;
     const double zero[3] = {0, 0, 0};
     auto vec_dir = [&](const Vec3& d) {
       Dir D;
@@ -582,24 +588,30 @@ class Expander {
       return D;
     };
     int s1 = support_cold(vec_dir(d1));
-    int s2 = support_cold(vec_dir(-d1));
-    // M is full-dimensional, so the two supports differ and some ±(m_s2 − m_s1) × e_k and then
-    // ± the normal of (s1, s2, s3) have a support strictly off the line / plane.
+    Vec3 d2 = -d1 + 0.25 * d1.norm() * g1;
+    if (!(d2.allFinite() && d2.squaredNorm() > 0)) d2 = -d1;
+    int s2 = support_cold(vec_dir(d2));
+    if (V_[s2].i == V_[s1].i && V_[s2].j == V_[s1].j) {  // M is full-dimensional: ±d1 differ
+      V_.pop_back();
+      s2 = support_cold(vec_dir(-d1));
+    }
+    // Some ±(m_s2 − m_s1) × g_k, then ± the normal of (s1, s2, s3), has a support strictly off
+    // the line / plane (M is full-dimensional; the g_k are linearly independent).
     double e[3];
     diff_r(V_[s2], V_[s1], e);
-    std::array<int, 3> axes{0, 1, 2};
-    std::sort(axes.begin(), axes.end(), [&](int a, int b) { return std::abs(e[a]) < std::abs(e[b]); });
     int s3 = -1;
-    const double cerr[3] = {ed_max_, ed_max_, ed_max_};  // n = D̂ × (±e_c) is exact given D̂
+    const double bmax = std::max({B_[0], B_[1], B_[2]});
+    const double cerr[3] = {2.02 * (ed_max_ + 2.02 * kU * bmax), 2.02 * (ed_max_ + 2.02 * kU * bmax),
+                            2.02 * (ed_max_ + 2.02 * kU * bmax)};  // D̂ × g rounded, |g| <= 1
     for (int k = 0; k < 3 && s3 < 0; ++k)
       for (int sg : {1, -1}) {
         Dir D;
-        D.kind = Dir::CrossAxis;
-        D.a = s1, D.b = s2, D.c = axes[k], D.sgn = sg;
-        double ax[3] = {0, 0, 0}, n[3];
-        ax[D.c] = sg;
-        cross_r(e, ax, n);
-        D.n = Vec3(n[0], n[1], n[2]);
+        D.kind = Dir::Cross;
+        D.a = s1, D.b = s2, D.sgn = sg;
+        D.d = Vec3(kGeneric[k][0], kGeneric[k][1], kGeneric[k][2]);
+        double n[3];
+        cross_r(e, kGeneric[k], n);
+        D.n = sg * Vec3(n[0], n[1], n[2]);
         finish_dir(D, cerr);
         int x = support_cold(D);
         if (dir_side(D, x, s1) != 0) { s3 = x; break; }

@@ -1,8 +1,9 @@
 // σ by certified expansion (src/convex3/minimum_expand.cpp) against the exact O(n·m) reference
 // (min over every implicit facet normal of M, src/convex3/minkowski_facets.cpp): random hulls of
 // 4…2,000 vertices, the 60 shared hulls, integer spheres / prisms / bipyramids / cubes (massive
-// coplanarity, face–face, edge–edge parallel, vertex–face, touching), identical shapes, 1e6
-// offsets, nearly coplanar facets (near-90° rotations, tiny rotations, perturbed faces), slivers.
+// coplanarity, face–face, edge–edge parallel, vertex–face, touching), identical shapes (also
+// rotated boxes: exact coincidences), 1e6 offsets, nearly coplanar facets (near-90° rotations,
+// tiny rotations, perturbed faces), slivers.
 // Every overlapping case also checks: bounds coincide, the features lie on the supporting planes
 // of P and Q' for the returned normal, the witnesses coincide on them, and (for a subset) moving
 // Q by the translation separates while a slightly shorter move does not.
@@ -318,6 +319,27 @@ TEST(MinimumFast, NearlyCoplanarAndSlivers) {
   }
   EXPECT_GT(st.overlapping, 50);
   st.print("nearly coplanar / slivers");
+}
+
+TEST(MinimumFast, SymmetricShapesRotated) {
+  // Identical centrally symmetric shapes under arbitrary rotations: the pairs (i, ī) span the
+  // parallelepiped (I + R)·box, so many exactly coplanar quadruples arise that no symbolic rule
+  // sees; they are decided by the exact fallback.
+  std::mt19937_64 rng(8128);
+  std::uniform_real_distribution<double> U(-0.6, 0.6);
+  Stats st;
+  auto box = ConvexPolytope::hull(test3::grid(2));
+  auto brick = ConvexPolytope::hull(std::vector<Vec3>{{0, 0, 0}, {3, 0, 0}, {0, 1, 0}, {3, 1, 0}, {0, 0, 0.5},
+                                                     {3, 0, 0.5}, {0, 1, 0.5}, {3, 1, 0.5}});
+  auto ball = ConvexPolytope::hull(test3::integer_sphere(50));
+  for (int it = 0; it < 40; ++it) {
+    Pose3 pq(random_rotation(rng), Vec3(U(rng), U(rng), U(rng)));
+    check(box, Pose3(), box, pq, st, "box " + std::to_string(it), it % 8 == 0);
+    check(brick, Pose3(), brick, Pose3(pq.rotation, 2 * pq.translation), st, "brick " + std::to_string(it));
+    check(ball, Pose3(), ball, Pose3(pq.rotation, 6 * pq.translation), st, "ball " + std::to_string(it));
+  }
+  EXPECT_GT(st.overlapping, 70);
+  st.print("symmetric shapes rotated");
 }
 
 TEST(MinimumFast, AdjacencyMatchesHalfEdges) {
