@@ -49,6 +49,8 @@
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <memory>
+#include <unordered_map>
 #include <vector>
 
 namespace pendepth::convex3 {
@@ -134,6 +136,25 @@ using FV = V3<Fl>;
 inline int cert(const Fl& v) { return exact::certified_sign(v); }
 inline FV flv(const Vec3& v) { return {Fl{v.x(), 0}, Fl{v.y(), 0}, Fl{v.z(), 0}}; }
 inline FV fl_sub(const Vec3& a, const Vec3& b) { return {Fl{a.x(), 0} - Fl{b.x(), 0}, Fl{a.y(), 0} - Fl{b.y(), 0}, Fl{a.z(), 0} - Fl{b.z(), 0}}; }
+// A cached vector reduced to doubles: value, Euclidean norm and a bound on the Euclidean distance
+// to the exact vector. dot_sign certifies a dot product's sign with ~10 flops, or returns 2.
+struct DV {
+  Vec3 v;
+  double n = 0, e = 0;
+};
+inline DV to_dv(const FV& a) {
+  DV d;
+  d.v = Vec3(a[0].v, a[1].v, a[2].v);
+  d.n = d.v.norm() * (1 + 4 * exact::kUnit);
+  d.e = (a[0].e + a[1].e + a[2].e) * (1 + 4 * exact::kUnit);  // ‖·‖₂ ≤ ‖·‖₁
+  return d;
+}
+inline int dot_sign(const DV& a, const DV& b) {
+  double v = a.v.dot(b.v);
+  double bound = (a.n * b.e + a.e * b.n + a.e * b.e + 4 * exact::kUnit * a.n * b.n) * (1 + 8 * exact::kUnit) + exact::kTiny;
+  return v > bound ? 1 : v < -bound ? -1 : 2;
+}
+
 // Rᵀ u, exactly the functional u·(R q) on Q's local coordinates.
 inline FV fl_rt(const Eigen::Matrix3d& R, const FV& u) {
   FV w;
@@ -151,6 +172,8 @@ struct Cand {
   int xs = -1, ys = -1;                          ///< support vertices: P max of u·x, Q min of u·y'
   int dsign = 0;                                 ///< formal sign of u·d_ε
   Fl n0, dd[3];                                  ///< cached u·(x_s − y'_s) and u·dv[b]
+  // An out-half-edge of x_s (y_s) at hierarchy level xs_lev (ys_lev): where a walk restarts.
+  int xs_he = -1, xs_lev = -1, ys_he = -1, ys_lev = -1;
   bool same(const Cand& o) const {
     return kind == o.kind && sgn == o.sgn && xs == o.xs && ys == o.ys && std::equal(x, x + 3, o.x) &&
            std::equal(y, y + 3, o.y);
@@ -185,10 +208,8 @@ auto cand_d(const Ctx& c, const Cand& k, Lf L, int b) {
 }
 
 // Caches N's leading coefficient and D, and sets the formal sign of D = u·d_ε.
-void prepare(const Ctx& c, Cand& k) {
-  exact::LiftFl L;
-  FV u = cand_u(c, k, L);
-  k.n0 = dot(u, c.mpoint(L, k.xs, k.ys));
+void prepare(const Ctx& c, Cand& k, const FV& u, const FV& xs, const FV& ys) {
+  k.n0 = dot(u, FV{xs[0] - ys[0], xs[1] - ys[1], xs[2] - ys[2]});  // = the expression of mpoint
   for (int b = 0; b < 3; ++b) k.dd[b] = dot(u, flv(c.dv[b]));
   k.dsign = 0;
   for (int b = 0; b < 3 && k.dsign == 0; ++b) {
@@ -244,6 +265,11 @@ struct Small {
   // −n(Q') for Y) and, per edge, b − a, c − a, e − a.
   std::vector<FV> tri_u;
   std::vector<std::array<FV, 3>> edge_v;
+  std::vector<std::array<DV, 3>> edge_d;  ///< edge_v reduced to doubles
+  std::vector<FV> pt;                     ///< vertices in P's frame (Q': R q + tq − tp)
+  int lev = -1;         ///< hierarchy level the vertices were taken from
+  std::vector<int> he;  ///< per vertex an out-half-edge at that level
+  int local_of(int g) const { return static_cast<int>(std::find(id.begin(), id.end(), g) - id.begin()); }
 };
 
 void prepare_small(const Ctx& c, Small& s) {
@@ -252,18 +278,43 @@ void prepare_small(const Ctx& c, Small& s) {
   s.tri_u.clear();
   s.edge_v.clear();
   for (const auto& t : s.tri) s.tri_u.push_back(s.isq ? cross(dv(t[2], t[0]), dv(t[1], t[0])) : cross(dv(t[1], t[0]), dv(t[2], t[0])));
-  for (const auto& e : s.edge) s.edge_v.push_back({dv(e[1], e[0]), dv(e[2], e[0]), dv(e[3], e[0])});
+  // Per edge: its vector e and the apex tests rewritten by the triple product so that a pair
+  // costs two dot products per side: for u = e_X × e_Y,
+  //   u·(c − a) = e_Y·((c − a) × e_X)   (X side),   u·(c − a) = e_X·(e_Y × (c − a))   (Y side).
+  s.edge_d.clear();
+  for (const auto& e : s.edge) {
+    FV ev = dv(e[1], e[0]), c1 = dv(e[2], e[0]), c2 = dv(e[3], e[0]);
+    if (s.isq) s.edge_v.push_back({ev, cross(ev, c1), cross(ev, c2)});
+    else s.edge_v.push_back({ev, cross(c1, ev), cross(c2, ev)});
+    const auto& b = s.edge_v.back();
+    s.edge_d.push_back({to_dv(b[0]), to_dv(b[1]), to_dv(b[2])});
+  }
+  s.pt.clear();
+  for (int g : s.id) {
+    if (!s.isq) {
+      s.pt.push_back(c.pvec(L, g));
+    } else {
+      const Vec3& q = c.Q.v[g];
+      FV r;
+      for (int i = 0; i < 3; ++i)
+        r[i] = L(c.pose.R(i, 0)) * L(q.x()) + L(c.pose.R(i, 1)) * L(q.y()) + L(c.pose.R(i, 2)) * L(q.z()) +
+               L(c.pose.tq[i]) - L(c.pose.tp[i]);
+      s.pt.push_back(r);
+    }
+  }
 }
 
 // Edges with their two apexes; diagonals of flat facets are left out (the apex test of an
 // edge-edge candidate is only meaningful at a true edge, and flat facets are face candidates).
 void finish_small(Small& s, const std::vector<Vec3>& V) {
-  std::vector<int> fv, twin;
-  for (const auto& t : s.tri) fv.insert(fv.end(), t.begin(), t.end());
-  bool ok = build_twins(fv, twin);
-  assert(ok && "constant-size polytope is not a closed 2-manifold");
-  (void)ok;
-  for (int h = 0; h < static_cast<int>(fv.size()); ++h) {
+  const int H = 3 * static_cast<int>(s.tri.size());
+  std::vector<int> fv(H), twin(H, -1);
+  for (int h = 0; h < H; ++h) fv[h] = s.tri[h / 3][h % 3];
+  for (int h = 0; h < H; ++h)  // quadratic twin matching: H <= 3·(2·12 − 4)
+    for (int g = h + 1; g < H && twin[h] < 0; ++g)
+      if (fv[g] == fv[DKLevel::next(h)] && fv[DKLevel::next(g)] == fv[h]) twin[h] = g, twin[g] = h;
+  assert(std::find(twin.begin(), twin.end(), -1) == twin.end() && "constant-size polytope is not closed");
+  for (int h = 0; h < H; ++h) {
     if (h > twin[h]) continue;
     std::array<int, 4> e{fv[h], fv[DKLevel::next(h)], fv[DKLevel::next(DKLevel::next(h))],
                          fv[DKLevel::next(DKLevel::next(twin[h]))]};
@@ -278,6 +329,9 @@ Small top_small(const PolytopeData& D, bool isq) {
   s.id = L.verts;
   auto loc = [&](int g) { return static_cast<int>(std::find(s.id.begin(), s.id.end(), g) - s.id.begin()); };
   for (std::size_t f = 0; 3 * f < L.fv.size(); ++f) s.tri.push_back({loc(L.fv[3 * f]), loc(L.fv[3 * f + 1]), loc(L.fv[3 * f + 2])});
+  s.lev = static_cast<int>(D.levels.size()) - 1;
+  s.he.assign(s.id.size(), -1);
+  for (int h = 0; h < static_cast<int>(L.fv.size()); ++h) s.he[loc(L.fv[h])] = h;
   finish_small(s, D.v);
   return s;
 }
@@ -292,9 +346,12 @@ Small make_cap(const PolytopeData& D, bool isq, int lev, int h0) {
   Small s;
   s.isq = isq;
   s.id.push_back(L.origin(h0));
+  s.lev = lev;
+  s.he.push_back(h0);
   int h = h0;
   do {
     s.id.push_back(L.target(h));
+    s.he.push_back(L.twin[h]);
     h = L.ccw(h);
   } while (h != h0);
   const int k = static_cast<int>(s.id.size()) - 1;  // link a_x = local x + 1
@@ -342,6 +399,12 @@ struct State {
   bool hit = false;
   Cand cand;
   int xc = -1, yc = -1;
+  int xc_he = -1, xc_lev = -1, yc_he = -1, yc_lev = -1;
+  // Support vertex of one side with its half-edge hint.
+  std::array<int, 3> support(bool isq) const {
+    if (hit) return isq ? std::array<int, 3>{cand.ys, cand.ys_he, cand.ys_lev} : std::array<int, 3>{cand.xs, cand.xs_he, cand.xs_lev};
+    return isq ? std::array<int, 3>{yc, yc_he, yc_lev} : std::array<int, 3>{xc, xc_he, xc_lev};
+  }
 };
 
 // A triangle rotated to start at its lowest id (same orientation), so that equal features from
@@ -358,9 +421,11 @@ State solve_small(Ctx& c, const Small& X, const Small& Y) {
   const auto& QV = c.Q.v;
   Cand exit, entry;
   bool has_exit = false, has_entry = false;
-  auto consider = [&](Cand& k) {
+  auto consider = [&](Cand& k, const FV& u) {
     ++c.candidates;
-    prepare(c, k);
+    int lx = X.local_of(k.xs), ly = Y.local_of(k.ys);
+    k.xs_he = X.he[lx], k.xs_lev = X.lev, k.ys_he = Y.he[ly], k.ys_lev = Y.lev;
+    prepare(c, k, u, X.pt[lx], Y.pt[ly]);
     if (k.dsign > 0) {
       if (!has_exit || compare_t(c, k, exit) < 0) exit = k, has_exit = true;
     } else if (k.dsign < 0) {
@@ -383,7 +448,7 @@ State solve_small(Ctx& c, const Small& X, const Small& Y) {
       if (sg < 0) best = g;
     }
     k.ys = best;
-    consider(k);
+    consider(k, X.tri_u[f]);
   }
   // Faces of Y: M's normal is −n(Q'), X's support maximises it.
   for (std::size_t f = 0; f < Y.tri.size(); ++f) {
@@ -401,35 +466,43 @@ State solve_small(Ctx& c, const Small& X, const Small& Y) {
       if (sg > 0) best = g;
     }
     k.xs = best;
-    consider(k);
+    consider(k, u);
   }
   // Edge pairs extreme for ±u (the test of minkowski_facets.cpp).
   for (std::size_t i = 0; i < X.edge.size(); ++i) {
     const auto& ex = X.edge[i];
     const auto& xv = X.edge_v[i];
+    const auto& xd = X.edge_d[i];
     int pa = X.id[ex[0]], pb = X.id[ex[1]], pc = X.id[ex[2]], pe = X.id[ex[3]];
     for (std::size_t j = 0; j < Y.edge.size(); ++j) {
       const auto& ey = Y.edge[j];
       const auto& yv = Y.edge_v[j];
+      const auto& yd = Y.edge_d[j];
       int qa = Y.id[ey[0]], qb = Y.id[ey[1]], qc = Y.id[ey[2]], qe = Y.id[ey[3]];
-      FV uf = cross(xv[0], yv[0]);
       auto U = [&](auto L) { return cross(c.pdiff(L, pb, pa), c.qdiff(L, qb, qa)); };
-      auto side = [&](const FV& off, bool isq, int v, int a) {
-        int sg = cert(dot(uf, off));
+      // sign of u·(v − a): doubles, then the cached Fl values, then exact
+      auto side = [&](const DV& ed, const DV& wd, const FV& e, const FV& w, bool isq, int v, int a) {
+        int sg = dot_sign(ed, wd);
+        if (sg != 2) return sg;
+        sg = cert(dot(e, w));
         if (sg != 2) return sg;
         return exact_sign([&](auto L) { return dot(U(L), c.vdiff(L, isq, v, a)); });
       };
-      int s1 = side(xv[1], false, pc, pa);
-      int s2 = side(xv[2], false, pe, pa);
+      int s1 = side(yd[0], xd[1], yv[0], xv[1], false, pc, pa);
+      int s2 = side(yd[0], xd[2], yv[0], xv[2], false, pe, pa);
       if (s1 * s2 < 0 || (s1 == 0 && s2 == 0)) continue;
       int sgn = s1 != 0 ? -s1 : -s2;  // P's edge is extreme for sgn·u
-      if (sgn * side(yv[1], true, qc, qa) < 0 || sgn * side(yv[2], true, qe, qa) < 0) continue;
+      if (sgn * side(xd[0], yd[1], xv[0], yv[1], true, qc, qa) < 0 ||
+          sgn * side(xd[0], yd[2], xv[0], yv[2], true, qe, qa) < 0)
+        continue;
       Cand k;  // canonical: lower id first on each edge (each swap flips u)
       k.kind = Cand::EdgeEdge;
       k.x[0] = std::min(pa, pb), k.x[1] = std::max(pa, pb), k.y[0] = std::min(qa, qb), k.y[1] = std::max(qa, qb);
       k.sgn = sgn * (pa > pb ? -1 : 1) * (qa > qb ? -1 : 1);
       k.xs = k.x[0], k.ys = k.y[0];
-      consider(k);
+      FV u = cross(xv[0], yv[0]);  // the candidate's normal is sgn·(e_X × e_Y) in any edge order
+      if (sgn < 0) u = {-u[0], -u[1], -u[2]};
+      consider(k, u);
     }
   }
   State st;
@@ -439,10 +512,12 @@ State solve_small(Ctx& c, const Small& X, const Small& Y) {
     st.cand = exit;
     return st;
   }
-  st.xc = X.id[0], st.yc = Y.id[0];
-  for (int x : X.id)
-    for (int y : Y.id)
-      if ((x != st.xc || y != st.yc) && compare_turn(c, st.xc, st.yc, x, y) < 0) st.xc = x, st.yc = y;
+  int bx = 0, by = 0;
+  for (int x = 0; x < static_cast<int>(X.id.size()); ++x)
+    for (int y = 0; y < static_cast<int>(Y.id.size()); ++y)
+      if ((x != bx || y != by) && compare_turn(c, X.id[bx], Y.id[by], X.id[x], Y.id[y]) < 0) bx = x, by = y;
+  st.xc = X.id[bx], st.yc = Y.id[by];
+  st.xc_he = X.he[bx], st.xc_lev = X.lev, st.yc_he = Y.he[by], st.yc_lev = Y.lev;
   return st;
 }
 
@@ -455,8 +530,11 @@ State solve_small(Ctx& c, const Small& X, const Small& Y) {
 struct Func {
   const Ctx* c;
   bool isq;
-  const State* st;
+  State stv;
   int flip;
+  const State* st = &stv;
+  Func(const Ctx* cc, bool q, const State& s0, int fl) : c(cc), isq(q), stv(s0), flip(fl) {}
+  Func(const Func&) = delete;
   int ncoef() const { return st->hit ? 1 : 12; }
   template <class Lf>
   auto U(Lf L, int k) const {
@@ -520,17 +598,35 @@ struct Walker {
     return s == 1 || s == -1 ? s : f.sign(p, q);
   }
   static int sgn(double a, double b) { return (a > b) - (a < b); }
-  // Sign of A1·F(c2 − m) − A2·F(c1 − m) for a coordinate A (exact when a factor is zero).
-  template <class A>
-  int cross_term(int m, int c1, int c2, int axis, A formal) const {
-    int f1 = fsign(c1, m), f2 = fsign(c2, m);
-    int a1 = sgn(V[c1][axis], V[m][axis]), a2 = sgn(V[c2][axis], V[m][axis]);
-    if (f1 == 0 || a2 == 0) return a1 * f2;
-    if (f2 == 0 || a1 == 0) return -a2 * f1;
-    exact::LiftFl Lf;
-    auto Ax = [&](int c) { return Fl{V[c][axis], 0} - Fl{V[m][axis], 0}; };
-    int s = cert(Ax(c1) * dot(w0, fl_sub(V[c2], V[m])) - Ax(c2) * dot(w0, fl_sub(V[c1], V[m])));
-    return s == 1 || s == -1 ? s : formal(Lf);
+  // A neighbour c of the current top m with its cached differences to m.
+  struct Probe {
+    int v;
+    bool fz;    ///< F(c) = F(m) structurally (both on the exit facet's feature)
+    Fl F, X, Y; ///< F(c) − F(m) (leading coefficient), coordinate differences
+  };
+  Probe probe(int m, int c) const {
+    Probe p{c, f.on_feature(c) && f.on_feature(m), dot(w0, fl_sub(V[c], V[m])),
+            Fl{V[c][kx], 0} - Fl{V[m][kx], 0}, Fl{V[c][ky], 0} - Fl{V[m][ky], 0}};
+    return p;
+  }
+  int fsign_probe(int m, const Probe& p) const {
+    if (p.fz) return 0;
+    int s = cert(p.F);
+    return s == 1 || s == -1 ? s : f.sign(p.v, m);
+  }
+  // Sign of A1·F2 − A2·F1 for the coordinate difference A (axis 0: X, 1: Y); exact when a
+  // factor vanishes, else filtered with the exact formal evaluation as fallback.
+  template <class Formal>
+  int cross_term(int m, const Probe& p1, const Probe& p2, int axis, Formal formal) const {
+    const int ax = axis == 0 ? kx : ky;
+    int a1 = sgn(V[p1.v][ax], V[m][ax]), a2 = sgn(V[p2.v][ax], V[m][ax]);
+    if (a1 == 0 && a2 == 0) return 0;
+    if (p1.fz || a2 == 0) return a1 * fsign_probe(m, p2);
+    if (p2.fz || a1 == 0) return -a2 * fsign_probe(m, p1);
+    const Fl& A1 = axis == 0 ? p1.X : p1.Y;
+    const Fl& A2 = axis == 0 ? p2.X : p2.Y;
+    int s = cert(A1 * p2.F - A2 * p1.F);
+    return s == 1 || s == -1 ? s : formal();
   }
   int compare(int p, int q) const {
     if (p == q) return 0;
@@ -540,18 +636,21 @@ struct Walker {
     if (V[p][ky] != V[q][ky]) return V[p][ky] > V[q][ky] ? 1 : -1;
     return 0;
   }
-  int turn(int m, int c1, int c2) const {
+  // > 0: the projected edge m→c2 turns counter-clockwise from m→c1.
+  int turn(int m, const Probe& p1, const Probe& p2) const {
+    const int c1 = p1.v, c2 = p2.v;
     auto X = [&](auto L, int c) { return L(V[c][kx]) - L(V[m][kx]); };
     auto Y = [&](auto L, int c) { return L(V[c][ky]) - L(V[m][ky]); };
-    int s = cross_term(m, c1, c2, kx, [&](auto) {
+    int s = cross_term(m, p1, p2, 0, [&] {
       return formal_sign(f.ncoef(), [&](auto L, int k) {
         return X(L, c1) * f.diff(L, k, c2, m) - X(L, c2) * f.diff(L, k, c1, m);
       });
     });
     if (s != 0) return s;
-    s = exact_sign([&](auto L) { return X(L, c1) * Y(L, c2) - X(L, c2) * Y(L, c1); });
+    s = cert(p1.X * p2.Y - p2.X * p1.Y);
+    if (s == 2) s = exact_sign([&](auto L) { return X(L, c1) * Y(L, c2) - X(L, c2) * Y(L, c1); });
     if (s != 0) return s;
-    return cross_term(m, c1, c2, ky, [&](auto) {
+    return cross_term(m, p1, p2, 1, [&] {
       return formal_sign(f.ncoef(), [&](auto L, int k) {
         return Y(L, c1) * f.diff(L, k, c2, m) - Y(L, c2) * f.diff(L, k, c1, m);
       });
@@ -559,40 +658,79 @@ struct Walker {
   }
 };
 
-struct WalkResult {
-  int m = -1;
-  int he = -1;  ///< an out-half-edge of m at the stop level
+// Position of the walk at one level: the top m and the silhouette edges m→l, m→r.
+struct WalkState {
+  int lev = -1, m = -1, hl = -1, hr = -1;
 };
 
-WalkResult walk(const PolytopeData& D, const Walker& fr, int stop) {
-  const auto& levels = D.levels;
-  int m = -1, hl = -1, hr = -1;
-  auto pick = [&](const DKLevel& L, const int* cand, int nc) {
-    hl = hr = cand[0];
+struct Walk {
+  const PolytopeData& D;
+  const Walker& fr;
+  WalkState& ws;
+  std::vector<Walker::Probe> pr;
+
+  void pick(const DKLevel& L, const int* cand, int nc) {
+    pr.clear();
+    for (int i = 0; i < nc; ++i) pr.push_back(fr.probe(ws.m, L.target(cand[i])));
+    int il = 0, ir = 0;
     for (int i = 1; i < nc; ++i) {
-      int w = L.target(cand[i]);
-      if (fr.turn(m, L.target(hr), w) > 0) hr = cand[i];
-      if (fr.turn(m, L.target(hl), w) < 0) hl = cand[i];
+      if (fr.turn(ws.m, pr[ir], pr[i]) > 0) ir = i;
+      if (fr.turn(ws.m, pr[il], pr[i]) < 0) il = i;
     }
-  };
-  auto scan_around = [&](const DKLevel& L, int h0) {
-    std::vector<int> all;
+    ws.hl = cand[il], ws.hr = cand[ir];
+  }
+  // All out-half-edges of origin(h0) (false if more than `cap` of them).
+  static bool around(const DKLevel& L, int h0, std::vector<int>& out, std::size_t cap) {
+    out.clear();
     int h = h0;
     do {
-      all.push_back(h);
+      if (out.size() == cap) return false;
+      out.push_back(h);
       h = L.ccw(h);
     } while (h != h0);
+    return true;
+  }
+  void scan_around(const DKLevel& L, int h0) {
+    std::vector<int> all;
+    around(L, h0, all, std::size_t(-1));
     pick(L, all.data(), static_cast<int>(all.size()));
-  };
-  const DKLevel& top = levels.back();
-  m = top.verts[0];
-  for (int v : top.verts)
-    if (fr.compare(v, m) > 0) m = v;
-  for (int h = 0; h < static_cast<int>(top.fv.size()); ++h)
-    if (top.fv[h] == m) { scan_around(top, h); break; }
-  for (int lev = static_cast<int>(levels.size()) - 2; lev >= stop; --lev) {
-    const DKLevel& C = levels[lev + 1];
-    const DKLevel& L = levels[lev];
+  }
+  // Fresh walk: the top level by brute force.
+  void start_top() {
+    const DKLevel& top = D.levels.back();
+    ws.lev = static_cast<int>(D.levels.size()) - 1;
+    ws.m = top.verts[0];
+    for (int v : top.verts)
+      if (fr.compare(v, ws.m) > 0) ws.m = v;
+    for (int h = 0; h < static_cast<int>(top.fv.size()); ++h)
+      if (top.fv[h] == ws.m) { scan_around(top, h); break; }
+  }
+  // Restart at level `lev` from vertex v given an out-half-edge h of v at level hl >= lev:
+  // hill-climb by the key (a local maximum of the perturbed linear key is global), then take
+  // the silhouette edges. O(degree); gives up (false) on vertices of degree > kMaxScan.
+  bool restart(int v, int h, int hlev, int lev) {
+    static constexpr std::size_t kMaxScan = 48;
+    if (h < 0 || hlev < lev) return false;
+    for (int l = hlev; l > lev; --l) h = D.levels[l].down[h];
+    const DKLevel& L = D.levels[lev];
+    std::vector<int> out;
+    for (bool moved = true; moved;) {
+      moved = false;
+      if (!around(L, h, out, kMaxScan)) return false;
+      for (int g : out)
+        if (fr.compare(L.target(g), v) > 0) {
+          v = L.target(g), h = L.twin[g], moved = true;
+          break;
+        }
+    }
+    ws.lev = lev, ws.m = v;
+    pick(L, out.data(), static_cast<int>(out.size()));
+    return true;
+  }
+  // One level down (O'Rourke Lemma 7.10.3: the new top is m or a parent of m→l, m→r).
+  void down() {
+    const DKLevel& C = D.levels[ws.lev];
+    const DKLevel& L = D.levels[ws.lev - 1];
     int left[3], right[3], nl = 0, nr = 0;
     auto expand = [&](int h, int* out, int& no) {
       int g = C.down[h];
@@ -602,25 +740,25 @@ WalkResult walk(const PolytopeData& D, const Walker& fr, int stop) {
         out[no++] = L.cw(g);
       }
     };
-    expand(hl, left, nl);
-    expand(hr, right, nr);
+    expand(ws.hl, left, nl);
+    expand(ws.hr, right, nr);
+    --ws.lev;
     int best = -1;
     for (int i = 0; i < nl + nr; ++i) {
       int h = i < nl ? left[i] : right[i - nl];
-      if (fr.compare(L.target(h), best < 0 ? m : L.target(best)) > 0) best = h;
+      if (fr.compare(L.target(h), best < 0 ? ws.m : L.target(best)) > 0) best = h;
     }
     if (best >= 0) {
-      m = L.target(best);
+      ws.m = L.target(best);
       scan_around(L, L.twin[best]);
     } else {
       pick(L, left, nl);
-      int keep = hl;
+      int keep = ws.hl;
       pick(L, right, nr);
-      hl = keep;
+      ws.hl = keep;
     }
   }
-  return {m, hl};
-}
+};
 
 // ---------------------------------------------------------------------------------------------
 // The descent.
@@ -635,19 +773,42 @@ struct Side {
 struct Query {
   Ctx& c;
   Small topP, topQ;
+  std::unordered_map<long long, Small> caps;  ///< caps met in this query, by (side, level, vertex)
+
+  // The walk of one side for the current state's plane, kept from level to level: continued
+  // one level down while the state is unchanged, restarted from the new support vertex (its
+  // half-edge hint) when it changed, and done afresh from the top only when that fails.
+  struct SideWalk {
+    std::unique_ptr<Func> f;
+    std::unique_ptr<Walker> fr;
+    WalkState ws;
+  };
 
   // The vertex of level `lev` strictly beyond the state's plane on one side, as a cap.
-  bool cap(const State& st, bool isq, int lev, Small& out) {
+  const Small* cap(const State& st, bool fresh_state, SideWalk& sw, bool isq, int lev) {
     const PolytopeData& D = c.data(isq);
-    // X side keeps u·x ≤ h (hit) / f ≥ f(x_c) (miss); Y side the opposite.
-    Func f{&c, isq, &st, st.hit ? (isq ? -1 : 1) : (isq ? 1 : -1)};
-    Walker fr(f);
-    WalkResult r = walk(D, fr, lev);
-    int ref = isq ? (st.hit ? st.cand.ys : st.yc) : (st.hit ? st.cand.xs : st.xc);
-    if (fr.fsign(r.m, ref) <= 0) return false;
-    out = make_cap(D, isq, lev, r.he);
-    prepare_small(c, out);
-    return true;
+    if (fresh_state || !sw.fr) {
+      // X side keeps u·x ≤ h (hit) / f ≥ f(x_c) (miss); Y side the opposite.
+      sw.f = std::make_unique<Func>(&c, isq, st, st.hit ? (isq ? -1 : 1) : (isq ? 1 : -1));
+      sw.fr = std::make_unique<Walker>(*sw.f);
+      sw.ws = WalkState{};
+    }
+    Walk w{D, *sw.fr, sw.ws, {}};
+    auto [ref, ref_he, ref_lev] = st.support(isq);
+    if (sw.ws.lev != lev + 1 && !w.restart(ref, ref_he, ref_lev, lev + 1)) {
+      w.start_top();
+      while (sw.ws.lev > lev + 1) w.down();
+    }
+    w.down();
+    if (sw.fr->fsign(sw.ws.m, ref) <= 0) return nullptr;
+    long long key = ((static_cast<long long>(lev) * 2 + isq) << 32) | sw.ws.m;
+    auto it = caps.find(key);
+    if (it == caps.end()) {
+      int h = sw.ws.hl;  // an out-half-edge of the top at this level
+      it = caps.emplace(key, make_cap(D, isq, lev, h)).first;
+      prepare_small(c, it->second);
+    }
+    return &it->second;
   }
 
   static bool better_hit(Ctx& c, const State& a, const State& b) {  // a's exit later than b's
@@ -671,20 +832,23 @@ struct Query {
     const int KP = static_cast<int>(c.P.levels.size()), KQ = static_cast<int>(c.Q.levels.size());
     const int nx = X.hier ? KP - 1 - X.bottom : 0, ny = Y.hier ? KQ - 1 - Y.bottom : 0;
     State st = solve_small(c, X.hier ? topP : *X.small, Y.hier ? topQ : *Y.small);
+    SideWalk wx, wy;
+    bool stale_x = true, stale_y = true;  // the state changed since that side's last walk
     for (int s = std::max(nx, ny); s >= 1; --s) {
       bool xr = X.hier && s <= nx, yr = Y.hier && s <= ny;
-      Small C, D;
-      bool hc = xr && cap(st, false, X.bottom + s - 1, C);
-      bool hd = yr && cap(st, true, Y.bottom + s - 1, D);
+      const Small* C = xr ? cap(st, stale_x, wx, false, X.bottom + s - 1) : nullptr;
+      const Small* D = yr ? cap(st, stale_y, wy, true, Y.bottom + s - 1) : nullptr;
+      stale_x = stale_x && !xr, stale_y = stale_y && !yr;
+      const bool hc = C != nullptr, hd = D != nullptr;
       if (!hc && !hd) continue;
       State r1, r2;
       if (hc) {
-        Side cx{false, 0, &C};
+        Side cx{false, 0, C};
         Side y = Y.hier ? Side{true, Y.bottom + std::min(s - 1, ny), nullptr} : Y;
         r1 = descend(cx, y);
       }
       if (hd) {
-        Side dy{false, 0, &D};
+        Side dy{false, 0, D};
         Side x = X.hier ? Side{true, X.bottom + std::min(s - 1, nx), nullptr} : X;
         r2 = descend(x, dy);
       }
@@ -693,35 +857,56 @@ struct Query {
       assert(next.hit != st.hit || (next.hit ? compare_t(c, next.cand, st.cand) > 0
                                              : compare_turn(c, st.xc, st.yc, next.xc, next.yc) < 0));
       st = next;
+      stale_x = stale_y = true;
     }
     return st;
   }
 };
 
-// Level-0 triangle incident to vertex v lying in the plane with normal u through v (exact).
+// Level-0 features of the answer. The stars of the feature's vertices are scanned in lockstep,
+// so the cost is O(smallest degree), not O(degree of a hub vertex).
+// A level-0 triangle in the plane through the feature f (2 or 3 vertex ids, -1 padded) with
+// normal u: the triangle f itself if it exists, else a coplanar one (flat facets; exact test).
 template <class UF>
-int face_in_plane(const Ctx& c, bool isq, int v, UF u_of) {
+int face_in_plane(const Ctx& c, bool isq, const int* f, UF u_of) {
   const PolytopeData& D = c.data(isq);
   const DKLevel& L = D.levels[0];
-  int h0 = D.vertex_he[v], h = h0;
-  do {
-    int a = L.target(h), b = L.target(DKLevel::next(h));
-    auto on = [&](int w) {
-      return exact_sign([&](auto Lf) { return dot(u_of(Lf), c.vdiff(Lf, isq, w, v)); }) == 0;
-    };
-    if (on(a) && on(b)) return h / 3;
-    h = L.ccw(h);
-  } while (h != h0);
+  const int nf = f[2] < 0 ? 2 : 3;
+  int h[3], h0[3];
+  for (int i = 0; i < nf; ++i) h[i] = h0[i] = D.vertex_he[f[i]];
+  auto on = [&](int w, int v) {
+    return w == f[0] || w == f[1] || (nf == 3 && w == f[2]) ||
+           exact_sign([&](auto Lf) { return dot(u_of(Lf), c.vdiff(Lf, isq, w, v)); }) == 0;
+  };
+  for (bool more = true; more;) {
+    more = false;
+    for (int i = 0; i < nf; ++i) {
+      if (h[i] < 0) continue;
+      if (on(L.target(h[i]), f[i]) && on(L.target(DKLevel::next(h[i])), f[i])) return h[i] / 3;
+      h[i] = L.ccw(h[i]);
+      if (h[i] == h0[i]) h[i] = -1;
+      more = more || h[i] >= 0;
+    }
+  }
   return -1;
 }
 
+// The level-0 half-edge a → b, or -1 if (a, b) is not an edge.
 int edge_he(const PolytopeData& D, int a, int b) {
   const DKLevel& L = D.levels[0];
-  int h0 = D.vertex_he[a], h = h0;
-  do {
-    if (L.target(h) == b) return h;
-    h = L.ccw(h);
-  } while (h != h0);
+  int ha = D.vertex_he[a], hb = D.vertex_he[b], ha0 = ha, hb0 = hb;
+  while (ha >= 0 || hb >= 0) {
+    if (ha >= 0) {
+      if (L.target(ha) == b) return ha;
+      ha = L.ccw(ha);
+      if (ha == ha0) ha = -1;
+    }
+    if (hb >= 0) {
+      if (L.target(hb) == a) return L.twin[hb];
+      hb = L.ccw(hb);
+      if (hb == hb0) hb = -1;
+    }
+  }
   return -1;
 }
 
@@ -749,7 +934,7 @@ Depth3 directional_depth_dk(const ConvexPolytope& Pp, const Pose3& pose_p, const
   for (int i = 1; i < 3; ++i)
     if (std::abs(d[i]) > std::abs(d[big])) big = i;
   Ctx c{Pp.data(), Qp.data(), pose, {}, 0};
-  Query q{c, top_small(c.P, false), top_small(c.Q, true)};
+  Query q{c, top_small(c.P, false), top_small(c.Q, true), {}};
   prepare_small(c, q.topP);
   prepare_small(c, q.topQ);
   auto run = [&](int s) {
@@ -788,12 +973,12 @@ Depth3 directional_depth_dk(const ConvexPolytope& Pp, const Pose3& pose_p, const
   Vec3 w;  // contact point in P's frame
   if (k.kind == Cand::FaceX) {
     w = pose.place(Qp[k.ys]) + v;
-    r.feature_p = {FeatureKind3::Face, face_in_plane(c, false, k.x[0], U)};
+    r.feature_p = {FeatureKind3::Face, face_in_plane(c, false, k.x, U)};
     r.feature_q = {FeatureKind3::Vertex, k.ys};
   } else if (k.kind == Cand::FaceY) {
     w = Pp[k.xs];
     r.feature_p = {FeatureKind3::Vertex, k.xs};
-    r.feature_q = {FeatureKind3::Face, face_in_plane(c, true, k.y[0], U)};
+    r.feature_q = {FeatureKind3::Face, face_in_plane(c, true, k.y, U)};
   } else {
     // Closest point of the two edge lines after the move (they meet on the facet).
     Vec3 a = Pp[k.x[0]], e = Pp[k.x[1]] - a;
@@ -803,8 +988,8 @@ Depth3 directional_depth_dk(const ConvexPolytope& Pp, const Pose3& pose_p, const
     w = a + std::clamp(s, 0.0, 1.0) * e;
     int hp = edge_he(c.P, k.x[0], k.x[1]), hq = edge_he(c.Q, k.y[0], k.y[1]);
     // An edge of a cap's bottom may be a diagonal of a flat facet of the polytope: report the face.
-    r.feature_p = hp >= 0 ? Feature3{FeatureKind3::Edge, hp} : Feature3{FeatureKind3::Face, face_in_plane(c, false, k.x[0], U)};
-    r.feature_q = hq >= 0 ? Feature3{FeatureKind3::Edge, hq} : Feature3{FeatureKind3::Face, face_in_plane(c, true, k.y[0], U)};
+    r.feature_p = hp >= 0 ? Feature3{FeatureKind3::Edge, hp} : Feature3{FeatureKind3::Face, face_in_plane(c, false, k.x, U)};
+    r.feature_q = hq >= 0 ? Feature3{FeatureKind3::Edge, hq} : Feature3{FeatureKind3::Face, face_in_plane(c, true, k.y, U)};
   }
   (void)LP, (void)LQ;
   r.translation = Rp * v;

@@ -67,6 +67,17 @@ void check(const ConvexPolytope& P, const Pose3& pp, const ConvexPolytope& Q, co
     ok = ok && a.lower_bound == a.depth && a.upper_bound == a.depth && std::isfinite(a.depth);
     ok = ok && std::abs(a.translation.norm() - a.depth) <= 1e-12 * (1 + a.depth);
     if (sigma >= 0) ok = ok && sigma <= a.depth * (1 + 1e-12);  // σ ≤ σ_d
+    // The exit facet faces d, and its features exist on level 0 of each shape.
+    ok = ok && std::abs(a.facet_normal.norm() - 1) < 1e-12 && a.facet_normal.dot(d) > 0;
+    ok = ok && a.feature_p.kind != FeatureKind3::None && a.feature_q.kind != FeatureKind3::None;
+    ok = ok && a.feature_p.index >= 0 && a.feature_q.index >= 0;
+    // The witness lies on the facet plane through P's feature (world frame).
+    Vec3 on_p = a.feature_p.kind == FeatureKind3::Vertex ? P[a.feature_p.index]
+                : a.feature_p.kind == FeatureKind3::Face  ? P[P.triangles()[a.feature_p.index][0]]
+                                                          : P[P.triangles()[a.feature_p.index / 3][a.feature_p.index % 3]];
+    Vec3 wp = pp.matrix() * on_p + pp.translation;
+    double scale = 1 + wp.norm() + a.witness_p.norm();
+    ok = ok && std::abs(a.facet_normal.dot(a.witness_p - wp)) <= 1e-9 * scale;
   } else if (ok) {
     ok = a.depth == 0 && a.translation == Vec3::Zero();
   }
@@ -167,6 +178,38 @@ TEST(Directional3, IntegerDegenerateSuites) {
   st.print("integer degenerate");
   EXPECT_GT(st.overlapping, 500);
   EXPECT_GT(touching, 20);
+}
+
+TEST(Directional3, LargeDegenerateAndHighDegree) {
+  // Massive coplanarity (integer spheres, prism caps) and hub vertices of degree ~800
+  // (bipyramid apexes: the walks' restarts give up on them and walk from the top instead).
+  std::vector<Vec3> bip;
+  for (int i = 0; i < 800; ++i) {
+    double t = 2 * M_PI * i / 800;
+    bip.emplace_back(std::cos(t), std::sin(t), 0);
+  }
+  bip.emplace_back(0, 0, 1.5);
+  bip.emplace_back(0, 0, -0.5);
+  std::vector<ConvexPolytope> S{ConvexPolytope::hull(test3::integer_sphere(1105)), ConvexPolytope::hull(test3::prism(5525, 30)),
+                                ConvexPolytope::hull(test3::bipyramid(5525)), ConvexPolytope::hull(bip, "bipyramid800")};
+  auto small = ConvexPolytope::hull(test3::integer_sphere(9));
+  std::mt19937_64 rng(1105);
+  std::uniform_int_distribution<int> t(-20, 20);
+  Stats st;
+  std::vector<Vec3> dirs{{0, 0, 1}, {0, 0, -1}, {1, 0, 0}, {1, 1, 0}, {1, 2, 5}, {-3, 1, 1}};
+  for (std::size_t i = 0; i < S.size(); ++i) {
+    double sc = i == 3 ? 0.05 : 1;  // the bipyramid has unit size
+    for (int k = 0; k < 2; ++k) {
+      Pose3 pq(Vec3(t(rng), t(rng), t(rng)) * sc);
+      for (const Vec3& d : dirs) check(S[i], Pose3(), small, pq, d, st, "degenerate " + std::to_string(i));
+      // Self pairs under a rotation (not for the 802-vertex bipyramid: seconds a query for the reference).
+      Pose3 rq(random_rotation(rng), Vec3(t(rng), t(rng), t(rng)) * sc * 0.5);
+      const auto& Q = i == 3 ? small : S[i];
+      for (const Vec3& d : dirs) check(S[i], Pose3(), Q, rq, d, st, "pair " + std::to_string(i));
+    }
+  }
+  st.print("large degenerate");
+  EXPECT_GT(st.overlapping, 80);
 }
 
 TEST(Directional3, AnalyticCubes) {
