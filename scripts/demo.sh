@@ -31,3 +31,24 @@ printf 'x,y,dx,dy\n1,2,3,4\n1,2,3\n' > out/demo_bad.csv
 set +e
 "$pd" batch "$data/octagon.wkt" "$data/hexagon.wkt" --queries out/demo_bad.csv >/dev/null
 echo "(exit status $?)"
+set -e
+
+# 3D: convex hulls of real game objects from the project's shared data, ../shared/data/hulls
+# relative to the repository root (Jolt Physics' convex_hulls.bin, MIT licence; see
+# ../shared/data/README.md). Meshes (.obj, .off, .stl) are read as point sets; the tool takes
+# their convex hull. These lines need that shared directory next to the repository.
+hulls=../shared/data/hulls
+if [ -d "$hulls" ]; then
+  echo "== 3D: hull 7 P fixed (a flat slab), hull 12 Q at t = (-1, 0, -0.5): minimum depth σ"
+  "$pd" depth "$hulls/hull07.obj" "$hulls/hull12.obj" --offset=-1,0,-0.5
+
+  echo "== 3D: same placement along d = (0, 0, 1), and with Q rotated 45° about y (quaternion w,x,y,z)"
+  "$pd" depth "$hulls/hull07.obj" "$hulls/hull12.obj" --offset=-1,0,-0.5 --direction 0,0,1 --json
+  "$pd" depth "$hulls/hull07.obj" "$hulls/hull12.obj" --offset=-1,0,-0.5 --rotate-q 0.924,0,0.383,0 --json
+
+  echo "== 3D batch: offsets x,y,z and directions dx,dy,dz (0,0,0 asks for σ)"
+  printf 'x,y,z,dx,dy,dz\n-1,0,-0.5,0,0,0\n-1,0,-0.5,0,0,1\n-2,0.5,0,1,0,0\n9,9,9,0,0,0\n' > out/demo_queries3.csv
+  "$pd" batch "$hulls/hull07.obj" "$hulls/hull12.obj" --queries out/demo_queries3.csv
+else
+  echo "(3D demo skipped: $hulls not found)"
+fi

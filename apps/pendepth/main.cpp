@@ -1,11 +1,14 @@
 // pendepth — command-line tool (DESIGN.md §3).
 //
-//   pendepth depth P Q [--offset X,Y] [--direction X,Y] [--separate] [--json] [--svg FILE]
-//   pendepth batch P Q --queries FILE [--json]
+//   pendepth depth P Q [--offset X,Y[,Z]] [--direction X,Y[,Z]] [--separate] [--json] [--svg FILE]
+//                      [--rotate-q QW,QX,QY,QZ] [--rotate-p QW,QX,QY,QZ]
+//   pendepth batch P Q --queries FILE [--json] [--rotate-q ...] [--rotate-p ...]
 //
 // Exit status: 0 success, 2 bad input (one line on stderr naming file, line and problem),
-// 1 internal error. Shapes: .wkt (2D convex polygons); .obj/.off/.stl are 3D, not supported yet.
+// 1 internal error. Shapes: .wkt (2D convex polygons); .obj, .off, .stl (3D: the convex hull of
+// the vertices). P and Q must have the same dimension. Rotations are 3D only.
 #include <pendepth/depth2.hpp>
+#include <pendepth/depth3.hpp>
 #include <pendepth/io.hpp>
 
 #include <CLI/CLI.hpp>
@@ -20,33 +23,58 @@
 namespace {
 
 using pendepth::ConvexPolygon;
+using pendepth::ConvexPolytope;
 using pendepth::Depth2;
+using pendepth::Depth3;
 using pendepth::InvalidInput;
+using pendepth::Pose3;
 using pendepth::Vec2;
+using pendepth::Vec3;
 namespace io = pendepth::io;
 
-ConvexPolygon load_shape(const std::string& path, const char* name) {
+std::string lower_extension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if (ext == ".wkt") {
-    try {
-      return io::read_convex_polygon(path, name);
-    } catch (const InvalidInput& e) {
-      const std::string msg = e.what();
-      if (msg.find("not convex") != std::string::npos || msg.find("self-intersecting") != std::string::npos)
-        throw InvalidInput(msg + " (non-convex polygons are not supported yet)");
-      throw;
-    }
-  }
-  if (ext == ".obj" || ext == ".off" || ext == ".stl")
-    throw InvalidInput(path + ": 3D shapes are not supported yet (" + ext + ")");
-  throw InvalidInput(path + ": unknown shape format '" + ext + "' (expected .wkt)");
+  return ext;
 }
 
-// "X,Y" from an option value; the option name goes into the error message.
-Vec2 parse_vec(const std::string& text, const char* option) {
-  double v[2];
-  std::size_t count = 0;
+// The dimension of a shape file, by its extension: 2 (.wkt) or 3 (.obj, .off, .stl).
+int shape_dimension(const std::string& path) {
+  const std::string ext = lower_extension(path);
+  if (ext == ".wkt") return 2;
+  if (ext == ".obj" || ext == ".off" || ext == ".stl") return 3;
+  throw InvalidInput(path + ": unknown shape format '" + ext + "' (expected .wkt, .obj, .off or .stl)");
+}
+
+// The common dimension of P and Q; mixing a 2D and a 3D shape is bad input.
+int pair_dimension(const std::string& p, const std::string& q) {
+  const int dp = shape_dimension(p), dq = shape_dimension(q);
+  if (dp != dq)
+    throw InvalidInput(q + ": Q is a " + std::to_string(dq) + "D shape but P (" + p + ") is " + std::to_string(dp) +
+                       "D; both must be 2D (.wkt) or both 3D (.obj, .off, .stl)");
+  return dp;
+}
+
+// A .wkt file (the caller checked the extension).
+ConvexPolygon load_shape(const std::string& path, const char* name) {
+  try {
+    return io::read_convex_polygon(path, name);
+  } catch (const InvalidInput& e) {
+    const std::string msg = e.what();
+    if (msg.find("not convex") != std::string::npos || msg.find("self-intersecting") != std::string::npos)
+      throw InvalidInput(msg + " (non-convex polygons are not supported yet)");
+    throw;
+  }
+}
+
+// N comma-separated numbers from an option value (`names` as in "X,Y"); the option name goes
+// into the error message.
+template <int N>
+Eigen::Matrix<double, N, 1> parse_numbers(const std::string& text, const char* option, const char* names) {
+  static constexpr const char* kCount[] = {"", "one", "two", "three", "four"};
+  const std::string expected = std::string(option) + ": expected " + names + " (" + kCount[N] + " numbers), got '" + text + "'";
+  Eigen::Matrix<double, N, 1> v;
+  int count = 0;
   std::string_view rest = text;
   for (;;) {
     const std::size_t comma = rest.find(',');
@@ -56,36 +84,90 @@ Vec2 parse_vec(const std::string& text, const char* option) {
     if (!f.empty() && f.front() == '+') f.remove_prefix(1);
     double x = 0;
     auto [ptr, ec] = std::from_chars(f.data(), f.data() + f.size(), x);
-    if (f.empty() || ec == std::errc::invalid_argument || ptr != f.data() + f.size())
-      throw InvalidInput(std::string(option) + ": expected X,Y (two numbers), got '" + text + "'");
+    if (f.empty() || ec == std::errc::invalid_argument || ptr != f.data() + f.size()) throw InvalidInput(expected);
     if (ec == std::errc::result_out_of_range || !std::isfinite(x))
       throw InvalidInput(std::string(option) + ": non-finite number in '" + text + "'");
-    if (count < 2) v[count] = x;
+    if (count < N) v[count] = x;
     ++count;
     if (comma == std::string_view::npos) break;
     rest.remove_prefix(comma + 1);
   }
-  if (count == 3) throw InvalidInput(std::string(option) + ": 3D vectors are not supported yet (2D shapes)");
-  if (count != 2) throw InvalidInput(std::string(option) + ": expected X,Y (two numbers), got '" + text + "'");
-  return Vec2(v[0], v[1]);
+  if (count != N) throw InvalidInput(expected);
+  return v;
 }
 
-// d scaled by a power of two so its larger component lies in [1, 2): the same direction (the
-// scaling is exact unless the other component is 2^-1000 times smaller), and d.norm() can neither
-// underflow nor overflow inside the library.
-Vec2 rescale_direction(const Vec2& d) {
-  const int e = std::ilogb(std::max(std::abs(d.x()), std::abs(d.y())));
-  return Vec2(std::ldexp(d.x(), -e), std::ldexp(d.y(), -e));
+Vec2 parse_vec(const std::string& text, const char* option) { return parse_numbers<2>(text, option, "X,Y"); }
+Vec3 parse_vec3(const std::string& text, const char* option) { return parse_numbers<3>(text, option, "X,Y,Z"); }
+
+// v scaled by a power of two so its largest |component| lies in [1, 2): exact (up to components
+// 2^-1000 times smaller than the largest), so the library's norms can neither underflow nor
+// overflow. v must not be zero.
+template <class V>
+V rescale(const V& v) {
+  const int e = std::ilogb(v.cwiseAbs().maxCoeff());
+  V r;
+  for (int k = 0; k < v.size(); ++k) r[k] = std::ldexp(v[k], -e);
+  return r;
+}
+
+// --rotate-p / --rotate-q: a quaternion w,x,y,z, normalised by the library (after an exact
+// power-of-two rescaling); zero is bad input. Empty text: the identity.
+Eigen::Quaterniond parse_rotation(const std::string& text, const char* option) {
+  if (text.empty()) return Eigen::Quaterniond::Identity();
+  const Eigen::Vector4d q = parse_numbers<4>(text, option, "QW,QX,QY,QZ");
+  if (q.isZero(0)) throw InvalidInput(std::string(option) + ": the quaternion is zero (it must be a rotation)");
+  const Eigen::Vector4d r = rescale(q);
+  return Eigen::Quaterniond(r[0], r[1], r[2], r[3]);
 }
 
 void write_stdout(const std::string& s) { std::fwrite(s.data(), 1, s.size(), stdout); }
 
 struct DepthArgs {
-  std::string p, q, offset, direction, svg;
+  std::string p, q, offset, direction, svg, rotate_p, rotate_q;
   bool separate = false, json = false;
 };
 
+void reject_rotations(const std::string& rotate_p, const std::string& rotate_q) {
+  if (!rotate_q.empty()) throw InvalidInput("--rotate-q: rotations apply to 3D shapes only");
+  if (!rotate_p.empty()) throw InvalidInput("--rotate-p: rotations apply to 3D shapes only");
+}
+
+int run_depth3(const DepthArgs& a) {
+  if (!a.svg.empty()) throw InvalidInput("--svg draws 2D shapes only");
+  const Eigen::Quaterniond rq = parse_rotation(a.rotate_q, "--rotate-q");
+  const Eigen::Quaterniond rp = parse_rotation(a.rotate_p, "--rotate-p");
+  const Vec3 t = a.offset.empty() ? Vec3(0, 0, 0) : parse_vec3(a.offset, "--offset");
+  std::optional<Vec3> d;
+  if (!a.direction.empty()) {
+    d = parse_vec3(a.direction, "--direction");
+    if (d->isZero(0)) throw InvalidInput("--direction: the direction is zero");
+  }
+  const ConvexPolytope P = io::read_convex_polytope(a.p, "P");
+  const ConvexPolytope Q = io::read_convex_polytope(a.q, "Q");
+  const Pose3 pose_p(rp, Vec3::Zero()), pose_q(rq, t);
+  Depth3 r;
+  if (d) {
+    // Complete separation equals σ_d for convex shapes: once the ray leaves the convex M it
+    // never re-enters.
+    r = pendepth::directional_depth(P, pose_p, Q, pose_q, rescale(*d));
+    if (a.separate) r.kind = pendepth::DepthKind::Separation;
+  } else {
+    r = pendepth::minimum_depth(P, pose_p, Q, pose_q);
+  }
+  std::string out;
+  if (a.json) {
+    io::append_json(out, r, P, Q);
+    out += '\n';
+  } else {
+    out = io::summary(r, P, Q);
+  }
+  write_stdout(out);
+  return 0;
+}
+
 int run_depth(const DepthArgs& a) {
+  if (pair_dimension(a.p, a.q) == 3) return run_depth3(a);
+  reject_rotations(a.rotate_p, a.rotate_q);
   const ConvexPolygon P = load_shape(a.p, "P");
   const ConvexPolygon Q = load_shape(a.q, "Q");
   const Vec2 t = a.offset.empty() ? Vec2(0, 0) : parse_vec(a.offset, "--offset");
@@ -94,7 +176,7 @@ int run_depth(const DepthArgs& a) {
   if (!a.direction.empty()) {
     d = parse_vec(a.direction, "--direction");
     if (d->x() == 0 && d->y() == 0) throw InvalidInput("--direction: the direction is zero");
-    const Vec2 u = rescale_direction(*d);
+    const Vec2 u = rescale(*d);
     r = a.separate ? pendepth::separation_depth(P, Q, t, u) : pendepth::directional_depth(P, Q, t, u);
   } else {
     r = pendepth::minimum_depth(P, Q, t);
@@ -112,11 +194,50 @@ int run_depth(const DepthArgs& a) {
 }
 
 struct BatchArgs {
-  std::string p, q, queries;
+  std::string p, q, queries, rotate_p, rotate_q;
   bool json = false;
 };
 
+int run_batch3(const BatchArgs& a) {
+  const Eigen::Quaterniond rq = parse_rotation(a.rotate_q, "--rotate-q");
+  const Eigen::Quaterniond rp = parse_rotation(a.rotate_p, "--rotate-p");
+  // Hulls and their hierarchies are built here, once for the whole batch.
+  const ConvexPolytope P = io::read_convex_polytope(a.p, "P");
+  const ConvexPolytope Q = io::read_convex_polytope(a.q, "Q");
+  const std::vector<io::Query3> queries = io::read_queries3_csv(a.queries);
+  const Pose3 pose_p(rp, Vec3::Zero());
+
+  constexpr std::size_t kFlushBytes = 1 << 20;
+  std::string out;
+  out.reserve(kFlushBytes + 4096);
+  if (!a.json) out += "depth,tx,ty,tz\n";
+  for (const io::Query3& q : queries) {
+    Depth3 r;
+    const Pose3 pose_q(rq, q.t);
+    try {
+      r = q.d.isZero(0) ? pendepth::minimum_depth(P, pose_p, Q, pose_q)
+                        : pendepth::directional_depth(P, pose_p, Q, pose_q, rescale(q.d));
+    } catch (const InvalidInput& e) {  // the library's word on this query, with its line
+      throw InvalidInput(a.queries + ":" + std::to_string(q.line) + ": " + e.what());
+    }
+    if (a.json) {
+      io::append_json(out, r, P, Q);
+      out += '\n';
+    } else {
+      io::append_csv_row(out, r);
+    }
+    if (out.size() >= kFlushBytes) {
+      write_stdout(out);
+      out.clear();
+    }
+  }
+  write_stdout(out);
+  return 0;
+}
+
 int run_batch(const BatchArgs& a) {
+  if (pair_dimension(a.p, a.q) == 3) return run_batch3(a);
+  reject_rotations(a.rotate_p, a.rotate_q);
   ConvexPolygon P = load_shape(a.p, "P");
   ConvexPolygon Q = load_shape(a.q, "Q");
   const std::vector<io::Query2> queries = io::read_queries_csv(a.queries);
@@ -137,7 +258,7 @@ int run_batch(const BatchArgs& a) {
     Depth2 r;
     try {
       r = (q.d.x() == 0 && q.d.y() == 0) ? field->minimum(q.t)
-                                         : pendepth::directional_depth(PP, QQ, q.t, rescale_direction(q.d));
+                                         : pendepth::directional_depth(PP, QQ, q.t, rescale(q.d));
     } catch (const InvalidInput& e) {  // the library's word on this query, with its line
       throw InvalidInput(a.queries + ":" + std::to_string(q.line) + ": " + e.what());
     }
@@ -166,30 +287,39 @@ std::string one_line(std::string s) {
 int main(int argc, char** argv) {
   CLI::App app{"pendepth: exact intersection (penetration) depth of two shapes.\n"
                "P is fixed, Q moves; Q is placed at the offset t. Shapes: .wkt POLYGON files "
-               "(convex, 2D)."};
+               "(convex, 2D); .obj, .off, .stl meshes (3D: the convex hull of the vertices)."};
   app.require_subcommand(1);
   app.footer("Exit status: 0 success, 2 bad input (one line on stderr: FILE:LINE: problem).");
 
   DepthArgs da;
   CLI::App* depth = app.add_subcommand(
       "depth", "Depth of one placement: the minimum σ, or σ_d along --direction, or the complete separation.");
-  depth->add_option("P", da.p, "fixed shape file (.wkt)")->required()->type_name("FILE");
-  depth->add_option("Q", da.q, "moving shape file (.wkt)")->required()->type_name("FILE");
-  depth->add_option("--offset", da.offset, "placement t of Q (default 0,0); negative: --offset=-1,2")
-      ->type_name("X,Y");
+  depth->add_option("P", da.p, "fixed shape file (.wkt, or 3D .obj/.off/.stl)")->required()->type_name("FILE");
+  depth->add_option("Q", da.q, "moving shape file (same dimension as P)")->required()->type_name("FILE");
+  depth->add_option("--offset", da.offset, "placement t of Q (default 0); negative: --offset=-1,2")
+      ->type_name("X,Y[,Z]");
   CLI::Option* dir =
-      depth->add_option("--direction", da.direction, "compute σ_d along d instead of σ")->type_name("X,Y");
-  depth->add_flag("--separate", da.separate, "complete separation along --direction")->needs(dir);
+      depth->add_option("--direction", da.direction, "compute σ_d along d instead of σ")->type_name("X,Y[,Z]");
+  depth->add_flag("--separate", da.separate, "complete separation along --direction (3D convex: equals σ_d)")
+      ->needs(dir);
   depth->add_flag("--json", da.json, "print one JSON object instead of a summary");
-  depth->add_option("--svg", da.svg, "also draw the query into this SVG file")->type_name("FILE");
+  depth->add_option("--svg", da.svg, "also draw the query into this SVG file (2D)")->type_name("FILE");
+  depth->add_option("--rotate-q", da.rotate_q, "3D: rotation of Q about its origin, before the offset (quaternion, normalised)")
+      ->type_name("QW,QX,QY,QZ");
+  depth->add_option("--rotate-p", da.rotate_p, "3D: rotation of P about its origin (quaternion, normalised)")
+      ->type_name("QW,QX,QY,QZ");
 
   BatchArgs ba;
   CLI::App* batch = app.add_subcommand(
-      "batch", "Many placements: CSV lines x,y,dx,dy (dx,dy = 0,0 asks for σ). Prints CSV depth,tx,ty.");
-  batch->add_option("P", ba.p, "fixed shape file (.wkt)")->required()->type_name("FILE");
-  batch->add_option("Q", ba.q, "moving shape file (.wkt)")->required()->type_name("FILE");
-  batch->add_option("--queries", ba.queries, "CSV file of queries x,y,dx,dy")->required()->type_name("FILE");
+      "batch", "Many placements: CSV lines x,y,dx,dy or x,y,z,dx,dy,dz (zero direction asks for σ). "
+               "Prints CSV depth,tx,ty[,tz].");
+  batch->add_option("P", ba.p, "fixed shape file (.wkt, or 3D .obj/.off/.stl)")->required()->type_name("FILE");
+  batch->add_option("Q", ba.q, "moving shape file (same dimension as P)")->required()->type_name("FILE");
+  batch->add_option("--queries", ba.queries, "CSV file of queries x,y[,z],dx,dy[,dz]")->required()->type_name("FILE");
   batch->add_flag("--json", ba.json, "print JSON Lines (one object per query) instead of CSV");
+  batch->add_option("--rotate-q", ba.rotate_q, "3D: rotation of Q for every query (quaternion, normalised)")
+      ->type_name("QW,QX,QY,QZ");
+  batch->add_option("--rotate-p", ba.rotate_p, "3D: rotation of P (quaternion, normalised)")->type_name("QW,QX,QY,QZ");
 
   try {
     app.parse(argc, argv);

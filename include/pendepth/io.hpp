@@ -1,13 +1,16 @@
 // pendepth — reading shapes and writing results (DESIGN.md §3).
 //
 // Readers report bad input as InvalidInput with a message "SOURCE:LINE: problem" (SOURCE is the
-// file name or the name given for a string), so a command-line tool can print it as one line.
+// file name or the name given for a string), or "SOURCE: problem (byte offset K)" for binary
+// files, so a command-line tool can print it as one line.
 // Writers print doubles with the shortest representation that reads back to the same double.
 #pragma once
 
 #include <pendepth/depth2.hpp>
+#include <pendepth/depth3.hpp>
 #include <pendepth/geometry.hpp>
 #include <pendepth/polygon.hpp>
+#include <pendepth/polytope.hpp>
 
 #include <cstddef>
 #include <filesystem>
@@ -62,6 +65,59 @@ struct Query2 {
 std::vector<Query2> parse_queries_csv(std::string_view text, std::string_view source = "<csv>");
 std::vector<Query2> read_queries_csv(const std::filesystem::path& path);
 
+/// A 3D batch query: placement t, direction d (all zero: ask for σ), source line.
+struct Query3 {
+  Vec3 t{0, 0, 0};
+  Vec3 d{0, 0, 0};
+  std::size_t line = 0;
+};
+
+/// As parse_queries_csv, with lines `x,y,z,dx,dy,dz` (6 numbers).
+std::vector<Query3> parse_queries3_csv(std::string_view text, std::string_view source = "<csv>");
+std::vector<Query3> read_queries3_csv(const std::filesystem::path& path);
+
+// ---- 3D point sets (DESIGN.md §3: convex algorithms take the hull of the vertices) ----
+// The parsers return the vertices in file order (empty if the file holds none); faces, normals,
+// colours and texture coordinates are not read. Numbers go through std::from_chars: 10⁶ vertices
+// parse in well under a second. Every coordinate is checked finite.
+
+/// Wavefront OBJ: `v x y z [w]` lines (also `v x y z r g b`, a common colour extension); w is
+/// the rational weight of curves and surfaces and does not move the point. `#` starts a comment
+/// anywhere; all other statements (vn, vt, f, g, ...) are ignored. Throws "SOURCE:LINE: malformed
+/// vertex line: ..." for a wrong number count or a non-numeric field, "SOURCE:LINE: ... not a
+/// finite number" for inf, nan or an out-of-range value. O(length of text).
+std::vector<Vec3> parse_obj_points(std::string_view text, std::string_view source = "<obj>");
+
+/// Geomview OFF: optional header keyword [ST][C][N]OFF or nOFF (then the dimension, which must
+/// be 3; 4OFF, 4D and binary OFF are rejected), then `vertices faces [edges]`, then one vertex
+/// per line: x y z followed by the normal, colour or texture fields the keyword announces
+/// (plain OFF: exactly 3 numbers). `#` comments and blank lines anywhere. Throws "SOURCE:LINE:
+/// problem" for a bad keyword, bad counts, a malformed or non-finite vertex, or a file ending
+/// before the declared vertex count. O(length of text).
+std::vector<Vec3> parse_off_points(std::string_view text, std::string_view source = "<off>");
+
+/// STL, ASCII or binary. Binary is recognised by its size, 84 + 50·triangles bytes (the count
+/// is the little-endian uint32 at byte 80), whatever the header says — binary files often begin
+/// with "solid" too; otherwise a file beginning with "solid" (any case) and holding no NUL byte
+/// is ASCII. Returns the distinct vertices in order of first appearance (every STL vertex is
+/// repeated by each of its triangles); -0 and 0 are the same vertex. Errors: ASCII "SOURCE:LINE:
+/// problem" (unexpected keyword, malformed or non-finite vertex, a file ending inside a solid);
+/// binary "SOURCE: problem (byte offset K)" (size not 84 + 50·count, non-finite coordinate).
+/// O(size) expected.
+std::vector<Vec3> parse_stl_points(std::string_view bytes, std::string_view source = "<stl>");
+
+/// Reads a .obj, .off or .stl file (extension case-insensitive) with the parser above. Throws
+/// "PATH: cannot read file (reason)" or "PATH: unknown 3D shape format '.ext' (expected .obj,
+/// .off or .stl)".
+std::vector<Vec3> read_mesh_points(const std::filesystem::path& path);
+
+/// The convex hull of a mesh file's vertices as a ConvexPolytope named `name` (hierarchy
+/// included). Besides the reader's errors, throws "PATH: NAME: only K points (...)" for fewer
+/// than 4 points and "PATH: NAME: <hull message>" for degenerate (flat) point sets. Feature
+/// indices of results refer to the vertices as returned by read_mesh_points, 0-based.
+/// O(size + n log n).
+ConvexPolytope read_convex_polytope(const std::filesystem::path& path, std::string_view name);
+
 /// `POLYGON ((x0 y0, ..., x0 y0))`: the vertices in their stored order, ring closed explicitly,
 /// shortest round-trip doubles. Reading the text back gives the same doubles.
 std::string to_wkt(std::span<const Vec2> ring);
@@ -83,6 +139,20 @@ void append_csv_row(std::string& out, const Depth2& r);
 
 /// A multi-line human-readable summary of a 2D result (ends with a newline).
 std::string summary(const Depth2& r, const ConvexPolygon& P, const ConvexPolygon& Q);
+
+/// Appends one JSON object (no newline) for a 3D result: depth, translation [x,y,z], normal,
+/// witness_p, witness_q, kind, overlapping, feature_p / feature_q, lower_bound, upper_bound.
+/// Features use input vertex indices (ConvexPolytope::input_index): {"kind":"vertex","index":i},
+/// {"kind":"edge","index":i,"end":j}, {"kind":"face","index":f,"vertices":[i,j,k]} (f the
+/// triangle of P's or Q's triangulation, vertices counter-clockwise seen from outside) or
+/// {"kind":"none","index":null}. No allocation once `out` has capacity.
+void append_json(std::string& out, const Depth3& r, const ConvexPolytope& P, const ConvexPolytope& Q);
+
+/// Appends one CSV row "depth,tx,ty,tz\n".
+void append_csv_row(std::string& out, const Depth3& r);
+
+/// A multi-line human-readable summary of a 3D result (ends with a newline).
+std::string summary(const Depth3& r, const ConvexPolytope& P, const ConvexPolytope& Q);
 
 /// What write_svg draws besides P and Q.
 struct SvgOptions {

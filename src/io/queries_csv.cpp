@@ -1,4 +1,5 @@
-// Batch query files: one `x,y,dx,dy` per line (DESIGN.md §3, `pendepth batch`).
+// Batch query files: one `x,y,dx,dy` (2D) or `x,y,z,dx,dy,dz` (3D) per line (DESIGN.md §3,
+// `pendepth batch`).
 //
 // One pass over the text, std::from_chars per field, no allocation per line, so 10⁵ queries
 // parse in milliseconds. Errors name the source line; a first non-numeric line is a header.
@@ -36,12 +37,13 @@ std::string shorten(std::string_view s) {
   return s.size() > 24 ? std::string(s.substr(0, 24)) + "..." : std::string(s);
 }
 
-}  // namespace
-
-std::vector<Query2> parse_queries_csv(std::string_view text, std::string_view source) {
+// Rows of N = 2·dim numbers: offset then direction. `Query` is Query2 or Query3.
+template <class Query, std::size_t N>
+std::vector<Query> parse_rows(std::string_view text, std::string_view source) {
+  constexpr std::size_t kOther = N == 4 ? 6 : 4;  // the other dimension's row length
   if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // UTF-8 byte-order mark
-  std::vector<Query2> out;
-  out.reserve(text.size() / 16);
+  std::vector<Query> out;
+  out.reserve(text.size() / (4 * N));
   bool first_row = true;  // only the first non-comment row may be a header
   std::size_t line = 0, pos = 0;
   auto fail = [&](const std::string& what) {
@@ -61,12 +63,12 @@ std::vector<Query2> parse_queries_csv(std::string_view text, std::string_view so
 
     std::size_t count = 1;
     for (char c : row) count += c == ',';
-    if (count != 4)
-      fail("expected 4 numbers, got " + std::to_string(count) +
-           (count == 6 ? " (3D queries are not supported yet)" : ""));
-    double v[4];
+    if (count != N)
+      fail("expected " + std::to_string(N) + " numbers, got " + std::to_string(count) +
+           (count == kOther ? (N == 4 ? " (a 3D query; the shapes are 2D)" : " (a 2D query; the shapes are 3D)") : ""));
+    double v[N];
     std::string_view rest = row;
-    for (std::size_t k = 0; k < 4; ++k) {
+    for (std::size_t k = 0; k < N; ++k) {
       const std::size_t comma = rest.find(',');
       const std::string_view f = rest.substr(0, comma);
       rest = comma == std::string_view::npos ? std::string_view() : rest.substr(comma + 1);
@@ -79,9 +81,29 @@ std::vector<Query2> parse_queries_csv(std::string_view text, std::string_view so
         fail("field " + std::to_string(k + 1) + " is not a finite number: '" + shorten(f) + "'");
       v[k] = x;
     }
-    out.push_back(Query2{Vec2(v[0], v[1]), Vec2(v[2], v[3]), line});
+    Query q;
+    for (std::size_t k = 0; k < N / 2; ++k) {
+      q.t[k] = v[k];
+      q.d[k] = v[N / 2 + k];
+    }
+    q.line = line;
+    out.push_back(q);
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<Query2> parse_queries_csv(std::string_view text, std::string_view source) {
+  return parse_rows<Query2, 4>(text, source);
+}
+
+std::vector<Query3> parse_queries3_csv(std::string_view text, std::string_view source) {
+  return parse_rows<Query3, 6>(text, source);
+}
+
+std::vector<Query3> read_queries3_csv(const std::filesystem::path& path) {
+  return parse_queries3_csv(read_text_file(path), path.string());
 }
 
 std::vector<Query2> read_queries_csv(const std::filesystem::path& path) {

@@ -216,9 +216,10 @@ TEST_F(Cli, BadInputExitsWithOneLine) {
   const std::string missing = (dir_ / "missing.wkt").string();
   expect_error("depth " + quote(P) + " " + quote(missing), missing + ": cannot read file (No such file or directory)");
   const std::string obj = write("hull.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n");
-  expect_error("depth " + quote(obj) + " " + quote(Q), obj + ": 3D shapes are not supported yet (.obj)");
+  expect_error("depth " + quote(obj) + " " + quote(Q),  // mixing dimensions (3D: tests/cli/test_cli3.cpp)
+               Q + ": Q is a 2D shape but P (" + obj + ") is 3D; both must be 2D (.wkt) or both 3D (.obj, .off, .stl)");
   const std::string txt = write("shape.txt", "POLYGON ((0 0, 1 0, 0 1))");
-  expect_error("depth " + quote(P) + " " + quote(txt), txt + ": unknown shape format '.txt' (expected .wkt)");
+  expect_error("depth " + quote(P) + " " + quote(txt), txt + ": unknown shape format '.txt' (expected .wkt, .obj, .off or .stl)");
 
   const std::string pq = quote(P) + " " + quote(Q);
   expect_error("depth " + pq + " --direction 0,0", "--direction: the direction is zero");
@@ -226,7 +227,8 @@ TEST_F(Cli, BadInputExitsWithOneLine) {
   expect_error("depth " + pq + " --direction 1,nan", "--direction: non-finite number in '1,nan'");
   expect_error("depth " + pq + " --offset 1,b", "--offset: expected X,Y (two numbers), got '1,b'");
   expect_error("depth " + pq + " --offset 1", "--offset: expected X,Y (two numbers), got '1'");
-  expect_error("depth " + pq + " --offset 1,2,3", "--offset: 3D vectors are not supported yet (2D shapes)");
+  expect_error("depth " + pq + " --offset 1,2,3", "--offset: expected X,Y (two numbers), got '1,2,3'");
+  expect_error("depth " + pq + " --rotate-q 1,0,0,0", "--rotate-q: rotations apply to 3D shapes only");
 
   // Usage errors: status 2 and one line too.
   for (const std::string& args : std::vector<std::string>{"", "depth " + quote(P), "depth " + pq + " --separate", "batch " + pq,

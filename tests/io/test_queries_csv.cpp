@@ -69,7 +69,7 @@ TEST(QueriesCsv, RandomValuesReadBackExactly) {
 TEST(QueriesCsv, ErrorsNameTheLine) {
   EXPECT_EQ(error_of("x,y,dx,dy\n0,0,1,0\n\n1,2,3\n"), "q.csv:4: expected 4 numbers, got 3");
   EXPECT_EQ(error_of("0,0,1,0,5\n"), "q.csv:1: expected 4 numbers, got 5");
-  EXPECT_EQ(error_of("0,0,0,1,0,0\n"), "q.csv:1: expected 4 numbers, got 6 (3D queries are not supported yet)");
+  EXPECT_EQ(error_of("0,0,0,1,0,0\n"), "q.csv:1: expected 4 numbers, got 6 (a 3D query; the shapes are 2D)");
   EXPECT_EQ(error_of("1 2 3 4\n"), "q.csv:1: expected 4 numbers, got 1");
   EXPECT_EQ(error_of("0,0,1,0\n0,,1,0\n"), "q.csv:2: field 2 is empty");
   EXPECT_EQ(error_of("0,0,1,0\n0,0,1,zero\n"), "q.csv:2: field 4 is not a number: 'zero'");
@@ -80,4 +80,43 @@ TEST(QueriesCsv, ErrorsNameTheLine) {
   // Only the first row may be a header.
   EXPECT_EQ(error_of("x,y,dx,dy\nx,y,dx,dy\n"), "q.csv:2: field 1 is not a number: 'x'");
   EXPECT_EQ(error_of("0,0,1,0\nx,y,dx,dy\n"), "q.csv:2: field 1 is not a number: 'x'");
+}
+
+namespace {
+std::string error3_of(std::string_view text) {
+  try {
+    io::parse_queries3_csv(text, "q3.csv");
+  } catch (const InvalidInput& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+}  // namespace
+
+TEST(QueriesCsv3, ValuesHeaderAndErrors) {
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> u(-1e3, 1e3);
+  std::vector<pendepth::Vec3> t(300), d(300);
+  std::string text = "# 3D queries\nx,y,z,dx,dy,dz\n";
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    t[i] = pendepth::Vec3(u(rng), u(rng), u(rng));
+    d[i] = i % 2 ? pendepth::Vec3(u(rng), u(rng), u(rng)) : pendepth::Vec3(0, 0, 0);
+    for (double x : {t[i].x(), t[i].y(), t[i].z(), d[i].x(), d[i].y(), d[i].z()}) {
+      io::append_double(text, x);
+      text += " , ";
+    }
+    text.resize(text.size() - 3);
+    text += "\r\n";
+  }
+  const auto got = io::parse_queries3_csv(text);
+  ASSERT_EQ(got.size(), t.size());
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    EXPECT_EQ(got[i].t, t[i]);
+    EXPECT_EQ(got[i].d, d[i]);
+    EXPECT_EQ(got[i].line, i + 3);
+  }
+  EXPECT_EQ(error3_of("0,0,0,1,0,0\n1,2,3,4\n"), "q3.csv:2: expected 6 numbers, got 4 (a 2D query; the shapes are 3D)");
+  EXPECT_EQ(error3_of("0,0,0,1,0\n"), "q3.csv:1: expected 6 numbers, got 5");
+  EXPECT_EQ(error3_of("0,0,0,1,0,nan\n"), "q3.csv:1: field 6 is not a finite number: 'nan'");
+  EXPECT_EQ(error3_of("x,y,z,dx,dy,dz\n0,0,,1,0,0\n"), "q3.csv:2: field 3 is empty");
 }

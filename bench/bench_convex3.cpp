@@ -1,0 +1,507 @@
+// Benchmark: 3D convex intersection depth (DHS §5-§6) — pendepth's public queries against the
+// usual GJK/EPA/MPR peers and a linear scan, on the same inputs in the same run (DESIGN.md §6).
+//
+// Notation: P fixed at the identity, Q placed by (rotation, translation); M = P ⊕ (−Q').
+// Benchmark names are <query>/<implementation>/<n>:
+//   sigma/pendepth        minimum_depth: exact σ (certified expansion)
+//   sigma/ccd_epa         libccd ccdGJKPenetration (GJK + EPA), default tolerances (1e-4)
+//   sigma/ccd_epa_tight   the same with epa_tolerance 1e-10 (max 1000 iterations)
+//   sigma/ccd_mpr         libccd ccdMPRPenetration (MPR: a penetration along the centre line,
+//                         not the minimum), default tolerance
+//   sigma/fcl_sd          FCL 0.7 fcl::distance with enable_signed_distance (GST_LIBCCD: FCL's
+//                         libccd GJK + EPA), default distance_tolerance 1e-6
+//   sigma/fcl_epa         FCL 0.7 fcl::collide, enable_contact, GST_INDEP (FCL's own GJK + EPA),
+//                         default gjk_tolerance 1e-6; its contact carries the depth negated, so
+//                         the magnitude is compared
+//   sigma/bullet          Bullet 3.24 float64 btGjkEpaSolver2::Penetration, btConvexHullShape
+//                         with margin 0
+//   sigma_d/pendepth      directional_depth (Compute-Depth-3D on the DK hierarchies)
+//   sigma_d/facet_scan    ray exit over every facet plane of M, prebuilt for Q's rotation:
+//                         the O(|facets of M|) = O(n + m) linear reference
+// libccd's support functions are written here as plain scans over the vertex arrays (as
+// Bullet's btConvexHullShape does); FCL's Convex walks its vertex adjacency for > 32 vertices.
+// Inputs (fixed seed per size, generated outside the timed loops): P and Q are the hulls
+// (ConvexPolytope::hull) of n points on random ellipsoids; σ uses kQueries random rotations of Q
+// with random translations, kept when pendepth reports an overlap. The exact value of each query
+// is pendepth's certified σ (lower_bound == upper_bound), checked against the O(n·m) facet
+// enumeration (src/convex3/minkowski_facets) when n <= kVerifyMax; a disagreement beyond 8 ulps
+// fails the benchmark. Before timing, each peer runs every query once: the counters err_max /
+// err_median (|depth − exact|) and failures (exception, NaN/inf, "no contact", or relative
+// error > kFailRel) come from that pass. bench/run_convex3.sh prints the tables of
+// docs/benchmarks.md from this program's JSON output.
+#include <benchmark/benchmark.h>
+#include <pendepth/depth3.hpp>
+#include <pendepth/polytope.hpp>
+
+#include "convex3/minkowski_facets.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <limits>
+#include <map>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#if PENDEPTH_BENCH_CCD
+#include <ccd/ccd.h>
+#endif
+#if PENDEPTH_BENCH_FCL
+#include <fcl/geometry/shape/convex.h>
+#include <fcl/narrowphase/collision.h>
+#include <fcl/narrowphase/distance.h>
+#endif
+#if PENDEPTH_BENCH_BULLET
+#include <BulletCollision/CollisionShapes/btConvexHullShape.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkEpa2.h>
+#endif
+
+namespace {
+
+using pendepth::ConvexPolytope;
+using pendepth::Depth3;
+using pendepth::Pose3;
+using pendepth::Vec3;
+using Mat3 = Eigen::Matrix3d;
+using Clock = std::chrono::steady_clock;
+
+constexpr std::size_t kQueries = 64;       // σ queries per size
+constexpr std::size_t kDirQueries = 256;   // σ_d queries per size
+constexpr std::size_t kVerifyMax = 512;    // O(n·m) exact check of every σ query up to here
+constexpr std::size_t kDirVerifyMax = 4096;  // O(n·m) exact check of σ_d queries up to here,
+constexpr std::size_t kDirVerifyCount = 32;  // the first this many
+constexpr double kFailRel = 1e-6;          // relative error that counts as a failure
+constexpr std::size_t kDirQ = 64;          // |Q| in the σ_d series
+
+double ms_since(Clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+}
+
+// n points on an ellipsoid with semi-axes in [0.8, 1.25], centred at the origin.
+std::vector<Vec3> ellipsoid_points(std::size_t n, std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> U(0.8, 1.25);
+  std::normal_distribution<double> g;
+  const Vec3 axes(U(rng), U(rng), U(rng));
+  std::vector<Vec3> p;
+  p.reserve(n);
+  while (p.size() < n) {
+    Vec3 v(g(rng), g(rng), g(rng));
+    if (v.norm() > 1e-3) p.push_back(v.normalized().cwiseProduct(axes));
+  }
+  return p;
+}
+
+Eigen::Quaterniond random_rotation(std::mt19937_64& rng) {
+  std::normal_distribution<double> g;
+  Eigen::Quaterniond q(g(rng), g(rng), g(rng), g(rng));
+  return q.normalized();
+}
+
+Vec3 random_in_ball(std::mt19937_64& rng, double r) {
+  std::uniform_real_distribution<double> U(-1, 1);
+  for (;;) {
+    Vec3 v(U(rng), U(rng), U(rng));
+    if (v.squaredNorm() <= 1) return r * v;
+  }
+}
+
+// The O(n·m) exact reference for σ (as tests/convex3): min over every implicit facet of M.
+struct Ref {
+  bool overlapping = true;
+  double sigma = std::numeric_limits<double>::infinity();
+};
+Ref sigma_reference(const ConvexPolytope& P, const ConvexPolytope& Q, const Mat3& R, const Vec3& t) {
+  pendepth::convex3::RelativePose rel;
+  rel.R = R, rel.tq = t;  // P at the identity: exactly what depth3.cpp forms
+  Ref r;
+  for (const auto& k : pendepth::convex3::minkowski_facets(P, Q, rel, std::nullopt)) {
+    if (k.sign <= 0) return Ref{false, 0};
+    r.sigma = std::min(r.sigma, k.distance);
+  }
+  return r;
+}
+
+struct Query {
+  Pose3 pose;  // of Q (P at the identity)
+  Mat3 R;      // pose.matrix(): the same doubles for every implementation
+  double exact = 0;
+};
+
+struct SigmaCase {
+  std::size_t n = 0;
+  ConvexPolytope P, Q;
+  std::vector<Query> queries;
+  double hull_ms = 0;        // both hulls
+  std::size_t verified = 0;  // queries checked against the O(n·m) reference
+  double ref_max_ulps = 0;
+  std::string error;
+};
+
+SigmaCase build_sigma_case(std::size_t n) {
+  std::mt19937_64 rng(0x5eed3000 + n);
+  auto pp = ellipsoid_points(n, rng), qp = ellipsoid_points(n, rng);
+  auto t0 = Clock::now();
+  SigmaCase c{n, ConvexPolytope::hull(pp, "P"), ConvexPolytope::hull(qp, "Q"), {}, 0, 0, 0, {}};
+  c.hull_ms = ms_since(t0);
+  std::size_t attempts = 0;
+  while (c.queries.size() < kQueries && attempts++ < 100 * kQueries) {
+    Query q;
+    q.pose = Pose3(random_rotation(rng), random_in_ball(rng, 1.0));
+    q.R = q.pose.matrix();
+    Depth3 d = pendepth::minimum_depth(c.P, Pose3(), c.Q, q.pose);
+    if (!d.overlapping) continue;
+    if (d.lower_bound != d.upper_bound) c.error = "pendepth result not certified";
+    q.exact = d.depth;
+    if (n <= kVerifyMax) {
+      Ref ref = sigma_reference(c.P, c.Q, q.R, q.pose.translation);
+      double ulps = ref.overlapping ? std::abs(ref.sigma - d.depth) / (ref.sigma * 0x1p-52) : 1e300;
+      c.ref_max_ulps = std::max(c.ref_max_ulps, ulps);
+      if (ulps > 8) c.error = "pendepth σ disagrees with the O(n·m) reference";
+      ++c.verified;
+    }
+    c.queries.push_back(q);
+  }
+  if (c.queries.size() < kQueries) c.error = "too few overlapping placements";
+  return c;
+}
+
+const SigmaCase& sigma_case(std::size_t n) {
+  static std::map<std::size_t, std::unique_ptr<SigmaCase>> cache;
+  auto& p = cache[n];
+  if (!p) p = std::make_unique<SigmaCase>(build_sigma_case(n));
+  return *p;
+}
+
+// A depth query of one implementation: NaN for "no contact", throws on failure.
+using DepthFn = std::function<double(std::size_t)>;
+using Factory = std::function<DepthFn(const SigmaCase&)>;
+
+// ---- peers ----
+
+#if PENDEPTH_BENCH_CCD
+// libccd object: vertices in their own frame, placed by (R, t); support = scan over the array.
+struct CcdHull {
+  const std::vector<Vec3>* v;
+  Mat3 R = Mat3::Identity();
+  Vec3 t = Vec3::Zero();
+};
+void ccd_support(const void* obj, const ccd_vec3_t* dir, ccd_vec3_t* out) {
+  const auto& h = *static_cast<const CcdHull*>(obj);
+  const Vec3 d = h.R.transpose() * Vec3(dir->v[0], dir->v[1], dir->v[2]);
+  const std::vector<Vec3>& v = *h.v;
+  std::size_t best = 0;
+  double bv = d.dot(v[0]);
+  for (std::size_t i = 1; i < v.size(); ++i) {
+    const double x = d.dot(v[i]);
+    if (x > bv) bv = x, best = i;
+  }
+  const Vec3 w = h.R * v[best] + h.t;
+  out->v[0] = w.x(), out->v[1] = w.y(), out->v[2] = w.z();
+}
+void ccd_center(const void* obj, ccd_vec3_t* out) {
+  const auto& h = *static_cast<const CcdHull*>(obj);
+  Vec3 c = Vec3::Zero();
+  for (const Vec3& p : *h.v) c += p;
+  c = h.R * (c / double(h.v->size())) + h.t;
+  out->v[0] = c.x(), out->v[1] = c.y(), out->v[2] = c.z();
+}
+
+Factory ccd_factory(bool mpr, bool tight) {
+  return [mpr, tight](const SigmaCase& c) -> DepthFn {
+    auto pv = std::make_shared<std::vector<Vec3>>(c.P.vertices().begin(), c.P.vertices().end());
+    auto qv = std::make_shared<std::vector<Vec3>>(c.Q.vertices().begin(), c.Q.vertices().end());
+    return [pv, qv, mpr, tight, &c](std::size_t i) {
+      const Query& q = c.queries[i];
+      CcdHull a{pv.get()}, b{qv.get(), q.R, q.pose.translation};
+      ccd_t ccd;
+      CCD_INIT(&ccd);
+      ccd.support1 = ccd.support2 = ccd_support;
+      ccd.center1 = ccd.center2 = ccd_center;
+      if (tight) ccd.epa_tolerance = 1e-10, ccd.max_iterations = 1000;
+      ccd_real_t depth = 0;
+      ccd_vec3_t dir, pos;
+      int r = mpr ? ccdMPRPenetration(&a, &b, &ccd, &depth, &dir, &pos)
+                  : ccdGJKPenetration(&a, &b, &ccd, &depth, &dir, &pos);
+      if (r == -2) throw std::runtime_error("libccd: out of memory");
+      return r == 0 ? double(depth) : std::numeric_limits<double>::quiet_NaN();
+    };
+  };
+}
+#endif
+
+#if PENDEPTH_BENCH_FCL
+std::shared_ptr<fcl::Convexd> fcl_convex(const ConvexPolytope& S) {
+  auto v = std::make_shared<std::vector<fcl::Vector3d>>(S.vertices().begin(), S.vertices().end());
+  auto f = std::make_shared<std::vector<int>>();
+  for (const auto& t : S.triangles()) f->insert(f->end(), {3, t[0], t[1], t[2]});
+  return std::make_shared<fcl::Convexd>(v, int(S.triangles().size()), f);
+}
+
+Factory fcl_factory(bool signed_distance) {
+  return [signed_distance](const SigmaCase& c) -> DepthFn {
+    std::shared_ptr<fcl::Convexd> a = fcl_convex(c.P), b = fcl_convex(c.Q);
+    return [a, b, signed_distance, &c](std::size_t i) {
+      const Query& q = c.queries[i];
+      fcl::Transform3d ta = fcl::Transform3d::Identity(), tb = fcl::Transform3d::Identity();
+      tb.linear() = q.R;
+      tb.translation() = q.pose.translation;
+      if (signed_distance) {
+        fcl::DistanceRequestd req(false, true, 0, 0, 1e-6, fcl::GST_LIBCCD);
+        fcl::DistanceResultd res;
+        fcl::distance(a.get(), ta, b.get(), tb, req, res);
+        return res.min_distance < 0 ? -res.min_distance : std::numeric_limits<double>::quiet_NaN();
+      }
+      fcl::CollisionRequestd req(1, true, 1, false, true, fcl::GST_INDEP, 1e-6);
+      fcl::CollisionResultd res;
+      fcl::collide(a.get(), ta, b.get(), tb, req, res);
+      if (!res.isCollision() || res.numContacts() == 0) return std::numeric_limits<double>::quiet_NaN();
+      // FCL 0.7's GJKSolver_indep stores −(EPA depth) in the contact: the magnitude is the depth.
+      return std::abs(res.getContact(0).penetration_depth);
+    };
+  };
+}
+#endif
+
+#if PENDEPTH_BENCH_BULLET
+std::shared_ptr<btConvexHullShape> bullet_hull(const ConvexPolytope& S) {
+  auto h = std::make_shared<btConvexHullShape>();
+  for (const Vec3& p : S.vertices()) h->addPoint(btVector3(p.x(), p.y(), p.z()), false);
+  h->recalcLocalAabb();
+  h->setMargin(0);  // otherwise Bullet pads the hull by 0.04
+  return h;
+}
+
+Factory bullet_factory() {
+  return [](const SigmaCase& c) -> DepthFn {
+    std::shared_ptr<btConvexHullShape> a = bullet_hull(c.P), b = bullet_hull(c.Q);
+    return [a, b, &c](std::size_t i) {
+      const Query& q = c.queries[i];
+      const Mat3& R = q.R;
+      const Vec3& t = q.pose.translation;
+      btTransform ta;
+      ta.setIdentity();
+      btTransform tb(btMatrix3x3(R(0, 0), R(0, 1), R(0, 2), R(1, 0), R(1, 1), R(1, 2), R(2, 0), R(2, 1), R(2, 2)),
+                     btVector3(t.x(), t.y(), t.z()));
+      btVector3 guess = t.squaredNorm() > 0 ? btVector3(t.x(), t.y(), t.z()) : btVector3(1, 0, 0);
+      btGjkEpaSolver2::sResults res;
+      // The normal comes back in A's frame (here the world frame): only the distance is used.
+      if (!btGjkEpaSolver2::Penetration(a.get(), ta, b.get(), tb, guess, res))
+        return std::numeric_limits<double>::quiet_NaN();
+      return double(-res.distance);
+    };
+  };
+}
+#endif
+
+Factory pendepth_factory() {
+  return [](const SigmaCase& c) -> DepthFn {
+    return [&c](std::size_t i) { return pendepth::minimum_depth(c.P, Pose3(), c.Q, c.queries[i].pose).depth; };
+  };
+}
+
+void bm_sigma(benchmark::State& state, Factory make, std::size_t n) {
+  const SigmaCase& c = sigma_case(n);
+  if (!c.error.empty()) {
+    state.SkipWithError(c.error.c_str());
+    return;
+  }
+  DepthFn f = make(c);
+  // Accuracy pass: every query once.
+  std::vector<double> errs;
+  int failures = 0, exceptions = 0, no_contact = 0;
+  for (std::size_t i = 0; i < c.queries.size(); ++i) {
+    const double exact = c.queries[i].exact;
+    double d;
+    try {
+      d = f(i);
+    } catch (const std::exception&) {
+      ++failures, ++exceptions;
+      continue;
+    }
+    if (!std::isfinite(d)) {
+      ++failures, ++no_contact;
+      continue;
+    }
+    const double e = std::abs(d - exact);
+    errs.push_back(e);
+    failures += e > kFailRel * exact;
+  }
+  std::sort(errs.begin(), errs.end());
+  std::size_t i = 0;
+  for (auto _ : state) {
+    try {
+      benchmark::DoNotOptimize(f(i));
+    } catch (const std::exception&) {
+    }
+    i = i + 1 == c.queries.size() ? 0 : i + 1;
+  }
+  state.counters["queries"] = double(c.queries.size());
+  state.counters["failures"] = failures;
+  state.counters["exceptions"] = exceptions;
+  state.counters["no_contact"] = no_contact;
+  state.counters["err_max"] = errs.empty() ? -1 : errs.back();
+  state.counters["err_median"] = errs.empty() ? -1 : errs[errs.size() / 2];
+  state.counters["verified"] = double(c.verified);
+  state.counters["ref_max_ulps"] = c.ref_max_ulps;
+  state.counters["hull_ms"] = c.hull_ms;
+  double mean = 0;
+  for (const Query& q : c.queries) mean += q.exact;
+  state.counters["depth_mean"] = mean / double(c.queries.size());
+}
+
+// ---- σ_d: pendepth vs the linear scan over M's facets ----
+
+struct DirCase {
+  std::size_t n = 0;
+  ConvexPolytope P, Q;
+  Eigen::Quaterniond rot;
+  Mat3 R;
+  std::vector<Vec3> t, d;  // placements of Q (with rotation rot), unit directions
+  // M's facets for rotation R and translation 0, as planes unit·x <= off (a superset is fine).
+  std::vector<double> ux, uy, uz, off;
+  double hull_ms = 0, facets_ms = 0;
+  std::size_t verified = 0;
+  double max_diff_scan = 0, max_ulps_exact = 0;
+  std::string error;
+
+  double scan(std::size_t i) const {
+    const Vec3& tt = t[i];
+    const Vec3& dd = d[i];
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < off.size(); ++k) {
+      const double ud = ux[k] * dd.x() + uy[k] * dd.y() + uz[k] * dd.z();
+      if (ud > 0) {
+        const double s = (off[k] - (ux[k] * tt.x() + uy[k] * tt.y() + uz[k] * tt.z())) / ud;
+        best = std::min(best, s);
+      }
+    }
+    return best;
+  }
+};
+
+namespace pc3 = pendepth::convex3;
+}  // namespace
+
+namespace pendepth::convex3 {
+// Test reference of depth3.cpp: σ_d as the exit over ALL implicit facets of M, O(n·m) exact.
+Depth3 directional_depth_facets(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
+                                const Pose3& pose_q, const Vec3& d);
+}  // namespace pendepth::convex3
+
+namespace {
+
+DirCase build_dir_case(std::size_t n) {
+  std::mt19937_64 rng(0xd1ec3000 + n);
+  auto pp = ellipsoid_points(n, rng), qp = ellipsoid_points(kDirQ, rng);
+  DirCase c;
+  c.n = n;
+  auto t0 = Clock::now();
+  c.P = ConvexPolytope::hull(pp, "P");
+  c.hull_ms = ms_since(t0);
+  c.Q = ConvexPolytope::hull(qp, "Q");
+  c.rot = random_rotation(rng);
+  c.R = Pose3(c.rot, Vec3::Zero()).matrix();
+  t0 = Clock::now();
+  pc3::RelativePose rel;
+  rel.R = c.R;
+  for (const auto& k : pc3::minkowski_facets(c.P, c.Q, rel, std::nullopt)) {
+    if (k.sign <= 0) {
+      c.error = "M does not contain the origin at translation 0";
+      return c;
+    }
+    c.ux.push_back(k.unit.x()), c.uy.push_back(k.unit.y()), c.uz.push_back(k.unit.z());
+    c.off.push_back(k.distance);
+  }
+  c.facets_ms = ms_since(t0);
+  std::size_t attempts = 0;
+  while (c.t.size() < kDirQueries && attempts++ < 100 * kDirQueries) {
+    Vec3 t = random_in_ball(rng, 1.0);
+    Vec3 d = random_in_ball(rng, 1.0);
+    if (d.norm() < 1e-3) continue;
+    d.normalize();
+    Pose3 pq(c.rot, t);
+    Depth3 r = pendepth::directional_depth(c.P, Pose3(), c.Q, pq, d);
+    if (!r.overlapping) continue;
+    c.t.push_back(t), c.d.push_back(d);
+    const std::size_t i = c.t.size() - 1;
+    c.max_diff_scan = std::max(c.max_diff_scan, std::abs(c.scan(i) - r.depth));
+    if (n <= kDirVerifyMax && c.verified < kDirVerifyCount) {
+      Depth3 ref = pc3::directional_depth_facets(c.P, Pose3(), c.Q, pq, d);
+      const double ulps = std::abs(ref.depth - r.depth) / (ref.depth * 0x1p-52);
+      c.max_ulps_exact = std::max(c.max_ulps_exact, ulps);
+      if (!ref.overlapping || ulps > 8) c.error = "pendepth σ_d disagrees with the O(n·m) reference";
+      ++c.verified;
+    }
+  }
+  if (c.t.size() < kDirQueries) c.error = "too few overlapping placements";
+  if (c.max_diff_scan > 1e-9) c.error = "facet scan disagrees with pendepth σ_d";
+  return c;
+}
+
+const DirCase& dir_case(std::size_t n) {
+  static std::map<std::size_t, std::unique_ptr<DirCase>> cache;
+  auto& p = cache[n];
+  if (!p) p = std::make_unique<DirCase>(build_dir_case(n));
+  return *p;
+}
+
+void bm_dir(benchmark::State& state, bool scan, std::size_t n) {
+  const DirCase& c = dir_case(n);
+  if (!c.error.empty()) {
+    state.SkipWithError(c.error.c_str());
+    return;
+  }
+  std::size_t i = 0;
+  for (auto _ : state) {
+    if (scan)
+      benchmark::DoNotOptimize(c.scan(i));
+    else
+      benchmark::DoNotOptimize(pendepth::directional_depth(c.P, Pose3(), c.Q, Pose3(c.rot, c.t[i]), c.d[i]).depth);
+    i = i + 1 == c.t.size() ? 0 : i + 1;
+  }
+  state.counters["P_vertices"] = double(c.P.size());
+  state.counters["Q_vertices"] = double(c.Q.size());
+  state.counters["M_facets"] = double(c.off.size());
+  state.counters["hull_ms"] = c.hull_ms;
+  state.counters["facets_ms"] = c.facets_ms;
+  state.counters["verified"] = double(c.verified);
+  state.counters["max_ulps_exact"] = c.max_ulps_exact;
+  state.counters["max_diff_scan"] = c.max_diff_scan;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  std::vector<std::pair<std::string, Factory>> impls{{"pendepth", pendepth_factory()}};
+#if PENDEPTH_BENCH_CCD
+  impls.emplace_back("ccd_epa", ccd_factory(false, false));
+  impls.emplace_back("ccd_epa_tight", ccd_factory(false, true));
+  impls.emplace_back("ccd_mpr", ccd_factory(true, false));
+#endif
+#if PENDEPTH_BENCH_FCL
+  impls.emplace_back("fcl_sd", fcl_factory(true));
+  impls.emplace_back("fcl_epa", fcl_factory(false));
+#endif
+#if PENDEPTH_BENCH_BULLET
+  impls.emplace_back("bullet", bullet_factory());
+#endif
+  for (std::size_t n : {8, 64, 512, 4096, 32768})
+    for (const auto& [name, make] : impls)
+      benchmark::RegisterBenchmark(("sigma/" + name + "/" + std::to_string(n)).c_str(), bm_sigma, make, n)
+          ->Unit(benchmark::kMicrosecond);
+  for (std::size_t n : {64, 512, 4096, 32768, 262144, 1000000})
+    for (bool scan : {false, true})
+      benchmark::RegisterBenchmark(
+          (std::string("sigma_d/") + (scan ? "facet_scan/" : "pendepth/") + std::to_string(n)).c_str(), bm_dir,
+          scan, n)
+          ->Unit(benchmark::kMicrosecond);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+}

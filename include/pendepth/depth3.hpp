@@ -1,0 +1,79 @@
+// pendepth — 3D intersection depth of convex polytopes (DHS §5-§6; survey §3).
+//
+// Notation: P fixed, Q moving; both carry a pose (only the relative pose matters). All work is
+// done in P's frame, where Q's vertices are q' = R q + t_Q − t_P with R = R_Pᵀ R_Q and
+// t_X = R_Pᵀ (translation of X), R the double matrix of the normalised quaternion. Exactness is
+// with respect to these double R and t (a linear map with det > 0 keeps Q convex exactly);
+// with identity rotations it is exact in the input coordinates and translations.
+// M = P ⊕ (−Q'); interiors overlap ⇔ 0 ∈ int M. n = |P|, m = |Q|.
+//   σ_d : exit parameter of the ray s·d̂ from int M (0 when not overlapping);
+//   σ   : dist(0, ∂M) (0 when not overlapping). Touching is not overlapping: depth 0.
+#pragma once
+
+#include <pendepth/depth2.hpp>
+#include <pendepth/polytope.hpp>
+
+#include <Eigen/Geometry>
+#include <cstddef>
+
+namespace pendepth {
+
+/// Rigid placement x ↦ R x + translation, R from the (normalised) unit quaternion.
+struct Pose3 {
+  Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
+  Vec3 translation = Vec3::Zero();
+
+  Pose3() = default;
+  explicit Pose3(const Vec3& t) : translation(t) {}
+  Pose3(const Eigen::Quaterniond& q, const Vec3& t) : rotation(q), translation(t) {}
+  /// Rotation matrix of the normalised quaternion. Throws InvalidInput if the quaternion is
+  /// zero or non-finite.
+  Eigen::Matrix3d matrix() const;
+  Vec3 apply(const Vec3& x) const { return matrix() * x + translation; }
+};
+
+enum class FeatureKind3 { None, Vertex, Edge, Face };
+
+/// Vertex i, edge given by a level-0 half-edge id (3·triangle + k), or face = triangle id.
+struct Feature3 {
+  FeatureKind3 kind = FeatureKind3::None;
+  int index = -1;
+  friend bool operator==(const Feature3&, const Feature3&) = default;
+};
+
+/// Result of a 3D depth query (world frame). Not overlapping: depth 0, vectors 0, features None.
+struct Depth3 {
+  double depth = 0;          ///< length of the translation, input units, >= 0
+  Vec3 translation{0, 0, 0}; ///< move to apply to Q (after its pose) to separate
+  Vec3 normal{0, 0, 0};      ///< unit direction of `translation` (d̂ for σ_d); for σ the
+                             ///< outward normal of M's nearest facet
+  Vec3 facet_normal{0, 0, 0};///< outward unit normal of the facet of M where the move ends
+  Vec3 witness_p{0, 0, 0};   ///< point of ∂P touching the moved Q
+  Vec3 witness_q{0, 0, 0};   ///< point of the moved ∂Q touching P
+  Feature3 feature_p, feature_q;  ///< features spanning M's facet (vertex/edge/face of each)
+  double lower_bound = 0, upper_bound = 0;  ///< certified bounds; equal (exact method)
+  std::size_t candidates = 0;  ///< candidate facet normals of M examined
+  bool overlapping = false;
+  DepthKind kind = DepthKind::Minimum;
+};
+
+/// σ: exact minimum depth = distance from 0 to the nearest facet plane of M (0 when touching or
+/// separated). Certified expansion of an inner polytope of the implicit M (exact EPA, see
+/// src/convex3/minimum_expand.cpp): vertices are pairs (P vertex, Q vertex), every decision an
+/// exact predicate, supports by exact warm-started hill climbing. On overlap lower_bound ==
+/// upper_bound == depth (a few ulps from the exact value); `candidates` counts support queries;
+/// features are the defining ones of M's facet (P face + Q vertex, P vertex + Q face, or two
+/// edges); the witnesses coincide on the contact after the move. Cost O(k log k + climbs) for
+/// k support queries (measured k ≈ 20–65 for 64–32,768-vertex round hulls); the shapes' CSR
+/// adjacency is built once on first use (O(n)). Thread-safe.
+/// Throws InvalidInput for non-finite or zero quaternions / non-finite translations.
+Depth3 minimum_depth(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
+                     const Pose3& pose_q);
+
+/// σ_d for direction d (world frame): min over the same facet normals u with u·d > 0 of
+/// (h_P(u) + h_{Q'}(−u)) / (u·d̂) — the exit facet of the ray. Same complexity as
+/// minimum_depth. Throws InvalidInput if d is zero or non-finite (and for bad poses).
+Depth3 directional_depth(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
+                         const Pose3& pose_q, const Vec3& d);
+
+}  // namespace pendepth

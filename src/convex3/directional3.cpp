@@ -1,0 +1,1002 @@
+// σ_d of two convex polytopes by Algorithm Compute-Depth-3D (DHS §5.2, Phase 1 / Phase 2),
+// descending the inner DK hierarchies of P and Q simultaneously (DHS §5.1; notes §4).
+//
+// Notation: everything lives in P's frame; Q' = R Q + t (RelativePose semantics: exact for the
+// double R and t); M_i = P_i ⊕ (−Q'_i) for the hierarchy levels (M_0 = M); the query line is
+// ℓ = {o + t·d}. X denotes the P side, Y the Q side of a pair (X, Y) of convex polytopes.
+// T(X, Y) = the LAST parameter t with X ∩ (Y + t·d) ≠ ∅ ("last contact" = exit of ℓ from
+// X ⊕ (−Y)). σ_d = T(P, Q')·|d| when 0 ∈ int M, else 0.
+//
+// The descent (DHS Phase 2): at level i we know T_i = T(P_i, Q_i) and the exit facet of M_i,
+// whose plane H separates P_i from Q_i + T_i·d. Going to level i−1, at most ONE vertex w of
+// P_{i−1} lies strictly beyond H (the vertices beyond H are removed vertices, which are
+// independent, and induce a connected subgraph by the simplex argument) and P_{i−1} ∩ H⁺ lies
+// in its cap C = conv(w ∪ link(w)) (every vertex of P_{i−1} on H is adjacent to w); same for Q
+// with a cap D. Every contact after T_i involves C or D (DHS's P'_{i−1}, Q'_{i−1}), so
+//     T_{i−1} = max(T_i, T(C, Q_{i−1}), T(P_{i−1}, D))                      (DHS step 2B/2C)
+// and the new separating plane is the exit facet of the winning term.
+// DHS Phase 1 (P_i, Q_i apart) is the state "ℓ misses M_i": we keep the tangent plane through ℓ
+// that touches M_i (the most clockwise vertex of M_i seen around ℓ); caps beyond it are found the
+// same way, and the new tangent is the most clockwise of the old one and the two sub-results.
+//
+// DEPARTURES from DHS, and why:
+//  * Corollary 5.5 (σ_d of a constant-size polytope against a hierarchy in O(log n)) is done
+//    by the same descent with the constant side fixed (a nested Compute-Depth-3D whose inner
+//    steps are constant×constant problems solved by brute force over the facet normals of the
+//    tiny Minkowski sum), instead of DHS's ray/line/plane queries (Lemmas 5.2/5.3) on an OUTER
+//    hierarchy. No outer hierarchy is needed, so none is built.
+//  * Lemma 5.4 (plane contact) is a fresh DK walk (extreme_query.cpp's O'Rourke walk, here
+//    with exact, symbolically perturbed functionals) from the top down to the level needed.
+//  * DHS's choice of separating planes is not unique in degenerate positions (contacts on edges
+//    or vertices of M_i, ℓ parallel to faces, Phase 1 planes with the wrong orientation). We
+//    make the line generic by Simulation of Simplicity: o = δ·e_x + δ²·e_y + δ³·e_z and
+//    d_ε = d + ε·e₁ + ε²·e₂ (e₁, e₂ the axes other than d's largest), δ ≪ ε ≪ 1. Then every exit
+//    point lies in the relative interior of a facet, the separating plane is unique, and "T
+//    unchanged" implies "no cap". The answer is read at δ = ε = 0: the exit facet u is a
+//    supporting plane of M with u·d > 0 and σ_d = h_M(u)/(u·d̂) exactly (few ulps); 0 ∈ int M
+//    iff the exit facets of ℓ in both orientations have h_M(u) > 0.
+// Every combinatorial decision is the exact sign of a polynomial in the input doubles
+// (geometry/exact.hpp); formal quantities are compared coefficient by coefficient.
+//
+// Complexity per query: O(log n · log m) constant-size subproblems (as DHS Theorem 5.6), plus
+// O(log n · (log² n + log² m)) steps of DK walks, since every plane query is a fresh O(log)
+// walk (DHS charges O(log) per level with the outer hierarchy). Two descents (±d) decide overlap.
+#include "convex3/minkowski_facets.hpp"
+#include "convex3/polytope_data.hpp"
+#include "geometry/exact.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <cmath>
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+namespace pendepth::convex3 {
+
+namespace {
+
+using exact::exact_sign;
+
+template <class T>
+using V3 = std::array<T, 3>;
+
+template <class T>
+V3<T> cross(const V3<T>& a, const V3<T>& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+template <class T>
+T dot(const V3<T>& a, const V3<T>& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+// ---------------------------------------------------------------------------------------------
+// Input geometry and the symbolically perturbed line.
+
+struct Ctx {
+  const PolytopeData& P;
+  const PolytopeData& Q;
+  const RelativePose& pose;
+  Vec3 dv[3];  ///< s·d, s·e₁, s·e₂ (s = ±1: the orientation of the current descent)
+  std::size_t candidates = 0;
+
+  template <class Lf>
+  V3<decltype(Lf{}(0.0))> lift(Lf L, const Vec3& v) const {
+    return {L(v.x()), L(v.y()), L(v.z())};
+  }
+  template <class Lf>
+  auto pvec(Lf L, int a) const { return lift(L, P.v[a]); }
+  template <class Lf>
+  auto pdiff(Lf L, int a, int b) const {
+    const Vec3 &x = P.v[a], &y = P.v[b];
+    return V3<decltype(L(0.0))>{L(x.x()) - L(y.x()), L(x.y()) - L(y.y()), L(x.z()) - L(y.z())};
+  }
+  // R (q_a − q_b): Q' edge vectors without the translation (no cancellation at large offsets).
+  template <class Lf>
+  auto qdiff(Lf L, int a, int b) const {
+    const Vec3 &x = Q.v[a], &y = Q.v[b];
+    V3<decltype(L(0.0))> r;
+    for (int i = 0; i < 3; ++i)
+      r[i] = L(pose.R(i, 0)) * (L(x.x()) - L(y.x())) + L(pose.R(i, 1)) * (L(x.y()) - L(y.y())) +
+             L(pose.R(i, 2)) * (L(x.z()) - L(y.z()));
+    return r;
+  }
+  // P[x] − Q'[y]: a point of M.
+  template <class Lf>
+  auto mpoint(Lf L, int x, int y) const {
+    const Vec3 &p = P.v[x], &q = Q.v[y];
+    V3<decltype(L(0.0))> r;
+    for (int i = 0; i < 3; ++i)
+      r[i] = L(p[i]) - (L(pose.R(i, 0)) * L(q.x()) + L(pose.R(i, 1)) * L(q.y()) + L(pose.R(i, 2)) * L(q.z()) +
+                        L(pose.tq[i]) - L(pose.tp[i]));
+    return r;
+  }
+  template <class Lf>
+  auto vdiff(Lf L, bool isq, int a, int b) const { return isq ? qdiff(L, a, b) : pdiff(L, a, b); }
+  const std::vector<Vec3>& local(bool isq) const { return isq ? Q.v : P.v; }
+  const PolytopeData& data(bool isq) const { return isq ? Q : P; }
+};
+
+// Lexicographic sign of a formal quantity given by its coefficients in order (from `start`).
+template <class Coef>
+int formal_sign(int n, Coef coef, int start = 0) {
+  for (int k = start; k < n; ++k) {
+    int s = exact_sign([&](auto L) { return coef(L, k); });
+    if (s != 0) return s;
+  }
+  return 0;
+}
+
+// Fast paths: values cached as exact::Fl (double + certified error bound, valid for the
+// expression that produced them); `cert` is their certified sign or 2 (undecided), in which case
+// the exact formula is evaluated from scratch.
+using exact::Fl;
+using FV = V3<Fl>;
+inline int cert(const Fl& v) { return exact::certified_sign(v); }
+inline FV flv(const Vec3& v) { return {Fl{v.x(), 0}, Fl{v.y(), 0}, Fl{v.z(), 0}}; }
+inline FV fl_sub(const Vec3& a, const Vec3& b) { return {Fl{a.x(), 0} - Fl{b.x(), 0}, Fl{a.y(), 0} - Fl{b.y(), 0}, Fl{a.z(), 0} - Fl{b.z(), 0}}; }
+// A cached vector reduced to doubles: value, Euclidean norm and a bound on the Euclidean distance
+// to the exact vector. dot_sign certifies a dot product's sign with ~10 flops, or returns 2.
+struct DV {
+  Vec3 v;
+  double n = 0, e = 0;
+};
+inline DV to_dv(const FV& a) {
+  DV d;
+  d.v = Vec3(a[0].v, a[1].v, a[2].v);
+  d.n = d.v.norm() * (1 + 4 * exact::kUnit);
+  d.e = (a[0].e + a[1].e + a[2].e) * (1 + 4 * exact::kUnit);  // ‖·‖₂ ≤ ‖·‖₁
+  return d;
+}
+inline int dot_sign(const DV& a, const DV& b) {
+  double v = a.v.dot(b.v);
+  double bound = (a.n * b.e + a.e * b.n + a.e * b.e + 4 * exact::kUnit * a.n * b.n) * (1 + 8 * exact::kUnit) + exact::kTiny;
+  return v > bound ? 1 : v < -bound ? -1 : 2;
+}
+
+// Rᵀ u, exactly the functional u·(R q) on Q's local coordinates.
+inline FV fl_rt(const Eigen::Matrix3d& R, const FV& u) {
+  FV w;
+  for (int j = 0; j < 3; ++j) w[j] = Fl{R(0, j), 0} * u[0] + Fl{R(1, j), 0} * u[1] + Fl{R(2, j), 0} * u[2];
+  return w;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Facet candidates of X ⊕ (−Y): (face of X, vertex of Y), (vertex of X, face of Y), (edge, edge).
+
+struct Cand {
+  enum Kind { FaceX, FaceY, EdgeEdge } kind = FaceX;
+  int x[3] = {-1, -1, -1}, y[3] = {-1, -1, -1};  ///< global P ids / Q ids of the features
+  int sgn = 1;                                   ///< orientation of the edge-edge normal
+  int xs = -1, ys = -1;                          ///< support vertices: P max of u·x, Q min of u·y'
+  int dsign = 0;                                 ///< formal sign of u·d_ε
+  Fl n0, dd[3];                                  ///< cached u·(x_s − y'_s) and u·dv[b]
+  // An out-half-edge of x_s (y_s) at hierarchy level xs_lev (ys_lev): where a walk restarts.
+  int xs_he = -1, xs_lev = -1, ys_he = -1, ys_lev = -1;
+  bool same(const Cand& o) const {
+    return kind == o.kind && sgn == o.sgn && xs == o.xs && ys == o.ys && std::equal(x, x + 3, o.x) &&
+           std::equal(y, y + 3, o.y);
+  }
+};
+
+template <class Lf>
+auto cand_u(const Ctx& c, const Cand& k, Lf L) {
+  switch (k.kind) {
+    case Cand::FaceX: return cross(c.pdiff(L, k.x[1], k.x[0]), c.pdiff(L, k.x[2], k.x[0]));
+    case Cand::FaceY: return cross(c.qdiff(L, k.y[2], k.y[0]), c.qdiff(L, k.y[1], k.y[0]));  // −n(Q')
+    default: {
+      auto u = cross(c.pdiff(L, k.x[1], k.x[0]), c.qdiff(L, k.y[1], k.y[0]));
+      if (k.sgn < 0) u = {-u[0], -u[1], -u[2]};
+      return u;
+    }
+  }
+}
+
+// Exit parameter along the perturbed line: T = N / D with
+//   N = h_M(u) − u·o_δ  (coefficients of δ⁰..δ³: u·(x_s − y'_s), −u_x, −u_y, −u_z)
+//   D = u·d_ε           (coefficients of ε⁰..ε²: u·dv[0..2]).
+template <class Lf>
+auto cand_n(const Ctx& c, const Cand& k, Lf L, int a) {
+  auto u = cand_u(c, k, L);
+  if (a == 0) return dot(u, c.mpoint(L, k.xs, k.ys));
+  return -u[a - 1];
+}
+template <class Lf>
+auto cand_d(const Ctx& c, const Cand& k, Lf L, int b) {
+  return dot(cand_u(c, k, L), c.lift(L, c.dv[b]));
+}
+
+// Caches N's leading coefficient and D, and sets the formal sign of D = u·d_ε.
+void prepare(const Ctx& c, Cand& k, const FV& u, const FV& xs, const FV& ys) {
+  k.n0 = dot(u, FV{xs[0] - ys[0], xs[1] - ys[1], xs[2] - ys[2]});  // = the expression of mpoint
+  for (int b = 0; b < 3; ++b) k.dd[b] = dot(u, flv(c.dv[b]));
+  k.dsign = 0;
+  for (int b = 0; b < 3 && k.dsign == 0; ++b) {
+    int s = cert(k.dd[b]);
+    k.dsign = s != 2 ? s : formal_sign(3, [&](auto Lf, int bb) { return cand_d(c, k, Lf, bb); }, b);
+  }
+}
+
+// Sign of T1 − T2 (formal; monomials δ^a ε^b ordered by (a, b): δ ≪ ε).
+int compare_t(const Ctx& c, const Cand& k1, const Cand& k2) {
+  if (k1.same(k2)) return 0;
+  int s = cert(k1.n0 * k2.dd[0] - k2.n0 * k1.dd[0]);
+  if (s == 2 || s == 0)
+    s = formal_sign(12, [&](auto L, int ab) {
+      int a = ab / 3, b = ab % 3;
+      return cand_n(c, k1, L, a) * cand_d(c, k2, L, b) - cand_n(c, k2, L, a) * cand_d(c, k1, L, b);
+    }, s == 0 ? 1 : 0);
+  return s * k1.dsign * k2.dsign;
+}
+
+// Sign of det(d_ε, Z1 − o_δ, Z2 − o_δ) for Z = P[x] − Q'[y]; < 0: Z2 is more clockwise around ℓ.
+int compare_turn(const Ctx& c, int x1, int y1, int x2, int y2) {
+  if (x1 == x2 && y1 == y2) return 0;
+  exact::LiftFl Lf;
+  int s = cert(dot(flv(c.dv[0]), cross(c.mpoint(Lf, x1, y1), c.mpoint(Lf, x2, y2))));
+  if (s == 1 || s == -1) return s;
+  // W[0] = Z, W[k] = −e_k (k = 1..3): coefficient of δ^a is Σ_{a1+a2=a} det(d_b, W1[a1], W2[a2]).
+  return formal_sign(21, [&](auto L, int ab) {
+    using T = decltype(L(0.0));
+    int a = ab / 3, b = ab % 3;
+    auto W = [&](int which, int k) -> V3<T> {
+      if (k == 0) return which == 1 ? c.mpoint(L, x1, y1) : c.mpoint(L, x2, y2);
+      V3<T> e{L(0.0), L(0.0), L(0.0)};
+      e[k - 1] = L(-1.0);
+      return e;
+    };
+    auto db = c.lift(L, c.dv[b]);
+    T sum = L(0.0);
+    for (int a1 = std::max(0, a - 3); a1 <= std::min(3, a); ++a1) sum = sum + dot(db, cross(W(1, a1), W(2, a - a1)));
+    return sum;
+  });
+}
+
+// ---------------------------------------------------------------------------------------------
+// Constant-size polytopes (top levels and caps) and the brute-force solver for a pair of them.
+
+struct Small {
+  bool isq = false;
+  std::vector<int> id;                    ///< global vertex ids
+  std::vector<std::array<int, 3>> tri;    ///< local indices, CCW seen from outside
+  std::vector<std::array<int, 4>> edge;   ///< local a, b, apex of (a,b)'s triangle, of (b,a)'s
+  // Cached in P's frame (see prepare_small): M's candidate normal per triangle (n for X,
+  // −n(Q') for Y) and, per edge, b − a, c − a, e − a.
+  std::vector<FV> tri_u;
+  std::vector<std::array<FV, 3>> edge_v;
+  std::vector<std::array<DV, 3>> edge_d;  ///< edge_v reduced to doubles
+  std::vector<FV> pt;                     ///< vertices in P's frame (Q': R q + tq − tp)
+  int lev = -1;         ///< hierarchy level the vertices were taken from
+  std::vector<int> he;  ///< per vertex an out-half-edge at that level
+  int local_of(int g) const { return static_cast<int>(std::find(id.begin(), id.end(), g) - id.begin()); }
+};
+
+void prepare_small(const Ctx& c, Small& s) {
+  exact::LiftFl L;
+  auto dv = [&](int a, int b) { return c.vdiff(L, s.isq, s.id[a], s.id[b]); };
+  s.tri_u.clear();
+  s.edge_v.clear();
+  for (const auto& t : s.tri) s.tri_u.push_back(s.isq ? cross(dv(t[2], t[0]), dv(t[1], t[0])) : cross(dv(t[1], t[0]), dv(t[2], t[0])));
+  // Per edge: its vector e and the apex tests rewritten by the triple product so that a pair
+  // costs two dot products per side: for u = e_X × e_Y,
+  //   u·(c − a) = e_Y·((c − a) × e_X)   (X side),   u·(c − a) = e_X·(e_Y × (c − a))   (Y side).
+  s.edge_d.clear();
+  for (const auto& e : s.edge) {
+    FV ev = dv(e[1], e[0]), c1 = dv(e[2], e[0]), c2 = dv(e[3], e[0]);
+    if (s.isq) s.edge_v.push_back({ev, cross(ev, c1), cross(ev, c2)});
+    else s.edge_v.push_back({ev, cross(c1, ev), cross(c2, ev)});
+    const auto& b = s.edge_v.back();
+    s.edge_d.push_back({to_dv(b[0]), to_dv(b[1]), to_dv(b[2])});
+  }
+  s.pt.clear();
+  for (int g : s.id) {
+    if (!s.isq) {
+      s.pt.push_back(c.pvec(L, g));
+    } else {
+      const Vec3& q = c.Q.v[g];
+      FV r;
+      for (int i = 0; i < 3; ++i)
+        r[i] = L(c.pose.R(i, 0)) * L(q.x()) + L(c.pose.R(i, 1)) * L(q.y()) + L(c.pose.R(i, 2)) * L(q.z()) +
+               L(c.pose.tq[i]) - L(c.pose.tp[i]);
+      s.pt.push_back(r);
+    }
+  }
+}
+
+// Edges with their two apexes; diagonals of flat facets are left out (the apex test of an
+// edge-edge candidate is only meaningful at a true edge, and flat facets are face candidates).
+void finish_small(Small& s, const std::vector<Vec3>& V) {
+  const int H = 3 * static_cast<int>(s.tri.size());
+  std::vector<int> fv(H), twin(H, -1);
+  for (int h = 0; h < H; ++h) fv[h] = s.tri[h / 3][h % 3];
+  for (int h = 0; h < H; ++h)  // quadratic twin matching: H <= 3·(2·12 − 4)
+    for (int g = h + 1; g < H && twin[h] < 0; ++g)
+      if (fv[g] == fv[DKLevel::next(h)] && fv[DKLevel::next(g)] == fv[h]) twin[h] = g, twin[g] = h;
+  assert(std::find(twin.begin(), twin.end(), -1) == twin.end() && "constant-size polytope is not closed");
+  for (int h = 0; h < H; ++h) {
+    if (h > twin[h]) continue;
+    std::array<int, 4> e{fv[h], fv[DKLevel::next(h)], fv[DKLevel::next(DKLevel::next(h))],
+                         fv[DKLevel::next(DKLevel::next(twin[h]))]};
+    if (predicates::orient3d(V[s.id[e[0]]], V[s.id[e[1]]], V[s.id[e[2]]], V[s.id[e[3]]]) != 0) s.edge.push_back(e);
+  }
+}
+
+Small top_small(const PolytopeData& D, bool isq) {
+  const DKLevel& L = D.levels.back();
+  Small s;
+  s.isq = isq;
+  s.id = L.verts;
+  auto loc = [&](int g) { return static_cast<int>(std::find(s.id.begin(), s.id.end(), g) - s.id.begin()); };
+  for (std::size_t f = 0; 3 * f < L.fv.size(); ++f) s.tri.push_back({loc(L.fv[3 * f]), loc(L.fv[3 * f + 1]), loc(L.fv[3 * f + 2])});
+  s.lev = static_cast<int>(D.levels.size()) - 1;
+  s.he.assign(s.id.size(), -1);
+  for (int h = 0; h < static_cast<int>(L.fv.size()); ++h) s.he[loc(L.fv[h])] = h;
+  finish_small(s, D.v);
+  return s;
+}
+
+// Cap C = conv(w ∪ link(w)) of a vertex w at level `lev` given an out-half-edge h0 of w: the
+// star of w (faces of the level, hence of C) closed by the faces of conv(link) that w does not
+// see, found by the polygon-triangulation DP of dk_hierarchy.cpp with the opposite validity
+// (every other point of C on or below the triangle). (The hole triangulation of the next level
+// is the other side of conv(link): it is inside C.)
+Small make_cap(const PolytopeData& D, bool isq, int lev, int h0) {
+  const DKLevel& L = D.levels[lev];
+  Small s;
+  s.isq = isq;
+  s.id.push_back(L.origin(h0));
+  s.lev = lev;
+  s.he.push_back(h0);
+  int h = h0;
+  do {
+    s.id.push_back(L.target(h));
+    s.he.push_back(L.twin[h]);
+    h = L.ccw(h);
+  } while (h != h0);
+  const int k = static_cast<int>(s.id.size()) - 1;  // link a_x = local x + 1
+  for (int x = 0; x < k; ++x) s.tri.push_back({0, x + 1, (x + 1) % k + 1});
+  const auto& V = D.v;
+  auto P = [&](int x) -> const Vec3& { return V[s.id[x + 1]]; };
+  const Vec3& W = V[s.id[0]];
+  std::vector<signed char> valid(k * k * k, -1);
+  auto is_valid = [&](int i, int m, int j) {  // (a_j, a_m, a_i) has all of w ∪ link on or below it
+    signed char& v = valid[(i * k + m) * k + j];
+    if (v < 0) {
+      v = predicates::orient3d(P(i), P(m), P(j), W) >= 0;
+      for (int t = 0; t < k && v; ++t)
+        if (t != i && t != m && t != j && predicates::orient3d(P(i), P(m), P(j), P(t)) < 0) v = 0;
+    }
+    return v == 1;
+  };
+  std::vector<int> choice(k * k, -1);  // apex of the triangle closing i..j; -2 empty
+  for (int len = 1; len < k; ++len)
+    for (int i = 0; i + len < k; ++i) {
+      int j = i + len;
+      int& ch = choice[i * k + j];
+      if (len == 1) { ch = -2; continue; }
+      for (int m = i + 1; m < j && ch == -1; ++m)
+        if (choice[i * k + m] != -1 && choice[m * k + j] != -1 && is_valid(i, m, j)) ch = m;
+    }
+  assert(choice[k - 1] != -1 && "no convex triangulation of a cap's link");
+  std::vector<std::pair<int, int>> todo{{0, k - 1}};
+  while (!todo.empty()) {
+    auto [i, j] = todo.back();
+    todo.pop_back();
+    int m = choice[i * k + j];
+    if (m < 0) continue;
+    s.tri.push_back({j + 1, m + 1, i + 1});  // reversed: the cap's bottom faces away from w
+    todo.push_back({i, m});
+    todo.push_back({m, j});
+  }
+  finish_small(s, V);
+  return s;
+}
+
+/// State of a pair (X, Y) at one level: Hit (ℓ meets X ⊕ (−Y); exit facet `cand`) or Miss
+/// (ℓ misses it; (xc, yc) is the vertex of X ⊕ (−Y) most clockwise around ℓ).
+struct State {
+  bool hit = false;
+  Cand cand;
+  int xc = -1, yc = -1;
+  int xc_he = -1, xc_lev = -1, yc_he = -1, yc_lev = -1;
+  // Support vertex of one side with its half-edge hint.
+  std::array<int, 3> support(bool isq) const {
+    if (hit) return isq ? std::array<int, 3>{cand.ys, cand.ys_he, cand.ys_lev} : std::array<int, 3>{cand.xs, cand.xs_he, cand.xs_lev};
+    return isq ? std::array<int, 3>{yc, yc_he, yc_lev} : std::array<int, 3>{xc, xc_he, xc_lev};
+  }
+};
+
+// A triangle rotated to start at its lowest id (same orientation), so that equal features from
+// different subproblems compare equal structurally.
+void canonical(int* t) {
+  while (t[0] > t[1] || t[0] > t[2]) std::rotate(t, t + 1, t + 3);
+}
+
+// Brute force over the facet normals of X ⊕ (−Y) (a superset is fine: each candidate carries its
+// exact support pair, so its half-space contains the sum). O(|X|·|Y|) candidates.
+State solve_small(Ctx& c, const Small& X, const Small& Y) {
+  assert(!X.isq && Y.isq);
+  const auto& PV = c.P.v;
+  const auto& QV = c.Q.v;
+  Cand exit, entry;
+  bool has_exit = false, has_entry = false;
+  auto consider = [&](Cand& k, const FV& u) {
+    ++c.candidates;
+    int lx = X.local_of(k.xs), ly = Y.local_of(k.ys);
+    k.xs_he = X.he[lx], k.xs_lev = X.lev, k.ys_he = Y.he[ly], k.ys_lev = Y.lev;
+    prepare(c, k, u, X.pt[lx], Y.pt[ly]);
+    if (k.dsign > 0) {
+      if (!has_exit || compare_t(c, k, exit) < 0) exit = k, has_exit = true;
+    } else if (k.dsign < 0) {
+      if (!has_entry || compare_t(c, k, entry) > 0) entry = k, has_entry = true;
+    }
+  };
+  // Faces of X: Y's support minimises u·y' = (Rᵀu)·q + const.
+  for (std::size_t f = 0; f < X.tri.size(); ++f) {
+    Cand k;
+    k.kind = Cand::FaceX;
+    for (int e = 0; e < 3; ++e) k.x[e] = X.id[X.tri[f][e]];
+    canonical(k.x);
+    k.xs = k.x[0];
+    FV w = fl_rt(c.pose.R, X.tri_u[f]);
+    int best = Y.id[0];
+    for (int g : Y.id) {
+      if (g == best) continue;
+      int sg = cert(dot(w, fl_sub(QV[g], QV[best])));
+      if (sg == 2) sg = exact_sign([&](auto L) { return dot(cand_u(c, k, L), c.qdiff(L, g, best)); });
+      if (sg < 0) best = g;
+    }
+    k.ys = best;
+    consider(k, X.tri_u[f]);
+  }
+  // Faces of Y: M's normal is −n(Q'), X's support maximises it.
+  for (std::size_t f = 0; f < Y.tri.size(); ++f) {
+    Cand k;
+    k.kind = Cand::FaceY;
+    for (int e = 0; e < 3; ++e) k.y[e] = Y.id[Y.tri[f][e]];
+    canonical(k.y);
+    k.ys = k.y[0];
+    const FV& u = Y.tri_u[f];
+    int best = X.id[0];
+    for (int g : X.id) {
+      if (g == best) continue;
+      int sg = cert(dot(u, fl_sub(PV[g], PV[best])));
+      if (sg == 2) sg = exact_sign([&](auto L) { return dot(cand_u(c, k, L), c.pdiff(L, g, best)); });
+      if (sg > 0) best = g;
+    }
+    k.xs = best;
+    consider(k, u);
+  }
+  // Edge pairs extreme for ±u (the test of minkowski_facets.cpp).
+  for (std::size_t i = 0; i < X.edge.size(); ++i) {
+    const auto& ex = X.edge[i];
+    const auto& xv = X.edge_v[i];
+    const auto& xd = X.edge_d[i];
+    int pa = X.id[ex[0]], pb = X.id[ex[1]], pc = X.id[ex[2]], pe = X.id[ex[3]];
+    for (std::size_t j = 0; j < Y.edge.size(); ++j) {
+      const auto& ey = Y.edge[j];
+      const auto& yv = Y.edge_v[j];
+      const auto& yd = Y.edge_d[j];
+      int qa = Y.id[ey[0]], qb = Y.id[ey[1]], qc = Y.id[ey[2]], qe = Y.id[ey[3]];
+      auto U = [&](auto L) { return cross(c.pdiff(L, pb, pa), c.qdiff(L, qb, qa)); };
+      // sign of u·(v − a): doubles, then the cached Fl values, then exact
+      auto side = [&](const DV& ed, const DV& wd, const FV& e, const FV& w, bool isq, int v, int a) {
+        int sg = dot_sign(ed, wd);
+        if (sg != 2) return sg;
+        sg = cert(dot(e, w));
+        if (sg != 2) return sg;
+        return exact_sign([&](auto L) { return dot(U(L), c.vdiff(L, isq, v, a)); });
+      };
+      int s1 = side(yd[0], xd[1], yv[0], xv[1], false, pc, pa);
+      int s2 = side(yd[0], xd[2], yv[0], xv[2], false, pe, pa);
+      if (s1 * s2 < 0 || (s1 == 0 && s2 == 0)) continue;
+      int sgn = s1 != 0 ? -s1 : -s2;  // P's edge is extreme for sgn·u
+      if (sgn * side(xd[0], yd[1], xv[0], yv[1], true, qc, qa) < 0 ||
+          sgn * side(xd[0], yd[2], xv[0], yv[2], true, qe, qa) < 0)
+        continue;
+      Cand k;  // canonical: lower id first on each edge (each swap flips u)
+      k.kind = Cand::EdgeEdge;
+      k.x[0] = std::min(pa, pb), k.x[1] = std::max(pa, pb), k.y[0] = std::min(qa, qb), k.y[1] = std::max(qa, qb);
+      k.sgn = sgn * (pa > pb ? -1 : 1) * (qa > qb ? -1 : 1);
+      k.xs = k.x[0], k.ys = k.y[0];
+      FV u = cross(xv[0], yv[0]);  // the candidate's normal is sgn·(e_X × e_Y) in any edge order
+      if (sgn < 0) u = {-u[0], -u[1], -u[2]};
+      consider(k, u);
+    }
+  }
+  State st;
+  assert(has_exit && has_entry);
+  if (compare_t(c, entry, exit) <= 0) {
+    st.hit = true;
+    st.cand = exit;
+    return st;
+  }
+  int bx = 0, by = 0;
+  for (int x = 0; x < static_cast<int>(X.id.size()); ++x)
+    for (int y = 0; y < static_cast<int>(Y.id.size()); ++y)
+      if ((x != bx || y != by) && compare_turn(c, X.id[bx], Y.id[by], X.id[x], Y.id[y]) < 0) bx = x, by = y;
+  st.xc = X.id[bx], st.yc = Y.id[by];
+  st.xc_he = X.he[bx], st.xc_lev = X.lev, st.yc_he = Y.he[by], st.yc_lev = Y.lev;
+  return st;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The plane of a state as a linear functional on one side, and the DK walk that maximises it.
+
+// F(v) = flip·Σ_κ ξ_κ U_κ·v (ξ_κ infinitesimals in decreasing order). Hit: U_0 = u (X side:
+// maximise u·x; Y side: minimise u·y'). Miss: U_(a,b) = d_b × W_c[a], f(v) = det(d_ε, W_c, v)
+// with W_c = Z_c − o_δ (X side: minimise; Y side: maximise).
+struct Func {
+  const Ctx* c;
+  bool isq;
+  State stv;
+  int flip;
+  const State* st = &stv;
+  Func(const Ctx* cc, bool q, const State& s0, int fl) : c(cc), isq(q), stv(s0), flip(fl) {}
+  Func(const Func&) = delete;
+  int ncoef() const { return st->hit ? 1 : 12; }
+  template <class Lf>
+  auto U(Lf L, int k) const {
+    using T = decltype(L(0.0));
+    if (st->hit) return cand_u(*c, st->cand, L);
+    int a = k / 3, b = k % 3;
+    V3<T> w;
+    if (a == 0) w = c->mpoint(L, st->xc, st->yc);
+    else {
+      w = {L(0.0), L(0.0), L(0.0)};
+      w[a - 1] = L(-1.0);
+    }
+    return cross(c->lift(L, c->dv[b]), w);
+  }
+  // flip·(F_k(a) − F_k(b))
+  template <class Lf>
+  auto diff(Lf L, int k, int a, int b) const {
+    return L(double(flip)) * dot(U(L, k), c->vdiff(L, isq, a, b));
+  }
+  int sign(int a, int b) const {
+    return formal_sign(ncoef(), [&](auto L, int k) { return diff(L, k, a, b); });
+  }
+  // Vertices of the exit facet's feature on this side lie on its plane: F is exactly equal on
+  // them (the walk meets these ties at every level; certifying them needs no arithmetic).
+  bool on_feature(int v) const {
+    if (!st->hit) return false;
+    const int* f = isq ? st->cand.y : st->cand.x;
+    return v == f[0] || v == f[1] || v == f[2];
+  }
+};
+
+// The O'Rourke / Edelsbrunner–Maurer walk of extreme_query.cpp with the key (F, X, Y), F formal
+// and X, Y two local coordinate axes completing F's leading direction to a basis.
+struct Walker {
+  const Func& f;
+  const std::vector<Vec3>& V;
+  int kx = 0, ky = 1;
+  FV w0;  ///< flip·U_0 on local coordinates (cached leading coefficient)
+  explicit Walker(const Func& fn) : f(fn), V(fn.c->local(fn.isq)) {
+    FV u0 = f.U(exact::LiftFl{}, 0);
+    if (f.isq) u0 = fl_rt(f.c->pose.R, u0);
+    for (auto& x : u0) x = Fl{double(f.flip), 0} * x;
+    w0 = u0;
+    Vec3 w = Vec3::Zero();
+    for (int k = 0; k < f.ncoef() && w == Vec3::Zero(); ++k) {
+      auto u = f.U(exact::LiftFl{}, k);
+      Vec3 r(u[0].v, u[1].v, u[2].v);
+      if (std::abs(u[0].v) > u[0].e || std::abs(u[1].v) > u[1].e || std::abs(u[2].v) > u[2].e)
+        w = f.isq ? Vec3(f.c->pose.R.transpose() * r) : r;
+    }
+    int a[3] = {0, 1, 2};
+    for (int s = 0; s < 3; ++s)
+      for (int t = s + 1; t < 3; ++t)
+        if (std::abs(w[a[t]]) < std::abs(w[a[s]])) std::swap(a[s], a[t]);
+    kx = a[0], ky = a[1];
+  }
+  // Sign of F(p) − F(q) (the formal functional only).
+  int fsign(int p, int q) const {
+    if (p == q || (f.on_feature(p) && f.on_feature(q))) return 0;
+    int s = cert(dot(w0, fl_sub(V[p], V[q])));
+    return s == 1 || s == -1 ? s : f.sign(p, q);
+  }
+  static int sgn(double a, double b) { return (a > b) - (a < b); }
+  // A neighbour c of the current top m with its cached differences to m.
+  struct Probe {
+    int v;
+    bool fz;    ///< F(c) = F(m) structurally (both on the exit facet's feature)
+    Fl F, X, Y; ///< F(c) − F(m) (leading coefficient), coordinate differences
+  };
+  Probe probe(int m, int c) const {
+    Probe p{c, f.on_feature(c) && f.on_feature(m), dot(w0, fl_sub(V[c], V[m])),
+            Fl{V[c][kx], 0} - Fl{V[m][kx], 0}, Fl{V[c][ky], 0} - Fl{V[m][ky], 0}};
+    return p;
+  }
+  int fsign_probe(int m, const Probe& p) const {
+    if (p.fz) return 0;
+    int s = cert(p.F);
+    return s == 1 || s == -1 ? s : f.sign(p.v, m);
+  }
+  // Sign of A1·F2 − A2·F1 for the coordinate difference A (axis 0: X, 1: Y); exact when a
+  // factor vanishes, else filtered with the exact formal evaluation as fallback.
+  template <class Formal>
+  int cross_term(int m, const Probe& p1, const Probe& p2, int axis, Formal formal) const {
+    const int ax = axis == 0 ? kx : ky;
+    int a1 = sgn(V[p1.v][ax], V[m][ax]), a2 = sgn(V[p2.v][ax], V[m][ax]);
+    if (a1 == 0 && a2 == 0) return 0;
+    if (p1.fz || a2 == 0) return a1 * fsign_probe(m, p2);
+    if (p2.fz || a1 == 0) return -a2 * fsign_probe(m, p1);
+    const Fl& A1 = axis == 0 ? p1.X : p1.Y;
+    const Fl& A2 = axis == 0 ? p2.X : p2.Y;
+    int s = cert(A1 * p2.F - A2 * p1.F);
+    return s == 1 || s == -1 ? s : formal();
+  }
+  int compare(int p, int q) const {
+    if (p == q) return 0;
+    int s = fsign(p, q);
+    if (s != 0) return s;
+    if (V[p][kx] != V[q][kx]) return V[p][kx] > V[q][kx] ? 1 : -1;
+    if (V[p][ky] != V[q][ky]) return V[p][ky] > V[q][ky] ? 1 : -1;
+    return 0;
+  }
+  // > 0: the projected edge m→c2 turns counter-clockwise from m→c1.
+  int turn(int m, const Probe& p1, const Probe& p2) const {
+    const int c1 = p1.v, c2 = p2.v;
+    auto X = [&](auto L, int c) { return L(V[c][kx]) - L(V[m][kx]); };
+    auto Y = [&](auto L, int c) { return L(V[c][ky]) - L(V[m][ky]); };
+    int s = cross_term(m, p1, p2, 0, [&] {
+      return formal_sign(f.ncoef(), [&](auto L, int k) {
+        return X(L, c1) * f.diff(L, k, c2, m) - X(L, c2) * f.diff(L, k, c1, m);
+      });
+    });
+    if (s != 0) return s;
+    s = cert(p1.X * p2.Y - p2.X * p1.Y);
+    if (s == 2) s = exact_sign([&](auto L) { return X(L, c1) * Y(L, c2) - X(L, c2) * Y(L, c1); });
+    if (s != 0) return s;
+    return cross_term(m, p1, p2, 1, [&] {
+      return formal_sign(f.ncoef(), [&](auto L, int k) {
+        return Y(L, c1) * f.diff(L, k, c2, m) - Y(L, c2) * f.diff(L, k, c1, m);
+      });
+    });
+  }
+};
+
+// Position of the walk at one level: the top m and the silhouette edges m→l, m→r.
+struct WalkState {
+  int lev = -1, m = -1, hl = -1, hr = -1;
+};
+
+struct Walk {
+  const PolytopeData& D;
+  const Walker& fr;
+  WalkState& ws;
+  std::vector<Walker::Probe> pr;
+
+  void pick(const DKLevel& L, const int* cand, int nc) {
+    pr.clear();
+    for (int i = 0; i < nc; ++i) pr.push_back(fr.probe(ws.m, L.target(cand[i])));
+    int il = 0, ir = 0;
+    for (int i = 1; i < nc; ++i) {
+      if (fr.turn(ws.m, pr[ir], pr[i]) > 0) ir = i;
+      if (fr.turn(ws.m, pr[il], pr[i]) < 0) il = i;
+    }
+    ws.hl = cand[il], ws.hr = cand[ir];
+  }
+  // All out-half-edges of origin(h0) (false if more than `cap` of them).
+  static bool around(const DKLevel& L, int h0, std::vector<int>& out, std::size_t cap) {
+    out.clear();
+    int h = h0;
+    do {
+      if (out.size() == cap) return false;
+      out.push_back(h);
+      h = L.ccw(h);
+    } while (h != h0);
+    return true;
+  }
+  void scan_around(const DKLevel& L, int h0) {
+    std::vector<int> all;
+    around(L, h0, all, std::size_t(-1));
+    pick(L, all.data(), static_cast<int>(all.size()));
+  }
+  // Fresh walk: the top level by brute force.
+  void start_top() {
+    const DKLevel& top = D.levels.back();
+    ws.lev = static_cast<int>(D.levels.size()) - 1;
+    ws.m = top.verts[0];
+    for (int v : top.verts)
+      if (fr.compare(v, ws.m) > 0) ws.m = v;
+    for (int h = 0; h < static_cast<int>(top.fv.size()); ++h)
+      if (top.fv[h] == ws.m) { scan_around(top, h); break; }
+  }
+  // Restart at level `lev` from vertex v given an out-half-edge h of v at level hl >= lev:
+  // hill-climb by the key (a local maximum of the perturbed linear key is global), then take
+  // the silhouette edges. O(degree); gives up (false) on vertices of degree > kMaxScan.
+  bool restart(int v, int h, int hlev, int lev) {
+    static constexpr std::size_t kMaxScan = 48;
+    if (h < 0 || hlev < lev) return false;
+    for (int l = hlev; l > lev; --l) h = D.levels[l].down[h];
+    const DKLevel& L = D.levels[lev];
+    std::vector<int> out;
+    for (bool moved = true; moved;) {
+      moved = false;
+      if (!around(L, h, out, kMaxScan)) return false;
+      for (int g : out)
+        if (fr.compare(L.target(g), v) > 0) {
+          v = L.target(g), h = L.twin[g], moved = true;
+          break;
+        }
+    }
+    ws.lev = lev, ws.m = v;
+    pick(L, out.data(), static_cast<int>(out.size()));
+    return true;
+  }
+  // One level down (O'Rourke Lemma 7.10.3: the new top is m or a parent of m→l, m→r).
+  void down() {
+    const DKLevel& C = D.levels[ws.lev];
+    const DKLevel& L = D.levels[ws.lev - 1];
+    int left[3], right[3], nl = 0, nr = 0;
+    auto expand = [&](int h, int* out, int& no) {
+      int g = C.down[h];
+      out[no++] = g;
+      if (L.target(g) == C.target(h)) {
+        out[no++] = L.ccw(g);
+        out[no++] = L.cw(g);
+      }
+    };
+    expand(ws.hl, left, nl);
+    expand(ws.hr, right, nr);
+    --ws.lev;
+    int best = -1;
+    for (int i = 0; i < nl + nr; ++i) {
+      int h = i < nl ? left[i] : right[i - nl];
+      if (fr.compare(L.target(h), best < 0 ? ws.m : L.target(best)) > 0) best = h;
+    }
+    if (best >= 0) {
+      ws.m = L.target(best);
+      scan_around(L, L.twin[best]);
+    } else {
+      pick(L, left, nl);
+      int keep = ws.hl;
+      pick(L, right, nr);
+      ws.hl = keep;
+    }
+  }
+};
+
+// ---------------------------------------------------------------------------------------------
+// The descent.
+
+/// One side of a pair: a hierarchy down to level `bottom`, or a constant-size polytope.
+struct Side {
+  bool hier = false;
+  int bottom = 0;
+  const Small* small = nullptr;
+};
+
+struct Query {
+  Ctx& c;
+  Small topP, topQ;
+  std::unordered_map<long long, Small> caps;  ///< caps met in this query, by (side, level, vertex)
+
+  // The walk of one side for the current state's plane, kept from level to level: continued
+  // one level down while the state is unchanged, restarted from the new support vertex (its
+  // half-edge hint) when it changed, and done afresh from the top only when that fails.
+  struct SideWalk {
+    std::unique_ptr<Func> f;
+    std::unique_ptr<Walker> fr;
+    WalkState ws;
+  };
+
+  // The vertex of level `lev` strictly beyond the state's plane on one side, as a cap.
+  const Small* cap(const State& st, bool fresh_state, SideWalk& sw, bool isq, int lev) {
+    const PolytopeData& D = c.data(isq);
+    if (fresh_state || !sw.fr) {
+      // X side keeps u·x ≤ h (hit) / f ≥ f(x_c) (miss); Y side the opposite.
+      sw.f = std::make_unique<Func>(&c, isq, st, st.hit ? (isq ? -1 : 1) : (isq ? 1 : -1));
+      sw.fr = std::make_unique<Walker>(*sw.f);
+      sw.ws = WalkState{};
+    }
+    Walk w{D, *sw.fr, sw.ws, {}};
+    auto [ref, ref_he, ref_lev] = st.support(isq);
+    if (sw.ws.lev != lev + 1 && !w.restart(ref, ref_he, ref_lev, lev + 1)) {
+      w.start_top();
+      while (sw.ws.lev > lev + 1) w.down();
+    }
+    w.down();
+    if (sw.fr->fsign(sw.ws.m, ref) <= 0) return nullptr;
+    long long key = ((static_cast<long long>(lev) * 2 + isq) << 32) | sw.ws.m;
+    auto it = caps.find(key);
+    if (it == caps.end()) {
+      int h = sw.ws.hl;  // an out-half-edge of the top at this level
+      it = caps.emplace(key, make_cap(D, isq, lev, h)).first;
+      prepare_small(c, it->second);
+    }
+    return &it->second;
+  }
+
+  static bool better_hit(Ctx& c, const State& a, const State& b) {  // a's exit later than b's
+    return compare_t(c, a.cand, b.cand) > 0;
+  }
+
+  State combine(const State& s0, const State* r1, const State* r2) {
+    State best = s0;
+    for (const State* r : {r1, r2}) {
+      if (!r) continue;
+      if (r->hit) {
+        if (!best.hit || better_hit(c, *r, best)) best = *r;
+      } else if (!best.hit && compare_turn(c, best.xc, best.yc, r->xc, r->yc) < 0) {
+        best = *r;
+      }
+    }
+    return best;
+  }
+
+  State descend(const Side& X, const Side& Y) {
+    const int KP = static_cast<int>(c.P.levels.size()), KQ = static_cast<int>(c.Q.levels.size());
+    const int nx = X.hier ? KP - 1 - X.bottom : 0, ny = Y.hier ? KQ - 1 - Y.bottom : 0;
+    State st = solve_small(c, X.hier ? topP : *X.small, Y.hier ? topQ : *Y.small);
+    SideWalk wx, wy;
+    bool stale_x = true, stale_y = true;  // the state changed since that side's last walk
+    for (int s = std::max(nx, ny); s >= 1; --s) {
+      bool xr = X.hier && s <= nx, yr = Y.hier && s <= ny;
+      const Small* C = xr ? cap(st, stale_x, wx, false, X.bottom + s - 1) : nullptr;
+      const Small* D = yr ? cap(st, stale_y, wy, true, Y.bottom + s - 1) : nullptr;
+      stale_x = stale_x && !xr, stale_y = stale_y && !yr;
+      const bool hc = C != nullptr, hd = D != nullptr;
+      if (!hc && !hd) continue;
+      State r1, r2;
+      if (hc) {
+        Side cx{false, 0, C};
+        Side y = Y.hier ? Side{true, Y.bottom + std::min(s - 1, ny), nullptr} : Y;
+        r1 = descend(cx, y);
+      }
+      if (hd) {
+        Side dy{false, 0, D};
+        Side x = X.hier ? Side{true, X.bottom + std::min(s - 1, nx), nullptr} : X;
+        r2 = descend(x, dy);
+      }
+      State next = combine(st, hc ? &r1 : nullptr, hd ? &r2 : nullptr);
+      // Generic line: a cap beyond the plane always moves the exit or the tangent.
+      assert(next.hit != st.hit || (next.hit ? compare_t(c, next.cand, st.cand) > 0
+                                             : compare_turn(c, st.xc, st.yc, next.xc, next.yc) < 0));
+      st = next;
+      stale_x = stale_y = true;
+    }
+    return st;
+  }
+};
+
+// Level-0 features of the answer. The stars of the feature's vertices are scanned in lockstep,
+// so the cost is O(smallest degree), not O(degree of a hub vertex).
+// A level-0 triangle in the plane through the feature f (2 or 3 vertex ids, -1 padded) with
+// normal u: the triangle f itself if it exists, else a coplanar one (flat facets; exact test).
+template <class UF>
+int face_in_plane(const Ctx& c, bool isq, const int* f, UF u_of) {
+  const PolytopeData& D = c.data(isq);
+  const DKLevel& L = D.levels[0];
+  const int nf = f[2] < 0 ? 2 : 3;
+  int h[3], h0[3];
+  for (int i = 0; i < nf; ++i) h[i] = h0[i] = D.vertex_he[f[i]];
+  auto on = [&](int w, int v) {
+    return w == f[0] || w == f[1] || (nf == 3 && w == f[2]) ||
+           exact_sign([&](auto Lf) { return dot(u_of(Lf), c.vdiff(Lf, isq, w, v)); }) == 0;
+  };
+  for (bool more = true; more;) {
+    more = false;
+    for (int i = 0; i < nf; ++i) {
+      if (h[i] < 0) continue;
+      if (on(L.target(h[i]), f[i]) && on(L.target(DKLevel::next(h[i])), f[i])) return h[i] / 3;
+      h[i] = L.ccw(h[i]);
+      if (h[i] == h0[i]) h[i] = -1;
+      more = more || h[i] >= 0;
+    }
+  }
+  return -1;
+}
+
+// The level-0 half-edge a → b, or -1 if (a, b) is not an edge.
+int edge_he(const PolytopeData& D, int a, int b) {
+  const DKLevel& L = D.levels[0];
+  int ha = D.vertex_he[a], hb = D.vertex_he[b], ha0 = ha, hb0 = hb;
+  while (ha >= 0 || hb >= 0) {
+    if (ha >= 0) {
+      if (L.target(ha) == b) return ha;
+      ha = L.ccw(ha);
+      if (ha == ha0) ha = -1;
+    }
+    if (hb >= 0) {
+      if (L.target(hb) == a) return L.twin[hb];
+      hb = L.ccw(hb);
+      if (hb == hb0) hb = -1;
+    }
+  }
+  return -1;
+}
+
+}  // namespace
+
+Depth3 directional_depth_dk(const ConvexPolytope& Pp, const Pose3& pose_p, const ConvexPolytope& Qp,
+                            const Pose3& pose_q, const Vec3& d_world) {
+  if (!d_world.allFinite() || d_world == Vec3::Zero()) throw InvalidInput("direction: zero or non-finite");
+  if (!pose_p.translation.allFinite()) throw InvalidInput("pose of P: non-finite translation");
+  if (!pose_q.translation.allFinite()) throw InvalidInput("pose of Q: non-finite translation");
+  const Eigen::Matrix3d Rp = pose_p.matrix(), Rq = pose_q.matrix();
+  RelativePose pose;
+  pose.R = Rp.transpose() * Rq;
+  pose.tq = Rp.transpose() * pose_q.translation;
+  pose.tp = Rp.transpose() * pose_p.translation;
+  const Vec3 d_local = Rp.transpose() * d_world;
+  Depth3 none;
+  none.kind = DepthKind::Directional;
+  if (d_local == Vec3::Zero()) throw InvalidInput("direction: underflows to zero in P's frame");
+  // Scale d by a power of two (exact) so that its products neither overflow nor underflow.
+  int ex = 0;
+  std::frexp(d_local.cwiseAbs().maxCoeff(), &ex);
+  const Vec3 d = Vec3(std::ldexp(d_local.x(), -ex), std::ldexp(d_local.y(), -ex), std::ldexp(d_local.z(), -ex));
+  int big = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::abs(d[i]) > std::abs(d[big])) big = i;
+  Ctx c{Pp.data(), Qp.data(), pose, {}, 0};
+  Query q{c, top_small(c.P, false), top_small(c.Q, true), {}};
+  prepare_small(c, q.topP);
+  prepare_small(c, q.topQ);
+  auto run = [&](int s) {
+    c.dv[0] = s * d;
+    c.dv[1] = s * Vec3::Unit((big + 1) % 3);
+    c.dv[2] = s * Vec3::Unit((big + 2) % 3);
+    return q.descend(Side{true, 0, nullptr}, Side{true, 0, nullptr});
+  };
+  auto positive = [&](const State& st) {  // h_M(u) > 0: 0 strictly inside the exit half-space
+    return st.hit && exact_sign([&](auto L) { return cand_n(c, st.cand, L, 0); }) > 0;
+  };
+  State fwd = run(1);
+  none.candidates = c.candidates;
+  if (!positive(fwd)) return none;
+  State bwd = run(-1);
+  none.candidates = c.candidates;
+  if (!positive(bwd)) return none;
+  c.dv[0] = d;
+  const Cand& k = fwd.cand;
+  // 0 ∈ int M: the exit facet has u·d > 0 (proof in the header) and σ_d = h_M(u)/(u·d̂).
+  assert(exact_sign([&](auto L) { return cand_d(c, k, L, 0); }) > 0);
+  double t = exact::accurate_ratio([&](auto L) { return cand_n(c, k, L, 0); },
+                                   [&](auto L) { return cand_d(c, k, L, 0); });
+  Depth3 r;
+  r.kind = DepthKind::Directional;
+  r.overlapping = true;
+  r.candidates = c.candidates;
+  r.depth = r.lower_bound = r.upper_bound = t * d.norm();
+  const Vec3 dir = d.normalized();
+  const Vec3 v = r.depth * dir;
+  auto uf = cand_u(c, k, exact::LiftFl{});
+  const Vec3 u = Vec3(uf[0].v, uf[1].v, uf[2].v).normalized();
+  const auto& LP = c.P.levels[0];
+  const auto& LQ = c.Q.levels[0];
+  auto U = [&](auto L) { return cand_u(c, k, L); };
+  Vec3 w;  // contact point in P's frame
+  if (k.kind == Cand::FaceX) {
+    w = pose.place(Qp[k.ys]) + v;
+    r.feature_p = {FeatureKind3::Face, face_in_plane(c, false, k.x, U)};
+    r.feature_q = {FeatureKind3::Vertex, k.ys};
+  } else if (k.kind == Cand::FaceY) {
+    w = Pp[k.xs];
+    r.feature_p = {FeatureKind3::Vertex, k.xs};
+    r.feature_q = {FeatureKind3::Face, face_in_plane(c, true, k.y, U)};
+  } else {
+    // Closest point of the two edge lines after the move (they meet on the facet).
+    Vec3 a = Pp[k.x[0]], e = Pp[k.x[1]] - a;
+    Vec3 b = pose.place(Qp[k.y[0]]) + v, f = pose.R * (Qp[k.y[1]] - Qp[k.y[0]]);
+    Vec3 n = e.cross(f);
+    double s = (b - a).cross(f).dot(n) / n.squaredNorm();
+    w = a + std::clamp(s, 0.0, 1.0) * e;
+    int hp = edge_he(c.P, k.x[0], k.x[1]), hq = edge_he(c.Q, k.y[0], k.y[1]);
+    // An edge of a cap's bottom may be a diagonal of a flat facet of the polytope: report the face.
+    r.feature_p = hp >= 0 ? Feature3{FeatureKind3::Edge, hp} : Feature3{FeatureKind3::Face, face_in_plane(c, false, k.x, U)};
+    r.feature_q = hq >= 0 ? Feature3{FeatureKind3::Edge, hq} : Feature3{FeatureKind3::Face, face_in_plane(c, true, k.y, U)};
+  }
+  (void)LP, (void)LQ;
+  r.translation = Rp * v;
+  r.normal = Rp * dir;
+  r.facet_normal = Rp * u;
+  r.witness_p = r.witness_q = Rp * w + pose_p.translation;
+  return r;
+}
+
+}  // namespace pendepth::convex3

@@ -1,0 +1,899 @@
+// Exact minimum depth σ = dist(0, ∂M), M = P ⊕ (−Q'), by certified expansion of an inner
+// polytope of M: the Expanding Polytope Algorithm (van den Bergen 2001; Ericson, Real-Time
+// Collision Detection §9.5) made exact. DEPARTURE from DHS §5: the paper computes σ from the
+// explicit M (O(n²)); this is output-sensitive instead — the work is proportional to the number
+// of support queries, each an exact warm-started hill climb. The O(n·m) enumeration of every
+// implicit facet normal (minkowski_facets.cpp) stays as the test reference.
+//
+// Notation: P fixed (its own frame), Q' = R Q + t with t = tq − tp (exact semantics for the
+// doubles R, tq, tp, as in minkowski_facets.hpp). A point of M is kept symbolically as a pair
+// (i, j): m = p_i − q'_j, a polynomial of degree 2 in the inputs. K = the current polytope.
+//
+// Why the answer is exact:
+//  * K's vertices are points of M, its triangles are oriented outward and it is convex: a
+//    point is added only if it is strictly beyond the expanded facet, and a facet is replaced
+//    only if the point is strictly beyond its plane (exact orient3d of pair points; "on the
+//    plane" = not visible, so coplanar facets stay and no flat triangle is ever created; the
+//    visible facets form a disc, so the horizon is one cycle). Hence K ⊆ M.
+//  * Support of M along u: h_M(u) = max u·p − min u·q', each by hill climbing over the vertex
+//    adjacency (on a convex polytope a vertex with no strictly better neighbour is a global
+//    maximiser, ties included); every "strictly better" is an exact sign.
+//  * Phase A (is 0 in int M?): while some facet F of K has 0 on or beyond its plane (exact sign
+//    of h_F = n_F·a), take the most violated one and the support s along n_F. If n_F·s ≤ 0,
+//    the plane {n_F·x = 0} supports M with 0 on it or outside: not overlapping, depth 0
+//    (touching = 0). Otherwise s is strictly beyond F: expand.
+//  * Phase B (0 strictly inside K): take the facet F of K nearest to 0 (least rigorous lower
+//    bound of the squared plane distance), get the support s along n_F. If s lies exactly on
+//    F's plane, that plane supports M: σ ≤ d_F. Since K ⊆ M, σ ≥ dist(0, ∂K) = min over K's
+//    facets of the plane distance. So σ = d_F once no facet of K is exactly nearer: facets whose
+//    lower bound is below d_F's accurate upper bound are discarded if coplanar with F, else
+//    refined, and remaining near ties are decided exactly (sign of h_F²|n_G|² − h_G²|n_F|²).
+//    Otherwise s is strictly beyond F: expand. Every step adds a new pair, so the loop ends.
+//  * Values: d_F = h_F/|n_F| from h_F and |n_F|² in double-double with a rigorous error bound
+//    (exact rationals when that bound is not within half an ulp): within ~2 ulps.
+// Predicates: a semi-static filter (uniform per-query bounds on every rounded quantity, from
+// the coordinate extents), then exact::exact_sign (running-error double of the full polynomial,
+// then GMP). Rounded points are taken relative to reference vertices of P and Q, so offsets of
+// the shapes or of the placement do not widen the bounds. Identities that hold by construction
+// (a facet's own vertices, the fourth corner of an edge–edge parallelogram, pairs sharing a P or
+// a Q index) are recognised symbolically, so the exact zeros met at every termination never
+// reach the exact fallback.
+//
+// Result: depth = d_F, lower_bound = upper_bound = depth, candidates = number of support queries,
+// features = the defining features of M's facet (a face of P and a vertex of Q, a vertex of P
+// and a face of Q, or two edges; P's face preferred, as in minkowski_facets), witnesses = the
+// point of K's facet nearest to 0 written as a convex combination of pairs (P part, Q' part).
+// Complexity: O(k (f + c)) for k support queries, f the facets of K (a branch-free scan for
+// the nearest one; f = O(k)), c the climb length (O(1) from warm starts or the cube-map seeds
+// of vertex_adjacency.cpp). k is at most n·m in theory; measured 20–65 for round random hulls
+// of 64–32,768 vertices (tests/convex3/test_minimum_fast.cpp prints the counts).
+#include "convex3/minimum_expand.hpp"
+
+#include "convex3/polytope_data.hpp"
+#include "geometry/exact.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cassert>
+#include <cmath>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace pendepth::convex3 {
+
+namespace {
+
+using exact::certified_sign;
+using exact::exact_sign;
+using exact::safe_bound;
+
+constexpr double kU = exact::kUnit;       // unit roundoff 2^-53
+constexpr double kInflate = 1 + 0x1p-20;  // covers the rounding of the bound formulas themselves
+constexpr int kSeedMinK = 4;              // cube maps this fine (n > 54) also seed warm starts
+
+// ---- double-double numbers with a running absolute error bound (accurate distances) ----------
+struct DD {
+  double hi = 0, lo = 0, e = 0;
+};
+constexpr double kDDRel = 0x1p-100;    // >= relative error of one operation below (<= 4u²)
+constexpr double kDDTiny = 0x1p-1000;  // absolute slack for underflow
+
+inline void two_sum(double a, double b, double& s, double& t) {
+  s = a + b;
+  double bb = s - a;
+  t = (a - (s - bb)) + (b - bb);
+}
+inline void fast_two_sum(double a, double b, double& s, double& t) {
+  s = a + b;
+  t = b - (s - a);
+}
+// Joldes, Muller, Popescu 2017: AccurateDWPlusDW (relative error <= 3u² + 13u³).
+inline DD operator+(const DD& x, const DD& y) {
+  double sh, sl, th, tl, vh, vl, zh, zl;
+  two_sum(x.hi, y.hi, sh, sl);
+  two_sum(x.lo, y.lo, th, tl);
+  fast_two_sum(sh, sl + th, vh, vl);
+  fast_two_sum(vh, tl + vl, zh, zl);
+  return {zh, zl, x.e + y.e + std::abs(zh) * kDDRel + kDDTiny};
+}
+inline DD operator-(const DD& x) { return {-x.hi, -x.lo, x.e}; }
+inline DD operator-(const DD& x, const DD& y) { return x + (-y); }
+// Same paper: DWTimesDW3 (relative error <= 4u²).
+inline DD operator*(const DD& x, const DD& y) {
+  double ch = x.hi * y.hi;
+  double cl1 = std::fma(x.hi, y.hi, -ch);
+  double cl2 = std::fma(x.lo, y.hi, std::fma(x.hi, y.lo, x.lo * y.lo));
+  double zh, zl;
+  fast_two_sum(ch, cl1 + cl2, zh, zl);
+  double ax = std::abs(x.hi) * (1 + 0x1p-51), ay = std::abs(y.hi) * (1 + 0x1p-51);
+  return {zh, zl, ax * y.e + ay * x.e + x.e * y.e + std::abs(zh) * kDDRel + kDDTiny};
+}
+struct LiftDD {
+  DD operator()(double x) const { return {x, 0, 0}; }
+};
+
+/// f's value to within ~half an ulp: double-double, exact rationals when the bound is too wide.
+template <class F>
+double accurate(F&& f) {
+  DD r = f(LiftDD{});
+  if (std::isfinite(r.hi) && std::isfinite(r.e) && safe_bound(r.e) <= std::abs(r.hi) * 0x1p-60) return r.hi;
+  return f(exact::LiftQ{}).v.get_d();
+}
+
+// ---- small vectors of lifted numbers ----------------------------------------------------------
+template <class T>
+using V3 = std::array<T, 3>;
+template <class L>
+using Num = decltype(std::declval<L>()(0.0));
+
+template <class T>
+V3<T> cross(const V3<T>& a, const V3<T>& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+template <class T>
+T dot(const V3<T>& a, const V3<T>& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+// ---- symbolic identities of a triangle of pairs (i_k, j_k) ------------------------------------
+// n = (m_b − m_a) × (m_c − m_a) is orthogonal to every integer combination of m_b − m_a and
+// m_c − m_a. Pairs sharing j differ by p_i − p_i' exactly; pairs sharing i by −R(q_j − q_j').
+// With exactly two P indices {i1, i2} and two Q indices {j1, j2} (three corners of an edge–edge
+// parallelogram), n ∥ (p_i2 − p_i1) × R(q_j2 − q_j1).
+struct Pairs {
+  std::array<int, 3> i{}, j{};
+};
+
+bool two_by_two(const Pairs& t, int& i1, int& i2, int& j1, int& j2) {
+  i1 = t.i[0], i2 = t.i[1] != i1 ? t.i[1] : t.i[2];
+  j1 = t.j[0], j2 = t.j[1] != j1 ? t.j[1] : t.j[2];
+  if (i1 == i2 || j1 == j2) return false;
+  for (int k = 0; k < 3; ++k)
+    if ((t.i[k] != i1 && t.i[k] != i2) || (t.j[k] != j1 && t.j[k] != j2)) return false;
+  return true;
+}
+// n·(m_(xi,xj) − m_a) is identically 0.
+bool zero_orient(const Pairs& t, int xi, int xj) {
+  for (int k = 0; k < 3; ++k)
+    if (t.i[k] == xi && t.j[k] == xj) return true;
+  int i1, i2, j1, j2;
+  return two_by_two(t, i1, i2, j1, j2) && (xi == i1 || xi == i2) && (xj == j1 || xj == j2);
+}
+// n·(p_w − p_v) (of_p) or n·R(q_w − q_v) (!of_p) is identically 0.
+bool zero_pair(const Pairs& t, bool of_p, int v, int w) {
+  if (v == w) return true;
+  const auto& x = of_p ? t.i : t.j;
+  const auto& y = of_p ? t.j : t.i;
+  for (int k = 0; k < 3; ++k)
+    for (int l = k + 1; l < 3; ++l)
+      if (y[k] == y[l] && ((x[k] == v && x[l] == w) || (x[k] == w && x[l] == v))) return true;
+  int i1, i2, j1, j2;
+  if (!two_by_two(t, i1, i2, j1, j2)) return false;
+  int a = of_p ? i1 : j1, b = of_p ? i2 : j2;
+  return (v == a && w == b) || (v == b && w == a);
+}
+
+// ---- the expansion ---------------------------------------------------------------------------
+// Rounded points are formed relative to reference vertices c_P, c_Q (so that offsets of the
+// shapes or of the placement do not widen the bounds): m̂ = (p − c_P) − R(q − c_Q) − τ̂ with
+// τ = t + R c_Q − c_P (double-double, then rounded). Per query, uniform bounds on every rounded
+// quantity (from the coordinate extents) give semi-static filters.
+struct Vert {
+  int i = -1, j = -1;
+  double mh[3];  // m̂ (rounded p_i − q'_j)
+};
+
+struct Facet {
+  std::array<int, 3> v{}, nb{};  // vertices CCW from outside; nb[k] across edge v[k] -> v[k+1]
+  double n[3];                   // rounded outward normal (m_b − m_a) × (m_c − m_a)
+  double h = 0, he = 0;          // rounded n·m_a (> 0: 0 strictly inside the half-space), bound
+  double eo = 0;                 // bound of the rounded orient() value
+  double dist = 0;               // accurate distance (once refined)
+  double unit[3];                // n/|n| from the double-double normal (once refined)
+  int hsign = 1;                 // Phase A: exact sign of h
+  bool refined = false;
+};
+
+// A direction of support queries, known exactly as a polynomial.
+struct Dir {
+  enum Kind { Vector, Normal, Cross } kind = Vector;
+  Vec3 d{0, 0, 0};             // Vector: the direction; Cross: (m_b − m_a) × d
+  int a = -1, b = -1, c = -1;  // Normal: triangle a, b, c; Cross: a, b
+  int sgn = 1;
+  Vec3 n{0, 0, 0}, w{0, 0, 0};  // rounded direction and Rᵀ direction
+  double ep = 0, eq = 0;        // bounds of the rounded P / Q comparisons (climbs)
+  double es = 0, e0 = 0;        // bounds of the rounded n·(m_x − m_a) and n·m_x
+  bool structural = false;      // Normal: the identities of `t` hold
+  Pairs t;
+};
+
+// Scratch arrays reused across queries of one thread (no allocation in steady state).
+struct Workspace {
+  std::vector<Vert> V;
+  std::vector<Facet> F;
+  std::vector<int> mark, vis, by_start, by_end;
+  std::vector<std::pair<int, int>> hor;
+  std::vector<int> alive, pos;  // live facets (dense) and each facet's index there (−1: dead)
+  std::vector<double> keys;     // Phase B key of alive[k]; +inf: not a candidate
+};
+
+class Expander {
+ public:
+  Expander(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel, Workspace& ws)
+      : P_(Pp.data()), Q_(Qp.data()), AP_(vertex_adjacency(P_)), AQ_(vertex_adjacency(Q_)), R_(rel.R),
+        V_(ws.V), F_(ws.F), mark_(ws.mark), vis_(ws.vis), by_start_(ws.by_start), by_end_(ws.by_end),
+        hor_(ws.hor), alive_(ws.alive), pos_(ws.pos), keys_(ws.keys) {
+    V_.clear(), F_.clear(), mark_.clear(), alive_.clear(), pos_.clear(), keys_.clear();
+    const Vec3 &cp = P_.v[0], &cq = Q_.v[0];
+    cp_ = cp, cq_ = cq;
+    for (int k = 0; k < 3; ++k) {
+      two_sum(rel.tq[k], -rel.tp[k], thi_[k], tlo_[k]);  // t = tq − tp exactly
+      DD tau = (DD{thi_[k]} + DD{tlo_[k]}) +
+               ((DD{R_(k, 0)} * DD{cq[0]} + DD{R_(k, 1)} * DD{cq[1]}) + DD{R_(k, 2)} * DD{cq[2]}) - DD{cp[k]};
+      tau_[k] = tau.hi;
+      double tau_err = std::abs(tau.lo) + safe_bound(tau.e);
+      double ep = AP_.extent[k] * (1 + 4 * kU), erq = 0;
+      for (int l = 0; l < 3; ++l) erq += std::abs(R_(k, l)) * AQ_.extent[l] * (1 + 4 * kU);
+      double dp = kU * ep, dr = 4.03 * kU * erq;  // |fl(p − c_P) − (p − c_P)|, same for R(q − c_Q)
+      ext_p_[k] = ep;
+      mb_[k] = (ep + erq + std::abs(tau_[k]) + tau_err) * kInflate;                // >= |m_k|
+      em_[k] = (dp + dr + tau_err + 2.02 * kU * mb_[k]) * kInflate + exact::kTiny;  // >= |m̂_k − m_k|
+      bd_[k] = (ep + erq) * kInflate;                                             // >= |m_x − m_a|_k
+      ed_[k] = (2 * em_[k] + 1.01 * kU * (bd_[k] + 2 * em_[k])) * kInflate;       // >= |D̂_k − D_k|
+      B_[k] = bd_[k] + ed_[k];                                                    // >= |D̂_k|
+    }
+    double nn = 0;
+    for (int k = 0; k < 3; ++k) {  // cross product of two rounded differences
+      int y = (k + 1) % 3, z = (k + 2) % 3;
+      ne_[k] = (2 * (ed_[y] * bd_[z] + B_[y] * ed_[z]) + 4.02 * kU * B_[y] * B_[z]) * kInflate + exact::kTiny;
+      nn += ne_[k] * ne_[k];
+    }
+    ne_norm_ = std::sqrt(nn) * kInflate;
+    ed_max_ = std::max({ed_[0], ed_[1], ed_[2]});
+    // The bounds below are affine in |n_k| (and |w_l|) for facet normals: fold the constants.
+    // kInflate also covers the rounding of the short sums that evaluate them.
+    co_ = ch_ = cep_ = ceq_ = exact::kTiny;
+    for (int k = 0; k < 3; ++k) {
+      double eq = AQ_.extent[k] * (1 + 4 * kU), rq = 0, rne = 0;
+      for (int l = 0; l < 3; ++l) rq += std::abs(R_(k, l)) * AQ_.extent[l] * (1 + 4 * kU);
+      for (int l = 0; l < 3; ++l) rne += std::abs(R_(k, l)) * ne_[k] * AQ_.extent[l] * (1 + 4 * kU);
+      ch_ += kInflate * ne_[k] * mb_[k];
+      bh_[k] = kInflate * (em_[k] + 3.02 * kU * (mb_[k] + em_[k]));
+      co_ += 2 * kInflate * ne_[k] * mb_[k];  // orient = n·m̂_x − h̃: twice he, plus a rounding
+      bo_[k] = 2 * bh_[k] + kInflate * 2.02 * kU * (mb_[k] + em_[k]);
+      cep_ += kInflate * ne_[k] * ext_p_[k];
+      bp_[k] = kInflate * 4.02 * kU * ext_p_[k];
+      ceq_ += kInflate * kInflate * rne;
+      bqn_[k] = kInflate * kInflate * 3.02 * kU * rq;
+      bqw_[k] = kInflate * 4.02 * kU * eq;
+    }
+  }
+
+  Depth3 run(const Eigen::Matrix3d& Rp, const Vec3& tp) {
+    init_tetrahedron();
+    if (!phase_a()) {
+      Depth3 none;
+      none.candidates = iters_;
+      return none;
+    }
+    return result(phase_b(), Rp, tp);
+  }
+
+ private:
+  const PolytopeData& P_;
+  const PolytopeData& Q_;
+  const VertexAdjacency& AP_;
+  const VertexAdjacency& AQ_;
+  Eigen::Matrix3d R_;
+  Vec3 cp_, cq_;
+  double thi_[3], tlo_[3], tau_[3];
+  double ext_p_[3], bd_[3], ed_[3], B_[3], mb_[3], em_[3], ne_[3], ne_norm_, ed_max_;
+  double co_, bo_[3], ch_, bh_[3], cep_, bp_[3], ceq_, bqn_[3], bqw_[3];
+  std::vector<Vert>& V_;
+  std::vector<Facet>& F_;
+  std::vector<int>& mark_;
+  std::vector<int>& vis_;
+  std::vector<int>& by_start_;
+  std::vector<int>& by_end_;
+  std::vector<std::pair<int, int>>& hor_;
+  std::vector<int>& alive_;
+  std::vector<int>& pos_;
+  std::vector<double>& keys_;
+  int stamp_ = 0;
+  std::size_t iters_ = 0;
+
+  Pairs pairs(int a, int b, int c) const {
+    return {{V_[a].i, V_[b].i, V_[c].i}, {V_[a].j, V_[b].j, V_[c].j}};
+  }
+
+  // ---- polynomials, written once for every number type (exact fallbacks, accurate values) ----
+  template <class L>
+  V3<Num<L>> diff_l(L lift, const Vert& x, const Vert& a) const {  // m_x − m_a
+    V3<Num<L>> d;
+    const Vec3 &px = P_.v[x.i], &pa = P_.v[a.i];
+    for (int k = 0; k < 3; ++k) d[k] = x.i == a.i ? lift(0.0) : lift(px[k]) - lift(pa[k]);
+    if (x.j != a.j) {
+      const Vec3 &qx = Q_.v[x.j], &qa = Q_.v[a.j];
+      V3<Num<L>> dq{lift(qx[0]) - lift(qa[0]), lift(qx[1]) - lift(qa[1]), lift(qx[2]) - lift(qa[2])};
+      for (int k = 0; k < 3; ++k)
+        d[k] = d[k] - (lift(R_(k, 0)) * dq[0] + lift(R_(k, 1)) * dq[1] + lift(R_(k, 2)) * dq[2]);
+    }
+    return d;
+  }
+  template <class L>
+  V3<Num<L>> m_l(L lift, const Vert& x) const {  // p_i − (R q_j + t)
+    const Vec3 &p = P_.v[x.i], &q = Q_.v[x.j];
+    V3<Num<L>> m;
+    for (int k = 0; k < 3; ++k)
+      m[k] = lift(p[k]) - (lift(R_(k, 0)) * lift(q[0]) + lift(R_(k, 1)) * lift(q[1]) + lift(R_(k, 2)) * lift(q[2]) +
+                           lift(thi_[k]) + lift(tlo_[k]));
+    return m;
+  }
+  template <class L>
+  V3<Num<L>> normal_l(L lift, int a, int b, int c) const {
+    return cross(diff_l(lift, V_[b], V_[a]), diff_l(lift, V_[c], V_[a]));
+  }
+  template <class L>
+  V3<Num<L>> dir_l(L lift, const Dir& D) const {
+    V3<Num<L>> n;
+    if (D.kind == Dir::Vector) {
+      n = {lift(D.d[0]), lift(D.d[1]), lift(D.d[2])};
+    } else if (D.kind == Dir::Normal) {
+      n = normal_l(lift, D.a, D.b, D.c);
+    } else {
+      n = cross(diff_l(lift, V_[D.b], V_[D.a]), V3<Num<L>>{lift(D.d[0]), lift(D.d[1]), lift(D.d[2])});
+    }
+    if (D.sgn < 0)
+      for (auto& x : n) x = -x;
+    return n;
+  }
+
+  // ---- rounded values ---------------------------------------------------------------------
+  static void diff_r(const Vert& x, const Vert& a, double d[3]) {  // D̂ = m̂_x − m̂_a, see ed_
+    for (int k = 0; k < 3; ++k) d[k] = x.mh[k] - a.mh[k];
+  }
+  static void cross_r(const double a[3], const double b[3], double n[3]) {
+    n[0] = a[1] * b[2] - a[2] * b[1];
+    n[1] = a[2] * b[0] - a[0] * b[2];
+    n[2] = a[0] * b[1] - a[1] * b[0];
+  }
+  // Bounds of n·(m_x − m_a) and n·m_x for a rounded n with error nerr.
+  double bound_side(const double n[3], const double nerr[3]) const {
+    double e = 0;
+    for (int k = 0; k < 3; ++k) e += nerr[k] * bd_[k] + std::abs(n[k]) * (ed_[k] + 3.02 * kU * B_[k]);
+    return e * kInflate + exact::kTiny;
+  }
+  double bound_zero(const double n[3], const double nerr[3]) const {
+    double e = 0;
+    for (int k = 0; k < 3; ++k) e += nerr[k] * mb_[k] + std::abs(n[k]) * (em_[k] + 3.02 * kU * (mb_[k] + em_[k]));
+    return e * kInflate + exact::kTiny;
+  }
+
+  int add_vert(int i, int j) {
+    Vert x;
+    x.i = i, x.j = j;
+    const Vec3 &p = P_.v[i], &q = Q_.v[j];
+    double dq[3] = {q[0] - cq_[0], q[1] - cq_[1], q[2] - cq_[2]};
+    for (int k = 0; k < 3; ++k)
+      x.mh[k] = ((p[k] - cp_[k]) - (R_(k, 0) * dq[0] + R_(k, 1) * dq[1] + R_(k, 2) * dq[2])) - tau_[k];
+    V_.push_back(x);
+    return static_cast<int>(V_.size()) - 1;
+  }
+
+  int add_facet(int a, int b, int c) {
+    const int id = static_cast<int>(F_.size());
+    Facet& f = F_.emplace_back();
+    f.v = {a, b, c};
+    f.nb = {-1, -1, -1};
+    double d1[3], d2[3];
+    diff_r(V_[b], V_[a], d1);
+    diff_r(V_[c], V_[a], d2);
+    cross_r(d1, d2, f.n);
+    const double* m = V_[a].mh;
+    f.h = f.n[0] * m[0] + f.n[1] * m[1] + f.n[2] * m[2];
+    const double a0 = std::abs(f.n[0]), a1 = std::abs(f.n[1]), a2 = std::abs(f.n[2]);
+    f.he = ch_ + a0 * bh_[0] + a1 * bh_[1] + a2 * bh_[2];  // = bound_zero(n, ne_)
+    f.eo = co_ + a0 * bo_[0] + a1 * bo_[1] + a2 * bo_[2];  // = bound_side(n, ne_)
+    mark_.push_back(0);
+    pos_.push_back(static_cast<int>(alive_.size()));
+    alive_.push_back(id);
+    keys_.push_back(std::numeric_limits<double>::infinity());
+    return id;
+  }
+  void kill(int f) {
+    int k = pos_[f], last = alive_.back();
+    alive_[k] = last, keys_[k] = keys_.back(), pos_[last] = k;
+    alive_.pop_back(), keys_.pop_back();
+    pos_[f] = -1;
+  }
+
+  // ---- exact predicates --------------------------------------------------------------------
+  // Sign of n_f·(m_x − m_a): > 0 iff x is strictly beyond facet f's plane.
+  int orient(int f, int x) const {
+    const Facet& F = F_[f];
+    const Vert& X = V_[x];
+    double s = (F.n[0] * X.mh[0] + F.n[1] * X.mh[1] + F.n[2] * X.mh[2]) - F.h;
+    if (s > F.eo) return 1;
+    if (s < -F.eo) return -1;
+    if (zero_orient(pairs(F.v[0], F.v[1], F.v[2]), X.i, X.j)) return 0;
+    const Vert& A = V_[F.v[0]];
+    return exact_sign([&](auto L) { return dot(normal_l(L, F.v[0], F.v[1], F.v[2]), diff_l(L, X, A)); });
+  }
+  int hsign(int f) const {
+    const Facet& F = F_[f];
+    if (F.h > F.he) return 1;
+    if (F.h < -F.he) return -1;
+    const auto& v = F.v;
+    return exact_sign([&](auto L) { return dot(normal_l(L, v[0], v[1], v[2]), m_l(L, V_[v[0]])); });
+  }
+  // Sign of D·(m_x − m_a).
+  int dir_side(const Dir& D, int x, int a) const {
+    const Vert &X = V_[x], &A = V_[a];
+    if (X.i == A.i && X.j == A.j) return 0;
+    if (D.structural && zero_orient(D.t, X.i, X.j)) return 0;
+    if (D.kind == Dir::Cross && X.i == V_[D.b].i && X.j == V_[D.b].j) return 0;
+    double d[3];
+    diff_r(X, A, d);
+    double s = D.n.dot(Vec3(d[0], d[1], d[2]));
+    if (s > D.es) return 1;
+    if (s < -D.es) return -1;
+    return exact_sign([&](auto L) { return dot(dir_l(L, D), diff_l(L, X, A)); });
+  }
+  // Sign of D·m_x = h_M(D) when x is the support along D.
+  int side0(const Dir& D, int x) const {
+    const double* m = V_[x].mh;
+    double s = D.n[0] * m[0] + D.n[1] * m[1] + D.n[2] * m[2];
+    if (s > D.e0) return 1;
+    if (s < -D.e0) return -1;
+    return exact_sign([&](auto L) { return dot(dir_l(L, D), m_l(L, V_[x])); });
+  }
+  // Sign of D·(p_w − p_v) (> 0: w is a strictly better P support).
+  int cmp_p(const Dir& D, int v, int w) const {
+    const Vec3 &pv = P_.v[v], &pw = P_.v[w];
+    double s = D.n.dot(pw - pv);
+    if (s > D.ep) return 1;
+    if (s < -D.ep) return -1;
+    if (v == w || (D.structural && zero_pair(D.t, true, v, w))) return 0;
+    return exact_sign([&](auto L) {
+      V3<Num<decltype(L)>> e{L(pw[0]) - L(pv[0]), L(pw[1]) - L(pv[1]), L(pw[2]) - L(pv[2])};
+      return dot(dir_l(L, D), e);
+    });
+  }
+  // Sign of D·R(q_v − q_w) (> 0: w is a strictly better Q' support, i.e. lower D·q').
+  int cmp_q(const Dir& D, int v, int w) const {
+    const Vec3 &qv = Q_.v[v], &qw = Q_.v[w];
+    double s = D.w.dot(qv - qw);
+    if (s > D.eq) return 1;
+    if (s < -D.eq) return -1;
+    if (v == w || (D.structural && zero_pair(D.t, false, v, w))) return 0;
+    return exact_sign([&](auto L) {
+      auto n = dir_l(L, D);
+      V3<Num<decltype(L)>> e{L(qv[0]) - L(qw[0]), L(qv[1]) - L(qw[1]), L(qv[2]) - L(qw[2])};
+      Num<decltype(L)> s = L(0.0);
+      for (int k = 0; k < 3; ++k) s = s + n[k] * (L(R_(k, 0)) * e[0] + L(R_(k, 1)) * e[1] + L(R_(k, 2)) * e[2]);
+      return s;
+    });
+  }
+
+  // ---- directions and supports -------------------------------------------------------------
+  // Fills w and the bounds from the rounded n and its error bound nerr.
+  void finish_dir(Dir& D, const double nerr[3]) const {
+    double n[3] = {D.n[0], D.n[1], D.n[2]}, werr[3];
+    D.ep = D.eq = 0;
+    for (int l = 0; l < 3; ++l) {
+      D.w[l] = R_(0, l) * n[0] + R_(1, l) * n[1] + R_(2, l) * n[2];
+      werr[l] = 0;
+      for (int k = 0; k < 3; ++k) werr[l] += std::abs(R_(k, l)) * (nerr[k] + 3.02 * kU * std::abs(n[k]));
+      D.ep += (nerr[l] + 4.02 * kU * std::abs(n[l])) * ext_p_[l];
+      D.eq += (werr[l] * kInflate + 4.02 * kU * std::abs(D.w[l])) * AQ_.extent[l] * (1 + 4 * kU);
+    }
+    D.ep = D.ep * kInflate + exact::kTiny;
+    D.eq = D.eq * kInflate + exact::kTiny;
+    D.es = bound_side(n, nerr);
+    D.e0 = bound_zero(n, nerr);
+  }
+  Dir facet_dir(int f) const {
+    const Facet& F = F_[f];
+    Dir D;
+    D.kind = Dir::Normal;
+    D.a = F.v[0], D.b = F.v[1], D.c = F.v[2];
+    D.n = Vec3(F.n[0], F.n[1], F.n[2]);
+    D.structural = true;
+    D.t = pairs(D.a, D.b, D.c);
+    // finish_dir(D, ne_) with the folded constants.
+    const double a0 = std::abs(F.n[0]), a1 = std::abs(F.n[1]), a2 = std::abs(F.n[2]);
+    D.w = R_.transpose() * D.n;
+    D.ep = cep_ + a0 * bp_[0] + a1 * bp_[1] + a2 * bp_[2];
+    D.eq = ceq_ + a0 * bqn_[0] + a1 * bqn_[1] + a2 * bqn_[2] + std::abs(D.w[0]) * bqw_[0] +
+           std::abs(D.w[1]) * bqw_[1] + std::abs(D.w[2]) * bqw_[2];
+    D.es = F.eo;
+    D.e0 = F.he;
+    return D;
+  }
+
+  // Hill climbing: steepest certified ascent by the rounded values, exact checks only for
+  // neighbours the semi-static bound cannot separate from v.
+  int climb_p(const Dir& D, int v) const { return climb(D, P_, AP_, D.n, D.ep, true, v); }
+  int climb_q(const Dir& D, int v) const { return climb(D, Q_, AQ_, -D.w, D.eq, false, v); }
+  // Maximises u·x over the vertices x of S (u = n for P, −Rᵀn for Q). The rounded edge vectors
+  // are within u·extent of the exact ones, which eb accounts for; when eb is this small no
+  // product can overflow, so no rounded value is NaN.
+  int climb(const Dir& D, const PolytopeData& S, const VertexAdjacency& A, const Vec3& u, double eb, bool of_p,
+            int v) const {
+    (void)S;
+    const double u0 = u[0], u1 = u[1], u2 = u[2];
+    const double *dx = A.dx.data(), *dy = A.dy.data(), *dz = A.dz.data();
+    const bool finite = eb < 1e280;
+    for (;;) {
+      const int b = A.start[v], end = A.start[v + 1];
+      double bv = -std::numeric_limits<double>::infinity();
+      int be = b;
+      for (int e = b; e < end; ++e) {
+        double s = u0 * dx[e] + u1 * dy[e] + u2 * dz[e];
+        be = s > bv ? e : be;
+        bv = s > bv ? s : bv;
+      }
+      if (finite && bv > eb) {
+        v = A.nbr[be];
+        continue;
+      }
+      if (finite && bv < -eb) return v;  // every neighbour certified lower
+      int next = -1;
+      for (int e = b; e < end && next < 0; ++e)
+        if ((of_p ? cmp_p(D, v, A.nbr[e]) : cmp_q(D, v, A.nbr[e])) > 0) next = A.nbr[e];
+      if (next < 0) return v;
+      v = next;
+    }
+  }
+  // Adds the support of M along D (a new vertex of V_; the caller may pop it).
+  int support(const Dir& D, int p0, int q0) {
+    ++iters_;
+    return add_vert(climb_p(D, p0), climb_q(D, q0));
+  }
+  int support_cold(const Dir& D) { return support(D, seed_vertex(AP_, D.n), seed_vertex(AQ_, -D.w)); }
+  int support_facet(int f, const Dir& D) {
+    // Warm start: the best of the facet's own pairs and (for large shapes, where early facets
+    // are far from their supports) the cube-map seed, by rounded values.
+    const auto& v = F_[f].v;
+    int p0 = V_[v[0]].i, q0 = V_[v[0]].j;
+    if (AP_.cube_k >= kSeedMinK) p0 = seed_vertex(AP_, D.n);
+    if (AQ_.cube_k >= kSeedMinK) q0 = seed_vertex(AQ_, -D.w);
+    double bp = D.n.dot(P_.v[p0]), bq = D.w.dot(Q_.v[q0]);
+    for (int k = 0; k < 3; ++k) {
+      if (double s = D.n.dot(P_.v[V_[v[k]].i]); s > bp) bp = s, p0 = V_[v[k]].i;
+      if (double s = D.w.dot(Q_.v[V_[v[k]].j]); s < bq) bq = s, q0 = V_[v[k]].j;
+    }
+    return support(D, p0, q0);
+  }
+
+  // ---- the polytope ------------------------------------------------------------------------
+  // Directions of the first supports are generic (neither axis-aligned nor opposite), so that
+  // boxes and other axis-aligned or centrally symmetric shapes meet no exact ties there; any
+  // direction would be correct.
+  static constexpr double kGeneric[3][3] = {
+      {0.4612, -0.6287, 0.6262}, {-0.7033, 0.2117, 0.6786}, {0.3819, 0.8573, 0.3452}};
+
+  void init_tetrahedron() {
+    // s1, s2: supports along d1 (from M's centre towards 0, tilted) and about −d1.
+    const Vec3 g0(kGeneric[0][0], kGeneric[0][1], kGeneric[0][2]), g1(kGeneric[1][0], kGeneric[1][1], kGeneric[1][2]);
+    Vec3 d1 = R_ * AQ_.centroid + Vec3(thi_[0], thi_[1], thi_[2]) - AP_.centroid;
+    d1 += 0.125 * d1.norm() * g0;
+    if (!(d1.allFinite() && d1.squaredNorm() > 0)) d1 = g0;
+    const double zero[3] = {0, 0, 0};
+    auto vec_dir = [&](const Vec3& d) {
+      Dir D;
+      D.d = D.n = d;
+      finish_dir(D, zero);
+      return D;
+    };
+    int s1 = support_cold(vec_dir(d1));
+    Vec3 d2 = -d1 + 0.25 * d1.norm() * g1;
+    if (!(d2.allFinite() && d2.squaredNorm() > 0)) d2 = -d1;
+    int s2 = support_cold(vec_dir(d2));
+    if (V_[s2].i == V_[s1].i && V_[s2].j == V_[s1].j) {  // M is full-dimensional: ±d1 differ
+      V_.pop_back();
+      s2 = support_cold(vec_dir(-d1));
+    }
+    // Some ±(m_s2 − m_s1) × g_k, then ± the normal of (s1, s2, s3), has a support strictly off
+    // the line / plane (M is full-dimensional; the g_k are linearly independent).
+    double e[3];
+    diff_r(V_[s2], V_[s1], e);
+    int s3 = -1;
+    const double bmax = std::max({B_[0], B_[1], B_[2]});
+    const double cerr[3] = {2.02 * (ed_max_ + 2.02 * kU * bmax), 2.02 * (ed_max_ + 2.02 * kU * bmax),
+                            2.02 * (ed_max_ + 2.02 * kU * bmax)};  // D̂ × g rounded, |g| <= 1
+    for (int k = 0; k < 3 && s3 < 0; ++k)
+      for (int sg : {1, -1}) {
+        Dir D;
+        D.kind = Dir::Cross;
+        D.a = s1, D.b = s2, D.sgn = sg;
+        D.d = Vec3(kGeneric[k][0], kGeneric[k][1], kGeneric[k][2]);
+        double n[3];
+        cross_r(e, kGeneric[k], n);
+        D.n = sg * Vec3(n[0], n[1], n[2]);
+        finish_dir(D, cerr);
+        int x = support_cold(D);
+        if (dir_side(D, x, s1) != 0) { s3 = x; break; }
+        V_.pop_back();
+      }
+    assert(s3 >= 0 && "M is not full-dimensional");
+    int s4 = -1, o = 0;
+    for (int sg : {1, -1}) {
+      Dir D;
+      D.kind = Dir::Normal;
+      D.a = s1, D.b = s2, D.c = s3, D.sgn = sg;
+      D.structural = true;  // identities of the triangle hold for either sign
+      D.t = pairs(s1, s2, s3);
+      double e2[3], n[3];
+      diff_r(V_[s3], V_[s1], e2);
+      cross_r(e, e2, n);
+      D.n = sg * Vec3(n[0], n[1], n[2]);
+      finish_dir(D, ne_);
+      int x = support_cold(D);
+      if (int side = dir_side(D, x, s1); side != 0) { s4 = x, o = side * sg; break; }
+      V_.pop_back();
+    }
+    assert(s4 >= 0 && "M is not full-dimensional");
+    if (o > 0) std::swap(s2, s3);  // now s4 lies below the plane of (s1, s2, s3)
+    add_facet(s1, s2, s3), add_facet(s1, s4, s2), add_facet(s2, s4, s3), add_facet(s3, s4, s1);
+    F_[0].nb = {1, 2, 3}, F_[1].nb = {3, 2, 0}, F_[2].nb = {1, 3, 0}, F_[3].nb = {2, 1, 0};  // twins
+    for (int a = 0; a < 4; ++a) F_[a].hsign = hsign(a);
+  }
+
+  Vec3 approx(int x) const { return Vec3(V_[x].mh[0], V_[x].mh[1], V_[x].mh[2]); }
+
+  // Replaces the facets visible from s (strictly beyond their planes; f0 is one) by the cone
+  // from s over the horizon. Visible facets of a convex polytope form a disc, so each horizon
+  // vertex starts exactly one horizon edge.
+  void expand(int f0, int s, bool phase_a) {
+    ++stamp_;
+    const int vis = 2 * stamp_, hid = 2 * stamp_ + 1;
+    vis_.clear();
+    hor_.clear();
+    vis_.push_back(f0);
+    mark_[f0] = vis;
+    for (std::size_t q = 0; q < vis_.size(); ++q) {
+      int f = vis_[q];
+      for (int k = 0; k < 3; ++k) {
+        int g = F_[f].nb[k];
+        if (mark_[g] == vis) continue;
+        if (mark_[g] != hid) {
+          if (orient(g, s) > 0) {
+            mark_[g] = vis;
+            vis_.push_back(g);
+            continue;
+          }
+          mark_[g] = hid;
+        }
+        hor_.push_back({f, k});
+      }
+    }
+    for (int f : vis_) kill(f);
+    if (by_start_.size() < V_.size()) by_start_.resize(2 * V_.size()), by_end_.resize(2 * V_.size());
+    const int first = static_cast<int>(F_.size());
+    for (auto [f, k] : hor_) {
+      int a = F_[f].v[k], b = F_[f].v[(k + 1) % 3], g = F_[f].nb[k];
+      int id = add_facet(a, b, s);
+      F_[id].nb[0] = g;
+      Facet& G = F_[g];
+      for (int e = 0; e < 3; ++e)
+        if (G.v[e] == b && G.v[(e + 1) % 3] == a) G.nb[e] = id;
+      by_start_[a] = id;
+      by_end_[b] = id;
+    }
+    for (int id = first; id < static_cast<int>(F_.size()); ++id) {
+      Facet& N = F_[id];
+      N.nb[1] = by_start_[N.v[1]];
+      N.nb[2] = by_end_[N.v[0]];
+      assert(F_[N.nb[1]].v[0] == N.v[1] && F_[N.nb[2]].v[1] == N.v[0]);
+      if (phase_a) N.hsign = hsign(id);
+      else keys_[pos_[id]] = lower_key(id);
+    }
+  }
+
+  // ---- Phase A: decide 0 ∈ int M exactly --------------------------------------------------------
+  bool phase_a() {
+    for (;;) {
+      int f = -1;
+      double worst = 0;
+      for (int g : alive_) {
+        const Facet& G = F_[g];
+        if (G.hsign > 0) continue;
+        double sd = G.h / std::sqrt(G.n[0] * G.n[0] + G.n[1] * G.n[1] + G.n[2] * G.n[2]);  // for choice only
+        if (f < 0 || sd < worst) f = g, worst = sd;
+      }
+      if (f < 0) return true;  // 0 strictly inside every facet: 0 ∈ int K ⊆ int M
+      Dir D = facet_dir(f);
+      int s = support_facet(f, D);
+      if (side0(D, s) <= 0) return false;  // h_M(n_f) <= 0: 0 ∉ int M
+      expand(f, s, true);
+    }
+  }
+
+  // ---- Phase B: nearest facet, certified -------------------------------------------------------
+  // Keys are squared distances (no square roots on the hot path). A lower bound of the exact
+  // (h/|n|)² from the rounded values and their bounds: |n| <= |ñ| + |ne|, |ñ|² <= nn(1 + 4u).
+  double lower_key(int f) const {
+    const Facet& F = F_[f];
+    double hl = F.h - F.he;
+    double nn = F.n[0] * F.n[0] + F.n[1] * F.n[1] + F.n[2] * F.n[2];
+    double nu = nn * (1 + 4 * kU) + ne_norm_ * (2 * std::abs(F.n[0]) + 2 * std::abs(F.n[1]) + 2 * std::abs(F.n[2]) + ne_norm_);
+    return hl > 0 ? hl * hl / nu * (1 - 0x1p-49) : 0.0;
+  }
+  void refine(int f) {
+    const auto v = F_[f].v;
+    auto h_l = [&](auto L) { return dot(normal_l(L, v[0], v[1], v[2]), m_l(L, V_[v[0]])); };
+    auto n2_l = [&](auto L) {
+      auto n = normal_l(L, v[0], v[1], v[2]);
+      return dot(n, n);
+    };
+    // One double-double evaluation of the normal serves both values; rationals if needed.
+    auto n = normal_l(LiftDD{}, v[0], v[1], v[2]);
+    DD h = dot(n, m_l(LiftDD{}, V_[v[0]])), n2 = dot(n, n);
+    auto ok = [](const DD& r) {
+      return std::isfinite(r.hi) && std::isfinite(r.e) && safe_bound(r.e) <= std::abs(r.hi) * 0x1p-60;
+    };
+    double hv = ok(h) ? h.hi : accurate(h_l), n2v = ok(n2) ? n2.hi : accurate(n2_l);
+    F_[f].dist = hv / std::sqrt(n2v);
+    F_[f].refined = true;
+    Vec3 u = Vec3(n[0].hi, n[1].hi, n[2].hi).normalized();
+    for (int k = 0; k < 3; ++k) F_[f].unit[k] = u[k];
+  }
+  bool coplanar(int f, int g) const {
+    for (int x : F_[f].v)
+      if (orient(g, x) != 0) return false;
+    return true;
+  }
+  int closer(int f, int g) const {  // sign(d_f − d_g), exactly
+    const auto a = F_[f].v, b = F_[g].v;
+    return exact_sign([&](auto L) {
+      auto nf = normal_l(L, a[0], a[1], a[2]), ng = normal_l(L, b[0], b[1], b[2]);
+      auto hf = dot(nf, m_l(L, V_[a[0]])), hg = dot(ng, m_l(L, V_[b[0]]));
+      return hf * hf * dot(ng, ng) - hg * hg * dot(nf, nf);
+    });
+  }
+
+  int phase_b() {
+    for (std::size_t k = 0; k < alive_.size(); ++k) keys_[k] = lower_key(alive_[k]);
+    int best = -1;
+    double best_hi = 0;
+    for (;;) {
+      // The live facet with the least key (a dense scan: K has few facets, no branches).
+      const std::size_t na = keys_.size();
+      std::size_t kmin = 0;
+      double key = std::numeric_limits<double>::infinity();
+      for (std::size_t k = 0; k < na; ++k) {
+        kmin = keys_[k] < key ? k : kmin;
+        key = keys_[k] < key ? keys_[k] : key;
+      }
+      if (best >= 0 && !(key < best_hi)) break;  // every other facet is at least as far as best
+      const int f = alive_[kmin];
+      if (best >= 0) {
+        if (coplanar(f, best)) {  // same plane, same distance (often a symbolic identity)
+          keys_[kmin] = std::numeric_limits<double>::infinity();
+          continue;
+        }
+        if (!F_[f].refined) {
+          refine(f);
+          keys_[kmin] = F_[f].dist * F_[f].dist * (1 - 0x1p-47);  // dist within 2 ulps
+          continue;
+        }
+        keys_[kmin] = std::numeric_limits<double>::infinity();
+        if (closer(f, best) >= 0) continue;  // not nearer than best
+      }
+      Dir D = facet_dir(f);
+      int s = support_facet(f, D);
+      int o = orient(f, s);
+      assert(o >= 0 && "a support point below the facet's plane");
+      if (o <= 0) {  // f's plane supports M
+        V_.pop_back();
+        if (!F_[f].refined) refine(f);
+        best = f;
+        best_hi = F_[f].dist * F_[f].dist * (1 + 0x1p-47);
+        keys_[pos_[f]] = std::numeric_limits<double>::infinity();
+        continue;
+      }
+      expand(f, s, false);
+    }
+    return best;
+  }
+
+  // ---- result ------------------------------------------------------------------------------
+  // Dimension (0, 1, 2) of the support face of P (of_p) or Q' around vertex v for D, and the
+  // feature: the vertex, an edge (half-edge, the one with the smaller id), or a triangle.
+  Feature3 support_feature(const Dir& D, bool of_p, int v, int& dim) const {
+    const PolytopeData& S = of_p ? P_ : Q_;
+    const VertexAdjacency& A = of_p ? AP_ : AQ_;
+    const int b = A.start[v], deg = A.start[v + 1] - b;
+    constexpr int kMaxLocal = 64;
+    char local[kMaxLocal];
+    std::vector<char> big(deg > kMaxLocal ? deg : 0);
+    char* tie = deg > kMaxLocal ? big.data() : local;
+    int ties = 0, one = -1;
+    for (int e = 0; e < deg; ++e) {
+      int w = A.nbr[b + e];
+      tie[e] = (of_p ? cmp_p(D, v, w) : cmp_q(D, v, w)) == 0;
+      if (tie[e]) ++ties, one = e;
+    }
+    dim = std::min(ties, 2);
+    if (ties == 0) return {FeatureKind3::Vertex, v};
+    if (ties >= 2)
+      for (int e = 0; e < deg; ++e)
+        if (tie[e] && tie[(e + 1) % deg]) return {FeatureKind3::Face, A.he[b + e] / 3};
+    dim = 1;  // two tied neighbours always span a triangle on a strictly convex polytope
+    int h = A.he[b + one];
+    return {FeatureKind3::Edge, std::min(h, S.levels[0].twin[h])};
+  }
+
+  Depth3 result(int b, const Eigen::Matrix3d& Rp, const Vec3& tp) const {
+    const Facet& B = F_[b];
+    Depth3 r;
+    r.kind = DepthKind::Minimum;
+    r.overlapping = true;
+    r.candidates = iters_;
+    r.depth = r.lower_bound = r.upper_bound = B.dist;
+    const Vec3 u(B.unit[0], B.unit[1], B.unit[2]);
+    Vec3 move = B.dist * u;
+
+    // Witness: the foot of 0 on the plane lies in K's facet region there (B is nearest), so
+    // walk over coplanar neighbours to the triangle containing it; barycentric weights of the
+    // pairs give a point of P and a point of Q'.
+    int f = b;
+    std::array<double, 3> lam{1, 0, 0}, best_lam = lam;
+    double best_min = -std::numeric_limits<double>::infinity();
+    int best_f = b;
+    for (int step = 0; step < 64; ++step) {
+      const Facet& T = F_[f];
+      Vec3 a = approx(T.v[0]), bb = approx(T.v[1]), c = approx(T.v[2]);
+      Vec3 n = (bb - a).cross(c - a);
+      double den = n.squaredNorm();
+      lam[0] = (bb - move).cross(c - move).dot(n) / den;
+      lam[1] = (c - move).cross(a - move).dot(n) / den;
+      lam[2] = 1 - lam[0] - lam[1];
+      int worst = static_cast<int>(std::min_element(lam.begin(), lam.end()) - lam.begin());
+      if (lam[worst] > best_min) best_min = lam[worst], best_lam = lam, best_f = f;
+      if (lam[worst] >= 0) break;
+      int g = T.nb[(worst + 1) % 3];  // across the edge opposite the most negative weight
+      if (!coplanar(g, b)) break;
+      f = g;
+    }
+    double sum = 0;
+    for (double& l : best_lam) sum += (l = std::max(l, 0.0));
+    Vec3 wp = Vec3::Zero(), wq = Vec3::Zero();
+    const Vec3 t(thi_[0] + tlo_[0], thi_[1] + tlo_[1], thi_[2] + tlo_[2]);
+    for (int k = 0; k < 3; ++k) {
+      const Vert& X = V_[F_[best_f].v[k]];
+      wp += best_lam[k] / sum * P_.v[X.i];
+      wq += best_lam[k] / sum * (R_ * Q_.v[X.j] + t);
+    }
+    wq += move;
+    r.translation = Rp * move;
+    r.normal = r.facet_normal = Rp * u;
+    r.witness_p = Rp * wp + tp;
+    r.witness_q = Rp * wq + tp;
+
+    Dir D = facet_dir(b);
+    int dp = 0, dq = 0;
+    Feature3 fp = support_feature(D, true, V_[B.v[0]].i, dp);
+    Feature3 fq = support_feature(D, false, V_[B.v[0]].j, dq);
+    if (dp == 2) {
+      r.feature_p = fp, r.feature_q = {FeatureKind3::Vertex, V_[B.v[0]].j};
+    } else if (dq == 2) {
+      r.feature_p = {FeatureKind3::Vertex, V_[B.v[0]].i}, r.feature_q = fq;
+    } else {
+      r.feature_p = fp, r.feature_q = fq;
+    }
+    return r;
+  }
+};
+
+}  // namespace
+
+Depth3 minimum_depth_expand(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,
+                            const Eigen::Matrix3d& Rp, const Vec3& tp) {
+  thread_local Workspace ws;
+  return Expander(P, Q, rel, ws).run(Rp, tp);
+}
+
+}  // namespace pendepth::convex3

@@ -1,0 +1,85 @@
+// Vertex adjacency of a ConvexPolytope in flat arrays (CSR), built once per shape on first use:
+// the neighbours of v in counter-clockwise order (seen from outside) with their half-edge ids
+// and the rounded edge vectors, coordinate extents, and a cube map of seed
+// vertices for support queries. Hill-climbing support queries (minimum_expand.cpp) scan these
+// arrays instead of chasing half-edge twins, and start from the cube map when they have no
+// better warm start. O(n) time and memory (the cube map has about n cells).
+#include "convex3/polytope_data.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pendepth::convex3 {
+
+namespace {
+
+// Rounded steepest ascent of u·v from v (approximate; strictly increasing, so it terminates).
+int climb_rounded(const PolytopeData& d, const VertexAdjacency& a, const Vec3& u, int v) {
+  double bv = u.dot(d.v[v]);
+  for (;;) {
+    int next = -1;
+    for (int e = a.start[v]; e < a.start[v + 1]; ++e)
+      if (double s = u.dot(d.v[a.nbr[e]]); s > bv) bv = s, next = a.nbr[e];
+    if (next < 0) return v;
+    v = next;
+  }
+}
+
+Vec3 cell_direction(int face, int i, int j, int k) {
+  int ax = face / 2;
+  Vec3 u = Vec3::Zero();
+  u[ax] = face % 2 ? -1 : 1;
+  u[(ax + 1) % 3] = -1 + (2 * i + 1) / double(k);
+  u[(ax + 2) % 3] = -1 + (2 * j + 1) / double(k);
+  return u;
+}
+
+}  // namespace
+
+const VertexAdjacency& vertex_adjacency(const PolytopeData& d) {
+  std::call_once(d.adjacency_cache.once, [&] {
+    VertexAdjacency& a = d.adjacency_cache.value;
+    const DKLevel& L = d.levels[0];
+    const int n = static_cast<int>(d.v.size());
+    a.start.assign(n + 1, 0);
+    for (auto* vec : {&a.nbr, &a.he}) vec->clear(), vec->reserve(L.fv.size());
+    for (auto* vec : {&a.dx, &a.dy, &a.dz}) vec->clear(), vec->reserve(L.fv.size());
+    for (int v = 0; v < n; ++v) {
+      a.start[v] = static_cast<int>(a.nbr.size());
+      int h0 = d.vertex_he[v], h = h0;
+      do {
+        int w = L.target(h);
+        a.nbr.push_back(w);
+        a.he.push_back(h);
+        a.dx.push_back(d.v[w].x() - d.v[v].x());
+        a.dy.push_back(d.v[w].y() - d.v[v].y());
+        a.dz.push_back(d.v[w].z() - d.v[v].z());
+        h = L.ccw(h);
+      } while (h != h0);
+    }
+    a.start[n] = static_cast<int>(a.nbr.size());
+    Vec3 lo = d.v[0], hi = d.v[0], sum = Vec3::Zero();
+    for (const Vec3& p : d.v) {
+      lo = lo.cwiseMin(p);
+      hi = hi.cwiseMax(p);
+      sum += p;
+    }
+    a.extent = hi - lo;
+    a.centroid = sum / double(n);
+    // About n cells: a seed is then typically at most one or two edges from the maximiser.
+    a.cube_k = std::clamp(static_cast<int>(std::ceil(std::sqrt(n / 6.0))), 1, 64);
+    const int k = a.cube_k;
+    a.cube.assign(6 * k * k, 0);
+    int v = 0;
+    for (int face = 0; face < 6; ++face)
+      for (int i = 0; i < k; ++i)
+        for (int jj = 0; jj < k; ++jj) {
+          int j = i % 2 ? k - 1 - jj : jj;  // boustrophedon: consecutive cells are neighbours
+          v = climb_rounded(d, a, cell_direction(face, i, j, k), v);
+          a.cube[(face * k + i) * k + j] = v;
+        }
+  });
+  return d.adjacency_cache.value;
+}
+
+}  // namespace pendepth::convex3
