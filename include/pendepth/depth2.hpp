@@ -30,8 +30,9 @@ struct Feature {
 
 enum class DepthKind { Minimum, Directional, Separation };
 
-/// Result of a 2D depth query. When the interiors do not overlap: depth 0, translation 0,
-/// normal 0, overlapping false, features None, witnesses 0. `overlapping` is decided exactly; a
+/// Result of a 2D depth query. When the interiors do not overlap (and, for a separation query,
+/// the ray never meets P): depth 0, translation 0, normal 0, overlapping false, features None,
+/// witnesses 0. `overlapping` is decided exactly; a
 /// depth below the double range (placements at subnormal scale) is reported as overlapping with
 /// depth 0 and a valid unit normal.
 struct Depth2 {
@@ -52,9 +53,11 @@ struct Depth2 {
 /// Throws InvalidInput if d is zero or non-finite, or t is non-finite.
 Depth2 directional_depth(const ConvexPolygon& P, const ConvexPolygon& Q, const Vec2& t, const Vec2& d);
 
-/// Complete separation along d (DHS §6): smallest s such that Q + t + s'·d̂ is interior-disjoint
-/// from P for all s' >= s. For two convex polygons this equals σ_d (M is convex, so the ray leaves
-/// M once); returned with kind Separation. O(log n + log m).
+/// Complete separation along d (DHS §6): smallest s >= 0 such that Q + t + s'·d̂ is
+/// interior-disjoint from P for every s' >= s. M is convex, so the ray meets int M in at most one
+/// interval and this is its end: equal to σ_d whenever the interiors overlap at t, and also
+/// positive when t ∉ int M but the ray enters M later (then `overlapping` is false and `depth` is
+/// the length of the move past P). Kind Separation. O(log n + log m).
 Depth2 separation_depth(const ConvexPolygon& P, const ConvexPolygon& Q, const Vec2& t, const Vec2& d);
 
 /// σ: the shortest separating translation, by merging the edges of P and −Q in slope order and

@@ -206,17 +206,11 @@ Vec2 normalized_scale(const Vec2& d) {
 }
 }  // namespace
 
-Depth2 directional_depth(const ConvexPolygon& P, const ConvexPolygon& Q, const Vec2& t, const Vec2& d_in) {
-  check_query(t, d_in);
-  const Vec2 d = normalized_scale(d_in);
-  const Side A{P, false}, B{Q, true};
-  const Chains ca = front_chains(A, d), cb = front_chains(B, d);
-  const Exit ex = find_exit(A, B, ca.forward, cb.forward, t, d);
-  if (!ex.crosses || ex.s_sign <= 0) return none(DepthKind::Directional);
-  // t must also lie strictly after the entry: the exit along −d, on the back chains.
-  const Exit en = find_exit(A, B, ca.backward, cb.backward, t, Vec2(-d));
-  if (!en.crosses || en.s_sign <= 0) return none(DepthKind::Directional);
+namespace {
 
+// The result of moving Q from t along d̂ to the exit point of `ex` (s > 0).
+Depth2 exit_result(const ConvexPolygon& P, const ConvexPolygon& Q, const Exit& ex, const Vec2& t, const Vec2& d,
+                   DepthKind kind, bool overlapping) {
   // s = |d| · cross(u − t, e) / cross(d, e), numerator and denominator accurate.
   const Vec2 e0 = ex.e0, e1 = ex.e1;
   double ratio = exact::accurate_ratio(
@@ -224,9 +218,9 @@ Depth2 directional_depth(const ConvexPolygon& P, const ConvexPolygon& Q, const V
       [&](auto L) { return L(d.x()) * (L(e1.y()) - L(e0.y())) - L(d.y()) * (L(e1.x()) - L(e0.x())); });
   const double dn = std::sqrt(exact::accurate_value([&](auto L) { return L(d.x()) * L(d.x()) + L(d.y()) * L(d.y()); }));
   Depth2 r;
-  r.kind = DepthKind::Directional;
-  r.overlapping = true;
-  r.depth = ratio * dn;
+  r.kind = kind;
+  r.overlapping = overlapping;
+  r.depth = std::max(ratio * dn, 0.0);
   r.normal = d / dn;
   r.translation = r.depth * r.normal;
   const Vec2 f = t + r.translation;
@@ -246,10 +240,31 @@ Depth2 directional_depth(const ConvexPolygon& P, const ConvexPolygon& Q, const V
   return r;
 }
 
-Depth2 separation_depth(const ConvexPolygon& P, const ConvexPolygon& Q, const Vec2& t, const Vec2& d) {
-  Depth2 r = directional_depth(P, Q, t, d);
-  r.kind = DepthKind::Separation;
-  return r;
+}  // namespace
+
+Depth2 directional_depth(const ConvexPolygon& P, const ConvexPolygon& Q, const Vec2& t, const Vec2& d_in) {
+  check_query(t, d_in);
+  const Vec2 d = normalized_scale(d_in);
+  const Side A{P, false}, B{Q, true};
+  const Chains ca = front_chains(A, d), cb = front_chains(B, d);
+  const Exit ex = find_exit(A, B, ca.forward, cb.forward, t, d);
+  if (!ex.crosses || ex.s_sign <= 0) return none(DepthKind::Directional);
+  // t must also lie strictly after the entry: the exit along −d, on the back chains.
+  const Exit en = find_exit(A, B, ca.backward, cb.backward, t, Vec2(-d));
+  if (!en.crosses || en.s_sign <= 0) return none(DepthKind::Directional);
+  return exit_result(P, Q, ex, t, d, DepthKind::Directional, true);
+}
+
+Depth2 separation_depth(const ConvexPolygon& P, const ConvexPolygon& Q, const Vec2& t, const Vec2& d_in) {
+  check_query(t, d_in);
+  const Vec2 d = normalized_scale(d_in);
+  const Side A{P, false}, B{Q, true};
+  const Chains ca = front_chains(A, d), cb = front_chains(B, d);
+  // M is convex, so the ray meets int M in one interval: Q is free for good once past its end.
+  const Exit ex = find_exit(A, B, ca.forward, cb.forward, t, d);
+  if (!ex.crosses || ex.s_sign <= 0) return none(DepthKind::Separation);
+  const Exit en = find_exit(A, B, ca.backward, cb.backward, t, Vec2(-d));
+  return exit_result(P, Q, ex, t, d, DepthKind::Separation, en.crosses && en.s_sign > 0);
 }
 
 }  // namespace pendepth

@@ -20,6 +20,7 @@ MinkowskiSum::MinkowskiSum(const ConvexPolygon& P, const ConvexPolygon& Q)
   p_ = own_p_;
   q_ = own_q_;
   merge(Q.top());
+  build_fan();
 }
 
 void MinkowskiSum::assign_view(const ConvexPolygon& P, const ConvexPolygon& Q) {
@@ -28,6 +29,12 @@ void MinkowskiSum::assign_view(const ConvexPolygon& P, const ConvexPolygon& Q) {
   p_ = P.vertices();
   q_ = Q.vertices();
   merge(Q.top());
+  build_fan();
+}
+
+void MinkowskiSum::build_fan() {
+  fan_.clear();
+  for (std::size_t k = 0; k < edges_.size(); k += kFanBlock) fan_.push_back({p_[edges_[k].ia], q_[edges_[k].iq]});
 }
 
 void MinkowskiSum::merge(std::size_t top) {
@@ -127,22 +134,40 @@ void MinkowskiSum::distance_estimate(std::size_t k, const Vec2& t, double& value
 }
 
 bool MinkowskiSum::contains_interior(const Vec2& t) const {
-  // Fan from vertex 0 = P[ia0] − Q[iq0]. Orientation of (v0, vk, t) with symbolic vertices.
+  // Fan from vertex 0 = P[ia0] − Q[iq0]: sign of cross(v_k − v_0, t − v_0), symbolic vertices.
   const std::size_t N = edges_.size();
-  auto orient = [&](std::size_t k) {  // sign of cross(v_k − v_0, t − v_0)
-    const MEdge &e0 = edges_[0], &ek = edges_[k % N];
-    const Vec2 &a0 = p_[e0.ia], &q0 = q_[e0.iq], &ak = p_[ek.ia], &qk = q_[ek.iq];
-    return exact::exact_sign([&](auto L) {
-      auto ux = L(ak.x()) - L(qk.x()) - L(a0.x()) + L(q0.x());
-      auto uy = L(ak.y()) - L(qk.y()) - L(a0.y()) + L(q0.y());
-      auto wx = L(t.x()) - L(a0.x()) + L(q0.x());
-      auto wy = L(t.y()) - L(a0.y()) + L(q0.y());
-      return ux * wy - uy * wx;
+  const Vec2 &a0 = p_[edges_[0].ia], &q0 = q_[edges_[0].iq];
+  const double wx = t.x() - a0.x() + q0.x(), wy = t.y() - a0.y() + q0.y();
+  const double Swx = std::abs(t.x()) + std::abs(a0.x()) + std::abs(q0.x());
+  const double Swy = std::abs(t.y()) + std::abs(a0.y()) + std::abs(q0.y());
+  auto orient_pq = [&](const Vec2& ak, const Vec2& qk) {
+    // Static filter: sums of 4 and 3 doubles, two products, one difference: error at most
+    // 8u·(Sux·Swy + Suy·Swx) with S the sums of absolute values of the terms.
+    const double ux = ak.x() - qk.x() - a0.x() + q0.x(), uy = ak.y() - qk.y() - a0.y() + q0.y();
+    const double Sux = std::abs(ak.x()) + std::abs(qk.x()) + std::abs(a0.x()) + std::abs(q0.x());
+    const double Suy = std::abs(ak.y()) + std::abs(qk.y()) + std::abs(a0.y()) + std::abs(q0.y());
+    const double bound = 8 * exact::kUnit * (Sux * Swy + Suy * Swx) + exact::kTiny;
+    return exact::exact_sign_filtered(ux * wy - uy * wx, bound, [&](auto L) {
+      auto vx = L(ak.x()) - L(qk.x()) - L(a0.x()) + L(q0.x());
+      auto vy = L(ak.y()) - L(qk.y()) - L(a0.y()) + L(q0.y());
+      return vx * (L(t.y()) - L(a0.y()) + L(q0.y())) - vy * (L(t.x()) - L(a0.x()) + L(q0.x()));
     });
   };
+  auto orient = [&](std::size_t k) {
+    const MEdge& ek = edges_[k % N];
+    return orient_pq(p_[ek.ia], q_[ek.iq]);
+  };
   if (orient(1) <= 0 || orient(N - 1) >= 0) return false;
-  // Last k in [1, N-1) with orient(k) > 0: t lies in the wedge (v0, v_k, v_{k+1}).
+  // Last k in [1, N-1) with orient(k) > 0: t lies in the wedge (v0, v_k, v_{k+1}). While the
+  // range is long, split at multiples of kFanBlock, whose vertices sit in the compact fan_
+  // array (cache-friendly on huge M); then finish in the edge array.
   std::size_t lo = 1, hi = N - 1;
+  while (hi - lo > 2 * kFanBlock) {
+    const std::size_t mid = (lo + hi) / 2 / kFanBlock * kFanBlock;  // in (lo, hi): range > 2 blocks
+    const auto& f = fan_[mid / kFanBlock];
+    if (orient_pq(f[0], f[1]) > 0) lo = mid;
+    else hi = mid;
+  }
   while (hi - lo > 1) {
     std::size_t mid = (lo + hi) / 2;
     if (orient(mid) > 0) lo = mid;

@@ -6,6 +6,7 @@
 
 #include <pendepth/depth2.hpp>
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -78,6 +79,9 @@ class MinkowskiSum {
 
  private:
   void merge(std::size_t top);
+  void build_fan();
+  static constexpr std::size_t kFanBlock = 64;
+  std::vector<std::array<Vec2, 2>> fan_;  // (P vertex, Q vertex) of M's vertices 64k
   std::vector<Vec2> own_p_, own_q_;  // storage when owning
   std::span<const Vec2> p_, q_;      // normal-form vertices of P and Q
   std::vector<MEdge> edges_;

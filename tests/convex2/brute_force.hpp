@@ -70,6 +70,26 @@ inline mpq_class exit_param(const std::vector<QPt>& M, const pendepth::Vec2& tv,
   return *best;
 }
 
+/// Complete separation / |d|: the end of the line's open interval in int M if the ray reaches it
+/// (end > 0), else 0 — for the line t + s·d, s ∈ ℝ, through convex M.
+inline mpq_class separation_param(const std::vector<QPt>& M, const pendepth::Vec2& tv, const pendepth::Vec2& dv) {
+  QPt t = lift(tv), d = lift(dv);
+  std::optional<mpq_class> entry, exit;
+  for (std::size_t k = 0; k < M.size(); ++k) {
+    QPt e = sub(M[(k + 1) % M.size()], M[k]);
+    mpq_class den = cross(d, e);
+    if (sgn(den) == 0) {
+      if (sgn(cross(e, sub(t, M[k]))) <= 0) return 0;  // the line runs outside or along this edge
+      continue;
+    }
+    mpq_class s = cross(sub(M[k], t), e) / den;
+    if (sgn(den) > 0) { if (!exit || s < *exit) exit = s; }
+    else if (!entry || s > *entry) entry = s;
+  }
+  if (!(*entry < *exit) || sgn(*exit) <= 0) return 0;
+  return *exit;
+}
+
 /// σ² exactly (0 if t ∉ int M).
 inline mpq_class min_depth_squared(const std::vector<QPt>& M, const pendepth::Vec2& tv) {
   if (!inside(M, tv)) return 0;

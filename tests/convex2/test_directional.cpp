@@ -9,6 +9,7 @@
 
 #include "convex2/brute_force.hpp"
 #include "convex2/random_shapes.hpp"
+#include "test_scale.hpp"
 
 using pendepth::ConvexPolygon;
 using pendepth::Vec2;
@@ -93,7 +94,7 @@ TEST(Directional, RandomPairsAgainstExactBruteForce) {
   std::mt19937_64 rng(20261121);
   double worst = 0;
   int checked = 0;
-  for (int trial = 0; trial < 1500; ++trial) {
+  for (int trial = 0; trial < pendepth_test::scaled(1500); ++trial) {
     auto [P, Q] = shapes::random_pair(rng, trial);
     auto M = brute::minkowski_difference(P, Q);
     for (int k = 0; k < 12; ++k) {
@@ -108,15 +109,31 @@ TEST(Directional, RandomPairsAgainstExactBruteForce) {
   std::printf("directional: %d queries, worst %.2f ulps\n", checked, worst);
 }
 
-TEST(Directional, SeparationEqualsDirectionalForConvexPairs) {
+TEST(Directional, SeparationAgainstExactBruteForce) {
+  // Equals σ_d whenever the interiors overlap; from outside it is the end of the ray's interval
+  // in int M (positive if the ray meets P later), 0 if the ray never meets int M.
   std::mt19937_64 rng(5);
-  for (int trial = 0; trial < 300; ++trial) {
+  int outside_positive = 0;
+  for (int trial = 0; trial < pendepth_test::scaled(1500); ++trial) {
     auto [P, Q] = shapes::random_pair(rng, trial);
     auto M = brute::minkowski_difference(P, Q);
-    Vec2 t = shapes::placement(rng, P, Q, M, trial), d = shapes::direction(rng, P, Q, trial);
-    auto a = pendepth::directional_depth(P, Q, t, d);
-    auto s = pendepth::separation_depth(P, Q, t, d);
-    ASSERT_EQ(a.depth, s.depth);
-    ASSERT_EQ(s.kind, pendepth::DepthKind::Separation);
+    for (int k = 0; k < 6; ++k) {
+      Vec2 t = shapes::placement(rng, P, Q, M, k), d = shapes::direction(rng, P, Q, k);
+      if (k == 5) t -= d / d.norm() * 3.0;  // often before the entry: the ray crosses M later
+      auto a = pendepth::directional_depth(P, Q, t, d);
+      auto s = pendepth::separation_depth(P, Q, t, d);
+      ASSERT_EQ(s.kind, pendepth::DepthKind::Separation);
+      ASSERT_EQ(s.overlapping, a.overlapping);
+      if (a.overlapping) ASSERT_EQ(s.depth, a.depth);
+      mpq_class want = brute::separation_param(M, t, d);
+      if (sgn(want) == 0) {
+        ASSERT_EQ(s.depth, 0.0) << "t=" << t.transpose() << " d=" << d.transpose();
+        continue;
+      }
+      if (!a.overlapping) ++outside_positive;
+      double w = want.get_d() * d.norm();
+      ASSERT_LE(brute::ulps(s.depth, w), 8) << s.depth << " vs " << w << " t=" << t.transpose() << " d=" << d.transpose();
+    }
   }
+  EXPECT_GT(outside_positive, 100);  // the from-outside case really is exercised
 }

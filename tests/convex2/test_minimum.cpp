@@ -8,6 +8,7 @@
 
 #include "convex2/brute_force.hpp"
 #include "convex2/random_shapes.hpp"
+#include "test_scale.hpp"
 
 using pendepth::ConvexPolygon;
 using pendepth::Vec2;
@@ -32,7 +33,7 @@ TEST(Minimum, RandomPairsAgainstExactBruteForce) {
   std::mt19937_64 rng(99);
   double worst = 0;
   int checked = 0, overlapping = 0;
-  for (int trial = 0; trial < 1500; ++trial) {
+  for (int trial = 0; trial < pendepth_test::scaled(1500); ++trial) {
     auto [P, Q] = shapes::random_pair(rng, trial);
     auto M = brute::minkowski_difference(P, Q);
     for (int k = 0; k < 8; ++k) {
@@ -67,7 +68,7 @@ TEST(Minimum, RandomPairsAgainstExactBruteForce) {
 
 TEST(Minimum, MinOverManyDirectionsApproachesSigma) {
   std::mt19937_64 rng(3);
-  for (int trial = 0; trial < 60; ++trial) {
+  for (int trial = 0; trial < pendepth_test::scaled(60); ++trial) {
     auto [P, Q] = shapes::random_pair(rng, trial);
     auto M = brute::minkowski_difference(P, Q);
     Vec2 t = shapes::placement(rng, P, Q, M, 3);
