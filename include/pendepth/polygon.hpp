@@ -61,4 +61,55 @@ class ConvexPolygon {
   std::string name_;
 };
 
+/// A simple polygon, possibly with holes (DESIGN.md §1): ring 0 is the outer boundary, ring k >= 1
+/// is hole k. Normal form: outer ring counter-clockwise, holes clockwise (so P's interior is on
+/// the left of every edge), a repeated closing vertex dropped. Each ring keeps its input vertex 0
+/// as vertex 0 (a reversed ring reads 0, n-1, ..., 1). Collinear pass-through vertices are KEPT
+/// (they are legitimate vertices of a simple polygon; the triangulation handles them).
+///
+/// Validation (throws InvalidInput naming `name`, ring k — 0 = outer, k = hole k — and input
+/// vertex/edge indices, edge i joining input vertices i and i+1 of its ring): non-finite
+/// coordinates, fewer than 3 distinct points, repeated vertices, zero area (all collinear),
+/// self-intersecting ring (edges i and j touch or cross, or adjacent edges fold back), two rings
+/// touching or crossing (any common point is rejected: holes must lie strictly inside the outer
+/// ring and be pairwise disjoint as closed sets), a hole outside the outer ring, a hole inside
+/// another hole. All decisions are exact predicates. Cost: O(N log N + K) with K the number of
+/// edge pairs whose bounding boxes overlap (sort-and-sweep on x; O(N^2) in the worst case),
+/// plus O(h·N) point-in-ring tests for the containment of h holes.
+class Polygon {
+ public:
+  explicit Polygon(const std::vector<std::vector<Vec2>>& rings, std::string_view name = "polygon");
+  /// A polygon without holes.
+  static Polygon simple(std::span<const Vec2> outer, std::string_view name = "polygon");
+
+  std::size_t ring_count() const { return offset_.size() - 1; }
+  std::size_t hole_count() const { return ring_count() - 1; }
+  /// Normalised ring k (0 = outer, CCW; k >= 1 holes, CW).
+  std::span<const Vec2> ring(std::size_t k) const {
+    return std::span<const Vec2>(v_).subspan(offset_[k], offset_[k + 1] - offset_[k]);
+  }
+  /// All vertices, rings concatenated: global vertex index g = ring_offset(k) + i.
+  std::span<const Vec2> vertices() const { return v_; }
+  std::size_t size() const { return v_.size(); }
+  std::size_t ring_offset(std::size_t k) const { return offset_[k]; }
+  std::size_t ring_of(std::size_t g) const;
+  /// The next vertex of g's ring in normal-form order: edge g = (g, next(g)) has P's interior
+  /// on its left. Global edge index g names that edge.
+  std::size_t next(std::size_t g) const {
+    return g + 1 == offset_[ring_of(g) + 1] ? offset_[ring_of(g)] : g + 1;
+  }
+  /// Index of global vertex g in its ring as given (closing vertex dropped).
+  std::size_t input_index(std::size_t g) const { return input_index_[g]; }
+  /// Area (outer minus holes), computed exactly and rounded once.
+  double area() const { return area_; }
+  const std::string& name() const { return name_; }
+
+ private:
+  Polygon() = default;
+  std::vector<Vec2> v_;
+  std::vector<std::size_t> offset_, input_index_;
+  double area_ = 0;
+  std::string name_;
+};
+
 }  // namespace pendepth

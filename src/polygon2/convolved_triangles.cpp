@@ -1,0 +1,217 @@
+// Convolved triangles R_i = T_i ⊕ (−Q), implicit (DHS §4.1 Step 2); see the header for the
+// representation. Build O(N log N + N log m); every query on one R_i is O(log m) exact predicates.
+#include "polygon2/convolved_triangles.hpp"
+
+#include <algorithm>
+
+#include "geometry/exact.hpp"
+
+namespace pendepth::polygon2 {
+
+using exact::exact_sign;
+using predicates::compare_angle;
+
+namespace {
+
+const Vec2 kZero(0, 0);
+
+// Exact sign of orient(a1 + b1, a2 + b2, t).
+int orient_sums(const Vec2& a1, const Vec2& b1, const Vec2& a2, const Vec2& b2, const Vec2& t) {
+  return exact_sign([&](auto L) {
+    auto ux = L(a2.x()) + L(b2.x()) - L(a1.x()) - L(b1.x()), uy = L(a2.y()) + L(b2.y()) - L(a1.y()) - L(b1.y());
+    auto wx = L(t.x()) - L(a1.x()) - L(b1.x()), wy = L(t.y()) - L(a1.y()) - L(b1.y());
+    return ux * wy - uy * wx;
+  });
+}
+
+// Exact sign of X(a + b) = cross(d, a + b − t).
+int side_of_line(const Vec2& a, const Vec2& b, const Vec2& t, const Vec2& d) {
+  return exact_sign([&](auto L) {
+    return L(d.x()) * (L(a.y()) + L(b.y()) - L(t.y())) - L(d.y()) * (L(a.x()) + L(b.x()) - L(t.x()));
+  });
+}
+
+template <class Lift>
+auto cut_num(const Cut& c, const Vec2& t, Lift L) {
+  return (L(c.pt.x()) + L(c.pb.x()) - L(t.x())) * (L(c.e1.y()) - L(c.e0.y())) -
+         (L(c.pt.y()) + L(c.pb.y()) - L(t.y())) * (L(c.e1.x()) - L(c.e0.x()));
+}
+template <class Lift>
+auto cut_den(const Cut& c, const Vec2& d, Lift L) {
+  return L(d.x()) * (L(c.e1.y()) - L(c.e0.y())) - L(d.y()) * (L(c.e1.x()) - L(c.e0.x()));
+}
+
+}  // namespace
+
+int cut_sign(const Cut& c, const Vec2& t, const Vec2& d) {
+  int n = exact_sign([&](auto L) { return cut_num(c, t, L); });
+  int s = exact_sign([&](auto L) { return cut_den(c, d, L); });
+  return n * s;
+}
+
+int compare_cuts(const Cut& a, const Cut& b, const Vec2& t, const Vec2& d) {
+  int sa = exact_sign([&](auto L) { return cut_den(a, d, L); });
+  int sb = exact_sign([&](auto L) { return cut_den(b, d, L); });
+  int s = exact_sign([&](auto L) { return cut_num(a, t, L) * cut_den(b, d, L) - cut_num(b, t, L) * cut_den(a, d, L); });
+  return s * sa * sb;
+}
+
+double cut_value(const Cut& c, const Vec2& t, const Vec2& d) {
+  return exact::accurate_ratio([&](auto L) { return cut_num(c, t, L); }, [&](auto L) { return cut_den(c, d, L); });
+}
+
+ConvolvedTriangles::ConvolvedTriangles(const Polygon& P, const ConvexPolygon& Q) {
+  const std::size_t m = Q.size();
+  q_top_ = Q.top();
+  b_.resize(m);
+  for (std::size_t j = 0; j < m; ++j) b_[j] = -Q[(q_top_ + j) % m];
+  const auto V = P.vertices();
+  for (const TriangleIds& ids : triangulate(P)) {
+    Tri T;
+    int low = 0;
+    for (int j = 1; j < 3; ++j) {
+      const Vec2 &a = V[ids[j]], &l = V[ids[low]];
+      if (a.y() < l.y() || (a.y() == l.y() && a.x() < l.x())) low = j;
+    }
+    for (int j = 0; j < 3; ++j) {
+      T.id[j] = ids[(low + j) % 3];
+      T.v[j] = V[T.id[j]];
+    }
+    for (int j = 0; j < 3; ++j) {
+      const Vec2 &a = T.v[j], &c = T.v[(j + 1) % 3];
+      // First B edge whose angle is >= angle(τ_j): angles increase along B's edges.
+      std::size_t lo = 0, hi = m;
+      while (lo < hi) {
+        std::size_t mid = (lo + hi) / 2;
+        if (compare_angle(b_[mid], b_[(mid + 1) % m], a, c) >= 0) hi = mid;
+        else lo = mid + 1;
+      }
+      T.c[j] = static_cast<std::uint32_t>(lo);
+    }
+    tri_.push_back(T);
+  }
+}
+
+void ConvolvedTriangles::vertex(std::size_t i, std::size_t k, int& slot, std::size_t& bj) const {
+  const Tri& T = tri_[i];
+  k %= vertex_count();
+  int a = 0;
+  while (a < 3 && a + T.c[a] < k) ++a;
+  slot = a % 3;
+  bj = (k - a) % b_.size();
+}
+
+Cut ConvolvedTriangles::edge(std::size_t i, std::size_t k) const {
+  const Tri& T = tri_[i];
+  const std::size_t m = b_.size();
+  k %= vertex_count();
+  int slot;
+  std::size_t bj;
+  vertex(i, k, slot, bj);
+  Cut c;
+  c.tri = static_cast<std::uint32_t>(i);
+  c.pt = T.v[slot];
+  c.pb = b_[bj];
+  c.b = static_cast<std::uint32_t>(bj);
+  const int a = [&] { int x = 0; while (x < 3 && x + T.c[x] < k) ++x; return x; }();
+  if (a < 3 && a + T.c[a] == k) {  // the triangle edge τ_a
+    c.e0 = T.v[a];
+    c.e1 = T.v[(a + 1) % 3];
+    c.p_from = T.id[a];
+    c.p_to = T.id[(a + 1) % 3];
+    c.b_edge = false;
+  } else {
+    c.e0 = b_[bj];
+    c.e1 = b_[(bj + 1) % m];
+    c.p_from = c.p_to = T.id[slot];
+    c.b_edge = true;
+  }
+  return c;
+}
+
+// Number of edges of R (triangle's and B's) whose angle is < angle(x) (<= when inclusive).
+std::size_t ConvolvedTriangles::count_below(const Tri& T, const Vec2& x, bool inclusive) const {
+  const std::size_t m = b_.size();
+  auto below = [&](const Vec2& e0, const Vec2& e1) {
+    int s = compare_angle(e0, e1, kZero, x);
+    return s < 0 || (inclusive && s == 0);
+  };
+  std::size_t n = 0;
+  for (int j = 0; j < 3; ++j) n += below(T.v[j], T.v[(j + 1) % 3]);
+  std::size_t lo = 0, hi = m;
+  while (lo < hi) {
+    std::size_t mid = (lo + hi) / 2;
+    if (below(b_[mid], b_[(mid + 1) % m])) lo = mid + 1;
+    else hi = mid;
+  }
+  return n + lo;
+}
+
+bool ConvolvedTriangles::contains_interior(std::size_t i, const Vec2& t) const {
+  const Tri& T = tri_[i];
+  const std::size_t K = vertex_count();
+  auto pt = [&](std::size_t k, Vec2& a, Vec2& b) {
+    int slot;
+    std::size_t bj;
+    vertex(i, k, slot, bj);
+    a = T.v[slot];
+    b = b_[bj];
+  };
+  Vec2 a0, b0, a, b;
+  pt(0, a0, b0);
+  auto f = [&](std::size_t k) {  // t strictly left of the ray v_0 -> v_k
+    pt(k, a, b);
+    return orient_sums(a0, b0, a, b, t);
+  };
+  if (f(1) <= 0 || f(K - 1) >= 0) return false;
+  // Last k in [1, K-2] with f(k) > 0 (monotone: true then false).
+  std::size_t lo = 1, hi = K - 1;  // f(lo) > 0, f(hi) <= 0
+  while (hi - lo > 1) {
+    std::size_t mid = (lo + hi) / 2;
+    if (f(mid) > 0) lo = mid;
+    else hi = mid;
+  }
+  Vec2 a1, b1, a2, b2;
+  pt(lo, a1, b1);
+  pt(lo + 1, a2, b2);
+  return orient_sums(a1, b1, a2, b2, t) > 0;
+}
+
+bool ConvolvedTriangles::line_interval(std::size_t i, const Vec2& t, const Vec2& d, Cut& entry, Cut& exit) const {
+  const Tri& T = tri_[i];
+  const std::size_t K = vertex_count();
+  const Vec2 nd = -d;
+  // Front edges (cross(d, e) > 0) have angles in (θ, θ + π): vertices fs .. fe (cyclic); back
+  // edges vertices bs .. be. X(v) = cross(d, v − t) increases along the front chain from its
+  // minimum at fs to its maximum at fe, and decreases along the back chain.
+  const std::size_t fs = count_below(T, d, true) % K, be = count_below(T, d, false) % K;
+  const std::size_t bs = count_below(T, nd, true) % K, fe = count_below(T, nd, false) % K;
+  auto X = [&](std::size_t k) {
+    int slot;
+    std::size_t bj;
+    vertex(i, k, slot, bj);
+    return side_of_line(T.v[slot], b_[bj], t, d);
+  };
+  if (X(fs) >= 0 || X(fe) <= 0) return false;
+  const std::size_t nf = (fe + K - fs) % K, nb = (be + K - bs) % K;
+  // Exit: last offset o in [0, nf) with X(v_{fs+o}) <= 0.
+  std::size_t lo = 0, hi = nf;  // X(fs + lo) < 0, X(fs + hi) > 0
+  while (hi - lo > 1) {
+    std::size_t mid = (lo + hi) / 2;
+    if (X((fs + mid) % K) <= 0) lo = mid;
+    else hi = mid;
+  }
+  exit = edge(i, (fs + lo) % K);
+  // Entry: last offset o in [0, nb) with X(v_{bs+o}) >= 0.
+  lo = 0;
+  hi = nb;  // X(bs + lo) > 0, X(bs + hi) < 0
+  while (hi - lo > 1) {
+    std::size_t mid = (lo + hi) / 2;
+    if (X((bs + mid) % K) >= 0) lo = mid;
+    else hi = mid;
+  }
+  entry = edge(i, (bs + lo) % K);
+  return true;
+}
+
+}  // namespace pendepth::polygon2

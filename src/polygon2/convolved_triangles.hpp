@@ -1,0 +1,77 @@
+// Private: the convolved triangles R_i = T_i ⊕ (−Q) of a triangulated polygon, kept implicit
+// (DHS §4.1 Step 2, "Implicit Representation of the Convolved Triangles").
+//
+// B = −Q in normal form (b_0 lowest-leftmost, CCW, edge angles strictly increasing in [0, 2π)).
+// Each triangle T (normal form v_0 lowest-leftmost, CCW) stores c_j = number of B edges whose
+// angle is strictly smaller than that of its edge τ_j = v_{j+1} − v_j (three binary searches,
+// O(log m)). The boundary of R = T ⊕ B is the merge of the three τ_j and the m edges of B in angle
+// order (ties: τ first): τ_j sits at position j + c_j, and vertex k (k < m + 3) is
+// v_α + b_{k−α}, α = #{j : j + c_j < k}. So any vertex or edge of R is available in O(1), and every
+// point/line question on R is a binary search with exact predicates on the input doubles.
+#pragma once
+
+#include <pendepth/polygon.hpp>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "polygon2/triangulation.hpp"
+
+namespace pendepth::polygon2 {
+
+/// The line of one edge of some R_i, exactly: it passes through pt + pb (pt a vertex of P, pb a
+/// vertex of B) with direction e1 − e0 (a triangle edge, or an edge of B). The ray t + λ·d meets it
+/// at λ = cross(pt + pb − t, e1 − e0) / cross(d, e1 − e0).
+struct Cut {
+  Vec2 pt, pb, e0, e1;
+  std::uint32_t tri = 0;   ///< triangle index
+  std::uint32_t p_from = 0, p_to = 0;  ///< global P vertices: the triangle edge (P side) or p_from = p_to = the fixed vertex (B side)
+  std::uint32_t b = 0;     ///< B vertex index of pb; for a B edge, the edge b → b+1
+  bool b_edge = false;     ///< true: edge of −Q translated by a P vertex; false: triangle edge translated by a B vertex
+};
+
+/// Exact sign of λ(c) for the ray t + λ·d (d ≠ 0; c's line not parallel to d).
+int cut_sign(const Cut& c, const Vec2& t, const Vec2& d);
+/// Exact comparison of λ(a) and λ(b): -1, 0, +1.
+int compare_cuts(const Cut& a, const Cut& b, const Vec2& t, const Vec2& d);
+/// λ(c) to a few ulps.
+double cut_value(const Cut& c, const Vec2& t, const Vec2& d);
+
+class ConvolvedTriangles {
+ public:
+  /// Triangulates P and builds the implicit R_i. O(N log N + N log m).
+  ConvolvedTriangles(const Polygon& P, const ConvexPolygon& Q);
+
+  std::size_t size() const { return tri_.size(); }
+  /// Vertices of B = −Q: b_j = −Q[(Q.top() + j) mod m].
+  const std::vector<Vec2>& B() const { return b_; }
+  std::size_t q_index(std::size_t j) const { return (q_top_ + j) % b_.size(); }
+  /// Triangle i in normal form: global P vertex ids, v_0 lowest-leftmost, CCW.
+  const TriangleIds& triangle(std::size_t i) const { return tri_[i].id; }
+  /// Number of vertices (= edges) of R_i: m + 3.
+  std::size_t vertex_count() const { return b_.size() + 3; }
+  /// Vertex k of R_i as (triangle vertex slot 0..2, B index): its point is v_slot + b_index.
+  void vertex(std::size_t i, std::size_t k, int& slot, std::size_t& bj) const;
+  /// The line of edge k of R_i (from vertex k to k+1).
+  Cut edge(std::size_t i, std::size_t k) const;
+
+  /// Exact: is t in the interior of R_i? O(log m).
+  bool contains_interior(std::size_t i, const Vec2& t) const;
+  /// The open interval of λ where t + λ·d lies in int R_i: entry and exit cuts. Returns false
+  /// when the line misses int R_i (including lines touching R_i only along its boundary). O(log m).
+  bool line_interval(std::size_t i, const Vec2& t, const Vec2& d, Cut& entry, Cut& exit) const;
+
+ private:
+  struct Tri {
+    TriangleIds id;
+    std::array<Vec2, 3> v;
+    std::array<std::uint32_t, 3> c;
+  };
+  std::size_t count_below(const Tri& T, const Vec2& x, bool inclusive) const;
+  std::vector<Tri> tri_;
+  std::vector<Vec2> b_;
+  std::size_t q_top_ = 0;
+};
+
+}  // namespace pendepth::polygon2
