@@ -5,6 +5,8 @@
 // without a heap allocation per query. Tests parse the output with nlohmann-json.
 #include <pendepth/io.hpp>
 
+#include "io/json_fields.hpp"
+
 #include <cassert>
 #include <charconv>
 #include <cmath>
@@ -23,14 +25,7 @@ void append_double(std::string& out, double x) {
 
 namespace {
 
-const char* kind_name(DepthKind k) {
-  switch (k) {
-    case DepthKind::Minimum: return "minimum";
-    case DepthKind::Directional: return "directional";
-    case DepthKind::Separation: return "separation";
-  }
-  return "minimum";
-}
+using detail::kind_name;
 
 void append_vec(std::string& out, const Vec2& v) {
   out += '[';
@@ -82,24 +77,9 @@ std::string vec_text(const Vec2& v) {
 }  // namespace
 
 void append_json(std::string& out, const Depth2& r, const ConvexPolygon& P, const ConvexPolygon& Q) {
-  out += "{\"depth\":";
-  append_double(out, r.depth);
-  out += ",\"translation\":";
-  append_vec(out, r.translation);
-  out += ",\"normal\":";
-  append_vec(out, r.normal);
-  out += ",\"witness_p\":";
-  append_vec(out, r.witness_p);
-  out += ",\"witness_q\":";
-  append_vec(out, r.witness_q);
-  out += ",\"kind\":\"";
-  out += kind_name(r.kind);
-  out += "\",\"overlapping\":";
-  out += r.overlapping ? "true" : "false";
-  out += ",\"feature_p\":";
-  append_feature(out, r.feature_p, P);
-  out += ",\"feature_q\":";
-  append_feature(out, r.feature_q, Q);
+  detail::append_result_fields(
+      out, r, P, Q, [](std::string& o, const auto& v) { append_vec(o, v); },
+      [](std::string& o, const auto& f, const auto& shape) { append_feature(o, f, shape); });
   out += '}';
 }
 

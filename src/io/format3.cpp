@@ -6,19 +6,14 @@
 // h = 3f + k runs from triangles()[f][k] to triangles()[f][(k + 1) % 3].
 #include <pendepth/io.hpp>
 
+#include "io/json_fields.hpp"
+
 #include <charconv>
 
 namespace pendepth::io {
 namespace {
 
-const char* kind_name(DepthKind k) {
-  switch (k) {
-    case DepthKind::Minimum: return "minimum";
-    case DepthKind::Directional: return "directional";
-    case DepthKind::Separation: return "separation";
-  }
-  return "minimum";
-}
+using detail::kind_name;
 
 void append_vec(std::string& out, const Vec3& v) {
   out += '[';
@@ -115,24 +110,9 @@ std::string vec_text(const Vec3& v) {
 }  // namespace
 
 void append_json(std::string& out, const Depth3& r, const ConvexPolytope& P, const ConvexPolytope& Q) {
-  out += "{\"depth\":";
-  append_double(out, r.depth);
-  out += ",\"translation\":";
-  append_vec(out, r.translation);
-  out += ",\"normal\":";
-  append_vec(out, r.normal);
-  out += ",\"witness_p\":";
-  append_vec(out, r.witness_p);
-  out += ",\"witness_q\":";
-  append_vec(out, r.witness_q);
-  out += ",\"kind\":\"";
-  out += kind_name(r.kind);
-  out += "\",\"overlapping\":";
-  out += r.overlapping ? "true" : "false";
-  out += ",\"feature_p\":";
-  append_feature(out, r.feature_p, P);
-  out += ",\"feature_q\":";
-  append_feature(out, r.feature_q, Q);
+  detail::append_result_fields(
+      out, r, P, Q, [](std::string& o, const auto& v) { append_vec(o, v); },
+      [](std::string& o, const auto& f, const auto& shape) { append_feature(o, f, shape); });
   out += ",\"lower_bound\":";
   append_double(out, r.lower_bound);
   out += ",\"upper_bound\":";

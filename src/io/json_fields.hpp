@@ -1,0 +1,46 @@
+// Private: the JSON fields shared by the 2D and 3D result writers (format.cpp, format3.cpp), so
+// both dimensions print the same keys in the same order with the same number formatting.
+#pragma once
+
+#include <pendepth/depth2.hpp>
+#include <pendepth/io.hpp>
+
+#include <string>
+
+namespace pendepth::io::detail {
+
+inline const char* kind_name(DepthKind k) {
+  switch (k) {
+    case DepthKind::Minimum: return "minimum";
+    case DepthKind::Directional: return "directional";
+    case DepthKind::Separation: return "separation";
+  }
+  return "minimum";
+}
+
+/// Writes `{"depth":…,…,"feature_q":…` (no closing brace: the caller may add fields).
+/// append_vec(out, v) and append_feature(out, feature, shape) format one dimension's types.
+template <class Result, class Shape, class AppendVec, class AppendFeature>
+void append_result_fields(std::string& out, const Result& r, const Shape& P, const Shape& Q, AppendVec&& append_vec,
+                          AppendFeature&& append_feature) {
+  out += "{\"depth\":";
+  append_double(out, r.depth);
+  out += ",\"translation\":";
+  append_vec(out, r.translation);
+  out += ",\"normal\":";
+  append_vec(out, r.normal);
+  out += ",\"witness_p\":";
+  append_vec(out, r.witness_p);
+  out += ",\"witness_q\":";
+  append_vec(out, r.witness_q);
+  out += ",\"kind\":\"";
+  out += kind_name(r.kind);
+  out += "\",\"overlapping\":";
+  out += r.overlapping ? "true" : "false";
+  out += ",\"feature_p\":";
+  append_feature(out, r.feature_p, P);
+  out += ",\"feature_q\":";
+  append_feature(out, r.feature_q, Q);
+}
+
+}  // namespace pendepth::io::detail
