@@ -25,8 +25,11 @@
 //    steps are constant×constant problems solved by brute force over the facet normals of the
 //    tiny Minkowski sum), instead of DHS's ray/line/plane queries (Lemmas 5.2/5.3) on an OUTER
 //    hierarchy. No outer hierarchy is needed, so none is built.
-//  * Lemma 5.4 (plane contact) is a fresh DK walk (extreme_query.cpp's O'Rourke walk, here
-//    with exact, symbolically perturbed functionals) from the top down to the level needed.
+//  * Lemma 5.4 (plane contact) is the DK walk of extreme_query.cpp (O'Rourke's L/R walk, here
+//    with exact, symbolically perturbed functionals) kept alive along the descent: continued
+//    one level (O(1)) while the separating plane is unchanged, restarted from the new support
+//    vertex in O(its degree) when the plane changed, walked afresh from the top (O(log)) only
+//    if that vertex has degree > 48. The paper's per-level O(log) queries would cost a log more.
 //  * DHS's choice of separating planes is not unique in degenerate positions (contacts on edges
 //    or vertices of M_i, ℓ parallel to faces, Phase 1 planes with the wrong orientation). We
 //    make the line generic by Simulation of Simplicity: o = δ·e_x + δ²·e_y + δ³·e_z and
@@ -38,9 +41,12 @@
 // Every combinatorial decision is the exact sign of a polynomial in the input doubles
 // (geometry/exact.hpp); formal quantities are compared coefficient by coefficient.
 //
-// Complexity per query: O(log n · log m) constant-size subproblems (as DHS Theorem 5.6), plus
-// O(log n · (log² n + log² m)) steps of DK walks, since every plane query is a fresh O(log)
-// walk (DHS charges O(log) per level with the outer hierarchy). Two descents (±d) decide overlap.
+// Complexity per query (n, m vertices; the hierarchies have O(log n), O(log m) levels): the main
+// descent has O(log n + log m) steps, each nesting two descents of O(log n + log m) steps with
+// O(1) work (a constant×constant subproblem, a walk step) — O(log n · log m) as in DHS Theorem
+// 5.6 for n ≈ m; a walk restart at a vertex of degree > 48 adds O(log) (worst case O(log³)).
+// Two descents (±d) decide overlap. The top levels (≤ 12 vertices unless the DK build stops
+// early) are solved by brute force, O(size²).
 #include "convex3/minkowski_facets.hpp"
 #include "convex3/polytope_data.hpp"
 #include "geometry/exact.hpp"
@@ -967,8 +973,6 @@ Depth3 directional_depth_dk(const ConvexPolytope& Pp, const Pose3& pose_p, const
   const Vec3 v = r.depth * dir;
   auto uf = cand_u(c, k, exact::LiftFl{});
   const Vec3 u = Vec3(uf[0].v, uf[1].v, uf[2].v).normalized();
-  const auto& LP = c.P.levels[0];
-  const auto& LQ = c.Q.levels[0];
   auto U = [&](auto L) { return cand_u(c, k, L); };
   Vec3 w;  // contact point in P's frame
   if (k.kind == Cand::FaceX) {
@@ -991,7 +995,6 @@ Depth3 directional_depth_dk(const ConvexPolytope& Pp, const Pose3& pose_p, const
     r.feature_p = hp >= 0 ? Feature3{FeatureKind3::Edge, hp} : Feature3{FeatureKind3::Face, face_in_plane(c, false, k.x, U)};
     r.feature_q = hq >= 0 ? Feature3{FeatureKind3::Edge, hq} : Feature3{FeatureKind3::Face, face_in_plane(c, true, k.y, U)};
   }
-  (void)LP, (void)LQ;
   r.translation = Rp * v;
   r.normal = Rp * dir;
   r.facet_normal = Rp * u;
