@@ -421,8 +421,15 @@ void canonical(int* t) {
 
 // Brute force over the facet normals of X ⊕ (−Y) (a superset is fine: each candidate carries its
 // exact support pair, so its half-space contains the sum). O(|X|·|Y|) candidates.
-State solve_small(Ctx& c, const Small& X, const Small& Y) {
+// With `apex` (local index 0 of the cap on side apex_q, caps store their apex first): only the
+// facets of X ⊕ (−Y) whose feature on that side contains the apex, and only the exit. Used when
+// the state is a hit and the cap came from beyond its plane: the new exit point lies in the
+// relative interior of a facet whose contact on the cap's side is strictly beyond the old plane,
+// i.e. in the open star of the apex, so that facet is among these candidates; every candidate
+// being a supporting plane, their minimum is the exit.
+State solve_small(Ctx& c, const Small& X, const Small& Y, const bool* apex_q = nullptr) {
   assert(!X.isq && Y.isq);
+  const bool rx = apex_q && !*apex_q, ry = apex_q && *apex_q;  // restricted to X's / Y's apex
   const auto& PV = c.P.v;
   const auto& QV = c.Q.v;
   Cand exit, entry;
@@ -440,48 +447,54 @@ State solve_small(Ctx& c, const Small& X, const Small& Y) {
   };
   // Faces of X: Y's support minimises u·y' = (Rᵀu)·q + const.
   for (std::size_t f = 0; f < X.tri.size(); ++f) {
+    if (rx && X.tri[f][0] != 0 && X.tri[f][1] != 0 && X.tri[f][2] != 0) continue;
     Cand k;
     k.kind = Cand::FaceX;
     for (int e = 0; e < 3; ++e) k.x[e] = X.id[X.tri[f][e]];
     canonical(k.x);
     k.xs = k.x[0];
     FV w = fl_rt(c.pose.R, X.tri_u[f]);
+    auto cmp = [&](int g, int b) {  // sign of u·(y'_g − y'_b)
+      int sg = cert(dot(w, fl_sub(QV[g], QV[b])));
+      return sg != 2 ? sg : exact_sign([&](auto L) { return dot(cand_u(c, k, L), c.qdiff(L, g, b)); });
+    };
     int best = Y.id[0];
-    for (int g : Y.id) {
-      if (g == best) continue;
-      int sg = cert(dot(w, fl_sub(QV[g], QV[best])));
-      if (sg == 2) sg = exact_sign([&](auto L) { return dot(cand_u(c, k, L), c.qdiff(L, g, best)); });
-      if (sg < 0) best = g;
-    }
+    for (int g : Y.id)
+      if (g != best && cmp(g, best) < 0) best = g;
+    if (ry && best != Y.id[0] && cmp(Y.id[0], best) != 0) continue;  // the apex is not a support
     k.ys = best;
     consider(k, X.tri_u[f]);
   }
   // Faces of Y: M's normal is −n(Q'), X's support maximises it.
   for (std::size_t f = 0; f < Y.tri.size(); ++f) {
+    if (ry && Y.tri[f][0] != 0 && Y.tri[f][1] != 0 && Y.tri[f][2] != 0) continue;
     Cand k;
     k.kind = Cand::FaceY;
     for (int e = 0; e < 3; ++e) k.y[e] = Y.id[Y.tri[f][e]];
     canonical(k.y);
     k.ys = k.y[0];
     const FV& u = Y.tri_u[f];
+    auto cmp = [&](int g, int b) {  // sign of u·(x_g − x_b)
+      int sg = cert(dot(u, fl_sub(PV[g], PV[b])));
+      return sg != 2 ? sg : exact_sign([&](auto L) { return dot(cand_u(c, k, L), c.pdiff(L, g, b)); });
+    };
     int best = X.id[0];
-    for (int g : X.id) {
-      if (g == best) continue;
-      int sg = cert(dot(u, fl_sub(PV[g], PV[best])));
-      if (sg == 2) sg = exact_sign([&](auto L) { return dot(cand_u(c, k, L), c.pdiff(L, g, best)); });
-      if (sg > 0) best = g;
-    }
+    for (int g : X.id)
+      if (g != best && cmp(g, best) > 0) best = g;
+    if (rx && best != X.id[0] && cmp(X.id[0], best) != 0) continue;  // the apex is not a support
     k.xs = best;
     consider(k, u);
   }
   // Edge pairs extreme for ±u (the test of minkowski_facets.cpp).
   for (std::size_t i = 0; i < X.edge.size(); ++i) {
     const auto& ex = X.edge[i];
+    if (rx && ex[0] != 0 && ex[1] != 0) continue;
     const auto& xv = X.edge_v[i];
     const auto& xd = X.edge_d[i];
     int pa = X.id[ex[0]], pb = X.id[ex[1]], pc = X.id[ex[2]], pe = X.id[ex[3]];
     for (std::size_t j = 0; j < Y.edge.size(); ++j) {
       const auto& ey = Y.edge[j];
+      if (ry && ey[0] != 0 && ey[1] != 0) continue;
       const auto& yv = Y.edge_v[j];
       const auto& yd = Y.edge_d[j];
       int qa = Y.id[ey[0]], qb = Y.id[ey[1]], qc = Y.id[ey[2]], qe = Y.id[ey[3]];
@@ -512,6 +525,12 @@ State solve_small(Ctx& c, const Small& X, const Small& Y) {
     }
   }
   State st;
+  if (apex_q) {
+    assert(has_exit);
+    st.hit = true;
+    st.cand = exit;
+    return st;
+  }
   assert(has_exit && has_entry);
   if (compare_t(c, entry, exit) <= 0) {
     st.hit = true;
@@ -848,15 +867,16 @@ struct Query {
       const bool hc = C != nullptr, hd = D != nullptr;
       if (!hc && !hd) continue;
       State r1, r2;
+      static constexpr bool kApexX = false, kApexY = true;
       if (hc) {
         Side cx{false, 0, C};
         Side y = Y.hier ? Side{true, Y.bottom + std::min(s - 1, ny), nullptr} : Y;
-        r1 = descend(cx, y);
+        r1 = !Y.hier && st.hit ? solve_small(c, *C, *Y.small, &kApexX) : descend(cx, y);
       }
       if (hd) {
         Side dy{false, 0, D};
         Side x = X.hier ? Side{true, X.bottom + std::min(s - 1, nx), nullptr} : X;
-        r2 = descend(x, dy);
+        r2 = !X.hier && st.hit ? solve_small(c, *X.small, *D, &kApexY) : descend(x, dy);
       }
       State next = combine(st, hc ? &r1 : nullptr, hd ? &r2 : nullptr);
       // Generic line: a cap beyond the plane always moves the exit or the tangent.
