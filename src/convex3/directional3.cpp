@@ -603,18 +603,27 @@ struct Walker {
     if (f.isq) u0 = fl_rt(f.c->pose.R, u0);
     for (auto& x : u0) x = Fl{double(f.flip), 0} * x;
     w0 = u0;
-    Vec3 w = Vec3::Zero();
-    for (int k = 0; k < f.ncoef() && w == Vec3::Zero(); ++k) {
-      auto u = f.U(exact::LiftFl{}, k);
-      Vec3 r(u[0].v, u[1].v, u[2].v);
-      if (std::abs(u[0].v) > u[0].e || std::abs(u[1].v) > u[1].e || std::abs(u[2].v) > u[2].e)
-        w = f.isq ? Vec3(f.c->pose.R.transpose() * r) : r;
+    // The key (F, X, Y) orders distinct vertices strictly iff some U_κ has a non-zero component
+    // on the axis left out: take the axis of a certified non-zero component of the first
+    // non-zero U_κ (in the local frame of this side).
+    int third = -1;
+    for (int k = 0; k < f.ncoef() && third < 0; ++k) {
+      FV u = f.U(exact::LiftFl{}, k);
+      if (f.isq) u = fl_rt(f.c->pose.R, u);
+      double best = 0;
+      for (int i = 0; i < 3; ++i)
+        if (std::abs(u[i].v) > u[i].e && std::abs(u[i].v) > best) best = std::abs(u[i].v), third = i;
     }
-    int a[3] = {0, 1, 2};
-    for (int s = 0; s < 3; ++s)
-      for (int t = s + 1; t < 3; ++t)
-        if (std::abs(w[a[t]]) < std::abs(w[a[s]])) std::swap(a[s], a[t]);
-    kx = a[0], ky = a[1];
+    for (int i = 0; i < 3 && third < 0; ++i)  // not certified by the filter: exact signs of U_0
+      if (exact_sign([&](auto L) {
+            auto u = f.U(L, 0);
+            if (!f.isq) return u[i];
+            return L(f.c->pose.R(0, i)) * u[0] + L(f.c->pose.R(1, i)) * u[1] + L(f.c->pose.R(2, i)) * u[2];
+          }) != 0)
+        third = i;
+    assert(third >= 0);
+    kx = third == 0 ? 1 : 0;
+    ky = third == 2 ? 1 : 2;
   }
   // Sign of F(p) − F(q) (the formal functional only).
   int fsign(int p, int q) const {
