@@ -25,8 +25,11 @@
 //    steps are constant×constant problems solved by brute force over the facet normals of the
 //    tiny Minkowski sum), instead of DHS's ray/line/plane queries (Lemmas 5.2/5.3) on an OUTER
 //    hierarchy. No outer hierarchy is needed, so none is built.
-//  * Lemma 5.4 (plane contact) is a fresh DK walk (extreme_query.cpp's O'Rourke walk, here
-//    with exact, symbolically perturbed functionals) from the top down to the level needed.
+//  * Lemma 5.4 (plane contact) is the DK walk of extreme_query.cpp (O'Rourke's L/R walk, here
+//    with exact, symbolically perturbed functionals) kept alive along the descent: continued
+//    one level (O(1)) while the separating plane is unchanged, restarted from the new support
+//    vertex in O(its degree) when the plane changed, walked afresh from the top (O(log)) only
+//    if that vertex has degree > 48. The paper's per-level O(log) queries would cost a log more.
 //  * DHS's choice of separating planes is not unique in degenerate positions (contacts on edges
 //    or vertices of M_i, ℓ parallel to faces, Phase 1 planes with the wrong orientation). We
 //    make the line generic by Simulation of Simplicity: o = δ·e_x + δ²·e_y + δ³·e_z and
@@ -38,9 +41,12 @@
 // Every combinatorial decision is the exact sign of a polynomial in the input doubles
 // (geometry/exact.hpp); formal quantities are compared coefficient by coefficient.
 //
-// Complexity per query: O(log n · log m) constant-size subproblems (as DHS Theorem 5.6), plus
-// O(log n · (log² n + log² m)) steps of DK walks, since every plane query is a fresh O(log)
-// walk (DHS charges O(log) per level with the outer hierarchy). Two descents (±d) decide overlap.
+// Complexity per query (n, m vertices; the hierarchies have O(log n), O(log m) levels): the main
+// descent has O(log n + log m) steps, each nesting two descents of O(log n + log m) steps with
+// O(1) work (a constant×constant subproblem, a walk step) — O(log n · log m) as in DHS Theorem
+// 5.6 for n ≈ m; a walk restart at a vertex of degree > 48 adds O(log) (worst case O(log³)).
+// Two descents (±d) decide overlap. The top levels (≤ 12 vertices unless the DK build stops
+// early) are solved by brute force, O(size²).
 #include "convex3/minkowski_facets.hpp"
 #include "convex3/polytope_data.hpp"
 #include "geometry/exact.hpp"
@@ -415,8 +421,15 @@ void canonical(int* t) {
 
 // Brute force over the facet normals of X ⊕ (−Y) (a superset is fine: each candidate carries its
 // exact support pair, so its half-space contains the sum). O(|X|·|Y|) candidates.
-State solve_small(Ctx& c, const Small& X, const Small& Y) {
+// With `apex` (local index 0 of the cap on side apex_q, caps store their apex first): only the
+// facets of X ⊕ (−Y) whose feature on that side contains the apex, and only the exit. Used when
+// the state is a hit and the cap came from beyond its plane: the new exit point lies in the
+// relative interior of a facet whose contact on the cap's side is strictly beyond the old plane,
+// i.e. in the open star of the apex, so that facet is among these candidates; every candidate
+// being a supporting plane, their minimum is the exit.
+State solve_small(Ctx& c, const Small& X, const Small& Y, const bool* apex_q = nullptr) {
   assert(!X.isq && Y.isq);
+  const bool rx = apex_q && !*apex_q, ry = apex_q && *apex_q;  // restricted to X's / Y's apex
   const auto& PV = c.P.v;
   const auto& QV = c.Q.v;
   Cand exit, entry;
@@ -434,48 +447,54 @@ State solve_small(Ctx& c, const Small& X, const Small& Y) {
   };
   // Faces of X: Y's support minimises u·y' = (Rᵀu)·q + const.
   for (std::size_t f = 0; f < X.tri.size(); ++f) {
+    if (rx && X.tri[f][0] != 0 && X.tri[f][1] != 0 && X.tri[f][2] != 0) continue;
     Cand k;
     k.kind = Cand::FaceX;
     for (int e = 0; e < 3; ++e) k.x[e] = X.id[X.tri[f][e]];
     canonical(k.x);
     k.xs = k.x[0];
     FV w = fl_rt(c.pose.R, X.tri_u[f]);
+    auto cmp = [&](int g, int b) {  // sign of u·(y'_g − y'_b)
+      int sg = cert(dot(w, fl_sub(QV[g], QV[b])));
+      return sg != 2 ? sg : exact_sign([&](auto L) { return dot(cand_u(c, k, L), c.qdiff(L, g, b)); });
+    };
     int best = Y.id[0];
-    for (int g : Y.id) {
-      if (g == best) continue;
-      int sg = cert(dot(w, fl_sub(QV[g], QV[best])));
-      if (sg == 2) sg = exact_sign([&](auto L) { return dot(cand_u(c, k, L), c.qdiff(L, g, best)); });
-      if (sg < 0) best = g;
-    }
+    for (int g : Y.id)
+      if (g != best && cmp(g, best) < 0) best = g;
+    if (ry && best != Y.id[0] && cmp(Y.id[0], best) != 0) continue;  // the apex is not a support
     k.ys = best;
     consider(k, X.tri_u[f]);
   }
   // Faces of Y: M's normal is −n(Q'), X's support maximises it.
   for (std::size_t f = 0; f < Y.tri.size(); ++f) {
+    if (ry && Y.tri[f][0] != 0 && Y.tri[f][1] != 0 && Y.tri[f][2] != 0) continue;
     Cand k;
     k.kind = Cand::FaceY;
     for (int e = 0; e < 3; ++e) k.y[e] = Y.id[Y.tri[f][e]];
     canonical(k.y);
     k.ys = k.y[0];
     const FV& u = Y.tri_u[f];
+    auto cmp = [&](int g, int b) {  // sign of u·(x_g − x_b)
+      int sg = cert(dot(u, fl_sub(PV[g], PV[b])));
+      return sg != 2 ? sg : exact_sign([&](auto L) { return dot(cand_u(c, k, L), c.pdiff(L, g, b)); });
+    };
     int best = X.id[0];
-    for (int g : X.id) {
-      if (g == best) continue;
-      int sg = cert(dot(u, fl_sub(PV[g], PV[best])));
-      if (sg == 2) sg = exact_sign([&](auto L) { return dot(cand_u(c, k, L), c.pdiff(L, g, best)); });
-      if (sg > 0) best = g;
-    }
+    for (int g : X.id)
+      if (g != best && cmp(g, best) > 0) best = g;
+    if (rx && best != X.id[0] && cmp(X.id[0], best) != 0) continue;  // the apex is not a support
     k.xs = best;
     consider(k, u);
   }
   // Edge pairs extreme for ±u (the test of minkowski_facets.cpp).
   for (std::size_t i = 0; i < X.edge.size(); ++i) {
     const auto& ex = X.edge[i];
+    if (rx && ex[0] != 0 && ex[1] != 0) continue;
     const auto& xv = X.edge_v[i];
     const auto& xd = X.edge_d[i];
     int pa = X.id[ex[0]], pb = X.id[ex[1]], pc = X.id[ex[2]], pe = X.id[ex[3]];
     for (std::size_t j = 0; j < Y.edge.size(); ++j) {
       const auto& ey = Y.edge[j];
+      if (ry && ey[0] != 0 && ey[1] != 0) continue;
       const auto& yv = Y.edge_v[j];
       const auto& yd = Y.edge_d[j];
       int qa = Y.id[ey[0]], qb = Y.id[ey[1]], qc = Y.id[ey[2]], qe = Y.id[ey[3]];
@@ -506,6 +525,12 @@ State solve_small(Ctx& c, const Small& X, const Small& Y) {
     }
   }
   State st;
+  if (apex_q) {
+    assert(has_exit);
+    st.hit = true;
+    st.cand = exit;
+    return st;
+  }
   assert(has_exit && has_entry);
   if (compare_t(c, entry, exit) <= 0) {
     st.hit = true;
@@ -578,18 +603,27 @@ struct Walker {
     if (f.isq) u0 = fl_rt(f.c->pose.R, u0);
     for (auto& x : u0) x = Fl{double(f.flip), 0} * x;
     w0 = u0;
-    Vec3 w = Vec3::Zero();
-    for (int k = 0; k < f.ncoef() && w == Vec3::Zero(); ++k) {
-      auto u = f.U(exact::LiftFl{}, k);
-      Vec3 r(u[0].v, u[1].v, u[2].v);
-      if (std::abs(u[0].v) > u[0].e || std::abs(u[1].v) > u[1].e || std::abs(u[2].v) > u[2].e)
-        w = f.isq ? Vec3(f.c->pose.R.transpose() * r) : r;
+    // The key (F, X, Y) orders distinct vertices strictly iff some U_κ has a non-zero component
+    // on the axis left out: take the axis of a certified non-zero component of the first
+    // non-zero U_κ (in the local frame of this side).
+    int third = -1;
+    for (int k = 0; k < f.ncoef() && third < 0; ++k) {
+      FV u = f.U(exact::LiftFl{}, k);
+      if (f.isq) u = fl_rt(f.c->pose.R, u);
+      double best = 0;
+      for (int i = 0; i < 3; ++i)
+        if (std::abs(u[i].v) > u[i].e && std::abs(u[i].v) > best) best = std::abs(u[i].v), third = i;
     }
-    int a[3] = {0, 1, 2};
-    for (int s = 0; s < 3; ++s)
-      for (int t = s + 1; t < 3; ++t)
-        if (std::abs(w[a[t]]) < std::abs(w[a[s]])) std::swap(a[s], a[t]);
-    kx = a[0], ky = a[1];
+    for (int i = 0; i < 3 && third < 0; ++i)  // not certified by the filter: exact signs of U_0
+      if (exact_sign([&](auto L) {
+            auto u = f.U(L, 0);
+            if (!f.isq) return u[i];
+            return L(f.c->pose.R(0, i)) * u[0] + L(f.c->pose.R(1, i)) * u[1] + L(f.c->pose.R(2, i)) * u[2];
+          }) != 0)
+        third = i;
+    assert(third >= 0);
+    kx = third == 0 ? 1 : 0;
+    ky = third == 2 ? 1 : 2;
   }
   // Sign of F(p) − F(q) (the formal functional only).
   int fsign(int p, int q) const {
@@ -842,15 +876,16 @@ struct Query {
       const bool hc = C != nullptr, hd = D != nullptr;
       if (!hc && !hd) continue;
       State r1, r2;
+      static constexpr bool kApexX = false, kApexY = true;
       if (hc) {
         Side cx{false, 0, C};
         Side y = Y.hier ? Side{true, Y.bottom + std::min(s - 1, ny), nullptr} : Y;
-        r1 = descend(cx, y);
+        r1 = !Y.hier && st.hit ? solve_small(c, *C, *Y.small, &kApexX) : descend(cx, y);
       }
       if (hd) {
         Side dy{false, 0, D};
         Side x = X.hier ? Side{true, X.bottom + std::min(s - 1, nx), nullptr} : X;
-        r2 = descend(x, dy);
+        r2 = !X.hier && st.hit ? solve_small(c, *X.small, *D, &kApexY) : descend(x, dy);
       }
       State next = combine(st, hc ? &r1 : nullptr, hd ? &r2 : nullptr);
       // Generic line: a cap beyond the plane always moves the exit or the tangent.
@@ -967,8 +1002,6 @@ Depth3 directional_depth_dk(const ConvexPolytope& Pp, const Pose3& pose_p, const
   const Vec3 v = r.depth * dir;
   auto uf = cand_u(c, k, exact::LiftFl{});
   const Vec3 u = Vec3(uf[0].v, uf[1].v, uf[2].v).normalized();
-  const auto& LP = c.P.levels[0];
-  const auto& LQ = c.Q.levels[0];
   auto U = [&](auto L) { return cand_u(c, k, L); };
   Vec3 w;  // contact point in P's frame
   if (k.kind == Cand::FaceX) {
@@ -991,7 +1024,6 @@ Depth3 directional_depth_dk(const ConvexPolytope& Pp, const Pose3& pose_p, const
     r.feature_p = hp >= 0 ? Feature3{FeatureKind3::Edge, hp} : Feature3{FeatureKind3::Face, face_in_plane(c, false, k.x, U)};
     r.feature_q = hq >= 0 ? Feature3{FeatureKind3::Edge, hq} : Feature3{FeatureKind3::Face, face_in_plane(c, true, k.y, U)};
   }
-  (void)LP, (void)LQ;
   r.translation = Rp * v;
   r.normal = Rp * dir;
   r.facet_normal = Rp * u;
