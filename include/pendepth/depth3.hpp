@@ -70,9 +70,10 @@ struct Depth3 {
 Depth3 minimum_depth(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
                      const Pose3& pose_q);
 
-/// σ_d for direction d (world frame): min over the same facet normals u with u·d > 0 of
-/// (h_P(u) + h_{Q'}(−u)) / (u·d̂) — the exit facet of the ray. Same complexity as
-/// minimum_depth. Throws InvalidInput if d is zero or non-finite (and for bad poses).
+/// σ_d for direction d (world frame): the exit facet u of the ray (u·d > 0), σ_d =
+/// h_M(u)/(u·d̂), by Compute-Depth-3D (DHS §5.2) on the inner DK hierarchies of P and Q:
+/// O(log n · log m) constant-size steps (worst case O(log³) when walk restarts meet vertices of
+/// degree > 48), every decision exact (src/convex3/directional3.cpp). Throws InvalidInput if d is zero or non-finite (and for bad poses).
 Depth3 directional_depth(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
                          const Pose3& pose_q, const Vec3& d);
 

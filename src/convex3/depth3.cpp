@@ -1,11 +1,9 @@
-// 3D depth queries on two convex polytopes with poses: σ (minimum) and σ_d (directional), both
-// as the minimum over the implicit facet normals of M = P ⊕ (−Q') (minkowski_facets.cpp).
-//
-// DEPARTURE from DHS §5.2: Algorithm Compute-Depth-3D (O(log n log m) with inner and outer
-// hierarchies) is not implemented; σ_d here costs the same as σ (O(n·m) exact predicates for
-// the edge pairs, O((n + m) log) for the faces). The result is exact (min over finitely many
-// exactly-supported candidates, each value accurate to a few ulps), which the O(log² n) method
-// would have to match.
+// 3D depth queries on two convex polytopes with poses: the public entry points.
+//   σ   : minimum_expand.cpp — exact certified expansion on the implicit M = P ⊕ (−Q').
+//   σ_d : directional3.cpp — Compute-Depth-3D (DHS §5.2) on the inner DK hierarchies,
+//         O(log n · log m) constant-size steps, exact.
+// The O(n·m) enumeration of M's implicit facet normals (minkowski_facets.cpp) is kept here as
+// convex3::directional_depth_facets and friends: the exact reference for tests and benchmarks.
 #include <pendepth/depth3.hpp>
 
 #include "convex3/minimum_expand.hpp"
