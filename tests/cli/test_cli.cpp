@@ -16,6 +16,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "cli/cli_fixture.hpp"
+
 using pendepth::ConvexPolygon;
 using pendepth::Depth2;
 using pendepth::Vec2;
@@ -23,63 +25,16 @@ namespace io = pendepth::io;
 namespace fs = std::filesystem;
 using nlohmann::json;
 
+using cli_test::quote;
+using cli_test::Result;
+using cli_test::slurp;
+
 namespace {
 
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-struct Result {
-  int status = -1;
-  std::string out, err;
-};
-
-class Cli : public ::testing::Test {
+class Cli : public cli_test::CliFixture {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("pendepth-test-cli-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string write(const std::string& name, const std::string& text) {
-    const fs::path p = dir_ / name;
-    std::ofstream(p, std::ios::binary) << text;
-    return p.string();
-  }
-  Result run(const std::string& args) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string cmd = quote(PENDEPTH_CLI) + " " + args + " > " + quote(out) + " 2> " + quote(err);
-    const int rc = std::system(cmd.c_str());
-    Result r;
-    r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
-  }
-  // Exit status 2 and exactly the line `message` on stderr, nothing on stdout.
-  void expect_error(const std::string& args, const std::string& message) {
-    const Result r = run(args);
-    EXPECT_EQ(r.status, 2) << args;
-    EXPECT_EQ(r.err, message + "\n") << args;
-    EXPECT_EQ(r.out, "") << args;
-  }
-
   std::string square_p() { return write("P.wkt", "POLYGON ((0 0, 2 0, 2 2, 0 2, 0 0))\n"); }
   std::string square_q() { return write("Q.wkt", "POLYGON ((0 0, 1 0, 1 1, 0 1, 0 0))\n"); }
-
-  fs::path dir_;
 };
 
 Vec2 vec_of(const json& j) { return Vec2(j.at(0).get<double>(), j.at(1).get<double>()); }

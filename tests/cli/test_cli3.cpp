@@ -19,6 +19,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "cli/cli_fixture.hpp"
+
 using pendepth::ConvexPolytope;
 using pendepth::Depth3;
 using pendepth::Pose3;
@@ -27,25 +29,11 @@ namespace io = pendepth::io;
 namespace fs = std::filesystem;
 using nlohmann::json;
 
+using cli_test::quote;
+using cli_test::Result;
+using cli_test::slurp;
+
 namespace {
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-struct Result {
-  int status = -1;
-  std::string out, err;
-};
 
 // The corners of the box [0, s]³, in the order x fastest.
 std::vector<Vec3> box(double s) {
@@ -80,37 +68,8 @@ std::string off_text(const std::vector<Vec3>& pts) {
   return s;
 }
 
-class Cli3 : public ::testing::Test {
+class Cli3 : public cli_test::CliFixture {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("pendepth-test-cli3-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  std::string write(const std::string& name, const std::string& text) {
-    const fs::path p = dir_ / name;
-    std::ofstream(p, std::ios::binary) << text;
-    return p.string();
-  }
-  Result run(const std::string& args) {
-    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
-    const std::string cmd = quote(PENDEPTH_CLI) + " " + args + " > " + quote(out) + " 2> " + quote(err);
-    const int rc = std::system(cmd.c_str());
-    Result r;
-    r.status = WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
-  }
-  void expect_error(const std::string& args, const std::string& message) {
-    const Result r = run(args);
-    EXPECT_EQ(r.status, 2) << args;
-    EXPECT_EQ(r.err, message + "\n") << args;
-    EXPECT_EQ(r.out, "") << args;
-  }
   json run_json(const std::string& args) {
     const Result r = run(args + " --json");
     EXPECT_EQ(r.status, 0) << args << ": " << r.err;
@@ -122,8 +81,6 @@ class Cli3 : public ::testing::Test {
   // P = [0,2]³ and Q = [0,1]³.
   std::string cube_p() { return write("P.obj", obj_text(box(2))); }
   std::string cube_q() { return write("Q.obj", obj_text(box(1))); }
-
-  fs::path dir_;
 };
 
 Vec3 vec_of(const json& j) { return Vec3(j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()); }
