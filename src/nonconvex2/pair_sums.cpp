@@ -30,6 +30,35 @@ double line_value(const Line& c, const Ray& r) {
   return exact::accurate_ratio([&](auto L) { return line_num(c, r, L); }, [&](auto L) { return line_den(c, r, L); });
 }
 
+namespace {
+// Exact: the line of ray r meets the closed segment of c (from c1 + c2 to c1 + c2 + e1 − e0).
+bool meets_segment(const Line& c, const Ray& r) {
+  int side[2];
+  for (int end = 0; end < 2; ++end)
+    side[end] = exact_sign([&](auto L) {
+      auto x = L(c.c1.x()) + L(c.c2.x()) - L(r.o1.x()) - L(r.o2.x()), y = L(c.c1.y()) + L(c.c2.y()) - L(r.o1.y()) - L(r.o2.y());
+      if (end == 1) {
+        x = x + L(c.e1.x()) - L(c.e0.x());
+        y = y + L(c.e1.y()) - L(c.e0.y());
+      }
+      return ray_dx(r, L) * y - ray_dy(r, L) * x;
+    });
+  return side[0] * side[1] <= 0;
+}
+
+// Keeps the bound `best` (smallest exit when sign = -1, largest entry when +1); on a tie (a sum
+// edge of P and one of −Q on one line) the edge whose segment holds the crossing wins, so the
+// reported contact features are the ones actually touching.
+void keep_bound(const Line& c, const Line*& best, const Ray& r, int sign) {
+  if (!best) {
+    best = &c;
+    return;
+  }
+  const int s = compare_lines(c, *best, r) * sign;
+  if (s > 0 || (s == 0 && !meets_segment(*best, r) && meets_segment(c, r))) best = &c;
+}
+}  // namespace
+
 bool sum_interval(const Sum& S, const Ray& r, Line& entry, Line& exit) {
   const Line *lo = nullptr, *hi = nullptr;
   for (const Line& c : S.e) {
@@ -40,11 +69,8 @@ bool sum_interval(const Sum& S, const Ray& r, Line& entry, Line& exit) {
       if (exact_sign([&](auto L) { return line_num(c, r, L); }) <= 0) return false;
       continue;
     }
-    if (den > 0) {  // upper bound (exit)
-      if (!hi || compare_lines(c, *hi, r) < 0) hi = &c;
-    } else {
-      if (!lo || compare_lines(c, *lo, r) > 0) lo = &c;
-    }
+    if (den > 0) keep_bound(c, hi, r, -1);  // upper bound (exit)
+    else keep_bound(c, lo, r, +1);
   }
   if (!lo || !hi || compare_lines(*lo, *hi, r) >= 0) return false;
   entry = *lo;

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -68,6 +69,28 @@ void bbox(const Polygon& S, Vec2& lo, Vec2& hi) {
     lo = lo.cwiseMin(p);
     hi = hi.cwiseMax(p);
   }
+}
+
+// Distance from `x` to feature f of S translated by `offset` (a vertex, or the segment of an edge).
+double feature_distance(const Polygon& S, const pendepth::Feature& f, const Vec2& offset, const Vec2& x) {
+  const Vec2 a = S.vertices()[f.index] + offset;
+  if (f.kind == pendepth::FeatureKind::Vertex) return (x - a).norm();
+  const Vec2 b = S.vertices()[S.next(f.index)] + offset, ab = b - a;
+  const double u = std::clamp((x - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+  return (x - a - u * ab).norm();
+}
+
+// The reported contact: witness_p on P's feature, witness_q on the moved Q's feature, the two equal
+// (a touching contact), up to the rounding of the reported doubles.
+void check_contact(const Polygon& P, const Polygon& Q, const Vec2& t, const Depth2& r, const std::string& what) {
+  if (r.depth == 0) return;
+  ASSERT_NE(r.feature_p.kind, pendepth::FeatureKind::None) << what;
+  ASSERT_NE(r.feature_q.kind, pendepth::FeatureKind::None) << what;
+  EXPECT_NEAR(r.normal.norm(), 1, 1e-15) << what;
+  const double scale = 1e-9 * (1 + t.norm() + r.depth + P.vertices()[0].norm() + Q.vertices()[0].norm());
+  EXPECT_LE(feature_distance(P, r.feature_p, Vec2(0, 0), r.witness_p), scale) << what;
+  EXPECT_LE(feature_distance(Q, r.feature_q, t + r.translation, r.witness_q), scale) << what;
+  EXPECT_LE((r.witness_p - r.witness_q).norm(), scale) << what;
 }
 
 // All checks for one pair: `nt` random placements (plus vertex differences), `nd` directions each,
@@ -141,11 +164,8 @@ void check_pair(const Polygon& P, const Polygon& Q, std::mt19937_64& rng, int nt
       // Just short of the answer Q still overlaps P (the open interval before the exit).
       if (a.depth > 1e-6) EXPECT_TRUE(query.overlapping(t + (1 - 1e-9) * a.translation)) << what;
       if (s.depth > 1e-6) EXPECT_TRUE(query.overlapping(t + (1 - 1e-9) * s.translation)) << what;
-      if (a.depth > 0) {
-        EXPECT_NEAR(a.normal.norm(), 1, 1e-15);
-        EXPECT_NE(a.feature_p.kind, pendepth::FeatureKind::None);
-        EXPECT_NE(a.feature_q.kind, pendepth::FeatureKind::None);
-      }
+      check_contact(P, Q, t, a, what + " along");
+      check_contact(P, Q, t, s, what + " separation");
     }
     if (ov && min_every > 0 && overlapping_seen++ % min_every == 0) {
       PairQueryStats ps;
@@ -158,6 +178,7 @@ void check_pair(const Polygon& P, const Polygon& Q, std::mt19937_64& rng, int nt
       ASSERT_LE(e, kMaxUlps) << what << " minimum t=" << t.transpose() << " got " << m.depth << " want " << want;
       EXPECT_TRUE(m.overlapping);
       EXPECT_NEAR(m.translation.norm(), m.depth, m.depth * 1e-14);
+      check_contact(P, Q, t, m, what + " minimum");
       if (m.depth > 1e-6) EXPECT_TRUE(query.overlapping(t + (1 - 1e-9) * m.translation)) << what;
       for (int k = 0; k < 64; ++k) {
         const double ang = 2 * polygon2_test::kPi * k / 64;
