@@ -60,8 +60,18 @@ auto param_nd(const Param& p, const Ray& E, const Vec2& t, L lift) {
   }
 }
 
-int compare_params(const Param& a, const Param& b, const Ray& E, const Vec2& t) {
+// A cut through the edge's start or end vertex is the symbolic parameter 0 or 1.
+Param normalised(const Param& p, const Ray& E) {
+  if (p.kind != Param::Cut) return p;
+  const int k = nonconvex2::known_lambda(p.line, E);
+  return k < 0 ? p : Param{k == 0 ? Param::Zero : Param::One, {}};
+}
+
+int compare_params(const Param& a_in, const Param& b_in, const Ray& E, const Vec2& t) {
+  const Param a = normalised(a_in, E), b = normalised(b_in, E);
   if (a.kind == Param::Cut && b.kind == Param::Cut) return nonconvex2::compare_lines(a.line, b.line, E);
+  auto fixed = [](const Param& p) { return p.kind == Param::Zero ? 0 : p.kind == Param::One ? 1 : -1; };
+  if (fixed(a) >= 0 && fixed(b) >= 0) return (fixed(a) > fixed(b)) - (fixed(a) < fixed(b));
   const int sa = exact_sign([&](auto L) { return param_nd(a, E, t, L).second; });
   const int sb = exact_sign([&](auto L) { return param_nd(b, E, t, L).second; });
   const int s = exact_sign([&](auto L) {
@@ -110,6 +120,19 @@ bool surely_inside(const Sum& S, const Vec2& c0, const Vec2& c1, double scale) {
     }
   }
   return true;
+}
+
+// Floating filter: both points lie strictly outside one edge line of S by the same margin, so the
+// segment between them misses S (and cannot be covered by it).
+bool surely_outside(const Sum& S, const Vec2& c0, const Vec2& c1, double scale) {
+  const double margin = scale * 0x1p-36;
+  for (const Line& c : S.e) {
+    const Vec2 e = c.e1 - c.e0, v = c.c1 + c.c2;
+    const double len = std::abs(e.x()) + std::abs(e.y());
+    const Vec2 w0 = c0 - v, w1 = c1 - v;
+    if (e.x() * w0.y() - e.y() * w0.x() < -margin * len && e.x() * w1.y() - e.y() * w1.x() < -margin * len) return true;
+  }
+  return false;
 }
 
 }  // namespace
@@ -193,11 +216,17 @@ Depth2 PairDepth2::minimum(const Vec2& t, PairQueryStats* stats) const {
     if (er.lb > best_value * (1 + 0x1p-40)) break;
     const Sum& F = sums[er.s];
     const auto &v0 = F.v[er.k], &v1 = F.v[(er.k + 1) % 6];
+    // The edge as a ray: from vertex k (= c1 + c2) with direction e1 − e0 (= vertex k+1 − vertex k).
     Ray E;
-    E.o1 = E.b1 = v0.p;
-    E.o2 = E.b2 = v0.b;
-    E.a1 = v1.p;
-    E.a2 = v1.b;
+    E.o1 = F.e[er.k].c1;
+    E.o2 = F.e[er.k].c2;
+    E.a1 = F.e[er.k].e1;
+    E.b1 = F.e[er.k].e0;
+    E.sym = true;
+    E.p0 = F.e[er.k].p0;
+    E.q0 = F.e[er.k].q0;
+    E.p1 = F.e[er.k].p1;
+    E.q1 = F.e[er.k].q1;
     // Only the part of the edge inside the disk D(t, best) can hold a better candidate: covers that
     // miss it are skipped. Points outside it may then look uncovered, but a piece's nearest point
     // lies in the disk whenever any of its points does, so such pieces never beat `best`.
@@ -224,6 +253,7 @@ Depth2 PairDepth2::minimum(const Vec2& t, PairQueryStats* stats) const {
     auto try_cover = [&](std::uint32_t s) {
       const auto& [lo, hi] = boxes[s];
       if (lo.x() > shi.x() || hi.x() < slo.x() || lo.y() > shi.y() || hi.y() < slo.y()) return;
+      if (surely_outside(sums[s], c0, c1, scale_of[s] + scale_edge)) return;
       if (surely_inside(sums[s], c0, c1, scale_of[s] + scale_edge)) {
         swallowed = true;
         last_swallower = s;
@@ -231,7 +261,7 @@ Depth2 PairDepth2::minimum(const Vec2& t, PairQueryStats* stats) const {
       }
       if (stats) ++stats->pairs;
       Cover cv;
-      if (!nonconvex2::sum_interval(sums[s], E, cv.entry, cv.exit)) return;
+      if (!nonconvex2::sum_interval(sums[s], E, cv.entry, cv.exit, &F.e[er.k])) return;
       const Param en{Param::Cut, cv.entry}, ex{Param::Cut, cv.exit};
       if (compare_params(ex, lo_end, E, t) <= 0 || compare_params(en, hi_end, E, t) >= 0) return;
       if (compare_params(en, lo_end, E, t) < 0 && compare_params(ex, hi_end, E, t) > 0) {

@@ -15,11 +15,43 @@ namespace pendepth::nonconvex2 {
 
 using exact::exact_sign;
 
+bool same_line(const Line& a, const Line& b) {
+  const bool same_edge = (a.e0 == b.e0 && a.e1 == b.e1) || (a.e0 == b.e1 && a.e1 == b.e0);
+  if (!same_edge || a.q_edge != b.q_edge) return false;
+  // A triangle edge of P translated by the same −Q vertex, or an edge of −U by the same P vertex
+  // (the anchor c1 resp. c2 is an endpoint of the edge itself).
+  return a.q_edge ? a.c1 == b.c1 : a.c2 == b.c2;
+}
+
+int known_lambda(const Line& c, const Ray& r) {
+  if (!r.sym) return -1;
+  // Line c passes through its start vertex (p0, q0) and end vertex (p1, q1).
+  auto through = [&](std::uint32_t p, std::uint32_t q) { return (c.p0 == p && c.q0 == q) || (c.p1 == p && c.q1 == q); };
+  if (through(r.p0, r.q0)) return 0;
+  if (through(r.p1, r.q1)) return 1;
+  return -1;
+}
+
+namespace {
+// Exact sign of λ(c) − k for k ∈ {0, 1}.
+int sign_minus(const Line& c, const Ray& r, int k) {
+  const int den = exact_sign([&](auto L) { return line_den(c, r, L); });
+  if (k == 0) return den * exact_sign([&](auto L) { return line_num(c, r, L); });
+  return den * exact_sign([&](auto L) { return line_num(c, r, L) - line_den(c, r, L); });
+}
+}  // namespace
+
 int line_sign(const Line& c, const Ray& r) {
+  if (const int k = known_lambda(c, r); k >= 0) return k;
   return exact_sign([&](auto L) { return line_num(c, r, L); }) * exact_sign([&](auto L) { return line_den(c, r, L); });
 }
 
 int compare_lines(const Line& a, const Line& b, const Ray& r) {
+  if (same_line(a, b)) return 0;  // neighbouring sums share edge lines: a symbolic tie
+  const int ka = known_lambda(a, r), kb = known_lambda(b, r);
+  if (ka >= 0 && kb >= 0) return (ka > kb) - (ka < kb);
+  if (ka >= 0) return -sign_minus(b, r, ka);
+  if (kb >= 0) return sign_minus(a, r, kb);
   const int sa = exact_sign([&](auto L) { return line_den(a, r, L); });
   const int sb = exact_sign([&](auto L) { return line_den(b, r, L); });
   const int s = exact_sign([&](auto L) { return line_num(a, r, L) * line_den(b, r, L) - line_num(b, r, L) * line_den(a, r, L); });
@@ -59,13 +91,17 @@ void keep_bound(const Line& c, const Line*& best, const Ray& r, int sign) {
 }
 }  // namespace
 
-bool sum_interval(const Sum& S, const Ray& r, Line& entry, Line& exit) {
+bool sum_interval(const Sum& S, const Ray& r, Line& entry, Line& exit, const Line* along) {
   const Line *lo = nullptr, *hi = nullptr;
   for (const Line& c : S.e) {
+    // The ray runs along an edge of S (common in σ, where the ray is an edge of a neighbouring
+    // sum): it never enters int S. Decided symbolically; the numeric zero would need rationals.
+    if (along && same_line(c, *along)) return false;
     // Inside c's half-plane: cross(e, o + λ·dir − c) > 0, i.e. λ·cross(dir, e) < cross(c − o, e)
     // (num = cross(c − o, e), den = cross(dir, e)).
     const int den = exact_sign([&](auto L) { return line_den(c, r, L); });
     if (den == 0) {  // parallel: the whole line is strictly inside the half-plane, or nothing is
+      if (known_lambda(c, r) >= 0) return false;  // through a vertex of the ray: on c's line
       if (exact_sign([&](auto L) { return line_num(c, r, L); }) <= 0) return false;
       continue;
     }

@@ -30,8 +30,14 @@ struct Line {
 };
 
 /// Ray (or parametrised line) o + λ·dir with o = o1 + o2 and dir = (a1 + a2) − (b1 + b2).
+/// When `sym`, the ray is an edge of a sum: o is the sum vertex (p0, q0) (P vertex + −Q vertex)
+/// and o + dir the vertex (p1, q1); lines through those vertices then have λ = 0 resp. 1 known
+/// symbolically (shared vertices of neighbouring sums are everywhere; the numeric ties would
+/// need rational arithmetic).
 struct Ray {
   Vec2 o1{0, 0}, o2{0, 0}, a1{0, 0}, a2{0, 0}, b1{0, 0}, b2{0, 0};
+  bool sym = false;
+  std::uint32_t p0 = 0, q0 = 0, p1 = 0, q1 = 0;
   static Ray query(const Vec2& t, const Vec2& d) {
     Ray r;
     r.o1 = t;
@@ -74,6 +80,9 @@ auto line_den(const Line& c, const Ray& r, L lift) {
   return ray_dx(r, lift) * (lift(c.e1.y()) - lift(c.e0.y())) - ray_dy(r, lift) * (lift(c.e1.x()) - lift(c.e0.x()));
 }
 
+/// λ(c) when known symbolically (0 or 1: c passes through the ray's start or end vertex), else -1.
+/// Only meaningful for c not parallel to r.
+int known_lambda(const Line& c, const Ray& r);
 /// Exact sign of λ(c) on ray r (c not parallel to r).
 int line_sign(const Line& c, const Ray& r);
 /// Exact comparison of λ(a) and λ(b) on ray r: -1, 0, +1.
@@ -83,7 +92,11 @@ double line_value(const Line& c, const Ray& r);
 
 /// The open interval of λ where ray r's line lies in int S: false when it misses int S (also when
 /// it only touches S's boundary). Entry and exit are edges of S. ≤ 6 + 10 exact predicates.
-bool sum_interval(const Sum& S, const Ray& r, Line& entry, Line& exit);
+/// `along`: when the ray runs along the line of `*along` (an edge of some sum), edges of S on the
+/// same symbolic line are recognised without arithmetic.
+bool sum_interval(const Sum& S, const Ray& r, Line& entry, Line& exit, const Line* along = nullptr);
+/// Symbolic identity of two edge lines (same edge of P or −U, translated by the same vertex).
+bool same_line(const Line& a, const Line& b);
 /// Exact: t ∈ int S.
 bool sum_contains(const Sum& S, const Vec2& t);
 
