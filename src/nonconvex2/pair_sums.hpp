@@ -145,7 +145,9 @@ struct PairDepth2::Impl {
   bool descend(Accept&& accept, Leaf&& leaf, PairQueryStats* stats) const;
 
   /// Builds the result of moving Q from t by `translation` to the contact described by edge line E
-  /// of a sum (features resolved exactly; `at_vertex` tells which end of a diagonal touches).
+  /// of a sum. `end` (decided exactly by the caller: 0 = E's start vertex, 1 = its end, -1 = neither)
+  /// names the touching end when E comes from a triangulation diagonal, whose interior points are
+  /// interior to the shape and so can never be the contact.
   Depth2 contact(const nonconvex2::Line& E, const Vec2& t, const Vec2& translation, int end) const;
 };
 
