@@ -1,0 +1,122 @@
+// PairDepth2: construction (triangulate both shapes, normal-form triangles of P and of −Q, box
+// hierarchies), the exact overlap test, and the contact-result builder shared by the queries.
+// Construction O(n log n + m log m); overlapping(t) visits the pairs whose sum box holds t (worst
+// case O(nm), a handful on real pieces).
+#include <cmath>
+
+#include "geometry/exact.hpp"
+#include "nonconvex2/pair_sums.hpp"
+#include "nonconvex2/query.hpp"
+#include "polygon2/triangulation.hpp"
+
+namespace pendepth {
+
+namespace {
+
+void require_finite(const Vec2& v, const char* what) {
+  if (!std::isfinite(v.x()) || !std::isfinite(v.y())) throw InvalidInput(std::string(what) + " has a non-finite coordinate");
+}
+
+// Triangles of `shape` in normal form; `negate` stores −shape (for Q), keeping Q's vertex ids.
+std::vector<nonconvex2::Tri> normal_triangles(const Polygon& shape, bool negate) {
+  std::vector<nonconvex2::Tri> out;
+  const auto V = shape.vertices();
+  for (const auto& ids : polygon2::triangulate(shape)) {
+    std::array<Vec2, 3> v;
+    for (int k = 0; k < 3; ++k) v[k] = negate ? Vec2(-V[ids[k]]) : V[ids[k]];  // −x is exact; −U stays CCW
+    int low = 0;
+    for (int k = 1; k < 3; ++k)
+      if (v[k].y() < v[low].y() || (v[k].y() == v[low].y() && v[k].x() < v[low].x())) low = k;
+    nonconvex2::Tri T;
+    for (int k = 0; k < 3; ++k) {
+      T.v[k] = v[(low + k) % 3];
+      T.id[k] = ids[(low + k) % 3];
+    }
+    T.lo = T.v[0].cwiseMin(T.v[1]).cwiseMin(T.v[2]);
+    T.hi = T.v[0].cwiseMax(T.v[1]).cwiseMax(T.v[2]);
+    out.push_back(T);
+  }
+  return out;
+}
+
+}  // namespace
+
+PairDepth2::Impl::Impl(const Polygon& p, const Polygon& q) : P(p), Q(q) {
+  tp = normal_triangles(P, false);
+  tb = normal_triangles(Q, true);
+  hp.build(tp);
+  hb.build(tb);
+}
+
+PairDepth2::PairDepth2(const Polygon& P, const Polygon& Q) : impl_(std::make_unique<Impl>(P, Q)) {}
+PairDepth2::~PairDepth2() = default;
+PairDepth2::PairDepth2(PairDepth2&&) noexcept = default;
+PairDepth2& PairDepth2::operator=(PairDepth2&&) noexcept = default;
+
+std::size_t PairDepth2::triangle_count_p() const { return impl_->tp.size(); }
+std::size_t PairDepth2::triangle_count_q() const { return impl_->tb.size(); }
+
+bool PairDepth2::overlapping(const Vec2& t, PairQueryStats* stats) const {
+  require_finite(t, "placement t");
+  return impl_->descend(
+      [&](const Vec2& lo, const Vec2& hi) { return lo.x() <= t.x() && t.x() <= hi.x() && lo.y() <= t.y() && t.y() <= hi.y(); },
+      [&](std::uint32_t i, std::uint32_t j) { return nonconvex2::sum_contains(nonconvex2::make_sum(impl_->tp[i], impl_->tb[j]), t); },
+      stats);
+}
+
+Depth2 PairDepth2::Impl::contact(const nonconvex2::Line& E, const Vec2& t, const Vec2& translation, int end) const {
+  Depth2 r;
+  r.translation = translation;
+  r.depth = std::hypot(translation.x(), translation.y());
+  if (r.depth > 0) r.normal = translation / r.depth;
+  if (!E.q_edge) {
+    // Vertex q0 of Q against the triangle edge p0 → p1 of P: an edge of P, or (a diagonal) the
+    // contact is at one of its ends — an interior point of a diagonal is interior to P.
+    const bool boundary = P.next(E.p0) == E.p1;
+    r.feature_p = boundary ? Feature{FeatureKind::Edge, int(E.p0)} : Feature{FeatureKind::Vertex, int(end == 1 ? E.p1 : E.p0)};
+    r.feature_q = {FeatureKind::Vertex, int(E.q0)};
+    r.witness_q = r.witness_p = Q.vertices()[E.q0] + t + translation;
+    if (!boundary) r.witness_p = P.vertices()[r.feature_p.index];
+  } else {
+    // Vertex p0 of P against Q's triangle edge q0 → q1 (same reasoning for diagonals of Q).
+    const bool boundary = Q.next(E.q0) == E.q1;
+    r.feature_q = boundary ? Feature{FeatureKind::Edge, int(E.q0)} : Feature{FeatureKind::Vertex, int(end == 1 ? E.q1 : E.q0)};
+    r.feature_p = {FeatureKind::Vertex, int(E.p0)};
+    r.witness_p = r.witness_q = P.vertices()[E.p0];
+  }
+  return r;
+}
+
+namespace nonconvex2 {
+
+Vec2 check_and_scale(const Vec2& t, const Vec2& d) {
+  require_finite(t, "placement t");
+  require_finite(d, "direction d");
+  if (d.x() == 0 && d.y() == 0) throw InvalidInput("direction d is the zero vector");
+  const int e = std::ilogb(std::max(std::abs(d.x()), std::abs(d.y())));
+  return Vec2(std::ldexp(d.x(), -e), std::ldexp(d.y(), -e));
+}
+
+void check_point(const Vec2& t) { require_finite(t, "placement t"); }
+
+double norm_accurate(const Vec2& d) {
+  return std::sqrt(exact::accurate_value([&](auto L) { return L(d.x()) * L(d.x()) + L(d.y()) * L(d.y()); }));
+}
+
+int end_on_ray(const Line& E, const Vec2& t, const Vec2& d) {
+  for (int end = 0; end < 2; ++end) {
+    const int s = exact::exact_sign([&](auto L) {
+      auto x = L(E.c1.x()) + L(E.c2.x()) - L(t.x()), y = L(E.c1.y()) + L(E.c2.y()) - L(t.y());
+      if (end == 1) {
+        x = x + L(E.e1.x()) - L(E.e0.x());
+        y = y + L(E.e1.y()) - L(E.e0.y());
+      }
+      return L(d.x()) * y - L(d.y()) * x;
+    });
+    if (s == 0) return end;
+  }
+  return -1;
+}
+
+}  // namespace nonconvex2
+}  // namespace pendepth
