@@ -24,10 +24,12 @@ int orient_sums(const Vec2& a1, const Vec2& b1, const Vec2& a2, const Vec2& b2, 
   });
 }
 
-// Exact sign of X(a + b) = cross(d, a + b − t).
-int side_of_line(const Vec2& a, const Vec2& b, const Vec2& t, const Vec2& d) {
+// Exact sign of X(a + b) = cross(d1 − d0, a + b − s1 − s2): the side of a + b of the line
+// through s1 + s2 with direction d1 − d0.
+int side_of_line(const Vec2& a, const Vec2& b, const Vec2& s1, const Vec2& s2, const Vec2& d0, const Vec2& d1) {
   return exact_sign([&](auto L) {
-    return L(d.x()) * (L(a.y()) + L(b.y()) - L(t.y())) - L(d.y()) * (L(a.x()) + L(b.x()) - L(t.x()));
+    return (L(d1.x()) - L(d0.x())) * (L(a.y()) + L(b.y()) - L(s1.y()) - L(s2.y())) -
+           (L(d1.y()) - L(d0.y())) * (L(a.x()) + L(b.x()) - L(s1.x()) - L(s2.x()));
   });
 }
 
@@ -65,6 +67,13 @@ ConvolvedTriangles::ConvolvedTriangles(const Polygon& P, const ConvexPolygon& Q)
   q_top_ = Q.top();
   b_.resize(m);
   for (std::size_t j = 0; j < m; ++j) b_[j] = -Q[(q_top_ + j) % m];
+  bbox_b_ = {b_[0].x(), b_[0].y(), b_[0].x(), b_[0].y()};
+  for (const Vec2& b : b_) {
+    bbox_b_[0] = std::min(bbox_b_[0], b.x());
+    bbox_b_[1] = std::min(bbox_b_[1], b.y());
+    bbox_b_[2] = std::max(bbox_b_[2], b.x());
+    bbox_b_[3] = std::max(bbox_b_[3], b.y());
+  }
   const auto V = P.vertices();
   for (const TriangleIds& ids : triangulate(P)) {
     Tri T;
@@ -130,10 +139,10 @@ Cut ConvolvedTriangles::edge(std::size_t i, std::size_t k) const {
 }
 
 // Number of edges of R (triangle's and B's) whose angle is < angle(x) (<= when inclusive).
-std::size_t ConvolvedTriangles::count_below(const Tri& T, const Vec2& x, bool inclusive) const {
+std::size_t ConvolvedTriangles::count_below(const Tri& T, const Vec2& x0, const Vec2& x1, bool inclusive) const {
   const std::size_t m = b_.size();
   auto below = [&](const Vec2& e0, const Vec2& e1) {
-    int s = compare_angle(e0, e1, kZero, x);
+    int s = compare_angle(e0, e1, x0, x1);
     return s < 0 || (inclusive && s == 0);
   };
   std::size_t n = 0;
@@ -178,19 +187,45 @@ bool ConvolvedTriangles::contains_interior(std::size_t i, const Vec2& t) const {
 }
 
 bool ConvolvedTriangles::line_interval(std::size_t i, const Vec2& t, const Vec2& d, Cut& entry, Cut& exit) const {
+  return line_interval_impl(i, t, kZero, kZero, d, entry, exit);
+}
+
+bool ConvolvedTriangles::line_interval(std::size_t i, const Cut& line, Cut& entry, Cut& exit) const {
+  return line_interval_impl(i, line.pt, line.pb, line.e0, line.e1, entry, exit);
+}
+
+std::array<double, 4> ConvolvedTriangles::box(std::size_t i) const {
+  const Tri& T = tri_[i];
+  std::array<double, 4> r{bbox_b_[0], bbox_b_[1], bbox_b_[2], bbox_b_[3]};
+  double x0 = std::min({T.v[0].x(), T.v[1].x(), T.v[2].x()}), x1 = std::max({T.v[0].x(), T.v[1].x(), T.v[2].x()});
+  double y0 = std::min({T.v[0].y(), T.v[1].y(), T.v[2].y()}), y1 = std::max({T.v[0].y(), T.v[1].y(), T.v[2].y()});
+  r[0] += x0;
+  r[1] += y0;
+  r[2] += x1;
+  r[3] += y1;
+  // Each coordinate is one rounded sum: pad by two ulps of its magnitude (and a tiny absolute).
+  for (double& v : r) {
+    const double pad = std::abs(v) * 0x1p-51 + 0x1p-1000;
+    v += (&v - r.data()) < 2 ? -pad : pad;
+  }
+  return r;
+}
+
+// The line is s1 + s2 + μ·(d1 − d0); entry/exit cuts give μ as their λ with that line as the ray.
+bool ConvolvedTriangles::line_interval_impl(std::size_t i, const Vec2& s1, const Vec2& s2, const Vec2& d0,
+                                            const Vec2& d1, Cut& entry, Cut& exit) const {
   const Tri& T = tri_[i];
   const std::size_t K = vertex_count();
-  const Vec2 nd = -d;
   // Front edges (cross(d, e) > 0) have angles in (θ, θ + π): vertices fs .. fe (cyclic); back
   // edges vertices bs .. be. X(v) = cross(d, v − t) increases along the front chain from its
   // minimum at fs to its maximum at fe, and decreases along the back chain.
-  const std::size_t fs = count_below(T, d, true) % K, be = count_below(T, d, false) % K;
-  const std::size_t bs = count_below(T, nd, true) % K, fe = count_below(T, nd, false) % K;
+  const std::size_t fs = count_below(T, d0, d1, true) % K, be = count_below(T, d0, d1, false) % K;
+  const std::size_t bs = count_below(T, d1, d0, true) % K, fe = count_below(T, d1, d0, false) % K;
   auto X = [&](std::size_t k) {
     int slot;
     std::size_t bj;
     vertex(i, k, slot, bj);
-    return side_of_line(T.v[slot], b_[bj], t, d);
+    return side_of_line(T.v[slot], b_[bj], s1, s2, d0, d1);
   };
   if (X(fs) >= 0 || X(fe) <= 0) return false;
   const std::size_t nf = (fe + K - fs) % K, nb = (be + K - bs) % K;

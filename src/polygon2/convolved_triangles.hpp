@@ -61,6 +61,13 @@ class ConvolvedTriangles {
   /// The open interval of λ where t + λ·d lies in int R_i: entry and exit cuts. Returns false
   /// when the line misses int R_i (including lines touching R_i only along its boundary). O(log m).
   bool line_interval(std::size_t i, const Vec2& t, const Vec2& d, Cut& entry, Cut& exit) const;
+  /// The same for the line of a cut, pt + pb + μ·(e1 − e0): μ of entry/exit is the cut's λ
+  /// with the line as the ray (used by the union boundary, DHS §4.1 Step 3). O(log m).
+  bool line_interval(std::size_t i, const Cut& line, Cut& entry, Cut& exit) const;
+  /// Conservative bounding box of R_i (xmin, ymin, xmax, ymax), padded for rounding.
+  std::array<double, 4> box(std::size_t i) const;
+  /// Heap bytes (triangles and B).
+  std::size_t bytes() const { return tri_.capacity() * sizeof(Tri) + b_.capacity() * sizeof(Vec2); }
 
  private:
   struct Tri {
@@ -68,10 +75,13 @@ class ConvolvedTriangles {
     std::array<Vec2, 3> v;
     std::array<std::uint32_t, 3> c;
   };
-  std::size_t count_below(const Tri& T, const Vec2& x, bool inclusive) const;
+  std::size_t count_below(const Tri& T, const Vec2& x0, const Vec2& x1, bool inclusive) const;
+  bool line_interval_impl(std::size_t i, const Vec2& s1, const Vec2& s2, const Vec2& d0, const Vec2& d1, Cut& entry,
+                          Cut& exit) const;
   std::vector<Tri> tri_;
   std::vector<Vec2> b_;
   std::size_t q_top_ = 0;
+  std::array<double, 4> bbox_b_{};
 };
 
 }  // namespace pendepth::polygon2

@@ -1,11 +1,16 @@
-// Complete separation along d for a polygon with holes against a convex polygon (DHS §6),
-// exact reference: the last exit of the line t + λ·d from any open R_i, if it lies after 0
-// (sup{λ ≥ 0 : t + λ·d ∈ O}, O = ∪ int R_i the overlap set). O(n log m).
+// Complete separation along d for a polygon with holes against a convex polygon (DHS §6): the last
+// exit of the line t + λ·d from any open R_i, if it lies after 0 (sup{λ ≥ 0 : t + λ·d ∈ O},
+// O = ∪ int R_i the overlap set; the sup of a union of open intervals is the largest of their ends).
+//   separation_triangles(): every R_i, O(n log m) (exact reference).
+//   separation():           branch-and-bound over the bounding-volume hierarchy of the R_i, farthest
+//                           boxes first (UnionBoundary::last_exit). Departure from DHS §6, which
+//                           shoots at the outer ring of ∂O: the last exit lies on the outer ring,
+//                           and it is also the largest R_i exit, found without walking the ring.
 #include "polygon2/query_impl.hpp"
 
 namespace pendepth {
 
-Depth2 PolygonDepth2::separation(const Vec2& t, const Vec2& d_in) const {
+Depth2 PolygonDepth2::separation_triangles(const Vec2& t, const Vec2& d_in) const {
   const Vec2 d = polygon2::check_and_scale(t, d_in);
   polygon2::Cut best, entry, exit;
   bool found = false;
@@ -19,6 +24,16 @@ Depth2 PolygonDepth2::separation(const Vec2& t, const Vec2& d_in) const {
   if (found) r = polygon2::result_at_cut(*impl_, best, t, d);
   r.kind = DepthKind::Separation;
   r.overlapping = overlapping(t);
+  return r;
+}
+
+Depth2 PolygonDepth2::separation(const Vec2& t, const Vec2& d_in) const {
+  const Vec2 d = polygon2::check_and_scale(t, d_in);
+  polygon2::Cut best;
+  Depth2 r;
+  if (impl_->U.last_exit(t, d, best)) r = polygon2::result_at_cut(*impl_, best, t, d);
+  r.kind = DepthKind::Separation;
+  r.overlapping = impl_->U.in_overlap(t);
   return r;
 }
 

@@ -43,6 +43,8 @@
 
 #include <pendepth/polygon.hpp>
 
+#include <gmpxx.h>
+
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -52,10 +54,20 @@
 
 namespace pendepth::polygon2 {
 
-/// One end of a piece: on the piece's first (start) or last (end) element.
+/// One end of a piece: a point on the piece's first (start) or last (end) element, given by its
+/// parameter μ on the element's line pt + pb + μ·(e1 − e0).
 struct EndPoint {
-  bool natural = true;  ///< μ = 0 (start) / μ = 1 (end) on the element: the vertex p + b
-  Cut other;            ///< when !natural: the end is the element's line ∩ other's line (not parallel)
+  enum class Kind : std::uint8_t {
+    Mu0,       ///< μ = 0: the element's natural start, the convolution vertex pt + pb
+    Mu1,       ///< μ = 1: the element's natural end, pt + pb + e1 − e0
+    Crossing,  ///< the element's line ∩ other's line (never parallel)
+    Point      ///< the convolution vertex p + b, lying on the element's line (where two
+               ///< same-orientation pieces overlap, the end of the kept copy)
+  };
+  Kind kind = Kind::Mu0;
+  Cut other;                        ///< Crossing
+  Vec2 p{0, 0}, b{0, 0};            ///< Point
+  std::uint32_t p_index = 0, b_index = 0;  ///< Point: P and B indices of p, b
 };
 
 struct Piece {
@@ -95,13 +107,14 @@ int compare_hits(const Hit& a, const Hit& b, const Vec2& t, const Vec2& d);
 /// λ(h) to a few ulps.
 double hit_value(const Hit& h, const Vec2& t, const Vec2& d);
 
-/// The nearest point of a piece to a placement t: the foot of t on an element, or an explicit
-/// piece end / convolution vertex. dist² is decided exactly by `compare_near`.
+/// The nearest point of a piece to a placement t: the foot of t on an element, an explicit
+/// convolution vertex p + b, or the crossing of two lines (a union vertex). Compared exactly.
 struct Near {
-  enum class Kind : std::uint8_t { Foot, Natural, Crossing } kind = Kind::Foot;
-  Cut cut;          ///< Foot: the element; Natural: the element whose natural end it is; Crossing: first line
-  Cut other;        ///< Crossing: the second line
-  bool at_end = false;  ///< Natural: μ = 1 (else μ = 0)
+  enum class Kind : std::uint8_t { Foot, Point, Crossing } kind = Kind::Foot;
+  Cut cut;    ///< Foot: the element; Point: the element containing the point; Crossing: first line
+  Cut other;  ///< Crossing: the second line
+  Vec2 p{0, 0}, b{0, 0};                   ///< Point: p + b; Foot: p = the placement t
+  std::uint32_t p_index = 0, b_index = 0;  ///< Point: indices into P and B
   std::uint32_t piece = 0;
 };
 /// Exact comparison of |x(a) − t|² and |x(b) − t|².
@@ -129,6 +142,9 @@ class UnionBoundary {
   /// Start / end point of piece k, rounded (a few ulps).
   Vec2 start_point(std::size_t k) const;
   Vec2 end_point(std::size_t k) const;
+  /// Start / end point of piece k exactly (rational coordinates; for tests and export).
+  std::array<mpq_class, 2> exact_start(std::size_t k) const;
+  std::array<mpq_class, 2> exact_end(std::size_t k) const;
   /// Conservative axis-aligned box of piece k (padded so that exact points never fall outside).
   std::array<double, 4> box(std::size_t k) const;  ///< xmin, ymin, xmax, ymax
 
