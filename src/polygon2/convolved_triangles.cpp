@@ -75,20 +75,10 @@ ConvolvedTriangles::ConvolvedTriangles(const Polygon& P, const ConvexPolygon& Q)
     bbox_b_[3] = std::max(bbox_b_[3], b.y());
   }
   const auto V = P.vertices();
-  for (const TriangleIds& ids : triangulate(P)) {
-    Tri T;
-    int low = 0;
-    for (int j = 1; j < 3; ++j) {
-      const Vec2 &a = V[ids[j]], &l = V[ids[low]];
-      if (a.y() < l.y() || (a.y() == l.y() && a.x() < l.x())) low = j;
-    }
-    for (int j = 0; j < 3; ++j) {
-      T.id[j] = ids[(low + j) % 3];
-      T.v[j] = V[T.id[j]];
-    }
-    for (int j = 0; j < 3; ++j) {
-      const Vec2 &a = T.v[j], &c = T.v[(j + 1) % 3];
-      // First B edge whose angle is >= angle(τ_j): angles increase along B's edges.
+  // c_j = number of B edges whose angle is < angle(τ_j) (binary search; angles increase along B).
+  auto fill_c = [&](Tri& T) {
+    for (int j = 0; j < T.n; ++j) {
+      const Vec2 &a = T.v[j], &c = T.v[(j + 1) % T.n];
       std::size_t lo = 0, hi = m;
       while (lo < hi) {
         std::size_t mid = (lo + hi) / 2;
@@ -97,37 +87,71 @@ ConvolvedTriangles::ConvolvedTriangles(const Polygon& P, const ConvexPolygon& Q)
       }
       T.c[j] = static_cast<std::uint32_t>(lo);
     }
+  };
+  auto lower_left = [](const Vec2& a, const Vec2& l) { return a.y() < l.y() || (a.y() == l.y() && a.x() < l.x()); };
+  for (const TriangleIds& ids : triangulate(P)) {
+    Tri T;
+    int low = 0;
+    for (int j = 1; j < 3; ++j)
+      if (lower_left(V[ids[j]], V[ids[low]])) low = j;
+    for (int j = 0; j < 3; ++j) {
+      T.id[j] = ids[(low + j) % 3];
+      T.v[j] = V[T.id[j]];
+    }
+    fill_c(T);
     tri_.push_back(T);
   }
+  // The edge sausages f ⊕ B: 2-gons in normal form (v_0 lowest-leftmost).
+  for (std::size_t g = 0; g < V.size(); ++g) {
+    Tri T;
+    T.n = 2;
+    std::uint32_t a = static_cast<std::uint32_t>(g), b = static_cast<std::uint32_t>(P.next(g));
+    if (lower_left(V[b], V[a])) std::swap(a, b);
+    T.id = {a, b, a};
+    T.v = {V[a], V[b], V[a]};
+    fill_c(T);
+    seg_.push_back(T);
+  }
+  // Triangles around each vertex (CSR).
+  fan_start_.assign(V.size() + 1, 0);
+  for (const Tri& T : tri_)
+    for (int j = 0; j < 3; ++j) ++fan_start_[T.id[j] + 1];
+  for (std::size_t v = 0; v < V.size(); ++v) fan_start_[v + 1] += fan_start_[v];
+  fan_.resize(fan_start_.back());
+  std::vector<std::uint32_t> fill(fan_start_.begin(), fan_start_.end() - 1);
+  for (std::size_t i = 0; i < tri_.size(); ++i)
+    for (int j = 0; j < 3; ++j) fan_[fill[tri_[i].id[j]]++] = static_cast<std::uint32_t>(i);
 }
 
-void ConvolvedTriangles::vertex(std::size_t i, std::size_t k, int& slot, std::size_t& bj) const {
-  const Tri& T = tri_[i];
-  k %= vertex_count();
+void ConvolvedTriangles::vertex(std::size_t i, std::size_t k, int& slot, std::size_t& bj) const { vertex_of(tri_[i], k, slot, bj); }
+
+void ConvolvedTriangles::vertex_of(const Tri& T, std::size_t k, int& slot, std::size_t& bj) const {
+  k %= b_.size() + T.n;
   int a = 0;
-  while (a < 3 && a + T.c[a] < k) ++a;
-  slot = a % 3;
+  while (a < T.n && a + T.c[a] < k) ++a;
+  slot = a % T.n;
   bj = (k - a) % b_.size();
 }
 
-Cut ConvolvedTriangles::edge(std::size_t i, std::size_t k) const {
-  const Tri& T = tri_[i];
+Cut ConvolvedTriangles::edge(std::size_t i, std::size_t k) const { return edge_of(tri_[i], i, k); }
+
+Cut ConvolvedTriangles::edge_of(const Tri& T, std::size_t idx, std::size_t k) const {
   const std::size_t m = b_.size();
-  k %= vertex_count();
+  k %= m + T.n;
   int slot;
   std::size_t bj;
-  vertex(i, k, slot, bj);
+  vertex_of(T, k, slot, bj);
   Cut c;
-  c.tri = static_cast<std::uint32_t>(i);
+  c.tri = static_cast<std::uint32_t>(idx);
   c.pt = T.v[slot];
   c.pb = b_[bj];
   c.b = static_cast<std::uint32_t>(bj);
-  const int a = [&] { int x = 0; while (x < 3 && x + T.c[x] < k) ++x; return x; }();
-  if (a < 3 && a + T.c[a] == k) {  // the triangle edge τ_a
+  const int a = [&] { int x = 0; while (x < T.n && x + T.c[x] < k) ++x; return x; }();
+  if (a < T.n && a + T.c[a] == k) {  // the triangle edge τ_a
     c.e0 = T.v[a];
-    c.e1 = T.v[(a + 1) % 3];
+    c.e1 = T.v[(a + 1) % T.n];
     c.p_from = T.id[a];
-    c.p_to = T.id[(a + 1) % 3];
+    c.p_to = T.id[(a + 1) % T.n];
     c.b_edge = false;
   } else {
     c.e0 = b_[bj];
@@ -146,7 +170,7 @@ std::size_t ConvolvedTriangles::count_below(const Tri& T, const Vec2& x0, const 
     return s < 0 || (inclusive && s == 0);
   };
   std::size_t n = 0;
-  for (int j = 0; j < 3; ++j) n += below(T.v[j], T.v[(j + 1) % 3]);
+  for (int j = 0; j < T.n; ++j) n += below(T.v[j], T.v[(j + 1) % T.n]);
   std::size_t lo = 0, hi = m;
   while (lo < hi) {
     std::size_t mid = (lo + hi) / 2;
@@ -156,13 +180,15 @@ std::size_t ConvolvedTriangles::count_below(const Tri& T, const Vec2& x0, const 
   return n + lo;
 }
 
-bool ConvolvedTriangles::contains_interior(std::size_t i, const Vec2& t) const {
-  const Tri& T = tri_[i];
-  const std::size_t K = vertex_count();
+bool ConvolvedTriangles::contains_interior(std::size_t i, const Vec2& t) const { return contains_of(tri_[i], t); }
+bool ConvolvedTriangles::segment_contains_interior(std::size_t g, const Vec2& t) const { return contains_of(seg_[g], t); }
+
+bool ConvolvedTriangles::contains_of(const Tri& T, const Vec2& t) const {
+  const std::size_t K = b_.size() + T.n;
   auto pt = [&](std::size_t k, Vec2& a, Vec2& b) {
     int slot;
     std::size_t bj;
-    vertex(i, k, slot, bj);
+    vertex_of(T, k, slot, bj);
     a = T.v[slot];
     b = b_[bj];
   };
@@ -187,15 +213,25 @@ bool ConvolvedTriangles::contains_interior(std::size_t i, const Vec2& t) const {
 }
 
 bool ConvolvedTriangles::line_interval(std::size_t i, const Vec2& t, const Vec2& d, Cut& entry, Cut& exit) const {
-  return line_interval_impl(i, t, kZero, kZero, d, entry, exit);
+  return line_interval_impl(tri_[i], i, t, kZero, kZero, d, entry, exit);
 }
 
 bool ConvolvedTriangles::line_interval(std::size_t i, const Cut& line, Cut& entry, Cut& exit) const {
-  return line_interval_impl(i, line.pt, line.pb, line.e0, line.e1, entry, exit);
+  return line_interval_impl(tri_[i], i, line.pt, line.pb, line.e0, line.e1, entry, exit);
 }
 
-std::array<double, 4> ConvolvedTriangles::box(std::size_t i) const {
-  const Tri& T = tri_[i];
+bool ConvolvedTriangles::segment_line_interval(std::size_t g, const Vec2& t, const Vec2& d, Cut& entry, Cut& exit) const {
+  return line_interval_impl(seg_[g], g, t, kZero, kZero, d, entry, exit);
+}
+
+bool ConvolvedTriangles::segment_line_interval(std::size_t g, const Cut& line, Cut& entry, Cut& exit) const {
+  return line_interval_impl(seg_[g], g, line.pt, line.pb, line.e0, line.e1, entry, exit);
+}
+
+std::array<double, 4> ConvolvedTriangles::box(std::size_t i) const { return box_of(tri_[i]); }
+std::array<double, 4> ConvolvedTriangles::segment_box(std::size_t g) const { return box_of(seg_[g]); }
+
+std::array<double, 4> ConvolvedTriangles::box_of(const Tri& T) const {
   std::array<double, 4> r{bbox_b_[0], bbox_b_[1], bbox_b_[2], bbox_b_[3]};
   double x0 = std::min({T.v[0].x(), T.v[1].x(), T.v[2].x()}), x1 = std::max({T.v[0].x(), T.v[1].x(), T.v[2].x()});
   double y0 = std::min({T.v[0].y(), T.v[1].y(), T.v[2].y()}), y1 = std::max({T.v[0].y(), T.v[1].y(), T.v[2].y()});
@@ -212,10 +248,9 @@ std::array<double, 4> ConvolvedTriangles::box(std::size_t i) const {
 }
 
 // The line is s1 + s2 + μ·(d1 − d0); entry/exit cuts give μ as their λ with that line as the ray.
-bool ConvolvedTriangles::line_interval_impl(std::size_t i, const Vec2& s1, const Vec2& s2, const Vec2& d0,
+bool ConvolvedTriangles::line_interval_impl(const Tri& T, std::size_t i, const Vec2& s1, const Vec2& s2, const Vec2& d0,
                                             const Vec2& d1, Cut& entry, Cut& exit) const {
-  const Tri& T = tri_[i];
-  const std::size_t K = vertex_count();
+  const std::size_t K = b_.size() + T.n;
   // Front edges (cross(d, e) > 0) have angles in (θ, θ + π): vertices fs .. fe (cyclic); back
   // edges vertices bs .. be. X(v) = cross(d, v − t) increases along the front chain from its
   // minimum at fs to its maximum at fe, and decreases along the back chain.
@@ -224,7 +259,7 @@ bool ConvolvedTriangles::line_interval_impl(std::size_t i, const Vec2& s1, const
   auto X = [&](std::size_t k) {
     int slot;
     std::size_t bj;
-    vertex(i, k, slot, bj);
+    vertex_of(T, k, slot, bj);
     return side_of_line(T.v[slot], b_[bj], s1, s2, d0, d1);
   };
   if (X(fs) >= 0 || X(fe) <= 0) return false;
@@ -236,7 +271,7 @@ bool ConvolvedTriangles::line_interval_impl(std::size_t i, const Vec2& s1, const
     if (X((fs + mid) % K) <= 0) lo = mid;
     else hi = mid;
   }
-  exit = edge(i, (fs + lo) % K);
+  exit = edge_of(T, i, (fs + lo) % K);
   // Entry: last offset o in [0, nb) with X(v_{bs+o}) >= 0.
   lo = 0;
   hi = nb;  // X(bs + lo) > 0, X(bs + hi) < 0
@@ -245,7 +280,7 @@ bool ConvolvedTriangles::line_interval_impl(std::size_t i, const Vec2& s1, const
     if (X((bs + mid) % K) >= 0) lo = mid;
     else hi = mid;
   }
-  entry = edge(i, (bs + lo) % K);
+  entry = edge_of(T, i, (bs + lo) % K);
   return true;
 }
 

@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "polygon2/triangulation.hpp"
@@ -66,19 +67,43 @@ class ConvolvedTriangles {
   bool line_interval(std::size_t i, const Cut& line, Cut& entry, Cut& exit) const;
   /// Conservative bounding box of R_i (xmin, ymin, xmax, ymax), padded for rounding.
   std::array<double, 4> box(std::size_t i) const;
-  /// Heap bytes (triangles and B).
-  std::size_t bytes() const { return tri_.capacity() * sizeof(Tri) + b_.capacity() * sizeof(Vec2); }
+  /// Heap bytes (triangles, edge sausages, fans and B).
+  std::size_t bytes() const {
+    return (tri_.capacity() + seg_.capacity()) * sizeof(Tri) + b_.capacity() * sizeof(Vec2) +
+           (fan_.capacity() + fan_start_.capacity()) * sizeof(std::uint32_t);
+  }
+
+  // The edge sausages S_g = f_g ⊕ B for the P edges f_g = (g, P.next(g)), implicit like the R_i
+  // (a 2-gon instead of a triangle: m + 2 edges). For a placement x where Q + x is not inside P,
+  // x ∈ O ⇔ x ∈ int S_g for some g (int(Q + x) then meets ∂P, hence some edge's relative interior).
+  // Their boxes are small (|f_g| + |B|), unlike the R_i of long triangulation diagonals.
+  std::size_t segment_count() const { return seg_.size(); }
+  bool segment_contains_interior(std::size_t g, const Vec2& t) const;
+  /// As line_interval; the returned cuts carry tri = g.
+  bool segment_line_interval(std::size_t g, const Vec2& t, const Vec2& d, Cut& entry, Cut& exit) const;
+  bool segment_line_interval(std::size_t g, const Cut& line, Cut& entry, Cut& exit) const;
+  std::array<double, 4> segment_box(std::size_t g) const;
+  /// Triangles incident to P vertex v.
+  std::span<const std::uint32_t> triangles_at(std::size_t v) const {
+    return std::span<const std::uint32_t>(fan_).subspan(fan_start_[v], fan_start_[v + 1] - fan_start_[v]);
+  }
 
  private:
   struct Tri {
     TriangleIds id;
     std::array<Vec2, 3> v;
     std::array<std::uint32_t, 3> c;
+    int n = 3;  ///< 3: triangle; 2: edge sausage (id[2], v[2], c[2] unused)
   };
   std::size_t count_below(const Tri& T, const Vec2& x0, const Vec2& x1, bool inclusive) const;
-  bool line_interval_impl(std::size_t i, const Vec2& s1, const Vec2& s2, const Vec2& d0, const Vec2& d1, Cut& entry,
-                          Cut& exit) const;
-  std::vector<Tri> tri_;
+  void vertex_of(const Tri& T, std::size_t k, int& slot, std::size_t& bj) const;
+  Cut edge_of(const Tri& T, std::size_t idx, std::size_t k) const;
+  bool contains_of(const Tri& T, const Vec2& t) const;
+  std::array<double, 4> box_of(const Tri& T) const;
+  bool line_interval_impl(const Tri& T, std::size_t i, const Vec2& s1, const Vec2& s2, const Vec2& d0, const Vec2& d1,
+                          Cut& entry, Cut& exit) const;
+  std::vector<Tri> tri_, seg_;
+  std::vector<std::uint32_t> fan_, fan_start_;
   std::vector<Vec2> b_;
   std::size_t q_top_ = 0;
   std::array<double, 4> bbox_b_{};

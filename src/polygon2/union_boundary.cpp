@@ -431,7 +431,7 @@ Vec2 near_point(const Near& n) {
 // ---- the structure ----
 
 struct UnionBoundary::Index {
-  Bvh pieces, tris;
+  Bvh pieces, sausages, edges;  // pieces of ∂O; the edge sausages f_g ⊕ B; P's edges
   std::vector<Box> piece_box;
   std::array<std::uint32_t, 4> ext{};  // B vertices with min x, min y, max x, max y
 };
@@ -599,11 +599,16 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
                    std::max(a.y(), b.y()) + t.y()});
   };
 
-  // 2. Hierarchies over the R_i and the candidates.
+  // 2. Hierarchies over the edge sausages and the candidates.
   {
-    std::vector<Box> rb(R.size());
-    for (std::size_t i = 0; i < R.size(); ++i) rb[i] = R.box(i);
-    X.tris.build(rb);
+    std::vector<Box> sb(R.segment_count());
+    for (std::size_t g = 0; g < sb.size(); ++g) sb[g] = R.segment_box(g);
+    X.sausages.build(sb);
+    for (std::size_t g = 0; g < sb.size(); ++g) {
+      const Vec2 &a = V[g], &b = V[P.next(g)];
+      sb[g] = Box{std::min(a.x(), b.x()), std::min(a.y(), b.y()), std::max(a.x(), b.x()), std::max(a.y(), b.y())};
+    }
+    X.edges.build(sb);
   }
   std::vector<Box> cb(cand.size());
   for (std::size_t c = 0; c < cand.size(); ++c) cb[c] = cand_box(cand[c]);
@@ -711,55 +716,92 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
       }
       return any;
     };
-    // Interiors of the R_j.
+    // Points of O: inside an edge sausage int(f_g ⊕ B) (Q + x meets the relative interior of f_g),
+    // or inside int R_T for a triangle T around the candidate's P vertices (Q + x touching P at a
+    // vertex from inside — the only contact placements with Q + x ⊂ P). Both sets lie in O.
+    // Encoded in `near` as g (sausage) or N + T (fan triangle).
     near.clear();
-    X.tris.overlap(cb[ci], [&](std::uint32_t j) { near.push_back(j); });
-    {  // nearest R_j first: they cover most; stop as soon as the candidate is fully covered
+    const std::size_t NS = R.segment_count();
+    X.sausages.overlap(cb[ci], [&](std::uint32_t g) { near.push_back(g); });
+    {  // nearest sausages first: they cover most; stop as soon as the candidate is fully covered
       const double cx = cb[ci][0] + cb[ci][2], cy = cb[ci][1] + cb[ci][3];
       std::vector<std::pair<double, std::uint32_t>> order;
       order.reserve(near.size());
-      for (std::uint32_t j : near) {
-        const Box b = R.box(j);
-        order.push_back({std::abs(b[0] + b[2] - cx) + std::abs(b[1] + b[3] - cy), j});
+      for (std::uint32_t g : near) {
+        const Box b = R.segment_box(g);
+        order.push_back({std::abs(b[0] + b[2] - cx) + std::abs(b[1] + b[3] - cy), g});
       }
       std::sort(order.begin(), order.end());
-      for (std::size_t q = 0; q < order.size(); ++q) near[q] = order[q].second;
+      near.clear();
+      for (std::uint32_t v : {C.p, C.arc ? C.p : static_cast<std::uint32_t>(P.next(C.p))})
+        for (std::uint32_t T : R.triangles_at(v)) near.push_back(static_cast<std::uint32_t>(NS + T));
+      for (const auto& o : order) near.push_back(o.second);
     }
-    bool covered = false;
-    std::size_t checkpoint = 1;
+    // Fan triangles: only the candidate's natural ends can lie in them (elsewhere Q + x has points
+    // outside P near the contact); test the first and last element.
+    Cut in, out;
     for (std::uint32_t rj : near) {
-      if (ivs.size() >= checkpoint) {
-        checkpoint = 2 * ivs.size();
-        std::vector<Interval> copy = ivs;
-        if (!sweep(copy, false)) {
-          covered = true;
-          break;
-        }
+      if (rj < NS) break;
+      for (std::uint32_t j : {0u, Lc - 1}) {
+        const Cut E = elem(C, j);
+        if (R.line_interval(rj - NS, E, in, out)) add_cover(j, E, in, out);
+        if (Lc == 1) break;
       }
-      const Box rbox = R.box(rj);
-      Cut in, out;
-      if (!C.arc) {
-        const Cut E = elem(C, 0);
-        if (R.line_interval(rj, E, in, out)) add_cover(0, E, in, out);
+    }
+    // Sausages: recursive element ranges. A range whose (padded) box has its four corners inside
+    // one int S_g is covered at once (S_g convex); a single element is cut by every sausage whose
+    // box meets it, until one covers it entirely.
+    auto rng_box = [&](std::uint32_t lo, std::uint32_t hi) { return C.arc ? range_box(V[C.p], C.b0 + lo, hi - lo) : cb[ci]; };
+    std::vector<std::uint32_t> overl;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> st{{0, Lc}};
+    while (!st.empty()) {
+      auto [lo, hi] = st.back();
+      st.pop_back();
+      const Box rb = rng_box(lo, hi);
+      overl.clear();
+      for (std::uint32_t g : near)
+        if (g < NS && boxes_meet(R.segment_box(g), rb)) overl.push_back(g);
+      if (overl.empty()) continue;
+      bool whole = false;
+      int tries = 0;
+      for (std::uint32_t g : overl) {
+        const Box sb = R.segment_box(g);
+        if (sb[0] > rb[0] || sb[1] > rb[1] || sb[2] < rb[2] || sb[3] < rb[3]) continue;
+        if (++tries > 6) break;
+        whole = R.segment_contains_interior(g, Vec2(rb[0], rb[1])) && R.segment_contains_interior(g, Vec2(rb[2], rb[1])) &&
+                R.segment_contains_interior(g, Vec2(rb[2], rb[3])) && R.segment_contains_interior(g, Vec2(rb[0], rb[3]));
+        if (whole) break;
+      }
+      if (whole) {
+        Interval I;
+        I.s.j = lo;
+        I.s.mu = c0();
+        I.s_incl = true;
+        I.e.j = hi - 1;
+        I.e.mu = c1();
+        I.e_incl = true;
+        normalize_end(I);
+        ivs.push_back(std::move(I));
         continue;
       }
-      // Arc: recurse on element ranges whose boxes meet R_j's box.
-      std::vector<std::pair<std::uint32_t, std::uint32_t>> st{{0, Lc}};
-      while (!st.empty()) {
-        auto [lo, hi] = st.back();
-        st.pop_back();
-        if (!boxes_meet(range_box(V[C.p], C.b0 + lo, hi - lo), rbox)) continue;
-        if (hi - lo == 1) {
-          const Cut E = elem(C, lo);
-          if (R.line_interval(rj, E, in, out)) add_cover(lo, E, in, out);
-          continue;
-        }
-        const std::uint32_t mid = (lo + hi) / 2;
-        st.push_back({lo, mid});
-        st.push_back({mid, hi});
+      if (hi - lo == 1) {
+        const Cut E = elem(C, lo);
+        for (std::uint32_t g : overl)
+          if (R.segment_line_interval(g, E, in, out)) {
+            const std::size_t before = ivs.size();
+            add_cover(lo, E, in, out);
+            if (ivs.size() > before && ivs.back().s_incl && ivs.back().e_incl) break;  // element covered
+          }
+        continue;
       }
+      const std::uint32_t mid = (lo + hi) / 2;
+      st.push_back({lo, mid});
+      st.push_back({mid, hi});
     }
-    if (covered) continue;
+    {
+      std::vector<Interval> copy = ivs;
+      if (!sweep(copy, false)) continue;  // nothing left: skip the coincidence search
+    }
     // Same-orientation coinciding copies in candidates with a smaller id.
     near.clear();
     cbvh.overlap(cb[ci], [&](std::uint32_t o) {
@@ -1376,15 +1418,39 @@ bool UnionBoundary::nearest(const Vec2& t, Near& best) const {
 // ---- queries on the R_i ----
 
 bool UnionBoundary::in_overlap(const Vec2& t) const {
+  // Q + t meets the relative interior of some P edge: t ∈ int(f_g ⊕ B).
   bool in = false;
-  index_->tris.overlap(Box{t.x(), t.y(), t.x(), t.y()}, [&](std::uint32_t i) {
-    if (!in && R_->contains_interior(i, t)) in = true;
+  index_->sausages.overlap(Box{t.x(), t.y(), t.x(), t.y()}, [&](std::uint32_t g) {
+    if (!in && R_->segment_contains_interior(g, t)) in = true;
   });
-  return in;
+  if (in) return true;
+  // Otherwise int(Q + t) misses ∂P: it overlaps P iff it lies inside P. Test the interior point
+  // c = t + (q0 + q1 + q2)/3 (Q strictly convex) by the crossing number of the ray c + s·(1, 0)
+  // with P's edges (half-open rule on y, exact in 3c = 3t + q0 + q1 + q2).
+  const auto& B = R_->B();
+  const Vec2 q0 = -B[0], q1 = -B[1], q2 = -B[2];
+  auto c3 = [&](int k, auto L) { return L(3.0) * L(t[k]) + L(q0[k]) + L(q1[k]) + L(q2[k]); };
+  const Vec2 ca = t + (q0 + q1 + q2) / 3;
+  const double w = (std::abs(ca.x()) + std::abs(ca.y()) + std::abs(q0.x()) + std::abs(q0.y()) + std::abs(q1.x()) +
+                    std::abs(q1.y()) + std::abs(q2.x()) + std::abs(q2.y())) * 0x1p-40 + 0x1p-1000;
+  const auto V = P_->vertices();
+  std::size_t crossings = 0;
+  index_->edges.overlap(Box{ca.x() - w, ca.y() - w, INFINITY, ca.y() + w}, [&](std::uint32_t g) {
+    const Vec2 &a = V[g], &b = V[P_->next(g)];
+    const bool above_a = exact_sign([&](auto L) { return L(3.0) * L(a.y()) - c3(1, L); }) > 0;
+    const bool above_b = exact_sign([&](auto L) { return L(3.0) * L(b.y()) - c3(1, L); }) > 0;
+    if (above_a == above_b) return;
+    // c strictly left of the edge directed upwards: the crossing lies to the right of c.
+    const int o = exact_sign([&](auto L) {
+      return (L(b.x()) - L(a.x())) * (c3(1, L) - L(3.0) * L(a.y())) - (L(b.y()) - L(a.y())) * (c3(0, L) - L(3.0) * L(a.x()));
+    });
+    if ((above_b ? o : -o) > 0) ++crossings;
+  });
+  return crossings % 2 == 1;
 }
 
 bool UnionBoundary::last_exit(const Vec2& t, const Vec2& d, Cut& best) const {
-  const Bvh& T = index_->tris;
+  const Bvh& T = index_->sausages;
   if (T.nodes.empty()) return false;
   bool found = false;
   double bound = 0;  // exits at or before this λ cannot win (λ > 0 is required anyway)
@@ -1398,9 +1464,9 @@ bool UnionBoundary::last_exit(const Vec2& t, const Vec2& d, Cut& best) const {
     if (n.leaf) {
       for (std::uint32_t i = n.a; i < n.b; ++i) {
         const std::uint32_t r = T.items[i];
-        if (!R_->line_interval(r, t, d, en, ex) || cut_sign(ex, t, d) <= 0) continue;
+        if (!R_->segment_line_interval(r, t, d, en, ex) || cut_sign(ex, t, d) <= 0) continue;
         const int c = found ? compare_cuts(ex, best, t, d) : 1;
-        if (c > 0 || (c == 0 && ex.tri < best.tri)) {  // ties: lowest triangle, as the reference scan
+        if (c > 0 || (c == 0 && ex.tri < best.tri)) {  // ties: lowest edge
           best = ex;
           found = true;
           const double v = cut_value(best, t, d);
@@ -1432,7 +1498,7 @@ bool UnionBoundary::last_exit(const Vec2& t, const Vec2& d, Cut& best) const {
 
 std::size_t UnionBoundary::bytes() const {
   return pieces_.capacity() * sizeof(Piece) + rings_.capacity() * sizeof(Ring) + index_->pieces.bytes() +
-         index_->tris.bytes() + index_->piece_box.capacity() * sizeof(Box) + sizeof(Index);
+         index_->sausages.bytes() + index_->edges.bytes() + index_->piece_box.capacity() * sizeof(Box) + sizeof(Index);
 }
 std::size_t UnionBoundary::segment_count() const {
   return std::count_if(pieces_.begin(), pieces_.end(), [](const Piece& p) { return p.kind == Piece::Kind::Segment; });
