@@ -159,7 +159,7 @@ class PolygonPair {
     if (swapped_)
       for (auto& ring : scene.config)
         for (Vec2& x : ring) x = Vec2(0, 0) - x;
-    scene.config_label = "∂O: placements where Q + t touches P";
+    scene.config_label = "O: placements t where Q + t overlaps P (outline ∂O)";
     scene.config_target = "t + v on ∂O";
     io::write_svg(path, scene, t, r, io::SvgOptions{d, true});
   }

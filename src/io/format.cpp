@@ -87,15 +87,15 @@ void append_feature(std::string& out, const Feature& f, const Polygon& poly) {
 
 std::string ring_text(const Polygon& poly, std::size_t g) {
   const std::size_t k = poly.ring_of(g);
-  return k == 0 ? "outer ring" : "hole " + std::to_string(k);
+  return k == 0 ? "the outer ring" : "hole " + std::to_string(k);
 }
 
 std::string feature_text(const Feature& f, const Polygon& poly) {
   if (f.kind == FeatureKind::None || f.index < 0 || std::size_t(f.index) >= poly.size()) return "none";
   const std::size_t g = static_cast<std::size_t>(f.index);
-  if (f.kind == FeatureKind::Vertex) return "vertex " + std::to_string(poly.input_index(g)) + " of the " + ring_text(poly, g);
+  if (f.kind == FeatureKind::Vertex) return "vertex " + std::to_string(poly.input_index(g)) + " of " + ring_text(poly, g);
   return "edge from vertex " + std::to_string(poly.input_index(g)) + " to vertex " +
-         std::to_string(poly.input_index(poly.next(g))) + " of the " + ring_text(poly, g);
+         std::to_string(poly.input_index(poly.next(g))) + " of " + ring_text(poly, g);
 }
 
 std::string vec_text(const Vec2& v) {
