@@ -27,6 +27,11 @@ int orient_sums(const Vec2& a1, const Vec2& b1, const Vec2& a2, const Vec2& b2, 
 // Exact sign of X(a + b) = cross(d1 − d0, a + b − s1 − s2): the side of a + b of the line
 // through s1 + s2 with direction d1 − d0.
 int side_of_line(const Vec2& a, const Vec2& b, const Vec2& s1, const Vec2& s2, const Vec2& d0, const Vec2& d1) {
+  // Structural zeros (a convolution vertex on the line of an edge it ends), frequent in the union
+  // build, decided without the rational fallback: the line through s1 + s2 along d1 − d0 contains
+  // s1 + d0 and s1 + d1 when s2 = d0 (a B edge at s1), s2 + d0 and s2 + d1 when s1 = d0.
+  if (a == s1 && s2 == d0 && (b == d0 || b == d1)) return 0;
+  if (b == s2 && s1 == d0 && (a == d0 || a == d1)) return 0;
   return exact_sign([&](auto L) {
     return (L(d1.x()) - L(d0.x())) * (L(a.y()) + L(b.y()) - L(s1.y()) - L(s2.y())) -
            (L(d1.y()) - L(d0.y())) * (L(a.x()) + L(b.x()) - L(s1.x()) - L(s2.x()));
@@ -73,6 +78,24 @@ ConvolvedTriangles::ConvolvedTriangles(const Polygon& P, const ConvexPolygon& Q)
     bbox_b_[1] = std::min(bbox_b_[1], b.y());
     bbox_b_[2] = std::max(bbox_b_[2], b.x());
     bbox_b_[3] = std::max(bbox_b_[3], b.y());
+  }
+  // For each B edge k: the number of B edges whose angle is < / <= the angle of −(edge k).
+  opp_lt_.resize(m);
+  opp_le_.resize(m);
+  for (std::size_t k = 0; k < m; ++k) {
+    const Vec2 &x0 = b_[(k + 1) % m], &x1 = b_[k];
+    auto count = [&](bool inclusive) {
+      std::size_t lo = 0, hi = m;
+      while (lo < hi) {
+        std::size_t mid = (lo + hi) / 2;
+        const int c = compare_angle(b_[mid], b_[(mid + 1) % m], x0, x1);
+        if (c < 0 || (inclusive && c == 0)) lo = mid + 1;
+        else hi = mid;
+      }
+      return static_cast<std::uint32_t>(lo);
+    };
+    opp_lt_[k] = count(false);
+    opp_le_[k] = count(true);
   }
   const auto V = P.vertices();
   // c_j = number of B edges whose angle is < angle(τ_j) (binary search; angles increase along B).
@@ -163,7 +186,8 @@ Cut ConvolvedTriangles::edge_of(const Tri& T, std::size_t idx, std::size_t k) co
 }
 
 // Number of edges of R (triangle's and B's) whose angle is < angle(x) (<= when inclusive).
-std::size_t ConvolvedTriangles::count_below(const Tri& T, const Vec2& x0, const Vec2& x1, bool inclusive) const {
+std::size_t ConvolvedTriangles::count_below(const Tri& T, const Vec2& x0, const Vec2& x1, bool inclusive, int bedge,
+                                            bool reversed) const {
   const std::size_t m = b_.size();
   auto below = [&](const Vec2& e0, const Vec2& e1) {
     int s = compare_angle(e0, e1, x0, x1);
@@ -171,6 +195,10 @@ std::size_t ConvolvedTriangles::count_below(const Tri& T, const Vec2& x0, const 
   };
   std::size_t n = 0;
   for (int j = 0; j < T.n; ++j) n += below(T.v[j], T.v[(j + 1) % T.n]);
+  if (bedge >= 0) {  // x = ± B edge `bedge`: B's part is known (angles increase along B)
+    if (!reversed) return n + bedge + (inclusive ? 1 : 0);
+    return n + (inclusive ? opp_le_[bedge] : opp_lt_[bedge]);
+  }
   std::size_t lo = 0, hi = m;
   while (lo < hi) {
     std::size_t mid = (lo + hi) / 2;
@@ -217,7 +245,7 @@ bool ConvolvedTriangles::line_interval(std::size_t i, const Vec2& t, const Vec2&
 }
 
 bool ConvolvedTriangles::line_interval(std::size_t i, const Cut& line, Cut& entry, Cut& exit) const {
-  return line_interval_impl(tri_[i], i, line.pt, line.pb, line.e0, line.e1, entry, exit);
+  return line_interval_impl(tri_[i], i, line.pt, line.pb, line.e0, line.e1, entry, exit, line.b_edge ? int(line.b) : -1);
 }
 
 bool ConvolvedTriangles::segment_line_interval(std::size_t g, const Vec2& t, const Vec2& d, Cut& entry, Cut& exit) const {
@@ -225,7 +253,7 @@ bool ConvolvedTriangles::segment_line_interval(std::size_t g, const Vec2& t, con
 }
 
 bool ConvolvedTriangles::segment_line_interval(std::size_t g, const Cut& line, Cut& entry, Cut& exit) const {
-  return line_interval_impl(seg_[g], g, line.pt, line.pb, line.e0, line.e1, entry, exit);
+  return line_interval_impl(seg_[g], g, line.pt, line.pb, line.e0, line.e1, entry, exit, line.b_edge ? int(line.b) : -1);
 }
 
 std::array<double, 4> ConvolvedTriangles::box(std::size_t i) const { return box_of(tri_[i]); }
@@ -249,13 +277,16 @@ std::array<double, 4> ConvolvedTriangles::box_of(const Tri& T) const {
 
 // The line is s1 + s2 + μ·(d1 − d0); entry/exit cuts give μ as their λ with that line as the ray.
 bool ConvolvedTriangles::line_interval_impl(const Tri& T, std::size_t i, const Vec2& s1, const Vec2& s2, const Vec2& d0,
-                                            const Vec2& d1, Cut& entry, Cut& exit) const {
+                                            const Vec2& d1, Cut& entry, Cut& exit, int bedge) const {
   const std::size_t K = b_.size() + T.n;
   // Front edges (cross(d, e) > 0) have angles in (θ, θ + π): vertices fs .. fe (cyclic); back
   // edges vertices bs .. be. X(v) = cross(d, v − t) increases along the front chain from its
   // minimum at fs to its maximum at fe, and decreases along the back chain.
-  const std::size_t fs = count_below(T, d0, d1, true) % K, be = count_below(T, d0, d1, false) % K;
-  const std::size_t bs = count_below(T, d1, d0, true) % K, fe = count_below(T, d1, d0, false) % K;
+  const std::size_t m = b_.size();
+  const int be_idx =
+      (bedge >= 0 && s2 == d0 && d0 == b_[std::size_t(bedge) % m] && d1 == b_[(std::size_t(bedge) + 1) % m]) ? bedge : -1;
+  const std::size_t fs = count_below(T, d0, d1, true, be_idx, false) % K, be = count_below(T, d0, d1, false, be_idx, false) % K;
+  const std::size_t bs = count_below(T, d1, d0, true, be_idx, true) % K, fe = count_below(T, d1, d0, false, be_idx, true) % K;
   auto X = [&](std::size_t k) {
     int slot;
     std::size_t bj;

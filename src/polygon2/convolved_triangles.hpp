@@ -70,7 +70,7 @@ class ConvolvedTriangles {
   /// Heap bytes (triangles, edge sausages, fans and B).
   std::size_t bytes() const {
     return (tri_.capacity() + seg_.capacity()) * sizeof(Tri) + b_.capacity() * sizeof(Vec2) +
-           (fan_.capacity() + fan_start_.capacity()) * sizeof(std::uint32_t);
+           (fan_.capacity() + fan_start_.capacity() + opp_lt_.capacity() + opp_le_.capacity()) * sizeof(std::uint32_t);
   }
 
   // The edge sausages S_g = f_g ⊕ B for the P edges f_g = (g, P.next(g)), implicit like the R_i
@@ -95,15 +95,19 @@ class ConvolvedTriangles {
     std::array<std::uint32_t, 3> c;
     int n = 3;  ///< 3: triangle; 2: edge sausage (id[2], v[2], c[2] unused)
   };
-  std::size_t count_below(const Tri& T, const Vec2& x0, const Vec2& x1, bool inclusive) const;
+  /// Edges of T ⊕ B with angle < (<= when inclusive) angle(x1 − x0). bedge >= 0: x1 − x0 is
+  /// B edge `bedge` (reversed: its opposite), whose rank in B is known without predicates.
+  std::size_t count_below(const Tri& T, const Vec2& x0, const Vec2& x1, bool inclusive, int bedge = -1,
+                          bool reversed = false) const;
   void vertex_of(const Tri& T, std::size_t k, int& slot, std::size_t& bj) const;
   Cut edge_of(const Tri& T, std::size_t idx, std::size_t k) const;
   bool contains_of(const Tri& T, const Vec2& t) const;
   std::array<double, 4> box_of(const Tri& T) const;
   bool line_interval_impl(const Tri& T, std::size_t i, const Vec2& s1, const Vec2& s2, const Vec2& d0, const Vec2& d1,
-                          Cut& entry, Cut& exit) const;
+                          Cut& entry, Cut& exit, int bedge = -1) const;
   std::vector<Tri> tri_, seg_;
   std::vector<std::uint32_t> fan_, fan_start_;
+  std::vector<std::uint32_t> opp_lt_, opp_le_;  ///< per B edge k: B edges with angle < / <= angle(−edge k)
   std::vector<Vec2> b_;
   std::size_t q_top_ = 0;
   std::array<double, 4> bbox_b_{};

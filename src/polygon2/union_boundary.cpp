@@ -599,10 +599,20 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
                    std::max(a.y(), b.y()) + t.y()});
   };
 
-  // 2. Hierarchies over the edge sausages and the candidates.
+  Vec2 bcen(0, 0);  // twice the centre of B's box
   {
-    std::vector<Box> sb(R.segment_count());
-    for (std::size_t g = 0; g < sb.size(); ++g) sb[g] = R.segment_box(g);
+    Vec2 lo = B[0], hi = B[0];
+    for (const Vec2& b : B) {
+      lo = lo.cwiseMin(b);
+      hi = hi.cwiseMax(b);
+    }
+    bcen = lo + hi;
+  }
+  // 2. Hierarchies over the edge sausages and the candidates.
+  std::vector<Box> sbox(R.segment_count());
+  for (std::size_t g = 0; g < sbox.size(); ++g) sbox[g] = R.segment_box(g);
+  {
+    std::vector<Box> sb = sbox;
     X.sausages.build(sb);
     for (std::size_t g = 0; g < sb.size(); ++g) {
       const Vec2 &a = V[g], &b = V[P.next(g)];
@@ -723,13 +733,14 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
     near.clear();
     const std::size_t NS = R.segment_count();
     X.sausages.overlap(cb[ci], [&](std::uint32_t g) { near.push_back(g); });
-    {  // nearest sausages first: they cover most; stop as soon as the candidate is fully covered
-      const double cx = cb[ci][0] + cb[ci][2], cy = cb[ci][1] + cb[ci][3];
+    {  // likely covers first: edges near the centre of Q placed on the candidate (Q + x has its
+       // centre near x − centre(B)); the order only affects speed
+      const double cx = cb[ci][0] + cb[ci][2] - bcen.x(), cy = cb[ci][1] + cb[ci][3] - bcen.y();
       std::vector<std::pair<double, std::uint32_t>> order;
       order.reserve(near.size());
       for (std::uint32_t g : near) {
-        const Box b = R.segment_box(g);
-        order.push_back({std::abs(b[0] + b[2] - cx) + std::abs(b[1] + b[3] - cy), g});
+        const Vec2 e = V[g] + V[P.next(g)];
+        order.push_back({std::abs(e.x() - cx) + std::abs(e.y() - cy), g});
       }
       std::sort(order.begin(), order.end());
       near.clear();
@@ -760,14 +771,14 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
       const Box rb = rng_box(lo, hi);
       overl.clear();
       for (std::uint32_t g : near)
-        if (g < NS && boxes_meet(R.segment_box(g), rb)) overl.push_back(g);
+        if (g < NS && boxes_meet(sbox[g], rb)) overl.push_back(g);
       if (overl.empty()) continue;
       bool whole = false;
       int tries = 0;
       for (std::uint32_t g : overl) {
-        const Box sb = R.segment_box(g);
+        const Box& sb = sbox[g];
         if (sb[0] > rb[0] || sb[1] > rb[1] || sb[2] < rb[2] || sb[3] < rb[3]) continue;
-        if (++tries > 6) break;
+        if (++tries > 3) break;
         whole = R.segment_contains_interior(g, Vec2(rb[0], rb[1])) && R.segment_contains_interior(g, Vec2(rb[2], rb[1])) &&
                 R.segment_contains_interior(g, Vec2(rb[2], rb[3])) && R.segment_contains_interior(g, Vec2(rb[0], rb[3]));
         if (whole) break;
