@@ -100,9 +100,38 @@ int mu_den_sign(const Cut& E, const Mu& a) {
   return exact_sign([&](auto L) { return mu_den(E, a, L); });
 }
 
+// Does the line of O contain the convolution vertex p + b by construction (one of its two
+// natural points)? Exact and free; used to skip the rational fallback on the frequent ties.
+bool on_line_struct(const Cut& O, const Vec2& p, const Vec2& b) {
+  if (O.b_edge) return O.pt == p && (O.e0 == b || O.e1 == b) && O.pb == O.e0;
+  return O.pb == b && (O.e0 == p || O.e1 == p) && O.pt == O.e0;
+}
+// 0 / 1 when the parameter is E's natural start / end by construction, -1 when unknown.
+int struct_end(const Cut& E, const Mu& a) {
+  if (a.k == Mu::C0) return 0;
+  if (a.k == Mu::C1) return 1;
+  const Vec2 &sp = E.pt, &sb = E.pb;
+  const Vec2& ep = E.b_edge ? E.pt : E.e1;
+  const Vec2& eb = E.b_edge ? E.e1 : E.pb;
+  if (a.k == Mu::Line) {
+    if (on_line_struct(a.o, sp, sb)) return 0;
+    if (on_line_struct(a.o, ep, eb)) return 1;
+  } else if (a.k == Mu::Pt) {
+    if (a.p == sp && a.b == sb) return 0;
+    if (a.p == ep && a.b == eb) return 1;
+  }
+  return -1;
+}
+bool same_cut_line(const Cut& a, const Cut& b) { return a.pt == b.pt && a.pb == b.pb && a.e0 == b.e0 && a.e1 == b.e1; }
+
 // Exact comparison of two parameters on E's line (both dens non-zero).
 int cmp_mu(const Cut& E, const Mu& a, const Mu& b) {
   if ((a.k == Mu::C0 || a.k == Mu::C1) && (b.k == Mu::C0 || b.k == Mu::C1)) return int(a.k) - int(b.k);
+  if (a.k == Mu::Line && b.k == Mu::Line && same_cut_line(a.o, b.o)) return 0;
+  {  // both at a natural end of E by construction
+    const int sa = struct_end(E, a), sb = struct_end(E, b);
+    if (sa >= 0 && sb >= 0) return sa - sb;
+  }
   const int da = mu_den_sign(E, a), db = mu_den_sign(E, b);
   const int s = exact_sign([&](auto L) { return mu_num(E, a, L) * mu_den(E, b, L) - mu_num(E, b, L) * mu_den(E, a, L); });
   return s * da * db;
@@ -599,15 +628,6 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
                    std::max(a.y(), b.y()) + t.y()});
   };
 
-  Vec2 bcen(0, 0);  // twice the centre of B's box
-  {
-    Vec2 lo = B[0], hi = B[0];
-    for (const Vec2& b : B) {
-      lo = lo.cwiseMin(b);
-      hi = hi.cwiseMax(b);
-    }
-    bcen = lo + hi;
-  }
   // 2. Hierarchies over the edge sausages and the candidates.
   std::vector<Box> sbox(R.segment_count());
   for (std::size_t g = 0; g < sbox.size(); ++g) sbox[g] = R.segment_box(g);
@@ -733,9 +753,10 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
     near.clear();
     const std::size_t NS = R.segment_count();
     X.sausages.overlap(cb[ci], [&](std::uint32_t g) { near.push_back(g); });
-    {  // likely covers first: edges near the centre of Q placed on the candidate (Q + x has its
-       // centre near x − centre(B)); the order only affects speed
-      const double cx = cb[ci][0] + cb[ci][2] - bcen.x(), cy = cb[ci][1] + cb[ci][3] - bcen.y();
+    {  // likely covers first: edges near the candidate's contact with P (its P edge or vertex),
+       // which cross Q + x there when ∂P bends towards Q; the order only affects speed
+      const Vec2 f = C.arc ? Vec2(2 * V[C.p]) : Vec2(V[C.p] + V[P.next(C.p)]);
+      const double cx = f.x(), cy = f.y();
       std::vector<std::pair<double, std::uint32_t>> order;
       order.reserve(near.size());
       for (std::uint32_t g : near) {
