@@ -1,11 +1,15 @@
 // Complete separation along d for a polygon with holes against a convex polygon (DHS §6): the last
-// exit of the line t + λ·d from any open R_i, if it lies after 0 (sup{λ ≥ 0 : t + λ·d ∈ O},
-// O = ∪ int R_i the overlap set; the sup of a union of open intervals is the largest of their ends).
-//   separation_triangles(): every R_i, O(n log m) (exact reference).
-//   separation():           branch-and-bound over the bounding-volume hierarchy of the R_i, farthest
-//                           boxes first (UnionBoundary::last_exit). Departure from DHS §6, which
-//                           shoots at the outer ring of ∂O: the last exit lies on the outer ring,
-//                           and it is also the largest R_i exit, found without walking the ring.
+// exit sup{λ ≥ 0 : t + λ·d ∈ O} of the line t + λ·d from the overlap set O = ∪ int R_i (the sup of
+// a union of open intervals is the largest of their ends).
+//   separation_triangles(): the largest exit from every open R_i, O(n log m) (exact reference).
+//   separation():           the largest exit from the open edge sausages int(f ⊕ B) (just before
+//                           the last exit Q + x overlaps P without lying inside it, so some edge
+//                           crosses int(Q + x)), branch-and-bound over their bounding-volume
+//                           hierarchy, farthest boxes first (UnionBoundary::last_exit). Departure
+//                           from DHS §6, which shoots at the outer ring of ∂O: the last exit lies
+//                           on the outer ring, and it is found here without walking the ring.
+//                           Same exact λ as the reference; the exit line may differ where several
+//                           meet (a few ulps).
 #include "polygon2/query_impl.hpp"
 
 namespace pendepth {
