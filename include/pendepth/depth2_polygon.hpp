@@ -71,7 +71,9 @@ class PolygonDepth2 {
   BoundaryStats boundary_stats() const;
   /// ∂O as closed rings of points for drawing and export, arcs expanded into the vertices of −Q
   /// they pass (O(n·m) points in the worst case; the structure itself stays O(n + m)). Outer
-  /// rings counter-clockwise, holes of O clockwise; points rounded to doubles.
+  /// rings counter-clockwise, holes of O clockwise; points rounded to doubles. Degenerate parts of
+  /// ∂O are kept: a slit (Q fits a pocket exactly) is walked along both sides, an isolated
+  /// boundary point (Q fits a hole exactly) is a ring of one point.
   std::vector<std::vector<Vec2>> boundary_rings() const;
 
   struct Impl;

@@ -787,7 +787,9 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
         const Vec2 e = V[g] + V[P.next(g)];
         order.push_back({std::abs(e.x() - cx) + std::abs(e.y() - cy), g});
       }
-      std::sort(order.begin(), order.end());
+      // Only the head of the order matters (most candidates are covered by one of the first few).
+      const std::size_t head = std::min<std::size_t>(order.size(), 32);
+      std::partial_sort(order.begin(), order.begin() + head, order.end());
       near.clear();
       for (std::uint32_t v : {C.p, C.arc ? C.p : static_cast<std::uint32_t>(P.next(C.p))})
         for (std::uint32_t T : R.triangles_at(v)) near.push_back(static_cast<std::uint32_t>(NS + T));
@@ -808,26 +810,23 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
     // one int S_g is covered at once (S_g convex); a single element is cut by every sausage whose
     // box meets it, until one covers it entirely.
     auto rng_box = [&](std::uint32_t lo, std::uint32_t hi) { return C.arc ? range_box(V[C.p], C.b0 + lo, hi - lo) : cb[ci]; };
-    std::vector<std::uint32_t> overl;
     std::vector<std::pair<std::uint32_t, std::uint32_t>> st{{0, Lc}};
     while (!st.empty()) {
       auto [lo, hi] = st.back();
       st.pop_back();
       const Box rb = rng_box(lo, hi);
-      overl.clear();
-      for (std::uint32_t g : near)
-        if (g < NS && boxes_meet(sbox[g], rb)) overl.push_back(g);
-      if (overl.empty()) continue;
-      bool whole = false;
+      bool whole = false, any = false;
       int tries = 0;
-      for (std::uint32_t g : overl) {
+      for (std::uint32_t g : near) {
+        if (g >= NS || !boxes_meet(sbox[g], rb)) continue;
+        any = true;
         const Box& sb = sbox[g];
         if (sb[0] > rb[0] || sb[1] > rb[1] || sb[2] < rb[2] || sb[3] < rb[3]) continue;
-        if (++tries > 3) break;
         whole = R.segment_contains_interior(g, Vec2(rb[0], rb[1])) && R.segment_contains_interior(g, Vec2(rb[2], rb[1])) &&
                 R.segment_contains_interior(g, Vec2(rb[2], rb[3])) && R.segment_contains_interior(g, Vec2(rb[0], rb[3]));
-        if (whole) break;
+        if (whole || ++tries >= 3) break;
       }
+      if (!any) continue;
       if (whole) {
         Interval I;
         I.s.j = lo;
@@ -841,13 +840,28 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
         continue;
       }
       if (hi - lo == 1) {
+        // Stop once the element is covered: by one interval, or by a prefix (from its start)
+        // and a suffix (to its end) that overlap.
         const Cut E = elem(C, lo);
-        for (std::uint32_t g : overl)
-          if (R.segment_line_interval(g, E, in, out)) {
-            const std::size_t before = ivs.size();
-            add_cover(lo, E, in, out);
-            if (ivs.size() > before && ivs.back().s_incl && ivs.back().e_incl) break;  // element covered
+        bool has_pre = false, has_suf = false;
+        Mu pre_end, suf_start;
+        for (std::uint32_t g : near) {
+          if (g >= NS || !boxes_meet(sbox[g], rb) || !R.segment_line_interval(g, E, in, out)) continue;
+          const std::size_t before = ivs.size();
+          add_cover(lo, E, in, out);
+          if (ivs.size() == before) continue;
+          const Interval& I = ivs.back();
+          if (I.s_incl && I.e_incl) break;
+          if (I.s_incl && (!has_pre || cmp_mu(E, I.e.mu, pre_end) > 0)) {
+            pre_end = I.e.mu;
+            has_pre = true;
           }
+          if (I.e_incl && (!has_suf || cmp_mu(E, I.s.mu, suf_start) < 0)) {
+            suf_start = I.s.mu;
+            has_suf = true;
+          }
+          if (has_pre && has_suf && cmp_mu(E, suf_start, pre_end) < 0) break;
+        }
         continue;
       }
       const std::uint32_t mid = (lo + hi) / 2;

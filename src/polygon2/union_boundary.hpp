@@ -126,7 +126,8 @@ Vec2 near_point(const Near& n);
 class UnionBoundary {
  public:
   /// Builds ∂O for the convolved triangles of P (see the file header). Throws nothing beyond
-  /// allocation failures (inputs are validated by Polygon / ConvexPolygon).
+  /// allocation failures (inputs are validated by Polygon / ConvexPolygon). Keeps pointers to P
+  /// and R: both must outlive the structure and stay in place (PolygonDepth2::Impl holds all three).
   UnionBoundary(const Polygon& P, const ConvolvedTriangles& R);
   ~UnionBoundary();
   UnionBoundary(UnionBoundary&&) noexcept;
