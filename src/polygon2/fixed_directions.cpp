@@ -2,7 +2,8 @@
 // O into slabs parallel to d with point location, so each query is two binary searches.
 //
 // Contract: PolygonDirectionSet::along(t, k) == PolygonDepth2::along(t, direction(k)), bit for bit
-// (same piece of ∂O, same exact hit, same result builder).
+// (same piece of ∂O, same exact hit, same result builder). The set refers to the PolygonDepth2's
+// structure, which must outlive it (moving the PolygonDepth2 is fine: its state is on the heap).
 //
 // Construction for one direction d (u(x) = cross(d, x), the coordinate across d):
 //   1. Split every piece of the union boundary ∂O (union_boundary.hpp) into u-MONOTONE sub-pieces:
@@ -16,7 +17,7 @@
 //      these never cross inside a slab (pieces of ∂O meet only at their ends, which are keys), so
 //      along d they are totally ordered: that order is computed on one reference line t_s + λ·d
 //      inside each slab (a double point whose u is certified strictly inside the slab), with
-//      U's exact cut comparison; coincident slit copies (opposite orientation) put the leaving
+//      the exact cut comparison of convolved_triangles.hpp; coincident slit copies (opposite orientation) put the leaving
 //      copy first. Lists are stored flat (CSR).
 // Query (t, d): binary search of u(t) among the keys (exact), binary search in the slab's list for
 // the first sub-piece not behind t (exact side test: the element of the sub-piece covering u(t),
@@ -169,7 +170,7 @@ SymPoint natural_end(const Cut& c) {
   return s;
 }
 
-SymPoint end_point(const EndPoint& e, const Cut& element, bool at_start) {
+SymPoint end_point(const EndPoint& e, const Cut& element) {
   switch (e.kind) {
     case EndPoint::Kind::Mu0: return natural_start(element);
     case EndPoint::Kind::Mu1: return natural_end(element);
@@ -188,7 +189,6 @@ SymPoint end_point(const EndPoint& e, const Cut& element, bool at_start) {
       return s;
     }
   }
-  (void)at_start;
 }
 
 }  // namespace
@@ -214,26 +214,25 @@ struct PolygonDirectionSet::Impl {
     std::vector<std::uint8_t> thin;          // slab without a certified reference line
   };
 
-  const PolygonDepth2* pd = nullptr;
+  const PolygonDepth2::Impl* pd = nullptr;  // stable when the PolygonDepth2 is moved
   const UnionBoundary* ub = nullptr;
   std::vector<Direction> dirs;
 
-  SymPoint sub_end(const Direction& D, const Sub& s, bool high) const {
+  SymPoint sub_end(const Sub& s, bool high) const {
     // The traversal start of the sub is its low end when it leaves O (u increasing).
     const bool at_start = high != s.leaves;
     const Piece& pc = ub->pieces()[s.piece];
     const std::size_t last = ub->element_count(s.piece) - 1;
-    (void)D;
     if (at_start) {
       const Cut el = ub->element(s.piece, s.j0);
-      return s.j0 == 0 ? end_point(pc.start, el, true) : natural_start(el);
+      return s.j0 == 0 ? end_point(pc.start, el) : natural_start(el);
     }
     const Cut el = ub->element(s.piece, s.j1);
-    return s.j1 == last ? end_point(pc.end, el, false) : natural_end(el);
+    return s.j1 == last ? end_point(pc.end, el) : natural_end(el);
   }
   SymPoint key_point(const Direction& D, std::size_t k) const {
     const KeyRef& r = D.keys[k];
-    return sub_end(D, D.subs[r.sub], r.high);
+    return sub_end(D.subs[r.sub], r.high);
   }
 
   // The element of sub s whose u-range contains u(t) (u(t) strictly inside the sub's u-range).
@@ -253,6 +252,19 @@ struct PolygonDirectionSet::Impl {
   // Sign of λ where t + λ·d meets sub s (u(t) inside the sub's open u-range).
   int side(const Direction& D, const Sub& s, const Vec2& t) const {
     return polygon2::cut_sign(covering_element(D, s, t), t, D.d);
+  }
+
+  // PolygonDepth2::along's own steps (src/polygon2/ray_shooting.cpp), for the deferred queries.
+  Depth2 deferred(const Vec2& t, const Vec2& d) const {
+    polygon2::g_fallbacks.fetch_add(1, std::memory_order_relaxed);
+    Depth2 r;
+    r.kind = DepthKind::Directional;
+    polygon2::Hit h;
+    if (!ub->in_overlap(t) || !ub->ray_first(t, d, h)) return r;
+    r = polygon2::result_at_hit(*pd, h, t, d);
+    r.kind = DepthKind::Directional;
+    r.overlapping = true;
+    return r;
   }
 
   void build(Direction& D);
@@ -278,7 +290,7 @@ void PolygonDirectionSet::Impl::build(Direction& D) {
       sub.j1 = e;
       sub.leaves = s > 0;
       // A run may still have zero u-extent when its end is cut at its start (zero-length piece).
-      if (compare_u(sub_end(D, sub, false), sub_end(D, sub, true), d) < 0) D.subs.push_back(sub);
+      if (compare_u(sub_end(sub, false), sub_end(sub, true), d) < 0) D.subs.push_back(sub);
       j = e + 1;
     }
   }
@@ -289,7 +301,7 @@ void PolygonDirectionSet::Impl::build(Direction& D) {
     ends.push_back({i, false});
     ends.push_back({i, true});
   }
-  auto point = [&](const KeyRef& r) { return sub_end(D, D.subs[r.sub], r.high); };
+  auto point = [&](const KeyRef& r) { return sub_end(D.subs[r.sub], r.high); };
   std::sort(ends.begin(), ends.end(), [&](const KeyRef& a, const KeyRef& b) { return compare_u(point(a), point(b), d) < 0; });
   for (std::size_t i = 0; i < ends.size(); ++i) {
     if (D.keys.empty() || compare_u(point(D.keys.back()), point(ends[i]), d) != 0) D.keys.push_back(ends[i]);
@@ -347,7 +359,7 @@ void PolygonDirectionSet::Impl::build(Direction& D) {
 
 PolygonDirectionSet::PolygonDirectionSet(const PolygonDepth2& pd, std::vector<Vec2> directions)
     : impl_(std::make_unique<Impl>()) {
-  impl_->pd = &pd;
+  impl_->pd = &pd.impl();
   impl_->ub = &pd.impl().U;
   for (std::size_t k = 0; k < directions.size(); ++k) {
     const Vec2& d = directions[k];
@@ -396,8 +408,7 @@ Depth2 PolygonDirectionSet::along(const Vec2& t, std::size_t k) const {
   }
   if (lo == 0 || lo == D.keys.size()) return outside;  // beyond ∂O across d: t ∉ O
   if (compare_u(t, impl_->key_point(D, lo), D.d) == 0 || D.thin[lo - 1]) {
-    polygon2::g_fallbacks.fetch_add(1, std::memory_order_relaxed);
-    return impl_->pd->along(t, D.given);
+    return impl_->deferred(t, D.d);
   }
   const std::size_t slab = lo - 1;
   const std::uint32_t* first = D.order.data() + D.slab_begin[slab];
@@ -420,10 +431,9 @@ Depth2 PolygonDirectionSet::along(const Vec2& t, std::size_t k) const {
        polygon2::compare_cuts(impl_->covering_element(D, s, t), impl_->covering_element(D, D.subs[first[a + 1]], t), t,
                               D.d) == 0) ||
       !impl_->ub->first_hit(s.piece, t, D.d, h)) {
-    polygon2::g_fallbacks.fetch_add(1, std::memory_order_relaxed);
-    return impl_->pd->along(t, D.given);
+    return impl_->deferred(t, D.d);
   }
-  Depth2 r = polygon2::result_at_hit(impl_->pd->impl(), h, t, D.d);
+  Depth2 r = polygon2::result_at_hit(*impl_->pd, h, t, D.d);
   r.kind = DepthKind::Directional;
   r.overlapping = true;
   return r;

@@ -213,6 +213,19 @@ TEST(PolygonDirectionSet, SpacePerDirection) {
   std::printf("comb of 100 teeth: %zu bytes along the teeth, %zu across\n", along_teeth.bytes(), across.bytes());
 }
 
+// The set refers to the PolygonDepth2's heap state, so moving the PolygonDepth2 keeps it valid.
+TEST(PolygonDirectionSet, SurvivesMovingThePolygonDepth) {
+  PolygonDepth2 pd(Polygon::simple(polygon2_test::comb_ring(4, 2, 3, 10, 2)), ConvexPolygon{{0, 0}, {3, 0}, {1.5, 2}});
+  const PolygonDirectionSet set(pd, {{0, 1}, {1, 0}, {1, -2}});
+  const PolygonDepth2 moved(std::move(pd));
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-5, 20);
+  for (int k = 0; k < 300; ++k) {
+    const Vec2 t(u(rng), u(rng));
+    for (std::size_t j = 0; j < set.size(); ++j) expect_identical(set.along(t, j), moved.along(t, set.direction(j)), "moved");
+  }
+}
+
 TEST(PolygonDirectionSet, BadInput) {
   const PolygonDepth2 pd(Polygon::simple(std::vector<Vec2>{{0, 0}, {4, 0}, {4, 4}, {0, 4}}), ConvexPolygon{{0, 0}, {1, 0}, {0, 1}});
   auto message = [&](std::vector<Vec2> ds) {
