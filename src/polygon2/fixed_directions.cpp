@@ -39,7 +39,9 @@
 //     exactly): along() breaks that tie by its own search order, and deferring to it keeps the
 //     witnesses and features identical. polygon2::fixed_direction_fallbacks() counts these
 //     deferrals process-wide (a test and benchmark hook).
-// Complexity: build O(E log E + C log C + Σ arc elements) per direction, E = O(n) sub-piece ends;
+// Complexity: build O(E log E + C log m + Σ arc elements) per direction, E = O(n) sub-piece ends,
+// each slab's order derived from the previous one (checked, insertions by binary search; a full
+// sort only where the check fails);
 // query O(log n · log m) exact predicates (O(log n) when the pieces met are segments).
 #include <pendepth/depth2_polygon.hpp>
 
@@ -320,6 +322,10 @@ void PolygonDirectionSet::Impl::build(Direction& D) {
   for (std::uint32_t i = 0; i < D.subs.size(); ++i)
     for (std::uint32_t k = D.subs[i].lo; k < D.subs[i].hi; ++k) D.order[fill[k]++] = i;
   D.thin.assign(slabs, 0);
+  std::vector<Cut> cache(D.subs.size());  // covering element on the current reference line
+  std::vector<std::uint32_t> stamp(D.subs.size(), std::uint32_t(-1));
+  std::vector<std::uint32_t> prev, next;  // sorted lists of the previous and current slab
+  bool have_prev = false;
   const double dd = d.x() * d.x() + d.y() * d.y();
   const Vec2 across(-d.y(), d.x());  // u(s·across) = s·|d|²
   for (std::size_t k = 0; k < slabs; ++k) {
@@ -337,23 +343,49 @@ void PolygonDirectionSet::Impl::build(Direction& D) {
     }
     if (!ok) {
       D.thin[k] = 1;
+      have_prev = false;
       continue;
     }
     auto first = D.order.begin() + D.slab_begin[k], last = D.order.begin() + D.slab_begin[k + 1];
-    std::vector<Cut> at(D.subs.size() > 0 ? std::size_t(last - first) : 0);
-    std::vector<std::uint32_t> idx(std::size_t(last - first));
-    std::iota(idx.begin(), idx.end(), 0u);
-    for (std::size_t i = 0; i < at.size(); ++i) at[i] = covering_element(D, D.subs[first[i]], ref);
-    std::sort(idx.begin(), idx.end(), [&](std::uint32_t x, std::uint32_t y) {
-      const int c = polygon2::compare_cuts(at[x], at[y], ref, d);
+    const std::size_t size = std::size_t(last - first);
+    // Strict total order on this slab's sub-pieces: along d on the reference line; coincident
+    // copies (a slit) leaving first, then by index.
+    auto cut = [&](std::uint32_t i) -> const Cut& {
+      if (stamp[i] != k) {
+        cache[i] = covering_element(D, D.subs[i], ref);
+        stamp[i] = std::uint32_t(k);
+      }
+      return cache[i];
+    };
+    auto less = [&](std::uint32_t x, std::uint32_t y) {
+      const int c = polygon2::compare_cuts(cut(x), cut(y), ref, d);
       if (c != 0) return c < 0;
-      const bool lx = D.subs[first[x]].leaves, ly = D.subs[first[y]].leaves;
-      if (lx != ly) return lx;  // slit: the leaving copy first
-      return first[x] < first[y];
-    });
-    std::vector<std::uint32_t> sorted(idx.size());
-    for (std::size_t i = 0; i < idx.size(); ++i) sorted[i] = first[idx[i]];
-    std::copy(sorted.begin(), sorted.end(), first);
+      if (D.subs[x].leaves != D.subs[y].leaves) return D.subs[x].leaves;
+      return x < y;
+    };
+    // Sub-pieces do not cross inside slabs, so the previous slab's order, minus the sub-pieces
+    // ending at key k, is usually this slab's order too: check it (one comparison per adjacent
+    // pair) and insert the sub-pieces starting at key k by binary search. The total order makes
+    // the result identical to a full sort, which is the fallback.
+    next.clear();
+    bool incremental = have_prev;
+    if (incremental) {
+      for (std::uint32_t i : prev)
+        if (D.subs[i].hi > k) next.push_back(i);
+      for (std::size_t i = 1; i < next.size() && incremental; ++i) incremental = less(next[i - 1], next[i]);
+      if (incremental) {
+        for (auto it = first; it != last; ++it)
+          if (D.subs[*it].lo == k) next.insert(std::upper_bound(next.begin(), next.end(), *it, less), *it);
+        incremental = next.size() == size;
+      }
+    }
+    if (!incremental) {
+      next.assign(first, last);
+      std::sort(next.begin(), next.end(), less);
+    }
+    std::copy(next.begin(), next.end(), first);
+    prev.swap(next);
+    have_prev = true;
   }
 }
 
