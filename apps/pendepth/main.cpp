@@ -5,9 +5,17 @@
 //   pendepth batch P Q --queries FILE [--json] [--rotate-q ...] [--rotate-p ...]
 //
 // Exit status: 0 success, 2 bad input (one line on stderr naming file, line and problem),
-// 1 internal error. Shapes: .wkt (2D convex polygons); .obj, .off, .stl (3D: the convex hull of
-// the vertices). P and Q must have the same dimension. Rotations are 3D only.
+// 1 internal error. Shapes: .wkt (2D polygons); .obj, .off, .stl (3D: the convex hull of the
+// vertices). P and Q must have the same dimension. Rotations are 3D only.
+//
+// 2D algorithm choice: both convex → the convex queries (DHS §3); one polygon non-convex or with
+// holes and the other convex → PolygonDepth2 (DHS §4, §6), built once per run. PolygonDepth2 fixes
+// the polygon, so when Q is the non-convex one the roles are swapped: Q + t overlaps P exactly when
+// P − t overlaps Q, moving Q by v is moving P by −v, so depth(P, Q, t, d) is depth(Q, P, −t, −d)
+// with translation and normal negated, witnesses mapped back into P's frame and features swapped.
+// Two non-convex polygons are not supported (exit 2).
 #include <pendepth/depth2.hpp>
+#include <pendepth/depth2_polygon.hpp>
 #include <pendepth/depth3.hpp>
 #include <pendepth/io.hpp>
 
@@ -55,17 +63,6 @@ int pair_dimension(const std::string& p, const std::string& q) {
   return dp;
 }
 
-// A .wkt file (the caller checked the extension).
-ConvexPolygon load_shape(const std::string& path, const char* name) {
-  try {
-    return io::read_convex_polygon(path, name);
-  } catch (const InvalidInput& e) {
-    const std::string msg = e.what();
-    if (msg.find("not convex") != std::string::npos || msg.find("self-intersecting") != std::string::npos)
-      throw InvalidInput(msg + " (non-convex polygons are not supported yet)");
-    throw;
-  }
-}
 
 // N comma-separated numbers from an option value (`names` as in "X,Y"); the option name goes
 // into the error message.
@@ -122,6 +119,85 @@ Eigen::Quaterniond parse_rotation(const std::string& text, const char* option) {
 
 void write_stdout(const std::string& s) { std::fwrite(s.data(), 1, s.size(), stdout); }
 
+// A 2D pair with at least one non-convex polygon (DHS §4): PolygonDepth2 on (polygon, convex),
+// with the roles swapped back when P is the convex one (see the file comment).
+class PolygonPair {
+ public:
+  // Takes the shapes of P and Q (paths for messages); throws InvalidInput for two non-convex ones.
+  PolygonPair(io::Shape2 P, io::Shape2 Q, const std::string& p_path, const std::string& q_path)
+      : P_(std::move(P)), Q_(std::move(Q)), swapped_(P_.convex.has_value()) {
+    if (P_.polygon && Q_.polygon)
+      throw InvalidInput(q_path + ": P (" + p_path + ") and Q are both non-convex: the depth of two non-convex "
+                                  "polygons is not supported yet (one of them must be convex)");
+    pd_.emplace(swapped_ ? *Q_.polygon : *P_.polygon, swapped_ ? *P_.convex : *Q_.convex);
+  }
+
+  Depth2 minimum(const Vec2& t) const { return back(swapped_ ? pd_->minimum(-t) : pd_->minimum(t), t); }
+  Depth2 along(const Vec2& t, const Vec2& d) const {
+    return back(swapped_ ? pd_->along(-t, -d) : pd_->along(t, d), t);
+  }
+  Depth2 separation(const Vec2& t, const Vec2& d) const {
+    return back(swapped_ ? pd_->separation(-t, -d) : pd_->separation(t, d), t);
+  }
+
+  void append_json(std::string& out, const Depth2& r) const {
+    if (swapped_) io::append_json(out, r, *P_.convex, *Q_.polygon);
+    else io::append_json(out, r, *P_.polygon, *Q_.convex);
+  }
+  std::string summary(const Depth2& r) const {
+    return swapped_ ? io::summary(r, *P_.convex, *Q_.polygon) : io::summary(r, *P_.polygon, *Q_.convex);
+  }
+
+  // The picture: P and Q in their own frames; the configuration panel shows ∂O, the boundary of
+  // the set of placements t of Q where the interiors overlap, arcs expanded (for a swapped pair
+  // PolygonDepth2's own set is −O, so its rings are negated).
+  void write_svg(const std::string& path, const Vec2& t, const Depth2& r, const std::optional<Vec2>& d) const {
+    io::SvgScene scene;
+    scene.P = rings(P_);
+    scene.Q = rings(Q_);
+    scene.config = pd_->boundary_rings();
+    if (swapped_)
+      for (auto& ring : scene.config)
+        for (Vec2& x : ring) x = Vec2(0, 0) - x;
+    scene.config_label = "O: placements t where Q + t overlaps P (outline ∂O)";
+    scene.config_target = "t + v on ∂O";
+    io::write_svg(path, scene, t, r, io::SvgOptions{d, true});
+  }
+
+ private:
+  static std::vector<std::vector<Vec2>> rings(const io::Shape2& s) {
+    std::vector<std::vector<Vec2>> out;
+    if (s.convex) {
+      out.emplace_back(s.convex->vertices().begin(), s.convex->vertices().end());
+    } else {
+      for (std::size_t k = 0; k < s.polygon->ring_count(); ++k)
+        out.emplace_back(s.polygon->ring(k).begin(), s.polygon->ring(k).end());
+    }
+    return out;
+  }
+
+  // Maps an answer of the swapped problem (Q fixed at 0, P placed at −t, moved by v') back:
+  // v = −v', and a point x of the swapped frame after the move is x + t + v in P's frame.
+  Depth2 back(Depth2 r, const Vec2& t) const {
+    if (!swapped_) return r;
+    const Vec2 zero(0, 0);
+    r.translation = zero - r.translation;  // 0 − x, never −0
+    r.normal = zero - r.normal;
+    std::swap(r.feature_p, r.feature_q);
+    if (r.overlapping || r.depth > 0) {
+      const Vec2 shift = t + r.translation;
+      const Vec2 wp = r.witness_q + shift, wq = r.witness_p + shift;
+      r.witness_p = wp;
+      r.witness_q = wq;
+    }
+    return r;
+  }
+
+  io::Shape2 P_, Q_;
+  bool swapped_;
+  std::optional<pendepth::PolygonDepth2> pd_;
+};
+
 struct DepthArgs {
   std::string p, q, offset, direction, svg, rotate_p, rotate_q;
   bool separate = false, json = false;
@@ -165,17 +241,43 @@ int run_depth3(const DepthArgs& a) {
   return 0;
 }
 
+int run_depth_polygon(const DepthArgs& a, io::Shape2 P, io::Shape2 Q, const Vec2& t, const std::optional<Vec2>& d) {
+  const PolygonPair pair(std::move(P), std::move(Q), a.p, a.q);
+  Depth2 r;
+  if (d) {
+    const Vec2 u = rescale(*d);
+    r = a.separate ? pair.separation(t, u) : pair.along(t, u);
+  } else {
+    r = pair.minimum(t);
+  }
+  if (!a.svg.empty()) pair.write_svg(a.svg, t, r, d);
+  std::string out;
+  if (a.json) {
+    pair.append_json(out, r);
+    out += '\n';
+  } else {
+    out = pair.summary(r);
+  }
+  write_stdout(out);
+  return 0;
+}
+
 int run_depth(const DepthArgs& a) {
   if (pair_dimension(a.p, a.q) == 3) return run_depth3(a);
   reject_rotations(a.rotate_p, a.rotate_q);
-  const ConvexPolygon P = load_shape(a.p, "P");
-  const ConvexPolygon Q = load_shape(a.q, "Q");
+  io::Shape2 SP = io::read_shape2(a.p, "P");
+  io::Shape2 SQ = io::read_shape2(a.q, "Q");
   const Vec2 t = a.offset.empty() ? Vec2(0, 0) : parse_vec(a.offset, "--offset");
   std::optional<Vec2> d;
-  Depth2 r;
   if (!a.direction.empty()) {
     d = parse_vec(a.direction, "--direction");
     if (d->x() == 0 && d->y() == 0) throw InvalidInput("--direction: the direction is zero");
+  }
+  if (!SP.convex || !SQ.convex) return run_depth_polygon(a, std::move(SP), std::move(SQ), t, d);
+  const ConvexPolygon& P = *SP.convex;
+  const ConvexPolygon& Q = *SQ.convex;
+  Depth2 r;
+  if (d) {
     const Vec2 u = rescale(*d);
     r = a.separate ? pendepth::separation_depth(P, Q, t, u) : pendepth::directional_depth(P, Q, t, u);
   } else {
@@ -235,12 +337,44 @@ int run_batch3(const BatchArgs& a) {
   return 0;
 }
 
+// A batch with a non-convex polygon: PolygonDepth2 is built once, before the first query.
+int run_batch_polygon(const BatchArgs& a, io::Shape2 P, io::Shape2 Q, const std::vector<io::Query2>& queries) {
+  const PolygonPair pair(std::move(P), std::move(Q), a.p, a.q);
+  constexpr std::size_t kFlushBytes = 1 << 20;
+  std::string out;
+  out.reserve(kFlushBytes + 4096);
+  if (!a.json) out += "depth,tx,ty\n";
+  for (const io::Query2& q : queries) {
+    Depth2 r;
+    try {
+      r = (q.d.x() == 0 && q.d.y() == 0) ? pair.minimum(q.t) : pair.along(q.t, rescale(q.d));
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(a.queries + ":" + std::to_string(q.line) + ": " + e.what());
+    }
+    if (a.json) {
+      pair.append_json(out, r);
+      out += '\n';
+    } else {
+      io::append_csv_row(out, r);
+    }
+    if (out.size() >= kFlushBytes) {
+      write_stdout(out);
+      out.clear();
+    }
+  }
+  write_stdout(out);
+  return 0;
+}
+
 int run_batch(const BatchArgs& a) {
   if (pair_dimension(a.p, a.q) == 3) return run_batch3(a);
   reject_rotations(a.rotate_p, a.rotate_q);
-  ConvexPolygon P = load_shape(a.p, "P");
-  ConvexPolygon Q = load_shape(a.q, "Q");
+  io::Shape2 SP = io::read_shape2(a.p, "P");
+  io::Shape2 SQ = io::read_shape2(a.q, "Q");
   const std::vector<io::Query2> queries = io::read_queries_csv(a.queries);
+  if (!SP.convex || !SQ.convex) return run_batch_polygon(a, std::move(SP), std::move(SQ), queries);
+  ConvexPolygon P = std::move(*SP.convex);
+  ConvexPolygon Q = std::move(*SQ.convex);
 
   // σ goes through the preprocessed field, built once and only if some query asks for it.
   const bool any_minimum = std::any_of(queries.begin(), queries.end(),
@@ -287,7 +421,8 @@ std::string one_line(std::string s) {
 int main(int argc, char** argv) {
   CLI::App app{"pendepth: exact intersection (penetration) depth of two shapes.\n"
                "P is fixed, Q moves; Q is placed at the offset t. Shapes: .wkt POLYGON files "
-               "(convex, 2D); .obj, .off, .stl meshes (3D: the convex hull of the vertices)."};
+               "(2D: convex, or one of P and Q non-convex with holes and the other convex); "
+               ".obj, .off, .stl meshes (3D: the convex hull of the vertices)."};
   app.require_subcommand(1);
   app.footer("Exit status: 0 success, 2 bad input (one line on stderr: FILE:LINE: problem).");
 
@@ -300,7 +435,7 @@ int main(int argc, char** argv) {
       ->type_name("X,Y[,Z]");
   CLI::Option* dir =
       depth->add_option("--direction", da.direction, "compute σ_d along d instead of σ")->type_name("X,Y[,Z]");
-  depth->add_flag("--separate", da.separate, "complete separation along --direction (3D convex: equals σ_d)")
+  depth->add_flag("--separate", da.separate, "complete separation along --direction (convex pairs: equals σ_d)")
       ->needs(dir);
   depth->add_flag("--json", da.json, "print one JSON object instead of a summary");
   depth->add_option("--svg", da.svg, "also draw the query into this SVG file (2D)")->type_name("FILE");

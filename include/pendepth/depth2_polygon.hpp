@@ -24,13 +24,14 @@
 #include <pendepth/polygon.hpp>
 
 #include <memory>
+#include <vector>
 
 namespace pendepth {
 
 /// Per-pair query object for P (simple, with holes) against convex Q. The construction
-/// triangulates P and builds the implicit convolved triangles (DHS §4.1 Steps 1-2):
-/// O(n log n + n log m). Queries here are the exact reference implementation: each one visits all
-/// s = O(n) convolved triangles in O(log m) and merges their intervals, O(n log m + n log n).
+/// triangulates P, builds the implicit convolved triangles (DHS §4.1 Steps 1-2) and the implicit
+/// boundary of their union (Step 3) with a ray-shooting index. along() is the fast σ_d path
+/// (§4.3), separation() shoots at the outer boundary of the union (§6).
 class PolygonDepth2 {
  public:
   PolygonDepth2(const Polygon& P, const ConvexPolygon& Q);
@@ -46,7 +47,58 @@ class PolygonDepth2 {
   /// positive when t ∉ O). Witnesses and features describe the final contact. Throws as along().
   Depth2 separation(const Vec2& t, const Vec2& d) const;
 
+  /// σ (kind Minimum): dist(t, ∂O) for t ∈ O (0 and overlapping = false otherwise), the nearest
+  /// point of the implicit union boundary (DHS §4.2, Lemma 4.3). Throws InvalidInput for non-finite t.
+  Depth2 minimum(const Vec2& t) const;
+  /// σ_d computed by visiting every piece of the implicit union boundary, O(n log m) (DHS §4.2).
+  /// Same result as along(); kept as the second, independent query path.
+  Depth2 along_scan(const Vec2& t, const Vec2& d) const;
+  /// σ_d from the convolved triangles directly (exact reference, O(n log m + n log n)).
+  Depth2 along_triangles(const Vec2& t, const Vec2& d) const;
+  /// Complete separation from the convolved triangles directly (exact reference, O(n log m)).
+  Depth2 separation_triangles(const Vec2& t, const Vec2& d) const;
+
   std::size_t triangle_count() const;
+
+  /// Size of the implicit union boundary ∂O (DHS §4.1 Step 3, Facts 4.1-4.2).
+  struct BoundaryStats {
+    std::size_t rings = 0;     ///< closed boundary cycles of O (outer + holes of O)
+    std::size_t vertices = 0;  ///< explicit vertices (intersection points and piece ends)
+    std::size_t segments = 0;  ///< straight pieces (a triangle edge translated by a vertex of −Q)
+    std::size_t arcs = 0;      ///< convex arcs (a chain of −Q's edges translated by a vertex of P)
+    std::size_t bytes = 0;     ///< heap bytes of the structure, ray-shooting index included
+  };
+  BoundaryStats boundary_stats() const;
+  /// ∂O as closed rings of points for drawing and export, arcs expanded into the vertices of −Q
+  /// they pass (O(n·m) points in the worst case; the structure itself stays O(n + m)). Outer
+  /// rings counter-clockwise, holes of O clockwise; points rounded to doubles. Degenerate parts of
+  /// ∂O are kept: a slit (Q fits a pocket exactly) is walked along both sides, an isolated
+  /// boundary point (Q fits a hole exactly) is a ring of one point.
+  std::vector<std::vector<Vec2>> boundary_rings() const;
+
+  struct Impl;
+  const Impl& impl() const { return *impl_; }
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+/// σ_d for a fixed list of directions (DHS §6): one decomposition of the overlap set O per
+/// direction, with point location answering each query in O(log n).
+class PolygonDirectionSet {
+ public:
+  /// Throws InvalidInput naming the index of a zero or non-finite direction.
+  PolygonDirectionSet(const PolygonDepth2& pd, std::vector<Vec2> directions);
+  ~PolygonDirectionSet();
+  PolygonDirectionSet(PolygonDirectionSet&&) noexcept;
+  PolygonDirectionSet& operator=(PolygonDirectionSet&&) noexcept;
+
+  std::size_t size() const;
+  const Vec2& direction(std::size_t k) const;
+  /// σ_d along direction k (kind Directional); equal to PolygonDepth2::along(t, direction(k)).
+  /// Throws InvalidInput for non-finite t or k out of range.
+  Depth2 along(const Vec2& t, std::size_t k) const;
+  std::size_t bytes() const;
 
   struct Impl;
 

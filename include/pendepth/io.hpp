@@ -48,6 +48,23 @@ WktPolygon read_wkt_polygon(const std::filesystem::path& path);
 /// vertex). Holes: "PATH: convex polygons cannot have holes (...)". O(n log n).
 ConvexPolygon read_convex_polygon(const std::filesystem::path& path, std::string_view name);
 
+/// Reads a WKT file holding a simple polygon, possibly with holes, and validates it as a Polygon
+/// named `name`. A validation error is rethrown as "PATH:LINE: <Polygon message>", LINE being the
+/// line of the first vertex or edge the message names in the ring it names (else the ring's first
+/// vertex, else the POLYGON keyword). O(n log n) plus Polygon's validation.
+Polygon read_polygon(const std::filesystem::path& path, std::string_view name);
+
+/// A 2D shape file for the command-line tool: `convex` when the file holds one ring that
+/// ConvexPolygon accepts, otherwise `polygon` (non-convex or with holes). Errors: a ring that is
+/// neither convex nor a valid simple polygon reports the Polygon validation (as read_polygon);
+/// other convex-validation errors (non-finite, zero area, fewer than 3 points) are reported as
+/// read_convex_polygon does. The file is read once.
+struct Shape2 {
+  std::optional<ConvexPolygon> convex;
+  std::optional<Polygon> polygon;
+};
+Shape2 read_shape2(const std::filesystem::path& path, std::string_view name);
+
 /// The whole content of a file. Throws InvalidInput "PATH: cannot read file (reason)".
 std::string read_text_file(const std::filesystem::path& path);
 
@@ -134,11 +151,20 @@ void append_double(std::string& out, double x);
 /// capacity.
 void append_json(std::string& out, const Depth2& r, const ConvexPolygon& P, const ConvexPolygon& Q);
 
+/// The same object for a polygon with holes against a convex polygon (either role). A polygon's
+/// features carry the ring: {"kind":"vertex","ring":k,"index":i} or {"kind":"edge","ring":k,
+/// "index":i,"end":j}, indices into ring k as given (0 = outer, k = hole k; Polygon::input_index),
+/// the edge running with P's interior on its left; a convex shape's features are as above.
+void append_json(std::string& out, const Depth2& r, const Polygon& P, const ConvexPolygon& Q);
+void append_json(std::string& out, const Depth2& r, const ConvexPolygon& P, const Polygon& Q);
+
 /// Appends one CSV row "depth,tx,ty\n".
 void append_csv_row(std::string& out, const Depth2& r);
 
 /// A multi-line human-readable summary of a 2D result (ends with a newline).
 std::string summary(const Depth2& r, const ConvexPolygon& P, const ConvexPolygon& Q);
+std::string summary(const Depth2& r, const Polygon& P, const ConvexPolygon& Q);
+std::string summary(const Depth2& r, const ConvexPolygon& P, const Polygon& Q);
 
 /// Appends one JSON object (no newline) for a 3D result: depth, translation [x,y,z], normal,
 /// witness_p, witness_q, kind, overlapping, feature_p / feature_q, lower_bound, upper_bound.
@@ -168,5 +194,21 @@ struct SvgOptions {
 /// O(n + m).
 void write_svg(const std::filesystem::path& path, const ConvexPolygon& P, const ConvexPolygon& Q,
                const Vec2& t, const Depth2& r, const SvgOptions& options = {});
+
+/// What the general write_svg draws: P and Q as rings in their own frames (outer ring first,
+/// then holes; several rings are filled with the even-odd rule), and the configuration-space
+/// rings (e.g. the boundary of the overlap set O of a polygon with holes, or M) in the frame of
+/// the placements t, labelled `config_label`; `config_target` labels the end t + v of the move.
+struct SvgScene {
+  std::vector<std::vector<Vec2>> P, Q, config;
+  std::string config_label = "M = P ⊕ (−Q)";
+  std::string config_target = "t + v on ∂M";
+};
+
+/// As above for any scene: the configuration panel is drawn when options.draw_M is set and
+/// scene.config is not empty. Throws InvalidInput if P or Q has no ring of 3 points or the file
+/// cannot be written. O(total size of the rings).
+void write_svg(const std::filesystem::path& path, const SvgScene& scene, const Vec2& t, const Depth2& r,
+               const SvgOptions& options = {});
 
 }  // namespace pendepth::io

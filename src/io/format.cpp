@@ -66,6 +66,38 @@ std::string feature_text(const Feature& f, const ConvexPolygon& poly) {
          std::to_string(poly.input_index((i + 1) % poly.size()));
 }
 
+// A polygon with holes: global vertex g is vertex input_index(g) of ring ring_of(g) as given;
+// global edge g runs from g to next(g) (interior on its left).
+void append_feature(std::string& out, const Feature& f, const Polygon& poly) {
+  if (f.kind == FeatureKind::None || f.index < 0 || std::size_t(f.index) >= poly.size()) {
+    out += "{\"kind\":\"none\",\"index\":null}";
+    return;
+  }
+  const std::size_t g = static_cast<std::size_t>(f.index);
+  out += f.kind == FeatureKind::Vertex ? "{\"kind\":\"vertex\",\"ring\":" : "{\"kind\":\"edge\",\"ring\":";
+  append_uint(out, poly.ring_of(g));
+  out += ",\"index\":";
+  append_uint(out, poly.input_index(g));
+  if (f.kind == FeatureKind::Edge) {
+    out += ",\"end\":";
+    append_uint(out, poly.input_index(poly.next(g)));
+  }
+  out += '}';
+}
+
+std::string ring_text(const Polygon& poly, std::size_t g) {
+  const std::size_t k = poly.ring_of(g);
+  return k == 0 ? "the outer ring" : "hole " + std::to_string(k);
+}
+
+std::string feature_text(const Feature& f, const Polygon& poly) {
+  if (f.kind == FeatureKind::None || f.index < 0 || std::size_t(f.index) >= poly.size()) return "none";
+  const std::size_t g = static_cast<std::size_t>(f.index);
+  if (f.kind == FeatureKind::Vertex) return "vertex " + std::to_string(poly.input_index(g)) + " of " + ring_text(poly, g);
+  return "edge from vertex " + std::to_string(poly.input_index(g)) + " to vertex " +
+         std::to_string(poly.input_index(poly.next(g))) + " of " + ring_text(poly, g);
+}
+
 std::string vec_text(const Vec2& v) {
   std::string s = "(";
   append_double(s, v.x());
@@ -76,11 +108,24 @@ std::string vec_text(const Vec2& v) {
 
 }  // namespace
 
-void append_json(std::string& out, const Depth2& r, const ConvexPolygon& P, const ConvexPolygon& Q) {
+namespace {
+template <class ShapeP, class ShapeQ>
+void append_json_any(std::string& out, const Depth2& r, const ShapeP& P, const ShapeQ& Q) {
   detail::append_result_fields(
       out, r, P, Q, [](std::string& o, const auto& v) { append_vec(o, v); },
       [](std::string& o, const auto& f, const auto& shape) { append_feature(o, f, shape); });
   out += '}';
+}
+}  // namespace
+
+void append_json(std::string& out, const Depth2& r, const ConvexPolygon& P, const ConvexPolygon& Q) {
+  append_json_any(out, r, P, Q);
+}
+void append_json(std::string& out, const Depth2& r, const Polygon& P, const ConvexPolygon& Q) {
+  append_json_any(out, r, P, Q);
+}
+void append_json(std::string& out, const Depth2& r, const ConvexPolygon& P, const Polygon& Q) {
+  append_json_any(out, r, P, Q);
 }
 
 void append_csv_row(std::string& out, const Depth2& r) {
@@ -92,7 +137,9 @@ void append_csv_row(std::string& out, const Depth2& r) {
   out += '\n';
 }
 
-std::string summary(const Depth2& r, const ConvexPolygon& P, const ConvexPolygon& Q) {
+namespace {
+template <class ShapeP, class ShapeQ>
+std::string summary_any(const Depth2& r, const ShapeP& P, const ShapeQ& Q) {
   std::string s;
   switch (r.kind) {
     case DepthKind::Minimum: s += "minimum depth (shortest separating translation)\n"; break;
@@ -104,12 +151,17 @@ std::string summary(const Depth2& r, const ConvexPolygon& P, const ConvexPolygon
   s += "  depth:       ";
   append_double(s, r.depth);
   s += "\n  translation: " + vec_text(r.translation) + "  (move Q by this to separate)\n";
-  if (r.overlapping) {
+  if (r.overlapping || (r.kind == DepthKind::Separation && r.depth > 0)) {
     s += "  normal:      " + vec_text(r.normal) + "\n";
     s += "  witness P:   " + vec_text(r.witness_p) + "  on " + feature_text(r.feature_p, P) + " of P\n";
     s += "  witness Q:   " + vec_text(r.witness_q) + "  on " + feature_text(r.feature_q, Q) + " of Q\n";
   }
   return s;
 }
+}  // namespace
+
+std::string summary(const Depth2& r, const ConvexPolygon& P, const ConvexPolygon& Q) { return summary_any(r, P, Q); }
+std::string summary(const Depth2& r, const Polygon& P, const ConvexPolygon& Q) { return summary_any(r, P, Q); }
+std::string summary(const Depth2& r, const ConvexPolygon& P, const Polygon& Q) { return summary_any(r, P, Q); }
 
 }  // namespace pendepth::io

@@ -20,8 +20,8 @@ inline const char* kind_name(DepthKind k) {
 
 /// Writes `{"depth":…,…,"feature_q":…` (no closing brace: the caller may add fields).
 /// append_vec(out, v) and append_feature(out, feature, shape) format one dimension's types.
-template <class Result, class Shape, class AppendVec, class AppendFeature>
-void append_result_fields(std::string& out, const Result& r, const Shape& P, const Shape& Q, AppendVec&& append_vec,
+template <class Result, class ShapeP, class ShapeQ, class AppendVec, class AppendFeature>
+void append_result_fields(std::string& out, const Result& r, const ShapeP& P, const ShapeQ& Q, AppendVec&& append_vec,
                           AppendFeature&& append_feature) {
   out += "{\"depth\":";
   append_double(out, r.depth);

@@ -88,6 +88,28 @@ void polygon(Writer& w, const View& v, std::span<const Vec2> pts, const Vec2& sh
   w << "\"/>\n";
 }
 
+// A shape of one or more rings: one ring is a <polygon>; several (outer ring and holes, or the
+// rings of a union boundary) one <path> with the even-odd rule, so holes stay unfilled.
+void shape(Writer& w, const View& v, const std::vector<std::vector<Vec2>>& rings, const Vec2& shift,
+           std::string_view style) {
+  if (rings.size() == 1) return polygon(w, v, rings.front(), shift, style);
+  w << "<path fill-rule=\"evenodd\" " << style << " d=\"";
+  for (const auto& ring : rings) {
+    double lx = 0, ly = 0;
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const double x = v.px(ring[i].x() + shift.x()), y = v.py(ring[i].y() + shift.y());
+      if (i > 0 && std::hypot(x - lx, y - ly) < kDecimatePx) continue;
+      w << (i == 0 ? "M" : " L");
+      w.num(x) << ",";
+      w.num(y);
+      lx = x;
+      ly = y;
+    }
+    w << " Z";
+  }
+  w << "\"/>\n";
+}
+
 void arrow(Writer& w, const View& v, const Vec2& a, const Vec2& b, std::string_view color, std::string_view marker) {
   w << "<line x1=\"";
   w.num(v.px(a.x())) << "\" y1=\"";
@@ -123,37 +145,38 @@ std::string shortest(double x) {
 
 }  // namespace
 
-void write_svg(const std::filesystem::path& path, const ConvexPolygon& P, const ConvexPolygon& Q,
-               const Vec2& t, const Depth2& r, const SvgOptions& options) {
+void write_svg(const std::filesystem::path& path, const SvgScene& scene, const Vec2& t, const Depth2& r,
+               const SvgOptions& options) {
+  for (const auto* rings : {&scene.P, &scene.Q})
+    if (rings->empty() || rings->front().size() < 3) throw InvalidInput("write_svg: P and Q need an outer ring");
   const Vec2 v = r.translation;
   const bool moved = r.overlapping && r.depth > 0;
 
   // Workspace panel contents and extent; the direction arrow's length is a fraction of the view.
   View A;
-  A.box.add(P.vertices());
-  A.box.add(Q.vertices(), t);
-  if (moved) A.box.add(Q.vertices(), t + v);
-  const Vec2 qc = vertex_mean(Q.vertices()) + t;
+  A.box.add(scene.P.front());
+  A.box.add(scene.Q.front(), t);
+  if (moved) A.box.add(scene.Q.front(), t + v);
+  const Vec2 qc = vertex_mean(scene.Q.front()) + t;
 
-  std::vector<Vec2> M;
+  const bool draw_M = options.draw_M && !scene.config.empty();
   View B;
-  if (options.draw_M) {
-    M = minkowski_difference(P, Q);
-    B.box.add(M);
+  if (draw_M) {
+    for (const auto& ring : scene.config) B.box.add(ring);
     B.box.add(t);
     B.box.add(t + v);
   }
 
   // One scale for both panels so lengths compare; the larger extent gets kPanelPx pixels.
   double extent = std::max(A.box.w(), A.box.h());
-  if (options.draw_M) extent = std::max({extent, B.box.w(), B.box.h()});
+  if (draw_M) extent = std::max({extent, B.box.w(), B.box.h()});
   const double scale = extent > 0 ? kPanelPx / extent : 1;
   A.scale = B.scale = scale;
   A.ox = kMarginPx;
   A.oy = kMarginPx + kLegendPx;
   double width = A.ox + A.box.w() * scale + kMarginPx;
   double height = A.oy + A.box.h() * scale + kMarginPx;
-  if (options.draw_M) {
+  if (draw_M) {
     B.ox = width - kMarginPx + kGapPx;
     B.oy = A.oy;
     width = B.ox + B.box.w() * scale + kMarginPx + 80;  // room for the "t + v" label
@@ -195,7 +218,7 @@ void write_svg(const std::filesystem::path& path, const ConvexPolygon& P, const 
   swatch("fill=\"#a6cee3\" stroke=\"#1f78b4\"", "P (fixed)");
   swatch("fill=\"#fb9a99\" fill-opacity=\"0.6\" stroke=\"#e31a1c\"", "Q + t");
   if (moved) swatch("fill=\"none\" stroke=\"#e31a1c\" stroke-dasharray=\"4 3\"", "Q + t + v");
-  if (options.draw_M) swatch("fill=\"#f2f2f2\" stroke=\"#888\"", "M = P ⊕ (−Q)");
+  if (draw_M) swatch("fill=\"#f2f2f2\" stroke=\"#888\"", scene.config_label);
   if (options.direction && options.direction->norm() > 0) {  // a 28-pixel glyph along d̂, y up
     const Vec2 u = options.direction->normalized();
     const double cx = lx + 14, cy = 64;
@@ -210,11 +233,11 @@ void write_svg(const std::filesystem::path& path, const ConvexPolygon& P, const 
 
   // Workspace.
   label(w, A.ox, A.oy - 8, "workspace", "fill=\"#555\"");
-  polygon(w, A, P.vertices(), Vec2(0, 0), "fill=\"#a6cee3\" stroke=\"#1f78b4\" stroke-width=\"1.5\"");
-  polygon(w, A, Q.vertices(), t,
+  shape(w, A, scene.P, Vec2(0, 0), "fill=\"#a6cee3\" stroke=\"#1f78b4\" stroke-width=\"1.5\"");
+  shape(w, A, scene.Q, t,
           "fill=\"#fb9a99\" fill-opacity=\"0.6\" stroke=\"#e31a1c\" stroke-width=\"1.5\"");
   if (moved) {
-    polygon(w, A, Q.vertices(), t + v,
+    shape(w, A, scene.Q, t + v,
             "fill=\"none\" stroke=\"#e31a1c\" stroke-width=\"1.5\" stroke-dasharray=\"6 4\"");
     arrow(w, A, qc, qc + v, "#222", "head-dark");
     dot(w, A, r.witness_p, 4, "fill=\"#222\"");
@@ -222,12 +245,12 @@ void write_svg(const std::filesystem::path& path, const ConvexPolygon& P, const 
   }
 
   // Configuration space.
-  if (options.draw_M) {
+  if (draw_M) {
     label(w, B.ox, B.oy - 8, "configuration space (same scale)", "fill=\"#555\"");
-    polygon(w, B, M, Vec2(0, 0), "fill=\"#f2f2f2\" stroke=\"#888\" stroke-width=\"1\"");
+    shape(w, B, scene.config, Vec2(0, 0), "fill=\"#f2f2f2\" stroke=\"#888\" stroke-width=\"1\"");
     if (moved) {
       arrow(w, B, t, t + v, "#222", "head-dark");
-      label(w, B.px(t.x() + v.x()) + 7, B.py(t.y() + v.y()) - 7, "t + v on ∂M", "fill=\"#222\"");
+      label(w, B.px(t.x() + v.x()) + 7, B.py(t.y() + v.y()) - 7, scene.config_target, "fill=\"#222\"");
     }
     dot(w, B, t, 4, "fill=\"#e31a1c\"");
     label(w, B.px(t.x()) + 7, B.py(t.y()) + 14, "t", "fill=\"#e31a1c\"");
@@ -237,6 +260,16 @@ void write_svg(const std::filesystem::path& path, const ConvexPolygon& P, const 
   std::ofstream out(path, std::ios::binary);
   if (!out || !out.write(w.s.data(), std::streamsize(w.s.size())))
     throw InvalidInput(path.string() + ": cannot write file (" + std::strerror(errno) + ")");
+}
+
+
+void write_svg(const std::filesystem::path& path, const ConvexPolygon& P, const ConvexPolygon& Q,
+               const Vec2& t, const Depth2& r, const SvgOptions& options) {
+  SvgScene scene;
+  scene.P.emplace_back(P.vertices().begin(), P.vertices().end());
+  scene.Q.emplace_back(Q.vertices().begin(), Q.vertices().end());
+  if (options.draw_M) scene.config.push_back(minkowski_difference(P, Q));
+  write_svg(path, scene, t, r, options);
 }
 
 }  // namespace pendepth::io

@@ -209,6 +209,75 @@ ConvexPolygon read_convex_polygon(const std::filesystem::path& path, std::string
   }
 }
 
+namespace {
+
+// The first number after `key` in msg (from `from`), if any.
+std::optional<std::size_t> number_after(std::string_view msg, std::string_view key, std::size_t& at) {
+  at = msg.find(key, at);
+  if (at == std::string_view::npos) return std::nullopt;
+  const char* b = msg.data() + at + key.size();
+  std::size_t k = 0;
+  auto [ptr, ec] = std::from_chars(b, msg.data() + msg.size(), k);
+  if (ec != std::errc() || ptr == b) return std::nullopt;
+  return k;
+}
+
+// The source line a Polygon message points at: the first "ring K" it names, then the first
+// vertex or edge ("vertex I", "vertices I", "edge I", "edges I") named after it.
+std::size_t polygon_error_line(const WktPolygon& w, std::string_view msg, std::string_view name) {
+  if (msg.substr(0, name.size()) == name) msg.remove_prefix(name.size());
+  std::size_t at = 0;
+  const auto ring = number_after(msg, "ring ", at);
+  if (!ring || *ring >= w.rings.size()) return w.first_line;
+  std::size_t best = std::string_view::npos;
+  std::optional<std::size_t> index;
+  for (std::string_view key : {"vertex ", "vertices ", "edge ", "edges "}) {
+    std::size_t k_at = at;
+    if (auto k = number_after(msg, key, k_at); k && k_at < best) {
+      best = k_at;
+      index = k;
+    }
+  }
+  const auto& lines = w.lines[*ring];
+  return index && *index < lines.size() ? lines[*index] : lines.front();
+}
+
+Polygon validate_polygon(const WktPolygon& w, const std::string& src, std::string_view name) {
+  try {
+    return Polygon(w.rings, name);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(src + ":" + std::to_string(polygon_error_line(w, e.what(), name)) + ": " + e.what());
+  }
+}
+
+}  // namespace
+
+Polygon read_polygon(const std::filesystem::path& path, std::string_view name) {
+  return validate_polygon(read_wkt_polygon(path), path.string(), name);
+}
+
+Shape2 read_shape2(const std::filesystem::path& path, std::string_view name) {
+  const WktPolygon w = read_wkt_polygon(path);
+  const std::string src = path.string();
+  Shape2 s;
+  if (w.rings.size() == 1) {
+    try {
+      s.convex.emplace(w.rings[0], name);
+      return s;
+    } catch (const InvalidInput& e) {
+      // Not convex (a reflex vertex, or a ring winding around twice): maybe a simple polygon.
+      const std::string msg = e.what();
+      if (msg.find("not convex") == std::string::npos && msg.find("self-intersecting") == std::string::npos) {
+        std::size_t line = w.lines[0].front();
+        if (auto k = named_vertex(msg, name); k && *k < w.lines[0].size()) line = w.lines[0][*k];
+        throw InvalidInput(src + ":" + std::to_string(line) + ": " + msg);
+      }
+    }
+  }
+  s.polygon.emplace(validate_polygon(w, src, name));
+  return s;
+}
+
 std::string to_wkt(std::span<const Vec2> ring) {
   for (std::size_t i = 0; i < ring.size(); ++i)
     if (!std::isfinite(ring[i].x()) || !std::isfinite(ring[i].y()))

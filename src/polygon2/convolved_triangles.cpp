@@ -24,10 +24,17 @@ int orient_sums(const Vec2& a1, const Vec2& b1, const Vec2& a2, const Vec2& b2, 
   });
 }
 
-// Exact sign of X(a + b) = cross(d, a + b − t).
-int side_of_line(const Vec2& a, const Vec2& b, const Vec2& t, const Vec2& d) {
+// Exact sign of X(a + b) = cross(d1 − d0, a + b − s1 − s2): the side of a + b of the line
+// through s1 + s2 with direction d1 − d0.
+int side_of_line(const Vec2& a, const Vec2& b, const Vec2& s1, const Vec2& s2, const Vec2& d0, const Vec2& d1) {
+  // Structural zeros (a convolution vertex on the line of an edge it ends), frequent in the union
+  // build, decided without the rational fallback: the line through s1 + s2 along d1 − d0 contains
+  // s1 + d0 and s1 + d1 when s2 = d0 (a B edge at s1), s2 + d0 and s2 + d1 when s1 = d0.
+  if (a == s1 && s2 == d0 && (b == d0 || b == d1)) return 0;
+  if (b == s2 && s1 == d0 && (a == d0 || a == d1)) return 0;
   return exact_sign([&](auto L) {
-    return L(d.x()) * (L(a.y()) + L(b.y()) - L(t.y())) - L(d.y()) * (L(a.x()) + L(b.x()) - L(t.x()));
+    return (L(d1.x()) - L(d0.x())) * (L(a.y()) + L(b.y()) - L(s1.y()) - L(s2.y())) -
+           (L(d1.y()) - L(d0.y())) * (L(a.x()) + L(b.x()) - L(s1.x()) - L(s2.x()));
   });
 }
 
@@ -65,21 +72,36 @@ ConvolvedTriangles::ConvolvedTriangles(const Polygon& P, const ConvexPolygon& Q)
   q_top_ = Q.top();
   b_.resize(m);
   for (std::size_t j = 0; j < m; ++j) b_[j] = -Q[(q_top_ + j) % m];
+  bbox_b_ = {b_[0].x(), b_[0].y(), b_[0].x(), b_[0].y()};
+  for (const Vec2& b : b_) {
+    bbox_b_[0] = std::min(bbox_b_[0], b.x());
+    bbox_b_[1] = std::min(bbox_b_[1], b.y());
+    bbox_b_[2] = std::max(bbox_b_[2], b.x());
+    bbox_b_[3] = std::max(bbox_b_[3], b.y());
+  }
+  // For each B edge k: the number of B edges whose angle is < / <= the angle of −(edge k).
+  opp_lt_.resize(m);
+  opp_le_.resize(m);
+  for (std::size_t k = 0; k < m; ++k) {
+    const Vec2 &x0 = b_[(k + 1) % m], &x1 = b_[k];
+    auto count = [&](bool inclusive) {
+      std::size_t lo = 0, hi = m;
+      while (lo < hi) {
+        std::size_t mid = (lo + hi) / 2;
+        const int c = compare_angle(b_[mid], b_[(mid + 1) % m], x0, x1);
+        if (c < 0 || (inclusive && c == 0)) lo = mid + 1;
+        else hi = mid;
+      }
+      return static_cast<std::uint32_t>(lo);
+    };
+    opp_lt_[k] = count(false);
+    opp_le_[k] = count(true);
+  }
   const auto V = P.vertices();
-  for (const TriangleIds& ids : triangulate(P)) {
-    Tri T;
-    int low = 0;
-    for (int j = 1; j < 3; ++j) {
-      const Vec2 &a = V[ids[j]], &l = V[ids[low]];
-      if (a.y() < l.y() || (a.y() == l.y() && a.x() < l.x())) low = j;
-    }
-    for (int j = 0; j < 3; ++j) {
-      T.id[j] = ids[(low + j) % 3];
-      T.v[j] = V[T.id[j]];
-    }
-    for (int j = 0; j < 3; ++j) {
-      const Vec2 &a = T.v[j], &c = T.v[(j + 1) % 3];
-      // First B edge whose angle is >= angle(τ_j): angles increase along B's edges.
+  // c_j = number of B edges whose angle is < angle(τ_j) (binary search; angles increase along B).
+  auto fill_c = [&](Tri& T) {
+    for (int j = 0; j < T.n; ++j) {
+      const Vec2 &a = T.v[j], &c = T.v[(j + 1) % T.n];
       std::size_t lo = 0, hi = m;
       while (lo < hi) {
         std::size_t mid = (lo + hi) / 2;
@@ -88,37 +110,71 @@ ConvolvedTriangles::ConvolvedTriangles(const Polygon& P, const ConvexPolygon& Q)
       }
       T.c[j] = static_cast<std::uint32_t>(lo);
     }
+  };
+  auto lower_left = [](const Vec2& a, const Vec2& l) { return a.y() < l.y() || (a.y() == l.y() && a.x() < l.x()); };
+  for (const TriangleIds& ids : triangulate(P)) {
+    Tri T;
+    int low = 0;
+    for (int j = 1; j < 3; ++j)
+      if (lower_left(V[ids[j]], V[ids[low]])) low = j;
+    for (int j = 0; j < 3; ++j) {
+      T.id[j] = ids[(low + j) % 3];
+      T.v[j] = V[T.id[j]];
+    }
+    fill_c(T);
     tri_.push_back(T);
   }
+  // The edge sausages f ⊕ B: 2-gons in normal form (v_0 lowest-leftmost).
+  for (std::size_t g = 0; g < V.size(); ++g) {
+    Tri T;
+    T.n = 2;
+    std::uint32_t a = static_cast<std::uint32_t>(g), b = static_cast<std::uint32_t>(P.next(g));
+    if (lower_left(V[b], V[a])) std::swap(a, b);
+    T.id = {a, b, a};
+    T.v = {V[a], V[b], V[a]};
+    fill_c(T);
+    seg_.push_back(T);
+  }
+  // Triangles around each vertex (CSR).
+  fan_start_.assign(V.size() + 1, 0);
+  for (const Tri& T : tri_)
+    for (int j = 0; j < 3; ++j) ++fan_start_[T.id[j] + 1];
+  for (std::size_t v = 0; v < V.size(); ++v) fan_start_[v + 1] += fan_start_[v];
+  fan_.resize(fan_start_.back());
+  std::vector<std::uint32_t> fill(fan_start_.begin(), fan_start_.end() - 1);
+  for (std::size_t i = 0; i < tri_.size(); ++i)
+    for (int j = 0; j < 3; ++j) fan_[fill[tri_[i].id[j]]++] = static_cast<std::uint32_t>(i);
 }
 
-void ConvolvedTriangles::vertex(std::size_t i, std::size_t k, int& slot, std::size_t& bj) const {
-  const Tri& T = tri_[i];
-  k %= vertex_count();
+void ConvolvedTriangles::vertex(std::size_t i, std::size_t k, int& slot, std::size_t& bj) const { vertex_of(tri_[i], k, slot, bj); }
+
+void ConvolvedTriangles::vertex_of(const Tri& T, std::size_t k, int& slot, std::size_t& bj) const {
+  k %= b_.size() + T.n;
   int a = 0;
-  while (a < 3 && a + T.c[a] < k) ++a;
-  slot = a % 3;
+  while (a < T.n && a + T.c[a] < k) ++a;
+  slot = a % T.n;
   bj = (k - a) % b_.size();
 }
 
-Cut ConvolvedTriangles::edge(std::size_t i, std::size_t k) const {
-  const Tri& T = tri_[i];
+Cut ConvolvedTriangles::edge(std::size_t i, std::size_t k) const { return edge_of(tri_[i], i, k); }
+
+Cut ConvolvedTriangles::edge_of(const Tri& T, std::size_t idx, std::size_t k) const {
   const std::size_t m = b_.size();
-  k %= vertex_count();
+  k %= m + T.n;
   int slot;
   std::size_t bj;
-  vertex(i, k, slot, bj);
+  vertex_of(T, k, slot, bj);
   Cut c;
-  c.tri = static_cast<std::uint32_t>(i);
+  c.tri = static_cast<std::uint32_t>(idx);
   c.pt = T.v[slot];
   c.pb = b_[bj];
   c.b = static_cast<std::uint32_t>(bj);
-  const int a = [&] { int x = 0; while (x < 3 && x + T.c[x] < k) ++x; return x; }();
-  if (a < 3 && a + T.c[a] == k) {  // the triangle edge τ_a
+  const int a = [&] { int x = 0; while (x < T.n && x + T.c[x] < k) ++x; return x; }();
+  if (a < T.n && a + T.c[a] == k) {  // the triangle edge τ_a
     c.e0 = T.v[a];
-    c.e1 = T.v[(a + 1) % 3];
+    c.e1 = T.v[(a + 1) % T.n];
     c.p_from = T.id[a];
-    c.p_to = T.id[(a + 1) % 3];
+    c.p_to = T.id[(a + 1) % T.n];
     c.b_edge = false;
   } else {
     c.e0 = b_[bj];
@@ -130,14 +186,19 @@ Cut ConvolvedTriangles::edge(std::size_t i, std::size_t k) const {
 }
 
 // Number of edges of R (triangle's and B's) whose angle is < angle(x) (<= when inclusive).
-std::size_t ConvolvedTriangles::count_below(const Tri& T, const Vec2& x, bool inclusive) const {
+std::size_t ConvolvedTriangles::count_below(const Tri& T, const Vec2& x0, const Vec2& x1, bool inclusive, int bedge,
+                                            bool reversed) const {
   const std::size_t m = b_.size();
   auto below = [&](const Vec2& e0, const Vec2& e1) {
-    int s = compare_angle(e0, e1, kZero, x);
+    int s = compare_angle(e0, e1, x0, x1);
     return s < 0 || (inclusive && s == 0);
   };
   std::size_t n = 0;
-  for (int j = 0; j < 3; ++j) n += below(T.v[j], T.v[(j + 1) % 3]);
+  for (int j = 0; j < T.n; ++j) n += below(T.v[j], T.v[(j + 1) % T.n]);
+  if (bedge >= 0) {  // x = ± B edge `bedge`: B's part is known (angles increase along B)
+    if (!reversed) return n + bedge + (inclusive ? 1 : 0);
+    return n + (inclusive ? opp_le_[bedge] : opp_lt_[bedge]);
+  }
   std::size_t lo = 0, hi = m;
   while (lo < hi) {
     std::size_t mid = (lo + hi) / 2;
@@ -147,13 +208,15 @@ std::size_t ConvolvedTriangles::count_below(const Tri& T, const Vec2& x, bool in
   return n + lo;
 }
 
-bool ConvolvedTriangles::contains_interior(std::size_t i, const Vec2& t) const {
-  const Tri& T = tri_[i];
-  const std::size_t K = vertex_count();
+bool ConvolvedTriangles::contains_interior(std::size_t i, const Vec2& t) const { return contains_of(tri_[i], t); }
+bool ConvolvedTriangles::segment_contains_interior(std::size_t g, const Vec2& t) const { return contains_of(seg_[g], t); }
+
+bool ConvolvedTriangles::contains_of(const Tri& T, const Vec2& t) const {
+  const std::size_t K = b_.size() + T.n;
   auto pt = [&](std::size_t k, Vec2& a, Vec2& b) {
     int slot;
     std::size_t bj;
-    vertex(i, k, slot, bj);
+    vertex_of(T, k, slot, bj);
     a = T.v[slot];
     b = b_[bj];
   };
@@ -178,19 +241,57 @@ bool ConvolvedTriangles::contains_interior(std::size_t i, const Vec2& t) const {
 }
 
 bool ConvolvedTriangles::line_interval(std::size_t i, const Vec2& t, const Vec2& d, Cut& entry, Cut& exit) const {
-  const Tri& T = tri_[i];
-  const std::size_t K = vertex_count();
-  const Vec2 nd = -d;
+  return line_interval_impl(tri_[i], i, t, kZero, kZero, d, entry, exit);
+}
+
+bool ConvolvedTriangles::line_interval(std::size_t i, const Cut& line, Cut& entry, Cut& exit) const {
+  return line_interval_impl(tri_[i], i, line.pt, line.pb, line.e0, line.e1, entry, exit, line.b_edge ? int(line.b) : -1);
+}
+
+bool ConvolvedTriangles::segment_line_interval(std::size_t g, const Vec2& t, const Vec2& d, Cut& entry, Cut& exit) const {
+  return line_interval_impl(seg_[g], g, t, kZero, kZero, d, entry, exit);
+}
+
+bool ConvolvedTriangles::segment_line_interval(std::size_t g, const Cut& line, Cut& entry, Cut& exit) const {
+  return line_interval_impl(seg_[g], g, line.pt, line.pb, line.e0, line.e1, entry, exit, line.b_edge ? int(line.b) : -1);
+}
+
+std::array<double, 4> ConvolvedTriangles::box(std::size_t i) const { return box_of(tri_[i]); }
+std::array<double, 4> ConvolvedTriangles::segment_box(std::size_t g) const { return box_of(seg_[g]); }
+
+std::array<double, 4> ConvolvedTriangles::box_of(const Tri& T) const {
+  std::array<double, 4> r{bbox_b_[0], bbox_b_[1], bbox_b_[2], bbox_b_[3]};
+  double x0 = std::min({T.v[0].x(), T.v[1].x(), T.v[2].x()}), x1 = std::max({T.v[0].x(), T.v[1].x(), T.v[2].x()});
+  double y0 = std::min({T.v[0].y(), T.v[1].y(), T.v[2].y()}), y1 = std::max({T.v[0].y(), T.v[1].y(), T.v[2].y()});
+  r[0] += x0;
+  r[1] += y0;
+  r[2] += x1;
+  r[3] += y1;
+  // Each coordinate is one rounded sum: pad by two ulps of its magnitude (and a tiny absolute).
+  for (double& v : r) {
+    const double pad = std::abs(v) * 0x1p-51 + 0x1p-1000;
+    v += (&v - r.data()) < 2 ? -pad : pad;
+  }
+  return r;
+}
+
+// The line is s1 + s2 + μ·(d1 − d0); entry/exit cuts give μ as their λ with that line as the ray.
+bool ConvolvedTriangles::line_interval_impl(const Tri& T, std::size_t i, const Vec2& s1, const Vec2& s2, const Vec2& d0,
+                                            const Vec2& d1, Cut& entry, Cut& exit, int bedge) const {
+  const std::size_t K = b_.size() + T.n;
   // Front edges (cross(d, e) > 0) have angles in (θ, θ + π): vertices fs .. fe (cyclic); back
   // edges vertices bs .. be. X(v) = cross(d, v − t) increases along the front chain from its
   // minimum at fs to its maximum at fe, and decreases along the back chain.
-  const std::size_t fs = count_below(T, d, true) % K, be = count_below(T, d, false) % K;
-  const std::size_t bs = count_below(T, nd, true) % K, fe = count_below(T, nd, false) % K;
+  const std::size_t m = b_.size();
+  const int be_idx =
+      (bedge >= 0 && s2 == d0 && d0 == b_[std::size_t(bedge) % m] && d1 == b_[(std::size_t(bedge) + 1) % m]) ? bedge : -1;
+  const std::size_t fs = count_below(T, d0, d1, true, be_idx, false) % K, be = count_below(T, d0, d1, false, be_idx, false) % K;
+  const std::size_t bs = count_below(T, d1, d0, true, be_idx, true) % K, fe = count_below(T, d1, d0, false, be_idx, true) % K;
   auto X = [&](std::size_t k) {
     int slot;
     std::size_t bj;
-    vertex(i, k, slot, bj);
-    return side_of_line(T.v[slot], b_[bj], t, d);
+    vertex_of(T, k, slot, bj);
+    return side_of_line(T.v[slot], b_[bj], s1, s2, d0, d1);
   };
   if (X(fs) >= 0 || X(fe) <= 0) return false;
   const std::size_t nf = (fe + K - fs) % K, nb = (be + K - bs) % K;
@@ -201,7 +302,7 @@ bool ConvolvedTriangles::line_interval(std::size_t i, const Vec2& t, const Vec2&
     if (X((fs + mid) % K) <= 0) lo = mid;
     else hi = mid;
   }
-  exit = edge(i, (fs + lo) % K);
+  exit = edge_of(T, i, (fs + lo) % K);
   // Entry: last offset o in [0, nb) with X(v_{bs+o}) >= 0.
   lo = 0;
   hi = nb;  // X(bs + lo) > 0, X(bs + hi) < 0
@@ -210,7 +311,7 @@ bool ConvolvedTriangles::line_interval(std::size_t i, const Vec2& t, const Vec2&
     if (X((bs + mid) % K) >= 0) lo = mid;
     else hi = mid;
   }
-  entry = edge(i, (bs + lo) % K);
+  entry = edge_of(T, i, (bs + lo) % K);
   return true;
 }
 

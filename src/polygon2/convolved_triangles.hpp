@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "polygon2/triangulation.hpp"
@@ -61,17 +62,55 @@ class ConvolvedTriangles {
   /// The open interval of λ where t + λ·d lies in int R_i: entry and exit cuts. Returns false
   /// when the line misses int R_i (including lines touching R_i only along its boundary). O(log m).
   bool line_interval(std::size_t i, const Vec2& t, const Vec2& d, Cut& entry, Cut& exit) const;
+  /// The same for the line of a cut, pt + pb + μ·(e1 − e0): μ of entry/exit is the cut's λ
+  /// with the line as the ray (used by the union boundary, DHS §4.1 Step 3). O(log m).
+  bool line_interval(std::size_t i, const Cut& line, Cut& entry, Cut& exit) const;
+  /// Conservative bounding box of R_i (xmin, ymin, xmax, ymax), padded for rounding.
+  std::array<double, 4> box(std::size_t i) const;
+  /// Heap bytes (triangles, edge sausages, fans and B).
+  std::size_t bytes() const {
+    return (tri_.capacity() + seg_.capacity()) * sizeof(Tri) + b_.capacity() * sizeof(Vec2) +
+           (fan_.capacity() + fan_start_.capacity() + opp_lt_.capacity() + opp_le_.capacity()) * sizeof(std::uint32_t);
+  }
+
+  // The edge sausages S_g = f_g ⊕ B for the P edges f_g = (g, P.next(g)), implicit like the R_i
+  // (a 2-gon instead of a triangle: m + 2 edges). For a placement x where Q + x is not inside P,
+  // x ∈ O ⇔ x ∈ int S_g for some g (int(Q + x) then meets ∂P, hence some edge's relative interior).
+  // Their boxes are small (|f_g| + |B|), unlike the R_i of long triangulation diagonals.
+  std::size_t segment_count() const { return seg_.size(); }
+  bool segment_contains_interior(std::size_t g, const Vec2& t) const;
+  /// As line_interval; the returned cuts carry tri = g.
+  bool segment_line_interval(std::size_t g, const Vec2& t, const Vec2& d, Cut& entry, Cut& exit) const;
+  bool segment_line_interval(std::size_t g, const Cut& line, Cut& entry, Cut& exit) const;
+  std::array<double, 4> segment_box(std::size_t g) const;
+  /// Triangles incident to P vertex v.
+  std::span<const std::uint32_t> triangles_at(std::size_t v) const {
+    return std::span<const std::uint32_t>(fan_).subspan(fan_start_[v], fan_start_[v + 1] - fan_start_[v]);
+  }
 
  private:
   struct Tri {
     TriangleIds id;
     std::array<Vec2, 3> v;
     std::array<std::uint32_t, 3> c;
+    int n = 3;  ///< 3: triangle; 2: edge sausage (id[2], v[2], c[2] unused)
   };
-  std::size_t count_below(const Tri& T, const Vec2& x, bool inclusive) const;
-  std::vector<Tri> tri_;
+  /// Edges of T ⊕ B with angle < (<= when inclusive) angle(x1 − x0). bedge >= 0: x1 − x0 is
+  /// B edge `bedge` (reversed: its opposite), whose rank in B is known without predicates.
+  std::size_t count_below(const Tri& T, const Vec2& x0, const Vec2& x1, bool inclusive, int bedge = -1,
+                          bool reversed = false) const;
+  void vertex_of(const Tri& T, std::size_t k, int& slot, std::size_t& bj) const;
+  Cut edge_of(const Tri& T, std::size_t idx, std::size_t k) const;
+  bool contains_of(const Tri& T, const Vec2& t) const;
+  std::array<double, 4> box_of(const Tri& T) const;
+  bool line_interval_impl(const Tri& T, std::size_t i, const Vec2& s1, const Vec2& s2, const Vec2& d0, const Vec2& d1,
+                          Cut& entry, Cut& exit, int bedge = -1) const;
+  std::vector<Tri> tri_, seg_;
+  std::vector<std::uint32_t> fan_, fan_start_;
+  std::vector<std::uint32_t> opp_lt_, opp_le_;  ///< per B edge k: B edges with angle < / <= angle(−edge k)
   std::vector<Vec2> b_;
   std::size_t q_top_ = 0;
+  std::array<double, 4> bbox_b_{};
 };
 
 }  // namespace pendepth::polygon2

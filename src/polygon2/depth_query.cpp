@@ -22,9 +22,36 @@ std::size_t PolygonDepth2::triangle_count() const { return impl_->R.size(); }
 
 bool PolygonDepth2::overlapping(const Vec2& t) const {
   require_finite(t, "placement t");
-  for (std::size_t i = 0; i < impl_->R.size(); ++i)
-    if (impl_->R.contains_interior(i, t)) return true;
-  return false;
+  return impl_->U.in_overlap(t);
+}
+
+PolygonDepth2::BoundaryStats PolygonDepth2::boundary_stats() const {
+  const polygon2::UnionBoundary& U = impl_->U;
+  BoundaryStats s;
+  s.rings = U.rings().size();
+  s.vertices = U.vertex_count();
+  s.segments = U.segment_count();
+  s.arcs = U.arc_count();
+  s.bytes = U.bytes() + impl_->R.bytes();  // the queries also read the triangles and B
+  return s;
+}
+
+std::vector<std::vector<Vec2>> PolygonDepth2::boundary_rings() const {
+  const polygon2::UnionBoundary& U = impl_->U;
+  std::vector<std::vector<Vec2>> out;
+  for (const polygon2::Ring& rg : U.rings()) {
+    std::vector<Vec2> ring;
+    for (std::uint32_t q = 0; q < rg.count; ++q) {
+      const std::size_t k = rg.first + q;
+      ring.push_back(U.start_point(k));
+      for (std::size_t j = 1; j < U.element_count(k); ++j) {
+        const polygon2::Cut E = U.element(k, j);
+        ring.push_back(E.pt + E.pb);
+      }
+    }
+    out.push_back(std::move(ring));
+  }
+  return out;
 }
 
 namespace polygon2 {
@@ -63,6 +90,19 @@ Depth2 result_at_cut(const PolygonDepth2::Impl& S, const Cut& c, const Vec2& t, 
     }
     r.witness_q = r.witness_p = S.Q[q] + x;
   }
+  return r;
+}
+
+Depth2 result_at_hit(const PolygonDepth2::Impl& S, const Hit& h, const Vec2& t, const Vec2& d) {
+  if (!h.is_point) return result_at_cut(S, h.cut, t, d);
+  Depth2 r;
+  const double dn = std::sqrt(exact::accurate_value([&](auto L) { return L(d.x()) * L(d.x()) + L(d.y()) * L(d.y()); }));
+  r.depth = std::max(0.0, hit_value(h, t, d) * dn);
+  r.normal = d / dn;
+  r.translation = r.depth * r.normal;
+  r.feature_p = {FeatureKind::Vertex, int(h.p_index)};
+  r.feature_q = {FeatureKind::Vertex, int(S.R.q_index(h.b_index))};
+  r.witness_p = r.witness_q = h.p;
   return r;
 }
 

@@ -1,5 +1,6 @@
-// σ_d for a polygon with holes against a convex polygon: the exact reference (DHS §4.2, with
-// the convolved triangles of §4.1 Step 2 instead of the union boundary of Step 3).
+// σ_d for a polygon with holes against a convex polygon: the exact reference along_triangles()
+// (DHS §4.2, with the convolved triangles of §4.1 Step 2 instead of the union boundary of Step 3;
+// the union-boundary paths along() / along_scan() are in ray_shooting.cpp).
 //
 // The line t + λ·d meets each open R_i in an open interval (entry_i, exit_i) (O(log m) each).
 // The overlap set is O = ∪ int R_i (depth2_polygon.hpp), so σ_d is the end of the connected component of ∪ (entry_i, exit_i) that
@@ -12,7 +13,7 @@
 
 namespace pendepth {
 
-Depth2 PolygonDepth2::along(const Vec2& t, const Vec2& d_in) const {
+Depth2 PolygonDepth2::along_triangles(const Vec2& t, const Vec2& d_in) const {
   const Vec2 d = polygon2::check_and_scale(t, d_in);
   using polygon2::Cut;
   struct Iv {

@@ -4,6 +4,7 @@
 #include <pendepth/depth2_polygon.hpp>
 
 #include "polygon2/convolved_triangles.hpp"
+#include "polygon2/union_boundary.hpp"
 
 namespace pendepth {
 
@@ -11,7 +12,8 @@ struct PolygonDepth2::Impl {
   Polygon P;
   ConvexPolygon Q;
   polygon2::ConvolvedTriangles R;
-  Impl(const Polygon& p, const ConvexPolygon& q) : P(p), Q(q), R(p, q) {}
+  polygon2::UnionBoundary U;  ///< refers to P and R above (Impl is never moved: held by unique_ptr)
+  Impl(const Polygon& p, const ConvexPolygon& q) : P(p), Q(q), R(P, Q), U(P, R) {}
 };
 
 namespace polygon2 {
@@ -22,6 +24,8 @@ Vec2 check_and_scale(const Vec2& t, const Vec2& d);
 /// The result of moving from t along d (scaled) to the line of cut c: depth, translation, witnesses,
 /// features. `overlapping` and `kind` are set by the caller.
 Depth2 result_at_cut(const PolygonDepth2::Impl& S, const Cut& c, const Vec2& t, const Vec2& d);
+/// The same for a hit of the union boundary (a cut, or an explicit convolution vertex p + b).
+Depth2 result_at_hit(const PolygonDepth2::Impl& S, const Hit& h, const Vec2& t, const Vec2& d);
 
 }  // namespace polygon2
 }  // namespace pendepth

@@ -1,11 +1,20 @@
-// Complete separation along d for a polygon with holes against a convex polygon (DHS §6),
-// exact reference: the last exit of the line t + λ·d from any open R_i, if it lies after 0
-// (sup{λ ≥ 0 : t + λ·d ∈ O}, O = ∪ int R_i the overlap set). O(n log m).
+// Complete separation along d for a polygon with holes against a convex polygon (DHS §6): the last
+// exit sup{λ ≥ 0 : t + λ·d ∈ O} of the line t + λ·d from the overlap set O = ∪ int R_i (the sup of
+// a union of open intervals is the largest of their ends).
+//   separation_triangles(): the largest exit from every open R_i, O(n log m) (exact reference).
+//   separation():           the largest exit from the open edge sausages int(f ⊕ B) (just before
+//                           the last exit Q + x overlaps P without lying inside it, so some edge
+//                           crosses int(Q + x)), branch-and-bound over their bounding-volume
+//                           hierarchy, farthest boxes first (UnionBoundary::last_exit). Departure
+//                           from DHS §6, which shoots at the outer ring of ∂O: the last exit lies
+//                           on the outer ring, and it is found here without walking the ring.
+//                           Same exact λ as the reference; the exit line may differ where several
+//                           meet (a few ulps).
 #include "polygon2/query_impl.hpp"
 
 namespace pendepth {
 
-Depth2 PolygonDepth2::separation(const Vec2& t, const Vec2& d_in) const {
+Depth2 PolygonDepth2::separation_triangles(const Vec2& t, const Vec2& d_in) const {
   const Vec2 d = polygon2::check_and_scale(t, d_in);
   polygon2::Cut best, entry, exit;
   bool found = false;
@@ -19,6 +28,16 @@ Depth2 PolygonDepth2::separation(const Vec2& t, const Vec2& d_in) const {
   if (found) r = polygon2::result_at_cut(*impl_, best, t, d);
   r.kind = DepthKind::Separation;
   r.overlapping = overlapping(t);
+  return r;
+}
+
+Depth2 PolygonDepth2::separation(const Vec2& t, const Vec2& d_in) const {
+  const Vec2 d = polygon2::check_and_scale(t, d_in);
+  polygon2::Cut best;
+  Depth2 r;
+  if (impl_->U.last_exit(t, d, best)) r = polygon2::result_at_cut(*impl_, best, t, d);
+  r.kind = DepthKind::Separation;
+  r.overlapping = impl_->U.in_overlap(t);
   return r;
 }
 

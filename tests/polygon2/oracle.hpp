@@ -13,6 +13,8 @@
 
 #include <pendepth/geometry.hpp>
 
+#include <gmpxx.h>
+
 #include <array>
 #include <memory>
 #include <vector>
@@ -33,6 +35,25 @@ class UnionOracle {
   double separation(const pendepth::Vec2& t, const pendepth::Vec2& d) const;
   /// Vertices of the regularised union's boundary (rounded to double).
   std::vector<pendepth::Vec2> boundary_vertices() const;
+
+  // ---- the union boundary, exactly (for tests of the implicit ∂O) ----
+  struct ExactPoint {
+    mpq_class x, y;
+  };
+  /// Area of the regularised union (exact, rounded once).
+  double union_area() const;
+  /// Outer boundaries and holes of the regularised union (Polygon_set_2's polygons with holes).
+  std::size_t outer_count() const;
+  std::size_t hole_count() const;
+  /// Exact: p lies on the regularised union's boundary.
+  bool on_union_boundary(const ExactPoint& p) const;
+  /// Exact: p ∈ O (some int R_i) / p in the interior of the regularised union.
+  bool inside(const ExactPoint& p) const;
+  bool inside_union(const ExactPoint& p) const;
+  /// Number of vertices of the regularised union's boundary lying on none of the closed segments.
+  std::size_t vertices_off(const std::vector<std::array<ExactPoint, 2>>& segments) const;
+  /// dist(t, boundary of the regularised union), exact then rounded once.
+  double boundary_distance(const pendepth::Vec2& t) const;
 
  private:
   struct Impl;

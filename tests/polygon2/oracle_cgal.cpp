@@ -128,6 +128,89 @@ double UnionOracle::separation(const pendepth::Vec2& t, const pendepth::Vec2& d)
   return 0;
 }
 
+namespace {
+// An exact rational as FT, type-agnostic: integers split into 48-bit chunks (each exact in double).
+FT ft_of_mpz(mpz_class z) {
+  const bool neg = z < 0;
+  if (neg) z = -z;
+  FT r = 0, scale = 1;
+  const FT base = FT(281474976710656.0);  // 2^48
+  while (z != 0) {
+    mpz_class low = z % mpz_class(281474976710656.0);
+    r += FT(low.get_d()) * scale;
+    scale *= base;
+    z /= mpz_class(281474976710656.0);
+  }
+  return neg ? -r : r;
+}
+Point exact_point(const UnionOracle::ExactPoint& p) {
+  return Point(ft_of_mpz(p.x.get_num()) / ft_of_mpz(p.x.get_den()), ft_of_mpz(p.y.get_num()) / ft_of_mpz(p.y.get_den()));
+}
+}  // namespace
+
+double UnionOracle::union_area() const {
+  std::vector<PolygonWH> pwh;
+  impl_->set.polygons_with_holes(std::back_inserter(pwh));
+  FT a = 0;
+  for (const auto& p : pwh) {
+    a += p.outer_boundary().area();
+    for (auto h = p.holes_begin(); h != p.holes_end(); ++h) a += h->area();  // holes are clockwise
+  }
+  return CGAL::to_double(CGAL::exact(a));
+}
+
+std::size_t UnionOracle::outer_count() const { return impl_->set.number_of_polygons_with_holes(); }
+
+std::size_t UnionOracle::hole_count() const {
+  std::vector<PolygonWH> pwh;
+  impl_->set.polygons_with_holes(std::back_inserter(pwh));
+  std::size_t n = 0;
+  for (const auto& p : pwh) n += p.number_of_holes();
+  return n;
+}
+
+bool UnionOracle::on_union_boundary(const ExactPoint& p) const {
+  const Point q = exact_point(p);
+  return std::any_of(impl_->boundary.begin(), impl_->boundary.end(), [&](const K::Segment_2& s) { return s.has_on(q); });
+}
+
+bool UnionOracle::inside(const ExactPoint& p) const {
+  const Point q = exact_point(p);
+  return std::any_of(impl_->parts.begin(), impl_->parts.end(),
+                     [&](const Polygon2& R) { return R.bounded_side(q) == CGAL::ON_BOUNDED_SIDE; });
+}
+
+bool UnionOracle::inside_union(const ExactPoint& p) const {
+  return impl_->set.oriented_side(exact_point(p)) == CGAL::ON_POSITIVE_SIDE;
+}
+
+std::size_t UnionOracle::vertices_off(const std::vector<std::array<ExactPoint, 2>>& segments) const {
+  std::vector<K::Segment_2> segs;
+  for (const auto& s : segments) segs.emplace_back(exact_point(s[0]), exact_point(s[1]));
+  std::size_t off = 0;
+  for (const auto& b : impl_->boundary) {
+    const Point& v = b.source();
+    bool on = false;
+    for (const auto& s : segs)
+      if (s.is_degenerate() ? s.source() == v : s.has_on(v)) {
+        on = true;
+        break;
+      }
+    off += !on;
+  }
+  return off;
+}
+
+double UnionOracle::boundary_distance(const pendepth::Vec2& t) const {
+  const Point q = lift(t);
+  FT best = -1;
+  for (const auto& s : impl_->boundary) {
+    const FT d2 = CGAL::squared_distance(q, s);
+    if (best < 0 || d2 < best) best = d2;
+  }
+  return std::sqrt(CGAL::to_double(CGAL::exact(best)));
+}
+
 std::vector<pendepth::Vec2> UnionOracle::boundary_vertices() const {
   std::vector<pendepth::Vec2> out;
   for (const auto& s : impl_->boundary) out.emplace_back(CGAL::to_double(s.source().x()), CGAL::to_double(s.source().y()));

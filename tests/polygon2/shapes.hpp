@@ -1,5 +1,6 @@
 // Test shapes for polygon2: random star-shaped polygons (optionally with holes), combs with deep
-// pockets, nesting pieces from ../shared/data. Fixed seeds are chosen by the callers.
+// pockets, spirals, squares with a grid of square holes, random convex Q, nesting pieces from
+// ../shared/data. Fixed seeds are chosen by the callers.
 #pragma once
 
 #include <pendepth/polygon.hpp>
@@ -73,6 +74,44 @@ inline std::vector<Vec2> comb_ring(int teeth, double tw, double gw, double h, do
     }
   }
   // Right edge of the last tooth goes up from (W, 0): vertex (W, base + h) already pushed first.
+  return r;
+}
+
+/// Random convex polygon (hull of a star ring of m points, radius in [scale/2, scale]).
+inline pendepth::ConvexPolygon random_convex(std::mt19937_64& rng, int m, double scale, bool grid) {
+  for (;;) {
+    auto pts = star_ring(rng, m, Vec2(0, 0), scale / 2, scale, grid);
+    try {
+      return pendepth::ConvexPolygon::hull(pts, "Q");
+    } catch (const pendepth::InvalidInput&) {
+    }
+  }
+}
+
+/// A thick Archimedean spiral: centre line r = a + b·θ for θ in [0, turns·2π], half-width w
+/// (w < π·b keeps the arms apart), `steps` samples per side: a long, deep, winding pocket.
+inline std::vector<Vec2> spiral_ring(double a, double b, double w, double turns, int steps) {
+  std::vector<Vec2> outer, inner;
+  for (int k = 0; k <= steps; ++k) {
+    const double th = turns * 2 * kPi * k / steps, r = a + b * th;
+    const Vec2 u(std::cos(th), std::sin(th));
+    outer.push_back((r + w) * u);
+    inner.push_back((r - w) * u);
+  }
+  std::vector<Vec2> ring(inner.begin(), inner.end());
+  ring.insert(ring.end(), outer.rbegin(), outer.rend());
+  return ring;
+}
+
+/// Square [0, k·(h + g) + g]² with a k×k grid of square holes of side h, gaps g, shifted by o.
+inline Rings holes_grid(int k, double h, double g, Vec2 o) {
+  const double W = k * (h + g) + g;
+  Rings r{{o + Vec2(0, 0), o + Vec2(W, 0), o + Vec2(W, W), o + Vec2(0, W)}};
+  for (int i = 0; i < k; ++i)
+    for (int j = 0; j < k; ++j) {
+      const Vec2 c = o + Vec2(g + i * (h + g), g + j * (h + g));
+      r.push_back({c, c + Vec2(0, h), c + Vec2(h, h), c + Vec2(h, 0)});
+    }
   return r;
 }
 
