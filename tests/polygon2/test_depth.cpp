@@ -11,6 +11,7 @@
 
 #include <cmath>
 
+#include "../test_scale.hpp"
 #include "oracle.hpp"
 #include "polygon2/convolved_triangles.hpp"
 #include "shapes.hpp"
@@ -135,7 +136,8 @@ ConvexPolygon random_convex(std::mt19937_64& rng, int m, double scale, bool grid
 TEST(PolygonDepth, RandomPolygonsWithHolesAgainstExactUnion) {
   std::mt19937_64 rng(4242);
   Stats st;
-  for (int it = 0; it < 24; ++it) {
+  // Debug/sanitizer builds visit every kDivisor-th case (same seeds and shapes, fewer of them).
+  for (int it = 0; it < 24; it += pendepth_test::kDivisor) {
     Polygon P = polygon2_test::random_polygon(rng, 6 + it % 19, it % 4, it % 2 == 0);
     ConvexPolygon Q = random_convex(rng, 3 + it % 8, 5 + it % 30, it % 3 == 0);
     check_pair(P, Q, rng, 12, st, "random " + std::to_string(it));
@@ -151,7 +153,7 @@ TEST(PolygonDepth, NestingPiecesAgainstExactUnion) {
   Stats st;
   for (const char* f : {"albano.json", "shirts.json", "trousers.json"}) {
     auto pieces = polygon2_test::nesting_pieces(f);
-    for (std::size_t k = 0; k < pieces.size(); k += 3) {
+    for (std::size_t k = 0; k < pieces.size(); k += 3 * pendepth_test::kDivisor) {
       Polygon P = Polygon::simple(pieces[k], f);
       ConvexPolygon Q = ConvexPolygon::hull(pieces[(k + 1) % pieces.size()], f);
       check_pair(P, Q, rng, 6, st, std::string(f) + " #" + std::to_string(k));
@@ -211,7 +213,7 @@ TEST(PolygonDepth, CombPocketsExactFitAndCollinearVertices) {
 TEST(ConvolvedTriangles, MatchConvexDirectionalDepth) {
   std::mt19937_64 rng(31337);
   std::size_t checked = 0;
-  for (int it = 0; it < 30; ++it) {
+  for (int it = 0; it < 30; it += pendepth_test::kDivisor) {
     Polygon P = polygon2_test::random_polygon(rng, 5 + it % 10, it % 3, it % 2 == 0);
     ConvexPolygon Q = random_convex(rng, 3 + it % 12, 10 + it, it % 2 == 1);
     pendepth::polygon2::ConvolvedTriangles R(P, Q);
