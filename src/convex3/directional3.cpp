@@ -55,6 +55,7 @@
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <unordered_map>
 #include <vector>
@@ -945,6 +946,84 @@ int edge_he(const PolytopeData& D, int a, int b) {
   return -1;
 }
 
+// Vertices of the support face of one side through its support vertex s for the exit facet
+// normal u (X side: u·x = max; Y side: u·y' = min): flood over level-0 edges with exact
+// equality. O(Σ degrees of the face's vertices) (one vertex in general position).
+template <class UF>
+std::vector<int> plane_face(const Ctx& c, bool isq, int s, UF u_of) {
+  const PolytopeData& D = c.data(isq);
+  const DKLevel& L = D.levels[0];
+  std::vector<int> out{s};
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    const int h0 = D.vertex_he[out[i]];
+    int h = h0;
+    do {
+      const int w = L.target(h);
+      if (std::find(out.begin(), out.end(), w) == out.end() &&
+          exact_sign([&](auto Lf) { return dot(u_of(Lf), c.vdiff(Lf, isq, w, s)); }) == 0)
+        out.push_back(w);
+      h = L.ccw(h);
+    } while (h != h0);
+  }
+  return out;
+}
+
+// A point of conv(A) ∩ conv(B) for two convex point sets lying (up to rounding) in one plane
+// with unit normal u, known to intersect exactly. The intersection is the hull of vertices of A
+// in conv(B), vertices of B in conv(A) and crossings of their edges; among these candidates the
+// one least outside both (2D signed distances, doubles) is returned. O(|A|·|B|·(|A| + |B|)).
+Vec3 contact_point(const std::vector<Vec3>& A, const std::vector<Vec3>& B, const Vec3& u) {
+  if (A.size() == 1) return A[0];
+  if (B.size() == 1) return B[0];
+  const Vec3 e1 = u.unitOrthogonal(), e2 = u.cross(e1);
+  const Vec3 o = A[0];
+  using P2 = Eigen::Vector2d;
+  auto to2 = [&](const std::vector<Vec3>& S) {  // projected, in convex (CCW) order
+    std::vector<P2> r;
+    P2 m = P2::Zero();
+    for (const auto& x : S) r.emplace_back((x - o).dot(e1), (x - o).dot(e2)), m += r.back();
+    m /= double(r.size());
+    std::sort(r.begin(), r.end(), [&](const P2& a, const P2& b) {
+      return std::atan2(a.y() - m.y(), a.x() - m.x()) < std::atan2(b.y() - m.y(), b.x() - m.x());
+    });
+    return r;
+  };
+  const std::vector<P2> a = to2(A), b = to2(B);
+  auto outside = [](const P2& x, const std::vector<P2>& S) {  // ≈ distance outside conv(S)
+    auto seg = [&](const P2& p, const P2& q) {
+      P2 d = q - p;
+      double t = d.squaredNorm() > 0 ? std::clamp((x - p).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+      return (x - p - t * d).norm();
+    };
+    if (S.size() == 2) return seg(S[0], S[1]);
+    double worst = -std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < S.size(); ++i) {
+      P2 d = S[(i + 1) % S.size()] - S[i];
+      double n = d.norm();
+      if (n > 0) worst = std::max(worst, (d.x() * (x.y() - S[i].y()) - d.y() * (x.x() - S[i].x())) / -n);
+    }
+    return worst;
+  };
+  P2 best = a[0];
+  double best_score = std::numeric_limits<double>::infinity();
+  auto consider = [&](const P2& x) {
+    double sc = std::max(outside(x, a), outside(x, b));
+    if (sc < best_score) best_score = sc, best = x;
+  };
+  for (const auto& x : a) consider(x);
+  for (const auto& x : b) consider(x);
+  const std::size_t na = a.size() == 2 ? 1 : a.size(), nb = b.size() == 2 ? 1 : b.size();
+  for (std::size_t i = 0; i < na; ++i)
+    for (std::size_t j = 0; j < nb; ++j) {
+      P2 p = a[i], r = a[(i + 1) % a.size()] - p, q = b[j], s = b[(j + 1) % b.size()] - q;
+      double den = r.x() * s.y() - r.y() * s.x();
+      if (den == 0) continue;
+      double t = ((q - p).x() * s.y() - (q - p).y() * s.x()) / den;
+      consider(p + std::clamp(t, 0.0, 1.0) * r);
+    }
+  return o + best.x() * e1 + best.y() * e2;
+}
+
 }  // namespace
 
 Depth3 directional_depth_dk(const ConvexPolytope& Pp, const Pose3& pose_p, const ConvexPolytope& Qp,
@@ -1003,27 +1082,24 @@ Depth3 directional_depth_dk(const ConvexPolytope& Pp, const Pose3& pose_p, const
   auto uf = cand_u(c, k, exact::LiftFl{});
   const Vec3 u = Vec3(uf[0].v, uf[1].v, uf[2].v).normalized();
   auto U = [&](auto L) { return cand_u(c, k, L); };
-  Vec3 w;  // contact point in P's frame
   if (k.kind == Cand::FaceX) {
-    w = pose.place(Qp[k.ys]) + v;
     r.feature_p = {FeatureKind3::Face, face_in_plane(c, false, k.x, U)};
     r.feature_q = {FeatureKind3::Vertex, k.ys};
   } else if (k.kind == Cand::FaceY) {
-    w = Pp[k.xs];
     r.feature_p = {FeatureKind3::Vertex, k.xs};
     r.feature_q = {FeatureKind3::Face, face_in_plane(c, true, k.y, U)};
   } else {
-    // Closest point of the two edge lines after the move (they meet on the facet).
-    Vec3 a = Pp[k.x[0]], e = Pp[k.x[1]] - a;
-    Vec3 b = pose.place(Qp[k.y[0]]) + v, f = pose.R * (Qp[k.y[1]] - Qp[k.y[0]]);
-    Vec3 n = e.cross(f);
-    double s = (b - a).cross(f).dot(n) / n.squaredNorm();
-    w = a + std::clamp(s, 0.0, 1.0) * e;
     int hp = edge_he(c.P, k.x[0], k.x[1]), hq = edge_he(c.Q, k.y[0], k.y[1]);
     // An edge of a cap's bottom may be a diagonal of a flat facet of the polytope: report the face.
     r.feature_p = hp >= 0 ? Feature3{FeatureKind3::Edge, hp} : Feature3{FeatureKind3::Face, face_in_plane(c, false, k.x, U)};
     r.feature_q = hq >= 0 ? Feature3{FeatureKind3::Edge, hq} : Feature3{FeatureKind3::Face, face_in_plane(c, true, k.y, U)};
   }
+  // Contact point (P's frame): a point of F_P(u) ∩ (F_Q'(u) + v), the support faces taken
+  // exactly (face–face and parallel-edge contacts touch along a polygon or a segment).
+  std::vector<Vec3> fp, fq;
+  for (int i : plane_face(c, false, k.xs, U)) fp.push_back(Pp[i]);
+  for (int j : plane_face(c, true, k.ys, U)) fq.push_back(pose.place(Qp[j]) + v);
+  const Vec3 w = contact_point(fp, fq, u);
   r.translation = Rp * v;
   r.normal = Rp * dir;
   r.facet_normal = Rp * u;
