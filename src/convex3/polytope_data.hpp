@@ -16,6 +16,8 @@
 
 namespace pendepth::convex3 {
 
+struct OuterHierarchy;  // outer_hierarchy.hpp
+
 struct DKLevel {
   std::vector<int> fv;    ///< 3 per triangle, global vertex ids, CCW from outside
   std::vector<int> twin;  ///< opposite half-edge at this level
@@ -69,7 +71,19 @@ struct PolytopeData {
     AdjacencyCache& operator=(const AdjacencyCache&) { return *this; }
   };
   mutable AdjacencyCache adjacency_cache;
+  /// Lazily built outer DK hierarchy (thread-safe, outer_hierarchy.cpp); a copy rebuilds on use.
+  struct OuterCache {
+    std::once_flag once;
+    std::shared_ptr<const OuterHierarchy> value;
+    OuterCache() = default;
+    OuterCache(const OuterCache&) {}
+    OuterCache& operator=(const OuterCache&) { return *this; }
+  };
+  mutable OuterCache outer_cache;
 };
+
+/// The outer hierarchy of d, built on the first call (O(n log n)), then O(1).
+const OuterHierarchy& outer_hierarchy(const PolytopeData& d);
 
 /// The CSR adjacency of d's level 0 and its seed cube map, built on the first call (O(n)), then
 /// O(1).
