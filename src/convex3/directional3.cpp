@@ -55,8 +55,9 @@
 #include <array>
 #include <cassert>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
-#include <memory>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -178,7 +179,7 @@ struct Cand {
   int sgn = 1;                                   ///< orientation of the edge-edge normal
   int xs = -1, ys = -1;                          ///< support vertices: P max of u·x, Q min of u·y'
   int dsign = 0;                                 ///< formal sign of u·d_ε
-  Fl n0, dd[3];                                  ///< cached u·(x_s − y'_s) and u·dv[b]
+  Fl n0, dd[3];                                  ///< cached u·(x_s − y'_s) and u·dv[b] (dd[0] always)
   // An out-half-edge of x_s (y_s) at hierarchy level xs_lev (ys_lev): where a walk restarts.
   int xs_he = -1, xs_lev = -1, ys_he = -1, ys_lev = -1;
   bool same(const Cand& o) const {
@@ -217,9 +218,9 @@ auto cand_d(const Ctx& c, const Cand& k, Lf L, int b) {
 // Caches N's leading coefficient and D, and sets the formal sign of D = u·d_ε.
 void prepare(const Ctx& c, Cand& k, const FV& u, const FV& xs, const FV& ys) {
   k.n0 = dot(u, FV{xs[0] - ys[0], xs[1] - ys[1], xs[2] - ys[2]});  // = the expression of mpoint
-  for (int b = 0; b < 3; ++b) k.dd[b] = dot(u, flv(c.dv[b]));
   k.dsign = 0;
-  for (int b = 0; b < 3 && k.dsign == 0; ++b) {
+  for (int b = 0; b < 3 && k.dsign == 0; ++b) {  // u·dv[1], u·dv[2] only when u·d may vanish
+    k.dd[b] = dot(u, flv(c.dv[b]));
     int s = cert(k.dd[b]);
     k.dsign = s != 2 ? s : formal_sign(3, [&](auto Lf, int bb) { return cand_d(c, k, Lf, bb); }, b);
   }
@@ -260,6 +261,13 @@ int compare_turn(const Ctx& c, int x1, int y1, int x2, int y2) {
   });
 }
 
+// h(u) > 0 for a candidate's plane: 0 strictly inside its half-space (exact; the cached leading
+// coefficient of N first).
+bool positive_h(const Ctx& c, const Cand& k) {
+  const int s = cert(k.n0);
+  return (s == 2 ? exact_sign([&](auto L) { return cand_n(c, k, L, 0); }) : s) > 0;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Constant-size polytopes (top levels and caps) and the brute-force solver for a pair of them.
 
@@ -273,7 +281,11 @@ struct Small {
   std::vector<FV> tri_u;
   std::vector<std::array<FV, 3>> edge_v;
   std::vector<std::array<DV, 3>> edge_d;  ///< edge_v reduced to doubles
+  std::vector<double> e0x, e0y, e0z;       ///< edge_d[·][0].v by coordinate (the hot loop)
+  double e0_n = 0, e0_e = 0, w_n = 0, w_e = 0;  ///< maxima of n, e over edge_d[·][0], [·][1..2]
   std::vector<FV> pt;                     ///< vertices in P's frame (Q': R q + tq − tp)
+  std::vector<Vec3> loc;                  ///< vertices in their own (local) frame
+  std::vector<double> loc_n;              ///< their Euclidean norms, rounded up
   int lev = -1;         ///< hierarchy level the vertices were taken from
   std::vector<int> he;  ///< per vertex an out-half-edge at that level
   int local_of(int g) const { return static_cast<int>(std::find(id.begin(), id.end(), g) - id.begin()); }
@@ -281,7 +293,17 @@ struct Small {
 
 void prepare_small(const Ctx& c, Small& s) {
   exact::LiftFl L;
-  auto dv = [&](int a, int b) { return c.vdiff(L, s.isq, s.id[a], s.id[b]); };
+  // Vertex vectors relative to local vertex 0 (rotated once per vertex on Q's side); a
+  // difference of two of them is a valid Fl of the exact difference (Fl bounds propagate).
+  const int nv = static_cast<int>(s.id.size());
+  FV relbuf[64];
+  std::vector<FV> relbig(nv > 64 ? nv : 0);
+  FV* rel = nv > 64 ? relbig.data() : relbuf;
+  for (int a = 0; a < nv; ++a) rel[a] = a == 0 ? FV{} : c.vdiff(L, s.isq, s.id[a], s.id[0]);
+  auto dv = [&](int a, int b) {
+    if (b == 0) return rel[a];
+    return FV{rel[a][0] - rel[b][0], rel[a][1] - rel[b][1], rel[a][2] - rel[b][2]};
+  };
   s.tri_u.clear();
   s.edge_v.clear();
   for (const auto& t : s.tri) s.tri_u.push_back(s.isq ? cross(dv(t[2], t[0]), dv(t[1], t[0])) : cross(dv(t[1], t[0]), dv(t[2], t[0])));
@@ -296,8 +318,19 @@ void prepare_small(const Ctx& c, Small& s) {
     const auto& b = s.edge_v.back();
     s.edge_d.push_back({to_dv(b[0]), to_dv(b[1]), to_dv(b[2])});
   }
+  s.e0x.clear(), s.e0y.clear(), s.e0z.clear();
+  s.e0_n = s.e0_e = s.w_n = s.w_e = 0;
+  for (const auto& d : s.edge_d) {
+    s.e0x.push_back(d[0].v.x()), s.e0y.push_back(d[0].v.y()), s.e0z.push_back(d[0].v.z());
+    s.e0_n = std::max(s.e0_n, d[0].n), s.e0_e = std::max(s.e0_e, d[0].e);
+    s.w_n = std::max({s.w_n, d[1].n, d[2].n}), s.w_e = std::max({s.w_e, d[1].e, d[2].e});
+  }
   s.pt.clear();
+  s.loc.clear();
+  s.loc_n.clear();
   for (int g : s.id) {
+    s.loc.push_back(c.local(s.isq)[g]);
+    s.loc_n.push_back(s.loc.back().norm() * (1 + 4 * exact::kUnit));
     if (!s.isq) {
       s.pt.push_back(c.pvec(L, g));
     } else {
@@ -428,7 +461,45 @@ void canonical(int* t) {
 // relative interior of a facet whose contact on the cap's side is strictly beyond the old plane,
 // i.e. in the open star of the apex, so that facet is among these candidates; every candidate
 // being a supporting plane, their minimum is the exit.
-State solve_small(Ctx& c, const Small& X, const Small& Y, const bool* apex_q = nullptr) {
+// Local index of a vertex of S extreme for the functional F(v) = w·v on S's local coordinates
+// (sense +1: a maximiser, −1: a minimiser; among exact ties the first in S's order, as a plain
+// scan would pick). w is the cached Fl value of the exact functional; cmp(g, b) is the exact
+// sign of F(v_g) − F(v_b) for global ids. One double dot per vertex; a vertex is compared
+// exactly only if the rigorous error bound of the doubles does not separate it from the best.
+template <class Cmp>
+int extreme_vertex(const Small& S, const FV& w, int sense, Cmp cmp) {
+  const DV wd = to_dv(w);
+  const int n = static_cast<int>(S.id.size());
+  double val[64];
+  const bool fast = n <= 64;
+  if (fast) {
+    int b = 0;
+    for (int i = 0; i < n; ++i) {
+      val[i] = sense * wd.v.dot(S.loc[i]);
+      if (val[i] > val[b]) b = i;
+    }
+    // |F(v) − w̃·v| ≤ (e_w + 3.01u·|w̃|)·|v| per value, u·|difference| for the subtraction.
+    const double E = (wd.e + 4 * exact::kUnit * wd.n) * (1 + 8 * exact::kUnit);
+    bool ok = true;
+    for (int i = 0; i < n && ok; ++i) {
+      if (i == b) continue;
+      const double gap = val[b] - val[i];
+      if (gap > E * (S.loc_n[i] + S.loc_n[b]) * (1 + 4 * exact::kUnit) + 2 * exact::kUnit * std::abs(gap) + exact::kTiny)
+        continue;
+      const int s2 = sense * cmp(S.id[i], S.id[b]);
+      if (s2 > 0) ok = false;            // the doubles were misled: scan exactly
+      else if (s2 == 0 && i < b) b = i;  // exact tie: the first one, like the scan
+    }
+    if (ok) return b;
+  }
+  int b = 0;
+  for (int i = 1; i < n; ++i)
+    if (sense * cmp(S.id[i], S.id[b]) > 0) b = i;
+  return b;
+}
+
+// With `entry` (full solves only): set to the entry facet when ℓ meets X ⊕ (−Y).
+State solve_small(Ctx& c, const Small& X, const Small& Y, const bool* apex_q = nullptr, Cand* entry_out = nullptr) {
   assert(!X.isq && Y.isq);
   const bool rx = apex_q && !*apex_q, ry = apex_q && *apex_q;  // restricted to X's / Y's apex
   const auto& PV = c.P.v;
@@ -459,9 +530,7 @@ State solve_small(Ctx& c, const Small& X, const Small& Y, const bool* apex_q = n
       int sg = cert(dot(w, fl_sub(QV[g], QV[b])));
       return sg != 2 ? sg : exact_sign([&](auto L) { return dot(cand_u(c, k, L), c.qdiff(L, g, b)); });
     };
-    int best = Y.id[0];
-    for (int g : Y.id)
-      if (g != best && cmp(g, best) < 0) best = g;
+    int best = Y.id[extreme_vertex(Y, w, -1, cmp)];
     if (ry && best != Y.id[0] && cmp(Y.id[0], best) != 0) continue;  // the apex is not a support
     k.ys = best;
     consider(k, X.tri_u[f]);
@@ -479,21 +548,35 @@ State solve_small(Ctx& c, const Small& X, const Small& Y, const bool* apex_q = n
       int sg = cert(dot(u, fl_sub(PV[g], PV[b])));
       return sg != 2 ? sg : exact_sign([&](auto L) { return dot(cand_u(c, k, L), c.pdiff(L, g, b)); });
     };
-    int best = X.id[0];
-    for (int g : X.id)
-      if (g != best && cmp(g, best) > 0) best = g;
+    int best = X.id[extreme_vertex(X, u, 1, cmp)];
     if (rx && best != X.id[0] && cmp(X.id[0], best) != 0) continue;  // the apex is not a support
     k.xs = best;
     consider(k, u);
   }
-  // Edge pairs extreme for ±u (the test of minkowski_facets.cpp).
+  // Edge pairs extreme for ±u (the test of minkowski_facets.cpp). Static filter first: one
+  // error bound for all pairs of this (X, Y) (dot_sign's bound with the maxima of the norms and
+  // errors), so most pairs are rejected by two plain dot products; the rest go through
+  // dot_sign, the cached Fl values and the exact sign.
+  auto static_bound = [](double an, double ae, double bn, double be) {
+    return (an * be + ae * bn + ae * be + 4 * exact::kUnit * an * bn) * (1 + 8 * exact::kUnit) + exact::kTiny;
+  };
+  const double Bx = static_bound(Y.e0_n, Y.e0_e, X.w_n, X.w_e);  // e_Y · ((c − a) × e_X)
+  const double By = static_bound(X.e0_n, X.e0_e, Y.w_n, Y.w_e);  // e_X · (e_Y × (c − a))
+  auto fsign = [](double a, double B) { return a > B ? 1 : a < -B ? -1 : 2; };
+  const std::size_t ny = Y.edge.size();
+  const double *Yx = Y.e0x.data(), *Yy = Y.e0y.data(), *Yz = Y.e0z.data();
   for (std::size_t i = 0; i < X.edge.size(); ++i) {
     const auto& ex = X.edge[i];
     if (rx && ex[0] != 0 && ex[1] != 0) continue;
     const auto& xv = X.edge_v[i];
     const auto& xd = X.edge_d[i];
+    const Vec3 w1 = xd[1].v, w2 = xd[2].v, ex0 = xd[0].v;
     int pa = X.id[ex[0]], pb = X.id[ex[1]], pc = X.id[ex[2]], pe = X.id[ex[3]];
-    for (std::size_t j = 0; j < Y.edge.size(); ++j) {
+    for (std::size_t j = 0; j < ny; ++j) {
+      const double a1 = Yx[j] * w1.x() + Yy[j] * w1.y() + Yz[j] * w1.z();
+      const double a2 = Yx[j] * w2.x() + Yy[j] * w2.y() + Yz[j] * w2.z();
+      int s1 = fsign(a1, Bx), s2 = fsign(a2, Bx);
+      if (s1 != 2 && s2 != 2 && s1 != s2) continue;  // P's edge is not extreme for ±u
       const auto& ey = Y.edge[j];
       if (ry && ey[0] != 0 && ey[1] != 0) continue;
       const auto& yv = Y.edge_v[j];
@@ -508,13 +591,16 @@ State solve_small(Ctx& c, const Small& X, const Small& Y, const bool* apex_q = n
         if (sg != 2) return sg;
         return exact_sign([&](auto L) { return dot(U(L), c.vdiff(L, isq, v, a)); });
       };
-      int s1 = side(yd[0], xd[1], yv[0], xv[1], false, pc, pa);
-      int s2 = side(yd[0], xd[2], yv[0], xv[2], false, pe, pa);
+      if (s1 == 2) s1 = side(yd[0], xd[1], yv[0], xv[1], false, pc, pa);
+      if (s2 == 2) s2 = side(yd[0], xd[2], yv[0], xv[2], false, pe, pa);
       if (s1 * s2 < 0 || (s1 == 0 && s2 == 0)) continue;
       int sgn = s1 != 0 ? -s1 : -s2;  // P's edge is extreme for sgn·u
-      if (sgn * side(xd[0], yd[1], xv[0], yv[1], true, qc, qa) < 0 ||
-          sgn * side(xd[0], yd[2], xv[0], yv[2], true, qe, qa) < 0)
-        continue;
+      int t1 = fsign(ex0.dot(yd[1].v), By);
+      if (t1 == 2) t1 = side(xd[0], yd[1], xv[0], yv[1], true, qc, qa);
+      if (sgn * t1 < 0) continue;
+      int t2 = fsign(ex0.dot(yd[2].v), By);
+      if (t2 == 2) t2 = side(xd[0], yd[2], xv[0], yv[2], true, qe, qa);
+      if (sgn * t2 < 0) continue;
       Cand k;  // canonical: lower id first on each edge (each swap flips u)
       k.kind = Cand::EdgeEdge;
       k.x[0] = std::min(pa, pb), k.x[1] = std::max(pa, pb), k.y[0] = std::min(qa, qb), k.y[1] = std::max(qa, qb);
@@ -536,6 +622,7 @@ State solve_small(Ctx& c, const Small& X, const Small& Y, const bool* apex_q = n
   if (compare_t(c, entry, exit) <= 0) {
     st.hit = true;
     st.cand = exit;
+    if (entry_out) *entry_out = entry;
     return st;
   }
   int bx = 0, by = 0;
@@ -702,7 +789,9 @@ struct Walk {
   const PolytopeData& D;
   const Walker& fr;
   WalkState& ws;
-  std::vector<Walker::Probe> pr;
+  std::vector<Walker::Probe>& pr;  ///< scratch buffers, owned by the Query (no allocation per step)
+  std::vector<int>& scratch_all;
+  std::vector<int>& scratch_out;
 
   void pick(const DKLevel& L, const int* cand, int nc) {
     pr.clear();
@@ -726,7 +815,7 @@ struct Walk {
     return true;
   }
   void scan_around(const DKLevel& L, int h0) {
-    std::vector<int> all;
+    std::vector<int>& all = scratch_all;
     around(L, h0, all, std::size_t(-1));
     pick(L, all.data(), static_cast<int>(all.size()));
   }
@@ -748,7 +837,7 @@ struct Walk {
     if (h < 0 || hlev < lev) return false;
     for (int l = hlev; l > lev; --l) h = D.levels[l].down[h];
     const DKLevel& L = D.levels[lev];
-    std::vector<int> out;
+    std::vector<int>& out = scratch_out;
     for (bool moved = true; moved;) {
       moved = false;
       if (!around(L, h, out, kMaxScan)) return false;
@@ -809,13 +898,18 @@ struct Query {
   Ctx& c;
   Small topP, topQ;
   std::unordered_map<long long, Small> caps;  ///< caps met in this query, by (side, level, vertex)
+  std::vector<Walker::Probe> probes;
+  std::vector<int> walk_all, walk_out;
+  /// Set by the outermost descent: 0 ∈ int (P_top ⊕ (−Q'_top)), hence 0 ∈ int M (the top levels
+  /// are inner polytopes), by the exit/entry criterion of the header applied to the top pair.
+  bool top_inside = false;
 
   // The walk of one side for the current state's plane, kept from level to level: continued
   // one level down while the state is unchanged, restarted from the new support vertex (its
   // half-edge hint) when it changed, and done afresh from the top only when that fails.
   struct SideWalk {
-    std::unique_ptr<Func> f;
-    std::unique_ptr<Walker> fr;
+    std::optional<Func> f;
+    std::optional<Walker> fr;
     WalkState ws;
   };
 
@@ -824,11 +918,12 @@ struct Query {
     const PolytopeData& D = c.data(isq);
     if (fresh_state || !sw.fr) {
       // X side keeps u·x ≤ h (hit) / f ≥ f(x_c) (miss); Y side the opposite.
-      sw.f = std::make_unique<Func>(&c, isq, st, st.hit ? (isq ? -1 : 1) : (isq ? 1 : -1));
-      sw.fr = std::make_unique<Walker>(*sw.f);
+      sw.fr.reset();
+      sw.f.emplace(&c, isq, st, st.hit ? (isq ? -1 : 1) : (isq ? 1 : -1));
+      sw.fr.emplace(*sw.f);
       sw.ws = WalkState{};
     }
-    Walk w{D, *sw.fr, sw.ws, {}};
+    Walk w{D, *sw.fr, sw.ws, probes, walk_all, walk_out};
     auto [ref, ref_he, ref_lev] = st.support(isq);
     if (sw.ws.lev != lev + 1 && !w.restart(ref, ref_he, ref_lev, lev + 1)) {
       w.start_top();
@@ -866,7 +961,10 @@ struct Query {
   State descend(const Side& X, const Side& Y) {
     const int KP = static_cast<int>(c.P.levels.size()), KQ = static_cast<int>(c.Q.levels.size());
     const int nx = X.hier ? KP - 1 - X.bottom : 0, ny = Y.hier ? KQ - 1 - Y.bottom : 0;
-    State st = solve_small(c, X.hier ? topP : *X.small, Y.hier ? topQ : *Y.small);
+    const bool outermost = X.hier && Y.hier && X.bottom == 0 && Y.bottom == 0;
+    Cand entry;
+    State st = solve_small(c, X.hier ? topP : *X.small, Y.hier ? topQ : *Y.small, nullptr, outermost ? &entry : nullptr);
+    if (outermost) top_inside = st.hit && positive_h(c, st.cand) && positive_h(c, entry);
     SideWalk wx, wy;
     bool stale_x = true, stale_y = true;  // the state changed since that side's last walk
     for (int s = std::max(nx, ny); s >= 1; --s) {
@@ -949,11 +1047,15 @@ int edge_he(const PolytopeData& D, int a, int b) {
 // Vertices of the support face of one side through its support vertex s for the exit facet
 // normal u (X side: u·x = max; Y side: u·y' = min): flood over level-0 edges with exact
 // equality. O(Σ degrees of the face's vertices) (one vertex in general position).
+// `known`: further vertices on the plane by construction (the candidate's own feature), so that
+// the exact zeros they would produce are never evaluated.
 template <class UF>
-std::vector<int> plane_face(const Ctx& c, bool isq, int s, UF u_of) {
+std::vector<int> plane_face(const Ctx& c, bool isq, int s, std::initializer_list<int> known, UF u_of) {
   const PolytopeData& D = c.data(isq);
   const DKLevel& L = D.levels[0];
   std::vector<int> out{s};
+  for (int k : known)
+    if (k >= 0 && std::find(out.begin(), out.end(), k) == out.end()) out.push_back(k);
   for (std::size_t i = 0; i < out.size(); ++i) {
     const int h0 = D.vertex_he[out[i]];
     int h = h0;
@@ -1048,7 +1150,7 @@ Depth3 directional_depth_dk(const ConvexPolytope& Pp, const Pose3& pose_p, const
   for (int i = 1; i < 3; ++i)
     if (std::abs(d[i]) > std::abs(d[big])) big = i;
   Ctx c{Pp.data(), Qp.data(), pose, {}, 0};
-  Query q{c, top_small(c.P, false), top_small(c.Q, true), {}};
+  Query q{c, top_small(c.P, false), top_small(c.Q, true), {}, {}, {}, {}};
   prepare_small(c, q.topP);
   prepare_small(c, q.topQ);
   auto run = [&](int s) {
@@ -1063,9 +1165,12 @@ Depth3 directional_depth_dk(const ConvexPolytope& Pp, const Pose3& pose_p, const
   State fwd = run(1);
   none.candidates = c.candidates;
   if (!positive(fwd)) return none;
-  State bwd = run(-1);
-  none.candidates = c.candidates;
-  if (!positive(bwd)) return none;
+  // Overlap: certified already if 0 ∈ int of the top pair's sum; else the descent along −d.
+  if (!q.top_inside) {
+    State bwd = run(-1);
+    none.candidates = c.candidates;
+    if (!positive(bwd)) return none;
+  }
   c.dv[0] = d;
   const Cand& k = fwd.cand;
   // 0 ∈ int M: the exit facet has u·d > 0 (proof in the header) and σ_d = h_M(u)/(u·d̂).
@@ -1097,8 +1202,11 @@ Depth3 directional_depth_dk(const ConvexPolytope& Pp, const Pose3& pose_p, const
   // Contact point (P's frame): a point of F_P(u) ∩ (F_Q'(u) + v), the support faces taken
   // exactly (face–face and parallel-edge contacts touch along a polygon or a segment).
   std::vector<Vec3> fp, fq;
-  for (int i : plane_face(c, false, k.xs, U)) fp.push_back(Pp[i]);
-  for (int j : plane_face(c, true, k.ys, U)) fq.push_back(pose.place(Qp[j]) + v);
+  const bool fx = k.kind != Cand::FaceY, fy = k.kind != Cand::FaceX;  // x[], y[] are features
+  for (int i : plane_face(c, false, k.xs, {fx ? k.x[0] : -1, fx ? k.x[1] : -1, fx ? k.x[2] : -1}, U))
+    fp.push_back(Pp[i]);
+  for (int j : plane_face(c, true, k.ys, {fy ? k.y[0] : -1, fy ? k.y[1] : -1, fy ? k.y[2] : -1}, U))
+    fq.push_back(pose.place(Qp[j]) + v);
   const Vec3 w = contact_point(fp, fq, u);
   r.translation = Rp * v;
   r.normal = Rp * dir;
