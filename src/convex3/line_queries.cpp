@@ -34,6 +34,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <type_traits>
 
 namespace pendepth {
 
@@ -56,22 +57,53 @@ struct Ctx {
   const OuterHierarchy& O;
   PlaneDef q[2];
   mutable std::size_t visits = 0;
+  exact::Fl qfl[2][4] = {};  // the query planes in filtered double (fast filters)
 
+  void init() {
+    for (int i = 0; i < 2; ++i) {
+      auto p = convex3::eval_plane(q[i], O.center, exact::LiftFl{});
+      for (int k = 0; k < 3; ++k) qfl[i][k] = p.n[k];
+      qfl[i][3] = p.h;
+    }
+  }
   PlaneDef def(int id) const { return id >= 0 ? O.face_plane(d.v, id) : q[-id - 1]; }
   template <class L>
   auto plane(int id, L lift) const {
     return convex3::eval_plane(def(id), O.center, lift);
   }
+  // Filtered-double plane values: cached for faces, computed once per query for query planes.
+  convex3::PlaneVal<exact::Fl> flp(int id) const {
+    if (id >= 0) return O.fl[id];
+    const exact::Fl* v = qfl[-id - 1];
+    return {{v[0], v[1], v[2]}, v[3]};
+  }
   template <class L>
   auto meet(const Tri& t, L lift) const {
     return convex3::meet(plane(t[0], lift), plane(t[1], lift), plane(t[2], lift));
   }
+  // Filtered-double meets, memoised: a query tests the same few points against many planes.
+  struct Slot {
+    Tri key{0, 0, 0};
+    bool used = false;
+    convex3::MeetVal<exact::Fl> val;
+  };
+  mutable std::array<Slot, 64> memo{};
+  const convex3::MeetVal<exact::Fl>& flmeet(const Tri& t) const {
+    const unsigned hsh = (unsigned(t[0]) * 73856093u) ^ (unsigned(t[1]) * 19349663u) ^ (unsigned(t[2]) * 83492791u);
+    Slot& s = memo[(hsh ^ (hsh >> 11)) & 63u];
+    if (!s.used || s.key != t) s.key = t, s.used = true, s.val = convex3::meet(flp(t[0]), flp(t[1]), flp(t[2]));
+    return s.val;
+  }
   int dsign(const Tri& t) const {
-    return exact::exact_sign([&](auto L) { return meet(t, L).D; });
+    int s = exact::certified_sign(flmeet(t).D);
+    return s != 2 ? s : exact::exact_sign([&](auto L) { return meet(t, L).D; });
   }
   /// Sign of n_g·x − h_g for the point x = meet(t): > 0 strictly beyond plane g.
   int side(int g, const Tri& t) const {
     ++visits;
+    const auto& m = flmeet(t);
+    int a = exact::certified_sign(convex3::side_num(flp(g), m)), b = exact::certified_sign(m.D);
+    if (a != 2 && b != 2) return a * b;
     int s = exact::exact_sign([&](auto L) { return convex3::side_num(plane(g, L), meet(t, L)); });
     return s == 0 ? 0 : s * dsign(t);
   }
@@ -83,9 +115,13 @@ struct Ctx {
              G.n[2] * (L(p[2]) - L(O.center[2])) - G.h;
     });
   }
-  /// Sign of n_g·u for a vector u given as a generic lambda.
+  /// Sign of n_g·u for a vector u given as a generic lambda (u(LiftFl) is its filtered value).
   template <class U>
   int normal_dot(int g, U&& u) const {
+    auto G = flp(g);
+    auto v = u(exact::LiftFl{});
+    int s = exact::certified_sign(G.n[0] * v[0] + G.n[1] * v[1] + G.n[2] * v[2]);
+    if (s != 2) return s;
     return exact::exact_sign([&](auto L) {
       auto G = plane(g, L);
       auto v = u(L);
@@ -95,6 +131,14 @@ struct Ctx {
   /// Sign of u·(X − Y).
   template <class U>
   int along(U&& u, const Tri& X, const Tri& Y) const {
+    {
+      const auto mx = flmeet(X), my = flmeet(Y);
+      auto v = u(exact::LiftFl{});
+      auto e = (v[0] * mx.N[0] + v[1] * mx.N[1] + v[2] * mx.N[2]) * my.D -
+               (v[0] * my.N[0] + v[1] * my.N[1] + v[2] * my.N[2]) * mx.D;
+      int a = exact::certified_sign(e), b = exact::certified_sign(mx.D), c = exact::certified_sign(my.D);
+      if (a != 2 && b != 2 && c != 2) return a * b * c;
+    }
     int s = exact::exact_sign([&](auto L) {
       auto mx = meet(X, L);
       auto my = meet(Y, L);
@@ -112,14 +156,18 @@ auto lift3(const Vec3& v, L lift) {
   return std::array<T, 3>{lift(v[0]), lift(v[1]), lift(v[2])};
 }
 
-// Direction of the line Π ∩ plane(f): n_Π × n_f.
+// Direction of the line Π ∩ plane(f): n_Π × n_f (cached filtered planes in the double tier).
 auto chord_dir(const Ctx& c, int f) {
   return [&c, f](auto L) {
-    auto a = c.plane(-1, L);
-    auto b = c.plane(f, L);
-    using T = std::remove_reference_t<decltype(a.n[0])>;
-    return std::array<T, 3>{a.n[1] * b.n[2] - a.n[2] * b.n[1], a.n[2] * b.n[0] - a.n[0] * b.n[2],
-                            a.n[0] * b.n[1] - a.n[1] * b.n[0]};
+    auto cross = [](const auto& a, const auto& b) {
+      using T = std::remove_cv_t<std::remove_reference_t<decltype(a.n[0])>>;
+      return std::array<T, 3>{a.n[1] * b.n[2] - a.n[2] * b.n[1], a.n[2] * b.n[0] - a.n[0] * b.n[2],
+                              a.n[0] * b.n[1] - a.n[1] * b.n[0]};
+    };
+    if constexpr (std::is_same_v<std::decay_t<decltype(L)>, exact::LiftFl>)
+      return cross(c.flp(-1), c.flp(f));
+    else
+      return cross(c.plane(-1, L), c.plane(f, L));
   };
 }
 
@@ -199,8 +247,8 @@ int edge_through(Ctx& c, int g, const Tri& p, int prefer) {
 template <class N, class D>
 double precise_ratio(N&& num, D&& den) {
   exact::DD a = num(exact::LiftDD{}), b = den(exact::LiftDD{});
-  if (exact::dd_finite(a) && exact::dd_finite(b) && b.hi != 0 && a.e <= std::abs(a.hi) * 0x1p-90 &&
-      b.e <= std::abs(b.hi) * 0x1p-90) {
+  if (exact::dd_finite(a) && exact::dd_finite(b) && b.hi != 0 && a.e <= std::abs(a.hi) * 0x1p-64 &&
+      b.e <= std::abs(b.hi) * 0x1p-64) {
     double q1 = a.hi / b.hi;
     exact::DD r = a - exact::DD{q1, 0, 0} * b;
     double q = q1 + (r.hi + r.lo) / b.hi;
@@ -246,7 +294,8 @@ LineContact ConvexPolytope::first_contact(const Vec3& point, const Vec3& line_di
           "line_dir " + vec_str(l) + " is parallel to move_dir " + vec_str(m));
 
   const OuterHierarchy& O = convex3::outer_hierarchy(*d_);
-  Ctx c{*d_, O, {PlaneDef{1, point, l, m}, PlaneDef{}}};
+  Ctx c{*d_, O, {PlaneDef{1, point, l, m}, PlaneDef{1, point, l, m}}};
+  c.init();
   auto w = [&](auto L) {  // m |l|² − l (l·m): move_dir's part orthogonal to l (scaled)
     auto L3 = lift3(l, L), M3 = lift3(m, L);
     auto ll = L3[0] * L3[0] + L3[1] * L3[1] + L3[2] * L3[2];
@@ -358,6 +407,7 @@ LineHit ConvexPolytope::first_hit(const Vec3& origin, const Vec3& dir) const {
   const OuterHierarchy& O = convex3::outer_hierarchy(*d_);
   // Π (normal dir × e_k) and Π' (normal dir × ν) both contain the line; it is their meet.
   Ctx c{*d_, O, {PlaneDef{1, origin, dir, ek}, PlaneDef{1, origin, dir, nu}}};
+  c.init();
   auto dv = [&](auto L) { return lift3(dir, L); };
 
   LineHit r;

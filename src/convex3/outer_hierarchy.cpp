@@ -45,12 +45,11 @@ T det4(const PlaneVal<T>& a, const PlaneVal<T>& b, const PlaneVal<T>& c, const P
 struct Builder {
   const PolytopeData& d;
   OuterHierarchy& O;
-  std::vector<PlaneVal<exact::Fl>> fl;
 
   // orient3d of dual points D_a, D_b, D_c, D_e: sign of det[D_b − D_a, D_c − D_a, D_e − D_a]
   // = −sign det4[(n_i, h_i)] since every h_i > 0.
   int orient(int a, int b, int c, int e) const {
-    int s = exact::certified_sign(det4(fl[a], fl[b], fl[c], fl[e]));
+    int s = exact::certified_sign(det4(O.fl[a], O.fl[b], O.fl[c], O.fl[e]));
     if (s == 2)
       s = exact::exact_sign([&](auto L) {
         auto pa = eval_plane(O.face_plane(d.v, a), O.center, L);
@@ -185,9 +184,9 @@ std::shared_ptr<const OuterHierarchy> build_outer_hierarchy(const PolytopeData& 
     }
   }
 
-  Builder b{d, O, {}};
-  b.fl.resize(F);
-  for (int f = 0; f < F; ++f) b.fl[f] = eval_plane(O.face_plane(d.v, f), O.center, exact::LiftFl{});
+  O.fl.resize(F);
+  for (int f = 0; f < F; ++f) O.fl[f] = eval_plane(O.face_plane(d.v, f), O.center, exact::LiftFl{});
+  Builder b{d, O};
 
   // Level 0: the dual surface, one fan per vertex of P.
   OuterLevel base;

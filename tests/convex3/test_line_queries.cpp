@@ -184,7 +184,7 @@ std::vector<Line> lines_for(const ConvexPolytope& P, std::mt19937_64& rng, int c
 }
 
 struct Stats {
-  int queries = 0, hits = 0, contacts = 0;
+  int queries = 0, hits = 0, contacts = 0, touching = 0, vertex_contacts = 0;
   std::int64_t max_ulps = 0;
 };
 
@@ -206,6 +206,10 @@ void check_shape(const ConvexPolytope& P, const std::string& name, int count, st
     }
     if (h.hit) {
       ++st.hits;
+      if (b.lo == b.hi) {  // a tangent line touching one point: zero-length interval
+        ++st.touching;
+        EXPECT_EQ(h.t_enter, h.t_exit);
+      }
       std::int64_t u = std::max(ulps(h.t_enter, nearest(b.lo)), ulps(h.t_exit, nearest(b.hi)));
       st.max_ulps = std::max(st.max_ulps, u);
       if (u > 2) {
@@ -236,6 +240,7 @@ void check_shape(const ConvexPolytope& P, const std::string& name, int count, st
       ++failures;
     }
     if (c.feature == LineContact::Feature::Vertex) {
+      ++st.vertex_contacts;
       // the vertex is on the swept plane and realises the minimum exactly
       auto Lq = qv(L.d), Mq = qv(m);
       mpq_class ll = dotq(Lq, Lq), lm = dotq(Lq, Mq);
@@ -257,8 +262,10 @@ TEST(LineQueries, StandardClouds) {
     auto P = ConvexPolytope::hull(c.pts, c.name);
     check_shape(P, c.name, scaled(P.size() > 1000 ? 60 : 150), rng, st);
   }
-  std::cout << "[ stats    ] standard clouds: " << st.queries << " lines, " << st.hits << " hits, " << st.contacts
-            << " contacts, max " << st.max_ulps << " ulps\n";
+  std::cout << "[ stats    ] standard clouds: " << st.queries << " lines, " << st.hits << " hits (" << st.touching
+            << " touching one point), " << st.contacts << " contacts (" << st.vertex_contacts << " at a vertex), max "
+            << st.max_ulps << " ulps\n";
+  EXPECT_GT(st.touching, 50);
 }
 
 TEST(LineQueries, RandomHulls) {
