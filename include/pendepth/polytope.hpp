@@ -116,19 +116,24 @@ class ConvexPolytope {
   /// intersection of a subset of the face half-spaces; built on first use, O(n log n)).
   std::size_t outer_hierarchy_levels() const;
 
-  /// DHS Lemma 5.2: the intersection of the line origin + t·dir (t real) with the polytope,
-  /// by a descent of the outer hierarchy with O(1) work per level: O(log n). Exact decisions
-  /// (filtered, with exact fallback); a line that only touches the boundary is a hit with
-  /// t_enter == t_exit (or the touched segment if it lies in a face plane).
-  /// Throws InvalidInput for a non-finite origin or a zero or non-finite dir.
-  LineHit first_hit(const Vec3& origin, const Vec3& dir) const;
+  /// DHS Lemma 5.2: the intersection of the line origin + t·dir (t real) with the polytope, or
+  /// with inner hierarchy level `level` (0 = the polytope; its triangles: level_triangles), by a
+  /// descent of that level's outer hierarchy with O(1) work per level: O(log n). Exact
+  /// decisions (filtered, with exact fallback); a line that only touches the boundary is a hit
+  /// with t_enter == t_exit (or the touched segment if it lies in a face plane). face_enter /
+  /// face_exit are faces of that level (face_of_triangle numbers level 0's).
+  /// Throws InvalidInput for a non-finite origin, a zero or non-finite dir, or a bad level.
+  LineHit first_hit(const Vec3& origin, const Vec3& dir, std::size_t level = 0) const;
 
   /// DHS Lemma 5.3: the line through `point` with direction line_dir translates along move_dir
   /// from infinity (shift from −∞ upwards); returns the first shift at which it touches the
   /// polytope and where. O(log n) by the outer-hierarchy descent on the plane the line sweeps.
-  /// Throws InvalidInput for non-finite input, zero vectors, or line_dir parallel to move_dir.
-  /// (DHS Lemma 5.4, a translating plane, is support(): its first contact is support(−move_dir).)
-  LineContact first_contact(const Vec3& point, const Vec3& line_dir, const Vec3& move_dir) const;
+  /// `level` selects an inner hierarchy level as for first_hit.
+  /// Throws InvalidInput for non-finite input, zero vectors, line_dir parallel to move_dir, or a
+  /// bad level. (DHS Lemma 5.4, a plane with normal u moving so that u·x decreases, first
+  /// touches support(u): that is the existing support() walk on the inner hierarchy.)
+  LineContact first_contact(const Vec3& point, const Vec3& line_dir, const Vec3& move_dir,
+                            std::size_t level = 0) const;
 
   const convex3::PolytopeData& data() const { return *d_; }
 

@@ -279,7 +279,8 @@ int ConvexPolytope::face_of_triangle(std::size_t t) const {
 }
 std::size_t ConvexPolytope::outer_hierarchy_levels() const { return convex3::outer_hierarchy(*d_).levels.size(); }
 
-LineContact ConvexPolytope::first_contact(const Vec3& point, const Vec3& line_dir, const Vec3& move_dir) const {
+LineContact ConvexPolytope::first_contact(const Vec3& point, const Vec3& line_dir, const Vec3& move_dir,
+                                          std::size_t level) const {
   const std::string who = d_->name + ": first_contact";
   require(point.allFinite(), who, "point " + vec_str(point) + " is not finite");
   require(line_dir.allFinite() && line_dir != Vec3::Zero(), who,
@@ -293,7 +294,8 @@ LineContact ConvexPolytope::first_contact(const Vec3& point, const Vec3& line_di
   require(!(cross_zero(1, 2) && cross_zero(2, 0) && cross_zero(0, 1)), who,
           "line_dir " + vec_str(l) + " is parallel to move_dir " + vec_str(m));
 
-  const OuterHierarchy& O = convex3::outer_hierarchy(*d_);
+  require(level < d_->levels.size(), who, "no hierarchy level " + std::to_string(level));
+  const OuterHierarchy& O = convex3::outer_hierarchy(*d_, level);
   Ctx c{*d_, O, {PlaneDef{1, point, l, m}, PlaneDef{1, point, l, m}}};
   c.init();
   auto w = [&](auto L) {  // m |l|² − l (l·m): move_dir's part orthogonal to l (scaled)
@@ -394,7 +396,7 @@ LineContact ConvexPolytope::first_contact(const Vec3& point, const Vec3& line_di
   return r;
 }
 
-LineHit ConvexPolytope::first_hit(const Vec3& origin, const Vec3& dir) const {
+LineHit ConvexPolytope::first_hit(const Vec3& origin, const Vec3& dir, std::size_t level) const {
   const std::string who = d_->name + ": first_hit";
   require(origin.allFinite(), who, "origin " + vec_str(origin) + " is not finite");
   require(dir.allFinite() && dir != Vec3::Zero(), who, "dir " + vec_str(dir) + " must be finite and non-zero");
@@ -404,7 +406,8 @@ LineHit ConvexPolytope::first_hit(const Vec3& origin, const Vec3& dir) const {
   Vec3 ek = Vec3::Zero();
   ek[k] = 1;
   const Vec3 nu = dir.cross(ek);  // exact: its components are 0 and ±dir_i
-  const OuterHierarchy& O = convex3::outer_hierarchy(*d_);
+  require(level < d_->levels.size(), who, "no hierarchy level " + std::to_string(level));
+  const OuterHierarchy& O = convex3::outer_hierarchy(*d_, level);
   // Π (normal dir × e_k) and Π' (normal dir × ν) both contain the line; it is their meet.
   Ctx c{*d_, O, {PlaneDef{1, origin, dir, ek}, PlaneDef{1, origin, dir, nu}}};
   c.init();

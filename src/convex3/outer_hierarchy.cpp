@@ -15,7 +15,8 @@
 // three faces of a fan triangle of the normal cone of the extreme vertex that contains the
 // direction — at most 12 faces whose normals positively span R³, so every level is bounded;
 // (3) the hierarchy is built lazily on the first line query (outer_hierarchy()), so shapes that
-// never use it pay nothing.
+// never use it pay nothing; every inner level P_i gets its own on demand (DHS §5.1: "each P_i is
+// represented by an outer polyhedral hierarchy"), O(|P_i| log |P_i|) each, O(n) for all.
 // Cost: O(F) per level plus the sort in build_twins; levels shrink by about a quarter each, so
 // O(n log n) time in total and O(n) memory (F <= 2n - 4 faces).
 #include "convex3/outer_hierarchy.hpp"
@@ -92,20 +93,21 @@ struct Builder {
   }
 };
 
-// Union of triangles across flat-facet diagonals (half-edges that are not true edges).
-std::vector<int> true_faces(const PolytopeData& d, int& count) {
-  const DKLevel& B = d.levels[0];
-  const int T = static_cast<int>(d.tris.size());
-  std::vector<char> is_true(B.fv.size(), 0);
-  for (int h : d.edges) is_true[h] = is_true[B.twin[h]] = 1;
+// Union of triangles across flat-facet diagonals (edges whose two triangles are coplanar).
+std::vector<int> true_faces(const std::vector<Vec3>& P, const DKLevel& B, int& count) {
+  const int T = static_cast<int>(B.fv.size() / 3);
   std::vector<int> parent(T);
   std::iota(parent.begin(), parent.end(), 0);
   auto find = [&](int x) {
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
     return x;
   };
-  for (int h = 0; h < static_cast<int>(B.fv.size()); ++h)
-    if (!is_true[h]) parent[find(h / 3)] = find(B.twin[h] / 3);
+  for (int h = 0; h < static_cast<int>(B.fv.size()); ++h) {
+    int g = B.twin[h];
+    if (h < g && predicates::orient3d(P[B.fv[h]], P[B.target(h)], P[B.target(B.next(h))],
+                                      P[B.target(B.next(g))]) == 0)
+      parent[find(h / 3)] = find(g / 3);
+  }
   std::vector<int> id(T, -1), face(T);
   count = 0;
   for (int t = 0; t < T; ++t) {
@@ -116,11 +118,10 @@ std::vector<int> true_faces(const PolytopeData& d, int& count) {
   return face;
 }
 
-// The faces around vertex v, counter-clockwise seen from outside (each once).
-void faces_around(const PolytopeData& d, const std::vector<int>& face_of_tri, int v, std::vector<int>& out) {
-  const DKLevel& B = d.levels[0];
+// The faces around the origin of out-half-edge h0, counter-clockwise seen from outside.
+void faces_around(const DKLevel& B, const std::vector<int>& face_of_tri, int h0, std::vector<int>& out) {
   out.clear();
-  int h0 = d.vertex_he[v], h = h0;
+  int h = h0;
   do {
     int f = face_of_tri[h / 3];
     if (out.empty() || out.back() != f) out.push_back(f);
@@ -129,50 +130,55 @@ void faces_around(const PolytopeData& d, const std::vector<int>& face_of_tri, in
   while (out.size() > 1 && out.back() == out.front()) out.pop_back();
 }
 
-bool strictly_interior(const PolytopeData& d, const OuterHierarchy& O, const Vec3& c) {
+bool strictly_interior(const std::vector<Vec3>& P, const OuterHierarchy& O, const Vec3& c) {
   for (const auto& t : O.face_ref)
-    if (predicates::orient3d(d.v[t[0]], d.v[t[1]], d.v[t[2]], c) >= 0) return false;
+    if (predicates::orient3d(P[t[0]], P[t[1]], P[t[2]], c) >= 0) return false;
   return true;
 }
 
-int extreme_vertex(const PolytopeData& d, const Vec3& u) {
-  int best = 0;
-  for (int i = 1; i < static_cast<int>(d.v.size()); ++i)
-    if (predicates::dot3_sign(u, d.v[i], d.v[best]) > 0) best = i;
+int extreme_vertex(const std::vector<Vec3>& P, const std::vector<int>& verts, const Vec3& u) {
+  int best = verts[0];
+  for (int i : verts)
+    if (predicates::dot3_sign(u, P[i], P[best]) > 0) best = i;
   return best;
 }
 
 }  // namespace
 
-std::shared_ptr<const OuterHierarchy> build_outer_hierarchy(const PolytopeData& d) {
+std::shared_ptr<const OuterHierarchy> build_outer_hierarchy(const PolytopeData& d, std::size_t level) {
   auto out = std::make_shared<OuterHierarchy>();
   OuterHierarchy& O = *out;
-  const int n = static_cast<int>(d.v.size());
+  const std::vector<Vec3>& P = d.v;
+  const DKLevel& S = d.levels.at(level);  // the surface of the polytope this hierarchy describes
+  const std::vector<int>& verts = S.verts;
   int F = 0;
-  O.face_of_tri = true_faces(d, F);
+  O.face_of_tri = true_faces(P, S, F);
   O.face_ref.assign(F, {-1, -1, -1});
-  for (int t = 0; t < static_cast<int>(d.tris.size()); ++t)
-    if (O.face_ref[O.face_of_tri[t]][0] < 0) O.face_ref[O.face_of_tri[t]] = d.tris[t];
+  for (int t = 0; 3 * t < static_cast<int>(S.fv.size()); ++t)
+    if (O.face_ref[O.face_of_tri[t]][0] < 0) O.face_ref[O.face_of_tri[t]] = {S.fv[3 * t], S.fv[3 * t + 1], S.fv[3 * t + 2]};
+  std::vector<int> vhe(P.size(), -1);  // an outgoing half-edge per vertex of S
+  for (int h = 0; h < static_cast<int>(S.fv.size()); ++h) vhe[S.fv[h]] = h;
 
-  {  // centre: a rounded centroid, accepted only if exactly strictly inside every face
+  {  // centre: a rounded centroid, accepted only if exactly strictly inside every face (the
+     // protected tetrahedron of the inner hierarchy is in every inner level)
     std::vector<Vec3> cand;
     Vec3 s = Vec3::Zero();
-    for (int v : d.protected_tet) s += d.v[v];
+    for (int v : d.protected_tet) s += P[v];
     cand.push_back(s / 4);
     Vec3 e = Vec3::Zero();
     for (int a = 0; a < 3; ++a)
       for (double sg : {1.0, -1.0}) {
         Vec3 u = Vec3::Zero();
         u[a] = sg;
-        e += d.v[extreme_vertex(d, u)];
+        e += P[extreme_vertex(P, verts, u)];
       }
     cand.push_back(e / 6);
     Vec3 m = Vec3::Zero();
-    for (const auto& p : d.v) m += p / n;
+    for (int v : verts) m += P[v] / double(verts.size());
     cand.push_back(m);
     bool ok = false;
     for (const Vec3& c : cand)
-      if (c.allFinite() && strictly_interior(d, O, c)) {
+      if (c.allFinite() && strictly_interior(P, O, c)) {
         O.center = c;
         ok = true;
         break;
@@ -185,14 +191,14 @@ std::shared_ptr<const OuterHierarchy> build_outer_hierarchy(const PolytopeData& 
   }
 
   O.fl.resize(F);
-  for (int f = 0; f < F; ++f) O.fl[f] = eval_plane(O.face_plane(d.v, f), O.center, exact::LiftFl{});
+  for (int f = 0; f < F; ++f) O.fl[f] = eval_plane(O.face_plane(P, f), O.center, exact::LiftFl{});
   Builder b{d, O};
 
   // Level 0: the dual surface, one fan per vertex of P.
   OuterLevel base;
   std::vector<int> ring;
-  for (int v = 0; v < n; ++v) {
-    faces_around(d, O.face_of_tri, v, ring);
+  for (int v : verts) {
+    faces_around(S, O.face_of_tri, vhe[v], ring);
     assert(ring.size() >= 3);
     for (std::size_t i = 1; i + 1 < ring.size(); ++i) {
       base.dual.fv.insert(base.dual.fv.end(), {ring[0], ring[i], ring[i + 1]});
@@ -212,8 +218,8 @@ std::shared_ptr<const OuterHierarchy> build_outer_hierarchy(const PolytopeData& 
     std::vector<char> isprot(F, 0);
     const Vec3 dirs[4] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
     for (const Vec3& u : dirs) {
-      int w = extreme_vertex(d, u);
-      faces_around(d, O.face_of_tri, w, ring);
+      int w = extreme_vertex(P, verts, u);
+      faces_around(S, O.face_of_tri, vhe[w], ring);
       auto det = [&](int f, int g, int hh, const Vec3* uu) {
         return exact::exact_sign([&](auto L) {
           auto a = eval_plane(O.face_plane(d.v, f), O.center, L);
@@ -307,9 +313,12 @@ std::shared_ptr<const OuterHierarchy> build_outer_hierarchy(const PolytopeData& 
   return out;
 }
 
-const OuterHierarchy& outer_hierarchy(const PolytopeData& d) {
-  std::call_once(d.outer_cache.once, [&] { d.outer_cache.value = build_outer_hierarchy(d); });
-  return *d.outer_cache.value;
+const OuterHierarchy& outer_hierarchy(const PolytopeData& d, std::size_t level) {
+  std::lock_guard<std::mutex> lock(d.outer_cache.mu);
+  auto& v = d.outer_cache.value;
+  if (v.size() <= level) v.resize(d.levels.size());
+  if (!v[level]) v[level] = build_outer_hierarchy(d, level);
+  return *v[level];
 }
 
 }  // namespace pendepth::convex3

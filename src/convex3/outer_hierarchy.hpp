@@ -96,7 +96,8 @@ struct OuterLevel {
 
 struct OuterHierarchy {
   Vec3 center{0, 0, 0};  ///< strictly interior point of P (exactly verified)
-  /// Face (true facet) of each triangle of P, and one reference triangle (vertex ids) per face.
+  /// Face (true facet) of each triangle of the polytope (the triangles of its inner level, in
+  /// order), and one reference triangle (vertex ids) per face.
   std::vector<int> face_of_tri;
   std::vector<std::array<int, 3>> face_ref;
   std::vector<OuterLevel> levels;  ///< levels[0]: all faces (the polytope itself)
@@ -116,8 +117,8 @@ struct OuterHierarchy {
   std::size_t top() const { return levels.size() - 1; }
 };
 
-/// Builds the outer hierarchy of d (its level 0, true edges and inner hierarchy must exist).
+/// Builds the outer hierarchy of inner level `level` of d (d's inner hierarchy must exist).
 /// O(n log n) time (twin arrays sorted per level), O(n) memory.
-std::shared_ptr<const OuterHierarchy> build_outer_hierarchy(const PolytopeData& d);
+std::shared_ptr<const OuterHierarchy> build_outer_hierarchy(const PolytopeData& d, std::size_t level);
 
 }  // namespace pendepth::convex3

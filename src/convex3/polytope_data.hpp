@@ -71,10 +71,12 @@ struct PolytopeData {
     AdjacencyCache& operator=(const AdjacencyCache&) { return *this; }
   };
   mutable AdjacencyCache adjacency_cache;
-  /// Lazily built outer DK hierarchy (thread-safe, outer_hierarchy.cpp); a copy rebuilds on use.
+  /// Lazily built outer DK hierarchies (outer_hierarchy.cpp): entry i is the outer hierarchy of
+  /// inner level i (DHS §5.1's twin representation), built on its first use under the mutex; a
+  /// copy starts empty and rebuilds on use.
   struct OuterCache {
-    std::once_flag once;
-    std::shared_ptr<const OuterHierarchy> value;
+    std::mutex mu;
+    std::vector<std::shared_ptr<const OuterHierarchy>> value;
     OuterCache() = default;
     OuterCache(const OuterCache&) {}
     OuterCache& operator=(const OuterCache&) { return *this; }
@@ -82,8 +84,9 @@ struct PolytopeData {
   mutable OuterCache outer_cache;
 };
 
-/// The outer hierarchy of d, built on the first call (O(n log n)), then O(1).
-const OuterHierarchy& outer_hierarchy(const PolytopeData& d);
+/// The outer hierarchy of inner level `level` of d (0: the polytope), built on the first call
+/// (O(n_i log n_i)), then O(1). Precondition: level < d.levels.size().
+const OuterHierarchy& outer_hierarchy(const PolytopeData& d, std::size_t level = 0);
 
 /// The CSR adjacency of d's level 0 and its seed cube map, built on the first call (O(n)), then
 /// O(1).

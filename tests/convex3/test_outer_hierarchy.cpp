@@ -41,20 +41,23 @@ struct Check {
   }
 };
 
-void check_hierarchy(const ConvexPolytope& P, const std::string& name, std::mt19937_64& rng) {
-  SCOPED_TRACE(name);
+void check_hierarchy(const ConvexPolytope& P, const std::string& name, std::mt19937_64& rng, std::size_t level = 0) {
+  SCOPED_TRACE(name + " inner level " + std::to_string(level));
   const auto& d = P.data();
-  const OuterHierarchy& O = convex3::outer_hierarchy(d);
+  const OuterHierarchy& O = convex3::outer_hierarchy(d, level);
   Check ck{P, O};
   const int F = static_cast<int>(O.face_ref.size());
-  ASSERT_EQ(P.face_count(), static_cast<std::size_t>(F));
+  if (level == 0) ASSERT_EQ(P.face_count(), static_cast<std::size_t>(F));
 
   // True faces: every triangle lies in its face's plane; triangles across a true edge do not.
-  for (std::size_t t = 0; t < d.tris.size(); ++t) {
+  const auto tris = P.level_triangles(level);
+  ASSERT_EQ(O.face_of_tri.size(), tris.size());
+  for (std::size_t t = 0; t < tris.size(); ++t) {
     const auto& r = O.face_ref[O.face_of_tri[t]];
-    for (int v : d.tris[t]) ASSERT_EQ(predicates::orient3d(d.v[r[0]], d.v[r[1]], d.v[r[2]], d.v[v]), 0);
+    for (int v : tris[t]) ASSERT_EQ(predicates::orient3d(d.v[r[0]], d.v[r[1]], d.v[r[2]], d.v[v]), 0);
   }
-  for (int h : d.edges) ASSERT_NE(O.face_of_tri[h / 3], O.face_of_tri[d.levels[0].twin[h] / 3]);
+  if (level == 0)
+    for (int h : d.edges) ASSERT_NE(O.face_of_tri[h / 3], O.face_of_tri[d.levels[0].twin[h] / 3]);
   // The centre is strictly inside.
   for (const auto& r : O.face_ref) ASSERT_LT(predicates::orient3d(d.v[r[0]], d.v[r[1]], d.v[r[2]], O.center), 0);
 
@@ -86,7 +89,7 @@ void check_hierarchy(const ConvexPolytope& P, const std::string& name, std::mt19
     // Convex and bounded: every vertex is a proper meet, on or inside every plane of the level
     // (all pairs on small levels, a random sample of vertices on big ones).
     const std::size_t T = L.fv.size() / 3;
-    const std::size_t samples = T * L.verts.size() <= 400000 ? T : 400000 / L.verts.size() + 1;
+    const std::size_t samples = T * L.verts.size() <= 100000 ? T : 100000 / L.verts.size() + 1;
     for (std::size_t s = 0; s < samples; ++s) {
       std::size_t t = samples == T ? s : rng() % T;
       int a = L.fv[3 * t], b = L.fv[3 * t + 1], c = L.fv[3 * t + 2];
@@ -146,7 +149,13 @@ void check_hierarchy(const ConvexPolytope& P, const std::string& name, std::mt19
 
 TEST(OuterHierarchy, StandardClouds) {
   std::mt19937_64 rng(17);
-  for (const auto& c : test3::standard_clouds()) check_hierarchy(ConvexPolytope::hull(c.pts, c.name), c.name, rng);
+  for (const auto& c : test3::standard_clouds()) {
+    auto P = ConvexPolytope::hull(c.pts, c.name);
+    check_hierarchy(P, c.name, rng);
+    // DHS §5.1 twin representation: the outer hierarchies of inner levels too.
+    for (std::size_t level : {std::size_t(1), P.hierarchy_levels() / 2, P.hierarchy_levels() - 1})
+      if (level > 0 && level < P.hierarchy_levels()) check_hierarchy(P, c.name, rng, level);
+  }
 }
 
 TEST(OuterHierarchy, RandomHulls) {
@@ -168,7 +177,7 @@ TEST(OuterHierarchy, SharedHulls) {
 
 TEST(OuterHierarchy, LevelsGrowLogarithmically) {
   std::mt19937_64 rng(20);
-  for (int n : {1000, pendepth_test::scaled(100000)}) {
+  for (int n : {1000, pendepth_test::scaled(40000)}) {
     auto P = ConvexPolytope::hull(test3::random_sphere(rng, n), "s");
     const auto& O = convex3::outer_hierarchy(P.data());
     std::size_t total = 0;
