@@ -177,7 +177,7 @@ auto chord_dir(const Ctx& c, int f) {
 bool chord(Ctx& c, const DKLevel& L, int f, int h0, End& lo, End& hi) {
   auto dir = chord_dir(c, f);
   lo.he = hi.he = -1;
-  int parallel[64], np = 0;
+  std::vector<int> parallel;  // constraints parallel to the chord (rare; empty in general position)
   int h = h0;
   do {
     ++c.visits;
@@ -188,15 +188,15 @@ bool chord(Ctx& c, const DKLevel& L, int f, int h0, End& lo, End& hi) {
       if (hi.he < 0 || c.along(dir, t, hi.pt) < 0) hi = {t, h};
     } else if (s < 0) {
       if (lo.he < 0 || c.along(dir, t, lo.pt) > 0) lo = {t, h};
-    } else if (np < 64) {
-      parallel[np++] = N;
+    } else {
+      parallel.push_back(N);
     }
     h = L.ccw(h);
   } while (h != h0);
   if (lo.he < 0 || hi.he < 0) return false;
   if (c.along(dir, lo.pt, hi.pt) > 0) return false;
-  for (int i = 0; i < np; ++i)
-    if (c.side(parallel[i], lo.pt) > 0) return false;
+  for (int N : parallel)
+    if (c.side(N, lo.pt) > 0) return false;
   return true;
 }
 

@@ -47,7 +47,9 @@ void check_hierarchy(const ConvexPolytope& P, const std::string& name, std::mt19
   const OuterHierarchy& O = convex3::outer_hierarchy(d, level);
   Check ck{P, O};
   const int F = static_cast<int>(O.face_ref.size());
-  if (level == 0) ASSERT_EQ(P.face_count(), static_cast<std::size_t>(F));
+  if (level == 0) {
+    ASSERT_EQ(P.face_count(), static_cast<std::size_t>(F));
+  }
 
   // True faces: every triangle lies in its face's plane; triangles across a true edge do not.
   const auto tris = P.level_triangles(level);
@@ -56,8 +58,9 @@ void check_hierarchy(const ConvexPolytope& P, const std::string& name, std::mt19
     const auto& r = O.face_ref[O.face_of_tri[t]];
     for (int v : tris[t]) ASSERT_EQ(predicates::orient3d(d.v[r[0]], d.v[r[1]], d.v[r[2]], d.v[v]), 0);
   }
-  if (level == 0)
+  if (level == 0) {
     for (int h : d.edges) ASSERT_NE(O.face_of_tri[h / 3], O.face_of_tri[d.levels[0].twin[h] / 3]);
+  }
   // The centre is strictly inside.
   for (const auto& r : O.face_ref) ASSERT_LT(predicates::orient3d(d.v[r[0]], d.v[r[1]], d.v[r[2]], O.center), 0);
 
@@ -95,7 +98,9 @@ void check_hierarchy(const ConvexPolytope& P, const std::string& name, std::mt19
       int a = L.fv[3 * t], b = L.fv[3 * t + 1], c = L.fv[3 * t + 2];
       ASSERT_NE(ck.dsign(a, b, c), 0) << "level " << j << " vertex " << t << " is not a point";
       for (int g : L.verts)
-        if (g != a && g != b && g != c) ASSERT_LE(ck.side(g, a, b, c), 0) << "level " << j << " not convex";
+        if (g != a && g != b && g != c) {
+          ASSERT_LE(ck.side(g, a, b, c), 0) << "level " << j << " not convex";
+        }
     }
     if (j == 0) continue;
     // Planes only disappear; the removed ones form an independent set of degree <= 8 one level
