@@ -291,7 +291,8 @@ struct Small {
   int local_of(int g) const { return static_cast<int>(std::find(id.begin(), id.end(), g) - id.begin()); }
 };
 
-void prepare_small(const Ctx& c, Small& s) {
+// The cached edge and face vectors in P's frame (depend only on R on Q's side, on nothing on P's).
+void prepare_vectors(const Ctx& c, Small& s) {
   exact::LiftFl L;
   // Vertex vectors relative to local vertex 0 (rotated once per vertex on Q's side); a
   // difference of two of them is a valid Fl of the exact difference (Fl bounds propagate).
@@ -325,12 +326,19 @@ void prepare_small(const Ctx& c, Small& s) {
     s.e0_n = std::max(s.e0_n, d[0].n), s.e0_e = std::max(s.e0_e, d[0].e);
     s.w_n = std::max({s.w_n, d[1].n, d[2].n}), s.w_e = std::max({s.w_e, d[1].e, d[2].e});
   }
-  s.pt.clear();
   s.loc.clear();
   s.loc_n.clear();
   for (int g : s.id) {
     s.loc.push_back(c.local(s.isq)[g]);
     s.loc_n.push_back(s.loc.back().norm() * (1 + 4 * exact::kUnit));
+  }
+}
+
+// The vertices in P's frame (depends on the whole relative pose on Q's side).
+void prepare_points(const Ctx& c, Small& s) {
+  exact::LiftFl L;
+  s.pt.clear();
+  for (int g : s.id) {
     if (!s.isq) {
       s.pt.push_back(c.pvec(L, g));
     } else {
@@ -431,6 +439,109 @@ Small make_cap(const PolytopeData& D, bool isq, int lev, int h0) {
   }
   finish_small(s, V);
   return s;
+}
+
+// Caps and top levels across queries. A Small is a pure function of its level's local
+// structure (the star of the cap's apex, or the top level's triangles) and of those vertices'
+// coordinates; its cached vectors of R (Q's side) and its points of (R, tq, tp). Entries are
+// keyed by the shape's address and validated against a stored copy of all these inputs, so a
+// shape freed and replaced at the same address can never be served stale data. One cache per
+// thread; cleared between queries when it grows past kMaxEntries.
+struct SmallCache {
+  struct Key {
+    const PolytopeData* D;
+    int lev, v;  ///< v = apex vertex; lev = −1 for the top level
+    bool isq;
+    bool operator==(const Key&) const = default;
+  };
+  struct KeyHash {
+    std::size_t operator()(const Key& k) const {
+      return std::hash<const void*>()(k.D) ^ (std::size_t(k.lev) * 0x9e3779b97f4a7c15ULL) ^ (std::size_t(k.v) << 1) ^ k.isq;
+    }
+  };
+  struct Entry {
+    Small s;
+    std::vector<int> ids;     ///< structure the Small was built from
+    std::vector<Vec3> xyz;    ///< coordinates of those vertices
+    bool vec_ok = false, pt_ok = false;
+    Eigen::Matrix3d R;
+    Vec3 tq, tp;
+  };
+  static constexpr std::size_t kMaxEntries = 4096;
+  std::unordered_map<Key, Entry, KeyHash> map;
+};
+
+SmallCache& small_cache() {
+  static thread_local SmallCache cache;
+  return cache;
+}
+
+// Brings the entry's pose-dependent caches up to date for this query's pose.
+const Small& prepared(const Ctx& c, SmallCache::Entry& e) {
+  const bool q = e.s.isq;
+  if (!e.vec_ok || (q && e.R != c.pose.R)) {
+    prepare_vectors(c, e.s);
+    e.vec_ok = true, e.pt_ok = false;
+    e.R = c.pose.R;
+  }
+  if (!e.pt_ok || (q && (e.tq != c.pose.tq || e.tp != c.pose.tp))) {
+    prepare_points(c, e.s);
+    e.pt_ok = true;
+    e.tq = c.pose.tq, e.tp = c.pose.tp;
+  }
+  return e.s;
+}
+
+// The top level of one side, from the cache when its structure and coordinates are unchanged.
+const Small& cached_top(const Ctx& c, bool isq) {
+  const PolytopeData& D = c.data(isq);
+  const DKLevel& L = D.levels.back();
+  auto& e = small_cache().map[SmallCache::Key{&D, -1, 0, isq}];
+  std::vector<int> ids(L.verts);
+  ids.insert(ids.end(), L.fv.begin(), L.fv.end());
+  bool same = e.ids == ids && e.xyz.size() == L.verts.size();
+  for (std::size_t i = 0; same && i < L.verts.size(); ++i) same = e.xyz[i] == D.v[L.verts[i]];
+  if (!same) {
+    e = SmallCache::Entry{};
+    e.s = top_small(D, isq);
+    e.ids = std::move(ids);
+    for (int v : L.verts) e.xyz.push_back(D.v[v]);
+  }
+  return prepared(c, e);
+}
+
+// The cap of vertex w = origin(h) at level lev: built from w's smallest out-half-edge (so the
+// result does not depend on which half-edge the walk arrived by), cached as above.
+const Small& cached_cap(const Ctx& c, bool isq, int lev, int h) {
+  const PolytopeData& D = c.data(isq);
+  const DKLevel& L = D.levels[lev];
+  int h0 = h;
+  for (int g = L.ccw(h); g != h; g = L.ccw(g)) h0 = std::min(h0, g);
+  const int w = L.origin(h0);
+  auto& e = small_cache().map[SmallCache::Key{&D, lev, w, isq}];
+  // Validated inputs: the link's vertices and the star's half-edge ids (the Small keeps them
+  // as walk hints), then the coordinates of w and the link.
+  std::vector<int> ids{w};
+  int g = h0;
+  do {
+    ids.push_back(L.target(g));
+    g = L.ccw(g);
+  } while (g != h0);
+  const std::size_t nv = ids.size();
+  do {
+    ids.push_back(g);
+    ids.push_back(L.twin[g]);
+    g = L.ccw(g);
+  } while (g != h0);
+  bool same = e.ids == ids;
+  for (std::size_t i = 0; same && i < nv; ++i) same = e.xyz[i] == D.v[ids[i]];
+  if (!same) {
+    e = SmallCache::Entry{};
+    e.s = make_cap(D, isq, lev, h0);
+    e.ids = std::move(ids);
+    for (std::size_t i = 0; i < nv; ++i) e.xyz.push_back(D.v[e.ids[i]]);
+  }
+  return prepared(c, e);
 }
 
 /// State of a pair (X, Y) at one level: Hit (ℓ meets X ⊕ (−Y); exit facet `cand`) or Miss
@@ -896,8 +1007,8 @@ struct Side {
 
 struct Query {
   Ctx& c;
-  Small topP, topQ;
-  std::unordered_map<long long, Small> caps;  ///< caps met in this query, by (side, level, vertex)
+  const Small& topP;
+  const Small& topQ;
   std::vector<Walker::Probe> probes;
   std::vector<int> walk_all, walk_out;
   /// Set by the outermost descent: 0 ∈ int (P_top ⊕ (−Q'_top)), hence 0 ∈ int M (the top levels
@@ -931,14 +1042,7 @@ struct Query {
     }
     w.down();
     if (sw.fr->fsign(sw.ws.m, ref) <= 0) return nullptr;
-    long long key = ((static_cast<long long>(lev) * 2 + isq) << 32) | sw.ws.m;
-    auto it = caps.find(key);
-    if (it == caps.end()) {
-      int h = sw.ws.hl;  // an out-half-edge of the top at this level
-      it = caps.emplace(key, make_cap(D, isq, lev, h)).first;
-      prepare_small(c, it->second);
-    }
-    return &it->second;
+    return &cached_cap(c, isq, lev, sw.ws.hl);  // sw.ws.hl: an out-half-edge of the top
   }
 
   static bool better_hit(Ctx& c, const State& a, const State& b) {  // a's exit later than b's
@@ -1150,9 +1254,10 @@ Depth3 directional_depth_dk(const ConvexPolytope& Pp, const Pose3& pose_p, const
   for (int i = 1; i < 3; ++i)
     if (std::abs(d[i]) > std::abs(d[big])) big = i;
   Ctx c{Pp.data(), Qp.data(), pose, {}, 0};
-  Query q{c, top_small(c.P, false), top_small(c.Q, true), {}, {}, {}, {}};
-  prepare_small(c, q.topP);
-  prepare_small(c, q.topQ);
+  if (small_cache().map.size() > SmallCache::kMaxEntries) small_cache().map.clear();
+  const Small& topP = cached_top(c, false);
+  const Small& topQ = cached_top(c, true);
+  Query q{c, topP, topQ, {}, {}, {}};
   auto run = [&](int s) {
     c.dv[0] = s * d;
     c.dv[1] = s * Vec3::Unit((big + 1) % 3);

@@ -16,7 +16,8 @@
 // exactly representable rotations (the tetrahedral group: quaternions with entries 0, ±½, ±1).
 // Suites: random hulls 4…300 vertices, the shared hulls, face–face, parallel edges,
 // vertex–face, identical shapes, touching (on exactly representable points of ∂M), thin plates
-// (flat in one axis after rotation), 10⁶ offsets, nearly coplanar facets.
+// (flat in one axis after rotation), 10⁶ offsets, nearly coplanar facets, shapes rebuilt with
+// new coordinates between queries (σ_d's per-thread caches).
 #include <gtest/gtest.h>
 
 #include <pendepth/depth3.hpp>
@@ -434,6 +435,37 @@ TEST(Oracle3, NearlyCoplanarFacets) {
   }
   finish(st, "nearly coplanar");
   EXPECT_GT(st.sigma_over, 0);
+}
+
+// σ_d keeps per-thread caches of caps and top levels keyed by the shape's address and validated
+// against their inputs: shapes freed and rebuilt (likely at the same address) with the same
+// topology but other coordinates, and poses alternating between rotations, must not see stale
+// data.
+TEST(Oracle3, RebuiltShapesAndChangingPoses) {
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> U(-0.4, 0.4);
+  const std::vector<Vec3> bases_p[2] = {ellipsoid(rng, 40), ellipsoid(rng, 40)};
+  const std::vector<Vec3> bases_q[2] = {test3::random_ball(rng, 30), test3::random_ball(rng, 30)};
+  const auto r1 = random_rotation(rng), r2 = random_rotation(rng);
+  const auto dirs = random_dirs(rng, 4);
+  Stats st;
+  for (int k = 0; k < pendepth_test::scaled(16); ++k) {
+    // Another point set every other time; otherwise the same hull structure with other
+    // coordinates (anisotropic scaling and a shift).
+    auto p = bases_p[(k / 2) % 2], q = bases_q[(k / 2) % 2];
+    const double f = 1 + 0.3 * (k % 2);
+    const Vec3 shift = 2.0 * (k % 3) * Vec3(1, -0.5, 0.25);  // both shapes: M only scales
+    for (auto& x : p) x = Vec3(f * x.x(), x.y() / f, x.z()) + shift;
+    for (auto& x : q) x = Vec3(x.x(), f * x.y(), x.z() / f) + shift;
+    Pair S(p, q);
+    for (int j = 0; j < 3; ++j) {  // Q rotated about the shift point
+      Pose3 pq((k + j) % 2 ? r1 : r2, Vec3(U(rng), U(rng), U(rng)));
+      pq.translation += shift - pq.matrix() * shift;
+      check_pose(S, Pose3(), pq, dirs, st, "rebuilt");
+    }
+  }
+  finish(st, "rebuilt shapes");
+  EXPECT_GT(st.sigma_d_over, 0);
 }
 
 }  // namespace
