@@ -165,6 +165,7 @@ BruteContact brute_contact(const Surface& P, const Vec3& p, const Vec3& l, const
 // ---- query generators ----------------------------------------------------------------------
 struct Line {
   Vec3 o, d;
+  Vec3 m{0, 0, 0};  ///< move direction for Lemma 5.3 (zero: a generated one)
 };
 
 std::vector<Line> lines_for(const ConvexPolytope& P, std::mt19937_64& rng, int count) {
@@ -187,7 +188,9 @@ std::vector<Line> lines_for(const ConvexPolytope& P, std::mt19937_64& rng, int c
       case 1: L = {mid + 2 * R * rnd(), rnd()}; break;                        // mostly misses
       case 2: L = {vtx(), rnd()}; break;                                      // through a vertex
       case 3: L = {a, b - a}; break;                                          // along an edge (tangent)
-      case 4: L = {a, (b - a) + double(small(rng)) * (c - a)}; break;        // in a face plane
+      case 4:  // in a face plane, sweeping that plane: the section is the whole face
+        L = {a, (b - a) + double(small(rng)) * (c - a), (rng() % 2) ? c - a : a - b};
+        break;
       case 5: L = {vtx(), vtx() - mid}; break;                                // vertex to vertex-ish
       case 6: L = {vtx(), Vec3(small(rng), small(rng), small(rng))}; break;  // integer directions
       case 7: L = {(a + b) / 2, (a - b).cross(c - a).cross(b - a) + rnd() * 1e-3}; break;
@@ -238,7 +241,9 @@ void check_shape(const ConvexPolytope& P, const std::string& name, int count, st
       EXPECT_LE(h.t_enter, h.t_exit);
     }
     // Lemma 5.3: the same line translating along a direction not parallel to it.
-    Vec3 m = (i % 3 == 0) ? L.d.cross(Vec3(1, 2, 3)) : Vec3(rng() % 7 - 3.0, rng() % 5 - 2.0, 1.0);
+    Vec3 m = L.m != Vec3::Zero() ? L.m
+             : (i % 3 == 0)     ? L.d.cross(Vec3(1, 2, 3))
+                                : Vec3(rng() % 7 - 3.0, rng() % 5 - 2.0, 1.0);
     if (m.cross(L.d) == Vec3::Zero() || m == Vec3::Zero()) continue;
     if (std::abs(m.normalized().dot(L.d.normalized())) > 1 - 1e-12) continue;
     LineContact c = P.first_contact(L.o, L.d, m, level);
