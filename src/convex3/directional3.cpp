@@ -38,15 +38,32 @@
 //    unchanged" implies "no cap". The answer is read at δ = ε = 0: the exit facet u is a
 //    supporting plane of M with u·d > 0 and σ_d = h_M(u)/(u·d̂) exactly (few ulps); 0 ∈ int M
 //    iff the exit facets of ℓ in both orientations have h_M(u) > 0.
+//  * Overlap is usually certified without the second (−d) descent: the top levels are inner
+//    polytopes, so 0 ∈ int (P_top ⊕ (−Q'_top)) — the criterion above applied to the top pair,
+//    whose brute-force solve yields the entry facet for free — implies 0 ∈ int M. Only when that
+//    fails does the −d descent run.
+//  * Caps and top levels are constant-size polytopes that depend only on the shape (and, for
+//    their cached vectors, on R; for their points, on the pose). They are kept in a per-thread
+//    cache across queries, keyed by the shape's address and validated against a copy of
+//    everything they were built from (the apex's star: vertex and half-edge ids, and the
+//    coordinates), so a freed shape replaced at the same address is never served stale data.
+//    (A per-shape table would avoid the validation; PolytopeData has no slot for it.)
+//  * The contact point (witness) is a point of F_P(u) ∩ (F_Q'(u) + v) with both support faces
+//    collected exactly, so face–face and parallel-edge contacts report a point of both shapes.
 // Every combinatorial decision is the exact sign of a polynomial in the input doubles
-// (geometry/exact.hpp); formal quantities are compared coefficient by coefficient.
+// (geometry/exact.hpp); formal quantities are compared coefficient by coefficient. Cached
+// doubles only ever serve as filters with rigorous error bounds (per-pair Fl bounds, or one
+// static bound per constant×constant subproblem for the edge-pair tests).
 //
 // Complexity per query (n, m vertices; the hierarchies have O(log n), O(log m) levels): the main
 // descent has O(log n + log m) steps, each nesting two descents of O(log n + log m) steps with
 // O(1) work (a constant×constant subproblem, a walk step) — O(log n · log m) as in DHS Theorem
 // 5.6 for n ≈ m; a walk restart at a vertex of degree > 48 adds O(log) (worst case O(log³)).
-// Two descents (±d) decide overlap. The top levels (≤ 12 vertices unless the DK build stops
-// early) are solved by brute force, O(size²).
+// A second descent (−d) decides overlap when the top pair does not. The top levels (≤ 12
+// vertices unless the DK build stops early) are solved by brute force, O(size²).
+// Measured (bench_convex3, m = 64, CPU time): 91 µs at n = 64, 384 µs at 32,768 (was 294 µs and
+// 1.0 ms before the top-pair certificate, the caches and the static filters); the remaining
+// cost is the constant×constant subproblems (≈ 60 %) and the walks (≈ 25 %).
 #include "convex3/minkowski_facets.hpp"
 #include "convex3/polytope_data.hpp"
 #include "geometry/exact.hpp"
