@@ -476,6 +476,114 @@ void bm_dir(benchmark::State& state, bool scan, std::size_t n) {
 
 }  // namespace
 
+// ---- DHS Lemmas 5.2 / 5.3: first_hit / first_contact (outer hierarchy) vs a linear scan ----
+namespace lines {
+
+struct LineCase {
+  pendepth::ConvexPolytope P;
+  std::vector<pendepth::Vec3> o, d, m;
+  double outer_ms = 0;
+};
+
+const LineCase& line_case(std::size_t n) {
+  static std::map<std::size_t, std::unique_ptr<LineCase>> cache;
+  auto& c = cache[n];
+  if (c) return *c;
+  std::mt19937_64 rng(4000 + n);
+  std::normal_distribution<double> g;
+  std::vector<pendepth::Vec3> pts;
+  while (pts.size() < n) pts.push_back(pendepth::Vec3(g(rng), g(rng), g(rng)).normalized());
+  c = std::make_unique<LineCase>(LineCase{pendepth::ConvexPolytope::hull(pts, "sphere"), {}, {}, {}, 0});
+  auto t0 = std::chrono::steady_clock::now();
+  c->P.face_count();  // builds the outer hierarchy
+  c->outer_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  for (int i = 0; i < 256; ++i) {
+    pendepth::Vec3 d(g(rng), g(rng), g(rng));
+    c->o.push_back(pendepth::Vec3(0.4 * g(rng), 0.4 * g(rng), 0.4 * g(rng)));
+    c->d.push_back(d);
+    c->m.push_back(d.cross(pendepth::Vec3(g(rng), g(rng), g(rng))));
+  }
+  return *c;
+}
+
+// Linear reference for Lemma 5.2: entry = max over entering triangles of the plane crossing.
+double scan_hit(const pendepth::ConvexPolytope& P, const pendepth::Vec3& o, const pendepth::Vec3& d) {
+  double lo = -INFINITY, hi = INFINITY;
+  for (const auto& t : P.triangles()) {
+    const pendepth::Vec3 n = (P[t[1]] - P[t[0]]).cross(P[t[2]] - P[t[0]]);
+    const double A = n.dot(d), B = n.dot(P[t[0]] - o);
+    if (A < 0) lo = std::max(lo, B / A);
+    else if (A > 0) hi = std::min(hi, B / A);
+    else if (B < 0) return NAN;
+  }
+  return lo <= hi ? lo : NAN;
+}
+
+// Linear reference for Lemma 5.3: minimum shift over the crossings of the swept plane with edges.
+double scan_contact(const pendepth::ConvexPolytope& P, const pendepth::Vec3& p, const pendepth::Vec3& l,
+                    const pendepth::Vec3& m) {
+  const pendepth::Vec3 nu = l.cross(m), w = m * l.squaredNorm() - l * l.dot(m);
+  double best = INFINITY;
+  for (const auto& t : P.triangles())
+    for (int k = 0; k < 3; ++k) {
+      const pendepth::Vec3 &a = P[t[k]], &b = P[t[(k + 1) % 3]];
+      const double sa = nu.dot(a - p), sb = nu.dot(b - p);
+      if ((sa > 0) == (sb > 0) && sa != 0 && sb != 0) continue;
+      const pendepth::Vec3 x = sa == sb ? a : a + (sa / (sa - sb)) * (b - a);
+      best = std::min(best, w.dot(x - p) / w.dot(m));
+    }
+  return best;
+}
+
+void bm_line(benchmark::State& state, bool contact, bool scan, std::size_t n) {
+  const LineCase& c = line_case(n);
+  std::size_t i = 0, nodes = 0, count = 0;
+  double max_rel = 0;
+  for (auto _ : state) {
+    double v;
+    if (contact) {
+      if (scan) v = scan_contact(c.P, c.o[i], c.d[i], c.m[i]);
+      else {
+        auto r = c.P.first_contact(c.o[i], c.d[i], c.m[i]);
+        v = r.shift, nodes += r.nodes_visited;
+      }
+    } else {
+      if (scan) v = scan_hit(c.P, c.o[i], c.d[i]);
+      else {
+        auto r = c.P.first_hit(c.o[i], c.d[i]);
+        v = r.t_enter, nodes += r.nodes_visited;
+      }
+    }
+    benchmark::DoNotOptimize(v);
+    ++count;
+    i = (i + 1) % c.o.size();
+  }
+  if (!scan)  // agreement with the linear scan (outside the timed loop; 32 queries from 2^18 on)
+    for (std::size_t k = 0; k < (n >= 262144 ? std::size_t(32) : c.o.size()); ++k) {
+      double a = contact ? c.P.first_contact(c.o[k], c.d[k], c.m[k]).shift : c.P.first_hit(c.o[k], c.d[k]).t_enter;
+      double b = contact ? scan_contact(c.P, c.o[k], c.d[k], c.m[k]) : scan_hit(c.P, c.o[k], c.d[k]);
+      max_rel = std::max(max_rel, std::abs(a - b) / std::max(1.0, std::abs(b)));
+    }
+  state.counters["P_vertices"] = double(c.P.size());
+  state.counters["outer_levels"] = double(c.P.outer_hierarchy_levels());
+  state.counters["outer_build_ms"] = c.outer_ms;
+  if (!scan) state.counters["nodes_per_query"] = double(nodes) / double(std::max<std::size_t>(count, 1));
+  if (!scan) state.counters["max_rel_diff_scan"] = max_rel;
+}
+
+void register_benchmarks() {
+  for (std::size_t n : {64, 512, 4096, 32768, 262144, 1000000})
+    for (bool contact : {false, true})
+      for (bool scan : {false, true})
+        benchmark::RegisterBenchmark((std::string(contact ? "first_contact/" : "first_hit/") +
+                                      (scan ? "scan/" : "pendepth/") + std::to_string(n))
+                                         .c_str(),
+                                     bm_line, contact, scan, n)
+            ->Unit(benchmark::kMicrosecond);
+}
+
+}  // namespace lines
+
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
@@ -502,6 +610,7 @@ int main(int argc, char** argv) {
           (std::string("sigma_d/") + (scan ? "facet_scan/" : "pendepth/") + std::to_string(n)).c_str(), bm_dir,
           scan, n)
           ->Unit(benchmark::kMicrosecond);
+  lines::register_benchmarks();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
 }

@@ -43,6 +43,36 @@ namespace convex3 {
 struct PolytopeData;
 }
 
+/// First intersection of a directed line with a ConvexPolytope (DHS Lemma 5.2).
+struct LineHit {
+  bool hit = false;  ///< the line meets the closed polytope (touching counts)
+  /// The line meets the polytope in origin + t·dir for t in [t_enter, t_exit] (a tangent line
+  /// touching a vertex or an edge: t_enter == t_exit). Few-ulp accurate (exact decisions).
+  double t_enter = 0, t_exit = 0;
+  Vec3 enter{0, 0, 0}, exit{0, 0, 0};  ///< the two points (accurate coordinates)
+  /// True faces (see face_of_triangle) whose planes give t_enter and t_exit: the line crosses
+  /// face_enter's plane inwards (n·dir < 0) and face_exit's outwards (n·dir > 0).
+  int face_enter = -1, face_exit = -1;
+  std::size_t nodes_visited = 0;  ///< hierarchy nodes examined (diagnostic: grows like log n)
+};
+
+/// First contact of a translating line with a ConvexPolytope (DHS Lemma 5.3).
+struct LineContact {
+  enum class Feature { None, Vertex, Edge };
+  bool contact = false;  ///< false: the translating line never touches the polytope
+  /// The line {point + shift·move_dir + τ·line_dir : τ real} is the first that touches.
+  double shift = 0;
+  Vec3 point{0, 0, 0};  ///< a contact point (exactly the vertex for a vertex contact)
+  /// The feature of the polytope the contact point lies on: a vertex, or the relative interior of
+  /// a true edge (vertex ids, edge[0] < edge[1]). When the first contact is a whole segment (an
+  /// edge or face parallel to line_dir), the point is its end with the smallest
+  /// (move_dir ⊥ line_dir)-then-line_dir key, i.e. a deterministic vertex of that segment.
+  Feature feature = Feature::None;
+  int vertex = -1;
+  std::array<int, 2> edge{-1, -1};
+  std::size_t nodes_visited = 0;  ///< hierarchy nodes examined (diagnostic)
+};
+
 class ConvexPolytope {
  public:
   /// Convex hull of a point set in the normal form above, plus its inner DK hierarchy.
@@ -78,6 +108,32 @@ class ConvexPolytope {
   std::vector<std::size_t> level_sizes() const;
   /// Triangles of hierarchy level i (0 = the polytope). For tests.
   std::vector<std::array<int, 3>> level_triangles(std::size_t i) const;
+
+  /// Number of true faces (maximal coplanar sets of triangles) and the face of triangle t.
+  std::size_t face_count() const;
+  int face_of_triangle(std::size_t t) const;
+  /// Number of levels of the outer DK hierarchy (DHS §5.1: P = P_1 ⊂ … ⊂ P_k, each level the
+  /// intersection of a subset of the face half-spaces; built on first use, O(n log n)).
+  std::size_t outer_hierarchy_levels() const;
+
+  /// DHS Lemma 5.2: the intersection of the line origin + t·dir (t real) with the polytope, or
+  /// with inner hierarchy level `level` (0 = the polytope; its triangles: level_triangles), by a
+  /// descent of that level's outer hierarchy with O(1) work per level: O(log n). Exact
+  /// decisions (filtered, with exact fallback); a line that only touches the boundary is a hit
+  /// with t_enter == t_exit (or the touched segment if it lies in a face plane). face_enter /
+  /// face_exit are faces of that level (face_of_triangle numbers level 0's).
+  /// Throws InvalidInput for a non-finite origin, a zero or non-finite dir, or a bad level.
+  LineHit first_hit(const Vec3& origin, const Vec3& dir, std::size_t level = 0) const;
+
+  /// DHS Lemma 5.3: the line through `point` with direction line_dir translates along move_dir
+  /// from infinity (shift from −∞ upwards); returns the first shift at which it touches the
+  /// polytope and where. O(log n) by the outer-hierarchy descent on the plane the line sweeps.
+  /// `level` selects an inner hierarchy level as for first_hit.
+  /// Throws InvalidInput for non-finite input, zero vectors, line_dir parallel to move_dir, or a
+  /// bad level. (DHS Lemma 5.4, a plane with normal u moving so that u·x decreases, first
+  /// touches support(u): that is the existing support() walk on the inner hierarchy.)
+  LineContact first_contact(const Vec3& point, const Vec3& line_dir, const Vec3& move_dir,
+                            std::size_t level = 0) const;
 
   const convex3::PolytopeData& data() const { return *d_; }
 

@@ -16,6 +16,8 @@
 
 namespace pendepth::convex3 {
 
+struct OuterHierarchy;  // outer_hierarchy.hpp
+
 struct DKLevel {
   std::vector<int> fv;    ///< 3 per triangle, global vertex ids, CCW from outside
   std::vector<int> twin;  ///< opposite half-edge at this level
@@ -69,7 +71,22 @@ struct PolytopeData {
     AdjacencyCache& operator=(const AdjacencyCache&) { return *this; }
   };
   mutable AdjacencyCache adjacency_cache;
+  /// Lazily built outer DK hierarchies (outer_hierarchy.cpp): entry i is the outer hierarchy of
+  /// inner level i (DHS §5.1's twin representation), built on its first use under the mutex; a
+  /// copy starts empty and rebuilds on use.
+  struct OuterCache {
+    std::mutex mu;
+    std::vector<std::shared_ptr<const OuterHierarchy>> value;
+    OuterCache() = default;
+    OuterCache(const OuterCache&) {}
+    OuterCache& operator=(const OuterCache&) { return *this; }
+  };
+  mutable OuterCache outer_cache;
 };
+
+/// The outer hierarchy of inner level `level` of d (0: the polytope), built on the first call
+/// (O(n_i log n_i)), then O(1). Precondition: level < d.levels.size().
+const OuterHierarchy& outer_hierarchy(const PolytopeData& d, std::size_t level = 0);
 
 /// The CSR adjacency of d's level 0 and its seed cube map, built on the first call (O(n)), then
 /// O(1).
