@@ -72,6 +72,11 @@ Depth2 PolygonDepth2::minimum(const Vec2& t) const {
       }
       break;
   }
+  // A zero component can come out as −0 (0 times a negative factor); report it as +0.
+  for (int c = 0; c < 2; ++c) {
+    if (r.normal[c] == 0) r.normal[c] = 0.0;
+    if (r.translation[c] == 0) r.translation[c] = 0.0;
+  }
   return r;
 }
 

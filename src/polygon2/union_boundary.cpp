@@ -1293,8 +1293,9 @@ bool UnionBoundary::ray_first_scan(const Vec2& t, const Vec2& d, Hit& h) const {
   return found;
 }
 
-bool UnionBoundary::ray_first(const Vec2& t, const Vec2& d, Hit& h) const {
+bool UnionBoundary::ray_first(const Vec2& t, const Vec2& d, Hit& h, bool* tie) const {
   const Bvh& T = index_->pieces;
+  if (tie) *tie = false;
   if (T.nodes.empty()) return false;
   bool found = false;
   double best = INFINITY;
@@ -1308,11 +1309,16 @@ bool UnionBoundary::ray_first(const Vec2& t, const Vec2& d, Hit& h) const {
     if (n.leaf) {
       for (std::uint32_t i = n.a; i < n.b; ++i) {
         const std::uint32_t k = T.items[i];
-        if (first_hit(k, t, d, x) && (!found || compare_hits(x, h, t, d) < 0)) {
+        if (!first_hit(k, t, d, x)) continue;
+        const int c = found ? compare_hits(x, h, t, d) : -1;
+        if (c < 0) {
           h = x;
           found = true;
+          if (tie) *tie = false;
           const double v = hit_value(h, t, d);
           best = v + std::abs(v) * 0x1p-40 + 0x1p-1000;
+        } else if (c == 0 && tie) {
+          *tie = true;  // boxes through h are never pruned (best is widened), so every tie is seen
         }
       }
       continue;
@@ -1515,6 +1521,16 @@ bool UnionBoundary::in_overlap(const Vec2& t) const {
     if ((above_b ? o : -o) > 0) ++crossings;
   });
   return crossings % 2 == 1;
+}
+
+bool UnionBoundary::on_boundary(const Vec2& t) const {
+  Near zero;  // the point t itself: distance 0
+  zero.kind = Near::Kind::Point;
+  zero.cut.pt = zero.cut.pb = zero.cut.e0 = zero.cut.e1 = Vec2(0, 0);
+  zero.p = t;
+  return index_->pieces.overlap_until(Box{t.x(), t.y(), t.x(), t.y()}, [&](std::uint32_t k) {
+    return compare_near(nearest_on_piece(k, t), zero, t) == 0;
+  });
 }
 
 bool UnionBoundary::last_exit(const Vec2& t, const Vec2& d, Cut& best) const {

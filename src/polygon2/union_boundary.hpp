@@ -156,8 +156,9 @@ class UnionBoundary {
   /// The first λ > 0 on the ray t + λ·d meeting piece k (false if none). O(log m).
   bool first_hit(std::size_t k, const Vec2& t, const Vec2& d, Hit& h) const;
   /// The first point of ∂O on the ray t + λ·d, λ > 0, with the bounding-volume hierarchy
-  /// (false if the ray misses ∂O). O(log n · log m) typical.
-  bool ray_first(const Vec2& t, const Vec2& d, Hit& h) const;
+  /// (false if the ray misses ∂O). O(log n · log m) typical. With `tie`: set to whether another
+  /// piece meets the ray at the same point as h (a union vertex, a slit); h is the same either way.
+  bool ray_first(const Vec2& t, const Vec2& d, Hit& h, bool* tie = nullptr) const;
   /// The same by visiting every piece, O(n log m) (DHS §4.2).
   bool ray_first_scan(const Vec2& t, const Vec2& d, Hit& h) const;
   /// The nearest point of piece k to t (exact choice among candidates).
@@ -167,6 +168,8 @@ class UnionBoundary {
 
   /// Exact: t ∈ O (some int R_i contains t), with the hierarchy over the R_i. O(log n + k log m).
   bool in_overlap(const Vec2& t) const;
+  /// Exact: t ∈ ∂O (t lies on some piece), with the hierarchy over the piece boxes containing t.
+  bool on_boundary(const Vec2& t) const;
   /// The last exit sup{λ ≥ 0 : t + λ·d ∈ O} as the exit cut of some R_i (false when the ray
   /// never meets O after 0), branch-and-bound over the R_i (§6).
   bool last_exit(const Vec2& t, const Vec2& d, Cut& exit) const;
