@@ -92,7 +92,8 @@ void check_hierarchy(const ConvexPolytope& P, const std::string& name, std::mt19
     // Convex and bounded: every vertex is a proper meet, on or inside every plane of the level
     // (all pairs on small levels, a random sample of vertices on big ones).
     const std::size_t T = L.fv.size() / 3;
-    const std::size_t samples = T * L.verts.size() <= 100000 ? T : 100000 / L.verts.size() + 1;
+    const std::size_t budget = pendepth_test::scaled(100000);
+    const std::size_t samples = T * L.verts.size() <= budget ? T : budget / L.verts.size() + 1;
     for (std::size_t s = 0; s < samples; ++s) {
       std::size_t t = samples == T ? s : rng() % T;
       int a = L.fv[3 * t], b = L.fv[3 * t + 1], c = L.fv[3 * t + 2];
