@@ -202,7 +202,9 @@ std::size_t ConvolvedTriangles::count_below(const Tri& T, const Vec2& x0, const 
                                             bool reversed) const {
   const std::size_t m = b_.size();
   auto below = [&](const Vec2& e0, const Vec2& e1) {
-    int s = compare_angle(e0, e1, x0, x1);
+    // The same edge (a line along an edge of T or of B) ties by construction; deciding it here
+    // skips the rational fallback that an exact zero costs compare_angle.
+    int s = (e0 == x0 && e1 == x1) ? 0 : compare_angle(e0, e1, x0, x1);
     return s < 0 || (inclusive && s == 0);
   };
   std::size_t n = 0;
