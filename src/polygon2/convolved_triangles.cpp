@@ -44,7 +44,14 @@ int side_of_line(const Vec2& a, const Vec2& b, const Vec2& s1, const Vec2& s2, c
   // s1 + d0 and s1 + d1 when s2 = d0 (a B edge at s1), s2 + d0 and s2 + d1 when s1 = d0.
   if (a == s1 && s2 == d0 && (b == d0 || b == d1)) return 0;
   if (b == s2 && s1 == d0 && (a == d0 || a == d1)) return 0;
-  return exact_sign([&](auto L) {
+  // Double filter, as in orient_sums: each monomial passes at most 5 roundings.
+  const double dx = d1.x() - d0.x(), dy = d1.y() - d0.y();
+  const double wx = a.x() + b.x() - s1.x() - s2.x(), wy = a.y() + b.y() - s1.y() - s2.y();
+  const double mdx = std::abs(d1.x()) + std::abs(d0.x()), mdy = std::abs(d1.y()) + std::abs(d0.y());
+  const double mwx = std::abs(a.x()) + std::abs(b.x()) + std::abs(s1.x()) + std::abs(s2.x());
+  const double mwy = std::abs(a.y()) + std::abs(b.y()) + std::abs(s1.y()) + std::abs(s2.y());
+  const double bound = 8 * exact::kUnit * (mdx * mwy + mdy * mwx) + exact::kTiny;
+  return exact::exact_sign_filtered(dx * wy - dy * wx, bound, [&](auto L) {
     return (L(d1.x()) - L(d0.x())) * (L(a.y()) + L(b.y()) - L(s1.y()) - L(s2.y())) -
            (L(d1.y()) - L(d0.y())) * (L(a.x()) + L(b.x()) - L(s1.x()) - L(s2.x()));
   });
@@ -161,11 +168,13 @@ ConvolvedTriangles::ConvolvedTriangles(const Polygon& P, const ConvexPolygon& Q)
 void ConvolvedTriangles::vertex(std::size_t i, std::size_t k, int& slot, std::size_t& bj) const { vertex_of(tri_[i], k, slot, bj); }
 
 void ConvolvedTriangles::vertex_of(const Tri& T, std::size_t k, int& slot, std::size_t& bj) const {
-  k %= b_.size() + T.n;
+  const std::size_t m = b_.size();
+  if (k >= m + T.n) k %= m + T.n;
   int a = 0;
   while (a < T.n && a + T.c[a] < k) ++a;
-  slot = a % T.n;
-  bj = (k - a) % b_.size();
+  slot = a == T.n ? 0 : a;
+  bj = k - a;  // < m + T.n - a <= 2m: one conditional subtraction replaces the division
+  if (bj >= m) bj -= m;
 }
 
 Cut ConvolvedTriangles::edge(std::size_t i, std::size_t k) const { return edge_of(tri_[i], i, k); }
