@@ -253,6 +253,14 @@ bool same_point(const Cut& E1, const Mu& m1, const Cut& E2, const Mu& m2) {
   if (m1.k == Mu::Line && m2.k == Mu::Line &&
       ((same_cut_line(E1, m2.o) && same_cut_line(m1.o, E2)) || (same_cut_line(E1, E2) && same_cut_line(m1.o, m2.o))))
     return true;
+  // A coordinate certified different by the cheap tier decides first: on axis-parallel input one
+  // coordinate often ties exactly, and deciding it would need the rational fallback.
+  {
+    const auto a = point_h(E1, m1, exact::LiftFl{});
+    const auto b = point_h(E2, m2, exact::LiftFl{});
+    for (int c = 0; c < 2; ++c)
+      if (exact::certified_sign(a[c] * b[2] - b[c] * a[2]) != 2) return false;
+  }
   for (int c = 0; c < 2; ++c) {
     const int s = exact_sign([&](auto L) {
       auto a = point_h(E1, m1, L);
