@@ -18,17 +18,17 @@ const Vec2 kZero(0, 0);
 
 // Exact sign of orient(a1 + b1, a2 + b2, t).
 int orient_sums(const Vec2& a1, const Vec2& b1, const Vec2& a2, const Vec2& b2, const Vec2& t) {
-  // Double filter. Every monomial of the expanded formula passes through at most 5 roundings
-  // (3 additions, the product, the final difference), so |computed − exact| <= γ5·Σ|monomials|
-  // <= γ5·(Sux·Swy + Suy·Swx), S the sums of |terms|; 8u covers γ5 and the rounding of the
-  // magnitude itself, kTiny underflow. NaN/inf fall through to the tiered evaluation.
-  const double ux = a2.x() + b2.x() - a1.x() - b1.x(), uy = a2.y() + b2.y() - a1.y() - b1.y();
-  const double wx = t.x() - a1.x() - b1.x(), wy = t.y() - a1.y() - b1.y();
-  const double sux = std::abs(a2.x()) + std::abs(b2.x()) + std::abs(a1.x()) + std::abs(b1.x());
-  const double suy = std::abs(a2.y()) + std::abs(b2.y()) + std::abs(a1.y()) + std::abs(b1.y());
-  const double swx = std::abs(t.x()) + std::abs(a1.x()) + std::abs(b1.x());
-  const double swy = std::abs(t.y()) + std::abs(a1.y()) + std::abs(b1.y());
-  const double bound = 8 * exact::kUnit * (sux * swy + suy * swx) + exact::kTiny;
+  // Double filter on the regrouped formula ux = (a2 − a1) + (b2 − b1), wx = (t − a1) − b1: each
+  // factor is off by <= (2u + u²)·M with M = |first| + |second| of its computed parts, so
+  // |computed − exact| <= (6u + O(u²))·(Mux·Mwy + Muy·Mwx); 8u covers that and the rounding of
+  // the magnitude, kTiny underflow. Tight where the structure makes a2 − a1 or t − a1 small (fan
+  // vertices sharing a P vertex, points near the sum). NaN/inf fall through to the tiered evaluation.
+  const double dax = a2.x() - a1.x(), dbx = b2.x() - b1.x(), day = a2.y() - a1.y(), dby = b2.y() - b1.y();
+  const double tax = t.x() - a1.x(), tay = t.y() - a1.y();
+  const double ux = dax + dbx, uy = day + dby, wx = tax - b1.x(), wy = tay - b1.y();
+  const double mux = std::abs(dax) + std::abs(dbx), muy = std::abs(day) + std::abs(dby);
+  const double mwx = std::abs(tax) + std::abs(b1.x()), mwy = std::abs(tay) + std::abs(b1.y());
+  const double bound = 8 * exact::kUnit * (mux * mwy + muy * mwx) + exact::kTiny;
   return exact::exact_sign_filtered(ux * wy - uy * wx, bound, [&](auto L) {
     auto ux = L(a2.x()) + L(b2.x()) - L(a1.x()) - L(b1.x()), uy = L(a2.y()) + L(b2.y()) - L(a1.y()) - L(b1.y());
     auto wx = L(t.x()) - L(a1.x()) - L(b1.x()), wy = L(t.y()) - L(a1.y()) - L(b1.y());
@@ -44,12 +44,13 @@ int side_of_line(const Vec2& a, const Vec2& b, const Vec2& s1, const Vec2& s2, c
   // s1 + d0 and s1 + d1 when s2 = d0 (a B edge at s1), s2 + d0 and s2 + d1 when s1 = d0.
   if (a == s1 && s2 == d0 && (b == d0 || b == d1)) return 0;
   if (b == s2 && s1 == d0 && (a == d0 || a == d1)) return 0;
-  // Double filter, as in orient_sums: each monomial passes at most 5 roundings.
+  // Double filter, as in orient_sums, on w = (a − s1) + (b − s2): |error| <= (2u + u²)·M for each
+  // difference factor and w factor (M = sum of the |parts|), 8u·(Mdx·Mwy + Mdy·Mwx) overall.
   const double dx = d1.x() - d0.x(), dy = d1.y() - d0.y();
-  const double wx = a.x() + b.x() - s1.x() - s2.x(), wy = a.y() + b.y() - s1.y() - s2.y();
-  const double mdx = std::abs(d1.x()) + std::abs(d0.x()), mdy = std::abs(d1.y()) + std::abs(d0.y());
-  const double mwx = std::abs(a.x()) + std::abs(b.x()) + std::abs(s1.x()) + std::abs(s2.x());
-  const double mwy = std::abs(a.y()) + std::abs(b.y()) + std::abs(s1.y()) + std::abs(s2.y());
+  const double ax = a.x() - s1.x(), bx = b.x() - s2.x(), ay = a.y() - s1.y(), by = b.y() - s2.y();
+  const double wx = ax + bx, wy = ay + by;
+  const double mdx = std::abs(dx), mdy = std::abs(dy);
+  const double mwx = std::abs(ax) + std::abs(bx), mwy = std::abs(ay) + std::abs(by);
   const double bound = 8 * exact::kUnit * (mdx * mwy + mdy * mwx) + exact::kTiny;
   return exact::exact_sign_filtered(dx * wy - dy * wx, bound, [&](auto L) {
     return (L(d1.x()) - L(d0.x())) * (L(a.y()) + L(b.y()) - L(s1.y()) - L(s2.y())) -
