@@ -3,6 +3,7 @@
 #include "polygon2/convolved_triangles.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "geometry/exact.hpp"
 
@@ -17,7 +18,18 @@ const Vec2 kZero(0, 0);
 
 // Exact sign of orient(a1 + b1, a2 + b2, t).
 int orient_sums(const Vec2& a1, const Vec2& b1, const Vec2& a2, const Vec2& b2, const Vec2& t) {
-  return exact_sign([&](auto L) {
+  // Double filter on the regrouped formula ux = (a2 − a1) + (b2 − b1), wx = (t − a1) − b1: each
+  // factor is off by <= (2u + u²)·M with M = |first| + |second| of its computed parts, so
+  // |computed − exact| <= (6u + O(u²))·(Mux·Mwy + Muy·Mwx); 8u covers that and the rounding of
+  // the magnitude, kTiny underflow. Tight where the structure makes a2 − a1 or t − a1 small (fan
+  // vertices sharing a P vertex, points near the sum). NaN/inf fall through to the tiered evaluation.
+  const double dax = a2.x() - a1.x(), dbx = b2.x() - b1.x(), day = a2.y() - a1.y(), dby = b2.y() - b1.y();
+  const double tax = t.x() - a1.x(), tay = t.y() - a1.y();
+  const double ux = dax + dbx, uy = day + dby, wx = tax - b1.x(), wy = tay - b1.y();
+  const double mux = std::abs(dax) + std::abs(dbx), muy = std::abs(day) + std::abs(dby);
+  const double mwx = std::abs(tax) + std::abs(b1.x()), mwy = std::abs(tay) + std::abs(b1.y());
+  const double bound = 8 * exact::kUnit * (mux * mwy + muy * mwx) + exact::kTiny;
+  return exact::exact_sign_filtered(ux * wy - uy * wx, bound, [&](auto L) {
     auto ux = L(a2.x()) + L(b2.x()) - L(a1.x()) - L(b1.x()), uy = L(a2.y()) + L(b2.y()) - L(a1.y()) - L(b1.y());
     auto wx = L(t.x()) - L(a1.x()) - L(b1.x()), wy = L(t.y()) - L(a1.y()) - L(b1.y());
     return ux * wy - uy * wx;
@@ -32,7 +44,15 @@ int side_of_line(const Vec2& a, const Vec2& b, const Vec2& s1, const Vec2& s2, c
   // s1 + d0 and s1 + d1 when s2 = d0 (a B edge at s1), s2 + d0 and s2 + d1 when s1 = d0.
   if (a == s1 && s2 == d0 && (b == d0 || b == d1)) return 0;
   if (b == s2 && s1 == d0 && (a == d0 || a == d1)) return 0;
-  return exact_sign([&](auto L) {
+  // Double filter, as in orient_sums, on w = (a − s1) + (b − s2): |error| <= (2u + u²)·M for each
+  // difference factor and w factor (M = sum of the |parts|), 8u·(Mdx·Mwy + Mdy·Mwx) overall.
+  const double dx = d1.x() - d0.x(), dy = d1.y() - d0.y();
+  const double ax = a.x() - s1.x(), bx = b.x() - s2.x(), ay = a.y() - s1.y(), by = b.y() - s2.y();
+  const double wx = ax + bx, wy = ay + by;
+  const double mdx = std::abs(dx), mdy = std::abs(dy);
+  const double mwx = std::abs(ax) + std::abs(bx), mwy = std::abs(ay) + std::abs(by);
+  const double bound = 8 * exact::kUnit * (mdx * mwy + mdy * mwx) + exact::kTiny;
+  return exact::exact_sign_filtered(dx * wy - dy * wx, bound, [&](auto L) {
     return (L(d1.x()) - L(d0.x())) * (L(a.y()) + L(b.y()) - L(s1.y()) - L(s2.y())) -
            (L(d1.y()) - L(d0.y())) * (L(a.x()) + L(b.x()) - L(s1.x()) - L(s2.x()));
   });
@@ -149,11 +169,13 @@ ConvolvedTriangles::ConvolvedTriangles(const Polygon& P, const ConvexPolygon& Q)
 void ConvolvedTriangles::vertex(std::size_t i, std::size_t k, int& slot, std::size_t& bj) const { vertex_of(tri_[i], k, slot, bj); }
 
 void ConvolvedTriangles::vertex_of(const Tri& T, std::size_t k, int& slot, std::size_t& bj) const {
-  k %= b_.size() + T.n;
+  const std::size_t m = b_.size();
+  if (k >= m + T.n) k %= m + T.n;
   int a = 0;
   while (a < T.n && a + T.c[a] < k) ++a;
-  slot = a % T.n;
-  bj = (k - a) % b_.size();
+  slot = a == T.n ? 0 : a;
+  bj = k - a;  // < m + T.n - a <= 2m: one conditional subtraction replaces the division
+  if (bj >= m) bj -= m;
 }
 
 Cut ConvolvedTriangles::edge(std::size_t i, std::size_t k) const { return edge_of(tri_[i], i, k); }
@@ -190,7 +212,9 @@ std::size_t ConvolvedTriangles::count_below(const Tri& T, const Vec2& x0, const 
                                             bool reversed) const {
   const std::size_t m = b_.size();
   auto below = [&](const Vec2& e0, const Vec2& e1) {
-    int s = compare_angle(e0, e1, x0, x1);
+    // The same edge (a line along an edge of T or of B) ties by construction; deciding it here
+    // skips the rational fallback that an exact zero costs compare_angle.
+    int s = (e0 == x0 && e1 == x1) ? 0 : compare_angle(e0, e1, x0, x1);
     return s < 0 || (inclusive && s == 0);
   };
   std::size_t n = 0;

@@ -229,7 +229,38 @@ std::array<decltype(LF{}(0.0)), 3> point_h(const Cut& E, const Mu& m, LF L) {
   }
 }
 
+// The convolution vertex p + b that parameter m on E is by construction (C0/C1/Pt, or a crossing
+// that struct_end places at a natural end); false when not known structurally.
+bool struct_vertex(const Cut& E, const Mu& m, Vec2& p, Vec2& b) {
+  if (m.k == Mu::Pt) {
+    p = m.p;
+    b = m.b;
+    return true;
+  }
+  const int e = struct_end(E, m);
+  if (e < 0) return false;
+  p = e == 0 ? E.pt : (E.b_edge ? E.pt : E.e1);
+  b = e == 0 ? E.pb : (E.b_edge ? E.e1 : E.pb);
+  return true;
+}
+
 bool same_point(const Cut& E1, const Mu& m1, const Cut& E2, const Mu& m2) {
+  {  // the same vertex by construction: equal without the (rational) fallback that ties need
+    Vec2 p1, b1, p2, b2;
+    if (struct_vertex(E1, m1, p1, b1) && struct_vertex(E2, m2, p2, b2) && p1 == p2 && b1 == b2) return true;
+  }
+  // The crossing of the same two (non-parallel) lines, named from either side.
+  if (m1.k == Mu::Line && m2.k == Mu::Line &&
+      ((same_cut_line(E1, m2.o) && same_cut_line(m1.o, E2)) || (same_cut_line(E1, E2) && same_cut_line(m1.o, m2.o))))
+    return true;
+  // A coordinate certified different by the cheap tier decides first: on axis-parallel input one
+  // coordinate often ties exactly, and deciding it would need the rational fallback.
+  {
+    const auto a = point_h(E1, m1, exact::LiftFl{});
+    const auto b = point_h(E2, m2, exact::LiftFl{});
+    for (int c = 0; c < 2; ++c)
+      if (exact::certified_sign(a[c] * b[2] - b[c] * a[2]) != 2) return false;
+  }
   for (int c = 0; c < 2; ++c) {
     const int s = exact_sign([&](auto L) {
       auto a = point_h(E1, m1, L);
