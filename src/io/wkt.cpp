@@ -198,8 +198,8 @@ ConvexPolygon read_convex_polygon(const std::filesystem::path& path, std::string
   WktPolygon w = read_wkt_polygon(path);
   const std::string src = path.string();
   if (w.rings.size() > 1)
-    throw InvalidInput(src + ": convex polygons cannot have holes (non-convex polygons with holes "
-                             "are not supported yet)");
+    throw InvalidInput(src + ": convex polygons cannot have holes (read it with io::read_polygon: "
+                             "polygons with holes are supported against a convex polygon)");
   try {
     return ConvexPolygon(w.rings[0], name);
   } catch (const InvalidInput& e) {

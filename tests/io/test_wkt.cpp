@@ -234,7 +234,7 @@ TEST_F(WktFiles, ConvexPolygonErrorsPointAtTheVertexLine) {
   EXPECT_EQ(convex_error(path), path + ":3: " + polygon_error(flat));
 
   path = write("holes.wkt", "POLYGON ((0 0, 10 0, 10 10, 0 10), (2 2, 2 4, 4 4))");
-  EXPECT_EQ(convex_error(path), path + ": convex polygons cannot have holes (non-convex polygons with holes are not supported yet)");
+  EXPECT_EQ(convex_error(path), path + ": convex polygons cannot have holes (read it with io::read_polygon: polygons with holes are supported against a convex polygon)");
 
   path = (dir_ / "missing.wkt").string();
   EXPECT_EQ(convex_error(path), path + ": cannot read file (No such file or directory)");
