@@ -22,6 +22,15 @@ echo "== real nesting pieces (ESICUP trousers items 14 and 16) at t = (1, 3)  (o
 "$pd" depth "$data/trousers_item14.wkt" "$data/trousers_item16.wkt" --offset 1,3 --json \
   --svg out/demo_nesting.svg
 
+echo "== non-convex P (ESICUP trousers item 0) against convex Q (item 16) at t = (8, 6): σ, σ_d up,"
+echo "   and complete separation downwards (Q must leave the pocket entirely)  (out/demo_pocket.svg)"
+"$pd" depth "$data/trousers_item0.wkt" "$data/trousers_item16.wkt" --offset 8,6 --svg out/demo_pocket.svg
+"$pd" depth "$data/trousers_item0.wkt" "$data/trousers_item16.wkt" --offset 8,6 --direction 0,1 --json
+"$pd" depth "$data/trousers_item0.wkt" "$data/trousers_item16.wkt" --offset 8,6 --direction 0,-1 --separate --json
+
+echo "== a plate with a hole, the hexagon inside the hole overlapping its rim  (out/demo_hole.svg)"
+"$pd" depth "$data/plate_with_hole.wkt" "$data/hexagon.wkt" --offset 3.5,2.5 --svg out/demo_hole.svg
+
 echo "== batch: offsets x,y and directions dx,dy (0,0 asks for σ)"
 printf 'x,y,dx,dy\n2.5,2,0,0\n2.5,2,1,0\n-1,2,1,0.3\n10,10,0,0\n' > out/demo_queries.csv
 "$pd" batch "$data/octagon.wkt" "$data/hexagon.wkt" --queries out/demo_queries.csv
