@@ -12,6 +12,7 @@
 // Stops when at most kTopSize vertices remain or nothing can be removed. In practice ~27% of
 // the vertices disappear per level, so there are about 2 log2 n levels; O(n log n) time (the
 // twin arrays are rebuilt by sorting per level), O(n) memory (levels shrink geometrically).
+#include "convex3/cap_triangulation.hpp"
 #include "convex3/polytope_data.hpp"
 
 #include <algorithm>
@@ -20,45 +21,7 @@
 namespace pendepth::convex3 {
 
 namespace {
-
-constexpr int kMaxRemovedDegree = 8;
 constexpr std::size_t kTopSize = 12;
-
-// Retriangulation of the hole of a removed vertex: triangles (i, m, j) over link indices.
-bool cap_triangulation(const std::vector<Vec3>& P, const std::vector<int>& link,
-                       std::vector<std::array<int, 3>>& out) {
-  const int k = static_cast<int>(link.size());
-  auto valid = [&](int i, int m, int j) {
-    for (int t = 0; t < k; ++t)
-      if (t != i && t != m && t != j &&
-          predicates::orient3d(P[link[i]], P[link[m]], P[link[j]], P[link[t]]) > 0)
-        return false;
-    return true;
-  };
-  // choice[i][j]: apex m of the triangle closing sub-polygon i..j, -1 impossible, -2 empty.
-  int choice[kMaxRemovedDegree][kMaxRemovedDegree];
-  for (int len = 1; len < k; ++len)
-    for (int i = 0; i + len < k; ++i) {
-      int j = i + len;
-      choice[i][j] = -1;
-      if (len == 1) { choice[i][j] = -2; continue; }
-      for (int m = i + 1; m < j && choice[i][j] == -1; ++m)
-        if (choice[i][m] != -1 && choice[m][j] != -1 && valid(i, m, j)) choice[i][j] = m;
-    }
-  if (choice[0][k - 1] == -1) return false;
-  std::vector<std::pair<int, int>> todo{{0, k - 1}};
-  while (!todo.empty()) {
-    auto [i, j] = todo.back();
-    todo.pop_back();
-    int m = choice[i][j];
-    if (m < 0) continue;
-    out.push_back({i, m, j});
-    todo.push_back({i, m});
-    todo.push_back({m, j});
-  }
-  return true;
-}
-
 }  // namespace
 
 void build_dk_hierarchy(PolytopeData& d) {
@@ -110,7 +73,12 @@ void build_dk_hierarchy(PolytopeData& d) {
       link.clear(), spoke.clear(), caps.clear();
       int h = out[v];
       do { spoke.push_back(h); link.push_back(L.target(h)); h = L.ccw(h); } while (h != out[v]);
-      bool ok = cap_triangulation(P, link, caps);
+      bool ok = cap_triangulation(
+          static_cast<int>(link.size()),
+          [&](int i, int m, int j, int t) {
+            return predicates::orient3d(P[link[i]], P[link[m]], P[link[j]], P[link[t]]) > 0;
+          },
+          caps);
       assert(ok && "no convex retriangulation of a hole");
       (void)ok;
       const int k = static_cast<int>(link.size());

@@ -22,6 +22,8 @@
 // (F <= 2n - 4 faces).
 #include "convex3/outer_hierarchy.hpp"
 
+#include "convex3/cap_triangulation.hpp"
+
 #include <algorithm>
 #include <cassert>
 #include <numeric>
@@ -32,7 +34,6 @@ namespace pendepth::convex3 {
 
 namespace {
 
-constexpr int kMaxRemovedDegree = 8;
 constexpr std::size_t kTopSize = 16;
 
 template <class T>
@@ -61,36 +62,6 @@ struct Builder {
         return det4(pa, pb, pc, pe);
       });
     return -s;
-  }
-
-  bool cap_triangulation(const std::vector<int>& link, std::vector<std::array<int, 3>>& out) const {
-    const int k = static_cast<int>(link.size());
-    auto valid = [&](int i, int m, int j) {
-      for (int t = 0; t < k; ++t)
-        if (t != i && t != m && t != j && orient(link[i], link[m], link[j], link[t]) > 0) return false;
-      return true;
-    };
-    int choice[kMaxRemovedDegree][kMaxRemovedDegree];
-    for (int len = 1; len < k; ++len)
-      for (int i = 0; i + len < k; ++i) {
-        int j = i + len;
-        choice[i][j] = -1;
-        if (len == 1) { choice[i][j] = -2; continue; }
-        for (int m = i + 1; m < j && choice[i][j] == -1; ++m)
-          if (choice[i][m] != -1 && choice[m][j] != -1 && valid(i, m, j)) choice[i][j] = m;
-      }
-    if (choice[0][k - 1] == -1) return false;
-    std::vector<std::pair<int, int>> todo{{0, k - 1}};
-    while (!todo.empty()) {
-      auto [i, j] = todo.back();
-      todo.pop_back();
-      int m = choice[i][j];
-      if (m < 0) continue;
-      out.push_back({i, m, j});
-      todo.push_back({i, m});
-      todo.push_back({m, j});
-    }
-    return true;
   }
 };
 
@@ -294,7 +265,9 @@ std::shared_ptr<const OuterHierarchy> build_outer_hierarchy(const PolytopeData& 
       link.clear(), spoke.clear(), caps.clear();
       int h = outh[v];
       do { spoke.push_back(h); link.push_back(L.target(h)); h = L.ccw(h); } while (h != outh[v]);
-      bool capped = b.cap_triangulation(link, caps);
+      bool capped = cap_triangulation(
+          static_cast<int>(link.size()),
+          [&](int i, int m, int j, int t) { return b.orient(link[i], link[m], link[j], link[t]) > 0; }, caps);
       assert(capped && "no convex retriangulation of a dual hole");
       (void)capped;
       const int k = static_cast<int>(link.size());
