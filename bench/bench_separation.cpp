@@ -3,6 +3,7 @@
 // (tests/nonconvex2/envelope_dc.hpp, O(n log n)), for one envelope and for one
 // PairDepth2::separation query (both variants include the overlap test the query reports).
 // P: a random star polygon or a thick spiral with n vertices; Q: a 16-vertex star. n = 10 … 10^5.
+// BM_Overlapping times the overlap test alone (reported by every separation query).
 //   bench_separation --benchmark_filter=Envelope
 #include <pendepth/depth2_nonconvex.hpp>
 
@@ -53,7 +54,7 @@ struct Case {
   Polygon P, Q;
   pendepth::PairDepth2 query;
   Vec2 t, d{0.6, 0.8};
-  Case(Polygon p, Polygon q) : P(std::move(p)), Q(std::move(q)), query(P, Q), t(P.vertices()[0] - Q.vertices()[0]) {}
+  Case(Polygon p, Polygon q) : P(std::move(p)), Q(std::move(q)), query(P, Q), t(P.vertices()[0] - Q.vertices()[0] + Vec2(0.3141, 0.2718)) {}  // generic: no exact contact
 };
 
 // Inputs are built once per (shape, n) and reused by the four benchmarks.
@@ -90,6 +91,13 @@ void BM_SeparationDC(benchmark::State& st) {
   st.counters["n"] = double(c.P.size());
 }
 
+// The overlap test alone: the part of a separation query that is not the envelope walk and merge.
+void BM_Overlapping(benchmark::State& st) {
+  const Case& c = input(int(st.range(0)), int(st.range(1)));
+  for (auto _ : st) benchmark::DoNotOptimize(c.query.overlapping(c.t));
+  st.counters["n"] = double(c.P.size());
+}
+
 void sizes(benchmark::internal::Benchmark* b) {
   for (int shape : {0, 1})
     for (int n : {10, 100, 1000, 10000, 100000}) b->Args({shape, n});
@@ -100,6 +108,7 @@ BENCHMARK(BM_EnvelopeWalk)->Apply(sizes);
 BENCHMARK(BM_EnvelopeDC)->Apply(sizes);
 BENCHMARK(BM_SeparationWalk)->Apply(sizes);
 BENCHMARK(BM_SeparationDC)->Apply(sizes);
+BENCHMARK(BM_Overlapping)->Apply(sizes);
 
 }  // namespace
 

@@ -53,6 +53,7 @@ Depth2 PairDepth2::separation(const Vec2& t, const Vec2& d_in) const {
   const Vec2 zero(0, 0);
   auto shift = [&](const Level& l) -> const Vec2& { return l.q ? t : zero; };
   auto cmp = [&](const Level& a, const Level& b) {
+    if (a.v == b.v && a.q == b.q) return 0;  // one vertex (a shifted one would reach the rational tier)
     const Vec2 &p = point(a), &pt = shift(a), &q = point(b), &qt = shift(b);
     return exact_sign([&](auto L) {
       auto x = L(p.x()) + L(pt.x()) - L(q.x()) - L(qt.x()), y = L(p.y()) + L(pt.y()) - L(q.y()) - L(qt.y());
@@ -92,7 +93,18 @@ Depth2 PairDepth2::separation(const Vec2& t, const Vec2& d_in) const {
     return std::pair{N, Da * Db};
   };
   auto den_sign = [&](const Cand& c) { return exact_sign([&](auto L) { return ND(c, L).second; }); };
+  // Edges g and h of S pass through one point at the level of z: the same edge, or two edges
+  // sharing an endpoint on that level (a continuous envelope at a breakpoint).
+  auto meet_at = [&](const Polygon& S, bool q, std::uint32_t g, std::uint32_t h, const Level& z) {
+    if (g == h) return true;
+    const std::uint32_t gn = static_cast<std::uint32_t>(S.next(g)), hn = static_cast<std::uint32_t>(S.next(h));
+    const std::uint32_t v = gn == h ? h : hn == g ? g : UINT32_MAX;
+    return v != UINT32_MAX && cmp({v, q}, z) == 0;
+  };
   auto better = [&](const Cand& x, const Cand& y) {  // λ(x) > λ(y)
+    // The one-sided limits on both sides of a continuous breakpoint are equal: skip the exact
+    // (rational) evaluation of that tie.
+    if (cmp(x.z, y.z) == 0 && meet_at(P, false, x.a, y.a, x.z) && meet_at(Q, true, x.b, y.b, x.z)) return false;
     const int s = exact_sign([&](auto L) {
       auto [nx, dx] = ND(x, L);
       auto [ny, dy] = ND(y, L);
