@@ -33,9 +33,11 @@
 // predicates: the level order (sign of d × (a − b)), the orientation, the order along d at equal
 // levels, and the order along d of an edge and a bound at a vertex's level (degree 6). A crossing
 // exactly at a bound's point happens only when the walk leaves the bound's own end vertex, and is
-// resolved by the turn there. The correctness argument above is the textbook one, specialised;
-// the tests compare every envelope with an independent divide-and-conquer construction on random
-// stars, spirals, mazes, notched polygons, combs, nesting pieces and degenerate directions.
+// resolved by the turn there. The window rules follow Joe–Simpson's case analysis specialised to
+// a viewpoint at infinity; the argument is sketched here, not written out as a proof. The tests
+// compare every envelope with an independent divide-and-conquer construction (random stars,
+// spirals, mazes, notched polygons, combs, holes, nesting pieces, degenerate directions; every
+// state and window kind above is exercised).
 // Departure from the textbook algorithms: the viewpoint is at infinity, so every breakpoint is a
 // vertex level and no intersection point is ever constructed; windows are (level vertex, bounds).
 #include "nonconvex2/envelope.hpp"
