@@ -64,10 +64,12 @@ class PairDepth2 {
   /// Complete separation along d (kind Separation), DHS §6: the right envelope of P's outer ring
   /// seen from infinity along +d and the left envelope of Q's outer ring seen from −∞ are merged by
   /// the coordinate perpendicular to d; the answer is the largest one-sided limit of (P envelope −
-  /// Q envelope) at the merged breakpoints, clamped at 0. Departure from the paper: each envelope
-  /// is computed by divide and conquer over the edges (merging two envelopes of non-crossing
-  /// segments in linear time), O(n log n + m log m) per query instead of the paper's linear-time
-  /// visibility-polygon algorithm. `overlapping` reports t ∈ O.
+  /// Q envelope) at the merged breakpoints, clamped at 0. Holes never matter (a hole lies inside
+  /// the outer ring, which alone bounds what the other shape can reach from infinity). Each
+  /// envelope is the external visibility polygon of the outer ring from the point at infinity,
+  /// built by a linear-time stack walk (the paper's "standard visibility-polygon algorithm"); the
+  /// merge and evaluation are linear: O(n + m) per query, plus the overlap test reported in
+  /// `overlapping` (t ∈ O).
   Depth2 separation(const Vec2& t, const Vec2& d) const;
 
   std::size_t triangle_count_p() const;

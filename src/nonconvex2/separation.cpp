@@ -8,19 +8,20 @@
 // max(0, sup_w (E_P − e_Q)) over the open common w-range. E_P is the upper envelope of the edges
 // of P's outer ring with d × e > 0 (interior on their −u side: holes and other edges are never
 // rightmost), e_Q the lower envelope of Q's outer-ring edges with d × e < 0 — the "visibility
-// profile from the point at infinity" of the paper. Both are linear between merged breakpoints, so
-// the supremum is the largest one-sided limit at a breakpoint: for each elementary open interval,
-// (P's envelope edge − Q's envelope edge) evaluated at both ends. Zero-width contacts (horizontal
-// edges, touching envelopes) do not count because only open intervals are used.
+// profile from the point at infinity" of the paper, each built in linear time by the visibility
+// walk of envelope.cpp. Both are linear between merged breakpoints, so the supremum is the largest
+// one-sided limit at a breakpoint: for each elementary open interval, (P's envelope edge − Q's
+// envelope edge) evaluated at both ends. Zero-width contacts (edges parallel to d, touching
+// envelopes) do not count because only open intervals are used.
 //
-// Departure from the paper: each envelope is computed by divide and conquer (two envelopes of
-// non-crossing segments merge in linear time: per elementary interval the larger of two segments,
-// compared exactly at the interval's midpoint level), O(n log n + m log m) per query instead of
-// the paper's linear-time visibility-polygon algorithm; the merge and evaluation are linear.
+// Cost: O(n + m) per query (two envelope walks, one linear merge), as in the paper; plus the overlap
+// test whose answer the result reports. The previous divide-and-conquer envelope (O(n log n)) is
+// kept as the tests' oracle (tests/nonconvex2/envelope_dc.hpp).
 #include <algorithm>
 #include <cmath>
 
 #include "geometry/exact.hpp"
+#include "nonconvex2/envelope.hpp"
 #include "nonconvex2/query.hpp"
 
 namespace pendepth {
@@ -29,83 +30,7 @@ namespace {
 
 using exact::exact_sign;
 
-struct Piece {
-  std::uint32_t lo, hi, edge;  // levels of vertices lo < hi; edge g from g to next(g)
-};
-
-// Upper envelope (largest u = dir·x) of the outer-ring edges of `shape` with dir × e > 0, as a
-// function of the level w = dir × x. Pieces sorted by level.
-class Envelope {
- public:
-  Envelope(const Polygon& shape, const Vec2& dir) : S_(shape), V_(shape.vertices()), dir_(dir) {}
-
-  int cmp_level(std::uint32_t a, std::uint32_t b) const {
-    const Vec2 &p = V_[a], &q = V_[b], &d = dir_;
-    return exact_sign([&](auto L) { return L(d.x()) * (L(p.y()) - L(q.y())) - L(d.y()) * (L(p.x()) - L(q.x())); });
-  }
-
-  // Sign of u_a − u_b at the level midway between z0 and z1 (edges a, b span that open interval).
-  int cmp_edges(std::uint32_t a, std::uint32_t b, std::uint32_t z0, std::uint32_t z1) const {
-    const Vec2 &a0 = V_[a], &a1 = V_[S_.next(a)], &b0 = V_[b], &b1 = V_[S_.next(b)];
-    const Vec2 &y0 = V_[z0], &y1 = V_[z1], &d = dir_;
-    return exact_sign([&](auto L) {
-      auto cr = [&](const Vec2& p) { return L(d.x()) * L(p.y()) - L(d.y()) * L(p.x()); };
-      auto dt = [&](const Vec2& p) { return L(d.x()) * L(p.x()) + L(d.y()) * L(p.y()); };
-      auto cre = [&](const Vec2& p, const Vec2& q) { return cr(q) - cr(p); };
-      auto dte = [&](const Vec2& p, const Vec2& q) { return dt(q) - dt(p); };
-      auto Da = cre(a0, a1), Db = cre(b0, b1);
-      auto W = cr(y0) + cr(y1);
-      auto ua = (L(2.0) * dt(a0) * Da + (W - L(2.0) * cr(a0)) * dte(a0, a1)) * Db;
-      auto ub = (L(2.0) * dt(b0) * Db + (W - L(2.0) * cr(b0)) * dte(b0, b1)) * Da;
-      return ua - ub;
-    });
-  }
-
-  std::vector<Piece> build() const {
-    std::vector<std::vector<Piece>> parts;
-    const std::size_t n = S_.ring(0).size();
-    for (std::uint32_t g = 0; g < n; ++g) {
-      const std::uint32_t h = static_cast<std::uint32_t>(S_.next(g));
-      if (cmp_level(g, h) < 0) parts.push_back({{g, h, g}});
-    }
-    while (parts.size() > 1) {
-      std::vector<std::vector<Piece>> next;
-      for (std::size_t k = 0; k + 1 < parts.size(); k += 2) next.push_back(merge(parts[k], parts[k + 1]));
-      if (parts.size() % 2) next.push_back(std::move(parts.back()));
-      parts = std::move(next);
-    }
-    return parts.empty() ? std::vector<Piece>{} : parts[0];
-  }
-
- private:
-  std::vector<Piece> merge(const std::vector<Piece>& A, const std::vector<Piece>& B) const {
-    auto less = [&](std::uint32_t a, std::uint32_t b) { return cmp_level(a, b) < 0; };
-    std::vector<std::uint32_t> la, lb, lv;
-    for (const Piece& p : A) la.insert(la.end(), {p.lo, p.hi});
-    for (const Piece& p : B) lb.insert(lb.end(), {p.lo, p.hi});
-    std::merge(la.begin(), la.end(), lb.begin(), lb.end(), std::back_inserter(lv), less);
-    std::vector<Piece> out;
-    std::size_t ia = 0, ib = 0;
-    for (std::size_t k = 0; k + 1 < lv.size(); ++k) {
-      const std::uint32_t x = lv[k], y = lv[k + 1];
-      if (cmp_level(x, y) >= 0) continue;  // equal levels: no open interval between them
-      while (ia < A.size() && cmp_level(A[ia].hi, x) <= 0) ++ia;
-      while (ib < B.size() && cmp_level(B[ib].hi, x) <= 0) ++ib;
-      const bool ha = ia < A.size() && cmp_level(A[ia].lo, x) <= 0;
-      const bool hb = ib < B.size() && cmp_level(B[ib].lo, x) <= 0;
-      if (!ha && !hb) continue;
-      std::uint32_t e = ha ? A[ia].edge : B[ib].edge;
-      if (ha && hb && cmp_edges(A[ia].edge, B[ib].edge, x, y) < 0) e = B[ib].edge;
-      if (!out.empty() && out.back().edge == e && cmp_level(out.back().hi, x) == 0) out.back().hi = y;
-      else out.push_back({x, y, e});
-    }
-    return out;
-  }
-
-  const Polygon& S_;
-  std::span<const Vec2> V_;
-  Vec2 dir_;
-};
+using Piece = nonconvex2::EnvelopePiece;
 
 // A breakpoint level: a vertex of P (q = false) or of Q + t.
 struct Level {
@@ -119,8 +44,8 @@ Depth2 PairDepth2::separation(const Vec2& t, const Vec2& d_in) const {
   const Vec2 d = nonconvex2::check_and_scale(t, d_in);
   const Polygon &P = impl_->P, &Q = impl_->Q;
   const auto VP = P.vertices(), VQ = Q.vertices();
-  const std::vector<Piece> ep = Envelope(P, d).build();
-  std::vector<Piece> eq = Envelope(Q, -d).build();  // max of −u over levels −w: reverse to increasing w
+  const std::vector<Piece> ep = nonconvex2::right_envelope(P, d);
+  std::vector<Piece> eq = nonconvex2::right_envelope(Q, -d);  // max of −u over levels −w: reverse to increasing w
   std::reverse(eq.begin(), eq.end());
   for (Piece& p : eq) std::swap(p.lo, p.hi);
 
@@ -128,6 +53,7 @@ Depth2 PairDepth2::separation(const Vec2& t, const Vec2& d_in) const {
   const Vec2 zero(0, 0);
   auto shift = [&](const Level& l) -> const Vec2& { return l.q ? t : zero; };
   auto cmp = [&](const Level& a, const Level& b) {
+    if (a.v == b.v && a.q == b.q) return 0;  // one vertex (a shifted one would reach the rational tier)
     const Vec2 &p = point(a), &pt = shift(a), &q = point(b), &qt = shift(b);
     return exact_sign([&](auto L) {
       auto x = L(p.x()) + L(pt.x()) - L(q.x()) - L(qt.x()), y = L(p.y()) + L(pt.y()) - L(q.y()) - L(qt.y());
@@ -167,7 +93,18 @@ Depth2 PairDepth2::separation(const Vec2& t, const Vec2& d_in) const {
     return std::pair{N, Da * Db};
   };
   auto den_sign = [&](const Cand& c) { return exact_sign([&](auto L) { return ND(c, L).second; }); };
+  // Edges g and h of S pass through one point at the level of z: the same edge, or two edges
+  // sharing an endpoint on that level (a continuous envelope at a breakpoint).
+  auto meet_at = [&](const Polygon& S, bool q, std::uint32_t g, std::uint32_t h, const Level& z) {
+    if (g == h) return true;
+    const std::uint32_t gn = static_cast<std::uint32_t>(S.next(g)), hn = static_cast<std::uint32_t>(S.next(h));
+    const std::uint32_t v = gn == h ? h : hn == g ? g : UINT32_MAX;
+    return v != UINT32_MAX && cmp({v, q}, z) == 0;
+  };
   auto better = [&](const Cand& x, const Cand& y) {  // λ(x) > λ(y)
+    // The one-sided limits on both sides of a continuous breakpoint are equal: skip the exact
+    // (rational) evaluation of that tie.
+    if (cmp(x.z, y.z) == 0 && meet_at(P, false, x.a, y.a, x.z) && meet_at(Q, true, x.b, y.b, x.z)) return false;
     const int s = exact_sign([&](auto L) {
       auto [nx, dx] = ND(x, L);
       auto [ny, dy] = ND(y, L);
