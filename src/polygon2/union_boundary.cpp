@@ -815,6 +815,11 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
       std::vector<std::pair<double, std::uint32_t>> order;
       order.reserve(near.size());
       for (std::uint32_t g : near) {
+        // The candidate lies on the boundary of its own sausages (a segment: its edge's; an arc:
+        // the two edges at its vertex, whose outward normals bound the arc's normals), never in
+        // their interiors: skipping them changes no cover and keeps the range test from wasting
+        // its tries on them.
+        if (g == C.p || (C.arc && g == prev[C.p])) continue;
         const Vec2 e = V[g] + V[P.next(g)];
         order.push_back({std::abs(e.x() - cx) + std::abs(e.y() - cy), g});
       }
