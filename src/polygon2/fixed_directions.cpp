@@ -52,6 +52,7 @@
 #include <string>
 
 #include "geometry/exact.hpp"
+#include "polygon2/fixed_directions_persistent.hpp"
 #include "polygon2/query_impl.hpp"
 #include "polygon2/union_boundary.hpp"
 
@@ -210,10 +211,10 @@ struct PolygonDirectionSet::Impl {
   struct Direction {
     Vec2 given{0, 0}, d{0, 0};  // as given, and scaled by a power of two (as along() does)
     std::vector<Sub> subs;
-    std::vector<KeyRef> keys;                // distinct u-values, increasing
-    std::vector<std::uint32_t> slab_begin;   // CSR: slab s ↦ order[slab_begin[s] .. slab_begin[s+1])
-    std::vector<std::uint32_t> order;        // sub-piece indices, along d
-    std::vector<std::uint8_t> thin;          // slab without a certified reference line
+    std::vector<KeyRef> keys;          // distinct u-values, increasing
+    polygon2::PersistentOrder order;   // version s = the sub-pieces spanning slab s, along d
+    std::vector<std::uint8_t> thin;    // slab without a certified reference line
+    Direction() : order(0) {}
   };
 
   const PolygonDepth2::Impl* pd = nullptr;  // stable when the PolygonDepth2 is moved
@@ -310,25 +311,30 @@ void PolygonDirectionSet::Impl::build(Direction& D) {
     Sub& s = D.subs[ends[i].sub];
     (ends[i].high ? s.hi : s.lo) = std::uint32_t(D.keys.size() - 1);
   }
-  // 3. Per slab: the sub-pieces spanning it, ordered along d on a reference line.
+  // 3. Sweep the slabs: the sub-pieces spanning slab k, ordered along d on a reference line,
+  // form version k of a persistent sorted sequence. Sub-pieces do not cross inside slabs, so
+  // version k is version k − 1 minus the sub-pieces ending at key k plus those starting there,
+  // inserted by binary search on slab k's reference line.
   const std::size_t slabs = D.keys.empty() ? 0 : D.keys.size() - 1;
-  std::vector<std::uint32_t> count(slabs + 1, 0);
-  for (const Sub& s : D.subs)
-    for (std::uint32_t k = s.lo; k < s.hi; ++k) ++count[k];
-  D.slab_begin.assign(slabs + 1, 0);
-  for (std::size_t k = 0; k < slabs; ++k) D.slab_begin[k + 1] = D.slab_begin[k] + count[k];
-  D.order.assign(D.slab_begin[slabs], 0);
-  std::vector<std::uint32_t> fill(D.slab_begin.begin(), D.slab_begin.end() - 1);
-  for (std::uint32_t i = 0; i < D.subs.size(); ++i)
-    for (std::uint32_t k = D.subs[i].lo; k < D.subs[i].hi; ++k) D.order[fill[k]++] = i;
+  std::vector<std::uint32_t> start_begin(slabs + 2, 0), end_begin(slabs + 2, 0);  // CSR by key
+  for (const Sub& s : D.subs) ++start_begin[s.lo + 1], ++end_begin[s.hi + 1];
+  for (std::size_t k = 0; k <= slabs; ++k) start_begin[k + 1] += start_begin[k], end_begin[k + 1] += end_begin[k];
+  std::vector<std::uint32_t> starting(D.subs.size()), ending(D.subs.size());
+  {
+    std::vector<std::uint32_t> fs(start_begin.begin(), start_begin.end() - 1), fe(end_begin.begin(), end_begin.end() - 1);
+    for (std::uint32_t i = 0; i < D.subs.size(); ++i) starting[fs[D.subs[i].lo]++] = i, ending[fe[D.subs[i].hi]++] = i;
+  }
+  D.order = polygon2::PersistentOrder(D.subs.size());
   D.thin.assign(slabs, 0);
   std::vector<Cut> cache(D.subs.size());  // covering element on the current reference line
   std::vector<std::uint32_t> stamp(D.subs.size(), std::uint32_t(-1));
-  std::vector<std::uint32_t> prev, next;  // sorted lists of the previous and current slab
-  bool have_prev = false;
+  std::vector<std::uint32_t> pending;  // started in thin slabs, not inserted yet
   const double dd = d.x() * d.x() + d.y() * d.y();
   const Vec2 across(-d.y(), d.x());  // u(s·across) = s·|d|²
   for (std::size_t k = 0; k < slabs; ++k) {
+    D.order.begin(std::uint32_t(k));
+    for (std::uint32_t e = end_begin[k]; e < end_begin[k + 1]; ++e)
+      if (D.order.contains(ending[e])) D.order.erase(ending[e]);
     const SymPoint a = key_point(D, k), b = key_point(D, k + 1);
     const double ua = u_value(a, d), ub_ = u_value(b, d);
     // A double point strictly inside the slab, certified exactly; a few candidates.
@@ -342,12 +348,10 @@ void PolygonDirectionSet::Impl::build(Direction& D) {
       }
     }
     if (!ok) {
-      D.thin[k] = 1;
-      have_prev = false;
+      D.thin[k] = 1;  // queries here defer; its new sub-pieces wait for the next certified slab
+      pending.insert(pending.end(), starting.begin() + start_begin[k], starting.begin() + start_begin[k + 1]);
       continue;
     }
-    auto first = D.order.begin() + D.slab_begin[k], last = D.order.begin() + D.slab_begin[k + 1];
-    const std::size_t size = std::size_t(last - first);
     // Strict total order on this slab's sub-pieces: along d on the reference line; coincident
     // copies (a slit) leaving first, then by index.
     auto cut = [&](std::uint32_t i) -> const Cut& {
@@ -363,30 +367,13 @@ void PolygonDirectionSet::Impl::build(Direction& D) {
       if (D.subs[x].leaves != D.subs[y].leaves) return D.subs[x].leaves;
       return x < y;
     };
-    // Sub-pieces do not cross inside slabs, so the previous slab's order, minus the sub-pieces
-    // ending at key k, is usually this slab's order too: check it (one comparison per adjacent
-    // pair) and insert the sub-pieces starting at key k by binary search. The total order makes
-    // the result identical to a full sort, which is the fallback.
-    next.clear();
-    bool incremental = have_prev;
-    if (incremental) {
-      for (std::uint32_t i : prev)
-        if (D.subs[i].hi > k) next.push_back(i);
-      for (std::size_t i = 1; i < next.size() && incremental; ++i) incremental = less(next[i - 1], next[i]);
-      if (incremental) {
-        for (auto it = first; it != last; ++it)
-          if (D.subs[*it].lo == k) next.insert(std::upper_bound(next.begin(), next.end(), *it, less), *it);
-        incremental = next.size() == size;
-      }
-    }
-    if (!incremental) {
-      next.assign(first, last);
-      std::sort(next.begin(), next.end(), less);
-    }
-    std::copy(next.begin(), next.end(), first);
-    prev.swap(next);
-    have_prev = true;
+    for (std::uint32_t i : pending)
+      if (D.subs[i].hi > k) D.order.insert(i, less);
+    pending.clear();
+    for (std::uint32_t e = start_begin[k]; e < start_begin[k + 1]; ++e) D.order.insert(starting[e], less);
+    D.order.commit();
   }
+  D.order.finish();
 }
 
 PolygonDirectionSet::PolygonDirectionSet(const PolygonDepth2& pd, std::vector<Vec2> directions)
@@ -418,8 +405,8 @@ const Vec2& PolygonDirectionSet::direction(std::size_t k) const { return impl_->
 std::size_t PolygonDirectionSet::bytes() const {
   std::size_t b = sizeof(Impl) + impl_->dirs.capacity() * sizeof(Impl::Direction);
   for (const auto& D : impl_->dirs)
-    b += D.subs.capacity() * sizeof(Impl::Sub) + D.keys.capacity() * sizeof(Impl::KeyRef) +
-         (D.slab_begin.capacity() + D.order.capacity()) * sizeof(std::uint32_t) + D.thin.capacity();
+    b += D.subs.capacity() * sizeof(Impl::Sub) + D.keys.capacity() * sizeof(Impl::KeyRef) + D.order.bytes() +
+         D.thin.capacity();
   return b;
 }
 
@@ -442,26 +429,19 @@ Depth2 PolygonDirectionSet::along(const Vec2& t, std::size_t k) const {
   if (compare_u(t, impl_->key_point(D, lo), D.d) == 0 || D.thin[lo - 1]) {
     return impl_->deferred(t, D.d);
   }
-  const std::size_t slab = lo - 1;
-  const std::uint32_t* first = D.order.data() + D.slab_begin[slab];
-  const std::uint32_t* last = D.order.data() + D.slab_begin[slab + 1];
-  // First sub-piece not behind t.
-  std::size_t a = 0, b = std::size_t(last - first);
-  while (a < b) {
-    const std::size_t mid = (a + b) / 2;
-    if (impl_->side(D, D.subs[first[mid]], t) < 0) a = mid + 1;
-    else b = mid;
-  }
-  if (first + a == last) return outside;
-  const Impl::Sub& s = D.subs[first[a]];
+  // First sub-piece not behind t, and the next one.
+  const auto [first, next] = D.order.first_not_behind(
+      std::uint32_t(lo - 1), [&](std::uint32_t i) { return impl_->side(D, D.subs[i], t) < 0; });
+  if (first == polygon2::PersistentOrder::kNil) return outside;
+  const Impl::Sub& s = D.subs[first];
   if (!s.leaves || impl_->side(D, s, t) == 0) return outside;  // t ∉ O, or t on ∂O
-  // A coincident copy next in the list (a slit of ∂O, or pieces touching at this point): the
+  // A coincident copy next in the order (a slit of ∂O, or pieces touching at this point): the
   // first boundary point is a tie between pieces, which along() breaks by its own search order;
   // defer to it so witnesses and features are the same.
   polygon2::Hit h;
-  if ((first + a + 1 != last &&
-       polygon2::compare_cuts(impl_->covering_element(D, s, t), impl_->covering_element(D, D.subs[first[a + 1]], t), t,
-                              D.d) == 0) ||
+  if ((next != polygon2::PersistentOrder::kNil &&
+       polygon2::compare_cuts(impl_->covering_element(D, s, t), impl_->covering_element(D, D.subs[next], t), t, D.d) ==
+           0) ||
       !impl_->ub->first_hit(s.piece, t, D.d, h)) {
     return impl_->deferred(t, D.d);
   }

@@ -1,16 +1,18 @@
 // PolygonDirectionSet (DHS §6, src/polygon2/fixed_directions.cpp): σ_d through the per-direction
-// slab decomposition must equal PolygonDepth2::along bit for bit (every field of the result), on
+// slab decomposition (persistent order) must equal PolygonDepth2::along bit for bit (every field of the result), on
 // random polygons with holes (integer and real coordinates), combs whose pockets Q fits exactly
 // (slits of ∂O), a frame with collinear vertices, and nesting pieces; placements random, on
 // convolution vertices p − q, on edges of the R_i, on ends of ∂O's pieces, and on slab boundary
 // lines (a piece end moved along d, exact on integer inputs); directions axis-parallel, random
 // integer, parallel to P's and Q's edges (elements parallel to d have no u-extent), irrational.
 // The reference along() is itself checked against the exact CGAL union in test_depth.cpp.
-// Pinned seeds. Also: bad input errors, and the space per direction (printed).
+// Pinned seeds. Also: bad input errors, and the space per direction: linear in the pieces of ∂O on
+// combs seen across their teeth (the slab method's quadratic case), with a stated constant.
 #include <pendepth/depth2_polygon.hpp>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -211,6 +213,49 @@ TEST(PolygonDirectionSet, SpacePerDirection) {
   const PolygonDepth2 pc(comb, ConvexPolygon{{0, 0}, {2, 0}, {2, 2}, {0, 2}});
   const PolygonDirectionSet along_teeth(pc, {{0, 1}}), across(pc, {{1, 0}});
   std::printf("comb of 100 teeth: %zu bytes along the teeth, %zu across\n", along_teeth.bytes(), across.bytes());
+}
+
+// The old worst case of the slab method: a comb seen across its teeth, tilted so that every
+// tooth corner is its own key and a line parallel to d crosses many teeth (the sorted lists per
+// slab took Θ(n²) space: 8.2 MB at n = 10⁴). The persistent order keeps bytes() per direction
+// linear: at most kBytesPerPiece bytes per piece of ∂O, for n = 10² … 10⁴ (a bound of the
+// structure: ~24 bytes of sub-piece + 16 of key ends + 4 + 1 per slab + expected < 2 treap
+// nodes of 20 bytes per sub-piece end). Queries on those combs equal along() bit for bit.
+TEST(PolygonDirectionSet, LinearSpaceOnCombsAcrossTheTeeth) {
+  constexpr double kBytesPerPiece = 200;
+  std::mt19937_64 rng(31337);
+  const std::vector<Vec2> ds{{1, 0.01}, {1, -0.003}, {100, 1}, {1, 0}, {0, 1}, {std::sqrt(2.0), 1 / 3.0}};
+  double worst = 0;
+  for (int n : {100, 1000, pendepth_test::scaled(10000)}) {
+    const Polygon comb = Polygon::simple(polygon2_test::comb_ring(n / 4, 1, 3, 20, 2));
+    const PolygonDepth2 pc(comb, ConvexPolygon{{0, 0}, {2, 0}, {2, 2}, {0, 2}});
+    const auto stats = pc.boundary_stats();
+    const double pieces = double(stats.segments + stats.arcs);
+    std::printf("comb n=%d (%.0f pieces of ∂O), bytes per direction (per piece):", n, pieces);
+    for (std::size_t k = 0; k < ds.size(); ++k) {
+      const PolygonDirectionSet one(pc, {ds[k]});
+      const double per_piece = double(one.bytes()) / pieces;
+      std::printf(" %zu (%.0f)", one.bytes(), per_piece);
+      worst = std::max(worst, per_piece);
+      EXPECT_LE(per_piece, kBytesPerPiece) << "n=" << n << " d#" << k;
+    }
+    std::printf("\n");
+    const PolygonDirectionSet set(pc, ds);
+    const double W = double(n / 4) * 4;
+    std::uniform_real_distribution<double> ux(-3, W + 3), uy(-3, 25);
+    std::size_t overlapping = 0, queries = pendepth_test::scaled(300);
+    for (std::size_t q = 0; q < queries; ++q) {
+      Vec2 t(ux(rng), uy(rng));
+      if (q % 3 == 0) t = Vec2(std::round(t.x()), std::round(t.y()));  // on slab lines of the axis directions
+      for (std::size_t k = 0; k < ds.size(); ++k) {
+        const Depth2 want = pc.along(t, ds[k]);
+        expect_identical(set.along(t, k), want, "comb n=" + std::to_string(n) + " d#" + std::to_string(k));
+        overlapping += want.overlapping;
+      }
+    }
+    EXPECT_GT(overlapping, queries * ds.size() / 10) << n;
+  }
+  std::printf("largest: %.0f bytes per piece (bound %.0f)\n", worst, kBytesPerPiece);
 }
 
 // The set refers to the PolygonDepth2's heap state, so moving the PolygonDepth2 keeps it valid.
