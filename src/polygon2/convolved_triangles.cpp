@@ -207,31 +207,6 @@ Cut ConvolvedTriangles::edge_of(const Tri& T, std::size_t idx, std::size_t k) co
   return c;
 }
 
-// Number of edges of R (triangle's and B's) whose angle is < angle(x) (<= when inclusive).
-std::size_t ConvolvedTriangles::count_below(const Tri& T, const Vec2& x0, const Vec2& x1, bool inclusive, int bedge,
-                                            bool reversed) const {
-  const std::size_t m = b_.size();
-  auto below = [&](const Vec2& e0, const Vec2& e1) {
-    // The same edge (a line along an edge of T or of B) ties by construction; deciding it here
-    // skips the rational fallback that an exact zero costs compare_angle.
-    int s = (e0 == x0 && e1 == x1) ? 0 : compare_angle(e0, e1, x0, x1);
-    return s < 0 || (inclusive && s == 0);
-  };
-  std::size_t n = 0;
-  for (int j = 0; j < T.n; ++j) n += below(T.v[j], T.v[(j + 1) % T.n]);
-  if (bedge >= 0) {  // x = ± B edge `bedge`: B's part is known (angles increase along B)
-    if (!reversed) return n + bedge + (inclusive ? 1 : 0);
-    return n + (inclusive ? opp_le_[bedge] : opp_lt_[bedge]);
-  }
-  std::size_t lo = 0, hi = m;
-  while (lo < hi) {
-    std::size_t mid = (lo + hi) / 2;
-    if (below(b_[mid], b_[(mid + 1) % m])) lo = mid + 1;
-    else hi = mid;
-  }
-  return n + lo;
-}
-
 bool ConvolvedTriangles::contains_interior(std::size_t i, const Vec2& t) const { return contains_of(tri_[i], t); }
 bool ConvolvedTriangles::segment_contains_interior(std::size_t g, const Vec2& t) const { return contains_of(seg_[g], t); }
 
@@ -265,19 +240,60 @@ bool ConvolvedTriangles::contains_of(const Tri& T, const Vec2& t) const {
 }
 
 bool ConvolvedTriangles::line_interval(std::size_t i, const Vec2& t, const Vec2& d, Cut& entry, Cut& exit) const {
-  return line_interval_impl(tri_[i], i, t, kZero, kZero, d, entry, exit);
+  return line_interval_impl(tri_[i], i, t, kZero, dir_of(kZero, kZero, d, -1), entry, exit);
 }
 
 bool ConvolvedTriangles::line_interval(std::size_t i, const Cut& line, Cut& entry, Cut& exit) const {
-  return line_interval_impl(tri_[i], i, line.pt, line.pb, line.e0, line.e1, entry, exit, line.b_edge ? int(line.b) : -1);
+  return line_interval_impl(tri_[i], i, line.pt, line.pb, line_dir(line), entry, exit);
+}
+
+bool ConvolvedTriangles::line_interval(std::size_t i, const Cut& line, const LineDir& dir, Cut& entry, Cut& exit) const {
+  return line_interval_impl(tri_[i], i, line.pt, line.pb, dir, entry, exit);
 }
 
 bool ConvolvedTriangles::segment_line_interval(std::size_t g, const Vec2& t, const Vec2& d, Cut& entry, Cut& exit) const {
-  return line_interval_impl(seg_[g], g, t, kZero, kZero, d, entry, exit);
+  return line_interval_impl(seg_[g], g, t, kZero, dir_of(kZero, kZero, d, -1), entry, exit);
 }
 
 bool ConvolvedTriangles::segment_line_interval(std::size_t g, const Cut& line, Cut& entry, Cut& exit) const {
-  return line_interval_impl(seg_[g], g, line.pt, line.pb, line.e0, line.e1, entry, exit, line.b_edge ? int(line.b) : -1);
+  return line_interval_impl(seg_[g], g, line.pt, line.pb, line_dir(line), entry, exit);
+}
+
+bool ConvolvedTriangles::segment_line_interval(std::size_t g, const Cut& line, const LineDir& dir, Cut& entry,
+                                               Cut& exit) const {
+  return line_interval_impl(seg_[g], g, line.pt, line.pb, dir, entry, exit);
+}
+
+LineDir ConvolvedTriangles::line_dir(const Cut& line) const {
+  return dir_of(line.pb, line.e0, line.e1, line.b_edge ? int(line.b) : -1);
+}
+
+LineDir ConvolvedTriangles::dir_of(const Vec2& s2, const Vec2& d0, const Vec2& d1, int bedge) const {
+  const std::size_t m = b_.size();
+  // A B edge's own rank is known without predicates (only when the line really is that edge).
+  const int be_idx =
+      (bedge >= 0 && s2 == d0 && d0 == b_[std::size_t(bedge) % m] && d1 == b_[(std::size_t(bedge) + 1) % m]) ? bedge : -1;
+  LineDir r;
+  r.d0 = d0;
+  r.d1 = d1;
+  if (be_idx >= 0) {
+    r.b = {static_cast<std::uint32_t>(be_idx + 1), static_cast<std::uint32_t>(be_idx), opp_le_[be_idx], opp_lt_[be_idx]};
+    return r;
+  }
+  // B edges with angle < (<= when inclusive) angle(x1 − x0); the same-edge tie decided by construction.
+  auto count = [&](const Vec2& x0, const Vec2& x1, bool inclusive) {
+    std::size_t lo = 0, hi = m;
+    while (lo < hi) {
+      const std::size_t mid = (lo + hi) / 2;
+      const Vec2 &e0 = b_[mid], &e1 = b_[(mid + 1) % m];
+      const int s = (e0 == x0 && e1 == x1) ? 0 : compare_angle(e0, e1, x0, x1);
+      if (s < 0 || (inclusive && s == 0)) lo = mid + 1;
+      else hi = mid;
+    }
+    return static_cast<std::uint32_t>(lo);
+  };
+  r.b = {count(d0, d1, true), count(d0, d1, false), count(d1, d0, true), count(d1, d0, false)};
+  return r;
 }
 
 std::array<double, 4> ConvolvedTriangles::box(std::size_t i) const { return box_of(tri_[i]); }
@@ -300,17 +316,26 @@ std::array<double, 4> ConvolvedTriangles::box_of(const Tri& T) const {
 }
 
 // The line is s1 + s2 + μ·(d1 − d0); entry/exit cuts give μ as their λ with that line as the ray.
-bool ConvolvedTriangles::line_interval_impl(const Tri& T, std::size_t i, const Vec2& s1, const Vec2& s2, const Vec2& d0,
-                                            const Vec2& d1, Cut& entry, Cut& exit, int bedge) const {
+bool ConvolvedTriangles::line_interval_impl(const Tri& T, std::size_t i, const Vec2& s1, const Vec2& s2, const LineDir& dir,
+                                            Cut& entry, Cut& exit) const {
   const std::size_t K = b_.size() + T.n;
+  const Vec2 &d0 = dir.d0, &d1 = dir.d1;
   // Front edges (cross(d, e) > 0) have angles in (θ, θ + π): vertices fs .. fe (cyclic); back
   // edges vertices bs .. be. X(v) = cross(d, v − t) increases along the front chain from its
   // minimum at fs to its maximum at fe, and decreases along the back chain.
-  const std::size_t m = b_.size();
-  const int be_idx =
-      (bedge >= 0 && s2 == d0 && d0 == b_[std::size_t(bedge) % m] && d1 == b_[(std::size_t(bedge) + 1) % m]) ? bedge : -1;
-  const std::size_t fs = count_below(T, d0, d1, true, be_idx, false) % K, be = count_below(T, d0, d1, false, be_idx, false) % K;
-  const std::size_t bs = count_below(T, d1, d0, true, be_idx, true) % K, fe = count_below(T, d1, d0, false, be_idx, true) % K;
+  // Ranks in the edge order of R: the triangle's edges below ±d (one angle comparison each serves
+  // both the strict and the inclusive count) plus B's (precomputed in dir).
+  std::array<std::uint32_t, 4> n = dir.b;
+  for (int j = 0; j < T.n; ++j) {
+    const Vec2 &e0 = T.v[j], &e1 = T.v[(j + 1) % T.n];
+    const int sf = (e0 == d0 && e1 == d1) ? 0 : compare_angle(e0, e1, d0, d1);
+    const int sr = (e0 == d1 && e1 == d0) ? 0 : compare_angle(e0, e1, d1, d0);
+    n[0] += sf <= 0;
+    n[1] += sf < 0;
+    n[2] += sr <= 0;
+    n[3] += sr < 0;
+  }
+  const std::size_t fs = n[0] % K, be = n[1] % K, bs = n[2] % K, fe = n[3] % K;
   auto X = [&](std::size_t k) {
     int slot;
     std::size_t bj;

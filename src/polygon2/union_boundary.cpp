@@ -834,12 +834,13 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
     // Fan triangles: only the candidate's natural ends can lie in them (elsewhere Q + x has points
     // outside P near the contact); test the first and last element.
     Cut in, out;
-    for (std::uint32_t rj : near) {
-      if (rj < NS) break;
-      for (std::uint32_t j : {0u, Lc - 1}) {
-        const Cut E = elem(C, j);
-        if (R.line_interval(rj - NS, E, in, out)) add_cover(j, E, in, out);
-        if (Lc == 1) break;
+    if (!near.empty() && near.front() >= NS) {
+      const Cut E0 = elem(C, 0), E1 = elem(C, Lc - 1);
+      const LineDir D0 = R.line_dir(E0), D1 = Lc == 1 ? D0 : R.line_dir(E1);
+      for (std::uint32_t rj : near) {
+        if (rj < NS) break;
+        if (R.line_interval(rj - NS, E0, D0, in, out)) add_cover(0, E0, in, out);
+        if (Lc > 1 && R.line_interval(rj - NS, E1, D1, in, out)) add_cover(Lc - 1, E1, in, out);
       }
     }
     // Sausages: recursive element ranges. A range whose (padded) box has its four corners inside
@@ -879,10 +880,11 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
         // Stop once the element is covered: by one interval, or by a prefix (from its start)
         // and a suffix (to its end) that overlap.
         const Cut E = elem(C, lo);
+        const LineDir D = R.line_dir(E);
         bool has_pre = false, has_suf = false;
         Mu pre_end, suf_start;
         for (std::uint32_t g : near) {
-          if (g >= NS || !boxes_meet(sbox[g], rb) || !R.segment_line_interval(g, E, in, out)) continue;
+          if (g >= NS || !boxes_meet(sbox[g], rb) || !R.segment_line_interval(g, E, D, in, out)) continue;
           const std::size_t before = ivs.size();
           add_cover(lo, E, in, out);
           if (ivs.size() == before) continue;
