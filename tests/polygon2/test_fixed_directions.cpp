@@ -15,7 +15,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <set>
 
+#include "polygon2/fixed_directions_persistent.hpp"
 #include "polygon2/query_impl.hpp"
 #include "polygon2/union_boundary.hpp"
 #include "shapes.hpp"
@@ -213,6 +215,64 @@ TEST(PolygonDirectionSet, SpacePerDirection) {
   const PolygonDepth2 pc(comb, ConvexPolygon{{0, 0}, {2, 0}, {2, 2}, {0, 2}});
   const PolygonDirectionSet along_teeth(pc, {{0, 1}}), across(pc, {{1, 0}});
   std::printf("comb of 100 teeth: %zu bytes along the teeth, %zu across\n", along_teeth.bytes(), across.bytes());
+}
+
+// The persistent sequence alone against snapshots of a std::set: random sweeps (each element
+// inserted once, erased at most once, as in the slab sweep; versions without a commit, like thin
+// slabs), small integer keys so ties fall to the id. Every version after finish() must list
+// exactly its snapshot, and first_not_behind must return the first element ≥ a threshold and its
+// successor. Nodes stay linear in the updates (expected O(1) copies per update, DSST).
+TEST(PersistentOrder, MatchesSnapshotsOfASortedSet) {
+  using pendepth::polygon2::PersistentOrder;
+  std::mt19937_64 rng(2024);
+  std::size_t worst_nodes = 0, worst_updates = 1;
+  for (int run = 0; run < pendepth_test::scaled(40); ++run) {
+    const std::uint32_t N = 1 + std::uint32_t(rng() % (run < 20 ? 40 : 3000));
+    std::vector<int> key(N);
+    for (auto& k : key) k = int(rng() % (1 + N / 4));
+    auto less = [&](std::uint32_t a, std::uint32_t b) { return key[a] != key[b] ? key[a] < key[b] : a < b; };
+    PersistentOrder order(N);
+    std::set<std::uint32_t, decltype(less)> live(less);
+    std::vector<std::vector<std::uint32_t>> snap;  // per version; empty and uncommitted alike
+    std::vector<bool> committed;
+    std::uint32_t next = 0;
+    std::size_t updates = 0;
+    for (std::uint32_t v = 0; next < N || !live.empty(); ++v) {
+      order.begin(v);
+      std::vector<std::uint32_t> out;
+      for (std::uint32_t x : live)
+        if (rng() % 4 == 0) out.push_back(x);
+      for (std::uint32_t x : out) order.erase(x), live.erase(x), ++updates;
+      for (std::uint32_t k = std::uint32_t(rng() % 6); k > 0 && next < N; --k, ++next) {
+        ASSERT_FALSE(order.contains(next));
+        order.insert(next, less), live.insert(next), ++updates;
+        ASSERT_TRUE(order.contains(next));
+      }
+      const bool commit = rng() % 8 != 0;
+      if (commit) order.commit();
+      snap.emplace_back(commit ? std::vector<std::uint32_t>(live.begin(), live.end()) : std::vector<std::uint32_t>{});
+      committed.push_back(commit);
+    }
+    order.finish();
+    for (std::uint32_t v = 0; v < snap.size(); ++v) {
+      ASSERT_EQ(order.elements(v), snap[v]) << "run " << run << " version " << v;
+      for (int q = 0; q < 4; ++q) {
+        const int threshold = int(rng() % (N / 4 + 3)) - 1;
+        const auto [first, after] =
+            order.first_not_behind(v, [&](std::uint32_t e) { return key[e] < threshold; });
+        auto it = std::find_if(snap[v].begin(), snap[v].end(), [&](std::uint32_t e) { return key[e] >= threshold; });
+        const std::uint32_t want_first = it == snap[v].end() ? PersistentOrder::kNil : *it;
+        const std::uint32_t want_after =
+            it == snap[v].end() || it + 1 == snap[v].end() ? PersistentOrder::kNil : *(it + 1);
+        ASSERT_EQ(first, want_first) << "run " << run << " version " << v << " threshold " << threshold;
+        ASSERT_EQ(after, want_after) << "run " << run << " version " << v << " threshold " << threshold;
+      }
+    }
+    if (double(order.node_count()) / double(updates) > double(worst_nodes) / double(worst_updates))
+      worst_nodes = order.node_count(), worst_updates = updates;
+    EXPECT_LE(order.node_count(), 3 * updates) << "run " << run;
+  }
+  std::printf("persistent order: at most %.2f nodes per update\n", double(worst_nodes) / double(worst_updates));
 }
 
 // The old worst case of the slab method: a comb seen across its teeth, tilted so that every
