@@ -706,7 +706,11 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
   };
   std::vector<Raw> raw;
   std::vector<Interval> ivs;
-  std::vector<std::uint32_t> near;
+  std::vector<std::uint32_t> near, pool;
+  struct Range {
+    std::uint32_t lo, hi, b, e;  // B-edge range [lo, hi) of the candidate; its sausages pool[b, e)
+  };
+  std::vector<Range> st;
   for (std::uint32_t ci = 0; ci < cand.size(); ++ci) {
     const Candidate& C = cand[ci];
     const std::uint32_t Lc = C.arc ? C.count : 1;
@@ -847,23 +851,32 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
     // one int S_g is covered at once (S_g convex); a single element is cut by every sausage whose
     // box meets it, until one covers it entirely.
     auto rng_box = [&](std::uint32_t lo, std::uint32_t hi) { return C.arc ? range_box(V[C.p], C.b0 + lo, hi - lo) : cb[ci]; };
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> st{{0, Lc}};
+    // Each range keeps the sausages meeting its box, in `near`'s order, as pool[b, e); a sub-range's
+    // box lies inside its parent's, so it filters its parent's list instead of all of `near`.
+    pool.clear();
+    for (std::uint32_t g : near)
+      if (g < NS) pool.push_back(g);
+    st.clear();
+    st.push_back({0, Lc, 0, static_cast<std::uint32_t>(pool.size())});
     while (!st.empty()) {
-      auto [lo, hi] = st.back();
+      const auto [lo, hi, pb, pe] = st.back();
       st.pop_back();
       const Box rb = rng_box(lo, hi);
-      bool whole = false, any = false;
+      const auto b = static_cast<std::uint32_t>(pool.size());
+      for (std::uint32_t k = pb; k < pe; ++k)
+        if (boxes_meet(sbox[pool[k]], rb)) pool.push_back(pool[k]);
+      const auto e = static_cast<std::uint32_t>(pool.size());
+      if (b == e) continue;
+      bool whole = false;
       int tries = 0;
-      for (std::uint32_t g : near) {
-        if (g >= NS || !boxes_meet(sbox[g], rb)) continue;
-        any = true;
+      for (std::uint32_t k = b; k < e; ++k) {
+        const std::uint32_t g = pool[k];
         const Box& sb = sbox[g];
         if (sb[0] > rb[0] || sb[1] > rb[1] || sb[2] < rb[2] || sb[3] < rb[3]) continue;
         whole = R.segment_contains_interior(g, Vec2(rb[0], rb[1])) && R.segment_contains_interior(g, Vec2(rb[2], rb[1])) &&
                 R.segment_contains_interior(g, Vec2(rb[2], rb[3])) && R.segment_contains_interior(g, Vec2(rb[0], rb[3]));
         if (whole || ++tries >= 3) break;
       }
-      if (!any) continue;
       if (whole) {
         Interval I;
         I.s.j = lo;
@@ -883,8 +896,9 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
         const LineDir D = R.line_dir(E);
         bool has_pre = false, has_suf = false;
         Mu pre_end, suf_start;
-        for (std::uint32_t g : near) {
-          if (g >= NS || !boxes_meet(sbox[g], rb) || !R.segment_line_interval(g, E, D, in, out)) continue;
+        for (std::uint32_t k = b; k < e; ++k) {
+          const std::uint32_t g = pool[k];
+          if (!R.segment_line_interval(g, E, D, in, out)) continue;
           const std::size_t before = ivs.size();
           add_cover(lo, E, in, out);
           if (ivs.size() == before) continue;
@@ -903,8 +917,8 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
         continue;
       }
       const std::uint32_t mid = (lo + hi) / 2;
-      st.push_back({lo, mid});
-      st.push_back({mid, hi});
+      st.push_back({lo, mid, b, e});
+      st.push_back({mid, hi, b, e});
     }
     {
       std::vector<Interval> copy = ivs;
