@@ -53,11 +53,18 @@
 namespace pendepth::polygon2 {
 
 using exact::exact_sign;
-using predicates::compare_angle;
 
 namespace {
 
 const Vec2 kZero(0, 0);
+
+// compare_angle with the tie of an edge with itself decided by construction (an exact zero costs
+// the rational fallback; arcs of different vertices share their B edges).
+int compare_angle(const Vec2& a0, const Vec2& a1, const Vec2& b0, const Vec2& b1) {
+  if (a0 == b0 && a1 == b1) return 0;
+  return predicates::compare_angle(a0, a1, b0, b1);
+}
+
 
 // A parameter μ on an element's line S + μ·D (S = pt + pb, D = e1 − e0), as num/den.
 struct Mu {
