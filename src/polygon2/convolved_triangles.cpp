@@ -58,6 +58,41 @@ int side_of_line(const Vec2& a, const Vec2& b, const Vec2& s1, const Vec2& s2, c
   });
 }
 
+// The floating-point values the two filters above start from (no guarantee: guesses only).
+double orient_sums_guess(const Vec2& a1, const Vec2& b1, const Vec2& a2, const Vec2& b2, const Vec2& t) {
+  const double ux = (a2.x() - a1.x()) + (b2.x() - b1.x()), uy = (a2.y() - a1.y()) + (b2.y() - b1.y());
+  const double wx = (t.x() - a1.x()) - b1.x(), wy = (t.y() - a1.y()) - b1.y();
+  return ux * wy - uy * wx;
+}
+double side_of_line_guess(const Vec2& a, const Vec2& b, const Vec2& s1, const Vec2& s2, const Vec2& d0, const Vec2& d1) {
+  const double dx = d1.x() - d0.x(), dy = d1.y() - d0.y();
+  const double wx = (a.x() - s1.x()) + (b.x() - s2.x()), wy = (a.y() - s1.y()) + (b.y() - s2.y());
+  return dx * wy - dy * wx;
+}
+
+// The last index in [lo, hi) where a monotone predicate holds (true at lo, false at hi). Binary
+// search on a floating-point guess of the predicate, then the exact predicate at the two indices
+// around the answer, which decide it (monotone); the exact search only when the guess was wrong.
+// The same answer as the exact binary search with about log(hi − lo) fewer exact evaluations.
+template <class Guess, class Exact>
+std::size_t last_true(std::size_t lo, std::size_t hi, Guess&& guess, Exact&& exact) {
+  std::size_t a = lo, b = hi;
+  while (b - a > 1) {
+    const std::size_t mid = a + (b - a) / 2;
+    if (guess(mid)) a = mid;
+    else b = mid;
+  }
+  if ((a == lo || exact(a)) && (b == hi || !exact(b))) return a;
+  a = lo;
+  b = hi;
+  while (b - a > 1) {
+    const std::size_t mid = a + (b - a) / 2;
+    if (exact(mid)) a = mid;
+    else b = mid;
+  }
+  return a;
+}
+
 template <class Lift>
 auto cut_num(const Cut& c, const Vec2& t, Lift L) {
   return (L(c.pt.x()) + L(c.pb.x()) - L(t.x())) * (L(c.e1.y()) - L(c.e0.y())) -
@@ -168,15 +203,6 @@ ConvolvedTriangles::ConvolvedTriangles(const Polygon& P, const ConvexPolygon& Q)
 
 void ConvolvedTriangles::vertex(std::size_t i, std::size_t k, int& slot, std::size_t& bj) const { vertex_of(tri_[i], k, slot, bj); }
 
-void ConvolvedTriangles::vertex_of(const Tri& T, std::size_t k, int& slot, std::size_t& bj) const {
-  const std::size_t m = b_.size();
-  if (k >= m + T.n) k %= m + T.n;
-  int a = 0;
-  while (a < T.n && a + T.c[a] < k) ++a;
-  slot = a == T.n ? 0 : a;
-  bj = k - a;  // < m + T.n - a <= 2m: one conditional subtraction replaces the division
-  if (bj >= m) bj -= m;
-}
 
 Cut ConvolvedTriangles::edge(std::size_t i, std::size_t k) const { return edge_of(tri_[i], i, k); }
 
@@ -227,12 +253,13 @@ bool ConvolvedTriangles::contains_of(const Tri& T, const Vec2& t) const {
   };
   if (f(1) <= 0 || f(K - 1) >= 0) return false;
   // Last k in [1, K-2] with f(k) > 0 (monotone: true then false).
-  std::size_t lo = 1, hi = K - 1;  // f(lo) > 0, f(hi) <= 0
-  while (hi - lo > 1) {
-    std::size_t mid = (lo + hi) / 2;
-    if (f(mid) > 0) lo = mid;
-    else hi = mid;
-  }
+  const std::size_t lo = last_true(
+      1, K - 1,
+      [&](std::size_t k) {
+        pt(k, a, b);
+        return orient_sums_guess(a0, b0, a, b, t) > 0;
+      },
+      [&](std::size_t k) { return f(k) > 0; });
   Vec2 a1, b1, a2, b2;
   pt(lo, a1, b1);
   pt(lo + 1, a2, b2);
@@ -344,23 +371,20 @@ bool ConvolvedTriangles::line_interval_impl(const Tri& T, std::size_t i, const V
   };
   if (X(fs) >= 0 || X(fe) <= 0) return false;
   const std::size_t nf = (fe + K - fs) % K, nb = (be + K - bs) % K;
-  // Exit: last offset o in [0, nf) with X(v_{fs+o}) <= 0.
-  std::size_t lo = 0, hi = nf;  // X(fs + lo) < 0, X(fs + hi) > 0
-  while (hi - lo > 1) {
-    std::size_t mid = (lo + hi) / 2;
-    if (X((fs + mid) % K) <= 0) lo = mid;
-    else hi = mid;
-  }
-  exit = edge_of(T, i, (fs + lo) % K);
-  // Entry: last offset o in [0, nb) with X(v_{bs+o}) >= 0.
-  lo = 0;
-  hi = nb;  // X(bs + lo) > 0, X(bs + hi) < 0
-  while (hi - lo > 1) {
-    std::size_t mid = (lo + hi) / 2;
-    if (X((bs + mid) % K) >= 0) lo = mid;
-    else hi = mid;
-  }
-  entry = edge_of(T, i, (bs + lo) % K);
+  auto G = [&](std::size_t k) {
+    int slot;
+    std::size_t bj;
+    vertex_of(T, k, slot, bj);
+    return side_of_line_guess(T.v[slot], b_[bj], s1, s2, d0, d1);
+  };
+  // Exit: last offset o in [0, nf) with X(v_{fs+o}) <= 0 (X(fs) < 0, X(fe) > 0).
+  const std::size_t ox = last_true(
+      0, nf, [&](std::size_t o) { return G((fs + o) % K) <= 0; }, [&](std::size_t o) { return X((fs + o) % K) <= 0; });
+  exit = edge_of(T, i, (fs + ox) % K);
+  // Entry: last offset o in [0, nb) with X(v_{bs+o}) >= 0 (X(bs) > 0, X(be) < 0).
+  const std::size_t on = last_true(
+      0, nb, [&](std::size_t o) { return G((bs + o) % K) >= 0; }, [&](std::size_t o) { return X((bs + o) % K) >= 0; });
+  entry = edge_of(T, i, (bs + on) % K);
   return true;
 }
 

@@ -108,7 +108,16 @@ class ConvolvedTriangles {
     std::array<std::uint32_t, 3> c;
     int n = 3;  ///< 3: triangle; 2: edge sausage (id[2], v[2], c[2] unused)
   };
-  void vertex_of(const Tri& T, std::size_t k, int& slot, std::size_t& bj) const;
+  // Inline: the innermost step of every binary search on an R_i.
+  void vertex_of(const Tri& T, std::size_t k, int& slot, std::size_t& bj) const {
+    const std::size_t m = b_.size();
+    if (k >= m + T.n) k %= m + T.n;
+    int a = 0;
+    while (a < T.n && a + T.c[a] < k) ++a;
+    slot = a == T.n ? 0 : a;
+    bj = k - a;  // < m + T.n - a <= 2m: one conditional subtraction replaces the division
+    if (bj >= m) bj -= m;
+  }
   Cut edge_of(const Tri& T, std::size_t idx, std::size_t k) const;
   bool contains_of(const Tri& T, const Vec2& t) const;
   std::array<double, 4> box_of(const Tri& T) const;
