@@ -54,8 +54,9 @@
 // Complexity per direction, E = O(n) sub-pieces: build O(E log E) exact comparisons for the keys
 // plus expected O(E log E) cut comparisons (each O(log m) for arcs) for the sweep; space O(E):
 // the sub-pieces, the keys, one root and one flag per slab, and expected O(E) persistent nodes
-// (measured ≤ 130 bytes per piece of ∂O on combs seen across their teeth, n = 10² … 10⁴, where
-// the per-slab lists took Θ(n²)); query expected O(log n · log m) exact predicates (O(log n)
+// (per sub-piece: 20 bytes, two 4-byte key ends, ~2 slabs of a 4-byte root and a bit, ~2.4
+// nodes of 20 bytes; measured ≤ 102 bytes per piece of ∂O on combs seen across their teeth,
+// n = 10² … 10⁵, where the per-slab lists took Θ(n²): 3.7 kB per piece at n = 10⁴); query expected O(log n · log m) exact predicates (O(log n)
 // when the pieces met are segments).
 #include <pendepth/depth2_polygon.hpp>
 
@@ -213,21 +214,22 @@ SymPoint end_point(const EndPoint& e, const Cut& element) {
 struct PolygonDirectionSet::Impl {
   // A u-monotone run of elements [j0, j1] of one piece of ∂O.
   struct Sub {
-    std::uint32_t piece = 0, j0 = 0, j1 = 0;
+    std::uint32_t piece : 31 = 0;
+    std::uint32_t leaves : 1 = 0;  // u increases along the piece: the ray along +d leaves O here
+    std::uint32_t j0 = 0, j1 = 0;
     std::uint32_t lo = 0, hi = 0;  // key ranks of its u-range ends (lo < hi)
-    bool leaves = false;           // u increases along the piece: the ray along +d leaves O here
   };
   // One end of a sub-piece, for the key list: the low (u-min) or high end.
   struct KeyRef {
-    std::uint32_t sub = 0;
-    bool high = false;
+    std::uint32_t sub : 31 = 0;
+    std::uint32_t high : 1 = 0;
   };
   struct Direction {
     Vec2 given{0, 0}, d{0, 0};  // as given, and scaled by a power of two (as along() does)
     std::vector<Sub> subs;
     std::vector<KeyRef> keys;          // distinct u-values, increasing
     polygon2::PersistentOrder order;   // version s = the sub-pieces spanning slab s, along d
-    std::vector<std::uint8_t> thin;    // slab without a certified reference line
+    std::vector<bool> thin;            // slab without a certified reference line
     Direction() : order(0) {}
   };
 
@@ -339,7 +341,7 @@ void PolygonDirectionSet::Impl::build(Direction& D) {
     for (std::uint32_t i = 0; i < D.subs.size(); ++i) starting[fs[D.subs[i].lo]++] = i, ending[fe[D.subs[i].hi]++] = i;
   }
   D.order = polygon2::PersistentOrder(D.subs.size());
-  D.thin.assign(slabs, 0);
+  D.thin.assign(slabs, false);
   std::vector<Cut> cache(D.subs.size());  // covering element on the current reference line
   std::vector<std::uint32_t> stamp(D.subs.size(), std::uint32_t(-1));
   std::vector<std::uint32_t> pending;  // started in thin slabs, not inserted yet
@@ -362,7 +364,7 @@ void PolygonDirectionSet::Impl::build(Direction& D) {
       }
     }
     if (!ok) {
-      D.thin[k] = 1;  // queries here defer; its new sub-pieces wait for the next certified slab
+      D.thin[k] = true;  // queries here defer; its new sub-pieces wait for the next certified slab
       pending.insert(pending.end(), starting.begin() + start_begin[k], starting.begin() + start_begin[k + 1]);
       continue;
     }
@@ -378,7 +380,7 @@ void PolygonDirectionSet::Impl::build(Direction& D) {
     auto less = [&](std::uint32_t x, std::uint32_t y) {
       const int c = polygon2::compare_cuts(cut(x), cut(y), ref, d);
       if (c != 0) return c < 0;
-      if (D.subs[x].leaves != D.subs[y].leaves) return D.subs[x].leaves;
+      if (D.subs[x].leaves != D.subs[y].leaves) return D.subs[x].leaves != 0;
       return x < y;
     };
     for (std::uint32_t i : pending)
@@ -388,6 +390,8 @@ void PolygonDirectionSet::Impl::build(Direction& D) {
     D.order.commit();
   }
   D.order.finish();
+  D.subs.shrink_to_fit();
+  D.keys.shrink_to_fit();
 }
 
 PolygonDirectionSet::PolygonDirectionSet(const PolygonDepth2& pd, std::vector<Vec2> directions)
@@ -420,7 +424,7 @@ std::size_t PolygonDirectionSet::bytes() const {
   std::size_t b = sizeof(Impl) + impl_->dirs.capacity() * sizeof(Impl::Direction);
   for (const auto& D : impl_->dirs)
     b += D.subs.capacity() * sizeof(Impl::Sub) + D.keys.capacity() * sizeof(Impl::KeyRef) + D.order.bytes() +
-         D.thin.capacity();
+         D.thin.capacity() / 8;
   return b;
 }
 
