@@ -279,16 +279,50 @@ bool same_point(const Cut& E1, const Mu& m1, const Cut& E2, const Mu& m2) {
   return true;
 }
 
+// The point rounded: per coordinate exactly what exact::accurate_value (natural points) or
+// exact::accurate_ratio (crossings) return, with the homogeneous coordinates evaluated once per
+// tier instead of once per coordinate and tier.
 Vec2 approx_point(const Cut& E, const Mu& m) {
+  const auto fl = point_h(E, m, exact::LiftFl{});
+  std::array<exact::DD, 3> dd;
+  bool have_dd = false;
+  auto value = [&](int c, double& out) {  // exact::detail::floating_value on coordinate c
+    const exact::Fl& r = fl[c];
+    if (std::isfinite(r.v) && exact::safe_bound(r.e) <= std::abs(r.v) * 0x1p-53) {
+      out = r.v;
+      return true;
+    }
+    if (!have_dd) {
+      dd = point_h(E, m, exact::LiftDD{});
+      have_dd = true;
+    }
+    const exact::DD& d = dd[c];
+    if (exact::dd_finite(d) && exact::safe_bound(d.e) <= std::abs(d.hi) * 0x1p-54) {
+      out = d.hi;
+      return true;
+    }
+    return false;
+  };
+  Vec2 r;
   if (m.k == Mu::C0 || m.k == Mu::C1 || m.k == Mu::Pt) {
-    Vec2 r;
-    for (int c = 0; c < 2; ++c)
-      r[c] = exact::accurate_value([&](auto L) { return point_h(E, m, L)[c]; });
+    for (int c = 0; c < 2; ++c) {
+      double v;
+      r[c] = value(c, v) ? v : point_h(E, m, exact::LiftQ{})[c].v.get_d();
+    }
     return r;
   }
-  Vec2 r;
-  for (int c = 0; c < 2; ++c)
-    r[c] = exact::accurate_ratio([&](auto L) { return point_h(E, m, L)[c]; }, [&](auto L) { return point_h(E, m, L)[2]; });
+  for (int c = 0; c < 2; ++c) {
+    double a, b;
+    if (value(c, a) && value(2, b) && b != 0) {
+      const double q = a / b;
+      if (std::isfinite(q) && (q != 0 || a == 0)) {
+        r[c] = q;
+        continue;
+      }
+    }
+    const auto h = point_h(E, m, exact::LiftQ{});
+    r[c] = mpq_class(h[c].v / h[2].v).get_d();
+  }
   return r;
 }
 
@@ -1118,6 +1152,9 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
   std::vector<char> seen(KP, 0);
   std::vector<Piece> ordered;
   ordered.reserve(KP);
+  std::vector<Vec2> osp, oep;  // sp, ep in the new order
+  osp.reserve(KP);
+  oep.reserve(KP);
   for (std::size_t s0 = 0; s0 < KP; ++s0) {
     if (seen[s0]) continue;
     // Start an open chain at a piece nobody links to, if this one is on an open chain.
@@ -1129,6 +1166,8 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
       Piece pc = pieces_[k];
       pc.ring = static_cast<std::uint32_t>(rings_.size());
       ordered.push_back(pc);
+      osp.push_back(sp[k]);
+      oep.push_back(ep[k]);
       ++ring.count;
     }
     for (std::uint32_t q = 0; q < ring.count; ++q) {
@@ -1151,14 +1190,14 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
     for (std::uint32_t q = 0; q < rg.count; ++q) {
       const std::size_t k = rg.first + q;
       const std::size_t Le = element_count(k);
-      Vec2 prevp = start_point(k);
+      Vec2 prevp = osp[k];  // = start_point(k)
       for (std::size_t j = 1; j < Le; ++j) {
         const Cut E = element(k, j);
         const Vec2 v = E.pt + E.pb;
         acc(prevp, v);
         prevp = v;
       }
-      acc(prevp, end_point(k));
+      acc(prevp, oep[k]);  // = end_point(k)
     }
     if (std::abs(sum) > (64.0 + 4.0 * terms) * 0x1p-52 * mag + 0x1p-900) {
       rg.area_sign = sum > 0 ? 1 : -1;
