@@ -44,6 +44,10 @@ int side_of_line(const Vec2& a, const Vec2& b, const Vec2& s1, const Vec2& s2, c
   // s1 + d0 and s1 + d1 when s2 = d0 (a B edge at s1), s2 + d0 and s2 + d1 when s1 = d0.
   if (a == s1 && s2 == d0 && (b == d0 || b == d1)) return 0;
   if (b == s2 && s1 == d0 && (a == d0 || a == d1)) return 0;
+  // A shared summand cancels exactly: the sign is that of a plain cross product, whose exact
+  // zeros (parallel edges of axis-parallel input) the cheap tiers certify without rationals.
+  if (b == s2) return predicates::cross_edges(d0, d1, s1, a);
+  if (a == s1) return predicates::cross_edges(d0, d1, s2, b);
   // Double filter, as in orient_sums, on w = (a − s1) + (b − s2): |error| <= (2u + u²)·M for each
   // difference factor and w factor (M = sum of the |parts|), 8u·(Mdx·Mwy + Mdy·Mwx) overall.
   const double dx = d1.x() - d0.x(), dy = d1.y() - d0.y();

@@ -975,7 +975,9 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
       const Candidate& O = cand[oi];
       auto try_pair = [&](std::uint32_t j, const Cut& E, const Cut& F, const Mu& f0, const Mu& f1) {
         if (compare_angle(E.e0, E.e1, F.e0, F.e1) != 0) return;
-        const int side = exact_sign([&](auto L) {
+        // Same B vertex (parallel edges share their extreme vertex): it cancels exactly, and the
+        // plain cross product certifies the frequent exact zero (collinear edges) cheaply.
+        const int side = E.pb == F.pb ? predicates::cross_edges(E.e0, E.e1, E.pt, F.pt) : exact_sign([&](auto L) {
           auto Dx = L(E.e1.x()) - L(E.e0.x()), Dy = L(E.e1.y()) - L(E.e0.y());
           return Dx * (L(F.pt.y()) + L(F.pb.y()) - L(E.pt.y()) - L(E.pb.y())) -
                  Dy * (L(F.pt.x()) + L(F.pb.x()) - L(E.pt.x()) - L(E.pb.x()));
