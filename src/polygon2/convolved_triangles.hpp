@@ -43,7 +43,7 @@ double cut_value(const Cut& c, const Vec2& t, const Vec2& d);
 /// B edges whose angle is <= / < angle(d) and <= / < angle(−d). One binary search each (O(1) for a
 /// B edge); computed once per line and reused for every R_i and sausage it is cut with.
 struct LineDir {
-  Vec2 d0, d1;
+  Vec2 d0{0, 0}, d1{0, 0};
   std::array<std::uint32_t, 4> b{};  ///< B edges: <= d, < d, <= −d, < −d
 };
 

@@ -879,9 +879,15 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
     // Fan triangles: only the candidate's natural ends can lie in them (elsewhere Q + x has points
     // outside P near the contact); test the first and last element.
     Cut in, out;
+    LineDir seg_dir;  // a segment's direction data, computed at most once (O(log m))
+    bool have_seg_dir = false;
     if (!near.empty() && near.front() >= NS) {
       const Cut E0 = elem(C, 0), E1 = elem(C, Lc - 1);
       const LineDir D0 = R.line_dir(E0), D1 = Lc == 1 ? D0 : R.line_dir(E1);
+      if (!C.arc) {
+        seg_dir = D0;
+        have_seg_dir = true;
+      }
       for (std::uint32_t rj : near) {
         if (rj < NS) break;
         if (R.line_interval(rj - NS, E0, D0, in, out)) add_cover(0, E0, in, out);
@@ -934,7 +940,7 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
         // Stop once the element is covered: by one interval, or by a prefix (from its start)
         // and a suffix (to its end) that overlap.
         const Cut E = elem(C, lo);
-        const LineDir D = R.line_dir(E);
+        const LineDir D = have_seg_dir ? seg_dir : R.line_dir(E);
         bool has_pre = false, has_suf = false;
         Mu pre_end, suf_start;
         for (std::uint32_t k = b; k < e; ++k) {
