@@ -849,9 +849,8 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
     // Points of O: inside an edge sausage int(f_g ⊕ B) (Q + x meets the relative interior of f_g),
     // or inside int R_T for a triangle T around the candidate's P vertices (Q + x touching P at a
     // vertex from inside — the only contact placements with Q + x ⊂ P). Both sets lie in O.
-    // Encoded in `near` as g (sausage) or N + T (fan triangle).
+    // `near`: the sausages whose boxes meet the candidate's.
     near.clear();
-    const std::size_t NS = R.segment_count();
     X.sausages.overlap(cb[ci], [&](std::uint32_t g) { near.push_back(g); });
     {  // likely covers first: edges near the candidate's contact with P (its P edge or vertex),
        // which cross Q + x there when ∂P bends towards Q; the order only affects speed
@@ -872,26 +871,46 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
       const std::size_t head = std::min<std::size_t>(order.size(), 32);
       std::partial_sort(order.begin(), order.begin() + head, order.end());
       near.clear();
-      for (std::uint32_t v : {C.p, C.arc ? C.p : static_cast<std::uint32_t>(P.next(C.p))})
-        for (std::uint32_t T : R.triangles_at(v)) near.push_back(static_cast<std::uint32_t>(NS + T));
       for (const auto& o : order) near.push_back(o.second);
     }
     // Fan triangles: only the candidate's natural ends can lie in them (elsewhere Q + x has points
-    // outside P near the contact); test the first and last element.
+    // outside P near the contact, and x ∈ O is decided by the sausages). So R_T matters only when
+    // it contains the end x = v + b_e (v the P vertex, b_e the B vertex there): exactly when the
+    // triangle b_e + (v − T) meets int B, i.e. (both convex, b_e on ∂B) when its closed angle at
+    // b_e, from v − u1 to v − u2, meets B's open angle at b_e, from b_{e+1} − b_e to b_{e−1} − b_e.
+    // Exact and O(1); only then is the O(log m) interval computed.
     Cut in, out;
     LineDir seg_dir;  // a segment's direction data, computed at most once (O(log m))
     bool have_seg_dir = false;
-    if (!near.empty() && near.front() >= NS) {
-      const Cut E0 = elem(C, 0), E1 = elem(C, Lc - 1);
-      const LineDir D0 = R.line_dir(E0), D1 = Lc == 1 ? D0 : R.line_dir(E1);
-      if (!C.arc) {
-        seg_dir = D0;
-        have_seg_dir = true;
-      }
-      for (std::uint32_t rj : near) {
-        if (rj < NS) break;
-        if (R.line_interval(rj - NS, E0, D0, in, out)) add_cover(0, E0, in, out);
-        if (Lc > 1 && R.line_interval(rj - NS, E1, D1, in, out)) add_cover(Lc - 1, E1, in, out);
+    auto end_in_fan = [&](std::uint32_t T, std::uint32_t v, std::uint32_t e) {
+      const TriangleIds& t = R.triangle(T);
+      const int sl = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
+      const Vec2 &pv = V[v], &u1 = V[t[(sl + 1) % 3]], &u2 = V[t[(sl + 2) % 3]];
+      const Vec2 &be = B[e], &bn = B[(e + 1) % m], &bp = B[(e + m - 1) % m];
+      // v − u1 strictly inside B's angle
+      if (predicates::cross_edges(be, bn, u1, pv) > 0 && predicates::cross_edges(u1, pv, be, bp) > 0) return true;
+      // else they meet iff b_{e+1} − b_e lies in [v − u1, v − u2)
+      const int c = predicates::cross_edges(u1, pv, be, bn);
+      return (c > 0 || (c == 0 && predicates::dot_edges(u1, pv, be, bn) > 0)) && predicates::cross_edges(be, bn, u2, pv) > 0;
+    };
+    for (int side = 0; side < 2; ++side) {
+      const std::uint32_t j = side == 0 ? 0 : Lc - 1;
+      const std::uint32_t v = side == 0 || C.arc ? C.p : static_cast<std::uint32_t>(P.next(C.p));
+      const std::uint32_t e = side == 0 || !C.arc ? C.b0 : static_cast<std::uint32_t>((C.b0 + Lc) % m);
+      const Cut E = elem(C, j);
+      bool have_dir = false;
+      LineDir D;
+      for (std::uint32_t T : R.triangles_at(v)) {
+        if (!end_in_fan(T, v, e)) continue;
+        if (!have_dir) {
+          D = R.line_dir(E);
+          have_dir = true;
+          if (!C.arc) {
+            seg_dir = D;
+            have_seg_dir = true;
+          }
+        }
+        if (R.line_interval(T, E, D, in, out)) add_cover(j, E, in, out);
       }
     }
     // Sausages: recursive element ranges. A range whose (padded) box has its four corners inside
@@ -901,8 +920,7 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
     // Each range keeps the sausages meeting its box, in `near`'s order, as pool[b, e); a sub-range's
     // box lies inside its parent's, so it filters its parent's list instead of all of `near`.
     pool.clear();
-    for (std::uint32_t g : near)
-      if (g < NS) pool.push_back(g);
+    pool.assign(near.begin(), near.end());
     st.clear();
     st.push_back({0, Lc, 0, static_cast<std::uint32_t>(pool.size())});
     while (!st.empty()) {
