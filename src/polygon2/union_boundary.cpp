@@ -11,17 +11,23 @@
 //      outside P next to the contact, except possibly at the candidate's natural ends (Q's vertex
 //      at a P vertex). So x ∈ O ⇔ int(Q + x) meets the relative interior of some P edge f ⇔
 //      x ∈ int(f ⊕ B) (the edge "sausage", an implicit (m+2)-gon, ConvolvedTriangles::segment_*),
-//      or, at the ends, x ∈ int R_T for a triangle T around the P vertex (its fan). Sausages have
-//      small boxes (|f| + |B|; the R_i of long diagonals do not), found in a bounding-volume
-//      hierarchy (BVH); a segment meets an open convex (m+2)-gon in one open interval (O(log m)).
-//      Arcs are split recursively into B-edge ranges (boxes in O(1) from B's four extreme
-//      vertices); a range whose padded box has its four corners inside one sausage is covered at
+//      or, at the ends, x ∈ int R_T for a triangle T around the P vertex (its fan; R_T is cut
+//      with the end's element only when it contains the end, an exact O(1) angle test at B's
+//      vertex there). Sausages have small boxes (|f| + |B|; the R_i of long diagonals do not),
+//      found in a bounding-volume hierarchy (BVH); a segment meets an open convex (m+2)-gon in
+//      one open interval (O(log m)). A candidate's own sausages (its edge; an arc's two edges) are
+//      skipped: it lies on their boundaries. Arcs are split recursively into B-edge ranges
+//      (boxes in O(1) from B's four extreme vertices; a sub-range filters its parent's sausage
+//      list); a range whose padded box has its four corners inside one sausage is covered at
 //      once, a single B edge is cut by the sausages meeting it until one covers it. Same-
 //      orientation coinciding copies (collinear, overlapping, O on the same side) are removed from
 //      the candidate with the larger id (candidate BVH). Sorting the open intervals and sweeping
 //      leaves the closed remnants. Ties that are structural (two cuts on the same line, a
-//      convolution vertex on a line through it, B-edge angle ranks) are decided without
-//      arithmetic; all other decisions are filtered exact predicates.
+//      convolution vertex on a line through it, B-edge angle ranks, a B vertex shared by both
+//      sides of a side test) are decided without arithmetic; all other decisions are filtered
+//      exact predicates, and the O(log m) binary searches on the R_i and sausages run on the
+//      floating-point values with the answer confirmed by two exact predicates
+//      (ConvolvedTriangles), so most of their steps cost no exact evaluation.
 //   3. Zero-length remnants lying on another piece are dropped; pieces are linked into rings by
 //      exact equality of their symbolic ends (candidates found by sorting rounded coordinates),
 //      the clockwise-first rule at vertices with several continuations.
@@ -851,7 +857,9 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
     // vertex from inside — the only contact placements with Q + x ⊂ P). Both sets lie in O.
     // `near`: the sausages whose boxes meet the candidate's.
     near.clear();
-    X.sausages.overlap(cb[ci], [&](std::uint32_t g) { near.push_back(g); });
+    X.sausages.overlap(cb[ci], [&](std::uint32_t g) {
+      if (boxes_meet(sbox[g], cb[ci])) near.push_back(g);
+    });
     {  // likely covers first: edges near the candidate's contact with P (its P edge or vertex),
        // which cross Q + x there when ∂P bends towards Q; the order only affects speed
       const Vec2 f = C.arc ? Vec2(2 * V[C.p]) : Vec2(V[C.p] + V[P.next(C.p)]);
@@ -869,7 +877,8 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
       }
       // Only the head of the order matters (most candidates are covered by one of the first few).
       const std::size_t head = std::min<std::size_t>(order.size(), 32);
-      std::partial_sort(order.begin(), order.begin() + head, order.end());
+      if (order.size() > head) std::nth_element(order.begin(), order.begin() + head, order.end());
+      std::sort(order.begin(), order.begin() + head);
       near.clear();
       for (const auto& o : order) near.push_back(o.second);
     }
@@ -927,10 +936,13 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
       const auto [lo, hi, pb, pe] = st.back();
       st.pop_back();
       const Box rb = rng_box(lo, hi);
-      const auto b = static_cast<std::uint32_t>(pool.size());
-      for (std::uint32_t k = pb; k < pe; ++k)
-        if (boxes_meet(sbox[pool[k]], rb)) pool.push_back(pool[k]);
-      const auto e = static_cast<std::uint32_t>(pool.size());
+      // The whole candidate's list is `near` itself (its box is the candidate's).
+      const bool root = lo == 0 && hi == Lc;
+      const auto b = root ? pb : static_cast<std::uint32_t>(pool.size());
+      if (!root)
+        for (std::uint32_t k = pb; k < pe; ++k)
+          if (boxes_meet(sbox[pool[k]], rb)) pool.push_back(pool[k]);
+      const auto e = root ? pe : static_cast<std::uint32_t>(pool.size());
       if (b == e) continue;
       bool whole = false;
       int tries = 0;
