@@ -1,5 +1,7 @@
 // Convolved triangles R_i = T_i ⊕ (−Q), implicit (DHS §4.1 Step 2); see the header for the
-// representation. Build O(N log N + N log m); every query on one R_i is O(log m) exact predicates.
+// representation. Build O(N log N + N log m); every query on one R_i is O(log m): binary searches
+// guided by floating-point values whose answers are confirmed (or, rarely, redone) with exact
+// predicates, so the result is the exact one.
 #include "polygon2/convolved_triangles.hpp"
 
 #include <algorithm>

@@ -17,8 +17,8 @@
 //      found in a bounding-volume hierarchy (BVH); a segment meets an open convex (m+2)-gon in
 //      one open interval (O(log m)). A candidate's own sausages (its edge; an arc's two edges) are
 //      skipped: it lies on their boundaries. Arcs are split recursively into B-edge ranges
-//      (boxes in O(1) from B's four extreme vertices; a sub-range filters its parent's sausage
-//      list); a range whose padded box has its four corners inside one sausage is covered at
+//      (boxes in O(1) from B's four extreme vertices); a range whose padded box has its four
+//      corners inside one sausage (at most three tried, nearest edges first) is covered at
 //      once, a single B edge is cut by the sausages meeting it until one covers it. Same-
 //      orientation coinciding copies (collinear, overlapping, O on the same side) are removed from
 //      the candidate with the larger id (candidate BVH). Sorting the open intervals and sweeping
@@ -753,11 +753,8 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
   };
   std::vector<Raw> raw;
   std::vector<Interval> ivs;
-  std::vector<std::uint32_t> near, pool;
-  struct Range {
-    std::uint32_t lo, hi, b, e;  // B-edge range [lo, hi) of the candidate; its sausages pool[b, e)
-  };
-  std::vector<Range> st;
+  std::vector<std::uint32_t> near;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> st;  // B-edge ranges [lo, hi) of a candidate
   for (std::uint32_t ci = 0; ci < cand.size(); ++ci) {
     const Candidate& C = cand[ci];
     const std::uint32_t Lc = C.arc ? C.count : 1;
@@ -926,34 +923,26 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
     // one int S_g is covered at once (S_g convex); a single element is cut by every sausage whose
     // box meets it, until one covers it entirely.
     auto rng_box = [&](std::uint32_t lo, std::uint32_t hi) { return C.arc ? range_box(V[C.p], C.b0 + lo, hi - lo) : cb[ci]; };
-    // Each range keeps the sausages meeting its box, in `near`'s order, as pool[b, e); a sub-range's
-    // box lies inside its parent's, so it filters its parent's list instead of all of `near`.
-    pool.clear();
-    pool.assign(near.begin(), near.end());
     st.clear();
-    st.push_back({0, Lc, 0, static_cast<std::uint32_t>(pool.size())});
+    st.push_back({0, Lc});
     while (!st.empty()) {
-      const auto [lo, hi, pb, pe] = st.back();
+      const auto [lo, hi] = st.back();
       st.pop_back();
       const Box rb = rng_box(lo, hi);
-      // The whole candidate's list is `near` itself (its box is the candidate's).
+      // Every sausage of `near` meets the whole candidate's box (filtered when gathered).
       const bool root = lo == 0 && hi == Lc;
-      const auto b = root ? pb : static_cast<std::uint32_t>(pool.size());
-      if (!root)
-        for (std::uint32_t k = pb; k < pe; ++k)
-          if (boxes_meet(sbox[pool[k]], rb)) pool.push_back(pool[k]);
-      const auto e = root ? pe : static_cast<std::uint32_t>(pool.size());
-      if (b == e) continue;
-      bool whole = false;
+      bool whole = false, any = false;
       int tries = 0;
-      for (std::uint32_t k = b; k < e; ++k) {
-        const std::uint32_t g = pool[k];
+      for (const std::uint32_t g : near) {
         const Box& sb = sbox[g];
+        if (!root && !boxes_meet(sb, rb)) continue;
+        any = true;
         if (sb[0] > rb[0] || sb[1] > rb[1] || sb[2] < rb[2] || sb[3] < rb[3]) continue;
         whole = R.segment_contains_interior(g, Vec2(rb[0], rb[1])) && R.segment_contains_interior(g, Vec2(rb[2], rb[1])) &&
                 R.segment_contains_interior(g, Vec2(rb[2], rb[3])) && R.segment_contains_interior(g, Vec2(rb[0], rb[3]));
         if (whole || ++tries >= 3) break;
       }
+      if (!any) continue;
       if (whole) {
         Interval I;
         I.s.j = lo;
@@ -973,9 +962,8 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
         const LineDir D = have_seg_dir ? seg_dir : R.line_dir(E);
         bool has_pre = false, has_suf = false;
         Mu pre_end, suf_start;
-        for (std::uint32_t k = b; k < e; ++k) {
-          const std::uint32_t g = pool[k];
-          if (!R.segment_line_interval(g, E, D, in, out)) continue;
+        for (const std::uint32_t g : near) {
+          if ((!root && !boxes_meet(sbox[g], rb)) || !R.segment_line_interval(g, E, D, in, out)) continue;
           const std::size_t before = ivs.size();
           add_cover(lo, E, in, out);
           if (ivs.size() == before) continue;
@@ -994,8 +982,8 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
         continue;
       }
       const std::uint32_t mid = (lo + hi) / 2;
-      st.push_back({lo, mid, b, e});
-      st.push_back({mid, hi, b, e});
+      st.push_back({lo, mid});
+      st.push_back({mid, hi});
     }
     {
       std::vector<Interval> copy = ivs;
