@@ -34,9 +34,12 @@
 //   The paper's divide and conquer (O(N log²(N+m) + m)) is replaced by this local subtraction,
 //   far simpler to make exact. Worst case: a candidate can meet Θ(N) sausages (Q much larger than
 //   P's edges) and an arc Θ(m) B edges near one sausage, so the build is O(N²·m log m) in the worst
-//   case; measured (bench/bench_union_size.cpp, Release): N = 1000, m = 4…1000: 50-800 ms;
-//   N = 10^4: 0.6-6 s on stars / spirals / combs with Q a tenth of P's size — superlinear in N
-//   because the number of sausages within reach of Q grows with the edge density.
+//   case; measured (bench/bench_union_size.cpp, Release, wall clock on a shared 2-core machine,
+//   commit f8eeb53): N = 1000, m = 4…1000: 9-140 ms; N = 10^4: 0.05-2.5 s on stars / smooth stars
+//   / spirals / combs with Q a tenth of P's size (combs: a tool fitting the gaps) — superlinear
+//   in N because the number of sausages within reach of Q grows with the edge density (gathering
+//   them dominates there). Against CGAL's reduced convolution (bench/bench_polygon2.cpp) the
+//   build is 13-177× faster at m >= 100 (docs/benchmarks.md).
 //   Space stays O(N + m): the transient interval lists are per candidate, the result is O(N)
 //   pieces (Facts 4.1-4.2) plus three BVHs (pieces, sausages, edges: O(N)); B is shared with the
 //   convolved triangles.
