@@ -84,7 +84,9 @@ class PolygonDepth2 {
 };
 
 /// σ_d for a fixed list of directions (DHS §6): one decomposition of the overlap set O per
-/// direction, with point location answering each query in O(log n).
+/// direction (slabs parallel to it, their orders kept in a persistent search tree), with point
+/// location answering each query in expected O(log n) exact tests (O(log n · log m) on arcs), in
+/// expected O(n) space per direction (bytes() reports it).
 class PolygonDirectionSet {
  public:
   /// Throws InvalidInput naming the index of a zero or non-finite direction.

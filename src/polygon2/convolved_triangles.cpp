@@ -1,5 +1,7 @@
 // Convolved triangles R_i = T_i ⊕ (−Q), implicit (DHS §4.1 Step 2); see the header for the
-// representation. Build O(N log N + N log m); every query on one R_i is O(log m) exact predicates.
+// representation. Build O(N log N + N log m); every query on one R_i is O(log m): binary searches
+// guided by floating-point values whose answers are confirmed (or, rarely, redone) with exact
+// predicates, so the result is the exact one.
 #include "polygon2/convolved_triangles.hpp"
 
 #include <algorithm>
@@ -44,6 +46,10 @@ int side_of_line(const Vec2& a, const Vec2& b, const Vec2& s1, const Vec2& s2, c
   // s1 + d0 and s1 + d1 when s2 = d0 (a B edge at s1), s2 + d0 and s2 + d1 when s1 = d0.
   if (a == s1 && s2 == d0 && (b == d0 || b == d1)) return 0;
   if (b == s2 && s1 == d0 && (a == d0 || a == d1)) return 0;
+  // A shared summand cancels exactly: the sign is that of a plain cross product, whose exact
+  // zeros (parallel edges of axis-parallel input) the cheap tiers certify without rationals.
+  if (b == s2) return predicates::cross_edges(d0, d1, s1, a);
+  if (a == s1) return predicates::cross_edges(d0, d1, s2, b);
   // Double filter, as in orient_sums, on w = (a − s1) + (b − s2): |error| <= (2u + u²)·M for each
   // difference factor and w factor (M = sum of the |parts|), 8u·(Mdx·Mwy + Mdy·Mwx) overall.
   const double dx = d1.x() - d0.x(), dy = d1.y() - d0.y();
@@ -56,6 +62,41 @@ int side_of_line(const Vec2& a, const Vec2& b, const Vec2& s1, const Vec2& s2, c
     return (L(d1.x()) - L(d0.x())) * (L(a.y()) + L(b.y()) - L(s1.y()) - L(s2.y())) -
            (L(d1.y()) - L(d0.y())) * (L(a.x()) + L(b.x()) - L(s1.x()) - L(s2.x()));
   });
+}
+
+// The floating-point values the two filters above start from (no guarantee: guesses only).
+double orient_sums_guess(const Vec2& a1, const Vec2& b1, const Vec2& a2, const Vec2& b2, const Vec2& t) {
+  const double ux = (a2.x() - a1.x()) + (b2.x() - b1.x()), uy = (a2.y() - a1.y()) + (b2.y() - b1.y());
+  const double wx = (t.x() - a1.x()) - b1.x(), wy = (t.y() - a1.y()) - b1.y();
+  return ux * wy - uy * wx;
+}
+double side_of_line_guess(const Vec2& a, const Vec2& b, const Vec2& s1, const Vec2& s2, const Vec2& d0, const Vec2& d1) {
+  const double dx = d1.x() - d0.x(), dy = d1.y() - d0.y();
+  const double wx = (a.x() - s1.x()) + (b.x() - s2.x()), wy = (a.y() - s1.y()) + (b.y() - s2.y());
+  return dx * wy - dy * wx;
+}
+
+// The last index in [lo, hi) where a monotone predicate holds (true at lo, false at hi). Binary
+// search on a floating-point guess of the predicate, then the exact predicate at the two indices
+// around the answer, which decide it (monotone); the exact search only when the guess was wrong.
+// The same answer as the exact binary search with about log(hi − lo) fewer exact evaluations.
+template <class Guess, class Exact>
+std::size_t last_true(std::size_t lo, std::size_t hi, Guess&& guess, Exact&& exact) {
+  std::size_t a = lo, b = hi;
+  while (b - a > 1) {
+    const std::size_t mid = a + (b - a) / 2;
+    if (guess(mid)) a = mid;
+    else b = mid;
+  }
+  if ((a == lo || exact(a)) && (b == hi || !exact(b))) return a;
+  a = lo;
+  b = hi;
+  while (b - a > 1) {
+    const std::size_t mid = a + (b - a) / 2;
+    if (exact(mid)) a = mid;
+    else b = mid;
+  }
+  return a;
 }
 
 template <class Lift>
@@ -168,15 +209,6 @@ ConvolvedTriangles::ConvolvedTriangles(const Polygon& P, const ConvexPolygon& Q)
 
 void ConvolvedTriangles::vertex(std::size_t i, std::size_t k, int& slot, std::size_t& bj) const { vertex_of(tri_[i], k, slot, bj); }
 
-void ConvolvedTriangles::vertex_of(const Tri& T, std::size_t k, int& slot, std::size_t& bj) const {
-  const std::size_t m = b_.size();
-  if (k >= m + T.n) k %= m + T.n;
-  int a = 0;
-  while (a < T.n && a + T.c[a] < k) ++a;
-  slot = a == T.n ? 0 : a;
-  bj = k - a;  // < m + T.n - a <= 2m: one conditional subtraction replaces the division
-  if (bj >= m) bj -= m;
-}
 
 Cut ConvolvedTriangles::edge(std::size_t i, std::size_t k) const { return edge_of(tri_[i], i, k); }
 
@@ -207,31 +239,6 @@ Cut ConvolvedTriangles::edge_of(const Tri& T, std::size_t idx, std::size_t k) co
   return c;
 }
 
-// Number of edges of R (triangle's and B's) whose angle is < angle(x) (<= when inclusive).
-std::size_t ConvolvedTriangles::count_below(const Tri& T, const Vec2& x0, const Vec2& x1, bool inclusive, int bedge,
-                                            bool reversed) const {
-  const std::size_t m = b_.size();
-  auto below = [&](const Vec2& e0, const Vec2& e1) {
-    // The same edge (a line along an edge of T or of B) ties by construction; deciding it here
-    // skips the rational fallback that an exact zero costs compare_angle.
-    int s = (e0 == x0 && e1 == x1) ? 0 : compare_angle(e0, e1, x0, x1);
-    return s < 0 || (inclusive && s == 0);
-  };
-  std::size_t n = 0;
-  for (int j = 0; j < T.n; ++j) n += below(T.v[j], T.v[(j + 1) % T.n]);
-  if (bedge >= 0) {  // x = ± B edge `bedge`: B's part is known (angles increase along B)
-    if (!reversed) return n + bedge + (inclusive ? 1 : 0);
-    return n + (inclusive ? opp_le_[bedge] : opp_lt_[bedge]);
-  }
-  std::size_t lo = 0, hi = m;
-  while (lo < hi) {
-    std::size_t mid = (lo + hi) / 2;
-    if (below(b_[mid], b_[(mid + 1) % m])) lo = mid + 1;
-    else hi = mid;
-  }
-  return n + lo;
-}
-
 bool ConvolvedTriangles::contains_interior(std::size_t i, const Vec2& t) const { return contains_of(tri_[i], t); }
 bool ConvolvedTriangles::segment_contains_interior(std::size_t g, const Vec2& t) const { return contains_of(seg_[g], t); }
 
@@ -252,12 +259,13 @@ bool ConvolvedTriangles::contains_of(const Tri& T, const Vec2& t) const {
   };
   if (f(1) <= 0 || f(K - 1) >= 0) return false;
   // Last k in [1, K-2] with f(k) > 0 (monotone: true then false).
-  std::size_t lo = 1, hi = K - 1;  // f(lo) > 0, f(hi) <= 0
-  while (hi - lo > 1) {
-    std::size_t mid = (lo + hi) / 2;
-    if (f(mid) > 0) lo = mid;
-    else hi = mid;
-  }
+  const std::size_t lo = last_true(
+      1, K - 1,
+      [&](std::size_t k) {
+        pt(k, a, b);
+        return orient_sums_guess(a0, b0, a, b, t) > 0;
+      },
+      [&](std::size_t k) { return f(k) > 0; });
   Vec2 a1, b1, a2, b2;
   pt(lo, a1, b1);
   pt(lo + 1, a2, b2);
@@ -265,19 +273,60 @@ bool ConvolvedTriangles::contains_of(const Tri& T, const Vec2& t) const {
 }
 
 bool ConvolvedTriangles::line_interval(std::size_t i, const Vec2& t, const Vec2& d, Cut& entry, Cut& exit) const {
-  return line_interval_impl(tri_[i], i, t, kZero, kZero, d, entry, exit);
+  return line_interval_impl(tri_[i], i, t, kZero, dir_of(kZero, kZero, d, -1), entry, exit);
 }
 
 bool ConvolvedTriangles::line_interval(std::size_t i, const Cut& line, Cut& entry, Cut& exit) const {
-  return line_interval_impl(tri_[i], i, line.pt, line.pb, line.e0, line.e1, entry, exit, line.b_edge ? int(line.b) : -1);
+  return line_interval_impl(tri_[i], i, line.pt, line.pb, line_dir(line), entry, exit);
+}
+
+bool ConvolvedTriangles::line_interval(std::size_t i, const Cut& line, const LineDir& dir, Cut& entry, Cut& exit) const {
+  return line_interval_impl(tri_[i], i, line.pt, line.pb, dir, entry, exit);
 }
 
 bool ConvolvedTriangles::segment_line_interval(std::size_t g, const Vec2& t, const Vec2& d, Cut& entry, Cut& exit) const {
-  return line_interval_impl(seg_[g], g, t, kZero, kZero, d, entry, exit);
+  return line_interval_impl(seg_[g], g, t, kZero, dir_of(kZero, kZero, d, -1), entry, exit);
 }
 
 bool ConvolvedTriangles::segment_line_interval(std::size_t g, const Cut& line, Cut& entry, Cut& exit) const {
-  return line_interval_impl(seg_[g], g, line.pt, line.pb, line.e0, line.e1, entry, exit, line.b_edge ? int(line.b) : -1);
+  return line_interval_impl(seg_[g], g, line.pt, line.pb, line_dir(line), entry, exit);
+}
+
+bool ConvolvedTriangles::segment_line_interval(std::size_t g, const Cut& line, const LineDir& dir, Cut& entry,
+                                               Cut& exit) const {
+  return line_interval_impl(seg_[g], g, line.pt, line.pb, dir, entry, exit);
+}
+
+LineDir ConvolvedTriangles::line_dir(const Cut& line) const {
+  return dir_of(line.pb, line.e0, line.e1, line.b_edge ? int(line.b) : -1);
+}
+
+LineDir ConvolvedTriangles::dir_of(const Vec2& s2, const Vec2& d0, const Vec2& d1, int bedge) const {
+  const std::size_t m = b_.size();
+  // A B edge's own rank is known without predicates (only when the line really is that edge).
+  const int be_idx =
+      (bedge >= 0 && s2 == d0 && d0 == b_[std::size_t(bedge) % m] && d1 == b_[(std::size_t(bedge) + 1) % m]) ? bedge : -1;
+  LineDir r;
+  r.d0 = d0;
+  r.d1 = d1;
+  if (be_idx >= 0) {
+    r.b = {static_cast<std::uint32_t>(be_idx + 1), static_cast<std::uint32_t>(be_idx), opp_le_[be_idx], opp_lt_[be_idx]};
+    return r;
+  }
+  // B edges with angle < (<= when inclusive) angle(x1 − x0); the same-edge tie decided by construction.
+  auto count = [&](const Vec2& x0, const Vec2& x1, bool inclusive) {
+    std::size_t lo = 0, hi = m;
+    while (lo < hi) {
+      const std::size_t mid = (lo + hi) / 2;
+      const Vec2 &e0 = b_[mid], &e1 = b_[(mid + 1) % m];
+      const int s = (e0 == x0 && e1 == x1) ? 0 : compare_angle(e0, e1, x0, x1);
+      if (s < 0 || (inclusive && s == 0)) lo = mid + 1;
+      else hi = mid;
+    }
+    return static_cast<std::uint32_t>(lo);
+  };
+  r.b = {count(d0, d1, true), count(d0, d1, false), count(d1, d0, true), count(d1, d0, false)};
+  return r;
 }
 
 std::array<double, 4> ConvolvedTriangles::box(std::size_t i) const { return box_of(tri_[i]); }
@@ -300,17 +349,26 @@ std::array<double, 4> ConvolvedTriangles::box_of(const Tri& T) const {
 }
 
 // The line is s1 + s2 + μ·(d1 − d0); entry/exit cuts give μ as their λ with that line as the ray.
-bool ConvolvedTriangles::line_interval_impl(const Tri& T, std::size_t i, const Vec2& s1, const Vec2& s2, const Vec2& d0,
-                                            const Vec2& d1, Cut& entry, Cut& exit, int bedge) const {
+bool ConvolvedTriangles::line_interval_impl(const Tri& T, std::size_t i, const Vec2& s1, const Vec2& s2, const LineDir& dir,
+                                            Cut& entry, Cut& exit) const {
   const std::size_t K = b_.size() + T.n;
+  const Vec2 &d0 = dir.d0, &d1 = dir.d1;
   // Front edges (cross(d, e) > 0) have angles in (θ, θ + π): vertices fs .. fe (cyclic); back
   // edges vertices bs .. be. X(v) = cross(d, v − t) increases along the front chain from its
   // minimum at fs to its maximum at fe, and decreases along the back chain.
-  const std::size_t m = b_.size();
-  const int be_idx =
-      (bedge >= 0 && s2 == d0 && d0 == b_[std::size_t(bedge) % m] && d1 == b_[(std::size_t(bedge) + 1) % m]) ? bedge : -1;
-  const std::size_t fs = count_below(T, d0, d1, true, be_idx, false) % K, be = count_below(T, d0, d1, false, be_idx, false) % K;
-  const std::size_t bs = count_below(T, d1, d0, true, be_idx, true) % K, fe = count_below(T, d1, d0, false, be_idx, true) % K;
+  // Ranks in the edge order of R: the triangle's edges below ±d (one angle comparison each serves
+  // both the strict and the inclusive count) plus B's (precomputed in dir).
+  std::array<std::uint32_t, 4> n = dir.b;
+  for (int j = 0; j < T.n; ++j) {
+    const Vec2 &e0 = T.v[j], &e1 = T.v[(j + 1) % T.n];
+    const int sf = (e0 == d0 && e1 == d1) ? 0 : compare_angle(e0, e1, d0, d1);
+    const int sr = (e0 == d1 && e1 == d0) ? 0 : compare_angle(e0, e1, d1, d0);
+    n[0] += sf <= 0;
+    n[1] += sf < 0;
+    n[2] += sr <= 0;
+    n[3] += sr < 0;
+  }
+  const std::size_t fs = n[0] % K, be = n[1] % K, bs = n[2] % K, fe = n[3] % K;
   auto X = [&](std::size_t k) {
     int slot;
     std::size_t bj;
@@ -319,23 +377,20 @@ bool ConvolvedTriangles::line_interval_impl(const Tri& T, std::size_t i, const V
   };
   if (X(fs) >= 0 || X(fe) <= 0) return false;
   const std::size_t nf = (fe + K - fs) % K, nb = (be + K - bs) % K;
-  // Exit: last offset o in [0, nf) with X(v_{fs+o}) <= 0.
-  std::size_t lo = 0, hi = nf;  // X(fs + lo) < 0, X(fs + hi) > 0
-  while (hi - lo > 1) {
-    std::size_t mid = (lo + hi) / 2;
-    if (X((fs + mid) % K) <= 0) lo = mid;
-    else hi = mid;
-  }
-  exit = edge_of(T, i, (fs + lo) % K);
-  // Entry: last offset o in [0, nb) with X(v_{bs+o}) >= 0.
-  lo = 0;
-  hi = nb;  // X(bs + lo) > 0, X(bs + hi) < 0
-  while (hi - lo > 1) {
-    std::size_t mid = (lo + hi) / 2;
-    if (X((bs + mid) % K) >= 0) lo = mid;
-    else hi = mid;
-  }
-  entry = edge_of(T, i, (bs + lo) % K);
+  auto G = [&](std::size_t k) {
+    int slot;
+    std::size_t bj;
+    vertex_of(T, k, slot, bj);
+    return side_of_line_guess(T.v[slot], b_[bj], s1, s2, d0, d1);
+  };
+  // Exit: last offset o in [0, nf) with X(v_{fs+o}) <= 0 (X(fs) < 0, X(fe) > 0).
+  const std::size_t ox = last_true(
+      0, nf, [&](std::size_t o) { return G((fs + o) % K) <= 0; }, [&](std::size_t o) { return X((fs + o) % K) <= 0; });
+  exit = edge_of(T, i, (fs + ox) % K);
+  // Entry: last offset o in [0, nb) with X(v_{bs+o}) >= 0 (X(bs) > 0, X(be) < 0).
+  const std::size_t on = last_true(
+      0, nb, [&](std::size_t o) { return G((bs + o) % K) >= 0; }, [&](std::size_t o) { return X((bs + o) % K) >= 0; });
+  entry = edge_of(T, i, (bs + on) % K);
   return true;
 }
 

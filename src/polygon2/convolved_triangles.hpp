@@ -39,6 +39,14 @@ int compare_cuts(const Cut& a, const Cut& b, const Vec2& t, const Vec2& d);
 /// λ(c) to a few ulps.
 double cut_value(const Cut& c, const Vec2& t, const Vec2& d);
 
+/// The part of a line's direction d = d1 − d0 that does not depend on the triangle: the numbers of
+/// B edges whose angle is <= / < angle(d) and <= / < angle(−d). One binary search each (O(1) for a
+/// B edge); computed once per line and reused for every R_i and sausage it is cut with.
+struct LineDir {
+  Vec2 d0{0, 0}, d1{0, 0};
+  std::array<std::uint32_t, 4> b{};  ///< B edges: <= d, < d, <= −d, < −d
+};
+
 class ConvolvedTriangles {
  public:
   /// Triangulates P and builds the implicit R_i. O(N log N + N log m).
@@ -65,6 +73,11 @@ class ConvolvedTriangles {
   /// The same for the line of a cut, pt + pb + μ·(e1 − e0): μ of entry/exit is the cut's λ
   /// with the line as the ray (used by the union boundary, DHS §4.1 Step 3). O(log m).
   bool line_interval(std::size_t i, const Cut& line, Cut& entry, Cut& exit) const;
+  /// The direction data of the line of a cut (see LineDir).
+  LineDir line_dir(const Cut& line) const;
+  /// line_interval / segment_line_interval with the direction data precomputed (the same answers).
+  bool line_interval(std::size_t i, const Cut& line, const LineDir& dir, Cut& entry, Cut& exit) const;
+  bool segment_line_interval(std::size_t g, const Cut& line, const LineDir& dir, Cut& entry, Cut& exit) const;
   /// Conservative bounding box of R_i (xmin, ymin, xmax, ymax), padded for rounding.
   std::array<double, 4> box(std::size_t i) const;
   /// Heap bytes (triangles, edge sausages, fans and B).
@@ -95,16 +108,22 @@ class ConvolvedTriangles {
     std::array<std::uint32_t, 3> c;
     int n = 3;  ///< 3: triangle; 2: edge sausage (id[2], v[2], c[2] unused)
   };
-  /// Edges of T ⊕ B with angle < (<= when inclusive) angle(x1 − x0). bedge >= 0: x1 − x0 is
-  /// B edge `bedge` (reversed: its opposite), whose rank in B is known without predicates.
-  std::size_t count_below(const Tri& T, const Vec2& x0, const Vec2& x1, bool inclusive, int bedge = -1,
-                          bool reversed = false) const;
-  void vertex_of(const Tri& T, std::size_t k, int& slot, std::size_t& bj) const;
+  // Inline: the innermost step of every binary search on an R_i.
+  void vertex_of(const Tri& T, std::size_t k, int& slot, std::size_t& bj) const {
+    const std::size_t m = b_.size();
+    if (k >= m + T.n) k %= m + T.n;
+    int a = 0;
+    while (a < T.n && a + T.c[a] < k) ++a;
+    slot = a == T.n ? 0 : a;
+    bj = k - a;  // < m + T.n - a <= 2m: one conditional subtraction replaces the division
+    if (bj >= m) bj -= m;
+  }
   Cut edge_of(const Tri& T, std::size_t idx, std::size_t k) const;
   bool contains_of(const Tri& T, const Vec2& t) const;
   std::array<double, 4> box_of(const Tri& T) const;
-  bool line_interval_impl(const Tri& T, std::size_t i, const Vec2& s1, const Vec2& s2, const Vec2& d0, const Vec2& d1,
-                          Cut& entry, Cut& exit, int bedge = -1) const;
+  LineDir dir_of(const Vec2& s2, const Vec2& d0, const Vec2& d1, int bedge) const;
+  bool line_interval_impl(const Tri& T, std::size_t i, const Vec2& s1, const Vec2& s2, const LineDir& dir, Cut& entry,
+                          Cut& exit) const;
   std::vector<Tri> tri_, seg_;
   std::vector<std::uint32_t> fan_, fan_start_;
   std::vector<std::uint32_t> opp_lt_, opp_le_;  ///< per B edge k: B edges with angle < / <= angle(−edge k)

@@ -11,26 +11,35 @@
 //      outside P next to the contact, except possibly at the candidate's natural ends (Q's vertex
 //      at a P vertex). So x ∈ O ⇔ int(Q + x) meets the relative interior of some P edge f ⇔
 //      x ∈ int(f ⊕ B) (the edge "sausage", an implicit (m+2)-gon, ConvolvedTriangles::segment_*),
-//      or, at the ends, x ∈ int R_T for a triangle T around the P vertex (its fan). Sausages have
-//      small boxes (|f| + |B|; the R_i of long diagonals do not), found in a bounding-volume
-//      hierarchy (BVH); a segment meets an open convex (m+2)-gon in one open interval (O(log m)).
-//      Arcs are split recursively into B-edge ranges (boxes in O(1) from B's four extreme
-//      vertices); a range whose padded box has its four corners inside one sausage is covered at
+//      or, at the ends, x ∈ int R_T for a triangle T around the P vertex (its fan; R_T is cut
+//      with the end's element only when it contains the end, an exact O(1) angle test at B's
+//      vertex there). Sausages have small boxes (|f| + |B|; the R_i of long diagonals do not),
+//      found in a bounding-volume hierarchy (BVH); a segment meets an open convex (m+2)-gon in
+//      one open interval (O(log m)). A candidate's own sausages (its edge; an arc's two edges) are
+//      skipped: it lies on their boundaries. Arcs are split recursively into B-edge ranges
+//      (boxes in O(1) from B's four extreme vertices); a range whose padded box has its four
+//      corners inside one sausage (at most three tried, nearest edges first) is covered at
 //      once, a single B edge is cut by the sausages meeting it until one covers it. Same-
 //      orientation coinciding copies (collinear, overlapping, O on the same side) are removed from
 //      the candidate with the larger id (candidate BVH). Sorting the open intervals and sweeping
 //      leaves the closed remnants. Ties that are structural (two cuts on the same line, a
-//      convolution vertex on a line through it, B-edge angle ranks) are decided without
-//      arithmetic; all other decisions are filtered exact predicates.
+//      convolution vertex on a line through it, B-edge angle ranks, a B vertex shared by both
+//      sides of a side test) are decided without arithmetic; all other decisions are filtered
+//      exact predicates, and the O(log m) binary searches on the R_i and sausages run on the
+//      floating-point values with the answer confirmed by two exact predicates
+//      (ConvolvedTriangles), so most of their steps cost no exact evaluation.
 //   3. Zero-length remnants lying on another piece are dropped; pieces are linked into rings by
 //      exact equality of their symbolic ends (candidates found by sorting rounded coordinates),
 //      the clockwise-first rule at vertices with several continuations.
 //   The paper's divide and conquer (O(N log²(N+m) + m)) is replaced by this local subtraction,
 //   far simpler to make exact. Worst case: a candidate can meet Θ(N) sausages (Q much larger than
 //   P's edges) and an arc Θ(m) B edges near one sausage, so the build is O(N²·m log m) in the worst
-//   case; measured (bench/bench_union_size.cpp, Release): N = 1000, m = 4…1000: 50-800 ms;
-//   N = 10^4: 0.6-6 s on stars / spirals / combs with Q a tenth of P's size — superlinear in N
-//   because the number of sausages within reach of Q grows with the edge density.
+//   case; measured (bench/bench_union_size.cpp, Release, wall clock on a shared 2-core machine,
+//   commit f8eeb53): N = 1000, m = 4…1000: 9-140 ms; N = 10^4: 0.05-2.5 s on stars / smooth stars
+//   / spirals / combs with Q a tenth of P's size (combs: a tool fitting the gaps) — superlinear
+//   in N because the number of sausages within reach of Q grows with the edge density (gathering
+//   them dominates there). Against CGAL's reduced convolution (bench/bench_polygon2.cpp) the
+//   build is 13-177× faster at m >= 100 (docs/benchmarks.md).
 //   Space stays O(N + m): the transient interval lists are per candidate, the result is O(N)
 //   pieces (Facts 4.1-4.2) plus three BVHs (pieces, sausages, edges: O(N)); B is shared with the
 //   convolved triangles.
@@ -53,11 +62,18 @@
 namespace pendepth::polygon2 {
 
 using exact::exact_sign;
-using predicates::compare_angle;
 
 namespace {
 
 const Vec2 kZero(0, 0);
+
+// compare_angle with the tie of an edge with itself decided by construction (an exact zero costs
+// the rational fallback; arcs of different vertices share their B edges).
+int compare_angle(const Vec2& a0, const Vec2& a1, const Vec2& b0, const Vec2& b1) {
+  if (a0 == b0 && a1 == b1) return 0;
+  return predicates::compare_angle(a0, a1, b0, b1);
+}
+
 
 // A parameter μ on an element's line S + μ·D (S = pt + pb, D = e1 − e0), as num/den.
 struct Mu {
@@ -272,16 +288,50 @@ bool same_point(const Cut& E1, const Mu& m1, const Cut& E2, const Mu& m2) {
   return true;
 }
 
+// The point rounded: per coordinate exactly what exact::accurate_value (natural points) or
+// exact::accurate_ratio (crossings) return, with the homogeneous coordinates evaluated once per
+// tier instead of once per coordinate and tier.
 Vec2 approx_point(const Cut& E, const Mu& m) {
+  const auto fl = point_h(E, m, exact::LiftFl{});
+  std::array<exact::DD, 3> dd;
+  bool have_dd = false;
+  auto value = [&](int c, double& out) {  // exact::detail::floating_value on coordinate c
+    const exact::Fl& r = fl[c];
+    if (std::isfinite(r.v) && exact::safe_bound(r.e) <= std::abs(r.v) * 0x1p-53) {
+      out = r.v;
+      return true;
+    }
+    if (!have_dd) {
+      dd = point_h(E, m, exact::LiftDD{});
+      have_dd = true;
+    }
+    const exact::DD& d = dd[c];
+    if (exact::dd_finite(d) && exact::safe_bound(d.e) <= std::abs(d.hi) * 0x1p-54) {
+      out = d.hi;
+      return true;
+    }
+    return false;
+  };
+  Vec2 r;
   if (m.k == Mu::C0 || m.k == Mu::C1 || m.k == Mu::Pt) {
-    Vec2 r;
-    for (int c = 0; c < 2; ++c)
-      r[c] = exact::accurate_value([&](auto L) { return point_h(E, m, L)[c]; });
+    for (int c = 0; c < 2; ++c) {
+      double v;
+      r[c] = value(c, v) ? v : point_h(E, m, exact::LiftQ{})[c].v.get_d();
+    }
     return r;
   }
-  Vec2 r;
-  for (int c = 0; c < 2; ++c)
-    r[c] = exact::accurate_ratio([&](auto L) { return point_h(E, m, L)[c]; }, [&](auto L) { return point_h(E, m, L)[2]; });
+  for (int c = 0; c < 2; ++c) {
+    double a, b;
+    if (value(c, a) && value(2, b) && b != 0) {
+      const double q = a / b;
+      if (std::isfinite(q) && (q != 0 || a == 0)) {
+        r[c] = q;
+        continue;
+      }
+    }
+    const auto h = point_h(E, m, exact::LiftQ{});
+    r[c] = mpq_class(h[c].v / h[2].v).get_d();
+  }
   return r;
 }
 
@@ -707,6 +757,7 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
   std::vector<Raw> raw;
   std::vector<Interval> ivs;
   std::vector<std::uint32_t> near;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> st;  // B-edge ranges [lo, hi) of a candidate
   for (std::uint32_t ci = 0; ci < cand.size(); ++ci) {
     const Candidate& C = cand[ci];
     const std::uint32_t Lc = C.arc ? C.count : 1;
@@ -804,10 +855,11 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
     // Points of O: inside an edge sausage int(f_g ⊕ B) (Q + x meets the relative interior of f_g),
     // or inside int R_T for a triangle T around the candidate's P vertices (Q + x touching P at a
     // vertex from inside — the only contact placements with Q + x ⊂ P). Both sets lie in O.
-    // Encoded in `near` as g (sausage) or N + T (fan triangle).
+    // `near`: the sausages whose boxes meet the candidate's.
     near.clear();
-    const std::size_t NS = R.segment_count();
-    X.sausages.overlap(cb[ci], [&](std::uint32_t g) { near.push_back(g); });
+    X.sausages.overlap(cb[ci], [&](std::uint32_t g) {
+      if (boxes_meet(sbox[g], cb[ci])) near.push_back(g);
+    });
     {  // likely covers first: edges near the candidate's contact with P (its P edge or vertex),
        // which cross Q + x there when ∂P bends towards Q; the order only affects speed
       const Vec2 f = C.arc ? Vec2(2 * V[C.p]) : Vec2(V[C.p] + V[P.next(C.p)]);
@@ -815,43 +867,79 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
       std::vector<std::pair<double, std::uint32_t>> order;
       order.reserve(near.size());
       for (std::uint32_t g : near) {
+        // The candidate lies on the boundary of its own sausages (a segment: its edge's; an arc:
+        // the two edges at its vertex, whose outward normals bound the arc's normals), never in
+        // their interiors: skipping them changes no cover and keeps the range test from wasting
+        // its tries on them.
+        if (g == C.p || (C.arc && g == prev[C.p])) continue;
         const Vec2 e = V[g] + V[P.next(g)];
         order.push_back({std::abs(e.x() - cx) + std::abs(e.y() - cy), g});
       }
       // Only the head of the order matters (most candidates are covered by one of the first few).
       const std::size_t head = std::min<std::size_t>(order.size(), 32);
-      std::partial_sort(order.begin(), order.begin() + head, order.end());
+      if (order.size() > head) std::nth_element(order.begin(), order.begin() + head, order.end());
+      std::sort(order.begin(), order.begin() + head);
       near.clear();
-      for (std::uint32_t v : {C.p, C.arc ? C.p : static_cast<std::uint32_t>(P.next(C.p))})
-        for (std::uint32_t T : R.triangles_at(v)) near.push_back(static_cast<std::uint32_t>(NS + T));
       for (const auto& o : order) near.push_back(o.second);
     }
     // Fan triangles: only the candidate's natural ends can lie in them (elsewhere Q + x has points
-    // outside P near the contact); test the first and last element.
+    // outside P near the contact, and x ∈ O is decided by the sausages). So R_T matters only when
+    // it contains the end x = v + b_e (v the P vertex, b_e the B vertex there): exactly when the
+    // triangle b_e + (v − T) meets int B, i.e. (both convex, b_e on ∂B) when its closed angle at
+    // b_e, from v − u1 to v − u2, meets B's open angle at b_e, from b_{e+1} − b_e to b_{e−1} − b_e.
+    // Exact and O(1); only then is the O(log m) interval computed.
     Cut in, out;
-    for (std::uint32_t rj : near) {
-      if (rj < NS) break;
-      for (std::uint32_t j : {0u, Lc - 1}) {
-        const Cut E = elem(C, j);
-        if (R.line_interval(rj - NS, E, in, out)) add_cover(j, E, in, out);
-        if (Lc == 1) break;
+    LineDir seg_dir;  // a segment's direction data, computed at most once (O(log m))
+    bool have_seg_dir = false;
+    auto end_in_fan = [&](std::uint32_t T, std::uint32_t v, std::uint32_t e) {
+      const TriangleIds& t = R.triangle(T);
+      const int sl = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
+      const Vec2 &pv = V[v], &u1 = V[t[(sl + 1) % 3]], &u2 = V[t[(sl + 2) % 3]];
+      const Vec2 &be = B[e], &bn = B[(e + 1) % m], &bp = B[(e + m - 1) % m];
+      // v − u1 strictly inside B's angle
+      if (predicates::cross_edges(be, bn, u1, pv) > 0 && predicates::cross_edges(u1, pv, be, bp) > 0) return true;
+      // else they meet iff b_{e+1} − b_e lies in [v − u1, v − u2)
+      const int c = predicates::cross_edges(u1, pv, be, bn);
+      return (c > 0 || (c == 0 && predicates::dot_edges(u1, pv, be, bn) > 0)) && predicates::cross_edges(be, bn, u2, pv) > 0;
+    };
+    for (int side = 0; side < 2; ++side) {
+      const std::uint32_t j = side == 0 ? 0 : Lc - 1;
+      const std::uint32_t v = side == 0 || C.arc ? C.p : static_cast<std::uint32_t>(P.next(C.p));
+      const std::uint32_t e = side == 0 || !C.arc ? C.b0 : static_cast<std::uint32_t>((C.b0 + Lc) % m);
+      const Cut E = elem(C, j);
+      bool have_dir = false;
+      LineDir D;
+      for (std::uint32_t T : R.triangles_at(v)) {
+        if (!end_in_fan(T, v, e)) continue;
+        if (!have_dir) {
+          D = R.line_dir(E);
+          have_dir = true;
+          if (!C.arc) {
+            seg_dir = D;
+            have_seg_dir = true;
+          }
+        }
+        if (R.line_interval(T, E, D, in, out)) add_cover(j, E, in, out);
       }
     }
     // Sausages: recursive element ranges. A range whose (padded) box has its four corners inside
     // one int S_g is covered at once (S_g convex); a single element is cut by every sausage whose
     // box meets it, until one covers it entirely.
     auto rng_box = [&](std::uint32_t lo, std::uint32_t hi) { return C.arc ? range_box(V[C.p], C.b0 + lo, hi - lo) : cb[ci]; };
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> st{{0, Lc}};
+    st.clear();
+    st.push_back({0, Lc});
     while (!st.empty()) {
-      auto [lo, hi] = st.back();
+      const auto [lo, hi] = st.back();
       st.pop_back();
       const Box rb = rng_box(lo, hi);
+      // Every sausage of `near` meets the whole candidate's box (filtered when gathered).
+      const bool root = lo == 0 && hi == Lc;
       bool whole = false, any = false;
       int tries = 0;
-      for (std::uint32_t g : near) {
-        if (g >= NS || !boxes_meet(sbox[g], rb)) continue;
-        any = true;
+      for (const std::uint32_t g : near) {
         const Box& sb = sbox[g];
+        if (!root && !boxes_meet(sb, rb)) continue;
+        any = true;
         if (sb[0] > rb[0] || sb[1] > rb[1] || sb[2] < rb[2] || sb[3] < rb[3]) continue;
         whole = R.segment_contains_interior(g, Vec2(rb[0], rb[1])) && R.segment_contains_interior(g, Vec2(rb[2], rb[1])) &&
                 R.segment_contains_interior(g, Vec2(rb[2], rb[3])) && R.segment_contains_interior(g, Vec2(rb[0], rb[3]));
@@ -874,10 +962,11 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
         // Stop once the element is covered: by one interval, or by a prefix (from its start)
         // and a suffix (to its end) that overlap.
         const Cut E = elem(C, lo);
+        const LineDir D = have_seg_dir ? seg_dir : R.line_dir(E);
         bool has_pre = false, has_suf = false;
         Mu pre_end, suf_start;
-        for (std::uint32_t g : near) {
-          if (g >= NS || !boxes_meet(sbox[g], rb) || !R.segment_line_interval(g, E, in, out)) continue;
+        for (const std::uint32_t g : near) {
+          if ((!root && !boxes_meet(sbox[g], rb)) || !R.segment_line_interval(g, E, D, in, out)) continue;
           const std::size_t before = ivs.size();
           add_cover(lo, E, in, out);
           if (ivs.size() == before) continue;
@@ -913,7 +1002,9 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
       const Candidate& O = cand[oi];
       auto try_pair = [&](std::uint32_t j, const Cut& E, const Cut& F, const Mu& f0, const Mu& f1) {
         if (compare_angle(E.e0, E.e1, F.e0, F.e1) != 0) return;
-        const int side = exact_sign([&](auto L) {
+        // Same B vertex (parallel edges share their extreme vertex): it cancels exactly, and the
+        // plain cross product certifies the frequent exact zero (collinear edges) cheaply.
+        const int side = E.pb == F.pb ? predicates::cross_edges(E.e0, E.e1, E.pt, F.pt) : exact_sign([&](auto L) {
           auto Dx = L(E.e1.x()) - L(E.e0.x()), Dy = L(E.e1.y()) - L(E.e0.y());
           return Dx * (L(F.pt.y()) + L(F.pb.y()) - L(E.pt.y()) - L(E.pb.y())) -
                  Dy * (L(F.pt.x()) + L(F.pb.x()) - L(E.pt.x()) - L(E.pb.x()));
@@ -1090,6 +1181,9 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
   std::vector<char> seen(KP, 0);
   std::vector<Piece> ordered;
   ordered.reserve(KP);
+  std::vector<Vec2> osp, oep;  // sp, ep in the new order
+  osp.reserve(KP);
+  oep.reserve(KP);
   for (std::size_t s0 = 0; s0 < KP; ++s0) {
     if (seen[s0]) continue;
     // Start an open chain at a piece nobody links to, if this one is on an open chain.
@@ -1101,6 +1195,8 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
       Piece pc = pieces_[k];
       pc.ring = static_cast<std::uint32_t>(rings_.size());
       ordered.push_back(pc);
+      osp.push_back(sp[k]);
+      oep.push_back(ep[k]);
       ++ring.count;
     }
     for (std::uint32_t q = 0; q < ring.count; ++q) {
@@ -1123,14 +1219,14 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
     for (std::uint32_t q = 0; q < rg.count; ++q) {
       const std::size_t k = rg.first + q;
       const std::size_t Le = element_count(k);
-      Vec2 prevp = start_point(k);
+      Vec2 prevp = osp[k];  // = start_point(k)
       for (std::size_t j = 1; j < Le; ++j) {
         const Cut E = element(k, j);
         const Vec2 v = E.pt + E.pb;
         acc(prevp, v);
         prevp = v;
       }
-      acc(prevp, end_point(k));
+      acc(prevp, oep[k]);  // = end_point(k)
     }
     if (std::abs(sum) > (64.0 + 4.0 * terms) * 0x1p-52 * mag + 0x1p-900) {
       rg.area_sign = sum > 0 ? 1 : -1;

@@ -1,19 +1,23 @@
 // PolygonDirectionSet (DHS §6, src/polygon2/fixed_directions.cpp): σ_d through the per-direction
-// slab decomposition must equal PolygonDepth2::along bit for bit (every field of the result), on
+// slab decomposition (persistent order) must equal PolygonDepth2::along bit for bit (every field of the result), on
 // random polygons with holes (integer and real coordinates), combs whose pockets Q fits exactly
 // (slits of ∂O), a frame with collinear vertices, and nesting pieces; placements random, on
 // convolution vertices p − q, on edges of the R_i, on ends of ∂O's pieces, and on slab boundary
 // lines (a piece end moved along d, exact on integer inputs); directions axis-parallel, random
 // integer, parallel to P's and Q's edges (elements parallel to d have no u-extent), irrational.
 // The reference along() is itself checked against the exact CGAL union in test_depth.cpp.
-// Pinned seeds. Also: bad input errors, and the space per direction (printed).
+// Pinned seeds. Also: bad input errors, and the space per direction: linear in the pieces of ∂O on
+// combs seen across their teeth (the slab method's quadratic case), with a stated constant.
 #include <pendepth/depth2_polygon.hpp>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <set>
 
+#include "polygon2/fixed_directions_persistent.hpp"
 #include "polygon2/query_impl.hpp"
 #include "polygon2/union_boundary.hpp"
 #include "shapes.hpp"
@@ -211,6 +215,107 @@ TEST(PolygonDirectionSet, SpacePerDirection) {
   const PolygonDepth2 pc(comb, ConvexPolygon{{0, 0}, {2, 0}, {2, 2}, {0, 2}});
   const PolygonDirectionSet along_teeth(pc, {{0, 1}}), across(pc, {{1, 0}});
   std::printf("comb of 100 teeth: %zu bytes along the teeth, %zu across\n", along_teeth.bytes(), across.bytes());
+}
+
+// The persistent sequence alone against snapshots of a std::set: random sweeps (each element
+// inserted once, erased at most once, as in the slab sweep; versions without a commit, like thin
+// slabs), small integer keys so ties fall to the id. Every version after finish() must list
+// exactly its snapshot, and first_not_behind must return the first element ≥ a threshold and its
+// successor. Nodes stay linear in the updates (expected O(1) copies per update, DSST).
+TEST(PersistentOrder, MatchesSnapshotsOfASortedSet) {
+  using pendepth::polygon2::PersistentOrder;
+  std::mt19937_64 rng(2024);
+  std::size_t worst_nodes = 0, worst_updates = 1;
+  for (int run = 0; run < pendepth_test::scaled(40); ++run) {
+    const std::uint32_t N = 1 + std::uint32_t(rng() % (run < 20 ? 40 : 3000));
+    std::vector<int> key(N);
+    for (auto& k : key) k = int(rng() % (1 + N / 4));
+    auto less = [&](std::uint32_t a, std::uint32_t b) { return key[a] != key[b] ? key[a] < key[b] : a < b; };
+    PersistentOrder order(N);
+    std::set<std::uint32_t, decltype(less)> live(less);
+    std::vector<std::vector<std::uint32_t>> snap;  // per version; empty and uncommitted alike
+    std::vector<bool> committed;
+    std::uint32_t next = 0;
+    std::size_t updates = 0;
+    for (std::uint32_t v = 0; next < N || !live.empty(); ++v) {
+      order.begin(v);
+      std::vector<std::uint32_t> out;
+      for (std::uint32_t x : live)
+        if (rng() % 4 == 0) out.push_back(x);
+      for (std::uint32_t x : out) order.erase(x), live.erase(x), ++updates;
+      for (std::uint32_t k = std::uint32_t(rng() % 6); k > 0 && next < N; --k, ++next) {
+        ASSERT_FALSE(order.contains(next));
+        order.insert(next, less), live.insert(next), ++updates;
+        ASSERT_TRUE(order.contains(next));
+      }
+      const bool commit = rng() % 8 != 0;
+      if (commit) order.commit();
+      snap.emplace_back(commit ? std::vector<std::uint32_t>(live.begin(), live.end()) : std::vector<std::uint32_t>{});
+      committed.push_back(commit);
+    }
+    order.finish();
+    for (std::uint32_t v = 0; v < snap.size(); ++v) {
+      ASSERT_EQ(order.elements(v), snap[v]) << "run " << run << " version " << v;
+      for (int q = 0; q < 4; ++q) {
+        const int threshold = int(rng() % (N / 4 + 3)) - 1;
+        const auto [first, after] =
+            order.first_not_behind(v, [&](std::uint32_t e) { return key[e] < threshold; });
+        auto it = std::find_if(snap[v].begin(), snap[v].end(), [&](std::uint32_t e) { return key[e] >= threshold; });
+        const std::uint32_t want_first = it == snap[v].end() ? PersistentOrder::kNil : *it;
+        const std::uint32_t want_after =
+            it == snap[v].end() || it + 1 == snap[v].end() ? PersistentOrder::kNil : *(it + 1);
+        ASSERT_EQ(first, want_first) << "run " << run << " version " << v << " threshold " << threshold;
+        ASSERT_EQ(after, want_after) << "run " << run << " version " << v << " threshold " << threshold;
+      }
+    }
+    if (double(order.node_count()) / double(updates) > double(worst_nodes) / double(worst_updates))
+      worst_nodes = order.node_count(), worst_updates = updates;
+    EXPECT_LE(order.node_count(), 3 * updates) << "run " << run;
+  }
+  std::printf("persistent order: at most %.2f nodes per update\n", double(worst_nodes) / double(worst_updates));
+}
+
+// The old worst case of the slab method: a comb seen across its teeth, tilted so that every
+// tooth corner is its own key and a line parallel to d crosses many teeth (the sorted lists per
+// slab took Θ(n²) space: 8.2 MB at n = 10⁴). The persistent order keeps bytes() per direction
+// linear: at most kBytesPerPiece bytes per piece of ∂O, for n = 10² … 10⁴ (a bound of the
+// structure: per sub-piece 20 bytes + 8 of key ends + ~2 slabs of 4 bytes + expected ~2.4 treap
+// nodes of 20 bytes; measured ≤ 102). Queries on those combs equal along() bit for bit.
+TEST(PolygonDirectionSet, LinearSpaceOnCombsAcrossTheTeeth) {
+  constexpr double kBytesPerPiece = 200;
+  std::mt19937_64 rng(31337);
+  const std::vector<Vec2> ds{{1, 0.01}, {1, -0.003}, {100, 1}, {1, 0}, {0, 1}, {std::sqrt(2.0), 1 / 3.0}};
+  double worst = 0;
+  for (int n : {100, 1000, pendepth_test::scaled(10000)}) {
+    const Polygon comb = Polygon::simple(polygon2_test::comb_ring(n / 4, 1, 3, 20, 2));
+    const PolygonDepth2 pc(comb, ConvexPolygon{{0, 0}, {2, 0}, {2, 2}, {0, 2}});
+    const auto stats = pc.boundary_stats();
+    const double pieces = double(stats.segments + stats.arcs);
+    std::printf("comb n=%d (%.0f pieces of ∂O), bytes per direction (per piece):", n, pieces);
+    for (std::size_t k = 0; k < ds.size(); ++k) {
+      const PolygonDirectionSet one(pc, {ds[k]});
+      const double per_piece = double(one.bytes()) / pieces;
+      std::printf(" %zu (%.0f)", one.bytes(), per_piece);
+      worst = std::max(worst, per_piece);
+      EXPECT_LE(per_piece, kBytesPerPiece) << "n=" << n << " d#" << k;
+    }
+    std::printf("\n");
+    const PolygonDirectionSet set(pc, ds);
+    const double W = double(n / 4) * 4;
+    std::uniform_real_distribution<double> ux(-3, W + 3), uy(-3, 25);
+    std::size_t overlapping = 0, queries = pendepth_test::scaled(300);
+    for (std::size_t q = 0; q < queries; ++q) {
+      Vec2 t(ux(rng), uy(rng));
+      if (q % 3 == 0) t = Vec2(std::round(t.x()), std::round(t.y()));  // on slab lines of the axis directions
+      for (std::size_t k = 0; k < ds.size(); ++k) {
+        const Depth2 want = pc.along(t, ds[k]);
+        expect_identical(set.along(t, k), want, "comb n=" + std::to_string(n) + " d#" + std::to_string(k));
+        overlapping += want.overlapping;
+      }
+    }
+    EXPECT_GT(overlapping, queries * ds.size() / 10) << n;
+  }
+  std::printf("largest: %.0f bytes per piece (bound %.0f)\n", worst, kBytesPerPiece);
 }
 
 // The set refers to the PolygonDepth2's heap state, so moving the PolygonDepth2 keeps it valid.
