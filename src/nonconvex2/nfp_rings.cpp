@@ -1,0 +1,296 @@
+// The per-pair no-fit polygon, export (issue 5 item 4): the exact pieces of ∂O (nfp_build.cpp)
+// linked into the rings of cl(O), its slits and its isolated points.
+//
+// Every piece end is an exact rational point (a sum vertex or the crossing of two sum edge lines).
+// 1. Pieces of positive length are grouped by their exact supporting line (canonical slope and
+//    offset); on each line the pieces oriented one way (O on their left) and the other way are
+//    cut at every piece end and every other exact vertex lying on the line, giving elementary
+//    segments. An elementary segment covered both ways has O on both sides: a slit. Covered one
+//    way: a boundary edge of cl(O) with O on its left (duplicates of coincident candidates merge
+//    here).
+// 2. Edges are linked end to start by exact point identity. Where several edges leave one vertex
+//    (two parts of O touching at a point), the incoming edge continues with the sharpest left
+//    turn, so each ring bounds one side of the touching point. Collinear pass-through vertices
+//    are dropped. Rings with O on their left: positive area = outer ring (CCW), negative = hole
+//    (CW); each hole goes to the smallest outer ring containing one of its vertices (exact
+//    crossing test).
+// 3. Zero-length pieces that are no vertex of any edge or slit are isolated points of ℝ² \ O.
+// All decisions use exact rationals (GMP); coordinates are rounded to nearest once at export.
+// Cost: O(N log N) rational operations for N pieces, plus O(N·k) box-filtered point–line tests
+// (k vertices in a line's box) and O(H·R·n) point-in-ring tests for H holes, R outer rings.
+#include <gmpxx.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+#include "geometry/exact.hpp"
+#include "nonconvex2/nfp_impl.hpp"
+
+namespace pendepth {
+
+namespace {
+
+using nonconvex2::NfpPiece;
+using nonconvex2::Param;
+using nonconvex2::Ray;
+
+struct QP {
+  mpq_class x, y;
+  bool operator<(const QP& o) const { return x != o.x ? x < o.x : y < o.y; }
+  bool operator==(const QP& o) const { return x == o.x && y == o.y; }
+};
+
+QP exact_point(const Ray& E, const Param& p) {
+  const exact::LiftQ L;
+  auto [n, dd] = nonconvex2::param_nd(p, E, Vec2(0, 0), L);
+  const mpq_class mu = n.v / dd.v;
+  QP r;
+  r.x = mpq_class(E.o1.x()) + mpq_class(E.o2.x()) + mu * nonconvex2::ray_dx(E, L).v;
+  r.y = mpq_class(E.o1.y()) + mpq_class(E.o2.y()) + mu * nonconvex2::ray_dy(E, L).v;
+  return r;
+}
+
+// Round to nearest (ties: either neighbour; get_d truncates).
+double round_q(const mpq_class& q) {
+  const double d = q.get_d();
+  double best = d;
+  mpq_class err = abs(q - mpq_class(d));
+  for (double c : {std::nextafter(d, -INFINITY), std::nextafter(d, INFINITY)}) {
+    if (!std::isfinite(c)) continue;
+    const mpq_class e = abs(q - mpq_class(c));
+    if (e < err) {
+      err = e;
+      best = c;
+    }
+  }
+  return best;
+}
+
+Vec2 round_point(const QP& p) { return Vec2(round_q(p.x), round_q(p.y)); }
+
+mpq_class cross(const QP& a, const QP& b) { return a.x * b.y - a.y * b.x; }
+QP sub(const QP& a, const QP& b) { return {a.x - b.x, a.y - b.y}; }
+
+// A supporting line: y = slope·x + offset, or x = offset (vertical); u = x resp. y along it.
+struct LineKey {
+  bool vertical = false;
+  mpq_class slope, offset;
+  bool operator<(const LineKey& o) const {
+    if (vertical != o.vertical) return vertical < o.vertical;
+    if (slope != o.slope) return slope < o.slope;
+    return offset < o.offset;
+  }
+  bool operator==(const LineKey& o) const { return vertical == o.vertical && slope == o.slope && offset == o.offset; }
+  const mpq_class& u(const QP& p) const { return vertical ? p.y : p.x; }
+  QP at(const mpq_class& u) const { return vertical ? QP{offset, u} : QP{u, slope * u + offset}; }
+  bool contains(const QP& p) const { return vertical ? p.x == offset : p.y == slope * p.x + offset; }
+};
+
+// Exact: p strictly inside the ring (crossing number; the caller avoids points on the ring).
+int point_in_ring(const std::vector<QP>& ring, const QP& p) {
+  bool in = false;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const QP &a = ring[i], &b = ring[(i + 1) % ring.size()];
+    const mpq_class s = cross(sub(b, a), sub(p, a));
+    if (s == 0 && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y))
+      return 0;  // on the ring
+    if ((a.y > p.y) != (b.y > p.y)) {
+      // Crossing of the horizontal ray to +x: x at height p.y greater than p.x.
+      if ((s > 0) == (b.y > a.y)) in = !in;
+    }
+  }
+  return in ? 1 : -1;
+}
+
+mpq_class ring_area2(const std::vector<QP>& ring) {
+  mpq_class a = 0;
+  for (std::size_t i = 0; i < ring.size(); ++i) a += cross(ring[i], ring[(i + 1) % ring.size()]);
+  return a;
+}
+
+// The CCW angle from r to w in [0, 2π) is larger for a than for b (exact; a, b, r non-zero).
+bool larger_ccw_angle(const QP& r, const QP& a, const QP& b) {
+  auto half = [&](const QP& w) {
+    const mpq_class c = cross(r, w);
+    return (c > 0 || (c == 0 && r.x * w.x + r.y * w.y > 0)) ? 0 : 1;
+  };
+  const int ha = half(a), hb = half(b);
+  if (ha != hb) return ha > hb;
+  return cross(a, b) < 0;  // b before a counter-clockwise
+}
+
+}  // namespace
+
+void nfp_export(NoFitPolygon2::Impl& N) {
+  struct Seg {
+    QP a, b;
+    LineKey key;
+  };
+  std::vector<Seg> segs;
+  std::vector<QP> zero_points;
+  for (const NfpPiece& pc : N.pieces) {
+    QP a = exact_point(pc.E, pc.lo), b = exact_point(pc.E, pc.hi);
+    if (a == b) {
+      zero_points.push_back(a);
+      continue;
+    }
+    Seg s{a, b, {}};
+    const QP D = sub(b, a);
+    if (D.x != 0) {
+      s.key.slope = D.y / D.x;
+      s.key.offset = a.y - s.key.slope * a.x;
+    } else {
+      s.key.vertical = true;
+      s.key.offset = a.x;
+    }
+    segs.push_back(std::move(s));
+  }
+  std::sort(segs.begin(), segs.end(), [](const Seg& x, const Seg& y) { return x.key < y.key; });
+
+  // Every exact vertex (piece ends and zero-length points), sorted by rounded x for range scans.
+  std::vector<std::pair<Vec2, QP>> verts;
+  for (const Seg& s : segs) {
+    verts.push_back({round_point(s.a), s.a});
+    verts.push_back({round_point(s.b), s.b});
+  }
+  for (const QP& p : zero_points) verts.push_back({round_point(p), p});
+  std::sort(verts.begin(), verts.end(), [](const auto& x, const auto& y) { return x.first.x() < y.first.x(); });
+
+  struct Edge {
+    QP a, b;
+  };
+  std::vector<Edge> edges;
+  std::vector<std::array<QP, 2>> slits;
+  std::map<QP, int> is_vertex;  // ends of edges and slit pieces
+  for (std::size_t g0 = 0, g1; g0 < segs.size(); g0 = g1) {
+    g1 = g0 + 1;
+    while (g1 < segs.size() && segs[g1].key == segs[g0].key) ++g1;
+    const LineKey& key = segs[g0].key;
+    // Intervals in u, oriented forward (u increasing) or backward.
+    struct Iv {
+      mpq_class lo, hi;
+      bool fwd;
+    };
+    std::vector<Iv> ivs;
+    std::vector<mpq_class> us;
+    Vec2 lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
+    for (std::size_t k = g0; k < g1; ++k) {
+      const mpq_class &ua = key.u(segs[k].a), &ub = key.u(segs[k].b);
+      const bool fwd = ua < ub;
+      ivs.push_back({fwd ? ua : ub, fwd ? ub : ua, fwd});
+      us.push_back(ua);
+      us.push_back(ub);
+      for (const QP* p : {&segs[k].a, &segs[k].b}) {
+        const Vec2 r = round_point(*p);
+        lo = lo.cwiseMin(r);
+        hi = hi.cwiseMax(r);
+      }
+    }
+    // Other exact vertices lying on this line within its extent split it too.
+    const double m = (lo.cwiseAbs().maxCoeff() + hi.cwiseAbs().maxCoeff()) * 0x1p-40 + 0x1p-1000;
+    auto it = std::lower_bound(verts.begin(), verts.end(), lo.x() - m, [](const auto& v, double x) { return v.first.x() < x; });
+    for (; it != verts.end() && it->first.x() <= hi.x() + m; ++it)
+      if (it->first.y() >= lo.y() - m && it->first.y() <= hi.y() + m && key.contains(it->second)) us.push_back(key.u(it->second));
+    std::sort(us.begin(), us.end());
+    us.erase(std::unique(us.begin(), us.end()), us.end());
+    bool slit_open = false;
+    QP slit_start;
+    for (std::size_t i = 0; i + 1 < us.size(); ++i) {
+      bool f = false, b = false;
+      for (const Iv& iv : ivs)
+        if (iv.lo <= us[i] && us[i + 1] <= iv.hi) (iv.fwd ? f : b) = true;
+      const QP p0 = key.at(us[i]), p1 = key.at(us[i + 1]);
+      if (f || b) {
+        is_vertex[p0] = 1;
+        is_vertex[p1] = 1;
+      }
+      if (f && b) {
+        if (!slit_open) slit_start = p0;
+        slit_open = true;
+        if (i + 2 == us.size()) slits.push_back({slit_start, p1});
+        continue;
+      }
+      if (slit_open) slits.push_back({slit_start, p0});
+      slit_open = false;
+      if (f) edges.push_back({p0, p1});
+      else if (b) edges.push_back({p1, p0});
+    }
+    // Along the increasing direction (canonical for the slit ends); the line key orients u.
+  }
+
+  // Link edges into rings.
+  std::map<QP, std::vector<std::size_t>> out;
+  for (std::size_t e = 0; e < edges.size(); ++e) out[edges[e].a].push_back(e);
+  std::vector<char> used(edges.size(), 0);
+  std::vector<std::vector<QP>> rings;
+  for (std::size_t e0 = 0; e0 < edges.size(); ++e0) {
+    if (used[e0]) continue;
+    std::vector<std::size_t> chain;
+    std::size_t e = e0;
+    for (;;) {
+      used[e] = 1;
+      chain.push_back(e);
+      auto& cands = out[edges[e].b];
+      std::size_t best = edges.size();
+      const QP r = sub(edges[e].a, edges[e].b);  // back along the incoming edge
+      for (std::size_t c : cands) {
+        if (used[c] && c != e0) continue;
+        if (best == edges.size() || larger_ccw_angle(r, sub(edges[c].b, edges[c].a), sub(edges[best].b, edges[best].a))) best = c;
+      }
+      if (best == edges.size() || best == e0) break;  // closed (or an open chain: exported as is)
+      e = best;
+    }
+    std::vector<QP> ring;
+    for (std::size_t k = 0; k < chain.size(); ++k) {
+      const Edge& in = edges[chain[(k + chain.size() - 1) % chain.size()]];
+      const Edge& o = edges[chain[k]];
+      const QP a = sub(in.b, in.a), b = sub(o.b, o.a);
+      if (chain.size() > 2 && cross(a, b) == 0 && a.x * b.x + a.y * b.y > 0) continue;  // pass-through
+      ring.push_back(o.a);
+    }
+    if (ring.size() >= 3) rings.push_back(std::move(ring));
+  }
+
+  // Outer rings and holes.
+  std::vector<std::size_t> outer, holes;
+  std::vector<mpq_class> area(rings.size());
+  for (std::size_t k = 0; k < rings.size(); ++k) {
+    area[k] = ring_area2(rings[k]);
+    (area[k] > 0 ? outer : holes).push_back(k);
+  }
+  std::vector<std::vector<std::size_t>> holes_of(outer.size());
+  for (std::size_t h : holes) {
+    std::size_t best = outer.size();
+    for (std::size_t o = 0; o < outer.size(); ++o) {
+      int side = 0;
+      for (const QP& p : rings[h]) {
+        side = point_in_ring(rings[outer[o]], p);
+        if (side != 0) break;
+      }
+      if (side > 0 && (best == outer.size() || area[outer[o]] < area[outer[best]])) best = o;
+    }
+    if (best < outer.size()) holes_of[best].push_back(h);
+  }
+  auto rounded = [](const std::vector<QP>& ring) {
+    std::vector<Vec2> r;
+    for (const QP& p : ring) r.push_back(round_point(p));
+    return r;
+  };
+  N.polys.clear();
+  for (std::size_t o = 0; o < outer.size(); ++o) {
+    std::vector<std::vector<Vec2>> poly{rounded(rings[outer[o]])};
+    for (std::size_t h : holes_of[o]) poly.push_back(rounded(rings[h]));
+    N.polys.push_back(std::move(poly));
+  }
+  N.slits.clear();
+  for (const auto& s : slits) N.slits.push_back({round_point(s[0]), round_point(s[1])});
+  std::sort(zero_points.begin(), zero_points.end());
+  zero_points.erase(std::unique(zero_points.begin(), zero_points.end()), zero_points.end());
+  N.points.clear();
+  for (const QP& p : zero_points)
+    if (!is_vertex.count(p)) N.points.push_back(round_point(p));
+}
+
+}  // namespace pendepth
