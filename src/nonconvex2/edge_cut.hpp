@@ -131,7 +131,82 @@ inline Vec2 cand_translation(const Cand& c, const Vec2& t) {
         },
         [&](auto L) { return param_nd(c.at, E, t, L).second; });
   };
+  // The projection on an axis-parallel edge has one coordinate exactly t's: decided exactly (cheap
+  // for equal input doubles) rather than by the rational fallback a zero forces on accurate_ratio.
+  if (c.at.kind == Param::Proj) {
+    if (exact::exact_sign([&](auto L) { return ray_dx(E, L); }) == 0) return Vec2(coord(0), 0);
+    if (exact::exact_sign([&](auto L) { return ray_dy(E, L); }) == 0) return Vec2(0, coord(1));
+  }
   return Vec2(coord(0), coord(1));
+}
+
+/// Symbolic identity of two candidate points (the same sum vertex, or the crossing of the same two
+/// symbolic lines); false when not provable this way (the caller then compares exactly).
+inline bool same_point(const Cand& a, const Cand& b) {
+  auto fixed = [](const Cand& c, std::uint32_t& p, std::uint32_t& q) {
+    const int k = c.at.kind == Param::Zero ? 0 : c.at.kind == Param::One ? 1 : c.at.kind == Param::Cut ? known_lambda(c.at.line, c.E) : -1;
+    if (k < 0) return false;
+    p = k == 0 ? c.E.p0 : c.E.p1;
+    q = k == 0 ? c.E.q0 : c.E.q1;
+    return c.E.sym;
+  };
+  auto through = [](const Line& l, std::uint32_t p, std::uint32_t q) { return (l.p0 == p && l.q0 == q) || (l.p1 == p && l.q1 == q); };
+  // The sum vertex at end k of c (c's fixed point) lies on line l: exact, degree 2.
+  auto vertex_on = [](const Cand& c, int k, const Line& l) {
+    return exact::exact_sign([&](auto L) {
+             auto x = L(c.E.o1.x()) + L(c.E.o2.x()) - L(l.c1.x()) - L(l.c2.x());
+             auto y = L(c.E.o1.y()) + L(c.E.o2.y()) - L(l.c1.y()) - L(l.c2.y());
+             if (k == 1) {
+               x = x + ray_dx(c.E, L);
+               y = y + ray_dy(c.E, L);
+             }
+             return (L(l.e1.x()) - L(l.e0.x())) * y - (L(l.e1.y()) - L(l.e0.y())) * x;
+           }) == 0;
+  };
+  // A cut point of b whose cut line passes through a's vertex V is V iff V lies on b's edge line
+  // (collinear candidates from parallel edges of P and Q are common on real pieces).
+  auto end_of = [](const Cand& c) { return c.at.kind == Param::Zero ? 0 : c.at.kind == Param::One ? 1 : known_lambda(c.at.line, c.E); };
+  auto cut_at_vertex = [&](const Cand& a, std::uint32_t p, std::uint32_t q, const Cand& b) {
+    if (b.at.kind != Param::Cut) return false;
+    const int k = end_of(a);
+    return (through(b.at.line, p, q) || vertex_on(a, k, b.at.line)) && (through(b.edge, p, q) || vertex_on(a, k, b.edge));
+  };
+  std::uint32_t pa, qa, pb, qb;
+  const bool fa = fixed(a, pa, qa), fb = fixed(b, pb, qb);
+  if (fa && fb) {
+    if (pa == pb && qa == qb) return true;
+    // Two sum vertices with equal coordinates (an edge of P equal to one of −Q): exact, degree 1.
+    const int ka = end_of(a), kb = end_of(b);
+    for (int axis = 0; axis < 2; ++axis)
+      if (exact::exact_sign([&](auto L) {
+            auto va = axis == 0 ? L(a.E.o1.x()) + L(a.E.o2.x()) : L(a.E.o1.y()) + L(a.E.o2.y());
+            auto vb = axis == 0 ? L(b.E.o1.x()) + L(b.E.o2.x()) : L(b.E.o1.y()) + L(b.E.o2.y());
+            if (ka == 1) va = va + (axis == 0 ? ray_dx(a.E, L) : ray_dy(a.E, L));
+            if (kb == 1) vb = vb + (axis == 0 ? ray_dx(b.E, L) : ray_dy(b.E, L));
+            return va - vb;
+          }) != 0)
+        return false;
+    return true;
+  }
+  if (fa) return cut_at_vertex(a, pa, qa, b);
+  if (fb) return cut_at_vertex(b, pb, qb, a);
+  // One geometric line: symbolically, or parallel with c1 + c2 of one on the other (exact, degree 2).
+  auto collinear = [](const Line& l, const Line& m) {
+    if (same_line(l, m)) return true;
+    const int par = exact::exact_sign([&](auto L) {
+      return (L(l.e1.x()) - L(l.e0.x())) * (L(m.e1.y()) - L(m.e0.y())) - (L(l.e1.y()) - L(l.e0.y())) * (L(m.e1.x()) - L(m.e0.x()));
+    });
+    if (par != 0) return false;
+    return exact::exact_sign([&](auto L) {
+             auto x = L(m.c1.x()) + L(m.c2.x()) - L(l.c1.x()) - L(l.c2.x()), y = L(m.c1.y()) + L(m.c2.y()) - L(l.c1.y()) - L(l.c2.y());
+             return (L(l.e1.x()) - L(l.e0.x())) * y - (L(l.e1.y()) - L(l.e0.y())) * x;
+           }) == 0;
+  };
+  if (a.at.kind == Param::Cut && b.at.kind == Param::Cut)
+    return (same_line(a.at.line, b.edge) && collinear(b.at.line, a.edge)) || (same_line(b.at.line, a.edge) && collinear(a.at.line, b.edge));
+  // Projections of t on one geometric line (collinear candidates) are one point.
+  if (a.at.kind == Param::Proj && b.at.kind == Param::Proj) return collinear(a.edge, b.edge);
+  return false;
 }
 
 /// Which end of its edge the candidate point is (0 start, 1 end, -1 neither), decided exactly.

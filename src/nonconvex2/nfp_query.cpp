@@ -203,12 +203,12 @@ Depth2 NoFitPolygon2::minimum(const Vec2& t) const {
     Cand c{pc.E, proj, pc.edge};
     if (nonconvex2::compare_params(proj, pc.lo, pc.E, t) <= 0) c.at = pc.lo;
     else if (nonconvex2::compare_params(proj, pc.hi, pc.E, t) >= 0) c.at = pc.hi;
-    if (found && exact_sign([&](auto L) {
+    if (found && (nonconvex2::same_point(c, best) || exact_sign([&](auto L) {
           auto [n1, d1] = nonconvex2::sq_dist(c, t, L);
           auto [n2, d2] = nonconvex2::sq_dist(best, t, L);
           return n1 * d2 - n2 * d1;
-        }) >= 0)
-      continue;
+        }) >= 0))
+      continue;  // not nearer (a shared vertex of two pieces is recognised symbolically)
     best = c;
     found = true;
     best_value = std::sqrt(exact::accurate_ratio([&](auto L) { return nonconvex2::sq_dist(c, t, L).first; },
