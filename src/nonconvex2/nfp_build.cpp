@@ -61,8 +61,10 @@ std::vector<std::uint32_t> previous(const Polygon& S) {
   return prev;
 }
 
-// The point at parameter p of E, each coordinate to a few ulps.
-Vec2 point_at(const Ray& E, const Param& p) {
+// The point at parameter p of E, each coordinate to a few ulps (a sum vertex: rounded to nearest).
+Vec2 point_at(const Ray& E, const Line& line, const Param& p) {
+  if (p.kind == Param::Zero) return line.c1 + line.c2;
+  if (p.kind == Param::One) return line.q_edge ? Vec2(line.c1 + line.e1) : Vec2(line.e1 + line.c2);
   nonconvex2::Cand c{E, p, {}};
   return nonconvex2::cand_translation(c, Vec2(0, 0));
 }
@@ -151,7 +153,7 @@ NoFitPolygon2::Impl::Impl(const Polygon& P, const Polygon& Q) : S(P, Q) {
         nullptr);
     if (swallowed) continue;
     nonconvex2::uncovered_pieces(covers, E, Vec2(0, 0), zero, one, [&](const Param& lo, const Param& hi) {
-      NfpPiece pc{E, line, lo, hi, point_at(E, lo), point_at(E, hi), {}, {}};
+      NfpPiece pc{E, line, lo, hi, point_at(E, line, lo), point_at(E, line, hi), {}, {}};
       pc.blo = Vec2(lower(std::min(pc.a.x(), pc.b.x())), lower(std::min(pc.a.y(), pc.b.y())));
       pc.bhi = Vec2(upper(std::max(pc.a.x(), pc.b.x())), upper(std::max(pc.a.y(), pc.b.y())));
       pieces.push_back(pc);

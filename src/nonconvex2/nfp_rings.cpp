@@ -44,6 +44,10 @@ struct QP {
 
 QP exact_point(const Ray& E, const Param& p) {
   const exact::LiftQ L;
+  if (p.kind == Param::Zero) return {mpq_class(E.o1.x()) + E.o2.x(), mpq_class(E.o1.y()) + E.o2.y()};
+  if (p.kind == Param::One)
+    return {mpq_class(E.o1.x()) + E.o2.x() + E.a1.x() + E.a2.x() - E.b1.x() - E.b2.x(),
+            mpq_class(E.o1.y()) + E.o2.y() + E.a1.y() + E.a2.y() - E.b1.y() - E.b2.y()};
   auto [n, dd] = nonconvex2::param_nd(p, E, Vec2(0, 0), L);
   const mpq_class mu = n.v / dd.v;
   QP r;
@@ -127,16 +131,19 @@ void nfp_export(NoFitPolygon2::Impl& N) {
   struct Seg {
     QP a, b;
     LineKey key;
+    Vec2 ra, rb;  // the ends to a few ulps (floating keys and boxes only)
   };
   std::vector<Seg> segs;
   std::vector<QP> zero_points;
+  std::vector<Vec2> zero_rounded;
   for (const NfpPiece& pc : N.pieces) {
     QP a = exact_point(pc.E, pc.lo), b = exact_point(pc.E, pc.hi);
     if (a == b) {
       zero_points.push_back(a);
+      zero_rounded.push_back(pc.a);
       continue;
     }
-    Seg s{a, b, {}};
+    Seg s{a, b, {}, pc.a, pc.b};
     const QP D = sub(b, a);
     if (D.x != 0) {
       s.key.slope = D.y / D.x;
@@ -147,15 +154,23 @@ void nfp_export(NoFitPolygon2::Impl& N) {
     }
     segs.push_back(std::move(s));
   }
-  std::sort(segs.begin(), segs.end(), [](const Seg& x, const Seg& y) { return x.key < y.key; });
+  {  // sorted by line (indices: moving rationals is costly)
+    std::vector<std::size_t> order(segs.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return segs[x].key < segs[y].key; });
+    std::vector<Seg> sorted;
+    sorted.reserve(segs.size());
+    for (std::size_t k : order) sorted.push_back(std::move(segs[k]));
+    segs = std::move(sorted);
+  }
 
   // Every exact vertex (piece ends and zero-length points), sorted by rounded x for range scans.
-  std::vector<std::pair<Vec2, QP>> verts;
+  std::vector<std::pair<Vec2, const QP*>> verts;
   for (const Seg& s : segs) {
-    verts.push_back({round_point(s.a), s.a});
-    verts.push_back({round_point(s.b), s.b});
+    verts.push_back({s.ra, &s.a});
+    verts.push_back({s.rb, &s.b});
   }
-  for (const QP& p : zero_points) verts.push_back({round_point(p), p});
+  for (std::size_t k = 0; k < zero_points.size(); ++k) verts.push_back({zero_rounded[k], &zero_points[k]});
   std::sort(verts.begin(), verts.end(), [](const auto& x, const auto& y) { return x.first.x() < y.first.x(); });
 
   struct Edge {
@@ -182,8 +197,7 @@ void nfp_export(NoFitPolygon2::Impl& N) {
       ivs.push_back({fwd ? ua : ub, fwd ? ub : ua, fwd});
       us.push_back(ua);
       us.push_back(ub);
-      for (const QP* p : {&segs[k].a, &segs[k].b}) {
-        const Vec2 r = round_point(*p);
+      for (const Vec2& r : {segs[k].ra, segs[k].rb}) {
         lo = lo.cwiseMin(r);
         hi = hi.cwiseMax(r);
       }
@@ -192,7 +206,7 @@ void nfp_export(NoFitPolygon2::Impl& N) {
     const double m = (lo.cwiseAbs().maxCoeff() + hi.cwiseAbs().maxCoeff()) * 0x1p-40 + 0x1p-1000;
     auto it = std::lower_bound(verts.begin(), verts.end(), lo.x() - m, [](const auto& v, double x) { return v.first.x() < x; });
     for (; it != verts.end() && it->first.x() <= hi.x() + m; ++it)
-      if (it->first.y() >= lo.y() - m && it->first.y() <= hi.y() + m && key.contains(it->second)) us.push_back(key.u(it->second));
+      if (it->first.y() >= lo.y() - m && it->first.y() <= hi.y() + m && key.contains(*it->second)) us.push_back(key.u(*it->second));
     std::sort(us.begin(), us.end());
     us.erase(std::unique(us.begin(), us.end()), us.end());
     bool slit_open = false;
