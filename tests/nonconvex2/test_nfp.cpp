@@ -236,6 +236,16 @@ TEST(NoFitPolygon2, RandomStarPairs) {
   }
 }
 
+// Small integer stars: many parallel, collinear and coincident edges, touching parts of O, slits.
+TEST(NoFitPolygon2, SmallGridPairsDegenerate) {
+  std::mt19937_64 rng(4711);
+  for (int it = 0; it < pendepth_test::scaled(60); ++it) {
+    const Polygon P = star(rng, 5 + int(rng() % 6), 2, 6, true);
+    const Polygon Q = it % 3 == 0 ? P : star(rng, 4 + int(rng() % 5), 1, 4, true);
+    check_all(P, Q, rng, 20, 3, "grid " + std::to_string(it));
+  }
+}
+
 TEST(NoFitPolygon2, LargeOffsets) {
   std::mt19937_64 rng(8086);
   for (int it = 0; it < pendepth_test::scaled(4); ++it) {
@@ -334,6 +344,29 @@ TEST(NoFitPolygon2, HoleFitIsAnIsolatedPoint) {
     std::mt19937_64 rng(8);
     check_all(P, Q, rng, pendepth_test::scaled(40), 3, "hole");
   }
+}
+
+// A chamber reached through a neck exactly Q's width: free placements in the chamber form a hole of
+// cl(O), joined to the outside by the slit of the neck (a slit touching a hole and the outer ring).
+TEST(NoFitPolygon2, BottleNeckSlitJoinsHoleAndOutside) {
+  const Polygon P = Polygon::simple(
+      std::vector<Vec2>{{0, 0}, {10, 0}, {10, 10}, {6, 10}, {6, 7}, {7, 7}, {7, 3}, {3, 3}, {3, 7}, {4, 7}, {4, 10}, {0, 10}}, "bottle");
+  const Polygon Q = Polygon::simple(std::vector<Vec2>{{0, 0}, {2, 0}, {2, 2}, {0, 2}}, "square");
+  const NoFitPolygon2 nfp(P, Q);
+  ASSERT_EQ(nfp.slits().size(), 1u);
+  const auto s = nfp.slits()[0];
+  EXPECT_TRUE((s[0] == Vec2(4, 5) && s[1] == Vec2(4, 10)) || (s[1] == Vec2(4, 5) && s[0] == Vec2(4, 10)));
+  ASSERT_EQ(nfp.polygons().size(), 1u);
+  ASSERT_EQ(nfp.polygons()[0].size(), 2u);
+  std::vector<Vec2> hole = nfp.polygons()[0][1];
+  std::sort(hole.begin(), hole.end(), [](const Vec2& a, const Vec2& b) { return a.x() != b.x() ? a.x() < b.x() : a.y() < b.y(); });
+  EXPECT_EQ(hole, (std::vector<Vec2>{{3, 3}, {3, 5}, {5, 3}, {5, 5}}));
+  EXPECT_FALSE(nfp.overlapping(Vec2(4, 8)));
+  EXPECT_EQ(nfp.minimum(Vec2(4.25, 8)).depth, 0.25);
+  EXPECT_EQ(nfp.minimum(Vec2(4, 5.5)).depth, 0);
+  EXPECT_EQ(nfp.along(Vec2(3.75, 9), Vec2(1, 0)).depth, 0.25);
+  std::mt19937_64 rng(12);
+  check_all(P, Q, rng, pendepth_test::scaled(60), 3, "bottle");
 }
 
 TEST(NoFitPolygon2, CollinearContacts) {
