@@ -42,8 +42,9 @@ struct QP {
   bool operator==(const QP& o) const { return x == o.x && y == o.y; }
 };
 
-QP exact_point(const Ray& E, const Param& p) {
+QP exact_point(const Ray& E, const Param& p_in) {
   const exact::LiftQ L;
+  const Param p = nonconvex2::normalised(p_in, E);  // a cut through a sum vertex is that vertex
   if (p.kind == Param::Zero) return {mpq_class(E.o1.x()) + E.o2.x(), mpq_class(E.o1.y()) + E.o2.y()};
   if (p.kind == Param::One)
     return {mpq_class(E.o1.x()) + E.o2.x() + E.a1.x() + E.a2.x() - E.b1.x() - E.b2.x(),
