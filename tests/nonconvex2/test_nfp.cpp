@@ -369,6 +369,25 @@ TEST(NoFitPolygon2, BottleNeckSlitJoinsHoleAndOutside) {
   check_all(P, Q, rng, pendepth_test::scaled(60), 3, "bottle");
 }
 
+// A closed slot (a hole of P) exactly Q's height: a slit surrounded by O, touching no ring.
+TEST(NoFitPolygon2, ClosedSlotIsAFreeSlit) {
+  const Polygon P({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{3, 4}, {7, 4}, {7, 5}, {3, 5}}}, "plate with a slot");
+  const Polygon Q = Polygon::simple(std::vector<Vec2>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, "unit");
+  const NoFitPolygon2 nfp(P, Q);
+  ASSERT_EQ(nfp.slits().size(), 1u);
+  const auto s = nfp.slits()[0];
+  EXPECT_TRUE((s[0] == Vec2(3, 4) && s[1] == Vec2(6, 4)) || (s[1] == Vec2(3, 4) && s[0] == Vec2(6, 4)));
+  EXPECT_TRUE(nfp.points().empty());
+  ASSERT_EQ(nfp.polygons().size(), 1u);
+  EXPECT_EQ(nfp.polygons()[0].size(), 1u);
+  EXPECT_EQ(nfp.minimum(Vec2(4, 4)).depth, 0);
+  EXPECT_EQ(nfp.minimum(Vec2(4, 4.25)).depth, 0.25);
+  EXPECT_EQ(nfp.minimum(Vec2(2.5, 4)).depth, 0.5);  // nearest: the slit's end (3, 4)
+  EXPECT_EQ(nfp.along(Vec2(4, 3.5), Vec2(0, 1)).depth, 0.5);
+  std::mt19937_64 rng(13);
+  check_all(P, Q, rng, pendepth_test::scaled(60), 3, "closed slot");
+}
+
 TEST(NoFitPolygon2, CollinearContacts) {
   const Polygon P = Polygon::simple(std::vector<Vec2>{{0, 0}, {2, 0}, {4, 0}, {4, 2}, {0, 2}}, "rect with a collinear vertex");
   const Polygon Q = Polygon::simple(std::vector<Vec2>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, "unit");
