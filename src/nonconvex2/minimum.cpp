@@ -102,6 +102,7 @@ Depth2 PairDepth2::minimum(const Vec2& t, PairQueryStats* stats) const {
   double best_value = R;  // the answer is ≤ U ≤ R
   auto consider = [&](const Cand& c) {
     if (found) {
+      if (nonconvex2::same_point(c, best)) return;  // a tie recognised symbolically (no rationals)
       const int s = exact_sign([&](auto L) {
         auto [n1, d1] = sq_dist(c, t, L);
         auto [n2, d2] = sq_dist(best, t, L);
