@@ -33,9 +33,9 @@
 // tests, the bound of the explicit convolution (DHS §6); export O(N log N) rational operations.
 // Queries: overlapping(t) is PairDepth2's pair-sum test (worst O(nm), a few sums on real pieces);
 // along/minimum visit O(log N + k) hierarchy nodes for k boxes near the answer (worst O(N)).
-// Measured (docs/algorithms.md): on the nesting pieces (≤ 14 vertices, ~17 pieces of ∂O) σ takes
-// ~4–6 µs and σ_d ~5–10 µs per query; the build (0.3–0.6 ms) is 2–5× slower than CGAL's
-// minkowski_sum_2 there and on par with it at n = m = 100.
+// Measured (docs/algorithms.md, CPU time): on the nesting pieces (≤ 14 vertices, ~17 pieces of ∂O)
+// σ takes ~2 µs and σ_d ~2.5–4.5 µs per query; the build (0.17–0.28 ms) is 3–4× slower than
+// CGAL's minkowski_sum_2 there and on par with it at n = m = 100.
 // Departure from a winding-number / ray-parity NFP: membership in O is always decided by the open
 // convex pair sums (exact and symbolic), which is what separates slits and isolated points from the
 // interior of M.
