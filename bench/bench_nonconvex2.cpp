@@ -21,8 +21,8 @@
 //                       or the first edge the ray crosses (σ_d), in double
 // Cases:
 //   <instance>          real pieces from ../shared/data/nesting (unrotated): every ordered pair
-//                       of albano (64), a fixed sample of 24 ordered pairs of shirts and of
-//                       trousers (every third pair in row-major order, up to 24). One benchmark
+//                       of albano (64); of shirts and trousers every third
+//                       ordered pair in row-major order, at most 24 (22 and 24 pairs). One benchmark
 //                       iteration of a build builds every pair of the instance; the counter
 //                       `pairs` gives the count, and the tables divide by it (per-pair times).
 //                       Queries cycle through the pairs. n, m: the largest piece sizes.

@@ -554,7 +554,8 @@ int main(int argc, char** argv) {
   BatchArgs ba;
   CLI::App* batch = app.add_subcommand(
       "batch", "Many placements: CSV lines x,y,dx,dy or x,y,z,dx,dy,dz (zero direction asks for σ). "
-               "Prints CSV depth,tx,ty[,tz].");
+               "Prints CSV depth,tx,ty[,tz]. Shapes are preprocessed once (two non-convex polygons: "
+               "their no-fit polygon, see nfp).");
   batch->add_option("P", ba.p, "fixed shape file (.wkt, or 3D .obj/.off/.stl)")->required()->type_name("FILE");
   batch->add_option("Q", ba.q, "moving shape file (same dimension as P)")->required()->type_name("FILE");
   batch->add_option("--queries", ba.queries, "CSV file of queries x,y[,z],dx,dy[,dz]")->required()->type_name("FILE");
