@@ -206,8 +206,21 @@ void nfp_export(NoFitPolygon2::Impl& N) {
     // Other exact vertices lying on this line within its extent split it too.
     const double m = (lo.cwiseAbs().maxCoeff() + hi.cwiseAbs().maxCoeff()) * 0x1p-40 + 0x1p-1000;
     auto it = std::lower_bound(verts.begin(), verts.end(), lo.x() - m, [](const auto& v, double x) { return v.first.x() < x; });
-    for (; it != verts.end() && it->first.x() <= hi.x() + m; ++it)
-      if (it->first.y() >= lo.y() - m && it->first.y() <= hi.y() + m && key.contains(*it->second)) us.push_back(key.u(*it->second));
+    bool split = false;
+    for (; it != verts.end() && it->first.x() <= hi.x() + m; ++it) {
+      const QP& v = *it->second;
+      if (it->first.y() < lo.y() - m || it->first.y() > hi.y() + m) continue;
+      if (g1 == g0 + 1 && (v == segs[g0].a || v == segs[g0].b)) continue;  // a lone piece's own end
+      if (!key.contains(v)) continue;
+      us.push_back(key.u(v));
+      split = true;
+    }
+    if (g1 == g0 + 1 && !split) {  // a lone piece on its line, nothing inside it: one boundary edge
+      is_vertex[segs[g0].a] = 1;
+      is_vertex[segs[g0].b] = 1;
+      edges.push_back({segs[g0].a, segs[g0].b});
+      continue;
+    }
     std::sort(us.begin(), us.end());
     us.erase(std::unique(us.begin(), us.end()), us.end());
     bool slit_open = false;
