@@ -21,9 +21,12 @@
 #include <gmpxx.h>
 
 #include <algorithm>
+#include <array>
+#include <climits>
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <unordered_map>
 
 #include "geometry/exact.hpp"
 #include "nonconvex2/nfp_impl.hpp"
@@ -42,13 +45,67 @@ struct QP {
   bool operator==(const QP& o) const { return x == o.x && y == o.y; }
 };
 
+// The sum vertex (pid, qid) at a symbolic end k (0 or 1) of a candidate ray: the P vertex plus
+// the −Q vertex, two input doubles per coordinate (the ray stores them: o1 = P vertex p0, o2 = −Q
+// vertex q0; a1 = the P vertex p1 on a P edge, the −Q vertex q1 on a Q edge).
+QP sum_vertex(const Ray& E, int k) {
+  const Vec2 &p = k == 0 || E.p0 == E.p1 ? E.o1 : E.a1, &b = k == 0 || E.q0 == E.q1 ? E.o2 : E.a1;
+  return {mpq_class(p.x()) + b.x(), mpq_class(p.y()) + b.y()};
+}
+
+// The crossing of E's line with line c, exactly, in integer arithmetic: every input double is an
+// integer multiple of 2^s (s = the lowest significant bit over all of them), so with all inputs
+// scaled by 2^-s the crossing is 2^s·(A·den + n·D)/den in integers (A = o1 + o2, D = E's
+// direction, n and den the numerator and denominator of λ) and one canonicalisation per coordinate
+// gives the same rational as the generic formula. False (use the generic formula) when the
+// scaled inputs would overflow a double.
+bool cut_point_fixed(const Ray& E, const nonconvex2::Line& c, QP& out) {
+  const std::array<const Vec2*, 10> in{&E.o1, &E.o2, &E.a1, &E.a2, &E.b1, &E.b2, &c.c1, &c.c2, &c.e0, &c.e1};
+  int lo = INT_MAX, hi = INT_MIN;
+  for (const Vec2* v : in)
+    for (int k = 0; k < 2; ++k) {
+      if ((*v)[k] == 0) continue;
+      int e;
+      std::frexp((*v)[k], &e);
+      lo = std::min(lo, e - 53), hi = std::max(hi, e);
+    }
+  if (lo == INT_MAX) return false;
+  if (hi - lo > 1000) return false;
+  std::array<std::array<mpz_class, 2>, 10> z;
+  for (std::size_t i = 0; i < in.size(); ++i)
+    for (int k = 0; k < 2; ++k) z[i][k] = std::ldexp((*in[i])[k], -lo);
+  mpz_class A[2], D[2], C[2], F[2];
+  for (int k = 0; k < 2; ++k) {
+    A[k] = z[0][k] + z[1][k];
+    D[k] = z[2][k] + z[3][k] - z[4][k] - z[5][k];
+    C[k] = z[6][k] + z[7][k];
+    F[k] = z[9][k] - z[8][k];
+  }
+  const mpz_class n = (C[0] - A[0]) * F[1] - (C[1] - A[1]) * F[0];
+  const mpz_class den = D[0] * F[1] - D[1] * F[0];
+  if (den == 0) return false;
+  mpq_class* o[2] = {&out.x, &out.y};
+  for (int k = 0; k < 2; ++k) {
+    mpq_class& q = *o[k];
+    q.get_num() = A[k] * den + n * D[k];
+    q.get_den() = den;
+    q.canonicalize();
+    if (lo >= 0) mpq_mul_2exp(q.get_mpq_t(), q.get_mpq_t(), lo);
+    else mpq_div_2exp(q.get_mpq_t(), q.get_mpq_t(), -lo);
+  }
+  return true;
+}
+
 QP exact_point(const Ray& E, const Param& p_in) {
   const exact::LiftQ L;
   const Param p = nonconvex2::normalised(p_in, E);  // a cut through a sum vertex is that vertex
+  if (E.sym && p.kind != Param::Cut) return sum_vertex(E, p.kind == Param::Zero ? 0 : 1);
   if (p.kind == Param::Zero) return {mpq_class(E.o1.x()) + E.o2.x(), mpq_class(E.o1.y()) + E.o2.y()};
   if (p.kind == Param::One)
     return {mpq_class(E.o1.x()) + E.o2.x() + E.a1.x() + E.a2.x() - E.b1.x() - E.b2.x(),
             mpq_class(E.o1.y()) + E.o2.y() + E.a1.y() + E.a2.y() - E.b1.y() - E.b2.y()};
+  QP fast;
+  if (cut_point_fixed(E, p.line, fast)) return fast;
   auto [n, dd] = nonconvex2::param_nd(p, E, Vec2(0, 0), L);
   const mpq_class mu = n.v / dd.v;
   QP r;
@@ -57,20 +114,17 @@ QP exact_point(const Ray& E, const Param& p_in) {
   return r;
 }
 
-// Round to nearest (ties: either neighbour; get_d truncates).
+// Round to nearest (ties: the neighbour nearer zero). get_d truncates towards zero, so q lies
+// between d and its neighbour away from zero; that neighbour wins iff |q| is beyond the midpoint.
 double round_q(const mpq_class& q) {
   const double d = q.get_d();
-  double best = d;
-  mpq_class err = abs(q - mpq_class(d));
-  for (double c : {std::nextafter(d, -INFINITY), std::nextafter(d, INFINITY)}) {
-    if (!std::isfinite(c)) continue;
-    const mpq_class e = abs(q - mpq_class(c));
-    if (e < err) {
-      err = e;
-      best = c;
-    }
-  }
-  return best;
+  const int sg = sgn(q);
+  if (sg == 0) return d;
+  const double c = std::nextafter(d, sg > 0 ? INFINITY : -INFINITY);
+  if (!std::isfinite(c)) return d;
+  mpq_class mid = mpq_class(d) + mpq_class(c);
+  mpq_div_2exp(mid.get_mpq_t(), mid.get_mpq_t(), 1);
+  return (sg > 0 ? q > mid : q < mid) ? c : d;
 }
 
 Vec2 round_point(const QP& p) { return Vec2(round_q(p.x), round_q(p.y)); }
@@ -135,10 +189,23 @@ void nfp_export(NoFitPolygon2::Impl& N) {
     Vec2 ra, rb;  // the ends to a few ulps (floating keys and boxes only)
   };
   std::vector<Seg> segs;
+  segs.reserve(N.pieces.size());
   std::vector<QP> zero_points;
   std::vector<Vec2> zero_rounded;
+  // Ends that are sum vertices are computed once per vertex (pid, qid): most vertices of ∂O end
+  // two pieces.
+  std::unordered_map<std::uint64_t, QP> vertex_cache;
+  auto end_point = [&](const Ray& E, const Param& p_in) {
+    const Param p = nonconvex2::normalised(p_in, E);
+    if (!E.sym || p.kind == Param::Cut) return exact_point(E, p);
+    const int k = p.kind == Param::Zero ? 0 : 1;
+    const std::uint64_t key = (std::uint64_t(k == 0 ? E.p0 : E.p1) << 32) | (k == 0 ? E.q0 : E.q1);
+    auto it = vertex_cache.find(key);
+    if (it == vertex_cache.end()) it = vertex_cache.emplace(key, sum_vertex(E, k)).first;
+    return it->second;
+  };
   for (const NfpPiece& pc : N.pieces) {
-    QP a = exact_point(pc.E, pc.lo), b = exact_point(pc.E, pc.hi);
+    QP a = end_point(pc.E, pc.lo), b = end_point(pc.E, pc.hi);
     if (a == b) {
       zero_points.push_back(a);
       zero_rounded.push_back(pc.a);
@@ -176,6 +243,8 @@ void nfp_export(NoFitPolygon2::Impl& N) {
 
   struct Edge {
     QP a, b;
+    std::size_t line;  // the group of its exact supporting line
+    bool fwd;          // along increasing u of that line
   };
   std::vector<Edge> edges;
   std::vector<std::array<QP, 2>> slits;
@@ -218,7 +287,7 @@ void nfp_export(NoFitPolygon2::Impl& N) {
     if (g1 == g0 + 1 && !split) {  // a lone piece on its line, nothing inside it: one boundary edge
       is_vertex[segs[g0].a] = 1;
       is_vertex[segs[g0].b] = 1;
-      edges.push_back({segs[g0].a, segs[g0].b});
+      edges.push_back({segs[g0].a, segs[g0].b, g0, key.u(segs[g0].a) < key.u(segs[g0].b)});
       continue;
     }
     std::sort(us.begin(), us.end());
@@ -242,8 +311,8 @@ void nfp_export(NoFitPolygon2::Impl& N) {
       }
       if (slit_open) slits.push_back({slit_start, p0});
       slit_open = false;
-      if (f) edges.push_back({p0, p1});
-      else if (b) edges.push_back({p1, p0});
+      if (f) edges.push_back({p0, p1, g0, true});
+      else if (b) edges.push_back({p1, p0, g0, false});
     }
     // Along the increasing direction (canonical for the slit ends); the line key orients u.
   }
@@ -262,10 +331,16 @@ void nfp_export(NoFitPolygon2::Impl& N) {
       chain.push_back(e);
       auto& cands = out[edges[e].b];
       std::size_t best = edges.size();
-      const QP r = sub(edges[e].a, edges[e].b);  // back along the incoming edge
+      QP r;  // back along the incoming edge (only needed when there is a choice)
+      bool have_r = false;
       for (std::size_t c : cands) {
         if (used[c] && c != e0) continue;
-        if (best == edges.size() || larger_ccw_angle(r, sub(edges[c].b, edges[c].a), sub(edges[best].b, edges[best].a))) best = c;
+        if (best == edges.size()) {
+          best = c;
+          continue;
+        }
+        if (!have_r) r = sub(edges[e].a, edges[e].b), have_r = true;
+        if (larger_ccw_angle(r, sub(edges[c].b, edges[c].a), sub(edges[best].b, edges[best].a))) best = c;
       }
       if (best == edges.size() || best == e0) break;  // closed (or an open chain: exported as is)
       e = best;
@@ -274,8 +349,8 @@ void nfp_export(NoFitPolygon2::Impl& N) {
     for (std::size_t k = 0; k < chain.size(); ++k) {
       const Edge& in = edges[chain[(k + chain.size() - 1) % chain.size()]];
       const Edge& o = edges[chain[k]];
-      const QP a = sub(in.b, in.a), b = sub(o.b, o.a);
-      if (chain.size() > 2 && cross(a, b) == 0 && a.x * b.x + a.y * b.y > 0) continue;  // pass-through
+      // Pass-through: the same exact line (one group per line) in the same direction.
+      if (chain.size() > 2 && in.line == o.line && in.fwd == o.fwd) continue;
       ring.push_back(o.a);
     }
     if (ring.size() >= 3) rings.push_back(std::move(ring));
