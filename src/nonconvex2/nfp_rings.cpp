@@ -147,11 +147,12 @@ struct LineKey {
   bool contains(const QP& p) const { return vertical ? p.x == offset : p.y == slope * p.x + offset; }
 };
 
-// Exact: p strictly inside the ring (crossing number; the caller avoids points on the ring).
-int point_in_ring(const std::vector<QP>& ring, const QP& p) {
+// Exact: p strictly inside the ring of vertex ids into V (crossing number; the caller avoids
+// points on the ring).
+int point_in_ring(const std::vector<QP>& V, const std::vector<int>& ring, const QP& p) {
   bool in = false;
   for (std::size_t i = 0; i < ring.size(); ++i) {
-    const QP &a = ring[i], &b = ring[(i + 1) % ring.size()];
+    const QP &a = V[ring[i]], &b = V[ring[(i + 1) % ring.size()]];
     const mpq_class s = cross(sub(b, a), sub(p, a));
     if (s == 0 && std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y))
       return 0;  // on the ring
@@ -163,9 +164,9 @@ int point_in_ring(const std::vector<QP>& ring, const QP& p) {
   return in ? 1 : -1;
 }
 
-mpq_class ring_area2(const std::vector<QP>& ring) {
+mpq_class ring_area2(const std::vector<QP>& V, const std::vector<int>& ring) {
   mpq_class a = 0;
-  for (std::size_t i = 0; i < ring.size(); ++i) a += cross(ring[i], ring[(i + 1) % ring.size()]);
+  for (std::size_t i = 0; i < ring.size(); ++i) a += cross(V[ring[i]], V[ring[(i + 1) % ring.size()]]);
   return a;
 }
 
@@ -183,36 +184,47 @@ bool larger_ccw_angle(const QP& r, const QP& a, const QP& b) {
 }  // namespace
 
 void nfp_export(NoFitPolygon2::Impl& N) {
+  // Every exact vertex is interned once (V, by exact identity); everything below refers to ids.
+  std::vector<QP> V;
+  std::map<QP, int> id_of;
+  auto intern = [&](QP&& q) {
+    auto it = id_of.find(q);
+    if (it != id_of.end()) return it->second;
+    const int id = static_cast<int>(V.size());
+    id_of.emplace(q, id);
+    V.push_back(std::move(q));
+    return id;
+  };
   struct Seg {
-    QP a, b;
+    int a, b;
     LineKey key;
     Vec2 ra, rb;  // the ends to a few ulps (floating keys and boxes only)
   };
   std::vector<Seg> segs;
   segs.reserve(N.pieces.size());
-  std::vector<QP> zero_points;
+  std::vector<int> zero_points;
   std::vector<Vec2> zero_rounded;
   // Ends that are sum vertices are computed once per vertex (pid, qid): most vertices of ∂O end
   // two pieces.
-  std::unordered_map<std::uint64_t, QP> vertex_cache;
+  std::unordered_map<std::uint64_t, int> vertex_cache;
   auto end_point = [&](const Ray& E, const Param& p_in) {
     const Param p = nonconvex2::normalised(p_in, E);
-    if (!E.sym || p.kind == Param::Cut) return exact_point(E, p);
+    if (!E.sym || p.kind == Param::Cut) return intern(exact_point(E, p));
     const int k = p.kind == Param::Zero ? 0 : 1;
     const std::uint64_t key = (std::uint64_t(k == 0 ? E.p0 : E.p1) << 32) | (k == 0 ? E.q0 : E.q1);
     auto it = vertex_cache.find(key);
-    if (it == vertex_cache.end()) it = vertex_cache.emplace(key, sum_vertex(E, k)).first;
+    if (it == vertex_cache.end()) it = vertex_cache.emplace(key, intern(sum_vertex(E, k))).first;
     return it->second;
   };
   for (const NfpPiece& pc : N.pieces) {
-    QP a = end_point(pc.E, pc.lo), b = end_point(pc.E, pc.hi);
-    if (a == b) {
-      zero_points.push_back(a);
+    const int ia = end_point(pc.E, pc.lo), ib = end_point(pc.E, pc.hi);
+    if (ia == ib) {
+      zero_points.push_back(ia);
       zero_rounded.push_back(pc.a);
       continue;
     }
-    Seg s{a, b, {}, pc.a, pc.b};
-    const QP D = sub(b, a);
+    Seg s{ia, ib, {}, pc.a, pc.b};
+    const QP &a = V[ia], D = sub(V[ib], a);
     if (D.x != 0) {
       s.key.slope = D.y / D.x;
       s.key.offset = a.y - s.key.slope * a.x;
@@ -233,40 +245,40 @@ void nfp_export(NoFitPolygon2::Impl& N) {
   }
 
   // Every exact vertex (piece ends and zero-length points), sorted by rounded x for range scans.
-  std::vector<std::pair<Vec2, const QP*>> verts;
+  std::vector<std::pair<Vec2, int>> verts;
   for (const Seg& s : segs) {
-    verts.push_back({s.ra, &s.a});
-    verts.push_back({s.rb, &s.b});
+    verts.push_back({s.ra, s.a});
+    verts.push_back({s.rb, s.b});
   }
-  for (std::size_t k = 0; k < zero_points.size(); ++k) verts.push_back({zero_rounded[k], &zero_points[k]});
+  for (std::size_t k = 0; k < zero_points.size(); ++k) verts.push_back({zero_rounded[k], zero_points[k]});
   std::sort(verts.begin(), verts.end(), [](const auto& x, const auto& y) { return x.first.x() < y.first.x(); });
 
   struct Edge {
-    QP a, b;
+    int a, b;
     std::size_t line;  // the group of its exact supporting line
     bool fwd;          // along increasing u of that line
   };
   std::vector<Edge> edges;
-  std::vector<std::array<QP, 2>> slits;
-  std::map<QP, int> is_vertex;  // ends of edges and slit pieces
+  std::vector<std::array<int, 2>> slits;
+  std::vector<char> is_vertex(V.size(), 0);  // ends of edges and slit pieces
   for (std::size_t g0 = 0, g1; g0 < segs.size(); g0 = g1) {
     g1 = g0 + 1;
     while (g1 < segs.size() && segs[g1].key == segs[g0].key) ++g1;
     const LineKey& key = segs[g0].key;
-    // Intervals in u, oriented forward (u increasing) or backward.
+    // Intervals in u, oriented forward (u increasing) or backward; u values point into V.
     struct Iv {
-      mpq_class lo, hi;
+      const mpq_class *lo, *hi;
       bool fwd;
     };
     std::vector<Iv> ivs;
-    std::vector<mpq_class> us;
+    std::vector<std::pair<const mpq_class*, int>> us;
     Vec2 lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
     for (std::size_t k = g0; k < g1; ++k) {
-      const mpq_class &ua = key.u(segs[k].a), &ub = key.u(segs[k].b);
+      const mpq_class &ua = key.u(V[segs[k].a]), &ub = key.u(V[segs[k].b]);
       const bool fwd = ua < ub;
-      ivs.push_back({fwd ? ua : ub, fwd ? ub : ua, fwd});
-      us.push_back(ua);
-      us.push_back(ub);
+      ivs.push_back({fwd ? &ua : &ub, fwd ? &ub : &ua, fwd});
+      us.push_back({&ua, segs[k].a});
+      us.push_back({&ub, segs[k].b});
       for (const Vec2& r : {segs[k].ra, segs[k].rb}) {
         lo = lo.cwiseMin(r);
         hi = hi.cwiseMax(r);
@@ -277,28 +289,29 @@ void nfp_export(NoFitPolygon2::Impl& N) {
     auto it = std::lower_bound(verts.begin(), verts.end(), lo.x() - m, [](const auto& v, double x) { return v.first.x() < x; });
     bool split = false;
     for (; it != verts.end() && it->first.x() <= hi.x() + m; ++it) {
-      const QP& v = *it->second;
+      const int v = it->second;
       if (it->first.y() < lo.y() - m || it->first.y() > hi.y() + m) continue;
       if (g1 == g0 + 1 && (v == segs[g0].a || v == segs[g0].b)) continue;  // a lone piece's own end
-      if (!key.contains(v)) continue;
-      us.push_back(key.u(v));
+      if (!key.contains(V[v])) continue;
+      us.push_back({&key.u(V[v]), v});
       split = true;
     }
     if (g1 == g0 + 1 && !split) {  // a lone piece on its line, nothing inside it: one boundary edge
       is_vertex[segs[g0].a] = 1;
       is_vertex[segs[g0].b] = 1;
-      edges.push_back({segs[g0].a, segs[g0].b, g0, key.u(segs[g0].a) < key.u(segs[g0].b)});
+      edges.push_back({segs[g0].a, segs[g0].b, g0, ivs[0].fwd});
       continue;
     }
-    std::sort(us.begin(), us.end());
-    us.erase(std::unique(us.begin(), us.end()), us.end());
+    // One point per u on the line (equal u on one line: the same exact point, the same id).
+    std::sort(us.begin(), us.end(), [](const auto& x, const auto& y) { return *x.first < *y.first; });
+    us.erase(std::unique(us.begin(), us.end(), [](const auto& x, const auto& y) { return x.second == y.second; }), us.end());
     bool slit_open = false;
-    QP slit_start;
+    int slit_start = -1;
     for (std::size_t i = 0; i + 1 < us.size(); ++i) {
       bool f = false, b = false;
       for (const Iv& iv : ivs)
-        if (iv.lo <= us[i] && us[i + 1] <= iv.hi) (iv.fwd ? f : b) = true;
-      const QP p0 = key.at(us[i]), p1 = key.at(us[i + 1]);
+        if (*iv.lo <= *us[i].first && *us[i + 1].first <= *iv.hi) (iv.fwd ? f : b) = true;
+      const int p0 = us[i].second, p1 = us[i + 1].second;
       if (f || b) {
         is_vertex[p0] = 1;
         is_vertex[p1] = 1;
@@ -318,10 +331,11 @@ void nfp_export(NoFitPolygon2::Impl& N) {
   }
 
   // Link edges into rings.
-  std::map<QP, std::vector<std::size_t>> out;
+  std::vector<std::vector<std::size_t>> out(V.size());
   for (std::size_t e = 0; e < edges.size(); ++e) out[edges[e].a].push_back(e);
   std::vector<char> used(edges.size(), 0);
-  std::vector<std::vector<QP>> rings;
+  std::vector<std::vector<int>> rings;
+  auto dir = [&](const Edge& e) { return sub(V[e.b], V[e.a]); };
   for (std::size_t e0 = 0; e0 < edges.size(); ++e0) {
     if (used[e0]) continue;
     std::vector<std::size_t> chain;
@@ -329,7 +343,7 @@ void nfp_export(NoFitPolygon2::Impl& N) {
     for (;;) {
       used[e] = 1;
       chain.push_back(e);
-      auto& cands = out[edges[e].b];
+      const auto& cands = out[edges[e].b];
       std::size_t best = edges.size();
       QP r;  // back along the incoming edge (only needed when there is a choice)
       bool have_r = false;
@@ -339,13 +353,13 @@ void nfp_export(NoFitPolygon2::Impl& N) {
           best = c;
           continue;
         }
-        if (!have_r) r = sub(edges[e].a, edges[e].b), have_r = true;
-        if (larger_ccw_angle(r, sub(edges[c].b, edges[c].a), sub(edges[best].b, edges[best].a))) best = c;
+        if (!have_r) r = sub(V[edges[e].a], V[edges[e].b]), have_r = true;
+        if (larger_ccw_angle(r, dir(edges[c]), dir(edges[best]))) best = c;
       }
       if (best == edges.size() || best == e0) break;  // closed (or an open chain: exported as is)
       e = best;
     }
-    std::vector<QP> ring;
+    std::vector<int> ring;
     for (std::size_t k = 0; k < chain.size(); ++k) {
       const Edge& in = edges[chain[(k + chain.size() - 1) % chain.size()]];
       const Edge& o = edges[chain[k]];
@@ -360,7 +374,7 @@ void nfp_export(NoFitPolygon2::Impl& N) {
   std::vector<std::size_t> outer, holes;
   std::vector<mpq_class> area(rings.size());
   for (std::size_t k = 0; k < rings.size(); ++k) {
-    area[k] = ring_area2(rings[k]);
+    area[k] = ring_area2(V, rings[k]);
     (area[k] > 0 ? outer : holes).push_back(k);
   }
   std::vector<std::vector<std::size_t>> holes_of(outer.size());
@@ -368,17 +382,18 @@ void nfp_export(NoFitPolygon2::Impl& N) {
     std::size_t best = outer.size();
     for (std::size_t o = 0; o < outer.size(); ++o) {
       int side = 0;
-      for (const QP& p : rings[h]) {
-        side = point_in_ring(rings[outer[o]], p);
+      for (int p : rings[h]) {
+        side = point_in_ring(V, rings[outer[o]], V[p]);
         if (side != 0) break;
       }
       if (side > 0 && (best == outer.size() || area[outer[o]] < area[outer[best]])) best = o;
     }
     if (best < outer.size()) holes_of[best].push_back(h);
   }
-  auto rounded = [](const std::vector<QP>& ring) {
+  auto rounded = [&](const std::vector<int>& ring) {
     std::vector<Vec2> r;
-    for (const QP& p : ring) r.push_back(round_point(p));
+    r.reserve(ring.size());
+    for (int p : ring) r.push_back(round_point(V[p]));
     return r;
   };
   N.polys.clear();
@@ -388,12 +403,12 @@ void nfp_export(NoFitPolygon2::Impl& N) {
     N.polys.push_back(std::move(poly));
   }
   N.slits.clear();
-  for (const auto& s : slits) N.slits.push_back({round_point(s[0]), round_point(s[1])});
-  std::sort(zero_points.begin(), zero_points.end());
+  for (const auto& sl : slits) N.slits.push_back({round_point(V[sl[0]]), round_point(V[sl[1]])});
+  std::sort(zero_points.begin(), zero_points.end(), [&](int x, int y) { return V[x] < V[y]; });
   zero_points.erase(std::unique(zero_points.begin(), zero_points.end()), zero_points.end());
   N.points.clear();
-  for (const QP& p : zero_points)
-    if (!is_vertex.count(p)) N.points.push_back(round_point(p));
+  for (int p : zero_points)
+    if (!is_vertex[p]) N.points.push_back(round_point(V[p]));
 }
 
 }  // namespace pendepth
