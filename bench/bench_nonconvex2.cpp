@@ -37,8 +37,8 @@
 // at 30 × 30 stars, far more beyond).
 // Peers run while n·m ≤ PENDEPTH_BENCH_PEER_BUDGET (CGAL, default 10⁵) and n·m ≤
 // PENDEPTH_BENCH_CLIPPER_BUDGET (Clipper, default 10⁴). Star sizes: PENDEPTH_BENCH_N (comma list,
-// default 10,30,100,300; 1000 works but its NoFitPolygon2 build and PairDepth2 σ checks take
-// minutes at this commit). bench/run_nonconvex2.sh prints the tables of docs/benchmarks.md.
+// default 10,30,100,300; at 1000 NoFitPolygon2's build takes ~6 min CPU at this commit, and CGAL
+// with its budget raised ran out of 23 GB of memory). bench/run_nonconvex2.sh prints the tables of docs/benchmarks.md.
 #include <benchmark/benchmark.h>
 #include <pendepth/depth2_nonconvex.hpp>
 #include <pendepth/nfp2.hpp>
