@@ -129,6 +129,18 @@ double round_q(const mpq_class& q) {
 
 Vec2 round_point(const QP& p) { return Vec2(round_q(p.x), round_q(p.y)); }
 
+// round_q of the exact sum a + b without rationals (TwoSum): fl(a + b) is the nearest double, and
+// on an exact tie round_q's choice (the neighbour nearer zero) is taken. False if it overflows.
+bool round_sum(double a, double b, double& out) {
+  const double s = a + b, bb = s - a, e = (a - (s - bb)) + (b - bb);
+  if (!std::isfinite(s) || !std::isfinite(e)) return false;
+  out = s;
+  if (e == 0) return true;
+  const double c = std::nextafter(s, e > 0 ? INFINITY : -INFINITY);
+  if (std::isfinite(c) && 2 * std::abs(e) == std::abs(c - s) && std::abs(c) < std::abs(s)) out = c;
+  return true;
+}
+
 mpq_class cross(const QP& a, const QP& b) { return a.x * b.y - a.y * b.x; }
 QP sub(const QP& a, const QP& b) { return {a.x - b.x, a.y - b.y}; }
 
@@ -207,13 +219,21 @@ void nfp_export(NoFitPolygon2::Impl& N) {
   // Ends that are sum vertices are computed once per vertex (pid, qid): most vertices of ∂O end
   // two pieces.
   std::unordered_map<std::uint64_t, int> vertex_cache;
+  std::unordered_map<int, Vec2> known_round;  // vertex id → its coordinates rounded to nearest
   auto end_point = [&](const Ray& E, const Param& p_in) {
     const Param p = nonconvex2::normalised(p_in, E);
     if (!E.sym || p.kind == Param::Cut) return intern(exact_point(E, p));
     const int k = p.kind == Param::Zero ? 0 : 1;
     const std::uint64_t key = (std::uint64_t(k == 0 ? E.p0 : E.p1) << 32) | (k == 0 ? E.q0 : E.q1);
     auto it = vertex_cache.find(key);
-    if (it == vertex_cache.end()) it = vertex_cache.emplace(key, intern(sum_vertex(E, k))).first;
+    if (it == vertex_cache.end()) {
+      const int id = intern(sum_vertex(E, k));
+      it = vertex_cache.emplace(key, id).first;
+      // Its rounding straight from the two doubles (the rings' vertices are mostly sum vertices).
+      const Vec2 &p = k == 0 || E.p0 == E.p1 ? E.o1 : E.a1, &b = k == 0 || E.q0 == E.q1 ? E.o2 : E.a1;
+      Vec2 r;
+      if (round_sum(p.x(), b.x(), r.x()) && round_sum(p.y(), b.y(), r.y())) known_round.emplace(id, r);
+    }
     return it->second;
   };
   for (const NfpPiece& pc : N.pieces) {
@@ -393,7 +413,10 @@ void nfp_export(NoFitPolygon2::Impl& N) {
   auto rounded = [&](const std::vector<int>& ring) {
     std::vector<Vec2> r;
     r.reserve(ring.size());
-    for (int p : ring) r.push_back(round_point(V[p]));
+    for (int p : ring) {
+      const auto it = known_round.find(p);
+      r.push_back(it != known_round.end() ? it->second : round_point(V[p]));
+    }
     return r;
   };
   N.polys.clear();
