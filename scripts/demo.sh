@@ -31,6 +31,13 @@ echo "   and complete separation downwards (Q must leave the pocket entirely)  (
 echo "== a plate with a hole, the hexagon inside the hole overlapping its rim  (out/demo_hole.svg)"
 "$pd" depth "$data/plate_with_hole.wkt" "$data/hexagon.wkt" --offset 3.5,2.5 --svg out/demo_hole.svg
 
+echo "== two non-convex polygons: P = trousers item 0, Q = the plate with a hole. The no-fit polygon"
+echo "   (placements of Q's origin where Q touches P) as WKT, then σ and σ_d up at t = (20, 2)"
+echo "   (out/demo_nonconvex.svg: the no-fit polygon in the configuration panel)"
+"$pd" nfp "$data/trousers_item0.wkt" "$data/plate_with_hole.wkt"
+"$pd" depth "$data/trousers_item0.wkt" "$data/plate_with_hole.wkt" --offset 20,2 --svg out/demo_nonconvex.svg
+"$pd" depth "$data/trousers_item0.wkt" "$data/plate_with_hole.wkt" --offset 20,2 --direction 0,1 --json
+
 echo "== batch: offsets x,y and directions dx,dy (0,0 asks for σ)"
 printf 'x,y,dx,dy\n2.5,2,0,0\n2.5,2,1,0\n-1,2,1,0.3\n10,10,0,0\n' > out/demo_queries.csv
 "$pd" batch "$data/octagon.wkt" "$data/hexagon.wkt" --queries out/demo_queries.csv

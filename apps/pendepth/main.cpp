@@ -3,6 +3,7 @@
 //   pendepth depth P Q [--offset X,Y[,Z]] [--direction X,Y[,Z]] [--separate] [--json] [--svg FILE]
 //                      [--rotate-q QW,QX,QY,QZ] [--rotate-p QW,QX,QY,QZ]
 //   pendepth batch P Q --queries FILE [--json] [--rotate-q ...] [--rotate-p ...]
+//   pendepth nfp P Q [--json]
 //
 // Exit status: 0 success, 2 bad input (one line on stderr naming file, line and problem),
 // 1 internal error. Shapes: .wkt (2D polygons); .obj, .off, .stl (3D: the convex hull of the
@@ -13,11 +14,16 @@
 // the polygon, so when Q is the non-convex one the roles are swapped: Q + t overlaps P exactly when
 // P − t overlaps Q, moving Q by v is moving P by −v, so depth(P, Q, t, d) is depth(Q, P, −t, −d)
 // with translation and normal negated, witnesses mapped back into P's frame and features swapped.
-// Two non-convex polygons are not supported (exit 2).
+// Two non-convex polygons (issue 5): `depth` asks PairDepth2 (per-query dual-tree descent, no
+// preprocessing beyond the triangulations); `batch` builds the no-fit polygon NoFitPolygon2 once
+// and answers every query on it; `--svg` draws the no-fit polygon (cl O, slits, points).
+// `nfp` prints the no-fit polygon of any two polygons as WKT (see its --help for the semantics).
 #include <pendepth/depth2.hpp>
+#include <pendepth/depth2_nonconvex.hpp>
 #include <pendepth/depth2_polygon.hpp>
 #include <pendepth/depth3.hpp>
 #include <pendepth/io.hpp>
+#include <pendepth/nfp2.hpp>
 
 #include <CLI/CLI.hpp>
 
@@ -35,6 +41,8 @@ using pendepth::ConvexPolytope;
 using pendepth::Depth2;
 using pendepth::Depth3;
 using pendepth::InvalidInput;
+using pendepth::NoFitPolygon2;
+using pendepth::Polygon;
 using pendepth::Pose3;
 using pendepth::Vec2;
 using pendepth::Vec3;
@@ -123,12 +131,8 @@ void write_stdout(const std::string& s) { std::fwrite(s.data(), 1, s.size(), std
 // with the roles swapped back when P is the convex one (see the file comment).
 class PolygonPair {
  public:
-  // Takes the shapes of P and Q (paths for messages); throws InvalidInput for two non-convex ones.
-  PolygonPair(io::Shape2 P, io::Shape2 Q, const std::string& p_path, const std::string& q_path)
-      : P_(std::move(P)), Q_(std::move(Q)), swapped_(P_.convex.has_value()) {
-    if (P_.polygon && Q_.polygon)
-      throw InvalidInput(q_path + ": P (" + p_path + ") and Q are both non-convex: the depth of two non-convex "
-                                  "polygons is not supported yet (one of them must be convex)");
+  // Takes the shapes of P and Q, exactly one of them convex.
+  PolygonPair(io::Shape2 P, io::Shape2 Q) : P_(std::move(P)), Q_(std::move(Q)), swapped_(P_.convex.has_value()) {
     pd_.emplace(swapped_ ? *Q_.polygon : *P_.polygon, swapped_ ? *P_.convex : *Q_.convex);
   }
 
@@ -242,7 +246,7 @@ int run_depth3(const DepthArgs& a) {
 }
 
 int run_depth_polygon(const DepthArgs& a, io::Shape2 P, io::Shape2 Q, const Vec2& t, const std::optional<Vec2>& d) {
-  const PolygonPair pair(std::move(P), std::move(Q), a.p, a.q);
+  const PolygonPair pair(std::move(P), std::move(Q));
   Depth2 r;
   if (d) {
     const Vec2 u = rescale(*d);
@@ -262,6 +266,56 @@ int run_depth_polygon(const DepthArgs& a, io::Shape2 P, io::Shape2 Q, const Vec2
   return 0;
 }
 
+// The no-fit polygon's parts as a WKT geometry: polygons with holes, slits as 2-point lines, points.
+io::Geometry2 nfp_geometry(const NoFitPolygon2& nfp) {
+  io::Geometry2 g;
+  g.polygons = nfp.polygons();
+  for (const auto& s : nfp.slits()) g.lines.push_back({s[0], s[1]});
+  g.points = nfp.points();
+  return g;
+}
+
+std::vector<std::vector<Vec2>> polygon_rings(const Polygon& P) {
+  std::vector<std::vector<Vec2>> out;
+  for (std::size_t k = 0; k < P.ring_count(); ++k) out.emplace_back(P.ring(k).begin(), P.ring(k).end());
+  return out;
+}
+
+// Two non-convex polygons (or with holes), one placement: PairDepth2, which needs no preprocessing
+// beyond the triangulations; the no-fit polygon is built only for the picture.
+int run_depth_pair(const DepthArgs& a, const Polygon& P, const Polygon& Q, const Vec2& t,
+                   const std::optional<Vec2>& d) {
+  const pendepth::PairDepth2 pd(P, Q);
+  Depth2 r;
+  if (d) {
+    const Vec2 u = rescale(*d);
+    r = a.separate ? pd.separation(t, u) : pd.along(t, u);
+  } else {
+    r = pd.minimum(t);
+  }
+  if (!a.svg.empty()) {
+    const NoFitPolygon2 nfp(P, Q);
+    io::SvgScene scene;
+    scene.P = polygon_rings(P);
+    scene.Q = polygon_rings(Q);
+    for (const auto& poly : nfp.polygons()) scene.config.insert(scene.config.end(), poly.begin(), poly.end());
+    scene.config_segments = nfp.slits();
+    scene.config_points = nfp.points();
+    scene.config_label = "no-fit polygon: cl O, slits, exact fits";
+    scene.config_target = "t + v on ∂O";
+    io::write_svg(a.svg, scene, t, r, io::SvgOptions{d, true});
+  }
+  std::string out;
+  if (a.json) {
+    io::append_json(out, r, P, Q);
+    out += '\n';
+  } else {
+    out = io::summary(r, P, Q);
+  }
+  write_stdout(out);
+  return 0;
+}
+
 int run_depth(const DepthArgs& a) {
   if (pair_dimension(a.p, a.q) == 3) return run_depth3(a);
   reject_rotations(a.rotate_p, a.rotate_q);
@@ -273,6 +327,7 @@ int run_depth(const DepthArgs& a) {
     d = parse_vec(a.direction, "--direction");
     if (d->x() == 0 && d->y() == 0) throw InvalidInput("--direction: the direction is zero");
   }
+  if (SP.polygon && SQ.polygon) return run_depth_pair(a, *SP.polygon, *SQ.polygon, t, d);
   if (!SP.convex || !SQ.convex) return run_depth_polygon(a, std::move(SP), std::move(SQ), t, d);
   const ConvexPolygon& P = *SP.convex;
   const ConvexPolygon& Q = *SQ.convex;
@@ -339,7 +394,7 @@ int run_batch3(const BatchArgs& a) {
 
 // A batch with a non-convex polygon: PolygonDepth2 is built once, before the first query.
 int run_batch_polygon(const BatchArgs& a, io::Shape2 P, io::Shape2 Q, const std::vector<io::Query2>& queries) {
-  const PolygonPair pair(std::move(P), std::move(Q), a.p, a.q);
+  const PolygonPair pair(std::move(P), std::move(Q));
   constexpr std::size_t kFlushBytes = 1 << 20;
   std::string out;
   out.reserve(kFlushBytes + 4096);
@@ -366,12 +421,43 @@ int run_batch_polygon(const BatchArgs& a, io::Shape2 P, io::Shape2 Q, const std:
   return 0;
 }
 
+// A batch with two non-convex polygons: the no-fit polygon is built once, before the first query,
+// and every query is answered on it (σ for a zero direction, σ_d otherwise).
+int run_batch_pair(const BatchArgs& a, const Polygon& P, const Polygon& Q, const std::vector<io::Query2>& queries) {
+  const NoFitPolygon2 nfp(P, Q);
+  constexpr std::size_t kFlushBytes = 1 << 20;
+  std::string out;
+  out.reserve(kFlushBytes + 4096);
+  if (!a.json) out += "depth,tx,ty\n";
+  for (const io::Query2& q : queries) {
+    Depth2 r;
+    try {
+      r = (q.d.x() == 0 && q.d.y() == 0) ? nfp.minimum(q.t) : nfp.along(q.t, rescale(q.d));
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(a.queries + ":" + std::to_string(q.line) + ": " + e.what());
+    }
+    if (a.json) {
+      io::append_json(out, r, P, Q);
+      out += '\n';
+    } else {
+      io::append_csv_row(out, r);
+    }
+    if (out.size() >= kFlushBytes) {
+      write_stdout(out);
+      out.clear();
+    }
+  }
+  write_stdout(out);
+  return 0;
+}
+
 int run_batch(const BatchArgs& a) {
   if (pair_dimension(a.p, a.q) == 3) return run_batch3(a);
   reject_rotations(a.rotate_p, a.rotate_q);
   io::Shape2 SP = io::read_shape2(a.p, "P");
   io::Shape2 SQ = io::read_shape2(a.q, "Q");
   const std::vector<io::Query2> queries = io::read_queries_csv(a.queries);
+  if (SP.polygon && SQ.polygon) return run_batch_pair(a, *SP.polygon, *SQ.polygon, queries);
   if (!SP.convex || !SQ.convex) return run_batch_polygon(a, std::move(SP), std::move(SQ), queries);
   ConvexPolygon P = std::move(*SP.convex);
   ConvexPolygon Q = std::move(*SQ.convex);
@@ -411,6 +497,27 @@ int run_batch(const BatchArgs& a) {
   return 0;
 }
 
+struct NfpArgs {
+  std::string p, q;
+  bool json = false;
+};
+
+// The no-fit polygon of any two polygons (convex ones too: read as polygons), as WKT or JSON.
+int run_nfp(const NfpArgs& a) {
+  if (shape_dimension(a.p) != 2 || shape_dimension(a.q) != 2)
+    throw InvalidInput((shape_dimension(a.p) != 2 ? a.p : a.q) + ": nfp takes 2D shapes (.wkt) only");
+  const Polygon P = io::read_polygon(a.p, "P");
+  const Polygon Q = io::read_polygon(a.q, "Q");
+  const NoFitPolygon2 nfp(P, Q);
+  const io::Geometry2 g = nfp_geometry(nfp);
+  std::string out;
+  if (a.json) io::append_json(out, g);
+  else out = io::to_wkt(g);
+  out += '\n';
+  write_stdout(out);
+  return 0;
+}
+
 std::string one_line(std::string s) {
   std::replace(s.begin(), s.end(), '\n', ' ');
   return s;
@@ -421,7 +528,7 @@ std::string one_line(std::string s) {
 int main(int argc, char** argv) {
   CLI::App app{"pendepth: exact intersection (penetration) depth of two shapes.\n"
                "P is fixed, Q moves; Q is placed at the offset t. Shapes: .wkt POLYGON files "
-               "(2D: convex, or one of P and Q non-convex with holes and the other convex); "
+               "(2D: simple polygons, convex or not, with holes); "
                ".obj, .off, .stl meshes (3D: the convex hull of the vertices)."};
   app.require_subcommand(1);
   app.footer("Exit status: 0 success, 2 bad input (one line on stderr: FILE:LINE: problem).");
@@ -447,7 +554,8 @@ int main(int argc, char** argv) {
   BatchArgs ba;
   CLI::App* batch = app.add_subcommand(
       "batch", "Many placements: CSV lines x,y,dx,dy or x,y,z,dx,dy,dz (zero direction asks for σ). "
-               "Prints CSV depth,tx,ty[,tz].");
+               "Prints CSV depth,tx,ty[,tz]. Shapes are preprocessed once (two non-convex polygons: "
+               "their no-fit polygon, see nfp).");
   batch->add_option("P", ba.p, "fixed shape file (.wkt, or 3D .obj/.off/.stl)")->required()->type_name("FILE");
   batch->add_option("Q", ba.q, "moving shape file (same dimension as P)")->required()->type_name("FILE");
   batch->add_option("--queries", ba.queries, "CSV file of queries x,y[,z],dx,dy[,dz]")->required()->type_name("FILE");
@@ -455,6 +563,23 @@ int main(int argc, char** argv) {
   batch->add_option("--rotate-q", ba.rotate_q, "3D: rotation of Q for every query (quaternion, normalised)")
       ->type_name("QW,QX,QY,QZ");
   batch->add_option("--rotate-p", ba.rotate_p, "3D: rotation of P (quaternion, normalised)")->type_name("QW,QX,QY,QZ");
+
+  NfpArgs na;
+  CLI::App* nfp = app.add_subcommand(
+      "nfp",
+      "The no-fit polygon of two 2D polygons (any: convex, non-convex, with holes), as WKT. It is the set of "
+      "placements of Q's reference point (the origin of Q's coordinates) where Q touches P: the boundary of "
+      "O = {t : the interiors of P and Q + t overlap}. Printed as MULTIPOLYGON (((outer), (hole), ...), ...): "
+      "the closure of O as polygons with holes (outer rings counter-clockwise, holes clockwise, vertices "
+      "rounded to the nearest double). When Q fits P exactly somewhere, GEOMETRYCOLLECTION (MULTIPOLYGON (...), "
+      "MULTILINESTRING (...), MULTIPOINT (...)) with only the non-empty parts: a line is a slit, placements "
+      "where Q slides exactly in a slot of P (touching, depth 0, overlap on both sides); a point is an exact "
+      "fit of Q in a pocket or hole (depth 0, overlap all around).");
+  nfp->add_option("P", na.p, "fixed polygon file (.wkt)")->required()->type_name("FILE");
+  nfp->add_option("Q", na.q, "moving polygon file (.wkt)")->required()->type_name("FILE");
+  nfp->add_flag("--json", na.json,
+                "print one JSON object {\"polygons\": [[ring, ...], ...], \"lines\": [[p, q], ...], "
+                "\"points\": [p, ...]} (rings without the closing vertex) instead of WKT");
 
   try {
     app.parse(argc, argv);
@@ -466,6 +591,7 @@ int main(int argc, char** argv) {
 
   try {
     if (depth->parsed()) return run_depth(da);
+    if (nfp->parsed()) return run_nfp(na);
     return run_batch(ba);
   } catch (const InvalidInput& e) {
     std::fprintf(stderr, "%s\n", one_line(e.what()).c_str());

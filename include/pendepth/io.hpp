@@ -12,6 +12,7 @@
 #include <pendepth/polygon.hpp>
 #include <pendepth/polytope.hpp>
 
+#include <array>
 #include <cstddef>
 #include <filesystem>
 #include <optional>
@@ -140,6 +141,35 @@ ConvexPolytope read_convex_polytope(const std::filesystem::path& path, std::stri
 std::string to_wkt(std::span<const Vec2> ring);
 std::string to_wkt(const ConvexPolygon& polygon);
 
+/// A 2D geometry of several parts, e.g. a no-fit polygon (`pendepth nfp`): polygons with holes
+/// (polygons[k][0] the outer ring, polygons[k][1..] its holes, closing vertex not repeated),
+/// polylines (a slit is a polyline of 2 points) and isolated points.
+struct Geometry2 {
+  std::vector<std::vector<std::vector<Vec2>>> polygons;
+  std::vector<std::vector<Vec2>> lines;
+  std::vector<Vec2> points;
+};
+
+/// `MULTIPOLYGON (((x y, ...), (hole ...)), ...)` when g has no lines and no points (every ring
+/// closed explicitly; `MULTIPOLYGON EMPTY` without polygons), else `GEOMETRYCOLLECTION
+/// (MULTIPOLYGON (...), MULTILINESTRING ((x y, x y), ...), MULTIPOINT ((x y), ...))` with only the
+/// non-empty parts. Shortest round-trip doubles: parse_wkt_geometry gives g back exactly. Throws
+/// InvalidInput for a non-finite coordinate, a ring of fewer than 3 or a line of fewer than 2
+/// points. O(size of g).
+std::string to_wkt(const Geometry2& g);
+
+/// Parses one POLYGON, MULTIPOLYGON, LINESTRING, MULTILINESTRING, POINT, MULTIPOINT (points with
+/// or without their own parentheses) or a GEOMETRYCOLLECTION of these (not nested), EMPTY allowed
+/// for each; the parts are appended to the fields of Geometry2 in text order. Keywords
+/// case-insensitive, 2D only; a ring's repeated closing vertex is dropped. Throws InvalidInput
+/// "SOURCE:LINE: problem" (unknown type, Z/M, missing parenthesis or comma, bad number, a ring of
+/// fewer than 3 or a line of fewer than 2 points, trailing text). O(length of text).
+Geometry2 parse_wkt_geometry(std::string_view text, std::string_view source = "<wkt>");
+
+/// Appends one JSON object (no newline): {"polygons":[[[[x,y],...],...],...],"lines":[[[x,y],
+/// ...],...],"points":[[x,y],...]}, shortest round-trip doubles.
+void append_json(std::string& out, const Geometry2& g);
+
 /// Appends the shortest decimal text that reads back as exactly x (std::to_chars). x finite.
 void append_double(std::string& out, double x);
 
@@ -157,6 +187,8 @@ void append_json(std::string& out, const Depth2& r, const ConvexPolygon& P, cons
 /// the edge running with P's interior on its left; a convex shape's features are as above.
 void append_json(std::string& out, const Depth2& r, const Polygon& P, const ConvexPolygon& Q);
 void append_json(std::string& out, const Depth2& r, const ConvexPolygon& P, const Polygon& Q);
+/// Two polygons with holes (PairDepth2, NoFitPolygon2): both shapes' features carry the ring.
+void append_json(std::string& out, const Depth2& r, const Polygon& P, const Polygon& Q);
 
 /// Appends one CSV row "depth,tx,ty\n".
 void append_csv_row(std::string& out, const Depth2& r);
@@ -165,6 +197,7 @@ void append_csv_row(std::string& out, const Depth2& r);
 std::string summary(const Depth2& r, const ConvexPolygon& P, const ConvexPolygon& Q);
 std::string summary(const Depth2& r, const Polygon& P, const ConvexPolygon& Q);
 std::string summary(const Depth2& r, const ConvexPolygon& P, const Polygon& Q);
+std::string summary(const Depth2& r, const Polygon& P, const Polygon& Q);
 
 /// Appends one JSON object (no newline) for a 3D result: depth, translation [x,y,z], normal,
 /// witness_p, witness_q, kind, overlapping, feature_p / feature_q, lower_bound, upper_bound.
@@ -201,6 +234,10 @@ void write_svg(const std::filesystem::path& path, const ConvexPolygon& P, const 
 /// the placements t, labelled `config_label`; `config_target` labels the end t + v of the move.
 struct SvgScene {
   std::vector<std::vector<Vec2>> P, Q, config;
+  /// Lower-dimensional parts of the configuration set, drawn as lines and dots in its panel
+  /// (e.g. the slits and isolated points of a no-fit polygon).
+  std::vector<std::array<Vec2, 2>> config_segments;
+  std::vector<Vec2> config_points;
   std::string config_label = "M = P ⊕ (−Q)";
   std::string config_target = "t + v on ∂M";
 };

@@ -127,6 +127,37 @@ void append_json(std::string& out, const Depth2& r, const Polygon& P, const Conv
 void append_json(std::string& out, const Depth2& r, const ConvexPolygon& P, const Polygon& Q) {
   append_json_any(out, r, P, Q);
 }
+void append_json(std::string& out, const Depth2& r, const Polygon& P, const Polygon& Q) {
+  append_json_any(out, r, P, Q);
+}
+
+void append_json(std::string& out, const Geometry2& g) {
+  auto ring = [&](const std::vector<Vec2>& pts) {
+    out += '[';
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      if (i) out += ',';
+      append_vec(out, pts[i]);
+    }
+    out += ']';
+  };
+  out += "{\"polygons\":[";
+  for (std::size_t k = 0; k < g.polygons.size(); ++k) {
+    out += k ? ",[" : "[";
+    for (std::size_t j = 0; j < g.polygons[k].size(); ++j) {
+      if (j) out += ',';
+      ring(g.polygons[k][j]);
+    }
+    out += ']';
+  }
+  out += "],\"lines\":[";
+  for (std::size_t k = 0; k < g.lines.size(); ++k) {
+    if (k) out += ',';
+    ring(g.lines[k]);
+  }
+  out += "],\"points\":";
+  ring(g.points);
+  out += '}';
+}
 
 void append_csv_row(std::string& out, const Depth2& r) {
   append_double(out, r.depth);
@@ -163,5 +194,6 @@ std::string summary_any(const Depth2& r, const ShapeP& P, const ShapeQ& Q) {
 std::string summary(const Depth2& r, const ConvexPolygon& P, const ConvexPolygon& Q) { return summary_any(r, P, Q); }
 std::string summary(const Depth2& r, const Polygon& P, const ConvexPolygon& Q) { return summary_any(r, P, Q); }
 std::string summary(const Depth2& r, const ConvexPolygon& P, const Polygon& Q) { return summary_any(r, P, Q); }
+std::string summary(const Depth2& r, const Polygon& P, const Polygon& Q) { return summary_any(r, P, Q); }
 
 }  // namespace pendepth::io

@@ -163,6 +163,8 @@ void write_svg(const std::filesystem::path& path, const SvgScene& scene, const V
   View B;
   if (draw_M) {
     for (const auto& ring : scene.config) B.box.add(ring);
+    for (const auto& seg : scene.config_segments) B.box.add(seg);
+    for (const Vec2& p : scene.config_points) B.box.add(p);
     B.box.add(t);
     B.box.add(t + v);
   }
@@ -248,6 +250,15 @@ void write_svg(const std::filesystem::path& path, const SvgScene& scene, const V
   if (draw_M) {
     label(w, B.ox, B.oy - 8, "configuration space (same scale)", "fill=\"#555\"");
     shape(w, B, scene.config, Vec2(0, 0), "fill=\"#f2f2f2\" stroke=\"#888\" stroke-width=\"1\"");
+    // Slits and isolated points of the configuration set: lower-dimensional, drawn on top.
+    for (const auto& seg : scene.config_segments) {
+      w << "<line x1=\"";
+      w.num(B.px(seg[0].x())) << "\" y1=\"";
+      w.num(B.py(seg[0].y())) << "\" x2=\"";
+      w.num(B.px(seg[1].x())) << "\" y2=\"";
+      w.num(B.py(seg[1].y())) << "\" stroke=\"#6a3d9a\" stroke-width=\"2\" class=\"slit\"/>\n";
+    }
+    for (const Vec2& p : scene.config_points) dot(w, B, p, 3, "fill=\"#6a3d9a\" class=\"fit-point\"");
     if (moved) {
       arrow(w, B, t, t + v, "#222", "head-dark");
       label(w, B.px(t.x() + v.x()) + 7, B.py(t.y() + v.y()) - 7, scene.config_target, "fill=\"#222\"");

@@ -7,6 +7,8 @@
 // Z/M coordinates, EMPTY and other geometry types are rejected: pendepth is 2D here.
 #include <pendepth/io.hpp>
 
+#include "io/wkt_scanner.hpp"
+
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -15,91 +17,7 @@
 #include <system_error>
 
 namespace pendepth::io {
-namespace {
-
-bool is_space(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; }
-bool is_delim(char c) { return is_space(c) || c == ',' || c == '(' || c == ')'; }
-bool is_alpha(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; }
-
-bool iequals(std::string_view a, std::string_view b) {
-  if (a.size() != b.size()) return false;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    if (std::toupper(static_cast<unsigned char>(a[i])) != std::toupper(static_cast<unsigned char>(b[i])))
-      return false;
-  return true;
-}
-
-class Scanner {
- public:
-  Scanner(std::string_view text, std::string_view source) : s_(text), src_(source) {}
-
-  // Skips whitespace, counting lines; returns the next character or '\0' at the end.
-  char peek() {
-    while (pos_ < s_.size() && is_space(s_[pos_])) {
-      if (s_[pos_] == '\n') ++line_;
-      ++pos_;
-    }
-    return pos_ < s_.size() ? s_[pos_] : '\0';
-  }
-  bool at_end() { return peek() == '\0' && pos_ >= s_.size(); }
-  std::size_t line() const { return line_; }
-  void advance() { ++pos_; }
-
-  // The next token, for messages: up to a delimiter (or the delimiter itself), shortened.
-  std::string token() {
-    if (at_end()) return "end of input";
-    std::size_t e = pos_;
-    while (e < s_.size() && !is_delim(s_[e])) ++e;
-    if (e == pos_) e = pos_ + 1;
-    std::string t(s_.substr(pos_, std::min<std::size_t>(e - pos_, 24)));
-    if (e - pos_ > 24) t += "...";
-    return "'" + t + "'";
-  }
-
-  std::string_view word() {
-    peek();
-    std::size_t b = pos_;
-    while (pos_ < s_.size() && is_alpha(s_[pos_])) ++pos_;
-    return s_.substr(b, pos_ - b);
-  }
-
-  void expect(char c, const std::string& where) {
-    if (peek() != c) fail("missing '" + std::string(1, c) + "' " + where + ", got " + token());
-    ++pos_;
-  }
-
-  double number(const char* what) {
-    peek();
-    const char* first = s_.data() + pos_;
-    const char* last = s_.data() + s_.size();
-    const char* p = first;
-    if (p + 1 < last && *p == '+' && p[1] != '-') ++p;  // from_chars rejects a leading '+'
-    double x = 0;
-    auto [ptr, ec] = std::from_chars(p, last, x, std::chars_format::general);
-    if (ec == std::errc::invalid_argument || ptr == p || (ptr < last && !is_delim(*ptr)))
-      fail(std::string("expected a number for ") + what + ", got " + token());
-    if (ec == std::errc::result_out_of_range) fail("number out of range " + token());
-    if (!std::isfinite(x)) fail("non-finite number " + token());
-    pos_ = static_cast<std::size_t>(ptr - s_.data());
-    return x;
-  }
-
-  bool number_follows() {
-    char c = peek();
-    return (c >= '0' && c <= '9') || c == '-' || c == '+' || c == '.';
-  }
-
-  [[noreturn]] void fail(const std::string& what) const { fail_at(line_, what); }
-  [[noreturn]] void fail_at(std::size_t line, const std::string& what) const {
-    throw InvalidInput(std::string(src_) + ":" + std::to_string(line) + ": " + what);
-  }
-
- private:
-  std::string_view s_, src_;
-  std::size_t pos_ = 0, line_ = 1;
-};
-
-}  // namespace
+using namespace wkt_detail;
 
 WktPolygon parse_wkt_polygon(std::string_view text, std::string_view source) {
   if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // UTF-8 byte-order mark

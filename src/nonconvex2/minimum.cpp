@@ -21,6 +21,7 @@
 #include <limits>
 
 #include "geometry/exact.hpp"
+#include "nonconvex2/edge_cut.hpp"
 #include "nonconvex2/query.hpp"
 
 namespace pendepth {
@@ -32,108 +33,15 @@ using nonconvex2::Line;
 using nonconvex2::Ray;
 using nonconvex2::Sum;
 
-// A parameter μ on an edge ray E (point o + μ·dir): 0, 1, the crossing with a line, or the
-// orthogonal projection of t.
-struct Param {
-  enum Kind { Zero, One, Cut, Proj, Value } kind = Zero;
-  Line line;
-  double value = 0;  // Value: μ = value (an exact double)
-};
+using nonconvex2::Cand;
+using nonconvex2::Cover;
+using nonconvex2::Param;
+using nonconvex2::compare_params;
+using nonconvex2::seg_dist;
+using nonconvex2::sq_dist;
+using nonconvex2::surely_inside;
+using nonconvex2::surely_outside;
 
-template <class L>
-auto param_nd(const Param& p, const Ray& E, const Vec2& t, L lift) {
-  using T = decltype(lift(0.0));
-  switch (p.kind) {
-    case Param::Zero:
-      return std::pair<T, T>{lift(0.0), lift(1.0)};
-    case Param::One:
-      return std::pair<T, T>{lift(1.0), lift(1.0)};
-    case Param::Cut:
-      return std::pair<T, T>{nonconvex2::line_num(p.line, E, lift), nonconvex2::line_den(p.line, E, lift)};
-    case Param::Value:
-      return std::pair<T, T>{lift(p.value), lift(1.0)};
-    default: {
-      auto dx = nonconvex2::ray_dx(E, lift), dy = nonconvex2::ray_dy(E, lift);
-      auto wx = lift(t.x()) - lift(E.o1.x()) - lift(E.o2.x()), wy = lift(t.y()) - lift(E.o1.y()) - lift(E.o2.y());
-      return std::pair<T, T>{wx * dx + wy * dy, dx * dx + dy * dy};
-    }
-  }
-}
-
-// A cut through the edge's start or end vertex is the symbolic parameter 0 or 1.
-Param normalised(const Param& p, const Ray& E) {
-  if (p.kind != Param::Cut) return p;
-  const int k = nonconvex2::known_lambda(p.line, E);
-  return k < 0 ? p : Param{k == 0 ? Param::Zero : Param::One, {}};
-}
-
-int compare_params(const Param& a_in, const Param& b_in, const Ray& E, const Vec2& t) {
-  const Param a = normalised(a_in, E), b = normalised(b_in, E);
-  if (a.kind == Param::Cut && b.kind == Param::Cut) return nonconvex2::compare_lines(a.line, b.line, E);
-  auto fixed = [](const Param& p) { return p.kind == Param::Zero ? 0 : p.kind == Param::One ? 1 : -1; };
-  if (fixed(a) >= 0 && fixed(b) >= 0) return (fixed(a) > fixed(b)) - (fixed(a) < fixed(b));
-  const int sa = exact_sign([&](auto L) { return param_nd(a, E, t, L).second; });
-  const int sb = exact_sign([&](auto L) { return param_nd(b, E, t, L).second; });
-  const int s = exact_sign([&](auto L) {
-    auto [na, da] = param_nd(a, E, t, L);
-    auto [nb, db] = param_nd(b, E, t, L);
-    return na * db - nb * da;
-  });
-  return s * sa * sb;
-}
-
-// Candidate nearest point: on edge E at parameter `at` (a point of the edge).
-struct Cand {
-  Ray E;
-  Param at;
-  Line edge;
-};
-
-// Squared distance from t to the candidate as num / den (den > 0).
-template <class L>
-auto sq_dist(const Cand& c, const Vec2& t, L lift) {
-  auto [n, dd] = param_nd(c.at, c.E, t, lift);
-  auto dx = nonconvex2::ray_dx(c.E, lift), dy = nonconvex2::ray_dy(c.E, lift);
-  auto x = (lift(c.E.o1.x()) + lift(c.E.o2.x()) - lift(t.x())) * dd + n * dx;
-  auto y = (lift(c.E.o1.y()) + lift(c.E.o2.y()) - lift(t.y())) * dd + n * dy;
-  return std::pair{x * x + y * y, dd * dd};
-}
-
-double seg_dist(const Vec2& t, const Vec2& a, const Vec2& b) {
-  const Vec2 ab = b - a, at = t - a;
-  const double l2 = ab.squaredNorm();
-  const double u = l2 > 0 ? std::clamp(at.dot(ab) / l2, 0.0, 1.0) : 0.0;
-  return (at - u * ab).norm();
-}
-
-// Floating filter: both points lie in int S by a margin far above every rounding involved (the
-// points themselves are within ~2^-50 relative of exact points of the edge, the sum vertices and
-// the cross products within a few ulps), so the closed segment between them is certified inside.
-bool surely_inside(const Sum& S, const Vec2& c0, const Vec2& c1, double scale) {
-  const double margin = scale * 0x1p-36;
-  for (const Line& c : S.e) {
-    const Vec2 e = c.e1 - c.e0, v = c.c1 + c.c2;
-    const double len = std::abs(e.x()) + std::abs(e.y());
-    for (const Vec2* p : {&c0, &c1}) {
-      const Vec2 w = *p - v;
-      if (e.x() * w.y() - e.y() * w.x() <= margin * len) return false;
-    }
-  }
-  return true;
-}
-
-// Floating filter: both points lie strictly outside one edge line of S by the same margin, so the
-// segment between them misses S (and cannot be covered by it).
-bool surely_outside(const Sum& S, const Vec2& c0, const Vec2& c1, double scale) {
-  const double margin = scale * 0x1p-36;
-  for (const Line& c : S.e) {
-    const Vec2 e = c.e1 - c.e0, v = c.c1 + c.c2;
-    const double len = std::abs(e.x()) + std::abs(e.y());
-    const Vec2 w0 = c0 - v, w1 = c1 - v;
-    if (e.x() * w0.y() - e.y() * w0.x() < -margin * len && e.x() * w1.y() - e.y() * w1.x() < -margin * len) return true;
-  }
-  return false;
-}
 
 }  // namespace
 
@@ -194,6 +102,7 @@ Depth2 PairDepth2::minimum(const Vec2& t, PairQueryStats* stats) const {
   double best_value = R;  // the answer is ≤ U ≤ R
   auto consider = [&](const Cand& c) {
     if (found) {
+      if (nonconvex2::same_point(c, best)) return;  // a tie recognised symbolically (no rationals)
       const int s = exact_sign([&](auto L) {
         auto [n1, d1] = sq_dist(c, t, L);
         auto [n2, d2] = sq_dist(best, t, L);
@@ -207,9 +116,6 @@ Depth2 PairDepth2::minimum(const Vec2& t, PairQueryStats* stats) const {
                                                  [&](auto L) { return sq_dist(c, t, L).second; }));
   };
 
-  struct Cover {
-    Line entry, exit;
-  };
   std::vector<Cover> covers;
   std::uint32_t last_swallower = std::numeric_limits<std::uint32_t>::max();
   for (const EdgeRef& er : edges) {
@@ -275,50 +181,19 @@ Depth2 PairDepth2::minimum(const Vec2& t, PairQueryStats* stats) const {
     for (std::uint32_t s = 0; s < sums.size() && !swallowed; ++s)
       if (s != er.s && s != last_swallower) try_cover(s);
     if (swallowed) continue;
-    std::sort(covers.begin(), covers.end(),
-              [&](const Cover& x, const Cover& y) { return nonconvex2::compare_lines(x.entry, y.entry, E) < 0; });
     const Param proj{Param::Proj, {}};
-    auto emit = [&](const Param& lo, const Param& hi) {  // nearest point of the closed piece [lo, hi]
-      Cand c{E, proj, F.e[er.k]};
+    nonconvex2::uncovered_pieces(covers, E, t, lo_end, hi_end, [&](const Param& lo, const Param& hi) {
+      Cand c{E, proj, F.e[er.k]};  // nearest point of the closed piece [lo, hi]
       if (compare_params(proj, lo, E, t) <= 0) c.at = lo;
       else if (compare_params(proj, hi, E, t) >= 0) c.at = hi;
       consider(c);
-    };
-    Param s = lo_end;
-    bool covered_to_end = false;
-    for (const Cover& cv : covers) {
-      const Param a{Param::Cut, cv.entry}, bq{Param::Cut, cv.exit};
-      if (compare_params(a, s, E, t) >= 0) {
-        emit(s, a);
-        s = bq;
-      } else if (compare_params(bq, s, E, t) > 0) {
-        s = bq;
-      }
-      if (compare_params(s, hi_end, E, t) > 0) {
-        covered_to_end = true;
-        break;
-      }
-    }
-    if (!covered_to_end) emit(s, hi_end);
+    });
   }
 
   // found is guaranteed: the point t + U·d̂ of the best direction is outside O within the disk.
   if (!found) return r;
-  const Ray& E = best.E;
-  auto coord = [&](int axis) {
-    return exact::accurate_ratio(
-        [&](auto L) {
-          auto [n, dd] = param_nd(best.at, E, t, L);
-          auto o = axis == 0 ? L(E.o1.x()) + L(E.o2.x()) - L(t.x()) : L(E.o1.y()) + L(E.o2.y()) - L(t.y());
-          auto dv = axis == 0 ? nonconvex2::ray_dx(E, L) : nonconvex2::ray_dy(E, L);
-          return o * dd + n * dv;
-        },
-        [&](auto L) { return param_nd(best.at, E, t, L).second; });
-  };
-  const Vec2 translation(coord(0), coord(1));
-  int end = -1;
-  if (compare_params(best.at, Param{Param::Zero, {}}, E, t) == 0) end = 0;
-  else if (compare_params(best.at, Param{Param::One, {}}, E, t) == 0) end = 1;
+  const Vec2 translation = nonconvex2::cand_translation(best, t);
+  const int end = nonconvex2::cand_end(best, t);
   r = S.contact(best.edge, t, translation, end);
   r.depth = best_value;
   r.kind = DepthKind::Minimum;

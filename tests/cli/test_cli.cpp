@@ -164,11 +164,9 @@ TEST_F(Cli, BadInputExitsWithOneLine) {
 
   const std::string dent = write("dent.wkt", "POLYGON ((\n0 0,\n4 0,\n4 4,\n2 1,\n0 4))\n");
   const std::string holes = write("holes.wkt", "POLYGON ((0 0, 9 0, 9 9, 0 9), (1 1, 1 2, 2 2))");
-  // One non-convex polygon against a convex one is supported (tests/cli/test_cli_polygon.cpp);
-  // two non-convex polygons are not.
-  expect_error("depth " + quote(holes) + " " + quote(dent),
-               dent + ": P (" + holes + ") and Q are both non-convex: the depth of two non-convex polygons is "
-                      "not supported yet (one of them must be convex)");
+  // Non-convex polygons are supported (tests/cli/test_cli_polygon.cpp, test_cli_nonconvex.cpp);
+  // their validation errors name the file and line.
+  expect_error("depth " + quote(holes) + " " + quote(dent) + " --direction 0,0", "--direction: the direction is zero");
   const std::string missing = (dir_ / "missing.wkt").string();
   expect_error("depth " + quote(P) + " " + quote(missing), missing + ": cannot read file (No such file or directory)");
   const std::string obj = write("hull.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n");

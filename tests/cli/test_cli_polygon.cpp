@@ -376,14 +376,8 @@ TEST_F(CliPolygon, SvgDrawsHolesAndUnionBoundary) {
 
 TEST_F(CliPolygon, BadInput) {
   const std::string S = write("S.wkt", wkt_of(kUnit)), U = write("U.wkt", wkt_of(kU));
-  const std::string H = write("H.wkt", wkt_of(kHoled));
-  expect_error("depth " + quote(U) + " " + quote(H),
-               H + ": P (" + U + ") and Q are both non-convex: the depth of two non-convex polygons is "
-                   "not supported yet (one of them must be convex)");
+  // (Two non-convex polygons are supported: tests/cli/test_cli_nonconvex.cpp.)
   const std::string csv = write("q.csv", "0,0,0,0\n");
-  expect_error("batch " + quote(H) + " " + quote(U) + " --queries " + quote(csv),
-               U + ": P (" + H + ") and Q are both non-convex: the depth of two non-convex polygons is "
-                   "not supported yet (one of them must be convex)");
 
   // Validation errors carry the line of the ring/vertex the message names.
   const std::string outside = write("out.wkt", "POLYGON ((0 0, 10 0, 10 10, 0 10),\n(2 2, 4 2, 4 4, 2 4),\n(20 20, 21 20, 21 21))\n");

@@ -13,6 +13,7 @@
 #include <pendepth/polygon.hpp>
 
 #include <memory>
+#include <vector>
 
 namespace nonconvex2_test {
 
@@ -33,6 +34,11 @@ class PairOracle {
   /// minkowski_sum_2(P, −Q) (reduced convolution, exact).
   int side_of_M(const pendepth::Vec2& t) const;
   bool has_M() const;
+  /// cl(O) = M exactly (minkowski_sum_2 for hole-free pairs, else the regularised union of the
+  /// exact convex piece sums with Polygon_set_2): its area rounded once, and the vertices of its
+  /// boundary rings, each coordinate converted from the exact value.
+  double closure_area() const;
+  std::vector<pendepth::Vec2> closure_vertices() const;
 
  private:
   struct Impl;

@@ -4,6 +4,7 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Partition_traits_2.h>
 #include <CGAL/Polygon_2.h>
+#include <CGAL/Polygon_set_2.h>
 #include <CGAL/Polygon_with_holes_2.h>
 #include <CGAL/convex_hull_2.h>
 #include <CGAL/minkowski_sum_2.h>
@@ -216,6 +217,40 @@ double PairOracle::minimum(const pendepth::Vec2& t) const {
     }
   }
   return std::sqrt(CGAL::to_double(CGAL::exact(best)));
+}
+
+namespace {
+// cl(O) as exact polygons with holes.
+std::vector<PolygonWH> closure(bool has_M, const PolygonWH& M, const std::vector<Polygon2>& parts) {
+  if (has_M) return {M};
+  CGAL::Polygon_set_2<K> set;
+  set.join(parts.begin(), parts.end());
+  std::vector<PolygonWH> out;
+  set.polygons_with_holes(std::back_inserter(out));
+  return out;
+}
+}  // namespace
+
+double PairOracle::closure_area() const {
+  FT a = 0;
+  for (const auto& pwh : closure(impl_->has_M, impl_->M, impl_->parts)) {
+    a += pwh.outer_boundary().area();
+    for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h) a += h->area();  // holes are CW: negative
+  }
+  return CGAL::to_double(a.exact());
+}
+
+std::vector<pendepth::Vec2> PairOracle::closure_vertices() const {
+  std::vector<pendepth::Vec2> out;
+  auto add = [&](const Polygon2& r) {
+    for (auto v = r.vertices_begin(); v != r.vertices_end(); ++v)
+      out.push_back({CGAL::to_double(v->x().exact()), CGAL::to_double(v->y().exact())});
+  };
+  for (const auto& pwh : closure(impl_->has_M, impl_->M, impl_->parts)) {
+    add(pwh.outer_boundary());
+    for (auto h = pwh.holes_begin(); h != pwh.holes_end(); ++h) add(*h);
+  }
+  return out;
 }
 
 int PairOracle::side_of_M(const pendepth::Vec2& t) const {

@@ -1,0 +1,502 @@
+// Benchmark: two simple non-convex polygons (issue 5, DHS §6, survey §2) — pendepth's per-pair
+// no-fit polygon NoFitPolygon2 and its per-query PairDepth2 against the explicit Minkowski sums of
+// CGAL (reduced convolution) and Clipper (MinkowskiSum), each followed by a scan of the explicit
+// sum per query, on the same inputs in the same run (DESIGN.md §6).
+//
+// Benchmark names are <what>/<implementation>/<case>/<n>/<m> (case: albano, shirts, trousers, star):
+//   build/pendepth      NoFitPolygon2 construction (reduced convolution cut exactly by the open
+//                       convex pair sums, rings, slits, points, query index)
+//   build/cgal          CGAL::minkowski_sum_2(P, −Q) with Epeck (reduced convolution, the default
+//                       of CGAL 5.5), then the sum's vertices rounded to doubles for the scans
+//   build/clipper       ClipperLib::MinkowskiSum(pattern −Q, path P, closed) on coordinates scaled
+//                       to Clipper's integer grid, then unioned (non-zero) with P − q0 and −Q + p0:
+//                       the swept quads cover ∂P ⊕ ∂(−Q) only, and A ⊕ B = (∂A ⊕ ∂B) ∪ (A + b) ∪
+//                       (a + B) for simple polygons, as Clipper's documentation of MinkowskiSum
+//                       suggests for filled results
+//   sigma/pendepth_nfp, sigma_d/pendepth_nfp    NoFitPolygon2::minimum / ::along
+//   sigma/pendepth_pair, sigma_d/pendepth_pair  PairDepth2::minimum / ::along (no NFP)
+//   sigma/cgal_scan, sigma_d/cgal_scan, sigma/clipper_scan, sigma_d/clipper_scan
+//                       scans of an explicit sum: point in polygon (crossing number with the
+//                       exact orientation predicate on the doubles), then the nearest edge (σ)
+//                       or the first edge the ray crosses (σ_d), in double
+// Cases:
+//   <instance>          real pieces from ../shared/data/nesting (unrotated): every ordered pair
+//                       of albano (64); of shirts and trousers every third
+//                       ordered pair in row-major order, at most 24 (22 and 24 pairs). One benchmark
+//                       iteration of a build builds every pair of the instance; the counter
+//                       `pairs` gives the count, and the tables divide by it (per-pair times).
+//                       Queries cycle through the pairs. n, m: the largest piece sizes.
+//   star/<n>/<m>        random star-shaped P (radii [60, 100]) and Q (radii [6, 10]), n = m.
+// Queries: kQueries placements t = p − centroid(Q) with p uniform in P (nearly all overlap) and
+// random unit directions, generated outside the timed loops from a fixed seed. Before timing,
+// the scans' and PairDepth2's answers are compared with NoFitPolygon2's; the largest difference
+// and the count above 1e-6·scale are exported as counters (Clipper's differ by its grid).
+// NoFitPolygon2 runs while n·m ≤ PENDEPTH_BENCH_NFP_BUDGET (default 10⁵: its build takes ~10 s at
+// 300 × 300 stars at this commit; beyond, the checks use PairDepth2 as the reference).
+// PairDepth2's σ runs while n·m ≤ PENDEPTH_BENCH_PAIR_SIGMA_BUDGET (default 10³: ~20 ms per query
+// at 30 × 30 stars, far more beyond).
+// Peers run while n·m ≤ PENDEPTH_BENCH_PEER_BUDGET (CGAL, default 10⁵) and n·m ≤
+// PENDEPTH_BENCH_CLIPPER_BUDGET (Clipper, default 10⁴). Star sizes: PENDEPTH_BENCH_N (comma list,
+// default 10,30,100,300; at 1000 NoFitPolygon2's build takes ~6 min CPU at this commit, and CGAL
+// with its budget raised ran out of 23 GB of memory). bench/run_nonconvex2.sh prints the tables of docs/benchmarks.md.
+#include <benchmark/benchmark.h>
+#include <pendepth/depth2_nonconvex.hpp>
+#include <pendepth/nfp2.hpp>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polygon_2.h>
+#include <CGAL/Polygon_with_holes_2.h>
+#include <CGAL/minkowski_sum_2.h>
+
+#ifdef PENDEPTH_BENCH_CLIPPER
+#include <clipper.hpp>
+#endif
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <memory>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "common.hpp"
+
+namespace {
+
+using pendepth::NoFitPolygon2;
+using pendepth::PairDepth2;
+using pendepth::Polygon;
+using pendepth::Vec2;
+namespace pb = pendepth::bench;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kCheckSeconds = 1.0;
+
+// ---- inputs ----
+
+std::vector<Vec2> star_ring(std::size_t n, double rmin, double rmax, pb::Rng& rng) {
+  std::vector<Vec2> r(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const double th = 2 * std::numbers::pi * (double(k) + rng.uniform(0, 0.9)) / double(n);
+    const double rad = rng.uniform(rmin, rmax);
+    r[k] = Vec2(rad * std::cos(th), rad * std::sin(th));
+  }
+  return r;
+}
+
+std::vector<std::vector<Vec2>> nesting_pieces(const std::string& instance) {
+  std::ifstream in(std::string(PENDEPTH_SHARED_DATA) + "/nesting/" + instance + ".json");
+  if (!in) throw std::runtime_error("cannot read nesting instance " + instance);
+  nlohmann::json j;
+  in >> j;
+  std::vector<std::vector<Vec2>> out;
+  for (const auto& item : j["items"]) {
+    std::vector<Vec2> r;
+    for (const auto& p : item["shape"]["data"]) r.emplace_back(p[0].get<double>(), p[1].get<double>());
+    if (r.size() > 1 && r.front() == r.back()) r.pop_back();
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+// Crossing number on one ring, the straddle decided by the exact orientation predicate.
+int crossings(const std::vector<Vec2>& ring, const Vec2& p) {
+  int c = 0;
+  for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+    const Vec2 &a = ring[j], &b = ring[i];
+    if ((a.y() > p.y()) != (b.y() > p.y())) {
+      const int o = pendepth::predicates::orient2d(a, b, p);
+      if ((b.y() > a.y()) ? o > 0 : o < 0) ++c;
+    }
+  }
+  return c;
+}
+
+// ---- an explicit sum and its scans ----
+
+class ExplicitSum {
+ public:
+  void add_ring(const std::vector<Vec2>& ring) {
+    if (ring.size() < 3) return;
+    rings_.push_back(ring);
+    for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+      ax_.push_back(ring[j].x()), ay_.push_back(ring[j].y());
+      ex_.push_back(ring[i].x() - ring[j].x()), ey_.push_back(ring[i].y() - ring[j].y());
+    }
+  }
+  std::size_t vertices() const { return ax_.size(); }
+  std::size_t rings() const { return rings_.size(); }
+
+  // Even-odd over all rings (outer boundaries and holes come as nested rings).
+  bool inside(const Vec2& t) const {
+    int c = 0;
+    for (const auto& r : rings_) c += crossings(r, t);
+    return c % 2 == 1;
+  }
+  double sigma(const Vec2& t) const {
+    if (!inside(t)) return 0;
+    double best = kInf;
+    for (std::size_t k = 0; k < ax_.size(); ++k) {
+      const double wx = t.x() - ax_[k], wy = t.y() - ay_[k];
+      const double len2 = ex_[k] * ex_[k] + ey_[k] * ey_[k];
+      const double s = std::clamp((wx * ex_[k] + wy * ey_[k]) / len2, 0.0, 1.0);
+      const double dx = wx - s * ex_[k], dy = wy - s * ey_[k];
+      best = std::min(best, dx * dx + dy * dy);
+    }
+    return std::sqrt(best);
+  }
+  // d a unit vector: the first boundary point along the ray (t inside).
+  double sigma_d(const Vec2& t, const Vec2& d) const {
+    if (!inside(t)) return 0;
+    double best = kInf;
+    for (std::size_t k = 0; k < ax_.size(); ++k) {
+      const double den = d.x() * ey_[k] - d.y() * ex_[k];
+      if (den == 0) continue;
+      const double wx = ax_[k] - t.x(), wy = ay_[k] - t.y();
+      const double s = (wx * ey_[k] - wy * ex_[k]) / den;
+      const double u = (wx * d.y() - wy * d.x()) / den;
+      if (s >= 0 && u >= 0 && u <= 1) best = std::min(best, s);
+    }
+    return best == kInf ? 0 : best;
+  }
+
+ private:
+  std::vector<std::vector<Vec2>> rings_;
+  std::vector<double> ax_, ay_, ex_, ey_;
+};
+
+using K = CGAL::Exact_predicates_exact_constructions_kernel;
+
+ExplicitSum cgal_sum(const Polygon& P, const Polygon& Q) {
+  CGAL::Polygon_2<K> cp, cq;
+  for (const Vec2& p : P.ring(0)) cp.push_back(K::Point_2(p.x(), p.y()));
+  // −Q counter-clockwise (a point reflection keeps the orientation).
+  for (const Vec2& q : Q.ring(0)) cq.push_back(K::Point_2(-q.x(), -q.y()));
+  const CGAL::Polygon_with_holes_2<K> sum = CGAL::minkowski_sum_2(cp, cq);
+  ExplicitSum out;
+  auto add = [&](const CGAL::Polygon_2<K>& ring) {
+    std::vector<Vec2> r;
+    for (auto it = ring.vertices_begin(); it != ring.vertices_end(); ++it)
+      r.emplace_back(CGAL::to_double(it->x()), CGAL::to_double(it->y()));
+    out.add_ring(r);
+  };
+  add(sum.outer_boundary());
+  for (auto h = sum.holes_begin(); h != sum.holes_end(); ++h) add(*h);
+  return out;
+}
+
+#ifdef PENDEPTH_BENCH_CLIPPER
+// Clipper's grid: coordinates scaled so the largest |coordinate| of the pair is below 2^28, so
+// every sum stays in Clipper's fast 64-bit range (|x| < 2^30).
+ExplicitSum clipper_sum(const Polygon& P, const Polygon& Q) {
+  double big = 1;
+  for (const Vec2& p : P.vertices()) big = std::max({big, std::abs(p.x()), std::abs(p.y())});
+  for (const Vec2& q : Q.vertices()) big = std::max({big, std::abs(q.x()), std::abs(q.y())});
+  const double scale = std::ldexp(1.0, 27 - std::ilogb(big));
+  auto grid = [&](double x) { return ClipperLib::cInt(std::llround(x * scale)); };
+  ClipperLib::Path pattern, path;
+  for (const Vec2& q : Q.ring(0)) pattern.emplace_back(grid(-q.x()), grid(-q.y()));
+  for (const Vec2& p : P.ring(0)) path.emplace_back(grid(p.x()), grid(p.y()));
+  ClipperLib::Paths quads;
+  ClipperLib::MinkowskiSum(pattern, path, quads, true);
+  // Fill: P translated by −q0 and −Q translated by p0.
+  ClipperLib::Path p_shift, q_shift;
+  for (const auto& p : path) p_shift.emplace_back(p.X + pattern[0].X, p.Y + pattern[0].Y);
+  for (const auto& q : pattern) q_shift.emplace_back(q.X + path[0].X, q.Y + path[0].Y);
+  ClipperLib::Clipper c;
+  c.AddPaths(quads, ClipperLib::ptSubject, true);
+  c.AddPath(p_shift, ClipperLib::ptClip, true);
+  c.AddPath(q_shift, ClipperLib::ptClip, true);
+  ClipperLib::Paths solution;
+  c.Execute(ClipperLib::ctUnion, solution, ClipperLib::pftNonZero, ClipperLib::pftNonZero);
+  ExplicitSum out;
+  for (const auto& ring : solution) {
+    std::vector<Vec2> r;
+    for (const auto& p : ring) r.emplace_back(double(p.X) / scale, double(p.Y) / scale);
+    out.add_ring(r);
+  }
+  return out;
+}
+#endif
+
+// ---- one case: pairs, queries, lazily built structures ----
+
+struct Pair {
+  Polygon P, Q;
+  std::unique_ptr<NoFitPolygon2> nfp;
+  std::unique_ptr<PairDepth2> pair;
+  std::unique_ptr<ExplicitSum> cgal, clipper;
+  double scale = 1;  // largest |coordinate| of P and Q
+};
+
+struct Query {
+  std::size_t pair;
+  Vec2 t, d;
+};
+
+struct Case {
+  std::string name;
+  std::size_t n = 0, m = 0;
+  std::vector<Pair> pairs;
+  std::vector<Query> queries;
+  bool with_nfp = true;  // NoFitPolygon2 within its budget: the reference of the answer checks
+
+  void add_pair(const std::vector<Vec2>& p, const std::vector<Vec2>& q) {
+    Polygon P = Polygon::simple(p, "P"), Q = Polygon::simple(q, "Q");
+    n = std::max(n, P.size());
+    m = std::max(m, Q.size());
+    double s = 1;
+    for (const Vec2& v : P.vertices()) s = std::max({s, std::abs(v.x()), std::abs(v.y())});
+    for (const Vec2& v : Q.vertices()) s = std::max({s, std::abs(v.x()), std::abs(v.y())});
+    pairs.push_back(Pair{std::move(P), std::move(Q), nullptr, nullptr, nullptr, nullptr, s});
+  }
+
+  void make_queries(pb::Rng& rng) {
+    for (std::size_t k = 0; queries.size() < pb::kQueries; ++k) {
+      const std::size_t i = k % pairs.size();
+      const Polygon &P = pairs[i].P, &Q = pairs[i].Q;
+      const std::vector<Vec2> outer(P.ring(0).begin(), P.ring(0).end());
+      Vec2 lo = outer[0], hi = outer[0], c(0, 0);
+      for (const Vec2& p : outer) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+      for (const Vec2& q : Q.ring(0)) c += q;
+      c /= double(Q.ring(0).size());
+      Vec2 p;
+      do p = Vec2(rng.uniform(lo.x(), hi.x()), rng.uniform(lo.y(), hi.y()));
+      while (crossings(outer, p) % 2 == 0);
+      const double a = rng.uniform(0, 2 * std::numbers::pi);
+      queries.push_back(Query{i, p - c, Vec2(std::cos(a), std::sin(a))});
+    }
+  }
+
+  const NoFitPolygon2& nfp(std::size_t i) {
+    if (!pairs[i].nfp) pairs[i].nfp = std::make_unique<NoFitPolygon2>(pairs[i].P, pairs[i].Q);
+    return *pairs[i].nfp;
+  }
+  const PairDepth2& pair(std::size_t i) {
+    if (!pairs[i].pair) pairs[i].pair = std::make_unique<PairDepth2>(pairs[i].P, pairs[i].Q);
+    return *pairs[i].pair;
+  }
+  const ExplicitSum& sum(std::size_t i, bool cgal) {
+    std::unique_ptr<ExplicitSum>& slot = cgal ? pairs[i].cgal : pairs[i].clipper;
+    if (!slot) {
+#ifdef PENDEPTH_BENCH_CLIPPER
+      slot = std::make_unique<ExplicitSum>(cgal ? cgal_sum(pairs[i].P, pairs[i].Q) : clipper_sum(pairs[i].P, pairs[i].Q));
+#else
+      slot = std::make_unique<ExplicitSum>(cgal_sum(pairs[i].P, pairs[i].Q));
+#endif
+    }
+    return *slot;
+  }
+};
+
+std::map<std::string, std::unique_ptr<Case>>& cases() {
+  static std::map<std::string, std::unique_ptr<Case>> c;
+  return c;
+}
+
+Case& nesting_case(const std::string& instance) {
+  auto& slot = cases()["nesting/" + instance];
+  if (slot) return *slot;
+  slot = std::make_unique<Case>();
+  slot->name = "nesting/" + instance;
+  const auto pieces = nesting_pieces(instance);
+  const bool all = instance == "albano";
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+    for (std::size_t j = 0; j < pieces.size(); ++j, ++k)
+      if (all || (k % 3 == 0 && slot->pairs.size() < 24)) slot->add_pair(pieces[i], pieces[j]);
+  pb::Rng rng(0x51ed270bu ^ std::hash<std::string>{}(instance));
+  slot->make_queries(rng);
+  return *slot;
+}
+
+Case& star_case(std::size_t n) {
+  auto& slot = cases()["star/" + std::to_string(n)];
+  if (slot) return *slot;
+  slot = std::make_unique<Case>();
+  slot->name = "star";
+  pb::Rng rng(0x9e3779b9u ^ (n * 1000003u));
+  const std::vector<Vec2> p = star_ring(n, 60, 100, rng), q = star_ring(n, 6, 10, rng);
+  slot->add_pair(p, q);
+  slot->make_queries(rng);
+  return *slot;
+}
+
+void set_counters(benchmark::State& state, const Case& c) {
+  state.counters["n"] = double(c.n);
+  state.counters["m"] = double(c.m);
+  state.counters["pairs"] = double(c.pairs.size());
+}
+
+// ---- benchmarks ----
+
+void BM_build_pendepth(benchmark::State& state, Case* c) {
+  for (auto _ : state) {
+    for (Pair& p : c->pairs) {
+      NoFitPolygon2 nfp(p.P, p.Q);
+      benchmark::DoNotOptimize(nfp.polygons().size());
+      // Kept for the size counters and the queries (no second build of a slow big case).
+      if (!p.nfp) p.nfp = std::make_unique<NoFitPolygon2>(std::move(nfp));
+    }
+  }
+  set_counters(state, *c);
+  pendepth::NfpSize total;
+  for (std::size_t i = 0; i < c->pairs.size(); ++i) {
+    const pendepth::NfpSize s = c->nfp(i).size();
+    total.candidates += s.candidates, total.pieces += s.pieces, total.rings += s.rings;
+    total.slits += s.slits, total.points += s.points, total.bytes += s.bytes;
+  }
+  const double k = double(c->pairs.size());
+  state.counters["candidates"] = double(total.candidates) / k;
+  state.counters["pieces"] = double(total.pieces) / k;
+  state.counters["rings"] = double(total.rings) / k;
+  state.counters["slits"] = double(total.slits);
+  state.counters["points"] = double(total.points);
+  state.counters["bytes"] = double(total.bytes) / k;
+}
+
+void BM_build_peer(benchmark::State& state, Case* c, bool cgal) {
+  std::size_t vertices = 0, rings = 0;
+  for (auto _ : state) {
+    vertices = 0, rings = 0;
+    for (Pair& p : c->pairs) {
+#ifdef PENDEPTH_BENCH_CLIPPER
+      ExplicitSum s = cgal ? cgal_sum(p.P, p.Q) : clipper_sum(p.P, p.Q);
+#else
+      ExplicitSum s = cgal_sum(p.P, p.Q);
+#endif
+      vertices += s.vertices();
+      rings += s.rings();
+      benchmark::DoNotOptimize(vertices);
+      std::unique_ptr<ExplicitSum>& slot = cgal ? p.cgal : p.clipper;
+      if (!slot) slot = std::make_unique<ExplicitSum>(std::move(s));  // kept for the scans
+    }
+  }
+  set_counters(state, *c);
+  state.counters["sum_vertices"] = double(vertices) / double(c->pairs.size());
+  state.counters["sum_rings"] = double(rings) / double(c->pairs.size());
+}
+
+enum class Impl { Nfp, Pair, CgalScan, ClipperScan };
+
+double answer(Case& c, const Query& q, Impl impl, bool minimum) {
+  switch (impl) {
+    case Impl::Nfp: return minimum ? c.nfp(q.pair).minimum(q.t).depth : c.nfp(q.pair).along(q.t, q.d).depth;
+    case Impl::Pair: return minimum ? c.pair(q.pair).minimum(q.t).depth : c.pair(q.pair).along(q.t, q.d).depth;
+    case Impl::CgalScan:
+    case Impl::ClipperScan: {
+      const ExplicitSum& s = c.sum(q.pair, impl == Impl::CgalScan);
+      return minimum ? s.sigma(q.t) : s.sigma_d(q.t, q.d);
+    }
+  }
+  return 0;
+}
+
+void BM_query(benchmark::State& state, Case* c, Impl impl, bool minimum) {
+  // Structures built and answers checked against NoFitPolygon2 (PairDepth2 beyond the NFP's
+  // budget) before timing.
+  const Impl reference = c->with_nfp ? Impl::Nfp : Impl::Pair;
+  // At most kCheckSeconds of checking: PairDepth2's σ takes up to seconds per query on big stars.
+  double max_diff = 0, differ = 0, overlapping = 0, checked = 0;
+  const auto start = std::chrono::steady_clock::now();
+  for (std::size_t k = 0; k < pb::kQueries; k += 4) {
+    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > kCheckSeconds) break;
+    ++checked;
+    const Query& q = c->queries[k];
+    const double want = answer(*c, q, reference, minimum), got = answer(*c, q, impl, minimum);
+    max_diff = std::max(max_diff, std::abs(got - want));
+    differ += std::abs(got - want) > 1e-6 * c->pairs[q.pair].scale;
+    overlapping += want > 0;
+  }
+  // Build every pair's structure before timing (queries cycle through the pairs).
+  for (std::size_t k = 0; k < std::min(pb::kQueries, c->pairs.size()); ++k) answer(*c, c->queries[k], impl, minimum);
+  std::size_t i = 0;
+  double sum = 0;
+  for (auto _ : state) {
+    sum += answer(*c, c->queries[i], impl, minimum);
+    i = pb::next_query(i);
+  }
+  benchmark::DoNotOptimize(sum);
+  set_counters(state, *c);
+  state.counters["max_abs_diff"] = max_diff;
+  state.counters["differ"] = differ;
+  state.counters["checked"] = checked;
+  state.counters["overlapping"] = overlapping;
+}
+
+std::vector<std::size_t> env_sizes(const char* name, std::vector<std::size_t> fallback) {
+  const char* v = std::getenv(name);
+  if (!v || !*v) return fallback;
+  std::vector<std::size_t> out;
+  std::stringstream ss(v);
+  for (std::string f; std::getline(ss, f, ',');)
+    if (!f.empty()) out.push_back(std::stoull(f));
+  return out;
+}
+
+double env_number(const char* name, double fallback) {
+  const char* v = std::getenv(name);
+  return v && *v ? std::atof(v) : fallback;
+}
+
+void register_case(Case& c, const std::string& tag, double nfp_budget, double budget, double clipper_budget,
+                   double pair_sigma_budget) {
+  const double nm = double(c.n) * double(c.m);
+  c.with_nfp = nm <= nfp_budget;
+  const bool cgal = nm <= budget;
+  const bool clipper = nm <= clipper_budget;
+  (void)clipper;
+  if (c.with_nfp)
+    benchmark::RegisterBenchmark(("build/pendepth/" + tag).c_str(), BM_build_pendepth, &c)
+        ->Unit(benchmark::kMicrosecond);
+  if (cgal)
+    benchmark::RegisterBenchmark(("build/cgal/" + tag).c_str(), BM_build_peer, &c, true)->Unit(benchmark::kMicrosecond);
+#ifdef PENDEPTH_BENCH_CLIPPER
+  if (clipper)
+    benchmark::RegisterBenchmark(("build/clipper/" + tag).c_str(), BM_build_peer, &c, false)
+        ->Unit(benchmark::kMicrosecond);
+#endif
+  for (bool minimum : {true, false}) {
+    const std::string q = minimum ? "sigma" : "sigma_d";
+    if (c.with_nfp) benchmark::RegisterBenchmark((q + "/pendepth_nfp/" + tag).c_str(), BM_query, &c, Impl::Nfp, minimum);
+    if (!minimum || nm <= pair_sigma_budget)
+      benchmark::RegisterBenchmark((q + "/pendepth_pair/" + tag).c_str(), BM_query, &c, Impl::Pair, minimum);
+    if (cgal) benchmark::RegisterBenchmark((q + "/cgal_scan/" + tag).c_str(), BM_query, &c, Impl::CgalScan, minimum);
+#ifdef PENDEPTH_BENCH_CLIPPER
+    if (clipper)
+      benchmark::RegisterBenchmark((q + "/clipper_scan/" + tag).c_str(), BM_query, &c, Impl::ClipperScan, minimum);
+#endif
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const double nfp_budget = env_number("PENDEPTH_BENCH_NFP_BUDGET", 1e5);
+  const double pair_sigma_budget = env_number("PENDEPTH_BENCH_PAIR_SIGMA_BUDGET", 1e3);
+  const double budget = env_number("PENDEPTH_BENCH_PEER_BUDGET", 1e5);
+  const double clipper_budget = env_number("PENDEPTH_BENCH_CLIPPER_BUDGET", 1e4);
+  for (const std::string instance : {"albano", "shirts", "trousers"}) {
+    Case& c = nesting_case(instance);
+    register_case(c, instance + "/" + std::to_string(c.n) + "/" + std::to_string(c.m), nfp_budget, budget,
+                  clipper_budget, pair_sigma_budget);
+  }
+  for (std::size_t n : env_sizes("PENDEPTH_BENCH_N", {10, 30, 100, 300})) {
+    Case& c = star_case(n);
+    register_case(c, "star/" + std::to_string(c.n) + "/" + std::to_string(c.m), nfp_budget, budget, clipper_budget,
+                  pair_sigma_budget);
+  }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

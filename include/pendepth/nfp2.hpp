@@ -1,0 +1,99 @@
+// pendepth — the per-pair no-fit polygon of two simple polygons with holes (issue 5 item 4;
+// DHS §6 "build the convolution", survey §2 reduced convolution).
+//
+// Conventions and semantics as depth2_nonconvex.hpp: P fixed, Q placed at t, M = P ⊕ (−Q),
+// the overlap set O = {t : int P ∩ int(Q + t) ≠ ∅} = ∪ int S_ij (S_ij = T_i ⊕ (−U_j) for the
+// triangles T_i of P and U_j of Q). NoFitPolygon2 builds ∂O once, exactly, and answers batches of
+// queries with a spatial index; every answer equals PairDepth2's (same kind, features, value to a
+// few ulps, identical overlap decisions).
+//
+// Degenerate fits (documented semantics, tested): touching is not overlapping, so
+//   - a slit is a segment of ℝ² \ O with O on both sides: Q slides exactly in a slot of P of Q's
+//     width. Placements on it have depth 0 (overlapping false); next to it depth is positive and
+//     small (the slit is part of ∂O, so σ measures the distance to it);
+//   - an isolated point is a placement where Q fits a pocket or hole of P exactly: depth 0 there,
+//     positive around it.
+// M itself (the closed Minkowski sum) contains slits and points in its interior; cl(O) = M up to
+// those lower-dimensional pieces, and cl(O) is what polygons() exports.
+//
+// Construction (see src/nonconvex2/nfp_build.cpp for the details and complexity):
+//   1. candidates = the reduced convolution: an edge of P paired with each vertex of −Q at which
+//      Q + x can touch that edge from outside only at the vertex (both incident Q edges lie on the
+//      non-P side), and symmetrically an edge of Q with the vertices of P; every candidate is an
+//      edge of some convex pair sum S_ij, kept symbolic (P vertex + −Q vertex);
+//   2. each candidate is cut exactly by the open sums S_ij whose boxes meet it (dual descent over
+//      the two triangle box hierarchies); the uncovered closed pieces are ∂O;
+//   3. pieces are linked into rings by exact equality of their symbolic ends; rings are oriented
+//      with O on the left (outer rings CCW, holes CW); pieces with O on both sides are slits,
+//      zero-length pieces with O all around are isolated points;
+//   4. a bounding-volume hierarchy over the pieces answers the queries.
+//
+// Complexity (n, m vertices of P, Q; K candidates, K ≤ nm; N pieces of ∂O): build O(nm) candidate
+// tests plus, per candidate, the pair sums whose boxes meet it — worst case O(K·nm) = O(n²m²) exact
+// tests, the bound of the explicit convolution (DHS §6); export O(N log N) rational operations.
+// Queries: overlapping(t) is PairDepth2's pair-sum test (worst O(nm), a few sums on real pieces);
+// along/minimum visit O(log N + k) hierarchy nodes for k boxes near the answer (worst O(N)).
+// Measured (docs/algorithms.md, CPU time): on the nesting pieces (≤ 14 vertices, ~17 pieces of ∂O)
+// σ takes ~2 µs and σ_d ~2.5–4.5 µs per query; the build (0.17–0.28 ms) is 3–4× slower than
+// CGAL's minkowski_sum_2 there and on par with it at n = m = 100.
+// Departure from a winding-number / ray-parity NFP: membership in O is always decided by the open
+// convex pair sums (exact and symbolic), which is what separates slits and isolated points from the
+// interior of M.
+#pragma once
+
+#include <pendepth/depth2.hpp>
+#include <pendepth/polygon.hpp>
+
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace pendepth {
+
+/// Size of a built no-fit polygon (for tests, benchmarks and the CLI).
+struct NfpSize {
+  std::size_t candidates = 0;  // reduced-convolution segments examined
+  std::size_t pieces = 0;      // uncovered closed pieces of ∂O kept
+  std::size_t rings = 0, slits = 0, points = 0;
+  std::size_t bytes = 0;       // heap bytes of the structure (pieces + index + exported rings)
+};
+
+/// The per-pair no-fit polygon of two simple polygons with holes (issue 5 item 4): the boundary of
+/// the overlap set O (same O as PairDepth2: O = ∪ int S_ij = {t : int P ∩ int(Q+t) ≠ ∅}), built
+/// once, exactly, with a spatial index for batches of queries.
+class NoFitPolygon2 {
+ public:
+  /// Builds ∂O. Throws nothing for valid Polygons.
+  NoFitPolygon2(const Polygon& P, const Polygon& Q);
+  ~NoFitPolygon2();
+  NoFitPolygon2(NoFitPolygon2&&) noexcept;
+  NoFitPolygon2& operator=(NoFitPolygon2&&) noexcept;
+
+  /// Exact: t ∈ O. Same answer as PairDepth2::overlapping.
+  bool overlapping(const Vec2& t) const;
+  /// σ_d, same contract, kind and value (to a few ulps) as PairDepth2::along: 0 (not overlapping)
+  /// for t ∉ O, else the distance along d̂ to the first point of ∂O (slits and points included).
+  Depth2 along(const Vec2& t, const Vec2& d) const;
+  /// σ, same contract, kind and value (to a few ulps) as PairDepth2::minimum: 0 for t ∉ O, else
+  /// the distance from t to the nearest point of ∂O (slits and points included).
+  Depth2 minimum(const Vec2& t) const;
+
+  /// cl(O) as polygons with holes: polygons()[k][0] is an outer ring (CCW), polygons()[k][1..]
+  /// its holes (CW); no closing vertex repeated. Vertices are the exact vertices of ∂O rounded to
+  /// the nearest double. Slits and isolated points (below) are not part of these rings.
+  const std::vector<std::vector<std::vector<Vec2>>>& polygons() const;
+  /// Slits: maximal segments of ℝ² \ O with O on both sides (Q slides exactly in a slot of P:
+  /// touching, depth 0). Ends rounded to nearest.
+  const std::vector<std::array<Vec2, 2>>& slits() const;
+  /// Isolated points of ℝ² \ O surrounded by O (Q fits a pocket or hole exactly).
+  const std::vector<Vec2>& points() const;
+  NfpSize size() const;
+
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace pendepth

@@ -1,0 +1,233 @@
+// The per-pair no-fit polygon, construction (issue 5 item 4; survey §2 reduced convolution, DHS §6):
+// the boundary of O = ∪ int S_ij (depth2_nonconvex.hpp) as exact uncovered pieces.
+//
+// 1. Candidates (reduced convolution): an edge e = p0 → p1 of P (any ring, P's interior on its
+//    left) with a vertex q of Q such that q is convex in Q (interior angle ≤ π) and both Q edges
+//    at q lie on the closed outer side of e; then Q + x with q + x on e touches e from outside
+//    only at q, and the segment e − q is an edge of the convex sum T ⊕ (−U) for the triangle T of
+//    P at e and any triangle U of Q at q (q is extreme in U against e's outward normal). And
+//    symmetrically an edge of Q (as the edge −q0 → −q1 of −Q) with a convex vertex p of P whose
+//    two edges lie on the outer side of it. Every point of ∂O is a touching placement whose
+//    contact is such an edge–vertex pair (a reflex vertex or a vertex whose edges reach across e
+//    would overlap), and triangulation diagonals never carry ∂O (their translates lie in O except
+//    at their ends), so ∂O ⊆ ∪ candidates. Each candidate is kept symbolic: a Ray from the sum
+//    vertex (p0, q) to (p1, q) (resp. (p, q0) to (p, q1)) with sym = true, so the exact algebra
+//    of pair_sums.hpp and its symbolic ties apply. O lies on every candidate's left.
+// 2. Each candidate is cut by the open sums S_ij whose boxes meet its box (dual descent over the
+//    two triangle hierarchies; floating filters first, then sum_interval exactly), and the
+//    uncovered closed pieces are kept (edge_cut.hpp, the same cutting as σ). A point of a
+//    candidate lies on ∂S for a non-degenerate S of the family, so if no open sum covers it, it is
+//    in cl(O) \ O = ∂O; with step 1 the pieces are exactly ∂O (with duplicates where candidates
+//    coincide; zero-length pieces where two covers only touch).
+// 3. nfp_rings.cpp links the pieces into rings, slits and points; a box hierarchy over the piece
+//    boxes serves the queries (nfp_query.cpp).
+// Cost: candidates O(nm) orientation tests (with an exact floating filter; K of them kept, K ≤ nm,
+// typically O(n + m) on real pieces); cutting visits, per candidate, the pairs whose sum box
+// meets the candidate's box: worst case O(K·nm) exact tests (O(n²m²)), measured ~10² per candidate
+// on the nesting pieces. Departure from the usual reduced-convolution builders (CGAL, Clipper):
+// no arrangement of the candidates is built and no winding numbers are computed; membership in O
+// is decided directly by the open convex pair sums, which also yields the slits and isolated
+// points of degenerate fits (that the winding number of the convolution cannot tell apart).
+#include <cmath>
+
+#include "geometry/exact.hpp"
+#include "nonconvex2/nfp_impl.hpp"
+
+namespace pendepth {
+
+using nonconvex2::Cover;
+using nonconvex2::Line;
+using nonconvex2::NfpPiece;
+using nonconvex2::Param;
+using nonconvex2::Ray;
+using nonconvex2::Sum;
+
+namespace {
+
+double lower(double x) { return x - std::abs(x) * 0x1p-44 - 0x1p-1000; }
+double upper(double x) { return x + std::abs(x) * 0x1p-44 + 0x1p-1000; }
+
+// Exact sign of cross(b − a, d − c) for input doubles.
+int cross_sign(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
+  return exact::exact_sign([&](auto L) {
+    return (L(b.x()) - L(a.x())) * (L(d.y()) - L(c.y())) - (L(b.y()) - L(a.y())) * (L(d.x()) - L(c.x()));
+  });
+}
+
+// prev[g]: the vertex before g in its ring.
+std::vector<std::uint32_t> previous(const Polygon& S) {
+  std::vector<std::uint32_t> prev(S.size());
+  for (std::size_t g = 0; g < S.size(); ++g) prev[S.next(g)] = static_cast<std::uint32_t>(g);
+  return prev;
+}
+
+// The point at parameter p of E, each coordinate to a few ulps (a sum vertex: rounded to nearest).
+Vec2 point_at(const Ray& E, const Line& line, const Param& p) {
+  if (p.kind == Param::Zero) return line.c1 + line.c2;
+  if (p.kind == Param::One) return line.q_edge ? Vec2(line.c1 + line.e1) : Vec2(line.e1 + line.c2);
+  nonconvex2::Cand c{E, p, {}};
+  return nonconvex2::cand_translation(c, Vec2(0, 0));
+}
+
+// The oriented slab filter of step 2: true when every vertex of T ⊕ B lies strictly on one side
+// of the candidate line (normal values cross(dir, v) vs nA), or strictly before pA or after pB
+// along dir, each by the margin. Sum vertices are t + b, so extremes split over T and B.
+bool slab_rejects(const nonconvex2::Tri& T, const nonconvex2::Tri& B, const Vec2& dir, double dlen, double nA, double pA,
+                  double pB, double scale_edge) {
+  double nlo = INFINITY, nhi = -INFINITY, plo = INFINITY, phi = -INFINITY, sc = 0;
+  for (int k = 0; k < 3; ++k) {
+    const Vec2& t = T.v[k];
+    const double n = dir.x() * t.y() - dir.y() * t.x(), p = dir.dot(t);
+    nlo = std::min(nlo, n), nhi = std::max(nhi, n), plo = std::min(plo, p), phi = std::max(phi, p);
+    sc = std::max(sc, std::abs(t.x()) + std::abs(t.y()));
+  }
+  double mlo = INFINITY, mhi = -INFINITY, qlo = INFINITY, qhi = -INFINITY, sb = 0;
+  for (int k = 0; k < 3; ++k) {
+    const Vec2& b = B.v[k];
+    const double n = dir.x() * b.y() - dir.y() * b.x(), p = dir.dot(b);
+    mlo = std::min(mlo, n), mhi = std::max(mhi, n), qlo = std::min(qlo, p), qhi = std::max(qhi, p);
+    sb = std::max(sb, std::abs(b.x()) + std::abs(b.y()));
+  }
+  const double margin = (sc + sb + scale_edge) * dlen * 0x1p-36;
+  return nhi + mhi < nA - margin || nlo + mlo > nA + margin || phi + qhi < pA - margin || plo + qlo > pB + margin;
+}
+
+}  // namespace
+
+NoFitPolygon2::Impl::Impl(const Polygon& P, const Polygon& Q) : S(P, Q) {
+  const auto VP = P.vertices(), VQ = Q.vertices();
+  const auto prevP = previous(P), prevQ = previous(Q);
+  std::vector<char> convexP(P.size()), convexQ(Q.size());
+  for (std::size_t g = 0; g < P.size(); ++g) convexP[g] = cross_sign(VP[prevP[g]], VP[g], VP[g], VP[P.next(g)]) >= 0;
+  for (std::size_t g = 0; g < Q.size(); ++g) convexQ[g] = cross_sign(VQ[prevQ[g]], VQ[g], VQ[g], VQ[Q.next(g)]) >= 0;
+
+  // Step 1: candidates as (ray, line) pairs.
+  std::vector<std::pair<Ray, Line>> cand;
+  for (std::uint32_t g = 0; g < P.size(); ++g) {
+    const auto g1 = static_cast<std::uint32_t>(P.next(g));
+    for (std::uint32_t q = 0; q < Q.size(); ++q) {
+      if (!convexQ[q]) continue;
+      // Q's edges at q on the closed right (outer) side of e: cross(e, w) ≤ 0.
+      if (cross_sign(VP[g], VP[g1], VQ[q], VQ[prevQ[q]]) > 0 || cross_sign(VP[g], VP[g1], VQ[q], VQ[Q.next(q)]) > 0) continue;
+      Ray E;
+      E.o1 = VP[g];
+      E.o2 = -VQ[q];
+      E.a1 = VP[g1];
+      E.b1 = VP[g];
+      E.sym = true;
+      E.p0 = g, E.q0 = q, E.p1 = g1, E.q1 = q;
+      Line c;
+      c.c1 = VP[g], c.c2 = -VQ[q], c.e0 = VP[g], c.e1 = VP[g1];
+      c.p0 = g, c.p1 = g1, c.q0 = c.q1 = q, c.q_edge = false;
+      cand.push_back({E, c});
+    }
+  }
+  for (std::uint32_t h = 0; h < Q.size(); ++h) {
+    const auto h1 = static_cast<std::uint32_t>(Q.next(h));
+    for (std::uint32_t p = 0; p < P.size(); ++p) {
+      if (!convexP[p]) continue;
+      // P's edges at p on the closed outer side of Q's edge h: cross(q1 − q0, w) ≤ 0.
+      if (cross_sign(VQ[h], VQ[h1], VP[p], VP[prevP[p]]) > 0 || cross_sign(VQ[h], VQ[h1], VP[p], VP[P.next(p)]) > 0) continue;
+      Ray E;
+      E.o1 = VP[p];
+      E.o2 = -VQ[h];
+      E.a1 = -VQ[h1];
+      E.b1 = -VQ[h];
+      E.sym = true;
+      E.p0 = p, E.q0 = h, E.p1 = p, E.q1 = h1;
+      Line c;
+      c.c1 = VP[p], c.c2 = -VQ[h], c.e0 = -VQ[h], c.e1 = -VQ[h1];
+      c.p0 = c.p1 = p, c.q0 = h, c.q1 = h1, c.q_edge = true;
+      cand.push_back({E, c});
+    }
+  }
+  sz.candidates = cand.size();
+
+  // Step 2: cut every candidate by the open pair sums that can meet it.
+  std::vector<Cover> covers;
+  const Param zero{Param::Zero, {}}, one{Param::One, {}};
+  for (const auto& [E, line] : cand) {
+    // The ends, each a sum of two input doubles rounded once.
+    const Vec2 A = line.c1 + line.c2, B = line.q_edge ? Vec2(line.c1 + line.e1) : Vec2(line.e1 + line.c2);
+    const Vec2 slo(lower(std::min(A.x(), B.x())), lower(std::min(A.y(), B.y())));
+    const Vec2 shi(upper(std::max(A.x(), B.x())), upper(std::max(A.y(), B.y())));
+    const double scale_edge = A.cwiseAbs().maxCoeff() + B.cwiseAbs().maxCoeff();
+    // The candidate's frame for the oriented slab filter below: the direction B − A and its normal.
+    // (dir from the exact input difference a1 − b1, so it is accurate even for a short candidate.)
+    const Vec2 dir = E.a1 - E.b1;
+    const double dlen = std::abs(dir.x()) + std::abs(dir.y());
+    const double nA = dir.x() * A.y() - dir.y() * A.x(), pA = dir.dot(A), pB = pA + dir.dot(dir);
+    covers.clear();
+    bool swallowed = false;
+    S.descend(
+        [&](const Vec2& lo, const Vec2& hi) {
+          return !(lo.x() > shi.x() || hi.x() < slo.x() || lo.y() > shi.y() || hi.y() < slo.y());
+        },
+        [&](std::uint32_t i, std::uint32_t j) {
+          // Oriented slab filter (separable over the two triangles, no sum built): T_i ⊕ (−U_j)
+          // entirely on one side of the candidate's line, or entirely before A or after B along
+          // it, by a margin far above every rounding (A, B and the triangle vertices are within a
+          // few ulps of exact points; the products within a few ulps) cannot cover any point of
+          // the candidate: the exact tests below would reject it too.
+          if (slab_rejects(S.tp[i], S.tb[j], dir, dlen, nA, pA, pB, scale_edge)) return false;
+          const Sum F = nonconvex2::make_sum(S.tp[i], S.tb[j]);
+          double scale = 0;
+          for (const auto& v : F.v) scale = std::max(scale, v.p.cwiseAbs().maxCoeff() + v.b.cwiseAbs().maxCoeff());
+          if (nonconvex2::surely_outside(F, A, B, scale + scale_edge)) return false;
+          if (nonconvex2::surely_inside(F, A, B, scale + scale_edge)) return swallowed = true;
+          Cover cv;
+          if (!nonconvex2::sum_interval(F, E, cv.entry, cv.exit, &line)) return false;
+          const Param en{Param::Cut, cv.entry}, ex{Param::Cut, cv.exit};
+          const Vec2 o(0, 0);
+          if (nonconvex2::compare_params(ex, zero, E, o) <= 0 || nonconvex2::compare_params(en, one, E, o) >= 0) return false;
+          if (nonconvex2::compare_params(en, zero, E, o) < 0 && nonconvex2::compare_params(ex, one, E, o) > 0) return swallowed = true;
+          covers.push_back(cv);
+          return false;
+        },
+        nullptr);
+    if (swallowed) continue;
+    nonconvex2::uncovered_pieces(covers, E, Vec2(0, 0), zero, one, [&](const Param& lo, const Param& hi) {
+      NfpPiece pc{E, line, lo, hi, point_at(E, line, lo), point_at(E, line, hi), {}, {}};
+      pc.blo = Vec2(lower(std::min(pc.a.x(), pc.b.x())), lower(std::min(pc.a.y(), pc.b.y())));
+      pc.bhi = Vec2(upper(std::max(pc.a.x(), pc.b.x())), upper(std::max(pc.a.y(), pc.b.y())));
+      pieces.push_back(pc);
+    });
+  }
+  sz.pieces = pieces.size();
+
+  // Step 3: the query index over the piece boxes (BoxTree only reads a leaf's box).
+  std::vector<nonconvex2::Tri> boxes(pieces.size());
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    boxes[k].lo = pieces[k].blo;
+    boxes[k].hi = pieces[k].bhi;
+  }
+  tree.build(boxes);
+  nfp_export(*this);
+}
+
+NoFitPolygon2::NoFitPolygon2(const Polygon& P, const Polygon& Q) : impl_(std::make_unique<Impl>(P, Q)) {}
+NoFitPolygon2::~NoFitPolygon2() = default;
+NoFitPolygon2::NoFitPolygon2(NoFitPolygon2&&) noexcept = default;
+NoFitPolygon2& NoFitPolygon2::operator=(NoFitPolygon2&&) noexcept = default;
+
+const std::vector<std::vector<std::vector<Vec2>>>& NoFitPolygon2::polygons() const { return impl_->polys; }
+const std::vector<std::array<Vec2, 2>>& NoFitPolygon2::slits() const { return impl_->slits; }
+const std::vector<Vec2>& NoFitPolygon2::points() const { return impl_->points; }
+
+NfpSize NoFitPolygon2::size() const {
+  NfpSize s = impl_->sz;
+  s.rings = 0;
+  for (const auto& poly : impl_->polys) s.rings += poly.size();
+  s.slits = impl_->slits.size();
+  s.points = impl_->points.size();
+  std::size_t b = impl_->pieces.capacity() * sizeof(NfpPiece) + impl_->tree.nodes.capacity() * sizeof(nonconvex2::BoxTree::Node);
+  for (const auto& poly : impl_->polys) {
+    b += poly.capacity() * sizeof(poly[0]);
+    for (const auto& ring : poly) b += ring.capacity() * sizeof(Vec2);
+  }
+  b += impl_->slits.capacity() * sizeof(impl_->slits[0]) + impl_->points.capacity() * sizeof(Vec2);
+  s.bytes = b;
+  return s;
+}
+
+}  // namespace pendepth

@@ -1,0 +1,225 @@
+// The per-pair no-fit polygon, queries (issue 5 item 4): σ_d and σ on the stored pieces of ∂O
+// (nfp_build.cpp), the overlap test on the pair sums.
+//
+// overlapping(t): the exact pair-sum test of PairDepth2 (dual descent to the sums whose box holds
+//   t; a handful on real pieces). Departure from a ray-parity test on ∂O: parity is ambiguous
+//   exactly where it matters (slits, isolated points, rays through vertices) while the sum test is
+//   exact, symbolic and already O(log)-ish on real pieces.
+// along(t, d), t ∈ O: the component of the line inside O containing t ends at the first point of
+//   ∂O hit by the ray (pieces are closed subsets of ℝ² \ O and every exit point lies on one), so
+//   σ_d = min over pieces of the first λ > 0 where the ray meets the closed piece. Best-first
+//   traversal of the piece hierarchy by conservative box entry λ; the hits are compared exactly
+//   (the crossing with the piece's line, or its nearer end when the ray runs along it).
+// minimum(t), t ∈ O: σ = min over pieces of the exact distance from t to the closed piece; branch
+//   and bound on the hierarchy with conservative box distances, exact comparisons of squared
+//   distances (edge_cut.hpp, the same candidates as PairDepth2::minimum).
+// Results go through PairDepth2::Impl::contact, so kinds, features and witnesses follow
+// depth2_nonconvex.hpp. Cost per query: O(log N + k) node visits for N pieces and k boxes near the
+// answer (worst case O(N)), plus the overlap test.
+#include <cmath>
+#include <limits>
+#include <queue>
+
+#include "geometry/exact.hpp"
+#include "nonconvex2/nfp_impl.hpp"
+#include "nonconvex2/query.hpp"
+
+namespace pendepth {
+
+using exact::exact_sign;
+using nonconvex2::Cand;
+using nonconvex2::Line;
+using nonconvex2::NfpPiece;
+using nonconvex2::Param;
+using nonconvex2::Ray;
+
+namespace {
+
+// The ray's first point on a piece: the crossing with the piece's line, or (ray along the line)
+// the end `at` of the piece.
+struct Hit {
+  const NfpPiece* piece = nullptr;
+  bool end = false;
+  Param at;
+};
+
+// λ of the hit on the query ray (t + λ·d) as num / den.
+template <class L>
+auto hit_nd(const Hit& h, const Ray& ray, const Vec2& t, L lift) {
+  using T = decltype(lift(0.0));
+  if (!h.end) return std::pair<T, T>{nonconvex2::line_num(h.piece->edge, ray, lift), nonconvex2::line_den(h.piece->edge, ray, lift)};
+  const Ray& E = h.piece->E;
+  auto [n, dd] = nonconvex2::param_nd(h.at, E, t, lift);
+  auto dx = lift(ray.a1.x()), dy = lift(ray.a1.y());
+  auto ox = lift(E.o1.x()) + lift(E.o2.x()) - lift(t.x()), oy = lift(E.o1.y()) + lift(E.o2.y()) - lift(t.y());
+  auto ddot = nonconvex2::ray_dx(E, lift) * dx + nonconvex2::ray_dy(E, lift) * dy;
+  return std::pair<T, T>{(ox * dx + oy * dy) * dd + n * ddot, dd * (dx * dx + dy * dy)};
+}
+
+int compare_hits(const Hit& a, const Hit& b, const Ray& ray, const Vec2& t) {
+  if (!a.end && !b.end) return nonconvex2::compare_lines(a.piece->edge, b.piece->edge, ray);
+  const int sa = exact_sign([&](auto L) { return hit_nd(a, ray, t, L).second; });
+  const int sb = exact_sign([&](auto L) { return hit_nd(b, ray, t, L).second; });
+  return sa * sb * exact_sign([&](auto L) {
+           auto [na, da] = hit_nd(a, ray, t, L);
+           auto [nb, db] = hit_nd(b, ray, t, L);
+           return na * db - nb * da;
+         });
+}
+
+// Side of the point at parameter p of E relative to the query line: sign of cross(d, X − t).
+int side_of(const Param& p, const Ray& E, const Vec2& t, const Vec2& d) {
+  const int s = exact_sign([&](auto L) {
+    auto [n, dd] = nonconvex2::param_nd(p, E, t, L);
+    auto x = (L(E.o1.x()) + L(E.o2.x()) - L(t.x())) * dd + n * nonconvex2::ray_dx(E, L);
+    auto y = (L(E.o1.y()) + L(E.o2.y()) - L(t.y())) * dd + n * nonconvex2::ray_dy(E, L);
+    return L(d.x()) * y - L(d.y()) * x;
+  });
+  return s * exact_sign([&](auto L) { return nonconvex2::param_nd(p, E, t, L).second; });
+}
+
+// The ray's first point on the closed piece at λ > 0 (t ∈ O is on no piece), if any.
+bool first_hit(const NfpPiece& pc, const Ray& ray, const Vec2& t, const Vec2& d, Hit& out) {
+  const int den = exact_sign([&](auto L) { return nonconvex2::line_den(pc.edge, ray, L); });
+  if (den != 0) {
+    if (nonconvex2::line_sign(pc.edge, ray) <= 0) return false;
+    if (side_of(pc.lo, pc.E, t, d) * side_of(pc.hi, pc.E, t, d) > 0) return false;
+    out = Hit{&pc, false, {}};
+    return true;
+  }
+  if (exact_sign([&](auto L) { return nonconvex2::line_num(pc.edge, ray, L); }) != 0) return false;  // parallel, apart
+  // Along the piece's line: the nearer end with λ > 0 (both ends lie on one side of t).
+  Hit h0{&pc, true, pc.lo}, h1{&pc, true, pc.hi};
+  const Hit& nearer = compare_hits(h0, h1, ray, t) <= 0 ? h0 : h1;
+  const int s = exact_sign([&](auto L) {
+    auto [n, dd] = hit_nd(nearer, ray, t, L);
+    return n * dd;
+  });
+  if (s <= 0) return false;
+  out = nearer;
+  return true;
+}
+
+double box_distance(const Vec2& t, const Vec2& lo, const Vec2& hi) {
+  const double dx = std::max({lo.x() - t.x(), 0.0, t.x() - hi.x()}), dy = std::max({lo.y() - t.y(), 0.0, t.y() - hi.y()});
+  return std::hypot(dx, dy) * (1 - 0x1p-40);
+}
+
+}  // namespace
+
+bool NoFitPolygon2::Impl::overlapping(const Vec2& t) const {
+  return S.descend(
+      [&](const Vec2& lo, const Vec2& hi) { return lo.x() <= t.x() && t.x() <= hi.x() && lo.y() <= t.y() && t.y() <= hi.y(); },
+      [&](std::uint32_t i, std::uint32_t j) { return nonconvex2::sum_contains(nonconvex2::make_sum(S.tp[i], S.tb[j]), t); },
+      nullptr);
+}
+
+bool NoFitPolygon2::overlapping(const Vec2& t) const {
+  nonconvex2::check_point(t);
+  return impl_->overlapping(t);
+}
+
+Depth2 NoFitPolygon2::along(const Vec2& t, const Vec2& d_in) const {
+  const Vec2 d = nonconvex2::check_and_scale(t, d_in);
+  Depth2 r;
+  r.kind = DepthKind::Directional;
+  const Impl& N = *impl_;
+  if (N.pieces.empty() || !N.overlapping(t)) return r;
+  const Ray ray = Ray::query(t, d);
+
+  Hit best;
+  bool found = false;
+  double best_value = std::numeric_limits<double>::infinity();
+  struct Job {
+    double key;
+    std::int32_t node;
+    bool operator>(const Job& o) const { return key > o.key; }
+  };
+  std::priority_queue<Job, std::vector<Job>, std::greater<Job>> jobs;
+  auto push = [&](std::int32_t node) {
+    double l0, l1;
+    if (!nonconvex2::ray_box(t, d, N.tree.nodes[node].lo, N.tree.nodes[node].hi, l0, l1) || l1 < 0) return;
+    jobs.push({l0, node});
+  };
+  push(0);
+  while (!jobs.empty()) {
+    const Job J = jobs.top();
+    jobs.pop();
+    if (found && J.key > best_value + std::abs(best_value) * 0x1p-40) break;
+    const auto& node = N.tree.nodes[J.node];
+    if (node.left >= 0) {
+      push(node.left);
+      push(node.right);
+      continue;
+    }
+    Hit h;
+    if (!first_hit(N.pieces[node.tri], ray, t, d, h)) continue;
+    if (found && compare_hits(h, best, ray, t) >= 0) continue;
+    best = h;
+    found = true;
+    best_value = exact::accurate_ratio([&](auto L) { return hit_nd(h, ray, t, L).first; },
+                                       [&](auto L) { return hit_nd(h, ray, t, L).second; });
+  }
+  if (!found) return r;  // unreachable for t ∈ O (O is bounded)
+  const double dn = nonconvex2::norm_accurate(d);
+  const double depth = std::max(0.0, best_value * dn);
+  const Line& E = best.piece->edge;
+  r = N.S.contact(E, t, depth * (d / dn), nonconvex2::end_on_ray(E, t, d));
+  r.depth = depth;
+  r.normal = d / dn;
+  r.kind = DepthKind::Directional;
+  r.overlapping = true;
+  return r;
+}
+
+Depth2 NoFitPolygon2::minimum(const Vec2& t) const {
+  nonconvex2::check_point(t);
+  Depth2 r;
+  r.kind = DepthKind::Minimum;
+  const Impl& N = *impl_;
+  if (N.pieces.empty() || !N.overlapping(t)) return r;
+
+  Cand best;
+  bool found = false;
+  double best_value = std::numeric_limits<double>::infinity();
+  const Param proj{Param::Proj, {}};
+  struct Job {
+    double key;
+    std::int32_t node;
+    bool operator>(const Job& o) const { return key > o.key; }
+  };
+  std::priority_queue<Job, std::vector<Job>, std::greater<Job>> jobs;
+  jobs.push({0, 0});
+  while (!jobs.empty()) {
+    const Job J = jobs.top();
+    jobs.pop();
+    if (found && J.key > best_value * (1 + 0x1p-40)) break;
+    const auto& node = N.tree.nodes[J.node];
+    if (node.left >= 0) {
+      for (std::int32_t c : {node.left, node.right}) jobs.push({box_distance(t, N.tree.nodes[c].lo, N.tree.nodes[c].hi), c});
+      continue;
+    }
+    const NfpPiece& pc = N.pieces[node.tri];
+    Cand c{pc.E, proj, pc.edge};
+    if (nonconvex2::compare_params(proj, pc.lo, pc.E, t) <= 0) c.at = pc.lo;
+    else if (nonconvex2::compare_params(proj, pc.hi, pc.E, t) >= 0) c.at = pc.hi;
+    if (found && (nonconvex2::same_point(c, best) || exact_sign([&](auto L) {
+          auto [n1, d1] = nonconvex2::sq_dist(c, t, L);
+          auto [n2, d2] = nonconvex2::sq_dist(best, t, L);
+          return n1 * d2 - n2 * d1;
+        }) >= 0))
+      continue;  // not nearer (a shared vertex of two pieces is recognised symbolically)
+    best = c;
+    found = true;
+    best_value = std::sqrt(exact::accurate_ratio([&](auto L) { return nonconvex2::sq_dist(c, t, L).first; },
+                                                 [&](auto L) { return nonconvex2::sq_dist(c, t, L).second; }));
+  }
+  if (!found) return r;  // unreachable for t ∈ O
+  r = N.S.contact(best.edge, t, nonconvex2::cand_translation(best, t), nonconvex2::cand_end(best, t));
+  r.depth = best_value;
+  r.kind = DepthKind::Minimum;
+  r.overlapping = true;
+  return r;
+}
+
+}  // namespace pendepth
