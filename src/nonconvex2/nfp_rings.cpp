@@ -16,6 +16,9 @@
 //    crossing test).
 // 3. Zero-length pieces that are no vertex of any edge or slit are isolated points of ℝ² \ O.
 // All decisions use exact rationals (GMP); coordinates are rounded to nearest once at export.
+// Each exact vertex is computed and interned once (sum-vertex ends by their (P, Q) vertex ids,
+// crossings in scaled integer arithmetic), and everything after works on vertex ids; sum
+// vertices are rounded from their two doubles without rationals.
 // Cost: O(N log N) rational operations for N pieces, plus O(N·k) box-filtered point–line tests
 // (k vertices in a line's box) and O(H·R·n) point-in-ring tests for H holes, R outer rings.
 #include <gmpxx.h>
