@@ -393,13 +393,37 @@ void nfp_export(NoFitPolygon2::Impl& N) {
     if (ring.size() >= 3) rings.push_back(std::move(ring));
   }
 
-  // Outer rings and holes.
-  std::vector<std::size_t> outer, holes;
-  std::vector<mpq_class> area(rings.size());
+  // Every ring rounded once (its vertices to nearest; sum vertices without rationals).
+  std::vector<std::vector<Vec2>> rr(rings.size());
   for (std::size_t k = 0; k < rings.size(); ++k) {
-    area[k] = ring_area2(V, rings[k]);
-    (area[k] > 0 ? outer : holes).push_back(k);
+    rr[k].reserve(rings[k].size());
+    for (int p : rings[k]) {
+      const auto it = known_round.find(p);
+      rr[k].push_back(it != known_round.end() ? it->second : round_point(V[p]));
+    }
   }
+  // Outer rings and holes by the sign of the area: a floating shoelace sum on the rounded
+  // vertices with a bound covering the rounding of the vertices (2^-53 relative each) and of the
+  // sum; exact rationals when it cannot decide, and exact areas whenever there are holes to place.
+  std::vector<std::size_t> outer, holes;
+  std::vector<int> sign(rings.size(), 0);
+  for (std::size_t k = 0; k < rings.size(); ++k) {
+    const auto& r = rr[k];
+    const double n = double(r.size());
+    double a = 0, big = 0;
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      const Vec2 &u = r[i], &w = r[(i + 1) % r.size()];
+      a += u.x() * w.y() - w.x() * u.y();
+      big = std::max(big, u.cwiseAbs().maxCoeff());
+    }
+    const double bound = (4 * n * n + 8 * n) * big * big * 0x1p-50 + 0x1p-1000;
+    if (std::isfinite(a) && std::isfinite(bound) && std::abs(a) > bound) sign[k] = a > 0 ? 1 : -1;
+    else sign[k] = sgn(ring_area2(V, rings[k]));
+    (sign[k] > 0 ? outer : holes).push_back(k);
+  }
+  std::vector<mpq_class> area(rings.size());
+  if (!holes.empty())
+    for (std::size_t o : outer) area[o] = ring_area2(V, rings[o]);
   std::vector<std::vector<std::size_t>> holes_of(outer.size());
   for (std::size_t h : holes) {
     std::size_t best = outer.size();
@@ -413,19 +437,10 @@ void nfp_export(NoFitPolygon2::Impl& N) {
     }
     if (best < outer.size()) holes_of[best].push_back(h);
   }
-  auto rounded = [&](const std::vector<int>& ring) {
-    std::vector<Vec2> r;
-    r.reserve(ring.size());
-    for (int p : ring) {
-      const auto it = known_round.find(p);
-      r.push_back(it != known_round.end() ? it->second : round_point(V[p]));
-    }
-    return r;
-  };
   N.polys.clear();
   for (std::size_t o = 0; o < outer.size(); ++o) {
-    std::vector<std::vector<Vec2>> poly{rounded(rings[outer[o]])};
-    for (std::size_t h : holes_of[o]) poly.push_back(rounded(rings[h]));
+    std::vector<std::vector<Vec2>> poly{std::move(rr[outer[o]])};
+    for (std::size_t h : holes_of[o]) poly.push_back(std::move(rr[h]));
     N.polys.push_back(std::move(poly));
   }
   N.slits.clear();
