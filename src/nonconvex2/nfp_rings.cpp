@@ -27,6 +27,7 @@
 #include <array>
 #include <climits>
 #include <cmath>
+#include <deque>
 #include <map>
 #include <numeric>
 #include <unordered_map>
@@ -164,7 +165,7 @@ struct LineKey {
 
 // Exact: p strictly inside the ring of vertex ids into V (crossing number; the caller avoids
 // points on the ring).
-int point_in_ring(const std::vector<QP>& V, const std::vector<int>& ring, const QP& p) {
+int point_in_ring(const std::deque<QP>& V, const std::vector<int>& ring, const QP& p) {
   bool in = false;
   for (std::size_t i = 0; i < ring.size(); ++i) {
     const QP &a = V[ring[i]], &b = V[ring[(i + 1) % ring.size()]];
@@ -179,7 +180,7 @@ int point_in_ring(const std::vector<QP>& V, const std::vector<int>& ring, const 
   return in ? 1 : -1;
 }
 
-mpq_class ring_area2(const std::vector<QP>& V, const std::vector<int>& ring) {
+mpq_class ring_area2(const std::deque<QP>& V, const std::vector<int>& ring) {
   mpq_class a = 0;
   for (std::size_t i = 0; i < ring.size(); ++i) a += cross(V[ring[i]], V[ring[(i + 1) % ring.size()]]);
   return a;
@@ -200,14 +201,16 @@ bool larger_ccw_angle(const QP& r, const QP& a, const QP& b) {
 
 void nfp_export(NoFitPolygon2::Impl& N) {
   // Every exact vertex is interned once (V, by exact identity); everything below refers to ids.
-  std::vector<QP> V;
-  std::map<QP, int> id_of;
+  // (A deque: stable addresses, so the index keys on the stored points without copying them.)
+  std::deque<QP> V;
+  auto by_value = [](const QP* x, const QP* y) { return *x < *y; };
+  std::map<const QP*, int, decltype(by_value)> id_of(by_value);
   auto intern = [&](QP&& q) {
-    auto it = id_of.find(q);
+    auto it = id_of.find(&q);
     if (it != id_of.end()) return it->second;
     const int id = static_cast<int>(V.size());
-    id_of.emplace(q, id);
     V.push_back(std::move(q));
+    id_of.emplace(&V.back(), id);
     return id;
   };
   struct Seg {
