@@ -26,7 +26,7 @@
 // meets the candidate's box: worst case O(K·nm) exact tests (O(n²m²)). A floating oriented-slab
 // filter (the candidate's line and its extent along it, separable over the two triangles) drops
 // most visited pairs before a sum is built; on albano ~7 sums per candidate are built and cut
-// exactly. Measured (albano, CPU time, 64 ordered pairs): ~0.13 ms per pair, ~40 % in this
+// exactly. Measured (albano, CPU time, 64 ordered pairs): ~0.12 ms per pair, ~40 % in this
 // cutting (sum_interval, make_sum), ~30 % in the export (nfp_rings.cpp), 4 % triangulations.
 // Departure from the usual reduced-convolution builders (CGAL, Clipper):
 // no arrangement of the candidates is built and no winding numbers are computed; membership in O
