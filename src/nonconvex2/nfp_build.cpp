@@ -23,8 +23,12 @@
 //    boxes serves the queries (nfp_query.cpp).
 // Cost: candidates O(nm) orientation tests (with an exact floating filter; K of them kept, K ≤ nm,
 // typically O(n + m) on real pieces); cutting visits, per candidate, the pairs whose sum box
-// meets the candidate's box: worst case O(K·nm) exact tests (O(n²m²)), measured ~10² per candidate
-// on the nesting pieces. Departure from the usual reduced-convolution builders (CGAL, Clipper):
+// meets the candidate's box: worst case O(K·nm) exact tests (O(n²m²)). A floating oriented-slab
+// filter (the candidate's line and its extent along it, separable over the two triangles) drops
+// most visited pairs before a sum is built; on albano ~7 sums per candidate are built and cut
+// exactly. Measured (albano, CPU time, 64 ordered pairs): ~0.12 ms per pair, ~40 % in this
+// cutting (sum_interval, make_sum), ~30 % in the export (nfp_rings.cpp), 4 % triangulations.
+// Departure from the usual reduced-convolution builders (CGAL, Clipper):
 // no arrangement of the candidates is built and no winding numbers are computed; membership in O
 // is decided directly by the open convex pair sums, which also yields the slits and isolated
 // points of degenerate fits (that the winding number of the convolution cannot tell apart).

@@ -16,6 +16,9 @@
 //    crossing test).
 // 3. Zero-length pieces that are no vertex of any edge or slit are isolated points of ℝ² \ O.
 // All decisions use exact rationals (GMP); coordinates are rounded to nearest once at export.
+// Each exact vertex is computed and interned once (sum-vertex ends by their (P, Q) vertex ids,
+// crossings in scaled integer arithmetic), and everything after works on vertex ids; sum
+// vertices are rounded from their two doubles without rationals.
 // Cost: O(N log N) rational operations for N pieces, plus O(N·k) box-filtered point–line tests
 // (k vertices in a line's box) and O(H·R·n) point-in-ring tests for H holes, R outer rings.
 #include <gmpxx.h>
@@ -24,6 +27,7 @@
 #include <array>
 #include <climits>
 #include <cmath>
+#include <deque>
 #include <map>
 #include <numeric>
 #include <unordered_map>
@@ -161,7 +165,7 @@ struct LineKey {
 
 // Exact: p strictly inside the ring of vertex ids into V (crossing number; the caller avoids
 // points on the ring).
-int point_in_ring(const std::vector<QP>& V, const std::vector<int>& ring, const QP& p) {
+int point_in_ring(const std::deque<QP>& V, const std::vector<int>& ring, const QP& p) {
   bool in = false;
   for (std::size_t i = 0; i < ring.size(); ++i) {
     const QP &a = V[ring[i]], &b = V[ring[(i + 1) % ring.size()]];
@@ -176,7 +180,7 @@ int point_in_ring(const std::vector<QP>& V, const std::vector<int>& ring, const 
   return in ? 1 : -1;
 }
 
-mpq_class ring_area2(const std::vector<QP>& V, const std::vector<int>& ring) {
+mpq_class ring_area2(const std::deque<QP>& V, const std::vector<int>& ring) {
   mpq_class a = 0;
   for (std::size_t i = 0; i < ring.size(); ++i) a += cross(V[ring[i]], V[ring[(i + 1) % ring.size()]]);
   return a;
@@ -197,14 +201,16 @@ bool larger_ccw_angle(const QP& r, const QP& a, const QP& b) {
 
 void nfp_export(NoFitPolygon2::Impl& N) {
   // Every exact vertex is interned once (V, by exact identity); everything below refers to ids.
-  std::vector<QP> V;
-  std::map<QP, int> id_of;
+  // (A deque: stable addresses, so the index keys on the stored points without copying them.)
+  std::deque<QP> V;
+  auto by_value = [](const QP* x, const QP* y) { return *x < *y; };
+  std::map<const QP*, int, decltype(by_value)> id_of(by_value);
   auto intern = [&](QP&& q) {
-    auto it = id_of.find(q);
+    auto it = id_of.find(&q);
     if (it != id_of.end()) return it->second;
     const int id = static_cast<int>(V.size());
-    id_of.emplace(q, id);
     V.push_back(std::move(q));
+    id_of.emplace(&V.back(), id);
     return id;
   };
   struct Seg {
@@ -390,13 +396,37 @@ void nfp_export(NoFitPolygon2::Impl& N) {
     if (ring.size() >= 3) rings.push_back(std::move(ring));
   }
 
-  // Outer rings and holes.
-  std::vector<std::size_t> outer, holes;
-  std::vector<mpq_class> area(rings.size());
+  // Every ring rounded once (its vertices to nearest; sum vertices without rationals).
+  std::vector<std::vector<Vec2>> rr(rings.size());
   for (std::size_t k = 0; k < rings.size(); ++k) {
-    area[k] = ring_area2(V, rings[k]);
-    (area[k] > 0 ? outer : holes).push_back(k);
+    rr[k].reserve(rings[k].size());
+    for (int p : rings[k]) {
+      const auto it = known_round.find(p);
+      rr[k].push_back(it != known_round.end() ? it->second : round_point(V[p]));
+    }
   }
+  // Outer rings and holes by the sign of the area: a floating shoelace sum on the rounded
+  // vertices with a bound covering the rounding of the vertices (2^-53 relative each) and of the
+  // sum; exact rationals when it cannot decide, and exact areas whenever there are holes to place.
+  std::vector<std::size_t> outer, holes;
+  std::vector<int> sign(rings.size(), 0);
+  for (std::size_t k = 0; k < rings.size(); ++k) {
+    const auto& r = rr[k];
+    const double n = double(r.size());
+    double a = 0, big = 0;
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      const Vec2 &u = r[i], &w = r[(i + 1) % r.size()];
+      a += u.x() * w.y() - w.x() * u.y();
+      big = std::max(big, u.cwiseAbs().maxCoeff());
+    }
+    const double bound = (4 * n * n + 8 * n) * big * big * 0x1p-50 + 0x1p-1000;
+    if (std::isfinite(a) && std::isfinite(bound) && std::abs(a) > bound) sign[k] = a > 0 ? 1 : -1;
+    else sign[k] = sgn(ring_area2(V, rings[k]));
+    (sign[k] > 0 ? outer : holes).push_back(k);
+  }
+  std::vector<mpq_class> area(rings.size());
+  if (!holes.empty())
+    for (std::size_t o : outer) area[o] = ring_area2(V, rings[o]);
   std::vector<std::vector<std::size_t>> holes_of(outer.size());
   for (std::size_t h : holes) {
     std::size_t best = outer.size();
@@ -410,19 +440,10 @@ void nfp_export(NoFitPolygon2::Impl& N) {
     }
     if (best < outer.size()) holes_of[best].push_back(h);
   }
-  auto rounded = [&](const std::vector<int>& ring) {
-    std::vector<Vec2> r;
-    r.reserve(ring.size());
-    for (int p : ring) {
-      const auto it = known_round.find(p);
-      r.push_back(it != known_round.end() ? it->second : round_point(V[p]));
-    }
-    return r;
-  };
   N.polys.clear();
   for (std::size_t o = 0; o < outer.size(); ++o) {
-    std::vector<std::vector<Vec2>> poly{rounded(rings[outer[o]])};
-    for (std::size_t h : holes_of[o]) poly.push_back(rounded(rings[h]));
+    std::vector<std::vector<Vec2>> poly{std::move(rr[outer[o]])};
+    for (std::size_t h : holes_of[o]) poly.push_back(std::move(rr[h]));
     N.polys.push_back(std::move(poly));
   }
   N.slits.clear();

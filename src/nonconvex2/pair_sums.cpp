@@ -52,6 +52,12 @@ int compare_lines(const Line& a, const Line& b, const Ray& r) {
   if (ka >= 0 && kb >= 0) return (ka > kb) - (ka < kb);
   if (ka >= 0) return -sign_minus(b, r, ka);
   if (kb >= 0) return sign_minus(a, r, kb);
+  {  // One floating pass for the four polynomials; the exact tiers only when it cannot decide.
+    const exact::LiftFl F;
+    const exact::Fl na = line_num(a, r, F), da = line_den(a, r, F), nb = line_num(b, r, F), db = line_den(b, r, F);
+    const int fa = exact::certified_sign(da), fb = exact::certified_sign(db), fs = exact::certified_sign(na * db - nb * da);
+    if (fa != 2 && fb != 2 && fs != 2) return fs * fa * fb;
+  }
   const int sa = exact_sign([&](auto L) { return line_den(a, r, L); });
   const int sb = exact_sign([&](auto L) { return line_den(b, r, L); });
   const int s = exact_sign([&](auto L) { return line_num(a, r, L) * line_den(b, r, L) - line_num(b, r, L) * line_den(a, r, L); });

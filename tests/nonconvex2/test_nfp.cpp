@@ -426,6 +426,29 @@ TEST(NoFitPolygon2, NestingShirtsTrousersPairs) {
   }
 }
 
+// Vertices of ∂O that are exact ties between two doubles (P vertex + −Q vertex halfway between
+// neighbours): each exported coordinate is one of the two nearest doubles of the exact value, and
+// the queries still agree with PairDepth2. O = (2^-52, 2 + 2^-52)², exact.
+TEST(NoFitPolygon2, RoundingTiesOfSumVertices) {
+  const double a = -0x1p-52;
+  const Polygon P = Polygon::simple(std::vector<Vec2>{{1, 1}, {2, 1}, {2, 2}, {1, 2}}, "square");
+  const Polygon Q = Polygon::simple(std::vector<Vec2>{{a, a}, {a + 1, a}, {a + 1, a + 1}, {a, a + 1}}, "offset square");
+  ASSERT_EQ(a + 1, 1 - 0x1p-52);  // Q's coordinates are exact
+  const NoFitPolygon2 nfp(P, Q);
+  ASSERT_EQ(nfp.polygons().size(), 1u);
+  ASSERT_EQ(nfp.polygons()[0].size(), 1u);
+  const auto& ring = nfp.polygons()[0][0];
+  ASSERT_EQ(ring.size(), 4u);
+  for (const Vec2& v : ring)
+    for (int k = 0; k < 2; ++k) {
+      const bool low = v[k] == 0x1p-52;                      // exact
+      const bool high = v[k] == 2 || v[k] == 2 + 0x1p-51;  // 2 + 2^-52: a tie between these two
+      EXPECT_TRUE(low || high) << v[k];
+    }
+  std::mt19937_64 rng(21);
+  check_all(P, Q, rng, pendepth_test::scaled(30), 3, "rounding ties");
+}
+
 TEST(NoFitPolygon2, InvalidQueriesThrow) {
   const Polygon Q = Polygon::simple(std::vector<Vec2>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, "unit");
   const NoFitPolygon2 nfp(Q, Q);
