@@ -34,8 +34,10 @@
 // Queries: overlapping(t) is PairDepth2's pair-sum test (worst O(nm), a few sums on real pieces);
 // along/minimum visit O(log N + k) hierarchy nodes for k boxes near the answer (worst O(N)).
 // Measured (docs/algorithms.md, CPU time): on the nesting pieces (≤ 14 vertices, ~17 pieces of ∂O)
-// σ takes ~2 µs and σ_d ~2.5–4.5 µs per query; the build (0.17–0.28 ms) is 3–4× slower than
-// CGAL's minkowski_sum_2 there and on par with it at n = m = 100.
+// σ takes ~2 µs and σ_d ~2.5–6 µs per query; the build (87–127 µs per pair) is still 2–3× slower
+// than CGAL's minkowski_sum_2 there (docs/benchmarks.md has the same-run table). Internal
+// inconsistencies of the pieces (a chain that does not close, a hole outside every outer ring)
+// throw std::logic_error rather than export a wrong polygon; no test input has produced one.
 // Departure from a winding-number / ray-parity NFP: membership in O is always decided by the open
 // convex pair sums (exact and symbolic), which is what separates slits and isolated points from the
 // interior of M.

@@ -30,6 +30,7 @@
 #include <deque>
 #include <map>
 #include <numeric>
+#include <stdexcept>
 #include <unordered_map>
 
 #include "geometry/exact.hpp"
@@ -382,7 +383,11 @@ void nfp_export(NoFitPolygon2::Impl& N) {
         if (!have_r) r = sub(V[edges[e].a], V[edges[e].b]), have_r = true;
         if (larger_ccw_angle(r, dir(edges[c]), dir(edges[best]))) best = c;
       }
-      if (best == edges.size() || best == e0) break;  // closed (or an open chain: exported as is)
+      if (best == e0) break;  // closed
+      // Every vertex of ∂O has as many pieces leaving as entering; a dead end means the pieces
+      // are inconsistent, which must not be exported as if it were a ring.
+      if (best == edges.size())
+        throw std::logic_error("no-fit polygon: a boundary chain does not close (internal inconsistency)");
       e = best;
     }
     std::vector<int> ring;
@@ -436,9 +441,17 @@ void nfp_export(NoFitPolygon2::Impl& N) {
         side = point_in_ring(V, rings[outer[o]], V[p]);
         if (side != 0) break;
       }
+      // All vertices on that ring's boundary: decide by the midpoints of the hole's edges (a hole
+      // that shares every vertex with the ring still has an edge off it, or it is the ring).
+      for (std::size_t i = 0; side == 0 && i < rings[h].size(); ++i) {
+        const QP &a = V[rings[h][i]], &b = V[rings[h][(i + 1) % rings[h].size()]];
+        side = point_in_ring(V, rings[outer[o]], QP{(a.x + b.x) / 2, (a.y + b.y) / 2});
+      }
       if (side > 0 && (best == outer.size() || area[outer[o]] < area[outer[best]])) best = o;
     }
-    if (best < outer.size()) holes_of[best].push_back(h);
+    if (best == outer.size())
+      throw std::logic_error("no-fit polygon: a hole ring lies in no outer ring (internal inconsistency)");
+    holes_of[best].push_back(h);
   }
   N.polys.clear();
   for (std::size_t o = 0; o < outer.size(); ++o) {
