@@ -68,6 +68,7 @@
 #include <vector>
 
 #include "common.hpp"
+#include "explicit_sum.hpp"
 
 namespace {
 
@@ -76,8 +77,9 @@ using pendepth::PairDepth2;
 using pendepth::Polygon;
 using pendepth::Vec2;
 namespace pb = pendepth::bench;
+using pb::env_sizes;
+using pb::ExplicitSum;
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kCheckSeconds = 1.0;
 
 // ---- inputs ----
@@ -107,71 +109,6 @@ std::vector<std::vector<Vec2>> nesting_pieces(const std::string& instance) {
   return out;
 }
 
-// Crossing number on one ring, the straddle decided by the exact orientation predicate.
-int crossings(const std::vector<Vec2>& ring, const Vec2& p) {
-  int c = 0;
-  for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
-    const Vec2 &a = ring[j], &b = ring[i];
-    if ((a.y() > p.y()) != (b.y() > p.y())) {
-      const int o = pendepth::predicates::orient2d(a, b, p);
-      if ((b.y() > a.y()) ? o > 0 : o < 0) ++c;
-    }
-  }
-  return c;
-}
-
-// ---- an explicit sum and its scans ----
-
-class ExplicitSum {
- public:
-  void add_ring(const std::vector<Vec2>& ring) {
-    if (ring.size() < 3) return;
-    rings_.push_back(ring);
-    for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
-      ax_.push_back(ring[j].x()), ay_.push_back(ring[j].y());
-      ex_.push_back(ring[i].x() - ring[j].x()), ey_.push_back(ring[i].y() - ring[j].y());
-    }
-  }
-  std::size_t vertices() const { return ax_.size(); }
-  std::size_t rings() const { return rings_.size(); }
-
-  // Even-odd over all rings (outer boundaries and holes come as nested rings).
-  bool inside(const Vec2& t) const {
-    int c = 0;
-    for (const auto& r : rings_) c += crossings(r, t);
-    return c % 2 == 1;
-  }
-  double sigma(const Vec2& t) const {
-    if (!inside(t)) return 0;
-    double best = kInf;
-    for (std::size_t k = 0; k < ax_.size(); ++k) {
-      const double wx = t.x() - ax_[k], wy = t.y() - ay_[k];
-      const double len2 = ex_[k] * ex_[k] + ey_[k] * ey_[k];
-      const double s = std::clamp((wx * ex_[k] + wy * ey_[k]) / len2, 0.0, 1.0);
-      const double dx = wx - s * ex_[k], dy = wy - s * ey_[k];
-      best = std::min(best, dx * dx + dy * dy);
-    }
-    return std::sqrt(best);
-  }
-  // d a unit vector: the first boundary point along the ray (t inside).
-  double sigma_d(const Vec2& t, const Vec2& d) const {
-    if (!inside(t)) return 0;
-    double best = kInf;
-    for (std::size_t k = 0; k < ax_.size(); ++k) {
-      const double den = d.x() * ey_[k] - d.y() * ex_[k];
-      if (den == 0) continue;
-      const double wx = ax_[k] - t.x(), wy = ay_[k] - t.y();
-      const double s = (wx * ey_[k] - wy * ex_[k]) / den;
-      const double u = (wx * d.y() - wy * d.x()) / den;
-      if (s >= 0 && u >= 0 && u <= 1) best = std::min(best, s);
-    }
-    return best == kInf ? 0 : best;
-  }
-
- private:
-  std::vector<std::vector<Vec2>> rings_;
-  std::vector<double> ax_, ay_, ex_, ey_;
-};
 
 using K = CGAL::Exact_predicates_exact_constructions_kernel;
 
@@ -430,16 +367,6 @@ void BM_query(benchmark::State& state, Case* c, Impl impl, bool minimum) {
   state.counters["differ"] = differ;
   state.counters["checked"] = checked;
   state.counters["overlapping"] = overlapping;
-}
-
-std::vector<std::size_t> env_sizes(const char* name, std::vector<std::size_t> fallback) {
-  const char* v = std::getenv(name);
-  if (!v || !*v) return fallback;
-  std::vector<std::size_t> out;
-  std::stringstream ss(v);
-  for (std::string f; std::getline(ss, f, ',');)
-    if (!f.empty()) out.push_back(std::stoull(f));
-  return out;
 }
 
 double env_number(const char* name, double fallback) {

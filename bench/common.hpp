@@ -7,8 +7,11 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <numbers>
 #include <random>
+#include <sstream>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -48,5 +51,17 @@ inline ConvexPolygon random_ellipse_polygon(std::size_t n, Rng& rng, std::string
 /// Number of pre-generated queries per size; a power of two so cycling is a mask.
 inline constexpr std::size_t kQueries = 1024;
 inline std::size_t next_query(std::size_t i) { return (i + 1) & (kQueries - 1); }
+
+/// A comma list of sizes from the environment variable `name` (e.g. PENDEPTH_BENCH_N), or
+/// `fallback` when it is unset or empty.
+inline std::vector<std::size_t> env_sizes(const char* name, std::vector<std::size_t> fallback) {
+  const char* v = std::getenv(name);
+  if (!v || !*v) return fallback;
+  std::vector<std::size_t> out;
+  std::stringstream ss(v);
+  for (std::string f; std::getline(ss, f, ',');)
+    if (!f.empty()) out.push_back(std::stoull(f));
+  return out;
+}
 
 }  // namespace pendepth::bench
