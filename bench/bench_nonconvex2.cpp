@@ -78,6 +78,7 @@ using pendepth::Polygon;
 using pendepth::Vec2;
 namespace pb = pendepth::bench;
 using pb::env_sizes;
+using pb::crossings;
 using pb::ExplicitSum;
 
 constexpr double kCheckSeconds = 1.0;

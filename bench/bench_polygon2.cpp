@@ -70,6 +70,7 @@ using pendepth::PolygonDepth2;
 using pendepth::Vec2;
 namespace pb = pendepth::bench;
 using pb::env_sizes;
+using pb::crossings;
 using pb::ExplicitSum;
 
 
