@@ -171,7 +171,7 @@ inline bool same_point(const Cand& a, const Cand& b) {
     const int k = end_of(a);
     return (through(b.at.line, p, q) || vertex_on(a, k, b.at.line)) && (through(b.edge, p, q) || vertex_on(a, k, b.edge));
   };
-  std::uint32_t pa, qa, pb, qb;
+  std::uint32_t pa = 0, qa = 0, pb = 0, qb = 0;  // set when fa / fb
   const bool fa = fixed(a, pa, qa), fb = fixed(b, pb, qb);
   if (fa && fb) {
     if (pa == pb && qa == qb) return true;
