@@ -355,6 +355,37 @@ struct BatchArgs {
   bool json = false;
 };
 
+// The loop every batch shares: one answer per query line (the library's InvalidInput gets the
+// query's file and line), CSV rows under `header` or JSON Lines, written in blocks of 1 MiB.
+template <class Query, class Answer, class Json>
+int write_batch(const BatchArgs& a, const std::vector<Query>& queries, const char* header, Answer&& answer,
+                Json&& json) {
+  constexpr std::size_t kFlushBytes = 1 << 20;
+  std::string out;
+  out.reserve(kFlushBytes + 4096);
+  if (!a.json) out += header;
+  for (const Query& q : queries) {
+    decltype(answer(q)) r;
+    try {
+      r = answer(q);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(a.queries + ":" + std::to_string(q.line) + ": " + e.what());
+    }
+    if (a.json) {
+      json(out, r);
+      out += '\n';
+    } else {
+      io::append_csv_row(out, r);
+    }
+    if (out.size() >= kFlushBytes) {
+      write_stdout(out);
+      out.clear();
+    }
+  }
+  write_stdout(out);
+  return 0;
+}
+
 int run_batch3(const BatchArgs& a) {
   const Eigen::Quaterniond rq = parse_rotation(a.rotate_q, "--rotate-q");
   const Eigen::Quaterniond rp = parse_rotation(a.rotate_p, "--rotate-p");
@@ -364,91 +395,37 @@ int run_batch3(const BatchArgs& a) {
   const std::vector<io::Query3> queries = io::read_queries3_csv(a.queries);
   const Pose3 pose_p(rp, Vec3::Zero());
 
-  constexpr std::size_t kFlushBytes = 1 << 20;
-  std::string out;
-  out.reserve(kFlushBytes + 4096);
-  if (!a.json) out += "depth,tx,ty,tz\n";
-  for (const io::Query3& q : queries) {
-    Depth3 r;
-    const Pose3 pose_q(rq, q.t);
-    try {
-      r = q.d.isZero(0) ? pendepth::minimum_depth(P, pose_p, Q, pose_q)
-                        : pendepth::directional_depth(P, pose_p, Q, pose_q, rescale(q.d));
-    } catch (const InvalidInput& e) {  // the library's word on this query, with its line
-      throw InvalidInput(a.queries + ":" + std::to_string(q.line) + ": " + e.what());
-    }
-    if (a.json) {
-      io::append_json(out, r, P, Q);
-      out += '\n';
-    } else {
-      io::append_csv_row(out, r);
-    }
-    if (out.size() >= kFlushBytes) {
-      write_stdout(out);
-      out.clear();
-    }
-  }
-  write_stdout(out);
-  return 0;
+  return write_batch(
+      a, queries, "depth,tx,ty,tz\n",
+      [&](const io::Query3& q) -> Depth3 {
+        const Pose3 pose_q(rq, q.t);
+        return q.d.isZero(0) ? pendepth::minimum_depth(P, pose_p, Q, pose_q)
+                             : pendepth::directional_depth(P, pose_p, Q, pose_q, rescale(q.d));
+      },
+      [&](std::string& out, const Depth3& r) { io::append_json(out, r, P, Q); });
 }
 
 // A batch with a non-convex polygon: PolygonDepth2 is built once, before the first query.
 int run_batch_polygon(const BatchArgs& a, io::Shape2 P, io::Shape2 Q, const std::vector<io::Query2>& queries) {
   const PolygonPair pair(std::move(P), std::move(Q));
-  constexpr std::size_t kFlushBytes = 1 << 20;
-  std::string out;
-  out.reserve(kFlushBytes + 4096);
-  if (!a.json) out += "depth,tx,ty\n";
-  for (const io::Query2& q : queries) {
-    Depth2 r;
-    try {
-      r = (q.d.x() == 0 && q.d.y() == 0) ? pair.minimum(q.t) : pair.along(q.t, rescale(q.d));
-    } catch (const InvalidInput& e) {
-      throw InvalidInput(a.queries + ":" + std::to_string(q.line) + ": " + e.what());
-    }
-    if (a.json) {
-      pair.append_json(out, r);
-      out += '\n';
-    } else {
-      io::append_csv_row(out, r);
-    }
-    if (out.size() >= kFlushBytes) {
-      write_stdout(out);
-      out.clear();
-    }
-  }
-  write_stdout(out);
-  return 0;
+  return write_batch(
+      a, queries, "depth,tx,ty\n",
+      [&](const io::Query2& q) -> Depth2 {
+        return (q.d.x() == 0 && q.d.y() == 0) ? pair.minimum(q.t) : pair.along(q.t, rescale(q.d));
+      },
+      [&](std::string& out, const Depth2& r) { pair.append_json(out, r); });
 }
 
 // A batch with two non-convex polygons: the no-fit polygon is built once, before the first query,
 // and every query is answered on it (σ for a zero direction, σ_d otherwise).
 int run_batch_pair(const BatchArgs& a, const Polygon& P, const Polygon& Q, const std::vector<io::Query2>& queries) {
   const NoFitPolygon2 nfp(P, Q);
-  constexpr std::size_t kFlushBytes = 1 << 20;
-  std::string out;
-  out.reserve(kFlushBytes + 4096);
-  if (!a.json) out += "depth,tx,ty\n";
-  for (const io::Query2& q : queries) {
-    Depth2 r;
-    try {
-      r = (q.d.x() == 0 && q.d.y() == 0) ? nfp.minimum(q.t) : nfp.along(q.t, rescale(q.d));
-    } catch (const InvalidInput& e) {
-      throw InvalidInput(a.queries + ":" + std::to_string(q.line) + ": " + e.what());
-    }
-    if (a.json) {
-      io::append_json(out, r, P, Q);
-      out += '\n';
-    } else {
-      io::append_csv_row(out, r);
-    }
-    if (out.size() >= kFlushBytes) {
-      write_stdout(out);
-      out.clear();
-    }
-  }
-  write_stdout(out);
-  return 0;
+  return write_batch(
+      a, queries, "depth,tx,ty\n",
+      [&](const io::Query2& q) -> Depth2 {
+        return (q.d.x() == 0 && q.d.y() == 0) ? nfp.minimum(q.t) : nfp.along(q.t, rescale(q.d));
+      },
+      [&](std::string& out, const Depth2& r) { io::append_json(out, r, P, Q); });
 }
 
 int run_batch(const BatchArgs& a) {
@@ -470,31 +447,13 @@ int run_batch(const BatchArgs& a) {
   const ConvexPolygon& PP = field ? field->P() : P;
   const ConvexPolygon& QQ = field ? field->Q() : Q;
 
-  constexpr std::size_t kFlushBytes = 1 << 20;
-  std::string out;
-  out.reserve(kFlushBytes + 4096);
-  if (!a.json) out += "depth,tx,ty\n";
-  for (const io::Query2& q : queries) {
-    Depth2 r;
-    try {
-      r = (q.d.x() == 0 && q.d.y() == 0) ? field->minimum(q.t)
-                                         : pendepth::directional_depth(PP, QQ, q.t, rescale(q.d));
-    } catch (const InvalidInput& e) {  // the library's word on this query, with its line
-      throw InvalidInput(a.queries + ":" + std::to_string(q.line) + ": " + e.what());
-    }
-    if (a.json) {
-      io::append_json(out, r, PP, QQ);
-      out += '\n';
-    } else {
-      io::append_csv_row(out, r);
-    }
-    if (out.size() >= kFlushBytes) {
-      write_stdout(out);
-      out.clear();
-    }
-  }
-  write_stdout(out);
-  return 0;
+  return write_batch(
+      a, queries, "depth,tx,ty\n",
+      [&](const io::Query2& q) -> Depth2 {
+        return (q.d.x() == 0 && q.d.y() == 0) ? field->minimum(q.t)
+                                              : pendepth::directional_depth(PP, QQ, q.t, rescale(q.d));
+      },
+      [&](std::string& out, const Depth2& r) { io::append_json(out, r, PP, QQ); });
 }
 
 struct NfpArgs {
