@@ -2,6 +2,9 @@
 // executes the built `pendepth` binary (PENDEPTH_CLI) capturing exit status, stdout and stderr.
 #pragma once
 
+#include <pendepth/io.hpp>
+#include <pendepth/polygon.hpp>
+
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -11,6 +14,7 @@
 #include <string>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <vector>
 
 namespace cli_test {
 
@@ -27,6 +31,32 @@ inline std::string slurp(const fs::path& p) {
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
+}
+
+/// Polygon rings (outer first), as the 2D polygon tests write them to .wkt files.
+using Rings = std::vector<std::vector<pendepth::Vec2>>;
+
+/// A POLYGON in WKT with the shortest round-trip doubles (closing vertex repeated).
+inline std::string wkt_of(const Rings& rings) {
+  std::string s = "POLYGON (";
+  for (std::size_t k = 0; k < rings.size(); ++k) {
+    s += k ? ",\n(" : "(";
+    for (std::size_t i = 0; i <= rings[k].size(); ++i) {
+      const pendepth::Vec2& p = rings[k][i % rings[k].size()];
+      if (i) s += ", ";
+      pendepth::io::append_double(s, p.x());
+      s += ' ';
+      pendepth::io::append_double(s, p.y());
+    }
+    s += ')';
+  }
+  return s + ")\n";
+}
+
+inline Rings rings_of(const pendepth::Polygon& P) {
+  Rings r;
+  for (std::size_t k = 0; k < P.ring_count(); ++k) r.emplace_back(P.ring(k).begin(), P.ring(k).end());
+  return r;
 }
 
 struct Result {

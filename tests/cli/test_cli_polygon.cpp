@@ -26,34 +26,13 @@ namespace io = pendepth::io;
 using nlohmann::json;
 
 using cli_test::quote;
+using cli_test::rings_of;
+using cli_test::Rings;
 using cli_test::Result;
 using cli_test::slurp;
+using cli_test::wkt_of;
 
 namespace {
-
-using Rings = std::vector<std::vector<Vec2>>;
-
-std::string wkt_of(const Rings& rings) {
-  std::string s = "POLYGON (";
-  for (std::size_t k = 0; k < rings.size(); ++k) {
-    s += k ? ",\n(" : "(";
-    for (std::size_t i = 0; i <= rings[k].size(); ++i) {
-      const Vec2& p = rings[k][i % rings[k].size()];
-      if (i) s += ", ";
-      io::append_double(s, p.x());
-      s += ' ';
-      io::append_double(s, p.y());
-    }
-    s += ')';
-  }
-  return s + ")\n";
-}
-
-Rings rings_of(const Polygon& P) {
-  Rings r;
-  for (std::size_t k = 0; k < P.ring_count(); ++k) r.emplace_back(P.ring(k).begin(), P.ring(k).end());
-  return r;
-}
 
 std::string num(double x) {
   std::string s;
