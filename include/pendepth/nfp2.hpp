@@ -93,6 +93,8 @@ class NoFitPolygon2 {
   NfpSize size() const;
 
   struct Impl;
+  /// Test hook (private header nfp_impl.hpp has Impl): the stored pieces and rings.
+  friend const Impl& nfp_impl(const NoFitPolygon2& nfp);
 
  private:
   std::unique_ptr<Impl> impl_;
