@@ -56,31 +56,53 @@ using nonconvex2::NfpPiece;
 using nonconvex2::Param;
 using nonconvex2::Ray;
 
-// One piece end: the point at parameter p (normalised) of ray E, whose line is `edge`.
+// One piece end: the point at parameter *raw of ray E (whose line is `edge`); `kind` is the
+// normalised kind (a cut through a vertex of a symbolic ray is that vertex).
 struct End {
   const Ray* E;
   const Line* edge;
-  Param p;
+  const Param* raw;
+  Param::Kind kind;
   bool sum;                   // a sum vertex (pid, qid) = sp + sb
+  bool r_sum;                 // r from TwoSum of a sum vertex (round_sum succeeded)
   std::uint32_t pid, qid;
   Vec2 sp, sb;
   int den_sign;               // sign of the denominator of μ
   Vec2 r;                     // rounded to nearest
-  bool r_sum;                 // r from TwoSum of a sum vertex (round_sum succeeded)
+  bool have_dd;               // xn, yn, den computed (round_coord)
+  exact::DD xn, yn, den;      // not a sum vertex: the coordinates' numerators and denominator
+  End() {}  // user-provided: no zero-filling of the whole struct on emplace_back
+  Param param() const { return kind == Param::Zero || kind == Param::One ? Param{kind, {}, 0} : *raw; }
 };
 
-// Coordinate `axis` of end v as num / den (generic lift).
+// μ = num / den of end v (generic lift).
+template <class L>
+auto end_nd(const End& v, L lift) {
+  using T = decltype(lift(0.0));
+  switch (v.kind) {
+    case Param::Zero:
+      return std::pair<T, T>{lift(0.0), lift(1.0)};
+    case Param::One:
+      return std::pair<T, T>{lift(1.0), lift(1.0)};
+    case Param::Cut:
+      return std::pair<T, T>{nonconvex2::line_num(v.raw->line, *v.E, lift), nonconvex2::line_den(v.raw->line, *v.E, lift)};
+    default:
+      return nonconvex2::param_nd(*v.raw, *v.E, Vec2(0, 0), lift);
+  }
+}
+
+// Coordinate `axis` of end v as num / den (generic lift): o + μ·dir.
 template <class L>
 auto coord_num(const End& v, int axis, L lift) {
   const Ray& E = *v.E;
-  auto [n, d] = nonconvex2::param_nd(v.p, E, Vec2(0, 0), lift);
+  auto [n, d] = end_nd(v, lift);
   auto o = lift(E.o1[axis]) + lift(E.o2[axis]);
   auto dv = axis == 0 ? nonconvex2::ray_dx(E, lift) : nonconvex2::ray_dy(E, lift);
   return o * d + n * dv;
 }
 template <class L>
 auto coord_den(const End& v, L lift) {
-  return nonconvex2::param_nd(v.p, *v.E, Vec2(0, 0), lift).second;
+  return end_nd(v, lift).second;
 }
 
 // Exact sign via double-double first (the cases here are near-ties for plain doubles), then the
@@ -142,33 +164,68 @@ bool round_sum(double a, double b, double& out) {
 // value), step towards the exact x while x lies beyond the midpoint to the next double. Each step
 // is one exact sign of x − m (m = d + half the gap, exact as a double-double). Rationals only for
 // overflow, subnormal gaps or a guess more than a few steps off.
-double round_coord(const End& v, int axis, double d) {
+double round_coord(End& v, int axis, double d) {
   // A coordinate the ray or the cut line does not move along is a sum of two input doubles (the
   // ray's origin resp. the cut line's anchor): exact ties there are common on axis-parallel edges.
   const Ray& E = *v.E;
   double r;
-  if (exact::exact_sign([&](auto L) { return axis == 0 ? nonconvex2::ray_dx(E, L) : nonconvex2::ray_dy(E, L); }) == 0 &&
+  if ((axis == 0 ? E.a1.x() + E.a2.x() == E.b1.x() + E.b2.x() && E.a2.x() == 0 && E.b2.x() == 0
+                 : E.a1.y() + E.a2.y() == E.b1.y() + E.b2.y() && E.a2.y() == 0 && E.b2.y() == 0) &&
       round_sum(E.o1[axis], E.o2[axis], r))
     return r == 0 ? 0.0 : r;
-  if (v.p.kind == Param::Cut && v.p.line.e0[axis] == v.p.line.e1[axis] && round_sum(v.p.line.c1[axis], v.p.line.c2[axis], r))
+  if (v.kind == Param::Cut && v.raw->line.e0[axis] == v.raw->line.e1[axis] && round_sum(v.raw->line.c1[axis], v.raw->line.c2[axis], r))
     return r == 0 ? 0.0 : r;
-  auto side = [&](double hi, double lo) {  // sign of x − (hi + lo)
-    return v.den_sign * sign_dd([&](auto L) { return coord_num(v, axis, L) - (L(hi) + L(lo)) * coord_den(v, L); });
+  // Sign of x − (hi + lo): from the stored double-double numerator and denominator when their
+  // bounds decide, else exactly.
+  if (!v.have_dd) {  // the double-double numerators and denominator, once per end
+    const exact::LiftDD D;
+    const auto [n, d] = end_nd(v, D);
+    v.den = d;
+    v.xn = (D(E.o1.x()) + D(E.o2.x())) * d + n * nonconvex2::ray_dx(E, D);
+    v.yn = (D(E.o1.y()) + D(E.o2.y())) * d + n * nonconvex2::ray_dy(E, D);
+    v.have_dd = true;
+  }
+  const exact::DD& num = axis == 0 ? v.xn : v.yn;
+  auto side = [&](double hi, double lo) {
+    const exact::DD m = exact::DD{hi, 0, 0} + exact::DD{lo, 0, 0};
+    const exact::DD f = num - m * v.den;
+    if (exact::dd_finite(f)) {
+      const double b = exact::safe_bound(f.e);
+      if (f.hi > b) return v.den_sign;
+      if (f.hi < -b) return -v.den_sign;
+    }
+    return v.den_sign * exact::exact_sign([&](auto L) { return coord_num(v, axis, L) - (L(hi) + L(lo)) * coord_den(v, L); });
   };
+  // x against the midpoints to both neighbours of d (never x against d itself: exact coordinates
+  // are common and their zero would not be certified in floating point).
   if (std::isfinite(d) && std::abs(d) < 0x1p1000) {
     for (int step = 0; step < 8; ++step) {
-      const int s = side(d, 0);
-      if (s == 0) return d == 0 ? 0.0 : d;  // round_q: an exact zero is +0
-      const double c = std::nextafter(d, s > 0 ? INFINITY : -INFINITY);
-      const double h = (c - d) * 0.5;  // c − d is exact (neighbours); halving is exact above subnormals
-      if (std::abs(h) < 0x1p-960 || !std::isfinite(c)) break;
-      const int t = side(d, h);
-      if (t == 0) return std::abs(c) < std::abs(d) ? c : d;  // a tie: the neighbour nearer zero
-      if (t != s) return d;
-      d = c;
+      const double up = std::nextafter(d, INFINITY), dn = std::nextafter(d, -INFINITY);
+      const double hu = (up - d) * 0.5, hd = (dn - d) * 0.5;  // exact: neighbours, above subnormals
+      if (!std::isfinite(up) || !std::isfinite(dn)) break;
+      if (std::abs(hu) < 0x1p-960 || std::abs(hd) < 0x1p-960) {
+        // Near zero (symmetric pairs put vertices on the axes): an exact zero is +0 (round_q);
+        // anything else this small is rounded from the rational.
+        if (exact::exact_sign([&](auto L) { return coord_num(v, axis, L); }) == 0) return 0.0;
+        break;
+      }
+      const int tu = side(d, hu);
+      if (tu == 0) return std::abs(up) < std::abs(d) ? up : d;  // a tie: the neighbour nearer zero
+      if (tu > 0) {
+        d = up;
+        continue;
+      }
+      const int td = side(d, hd);
+      if (td == 0) return std::abs(dn) < std::abs(d) ? dn : d;
+      if (td < 0) {
+        d = dn;
+        continue;
+      }
+      return d;
     }
   }
-  return round_q(axis == 0 ? exact_point(v).x : exact_point(v).y);
+  const exact::LiftQ Q;
+  return round_q(coord_num(v, axis, Q).v / coord_den(v, Q).v);
 }
 
 // Signed ray direction: sign · (dx, dy) of E.
@@ -234,7 +291,28 @@ struct Seg {
   bool vertical;
   int sdx;  // exact sign of E's dx (0 iff vertical)
   int su;   // sign of E's direction along u
+  exact::Fl dx, dy, ox, oy;  // E's direction and origin with error bounds (filters)
+  bool horizontal;           // dy exactly 0
+  double s_lo, s_hi;         // interval of the exact slope (not vertical)
+  double k_lo, k_hi;         // interval of the exact offset (vertical: x; horizontal: y)
 };
+
+int compare_lines(const Seg& s, const Seg& t);
+
+// compare_lines with interval filters: slopes, and offsets of vertical or horizontal lines,
+// decided by disjoint intervals of their exact values; exact otherwise.
+int compare_lines_filtered(const Seg& s, const Seg& t) {
+  if (s.vertical != t.vertical) return s.vertical ? 1 : -1;
+  if (!s.vertical) {
+    if (s.s_hi < t.s_lo) return -1;
+    if (t.s_hi < s.s_lo) return 1;
+  }
+  if (s.vertical || (s.horizontal && t.horizontal)) {  // equal slopes: the offsets decide
+    if (s.k_hi < t.k_lo) return -1;
+    if (t.k_hi < s.k_lo) return 1;
+  }
+  return compare_lines(s, t);
+}
 
 // Exact order of supporting lines: (vertical, slope, offset) with y = slope·x + offset, or x =
 // offset when vertical; a line through E's origin o = o1 + o2 with direction dir.
@@ -243,17 +321,24 @@ int compare_lines(const Seg& s, const Seg& t) {
   if (s.vertical != t.vertical) return s.vertical ? 1 : -1;
   const Ray &A = *s.E, &B = *t.E;
   using nonconvex2::ray_dx, nonconvex2::ray_dy;
-  if (s.vertical)
-    return exact::exact_sign([&](auto L) { return L(A.o1.x()) + L(A.o2.x()) - L(B.o1.x()) - L(B.o2.x()); });
+  // Each sign: the stored floating values with their bounds first, exact when undecided.
+  if (s.vertical) {
+    const int c = exact::certified_sign(s.ox - t.ox);
+    return c != 2 ? c : exact::exact_sign([&](auto L) { return L(A.o1.x()) + L(A.o2.x()) - L(B.o1.x()) - L(B.o2.x()); });
+  }
   // slope_s − slope_t = (dy_s·dx_t − dy_t·dx_s) / (dx_s·dx_t)
-  const int sl = s.sdx * t.sdx * exact::exact_sign([&](auto L) { return ray_dy(A, L) * ray_dx(B, L) - ray_dy(B, L) * ray_dx(A, L); });
-  if (sl != 0) return sl;
+  int c = exact::certified_sign(s.dy * t.dx - t.dy * s.dx);
+  if (c == 2) c = exact::exact_sign([&](auto L) { return ray_dy(A, L) * ray_dx(B, L) - ray_dy(B, L) * ray_dx(A, L); });
+  if (c != 0) return s.sdx * t.sdx * c;
   // Equal slopes: offset_s − offset_t = ((oy_s − oy_t)·dx_s − dy_s·(ox_s − ox_t)) / dx_s
-  return s.sdx * exact::exact_sign([&](auto L) {
-           auto ox = L(A.o1.x()) + L(A.o2.x()) - L(B.o1.x()) - L(B.o2.x());
-           auto oy = L(A.o1.y()) + L(A.o2.y()) - L(B.o1.y()) - L(B.o2.y());
-           return oy * ray_dx(A, L) - ray_dy(A, L) * ox;
-         });
+  c = exact::certified_sign((s.oy - t.oy) * s.dx - s.dy * (s.ox - t.ox));
+  if (c == 2)
+    c = exact::exact_sign([&](auto L) {
+      auto ox = L(A.o1.x()) + L(A.o2.x()) - L(B.o1.x()) - L(B.o2.x());
+      auto oy = L(A.o1.y()) + L(A.o2.y()) - L(B.o1.y()) - L(B.o2.y());
+      return oy * ray_dx(A, L) - ray_dy(A, L) * ox;
+    });
+  return s.sdx * c;
 }
 
 // Exact: end v lies on the line of s (symbolically when its own line, its cut line or its sum
@@ -261,7 +346,7 @@ int compare_lines(const Seg& s, const Seg& t) {
 bool on_line(const End& v, const Seg& s) {
   const Line& l = *s.edge;
   if (nonconvex2::same_line(*v.edge, l)) return true;
-  if (v.p.kind == Param::Cut && nonconvex2::same_line(v.p.line, l)) return true;
+  if (v.kind == Param::Cut && nonconvex2::same_line(v.raw->line, l)) return true;
   if (v.sum && ((l.p0 == v.pid && l.q0 == v.qid) || (l.p1 == v.pid && l.q1 == v.qid))) return true;
   const Ray& R = *s.E;
   return exact::exact_sign([&](auto L) {
@@ -279,18 +364,22 @@ const NoFitPolygon2::Impl& nfp_impl(const NoFitPolygon2& n) { return *n.impl_; }
 void nfp_export(NoFitPolygon2::Impl& N) {
   const std::size_t np = N.pieces.size();
   // 1. Every end, rounded to nearest; ends[2k], ends[2k + 1] are piece k's lo and hi.
-  std::vector<End> ends(2 * np);
+  std::vector<End> ends;
+  ends.reserve(2 * np);
   for (std::size_t k = 0; k < np; ++k) {
     const NfpPiece& pc = N.pieces[k];
     for (int j = 0; j < 2; ++j) {
-      End& v = ends[2 * k + j];
+      End& v = ends.emplace_back();
       v.E = &pc.E;
       v.edge = &pc.edge;
-      v.p = nonconvex2::normalised(j == 0 ? pc.lo : pc.hi, pc.E);
-      v.sum = pc.E.sym && v.p.kind != Param::Cut;
+      v.raw = j == 0 ? &pc.lo : &pc.hi;
+      v.kind = v.raw->kind;
+      if (v.kind == Param::Cut)
+        if (const int k = nonconvex2::known_lambda(v.raw->line, pc.E); k >= 0) v.kind = k == 0 ? Param::Zero : Param::One;
+      v.sum = pc.E.sym && v.kind != Param::Cut;
       v.r_sum = false;
       if (v.sum) {
-        const int e = v.p.kind == Param::Zero ? 0 : 1;
+        const int e = v.kind == Param::Zero ? 0 : 1;
         const Ray& E = pc.E;
         v.pid = e == 0 ? E.p0 : E.p1;
         v.qid = e == 0 ? E.q0 : E.q1;
@@ -302,7 +391,8 @@ void nfp_export(NoFitPolygon2::Impl& N) {
         continue;
       }
       v.pid = v.qid = 0;
-      v.den_sign = v.p.kind == Param::Cut ? exact::exact_sign([&](auto L) { return coord_den(v, L); }) : 1;
+      v.have_dd = false;
+      v.den_sign = v.kind == Param::Cut ? exact::exact_sign([&](auto L) { return coord_den(v, L); }) : 1;  // Proj: a squared length
       const Vec2& guess = j == 0 ? pc.a : pc.b;
       v.r = Vec2(round_coord(v, 0, guess.x()), round_coord(v, 1, guess.y()));
     }
@@ -320,7 +410,7 @@ void nfp_export(NoFitPolygon2::Impl& N) {
     });
     auto same = [&](const End& a, const End& b) {
       if (a.sum && b.sum && a.pid == b.pid && a.qid == b.qid) return true;
-      if (nonconvex2::same_point(nonconvex2::Cand{*a.E, a.p, *a.edge}, nonconvex2::Cand{*b.E, b.p, *b.edge})) return true;
+      if (nonconvex2::same_point(nonconvex2::Cand{*a.E, a.param(), *a.edge}, nonconvex2::Cand{*b.E, b.param(), *b.edge})) return true;
       return compare_coord(a, b, 0) == 0 && compare_coord(a, b, 1) == 0;
     };
     for (std::size_t g0 = 0, g1; g0 < order.size(); g0 = g1) {
@@ -359,13 +449,40 @@ void nfp_export(NoFitPolygon2::Impl& N) {
       continue;
     }
     const Ray& E = N.pieces[k].E;
-    Seg s{ia, ib, &E, &N.pieces[k].edge, false, 0, 0};
-    s.sdx = exact::exact_sign([&](auto L) { return nonconvex2::ray_dx(E, L); });
+    const exact::LiftFl F;
+    Seg s{ia, ib, &E, &N.pieces[k].edge, false, 0, 0, nonconvex2::ray_dx(E, F), nonconvex2::ray_dy(E, F), F(E.o1.x()) + F(E.o2.x()),
+          F(E.o1.y()) + F(E.o2.y()), false, 0, 0, 0, 0};
+    s.sdx = exact::certified_sign(s.dx);
+    if (s.sdx == 2) s.sdx = exact::exact_sign([&](auto L) { return nonconvex2::ray_dx(E, L); });
     s.vertical = s.sdx == 0;
-    s.su = s.vertical ? exact::exact_sign([&](auto L) { return nonconvex2::ray_dy(E, L); }) : s.sdx;
+    s.su = s.sdx;
+    int sdy = exact::certified_sign(s.dy);
+    if (sdy == 2) sdy = exact::exact_sign([&](auto L) { return nonconvex2::ray_dy(E, L); });
+    if (s.vertical) s.su = sdy;
+    s.horizontal = sdy == 0;
+    // Intervals for line_less: the slope dy/dx from the bounded dx, dy (plus the division's
+    // rounding), the offset of an axis-parallel line from the bounded origin coordinate.
+    s.s_lo = -INFINITY, s.s_hi = INFINITY;
+    const double ex = exact::safe_bound(s.dx.e), ey = exact::safe_bound(s.dy.e);
+    if (s.horizontal) s.s_lo = s.s_hi = 0;
+    else if (!s.vertical && std::abs(s.dx.v) > 2 * ex) {
+      const double q = s.dy.v / s.dx.v, aq = std::abs(q);
+      const double e = (ey + aq * (1 + 0x1p-50) * ex) / (std::abs(s.dx.v) - ex) * (1 + 0x1p-40) + aq * 0x1p-51 + 0x1p-1000;
+      if (std::isfinite(q) && std::isfinite(e)) s.s_lo = q - e, s.s_hi = q + e;
+    }
+    const exact::Fl& off = s.vertical ? s.ox : s.oy;
+    s.k_lo = off.v - exact::safe_bound(off.e), s.k_hi = off.v + exact::safe_bound(off.e);
     segs.push_back(s);
   }
-  std::sort(segs.begin(), segs.end(), [](const Seg& x, const Seg& y) { return compare_lines(x, y) < 0; });
+  {  // sorted by line (indices: a Seg is large)
+    std::vector<int> order(segs.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = int(i);
+    std::sort(order.begin(), order.end(), [&](int x, int y) { return compare_lines_filtered(segs[x], segs[y]) < 0; });
+    std::vector<Seg> sorted;
+    sorted.reserve(segs.size());
+    for (int i : order) sorted.push_back(segs[i]);
+    segs.swap(sorted);
+  }
 
   // Every vertex (piece ends and zero-length points), sorted by rounded x for range scans.
   std::vector<int> verts;
@@ -397,7 +514,7 @@ void nfp_export(NoFitPolygon2::Impl& N) {
   std::vector<int> us;
   for (std::size_t g0 = 0, g1; g0 < segs.size(); g0 = g1) {
     g1 = g0 + 1;
-    while (g1 < segs.size() && compare_lines(segs[g1], segs[g0]) == 0) ++g1;
+    while (g1 < segs.size() && compare_lines_filtered(segs[g1], segs[g0]) == 0) ++g1;
     const int axis = segs[g0].vertical ? 1 : 0;
     ivs.clear();
     us.clear();
