@@ -8,12 +8,16 @@
 // Every piece end is an exact point: a sum vertex (P vertex + −Q vertex) or o + μ·dir on the
 // piece's ray with μ = num/den the crossing with a cut line (pair_sums.hpp: num, den of degree 2
 // in the input doubles, so a coordinate is a degree-3 polynomial over a degree-2 one).
-// 1. Each end is rounded to nearest first: a sum vertex by TwoSum; any other end by walking from
-//    the builder's few-ulp value across rounding midpoints, each "x against the midpoint" decided
-//    by a double-double evaluation with a certified bound (exact_sign when it cannot decide).
-//    Rounding is monotone, so equal exact points have equal roundings: ends are interned by their
-//    rounded coordinates, and ends with equal roundings are the same vertex iff symbolically the
-//    same (edge_cut.hpp same_point) or exactly equal coordinates (exact predicates).
+// 1. Each end is rounded to nearest first: a sum vertex by TwoSum; a coordinate along which the
+//    ray or the cut line does not move is a sum of two doubles, also TwoSum; any other by walking
+//    from the builder's few-ulp value d (only a starting guess: a bad one costs steps, never the
+//    result) until x lies strictly between the midpoints to d's two neighbours. Each midpoint test
+//    is the sign of num − m·den from double-doubles of num and den stored per end (certified
+//    bound; exact_sign when it cannot decide), never x against d itself, whose frequent exact
+//    zero floating point cannot certify. Rounding is monotone, so equal exact points have equal
+//    roundings: ends are interned by their rounded coordinates, and ends with equal roundings are
+//    the same vertex iff symbolically the same (edge_cut.hpp same_point) or exactly equal
+//    coordinates (exact predicates).
 // 2. Pieces of positive length are grouped by their exact supporting line, ordered by (vertical,
 //    slope, offset) with exact degree-2 signs on the rays (symbolic same_line first); on each line
 //    the pieces oriented one way (O on their left) and the other way are cut at every piece end
@@ -29,13 +33,16 @@
 // 4. Zero-length pieces that are no vertex of any edge or slit are isolated points of ℝ² \ O
 //    (sorted by exact x, then y).
 // What stays rational (GMP), only when the floating tiers cannot decide: exact_sign's last tier
-// (ties of non-symbolic predicates), rounding of ends beyond the walk (overflow, subnormals, a
-// far-off builder value), the area sign of a ring the floating shoelace cannot decide, and the
-// hole placement (exact areas and crossing tests, only when there are holes).
+// (ties of non-symbolic predicates: equal points or lines not provably equal symbolically),
+// rounding of ends beyond the walk (overflow, subnormal gaps, a far-off guess), the area sign of a
+// ring the floating shoelace cannot decide, and the hole placement (exact areas and crossing
+// tests, only when there are holes).
 // Cost: O(N log N) exact predicates of degree ≤ 5 for N pieces (floating filters decide almost
 // all), O(N·k) box-filtered on-line tests (k vertices in a line's box), O(H·R·n) rational
-// point-in-ring tests for H holes, R outer rings. On the nesting pieces ~4× less than the previous
-// all-rational export (docs/algorithms.md).
+// point-in-ring tests for H holes, R outer rings. Measured (callgrind, albano, 64 ordered pairs,
+// ~17 pieces each): ~62 k instructions per pair, ~6× fewer than the previous all-rational export
+// (~384 k; mpq points in a std::map, rational line keys), whose output this one reproduces bit for
+// bit (tests/nonconvex2/test_nfp_export.cpp keeps it as the oracle).
 #include <gmpxx.h>
 
 #include <algorithm>
@@ -105,19 +112,6 @@ auto coord_den(const End& v, L lift) {
   return end_nd(v, lift).second;
 }
 
-// Exact sign via double-double first (the cases here are near-ties for plain doubles), then the
-// full tiers of exact_sign.
-template <class F>
-int sign_dd(F&& f) {
-  const exact::DD d = f(exact::LiftDD{});
-  if (exact::dd_finite(d)) {
-    const double b = exact::safe_bound(d.e);
-    if (d.hi > b) return 1;
-    if (d.hi < -b) return -1;
-  }
-  return exact::exact_sign(f);
-}
-
 // Exact comparison of coordinate `axis` of two ends: -1, 0, +1.
 int compare_coord(const End& a, const End& b, int axis) {
   return a.den_sign * b.den_sign * exact::exact_sign([&](auto L) {
@@ -161,9 +155,10 @@ bool round_sum(double a, double b, double& out) {
 }
 
 // round_q of coordinate `axis` of v without rationals: from the guess d (the builder's few-ulp
-// value), step towards the exact x while x lies beyond the midpoint to the next double. Each step
-// is one exact sign of x − m (m = d + half the gap, exact as a double-double). Rationals only for
-// overflow, subnormal gaps or a guess more than a few steps off.
+// value), step to a neighbour while x lies beyond the midpoint to it; d is the result once x lies
+// strictly between the midpoints to both neighbours (on a midpoint: the neighbour nearer zero).
+// Each test is one exact sign of x − m (m = d ± half the gap, exact as a double-double).
+// Rationals only for overflow, subnormal gaps or a guess more than a few steps off.
 double round_coord(End& v, int axis, double d) {
   // A coordinate the ray or the cut line does not move along is a sum of two input doubles (the
   // ray's origin resp. the cut line's anchor): exact ties there are common on axis-parallel edges.
@@ -297,23 +292,6 @@ struct Seg {
   double k_lo, k_hi;         // interval of the exact offset (vertical: x; horizontal: y)
 };
 
-int compare_lines(const Seg& s, const Seg& t);
-
-// compare_lines with interval filters: slopes, and offsets of vertical or horizontal lines,
-// decided by disjoint intervals of their exact values; exact otherwise.
-int compare_lines_filtered(const Seg& s, const Seg& t) {
-  if (s.vertical != t.vertical) return s.vertical ? 1 : -1;
-  if (!s.vertical) {
-    if (s.s_hi < t.s_lo) return -1;
-    if (t.s_hi < s.s_lo) return 1;
-  }
-  if (s.vertical || (s.horizontal && t.horizontal)) {  // equal slopes: the offsets decide
-    if (s.k_hi < t.k_lo) return -1;
-    if (t.k_hi < s.k_lo) return 1;
-  }
-  return compare_lines(s, t);
-}
-
 // Exact order of supporting lines: (vertical, slope, offset) with y = slope·x + offset, or x =
 // offset when vertical; a line through E's origin o = o1 + o2 with direction dir.
 int compare_lines(const Seg& s, const Seg& t) {
@@ -339,6 +317,21 @@ int compare_lines(const Seg& s, const Seg& t) {
       return oy * ray_dx(A, L) - ray_dy(A, L) * ox;
     });
   return s.sdx * c;
+}
+
+// compare_lines with interval filters: slopes, and offsets of vertical or horizontal lines,
+// decided by disjoint intervals of their exact values; exact otherwise.
+int compare_lines_filtered(const Seg& s, const Seg& t) {
+  if (s.vertical != t.vertical) return s.vertical ? 1 : -1;
+  if (!s.vertical) {
+    if (s.s_hi < t.s_lo) return -1;
+    if (t.s_hi < s.s_lo) return 1;
+  }
+  if (s.vertical || (s.horizontal && t.horizontal)) {  // equal slopes: the offsets decide
+    if (s.k_hi < t.k_lo) return -1;
+    if (t.k_hi < s.k_lo) return 1;
+  }
+  return compare_lines(s, t);
 }
 
 // Exact: end v lies on the line of s (symbolically when its own line, its cut line or its sum
@@ -471,7 +464,8 @@ void nfp_export(NoFitPolygon2::Impl& N) {
       if (std::isfinite(q) && std::isfinite(e)) s.s_lo = q - e, s.s_hi = q + e;
     }
     const exact::Fl& off = s.vertical ? s.ox : s.oy;
-    s.k_lo = off.v - exact::safe_bound(off.e), s.k_hi = off.v + exact::safe_bound(off.e);
+    const double eo = 2 * exact::safe_bound(off.e);  // twice: covers the rounding of v ± bound
+    s.k_lo = off.v - eo, s.k_hi = off.v + eo;
     segs.push_back(s);
   }
   {  // sorted by line (indices: a Seg is large)
