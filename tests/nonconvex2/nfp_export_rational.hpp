@@ -1,7 +1,9 @@
 // Test oracle: the previous exact-rational export of the no-fit polygon (src/nonconvex2/
-// nfp_rings.cpp before its rewrite without rationals), kept unchanged as the oracle of
-// test_nfp_export.cpp: every exact vertex is an mpq point interned in a std::map, lines are keyed by
-// rational slope and offset, all decisions are rational. Same contract as pendepth::nfp_export.
+// nfp_rings.cpp at 503175e, before its rewrite without rationals), kept as the oracle of
+// test_nfp_export.cpp; only its interface changed (pieces in, an Export out; inline functions in a
+// test namespace). Every exact vertex is an mpq point interned in a std::map, lines are keyed by
+// rational slope and offset, and every decision is rational (floating values only as box filters,
+// the shoelace filter and TwoSum rounding of sum vertices). Same contract as pendepth::nfp_export.
 #pragma once
 
 #include <gmpxx.h>

@@ -15,9 +15,11 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <cstdio>
 #include <iostream>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "nfp_export_rational.hpp"
 #include "nfp_shapes.hpp"
