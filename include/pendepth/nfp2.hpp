@@ -30,7 +30,7 @@
 //
 // Complexity (n, m vertices of P, Q; K candidates, K ≤ nm; N pieces of ∂O): build O(nm) candidate
 // tests plus, per candidate, the pair sums whose boxes meet it — worst case O(K·nm) = O(n²m²) exact
-// tests, the bound of the explicit convolution (DHS §6); export O(N log N) rational operations.
+// tests, the bound of the explicit convolution (DHS §6); export O(N log N) filtered exact predicates.
 // Queries: overlapping(t) is PairDepth2's pair-sum test (worst O(nm), a few sums on real pieces);
 // along/minimum visit O(log N + k) hierarchy nodes for k boxes near the answer (worst O(N)).
 // Measured (docs/algorithms.md, CPU time): on the nesting pieces (≤ 14 vertices, ~17 pieces of ∂O)
@@ -93,6 +93,8 @@ class NoFitPolygon2 {
   NfpSize size() const;
 
   struct Impl;
+  /// Test hook (private header nfp_impl.hpp has Impl): the stored pieces and rings.
+  friend const Impl& nfp_impl(const NoFitPolygon2& nfp);
 
  private:
   std::unique_ptr<Impl> impl_;

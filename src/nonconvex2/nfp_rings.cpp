@@ -1,37 +1,56 @@
 // The per-pair no-fit polygon, export (issue 5 item 4): the exact pieces of ∂O (nfp_build.cpp)
 // linked into the rings of cl(O), its slits and its isolated points.
 //
-// Every piece end is an exact rational point (a sum vertex or the crossing of two sum edge lines).
-// 1. Pieces of positive length are grouped by their exact supporting line (canonical slope and
-//    offset); on each line the pieces oriented one way (O on their left) and the other way are
-//    cut at every piece end and every other exact vertex lying on the line, giving elementary
-//    segments. An elementary segment covered both ways has O on both sides: a slit. Covered one
-//    way: a boundary edge of cl(O) with O on its left (duplicates of coincident candidates merge
-//    here).
-// 2. Edges are linked end to start by exact point identity. Where several edges leave one vertex
-//    (two parts of O touching at a point), the incoming edge continues with the sharpest left
-//    turn, so each ring bounds one side of the touching point. Collinear pass-through vertices
-//    are dropped. Rings with O on their left: positive area = outer ring (CCW), negative = hole
-//    (CW); each hole goes to the smallest outer ring containing one of its vertices (exact
-//    crossing test).
-// 3. Zero-length pieces that are no vertex of any edge or slit are isolated points of ℝ² \ O.
-// All decisions use exact rationals (GMP); coordinates are rounded to nearest once at export.
-// Each exact vertex is computed and interned once (sum-vertex ends by their (P, Q) vertex ids,
-// crossings in scaled integer arithmetic), and everything after works on vertex ids; sum
-// vertices are rounded from their two doubles without rationals.
-// Cost: O(N log N) rational operations for N pieces, plus O(N·k) box-filtered point–line tests
-// (k vertices in a line's box) and O(H·R·n) point-in-ring tests for H holes, R outer rings.
+// Contract: for N.pieces, fills N.polys (outer rings CCW, then their holes CW), N.slits and
+// N.points; every coordinate is the exact vertex rounded to nearest (ties: the neighbour nearer
+// zero). Throws std::logic_error on pieces that do not close into rings (internal inconsistency).
+//
+// Every piece end is an exact point: a sum vertex (P vertex + −Q vertex) or o + μ·dir on the
+// piece's ray with μ = num/den the crossing with a cut line (pair_sums.hpp: num, den of degree 2
+// in the input doubles, so a coordinate is a degree-3 polynomial over a degree-2 one).
+// 1. Each end is rounded to nearest first: a sum vertex by TwoSum; a coordinate along which the
+//    ray or the cut line does not move is a sum of two doubles, also TwoSum; any other by walking
+//    from the builder's few-ulp value d (only a starting guess: a bad one costs steps, never the
+//    result) until x lies strictly between the midpoints to d's two neighbours. Each midpoint test
+//    is the sign of num − m·den from double-doubles of num and den stored per end (certified
+//    bound; exact_sign when it cannot decide), never x against d itself, whose frequent exact
+//    zero floating point cannot certify. Rounding is monotone, so equal exact points have equal
+//    roundings: ends are interned by their rounded coordinates, and ends with equal roundings are
+//    the same vertex iff symbolically the same (edge_cut.hpp same_point) or exactly equal
+//    coordinates (exact predicates).
+// 2. Pieces of positive length are grouped by their exact supporting line, ordered by (vertical,
+//    slope, offset) with exact degree-2 signs on the rays (symbolic same_line first); on each line
+//    the pieces oriented one way (O on their left) and the other way are cut at every piece end
+//    and every other vertex on the line inside its extent (rounded box, then an exact on-line
+//    test, symbolic first), giving elementary segments ordered by rounded, then exact, position.
+//    Covered both ways: a slit. Covered one way: a boundary edge of cl(O) with O on its left.
+// 3. Edges are linked end to start by vertex id. Where several edges leave one vertex (two parts
+//    of O touching at a point), the incoming edge continues with the sharpest left turn (exact
+//    signs on the ray directions), so each ring bounds one side of the touching point. Collinear
+//    pass-through vertices are dropped. Rings with O on their left: positive area = outer ring
+//    (CCW), negative = hole (CW); each hole goes to the smallest outer ring containing one of its
+//    vertices.
+// 4. Zero-length pieces that are no vertex of any edge or slit are isolated points of ℝ² \ O
+//    (sorted by exact x, then y).
+// What stays rational (GMP), only when the floating tiers cannot decide: exact_sign's last tier
+// (ties of non-symbolic predicates: equal points or lines not provably equal symbolically),
+// rounding of ends beyond the walk (overflow, subnormal gaps, a far-off guess), the area sign of a
+// ring the floating shoelace cannot decide, and the hole placement (exact areas and crossing
+// tests, only when there are holes).
+// Cost: O(N log N) exact predicates of degree ≤ 5 for N pieces (floating filters decide almost
+// all), O(N·k) box-filtered on-line tests (k vertices in a line's box), O(H·R·n) rational
+// point-in-ring tests for H holes, R outer rings. Measured (callgrind, instructions per pair,
+// ~17–19 pieces each): albano ~63 k, shirts ~70 k, trousers ~58 k, 4.9–6.1× fewer than the
+// previous all-rational export (384 k, 347 k, 301 k; mpq points in a std::map, rational line
+// keys), whose output this one reproduces bit for bit (tests/nonconvex2/test_nfp_export.cpp keeps
+// it as the oracle).
 #include <gmpxx.h>
 
 #include <algorithm>
 #include <array>
-#include <climits>
 #include <cmath>
-#include <deque>
-#include <map>
-#include <numeric>
+#include <cstdint>
 #include <stdexcept>
-#include <unordered_map>
 
 #include "geometry/exact.hpp"
 #include "nonconvex2/nfp_impl.hpp"
@@ -40,83 +59,75 @@ namespace pendepth {
 
 namespace {
 
+using nonconvex2::Line;
 using nonconvex2::NfpPiece;
 using nonconvex2::Param;
 using nonconvex2::Ray;
 
-struct QP {
-  mpq_class x, y;
-  bool operator<(const QP& o) const { return x != o.x ? x < o.x : y < o.y; }
-  bool operator==(const QP& o) const { return x == o.x && y == o.y; }
+// One piece end: the point at parameter *raw of ray E (whose line is `edge`); `kind` is the
+// normalised kind (a cut through a vertex of a symbolic ray is that vertex).
+struct End {
+  const Ray* E;
+  const Line* edge;
+  const Param* raw;
+  Param::Kind kind;
+  bool sum;                   // a sum vertex (pid, qid) = sp + sb
+  bool r_sum;                 // r from TwoSum of a sum vertex (round_sum succeeded)
+  std::uint32_t pid, qid;
+  Vec2 sp, sb;
+  int den_sign;               // sign of the denominator of μ
+  Vec2 r;                     // rounded to nearest
+  bool have_dd;               // xn, yn, den computed (round_coord)
+  exact::DD xn, yn, den;      // not a sum vertex: the coordinates' numerators and denominator
+  End() {}  // user-provided: no zero-filling of the whole struct on emplace_back
+  Param param() const { return kind == Param::Zero || kind == Param::One ? Param{kind, {}, 0} : *raw; }
 };
 
-// The sum vertex (pid, qid) at a symbolic end k (0 or 1) of a candidate ray: the P vertex plus
-// the −Q vertex, two input doubles per coordinate (the ray stores them: o1 = P vertex p0, o2 = −Q
-// vertex q0; a1 = the P vertex p1 on a P edge, the −Q vertex q1 on a Q edge).
-QP sum_vertex(const Ray& E, int k) {
-  const Vec2 &p = k == 0 || E.p0 == E.p1 ? E.o1 : E.a1, &b = k == 0 || E.q0 == E.q1 ? E.o2 : E.a1;
-  return {mpq_class(p.x()) + b.x(), mpq_class(p.y()) + b.y()};
+// μ = num / den of end v (generic lift).
+template <class L>
+auto end_nd(const End& v, L lift) {
+  using T = decltype(lift(0.0));
+  switch (v.kind) {
+    case Param::Zero:
+      return std::pair<T, T>{lift(0.0), lift(1.0)};
+    case Param::One:
+      return std::pair<T, T>{lift(1.0), lift(1.0)};
+    case Param::Cut:
+      return std::pair<T, T>{nonconvex2::line_num(v.raw->line, *v.E, lift), nonconvex2::line_den(v.raw->line, *v.E, lift)};
+    default:
+      return nonconvex2::param_nd(*v.raw, *v.E, Vec2(0, 0), lift);
+  }
 }
 
-// The crossing of E's line with line c, exactly, in integer arithmetic: every input double is an
-// integer multiple of 2^s (s = the lowest significant bit over all of them), so with all inputs
-// scaled by 2^-s the crossing is 2^s·(A·den + n·D)/den in integers (A = o1 + o2, D = E's
-// direction, n and den the numerator and denominator of λ) and one canonicalisation per coordinate
-// gives the same rational as the generic formula. False (use the generic formula) when the
-// scaled inputs would overflow a double.
-bool cut_point_fixed(const Ray& E, const nonconvex2::Line& c, QP& out) {
-  const std::array<const Vec2*, 10> in{&E.o1, &E.o2, &E.a1, &E.a2, &E.b1, &E.b2, &c.c1, &c.c2, &c.e0, &c.e1};
-  int lo = INT_MAX, hi = INT_MIN;
-  for (const Vec2* v : in)
-    for (int k = 0; k < 2; ++k) {
-      if ((*v)[k] == 0) continue;
-      int e;
-      std::frexp((*v)[k], &e);
-      lo = std::min(lo, e - 53), hi = std::max(hi, e);
-    }
-  if (lo == INT_MAX) return false;
-  if (hi - lo > 1000) return false;
-  std::array<std::array<mpz_class, 2>, 10> z;
-  for (std::size_t i = 0; i < in.size(); ++i)
-    for (int k = 0; k < 2; ++k) z[i][k] = std::ldexp((*in[i])[k], -lo);
-  mpz_class A[2], D[2], C[2], F[2];
-  for (int k = 0; k < 2; ++k) {
-    A[k] = z[0][k] + z[1][k];
-    D[k] = z[2][k] + z[3][k] - z[4][k] - z[5][k];
-    C[k] = z[6][k] + z[7][k];
-    F[k] = z[9][k] - z[8][k];
-  }
-  const mpz_class n = (C[0] - A[0]) * F[1] - (C[1] - A[1]) * F[0];
-  const mpz_class den = D[0] * F[1] - D[1] * F[0];
-  if (den == 0) return false;
-  mpq_class* o[2] = {&out.x, &out.y};
-  for (int k = 0; k < 2; ++k) {
-    mpq_class& q = *o[k];
-    q.get_num() = A[k] * den + n * D[k];
-    q.get_den() = den;
-    q.canonicalize();
-    if (lo >= 0) mpq_mul_2exp(q.get_mpq_t(), q.get_mpq_t(), lo);
-    else mpq_div_2exp(q.get_mpq_t(), q.get_mpq_t(), -lo);
-  }
-  return true;
+// Coordinate `axis` of end v as num / den (generic lift): o + μ·dir.
+template <class L>
+auto coord_num(const End& v, int axis, L lift) {
+  const Ray& E = *v.E;
+  auto [n, d] = end_nd(v, lift);
+  auto o = lift(E.o1[axis]) + lift(E.o2[axis]);
+  auto dv = axis == 0 ? nonconvex2::ray_dx(E, lift) : nonconvex2::ray_dy(E, lift);
+  return o * d + n * dv;
+}
+template <class L>
+auto coord_den(const End& v, L lift) {
+  return end_nd(v, lift).second;
 }
 
-QP exact_point(const Ray& E, const Param& p_in) {
+// Exact comparison of coordinate `axis` of two ends: -1, 0, +1.
+int compare_coord(const End& a, const End& b, int axis) {
+  return a.den_sign * b.den_sign * exact::exact_sign([&](auto L) {
+           return coord_num(a, axis, L) * coord_den(b, L) - coord_num(b, axis, L) * coord_den(a, L);
+         });
+}
+
+struct QP {
+  mpq_class x, y;
+};
+
+QP exact_point(const End& v) {
   const exact::LiftQ L;
-  const Param p = nonconvex2::normalised(p_in, E);  // a cut through a sum vertex is that vertex
-  if (E.sym && p.kind != Param::Cut) return sum_vertex(E, p.kind == Param::Zero ? 0 : 1);
-  if (p.kind == Param::Zero) return {mpq_class(E.o1.x()) + E.o2.x(), mpq_class(E.o1.y()) + E.o2.y()};
-  if (p.kind == Param::One)
-    return {mpq_class(E.o1.x()) + E.o2.x() + E.a1.x() + E.a2.x() - E.b1.x() - E.b2.x(),
-            mpq_class(E.o1.y()) + E.o2.y() + E.a1.y() + E.a2.y() - E.b1.y() - E.b2.y()};
-  QP fast;
-  if (cut_point_fixed(E, p.line, fast)) return fast;
-  auto [n, dd] = nonconvex2::param_nd(p, E, Vec2(0, 0), L);
-  const mpq_class mu = n.v / dd.v;
-  QP r;
-  r.x = mpq_class(E.o1.x()) + mpq_class(E.o2.x()) + mu * nonconvex2::ray_dx(E, L).v;
-  r.y = mpq_class(E.o1.y()) + mpq_class(E.o2.y()) + mu * nonconvex2::ray_dy(E, L).v;
-  return r;
+  const mpq_class den = coord_den(v, L).v;
+  return {coord_num(v, 0, L).v / den, coord_num(v, 1, L).v / den};
 }
 
 // Round to nearest (ties: the neighbour nearer zero). get_d truncates towards zero, so q lies
@@ -132,8 +143,6 @@ double round_q(const mpq_class& q) {
   return (sg > 0 ? q > mid : q < mid) ? c : d;
 }
 
-Vec2 round_point(const QP& p) { return Vec2(round_q(p.x), round_q(p.y)); }
-
 // round_q of the exact sum a + b without rationals (TwoSum): fl(a + b) is the nearest double, and
 // on an exact tie round_q's choice (the neighbour nearer zero) is taken. False if it overflows.
 bool round_sum(double a, double b, double& out) {
@@ -146,27 +155,109 @@ bool round_sum(double a, double b, double& out) {
   return true;
 }
 
+// round_q of coordinate `axis` of v without rationals: from the guess d (the builder's few-ulp
+// value), step to a neighbour while x lies beyond the midpoint to it; d is the result once x lies
+// strictly between the midpoints to both neighbours (on a midpoint: the neighbour nearer zero).
+// Each test is one exact sign of x − m (m = d ± half the gap, exact as a double-double).
+// Rationals only for overflow, subnormal gaps or a guess more than a few steps off.
+double round_coord(End& v, int axis, double d) {
+  // A coordinate the ray or the cut line does not move along is a sum of two input doubles (the
+  // ray's origin resp. the cut line's anchor): exact ties there are common on axis-parallel edges.
+  const Ray& E = *v.E;
+  double r;
+  if ((axis == 0 ? E.a1.x() + E.a2.x() == E.b1.x() + E.b2.x() && E.a2.x() == 0 && E.b2.x() == 0
+                 : E.a1.y() + E.a2.y() == E.b1.y() + E.b2.y() && E.a2.y() == 0 && E.b2.y() == 0) &&
+      round_sum(E.o1[axis], E.o2[axis], r))
+    return r == 0 ? 0.0 : r;
+  if (v.kind == Param::Cut && v.raw->line.e0[axis] == v.raw->line.e1[axis] && round_sum(v.raw->line.c1[axis], v.raw->line.c2[axis], r))
+    return r == 0 ? 0.0 : r;
+  // Sign of x − (hi + lo): from the stored double-double numerator and denominator when their
+  // bounds decide, else exactly.
+  if (!v.have_dd) {  // the double-double numerators and denominator, once per end
+    const exact::LiftDD D;
+    const auto [n, d] = end_nd(v, D);
+    v.den = d;
+    v.xn = (D(E.o1.x()) + D(E.o2.x())) * d + n * nonconvex2::ray_dx(E, D);
+    v.yn = (D(E.o1.y()) + D(E.o2.y())) * d + n * nonconvex2::ray_dy(E, D);
+    v.have_dd = true;
+  }
+  const exact::DD& num = axis == 0 ? v.xn : v.yn;
+  auto side = [&](double hi, double lo) {
+    const exact::DD m = exact::DD{hi, 0, 0} + exact::DD{lo, 0, 0};
+    const exact::DD f = num - m * v.den;
+    if (exact::dd_finite(f)) {
+      const double b = exact::safe_bound(f.e);
+      if (f.hi > b) return v.den_sign;
+      if (f.hi < -b) return -v.den_sign;
+    }
+    return v.den_sign * exact::exact_sign([&](auto L) { return coord_num(v, axis, L) - (L(hi) + L(lo)) * coord_den(v, L); });
+  };
+  // x against the midpoints to both neighbours of d (never x against d itself: exact coordinates
+  // are common and their zero would not be certified in floating point).
+  if (std::isfinite(d) && std::abs(d) < 0x1p1000) {
+    for (int step = 0; step < 8; ++step) {
+      const double up = std::nextafter(d, INFINITY), dn = std::nextafter(d, -INFINITY);
+      const double hu = (up - d) * 0.5, hd = (dn - d) * 0.5;  // exact: neighbours, above subnormals
+      if (!std::isfinite(up) || !std::isfinite(dn)) break;
+      if (std::abs(hu) < 0x1p-960 || std::abs(hd) < 0x1p-960) {
+        // Near zero (symmetric pairs put vertices on the axes): an exact zero is +0 (round_q);
+        // anything else this small is rounded from the rational.
+        if (exact::exact_sign([&](auto L) { return coord_num(v, axis, L); }) == 0) return 0.0;
+        break;
+      }
+      const int tu = side(d, hu);
+      if (tu == 0) return std::abs(up) < std::abs(d) ? up : d;  // a tie: the neighbour nearer zero
+      if (tu > 0) {
+        d = up;
+        continue;
+      }
+      const int td = side(d, hd);
+      if (td == 0) return std::abs(dn) < std::abs(d) ? dn : d;
+      if (td < 0) {
+        d = dn;
+        continue;
+      }
+      return d;
+    }
+  }
+  const exact::LiftQ Q;
+  return round_q(coord_num(v, axis, Q).v / coord_den(v, Q).v);
+}
+
+// Signed ray direction: sign · (dx, dy) of E.
+struct Dir {
+  const Ray* E;
+  int s;
+};
+
+int cross_sign(const Dir& a, const Dir& b) {
+  return a.s * b.s * exact::exact_sign([&](auto L) {
+           return nonconvex2::ray_dx(*a.E, L) * nonconvex2::ray_dy(*b.E, L) - nonconvex2::ray_dy(*a.E, L) * nonconvex2::ray_dx(*b.E, L);
+         });
+}
+int dot_sign(const Dir& a, const Dir& b) {
+  return a.s * b.s * exact::exact_sign([&](auto L) {
+           return nonconvex2::ray_dx(*a.E, L) * nonconvex2::ray_dx(*b.E, L) + nonconvex2::ray_dy(*a.E, L) * nonconvex2::ray_dy(*b.E, L);
+         });
+}
+
+// The CCW angle from r to w in [0, 2π) is larger for a than for b (exact; a, b, r non-zero).
+bool larger_ccw_angle(const Dir& r, const Dir& a, const Dir& b) {
+  auto half = [&](const Dir& w) {
+    const int c = cross_sign(r, w);
+    return (c > 0 || (c == 0 && dot_sign(r, w) > 0)) ? 0 : 1;
+  };
+  const int ha = half(a), hb = half(b);
+  if (ha != hb) return ha > hb;
+  return cross_sign(a, b) < 0;  // b before a counter-clockwise
+}
+
 mpq_class cross(const QP& a, const QP& b) { return a.x * b.y - a.y * b.x; }
 QP sub(const QP& a, const QP& b) { return {a.x - b.x, a.y - b.y}; }
 
-// A supporting line: y = slope·x + offset, or x = offset (vertical); u = x resp. y along it.
-struct LineKey {
-  bool vertical = false;
-  mpq_class slope, offset;
-  bool operator<(const LineKey& o) const {
-    if (vertical != o.vertical) return vertical < o.vertical;
-    if (slope != o.slope) return slope < o.slope;
-    return offset < o.offset;
-  }
-  bool operator==(const LineKey& o) const { return vertical == o.vertical && slope == o.slope && offset == o.offset; }
-  const mpq_class& u(const QP& p) const { return vertical ? p.y : p.x; }
-  QP at(const mpq_class& u) const { return vertical ? QP{offset, u} : QP{u, slope * u + offset}; }
-  bool contains(const QP& p) const { return vertical ? p.x == offset : p.y == slope * p.x + offset; }
-};
-
 // Exact: p strictly inside the ring of vertex ids into V (crossing number; the caller avoids
 // points on the ring).
-int point_in_ring(const std::deque<QP>& V, const std::vector<int>& ring, const QP& p) {
+int point_in_ring(const std::vector<QP>& V, const std::vector<int>& ring, const QP& p) {
   bool in = false;
   for (std::size_t i = 0; i < ring.size(); ++i) {
     const QP &a = V[ring[i]], &b = V[ring[(i + 1) % ring.size()]];
@@ -181,104 +272,225 @@ int point_in_ring(const std::deque<QP>& V, const std::vector<int>& ring, const Q
   return in ? 1 : -1;
 }
 
-mpq_class ring_area2(const std::deque<QP>& V, const std::vector<int>& ring) {
+mpq_class ring_area2(const std::vector<QP>& V, const std::vector<int>& ring) {
   mpq_class a = 0;
   for (std::size_t i = 0; i < ring.size(); ++i) a += cross(V[ring[i]], V[ring[(i + 1) % ring.size()]]);
   return a;
 }
 
-// The CCW angle from r to w in [0, 2π) is larger for a than for b (exact; a, b, r non-zero).
-bool larger_ccw_angle(const QP& r, const QP& a, const QP& b) {
-  auto half = [&](const QP& w) {
-    const mpq_class c = cross(r, w);
-    return (c > 0 || (c == 0 && r.x * w.x + r.y * w.y > 0)) ? 0 : 1;
-  };
-  const int ha = half(a), hb = half(b);
-  if (ha != hb) return ha > hb;
-  return cross(a, b) < 0;  // b before a counter-clockwise
+// A piece of positive length: its ends (vertex ids), its ray and line, and the sign of its
+// direction along u (x, or y on a vertical line).
+struct Seg {
+  int a, b;
+  const Ray* E;
+  const Line* edge;
+  bool vertical;
+  int sdx;  // exact sign of E's dx (0 iff vertical)
+  int su;   // sign of E's direction along u
+  exact::Fl dx, dy, ox, oy;  // E's direction and origin with error bounds (filters)
+  bool horizontal;           // dy exactly 0
+  double s_lo, s_hi;         // interval of the exact slope (not vertical)
+  double k_lo, k_hi;         // interval of the exact offset (vertical: x; horizontal: y)
+};
+
+// Exact order of supporting lines: (vertical, slope, offset) with y = slope·x + offset, or x =
+// offset when vertical; a line through E's origin o = o1 + o2 with direction dir.
+int compare_lines(const Seg& s, const Seg& t) {
+  if (nonconvex2::same_line(*s.edge, *t.edge)) return 0;
+  if (s.vertical != t.vertical) return s.vertical ? 1 : -1;
+  const Ray &A = *s.E, &B = *t.E;
+  using nonconvex2::ray_dx, nonconvex2::ray_dy;
+  // Each sign: the stored floating values with their bounds first, exact when undecided.
+  if (s.vertical) {
+    const int c = exact::certified_sign(s.ox - t.ox);
+    return c != 2 ? c : exact::exact_sign([&](auto L) { return L(A.o1.x()) + L(A.o2.x()) - L(B.o1.x()) - L(B.o2.x()); });
+  }
+  // slope_s − slope_t = (dy_s·dx_t − dy_t·dx_s) / (dx_s·dx_t)
+  int c = exact::certified_sign(s.dy * t.dx - t.dy * s.dx);
+  if (c == 2) c = exact::exact_sign([&](auto L) { return ray_dy(A, L) * ray_dx(B, L) - ray_dy(B, L) * ray_dx(A, L); });
+  if (c != 0) return s.sdx * t.sdx * c;
+  // Equal slopes: offset_s − offset_t = ((oy_s − oy_t)·dx_s − dy_s·(ox_s − ox_t)) / dx_s
+  c = exact::certified_sign((s.oy - t.oy) * s.dx - s.dy * (s.ox - t.ox));
+  if (c == 2)
+    c = exact::exact_sign([&](auto L) {
+      auto ox = L(A.o1.x()) + L(A.o2.x()) - L(B.o1.x()) - L(B.o2.x());
+      auto oy = L(A.o1.y()) + L(A.o2.y()) - L(B.o1.y()) - L(B.o2.y());
+      return oy * ray_dx(A, L) - ray_dy(A, L) * ox;
+    });
+  return s.sdx * c;
+}
+
+// compare_lines with interval filters: slopes, and offsets of vertical or horizontal lines,
+// decided by disjoint intervals of their exact values; exact otherwise.
+int compare_lines_filtered(const Seg& s, const Seg& t) {
+  if (s.vertical != t.vertical) return s.vertical ? 1 : -1;
+  if (!s.vertical) {
+    if (s.s_hi < t.s_lo) return -1;
+    if (t.s_hi < s.s_lo) return 1;
+  }
+  if (s.vertical || (s.horizontal && t.horizontal)) {  // equal slopes: the offsets decide
+    if (s.k_hi < t.k_lo) return -1;
+    if (t.k_hi < s.k_lo) return 1;
+  }
+  return compare_lines(s, t);
+}
+
+// Exact: end v lies on the line of s (symbolically when its own line, its cut line or its sum
+// vertex is s's, else the degree-4 sign of cross(dir, v − o)).
+bool on_line(const End& v, const Seg& s) {
+  const Line& l = *s.edge;
+  if (nonconvex2::same_line(*v.edge, l)) return true;
+  if (v.kind == Param::Cut && nonconvex2::same_line(v.raw->line, l)) return true;
+  if (v.sum && ((l.p0 == v.pid && l.q0 == v.qid) || (l.p1 == v.pid && l.q1 == v.qid))) return true;
+  const Ray& R = *s.E;
+  return exact::exact_sign([&](auto L) {
+           auto d = coord_den(v, L);
+           auto x = coord_num(v, 0, L) - (L(R.o1.x()) + L(R.o2.x())) * d;
+           auto y = coord_num(v, 1, L) - (L(R.o1.y()) + L(R.o2.y())) * d;
+           return nonconvex2::ray_dx(R, L) * y - nonconvex2::ray_dy(R, L) * x;
+         }) == 0;
 }
 
 }  // namespace
 
+const NoFitPolygon2::Impl& nfp_impl(const NoFitPolygon2& n) { return *n.impl_; }
+
 void nfp_export(NoFitPolygon2::Impl& N) {
-  // Every exact vertex is interned once (V, by exact identity); everything below refers to ids.
-  // (A deque: stable addresses, so the index keys on the stored points without copying them.)
-  std::deque<QP> V;
-  auto by_value = [](const QP* x, const QP* y) { return *x < *y; };
-  std::map<const QP*, int, decltype(by_value)> id_of(by_value);
-  auto intern = [&](QP&& q) {
-    auto it = id_of.find(&q);
-    if (it != id_of.end()) return it->second;
-    const int id = static_cast<int>(V.size());
-    V.push_back(std::move(q));
-    id_of.emplace(&V.back(), id);
-    return id;
-  };
-  struct Seg {
-    int a, b;
-    LineKey key;
-    Vec2 ra, rb;  // the ends to a few ulps (floating keys and boxes only)
-  };
-  std::vector<Seg> segs;
-  segs.reserve(N.pieces.size());
-  std::vector<int> zero_points;
-  std::vector<Vec2> zero_rounded;
-  // Ends that are sum vertices are computed once per vertex (pid, qid): most vertices of ∂O end
-  // two pieces.
-  std::unordered_map<std::uint64_t, int> vertex_cache;
-  std::unordered_map<int, Vec2> known_round;  // vertex id → its coordinates rounded to nearest
-  auto end_point = [&](const Ray& E, const Param& p_in) {
-    const Param p = nonconvex2::normalised(p_in, E);
-    if (!E.sym || p.kind == Param::Cut) return intern(exact_point(E, p));
-    const int k = p.kind == Param::Zero ? 0 : 1;
-    const std::uint64_t key = (std::uint64_t(k == 0 ? E.p0 : E.p1) << 32) | (k == 0 ? E.q0 : E.q1);
-    auto it = vertex_cache.find(key);
-    if (it == vertex_cache.end()) {
-      const int id = intern(sum_vertex(E, k));
-      it = vertex_cache.emplace(key, id).first;
-      // Its rounding straight from the two doubles (the rings' vertices are mostly sum vertices).
-      const Vec2 &p = k == 0 || E.p0 == E.p1 ? E.o1 : E.a1, &b = k == 0 || E.q0 == E.q1 ? E.o2 : E.a1;
-      Vec2 r;
-      if (round_sum(p.x(), b.x(), r.x()) && round_sum(p.y(), b.y(), r.y())) known_round.emplace(id, r);
+  const std::size_t np = N.pieces.size();
+  // 1. Every end, rounded to nearest; ends[2k], ends[2k + 1] are piece k's lo and hi.
+  std::vector<End> ends;
+  ends.reserve(2 * np);
+  for (std::size_t k = 0; k < np; ++k) {
+    const NfpPiece& pc = N.pieces[k];
+    for (int j = 0; j < 2; ++j) {
+      End& v = ends.emplace_back();
+      v.E = &pc.E;
+      v.edge = &pc.edge;
+      v.raw = j == 0 ? &pc.lo : &pc.hi;
+      v.kind = v.raw->kind;
+      if (v.kind == Param::Cut)
+        if (const int k = nonconvex2::known_lambda(v.raw->line, pc.E); k >= 0) v.kind = k == 0 ? Param::Zero : Param::One;
+      v.sum = pc.E.sym && v.kind != Param::Cut;
+      v.r_sum = false;
+      if (v.sum) {
+        const int e = v.kind == Param::Zero ? 0 : 1;
+        const Ray& E = pc.E;
+        v.pid = e == 0 ? E.p0 : E.p1;
+        v.qid = e == 0 ? E.q0 : E.q1;
+        v.sp = e == 0 || E.p0 == E.p1 ? E.o1 : E.a1;
+        v.sb = e == 0 || E.q0 == E.q1 ? E.o2 : E.a1;
+        v.den_sign = 1;
+        v.r_sum = round_sum(v.sp.x(), v.sb.x(), v.r.x()) && round_sum(v.sp.y(), v.sb.y(), v.r.y());
+        if (!v.r_sum) v.r = Vec2(round_q(mpq_class(v.sp.x()) + v.sb.x()), round_q(mpq_class(v.sp.y()) + v.sb.y()));
+        continue;
+      }
+      v.pid = v.qid = 0;
+      v.have_dd = false;
+      v.den_sign = v.kind == Param::Cut ? exact::exact_sign([&](auto L) { return coord_den(v, L); }) : 1;  // Proj: a squared length
+      const Vec2& guess = j == 0 ? pc.a : pc.b;
+      v.r = Vec2(round_coord(v, 0, guess.x()), round_coord(v, 1, guess.y()));
     }
-    return it->second;
-  };
-  for (const NfpPiece& pc : N.pieces) {
-    const int ia = end_point(pc.E, pc.lo), ib = end_point(pc.E, pc.hi);
-    if (ia == ib) {
-      zero_points.push_back(ia);
-      zero_rounded.push_back(pc.a);
-      continue;
-    }
-    Seg s{ia, ib, {}, pc.a, pc.b};
-    const QP &a = V[ia], D = sub(V[ib], a);
-    if (D.x != 0) {
-      s.key.slope = D.y / D.x;
-      s.key.offset = a.y - s.key.slope * a.x;
-    } else {
-      s.key.vertical = true;
-      s.key.offset = a.x;
-    }
-    segs.push_back(std::move(s));
   }
-  {  // sorted by line (indices: moving rationals is costly)
-    std::vector<std::size_t> order(segs.size());
-    std::iota(order.begin(), order.end(), std::size_t{0});
-    std::sort(order.begin(), order.end(), [&](std::size_t x, std::size_t y) { return segs[x].key < segs[y].key; });
-    std::vector<Seg> sorted;
-    sorted.reserve(segs.size());
-    for (std::size_t k : order) sorted.push_back(std::move(segs[k]));
-    segs = std::move(sorted);
+  // Intern: ends with equal roundings are candidates; the same point symbolically or exactly.
+  std::vector<int> id(ends.size(), -1);
+  int nv = 0;
+  std::vector<int> rep;  // rep[vertex id] = one of its ends
+  {
+    std::vector<int> order(ends.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+    std::sort(order.begin(), order.end(), [&](int x, int y) {
+      const Vec2 &a = ends[x].r, &b = ends[y].r;
+      return a.x() != b.x() ? a.x() < b.x() : a.y() != b.y() ? a.y() < b.y() : x < y;
+    });
+    auto same = [&](const End& a, const End& b) {
+      if (a.sum && b.sum && a.pid == b.pid && a.qid == b.qid) return true;
+      if (nonconvex2::same_point(nonconvex2::Cand{*a.E, a.param(), *a.edge}, nonconvex2::Cand{*b.E, b.param(), *b.edge})) return true;
+      return compare_coord(a, b, 0) == 0 && compare_coord(a, b, 1) == 0;
+    };
+    for (std::size_t g0 = 0, g1; g0 < order.size(); g0 = g1) {
+      g1 = g0 + 1;
+      while (g1 < order.size() && ends[order[g1]].r == ends[order[g0]].r) ++g1;
+      const int first = nv;
+      for (std::size_t i = g0; i < g1; ++i) {
+        const int e = order[i];
+        for (int c = first; c < nv && id[e] < 0; ++c)
+          if (same(ends[rep[c]], ends[e])) id[e] = c;
+        if (id[e] < 0) {
+          id[e] = nv++;
+          rep.push_back(e);
+        }
+      }
+    }
+  }
+  // The exported rounding of a vertex: that of its first sum-vertex end with a TwoSum rounding (the
+  // previous export's choice, which also fixes the sign of a zero), else of any end.
+  std::vector<Vec2> rv(nv);
+  {
+    std::vector<char> fixed(nv, 0);
+    for (std::size_t e = 0; e < ends.size(); ++e)
+      if (ends[e].r_sum && !fixed[id[e]]) rv[id[e]] = ends[e].r, fixed[id[e]] = 1;
+    for (int v = 0; v < nv; ++v)
+      if (!fixed[v]) rv[v] = ends[rep[v]].r;
   }
 
-  // Every exact vertex (piece ends and zero-length points), sorted by rounded x for range scans.
-  std::vector<std::pair<Vec2, int>> verts;
-  for (const Seg& s : segs) {
-    verts.push_back({s.ra, s.a});
-    verts.push_back({s.rb, s.b});
+  std::vector<Seg> segs;
+  segs.reserve(np);
+  std::vector<int> zero_points;
+  for (std::size_t k = 0; k < np; ++k) {
+    const int ia = id[2 * k], ib = id[2 * k + 1];
+    if (ia == ib) {
+      zero_points.push_back(ia);
+      continue;
+    }
+    const Ray& E = N.pieces[k].E;
+    const exact::LiftFl F;
+    Seg s{ia, ib, &E, &N.pieces[k].edge, false, 0, 0, nonconvex2::ray_dx(E, F), nonconvex2::ray_dy(E, F), F(E.o1.x()) + F(E.o2.x()),
+          F(E.o1.y()) + F(E.o2.y()), false, 0, 0, 0, 0};
+    s.sdx = exact::certified_sign(s.dx);
+    if (s.sdx == 2) s.sdx = exact::exact_sign([&](auto L) { return nonconvex2::ray_dx(E, L); });
+    s.vertical = s.sdx == 0;
+    s.su = s.sdx;
+    int sdy = exact::certified_sign(s.dy);
+    if (sdy == 2) sdy = exact::exact_sign([&](auto L) { return nonconvex2::ray_dy(E, L); });
+    if (s.vertical) s.su = sdy;
+    s.horizontal = sdy == 0;
+    // Intervals for line_less: the slope dy/dx from the bounded dx, dy (plus the division's
+    // rounding), the offset of an axis-parallel line from the bounded origin coordinate.
+    s.s_lo = -INFINITY, s.s_hi = INFINITY;
+    const double ex = exact::safe_bound(s.dx.e), ey = exact::safe_bound(s.dy.e);
+    if (s.horizontal) s.s_lo = s.s_hi = 0;
+    else if (!s.vertical && std::abs(s.dx.v) > 2 * ex) {
+      const double q = s.dy.v / s.dx.v, aq = std::abs(q);
+      const double e = (ey + aq * (1 + 0x1p-50) * ex) / (std::abs(s.dx.v) - ex) * (1 + 0x1p-40) + aq * 0x1p-51 + 0x1p-1000;
+      if (std::isfinite(q) && std::isfinite(e)) s.s_lo = q - e, s.s_hi = q + e;
+    }
+    const exact::Fl& off = s.vertical ? s.ox : s.oy;
+    const double eo = 2 * exact::safe_bound(off.e);  // twice: covers the rounding of v ± bound
+    s.k_lo = off.v - eo, s.k_hi = off.v + eo;
+    segs.push_back(s);
   }
-  for (std::size_t k = 0; k < zero_points.size(); ++k) verts.push_back({zero_rounded[k], zero_points[k]});
-  std::sort(verts.begin(), verts.end(), [](const auto& x, const auto& y) { return x.first.x() < y.first.x(); });
+  {  // sorted by line (indices: a Seg is large)
+    std::vector<int> order(segs.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = int(i);
+    std::sort(order.begin(), order.end(), [&](int x, int y) { return compare_lines_filtered(segs[x], segs[y]) < 0; });
+    std::vector<Seg> sorted;
+    sorted.reserve(segs.size());
+    for (int i : order) sorted.push_back(segs[i]);
+    segs.swap(sorted);
+  }
+
+  // Every vertex (piece ends and zero-length points), sorted by rounded x for range scans.
+  std::vector<int> verts;
+  verts.reserve(nv);
+  {
+    std::vector<char> seen(nv, 0);
+    for (const Seg& s : segs)
+      for (int v : {s.a, s.b})
+        if (!seen[v]) seen[v] = 1, verts.push_back(v);
+    for (int v : zero_points)
+      if (!seen[v]) seen[v] = 1, verts.push_back(v);
+  }
+  std::sort(verts.begin(), verts.end(), [&](int x, int y) { return rv[x].x() < rv[y].x(); });
 
   struct Edge {
     int a, b;
@@ -287,40 +499,41 @@ void nfp_export(NoFitPolygon2::Impl& N) {
   };
   std::vector<Edge> edges;
   std::vector<std::array<int, 2>> slits;
-  std::vector<char> is_vertex(V.size(), 0);  // ends of edges and slit pieces
+  std::vector<char> is_vertex(nv, 0);  // ends of edges and slit pieces
+  std::vector<int> stamp(nv, -1), pos(nv, 0);
+  struct Iv {
+    int lo, hi;  // vertex ids (lower and higher u)
+    bool fwd;
+  };
+  std::vector<Iv> ivs;
+  std::vector<int> us;
   for (std::size_t g0 = 0, g1; g0 < segs.size(); g0 = g1) {
     g1 = g0 + 1;
-    while (g1 < segs.size() && segs[g1].key == segs[g0].key) ++g1;
-    const LineKey& key = segs[g0].key;
-    // Intervals in u, oriented forward (u increasing) or backward; u values point into V.
-    struct Iv {
-      const mpq_class *lo, *hi;
-      bool fwd;
-    };
-    std::vector<Iv> ivs;
-    std::vector<std::pair<const mpq_class*, int>> us;
+    while (g1 < segs.size() && compare_lines_filtered(segs[g1], segs[g0]) == 0) ++g1;
+    const int axis = segs[g0].vertical ? 1 : 0;
+    ivs.clear();
+    us.clear();
     Vec2 lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
     for (std::size_t k = g0; k < g1; ++k) {
-      const mpq_class &ua = key.u(V[segs[k].a]), &ub = key.u(V[segs[k].b]);
-      const bool fwd = ua < ub;
-      ivs.push_back({fwd ? &ua : &ub, fwd ? &ub : &ua, fwd});
-      us.push_back({&ua, segs[k].a});
-      us.push_back({&ub, segs[k].b});
-      for (const Vec2& r : {segs[k].ra, segs[k].rb}) {
-        lo = lo.cwiseMin(r);
-        hi = hi.cwiseMax(r);
+      const Seg& s = segs[k];
+      const bool fwd = s.su > 0;  // b − a is a positive multiple of E's direction
+      ivs.push_back({fwd ? s.a : s.b, fwd ? s.b : s.a, fwd});
+      for (int v : {s.a, s.b}) {
+        if (stamp[v] != int(g0)) stamp[v] = int(g0), us.push_back(v);
+        lo = lo.cwiseMin(rv[v]);
+        hi = hi.cwiseMax(rv[v]);
       }
     }
-    // Other exact vertices lying on this line within its extent split it too.
-    const double m = (lo.cwiseAbs().maxCoeff() + hi.cwiseAbs().maxCoeff()) * 0x1p-40 + 0x1p-1000;
-    auto it = std::lower_bound(verts.begin(), verts.end(), lo.x() - m, [](const auto& v, double x) { return v.first.x() < x; });
+    // Other exact vertices on this line inside its extent split it too. Rounding is monotone, so
+    // the extent's points round into [lo, hi]; those in the box are tested exactly.
+    auto it = std::lower_bound(verts.begin(), verts.end(), lo.x(), [&](int v, double x) { return rv[v].x() < x; });
     bool split = false;
-    for (; it != verts.end() && it->first.x() <= hi.x() + m; ++it) {
-      const int v = it->second;
-      if (it->first.y() < lo.y() - m || it->first.y() > hi.y() + m) continue;
-      if (g1 == g0 + 1 && (v == segs[g0].a || v == segs[g0].b)) continue;  // a lone piece's own end
-      if (!key.contains(V[v])) continue;
-      us.push_back({&key.u(V[v]), v});
+    for (; it != verts.end() && rv[*it].x() <= hi.x(); ++it) {
+      const int v = *it;
+      if (stamp[v] == int(g0) || rv[v].y() < lo.y() || rv[v].y() > hi.y()) continue;
+      if (!on_line(ends[rep[v]], segs[g0])) continue;
+      stamp[v] = int(g0);
+      us.push_back(v);
       split = true;
     }
     if (g1 == g0 + 1 && !split) {  // a lone piece on its line, nothing inside it: one boundary edge
@@ -329,16 +542,19 @@ void nfp_export(NoFitPolygon2::Impl& N) {
       edges.push_back({segs[g0].a, segs[g0].b, g0, ivs[0].fwd});
       continue;
     }
-    // One point per u on the line (equal u on one line: the same exact point, the same id).
-    std::sort(us.begin(), us.end(), [](const auto& x, const auto& y) { return *x.first < *y.first; });
-    us.erase(std::unique(us.begin(), us.end(), [](const auto& x, const auto& y) { return x.second == y.second; }), us.end());
+    // Distinct vertices on one line have distinct u: rounded u first, exact on equal roundings.
+    std::sort(us.begin(), us.end(), [&](int x, int y) {
+      if (rv[x][axis] != rv[y][axis]) return rv[x][axis] < rv[y][axis];
+      return x != y && compare_coord(ends[rep[x]], ends[rep[y]], axis) < 0;
+    });
+    for (std::size_t i = 0; i < us.size(); ++i) pos[us[i]] = int(i);
     bool slit_open = false;
     int slit_start = -1;
     for (std::size_t i = 0; i + 1 < us.size(); ++i) {
       bool f = false, b = false;
       for (const Iv& iv : ivs)
-        if (*iv.lo <= *us[i].first && *us[i + 1].first <= *iv.hi) (iv.fwd ? f : b) = true;
-      const int p0 = us[i].second, p1 = us[i + 1].second;
+        if (pos[iv.lo] <= int(i) && int(i) + 1 <= pos[iv.hi]) (iv.fwd ? f : b) = true;
+      const int p0 = us[i], p1 = us[i + 1];
       if (f || b) {
         is_vertex[p0] = 1;
         is_vertex[p1] = 1;
@@ -354,33 +570,42 @@ void nfp_export(NoFitPolygon2::Impl& N) {
       if (f) edges.push_back({p0, p1, g0, true});
       else if (b) edges.push_back({p1, p0, g0, false});
     }
-    // Along the increasing direction (canonical for the slit ends); the line key orients u.
   }
 
-  // Link edges into rings.
-  std::vector<std::vector<std::size_t>> out(V.size());
-  for (std::size_t e = 0; e < edges.size(); ++e) out[edges[e].a].push_back(e);
+  // Link edges into rings. Edges leaving each vertex, in edge order (compressed rows).
+  std::vector<int> first(nv + 1, 0), out(edges.size());
+  for (const Edge& e : edges) ++first[e.a + 1];
+  for (int v = 0; v < nv; ++v) first[v + 1] += first[v];
+  {
+    std::vector<int> fill(first.begin(), first.end() - 1);
+    for (std::size_t e = 0; e < edges.size(); ++e) out[fill[edges[e].a]++] = int(e);
+  }
   std::vector<char> used(edges.size(), 0);
   std::vector<std::vector<int>> rings;
-  auto dir = [&](const Edge& e) { return sub(V[e.b], V[e.a]); };
+  // The direction of an edge: its line's ray direction, signed to point from a to b.
+  auto dir = [&](const Edge& e) {
+    const Seg& s = segs[e.line];
+    return Dir{s.E, e.fwd ? s.su : -s.su};
+  };
+  std::vector<std::size_t> chain;
   for (std::size_t e0 = 0; e0 < edges.size(); ++e0) {
     if (used[e0]) continue;
-    std::vector<std::size_t> chain;
+    chain.clear();
     std::size_t e = e0;
     for (;;) {
       used[e] = 1;
       chain.push_back(e);
-      const auto& cands = out[edges[e].b];
+      const int v = edges[e].b;
       std::size_t best = edges.size();
-      QP r;  // back along the incoming edge (only needed when there is a choice)
-      bool have_r = false;
-      for (std::size_t c : cands) {
+      for (int i = first[v]; i < first[v + 1]; ++i) {
+        const std::size_t c = std::size_t(out[i]);
         if (used[c] && c != e0) continue;
         if (best == edges.size()) {
           best = c;
           continue;
         }
-        if (!have_r) r = sub(V[edges[e].a], V[edges[e].b]), have_r = true;
+        Dir r = dir(edges[e]);  // back along the incoming edge
+        r.s = -r.s;
         if (larger_ccw_angle(r, dir(edges[c]), dir(edges[best]))) best = c;
       }
       if (best == e0) break;  // closed
@@ -401,20 +626,21 @@ void nfp_export(NoFitPolygon2::Impl& N) {
     if (ring.size() >= 3) rings.push_back(std::move(ring));
   }
 
-  // Every ring rounded once (its vertices to nearest; sum vertices without rationals).
   std::vector<std::vector<Vec2>> rr(rings.size());
   for (std::size_t k = 0; k < rings.size(); ++k) {
     rr[k].reserve(rings[k].size());
-    for (int p : rings[k]) {
-      const auto it = known_round.find(p);
-      rr[k].push_back(it != known_round.end() ? it->second : round_point(V[p]));
-    }
+    for (int p : rings[k]) rr[k].push_back(rv[p]);
   }
+  // Exact vertices, only for the rare rational decisions below.
+  std::vector<QP> V;
+  auto exact_vertices = [&] {
+    if (V.empty())
+      for (int v = 0; v < nv; ++v) V.push_back(exact_point(ends[rep[v]]));
+  };
   // Outer rings and holes by the sign of the area: a floating shoelace sum on the rounded
   // vertices with a bound covering the rounding of the vertices (2^-53 relative each) and of the
   // sum; exact rationals when it cannot decide, and exact areas whenever there are holes to place.
   std::vector<std::size_t> outer, holes;
-  std::vector<int> sign(rings.size(), 0);
   for (std::size_t k = 0; k < rings.size(); ++k) {
     const auto& r = rr[k];
     const double n = double(r.size());
@@ -425,33 +651,36 @@ void nfp_export(NoFitPolygon2::Impl& N) {
       big = std::max(big, u.cwiseAbs().maxCoeff());
     }
     const double bound = (4 * n * n + 8 * n) * big * big * 0x1p-50 + 0x1p-1000;
-    if (std::isfinite(a) && std::isfinite(bound) && std::abs(a) > bound) sign[k] = a > 0 ? 1 : -1;
-    else sign[k] = sgn(ring_area2(V, rings[k]));
-    (sign[k] > 0 ? outer : holes).push_back(k);
+    int sign;
+    if (std::isfinite(a) && std::isfinite(bound) && std::abs(a) > bound) sign = a > 0 ? 1 : -1;
+    else exact_vertices(), sign = sgn(ring_area2(V, rings[k]));
+    (sign > 0 ? outer : holes).push_back(k);
   }
-  std::vector<mpq_class> area(rings.size());
-  if (!holes.empty())
-    for (std::size_t o : outer) area[o] = ring_area2(V, rings[o]);
   std::vector<std::vector<std::size_t>> holes_of(outer.size());
-  for (std::size_t h : holes) {
-    std::size_t best = outer.size();
-    for (std::size_t o = 0; o < outer.size(); ++o) {
-      int side = 0;
-      for (int p : rings[h]) {
-        side = point_in_ring(V, rings[outer[o]], V[p]);
-        if (side != 0) break;
+  if (!holes.empty()) {
+    exact_vertices();
+    std::vector<mpq_class> area(rings.size());
+    for (std::size_t o : outer) area[o] = ring_area2(V, rings[o]);
+    for (std::size_t h : holes) {
+      std::size_t best = outer.size();
+      for (std::size_t o = 0; o < outer.size(); ++o) {
+        int side = 0;
+        for (int p : rings[h]) {
+          side = point_in_ring(V, rings[outer[o]], V[p]);
+          if (side != 0) break;
+        }
+        // All vertices on that ring's boundary: decide by the midpoints of the hole's edges (a
+        // hole that shares every vertex with the ring still has an edge off it, or it is the ring).
+        for (std::size_t i = 0; side == 0 && i < rings[h].size(); ++i) {
+          const QP &a = V[rings[h][i]], &b = V[rings[h][(i + 1) % rings[h].size()]];
+          side = point_in_ring(V, rings[outer[o]], QP{(a.x + b.x) / 2, (a.y + b.y) / 2});
+        }
+        if (side > 0 && (best == outer.size() || area[outer[o]] < area[outer[best]])) best = o;
       }
-      // All vertices on that ring's boundary: decide by the midpoints of the hole's edges (a hole
-      // that shares every vertex with the ring still has an edge off it, or it is the ring).
-      for (std::size_t i = 0; side == 0 && i < rings[h].size(); ++i) {
-        const QP &a = V[rings[h][i]], &b = V[rings[h][(i + 1) % rings[h].size()]];
-        side = point_in_ring(V, rings[outer[o]], QP{(a.x + b.x) / 2, (a.y + b.y) / 2});
-      }
-      if (side > 0 && (best == outer.size() || area[outer[o]] < area[outer[best]])) best = o;
+      if (best == outer.size())
+        throw std::logic_error("no-fit polygon: a hole ring lies in no outer ring (internal inconsistency)");
+      holes_of[best].push_back(h);
     }
-    if (best == outer.size())
-      throw std::logic_error("no-fit polygon: a hole ring lies in no outer ring (internal inconsistency)");
-    holes_of[best].push_back(h);
   }
   N.polys.clear();
   for (std::size_t o = 0; o < outer.size(); ++o) {
@@ -460,12 +689,20 @@ void nfp_export(NoFitPolygon2::Impl& N) {
     N.polys.push_back(std::move(poly));
   }
   N.slits.clear();
-  for (const auto& sl : slits) N.slits.push_back({round_point(V[sl[0]]), round_point(V[sl[1]])});
-  std::sort(zero_points.begin(), zero_points.end(), [&](int x, int y) { return V[x] < V[y]; });
+  for (const auto& sl : slits) N.slits.push_back({rv[sl[0]], rv[sl[1]]});
+  // Isolated points in exact (x, y) order: rounded first (monotone), exact on equal roundings.
+  std::sort(zero_points.begin(), zero_points.end(), [&](int x, int y) {
+    if (x == y) return false;
+    for (int axis = 0; axis < 2; ++axis) {
+      if (rv[x][axis] != rv[y][axis]) return rv[x][axis] < rv[y][axis];
+      if (const int c = compare_coord(ends[rep[x]], ends[rep[y]], axis); c != 0) return c < 0;
+    }
+    return false;
+  });
   zero_points.erase(std::unique(zero_points.begin(), zero_points.end()), zero_points.end());
   N.points.clear();
   for (int p : zero_points)
-    if (!is_vertex[p]) N.points.push_back(round_point(V[p]));
+    if (!is_vertex[p]) N.points.push_back(rv[p]);
 }
 
 }  // namespace pendepth

@@ -16,13 +16,17 @@
 #include <cmath>
 #include <iostream>
 
+#include "nfp_shapes.hpp"
 #include "oracle.hpp"
 #include "polygon2/shapes.hpp"
 #include "test_scale.hpp"
 
 namespace {
 
+using nonconvex2_test::instance;
 using nonconvex2_test::PairOracle;
+using nonconvex2_test::shifted;
+using nonconvex2_test::star;
 using pendepth::Depth2;
 using pendepth::NoFitPolygon2;
 using pendepth::PairDepth2;
@@ -53,24 +57,6 @@ auto timed(double& acc, F&& f) {
   auto r = f();
   acc += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
-}
-
-Polygon star(std::mt19937_64& rng, int n, double rmin, double rmax, bool grid) {
-  for (;;) {
-    try {
-      return Polygon::simple(polygon2_test::star_ring(rng, n, Vec2(0, 0), rmin, rmax, grid), "star");
-    } catch (const pendepth::InvalidInput&) {
-    }
-  }
-}
-
-Polygon shifted(const Polygon& S, const Vec2& o) {
-  std::vector<std::vector<Vec2>> rings;
-  for (std::size_t k = 0; k < S.ring_count(); ++k) {
-    rings.emplace_back();
-    for (const Vec2& p : S.ring(k)) rings.back().push_back(p + o);
-  }
-  return Polygon(rings, S.name());
 }
 
 double seg_dist(const Vec2& x, const Vec2& a, const Vec2& b) {
@@ -398,13 +384,6 @@ TEST(NoFitPolygon2, CollinearContacts) {
   EXPECT_EQ(nfp.along(Vec2(1.5, 0.25), Vec2(1, 0)).depth, 2.5);
   std::mt19937_64 rng(6);
   check_all(P, Q, rng, pendepth_test::scaled(60), 3, "collinear");
-}
-
-std::vector<Polygon> instance(const std::string& file) {
-  const auto pieces = polygon2_test::nesting_pieces(file);
-  std::vector<Polygon> polys;
-  for (std::size_t k = 0; k < pieces.size(); ++k) polys.push_back(Polygon::simple(pieces[k], file + " " + std::to_string(k)));
-  return polys;
 }
 
 TEST(NoFitPolygon2, NestingAlbanoEveryOrderedPair) {
