@@ -1,0 +1,330 @@
+// The per-pair no-fit polygon, classification of the candidates (issue 5 item 4; nfp_build.cpp
+// step 2): which parts of each reduced-convolution candidate lie on ∂O.
+//
+// Every point of a candidate c is in cl(O) (a touching placement), so it is in O or on ∂O. Where
+// ∂O ∩ c begins or ends inside c, or is an isolated point of c, the placement has a contact that
+// does not slide along c's line, and every touching contact lies on a candidate (nfp_build.cpp),
+// so another candidate d meets c there: crossing or touching c's line, or collinear with an end
+// there. Hence c, split at every point where another candidate meets it, consists of open parts
+// that lie wholly in O or wholly on ∂O, and one exact point per part decides it.
+//  1. Split points: for each pair of candidates with overlapping boxes, non-parallel: the
+//     crossing of their lines when it lies on both closed segments (4 exact comparisons);
+//     collinear: the ends of each strictly inside the other (the end as the crossing with a line of
+//     an input edge at that sum vertex, not parallel to c, so every parameter stays symbolic).
+//  2. Per candidate, the split parameters sorted exactly (compare_params) and merged when equal.
+//  3. Each open part: a double μ midway between its ends' approximations, certified strictly
+//     inside by two exact comparisons, and the point c(μ) tested against the open pair sums whose
+//     boxes contain it (exact signs of degree 3). Each split point not closing a boundary part is
+//     tested itself (an exact fit: an isolated point of ∂O).
+//  4. Maximal runs of boundary parts and points are the pieces: the same closed maximal uncovered
+//     intervals as the reference cutting nfp_cut.cpp, which is used instead for a candidate whose
+//     parts cannot be sampled (a part too short for a double between its ends) or whose
+//     collinear neighbour's end has no usable line (four input edges parallel to c).
+// Cost: candidate pairs by boxes (all pairs for K ≤ 64, else a box hierarchy), O(1) exact tests per
+// meeting pair; per part or point one point descent of the two triangle hierarchies, O(1) exact
+// tests per visited pair. For X meeting pairs: O(K² + (K + X)·v) with v the visited pairs per
+// point (K log K + ... with the hierarchy). The reference cuts every candidate by every sum
+// meeting its box (~3,000 instructions per sum on real pieces); a point test is ~6 signs.
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "geometry/exact.hpp"
+#include "nonconvex2/nfp_impl.hpp"
+
+namespace pendepth::nonconvex2 {
+
+namespace {
+
+const Param kZero{Param::Zero, {}, 0}, kOne{Param::One, {}, 0};
+const Vec2 kO(0, 0);
+
+// A split parameter on a candidate, its value v and a bound on |v − μ|.
+struct Split {
+  Param p;
+  double v, err;
+};
+
+Split split(const Param& p, const Ray& E) {
+  if (p.kind != Param::Cut) return {p, p.kind == Param::Zero ? 0.0 : p.kind == Param::One ? 1.0 : p.value, 0};
+  // One floating pass with forward error bounds: |n/d − ñ/d̃| ≤ (bn + |v|·bd) / (|d̃| − bd).
+  const exact::LiftFl F;
+  const exact::Fl n = line_num(p.line, E, F), d = line_den(p.line, E, F);
+  const double bn = exact::safe_bound(n.e), bd = exact::safe_bound(d.e);
+  if (std::abs(d.v) > 2 * bd && std::isfinite(n.v)) {
+    const double v = n.v / d.v;
+    return {p, v, exact::safe_bound((bn + std::abs(v) * bd) / (std::abs(d.v) - bd) + std::abs(v) * 0x1p-52)};
+  }
+  const double v = line_value(p.line, E);  // to a few ulps
+  return {p, v, std::abs(v) * 0x1p-48};
+}
+
+bool boxes_meet(const NfpCandidate& a, const NfpCandidate& b) {
+  return !(a.lo.x() > b.hi.x() || b.lo.x() > a.hi.x() || a.lo.y() > b.hi.y() || b.lo.y() > a.hi.y());
+}
+
+// Exact sign of cross(dir a, dir b).
+int parallel_sign(const Ray& a, const Ray& b) {
+  return exact::exact_sign([&](auto L) { return ray_dx(a, L) * ray_dy(b, L) - ray_dy(a, L) * ray_dx(b, L); });
+}
+
+// Exact: b's origin on a's line.
+bool origin_on_line(const Ray& a, const Ray& b) {
+  return exact::exact_sign([&](auto L) {
+           auto x = L(b.o1.x()) + L(b.o2.x()) - L(a.o1.x()) - L(a.o2.x());
+           auto y = L(b.o1.y()) + L(b.o2.y()) - L(a.o1.y()) - L(a.o2.y());
+           return ray_dx(a, L) * y - ray_dy(a, L) * x;
+         }) == 0;
+}
+
+struct Classifier {
+  const PairDepth2::Impl& S;
+  const std::vector<NfpCandidate>& cands;
+  std::vector<std::uint32_t> prevP, prevQ;  // filled on first use
+  std::vector<std::pair<std::int32_t, std::int32_t>> stack;
+
+  Classifier(const PairDepth2::Impl& s, const std::vector<NfpCandidate>& c) : S(s), cands(c) {}
+
+  // A line through the sum vertex (p, q) not parallel to `avoid`: an input edge at p translated
+  // by −q, or one at q (as an edge of −Q) translated by p. False when all four are parallel.
+  bool line_through(std::uint32_t p, std::uint32_t q, const Ray& avoid, Line& out) {
+    if (prevP.empty()) {
+      prevP.resize(S.P.size());
+      prevQ.resize(S.Q.size());
+      for (std::size_t g = 0; g < S.P.size(); ++g) prevP[S.P.next(g)] = static_cast<std::uint32_t>(g);
+      for (std::size_t g = 0; g < S.Q.size(); ++g) prevQ[S.Q.next(g)] = static_cast<std::uint32_t>(g);
+    }
+    const auto VP = S.P.vertices(), VQ = S.Q.vertices();
+    const auto pn = static_cast<std::uint32_t>(S.P.next(p)), pp = prevP[p];
+    const auto qn = static_cast<std::uint32_t>(S.Q.next(q)), qp = prevQ[q];
+    Line L[4];
+    L[0].c1 = VP[p], L[0].c2 = -VQ[q], L[0].e0 = VP[p], L[0].e1 = VP[pn];
+    L[0].p0 = p, L[0].p1 = pn, L[0].q0 = L[0].q1 = q, L[0].q_edge = false;
+    L[1].c1 = VP[pp], L[1].c2 = -VQ[q], L[1].e0 = VP[pp], L[1].e1 = VP[p];
+    L[1].p0 = pp, L[1].p1 = p, L[1].q0 = L[1].q1 = q, L[1].q_edge = false;
+    L[2].c1 = VP[p], L[2].c2 = -VQ[q], L[2].e0 = -VQ[q], L[2].e1 = -VQ[qn];
+    L[2].p0 = L[2].p1 = p, L[2].q0 = q, L[2].q1 = qn, L[2].q_edge = true;
+    L[3].c1 = VP[p], L[3].c2 = -VQ[qp], L[3].e0 = -VQ[qp], L[3].e1 = -VQ[q];
+    L[3].p0 = L[3].p1 = p, L[3].q0 = qp, L[3].q1 = q, L[3].q_edge = true;
+    for (const Line& c : L)
+      if (exact::exact_sign([&](auto Lf) { return line_den(c, avoid, Lf); }) != 0) {
+        out = c;
+        return true;
+      }
+    return false;
+  }
+
+  // Floating filter for m ∈ int(T ⊕ B), m known to within tol per coordinate: +1 certainly
+  // inside, -1 certainly not, 0 undecided. T ⊕ B is the intersection of the half-planes of its
+  // edges, each parallel to an edge of T or of B: for an edge d of T from t, m is inside iff
+  // cross(d, m − t) > min_b cross(d, b) (the sum's edge is that edge of T translated by B's
+  // extreme vertex), and symmetrically for the edges of B. Error: |d|₁·(tol + 16·S·2⁻⁵³) covers
+  // the point's error and the roundings (S bounds every coordinate).
+  static int sum_filter(const Tri& T, const Tri& B, const Vec2& m, double tol) {
+    double S = m.cwiseAbs().maxCoeff();
+    for (int k = 0; k < 3; ++k) S = std::max({S, T.v[k].cwiseAbs().maxCoeff(), B.v[k].cwiseAbs().maxCoeff()});
+    const double slack = tol + 16 * S * 0x1p-53;
+    bool sure = true;
+    for (int side = 0; side < 2; ++side) {
+      const Tri& X = side == 0 ? T : B;  // the edge's triangle
+      const Tri& Y = side == 0 ? B : T;  // the other one
+      for (int k = 0; k < 3; ++k) {
+        const Vec2 d = X.v[(k + 1) % 3] - X.v[k];
+        const Vec2 w = m - X.v[k];
+        double lo = INFINITY;
+        for (int j = 0; j < 3; ++j) lo = std::min(lo, d.x() * Y.v[j].y() - d.y() * Y.v[j].x());
+        const double val = d.x() * w.y() - d.y() * w.x() - lo;
+        const double err = (std::abs(d.x()) + std::abs(d.y())) * slack * 2;
+        if (val < -err) return -1;
+        if (val <= err) sure = false;
+      }
+    }
+    return sure ? 1 : 0;
+  }
+
+  // Exact: the point at (normalised) parameter p of candidate c lies in the open sum T ⊕ B.
+  bool in_open_sum(const Tri& T, const Tri& B, const NfpCandidate& c, const Param& p, int den_sign) const {
+    const Sum F = make_sum(T, B);
+    const Ray& E = c.E;
+    for (const Line& e : F.e) {
+      if (same_line(e, c.line)) return false;  // c runs along this edge: on ∂F, not inside
+      const int s = exact::exact_sign([&](auto L) {
+        auto [n, dd] = param_nd(p, E, kO, L);
+        auto x = (L(E.o1.x()) + L(E.o2.x()) - L(e.c1.x()) - L(e.c2.x())) * dd + n * ray_dx(E, L);
+        auto y = (L(E.o1.y()) + L(E.o2.y()) - L(e.c1.y()) - L(e.c2.y())) * dd + n * ray_dy(E, L);
+        return (L(e.e1.x()) - L(e.e0.x())) * y - (L(e.e1.y()) - L(e.e0.y())) * x;
+      });
+      if (s * den_sign <= 0) return false;
+    }
+    return true;
+  }
+
+  // Exact: the point at parameter p (value v to a few ulps) of candidate c lies in O. Sum
+  // vertices (the ends of most parts) are looked up once: each ends two or more candidates.
+  std::unordered_map<std::uint64_t, char> vertex_in_O;
+  bool covered(const NfpCandidate& c, const Split& at) {
+    const Param p = normalised(at.p, c.E);
+    if (p.kind == Param::Zero || p.kind == Param::One) {
+      const bool one = p.kind == Param::One;
+      const std::uint64_t key = (std::uint64_t(one ? c.E.p1 : c.E.p0) << 32) | (one ? c.E.q1 : c.E.q0);
+      const auto it = vertex_in_O.find(key);
+      if (it != vertex_in_O.end()) return it->second;
+      const bool in = covered_point(c, p, at);
+      vertex_in_O.emplace(key, in);
+      return in;
+    }
+    return covered_point(c, p, at);
+  }
+  bool covered_point(const NfpCandidate& c, const Param& p, const Split& at) {
+    const int den_sign = p.kind == Param::Cut ? exact::exact_sign([&](auto L) { return line_den(p.line, c.E, L); }) : 1;
+    // The point to within tol: A and B within a few ulps of the exact ends, v within err of μ.
+    const Vec2 m = c.A + at.v * (c.B - c.A);
+    const double tol = (c.A.cwiseAbs().maxCoeff() + c.B.cwiseAbs().maxCoeff()) * 0x1p-40 + 2 * at.err * (c.B - c.A).cwiseAbs().maxCoeff() + 0x1p-1000;
+    const Vec2 mlo = m.array() - tol, mhi = m.array() + tol;
+    stack.assign(1, {0, 0});
+    while (!stack.empty()) {
+      auto [a, b] = stack.back();
+      stack.pop_back();
+      const auto &NA = S.hp.nodes[a], &NB = S.hb.nodes[b];
+      Vec2 lo, hi;
+      sum_box(NA.lo, NA.hi, NB.lo, NB.hi, lo, hi);
+      if (lo.x() > mhi.x() || hi.x() < mlo.x() || lo.y() > mhi.y() || hi.y() < mlo.y()) continue;
+      const bool la = NA.left < 0, lb = NB.left < 0;
+      if (la && lb) {
+        const int f = sum_filter(S.tp[NA.tri], S.tb[NB.tri], m, tol);
+        if (f > 0 || (f == 0 && in_open_sum(S.tp[NA.tri], S.tb[NB.tri], c, p, den_sign))) return true;
+        continue;
+      }
+      const bool split_a = lb || (!la && (NA.hi - NA.lo).sum() >= (NB.hi - NB.lo).sum());
+      if (split_a) {
+        stack.push_back({NA.left, b});
+        stack.push_back({NA.right, b});
+      } else {
+        stack.push_back({a, NB.left});
+        stack.push_back({a, NB.right});
+      }
+    }
+    return false;
+  }
+
+  // Adds to `sp` the ends of candidate d lying strictly inside the collinear candidate c.
+  // False when an end has no usable line (the caller then cuts c by the reference method).
+  bool collinear_ends(const NfpCandidate& c, const NfpCandidate& d, std::vector<Split>& sp) {
+    for (int k = 0; k < 2; ++k) {
+      Line l;
+      if (!line_through(k == 0 ? d.E.p0 : d.E.p1, k == 0 ? d.E.q0 : d.E.q1, c.E, l)) return false;
+      const Param p{Param::Cut, l, 0};
+      if (compare_params(p, kZero, c.E, kO) > 0 && compare_params(p, kOne, c.E, kO) < 0) sp.push_back(split(p, c.E));
+    }
+    return true;
+  }
+
+  void run(std::vector<NfpPiece>& out) {
+    const std::size_t K = cands.size();
+    std::vector<std::vector<Split>> splits(K);
+    std::vector<char> reference(K, 0);
+    // Floating filter: the ends of y strictly on one side of x's line, by a margin above the
+    // roundings (A, B within 2⁻⁵³ relative of the exact ends; the direction exact differences
+    // rounded once), so the closed segments cannot meet.
+    auto apart = [](const NfpCandidate& x, const NfpCandidate& y) {
+      const Vec2 dir = x.E.a1 - x.E.b1, u = y.A - x.A, w = y.B - x.A;
+      const double S = std::max({x.A.cwiseAbs().maxCoeff(), y.A.cwiseAbs().maxCoeff(), y.B.cwiseAbs().maxCoeff()});
+      const double err = (std::abs(dir.x()) + std::abs(dir.y())) * S * 0x1p-48;
+      const double su = dir.x() * u.y() - dir.y() * u.x(), sw = dir.x() * w.y() - dir.y() * w.x();
+      return (su > err && sw > err) || (su < -err && sw < -err);
+    };
+    auto meet = [&](std::size_t i, std::size_t j) {
+      const NfpCandidate &c = cands[i], &d = cands[j];
+      if (apart(c, d) || apart(d, c)) return;
+      if (parallel_sign(c.E, d.E) != 0) {
+        const Param pc{Param::Cut, d.line, 0}, pd{Param::Cut, c.line, 0};
+        if (compare_params(pc, kZero, c.E, kO) < 0 || compare_params(pc, kOne, c.E, kO) > 0) return;
+        if (compare_params(pd, kZero, d.E, kO) < 0 || compare_params(pd, kOne, d.E, kO) > 0) return;
+        splits[i].push_back(split(pc, c.E));
+        splits[j].push_back(split(pd, d.E));
+      } else if (origin_on_line(c.E, d.E)) {
+        if (!collinear_ends(c, d, splits[i])) reference[i] = 1;
+        if (!collinear_ends(d, c, splits[j])) reference[j] = 1;
+      }
+    };
+    if (K <= 64) {
+      for (std::size_t i = 0; i < K; ++i)
+        for (std::size_t j = i + 1; j < K; ++j)
+          if (boxes_meet(cands[i], cands[j])) meet(i, j);
+    } else {
+      std::vector<Tri> boxes(K);
+      for (std::size_t k = 0; k < K; ++k) boxes[k].lo = cands[k].lo, boxes[k].hi = cands[k].hi;
+      BoxTree tree;
+      tree.build(boxes);
+      std::vector<std::int32_t> st;
+      for (std::size_t i = 0; i < K; ++i) {
+        st.assign(1, 0);
+        while (!st.empty()) {
+          const auto& N = tree.nodes[st.back()];
+          st.pop_back();
+          if (N.lo.x() > cands[i].hi.x() || cands[i].lo.x() > N.hi.x() || N.lo.y() > cands[i].hi.y() || cands[i].lo.y() > N.hi.y())
+            continue;
+          if (N.left >= 0) {
+            st.push_back(N.left);
+            st.push_back(N.right);
+          } else if (N.tri > i) {
+            meet(i, N.tri);
+          }
+        }
+      }
+    }
+
+    std::vector<char> part, vert;
+    for (std::size_t k = 0; k < K; ++k) {
+      const NfpCandidate& c = cands[k];
+      if (reference[k]) {
+        nfp_cut(S, c, out);
+        continue;
+      }
+      std::vector<Split>& sp = splits[k];
+      sp.push_back({kZero, 0, 0});
+      sp.push_back({kOne, 1, 0});
+      // Exact order; among equal parameters the ends 0 and 1 first (symbolic sum vertices), so
+      // the kept representative is the cheapest one.
+      auto rank = [](const Split& x) { return x.p.kind == Param::Cut ? 1 : 0; };
+      std::sort(sp.begin(), sp.end(), [&](const Split& x, const Split& y) {
+        const int s = compare_params(x.p, y.p, c.E, kO);
+        return s != 0 ? s < 0 : rank(x) < rank(y);
+      });
+      sp.erase(std::unique(sp.begin(), sp.end(), [&](const Split& x, const Split& y) { return compare_params(x.p, y.p, c.E, kO) == 0; }),
+               sp.end());
+      const std::size_t V = sp.size();
+      part.assign(V - 1, 0);
+      bool sampled = true;
+      for (std::size_t i = 0; i + 1 < V && sampled; ++i) {
+        const Split mid = split(Param{Param::Value, {}, 0.5 * (sp[i].v + sp[i + 1].v)}, c.E);
+        if (!(compare_params(sp[i].p, mid.p, c.E, kO) < 0 && compare_params(mid.p, sp[i + 1].p, c.E, kO) < 0)) sampled = false;
+        else part[i] = !covered(c, mid);
+      }
+      if (!sampled) {
+        nfp_cut(S, c, out);
+        continue;
+      }
+      vert.assign(V, 0);
+      for (std::size_t i = 0; i < V; ++i) vert[i] = (i > 0 && part[i - 1]) || (i + 1 < V && part[i]) || !covered(c, sp[i]);
+      for (std::size_t i = 0; i < V;) {
+        if (!vert[i]) {
+          ++i;
+          continue;
+        }
+        std::size_t j = i;
+        while (j + 1 < V && part[j]) ++j;
+        out.push_back(make_piece(c, sp[i].p, sp[j].p));
+        i = j + 1;
+      }
+    }
+  }
+};
+
+}  // namespace
+
+void nfp_classify(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& cands, std::vector<NfpPiece>& out) {
+  Classifier(S, cands).run(out);
+}
+
+}  // namespace pendepth::nonconvex2
