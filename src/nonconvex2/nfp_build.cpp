@@ -75,14 +75,15 @@ NfpCandidate candidate(const Ray& E, const Line& line) {
 std::vector<NfpCandidate> nfp_candidates(const Polygon& P, const Polygon& Q) {
   const auto VP = P.vertices(), VQ = Q.vertices();
   const auto prevP = previous(P), prevQ = previous(Q);
-  std::vector<char> convexP(P.size()), convexQ(Q.size());
-  for (std::size_t g = 0; g < P.size(); ++g) convexP[g] = cross_sign(VP[prevP[g]], VP[g], VP[g], VP[P.next(g)]) >= 0;
-  for (std::size_t g = 0; g < Q.size(); ++g) convexQ[g] = cross_sign(VQ[prevQ[g]], VQ[g], VQ[g], VQ[Q.next(g)]) >= 0;
+  // Turn at each vertex: > 0 strictly convex, 0 straight, < 0 reflex.
+  std::vector<signed char> convexP(P.size()), convexQ(Q.size());
+  for (std::size_t g = 0; g < P.size(); ++g) convexP[g] = static_cast<signed char>(cross_sign(VP[prevP[g]], VP[g], VP[g], VP[P.next(g)]));
+  for (std::size_t g = 0; g < Q.size(); ++g) convexQ[g] = static_cast<signed char>(cross_sign(VQ[prevQ[g]], VQ[g], VQ[g], VQ[Q.next(g)]));
   std::vector<NfpCandidate> cand;
   for (std::uint32_t g = 0; g < P.size(); ++g) {
     const auto g1 = static_cast<std::uint32_t>(P.next(g));
     for (std::uint32_t q = 0; q < Q.size(); ++q) {
-      if (!convexQ[q]) continue;
+      if (convexQ[q] < 0) continue;
       // Q's edges at q on the closed right (outer) side of e: cross(e, w) ≤ 0.
       if (cross_sign(VP[g], VP[g1], VQ[q], VQ[prevQ[q]]) > 0 || cross_sign(VP[g], VP[g1], VQ[q], VQ[Q.next(q)]) > 0) continue;
       Ray E;
@@ -96,12 +97,13 @@ std::vector<NfpCandidate> nfp_candidates(const Polygon& P, const Polygon& Q) {
       c.c1 = VP[g], c.c2 = -VQ[q], c.e0 = VP[g], c.e1 = VP[g1];
       c.p0 = g, c.p1 = g1, c.q0 = c.q1 = q, c.q_edge = false;
       cand.push_back(candidate(E, c));
+      cand.back().strict = convexQ[q] > 0;
     }
   }
   for (std::uint32_t h = 0; h < Q.size(); ++h) {
     const auto h1 = static_cast<std::uint32_t>(Q.next(h));
     for (std::uint32_t p = 0; p < P.size(); ++p) {
-      if (!convexP[p]) continue;
+      if (convexP[p] < 0) continue;
       // P's edges at p on the closed outer side of Q's edge h: cross(q1 − q0, w) ≤ 0.
       if (cross_sign(VQ[h], VQ[h1], VP[p], VP[prevP[p]]) > 0 || cross_sign(VQ[h], VQ[h1], VP[p], VP[P.next(p)]) > 0) continue;
       Ray E;
@@ -115,6 +117,7 @@ std::vector<NfpCandidate> nfp_candidates(const Polygon& P, const Polygon& Q) {
       c.c1 = VP[p], c.c2 = -VQ[h], c.e0 = -VQ[h], c.e1 = -VQ[h1];
       c.p0 = c.p1 = p, c.q0 = h, c.q1 = h1, c.q_edge = true;
       cand.push_back(candidate(E, c));
+      cand.back().strict = convexP[p] > 0;
     }
   }
   return cand;

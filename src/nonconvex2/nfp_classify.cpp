@@ -120,26 +120,67 @@ struct Classifier {
   // cross(d, m − t) > min_b cross(d, b) (the sum's edge is that edge of T translated by B's
   // extreme vertex), and symmetrically for the edges of B. Error: |d|₁·(tol + 16·S·2⁻⁵³) covers
   // the point's error and the roundings (S bounds every coordinate).
-  static int sum_filter(const Tri& T, const Tri& B, const Vec2& m, double tol) {
+  // An edge parallel to c is decided exactly and cheaply whatever the point's parameter: m lies
+  // on c's line, so cross(d, m − x − y) = cross(d, A − x − y) with A = o1 + o2 (degree 2 in the
+  // input doubles); the half-plane holds m iff that is positive for some vertex y of the other
+  // triangle. (On real pieces most undecided edges are parallel: collinear edges of P or Q.)
+  static int sum_filter(const Tri& T, const Tri& B, const Vec2& m, double tol, const Ray& E) {
     double S = m.cwiseAbs().maxCoeff();
     for (int k = 0; k < 3; ++k) S = std::max({S, T.v[k].cwiseAbs().maxCoeff(), B.v[k].cwiseAbs().maxCoeff()});
     const double slack = tol + 16 * S * 0x1p-53;
+    const Vec2 dirc = E.a1 - E.b1;
     bool sure = true;
     for (int side = 0; side < 2; ++side) {
       const Tri& X = side == 0 ? T : B;  // the edge's triangle
       const Tri& Y = side == 0 ? B : T;  // the other one
       for (int k = 0; k < 3; ++k) {
-        const Vec2 d = X.v[(k + 1) % 3] - X.v[k];
-        const Vec2 w = m - X.v[k];
+        const Vec2 &x0 = X.v[k], &x1 = X.v[(k + 1) % 3];
+        const Vec2 d = x1 - x0;
+        const Vec2 w = m - x0;
         double lo = INFINITY;
         for (int j = 0; j < 3; ++j) lo = std::min(lo, d.x() * Y.v[j].y() - d.y() * Y.v[j].x());
         const double val = d.x() * w.y() - d.y() * w.x() - lo;
         const double err = (std::abs(d.x()) + std::abs(d.y())) * slack * 2;
         if (val < -err) return -1;
-        if (val <= err) sure = false;
+        if (val > err) continue;
+        const double cr = d.x() * dirc.y() - d.y() * dirc.x();
+        if (std::abs(cr) > (std::abs(d.x()) + std::abs(d.y())) * (std::abs(dirc.x()) + std::abs(dirc.y())) * 0x1p-50 ||
+            exact::exact_sign([&](auto L) {
+              return (L(x1.x()) - L(x0.x())) * (L(E.a1.y()) - L(E.b1.y())) - (L(x1.y()) - L(x0.y())) * (L(E.a1.x()) - L(E.b1.x()));
+            }) != 0) {
+          sure = false;  // not parallel: the exact test decides
+          continue;
+        }
+        bool holds = false;
+        for (int j = 0; j < 3 && !holds; ++j) {
+          const Vec2& y = Y.v[j];
+          holds = exact::exact_sign([&](auto L) {
+                    auto u = L(E.o1.x()) + L(E.o2.x()) - L(x0.x()) - L(y.x()), v = L(E.o1.y()) + L(E.o2.y()) - L(x0.y()) - L(y.y());
+                    return (L(x1.x()) - L(x0.x())) * v - (L(x1.y()) - L(x0.y())) * u;
+                  }) > 0;
+        }
+        if (!holds) return -1;
       }
     }
     return sure ? 1 : 0;
+  }
+
+  // Symbolic: c's line is an edge line of T ⊕ B, so no point of c is inside. For c = e − q (P
+  // edge e = p0 → p1, Q vertex q strictly convex): T has e as an edge (in its CCW order) and
+  // B = −U has −q as a vertex; −q is then extreme in B against e's outward normal (U lies in Q's
+  // angle at q, which the candidate rule puts on the closed outer side of e — for a straight
+  // vertex only its edges are, not necessarily the angle), so e − q is the sum's edge parallel
+  // to e. Symmetrically for c = p − h (Q edge h = q0 → q1): B has the edge −q0 → −q1, T the
+  // strictly convex vertex p.
+  static bool own_edge(const Tri& T, const Tri& B, const Ray& E) {
+    auto has_edge = [](const Tri& X, std::uint32_t a, std::uint32_t b) {
+      for (int k = 0; k < 3; ++k)
+        if (X.id[k] == a && X.id[(k + 1) % 3] == b) return true;
+      return false;
+    };
+    auto has_vertex = [](const Tri& X, std::uint32_t a) { return X.id[0] == a || X.id[1] == a || X.id[2] == a; };
+    if (E.q0 == E.q1) return has_edge(T, E.p0, E.p1) && has_vertex(B, E.q0);
+    return has_edge(B, E.q0, E.q1) && has_vertex(T, E.p0);
   }
 
   // Exact: the point at (normalised) parameter p of candidate c lies in the open sum T ⊕ B.
@@ -191,7 +232,8 @@ struct Classifier {
       if (lo.x() > mhi.x() || hi.x() < mlo.x() || lo.y() > mhi.y() || hi.y() < mlo.y()) continue;
       const bool la = NA.left < 0, lb = NB.left < 0;
       if (la && lb) {
-        const int f = sum_filter(S.tp[NA.tri], S.tb[NB.tri], m, tol);
+        if (c.strict && own_edge(S.tp[NA.tri], S.tb[NB.tri], c.E)) continue;
+        const int f = sum_filter(S.tp[NA.tri], S.tb[NB.tri], m, tol, c.E);
         if (f > 0 || (f == 0 && in_open_sum(S.tp[NA.tri], S.tb[NB.tri], c, p, den_sign))) return true;
         continue;
       }
@@ -210,11 +252,21 @@ struct Classifier {
   // Adds to `sp` the ends of candidate d lying strictly inside the collinear candidate c.
   // False when an end has no usable line (the caller then cuts c by the reference method).
   bool collinear_ends(const NfpCandidate& c, const NfpCandidate& d, std::vector<Split>& sp) {
+    const Vec2 dir = c.B - c.A;
+    const double len2 = dir.squaredNorm();
     for (int k = 0; k < 2; ++k) {
+      const std::uint32_t p = k == 0 ? d.E.p0 : d.E.p1, q = k == 0 ? d.E.q0 : d.E.q1;
+      if ((p == c.E.p0 && q == c.E.q0) || (p == c.E.p1 && q == c.E.q1)) continue;  // a shared end
+      // Floating filter on the position along c (the rounded ends are within 2⁻⁵³ relative of
+      // the exact ones; the margin is far above every rounding): clearly outside [0, 1] skips.
+      const Vec2& X = k == 0 ? d.A : d.B;
+      const double S = std::max({c.A.cwiseAbs().maxCoeff(), c.B.cwiseAbs().maxCoeff(), X.cwiseAbs().maxCoeff()});
+      const double u = (X - c.A).dot(dir), err = (std::abs(dir.x()) + std::abs(dir.y())) * S * 0x1p-44;
+      if (u < -err || u > len2 + err) continue;
       Line l;
-      if (!line_through(k == 0 ? d.E.p0 : d.E.p1, k == 0 ? d.E.q0 : d.E.q1, c.E, l)) return false;
-      const Param p{Param::Cut, l, 0};
-      if (compare_params(p, kZero, c.E, kO) > 0 && compare_params(p, kOne, c.E, kO) < 0) sp.push_back(split(p, c.E));
+      if (!line_through(p, q, c.E, l)) return false;
+      const Param pm{Param::Cut, l, 0};
+      if (compare_params(pm, kZero, c.E, kO) > 0 && compare_params(pm, kOne, c.E, kO) < 0) sp.push_back(split(pm, c.E));
     }
     return true;
   }
@@ -233,10 +285,18 @@ struct Classifier {
       const double su = dir.x() * u.y() - dir.y() * u.x(), sw = dir.x() * w.y() - dir.y() * w.x();
       return (su > err && sw > err) || (su < -err && sw < -err);
     };
+    // Candidates sharing an end vertex (neighbours along the convolution, most meeting pairs on
+    // real pieces): non-parallel lines meet only there, an end of both, which splits nothing.
+    auto shared_end = [](const Ray& a, const Ray& b) {
+      return (a.p0 == b.p0 && a.q0 == b.q0) || (a.p0 == b.p1 && a.q0 == b.q1) || (a.p1 == b.p0 && a.q1 == b.q0) ||
+             (a.p1 == b.p1 && a.q1 == b.q1);
+    };
     auto meet = [&](std::size_t i, std::size_t j) {
       const NfpCandidate &c = cands[i], &d = cands[j];
       if (apart(c, d) || apart(d, c)) return;
-      if (parallel_sign(c.E, d.E) != 0) {
+      const bool non_parallel = parallel_sign(c.E, d.E) != 0;
+      if (non_parallel && shared_end(c.E, d.E)) return;
+      if (non_parallel) {
         const Param pc{Param::Cut, d.line, 0}, pd{Param::Cut, c.line, 0};
         if (compare_params(pc, kZero, c.E, kO) < 0 || compare_params(pc, kOne, c.E, kO) > 0) return;
         if (compare_params(pd, kZero, d.E, kO) < 0 || compare_params(pd, kOne, d.E, kO) > 0) return;
@@ -282,23 +342,26 @@ struct Classifier {
         continue;
       }
       std::vector<Split>& sp = splits[k];
+      const bool whole = sp.empty();  // nothing meets c inside: one part, sampled at μ = 1/2
       sp.push_back({kZero, 0, 0});
       sp.push_back({kOne, 1, 0});
-      // Exact order; among equal parameters the ends 0 and 1 first (symbolic sum vertices), so
-      // the kept representative is the cheapest one.
-      auto rank = [](const Split& x) { return x.p.kind == Param::Cut ? 1 : 0; };
-      std::sort(sp.begin(), sp.end(), [&](const Split& x, const Split& y) {
-        const int s = compare_params(x.p, y.p, c.E, kO);
-        return s != 0 ? s < 0 : rank(x) < rank(y);
-      });
-      sp.erase(std::unique(sp.begin(), sp.end(), [&](const Split& x, const Split& y) { return compare_params(x.p, y.p, c.E, kO) == 0; }),
-               sp.end());
+      if (!whole) {
+        // Exact order; among equal parameters the ends 0 and 1 first (symbolic sum vertices), so
+        // the kept representative is the cheapest one.
+        auto rank = [](const Split& x) { return x.p.kind == Param::Cut ? 1 : 0; };
+        std::sort(sp.begin(), sp.end(), [&](const Split& x, const Split& y) {
+          const int s = compare_params(x.p, y.p, c.E, kO);
+          return s != 0 ? s < 0 : rank(x) < rank(y);
+        });
+        sp.erase(std::unique(sp.begin(), sp.end(), [&](const Split& x, const Split& y) { return compare_params(x.p, y.p, c.E, kO) == 0; }),
+                 sp.end());
+      }
       const std::size_t V = sp.size();
       part.assign(V - 1, 0);
       bool sampled = true;
       for (std::size_t i = 0; i + 1 < V && sampled; ++i) {
         const Split mid = split(Param{Param::Value, {}, 0.5 * (sp[i].v + sp[i + 1].v)}, c.E);
-        if (!(compare_params(sp[i].p, mid.p, c.E, kO) < 0 && compare_params(mid.p, sp[i + 1].p, c.E, kO) < 0)) sampled = false;
+        if (!whole && !(compare_params(sp[i].p, mid.p, c.E, kO) < 0 && compare_params(mid.p, sp[i + 1].p, c.E, kO) < 0)) sampled = false;
         else part[i] = !covered(c, mid);
       }
       if (!sampled) {

@@ -30,6 +30,7 @@ struct NfpCandidate {
   Ray E;
   Line line;
   Vec2 A, B, lo, hi;
+  bool strict = false;  // the candidate's vertex is strictly convex (not a straight vertex)
 };
 
 /// The candidates of P ⊕ (−Q) (nfp_build.cpp): O(nm) exact orientation tests.

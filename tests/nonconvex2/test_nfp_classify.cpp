@@ -69,7 +69,33 @@ Polygon moved(const Polygon& S, const Vec2& o, double scale) {
   return Polygon(rings, S.name());
 }
 
+// Every edge split at its midpoint (exact for grid coordinates): straight vertices everywhere,
+// where the candidate rule admits edges whose angle may lie on either side.
+Polygon subdivided(const Polygon& S) {
+  std::vector<std::vector<Vec2>> rings;
+  for (std::size_t k = 0; k < S.ring_count(); ++k) {
+    rings.emplace_back();
+    const auto r = S.ring(k);
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      rings.back().push_back(r[i]);
+      rings.back().push_back(0.5 * (r[i] + r[(i + 1) % r.size()]));
+    }
+  }
+  return Polygon(rings, S.name());
+}
+
 }  // namespace
+
+TEST(NfpClassify, StraightVertices) {
+  std::mt19937_64 rng(31);
+  for (int it = 0; it < pendepth_test::scaled(200); ++it) {
+    const Polygon P = star(rng, 4 + int(rng() % 6), 1, 6, true);
+    const Polygon Q = star(rng, 3 + int(rng() % 5), 1, 4, true);
+    same_pieces(subdivided(P), Q, "straight P " + std::to_string(it));
+    same_pieces(P, subdivided(Q), "straight Q " + std::to_string(it));
+    same_pieces(subdivided(P), subdivided(Q), "straight both " + std::to_string(it));
+  }
+}
 
 TEST(NfpClassify, RandomPairs) {
   std::mt19937_64 rng(1121);
