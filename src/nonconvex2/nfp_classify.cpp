@@ -77,6 +77,18 @@ bool origin_on_line(const Ray& a, const Ray& b) {
          }) == 0;
 }
 
+// The sum vertex at end k of a and the one at end l of b have equal coordinates (exact).
+bool same_vertex(const Ray& a, int k, const Ray& b, int l) {
+  auto coord = [](const Ray& r, int end, int axis, auto L) {
+    // End 0: o1 + o2; end 1: o1 + o2 + (a1 − b1) (a2 = b2 = 0 for candidates).
+    auto v = L(r.o1[axis]) + L(r.o2[axis]);
+    return end == 0 ? v : v + L(r.a1[axis]) - L(r.b1[axis]);
+  };
+  for (int axis = 0; axis < 2; ++axis)
+    if (exact::exact_sign([&](auto L) { return coord(a, k, axis, L) - coord(b, l, axis, L); }) != 0) return false;
+  return true;
+}
+
 struct Classifier {
   const PairDepth2::Impl& S;
   const std::vector<NfpCandidate>& cands;
@@ -202,19 +214,26 @@ struct Classifier {
 
   // Exact: the point at parameter p (value v to a few ulps) of candidate c lies in O. Sum
   // vertices (the ends of most parts) are looked up once: each ends two or more candidates.
-  std::unordered_map<std::uint64_t, char> vertex_in_O;
+  // (A table over all (P, Q) vertex pairs when small, else a hash map.)
+  std::vector<signed char> vertex_table;
+  std::unordered_map<std::uint64_t, char> vertex_map;
   bool covered(const NfpCandidate& c, const Split& at) {
     const Param p = normalised(at.p, c.E);
-    if (p.kind == Param::Zero || p.kind == Param::One) {
-      const bool one = p.kind == Param::One;
-      const std::uint64_t key = (std::uint64_t(one ? c.E.p1 : c.E.p0) << 32) | (one ? c.E.q1 : c.E.q0);
-      const auto it = vertex_in_O.find(key);
-      if (it != vertex_in_O.end()) return it->second;
-      const bool in = covered_point(c, p, at);
-      vertex_in_O.emplace(key, in);
-      return in;
+    if (p.kind != Param::Zero && p.kind != Param::One) return covered_point(c, p, at);
+    const bool one = p.kind == Param::One;
+    const std::uint64_t pid = one ? c.E.p1 : c.E.p0, qid = one ? c.E.q1 : c.E.q0;
+    const std::uint64_t nq = S.Q.size(), cells = std::uint64_t(S.P.size()) * nq;
+    if (cells <= (std::uint64_t(1) << 20)) {
+      if (vertex_table.empty()) vertex_table.assign(cells, -1);
+      signed char& v = vertex_table[pid * nq + qid];
+      if (v < 0) v = covered_point(c, p, at);
+      return v;
     }
-    return covered_point(c, p, at);
+    const auto it = vertex_map.find((pid << 32) | qid);
+    if (it != vertex_map.end()) return it->second;
+    const bool in = covered_point(c, p, at);
+    vertex_map.emplace((pid << 32) | qid, in);
+    return in;
   }
   bool covered_point(const NfpCandidate& c, const Param& p, const Split& at) {
     const int den_sign = p.kind == Param::Cut ? exact::exact_sign([&](auto L) { return line_den(p.line, c.E, L); }) : 1;
@@ -251,7 +270,7 @@ struct Classifier {
 
   // Adds to `sp` the ends of candidate d lying strictly inside the collinear candidate c.
   // False when an end has no usable line (the caller then cuts c by the reference method).
-  bool collinear_ends(const NfpCandidate& c, const NfpCandidate& d, std::vector<Split>& sp) {
+  bool collinear_ends(const NfpCandidate& c, const NfpCandidate& d, std::uint32_t ci, std::vector<std::pair<std::uint32_t, Split>>& found) {
     const Vec2 dir = c.B - c.A;
     const double len2 = dir.squaredNorm();
     for (int k = 0; k < 2; ++k) {
@@ -263,17 +282,19 @@ struct Classifier {
       const double S = std::max({c.A.cwiseAbs().maxCoeff(), c.B.cwiseAbs().maxCoeff(), X.cwiseAbs().maxCoeff()});
       const double u = (X - c.A).dot(dir), err = (std::abs(dir.x()) + std::abs(dir.y())) * S * 0x1p-44;
       if (u < -err || u > len2 + err) continue;
+      // At an end of c (equal coordinates, exact degree 1): no split there.
+      if ((std::abs(u) <= err && same_vertex(d.E, k, c.E, 0)) || (std::abs(u - len2) <= err && same_vertex(d.E, k, c.E, 1))) continue;
       Line l;
       if (!line_through(p, q, c.E, l)) return false;
       const Param pm{Param::Cut, l, 0};
-      if (compare_params(pm, kZero, c.E, kO) > 0 && compare_params(pm, kOne, c.E, kO) < 0) sp.push_back(split(pm, c.E));
+      if (compare_params(pm, kZero, c.E, kO) > 0 && compare_params(pm, kOne, c.E, kO) < 0) found.push_back({ci, split(pm, c.E)});
     }
     return true;
   }
 
   void run(std::vector<NfpPiece>& out) {
     const std::size_t K = cands.size();
-    std::vector<std::vector<Split>> splits(K);
+    std::vector<std::pair<std::uint32_t, Split>> found;  // (candidate, split parameter)
     std::vector<char> reference(K, 0);
     // Floating filter: the ends of y strictly on one side of x's line, by a margin above the
     // roundings (A, B within 2⁻⁵³ relative of the exact ends; the direction exact differences
@@ -300,11 +321,11 @@ struct Classifier {
         const Param pc{Param::Cut, d.line, 0}, pd{Param::Cut, c.line, 0};
         if (compare_params(pc, kZero, c.E, kO) < 0 || compare_params(pc, kOne, c.E, kO) > 0) return;
         if (compare_params(pd, kZero, d.E, kO) < 0 || compare_params(pd, kOne, d.E, kO) > 0) return;
-        splits[i].push_back(split(pc, c.E));
-        splits[j].push_back(split(pd, d.E));
+        found.push_back({static_cast<std::uint32_t>(i), split(pc, c.E)});
+        found.push_back({static_cast<std::uint32_t>(j), split(pd, d.E)});
       } else if (origin_on_line(c.E, d.E)) {
-        if (!collinear_ends(c, d, splits[i])) reference[i] = 1;
-        if (!collinear_ends(d, c, splits[j])) reference[j] = 1;
+        if (!collinear_ends(c, d, static_cast<std::uint32_t>(i), found)) reference[i] = 1;
+        if (!collinear_ends(d, c, static_cast<std::uint32_t>(j), found)) reference[j] = 1;
       }
     };
     if (K <= 64) {
@@ -334,27 +355,43 @@ struct Classifier {
       }
     }
 
+    // The split parameters grouped by candidate (counting sort).
+    std::vector<std::uint32_t> first(K + 1, 0);
+    for (const auto& f : found) ++first[f.first + 1];
+    for (std::size_t k = 0; k < K; ++k) first[k + 1] += first[k];
+    std::vector<const Split*> grouped(found.size());
+    {
+      std::vector<std::uint32_t> at(first.begin(), first.end() - 1);
+      for (const auto& f : found) grouped[at[f.first]++] = &f.second;
+    }
     std::vector<char> part, vert;
+    std::vector<Split> sp;
     for (std::size_t k = 0; k < K; ++k) {
       const NfpCandidate& c = cands[k];
       if (reference[k]) {
         nfp_cut(S, c, out);
         continue;
       }
-      std::vector<Split>& sp = splits[k];
+      sp.clear();
+      for (std::uint32_t f = first[k]; f < first[k + 1]; ++f) sp.push_back(*grouped[f]);
       const bool whole = sp.empty();  // nothing meets c inside: one part, sampled at μ = 1/2
       sp.push_back({kZero, 0, 0});
       sp.push_back({kOne, 1, 0});
       if (!whole) {
         // Exact order; among equal parameters the ends 0 and 1 first (symbolic sum vertices), so
         // the kept representative is the cheapest one.
+        // Values further apart than their error bounds are ordered without exact arithmetic.
+        auto cmp = [&](const Split& x, const Split& y) {
+          if (x.v + x.err < y.v - y.err) return -1;
+          if (y.v + y.err < x.v - x.err) return 1;
+          return compare_params(x.p, y.p, c.E, kO);
+        };
         auto rank = [](const Split& x) { return x.p.kind == Param::Cut ? 1 : 0; };
         std::sort(sp.begin(), sp.end(), [&](const Split& x, const Split& y) {
-          const int s = compare_params(x.p, y.p, c.E, kO);
+          const int s = cmp(x, y);
           return s != 0 ? s < 0 : rank(x) < rank(y);
         });
-        sp.erase(std::unique(sp.begin(), sp.end(), [&](const Split& x, const Split& y) { return compare_params(x.p, y.p, c.E, kO) == 0; }),
-                 sp.end());
+        sp.erase(std::unique(sp.begin(), sp.end(), [&](const Split& x, const Split& y) { return cmp(x, y) == 0; }), sp.end());
       }
       const std::size_t V = sp.size();
       part.assign(V - 1, 0);
