@@ -95,7 +95,24 @@ struct Classifier {
   std::vector<std::uint32_t> prevP, prevQ;  // filled on first use
   std::vector<std::pair<std::int32_t, std::int32_t>> stack;
 
-  Classifier(const PairDepth2::Impl& s, const std::vector<NfpCandidate>& c) : S(s), cands(c) {}
+  // All triangle pairs with their sum boxes, when there are few (≤ 256).
+  struct FlatPair {
+    Vec2 lo, hi;
+    std::uint32_t i, j;
+  };
+  std::vector<FlatPair> flat;
+
+  Classifier(const PairDepth2::Impl& s, const std::vector<NfpCandidate>& c) : S(s), cands(c) {
+    if (S.tp.size() * S.tb.size() <= 256) {
+      flat.reserve(S.tp.size() * S.tb.size());
+      for (std::uint32_t i = 0; i < S.tp.size(); ++i)
+        for (std::uint32_t j = 0; j < S.tb.size(); ++j) {
+          FlatPair f{{}, {}, i, j};
+          sum_box(S.tp[i].lo, S.tp[i].hi, S.tb[j].lo, S.tb[j].hi, f.lo, f.hi);
+          flat.push_back(f);
+        }
+    }
+  }
 
   // A line through the sum vertex (p, q) not parallel to `avoid`: an input edge at p translated
   // by −q, or one at q (as an edge of −Q) translated by p. False when all four are parallel.
@@ -241,6 +258,16 @@ struct Classifier {
     const Vec2 m = c.A + at.v * (c.B - c.A);
     const double tol = (c.A.cwiseAbs().maxCoeff() + c.B.cwiseAbs().maxCoeff()) * 0x1p-40 + 2 * at.err * (c.B - c.A).cwiseAbs().maxCoeff() + 0x1p-1000;
     const Vec2 mlo = m.array() - tol, mhi = m.array() + tol;
+    auto leaf = [&](std::uint32_t i, std::uint32_t j) {
+      if (c.strict && own_edge(S.tp[i], S.tb[j], c.E)) return false;
+      const int f = sum_filter(S.tp[i], S.tb[j], m, tol, c.E);
+      return f > 0 || (f == 0 && in_open_sum(S.tp[i], S.tb[j], c, p, den_sign));
+    };
+    if (!flat.empty()) {  // few pairs: a scan of their boxes beats the dual descent
+      for (const FlatPair& f : flat)
+        if (!(f.lo.x() > mhi.x() || f.hi.x() < mlo.x() || f.lo.y() > mhi.y() || f.hi.y() < mlo.y()) && leaf(f.i, f.j)) return true;
+      return false;
+    }
     stack.assign(1, {0, 0});
     while (!stack.empty()) {
       auto [a, b] = stack.back();
@@ -251,9 +278,7 @@ struct Classifier {
       if (lo.x() > mhi.x() || hi.x() < mlo.x() || lo.y() > mhi.y() || hi.y() < mlo.y()) continue;
       const bool la = NA.left < 0, lb = NB.left < 0;
       if (la && lb) {
-        if (c.strict && own_edge(S.tp[NA.tri], S.tb[NB.tri], c.E)) continue;
-        const int f = sum_filter(S.tp[NA.tri], S.tb[NB.tri], m, tol, c.E);
-        if (f > 0 || (f == 0 && in_open_sum(S.tp[NA.tri], S.tb[NB.tri], c, p, den_sign))) return true;
+        if (leaf(NA.tri, NB.tri)) return true;
         continue;
       }
       const bool split_a = lb || (!la && (NA.hi - NA.lo).sum() >= (NB.hi - NB.lo).sum());
@@ -271,7 +296,9 @@ struct Classifier {
   // Adds to `sp` the ends of candidate d lying strictly inside the collinear candidate c.
   // False when an end has no usable line (the caller then cuts c by the reference method).
   bool collinear_ends(const NfpCandidate& c, const NfpCandidate& d, std::uint32_t ci, std::vector<std::pair<std::uint32_t, Split>>& found) {
-    const Vec2 dir = c.B - c.A;
+    // dir from the input doubles (one rounding): its error stays relative to |dir| even for a
+    // short candidate, which B − A's would not.
+    const Vec2 dir = c.E.a1 - c.E.b1;
     const double len2 = dir.squaredNorm();
     for (int k = 0; k < 2; ++k) {
       const std::uint32_t p = k == 0 ? d.E.p0 : d.E.p1, q = k == 0 ? d.E.q0 : d.E.q1;
@@ -282,12 +309,25 @@ struct Classifier {
       const double S = std::max({c.A.cwiseAbs().maxCoeff(), c.B.cwiseAbs().maxCoeff(), X.cwiseAbs().maxCoeff()});
       const double u = (X - c.A).dot(dir), err = (std::abs(dir.x()) + std::abs(dir.y())) * S * 0x1p-44;
       if (u < -err || u > len2 + err) continue;
-      // At an end of c (equal coordinates, exact degree 1): no split there.
-      if ((std::abs(u) <= err && same_vertex(d.E, k, c.E, 0)) || (std::abs(u - len2) <= err && same_vertex(d.E, k, c.E, 1))) continue;
+      // Near an end of c: strictly inside iff dot(X − A, dir) > 0 and dot(X − B, dir) < 0, exact
+      // (degree 2; X, A, B sums of two input doubles, dir = a1 − b1 exactly).
+      if (std::abs(u) <= err || std::abs(u - len2) <= err) {
+        auto along = [&](int end) {
+          return exact::exact_sign([&](auto L) {
+            auto x = L(d.E.o1.x()) + L(d.E.o2.x()) - L(c.E.o1.x()) - L(c.E.o2.x());
+            auto y = L(d.E.o1.y()) + L(d.E.o2.y()) - L(c.E.o1.y()) - L(c.E.o2.y());
+            auto dx = L(c.E.a1.x()) - L(c.E.b1.x()), dy = L(c.E.a1.y()) - L(c.E.b1.y());
+            if (k == 1) x = x + L(d.E.a1.x()) - L(d.E.b1.x()), y = y + L(d.E.a1.y()) - L(d.E.b1.y());
+            if (end == 1) x = x - dx, y = y - dy;
+            return x * dx + y * dy;
+          });
+        };
+        if (along(0) <= 0 || along(1) >= 0) continue;
+      }
       Line l;
       if (!line_through(p, q, c.E, l)) return false;
       const Param pm{Param::Cut, l, 0};
-      if (compare_params(pm, kZero, c.E, kO) > 0 && compare_params(pm, kOne, c.E, kO) < 0) found.push_back({ci, split(pm, c.E)});
+      found.push_back({ci, split(pm, c.E)});
     }
     return true;
   }
