@@ -3,7 +3,11 @@
 // A formula is written once as a generic lambda `f(c)` where `c(x)` lifts an input double into
 // the number type. It is evaluated first with `Fl` (double value + rigorous forward error bound),
 // then, when that bound cannot decide, with `DD` (double-double, ~106-bit, with its own error
-// bound), and only when that cannot decide either with exact rationals (mpq_set_d is exact).
+// bound), then exactly with `Ex` (Shewchuk's floating-point expansions: sums of non-overlapping
+// doubles, exact while no product underflows or overflows and the length stays under a cap), and
+// only when that cannot decide either with exact rationals (mpq_set_d is exact). Exact zeros of
+// non-integer data (collinear points with decimal coordinates) end in the Ex tier, ~20-50× cheaper
+// than GMP (no allocation, no canonicalisation).
 //   exact_sign(f)      : exact sign of the polynomial
 //   accurate_value(f)  : the value to within ~1 ulp (relative), exact fallback when needed
 #pragma once
@@ -110,6 +114,132 @@ struct LiftDD {
 };
 inline bool dd_finite(const DD& r) { return std::isfinite(r.hi) && std::isfinite(r.lo) && std::isfinite(r.e); }
 
+/// Exact floating-point expansion (Shewchuk 1997, "Adaptive precision floating-point arithmetic
+/// and fast robust geometric predicates"): the value is the exact sum of c[0..n), non-overlapping,
+/// increasing magnitude, no zeros; kept compressed, so n stays near (bit span of the value) / 53.
+/// `ok` turns false, and stays false, when exactness cannot be guaranteed: an overflow, a product
+/// whose rounding error may be below the subnormal range, or more than kCap components. Callers
+/// then use rationals.
+struct Ex {
+  static constexpr int kCap = 40;
+  int n = 0;
+  bool ok = true;
+  double c[kCap];
+};
+namespace detail {
+inline constexpr double kExFloor = 0x1p-900;  // products below this may lose their error term
+inline bool ex_push(Ex& h, double v) {
+  if (v == 0) return true;
+  if (h.n == Ex::kCap || !std::isfinite(v)) return h.ok = false;
+  h.c[h.n++] = v;
+  return true;
+}
+// Shewchuk's COMPRESS: the same value, non-adjacent components (as short as it gets).
+inline void ex_compress(Ex& e) {
+  if (e.n <= 1) return;
+  double g[Ex::kCap];
+  int bottom = e.n - 1;
+  double Q = e.c[e.n - 1];
+  for (int i = e.n - 2; i >= 0; --i) {
+    double Qn, q;
+    quick_two_sum(Q, e.c[i], Qn, q);
+    if (q != 0) {
+      g[bottom--] = Qn;
+      Q = q;
+    } else {
+      Q = Qn;
+    }
+  }
+  g[bottom] = Q;
+  int top = 0;
+  for (int i = bottom + 1; i < e.n; ++i) {
+    double Qn, q;
+    quick_two_sum(g[i], Q, Qn, q);
+    if (q != 0) e.c[top++] = q;
+    Q = Qn;
+  }
+  e.c[top++] = Q;
+  e.n = top;
+  if (e.n == 1 && e.c[0] == 0) e.n = 0;
+  if (e.n > 0 && !std::isfinite(e.c[e.n - 1])) e.ok = false;
+}
+// h += b (Shewchuk's GROW-EXPANSION with zero elimination).
+inline void ex_grow(Ex& h, double b) {
+  Ex out;
+  double Q = b;
+  for (int i = 0; i < h.n; ++i) {
+    double s, e;
+    two_sum(Q, h.c[i], s, e);
+    Q = s;
+    if (!ex_push(out, e)) break;
+  }
+  ex_push(out, Q);
+  out.ok = out.ok && h.ok;
+  h = out;
+}
+// e·b (Shewchuk's SCALE-EXPANSION with zero elimination; products by FMA).
+inline Ex ex_scale(const Ex& e, double b) {
+  Ex h;
+  h.ok = e.ok;
+  if (b == 0 || e.n == 0) return h;
+  auto prod = [&](double x, double& p, double& err) {
+    p = x * b;
+    err = std::fma(x, b, -p);
+    if (!std::isfinite(p) || std::abs(p) < kExFloor) h.ok = false;
+  };
+  double Q, t0;
+  prod(e.c[0], Q, t0);
+  ex_push(h, t0);
+  for (int i = 1; i < e.n && h.ok; ++i) {
+    double T, t, s, r;
+    prod(e.c[i], T, t);
+    two_sum(Q, t, s, r);
+    ex_push(h, r);
+    quick_two_sum(T, s, Q, r);
+    ex_push(h, r);
+  }
+  ex_push(h, Q);
+  return h;
+}
+}  // namespace detail
+inline Ex operator+(const Ex& a, const Ex& b) {
+  Ex h = a.n >= b.n ? a : b;
+  const Ex& o = a.n >= b.n ? b : a;
+  h.ok = a.ok && b.ok;
+  for (int j = 0; j < o.n && h.ok; ++j) detail::ex_grow(h, o.c[j]);
+  detail::ex_compress(h);
+  return h;
+}
+inline Ex operator-(const Ex& a) {
+  Ex r = a;
+  for (int i = 0; i < r.n; ++i) r.c[i] = -r.c[i];
+  return r;
+}
+inline Ex operator-(const Ex& a, const Ex& b) { return a + (-b); }
+inline Ex operator*(const Ex& a, const Ex& b) {
+  const Ex& big = a.n >= b.n ? a : b;
+  const Ex& small = a.n >= b.n ? b : a;
+  Ex acc;
+  acc.ok = a.ok && b.ok;
+  for (int j = 0; j < small.n && acc.ok; ++j) acc = acc + detail::ex_scale(big, small.c[j]);
+  return acc;
+}
+struct LiftEx {
+  Ex operator()(double x) const {
+    Ex r;
+    if (!std::isfinite(x)) r.ok = false;
+    else if (x != 0) r.c[r.n++] = x;
+    return r;
+  }
+};
+inline int ex_sign(const Ex& e) { return e.n == 0 ? 0 : (e.c[e.n - 1] > 0 ? 1 : -1); }
+/// The value to within ~1 ulp (the components summed from the smallest).
+inline double ex_value(const Ex& e) {
+  double v = 0;
+  for (int i = 0; i < e.n; ++i) v += e.c[i];
+  return v;
+}
+
 /// Exact rational evaluated eagerly (gmpxx's expression templates would dangle when returned
 /// from the generic formula lambdas).
 struct Rat {
@@ -150,6 +280,8 @@ int exact_sign(F&& f) {
     if (d.hi > b) return 1;  // |lo| <= ulp(hi)/2, so hi beyond the bound fixes the sign
     if (d.hi < -b) return -1;
   }
+  const Ex e = f(LiftEx{});
+  if (e.ok) return ex_sign(e);
   Rat q = f(LiftQ{});
   return sgn(q.v);
 }
@@ -169,6 +301,8 @@ int exact_sign_filtered(double approx, double bound, F&& f) {
     if (d.hi > b) return 1;
     if (d.hi < -b) return -1;
   }
+  const Ex e = f(LiftEx{});
+  if (e.ok) return ex_sign(e);
   Rat q = f(LiftQ{});
   return sgn(q.v);
 }
@@ -191,6 +325,11 @@ bool floating_value(F&& f, double& out) {
   if (dd_finite(d) && safe_bound(d.e) <= std::abs(d.hi) * 0x1p-54) {
     out = d.hi;  // hi = round(hi + lo); the error bound is far below half an ulp of hi
     return true;
+  }
+  const Ex e = f(LiftEx{});  // exact: zeros and heavy cancellation
+  if (e.ok) {
+    out = ex_value(e);
+    return std::isfinite(out);
   }
   return false;
 }

@@ -39,12 +39,7 @@
 
 namespace pendepth {
 
-using nonconvex2::Cover;
-using nonconvex2::Line;
-using nonconvex2::NfpPiece;
-using nonconvex2::Param;
-using nonconvex2::Ray;
-using nonconvex2::Sum;
+namespace nonconvex2 {
 
 namespace {
 
@@ -65,52 +60,30 @@ std::vector<std::uint32_t> previous(const Polygon& S) {
   return prev;
 }
 
-// The point at parameter p of E, each coordinate to a few ulps (a sum vertex: rounded to nearest).
-Vec2 point_at(const Ray& E, const Line& line, const Param& p) {
-  if (p.kind == Param::Zero) return line.c1 + line.c2;
-  if (p.kind == Param::One) return line.q_edge ? Vec2(line.c1 + line.e1) : Vec2(line.e1 + line.c2);
-  nonconvex2::Cand c{E, p, {}};
-  return nonconvex2::cand_translation(c, Vec2(0, 0));
-}
-
-// The oriented slab filter of step 2: true when every vertex of T ⊕ B lies strictly on one side
-// of the candidate line (normal values cross(dir, v) vs nA), or strictly before pA or after pB
-// along dir, each by the margin. Sum vertices are t + b, so extremes split over T and B.
-bool slab_rejects(const nonconvex2::Tri& T, const nonconvex2::Tri& B, const Vec2& dir, double dlen, double nA, double pA,
-                  double pB, double scale_edge) {
-  double nlo = INFINITY, nhi = -INFINITY, plo = INFINITY, phi = -INFINITY, sc = 0;
-  for (int k = 0; k < 3; ++k) {
-    const Vec2& t = T.v[k];
-    const double n = dir.x() * t.y() - dir.y() * t.x(), p = dir.dot(t);
-    nlo = std::min(nlo, n), nhi = std::max(nhi, n), plo = std::min(plo, p), phi = std::max(phi, p);
-    sc = std::max(sc, std::abs(t.x()) + std::abs(t.y()));
-  }
-  double mlo = INFINITY, mhi = -INFINITY, qlo = INFINITY, qhi = -INFINITY, sb = 0;
-  for (int k = 0; k < 3; ++k) {
-    const Vec2& b = B.v[k];
-    const double n = dir.x() * b.y() - dir.y() * b.x(), p = dir.dot(b);
-    mlo = std::min(mlo, n), mhi = std::max(mhi, n), qlo = std::min(qlo, p), qhi = std::max(qhi, p);
-    sb = std::max(sb, std::abs(b.x()) + std::abs(b.y()));
-  }
-  const double margin = (sc + sb + scale_edge) * dlen * 0x1p-36;
-  return nhi + mhi < nA - margin || nlo + mlo > nA + margin || phi + qhi < pA - margin || plo + qlo > pB + margin;
+NfpCandidate candidate(const Ray& E, const Line& line) {
+  NfpCandidate c{E, line, {}, {}, {}, {}};
+  // The ends, each a sum of two input doubles rounded once.
+  c.A = line.c1 + line.c2;
+  c.B = line.q_edge ? Vec2(line.c1 + line.e1) : Vec2(line.e1 + line.c2);
+  c.lo = Vec2(lower(std::min(c.A.x(), c.B.x())), lower(std::min(c.A.y(), c.B.y())));
+  c.hi = Vec2(upper(std::max(c.A.x(), c.B.x())), upper(std::max(c.A.y(), c.B.y())));
+  return c;
 }
 
 }  // namespace
 
-NoFitPolygon2::Impl::Impl(const Polygon& P, const Polygon& Q) : S(P, Q) {
+std::vector<NfpCandidate> nfp_candidates(const Polygon& P, const Polygon& Q) {
   const auto VP = P.vertices(), VQ = Q.vertices();
   const auto prevP = previous(P), prevQ = previous(Q);
-  std::vector<char> convexP(P.size()), convexQ(Q.size());
-  for (std::size_t g = 0; g < P.size(); ++g) convexP[g] = cross_sign(VP[prevP[g]], VP[g], VP[g], VP[P.next(g)]) >= 0;
-  for (std::size_t g = 0; g < Q.size(); ++g) convexQ[g] = cross_sign(VQ[prevQ[g]], VQ[g], VQ[g], VQ[Q.next(g)]) >= 0;
-
-  // Step 1: candidates as (ray, line) pairs.
-  std::vector<std::pair<Ray, Line>> cand;
+  // Turn at each vertex: > 0 strictly convex, 0 straight, < 0 reflex.
+  std::vector<signed char> convexP(P.size()), convexQ(Q.size());
+  for (std::size_t g = 0; g < P.size(); ++g) convexP[g] = static_cast<signed char>(cross_sign(VP[prevP[g]], VP[g], VP[g], VP[P.next(g)]));
+  for (std::size_t g = 0; g < Q.size(); ++g) convexQ[g] = static_cast<signed char>(cross_sign(VQ[prevQ[g]], VQ[g], VQ[g], VQ[Q.next(g)]));
+  std::vector<NfpCandidate> cand;
   for (std::uint32_t g = 0; g < P.size(); ++g) {
     const auto g1 = static_cast<std::uint32_t>(P.next(g));
     for (std::uint32_t q = 0; q < Q.size(); ++q) {
-      if (!convexQ[q]) continue;
+      if (convexQ[q] < 0) continue;
       // Q's edges at q on the closed right (outer) side of e: cross(e, w) ≤ 0.
       if (cross_sign(VP[g], VP[g1], VQ[q], VQ[prevQ[q]]) > 0 || cross_sign(VP[g], VP[g1], VQ[q], VQ[Q.next(q)]) > 0) continue;
       Ray E;
@@ -123,13 +96,14 @@ NoFitPolygon2::Impl::Impl(const Polygon& P, const Polygon& Q) : S(P, Q) {
       Line c;
       c.c1 = VP[g], c.c2 = -VQ[q], c.e0 = VP[g], c.e1 = VP[g1];
       c.p0 = g, c.p1 = g1, c.q0 = c.q1 = q, c.q_edge = false;
-      cand.push_back({E, c});
+      cand.push_back(candidate(E, c));
+      cand.back().strict = convexQ[q] > 0;
     }
   }
   for (std::uint32_t h = 0; h < Q.size(); ++h) {
     const auto h1 = static_cast<std::uint32_t>(Q.next(h));
     for (std::uint32_t p = 0; p < P.size(); ++p) {
-      if (!convexP[p]) continue;
+      if (convexP[p] < 0) continue;
       // P's edges at p on the closed outer side of Q's edge h: cross(q1 − q0, w) ≤ 0.
       if (cross_sign(VQ[h], VQ[h1], VP[p], VP[prevP[p]]) > 0 || cross_sign(VQ[h], VQ[h1], VP[p], VP[P.next(p)]) > 0) continue;
       Ray E;
@@ -142,63 +116,22 @@ NoFitPolygon2::Impl::Impl(const Polygon& P, const Polygon& Q) : S(P, Q) {
       Line c;
       c.c1 = VP[p], c.c2 = -VQ[h], c.e0 = -VQ[h], c.e1 = -VQ[h1];
       c.p0 = c.p1 = p, c.q0 = h, c.q1 = h1, c.q_edge = true;
-      cand.push_back({E, c});
+      cand.push_back(candidate(E, c));
+      cand.back().strict = convexP[p] > 0;
     }
   }
+  return cand;
+}
+
+}  // namespace nonconvex2
+
+NoFitPolygon2::Impl::Impl(const Polygon& P, const Polygon& Q) : S(P, Q) {
+  // Step 1: candidates.
+  const std::vector<nonconvex2::NfpCandidate> cand = nonconvex2::nfp_candidates(P, Q);
   sz.candidates = cand.size();
-
-  // Step 2: cut every candidate by the open pair sums that can meet it.
-  std::vector<Cover> covers;
-  const Param zero{Param::Zero, {}}, one{Param::One, {}};
-  for (const auto& [E, line] : cand) {
-    // The ends, each a sum of two input doubles rounded once.
-    const Vec2 A = line.c1 + line.c2, B = line.q_edge ? Vec2(line.c1 + line.e1) : Vec2(line.e1 + line.c2);
-    const Vec2 slo(lower(std::min(A.x(), B.x())), lower(std::min(A.y(), B.y())));
-    const Vec2 shi(upper(std::max(A.x(), B.x())), upper(std::max(A.y(), B.y())));
-    const double scale_edge = A.cwiseAbs().maxCoeff() + B.cwiseAbs().maxCoeff();
-    // The candidate's frame for the oriented slab filter below: the direction B − A and its normal.
-    // (dir from the exact input difference a1 − b1, so it is accurate even for a short candidate.)
-    const Vec2 dir = E.a1 - E.b1;
-    const double dlen = std::abs(dir.x()) + std::abs(dir.y());
-    const double nA = dir.x() * A.y() - dir.y() * A.x(), pA = dir.dot(A), pB = pA + dir.dot(dir);
-    covers.clear();
-    bool swallowed = false;
-    S.descend(
-        [&](const Vec2& lo, const Vec2& hi) {
-          return !(lo.x() > shi.x() || hi.x() < slo.x() || lo.y() > shi.y() || hi.y() < slo.y());
-        },
-        [&](std::uint32_t i, std::uint32_t j) {
-          // Oriented slab filter (separable over the two triangles, no sum built): T_i ⊕ (−U_j)
-          // entirely on one side of the candidate's line, or entirely before A or after B along
-          // it, by a margin far above every rounding (A, B and the triangle vertices are within a
-          // few ulps of exact points; the products within a few ulps) cannot cover any point of
-          // the candidate: the exact tests below would reject it too.
-          if (slab_rejects(S.tp[i], S.tb[j], dir, dlen, nA, pA, pB, scale_edge)) return false;
-          const Sum F = nonconvex2::make_sum(S.tp[i], S.tb[j]);
-          double scale = 0;
-          for (const auto& v : F.v) scale = std::max(scale, v.p.cwiseAbs().maxCoeff() + v.b.cwiseAbs().maxCoeff());
-          if (nonconvex2::surely_outside(F, A, B, scale + scale_edge)) return false;
-          if (nonconvex2::surely_inside(F, A, B, scale + scale_edge)) return swallowed = true;
-          Cover cv;
-          if (!nonconvex2::sum_interval(F, E, cv.entry, cv.exit, &line)) return false;
-          const Param en{Param::Cut, cv.entry}, ex{Param::Cut, cv.exit};
-          const Vec2 o(0, 0);
-          if (nonconvex2::compare_params(ex, zero, E, o) <= 0 || nonconvex2::compare_params(en, one, E, o) >= 0) return false;
-          if (nonconvex2::compare_params(en, zero, E, o) < 0 && nonconvex2::compare_params(ex, one, E, o) > 0) return swallowed = true;
-          covers.push_back(cv);
-          return false;
-        },
-        nullptr);
-    if (swallowed) continue;
-    nonconvex2::uncovered_pieces(covers, E, Vec2(0, 0), zero, one, [&](const Param& lo, const Param& hi) {
-      NfpPiece pc{E, line, lo, hi, point_at(E, line, lo), point_at(E, line, hi), {}, {}};
-      pc.blo = Vec2(lower(std::min(pc.a.x(), pc.b.x())), lower(std::min(pc.a.y(), pc.b.y())));
-      pc.bhi = Vec2(upper(std::max(pc.a.x(), pc.b.x())), upper(std::max(pc.a.y(), pc.b.y())));
-      pieces.push_back(pc);
-    });
-  }
+  // Step 2: their uncovered closed pieces.
+  nonconvex2::nfp_classify(S, cand, pieces);
   sz.pieces = pieces.size();
-
   // Step 3: the query index over the piece boxes (BoxTree only reads a leaf's box).
   std::vector<nonconvex2::Tri> boxes(pieces.size());
   for (std::size_t k = 0; k < pieces.size(); ++k) {
@@ -224,7 +157,7 @@ NfpSize NoFitPolygon2::size() const {
   for (const auto& poly : impl_->polys) s.rings += poly.size();
   s.slits = impl_->slits.size();
   s.points = impl_->points.size();
-  std::size_t b = impl_->pieces.capacity() * sizeof(NfpPiece) + impl_->tree.nodes.capacity() * sizeof(nonconvex2::BoxTree::Node);
+  std::size_t b = impl_->pieces.capacity() * sizeof(nonconvex2::NfpPiece) + impl_->tree.nodes.capacity() * sizeof(nonconvex2::BoxTree::Node);
   for (const auto& poly : impl_->polys) {
     b += poly.capacity() * sizeof(poly[0]);
     for (const auto& ring : poly) b += ring.capacity() * sizeof(Vec2);

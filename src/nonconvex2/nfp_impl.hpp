@@ -23,6 +23,32 @@ struct NfpPiece {
   Vec2 blo, bhi;  // conservative box of the exact piece
 };
 
+/// A reduced-convolution candidate (nfp_build.cpp step 1): the symbolic edge ray E from sum
+/// vertex (p0, q0) to (p1, q1) (μ ∈ [0, 1]), its line, its ends A = E(0), B = E(1) each rounded
+/// once, and a conservative box.
+struct NfpCandidate {
+  Ray E;
+  Line line;
+  Vec2 A, B, lo, hi;
+  bool strict = false;  // the candidate's vertex is strictly convex (not a straight vertex)
+};
+
+/// The candidates of P ⊕ (−Q) (nfp_build.cpp): O(nm) exact orientation tests.
+std::vector<NfpCandidate> nfp_candidates(const Polygon& P, const Polygon& Q);
+
+/// Appends the uncovered closed pieces of candidate c, in increasing μ, found by cutting c with
+/// every open pair sum that can meet it (nfp_cut.cpp). The reference method: the builder uses
+/// nfp_classify, which falls back to this per candidate.
+void nfp_cut(const PairDepth2::Impl& S, const NfpCandidate& c, std::vector<NfpPiece>& out);
+
+/// Appends the uncovered closed pieces of every candidate, candidate by candidate in order, the
+/// same pieces as nfp_cut, found by splitting each candidate where other candidates meet it and
+/// testing one point per part (nfp_classify.cpp).
+void nfp_classify(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& cands, std::vector<NfpPiece>& out);
+
+/// The piece [lo, hi] of candidate c with its rounded ends and box.
+NfpPiece make_piece(const NfpCandidate& c, const Param& lo, const Param& hi);
+
 }  // namespace nonconvex2
 
 struct NoFitPolygon2::Impl {

@@ -1,0 +1,470 @@
+// The per-pair no-fit polygon, classification of the candidates (issue 5 item 4; nfp_build.cpp
+// step 2): which parts of each reduced-convolution candidate lie on ∂O.
+//
+// Every point of a candidate c is in cl(O) (a touching placement), so it is in O or on ∂O. Where
+// ∂O ∩ c begins or ends inside c, or is an isolated point of c, the placement has a contact that
+// does not slide along c's line, and every touching contact lies on a candidate (nfp_build.cpp),
+// so another candidate d meets c there: crossing or touching c's line, or collinear with an end
+// there. Hence c, split at every point where another candidate meets it, consists of open parts
+// that lie wholly in O or wholly on ∂O, and one exact point per part decides it.
+//  1. Split points: for each pair of candidates with overlapping boxes, non-parallel: the
+//     crossing of their lines when it lies on both closed segments (4 exact comparisons);
+//     collinear: the ends of each strictly inside the other (the end as the crossing with a line of
+//     an input edge at that sum vertex, not parallel to c, so every parameter stays symbolic).
+//  2. Per candidate, the split parameters sorted exactly (compare_params) and merged when equal.
+//  3. Each open part: a double μ midway between its ends' approximations, certified strictly
+//     inside by two exact comparisons, and the point c(μ) tested against the open pair sums whose
+//     boxes contain it (exact signs of degree 3). Each split point not closing a boundary part is
+//     tested itself (an exact fit: an isolated point of ∂O).
+//  4. Maximal runs of boundary parts and points are the pieces: the same closed maximal uncovered
+//     intervals as the reference cutting nfp_cut.cpp, which is used instead for a candidate whose
+//     parts cannot be sampled (a part too short for a double between its ends) or whose
+//     collinear neighbour's end has no usable line (four input edges parallel to c).
+// Cost: candidate pairs by boxes (all pairs for K ≤ 64, else a box hierarchy), O(1) exact tests per
+// meeting pair; per part or point one point descent of the two triangle hierarchies, O(1) exact
+// tests per visited pair. For X meeting pairs: O(K² + (K + X)·v) with v the visited pairs per
+// point (K log K + ... with the hierarchy). The reference cuts every candidate by every sum
+// meeting its box (~3,000 instructions per sum on real pieces); a point test is ~6 signs.
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+#include "geometry/exact.hpp"
+#include "nonconvex2/nfp_impl.hpp"
+
+namespace pendepth::nonconvex2 {
+
+namespace {
+
+const Param kZero{Param::Zero, {}, 0}, kOne{Param::One, {}, 0};
+const Vec2 kO(0, 0);
+
+// A split parameter on a candidate, its value v and a bound on |v − μ|.
+struct Split {
+  Param p;
+  double v, err;
+};
+
+Split split(const Param& p, const Ray& E) {
+  if (p.kind != Param::Cut) return {p, p.kind == Param::Zero ? 0.0 : p.kind == Param::One ? 1.0 : p.value, 0};
+  // One floating pass with forward error bounds: |n/d − ñ/d̃| ≤ (bn + |v|·bd) / (|d̃| − bd).
+  const exact::LiftFl F;
+  const exact::Fl n = line_num(p.line, E, F), d = line_den(p.line, E, F);
+  const double bn = exact::safe_bound(n.e), bd = exact::safe_bound(d.e);
+  if (std::abs(d.v) > 2 * bd && std::isfinite(n.v)) {
+    const double v = n.v / d.v;
+    return {p, v, exact::safe_bound((bn + std::abs(v) * bd) / (std::abs(d.v) - bd) + std::abs(v) * 0x1p-52)};
+  }
+  const double v = line_value(p.line, E);  // to a few ulps
+  return {p, v, std::abs(v) * 0x1p-48};
+}
+
+bool boxes_meet(const NfpCandidate& a, const NfpCandidate& b) {
+  return !(a.lo.x() > b.hi.x() || b.lo.x() > a.hi.x() || a.lo.y() > b.hi.y() || b.lo.y() > a.hi.y());
+}
+
+// Exact sign of cross(dir a, dir b).
+int parallel_sign(const Ray& a, const Ray& b) {
+  return exact::exact_sign([&](auto L) { return ray_dx(a, L) * ray_dy(b, L) - ray_dy(a, L) * ray_dx(b, L); });
+}
+
+// Exact: b's origin on a's line.
+bool origin_on_line(const Ray& a, const Ray& b) {
+  return exact::exact_sign([&](auto L) {
+           auto x = L(b.o1.x()) + L(b.o2.x()) - L(a.o1.x()) - L(a.o2.x());
+           auto y = L(b.o1.y()) + L(b.o2.y()) - L(a.o1.y()) - L(a.o2.y());
+           return ray_dx(a, L) * y - ray_dy(a, L) * x;
+         }) == 0;
+}
+
+// The sum vertex at end k of a and the one at end l of b have equal coordinates (exact).
+bool same_vertex(const Ray& a, int k, const Ray& b, int l) {
+  auto coord = [](const Ray& r, int end, int axis, auto L) {
+    // End 0: o1 + o2; end 1: o1 + o2 + (a1 − b1) (a2 = b2 = 0 for candidates).
+    auto v = L(r.o1[axis]) + L(r.o2[axis]);
+    return end == 0 ? v : v + L(r.a1[axis]) - L(r.b1[axis]);
+  };
+  for (int axis = 0; axis < 2; ++axis)
+    if (exact::exact_sign([&](auto L) { return coord(a, k, axis, L) - coord(b, l, axis, L); }) != 0) return false;
+  return true;
+}
+
+struct Classifier {
+  const PairDepth2::Impl& S;
+  const std::vector<NfpCandidate>& cands;
+  std::vector<std::uint32_t> prevP, prevQ;  // filled on first use
+  std::vector<std::pair<std::int32_t, std::int32_t>> stack;
+
+  // All triangle pairs with their sum boxes, when there are few (≤ 256).
+  struct FlatPair {
+    Vec2 lo, hi;
+    std::uint32_t i, j;
+  };
+  std::vector<FlatPair> flat;
+
+  Classifier(const PairDepth2::Impl& s, const std::vector<NfpCandidate>& c) : S(s), cands(c) {
+    if (S.tp.size() * S.tb.size() <= 256) {
+      flat.reserve(S.tp.size() * S.tb.size());
+      for (std::uint32_t i = 0; i < S.tp.size(); ++i)
+        for (std::uint32_t j = 0; j < S.tb.size(); ++j) {
+          FlatPair f{{}, {}, i, j};
+          sum_box(S.tp[i].lo, S.tp[i].hi, S.tb[j].lo, S.tb[j].hi, f.lo, f.hi);
+          flat.push_back(f);
+        }
+    }
+  }
+
+  // A line through the sum vertex (p, q) not parallel to `avoid`: an input edge at p translated
+  // by −q, or one at q (as an edge of −Q) translated by p. False when all four are parallel.
+  bool line_through(std::uint32_t p, std::uint32_t q, const Ray& avoid, Line& out) {
+    if (prevP.empty()) {
+      prevP.resize(S.P.size());
+      prevQ.resize(S.Q.size());
+      for (std::size_t g = 0; g < S.P.size(); ++g) prevP[S.P.next(g)] = static_cast<std::uint32_t>(g);
+      for (std::size_t g = 0; g < S.Q.size(); ++g) prevQ[S.Q.next(g)] = static_cast<std::uint32_t>(g);
+    }
+    const auto VP = S.P.vertices(), VQ = S.Q.vertices();
+    const auto pn = static_cast<std::uint32_t>(S.P.next(p)), pp = prevP[p];
+    const auto qn = static_cast<std::uint32_t>(S.Q.next(q)), qp = prevQ[q];
+    Line L[4];
+    L[0].c1 = VP[p], L[0].c2 = -VQ[q], L[0].e0 = VP[p], L[0].e1 = VP[pn];
+    L[0].p0 = p, L[0].p1 = pn, L[0].q0 = L[0].q1 = q, L[0].q_edge = false;
+    L[1].c1 = VP[pp], L[1].c2 = -VQ[q], L[1].e0 = VP[pp], L[1].e1 = VP[p];
+    L[1].p0 = pp, L[1].p1 = p, L[1].q0 = L[1].q1 = q, L[1].q_edge = false;
+    L[2].c1 = VP[p], L[2].c2 = -VQ[q], L[2].e0 = -VQ[q], L[2].e1 = -VQ[qn];
+    L[2].p0 = L[2].p1 = p, L[2].q0 = q, L[2].q1 = qn, L[2].q_edge = true;
+    L[3].c1 = VP[p], L[3].c2 = -VQ[qp], L[3].e0 = -VQ[qp], L[3].e1 = -VQ[q];
+    L[3].p0 = L[3].p1 = p, L[3].q0 = qp, L[3].q1 = q, L[3].q_edge = true;
+    for (const Line& c : L)
+      if (exact::exact_sign([&](auto Lf) { return line_den(c, avoid, Lf); }) != 0) {
+        out = c;
+        return true;
+      }
+    return false;
+  }
+
+  // Floating filter for m ∈ int(T ⊕ B), m known to within tol per coordinate: +1 certainly
+  // inside, -1 certainly not, 0 undecided. T ⊕ B is the intersection of the half-planes of its
+  // edges, each parallel to an edge of T or of B: for an edge d of T from t, m is inside iff
+  // cross(d, m − t) > min_b cross(d, b) (the sum's edge is that edge of T translated by B's
+  // extreme vertex), and symmetrically for the edges of B. Error: |d|₁·(tol + 16·S·2⁻⁵³) covers
+  // the point's error and the roundings (S bounds every coordinate).
+  // An edge parallel to c is decided exactly and cheaply whatever the point's parameter: m lies
+  // on c's line, so cross(d, m − x − y) = cross(d, A − x − y) with A = o1 + o2 (degree 2 in the
+  // input doubles); the half-plane holds m iff that is positive for some vertex y of the other
+  // triangle. (On real pieces most undecided edges are parallel: collinear edges of P or Q.)
+  static int sum_filter(const Tri& T, const Tri& B, const Vec2& m, double tol, const Ray& E) {
+    double S = m.cwiseAbs().maxCoeff();
+    for (int k = 0; k < 3; ++k) S = std::max({S, T.v[k].cwiseAbs().maxCoeff(), B.v[k].cwiseAbs().maxCoeff()});
+    const double slack = tol + 16 * S * 0x1p-53;
+    const Vec2 dirc = E.a1 - E.b1;
+    bool sure = true;
+    for (int side = 0; side < 2; ++side) {
+      const Tri& X = side == 0 ? T : B;  // the edge's triangle
+      const Tri& Y = side == 0 ? B : T;  // the other one
+      for (int k = 0; k < 3; ++k) {
+        const Vec2 &x0 = X.v[k], &x1 = X.v[(k + 1) % 3];
+        const Vec2 d = x1 - x0;
+        const Vec2 w = m - x0;
+        double lo = INFINITY;
+        for (int j = 0; j < 3; ++j) lo = std::min(lo, d.x() * Y.v[j].y() - d.y() * Y.v[j].x());
+        const double val = d.x() * w.y() - d.y() * w.x() - lo;
+        const double err = (std::abs(d.x()) + std::abs(d.y())) * slack * 2;
+        if (val < -err) return -1;
+        if (val > err) continue;
+        const double cr = d.x() * dirc.y() - d.y() * dirc.x();
+        if (std::abs(cr) > (std::abs(d.x()) + std::abs(d.y())) * (std::abs(dirc.x()) + std::abs(dirc.y())) * 0x1p-50 ||
+            exact::exact_sign([&](auto L) {
+              return (L(x1.x()) - L(x0.x())) * (L(E.a1.y()) - L(E.b1.y())) - (L(x1.y()) - L(x0.y())) * (L(E.a1.x()) - L(E.b1.x()));
+            }) != 0) {
+          sure = false;  // not parallel: the exact test decides
+          continue;
+        }
+        bool holds = false;
+        for (int j = 0; j < 3 && !holds; ++j) {
+          const Vec2& y = Y.v[j];
+          holds = exact::exact_sign([&](auto L) {
+                    auto u = L(E.o1.x()) + L(E.o2.x()) - L(x0.x()) - L(y.x()), v = L(E.o1.y()) + L(E.o2.y()) - L(x0.y()) - L(y.y());
+                    return (L(x1.x()) - L(x0.x())) * v - (L(x1.y()) - L(x0.y())) * u;
+                  }) > 0;
+        }
+        if (!holds) return -1;
+      }
+    }
+    return sure ? 1 : 0;
+  }
+
+  // Symbolic: c's line is an edge line of T ⊕ B, so no point of c is inside. For c = e − q (P
+  // edge e = p0 → p1, Q vertex q strictly convex): T has e as an edge (in its CCW order) and
+  // B = −U has −q as a vertex; −q is then extreme in B against e's outward normal (U lies in Q's
+  // angle at q, which the candidate rule puts on the closed outer side of e — for a straight
+  // vertex only its edges are, not necessarily the angle), so e − q is the sum's edge parallel
+  // to e. Symmetrically for c = p − h (Q edge h = q0 → q1): B has the edge −q0 → −q1, T the
+  // strictly convex vertex p.
+  static bool own_edge(const Tri& T, const Tri& B, const Ray& E) {
+    auto has_edge = [](const Tri& X, std::uint32_t a, std::uint32_t b) {
+      for (int k = 0; k < 3; ++k)
+        if (X.id[k] == a && X.id[(k + 1) % 3] == b) return true;
+      return false;
+    };
+    auto has_vertex = [](const Tri& X, std::uint32_t a) { return X.id[0] == a || X.id[1] == a || X.id[2] == a; };
+    if (E.q0 == E.q1) return has_edge(T, E.p0, E.p1) && has_vertex(B, E.q0);
+    return has_edge(B, E.q0, E.q1) && has_vertex(T, E.p0);
+  }
+
+  // Exact: the point at (normalised) parameter p of candidate c lies in the open sum T ⊕ B.
+  bool in_open_sum(const Tri& T, const Tri& B, const NfpCandidate& c, const Param& p, int den_sign) const {
+    const Sum F = make_sum(T, B);
+    const Ray& E = c.E;
+    for (const Line& e : F.e) {
+      if (same_line(e, c.line)) return false;  // c runs along this edge: on ∂F, not inside
+      const int s = exact::exact_sign([&](auto L) {
+        auto [n, dd] = param_nd(p, E, kO, L);
+        auto x = (L(E.o1.x()) + L(E.o2.x()) - L(e.c1.x()) - L(e.c2.x())) * dd + n * ray_dx(E, L);
+        auto y = (L(E.o1.y()) + L(E.o2.y()) - L(e.c1.y()) - L(e.c2.y())) * dd + n * ray_dy(E, L);
+        return (L(e.e1.x()) - L(e.e0.x())) * y - (L(e.e1.y()) - L(e.e0.y())) * x;
+      });
+      if (s * den_sign <= 0) return false;
+    }
+    return true;
+  }
+
+  // Exact: the point at parameter p (value v to a few ulps) of candidate c lies in O. Sum
+  // vertices (the ends of most parts) are looked up once: each ends two or more candidates.
+  // (A table over all (P, Q) vertex pairs when small, else a hash map.)
+  std::vector<signed char> vertex_table;
+  std::unordered_map<std::uint64_t, char> vertex_map;
+  bool covered(const NfpCandidate& c, const Split& at) {
+    const Param p = normalised(at.p, c.E);
+    if (p.kind != Param::Zero && p.kind != Param::One) return covered_point(c, p, at);
+    const bool one = p.kind == Param::One;
+    const std::uint64_t pid = one ? c.E.p1 : c.E.p0, qid = one ? c.E.q1 : c.E.q0;
+    const std::uint64_t nq = S.Q.size(), cells = std::uint64_t(S.P.size()) * nq;
+    if (cells <= (std::uint64_t(1) << 20)) {
+      if (vertex_table.empty()) vertex_table.assign(cells, -1);
+      signed char& v = vertex_table[pid * nq + qid];
+      if (v < 0) v = covered_point(c, p, at);
+      return v;
+    }
+    const auto it = vertex_map.find((pid << 32) | qid);
+    if (it != vertex_map.end()) return it->second;
+    const bool in = covered_point(c, p, at);
+    vertex_map.emplace((pid << 32) | qid, in);
+    return in;
+  }
+  bool covered_point(const NfpCandidate& c, const Param& p, const Split& at) {
+    const int den_sign = p.kind == Param::Cut ? exact::exact_sign([&](auto L) { return line_den(p.line, c.E, L); }) : 1;
+    // The point to within tol: A and B within a few ulps of the exact ends, v within err of μ.
+    const Vec2 m = c.A + at.v * (c.B - c.A);
+    const double tol = (c.A.cwiseAbs().maxCoeff() + c.B.cwiseAbs().maxCoeff()) * 0x1p-40 + 2 * at.err * (c.B - c.A).cwiseAbs().maxCoeff() + 0x1p-1000;
+    const Vec2 mlo = m.array() - tol, mhi = m.array() + tol;
+    auto leaf = [&](std::uint32_t i, std::uint32_t j) {
+      if (c.strict && own_edge(S.tp[i], S.tb[j], c.E)) return false;
+      const int f = sum_filter(S.tp[i], S.tb[j], m, tol, c.E);
+      return f > 0 || (f == 0 && in_open_sum(S.tp[i], S.tb[j], c, p, den_sign));
+    };
+    if (!flat.empty()) {  // few pairs: a scan of their boxes beats the dual descent
+      for (const FlatPair& f : flat)
+        if (!(f.lo.x() > mhi.x() || f.hi.x() < mlo.x() || f.lo.y() > mhi.y() || f.hi.y() < mlo.y()) && leaf(f.i, f.j)) return true;
+      return false;
+    }
+    stack.assign(1, {0, 0});
+    while (!stack.empty()) {
+      auto [a, b] = stack.back();
+      stack.pop_back();
+      const auto &NA = S.hp.nodes[a], &NB = S.hb.nodes[b];
+      Vec2 lo, hi;
+      sum_box(NA.lo, NA.hi, NB.lo, NB.hi, lo, hi);
+      if (lo.x() > mhi.x() || hi.x() < mlo.x() || lo.y() > mhi.y() || hi.y() < mlo.y()) continue;
+      const bool la = NA.left < 0, lb = NB.left < 0;
+      if (la && lb) {
+        if (leaf(NA.tri, NB.tri)) return true;
+        continue;
+      }
+      const bool split_a = lb || (!la && (NA.hi - NA.lo).sum() >= (NB.hi - NB.lo).sum());
+      if (split_a) {
+        stack.push_back({NA.left, b});
+        stack.push_back({NA.right, b});
+      } else {
+        stack.push_back({a, NB.left});
+        stack.push_back({a, NB.right});
+      }
+    }
+    return false;
+  }
+
+  // Adds to `sp` the ends of candidate d lying strictly inside the collinear candidate c.
+  // False when an end has no usable line (the caller then cuts c by the reference method).
+  bool collinear_ends(const NfpCandidate& c, const NfpCandidate& d, std::uint32_t ci, std::vector<std::pair<std::uint32_t, Split>>& found) {
+    // dir from the input doubles (one rounding): its error stays relative to |dir| even for a
+    // short candidate, which B − A's would not.
+    const Vec2 dir = c.E.a1 - c.E.b1;
+    const double len2 = dir.squaredNorm();
+    for (int k = 0; k < 2; ++k) {
+      const std::uint32_t p = k == 0 ? d.E.p0 : d.E.p1, q = k == 0 ? d.E.q0 : d.E.q1;
+      if ((p == c.E.p0 && q == c.E.q0) || (p == c.E.p1 && q == c.E.q1)) continue;  // a shared end
+      // Floating filter on the position along c (the rounded ends are within 2⁻⁵³ relative of
+      // the exact ones; the margin is far above every rounding): clearly outside [0, 1] skips.
+      const Vec2& X = k == 0 ? d.A : d.B;
+      const double S = std::max({c.A.cwiseAbs().maxCoeff(), c.B.cwiseAbs().maxCoeff(), X.cwiseAbs().maxCoeff()});
+      const double u = (X - c.A).dot(dir), err = (std::abs(dir.x()) + std::abs(dir.y())) * S * 0x1p-44;
+      if (u < -err || u > len2 + err) continue;
+      // Near an end of c: strictly inside iff dot(X − A, dir) > 0 and dot(X − B, dir) < 0, exact
+      // (degree 2; X, A, B sums of two input doubles, dir = a1 − b1 exactly).
+      if (std::abs(u) <= err || std::abs(u - len2) <= err) {
+        auto along = [&](int end) {
+          return exact::exact_sign([&](auto L) {
+            auto x = L(d.E.o1.x()) + L(d.E.o2.x()) - L(c.E.o1.x()) - L(c.E.o2.x());
+            auto y = L(d.E.o1.y()) + L(d.E.o2.y()) - L(c.E.o1.y()) - L(c.E.o2.y());
+            auto dx = L(c.E.a1.x()) - L(c.E.b1.x()), dy = L(c.E.a1.y()) - L(c.E.b1.y());
+            if (k == 1) x = x + L(d.E.a1.x()) - L(d.E.b1.x()), y = y + L(d.E.a1.y()) - L(d.E.b1.y());
+            if (end == 1) x = x - dx, y = y - dy;
+            return x * dx + y * dy;
+          });
+        };
+        if (along(0) <= 0 || along(1) >= 0) continue;
+      }
+      Line l;
+      if (!line_through(p, q, c.E, l)) return false;
+      const Param pm{Param::Cut, l, 0};
+      found.push_back({ci, split(pm, c.E)});
+    }
+    return true;
+  }
+
+  void run(std::vector<NfpPiece>& out) {
+    const std::size_t K = cands.size();
+    std::vector<std::pair<std::uint32_t, Split>> found;  // (candidate, split parameter)
+    std::vector<char> reference(K, 0);
+    // Floating filter: the ends of y strictly on one side of x's line, by a margin above the
+    // roundings (A, B within 2⁻⁵³ relative of the exact ends; the direction exact differences
+    // rounded once), so the closed segments cannot meet.
+    auto apart = [](const NfpCandidate& x, const NfpCandidate& y) {
+      const Vec2 dir = x.E.a1 - x.E.b1, u = y.A - x.A, w = y.B - x.A;
+      const double S = std::max({x.A.cwiseAbs().maxCoeff(), y.A.cwiseAbs().maxCoeff(), y.B.cwiseAbs().maxCoeff()});
+      const double err = (std::abs(dir.x()) + std::abs(dir.y())) * S * 0x1p-48;
+      const double su = dir.x() * u.y() - dir.y() * u.x(), sw = dir.x() * w.y() - dir.y() * w.x();
+      return (su > err && sw > err) || (su < -err && sw < -err);
+    };
+    // Candidates sharing an end vertex (neighbours along the convolution, most meeting pairs on
+    // real pieces): non-parallel lines meet only there, an end of both, which splits nothing.
+    auto shared_end = [](const Ray& a, const Ray& b) {
+      return (a.p0 == b.p0 && a.q0 == b.q0) || (a.p0 == b.p1 && a.q0 == b.q1) || (a.p1 == b.p0 && a.q1 == b.q0) ||
+             (a.p1 == b.p1 && a.q1 == b.q1);
+    };
+    auto meet = [&](std::size_t i, std::size_t j) {
+      const NfpCandidate &c = cands[i], &d = cands[j];
+      if (apart(c, d) || apart(d, c)) return;
+      const bool non_parallel = parallel_sign(c.E, d.E) != 0;
+      if (non_parallel && shared_end(c.E, d.E)) return;
+      if (non_parallel) {
+        const Param pc{Param::Cut, d.line, 0}, pd{Param::Cut, c.line, 0};
+        if (compare_params(pc, kZero, c.E, kO) < 0 || compare_params(pc, kOne, c.E, kO) > 0) return;
+        if (compare_params(pd, kZero, d.E, kO) < 0 || compare_params(pd, kOne, d.E, kO) > 0) return;
+        found.push_back({static_cast<std::uint32_t>(i), split(pc, c.E)});
+        found.push_back({static_cast<std::uint32_t>(j), split(pd, d.E)});
+      } else if (origin_on_line(c.E, d.E)) {
+        if (!collinear_ends(c, d, static_cast<std::uint32_t>(i), found)) reference[i] = 1;
+        if (!collinear_ends(d, c, static_cast<std::uint32_t>(j), found)) reference[j] = 1;
+      }
+    };
+    if (K <= 64) {
+      for (std::size_t i = 0; i < K; ++i)
+        for (std::size_t j = i + 1; j < K; ++j)
+          if (boxes_meet(cands[i], cands[j])) meet(i, j);
+    } else {
+      std::vector<Tri> boxes(K);
+      for (std::size_t k = 0; k < K; ++k) boxes[k].lo = cands[k].lo, boxes[k].hi = cands[k].hi;
+      BoxTree tree;
+      tree.build(boxes);
+      std::vector<std::int32_t> st;
+      for (std::size_t i = 0; i < K; ++i) {
+        st.assign(1, 0);
+        while (!st.empty()) {
+          const auto& N = tree.nodes[st.back()];
+          st.pop_back();
+          if (N.lo.x() > cands[i].hi.x() || cands[i].lo.x() > N.hi.x() || N.lo.y() > cands[i].hi.y() || cands[i].lo.y() > N.hi.y())
+            continue;
+          if (N.left >= 0) {
+            st.push_back(N.left);
+            st.push_back(N.right);
+          } else if (N.tri > i) {
+            meet(i, N.tri);
+          }
+        }
+      }
+    }
+
+    // The split parameters grouped by candidate (counting sort).
+    std::vector<std::uint32_t> first(K + 1, 0);
+    for (const auto& f : found) ++first[f.first + 1];
+    for (std::size_t k = 0; k < K; ++k) first[k + 1] += first[k];
+    std::vector<const Split*> grouped(found.size());
+    {
+      std::vector<std::uint32_t> at(first.begin(), first.end() - 1);
+      for (const auto& f : found) grouped[at[f.first]++] = &f.second;
+    }
+    std::vector<char> part, vert;
+    std::vector<Split> sp;
+    for (std::size_t k = 0; k < K; ++k) {
+      const NfpCandidate& c = cands[k];
+      if (reference[k]) {
+        nfp_cut(S, c, out);
+        continue;
+      }
+      sp.clear();
+      for (std::uint32_t f = first[k]; f < first[k + 1]; ++f) sp.push_back(*grouped[f]);
+      const bool whole = sp.empty();  // nothing meets c inside: one part, sampled at μ = 1/2
+      sp.push_back({kZero, 0, 0});
+      sp.push_back({kOne, 1, 0});
+      if (!whole) {
+        // Exact order; among equal parameters the ends 0 and 1 first (symbolic sum vertices), so
+        // the kept representative is the cheapest one.
+        // Values further apart than their error bounds are ordered without exact arithmetic.
+        auto cmp = [&](const Split& x, const Split& y) {
+          if (x.v + x.err < y.v - y.err) return -1;
+          if (y.v + y.err < x.v - x.err) return 1;
+          return compare_params(x.p, y.p, c.E, kO);
+        };
+        auto rank = [](const Split& x) { return x.p.kind == Param::Cut ? 1 : 0; };
+        std::sort(sp.begin(), sp.end(), [&](const Split& x, const Split& y) {
+          const int s = cmp(x, y);
+          return s != 0 ? s < 0 : rank(x) < rank(y);
+        });
+        sp.erase(std::unique(sp.begin(), sp.end(), [&](const Split& x, const Split& y) { return cmp(x, y) == 0; }), sp.end());
+      }
+      const std::size_t V = sp.size();
+      part.assign(V - 1, 0);
+      bool sampled = true;
+      for (std::size_t i = 0; i + 1 < V && sampled; ++i) {
+        const Split mid = split(Param{Param::Value, {}, 0.5 * (sp[i].v + sp[i + 1].v)}, c.E);
+        if (!whole && !(compare_params(sp[i].p, mid.p, c.E, kO) < 0 && compare_params(mid.p, sp[i + 1].p, c.E, kO) < 0)) sampled = false;
+        else part[i] = !covered(c, mid);
+      }
+      if (!sampled) {
+        nfp_cut(S, c, out);
+        continue;
+      }
+      vert.assign(V, 0);
+      for (std::size_t i = 0; i < V; ++i) vert[i] = (i > 0 && part[i - 1]) || (i + 1 < V && part[i]) || !covered(c, sp[i]);
+      for (std::size_t i = 0; i < V;) {
+        if (!vert[i]) {
+          ++i;
+          continue;
+        }
+        std::size_t j = i;
+        while (j + 1 < V && part[j]) ++j;
+        out.push_back(make_piece(c, sp[i].p, sp[j].p));
+        i = j + 1;
+      }
+    }
+  }
+};
+
+}  // namespace
+
+void nfp_classify(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& cands, std::vector<NfpPiece>& out) {
+  Classifier(S, cands).run(out);
+}
+
+}  // namespace pendepth::nonconvex2
