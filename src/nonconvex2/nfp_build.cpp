@@ -46,12 +46,8 @@ namespace {
 double lower(double x) { return x - std::abs(x) * 0x1p-44 - 0x1p-1000; }
 double upper(double x) { return x + std::abs(x) * 0x1p-44 + 0x1p-1000; }
 
-// Exact sign of cross(b − a, d − c) for input doubles.
-int cross_sign(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
-  return exact::exact_sign([&](auto L) {
-    return (L(b.x()) - L(a.x())) * (L(d.y()) - L(c.y())) - (L(b.y()) - L(a.y())) * (L(d.x()) - L(c.x()));
-  });
-}
+// Exact sign of cross(b − a, d − c) for input doubles (a static floating filter first).
+int cross_sign(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) { return predicates::cross_edges(a, b, c, d); }
 
 // prev[g]: the vertex before g in its ring.
 std::vector<std::uint32_t> previous(const Polygon& S) {
