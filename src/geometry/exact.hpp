@@ -59,9 +59,6 @@ inline FlX operator+(FlX a, FlX b) {
 inline FlX operator-(FlX a) { return {-a.v, a.exact}; }
 inline FlX operator-(FlX a, FlX b) { return a + (-b); }
 inline FlX operator*(FlX a, FlX b) {
-  // An exact zero times any real (its approximation may even be inexact) is exactly zero: the
-  // degenerate tests of axis-parallel edges with non-integer coordinates end here.
-  if ((a.exact && a.v == 0) || (b.exact && b.v == 0)) return {0.0, true};
   double v = a.v * b.v;
   bool ex = a.exact && b.exact && (std::abs(v) > kExactFloor || a.v == 0 || b.v == 0) &&
             std::isfinite(v) && std::fma(a.v, b.v, -v) == 0;

@@ -134,22 +134,3 @@ TEST(Exact, ExpansionGivesUpAndRationalsTakeOver) {
     EXPECT_EQ(r, mpq_class(mpq_class(a) + mpq_class(b) - mpq_class(c)).get_d());
   }
 }
-
-// The FlX tier certifies zeros of axis-parallel configurations with decimal coordinates: an
-// exact zero factor makes the product exactly zero whatever the other factor's rounding.
-TEST(Exact, ExactZeroFactorsWithInexactOperands) {
-  std::mt19937_64 rng(99);
-  std::uniform_int_distribution<int> k(-5000, 5000);
-  for (int it = 0; it < 2000; ++it) {
-    const double x = k(rng) * 0.1, y0 = k(rng) * 0.1, y1 = k(rng) * 0.1, u0 = k(rng) * 0.3, u1 = k(rng) * 0.7, w = k(rng) * 0.01;
-    // Two vertical edges (x, y0)→(x, y1) and (w, u0)→(w, u1): cross of their directions is 0.
-    auto f = [&](auto L) { return (L(x) - L(x)) * (L(u1) - L(u0)) - (L(y1) - L(y0)) * (L(w) - L(w)); };
-    const ex::FlX r = f(ex::LiftFlX{});
-    ASSERT_TRUE(r.exact);
-    ASSERT_EQ(r.v, 0);
-    ASSERT_EQ(ex::exact_sign(f), 0);
-    // Not a zero: the same with a tilted second edge.
-    auto g = [&](auto L) { return (L(x) - L(x)) * (L(u1) - L(u0)) - (L(y1) - L(y0)) * (L(w + 0.5) - L(w)); };
-    ASSERT_EQ(ex::exact_sign(g), sgn(g(ex::LiftQ{}).v));
-  }
-}
