@@ -37,6 +37,7 @@ namespace pendepth::nonconvex2 {
 namespace {
 
 const Param kZero{Param::Zero, {}, 0}, kOne{Param::One, {}, 0};
+constexpr std::uint32_t kMaxSplits = 256;
 const Vec2 kO(0, 0);
 
 // A split parameter on a candidate, its value v and a bound on |v − μ|.
@@ -436,6 +437,12 @@ struct Classifier {
     for (std::size_t k = 0; k < K; ++k) {
       const NfpCandidate& c = cands[k];
       if (reference[k]) {
+        nfp_cut(S, c, out);
+        continue;
+      }
+      // Many candidates meet c (dense convolutions): one cut by the sums costs less than a point
+      // test per part, and keeps the worst case at the reference's O(nm) per candidate.
+      if (first[k + 1] - first[k] > kMaxSplits) {
         nfp_cut(S, c, out);
         continue;
       }
