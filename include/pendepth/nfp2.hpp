@@ -21,21 +21,25 @@
 //      Q + x can touch that edge from outside only at the vertex (both incident Q edges lie on the
 //      non-P side), and symmetrically an edge of Q with the vertices of P; every candidate is an
 //      edge of some convex pair sum S_ij, kept symbolic (P vertex + −Q vertex);
-//   2. each candidate is cut exactly by the open sums S_ij whose boxes meet it (dual descent over
-//      the two triangle box hierarchies); the uncovered closed pieces are ∂O;
+//   2. each candidate is split where other candidates meet it (crossings, collinear ends) and each
+//      part, and each split point, is classified by one exact point test against the open sums
+//      S_ij whose boxes hold it; maximal uncovered runs are the pieces of ∂O (the same pieces as
+//      cutting every candidate by every open sum meeting it, the reference kept as fallback);
 //   3. pieces are linked into rings by exact equality of their symbolic ends; rings are oriented
 //      with O on the left (outer rings CCW, holes CW); pieces with O on both sides are slits,
 //      zero-length pieces with O all around are isolated points;
 //   4. a bounding-volume hierarchy over the pieces answers the queries.
 //
-// Complexity (n, m vertices of P, Q; K candidates, K ≤ nm; N pieces of ∂O): build O(nm) candidate
-// tests plus, per candidate, the pair sums whose boxes meet it — worst case O(K·nm) = O(n²m²) exact
-// tests, the bound of the explicit convolution (DHS §6); export O(N log N) filtered exact predicates.
-// Queries: overlapping(t) is PairDepth2's pair-sum test (worst O(nm), a few sums on real pieces);
+// Complexity (n, m vertices of P, Q; K candidates, K ≤ nm; X box-overlapping candidate pairs; N
+// pieces of ∂O): build O(nm) candidate tests, O(K log K + X) meeting tests and one point test per
+// part and split point (a few sums on real pieces, worst O(nm)); a candidate met by more than 256
+// others is cut instead (O(nm)), so the worst case stays O(n²m²) exact tests, the bound of the
+// explicit convolution (DHS §6); export O(N log N) filtered exact predicates. Queries:
+// overlapping(t) is PairDepth2's pair-sum test (worst O(nm), a few sums on real pieces);
 // along/minimum visit O(log N + k) hierarchy nodes for k boxes near the answer (worst O(N)).
-// Measured (docs/algorithms.md, CPU time): on the nesting pieces (≤ 14 vertices, ~17 pieces of ∂O)
-// σ takes ~2 µs and σ_d ~2.5–6 µs per query; the build (87–127 µs per pair) is still 2–3× slower
-// than CGAL's minkowski_sum_2 there (docs/benchmarks.md has the same-run table). Internal
+// Measured (docs/benchmarks.md, CPU time): on the nesting pieces (≤ 14 vertices, ~17 pieces of ∂O)
+// σ takes 1.6–2.1 µs and σ_d 1.5–2.1 µs per query; the build takes 22–43 µs per pair, 0.92–1.63×
+// CGAL's minkowski_sum_2 on the same pairs (faster on two instances of three). Internal
 // inconsistencies of the pieces (a chain that does not close, a hole outside every outer ring)
 // throw std::logic_error rather than export a wrong polygon; no test input has produced one.
 // Departure from a winding-number / ray-parity NFP: membership in O is always decided by the open

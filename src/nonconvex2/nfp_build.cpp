@@ -13,21 +13,23 @@
 //    at their ends), so ∂O ⊆ ∪ candidates. Each candidate is kept symbolic: a Ray from the sum
 //    vertex (p0, q) to (p1, q) (resp. (p, q0) to (p, q1)) with sym = true, so the exact algebra
 //    of pair_sums.hpp and its symbolic ties apply. O lies on every candidate's left.
-// 2. Each candidate is cut by the open sums S_ij whose boxes meet its box (dual descent over the
-//    two triangle hierarchies; floating filters first, then sum_interval exactly), and the
-//    uncovered closed pieces are kept (edge_cut.hpp, the same cutting as σ). A point of a
-//    candidate lies on ∂S for a non-degenerate S of the family, so if no open sum covers it, it is
-//    in cl(O) \ O = ∂O; with step 1 the pieces are exactly ∂O (with duplicates where candidates
-//    coincide; zero-length pieces where two covers only touch).
+// 2. Each candidate is classified (nfp_classify.cpp): split where other candidates meet it, one
+//    exact point test per part against the open sums; maximal runs of uncovered parts are kept.
+//    A point of a candidate lies on ∂S for a non-degenerate S of the family, so if no open sum
+//    covers it, it is in cl(O) \ O = ∂O; with step 1 the pieces are exactly ∂O (with duplicates
+//    where candidates coincide; zero-length pieces at isolated points). These are the same pieces
+//    as the reference cutting (nfp_cut.cpp: every open sum meeting the candidate cut from it
+//    exactly), which remains the fallback for candidates the classification does not settle.
 // 3. nfp_rings.cpp links the pieces into rings, slits and points; a box hierarchy over the piece
 //    boxes serves the queries (nfp_query.cpp).
-// Cost: candidates O(nm) orientation tests (with an exact floating filter; K of them kept, K ≤ nm,
-// typically O(n + m) on real pieces); cutting visits, per candidate, the pairs whose sum box
-// meets the candidate's box: worst case O(K·nm) exact tests (O(n²m²)). A floating oriented-slab
-// filter (the candidate's line and its extent along it, separable over the two triangles) drops
-// most visited pairs before a sum is built; on albano ~7 sums per candidate are built and cut
-// exactly. Measured (albano, CPU time, 64 ordered pairs): ~0.12 ms per pair, ~40 % in this
-// cutting (sum_interval, make_sum), ~30 % in the export (nfp_rings.cpp), 4 % triangulations.
+// Cost: candidates O(nm) turn tests (static floating filter, exact fallback; K kept, K ≤ nm,
+// typically O(n + m) on real pieces); classification O(K log K + X) for X box-overlapping candidate
+// pairs plus one point test (O(1) sums on real pieces, worst O(nm)) per part and per split point;
+// worst case O(n²m²) exact tests (a candidate met by > 256 others is cut by the reference, O(nm)).
+// Measured (callgrind, Release, per pair of the benchmark): albano 324 k instructions
+// (classification 180 k, export 60 k, triangulations and hierarchies 52 k, candidates 22 k),
+// shirts 387 k, trousers 264 k — the reference cutting with the rational export took 1.16 M on
+// albano (docs/algorithms.md).
 // Departure from the usual reduced-convolution builders (CGAL, Clipper):
 // no arrangement of the candidates is built and no winding numbers are computed; membership in O
 // is decided directly by the open convex pair sums, which also yields the slits and isolated
@@ -46,12 +48,8 @@ namespace {
 double lower(double x) { return x - std::abs(x) * 0x1p-44 - 0x1p-1000; }
 double upper(double x) { return x + std::abs(x) * 0x1p-44 + 0x1p-1000; }
 
-// Exact sign of cross(b − a, d − c) for input doubles.
-int cross_sign(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) {
-  return exact::exact_sign([&](auto L) {
-    return (L(b.x()) - L(a.x())) * (L(d.y()) - L(c.y())) - (L(b.y()) - L(a.y())) * (L(d.x()) - L(c.x()));
-  });
-}
+// Exact sign of cross(b − a, d − c) for input doubles (a static floating filter first).
+int cross_sign(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) { return predicates::cross_edges(a, b, c, d); }
 
 // prev[g]: the vertex before g in its ring.
 std::vector<std::uint32_t> previous(const Polygon& S) {

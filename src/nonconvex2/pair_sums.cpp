@@ -199,6 +199,9 @@ void BoxTree::build(const std::vector<Tri>& tris) {
   if (tris.empty()) return;
   std::vector<std::uint32_t> idx(tris.size());
   std::iota(idx.begin(), idx.end(), 0u);
+  // Split keys (twice the box centres) computed once: the selections below compare them often.
+  std::vector<std::array<double, 2>> key(tris.size());
+  for (std::size_t k = 0; k < tris.size(); ++k) key[k] = {tris[k].lo.x() + tris[k].hi.x(), tris[k].lo.y() + tris[k].hi.y()};
   nodes.reserve(2 * tris.size());
   // Recursive build by explicit stack: (node, begin, end).
   struct Job {
@@ -223,9 +226,8 @@ void BoxTree::build(const std::vector<Tri>& tris) {
     }
     const int axis = (hi.x() - lo.x()) >= (hi.y() - lo.y()) ? 0 : 1;
     const std::size_t mid = (J.b + J.e) / 2;
-    std::nth_element(idx.begin() + J.b, idx.begin() + mid, idx.begin() + J.e, [&](std::uint32_t a, std::uint32_t b) {
-      return tris[a].lo[axis] + tris[a].hi[axis] < tris[b].lo[axis] + tris[b].hi[axis];
-    });
+    std::nth_element(idx.begin() + J.b, idx.begin() + mid, idx.begin() + J.e,
+                     [&](std::uint32_t a, std::uint32_t b) { return key[a][axis] < key[b][axis]; });
     const auto l = static_cast<std::int32_t>(nodes.size());
     nodes.push_back({});
     nodes.push_back({});
