@@ -71,8 +71,8 @@ bool boxes_meet(const NfpCandidate& a, const NfpCandidate& b) {
   return !(a.lo.x() > b.hi.x() || b.lo.x() > a.hi.x() || a.lo.y() > b.hi.y() || b.lo.y() > a.hi.y());
 }
 
-// Exact sign of cross(dir a, dir b).
-// Candidates' directions are a1 − b1 (a2 = b2 = 0): the static-filter predicate applies.
+// Exact sign of cross(dir a, dir b); candidates' directions are a1 − b1 (a2 = b2 = 0), input
+// differences, so the static-filter predicate applies.
 int parallel_sign(const Ray& a, const Ray& b) { return predicates::cross_edges(a.b1, a.a1, b.b1, b.a1); }
 
 // Exact: b's origin on a's line.
