@@ -71,8 +71,8 @@ bool boxes_meet(const NfpCandidate& a, const NfpCandidate& b) {
   return !(a.lo.x() > b.hi.x() || b.lo.x() > a.hi.x() || a.lo.y() > b.hi.y() || b.lo.y() > a.hi.y());
 }
 
-// Exact sign of cross(dir a, dir b).
-// Candidates' directions are a1 − b1 (a2 = b2 = 0): the static-filter predicate applies.
+// Exact sign of cross(dir a, dir b); candidates' directions are a1 − b1 (a2 = b2 = 0), input
+// differences, so the static-filter predicate applies.
 int parallel_sign(const Ray& a, const Ray& b) { return predicates::cross_edges(a.b1, a.a1, b.b1, b.a1); }
 
 // Exact: b's origin on a's line.
@@ -108,7 +108,7 @@ struct Classifier {
   const PairDepth2::Impl& S;
   const std::vector<NfpCandidate>& cands;
   std::vector<std::uint32_t> prevP, prevQ;  // filled on first use
-  std::vector<std::pair<std::int32_t, std::int32_t>> stack;
+  PairDepth2::Impl::DescentStack stack;
 
   // All triangle pairs with their sum boxes, when there are few (≤ 256).
   struct FlatPair {
@@ -303,29 +303,9 @@ struct Classifier {
       }
       return false;
     }
-    stack.assign(1, {0, 0});
-    while (!stack.empty()) {
-      auto [a, b] = stack.back();
-      stack.pop_back();
-      const auto &NA = S.hp.nodes[a], &NB = S.hb.nodes[b];
-      Vec2 lo, hi;
-      sum_box(NA.lo, NA.hi, NB.lo, NB.hi, lo, hi);
-      if (lo.x() > mhi.x() || hi.x() < mlo.x() || lo.y() > mhi.y() || hi.y() < mlo.y()) continue;
-      const bool la = NA.left < 0, lb = NB.left < 0;
-      if (la && lb) {
-        if (leaf(NA.tri, NB.tri, nullptr)) return true;
-        continue;
-      }
-      const bool split_a = lb || (!la && (NA.hi - NA.lo).sum() >= (NB.hi - NB.lo).sum());
-      if (split_a) {
-        stack.push_back({NA.left, b});
-        stack.push_back({NA.right, b});
-      } else {
-        stack.push_back({a, NB.left});
-        stack.push_back({a, NB.right});
-      }
-    }
-    return false;
+    return S.descend(
+        [&](const Vec2& lo, const Vec2& hi) { return !(lo.x() > mhi.x() || hi.x() < mlo.x() || lo.y() > mhi.y() || hi.y() < mlo.y()); },
+        [&](std::uint32_t i, std::uint32_t j) { return leaf(i, j, nullptr); }, nullptr, stack);
   }
 
   // Adds to `sp` the ends of candidate d lying strictly inside the collinear candidate c.

@@ -140,9 +140,15 @@ struct PairDepth2::Impl {
   Impl(const Polygon& p, const Polygon& q);
 
   /// Visits the leaf pairs (i, j) whose sum box passes `accept(lo, hi)`; `leaf(i, j)` returns true
-  /// to stop. Returns true if stopped.
+  /// to stop. Returns true if stopped. `stack`: a caller's scratch buffer (no allocation per call).
+  using DescentStack = std::vector<std::pair<std::int32_t, std::int32_t>>;
   template <class Accept, class Leaf>
-  bool descend(Accept&& accept, Leaf&& leaf, PairQueryStats* stats) const;
+  bool descend(Accept&& accept, Leaf&& leaf, PairQueryStats* stats, DescentStack& stack) const;
+  template <class Accept, class Leaf>
+  bool descend(Accept&& accept, Leaf&& leaf, PairQueryStats* stats) const {
+    DescentStack stack;
+    return descend(accept, leaf, stats, stack);
+  }
 
   /// Builds the result of moving Q from t by `translation` to the contact described by edge line E
   /// of a sum. `end` (decided exactly by the caller: 0 = E's start vertex, 1 = its end, -1 = neither)
@@ -152,8 +158,8 @@ struct PairDepth2::Impl {
 };
 
 template <class Accept, class Leaf>
-bool PairDepth2::Impl::descend(Accept&& accept, Leaf&& leaf, PairQueryStats* stats) const {
-  std::vector<std::pair<std::int32_t, std::int32_t>> stack{{0, 0}};
+bool PairDepth2::Impl::descend(Accept&& accept, Leaf&& leaf, PairQueryStats* stats, DescentStack& stack) const {
+  stack.assign(1, {0, 0});
   while (!stack.empty()) {
     auto [a, b] = stack.back();
     stack.pop_back();

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "nonconvex2/nfp_impl.hpp"
+#include "nfp_shapes.hpp"
 #include "polygon2/shapes.hpp"
 #include "test_scale.hpp"
 
@@ -22,6 +23,7 @@ namespace {
 using pendepth::Polygon;
 using pendepth::Vec2;
 namespace nc = pendepth::nonconvex2;
+using nonconvex2_test::star;
 
 struct Counts {
   std::size_t pairs = 0, candidates = 0, pieces = 0, points = 0;
@@ -51,22 +53,8 @@ void same_pieces(const Polygon& P, const Polygon& Q, const std::string& what) {
   counts().pieces += ref.size();
 }
 
-Polygon star(std::mt19937_64& rng, int n, double rmin, double rmax, bool grid) {
-  for (;;) {
-    try {
-      return Polygon::simple(polygon2_test::star_ring(rng, n, Vec2(0, 0), rmin, rmax, grid), "star");
-    } catch (const pendepth::InvalidInput&) {
-    }
-  }
-}
-
 Polygon moved(const Polygon& S, const Vec2& o, double scale) {
-  std::vector<std::vector<Vec2>> rings;
-  for (std::size_t k = 0; k < S.ring_count(); ++k) {
-    rings.emplace_back();
-    for (const Vec2& p : S.ring(k)) rings.back().push_back(p * scale + o);
-  }
-  return Polygon(rings, S.name());
+  return nonconvex2_test::mapped(S, [&](const Vec2& p) { return Vec2(p * scale + o); });
 }
 
 // Every edge split at its midpoint (exact for grid coordinates): straight vertices everywhere,
@@ -207,15 +195,10 @@ TEST(NfpClassify, ExactFitsSlitsAndPoints) {
 
 TEST(NfpClassify, NestingInstances) {
   for (const char* name : {"albano", "shirts", "trousers"}) {
-    auto pieces = polygon2_test::nesting_pieces(std::string(name) + ".json");
-    ASSERT_FALSE(pieces.empty()) << name;
-    std::vector<Polygon> polys;
-    for (std::size_t k = 0; k < pieces.size(); ++k) {
-      if (pieces[k].size() > 1 && pieces[k].front() == pieces[k].back()) pieces[k].pop_back();  // closing vertex
-      polys.push_back(Polygon::simple(pieces[k], std::string(name) + " " + std::to_string(k)));
-    }
-    for (std::size_t i = 0; i < polys.size(); ++i)
-      for (std::size_t j = 0; j < polys.size(); ++j) same_pieces(polys[i], polys[j], polys[i].name() + " / " + polys[j].name());
+    const auto polys = nonconvex2_test::instance(std::string(name) + ".json");
+    ASSERT_FALSE(polys.empty()) << name;
+    for (const Polygon& P : polys)
+      for (const Polygon& Q : polys) same_pieces(P, Q, P.name() + " / " + Q.name());
   }
   const Counts& c = counts();
   std::cout << "[nfp classify] pairs " << c.pairs << ", candidates " << c.candidates << ", pieces " << c.pieces << " (zero-length "
