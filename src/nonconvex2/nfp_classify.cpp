@@ -47,10 +47,28 @@ const Param kZero{Param::Zero, {}, 0}, kOne{Param::One, {}, 0};
 constexpr std::uint32_t kMaxSplits = 256;
 const Vec2 kO(0, 0);
 
+// One ring and no right turn (straight vertices allowed): a simple polygon that is convex.
+bool convex_shape(const Polygon& S) {
+  if (S.hole_count() != 0) return false;
+  const auto V = S.vertices();
+  for (std::size_t g = 0; g < S.size(); ++g) {
+    const std::size_t h = S.next(g);
+    if (predicates::cross_edges(V[g], V[h], V[h], V[S.next(h)]) < 0) return false;
+  }
+  return true;
+}
+
 // A split parameter on a candidate, its value v and a bound on |v − μ|.
+// `key`: when the split point is known to be a sum vertex (P vertex p, Q vertex q), (p << 32) | q,
+// else kNoKey. Equal keys are the same point (symbolic tie, no arithmetic), and the vertex's
+// coverage is looked up once per pair.
+constexpr std::uint64_t kNoKey = ~std::uint64_t(0);
+std::uint64_t vertex_key(std::uint32_t p, std::uint32_t q) { return (std::uint64_t(p) << 32) | q; }
+
 struct Split {
   Param p;
   double v, err;
+  std::uint64_t key = kNoKey;
 };
 
 Split split(const Param& p, const Ray& E) {
@@ -82,18 +100,6 @@ bool origin_on_line(const Ray& a, const Ray& b) {
            auto y = L(b.o1.y()) + L(b.o2.y()) - L(a.o1.y()) - L(a.o2.y());
            return ray_dx(a, L) * y - ray_dy(a, L) * x;
          }) == 0;
-}
-
-// The sum vertex at end k of a and the one at end l of b have equal coordinates (exact).
-bool same_vertex(const Ray& a, int k, const Ray& b, int l) {
-  auto coord = [](const Ray& r, int end, int axis, auto L) {
-    // End 0: o1 + o2; end 1: o1 + o2 + (a1 − b1) (a2 = b2 = 0 for candidates).
-    auto v = L(r.o1[axis]) + L(r.o2[axis]);
-    return end == 0 ? v : v + L(r.a1[axis]) - L(r.b1[axis]);
-  };
-  for (int axis = 0; axis < 2; ++axis)
-    if (exact::exact_sign([&](auto L) { return coord(a, k, axis, L) - coord(b, l, axis, L); }) != 0) return false;
-  return true;
 }
 
 // The six half-planes of T ⊕ B in floating point, ready for the point filter: edge i (0–2: T's,
@@ -263,9 +269,15 @@ struct Classifier {
   std::unordered_map<std::uint64_t, char> vertex_map;
   bool covered(const NfpCandidate& c, const Split& at) {
     const Param p = normalised(at.p, c.E);
-    if (p.kind != Param::Zero && p.kind != Param::One) return covered_point(c, p, at);
-    const bool one = p.kind == Param::One;
-    const std::uint64_t pid = one ? c.E.p1 : c.E.p0, qid = one ? c.E.q1 : c.E.q0;
+    std::uint64_t pid, qid;
+    if (p.kind == Param::Zero || p.kind == Param::One) {
+      const bool one = p.kind == Param::One;
+      pid = one ? c.E.p1 : c.E.p0, qid = one ? c.E.q1 : c.E.q0;
+    } else if (at.key != kNoKey) {
+      pid = at.key >> 32, qid = at.key & 0xffffffffu;
+    } else {
+      return covered_point(c, p, at);
+    }
     const std::uint64_t nq = S.Q.size(), cells = std::uint64_t(S.P.size()) * nq;
     if (cells <= (std::uint64_t(1) << 20)) {
       if (vertex_table.empty()) vertex_table.assign(cells, -1);
@@ -342,7 +354,9 @@ struct Classifier {
       Line l;
       if (!line_through(p, q, c.E, l)) return false;
       const Param pm{Param::Cut, l, 0};
-      found.push_back({ci, split(pm, c.E)});
+      Split sp = split(pm, c.E);
+      sp.key = vertex_key(p, q);
+      found.push_back({ci, sp});
     }
     return true;
   }
@@ -374,10 +388,30 @@ struct Classifier {
       if (non_parallel && shared_end(c.E, d.E)) return;
       if (non_parallel) {
         const Param pc{Param::Cut, d.line, 0}, pd{Param::Cut, c.line, 0};
-        if (compare_params(pc, kZero, c.E, kO) < 0 || compare_params(pc, kOne, c.E, kO) > 0) return;
-        if (compare_params(pd, kZero, d.E, kO) < 0 || compare_params(pd, kOne, d.E, kO) > 0) return;
-        found.push_back({static_cast<std::uint32_t>(i), split(pc, c.E)});
-        found.push_back({static_cast<std::uint32_t>(j), split(pd, d.E)});
+        Split sc = split(pc, c.E), sd = split(pd, d.E);
+        // Where the crossing lies on a closed segment: -1 off it, 0 / 1 at that end, 2 strictly
+        // inside; certified by the error bounds when clear, else exactly (symbolic ends included).
+        auto where = [](const Split& x, const Param& p, const Ray& E) {
+          if (x.v - x.err > 0 && x.v + x.err < 1) return 2;
+          if (x.v + x.err < 0 || x.v - x.err > 1) return -1;
+          const int s0 = compare_params(p, kZero, E, kO);
+          if (s0 <= 0) return s0 == 0 ? 0 : -1;
+          const int s1 = compare_params(p, kOne, E, kO);
+          return s1 < 0 ? 2 : s1 == 0 ? 1 : -1;
+        };
+        const int wc = where(sc, pc, c.E);
+        if (wc < 0) return;
+        const int wd = where(sd, pd, d.E);
+        if (wd < 0) return;
+        // A crossing at an end of c splits nothing there; at an end of d it is d's sum vertex.
+        if (wc == 2) {
+          if (wd < 2) sc.key = wd == 0 ? vertex_key(d.E.p0, d.E.q0) : vertex_key(d.E.p1, d.E.q1);
+          found.push_back({static_cast<std::uint32_t>(i), sc});
+        }
+        if (wd == 2) {
+          if (wc < 2) sd.key = wc == 0 ? vertex_key(c.E.p0, c.E.q0) : vertex_key(c.E.p1, c.E.q1);
+          found.push_back({static_cast<std::uint32_t>(j), sd});
+        }
       } else if (origin_on_line(c.E, d.E)) {
         if (!collinear_ends(c, d, static_cast<std::uint32_t>(i), found)) reference[i] = 1;
         if (!collinear_ends(d, c, static_cast<std::uint32_t>(j), found)) reference[j] = 1;
@@ -436,8 +470,8 @@ struct Classifier {
       sp.clear();
       for (std::uint32_t f = first[k]; f < first[k + 1]; ++f) sp.push_back(*grouped[f]);
       const bool whole = sp.empty();  // nothing meets c inside: one part, sampled at μ = 1/2
-      sp.push_back({kZero, 0, 0});
-      sp.push_back({kOne, 1, 0});
+      sp.push_back({kZero, 0, 0, vertex_key(c.E.p0, c.E.q0)});
+      sp.push_back({kOne, 1, 0, vertex_key(c.E.p1, c.E.q1)});
       if (!whole) {
         // Exact order; among equal parameters the ends 0 and 1 first (symbolic sum vertices), so
         // the kept representative is the cheapest one.
@@ -445,6 +479,7 @@ struct Classifier {
         auto cmp = [&](const Split& x, const Split& y) {
           if (x.v + x.err < y.v - y.err) return -1;
           if (y.v + y.err < x.v - x.err) return 1;
+          if (x.key != kNoKey && x.key == y.key) return 0;
           return compare_params(x.p, y.p, c.E, kO);
         };
         auto rank = [](const Split& x) { return x.p.kind == Param::Cut ? 1 : 0; };
@@ -459,7 +494,10 @@ struct Classifier {
       bool sampled = true;
       for (std::size_t i = 0; i + 1 < V && sampled; ++i) {
         const Split mid = split(Param{Param::Value, {}, 0.5 * (sp[i].v + sp[i + 1].v)}, c.E);
-        if (!whole && !(compare_params(sp[i].p, mid.p, c.E, kO) < 0 && compare_params(mid.p, sp[i + 1].p, c.E, kO) < 0)) sampled = false;
+        // μ strictly between the two ends: by their error bounds when clear, else exactly.
+        const bool certified = whole || (sp[i].v + sp[i].err < mid.v && mid.v < sp[i + 1].v - sp[i + 1].err) ||
+                               (compare_params(sp[i].p, mid.p, c.E, kO) < 0 && compare_params(mid.p, sp[i + 1].p, c.E, kO) < 0);
+        if (!certified) sampled = false;
         else part[i] = !covered(c, mid);
       }
       if (!sampled) {
@@ -485,6 +523,18 @@ struct Classifier {
 }  // namespace
 
 void nfp_classify(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& cands, std::vector<NfpPiece>& out) {
+  // Two convex shapes: a candidate at a strictly convex vertex is a whole edge of the convex sum
+  // P ⊕ (−Q) (the vertex's angle, hence the whole convex shape, lies on the closed outer side of
+  // the edge: the vertex is extreme against its outer normal), so nothing covers it and its piece
+  // is [0, 1], as the reference cutting finds. At a straight vertex the candidate rule checks only
+  // the two collinear edges, not the side of the angle: those few candidates are cut exactly.
+  if (convex_shape(S.P) && convex_shape(S.Q)) {
+    for (const NfpCandidate& c : cands) {
+      if (c.strict) out.push_back(make_piece(c, kZero, kOne));
+      else nfp_cut(S, c, out);
+    }
+    return;
+  }
   Classifier(S, cands).run(out);
 }
 

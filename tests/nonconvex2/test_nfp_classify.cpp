@@ -9,6 +9,7 @@
 // offsets, every ordered pair of albano and shirts, trousers pairs. Pinned seeds.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <iostream>
 #include <random>
 #include <string>
@@ -191,6 +192,52 @@ TEST(NfpClassify, ExactFitsSlitsAndPoints) {
               Polygon::simple(std::vector<Vec2>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, "unit"), "closed slot");
   // Q the same shape as a hole of P, in several holes: many exact fits at once.
   same_pieces(Polygon(polygon2_test::holes_grid(3, 2, 1, Vec2(0, 0)), "holes grid"), square, "holes grid");
+}
+
+// Convex hull of random integer points (exact: orient2d), counter-clockwise.
+Polygon convex_hull(std::mt19937_64& rng, int n, int span) {
+  for (;;) {
+    std::vector<Vec2> pts;
+    for (int k = 0; k < n; ++k) pts.emplace_back(double(int(rng() % span)), double(int(rng() % span)));
+    std::sort(pts.begin(), pts.end(), [](const Vec2& a, const Vec2& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+    pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+    std::vector<Vec2> h;
+    for (int pass = 0; pass < 2; ++pass) {
+      const std::size_t base = h.size();
+      for (const Vec2& p : pts) {
+        while (h.size() >= base + 2 && pendepth::predicates::orient2d(h[h.size() - 2], h.back(), p) <= 0) h.pop_back();
+        h.push_back(p);
+      }
+      h.pop_back();
+      std::reverse(pts.begin(), pts.end());
+    }
+    if (h.size() >= 3) return Polygon::simple(h, "hull");
+  }
+}
+
+// Both shapes convex: the classification takes the shortcut (whole candidates at strictly convex
+// vertices, the reference cutting at straight ones). Hulls of grid points (many parallel edges),
+// axis-parallel rectangles, a shape against itself, straight vertices on every edge, offsets.
+TEST(NfpClassify, ConvexPairs) {
+  std::mt19937_64 rng(2026);
+  const std::vector<Vec2> oct{{1, 0}, {2, 0}, {3, 1}, {3, 2}, {2, 3}, {1, 3}, {0, 2}, {0, 1}};
+  const Polygon octagon = Polygon::simple(oct, "octagon");
+  for (int it = 0; it < pendepth_test::scaled(300); ++it) {
+    const Polygon P = convex_hull(rng, 3 + int(rng() % 12), 2 + int(rng() % 9));
+    const Polygon Q = it % 3 == 0 ? P : convex_hull(rng, 3 + int(rng() % 12), 2 + int(rng() % 9));
+    const std::string tag = " " + std::to_string(it);
+    same_pieces(P, Q, "hulls" + tag);
+    same_pieces(subdivided(P), Q, "straight P hull" + tag);
+    same_pieces(P, subdivided(Q), "straight Q hull" + tag);
+    same_pieces(subdivided(P), subdivided(Q), "straight hulls" + tag);
+    same_pieces(moved(P, Vec2(1e6, -3e5), 0.1), moved(Q, Vec2(-2e5, 7e5), 0.1), "moved hulls" + tag);
+    const double w = 1 + double(rng() % 5), h = 1 + double(rng() % 5);
+    const std::vector<Vec2> rect{{0, 0}, {w, 0}, {w, h}, {0, h}};
+    const Polygon R = Polygon::simple(rect, "rectangle");
+    same_pieces(R, P, "rectangle / hull" + tag);
+    same_pieces(subdivided(R), octagon, "straight rectangle / octagon" + tag);
+    same_pieces(octagon, subdivided(R), "octagon / straight rectangle" + tag);
+  }
 }
 
 TEST(NfpClassify, NestingInstances) {
