@@ -249,8 +249,11 @@ struct Classifier {
   bool in_open_sum(const Tri& T, const Tri& B, const NfpCandidate& c, const Param& p, int den_sign) const {
     const Sum F = make_sum(T, B);
     const Ray& E = c.E;
+    // Symbolic first: c runs along an edge of F, or the point (a crossing with p's line) lies on
+    // one: on ∂F, not inside.
+    for (const Line& e : F.e)
+      if (same_line(e, c.line) || (p.kind == Param::Cut && same_line(e, p.line))) return false;
     for (const Line& e : F.e) {
-      if (same_line(e, c.line)) return false;  // c runs along this edge: on ∂F, not inside
       const int s = exact::exact_sign([&](auto L) {
         auto [n, dd] = param_nd(p, E, kO, L);
         auto x = (L(E.o1.x()) + L(E.o2.x()) - L(e.c1.x()) - L(e.c2.x())) * dd + n * ray_dx(E, L);
