@@ -269,30 +269,25 @@ struct Classifier {
   // vertices (the ends of most parts) are looked up once: each ends two or more candidates.
   // (A table over all (P, Q) vertex pairs when small, else a hash map.)
   std::vector<signed char> vertex_table;
-  std::unordered_map<std::uint64_t, char> vertex_map;
-  bool covered(const NfpCandidate& c, const Split& at) {
-    const Param p = normalised(at.p, c.E);
-    std::uint64_t pid, qid;
-    if (p.kind == Param::Zero || p.kind == Param::One) {
-      const bool one = p.kind == Param::One;
-      pid = one ? c.E.p1 : c.E.p0, qid = one ? c.E.q1 : c.E.q0;
-    } else if (at.key != kNoKey) {
-      pid = at.key >> 32, qid = at.key & 0xffffffffu;
-    } else {
-      return covered_point(c, p, at);
-    }
+  std::unordered_map<std::uint64_t, signed char> vertex_map;
+  // The known coverage of sum vertex `key`: -1 unknown, 0 not in O, 1 in O.
+  signed char& vertex_state(std::uint64_t key) {
     const std::uint64_t nq = S.Q.size(), cells = std::uint64_t(S.P.size()) * nq;
     if (cells <= (std::uint64_t(1) << 20)) {
       if (vertex_table.empty()) vertex_table.assign(cells, -1);
-      signed char& v = vertex_table[pid * nq + qid];
-      if (v < 0) v = covered_point(c, p, at);
-      return v;
+      return vertex_table[(key >> 32) * nq + (key & 0xffffffffu)];
     }
-    const auto it = vertex_map.find((pid << 32) | qid);
-    if (it != vertex_map.end()) return it->second;
-    const bool in = covered_point(c, p, at);
-    vertex_map.emplace((pid << 32) | qid, in);
-    return in;
+    return vertex_map.try_emplace(key, -1).first->second;
+  }
+  bool covered(const NfpCandidate& c, const Split& at) {
+    const Param p = normalised(at.p, c.E);
+    std::uint64_t key = at.key;
+    if (p.kind == Param::Zero) key = vertex_key(c.E.p0, c.E.q0);
+    else if (p.kind == Param::One) key = vertex_key(c.E.p1, c.E.q1);
+    if (key == kNoKey) return covered_point(c, p, at);
+    signed char& v = vertex_state(key);
+    if (v < 0) v = covered_point(c, p, at);
+    return v;
   }
   bool covered_point(const NfpCandidate& c, const Param& p, const Split& at) {
     const int den_sign = p.kind == Param::Cut ? exact::exact_sign([&](auto L) { return line_den(p.line, c.E, L); }) : 1;
@@ -496,12 +491,21 @@ struct Classifier {
       part.assign(V - 1, 0);
       bool sampled = true;
       for (std::size_t i = 0; i + 1 < V && sampled; ++i) {
+        // An end known to be in O (open): the part next to it is in O too, no test. A part on ∂O
+        // (closed) has its ends on ∂O: remembered for the other candidates through them.
+        if ((sp[i].key != kNoKey && vertex_state(sp[i].key) == 1) || (sp[i + 1].key != kNoKey && vertex_state(sp[i + 1].key) == 1)) {
+          part[i] = 0;
+          continue;
+        }
         const Split mid = split(Param{Param::Value, {}, 0.5 * (sp[i].v + sp[i + 1].v)}, c.E);
         // μ strictly between the two ends: by their error bounds when clear, else exactly.
         const bool certified = whole || (sp[i].v + sp[i].err < mid.v && mid.v < sp[i + 1].v - sp[i + 1].err) ||
                                (compare_params(sp[i].p, mid.p, c.E, kO) < 0 && compare_params(mid.p, sp[i + 1].p, c.E, kO) < 0);
         if (!certified) sampled = false;
-        else part[i] = !covered(c, mid);
+        else if ((part[i] = !covered(c, mid))) {
+          if (sp[i].key != kNoKey) vertex_state(sp[i].key) = 0;
+          if (sp[i + 1].key != kNoKey) vertex_state(sp[i + 1].key) = 0;
+        }
       }
       if (!sampled) {
         nfp_cut(S, c, out);
