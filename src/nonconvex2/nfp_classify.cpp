@@ -289,13 +289,18 @@ struct Classifier {
     if (v < 0) v = covered_point(c, p, at);
     return v;
   }
+  // Two passes: the floating filters over every sum whose box holds the point, stopping at one
+  // that certainly contains it; only then the exact test of the undecided ones (most of them
+  // have the point on their boundary, as the point lies on candidates, and are not needed when
+  // another sum contains it).
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> undecided;
   bool covered_point(const NfpCandidate& c, const Param& p, const Split& at) {
-    const int den_sign = p.kind == Param::Cut ? exact::exact_sign([&](auto L) { return line_den(p.line, c.E, L); }) : 1;
     // The point to within tol: A and B within a few ulps of the exact ends, v within err of μ.
     const Vec2 m = c.A + at.v * (c.B - c.A);
     const double tol = (c.A.cwiseAbs().maxCoeff() + c.B.cwiseAbs().maxCoeff()) * 0x1p-40 + 2 * at.err * (c.B - c.A).cwiseAbs().maxCoeff() + 0x1p-1000;
     const Vec2 mlo = m.array() - tol, mhi = m.array() + tol;
     HalfPlanes scratch;
+    undecided.clear();
     auto leaf = [&](std::uint32_t i, std::uint32_t j, HalfPlanes* h) {
       if (c.strict && own_edge(S.tp[i], S.tb[j], c.E)) return false;
       if (!h) {
@@ -303,19 +308,26 @@ struct Classifier {
         h = &scratch;
       }
       const int f = sum_filter(S.tp[i], S.tb[j], *h, m, tol, c.E);
-      return f > 0 || (f == 0 && in_open_sum(S.tp[i], S.tb[j], c, p, den_sign));
+      if (f == 0) undecided.push_back({i, j});
+      return f > 0;
     };
+    bool in = false;
     if (!flat.empty()) {  // few pairs: a scan of their boxes beats the dual descent
       for (FlatPair& f : flat) {
         if (f.lo.x() > mhi.x() || f.hi.x() < mlo.x() || f.lo.y() > mhi.y() || f.hi.y() < mlo.y()) continue;
         if (!f.ready) half_planes(S.tp[f.i], S.tb[f.j], f.h), f.ready = true;
-        if (leaf(f.i, f.j, &f.h)) return true;
+        if ((in = leaf(f.i, f.j, &f.h))) break;
       }
-      return false;
+    } else {
+      in = S.descend(
+          [&](const Vec2& lo, const Vec2& hi) { return !(lo.x() > mhi.x() || hi.x() < mlo.x() || lo.y() > mhi.y() || hi.y() < mlo.y()); },
+          [&](std::uint32_t i, std::uint32_t j) { return leaf(i, j, nullptr); }, nullptr, stack);
     }
-    return S.descend(
-        [&](const Vec2& lo, const Vec2& hi) { return !(lo.x() > mhi.x() || hi.x() < mlo.x() || lo.y() > mhi.y() || hi.y() < mlo.y()); },
-        [&](std::uint32_t i, std::uint32_t j) { return leaf(i, j, nullptr); }, nullptr, stack);
+    if (in || undecided.empty()) return in;
+    const int den_sign = p.kind == Param::Cut ? exact::exact_sign([&](auto L) { return line_den(p.line, c.E, L); }) : 1;
+    for (const auto& [i, j] : undecided)
+      if (in_open_sum(S.tp[i], S.tb[j], c, p, den_sign)) return true;
+    return false;
   }
 
   // Adds to `sp` the ends of candidate d lying strictly inside the collinear candidate c.
