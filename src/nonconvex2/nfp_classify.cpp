@@ -212,7 +212,8 @@ struct Classifier {
       }
     }
   }
-  static int sum_filter(const Tri& T, const Tri& B, const HalfPlanes& h, const Vec2& m, double tol, const Ray& E) {
+  // `edges`: decide edges parallel to c exactly (else such an edge leaves the result undecided).
+  static int sum_filter(const Tri& T, const Tri& B, const HalfPlanes& h, const Vec2& m, double tol, const Ray& E, bool edges) {
     const double S = std::max(h.smax, m.cwiseAbs().maxCoeff());
     const double slack = 2 * (tol + 16 * S * 0x1p-53);
     bool sure = true;
@@ -220,6 +221,10 @@ struct Classifier {
       const double val = h.dx[i] * m.y() - h.dy[i] * m.x() - h.c[i], err = h.e[i] * slack;
       if (val < -err) return -1;
       if (val > err) continue;
+      if (!edges) {
+        sure = false;
+        continue;
+      }
       const int u = i < 3 ? undecided_edge(T, i, B, E) : undecided_edge(B, i - 3, T, E);
       if (u < 0) return -1;
       if (u == 0) sure = false;
@@ -307,7 +312,7 @@ struct Classifier {
         half_planes(S.tp[i], S.tb[j], scratch);
         h = &scratch;
       }
-      const int f = sum_filter(S.tp[i], S.tb[j], *h, m, tol, c.E);
+      const int f = sum_filter(S.tp[i], S.tb[j], *h, m, tol, c.E, false);
       if (f == 0) undecided.push_back({i, j});
       return f > 0;
     };
@@ -325,8 +330,12 @@ struct Classifier {
     }
     if (in || undecided.empty()) return in;
     const int den_sign = p.kind == Param::Cut ? exact::exact_sign([&](auto L) { return line_den(p.line, c.E, L); }) : 1;
-    for (const auto& [i, j] : undecided)
-      if (in_open_sum(S.tp[i], S.tb[j], c, p, den_sign)) return true;
+    // Second pass: the undecided sums, their parallel edges exactly, then the exact test.
+    for (const auto& [i, j] : undecided) {
+      half_planes(S.tp[i], S.tb[j], scratch);
+      const int f = sum_filter(S.tp[i], S.tb[j], scratch, m, tol, c.E, true);
+      if (f > 0 || (f == 0 && in_open_sum(S.tp[i], S.tb[j], c, p, den_sign))) return true;
+    }
     return false;
   }
 
