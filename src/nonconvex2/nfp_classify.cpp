@@ -47,17 +47,6 @@ const Param kZero{Param::Zero, {}, 0}, kOne{Param::One, {}, 0};
 constexpr std::uint32_t kMaxSplits = 256;
 const Vec2 kO(0, 0);
 
-// One ring and no right turn (straight vertices allowed): a simple polygon that is convex.
-bool convex_shape(const Polygon& S) {
-  if (S.hole_count() != 0) return false;
-  const auto V = S.vertices();
-  for (std::size_t g = 0; g < S.size(); ++g) {
-    const std::size_t h = S.next(g);
-    if (predicates::cross_edges(V[g], V[h], V[h], V[S.next(h)]) < 0) return false;
-  }
-  return true;
-}
-
 // A split parameter on a candidate, its value v and a bound on |v − μ|.
 // `key`: when the split point is known to be a sum vertex (P vertex p, Q vertex q), (p << 32) | q,
 // else kNoKey. Equal keys are the same point (symbolic tie, no arithmetic), and the vertex's
@@ -549,6 +538,16 @@ struct Classifier {
 };
 
 }  // namespace
+
+bool convex_shape(const Polygon& S) {
+  if (S.hole_count() != 0) return false;
+  const auto V = S.vertices();
+  for (std::size_t g = 0; g < S.size(); ++g) {
+    const std::size_t h = S.next(g);
+    if (predicates::cross_edges(V[g], V[h], V[h], V[S.next(h)]) < 0) return false;
+  }
+  return true;
+}
 
 void nfp_classify(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& cands, std::vector<NfpPiece>& out) {
   // Two convex shapes: a candidate at a strictly convex vertex is a whole edge of the convex sum
