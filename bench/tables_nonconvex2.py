@@ -19,7 +19,9 @@ ns, counter = res.ns, res.counter
 
 ORDER = {"albano": 0, "shirts": 1, "trousers": 2, "star": 3}
 # name = what/impl/case/n/m
-cases = sorted({tuple(n.split("/")[2:5]) for n in runs}, key=lambda c: (ORDER.get(c[0], 9), int(c[1]), int(c[2])))
+all_cases = sorted({tuple(n.split("/")[2:5]) for n in runs}, key=lambda c: (ORDER.get(c[0].split("-")[0], 9), int(c[1]), int(c[2])))
+cases = [c for c in all_cases if "-" not in c[0]]
+split_cases = [c for c in all_cases if "-" in c[0]]
 
 
 def per_pair(name):
@@ -51,6 +53,18 @@ for case, n, m in cases:
              f"| {fmt_i(counter(f'build/cgal/{t}', 'sum_vertices'))} |")
 L.append("")
 L.append("Build ratios: peer time / pendepth time (> 1: pendepth faster). Nesting pieces: n, m = the largest piece sizes.")
+if split_cases:
+    L.append("")
+    L.append("| pairs of | convex pieces | pairs | build pendepth NFP | CGAL | ratio |")
+    L.append("|---|---|---:|---:|---:|---:|")
+    for case, n, m in split_cases:
+        t = f"{case}/{n}/{m}"
+        bp, bc = per_pair(f"build/pendepth/{t}"), per_pair(f"build/cgal/{t}")
+        inst, kind = case.split("-", 1)
+        label = {"convex": "both", "mixed": "one", "nonconvex": "neither"}.get(kind, kind)
+        L.append(f"| {inst} | {label} | {fmt_i(counter(f'build/pendepth/{t}', 'pairs'))} | {fmt_t(bp)} | {fmt_t(bc)} | {fmt_r(bc, bp)} |")
+    L.append("")
+    L.append("Build by convexity of the pair: every ordered pair of each instance, split by how many of its two pieces are convex.")
 L.append("")
 L.append("| case | n | m | σ NFP | σ PairDepth2 | σ CGAL scan | ratio | σ Clipper scan | ratio | σ_d NFP | σ_d PairDepth2 | σ_d CGAL scan | ratio | σ_d Clipper scan | ratio |")
 L.append("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
