@@ -13,9 +13,14 @@
 //     an input edge at that sum vertex, not parallel to c, so every parameter stays symbolic).
 //  2. Per candidate, the split parameters sorted exactly (compare_params) and merged when equal.
 //  3. Each open part: a double μ midway between its ends' approximations, certified strictly
-//     inside by two exact comparisons, and the point c(μ) tested against the open pair sums whose
-//     boxes contain it (exact signs of degree 3). Each split point not closing a boundary part is
-//     tested itself (an exact fit: an isolated point of ∂O).
+//     inside (by the ends' error bounds, else two exact comparisons), and the point c(μ) tested
+//     against the open pair sums whose boxes contain it (exact signs of degree 3). Each split point
+//     not closing a boundary part is tested itself (an exact fit: an isolated point of ∂O).
+//     Split points that are sum vertices (the ends of c, a crossing at an end of the other
+//     candidate, a collinear neighbour's end) carry the vertex as a key: equal keys are equal
+//     points without arithmetic, and each vertex's membership in O is known once per pair. O is
+//     open and ∂O closed, so a part next to a vertex known in O is in O (no test), and the ends of
+//     a part found on ∂O are on ∂O (recorded for the other candidates through them).
 //  4. Maximal runs of boundary parts and points are the pieces: the same closed maximal uncovered
 //     intervals as the reference cutting nfp_cut.cpp, which is used instead for a candidate whose
 //     parts cannot be sampled (a part too short for a double between its ends) or whose
@@ -26,7 +31,12 @@
 // point, a sum with c's own line as an edge (by vertex ids, strictly convex vertices only) is
 // skipped; a floating separating-axis test on the sum's six half-planes (cached per triangle pair
 // when there are ≤ 256 pairs, which are then scanned flat instead of the dual descent); an edge
-// parallel to c is decided by degree-2 signs (the point's parameter drops out).
+// parallel to c is decided by degree-2 signs (the point's parameter drops out). A point test runs
+// the floating filters over all its sums first and stops at one that surely holds the point; the
+// exact signs (parallel edges, then degree 3) only follow for the undecided sums when none does —
+// most of those have the point on their boundary, as candidates are edges of sums.
+// Two convex shapes: every candidate at a strictly convex vertex is a whole edge of the convex
+// sum and is kept whole without a test (nfp_classify below).
 // Cost: candidate pairs by boxes (all pairs for K ≤ 64, else a box hierarchy), O(1) exact tests per
 // meeting pair; per part or point the pair sums whose boxes hold the point, O(1) tests each. For
 // X box-overlapping pairs: O(K log K + X + (K + X)·v), v sums per point (~5 on nesting pieces,

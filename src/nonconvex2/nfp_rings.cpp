@@ -5,6 +5,11 @@
 // N.points; every coordinate is the exact vertex rounded to nearest (ties: the neighbour nearer
 // zero). Throws std::logic_error on pieces that do not close into rings (internal inconsistency).
 //
+// Two convex shapes (nfp_export_convex): the pieces are whole candidates, edges of the convex sum;
+// sorted by the exact angle of their direction (an input edge vector) and grouped by equal angle,
+// they give the ring directly (one vertex per group, its lowest start along the direction), in
+// O(N log N) static-filter angle comparisons, started where the general linking below would start
+// it (the lowest line in its order), so the output is the same. Otherwise:
 // Every piece end is an exact point: a sum vertex (P vertex + −Q vertex) or o + μ·dir on the
 // piece's ray with μ = num/den the crossing with a cut line (pair_sums.hpp: num, den of degree 2
 // in the input doubles, so a coordinate is a degree-3 polynomial over a degree-2 one).
