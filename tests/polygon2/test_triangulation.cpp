@@ -196,8 +196,9 @@ TEST_F(Triangulation, StraightVertices) {
       {"comb", polygon2_test::comb_ring(3, 2, 3, 4, 1)},
       {"staircase", {{0, 0}, {3, 0}, {3, 1}, {2, 1}, {2, 2}, {1, 2}, {1, 3}, {0, 3}}},
   };
+  const std::size_t shifts = pendepth_test::scaled(16);
   for (const auto& [name, ring] : shapes)
-    for (int k = 1; k <= 5 && ring.size() * k <= kEarMax + 8; ++k) check_ring(subdivide(ring, k), name + " /" + std::to_string(k));
+    for (int k = 1; k <= 5 && ring.size() * k <= kEarMax + 8; ++k) check_ring(subdivide(ring, k), name + " /" + std::to_string(k), shifts);
   // Lattice boundaries: every integer point of the boundary of a w x h rectangle is a vertex.
   for (int w = 1; w <= 8; ++w)
     for (int h = 1; h <= 8; ++h) {
@@ -206,15 +207,15 @@ TEST_F(Triangulation, StraightVertices) {
       for (int y = 0; y < h; ++y) r.push_back({double(w), double(y)});
       for (int x = w; x > 0; --x) r.push_back({double(x), double(h)});
       for (int y = h; y > 0; --y) r.push_back({0, double(y)});
-      check_ring(r, "lattice " + std::to_string(w) + "x" + std::to_string(h), 4);
+      check_ring(r, "lattice " + std::to_string(w) + "x" + std::to_string(h), pendepth_test::scaled(4));
     }
   // A triangle whose every side carries many straight vertices: only 3 possible tips.
   Ring tri;
   for (int i = 0; i < 10; ++i) tri.push_back({double(i), 0});
   for (int i = 0; i < 10; ++i) tri.push_back({double(10 - i), double(i)});
   for (int i = 0; i < 10; ++i) tri.push_back({0, double(10 - i)});
-  check_ring(tri, "subdivided triangle");
-  report("StraightVertices", 500);
+  check_ring(tri, "subdivided triangle", shifts);
+  report("StraightVertices", pendepth_test::scaled(500));
 }
 
 // Reflex vertices exactly on the diagonal u-w of a convex vertex (the ear must be refused: a
