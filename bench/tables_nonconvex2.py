@@ -21,7 +21,9 @@ ORDER = {"albano": 0, "shirts": 1, "trousers": 2, "star": 3}
 # name = what/impl/case/n/m
 all_cases = sorted({tuple(n.split("/")[2:5]) for n in runs}, key=lambda c: (ORDER.get(c[0].split("-")[0], 9), int(c[1]), int(c[2])))
 cases = [c for c in all_cases if "-" not in c[0]]
-split_cases = [c for c in all_cases if "-" in c[0]]
+KIND = {"convex": 0, "mixed": 1, "nonconvex": 2}
+split_cases = sorted([c for c in all_cases if "-" in c[0]],
+                     key=lambda c: (ORDER.get(c[0].split("-")[0], 9), KIND.get(c[0].split("-", 1)[1], 9)))
 
 
 def per_pair(name):
