@@ -305,11 +305,20 @@ struct Classifier {
     const Vec2 mlo = m.array() - tol, mhi = m.array() + tol;
     HalfPlanes scratch;
     undecided.clear();
+    int den = 2;  // sign of the cut's denominator, computed on first use
+    auto den_sign = [&] {
+      if (den == 2) den = p.kind == Param::Cut ? exact::exact_sign([&](auto L) { return line_den(p.line, c.E, L); }) : 1;
+      return den;
+    };
     auto leaf = [&](std::uint32_t i, std::uint32_t j, HalfPlanes* h) {
       if (c.strict && own_edge(S.tp[i], S.tb[j], c.E)) return false;
       if (!h) {
         half_planes(S.tp[i], S.tb[j], scratch);
         h = &scratch;
+      }
+      if (flat.empty()) {  // many sums per point (large shapes): exact at once, stop early
+        const int f = sum_filter(S.tp[i], S.tb[j], *h, m, tol, c.E, true);
+        return f > 0 || (f == 0 && in_open_sum(S.tp[i], S.tb[j], c, p, den_sign()));
       }
       const int f = sum_filter(S.tp[i], S.tb[j], *h, m, tol, c.E, false);
       if (f == 0) undecided.push_back({i, j});
@@ -328,12 +337,11 @@ struct Classifier {
           [&](std::uint32_t i, std::uint32_t j) { return leaf(i, j, nullptr); }, nullptr, stack);
     }
     if (in || undecided.empty()) return in;
-    const int den_sign = p.kind == Param::Cut ? exact::exact_sign([&](auto L) { return line_den(p.line, c.E, L); }) : 1;
     // Second pass: the undecided sums, their parallel edges exactly, then the exact test.
     for (const auto& [i, j] : undecided) {
       half_planes(S.tp[i], S.tb[j], scratch);
       const int f = sum_filter(S.tp[i], S.tb[j], scratch, m, tol, c.E, true);
-      if (f > 0 || (f == 0 && in_open_sum(S.tp[i], S.tb[j], c, p, den_sign))) return true;
+      if (f > 0 || (f == 0 && in_open_sum(S.tp[i], S.tb[j], c, p, den_sign()))) return true;
     }
     return false;
   }
