@@ -26,6 +26,8 @@
 //                       iteration of a build builds every pair of the instance; the counter
 //                       `pairs` gives the count, and the tables divide by it (per-pair times).
 //                       Queries cycle through the pairs. n, m: the largest piece sizes.
+//   <instance>-<kind>   build only: every ordered pair of the instance in which both pieces are
+//                       convex (kind convex), one is (mixed) or neither is (nonconvex).
 //   star/<n>/<m>        random star-shaped P (radii [60, 100]) and Q (radii [6, 10]), n = m.
 // Queries: kQueries placements t = p − centroid(Q) with p uniform in P (nearly all overlap) and
 // random unit directions, generated outside the timed loops from a fixed seed. Before timing,
@@ -256,6 +258,30 @@ Case& nesting_case(const std::string& instance) {
   return *slot;
 }
 
+// Every ordered pair of an instance whose number of convex pieces is `convex` (2: both, 1: one,
+// 0: neither), for the build by convexity; no queries. Convex: no right turn (exact).
+bool convex_piece(const std::vector<Vec2>& r) {
+  const Polygon P = Polygon::simple(r, "piece");
+  const auto V = P.vertices();
+  for (std::size_t g = 0; g < P.size(); ++g)
+    if (pendepth::predicates::orient2d(V[g], V[P.next(g)], V[P.next(P.next(g))]) < 0) return false;
+  return true;
+}
+
+Case& nesting_split_case(const std::string& instance, int convex) {
+  auto& slot = cases()["nesting-split/" + instance + "/" + std::to_string(convex)];
+  if (slot) return *slot;
+  slot = std::make_unique<Case>();
+  slot->name = "nesting-split/" + instance;
+  const auto pieces = nesting_pieces(instance);
+  std::vector<int> cv;
+  for (const auto& p : pieces) cv.push_back(convex_piece(p) ? 1 : 0);
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+    for (std::size_t j = 0; j < pieces.size(); ++j)
+      if (cv[i] + cv[j] == convex) slot->add_pair(pieces[i], pieces[j]);
+  return *slot;
+}
+
 Case& star_case(std::size_t n) {
   auto& slot = cases()["star/" + std::to_string(n)];
   if (slot) return *slot;
@@ -417,6 +443,16 @@ int main(int argc, char** argv) {
     register_case(c, instance + "/" + std::to_string(c.n) + "/" + std::to_string(c.m), nfp_budget, budget,
                   clipper_budget, pair_sigma_budget);
   }
+  // The build by convexity of the pair (every ordered pair of each instance): builds only.
+  for (const std::string instance : {"albano", "shirts", "trousers"})
+    for (int convex = 2; convex >= 0; --convex) {
+      Case& c = nesting_split_case(instance, convex);
+      if (c.pairs.empty()) continue;
+      static const char* kind[] = {"nonconvex", "mixed", "convex"};
+      const std::string tag = instance + "-" + kind[convex] + "/" + std::to_string(c.n) + "/" + std::to_string(c.m);
+      benchmark::RegisterBenchmark(("build/pendepth/" + tag).c_str(), BM_build_pendepth, &c)->Unit(benchmark::kMicrosecond);
+      benchmark::RegisterBenchmark(("build/cgal/" + tag).c_str(), BM_build_peer, &c, true)->Unit(benchmark::kMicrosecond);
+    }
   for (std::size_t n : env_sizes("PENDEPTH_BENCH_N", {10, 30, 100, 300})) {
     Case& c = star_case(n);
     register_case(c, "star/" + std::to_string(c.n) + "/" + std::to_string(c.m), nfp_budget, budget, clipper_budget,

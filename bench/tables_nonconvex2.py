@@ -19,7 +19,11 @@ ns, counter = res.ns, res.counter
 
 ORDER = {"albano": 0, "shirts": 1, "trousers": 2, "star": 3}
 # name = what/impl/case/n/m
-cases = sorted({tuple(n.split("/")[2:5]) for n in runs}, key=lambda c: (ORDER.get(c[0], 9), int(c[1]), int(c[2])))
+all_cases = sorted({tuple(n.split("/")[2:5]) for n in runs}, key=lambda c: (ORDER.get(c[0].split("-")[0], 9), int(c[1]), int(c[2])))
+cases = [c for c in all_cases if "-" not in c[0]]
+KIND = {"convex": 0, "mixed": 1, "nonconvex": 2}
+split_cases = sorted([c for c in all_cases if "-" in c[0]],
+                     key=lambda c: (ORDER.get(c[0].split("-")[0], 9), KIND.get(c[0].split("-", 1)[1], 9)))
 
 
 def per_pair(name):
@@ -51,6 +55,30 @@ for case, n, m in cases:
              f"| {fmt_i(counter(f'build/cgal/{t}', 'sum_vertices'))} |")
 L.append("")
 L.append("Build ratios: peer time / pendepth time (> 1: pendepth faster). Nesting pieces: n, m = the largest piece sizes.")
+if split_cases:
+    L.append("")
+    L.append("| pairs of | convex pieces | pairs | build pendepth NFP | CGAL | ratio |")
+    L.append("|---|---|---:|---:|---:|---:|")
+    total = {}  # instance -> [pairs, pendepth time, CGAL time] summed over its kinds
+    for k, (case, n, m) in enumerate(split_cases):
+        t = f"{case}/{n}/{m}"
+        bp, bc = per_pair(f"build/pendepth/{t}"), per_pair(f"build/cgal/{t}")
+        inst, kind = case.split("-", 1)
+        label = {"convex": "both", "mixed": "one", "nonconvex": "neither"}.get(kind, kind)
+        pairs = counter(f"build/pendepth/{t}", "pairs")
+        L.append(f"| {inst} | {label} | {fmt_i(pairs)} | {fmt_t(bp)} | {fmt_t(bc)} | {fmt_r(bc, bp)} |")
+        acc = total.setdefault(inst, [0, 0.0, 0.0])
+        if pairs and bp is not None and bc is not None:
+            acc[0] += pairs
+            acc[1] += bp * pairs
+            acc[2] += bc * pairs
+        if k + 1 == len(split_cases) or split_cases[k + 1][0].split("-")[0] != inst:
+            p, sp, sc = acc
+            if p:
+                L.append(f"| {inst} | **all pairs** | {fmt_i(p)} | {fmt_t(sp / p)} | {fmt_t(sc / p)} | {fmt_r(sc, sp)} |")
+    L.append("")
+    L.append("Build by convexity of the pair: every ordered pair of each instance, split by how many of its two pieces are "
+             "convex; 'all pairs' is the pair-weighted mean of the rows above it.")
 L.append("")
 L.append("| case | n | m | σ NFP | σ PairDepth2 | σ CGAL scan | ratio | σ Clipper scan | ratio | σ_d NFP | σ_d PairDepth2 | σ_d CGAL scan | ratio | σ_d Clipper scan | ratio |")
 L.append("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")

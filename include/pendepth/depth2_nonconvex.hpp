@@ -35,7 +35,8 @@ struct PairQueryStats {
 };
 
 /// Per-pair query object for two simple polygons with holes. Construction triangulates both
-/// (CGAL constrained Delaunay, no Steiner points) and builds a bounding-box hierarchy over each
+/// (exact ear clipping for hole-free shapes of ≤ 32 vertices, CGAL constrained Delaunay otherwise;
+/// no Steiner points) and builds a bounding-box hierarchy over each
 /// triangulation: O(n log n + m log m). The s·r ≤ (n + 2h_P)(m + 2h_Q) pair sums are never stored;
 /// each is rebuilt in O(1) (exact angle merge of 3 + 3 edges) when a query reaches it.
 /// Queries never throw for valid t, d; non-finite t or a zero / non-finite d throw InvalidInput.

@@ -96,7 +96,9 @@ class Polygon {
   /// The next vertex of g's ring in normal-form order: edge g = (g, next(g)) has P's interior
   /// on its left. Global edge index g names that edge.
   std::size_t next(std::size_t g) const {
-    return g + 1 == offset_[ring_of(g) + 1] ? offset_[ring_of(g)] : g + 1;
+    if (offset_.size() == 2) return g + 1 == v_.size() ? 0 : g + 1;  // one ring: no search
+    const std::size_t k = ring_of(g);
+    return g + 1 == offset_[k + 1] ? offset_[k] : g + 1;
   }
   /// Index of global vertex g in its ring as given (closing vertex dropped).
   std::size_t input_index(std::size_t g) const { return input_index_[g]; }

@@ -13,9 +13,14 @@
 //     an input edge at that sum vertex, not parallel to c, so every parameter stays symbolic).
 //  2. Per candidate, the split parameters sorted exactly (compare_params) and merged when equal.
 //  3. Each open part: a double μ midway between its ends' approximations, certified strictly
-//     inside by two exact comparisons, and the point c(μ) tested against the open pair sums whose
-//     boxes contain it (exact signs of degree 3). Each split point not closing a boundary part is
-//     tested itself (an exact fit: an isolated point of ∂O).
+//     inside (by the ends' error bounds, else two exact comparisons), and the point c(μ) tested
+//     against the open pair sums whose boxes contain it (exact signs of degree 3). Each split point
+//     not closing a boundary part is tested itself (an exact fit: an isolated point of ∂O).
+//     Split points that are sum vertices (the ends of c, a crossing at an end of the other
+//     candidate, a collinear neighbour's end) carry the vertex as a key: equal keys are equal
+//     points without arithmetic, and each vertex's membership in O is known once per pair. O is
+//     open and ∂O closed, so a part next to a vertex known in O is in O (no test), and the ends of
+//     a part found on ∂O are on ∂O (recorded for the other candidates through them).
 //  4. Maximal runs of boundary parts and points are the pieces: the same closed maximal uncovered
 //     intervals as the reference cutting nfp_cut.cpp, which is used instead for a candidate whose
 //     parts cannot be sampled (a part too short for a double between its ends) or whose
@@ -26,12 +31,18 @@
 // point, a sum with c's own line as an edge (by vertex ids, strictly convex vertices only) is
 // skipped; a floating separating-axis test on the sum's six half-planes (cached per triangle pair
 // when there are ≤ 256 pairs, which are then scanned flat instead of the dual descent); an edge
-// parallel to c is decided by degree-2 signs (the point's parameter drops out).
+// parallel to c is decided by degree-2 signs (the point's parameter drops out). A point test runs
+// the floating filters over all its sums first and stops at one that surely holds the point; the
+// exact signs (parallel edges, then degree 3) only follow for the undecided sums when none does —
+// most of those have the point on their boundary, as candidates are edges of sums.
+// Two convex shapes: every candidate at a strictly convex vertex is a whole edge of the convex
+// sum and is kept whole without a test (nfp_classify below).
 // Cost: candidate pairs by boxes (all pairs for K ≤ 64, else a box hierarchy), O(1) exact tests per
 // meeting pair; per part or point the pair sums whose boxes hold the point, O(1) tests each. For
 // X box-overlapping pairs: O(K log K + X + (K + X)·v), v sums per point (~5 on nesting pieces,
 // worst O(nm)); a candidate met by more than kMaxSplits others is cut by the reference instead.
-// Measured (callgrind): 131–241 k instructions per nesting pair, 30–35 point tests per pair.
+// Measured (callgrind, every ordered pair of the nesting instances): 31–129 k instructions per
+// pair, ~29 point tests per shirts pair.
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
@@ -48,9 +59,16 @@ constexpr std::uint32_t kMaxSplits = 256;
 const Vec2 kO(0, 0);
 
 // A split parameter on a candidate, its value v and a bound on |v − μ|.
+// `key`: when the split point is known to be a sum vertex (P vertex p, Q vertex q), (p << 32) | q,
+// else kNoKey. Equal keys are the same point (symbolic tie, no arithmetic), and the vertex's
+// coverage is looked up once per pair.
+constexpr std::uint64_t kNoKey = ~std::uint64_t(0);
+std::uint64_t vertex_key(std::uint32_t p, std::uint32_t q) { return (std::uint64_t(p) << 32) | q; }
+
 struct Split {
   Param p;
   double v, err;
+  std::uint64_t key = kNoKey;
 };
 
 Split split(const Param& p, const Ray& E) {
@@ -82,18 +100,6 @@ bool origin_on_line(const Ray& a, const Ray& b) {
            auto y = L(b.o1.y()) + L(b.o2.y()) - L(a.o1.y()) - L(a.o2.y());
            return ray_dx(a, L) * y - ray_dy(a, L) * x;
          }) == 0;
-}
-
-// The sum vertex at end k of a and the one at end l of b have equal coordinates (exact).
-bool same_vertex(const Ray& a, int k, const Ray& b, int l) {
-  auto coord = [](const Ray& r, int end, int axis, auto L) {
-    // End 0: o1 + o2; end 1: o1 + o2 + (a1 − b1) (a2 = b2 = 0 for candidates).
-    auto v = L(r.o1[axis]) + L(r.o2[axis]);
-    return end == 0 ? v : v + L(r.a1[axis]) - L(r.b1[axis]);
-  };
-  for (int axis = 0; axis < 2; ++axis)
-    if (exact::exact_sign([&](auto L) { return coord(a, k, axis, L) - coord(b, l, axis, L); }) != 0) return false;
-  return true;
 }
 
 // The six half-planes of T ⊕ B in floating point, ready for the point filter: edge i (0–2: T's,
@@ -206,7 +212,8 @@ struct Classifier {
       }
     }
   }
-  static int sum_filter(const Tri& T, const Tri& B, const HalfPlanes& h, const Vec2& m, double tol, const Ray& E) {
+  // `edges`: decide edges parallel to c exactly (else such an edge leaves the result undecided).
+  static int sum_filter(const Tri& T, const Tri& B, const HalfPlanes& h, const Vec2& m, double tol, const Ray& E, bool edges) {
     const double S = std::max(h.smax, m.cwiseAbs().maxCoeff());
     const double slack = 2 * (tol + 16 * S * 0x1p-53);
     bool sure = true;
@@ -214,6 +221,10 @@ struct Classifier {
       const double val = h.dx[i] * m.y() - h.dy[i] * m.x() - h.c[i], err = h.e[i] * slack;
       if (val < -err) return -1;
       if (val > err) continue;
+      if (!edges) {
+        sure = false;
+        continue;
+      }
       const int u = i < 3 ? undecided_edge(T, i, B, E) : undecided_edge(B, i - 3, T, E);
       if (u < 0) return -1;
       if (u == 0) sure = false;
@@ -243,8 +254,11 @@ struct Classifier {
   bool in_open_sum(const Tri& T, const Tri& B, const NfpCandidate& c, const Param& p, int den_sign) const {
     const Sum F = make_sum(T, B);
     const Ray& E = c.E;
+    // Symbolic first: c runs along an edge of F, or the point (a crossing with p's line) lies on
+    // one: on ∂F, not inside.
+    for (const Line& e : F.e)
+      if (same_line(e, c.line) || (p.kind == Param::Cut && same_line(e, p.line))) return false;
     for (const Line& e : F.e) {
-      if (same_line(e, c.line)) return false;  // c runs along this edge: on ∂F, not inside
       const int s = exact::exact_sign([&](auto L) {
         auto [n, dd] = param_nd(p, E, kO, L);
         auto x = (L(E.o1.x()) + L(E.o2.x()) - L(e.c1.x()) - L(e.c2.x())) * dd + n * ray_dx(E, L);
@@ -260,52 +274,77 @@ struct Classifier {
   // vertices (the ends of most parts) are looked up once: each ends two or more candidates.
   // (A table over all (P, Q) vertex pairs when small, else a hash map.)
   std::vector<signed char> vertex_table;
-  std::unordered_map<std::uint64_t, char> vertex_map;
-  bool covered(const NfpCandidate& c, const Split& at) {
-    const Param p = normalised(at.p, c.E);
-    if (p.kind != Param::Zero && p.kind != Param::One) return covered_point(c, p, at);
-    const bool one = p.kind == Param::One;
-    const std::uint64_t pid = one ? c.E.p1 : c.E.p0, qid = one ? c.E.q1 : c.E.q0;
+  std::unordered_map<std::uint64_t, signed char> vertex_map;
+  // The known coverage of sum vertex `key`: -1 unknown, 0 not in O, 1 in O.
+  signed char& vertex_state(std::uint64_t key) {
     const std::uint64_t nq = S.Q.size(), cells = std::uint64_t(S.P.size()) * nq;
     if (cells <= (std::uint64_t(1) << 20)) {
       if (vertex_table.empty()) vertex_table.assign(cells, -1);
-      signed char& v = vertex_table[pid * nq + qid];
-      if (v < 0) v = covered_point(c, p, at);
-      return v;
+      return vertex_table[(key >> 32) * nq + (key & 0xffffffffu)];
     }
-    const auto it = vertex_map.find((pid << 32) | qid);
-    if (it != vertex_map.end()) return it->second;
-    const bool in = covered_point(c, p, at);
-    vertex_map.emplace((pid << 32) | qid, in);
-    return in;
+    return vertex_map.try_emplace(key, -1).first->second;
   }
+  bool covered(const NfpCandidate& c, const Split& at) {
+    const Param p = normalised(at.p, c.E);
+    std::uint64_t key = at.key;
+    if (p.kind == Param::Zero) key = vertex_key(c.E.p0, c.E.q0);
+    else if (p.kind == Param::One) key = vertex_key(c.E.p1, c.E.q1);
+    if (key == kNoKey) return covered_point(c, p, at);
+    signed char& v = vertex_state(key);
+    if (v < 0) v = covered_point(c, p, at);
+    return v;
+  }
+  // Two passes: the floating filters over every sum whose box holds the point, stopping at one
+  // that certainly contains it; only then the exact test of the undecided ones (most of them
+  // have the point on their boundary, as the point lies on candidates, and are not needed when
+  // another sum contains it).
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> undecided;
   bool covered_point(const NfpCandidate& c, const Param& p, const Split& at) {
-    const int den_sign = p.kind == Param::Cut ? exact::exact_sign([&](auto L) { return line_den(p.line, c.E, L); }) : 1;
     // The point to within tol: A and B within a few ulps of the exact ends, v within err of μ.
     const Vec2 m = c.A + at.v * (c.B - c.A);
     const double tol = (c.A.cwiseAbs().maxCoeff() + c.B.cwiseAbs().maxCoeff()) * 0x1p-40 + 2 * at.err * (c.B - c.A).cwiseAbs().maxCoeff() + 0x1p-1000;
     const Vec2 mlo = m.array() - tol, mhi = m.array() + tol;
     HalfPlanes scratch;
+    undecided.clear();
+    int den = 2;  // sign of the cut's denominator, computed on first use
+    auto den_sign = [&] {
+      if (den == 2) den = p.kind == Param::Cut ? exact::exact_sign([&](auto L) { return line_den(p.line, c.E, L); }) : 1;
+      return den;
+    };
     auto leaf = [&](std::uint32_t i, std::uint32_t j, HalfPlanes* h) {
       if (c.strict && own_edge(S.tp[i], S.tb[j], c.E)) return false;
       if (!h) {
         half_planes(S.tp[i], S.tb[j], scratch);
         h = &scratch;
       }
-      const int f = sum_filter(S.tp[i], S.tb[j], *h, m, tol, c.E);
-      return f > 0 || (f == 0 && in_open_sum(S.tp[i], S.tb[j], c, p, den_sign));
+      if (flat.empty()) {  // many sums per point (large shapes): exact at once, stop early
+        const int f = sum_filter(S.tp[i], S.tb[j], *h, m, tol, c.E, true);
+        return f > 0 || (f == 0 && in_open_sum(S.tp[i], S.tb[j], c, p, den_sign()));
+      }
+      const int f = sum_filter(S.tp[i], S.tb[j], *h, m, tol, c.E, false);
+      if (f == 0) undecided.push_back({i, j});
+      return f > 0;
     };
+    bool in = false;
     if (!flat.empty()) {  // few pairs: a scan of their boxes beats the dual descent
       for (FlatPair& f : flat) {
         if (f.lo.x() > mhi.x() || f.hi.x() < mlo.x() || f.lo.y() > mhi.y() || f.hi.y() < mlo.y()) continue;
         if (!f.ready) half_planes(S.tp[f.i], S.tb[f.j], f.h), f.ready = true;
-        if (leaf(f.i, f.j, &f.h)) return true;
+        if ((in = leaf(f.i, f.j, &f.h))) break;
       }
-      return false;
+    } else {
+      in = S.descend(
+          [&](const Vec2& lo, const Vec2& hi) { return !(lo.x() > mhi.x() || hi.x() < mlo.x() || lo.y() > mhi.y() || hi.y() < mlo.y()); },
+          [&](std::uint32_t i, std::uint32_t j) { return leaf(i, j, nullptr); }, nullptr, stack);
     }
-    return S.descend(
-        [&](const Vec2& lo, const Vec2& hi) { return !(lo.x() > mhi.x() || hi.x() < mlo.x() || lo.y() > mhi.y() || hi.y() < mlo.y()); },
-        [&](std::uint32_t i, std::uint32_t j) { return leaf(i, j, nullptr); }, nullptr, stack);
+    if (in || undecided.empty()) return in;
+    // Second pass: the undecided sums, their parallel edges exactly, then the exact test.
+    for (const auto& [i, j] : undecided) {
+      half_planes(S.tp[i], S.tb[j], scratch);
+      const int f = sum_filter(S.tp[i], S.tb[j], scratch, m, tol, c.E, true);
+      if (f > 0 || (f == 0 && in_open_sum(S.tp[i], S.tb[j], c, p, den_sign()))) return true;
+    }
+    return false;
   }
 
   // Adds to `sp` the ends of candidate d lying strictly inside the collinear candidate c.
@@ -342,7 +381,9 @@ struct Classifier {
       Line l;
       if (!line_through(p, q, c.E, l)) return false;
       const Param pm{Param::Cut, l, 0};
-      found.push_back({ci, split(pm, c.E)});
+      Split sp = split(pm, c.E);
+      sp.key = vertex_key(p, q);
+      found.push_back({ci, sp});
     }
     return true;
   }
@@ -374,10 +415,30 @@ struct Classifier {
       if (non_parallel && shared_end(c.E, d.E)) return;
       if (non_parallel) {
         const Param pc{Param::Cut, d.line, 0}, pd{Param::Cut, c.line, 0};
-        if (compare_params(pc, kZero, c.E, kO) < 0 || compare_params(pc, kOne, c.E, kO) > 0) return;
-        if (compare_params(pd, kZero, d.E, kO) < 0 || compare_params(pd, kOne, d.E, kO) > 0) return;
-        found.push_back({static_cast<std::uint32_t>(i), split(pc, c.E)});
-        found.push_back({static_cast<std::uint32_t>(j), split(pd, d.E)});
+        Split sc = split(pc, c.E), sd = split(pd, d.E);
+        // Where the crossing lies on a closed segment: -1 off it, 0 / 1 at that end, 2 strictly
+        // inside; certified by the error bounds when clear, else exactly (symbolic ends included).
+        auto where = [](const Split& x, const Param& p, const Ray& E) {
+          if (x.v - x.err > 0 && x.v + x.err < 1) return 2;
+          if (x.v + x.err < 0 || x.v - x.err > 1) return -1;
+          const int s0 = compare_params(p, kZero, E, kO);
+          if (s0 <= 0) return s0 == 0 ? 0 : -1;
+          const int s1 = compare_params(p, kOne, E, kO);
+          return s1 < 0 ? 2 : s1 == 0 ? 1 : -1;
+        };
+        const int wc = where(sc, pc, c.E);
+        if (wc < 0) return;
+        const int wd = where(sd, pd, d.E);
+        if (wd < 0) return;
+        // A crossing at an end of c splits nothing there; at an end of d it is d's sum vertex.
+        if (wc == 2) {
+          if (wd < 2) sc.key = wd == 0 ? vertex_key(d.E.p0, d.E.q0) : vertex_key(d.E.p1, d.E.q1);
+          found.push_back({static_cast<std::uint32_t>(i), sc});
+        }
+        if (wd == 2) {
+          if (wc < 2) sd.key = wc == 0 ? vertex_key(c.E.p0, c.E.q0) : vertex_key(c.E.p1, c.E.q1);
+          found.push_back({static_cast<std::uint32_t>(j), sd});
+        }
       } else if (origin_on_line(c.E, d.E)) {
         if (!collinear_ends(c, d, static_cast<std::uint32_t>(i), found)) reference[i] = 1;
         if (!collinear_ends(d, c, static_cast<std::uint32_t>(j), found)) reference[j] = 1;
@@ -436,8 +497,8 @@ struct Classifier {
       sp.clear();
       for (std::uint32_t f = first[k]; f < first[k + 1]; ++f) sp.push_back(*grouped[f]);
       const bool whole = sp.empty();  // nothing meets c inside: one part, sampled at μ = 1/2
-      sp.push_back({kZero, 0, 0});
-      sp.push_back({kOne, 1, 0});
+      sp.push_back({kZero, 0, 0, vertex_key(c.E.p0, c.E.q0)});
+      sp.push_back({kOne, 1, 0, vertex_key(c.E.p1, c.E.q1)});
       if (!whole) {
         // Exact order; among equal parameters the ends 0 and 1 first (symbolic sum vertices), so
         // the kept representative is the cheapest one.
@@ -445,6 +506,7 @@ struct Classifier {
         auto cmp = [&](const Split& x, const Split& y) {
           if (x.v + x.err < y.v - y.err) return -1;
           if (y.v + y.err < x.v - x.err) return 1;
+          if (x.key != kNoKey && x.key == y.key) return 0;
           return compare_params(x.p, y.p, c.E, kO);
         };
         auto rank = [](const Split& x) { return x.p.kind == Param::Cut ? 1 : 0; };
@@ -458,9 +520,21 @@ struct Classifier {
       part.assign(V - 1, 0);
       bool sampled = true;
       for (std::size_t i = 0; i + 1 < V && sampled; ++i) {
+        // An end known to be in O (open): the part next to it is in O too, no test. A part on ∂O
+        // (closed) has its ends on ∂O: remembered for the other candidates through them.
+        if ((sp[i].key != kNoKey && vertex_state(sp[i].key) == 1) || (sp[i + 1].key != kNoKey && vertex_state(sp[i + 1].key) == 1)) {
+          part[i] = 0;
+          continue;
+        }
         const Split mid = split(Param{Param::Value, {}, 0.5 * (sp[i].v + sp[i + 1].v)}, c.E);
-        if (!whole && !(compare_params(sp[i].p, mid.p, c.E, kO) < 0 && compare_params(mid.p, sp[i + 1].p, c.E, kO) < 0)) sampled = false;
-        else part[i] = !covered(c, mid);
+        // μ strictly between the two ends: by their error bounds when clear, else exactly.
+        const bool certified = whole || (sp[i].v + sp[i].err < mid.v && mid.v < sp[i + 1].v - sp[i + 1].err) ||
+                               (compare_params(sp[i].p, mid.p, c.E, kO) < 0 && compare_params(mid.p, sp[i + 1].p, c.E, kO) < 0);
+        if (!certified) sampled = false;
+        else if ((part[i] = !covered(c, mid))) {
+          if (sp[i].key != kNoKey) vertex_state(sp[i].key) = 0;
+          if (sp[i + 1].key != kNoKey) vertex_state(sp[i + 1].key) = 0;
+        }
       }
       if (!sampled) {
         nfp_cut(S, c, out);
@@ -484,7 +558,29 @@ struct Classifier {
 
 }  // namespace
 
+bool convex_shape(const Polygon& S) {
+  if (S.hole_count() != 0) return false;
+  const auto V = S.vertices();
+  for (std::size_t g = 0; g < S.size(); ++g) {
+    const std::size_t h = S.next(g);
+    if (predicates::cross_edges(V[g], V[h], V[h], V[S.next(h)]) < 0) return false;
+  }
+  return true;
+}
+
 void nfp_classify(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& cands, std::vector<NfpPiece>& out) {
+  // Two convex shapes: a candidate at a strictly convex vertex is a whole edge of the convex sum
+  // P ⊕ (−Q) (the vertex's angle, hence the whole convex shape, lies on the closed outer side of
+  // the edge: the vertex is extreme against its outer normal), so nothing covers it and its piece
+  // is [0, 1], as the reference cutting finds. At a straight vertex the candidate rule checks only
+  // the two collinear edges, not the side of the angle: those few candidates are cut exactly.
+  if (convex_shape(S.P) && convex_shape(S.Q)) {
+    for (const NfpCandidate& c : cands) {
+      if (c.strict) out.push_back(make_piece(c, kZero, kOne));
+      else nfp_cut(S, c, out);
+    }
+    return;
+  }
   Classifier(S, cands).run(out);
 }
 

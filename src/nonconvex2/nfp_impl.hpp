@@ -46,6 +46,9 @@ void nfp_cut(const PairDepth2::Impl& S, const NfpCandidate& c, std::vector<NfpPi
 /// testing one point per part (nfp_classify.cpp).
 void nfp_classify(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& cands, std::vector<NfpPiece>& out);
 
+/// One ring and no right turn (straight vertices allowed): a convex polygon (exact turns).
+bool convex_shape(const Polygon& S);
+
 /// The piece [lo, hi] of candidate c with its rounded ends and box.
 NfpPiece make_piece(const NfpCandidate& c, const Param& lo, const Param& hi);
 
@@ -65,5 +68,9 @@ struct NoFitPolygon2::Impl {
 
 /// Links the pieces into rings, slits and isolated points (nfp_rings.cpp).
 void nfp_export(NoFitPolygon2::Impl& nfp);
+/// The export when the pieces are whole candidates bounding a convex sum (two convex shapes):
+/// the edges by angle, O(N log N) exact angle comparisons; the same output as the general export.
+/// False (nothing written) when the pieces are not of that form.
+bool nfp_export_convex(NoFitPolygon2::Impl& nfp);
 
 }  // namespace pendepth

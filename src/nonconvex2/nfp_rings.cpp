@@ -5,6 +5,11 @@
 // N.points; every coordinate is the exact vertex rounded to nearest (ties: the neighbour nearer
 // zero). Throws std::logic_error on pieces that do not close into rings (internal inconsistency).
 //
+// Two convex shapes (nfp_export_convex): the pieces are whole candidates, edges of the convex sum;
+// sorted by the exact angle of their direction (an input edge vector) and grouped by equal angle,
+// they give the ring directly (one vertex per group, its lowest start along the direction), in
+// O(N log N) static-filter angle comparisons, started where the general linking below would start
+// it (the lowest line in its order), so the output is the same. Otherwise:
 // Every piece end is an exact point: a sum vertex (P vertex + −Q vertex) or o + μ·dir on the
 // piece's ray with μ = num/den the crossing with a cut line (pair_sums.hpp: num, den of degree 2
 // in the input doubles, so a coordinate is a degree-3 polynomial over a degree-2 one).
@@ -293,6 +298,36 @@ struct Seg {
   double k_lo, k_hi;         // interval of the exact offset (vertical: x; horizontal: y)
 };
 
+// The Seg of piece pc between vertex ids ia, ib, with its filters.
+Seg make_seg(const NfpPiece& pc, int ia, int ib) {
+  const Ray& E = pc.E;
+  const exact::LiftFl F;
+  Seg s{ia, ib, &E, &pc.edge, false, 0, 0, nonconvex2::ray_dx(E, F), nonconvex2::ray_dy(E, F), F(E.o1.x()) + F(E.o2.x()),
+        F(E.o1.y()) + F(E.o2.y()), false, 0, 0, 0, 0};
+  s.sdx = exact::certified_sign(s.dx);
+  if (s.sdx == 2) s.sdx = exact::exact_sign([&](auto L) { return nonconvex2::ray_dx(E, L); });
+  s.vertical = s.sdx == 0;
+  s.su = s.sdx;
+  int sdy = exact::certified_sign(s.dy);
+  if (sdy == 2) sdy = exact::exact_sign([&](auto L) { return nonconvex2::ray_dy(E, L); });
+  if (s.vertical) s.su = sdy;
+  s.horizontal = sdy == 0;
+  // Intervals for line_less: the slope dy/dx from the bounded dx, dy (plus the division's
+  // rounding), the offset of an axis-parallel line from the bounded origin coordinate.
+  s.s_lo = -INFINITY, s.s_hi = INFINITY;
+  const double ex = exact::safe_bound(s.dx.e), ey = exact::safe_bound(s.dy.e);
+  if (s.horizontal) s.s_lo = s.s_hi = 0;
+  else if (!s.vertical && std::abs(s.dx.v) > 2 * ex) {
+    const double q = s.dy.v / s.dx.v, aq = std::abs(q);
+    const double e = (ey + aq * (1 + 0x1p-50) * ex) / (std::abs(s.dx.v) - ex) * (1 + 0x1p-40) + aq * 0x1p-51 + 0x1p-1000;
+    if (std::isfinite(q) && std::isfinite(e)) s.s_lo = q - e, s.s_hi = q + e;
+  }
+  const exact::Fl& off = s.vertical ? s.ox : s.oy;
+  const double eo = 2 * exact::safe_bound(off.e);  // twice: covers the rounding of v ± bound
+  s.k_lo = off.v - eo, s.k_hi = off.v + eo;
+  return s;
+}
+
 // Exact order of supporting lines: (vertical, slope, offset) with y = slope·x + offset, or x =
 // offset when vertical; a line through E's origin o = o1 + o2 with direction dir.
 int compare_lines(const Seg& s, const Seg& t) {
@@ -351,11 +386,113 @@ bool on_line(const End& v, const Seg& s) {
          }) == 0;
 }
 
+// The sum vertex at end j (0: μ = 0, 1: μ = 1) of a candidate ray, as P vertex + −Q vertex.
+struct SumPoint {
+  Vec2 p, b;
+  std::uint32_t pid, qid;
+};
+SumPoint sum_end(const Ray& E, int j) {
+  if (j == 0) return {E.o1, E.o2, E.p0, E.q0};
+  return {E.p0 == E.p1 ? E.o1 : E.a1, E.q0 == E.q1 ? E.o2 : E.a1, E.p1, E.q1};
+}
+// Exact sign of dot(dir E, x − y).
+int along_sign(const Ray& E, const SumPoint& x, const SumPoint& y) {
+  if (x.pid == y.pid && x.qid == y.qid) return 0;
+  return exact::exact_sign([&](auto L) {
+    auto dx = L(E.a1.x()) - L(E.b1.x()), dy = L(E.a1.y()) - L(E.b1.y());
+    return dx * (L(x.p.x()) + L(x.b.x()) - L(y.p.x()) - L(y.b.x())) + dy * (L(x.p.y()) + L(x.b.y()) - L(y.p.y()) - L(y.b.y()));
+  });
+}
+
+}  // namespace
+
+bool nfp_export_convex(NoFitPolygon2::Impl& N) {
+  const std::size_t np = N.pieces.size();
+  if (np < 2) return false;
+  auto whole = [](const NfpPiece& pc) {
+    auto kind = [&](const Param& p) {
+      if (p.kind != Param::Cut) return p.kind;
+      const int k = nonconvex2::known_lambda(p.line, pc.E);
+      return k == 0 ? Param::Zero : k == 1 ? Param::One : Param::Cut;
+    };
+    return pc.E.sym && kind(pc.lo) == Param::Zero && kind(pc.hi) == Param::One;
+  };
+  for (const NfpPiece& pc : N.pieces)
+    if (!whole(pc)) return false;
+  // The pieces by the angle of their direction (an input edge vector a1 − b1), exactly.
+  std::vector<int> order(np);
+  for (std::size_t k = 0; k < np; ++k) order[k] = int(k);
+  auto angle = [&](int a, int b) {
+    const Ray &A = N.pieces[a].E, &B = N.pieces[b].E;
+    return predicates::compare_angle(A.b1, A.a1, B.b1, B.a1);
+  };
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return angle(a, b) < 0; });
+  // One group per direction: an edge of the convex sum from its lowest start to its highest end.
+  struct Group {
+    std::size_t b, e;  // order[b, e)
+    SumPoint lo, hi;
+  };
+  std::vector<Group> groups;
+  for (std::size_t b = 0, e; b < np; b = e) {
+    e = b + 1;
+    while (e < np && angle(order[b], order[e]) == 0) ++e;
+    const Ray& E = N.pieces[order[b]].E;
+    Group g{b, e, sum_end(E, 0), sum_end(E, 1)};
+    for (std::size_t i = b + 1; i < e; ++i) {
+      const Ray& F = N.pieces[order[i]].E;
+      if (const SumPoint s = sum_end(F, 0); along_sign(E, s, g.lo) < 0) g.lo = s;
+      if (const SumPoint t = sum_end(F, 1); along_sign(E, t, g.hi) > 0) g.hi = t;
+    }
+    groups.push_back(g);
+  }
+  const std::size_t ng = groups.size();
+  if (ng < 3) return false;
+  // Consecutive edges meet (a closed convex ring); anything else goes to the general export.
+  for (std::size_t k = 0; k < ng; ++k) {
+    const SumPoint &x = groups[k].hi, &y = groups[(k + 1) % ng].lo;
+    if (x.pid == y.pid && x.qid == y.qid) continue;
+    for (int axis = 0; axis < 2; ++axis)
+      if (exact::exact_sign([&](auto L) { return L(x.p[axis]) + L(x.b[axis]) - L(y.p[axis]) - L(y.b[axis]); }) != 0) return false;
+  }
+  // The general export starts its ring on the lowest line in (vertical last, slope, offset) order,
+  // at that edge's first elementary segment in increasing u (x, or y when vertical): the edge's
+  // start when it runs towards increasing u or has no vertex inside, else its end.
+  std::size_t first = 0;
+  std::vector<Seg> segs;
+  segs.reserve(ng);
+  for (const Group& g : groups) segs.push_back(make_seg(N.pieces[order[g.b]], 0, 0));
+  for (std::size_t k = 1; k < ng; ++k)
+    if (compare_lines_filtered(segs[k], segs[first]) < 0) first = k;
+  if (segs[first].su < 0) {
+    const Group& g = groups[first];
+    const Ray& E = N.pieces[order[g.b]].E;
+    bool inside = false;
+    for (std::size_t i = g.b; i < g.e && !inside; ++i)
+      for (int j = 0; j < 2 && !inside; ++j) {
+        const SumPoint x = sum_end(N.pieces[order[i]].E, j);
+        inside = along_sign(E, x, g.lo) > 0 && along_sign(E, x, g.hi) < 0;
+      }
+    if (inside) first = (first + 1) % ng;
+  }
+  std::vector<Vec2> ring(ng);
+  for (std::size_t k = 0; k < ng; ++k) {
+    const SumPoint& v = groups[(first + k) % ng].lo;
+    if (!round_sum(v.p.x(), v.b.x(), ring[k].x()) || !round_sum(v.p.y(), v.b.y(), ring[k].y())) return false;
+  }
+  N.polys.assign(1, {std::move(ring)});
+  N.slits.clear();
+  N.points.clear();
+  return true;
+}
+
+namespace {
 }  // namespace
 
 const NoFitPolygon2::Impl& nfp_impl(const NoFitPolygon2& n) { return *n.impl_; }
 
 void nfp_export(NoFitPolygon2::Impl& N) {
+  // Two convex shapes: the pieces are edges of the convex sum, ordered by angle.
+  if (nonconvex2::convex_shape(N.S.P) && nonconvex2::convex_shape(N.S.Q) && nfp_export_convex(N)) return;
   const std::size_t np = N.pieces.size();
   // 1. Every end, rounded to nearest; ends[2k], ends[2k + 1] are piece k's lo and hi.
   std::vector<End> ends;
@@ -442,32 +579,7 @@ void nfp_export(NoFitPolygon2::Impl& N) {
       zero_points.push_back(ia);
       continue;
     }
-    const Ray& E = N.pieces[k].E;
-    const exact::LiftFl F;
-    Seg s{ia, ib, &E, &N.pieces[k].edge, false, 0, 0, nonconvex2::ray_dx(E, F), nonconvex2::ray_dy(E, F), F(E.o1.x()) + F(E.o2.x()),
-          F(E.o1.y()) + F(E.o2.y()), false, 0, 0, 0, 0};
-    s.sdx = exact::certified_sign(s.dx);
-    if (s.sdx == 2) s.sdx = exact::exact_sign([&](auto L) { return nonconvex2::ray_dx(E, L); });
-    s.vertical = s.sdx == 0;
-    s.su = s.sdx;
-    int sdy = exact::certified_sign(s.dy);
-    if (sdy == 2) sdy = exact::exact_sign([&](auto L) { return nonconvex2::ray_dy(E, L); });
-    if (s.vertical) s.su = sdy;
-    s.horizontal = sdy == 0;
-    // Intervals for line_less: the slope dy/dx from the bounded dx, dy (plus the division's
-    // rounding), the offset of an axis-parallel line from the bounded origin coordinate.
-    s.s_lo = -INFINITY, s.s_hi = INFINITY;
-    const double ex = exact::safe_bound(s.dx.e), ey = exact::safe_bound(s.dy.e);
-    if (s.horizontal) s.s_lo = s.s_hi = 0;
-    else if (!s.vertical && std::abs(s.dx.v) > 2 * ex) {
-      const double q = s.dy.v / s.dx.v, aq = std::abs(q);
-      const double e = (ey + aq * (1 + 0x1p-50) * ex) / (std::abs(s.dx.v) - ex) * (1 + 0x1p-40) + aq * 0x1p-51 + 0x1p-1000;
-      if (std::isfinite(q) && std::isfinite(e)) s.s_lo = q - e, s.s_hi = q + e;
-    }
-    const exact::Fl& off = s.vertical ? s.ox : s.oy;
-    const double eo = 2 * exact::safe_bound(off.e);  // twice: covers the rounding of v ± bound
-    s.k_lo = off.v - eo, s.k_hi = off.v + eo;
-    segs.push_back(s);
+    segs.push_back(make_seg(N.pieces[k], ia, ib));
   }
   {  // sorted by line (indices: a Seg is large)
     std::vector<int> order(segs.size());

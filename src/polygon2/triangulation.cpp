@@ -1,10 +1,38 @@
-// Triangulation of a polygon with holes (DHS §4.1 Step 1): CGAL's constrained Delaunay
-// triangulation with the Epick kernel. Epick's predicates are exact; the only constructions a
-// CDT needs are intersections of crossing constraints, which cannot occur because Polygon's
-// validation guarantees the rings are simple and pairwise disjoint (the intersection tag below
-// makes CGAL throw instead of constructing, should that invariant ever break).
-// A face is inside P iff crossing constraint edges from the infinite face reaches it an odd
-// number of times (nesting depth; CGAL's "mark domains" idea). O(N log N).
+// Triangulation of a polygon with holes (DHS §4.1 Step 1). Two algorithms, same contract
+// (triangulation.hpp): exact ear clipping for small hole-free polygons (the nesting pieces the
+// no-fit-polygon build triangulates per pair: 4-30 vertices, many of them straight), CGAL's
+// constrained Delaunay triangulation (CDT) for everything else. DHS only needs "a triangulation";
+// any algorithm giving N - 2 proper triangles without Steiner points fits.
+//
+// Ear clipping (Meisters' two-ears theorem). The remaining ring is always a simple CCW polygon.
+// Vertex v with neighbours u, w is an ear iff orient2d(u, v, w) > 0 (never a zero-area triangle,
+// so a straight vertex is never a tip; it stays in the ring and ends up as a corner) and no other
+// vertex of the ring lies in the CLOSED triangle uvw (a vertex on u-w would be a T-junction).
+// Then no edge meets the open triangle or the open diagonal, so u-w is a proper diagonal and the
+// rest stays simple; every simple polygon with N > 3 has such an ear (a leaf of any triangulation
+// by proper diagonals), so the search cannot fail on a valid Polygon — the CDT fallback is a net.
+// Only non-convex vertices (orient2d(prev, x, next) <= 0) need testing: if any vertex lies in
+// the closed triangle, the first one met by a line sweeping from v parallel to u-w has both
+// neighbours on the far side of (or on) the sweep line, while the open segment from v to it lies
+// in P's interior, so its interior angle is >= 180°. Clipping shrinks the angles at u and w, so
+// the non-convex set only shrinks, and only u and w can change ear status: another ear keeps
+// its triangle and loses candidates; another non-ear's triangle held a vertex other than the
+// (convex) clipped v, by the sweep argument, and that vertex stays. So ear flags are cached.
+// Every decision is predicates::orient2d (filtered, exact) or an exact comparison of input
+// coordinates (bounding-box rejection). Among the ears the one with the shortest diagonal is
+// clipped (a float key that only orders valid choices): fatter triangles than the first ear
+// found, measured 3 % fewer instructions in the no-fit-polygon build that uses them.
+// Cost: N + 2(N - 3) ear tests of O(r) orient2d each for r non-convex vertices, plus an O(N)
+// scan per clip: O(N^2) worst case. kEarMax = 32 by measurement (instructions per polygon, ear
+// clipping / CDT): random stars 24 k / 131 k at N = 32, combs (worst: long collinear runs in
+// wide ears) 61 k / 92 k at N = 32 and 159 k / 184 k at N = 64, nesting pieces 1.7 k / 16.8 k.
+//
+// CDT: Epick's predicates are exact; the only constructions a CDT needs are intersections of
+// crossing constraints, which cannot occur because Polygon's validation guarantees the rings are
+// simple and pairwise disjoint (the intersection tag below makes CGAL throw instead of
+// constructing, should that invariant ever break). A face is inside P iff crossing constraint
+// edges from the infinite face reaches it an odd number of times (nesting depth; CGAL's "mark
+// domains" idea). O(N log N).
 #include "polygon2/triangulation.hpp"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -28,9 +56,78 @@ using Fb = CGAL::Constrained_triangulation_face_base_2<K, Fbi>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::No_constraint_intersection_tag>;
 
-}  // namespace
+static_assert(kEarMax <= 255, "ring links are stored in bytes");
 
-std::vector<TriangleIds> triangulate(const Polygon& P) {
+// Ear clipping of the hole-free P (size <= kEarMax) into `out`; false if no ear is left.
+bool ear_clip(const Polygon& P, std::vector<TriangleIds>& out) {
+  using predicates::orient2d;
+  const auto V = P.vertices();
+  const unsigned n = static_cast<unsigned>(P.size());
+  std::array<std::uint8_t, kEarMax> prv, nxt, reflex;  // reflex: the non-convex vertices of the ring
+  std::array<bool, kEarMax> convex;
+  unsigned nr = 0;
+  for (unsigned i = 0; i < n; ++i) {
+    prv[i] = static_cast<std::uint8_t>(i == 0 ? n - 1 : i - 1);
+    nxt[i] = static_cast<std::uint8_t>(i + 1 == n ? 0 : i + 1);
+  }
+  for (unsigned i = 0; i < n; ++i) {
+    convex[i] = orient2d(V[prv[i]], V[i], V[nxt[i]]) > 0;
+    if (!convex[i]) reflex[nr++] = static_cast<std::uint8_t>(i);
+  }
+  auto is_ear = [&](unsigned v) {
+    if (!convex[v]) return false;
+    const Vec2 &u = V[prv[v]], &a = V[v], &w = V[nxt[v]];
+    const Vec2 lo = u.cwiseMin(a).cwiseMin(w), hi = u.cwiseMax(a).cwiseMax(w);  // exact: no rounding
+    for (unsigned k = 0; k < nr; ++k) {
+      const unsigned x = reflex[k];
+      const Vec2& p = V[x];
+      if (p.x() < lo.x() || p.x() > hi.x() || p.y() < lo.y() || p.y() > hi.y() || x == prv[v] || x == nxt[v]) continue;
+      if (orient2d(u, a, p) >= 0 && orient2d(a, w, p) >= 0 && orient2d(w, u, p) >= 0) return false;
+    }
+    return true;
+  };
+  // After a clip the angle at i only shrank: a non-convex vertex may have become convex.
+  auto refresh = [&](unsigned i) {
+    if (convex[i] || orient2d(V[prv[i]], V[i], V[nxt[i]]) <= 0) return;
+    convex[i] = true;
+    for (unsigned k = 0; k < nr; ++k)
+      if (reflex[k] == i) {
+        reflex[k] = reflex[--nr];
+        break;
+      }
+  };
+  // Greedy: clip the ear with the shortest diagonal (fatter triangles than the first ear found:
+  // fewer overlapping boxes downstream). The float key only orders valid ears.
+  std::array<bool, kEarMax> ear;
+  std::array<double, kEarMax> key;
+  auto update = [&](unsigned v) {
+    ear[v] = is_ear(v);
+    if (ear[v]) key[v] = (V[nxt[v]] - V[prv[v]]).squaredNorm();
+  };
+  for (unsigned i = 0; i < n; ++i) update(i);
+  unsigned first = 0;
+  for (unsigned left = n; left > 3; --left) {
+    unsigned best = kEarMax;
+    for (unsigned k = 0, v = first; k < left; ++k, v = nxt[v])
+      if (ear[v] && (best == kEarMax || key[v] < key[best])) best = v;
+    if (best == kEarMax) return false;
+    const unsigned u = prv[best], w = nxt[best];
+    out.push_back({u, best, w});
+    nxt[u] = static_cast<std::uint8_t>(w);
+    prv[w] = static_cast<std::uint8_t>(u);
+    first = w;
+    refresh(u);
+    refresh(w);
+    update(u);
+    update(w);
+  }
+  const unsigned u = prv[first], w = nxt[first];
+  if (orient2d(V[u], V[first], V[w]) <= 0) return false;
+  out.push_back({u, first, w});
+  return true;
+}
+
+std::vector<TriangleIds> cdt_triangulate(const Polygon& P) {
   Cdt cdt;
   std::vector<Cdt::Vertex_handle> vh(P.size());
   for (std::size_t g = 0; g < P.size(); ++g) {
@@ -69,6 +166,21 @@ std::vector<TriangleIds> triangulate(const Polygon& P) {
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
     if (f->info().depth % 2 == 1)
       out.push_back({f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()});
+  return out;
+}
+
+}  // namespace
+
+std::vector<TriangleIds> triangulate(const Polygon& P, TriangulationPath* path) {
+  TriangulationPath used = TriangulationPath::cdt;
+  std::vector<TriangleIds> out;
+  if (P.hole_count() == 0 && P.size() <= kEarMax) {
+    out.reserve(P.size() - 2);
+    used = TriangulationPath::ear_clipping;
+    if (!ear_clip(P, out)) used = TriangulationPath::cdt_fallback;
+  }
+  if (used != TriangulationPath::ear_clipping) out = cdt_triangulate(P);
+  if (path) *path = used;
   return out;
 }
 

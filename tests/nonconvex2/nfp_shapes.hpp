@@ -4,6 +4,8 @@
 
 #include <pendepth/polygon.hpp>
 
+#include <algorithm>
+#include <pendepth/geometry.hpp>
 #include <random>
 #include <string>
 #include <vector>
@@ -36,6 +38,42 @@ pendepth::Polygon mapped(const pendepth::Polygon& S, F&& f) {
 /// S translated by o.
 inline pendepth::Polygon shifted(const pendepth::Polygon& S, const pendepth::Vec2& o) {
   return mapped(S, [&](const pendepth::Vec2& p) { return pendepth::Vec2(p + o); });
+}
+
+/// Convex hull of random integer points (exact: orient2d), counter-clockwise.
+inline pendepth::Polygon convex_hull(std::mt19937_64& rng, int n, int span) {
+  for (;;) {
+    std::vector<pendepth::Vec2> pts;
+    for (int k = 0; k < n; ++k) pts.emplace_back(double(int(rng() % span)), double(int(rng() % span)));
+    std::sort(pts.begin(), pts.end(), [](const pendepth::Vec2& a, const pendepth::Vec2& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+    pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+    std::vector<pendepth::Vec2> h;
+    for (int pass = 0; pass < 2; ++pass) {
+      const std::size_t base = h.size();
+      for (const pendepth::Vec2& p : pts) {
+        while (h.size() >= base + 2 && pendepth::predicates::orient2d(h[h.size() - 2], h.back(), p) <= 0) h.pop_back();
+        h.push_back(p);
+      }
+      h.pop_back();
+      std::reverse(pts.begin(), pts.end());
+    }
+    if (h.size() >= 3) return pendepth::Polygon::simple(h, "hull");
+  }
+}
+
+/// Every edge split at its midpoint (exact for grid coordinates): straight vertices everywhere,
+/// where the candidate rule admits edges whose angle may lie on either side.
+inline pendepth::Polygon subdivided(const pendepth::Polygon& S) {
+  std::vector<std::vector<pendepth::Vec2>> rings;
+  for (std::size_t k = 0; k < S.ring_count(); ++k) {
+    rings.emplace_back();
+    const auto r = S.ring(k);
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      rings.back().push_back(r[i]);
+      rings.back().push_back(0.5 * (r[i] + r[(i + 1) % r.size()]));
+    }
+  }
+  return pendepth::Polygon(rings, S.name());
 }
 
 /// The pieces of a nesting instance (../shared/data/nesting) as polygons.

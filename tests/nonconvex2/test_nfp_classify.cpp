@@ -9,6 +9,7 @@
 // offsets, every ordered pair of albano and shirts, trousers pairs. Pinned seeds.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <iostream>
 #include <random>
 #include <string>
@@ -57,21 +58,6 @@ Polygon moved(const Polygon& S, const Vec2& o, double scale) {
   return nonconvex2_test::mapped(S, [&](const Vec2& p) { return Vec2(p * scale + o); });
 }
 
-// Every edge split at its midpoint (exact for grid coordinates): straight vertices everywhere,
-// where the candidate rule admits edges whose angle may lie on either side.
-Polygon subdivided(const Polygon& S) {
-  std::vector<std::vector<Vec2>> rings;
-  for (std::size_t k = 0; k < S.ring_count(); ++k) {
-    rings.emplace_back();
-    const auto r = S.ring(k);
-    for (std::size_t i = 0; i < r.size(); ++i) {
-      rings.back().push_back(r[i]);
-      rings.back().push_back(0.5 * (r[i] + r[(i + 1) % r.size()]));
-    }
-  }
-  return Polygon(rings, S.name());
-}
-
 }  // namespace
 
 TEST(NfpClassify, StraightVertices) {
@@ -79,9 +65,9 @@ TEST(NfpClassify, StraightVertices) {
   for (int it = 0; it < pendepth_test::scaled(200); ++it) {
     const Polygon P = star(rng, 4 + int(rng() % 6), 1, 6, true);
     const Polygon Q = star(rng, 3 + int(rng() % 5), 1, 4, true);
-    same_pieces(subdivided(P), Q, "straight P " + std::to_string(it));
-    same_pieces(P, subdivided(Q), "straight Q " + std::to_string(it));
-    same_pieces(subdivided(P), subdivided(Q), "straight both " + std::to_string(it));
+    same_pieces(nonconvex2_test::subdivided(P), Q, "straight P " + std::to_string(it));
+    same_pieces(P, nonconvex2_test::subdivided(Q), "straight Q " + std::to_string(it));
+    same_pieces(nonconvex2_test::subdivided(P), nonconvex2_test::subdivided(Q), "straight both " + std::to_string(it));
   }
 }
 
@@ -191,6 +177,31 @@ TEST(NfpClassify, ExactFitsSlitsAndPoints) {
               Polygon::simple(std::vector<Vec2>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, "unit"), "closed slot");
   // Q the same shape as a hole of P, in several holes: many exact fits at once.
   same_pieces(Polygon(polygon2_test::holes_grid(3, 2, 1, Vec2(0, 0)), "holes grid"), square, "holes grid");
+}
+
+// Both shapes convex: the classification takes the shortcut (whole candidates at strictly convex
+// vertices, the reference cutting at straight ones). Hulls of grid points (many parallel edges),
+// axis-parallel rectangles, a shape against itself, straight vertices on every edge, offsets.
+TEST(NfpClassify, ConvexPairs) {
+  std::mt19937_64 rng(2026);
+  const std::vector<Vec2> oct{{1, 0}, {2, 0}, {3, 1}, {3, 2}, {2, 3}, {1, 3}, {0, 2}, {0, 1}};
+  const Polygon octagon = Polygon::simple(oct, "octagon");
+  for (int it = 0; it < pendepth_test::scaled(300); ++it) {
+    const Polygon P = nonconvex2_test::convex_hull(rng, 3 + int(rng() % 12), 2 + int(rng() % 9));
+    const Polygon Q = it % 3 == 0 ? P : nonconvex2_test::convex_hull(rng, 3 + int(rng() % 12), 2 + int(rng() % 9));
+    const std::string tag = " " + std::to_string(it);
+    same_pieces(P, Q, "hulls" + tag);
+    same_pieces(nonconvex2_test::subdivided(P), Q, "straight P hull" + tag);
+    same_pieces(P, nonconvex2_test::subdivided(Q), "straight Q hull" + tag);
+    same_pieces(nonconvex2_test::subdivided(P), nonconvex2_test::subdivided(Q), "straight hulls" + tag);
+    same_pieces(moved(P, Vec2(1e6, -3e5), 0.1), moved(Q, Vec2(-2e5, 7e5), 0.1), "moved hulls" + tag);
+    const double w = 1 + double(rng() % 5), h = 1 + double(rng() % 5);
+    const std::vector<Vec2> rect{{0, 0}, {w, 0}, {w, h}, {0, h}};
+    const Polygon R = Polygon::simple(rect, "rectangle");
+    same_pieces(R, P, "rectangle / hull" + tag);
+    same_pieces(nonconvex2_test::subdivided(R), octagon, "straight rectangle / octagon" + tag);
+    same_pieces(octagon, nonconvex2_test::subdivided(R), "octagon / straight rectangle" + tag);
+  }
 }
 
 TEST(NfpClassify, NestingInstances) {

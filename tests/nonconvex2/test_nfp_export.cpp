@@ -201,6 +201,48 @@ TEST(NfpExport, SlitsHolesPointsCombs) {
   EXPECT_GT(counts().points, 0u);
 }
 
+// Two convex shapes: the export by angle (nfp_export_convex) must give the oracle's output bit for
+// bit, on the builder's pieces and shuffled; it must also be the path taken (all pieces whole)
+// except where a straight vertex leaves a cut piece. Hulls of grid points (parallel edges, equal
+// slopes at different offsets), rectangles and an octagon (axis-parallel and vertical edges: the
+// ring's start rule), straight vertices on every edge, offsets and scales.
+TEST(NfpExport, ConvexPairsByAngle) {
+  std::mt19937_64 rng(4242);
+  const std::vector<Vec2> oct{{1, 0}, {2, 0}, {3, 1}, {3, 2}, {2, 3}, {1, 3}, {0, 2}, {0, 1}};
+  const Polygon octagon = Polygon::simple(oct, "octagon");
+  std::size_t fast = 0, general = 0;
+  auto run = [&](const Polygon& P, const Polygon& Q, const std::string& what) {
+    const NoFitPolygon2 nfp(P, Q);
+    NoFitPolygon2::Impl copy = nfp_impl(nfp);
+    std::shuffle(copy.pieces.begin(), copy.pieces.end(), rng);
+    if (pendepth::nfp_export_convex(copy)) {
+      ++fast;
+      expect_same(copy, what + " (by angle, shuffled)");
+    } else {
+      ++general;
+    }
+    check(P, Q, what);
+  };
+  for (int it = 0; it < pendepth_test::scaled(300) && !HasFatalFailure(); ++it) {
+    const Polygon P = nonconvex2_test::convex_hull(rng, 3 + int(rng() % 12), 2 + int(rng() % 9));
+    const Polygon Q = it % 3 == 0 ? P : nonconvex2_test::convex_hull(rng, 3 + int(rng() % 12), 2 + int(rng() % 9));
+    const std::string tag = " " + std::to_string(it);
+    run(P, Q, "hulls" + tag);
+    run(nonconvex2_test::subdivided(P), Q, "straight P hull" + tag);
+    run(nonconvex2_test::subdivided(P), nonconvex2_test::subdivided(Q), "straight hulls" + tag);
+    run(shifted(scaled_by(P, 0.1), Vec2(1e6, -3e5)), shifted(scaled_by(Q, 0.1), Vec2(-2e5, 7e5)), "moved hulls" + tag);
+    run(scaled_by(P, 0x1p-30), scaled_by(Q, 0x1p-30), "2^-30 hulls" + tag);
+    const double w = 1 + double(rng() % 5), h = 1 + double(rng() % 5);
+    const std::vector<Vec2> rect{{0, 0}, {w, 0}, {w, h}, {0, h}};
+    const Polygon R = Polygon::simple(rect, "rectangle");
+    run(R, P, "rectangle / hull" + tag);
+    run(R, octagon, "rectangle / octagon" + tag);
+    run(octagon, nonconvex2_test::subdivided(R), "octagon / straight rectangle" + tag);
+  }
+  std::cout << "[nfp export] convex pairs by angle " << fast << ", general " << general << "\n";
+  EXPECT_GT(fast, 10 * general);  // the angle path is the one taken on convex pairs
+}
+
 class Summary : public ::testing::Environment {
  public:
   void TearDown() override {
