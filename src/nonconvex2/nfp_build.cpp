@@ -27,8 +27,8 @@
 // pairs plus one point test (O(1) sums on real pieces, worst O(nm)) per part and per split point;
 // worst case O(n²m²) exact tests (a candidate met by > 256 others is cut by the reference, O(nm)).
 // Measured (callgrind, Release, per pair over every ordered pair of the nesting instances):
-// albano 198 k instructions (classification 100 k, export 55 k, candidates 19 k, triangulations
-// and hierarchies 14 k), shirts 234 k, trousers 90 k — the reference cutting with the rational
+// albano 202 k instructions (classification 103 k, export 55 k, candidates 19 k, triangulations
+// and hierarchies 14 k), shirts 238 k, trousers 91 k — the reference cutting with the rational
 // export took 1.16 M on albano (docs/algorithms.md).
 // Departure from the usual reduced-convolution builders (CGAL, Clipper):
 // no arrangement of the candidates is built and no winding numbers are computed; membership in O

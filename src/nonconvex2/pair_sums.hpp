@@ -24,7 +24,7 @@ namespace pendepth::nonconvex2 {
 /// −q0 → −q1 of −U (Q's triangle edge q0 → q1) translated by the P vertex p0 (q_edge true,
 /// p0 = p1). Interior of the sum on its left.
 struct Line {
-  Vec2 c1, c2, e0, e1;
+  Vec2 c1{0, 0}, c2{0, 0}, e0{0, 0}, e1{0, 0};
   std::uint32_t p0 = 0, p1 = 0, q0 = 0, q1 = 0;
   bool q_edge = false;
 };
