@@ -621,13 +621,13 @@ struct Classifier {
     std::vector<std::uint32_t> first(K + 1, 0);
     for (const auto& f : found) ++first[f.first + 1];
     for (std::size_t k = 0; k < K; ++k) first[k + 1] += first[k];
-    std::vector<const Split*> grouped(found.size());
+    std::vector<Split*> grouped(found.size());
     {
       std::vector<std::uint32_t> at(first.begin(), first.end() - 1);
-      for (const auto& f : found) grouped[at[f.first]++] = &f.second;
+      for (auto& f : found) grouped[at[f.first]++] = &f.second;
     }
     std::vector<char> part, vert;
-    std::vector<Split> sp;
+    std::vector<Split*> sp;  // pointers: a Split is large, and sorting moves them
     for (std::size_t k = 0; k < K; ++k) {
       const NfpCandidate& c = cands[k];
       if (reference[k]) {
@@ -640,11 +640,11 @@ struct Classifier {
         nfp_cut(S, c, out);
         continue;
       }
-      sp.clear();
-      for (std::uint32_t f = first[k]; f < first[k + 1]; ++f) sp.push_back(*grouped[f]);
+      sp.assign(grouped.begin() + first[k], grouped.begin() + first[k + 1]);
       const bool whole = sp.empty();  // nothing meets c inside: one part, sampled at μ = 1/2
-      sp.push_back({kZero, 0, 0, vertex_key(c.E.p0, c.E.q0)});
-      sp.push_back({kOne, 1, 0, vertex_key(c.E.p1, c.E.q1)});
+      Split end0{kZero, 0, 0, vertex_key(c.E.p0, c.E.q0)}, end1{kOne, 1, 0, vertex_key(c.E.p1, c.E.q1)};
+      sp.push_back(&end0);
+      sp.push_back(&end1);
       if (!whole) {
         // Exact order; among equal parameters the ends 0 and 1 first (symbolic sum vertices), so
         // the kept representative is the cheapest one.
@@ -656,14 +656,14 @@ struct Classifier {
           return compare_params(x.p, y.p, c.E, kO);
         };
         auto rank = [](const Split& x) { return x.p.kind == Param::Cut ? 1 : 0; };
-        std::sort(sp.begin(), sp.end(), [&](const Split& x, const Split& y) {
-          const int s = cmp(x, y);
-          return s != 0 ? s < 0 : rank(x) < rank(y);
+        std::sort(sp.begin(), sp.end(), [&](const Split* x, const Split* y) {
+          const int s = cmp(*x, *y);
+          return s != 0 ? s < 0 : rank(*x) < rank(*y);
         });
         // Equal split points merged; what any of them knows about the parts next to it is kept.
         std::size_t n = 1;
         for (std::size_t k = 1; k < sp.size(); ++k) {
-          if (cmp(sp[n - 1], sp[k]) == 0) sp[n - 1].in_o |= sp[k].in_o;
+          if (cmp(*sp[n - 1], *sp[k]) == 0) sp[n - 1]->in_o |= sp[k]->in_o;
           else sp[n++] = sp[k];
         }
         sp.resize(n);
@@ -674,19 +674,19 @@ struct Classifier {
       for (std::size_t i = 0; i + 1 < V && sampled; ++i) {
         // An end known to be in O (open): the part next to it is in O too, no test. A part on ∂O
         // (closed) has its ends on ∂O: remembered for the other candidates through them.
-        if ((sp[i].in_o & kAfter) || (sp[i + 1].in_o & kBefore) || (sp[i].key != kNoKey && vertex_state(sp[i].key) == 1) ||
-            (sp[i + 1].key != kNoKey && vertex_state(sp[i + 1].key) == 1)) {
+        if ((sp[i]->in_o & kAfter) || (sp[i + 1]->in_o & kBefore) || (sp[i]->key != kNoKey && vertex_state(sp[i]->key) == 1) ||
+            (sp[i + 1]->key != kNoKey && vertex_state(sp[i + 1]->key) == 1)) {
           part[i] = 0;
           continue;
         }
-        const Split mid = split(Param{Param::Value, {}, 0.5 * (sp[i].v + sp[i + 1].v)}, c.E);
+        const Split mid = split(Param{Param::Value, {}, 0.5 * (sp[i]->v + sp[i + 1]->v)}, c.E);
         // μ strictly between the two ends: by their error bounds when clear, else exactly.
-        const bool certified = whole || (sp[i].v + sp[i].err < mid.v && mid.v < sp[i + 1].v - sp[i + 1].err) ||
-                               (compare_params(sp[i].p, mid.p, c.E, kO) < 0 && compare_params(mid.p, sp[i + 1].p, c.E, kO) < 0);
+        const bool certified = whole || (sp[i]->v + sp[i]->err < mid.v && mid.v < sp[i + 1]->v - sp[i + 1]->err) ||
+                               (compare_params(sp[i]->p, mid.p, c.E, kO) < 0 && compare_params(mid.p, sp[i + 1]->p, c.E, kO) < 0);
         if (!certified) sampled = false;
         else if ((part[i] = !covered(c, mid))) {
-          if (sp[i].key != kNoKey) vertex_state(sp[i].key) = 0;
-          if (sp[i + 1].key != kNoKey) vertex_state(sp[i + 1].key) = 0;
+          if (sp[i]->key != kNoKey) vertex_state(sp[i]->key) = 0;
+          if (sp[i + 1]->key != kNoKey) vertex_state(sp[i + 1]->key) = 0;
         }
       }
       if (!sampled) {
@@ -694,7 +694,7 @@ struct Classifier {
         continue;
       }
       vert.assign(V, 0);
-      for (std::size_t i = 0; i < V; ++i) vert[i] = (i > 0 && part[i - 1]) || (i + 1 < V && part[i]) || !covered(c, sp[i]);
+      for (std::size_t i = 0; i < V; ++i) vert[i] = (i > 0 && part[i - 1]) || (i + 1 < V && part[i]) || !covered(c, *sp[i]);
       for (std::size_t i = 0; i < V;) {
         if (!vert[i]) {
           ++i;
@@ -703,8 +703,8 @@ struct Classifier {
         std::size_t j = i;
         while (j + 1 < V && part[j]) ++j;
         Vec2 a, b;
-        if (end_point(c, sp[i], a) && end_point(c, sp[j], b)) out.push_back(make_piece(c, sp[i].p, sp[j].p, a, b));
-        else out.push_back(make_piece(c, sp[i].p, sp[j].p));
+        if (end_point(c, *sp[i], a) && end_point(c, *sp[j], b)) out.push_back(make_piece(c, sp[i]->p, sp[j]->p, a, b));
+        else out.push_back(make_piece(c, sp[i]->p, sp[j]->p));
         i = j + 1;
       }
     }
