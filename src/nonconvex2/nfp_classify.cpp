@@ -531,6 +531,7 @@ struct Classifier {
   void run(std::vector<NfpPiece>& out) {
     const std::size_t K = cands.size();
     std::vector<std::pair<std::uint32_t, Split>> found;  // (candidate, split parameter)
+    found.reserve(4 * K);
     std::vector<char> reference(K, 0);
     // Floating filter: the ends of y strictly on one side of x's line, by a margin above the
     // roundings (A, B within 2⁻⁵³ relative of the exact ends; the direction exact differences
