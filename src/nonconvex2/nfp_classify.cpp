@@ -471,20 +471,32 @@ struct Classifier {
   // ends A*, B* rounded once and |v − μ| ≤ err; a = fma(v, B − A, A) is off by at most
   // u(|A| + |v|(|B − A| + |A| + |B|) + |a|)·1.02 + err(|B − A| + 2u(|A| + |B|)) (u = 2⁻⁵³). A
   // coordinate with A = B keeps A (the exact one lies between A* and B*, within an ulp of A).
+  // A cut whose floating bound is too loose gets μ again from double-double numerator and
+  // denominator (|μ − v| ≤ (bn + |v|·bd)/(|d| − bd) + u|v| for their bounds bn, bd).
   static bool end_point(const NfpCandidate& c, const Split& s, Vec2& out) {
     constexpr double u = 0x1p-53;
-    for (int k = 0; k < 2; ++k) {
-      const double A = c.A[k], B = c.B[k];
-      if (A == B) {
-        out[k] = A;
-        continue;
+    auto at = [&](double v, double err) {
+      for (int k = 0; k < 2; ++k) {
+        const double A = c.A[k], B = c.B[k];
+        if (A == B) {
+          out[k] = A;
+          continue;
+        }
+        const double D = B - A, a = std::fma(v, D, A), S = std::abs(A) + std::abs(B);
+        const double bound = 1.02 * u * (std::abs(A) + std::abs(v) * (std::abs(D) + S) + std::abs(a)) + err * (std::abs(D) + 2 * u * S) + 0x1p-1000;
+        if (!(bound <= 8 * u * std::abs(a))) return false;
+        out[k] = a;
       }
-      const double D = B - A, a = std::fma(s.v, D, A), S = std::abs(A) + std::abs(B);
-      const double bound = 1.02 * u * (std::abs(A) + std::abs(s.v) * (std::abs(D) + S) + std::abs(a)) + s.err * (std::abs(D) + 2 * u * S) + 0x1p-1000;
-      if (!(bound <= 8 * u * std::abs(a))) return false;
-      out[k] = a;
-    }
-    return true;
+      return true;
+    };
+    if (at(s.v, s.err)) return true;
+    if (s.p.kind != Param::Cut) return false;
+    const exact::LiftDD L;
+    const exact::DD n = line_num(s.p.line, c.E, L), d = line_den(s.p.line, c.E, L);
+    const double bn = std::abs(n.lo) + exact::safe_bound(n.e), bd = std::abs(d.lo) + exact::safe_bound(d.e);
+    if (!exact::dd_finite(n) || !exact::dd_finite(d) || !(std::abs(d.hi) > 2 * bd)) return false;
+    const double v = n.hi / d.hi;
+    return at(v, exact::safe_bound((bn + std::abs(v) * bd) / (std::abs(d.hi) - bd) + u * std::abs(v)));
   }
 
   // Adds to `sp` the ends of candidate d lying strictly inside the collinear candidate c.
