@@ -14,7 +14,14 @@
 //  2. Per candidate, the split parameters sorted exactly (compare_params) and merged when equal.
 //  3. Each open part: a double μ midway between its ends' approximations, certified strictly
 //     inside (by the ends' error bounds, else two exact comparisons), and the point c(μ) tested
-//     against the open pair sums whose boxes contain it (exact signs of degree 3). Each split point
+//     against the open sums whose boxes contain it (exact signs of degree 3): for small shapes the
+//     sums of convex parts A ⊕ (−B) (convex_parts.hpp: Hertel–Mehlhorn on the triangulations; O
+//     is also the union of the open sums of the parts, as both are {t : int P ∩ int(Q + t) ≠ ∅}),
+//     3–7× fewer sums than triangle pairs on nesting pieces, and far fewer with the point on their
+//     boundary; for large shapes the triangle pairs by the dual box descent. No test is needed for
+//     a part next to a crossing where c enters the left of a strict candidate d inside both: d is
+//     an edge of an open pair sum lying on d's left (nfp_build.cpp step 1), so c's points just
+//     past the crossing, hence the whole part, are in O. Each split point
 //     not closing a boundary part is tested itself (an exact fit: an isolated point of ∂O).
 //     Split points that are sum vertices (the ends of c, a crossing at an end of the other
 //     candidate, a collinear neighbour's end) carry the vertex as a key: equal keys are equal
@@ -29,25 +36,29 @@
 // one cannot decide): neighbours along the convolution sharing an end vertex meet only there;
 // segment pairs apart by a floating margin; splits ordered by certified approximations; at a
 // point, a sum with c's own line as an edge (by vertex ids, strictly convex vertices only) is
-// skipped; a floating separating-axis test on the sum's six half-planes (cached per triangle pair
-// when there are ≤ 256 pairs, which are then scanned flat instead of the dual descent); an edge
-// parallel to c is decided by degree-2 signs (the point's parameter drops out). A point test runs
-// the floating filters over all its sums first and stops at one that surely holds the point; the
+// skipped; a floating separating-axis test on the sum's half-planes (one per edge of the two parts,
+// cached per part pair when there are ≤ 256 pairs, which are then scanned flat); an edge parallel
+// to c is decided by degree-2 signs (the point's parameter drops out). A flat point test runs the
+// floating filters over all its sums first and stops at one that surely holds the point; the
 // exact signs (parallel edges, then degree 3) only follow for the undecided sums when none does —
-// most of those have the point on their boundary, as candidates are edges of sums.
+// most of those have the point on their boundary, as candidates are edges of sums. The pieces'
+// rounded ends come from the split values when their error bounds certify 8 ulps.
 // Two convex shapes: every candidate at a strictly convex vertex is a whole edge of the convex
 // sum and is kept whole without a test (nfp_classify below).
 // Cost: candidate pairs by boxes (all pairs for K ≤ 64, else a box hierarchy), O(1) exact tests per
 // meeting pair; per part or point the pair sums whose boxes hold the point, O(1) tests each. For
 // X box-overlapping pairs: O(K log K + X + (K + X)·v), v sums per point (~5 on nesting pieces,
 // worst O(nm)); a candidate met by more than kMaxSplits others is cut by the reference instead.
-// Measured (callgrind, every ordered pair of the nesting instances): 32–133 k instructions per
-// pair, ~29 point tests per shirts pair.
+// Measured (callgrind, per pair over every ordered pair of the nesting instances): albano 93 k
+// instructions (103 k with triangle-pair point tests), shirts 108 k (133 k), trousers 28 k (32 k);
+// ~26 point tests per shirts pair, ~3 sums per test left undecided by the floating filters (13.5
+// with triangle pairs).
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
 
 #include "geometry/exact.hpp"
+#include "nonconvex2/convex_parts.hpp"
 #include "nonconvex2/nfp_impl.hpp"
 
 namespace pendepth::nonconvex2 {
@@ -65,10 +76,14 @@ const Vec2 kO(0, 0);
 constexpr std::uint64_t kNoKey = ~std::uint64_t(0);
 std::uint64_t vertex_key(std::uint32_t p, std::uint32_t q) { return (std::uint64_t(p) << 32) | q; }
 
+// `in_o`: kBefore / kAfter when the part of the candidate just before / after the split point is
+// known to lie in O (a transversal crossing into the open side of another candidate's sum).
+constexpr std::uint8_t kBefore = 1, kAfter = 2;
 struct Split {
   Param p;
   double v, err;
   std::uint64_t key = kNoKey;
+  std::uint8_t in_o = 0;
 };
 
 Split split(const Param& p, const Ray& E) {
@@ -116,25 +131,143 @@ struct Classifier {
   std::vector<std::uint32_t> prevP, prevQ;  // filled on first use
   PairDepth2::Impl::DescentStack stack;
 
-  // All triangle pairs with their sum boxes, when there are few (≤ 256).
-  struct FlatPair {
+  // Convex parts of P and of −Q (convex_parts.hpp) and all their pairs with the sums' boxes, when
+  // there are few (≤ 256): a point is then tested against the sums of parts (the same union O as
+  // the sums of triangles), scanned flat; each pair's half-planes are computed on first use.
+  ConvexParts pp, pb;
+  struct PartPair {
     Vec2 lo, hi;
-    std::uint32_t i, j;
+    std::uint32_t a, b;
+    std::uint32_t off;  // its half-planes: edges of part a (against part b's vertices), then of b
     bool ready = false;
-    HalfPlanes h;
+    double smax = 0;  // bounds every coordinate of both parts
   };
-  std::vector<FlatPair> flat;
+  std::vector<PartPair> flat;
+  std::vector<double> hdx, hdy, hc, he;
 
   Classifier(const PairDepth2::Impl& s, const std::vector<NfpCandidate>& c) : S(s), cands(c) {
-    if (S.tp.size() * S.tb.size() <= 256) {
-      flat.reserve(S.tp.size() * S.tb.size());
-      for (std::uint32_t i = 0; i < S.tp.size(); ++i)
-        for (std::uint32_t j = 0; j < S.tb.size(); ++j) {
-          FlatPair f{{}, {}, i, j, false, {}};
-          sum_box(S.tp[i].lo, S.tp[i].hi, S.tb[j].lo, S.tb[j].hi, f.lo, f.hi);
-          flat.push_back(f);
-        }
+    if (S.tp.size() * S.tb.size() > 256 * 64) return;  // large shapes: the dual descent
+    convex_parts(S.tp, S.P.hole_count() == 0, pp);
+    convex_parts(S.tb, S.Q.hole_count() == 0, pb);
+    if (pp.size() * pb.size() > 256) return;
+    flat.reserve(pp.size() * pb.size());
+    std::uint32_t off = 0;
+    for (std::uint32_t a = 0; a < pp.size(); ++a)
+      for (std::uint32_t b = 0; b < pb.size(); ++b) {
+        PartPair f{{}, {}, a, b, off};
+        sum_box(pp.lo[a], pp.hi[a], pb.lo[b], pb.hi[b], f.lo, f.hi);
+        flat.push_back(f);
+        off += (pp.start[a + 1] - pp.start[a]) + (pb.start[b + 1] - pb.start[b]);
+      }
+    hdx.resize(off), hdy.resize(off), hc.resize(off), he.resize(off);
+  }
+
+  // Half-planes of A ⊕ B for convex A, B: for each edge d of one part from x0, m is inside iff
+  // cross(d, m) > cross(d, x0) + min over the other part's vertices y of cross(d, y) (the sum's
+  // edge parallel to d is d translated by the extreme y); A ⊕ B is their intersection.
+  void prepare(PartPair& f) {
+    f.smax = 0;
+    for (int side = 0; side < 2; ++side) {
+      const ConvexParts& X = side == 0 ? pp : pb;
+      const std::uint32_t k = side == 0 ? f.a : f.b;
+      for (std::uint32_t i = X.start[k]; i < X.start[k + 1]; ++i) f.smax = std::max(f.smax, X.v[i].cwiseAbs().maxCoeff());
     }
+    std::uint32_t h = f.off;
+    for (int side = 0; side < 2; ++side) {
+      const ConvexParts& X = side == 0 ? pp : pb;
+      const ConvexParts& Y = side == 0 ? pb : pp;
+      const std::uint32_t kx = side == 0 ? f.a : f.b, ky = side == 0 ? f.b : f.a;
+      const std::uint32_t x0i = X.start[kx], xn = X.start[kx + 1] - x0i;
+      for (std::uint32_t i = 0; i < xn; ++i, ++h) {
+        const Vec2& x0 = X.v[x0i + i];
+        const Vec2 d = X.v[x0i + (i + 1) % xn] - x0;
+        double lo = INFINITY;
+        for (std::uint32_t j = Y.start[ky]; j < Y.start[ky + 1]; ++j) lo = std::min(lo, d.x() * Y.v[j].y() - d.y() * Y.v[j].x());
+        hdx[h] = d.x(), hdy[h] = d.y(), hc[h] = d.x() * x0.y() - d.y() * x0.x() + lo;
+        he[h] = std::abs(d.x()) + std::abs(d.y());
+      }
+    }
+    f.ready = true;
+  }
+
+  // Exact: the edge x0 → x1 of one part holds the point m = c(p) strictly in its half-plane of
+  // the sum, i.e. cross(d, m − x0 − y) > 0 for some vertex y of the other part Y (d = x1 − x0).
+  // Floating per y first (the half-plane filter's bound); an edge parallel to c by degree-2 signs
+  // (m's parameter drops out), any other by the degree-3 sign over the parameter's denominator.
+  static bool edge_holds(const Vec2& x0, const Vec2& x1, const ConvexParts& Y, std::uint32_t ky, const NfpCandidate& c, const Param& p,
+                         const Vec2& m, double slack, int den) {
+    const Ray& E = c.E;
+    const Vec2 d = x1 - x0, dirc = E.a1 - E.b1;
+    const double err = (std::abs(d.x()) + std::abs(d.y())) * slack;
+    const double base = d.x() * m.y() - d.y() * m.x() - (d.x() * x0.y() - d.y() * x0.x());
+    const double cr = d.x() * dirc.y() - d.y() * dirc.x();
+    const bool parallel = std::abs(cr) <= (std::abs(d.x()) + std::abs(d.y())) * (std::abs(dirc.x()) + std::abs(dirc.y())) * 0x1p-50 &&
+                          predicates::cross_edges(x0, x1, E.b1, E.a1) == 0;
+    for (std::uint32_t j = Y.start[ky]; j < Y.start[ky + 1]; ++j) {
+      const Vec2& y = Y.v[j];
+      const double val = base - (d.x() * y.y() - d.y() * y.x());
+      if (val < -err) continue;
+      if (val > err) return true;
+      if (parallel) {
+        if (exact::exact_sign([&](auto L) {
+              auto u = L(E.o1.x()) + L(E.o2.x()) - L(x0.x()) - L(y.x()), v = L(E.o1.y()) + L(E.o2.y()) - L(x0.y()) - L(y.y());
+              return (L(x1.x()) - L(x0.x())) * v - (L(x1.y()) - L(x0.y())) * u;
+            }) > 0)
+          return true;
+        continue;
+      }
+      if (den * exact::exact_sign([&](auto L) {
+            auto [n, dd] = param_nd(p, E, kO, L);
+            auto x = (L(E.o1.x()) + L(E.o2.x()) - L(x0.x()) - L(y.x())) * dd + n * ray_dx(E, L);
+            auto yy = (L(E.o1.y()) + L(E.o2.y()) - L(x0.y()) - L(y.y())) * dd + n * ray_dy(E, L);
+            return (L(x1.x()) - L(x0.x())) * yy - (L(x1.y()) - L(x0.y())) * x;
+          }) > 0)
+        return true;
+    }
+    return false;
+  }
+
+  // m = c(p) (to within tol) in the open sum of part pair f: +1 / -1 certain by the floating
+  // half-planes, 0 undecided; with `exact` the undecided half-planes are decided (edge_holds)
+  // and the answer is exact (0 never returned).
+  int in_part_sum(const PartPair& f, const NfpCandidate& c, const Param& p, const Vec2& m, double tol, bool exact, int den) const {
+    const double S = std::max(f.smax, m.cwiseAbs().maxCoeff());
+    const double slack = 2 * (tol + 16 * S * 0x1p-53);
+    bool sure = true;
+    std::uint32_t h = f.off;
+    for (int side = 0; side < 2; ++side) {
+      const ConvexParts& X = side == 0 ? pp : pb;
+      const std::uint32_t kx = side == 0 ? f.a : f.b, ky = side == 0 ? f.b : f.a;
+      const std::uint32_t x0i = X.start[kx], xn = X.start[kx + 1] - x0i;
+      for (std::uint32_t i = 0; i < xn; ++i, ++h) {
+        const double val = hdx[h] * m.y() - hdy[h] * m.x() - hc[h], err = he[h] * slack;
+        if (val < -err) return -1;
+        if (val > err) continue;
+        if (!exact) {
+          sure = false;
+          continue;
+        }
+        const std::uint32_t i1 = x0i + (i + 1) % xn;
+        if (!edge_holds(X.v[x0i + i], X.v[i1], side == 0 ? pb : pp, ky, c, p, m, slack, den)) return -1;
+      }
+    }
+    return sure ? 1 : 0;
+  }
+  // Symbolic: c's line is an edge line of A ⊕ B (own_edge below, for parts).
+  bool own_edge_part(const PartPair& f, const Ray& E) const {
+    auto has_edge = [](const ConvexParts& X, std::uint32_t k, std::uint32_t a, std::uint32_t b) {
+      const std::uint32_t s = X.start[k], n = X.start[k + 1] - s;
+      for (std::uint32_t i = 0; i < n; ++i)
+        if (X.id[s + i] == a && X.id[s + (i + 1) % n] == b) return true;
+      return false;
+    };
+    auto has_vertex = [](const ConvexParts& X, std::uint32_t k, std::uint32_t a) {
+      for (std::uint32_t i = X.start[k]; i < X.start[k + 1]; ++i)
+        if (X.id[i] == a) return true;
+      return false;
+    };
+    if (E.q0 == E.q1) return has_edge(pp, f.a, E.p0, E.p1) && has_vertex(pb, f.b, E.q0);
+    return has_edge(pb, f.b, E.q0, E.q1) && has_vertex(pp, f.a, E.p0);
   }
 
   // A line through the sum vertex (p, q) not parallel to `avoid`: an input edge at p translated
@@ -212,8 +345,8 @@ struct Classifier {
       }
     }
   }
-  // `edges`: decide edges parallel to c exactly (else such an edge leaves the result undecided).
-  static int sum_filter(const Tri& T, const Tri& B, const HalfPlanes& h, const Vec2& m, double tol, const Ray& E, bool edges) {
+  // Edges parallel to c are decided exactly (undecided_edge).
+  static int sum_filter(const Tri& T, const Tri& B, const HalfPlanes& h, const Vec2& m, double tol, const Ray& E) {
     const double S = std::max(h.smax, m.cwiseAbs().maxCoeff());
     const double slack = 2 * (tol + 16 * S * 0x1p-53);
     bool sure = true;
@@ -221,10 +354,6 @@ struct Classifier {
       const double val = h.dx[i] * m.y() - h.dy[i] * m.x() - h.c[i], err = h.e[i] * slack;
       if (val < -err) return -1;
       if (val > err) continue;
-      if (!edges) {
-        sure = false;
-        continue;
-      }
       const int u = i < 3 ? undecided_edge(T, i, B, E) : undecided_edge(B, i - 3, T, E);
       if (u < 0) return -1;
       if (u == 0) sure = false;
@@ -294,57 +423,80 @@ struct Classifier {
     if (v < 0) v = covered_point(c, p, at);
     return v;
   }
-  // Two passes: the floating filters over every sum whose box holds the point, stopping at one
-  // that certainly contains it; only then the exact test of the undecided ones (most of them
-  // have the point on their boundary, as the point lies on candidates, and are not needed when
-  // another sum contains it).
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> undecided;
+  // Few part pairs: two passes, the floating filters over every part sum whose box holds the
+  // point, stopping at one that certainly contains it; only then the exact test of the undecided
+  // ones (most have the point on their boundary, as the point lies on candidates, and are not
+  // needed when another sum contains it). Large shapes: the triangle pairs by the dual descent,
+  // each decided exactly at once (many sums per point; stops at the first that holds it).
+  std::vector<std::uint32_t> undecided;
   bool covered_point(const NfpCandidate& c, const Param& p, const Split& at) {
     // The point to within tol: A and B within a few ulps of the exact ends, v within err of μ.
     const Vec2 m = c.A + at.v * (c.B - c.A);
     const double tol = (c.A.cwiseAbs().maxCoeff() + c.B.cwiseAbs().maxCoeff()) * 0x1p-40 + 2 * at.err * (c.B - c.A).cwiseAbs().maxCoeff() + 0x1p-1000;
     const Vec2 mlo = m.array() - tol, mhi = m.array() + tol;
-    HalfPlanes scratch;
-    undecided.clear();
     int den = 2;  // sign of the cut's denominator, computed on first use
     auto den_sign = [&] {
       if (den == 2) den = p.kind == Param::Cut ? exact::exact_sign([&](auto L) { return line_den(p.line, c.E, L); }) : 1;
       return den;
     };
-    auto leaf = [&](std::uint32_t i, std::uint32_t j, HalfPlanes* h) {
-      if (c.strict && own_edge(S.tp[i], S.tb[j], c.E)) return false;
-      if (!h) {
-        half_planes(S.tp[i], S.tb[j], scratch);
-        h = &scratch;
-      }
-      if (flat.empty()) {  // many sums per point (large shapes): exact at once, stop early
-        const int f = sum_filter(S.tp[i], S.tb[j], *h, m, tol, c.E, true);
-        return f > 0 || (f == 0 && in_open_sum(S.tp[i], S.tb[j], c, p, den_sign()));
-      }
-      const int f = sum_filter(S.tp[i], S.tb[j], *h, m, tol, c.E, false);
-      if (f == 0) undecided.push_back({i, j});
-      return f > 0;
-    };
-    bool in = false;
-    if (!flat.empty()) {  // few pairs: a scan of their boxes beats the dual descent
-      for (FlatPair& f : flat) {
+    if (!flat.empty()) {
+      undecided.clear();
+      for (std::uint32_t k = 0; k < flat.size(); ++k) {
+        PartPair& f = flat[k];
         if (f.lo.x() > mhi.x() || f.hi.x() < mlo.x() || f.lo.y() > mhi.y() || f.hi.y() < mlo.y()) continue;
-        if (!f.ready) half_planes(S.tp[f.i], S.tb[f.j], f.h), f.ready = true;
-        if ((in = leaf(f.i, f.j, &f.h))) break;
+        if (c.strict && own_edge_part(f, c.E)) continue;
+        if (!f.ready) prepare(f);
+        const int r = in_part_sum(f, c, p, m, tol, false, 0);
+        if (r > 0) return true;
+        if (r == 0) undecided.push_back(k);
       }
-    } else {
-      in = S.descend(
-          [&](const Vec2& lo, const Vec2& hi) { return !(lo.x() > mhi.x() || hi.x() < mlo.x() || lo.y() > mhi.y() || hi.y() < mlo.y()); },
-          [&](std::uint32_t i, std::uint32_t j) { return leaf(i, j, nullptr); }, nullptr, stack);
+      for (const std::uint32_t k : undecided)
+        if (in_part_sum(flat[k], c, p, m, tol, true, den_sign()) > 0) return true;
+      return false;
     }
-    if (in || undecided.empty()) return in;
-    // Second pass: the undecided sums, their parallel edges exactly, then the exact test.
-    for (const auto& [i, j] : undecided) {
-      half_planes(S.tp[i], S.tb[j], scratch);
-      const int f = sum_filter(S.tp[i], S.tb[j], scratch, m, tol, c.E, true);
-      if (f > 0 || (f == 0 && in_open_sum(S.tp[i], S.tb[j], c, p, den_sign()))) return true;
-    }
-    return false;
+    HalfPlanes h;
+    return S.descend(
+        [&](const Vec2& lo, const Vec2& hi) { return !(lo.x() > mhi.x() || hi.x() < mlo.x() || lo.y() > mhi.y() || hi.y() < mlo.y()); },
+        [&](std::uint32_t i, std::uint32_t j) {
+          if (c.strict && own_edge(S.tp[i], S.tb[j], c.E)) return false;
+          half_planes(S.tp[i], S.tb[j], h);
+          const int f = sum_filter(S.tp[i], S.tb[j], h, m, tol, c.E);
+          return f > 0 || (f == 0 && in_open_sum(S.tp[i], S.tb[j], c, p, den_sign()));
+        },
+        nullptr, stack);
+  }
+
+  // The point of c at split s from its value, when the bounds certify it to 8 ulps per coordinate
+  // (false: the caller evaluates it accurately). The exact point is A* + μ(B* − A*) with A, B the
+  // ends A*, B* rounded once and |v − μ| ≤ err; a = fma(v, B − A, A) is off by at most
+  // u(|A| + |v|(|B − A| + |A| + |B|) + |a|)·1.02 + err(|B − A| + 2u(|A| + |B|)) (u = 2⁻⁵³). A
+  // coordinate with A = B keeps A (the exact one lies between A* and B*, within an ulp of A).
+  // A cut whose floating bound is too loose gets μ again from double-double numerator and
+  // denominator (|μ − v| ≤ (bn + |v|·bd)/(|d| − bd) + u|v| for their bounds bn, bd).
+  static bool end_point(const NfpCandidate& c, const Split& s, Vec2& out) {
+    constexpr double u = 0x1p-53;
+    auto at = [&](double v, double err) {
+      for (int k = 0; k < 2; ++k) {
+        const double A = c.A[k], B = c.B[k];
+        if (A == B) {
+          out[k] = A;
+          continue;
+        }
+        const double D = B - A, a = std::fma(v, D, A), S = std::abs(A) + std::abs(B);
+        const double bound = 1.02 * u * (std::abs(A) + std::abs(v) * (std::abs(D) + S) + std::abs(a)) + err * (std::abs(D) + 2 * u * S) + 0x1p-1000;
+        if (!(bound <= 8 * u * std::abs(a))) return false;
+        out[k] = a;
+      }
+      return true;
+    };
+    if (at(s.v, s.err)) return true;
+    if (s.p.kind != Param::Cut) return false;
+    const exact::LiftDD L;
+    const exact::DD n = line_num(s.p.line, c.E, L), d = line_den(s.p.line, c.E, L);
+    const double bn = std::abs(n.lo) + exact::safe_bound(n.e), bd = std::abs(d.lo) + exact::safe_bound(d.e);
+    if (!exact::dd_finite(n) || !exact::dd_finite(d) || !(std::abs(d.hi) > 2 * bd)) return false;
+    const double v = n.hi / d.hi;
+    return at(v, exact::safe_bound((bn + std::abs(v) * bd) / (std::abs(d.hi) - bd) + u * std::abs(v)));
   }
 
   // Adds to `sp` the ends of candidate d lying strictly inside the collinear candidate c.
@@ -391,6 +543,7 @@ struct Classifier {
   void run(std::vector<NfpPiece>& out) {
     const std::size_t K = cands.size();
     std::vector<std::pair<std::uint32_t, Split>> found;  // (candidate, split parameter)
+    found.reserve(4 * K);
     std::vector<char> reference(K, 0);
     // Floating filter: the ends of y strictly on one side of x's line, by a margin above the
     // roundings (A, B within 2⁻⁵³ relative of the exact ends; the direction exact differences
@@ -411,7 +564,8 @@ struct Classifier {
     auto meet = [&](std::size_t i, std::size_t j) {
       const NfpCandidate &c = cands[i], &d = cands[j];
       if (apart(c, d) || apart(d, c)) return;
-      const bool non_parallel = parallel_sign(c.E, d.E) != 0;
+      const int turn = parallel_sign(c.E, d.E);  // sign of cross(dir c, dir d)
+      const bool non_parallel = turn != 0;
       if (non_parallel && shared_end(c.E, d.E)) return;
       if (non_parallel) {
         const Param pc{Param::Cut, d.line, 0}, pd{Param::Cut, c.line, 0};
@@ -431,12 +585,17 @@ struct Classifier {
         const int wd = where(sd, pd, d.E);
         if (wd < 0) return;
         // A crossing at an end of c splits nothing there; at an end of d it is d's sum vertex.
+        // Crossing inside both, the other candidate strict: that candidate is an edge of an open
+        // pair sum lying on its left (nfp_build.cpp step 1), so the side of the crossing on its
+        // left is in O (see the header).
         if (wc == 2) {
           if (wd < 2) sc.key = wd == 0 ? vertex_key(d.E.p0, d.E.q0) : vertex_key(d.E.p1, d.E.q1);
+          else if (d.strict) sc.in_o = turn < 0 ? kAfter : kBefore;
           found.push_back({static_cast<std::uint32_t>(i), sc});
         }
         if (wd == 2) {
           if (wc < 2) sd.key = wc == 0 ? vertex_key(c.E.p0, c.E.q0) : vertex_key(c.E.p1, c.E.q1);
+          else if (c.strict) sd.in_o = turn > 0 ? kAfter : kBefore;
           found.push_back({static_cast<std::uint32_t>(j), sd});
         }
       } else if (origin_on_line(c.E, d.E)) {
@@ -475,13 +634,13 @@ struct Classifier {
     std::vector<std::uint32_t> first(K + 1, 0);
     for (const auto& f : found) ++first[f.first + 1];
     for (std::size_t k = 0; k < K; ++k) first[k + 1] += first[k];
-    std::vector<const Split*> grouped(found.size());
+    std::vector<Split*> grouped(found.size());
     {
       std::vector<std::uint32_t> at(first.begin(), first.end() - 1);
-      for (const auto& f : found) grouped[at[f.first]++] = &f.second;
+      for (auto& f : found) grouped[at[f.first]++] = &f.second;
     }
     std::vector<char> part, vert;
-    std::vector<Split> sp;
+    std::vector<Split*> sp;  // pointers: a Split is large, and sorting moves them
     for (std::size_t k = 0; k < K; ++k) {
       const NfpCandidate& c = cands[k];
       if (reference[k]) {
@@ -494,11 +653,11 @@ struct Classifier {
         nfp_cut(S, c, out);
         continue;
       }
-      sp.clear();
-      for (std::uint32_t f = first[k]; f < first[k + 1]; ++f) sp.push_back(*grouped[f]);
+      sp.assign(grouped.begin() + first[k], grouped.begin() + first[k + 1]);
       const bool whole = sp.empty();  // nothing meets c inside: one part, sampled at μ = 1/2
-      sp.push_back({kZero, 0, 0, vertex_key(c.E.p0, c.E.q0)});
-      sp.push_back({kOne, 1, 0, vertex_key(c.E.p1, c.E.q1)});
+      Split end0{kZero, 0, 0, vertex_key(c.E.p0, c.E.q0)}, end1{kOne, 1, 0, vertex_key(c.E.p1, c.E.q1)};
+      sp.push_back(&end0);
+      sp.push_back(&end1);
       if (!whole) {
         // Exact order; among equal parameters the ends 0 and 1 first (symbolic sum vertices), so
         // the kept representative is the cheapest one.
@@ -510,11 +669,17 @@ struct Classifier {
           return compare_params(x.p, y.p, c.E, kO);
         };
         auto rank = [](const Split& x) { return x.p.kind == Param::Cut ? 1 : 0; };
-        std::sort(sp.begin(), sp.end(), [&](const Split& x, const Split& y) {
-          const int s = cmp(x, y);
-          return s != 0 ? s < 0 : rank(x) < rank(y);
+        std::sort(sp.begin(), sp.end(), [&](const Split* x, const Split* y) {
+          const int s = cmp(*x, *y);
+          return s != 0 ? s < 0 : rank(*x) < rank(*y);
         });
-        sp.erase(std::unique(sp.begin(), sp.end(), [&](const Split& x, const Split& y) { return cmp(x, y) == 0; }), sp.end());
+        // Equal split points merged; what any of them knows about the parts next to it is kept.
+        std::size_t n = 1;
+        for (std::size_t k = 1; k < sp.size(); ++k) {
+          if (cmp(*sp[n - 1], *sp[k]) == 0) sp[n - 1]->in_o |= sp[k]->in_o;
+          else sp[n++] = sp[k];
+        }
+        sp.resize(n);
       }
       const std::size_t V = sp.size();
       part.assign(V - 1, 0);
@@ -522,18 +687,19 @@ struct Classifier {
       for (std::size_t i = 0; i + 1 < V && sampled; ++i) {
         // An end known to be in O (open): the part next to it is in O too, no test. A part on ∂O
         // (closed) has its ends on ∂O: remembered for the other candidates through them.
-        if ((sp[i].key != kNoKey && vertex_state(sp[i].key) == 1) || (sp[i + 1].key != kNoKey && vertex_state(sp[i + 1].key) == 1)) {
+        if ((sp[i]->in_o & kAfter) || (sp[i + 1]->in_o & kBefore) || (sp[i]->key != kNoKey && vertex_state(sp[i]->key) == 1) ||
+            (sp[i + 1]->key != kNoKey && vertex_state(sp[i + 1]->key) == 1)) {
           part[i] = 0;
           continue;
         }
-        const Split mid = split(Param{Param::Value, {}, 0.5 * (sp[i].v + sp[i + 1].v)}, c.E);
+        const Split mid = split(Param{Param::Value, {}, 0.5 * (sp[i]->v + sp[i + 1]->v)}, c.E);
         // μ strictly between the two ends: by their error bounds when clear, else exactly.
-        const bool certified = whole || (sp[i].v + sp[i].err < mid.v && mid.v < sp[i + 1].v - sp[i + 1].err) ||
-                               (compare_params(sp[i].p, mid.p, c.E, kO) < 0 && compare_params(mid.p, sp[i + 1].p, c.E, kO) < 0);
+        const bool certified = whole || (sp[i]->v + sp[i]->err < mid.v && mid.v < sp[i + 1]->v - sp[i + 1]->err) ||
+                               (compare_params(sp[i]->p, mid.p, c.E, kO) < 0 && compare_params(mid.p, sp[i + 1]->p, c.E, kO) < 0);
         if (!certified) sampled = false;
         else if ((part[i] = !covered(c, mid))) {
-          if (sp[i].key != kNoKey) vertex_state(sp[i].key) = 0;
-          if (sp[i + 1].key != kNoKey) vertex_state(sp[i + 1].key) = 0;
+          if (sp[i]->key != kNoKey) vertex_state(sp[i]->key) = 0;
+          if (sp[i + 1]->key != kNoKey) vertex_state(sp[i + 1]->key) = 0;
         }
       }
       if (!sampled) {
@@ -541,7 +707,7 @@ struct Classifier {
         continue;
       }
       vert.assign(V, 0);
-      for (std::size_t i = 0; i < V; ++i) vert[i] = (i > 0 && part[i - 1]) || (i + 1 < V && part[i]) || !covered(c, sp[i]);
+      for (std::size_t i = 0; i < V; ++i) vert[i] = (i > 0 && part[i - 1]) || (i + 1 < V && part[i]) || !covered(c, *sp[i]);
       for (std::size_t i = 0; i < V;) {
         if (!vert[i]) {
           ++i;
@@ -549,7 +715,9 @@ struct Classifier {
         }
         std::size_t j = i;
         while (j + 1 < V && part[j]) ++j;
-        out.push_back(make_piece(c, sp[i].p, sp[j].p));
+        Vec2 a, b;
+        if (end_point(c, *sp[i], a) && end_point(c, *sp[j], b)) out.push_back(make_piece(c, sp[i]->p, sp[j]->p, a, b));
+        else out.push_back(make_piece(c, sp[i]->p, sp[j]->p));
         i = j + 1;
       }
     }

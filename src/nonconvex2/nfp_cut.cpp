@@ -61,8 +61,10 @@ bool slab_rejects(const Tri& T, const Tri& B, const Vec2& dir, double dlen, doub
 
 }  // namespace
 
-NfpPiece make_piece(const NfpCandidate& c, const Param& lo, const Param& hi) {
-  NfpPiece pc{c.E, c.line, lo, hi, point_at(c, lo), point_at(c, hi), {}, {}};
+NfpPiece make_piece(const NfpCandidate& c, const Param& lo, const Param& hi) { return make_piece(c, lo, hi, point_at(c, lo), point_at(c, hi)); }
+
+NfpPiece make_piece(const NfpCandidate& c, const Param& lo, const Param& hi, const Vec2& a, const Vec2& b) {
+  NfpPiece pc{c.E, c.line, lo, hi, a, b, {}, {}};
   pc.blo = Vec2(lower(std::min(pc.a.x(), pc.b.x())), lower(std::min(pc.a.y(), pc.b.y())));
   pc.bhi = Vec2(upper(std::max(pc.a.x(), pc.b.x())), upper(std::max(pc.a.y(), pc.b.y())));
   return pc;

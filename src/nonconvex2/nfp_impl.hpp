@@ -51,6 +51,8 @@ bool convex_shape(const Polygon& S);
 
 /// The piece [lo, hi] of candidate c with its rounded ends and box.
 NfpPiece make_piece(const NfpCandidate& c, const Param& lo, const Param& hi);
+/// The same with its ends a, b given (each coordinate to a few ulps of the exact end).
+NfpPiece make_piece(const NfpCandidate& c, const Param& lo, const Param& hi, const Vec2& a, const Vec2& b);
 
 }  // namespace nonconvex2
 

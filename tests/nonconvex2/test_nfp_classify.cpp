@@ -10,10 +10,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <random>
 #include <string>
 
+#include "nonconvex2/convex_parts.hpp"
 #include "nonconvex2/nfp_impl.hpp"
 #include "nfp_shapes.hpp"
 #include "polygon2/shapes.hpp"
@@ -48,6 +50,14 @@ void same_pieces(const Polygon& P, const Polygon& Q, const std::string& what) {
     ASSERT_EQ(nc::compare_params(got[k].lo, ref[k].lo, E, o), 0) << what << " piece " << k << " lo";
     ASSERT_EQ(nc::compare_params(got[k].hi, ref[k].hi, E, o), 0) << what << " piece " << k << " hi";
     counts().points += nc::compare_params(ref[k].lo, ref[k].hi, E, o) == 0;
+    // The rounded ends: the reference's are accurate to a few ulps, the classifier's to 8.
+    for (int e = 0; e < 2; ++e)
+      for (int axis = 0; axis < 2; ++axis) {
+        const double r = (e == 0 ? ref[k].a : ref[k].b)[axis], g = (e == 0 ? got[k].a : got[k].b)[axis];
+        const double ulp = std::nextafter(std::abs(r), INFINITY) - std::abs(r);
+        ASSERT_LE(std::abs(g - r), 10 * ulp) << what << " piece " << k << " end " << e;
+        ASSERT_TRUE(got[k].blo[axis] <= g && g <= got[k].bhi[axis]) << what << " piece " << k;
+      }
   }
   ++counts().pairs;
   counts().candidates += cands.size();
@@ -138,6 +148,22 @@ TEST(NfpClassify, RandomPairs) {
                                   : star(rng, 8 + int(rng() % 30), 50, 100, grid);
     const Polygon Q = it % 4 == 3 ? polygon2_test::random_polygon(rng, 8, 1, grid) : star(rng, 5 + int(rng() % 20), 15, 45, grid);
     same_pieces(P, Q, "random " + std::to_string(it));
+  }
+}
+
+// Shapes with many convex parts: the point tests take the dual descent over triangle pairs
+// instead of the flat scan of part pairs (more than 256 part pairs, checked here).
+TEST(NfpClassify, LargePairsDescent) {
+  std::mt19937_64 rng(8123);
+  for (int it = 0; it < pendepth_test::scaled(6); ++it) {
+    const bool grid = it % 2;
+    const Polygon P = star(rng, 70 + int(rng() % 30), 50, 100, grid), Q = star(rng, 50 + int(rng() % 20), 15, 45, grid);
+    const pendepth::PairDepth2::Impl S(P, Q);
+    nc::ConvexParts pp, pb;
+    nc::convex_parts(S.tp, true, pp);
+    nc::convex_parts(S.tb, true, pb);
+    ASSERT_GT(pp.size() * pb.size(), 256u) << "not a descent case";
+    same_pieces(P, Q, "large " + std::to_string(it));
   }
 }
 
