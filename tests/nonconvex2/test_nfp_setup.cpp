@@ -6,7 +6,10 @@
 //   order, same ids, strictness, symbolic fields, rounded ends and boxes. Inputs: random stars and
 //   polygons with holes (real and integer coordinates), tiny integer grids and subdivided hulls
 //   (many parallel edges: the cross signs are exact zeros), combs, large offsets (inexact edge
-//   vectors), tiny and huge scales (products near underflow: the fallback), nesting instances.
+//   vectors), tiny and huge scales (products near underflow: the fallback), nesting instances,
+//   nearly parallel edges whose rounded cross products tie (only the exact product errors decide;
+//   deciding such ties as zero fails it), straight vertices between inexact edge vectors (exact
+//   zeros the roundings miss; trusting rounded vectors as exact fails it).
 // - BoxTree::build / build_boxes against the previous builder (index array, key table,
 //   nth_element, copied here as the reference): identical nodes, on random boxes with many ties;
 //   plus the hierarchy invariants (every node box is the exact union of its leaves' boxes).
@@ -207,6 +210,34 @@ TEST(NfpCandidates, RoundingTiesOfProducts) {
   }
   std::cout << "[nfp candidates] " << ties << " pairs of edges whose rounded cross products tie\n";
   EXPECT_GT(ties, pendepth_test::scaled(2000) / 50);  // the case this test is for does occur
+}
+
+// A straight vertex M of P on the line y = 3x, between points of very different magnitudes: the
+// edge vectors of P are rounded differences (inexact), exactly parallel to each other and to
+// Q's edge direction (−1, −3), while their roundings are not. Every decision at M is an exact
+// zero that only the exact predicate gets right.
+TEST(NfpCandidates, InexactEdgeVectors) {
+  std::mt19937_64 rng(2718);
+  std::uniform_real_distribution<double> U(0.5, 1);
+  auto bits51 = [](double x) { return std::ldexp(std::floor(std::ldexp(x, 51 - std::ilogb(x))), std::ilogb(x) - 51); };  // 3x exact
+  int inexact = 0;
+  for (int it = 0; it < pendepth_test::scaled(500); ++it) {
+    const double r1 = bits51(U(rng) * 1e-3), r2 = bits51(U(rng) * 3), R = bits51(U(rng) * 1e4);
+    const int turn = int(rng() % 4);
+    auto rot = [&](Vec2 p) {
+      for (int k = 0; k < turn; ++k) p = Vec2(-p.y(), p.x());
+      return p;
+    };
+    const Polygon P = Polygon::simple(std::vector<Vec2>{rot({-r1, -3 * r1}), rot({r2, 3 * r2}), rot({R, 3 * R}), rot({-R, 3 * R})}, "P");
+    const Polygon Q = Polygon::simple(std::vector<Vec2>{rot({1, 3}), rot({0, 0}), rot({2, 0})}, "Q");
+    inexact += mpq_class(r2 + r1) != mpq_class(r2) + mpq_class(r1) || mpq_class(3 * r2 + 3 * r1) != mpq_class(3 * r2) + mpq_class(3 * r1);
+    const std::string tag = " " + std::to_string(it);
+    same_candidates(P, Q, "inexact" + tag);
+    same_candidates(Q, P, "inexact swapped" + tag);
+    same_candidates(P, P, "inexact self" + tag);
+  }
+  std::cout << "[nfp candidates] " << inexact << " straight vertices between inexact edge vectors\n";
+  EXPECT_GT(inexact, pendepth_test::scaled(500) / 2);
 }
 
 TEST(NfpCandidates, NestingInstances) {
