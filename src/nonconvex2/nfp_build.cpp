@@ -94,7 +94,7 @@ bool product_error(double a, double b, double p, double& e) {
 // integer shapes: the common case the static filter cannot settle) compare the exact product
 // errors: x1 − x2 = (p1 + e1) − (p2 + e2) = e1 − e2. Otherwise the usual static filter and the
 // exact fallback (predicates::cross_edges, the same polynomial).
-int cross_sign(const EdgeVec& U, const EdgeVec& V, const Vec2& a0, const Vec2& a1, const Vec2& b0, const Vec2& b1) {
+inline int cross_sign(const EdgeVec& U, const EdgeVec& V, const Vec2& a0, const Vec2& a1, const Vec2& b0, const Vec2& b1) {
   const double p1 = U.x * V.y, p2 = U.y * V.x;
   if (U.exact && V.exact) {
     if (p1 != p2) return p1 > p2 ? 1 : -1;
@@ -108,6 +108,20 @@ int cross_sign(const EdgeVec& U, const EdgeVec& V, const Vec2& a0, const Vec2& a
   }
   return predicates::cross_edges(a0, a1, b0, b1);
 }
+
+struct Scratch {
+  std::vector<EdgeVec> edges;
+  std::vector<signed char> buf;
+  std::vector<std::uint32_t> fits;
+  // Large pairs do not pin their memory: shrink after them.
+  void trim() {
+    if (buf.size() > (std::size_t(1) << 16)) {
+      edges = {};
+      buf = {};
+      fits = {};
+    }
+  }
+};
 
 // The conservative box and rounded ends of a candidate whose E and line are set. The ends are
 // each a sum of two input doubles rounded once.
@@ -124,7 +138,11 @@ void finish(NfpCandidate& c) {
 std::vector<NfpCandidate> nfp_candidates(const Polygon& P, const Polygon& Q) {
   const auto VP = P.vertices(), VQ = Q.vertices();
   const std::size_t n = P.size(), m = Q.size();
-  std::vector<EdgeVec> edges(n + m);
+  // Scratch reused by the thread's next call (the builder runs once per pair, ~10 allocations
+  // per pair were ~10 % of the set-up): edge vectors, turns and signs, the qualifying pairs.
+  thread_local Scratch scratch;
+  std::vector<EdgeVec>& edges = scratch.edges;
+  edges.resize(n + m);
   const EdgeVec* const EP = edges.data();
   const EdgeVec* const EQ = EP + n;
   edge_vectors(P, edges.data());
@@ -136,7 +154,8 @@ std::vector<NfpCandidate> nfp_candidates(const Polygon& P, const Polygon& Q) {
   // two "edges on the outer side" tests read the table. One buffer: n + m turns, then the table.
   auto edge_sign = [&](std::size_t g, std::size_t h) { return cross_sign(EP[g], EQ[h], VP[g], VP[P.next(g)], VQ[h], VQ[Q.next(h)]); };
   const bool table = n * m <= (std::size_t(1) << 22);
-  std::vector<signed char> buf(n + m + (table ? n * m : 0));
+  std::vector<signed char>& buf = scratch.buf;
+  buf.resize(n + m + (table ? n * m : 0));
   signed char* const turnP = buf.data();
   signed char* const turnQ = turnP + n;
   signed char* const cross_table = turnQ + m;
@@ -156,8 +175,8 @@ std::vector<NfpCandidate> nfp_candidates(const Polygon& P, const Polygon& Q) {
   // reflex and cross(h, p_prev − p) = sign[prev p][h] ≤ 0 and cross(h, p_next − p) =
   // −sign[p][h] ≤ 0. The qualifying pairs are listed first (same order as the output) so the
   // candidates, large records, are written once into storage allocated once.
-  std::vector<std::uint32_t> fits;  // (edge, vertex) pairs, P edges first
-  fits.reserve(2 * (n + m));
+  std::vector<std::uint32_t>& fits = scratch.fits;  // (edge, vertex) pairs, P edges first
+  fits.clear();
   auto list = [&](auto&& sign) {
     for (std::uint32_t g = 0; g < n; ++g)
       for (std::uint32_t q = 0; q < m; ++q)
@@ -198,6 +217,7 @@ std::vector<NfpCandidate> nfp_candidates(const Polygon& P, const Polygon& Q) {
     }
     finish(c);
   }
+  scratch.trim();
   return cand;
 }
 
