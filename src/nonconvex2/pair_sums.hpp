@@ -170,12 +170,33 @@ void BoxTree::build_boxes(std::size_t count, Lo&& lo_of, Hi&& hi_of) {
     }
     const int axis = (hi.x() - lo.x()) >= (hi.y() - lo.y()) ? 0 : 1;
     const std::uint32_t mid = (J.b + J.e) / 2;
-    std::nth_element(item + J.b, item + mid, item + J.e,
-                     [axis](const Item& a, const Item& b) { return a.key[axis] < b.key[axis]; });
+    auto less = [axis](const Item& a, const Item& b) { return a.key[axis] < b.key[axis]; };
+    if (J.e - J.b <= 3) {
+      // std::nth_element sorts ranges of ≤ 3 by insertion, a stable sort: the same order here.
+      for (Item* i = item + J.b + 1; i < item + J.e; ++i) {
+        const Item v = *i;
+        Item* j = i;
+        for (; j > item + J.b && less(v, j[-1]); --j) *j = j[-1];
+        *j = v;
+      }
+    } else {
+      std::nth_element(item + J.b, item + mid, item + J.e, less);
+    }
     N.left = used;
     N.right = used + 1;
-    jobs[top++] = {used, J.b, mid};
-    jobs[top++] = {used + 1, mid, J.e};
+    // A one-leaf child is filled here rather than by a job of its own (node ids are assigned
+    // at this point either way, so the tree is unchanged).
+    const Job child[2] = {{used, J.b, mid}, {used + 1, mid, J.e}};
+    for (const Job& C : child) {
+      if (C.e - C.b > 1) {
+        jobs[top++] = C;
+        continue;
+      }
+      Node& leaf = nodes[C.node];
+      leaf.lo = lo_of(item[C.b].idx);
+      leaf.hi = hi_of(item[C.b].idx);
+      leaf.tri = item[C.b].idx;
+    }
     used += 2;
   }
 }
