@@ -22,14 +22,16 @@
 //    exactly), which remains the fallback for candidates the classification does not settle.
 // 3. nfp_rings.cpp links the pieces into rings, slits and points; a box hierarchy over the piece
 //    boxes serves the queries (nfp_query.cpp).
-// Cost: candidates O(nm) turn tests (static floating filter, exact fallback; K kept, K ≤ nm,
+// Cost: candidates O(nm) cross signs of edge vectors, each once (the turn tests are those signs,
+// possibly negated; exact by rounding monotonicity and FMA product errors when the edge vectors
+// are exact differences, else a static filter, then the exact predicate; K kept, K ≤ nm,
 // typically O(n + m) on real pieces); classification O(K log K + X) for X box-overlapping candidate
 // pairs plus one point test (O(1) sums on real pieces, worst O(nm)) per part and per split point;
 // worst case O(n²m²) exact tests (a candidate met by > 256 others is cut by the reference, O(nm)).
 // Measured (callgrind, Release, per pair over every ordered pair of the nesting instances):
-// albano 202 k instructions (classification 103 k, export 55 k, candidates 19 k, triangulations
-// and hierarchies 14 k), shirts 238 k, trousers 91 k — the reference cutting with the rational
-// export took 1.16 M on albano (docs/algorithms.md).
+// albano 186 k instructions (classification 104 k, export 55 k, candidates 11 k, triangulations
+// and their hierarchies 10 k, piece hierarchy 6 k), shirts 219 k, trousers 76 k — the reference
+// cutting with the rational export took 1.16 M on albano (docs/algorithms.md).
 // Departure from the usual reduced-convolution builders (CGAL, Clipper):
 // no arrangement of the candidates is built and no winding numbers are computed; membership in O
 // is decided directly by the open convex pair sums, which also yields the slits and isolated
@@ -48,76 +50,174 @@ namespace {
 double lower(double x) { return x - std::abs(x) * 0x1p-44 - 0x1p-1000; }
 double upper(double x) { return x + std::abs(x) * 0x1p-44 + 0x1p-1000; }
 
-// Exact sign of cross(b − a, d − c) for input doubles (a static floating filter first).
-int cross_sign(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d) { return predicates::cross_edges(a, b, c, d); }
+// One edge g → next(g) of a shape: its vector d = next − g rounded once, and whether that rounding
+// was exact (Knuth's TwoSum error of both coordinates is zero; overflow counts as inexact).
+struct EdgeVec {
+  double x = 0, y = 0;
+  bool exact = false;
+  std::uint32_t prev = 0;  // the vertex before g in its ring
+};
 
-// prev[g]: the vertex before g in its ring.
-std::vector<std::uint32_t> previous(const Polygon& S) {
-  std::vector<std::uint32_t> prev(S.size());
-  for (std::size_t g = 0; g < S.size(); ++g) prev[S.next(g)] = static_cast<std::uint32_t>(g);
-  return prev;
+bool exact_difference(double a, double b, double& d) {
+  d = a - b;
+  const double bb = d - a;
+  return std::isfinite(d) && (a - (d - bb)) + (-b - bb) == 0;
 }
 
-NfpCandidate candidate(const Ray& E, const Line& line) {
-  NfpCandidate c{E, line, {}, {}, {}, {}};
-  // The ends, each a sum of two input doubles rounded once.
+void edge_vectors(const Polygon& S, EdgeVec* E) {
+  const auto V = S.vertices();
+  for (std::size_t g = 0; g < S.size(); ++g) {
+    const std::size_t g1 = S.next(g);
+    double dx, dy;
+    const bool ex = exact_difference(V[g1].x(), V[g].x(), dx), ey = exact_difference(V[g1].y(), V[g].y(), dy);
+    E[g].x = dx, E[g].y = dy, E[g].exact = ex && ey;
+    E[g1].prev = static_cast<std::uint32_t>(g);
+  }
+}
+
+// The rounding error a·b − fl(a·b) of a product, exact (FMA) unless it could underflow; false
+// when it cannot be had exactly (then the caller falls back to the general exact predicate).
+bool product_error(double a, double b, double p, double& e) {
+  if (a == 0 || b == 0) {
+    e = 0;  // p = a·b = 0 exactly
+    return true;
+  }
+  // |p| ≥ 2^-900: every bit of a·b lies above 2^-1006, so the error is a representable double.
+  if (!(std::abs(p) >= 0x1p-900) || !std::isfinite(p)) return false;
+  e = std::fma(a, b, -p);
+  return true;
+}
+
+// Exact sign of cross(u, v) for the edges u = a0 → a1 and v = b0 → b1 with vectors U, V.
+// When both vectors are exact the cross is x1 − x2 with x1 = U.x·V.y, x2 = U.y·V.x exactly, and
+// rounding is monotone: fl(x1) > fl(x2) implies x1 > x2. Equal roundings (parallel edges of
+// integer shapes: the common case the static filter cannot settle) compare the exact product
+// errors: x1 − x2 = (p1 + e1) − (p2 + e2) = e1 − e2. Otherwise the usual static filter and the
+// exact fallback (predicates::cross_edges, the same polynomial).
+inline int cross_sign(const EdgeVec& U, const EdgeVec& V, const Vec2& a0, const Vec2& a1, const Vec2& b0, const Vec2& b1) {
+  const double p1 = U.x * V.y, p2 = U.y * V.x;
+  if (U.exact && V.exact) {
+    if (p1 != p2) return p1 > p2 ? 1 : -1;
+    double e1, e2;
+    if (product_error(U.x, V.y, p1, e1) && product_error(U.y, V.x, p2, e2)) return (e1 > e2) - (e1 < e2);
+  } else {
+    // The filter of predicates::cross_edges on the same rounded products.
+    const double d = p1 - p2, bound = exact::kCrossBound * (std::abs(p1) + std::abs(p2)) + exact::kTiny;
+    if (d > bound) return 1;
+    if (d < -bound) return -1;
+  }
+  return predicates::cross_edges(a0, a1, b0, b1);
+}
+
+struct Scratch {
+  std::vector<EdgeVec> edges;
+  std::vector<signed char> buf;
+  std::vector<std::uint32_t> fits;
+  // Large pairs do not pin their memory: shrink after them.
+  void trim() {
+    if (buf.size() > (std::size_t(1) << 16)) {
+      edges = {};
+      buf = {};
+      fits = {};
+    }
+  }
+};
+
+// The conservative box and rounded ends of a candidate whose E and line are set. The ends are
+// each a sum of two input doubles rounded once.
+void finish(NfpCandidate& c) {
+  const Line& line = c.line;
   c.A = line.c1 + line.c2;
   c.B = line.q_edge ? Vec2(line.c1 + line.e1) : Vec2(line.e1 + line.c2);
   c.lo = Vec2(lower(std::min(c.A.x(), c.B.x())), lower(std::min(c.A.y(), c.B.y())));
   c.hi = Vec2(upper(std::max(c.A.x(), c.B.x())), upper(std::max(c.A.y(), c.B.y())));
-  return c;
 }
 
 }  // namespace
 
 std::vector<NfpCandidate> nfp_candidates(const Polygon& P, const Polygon& Q) {
   const auto VP = P.vertices(), VQ = Q.vertices();
-  const auto prevP = previous(P), prevQ = previous(Q);
-  // Turn at each vertex: > 0 strictly convex, 0 straight, < 0 reflex.
-  std::vector<signed char> convexP(P.size()), convexQ(Q.size());
-  for (std::size_t g = 0; g < P.size(); ++g) convexP[g] = static_cast<signed char>(cross_sign(VP[prevP[g]], VP[g], VP[g], VP[P.next(g)]));
-  for (std::size_t g = 0; g < Q.size(); ++g) convexQ[g] = static_cast<signed char>(cross_sign(VQ[prevQ[g]], VQ[g], VQ[g], VQ[Q.next(g)]));
-  std::vector<NfpCandidate> cand;
-  for (std::uint32_t g = 0; g < P.size(); ++g) {
-    const auto g1 = static_cast<std::uint32_t>(P.next(g));
-    for (std::uint32_t q = 0; q < Q.size(); ++q) {
-      if (convexQ[q] < 0) continue;
-      // Q's edges at q on the closed right (outer) side of e: cross(e, w) ≤ 0.
-      if (cross_sign(VP[g], VP[g1], VQ[q], VQ[prevQ[q]]) > 0 || cross_sign(VP[g], VP[g1], VQ[q], VQ[Q.next(q)]) > 0) continue;
-      Ray E;
+  const std::size_t n = P.size(), m = Q.size();
+  // Scratch reused by the thread's next call (the builder runs once per pair, ~10 allocations
+  // per pair were ~10 % of the set-up): edge vectors, turns and signs, the qualifying pairs.
+  thread_local Scratch scratch;
+  std::vector<EdgeVec>& edges = scratch.edges;
+  edges.resize(n + m);
+  const EdgeVec* const EP = edges.data();
+  const EdgeVec* const EQ = EP + n;
+  edge_vectors(P, edges.data());
+  edge_vectors(Q, edges.data() + n);
+  // Every test below is the sign of cross(P edge g, Q edge h) for some g, h (the edges at a
+  // vertex reversed where needed: an exact negation), so the n·m signs are computed once into a
+  // table (up to 4 M entries; larger pairs evaluate each sign when needed, O(n + m) memory).
+  // Then the turn at a vertex (> 0 strictly convex, 0 straight, < 0 reflex) and, per pair, the
+  // two "edges on the outer side" tests read the table. One buffer: n + m turns, then the table.
+  auto edge_sign = [&](std::size_t g, std::size_t h) { return cross_sign(EP[g], EQ[h], VP[g], VP[P.next(g)], VQ[h], VQ[Q.next(h)]); };
+  const bool table = n * m <= (std::size_t(1) << 22);
+  std::vector<signed char>& buf = scratch.buf;
+  buf.resize(n + m + (table ? n * m : 0));
+  signed char* const turnP = buf.data();
+  signed char* const turnQ = turnP + n;
+  signed char* const cross_table = turnQ + m;
+  for (std::size_t g = 0; g < n && table; ++g)
+    for (std::size_t h = 0; h < m; ++h) cross_table[g * m + h] = static_cast<signed char>(edge_sign(g, h));
+  for (std::size_t g = 0; g < n; ++g) {
+    const std::uint32_t a = EP[g].prev;
+    turnP[g] = static_cast<signed char>(cross_sign(EP[a], EP[g], VP[a], VP[g], VP[g], VP[P.next(g)]));
+  }
+  for (std::size_t h = 0; h < m; ++h) {
+    const std::uint32_t a = EQ[h].prev;
+    turnQ[h] = static_cast<signed char>(cross_sign(EQ[a], EQ[h], VQ[a], VQ[h], VQ[h], VQ[Q.next(h)]));
+  }
+  // Vertex q of Q qualifies for P's edge g iff q is not reflex and Q's edges at q lie on the
+  // closed right (outer) side of g: cross(g, q_prev − q) = −sign[g][prev q] ≤ 0 and
+  // cross(g, q_next − q) = sign[g][q] ≤ 0. Vertex p of P qualifies for Q's edge h iff p is not
+  // reflex and cross(h, p_prev − p) = sign[prev p][h] ≤ 0 and cross(h, p_next − p) =
+  // −sign[p][h] ≤ 0. The qualifying pairs are listed first (same order as the output) so the
+  // candidates, large records, are written once into storage allocated once.
+  std::vector<std::uint32_t>& fits = scratch.fits;  // (edge, vertex) pairs, P edges first
+  fits.clear();
+  auto list = [&](auto&& sign) {
+    for (std::uint32_t g = 0; g < n; ++g)
+      for (std::uint32_t q = 0; q < m; ++q)
+        if (turnQ[q] >= 0 && sign(g, EQ[q].prev) >= 0 && sign(g, q) <= 0) fits.insert(fits.end(), {g, q});
+    const std::size_t kp = fits.size() / 2;
+    for (std::uint32_t h = 0; h < m; ++h)
+      for (std::uint32_t p = 0; p < n; ++p)
+        if (turnP[p] >= 0 && sign(EP[p].prev, h) <= 0 && sign(p, h) >= 0) fits.insert(fits.end(), {h, p});
+    return kp;
+  };
+  const std::size_t kp = table ? list([&](std::size_t g, std::size_t h) { return int(cross_table[g * m + h]); }) : list(edge_sign);
+  std::vector<NfpCandidate> cand(fits.size() / 2);
+  for (std::size_t k = 0; k < cand.size(); ++k) {
+    NfpCandidate& c = cand[k];
+    Ray& E = c.E;
+    Line& L = c.line;
+    E.sym = true;
+    if (k < kp) {  // P's edge g → g1 with Q's vertex q: from sum vertex (g, q) to (g1, q)
+      const std::uint32_t g = fits[2 * k], q = fits[2 * k + 1], g1 = static_cast<std::uint32_t>(P.next(g));
       E.o1 = VP[g];
       E.o2 = -VQ[q];
       E.a1 = VP[g1];
       E.b1 = VP[g];
-      E.sym = true;
       E.p0 = g, E.q0 = q, E.p1 = g1, E.q1 = q;
-      Line c;
-      c.c1 = VP[g], c.c2 = -VQ[q], c.e0 = VP[g], c.e1 = VP[g1];
-      c.p0 = g, c.p1 = g1, c.q0 = c.q1 = q, c.q_edge = false;
-      cand.push_back(candidate(E, c));
-      cand.back().strict = convexQ[q] > 0;
-    }
-  }
-  for (std::uint32_t h = 0; h < Q.size(); ++h) {
-    const auto h1 = static_cast<std::uint32_t>(Q.next(h));
-    for (std::uint32_t p = 0; p < P.size(); ++p) {
-      if (convexP[p] < 0) continue;
-      // P's edges at p on the closed outer side of Q's edge h: cross(q1 − q0, w) ≤ 0.
-      if (cross_sign(VQ[h], VQ[h1], VP[p], VP[prevP[p]]) > 0 || cross_sign(VQ[h], VQ[h1], VP[p], VP[P.next(p)]) > 0) continue;
-      Ray E;
+      L.c1 = VP[g], L.c2 = -VQ[q], L.e0 = VP[g], L.e1 = VP[g1];
+      L.p0 = g, L.p1 = g1, L.q0 = L.q1 = q, L.q_edge = false;
+      c.strict = turnQ[q] > 0;
+    } else {  // −Q's edge −h → −h1 with P's vertex p: from (p, h) to (p, h1)
+      const std::uint32_t h = fits[2 * k], p = fits[2 * k + 1], h1 = static_cast<std::uint32_t>(Q.next(h));
       E.o1 = VP[p];
       E.o2 = -VQ[h];
       E.a1 = -VQ[h1];
       E.b1 = -VQ[h];
-      E.sym = true;
       E.p0 = p, E.q0 = h, E.p1 = p, E.q1 = h1;
-      Line c;
-      c.c1 = VP[p], c.c2 = -VQ[h], c.e0 = -VQ[h], c.e1 = -VQ[h1];
-      c.p0 = c.p1 = p, c.q0 = h, c.q1 = h1, c.q_edge = true;
-      cand.push_back(candidate(E, c));
-      cand.back().strict = convexP[p] > 0;
+      L.c1 = VP[p], L.c2 = -VQ[h], L.e0 = -VQ[h], L.e1 = -VQ[h1];
+      L.p0 = L.p1 = p, L.q0 = h, L.q1 = h1, L.q_edge = true;
+      c.strict = turnP[p] > 0;
     }
+    finish(c);
   }
+  scratch.trim();
   return cand;
 }
 
@@ -130,13 +230,9 @@ NoFitPolygon2::Impl::Impl(const Polygon& P, const Polygon& Q) : S(P, Q) {
   // Step 2: their uncovered closed pieces.
   nonconvex2::nfp_classify(S, cand, pieces);
   sz.pieces = pieces.size();
-  // Step 3: the query index over the piece boxes (BoxTree only reads a leaf's box).
-  std::vector<nonconvex2::Tri> boxes(pieces.size());
-  for (std::size_t k = 0; k < pieces.size(); ++k) {
-    boxes[k].lo = pieces[k].blo;
-    boxes[k].hi = pieces[k].bhi;
-  }
-  tree.build(boxes);
+  // Step 3: the query index over the piece boxes, read in place.
+  tree.build_boxes(
+      pieces.size(), [&](std::size_t k) -> const Vec2& { return pieces[k].blo; }, [&](std::size_t k) -> const Vec2& { return pieces[k].bhi; });
   nfp_export(*this);
 }
 

@@ -19,9 +19,11 @@ void require_finite(const Vec2& v, const char* what) {
 
 // Triangles of `shape` in normal form; `negate` stores −shape (for Q), keeping Q's vertex ids.
 std::vector<nonconvex2::Tri> normal_triangles(const Polygon& shape, bool negate) {
-  std::vector<nonconvex2::Tri> out;
   const auto V = shape.vertices();
-  for (const auto& ids : polygon2::triangulate(shape)) {
+  const std::vector<polygon2::TriangleIds> tris = polygon2::triangulate(shape);
+  std::vector<nonconvex2::Tri> out;
+  out.reserve(tris.size());
+  for (const auto& ids : tris) {
     std::array<Vec2, 3> v;
     for (int k = 0; k < 3; ++k) v[k] = negate ? Vec2(-V[ids[k]]) : V[ids[k]];  // −x is exact; −U stays CCW
     int low = 0;

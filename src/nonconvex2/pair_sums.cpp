@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 
 #include "geometry/exact.hpp"
 
@@ -195,47 +194,7 @@ bool ray_box(const Vec2& t, const Vec2& d, const Vec2& lo, const Vec2& hi, doubl
 }
 
 void BoxTree::build(const std::vector<Tri>& tris) {
-  nodes.clear();
-  if (tris.empty()) return;
-  std::vector<std::uint32_t> idx(tris.size());
-  std::iota(idx.begin(), idx.end(), 0u);
-  // Split keys (twice the box centres) computed once: the selections below compare them often.
-  std::vector<std::array<double, 2>> key(tris.size());
-  for (std::size_t k = 0; k < tris.size(); ++k) key[k] = {tris[k].lo.x() + tris[k].hi.x(), tris[k].lo.y() + tris[k].hi.y()};
-  nodes.reserve(2 * tris.size());
-  // Recursive build by explicit stack: (node, begin, end).
-  struct Job {
-    std::int32_t node;
-    std::size_t b, e;
-  };
-  nodes.push_back({});
-  std::vector<Job> jobs{{0, 0, tris.size()}};
-  while (!jobs.empty()) {
-    Job J = jobs.back();
-    jobs.pop_back();
-    Vec2 lo = tris[idx[J.b]].lo, hi = tris[idx[J.b]].hi;
-    for (std::size_t k = J.b + 1; k < J.e; ++k) {
-      lo = lo.cwiseMin(tris[idx[k]].lo);
-      hi = hi.cwiseMax(tris[idx[k]].hi);
-    }
-    nodes[J.node].lo = lo;
-    nodes[J.node].hi = hi;
-    if (J.e - J.b == 1) {
-      nodes[J.node].tri = idx[J.b];
-      continue;
-    }
-    const int axis = (hi.x() - lo.x()) >= (hi.y() - lo.y()) ? 0 : 1;
-    const std::size_t mid = (J.b + J.e) / 2;
-    std::nth_element(idx.begin() + J.b, idx.begin() + mid, idx.begin() + J.e,
-                     [&](std::uint32_t a, std::uint32_t b) { return key[a][axis] < key[b][axis]; });
-    const auto l = static_cast<std::int32_t>(nodes.size());
-    nodes.push_back({});
-    nodes.push_back({});
-    nodes[J.node].left = l;
-    nodes[J.node].right = l + 1;
-    jobs.push_back({l, J.b, mid});
-    jobs.push_back({l + 1, mid, J.e});
-  }
+  build_boxes(tris.size(), [&](std::size_t k) -> const Vec2& { return tris[k].lo; }, [&](std::size_t k) -> const Vec2& { return tris[k].hi; });
 }
 
 }  // namespace pendepth::nonconvex2

@@ -13,6 +13,7 @@
 
 #include <pendepth/depth2_nonconvex.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -116,7 +117,89 @@ struct BoxTree {
   };
   std::vector<Node> nodes;  // nodes[0] is the root
   void build(const std::vector<Tri>& tris);
+  /// The same tree over `count` leaves whose boxes are lo_of(k), hi_of(k) (any record type, no
+  /// copy into Tri records). O(s log s); no allocation besides `nodes` up to 64 leaves.
+  template <class Lo, class Hi>
+  void build_boxes(std::size_t count, Lo&& lo_of, Hi&& hi_of);
 };
+
+template <class Lo, class Hi>
+void BoxTree::build_boxes(std::size_t count, Lo&& lo_of, Hi&& hi_of) {
+  nodes.clear();
+  if (count == 0) return;
+  // Per leaf its index and split keys (twice the box centre, computed once: the selections
+  // compare them often), kept together so the selection moves one record and reads no other.
+  // The selection permutes these exactly as it permuted a bare index array compared through a
+  // key table (the same comparisons in the same order), so the tree is the same as before.
+  struct Item {
+    double key[2];
+    std::uint32_t idx;
+  };
+  // Up to 64 leaves (the triangulations and piece sets of real nesting pieces) on the stack.
+  Item small[64];
+  std::vector<Item> large(count > 64 ? count : 0);
+  Item* const item = count > 64 ? large.data() : small;
+  for (std::size_t k = 0; k < count; ++k) {
+    const Vec2 &lo = lo_of(k), &hi = hi_of(k);
+    item[k] = {{lo.x() + hi.x(), lo.y() + hi.y()}, static_cast<std::uint32_t>(k)};
+  }
+  nodes.resize(2 * count - 1);
+  // Depth-first by explicit stack: (node, begin, end). Ranges halve, so the stack holds at most
+  // one pending sibling per level: ≤ 64 + 1 entries for any count.
+  struct Job {
+    std::int32_t node;
+    std::uint32_t b, e;
+  };
+  Job jobs[66];
+  int top = 0;
+  jobs[top++] = {0, 0, static_cast<std::uint32_t>(count)};
+  std::int32_t used = 1;
+  while (top > 0) {
+    const Job J = jobs[--top];
+    Node& N = nodes[J.node];
+    Vec2 lo = lo_of(item[J.b].idx), hi = hi_of(item[J.b].idx);
+    for (std::uint32_t k = J.b + 1; k < J.e; ++k) {
+      lo = lo.cwiseMin(lo_of(item[k].idx));
+      hi = hi.cwiseMax(hi_of(item[k].idx));
+    }
+    N.lo = lo;
+    N.hi = hi;
+    if (J.e - J.b == 1) {
+      N.tri = item[J.b].idx;
+      continue;
+    }
+    const int axis = (hi.x() - lo.x()) >= (hi.y() - lo.y()) ? 0 : 1;
+    const std::uint32_t mid = (J.b + J.e) / 2;
+    auto less = [axis](const Item& a, const Item& b) { return a.key[axis] < b.key[axis]; };
+    if (J.e - J.b <= 3) {
+      // std::nth_element sorts ranges of ≤ 3 by insertion, a stable sort: the same order here.
+      for (Item* i = item + J.b + 1; i < item + J.e; ++i) {
+        const Item v = *i;
+        Item* j = i;
+        for (; j > item + J.b && less(v, j[-1]); --j) *j = j[-1];
+        *j = v;
+      }
+    } else {
+      std::nth_element(item + J.b, item + mid, item + J.e, less);
+    }
+    N.left = used;
+    N.right = used + 1;
+    // A one-leaf child is filled here rather than by a job of its own (node ids are assigned
+    // at this point either way, so the tree is unchanged).
+    const Job child[2] = {{used, J.b, mid}, {used + 1, mid, J.e}};
+    for (const Job& C : child) {
+      if (C.e - C.b > 1) {
+        jobs[top++] = C;
+        continue;
+      }
+      Node& leaf = nodes[C.node];
+      leaf.lo = lo_of(item[C.b].idx);
+      leaf.hi = hi_of(item[C.b].idx);
+      leaf.tri = item[C.b].idx;
+    }
+    used += 2;
+  }
+}
 
 /// T ⊕ B for a P triangle and a −Q triangle (both normal form): exact angle merge, 5 comparisons.
 Sum make_sum(const Tri& T, const Tri& B);
