@@ -53,6 +53,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
@@ -80,9 +81,12 @@ struct End {
   bool r_sum;                 // r from TwoSum of a sum vertex (round_sum succeeded)
   std::uint32_t pid, qid;
   Vec2 sp, sb;
+  double tsx, tex, tsy, tey;  // a sum vertex: its exact coordinates as TwoSum pairs (when r_sum)
   int den_sign;               // sign of the denominator of μ
   Vec2 r;                     // rounded to nearest
   bool have_dd;               // xn, yn, den computed (round_coord)
+  signed char fx;             // numerators and denominator exact in doubles: 1 yes, -1 no, 0 not tried
+  double fxn, fyn, fden;      // those exact values when fx = 1
   exact::DD xn, yn, den;      // not a sum vertex: the coordinates' numerators and denominator
   End() {}  // user-provided: no zero-filling of the whole struct on emplace_back
   Param param() const { return kind == Param::Zero || kind == Param::One ? Param{kind, {}, 0} : *raw; }
@@ -150,7 +154,7 @@ double round_q(const mpq_class& q) {
 
 // round_q of the exact sum a + b without rationals (TwoSum): fl(a + b) is the nearest double, and
 // on an exact tie round_q's choice (the neighbour nearer zero) is taken. False if it overflows.
-bool round_sum(double a, double b, double& out) {
+[[gnu::always_inline]] inline bool round_sum(double a, double b, double& out) {
   const double s = a + b, bb = s - a, e = (a - (s - bb)) + (b - bb);
   if (!std::isfinite(s) || !std::isfinite(e)) return false;
   out = s;
@@ -176,6 +180,28 @@ double round_coord(End& v, int axis, double d) {
     return r == 0 ? 0.0 : r;
   if (v.kind == Param::Cut && v.raw->line.e0[axis] == v.raw->line.e1[axis] && round_sum(v.raw->line.c1[axis], v.raw->line.c2[axis], r))
     return r == 0 ? 0.0 : r;
+  // Integer-like data (every input double an integer): the numerator and denominator are often
+  // exact doubles (FlX certifies it); then the IEEE quotient is the nearest double. It is never an
+  // exact tie (where IEEE's even choice could differ from round_q's): a tie is odd·2^k with a 54-bit
+  // odd part, and num = x·den would carry that odd part, more than a double holds.
+  if (v.fx == 0) {
+    v.fx = -1;
+    auto integral = [](const Vec2& p) { return p.x() == std::trunc(p.x()) && p.y() == std::trunc(p.y()); };
+    const Line& c = v.raw->line;
+    if (integral(E.o1) && integral(E.o2) && integral(E.a1) && integral(E.a2) && integral(E.b1) && integral(E.b2) &&
+        (v.kind != Param::Cut || (integral(c.c1) && integral(c.c2) && integral(c.e0) && integral(c.e1)))) {
+      const exact::LiftFlX X;
+      const auto [n, dd] = end_nd(v, X);
+      const exact::FlX xn = (X(E.o1.x()) + X(E.o2.x())) * dd + n * nonconvex2::ray_dx(E, X);
+      const exact::FlX yn = (X(E.o1.y()) + X(E.o2.y())) * dd + n * nonconvex2::ray_dy(E, X);
+      if (xn.exact && yn.exact && dd.exact && dd.v != 0) v.fx = 1, v.fxn = xn.v, v.fyn = yn.v, v.fden = dd.v;
+    }
+  }
+  if (v.fx > 0) {
+    const double num = axis == 0 ? v.fxn : v.fyn, q = num / v.fden;
+    if (num == 0) return 0.0;  // an exact zero is +0 (round_q)
+    if (std::isfinite(q) && std::abs(q) >= 0x1p-1022) return q;  // normal: correctly rounded
+  }
   // Sign of x − (hi + lo): from the stored double-double numerator and denominator when their
   // bounds decide, else exactly.
   if (!v.have_dd) {  // the double-double numerators and denominator, once per end
@@ -283,6 +309,30 @@ mpq_class ring_area2(const std::vector<QP>& V, const std::vector<int>& ring) {
   return a;
 }
 
+// Exact sign of a·b − c·d for doubles, 2 when undecided (a product overflows, or the products are
+// equal and one may have lost its rounding error below the normal range). Rounding is monotone, so
+// fl(a·b) > fl(c·d) implies a·b > c·d; on equal products the FMA rounding errors decide exactly.
+int sign_det(double a, double b, double c, double d) {
+  const double p = a * b, q = c * d;
+  if (!std::isfinite(p) || !std::isfinite(q)) return 2;
+  if (p != q) return p > q ? 1 : -1;
+  auto err = [](double x, double y, double r, double& e) {
+    if (x == 0 || y == 0) return e = 0, true;
+    if (std::abs(r) <= 0x1p-960) return false;
+    return e = std::fma(x, y, -r), true;
+  };
+  double ep, eq;
+  if (!err(a, b, p, ep) || !err(c, d, q, eq)) return 2;
+  return (ep > eq) - (ep < eq);
+}
+
+// x − y exactly as a double, or false.
+[[gnu::always_inline]] inline bool exact_diff(double x, double y, double& out) {
+  double e;
+  exact::two_sum(x, -y, out, e);
+  return e == 0 && std::isfinite(out);
+}
+
 // A piece of positive length: its ends (vertex ids), its ray and line, and the sign of its
 // direction along u (x, or y on a vertical line).
 struct Seg {
@@ -296,20 +346,41 @@ struct Seg {
   bool horizontal;           // dy exactly 0
   double s_lo, s_hi;         // interval of the exact slope (not vertical)
   double k_lo, k_hi;         // interval of the exact offset (vertical: x; horizontal: y)
+  // Exact doubles when available (integer-like data, nearby coordinates): the direction (ex, ey)
+  // when `dexact`, the origin (oxe, oye) when `oexact`; then line comparisons need no lifting.
+  bool dexact, oexact;
+  double ex, ey, oxe, oye;
 };
 
 // The Seg of piece pc between vertex ids ia, ib, with its filters.
 Seg make_seg(const NfpPiece& pc, int ia, int ib) {
   const Ray& E = pc.E;
   const exact::LiftFl F;
-  Seg s{ia, ib, &E, &pc.edge, false, 0, 0, nonconvex2::ray_dx(E, F), nonconvex2::ray_dy(E, F), F(E.o1.x()) + F(E.o2.x()),
-        F(E.o1.y()) + F(E.o2.y()), false, 0, 0, 0, 0};
-  s.sdx = exact::certified_sign(s.dx);
-  if (s.sdx == 2) s.sdx = exact::exact_sign([&](auto L) { return nonconvex2::ray_dx(E, L); });
+  Seg s;
+  s.a = ia, s.b = ib, s.E = &E, s.edge = &pc.edge;
+  s.dexact = E.a2.x() == 0 && E.a2.y() == 0 && E.b2.x() == 0 && E.b2.y() == 0 && exact_diff(E.a1.x(), E.b1.x(), s.ex) &&
+             exact_diff(E.a1.y(), E.b1.y(), s.ey);
+  s.oexact = exact_diff(E.o1.x(), -E.o2.x(), s.oxe) && exact_diff(E.o1.y(), -E.o2.y(), s.oye);
+  if (s.dexact) {
+    s.dx = {s.ex, 0};
+    s.dy = {s.ey, 0};
+    s.sdx = (s.ex > 0) - (s.ex < 0);
+  } else {
+    s.dx = nonconvex2::ray_dx(E, F);
+    s.dy = nonconvex2::ray_dy(E, F);
+    s.sdx = exact::certified_sign(s.dx);
+    if (s.sdx == 2) s.sdx = exact::exact_sign([&](auto L) { return nonconvex2::ray_dx(E, L); });
+  }
+  s.ox = s.oexact ? exact::Fl{s.oxe, 0} : F(E.o1.x()) + F(E.o2.x());
+  s.oy = s.oexact ? exact::Fl{s.oye, 0} : F(E.o1.y()) + F(E.o2.y());
   s.vertical = s.sdx == 0;
   s.su = s.sdx;
-  int sdy = exact::certified_sign(s.dy);
-  if (sdy == 2) sdy = exact::exact_sign([&](auto L) { return nonconvex2::ray_dy(E, L); });
+  int sdy;
+  if (s.dexact) sdy = (s.ey > 0) - (s.ey < 0);
+  else {
+    sdy = exact::certified_sign(s.dy);
+    if (sdy == 2) sdy = exact::exact_sign([&](auto L) { return nonconvex2::ray_dy(E, L); });
+  }
   if (s.vertical) s.su = sdy;
   s.horizontal = sdy == 0;
   // Intervals for line_less: the slope dy/dx from the bounded dx, dy (plus the division's
@@ -335,23 +406,32 @@ int compare_lines(const Seg& s, const Seg& t) {
   if (s.vertical != t.vertical) return s.vertical ? 1 : -1;
   const Ray &A = *s.E, &B = *t.E;
   using nonconvex2::ray_dx, nonconvex2::ray_dy;
-  // Each sign: the stored floating values with their bounds first, exact when undecided.
+  // Each sign: exact doubles first, then the stored floating values with their bounds, exact
+  // (lifted) when undecided.
   if (s.vertical) {
+    if (s.oexact && t.oexact) return (s.oxe > t.oxe) - (s.oxe < t.oxe);
     const int c = exact::certified_sign(s.ox - t.ox);
     return c != 2 ? c : exact::exact_sign([&](auto L) { return L(A.o1.x()) + L(A.o2.x()) - L(B.o1.x()) - L(B.o2.x()); });
   }
   // slope_s − slope_t = (dy_s·dx_t − dy_t·dx_s) / (dx_s·dx_t)
-  int c = exact::certified_sign(s.dy * t.dx - t.dy * s.dx);
+  int c = s.dexact && t.dexact ? sign_det(s.ey, t.ex, t.ey, s.ex) : 2;
+  if (c == 2) c = exact::certified_sign(s.dy * t.dx - t.dy * s.dx);
   if (c == 2) c = exact::exact_sign([&](auto L) { return ray_dy(A, L) * ray_dx(B, L) - ray_dy(B, L) * ray_dx(A, L); });
   if (c != 0) return s.sdx * t.sdx * c;
   // Equal slopes: offset_s − offset_t = ((oy_s − oy_t)·dx_s − dy_s·(ox_s − ox_t)) / dx_s
-  c = exact::certified_sign((s.oy - t.oy) * s.dx - s.dy * (s.ox - t.ox));
-  if (c == 2)
+  c = 2;
+  if (double wx, wy; s.dexact && s.oexact && t.oexact && exact_diff(s.oxe, t.oxe, wx) && exact_diff(s.oye, t.oye, wy))
+    c = sign_det(wy, s.ex, s.ey, wx);
+  if (c == 2) c = exact::certified_sign((s.oy - t.oy) * s.dx - s.dy * (s.ox - t.ox));
+  if (c == 2) {
+    // A shared origin term (the same P vertex or the same −Q vertex) cancels exactly.
+    const bool same1 = A.o1 == B.o1, same2 = A.o2 == B.o2;
     c = exact::exact_sign([&](auto L) {
-      auto ox = L(A.o1.x()) + L(A.o2.x()) - L(B.o1.x()) - L(B.o2.x());
-      auto oy = L(A.o1.y()) + L(A.o2.y()) - L(B.o1.y()) - L(B.o2.y());
+      auto ox = same1 ? L(A.o2.x()) - L(B.o2.x()) : same2 ? L(A.o1.x()) - L(B.o1.x()) : L(A.o1.x()) + L(A.o2.x()) - L(B.o1.x()) - L(B.o2.x());
+      auto oy = same1 ? L(A.o2.y()) - L(B.o2.y()) : same2 ? L(A.o1.y()) - L(B.o1.y()) : L(A.o1.y()) + L(A.o2.y()) - L(B.o1.y()) - L(B.o2.y());
       return oy * ray_dx(A, L) - ray_dy(A, L) * ox;
     });
+  }
   return s.sdx * c;
 }
 
@@ -420,9 +500,27 @@ bool nfp_export_convex(NoFitPolygon2::Impl& N) {
   for (const NfpPiece& pc : N.pieces)
     if (!whole(pc)) return false;
   // The pieces by the angle of their direction (an input edge vector a1 − b1), exactly.
-  std::vector<int> order(np);
+  thread_local std::vector<int> order;  // reused buffers (no allocation per call)
+  order.resize(np);
   for (std::size_t k = 0; k < np; ++k) order[k] = int(k);
+  // Per piece: the half-plane of its direction and the direction as exact doubles when the
+  // differences are exact; compare_angle (the same order) only where those cannot decide.
+  struct AngleKey {
+    int half;
+    bool exact;
+    double x, y;
+  };
+  thread_local std::vector<AngleKey> ak;
+  ak.resize(np);
+  for (std::size_t k = 0; k < np; ++k) {
+    const Ray& E = N.pieces[k].E;
+    ak[k].half = (E.a1.y() < E.b1.y() || (E.a1.y() == E.b1.y() && E.a1.x() < E.b1.x())) ? 1 : 0;
+    ak[k].exact = exact_diff(E.a1.x(), E.b1.x(), ak[k].x) && exact_diff(E.a1.y(), E.b1.y(), ak[k].y);
+  }
   auto angle = [&](int a, int b) {
+    if (ak[a].half != ak[b].half) return ak[a].half < ak[b].half ? -1 : 1;
+    if (ak[a].exact && ak[b].exact)
+      if (const int c = sign_det(ak[a].x, ak[b].y, ak[a].y, ak[b].x); c != 2) return -c;
     const Ray &A = N.pieces[a].E, &B = N.pieces[b].E;
     return predicates::compare_angle(A.b1, A.a1, B.b1, B.a1);
   };
@@ -432,7 +530,8 @@ bool nfp_export_convex(NoFitPolygon2::Impl& N) {
     std::size_t b, e;  // order[b, e)
     SumPoint lo, hi;
   };
-  std::vector<Group> groups;
+  thread_local std::vector<Group> groups;
+  groups.clear();
   for (std::size_t b = 0, e; b < np; b = e) {
     e = b + 1;
     while (e < np && angle(order[b], order[e]) == 0) ++e;
@@ -458,8 +557,8 @@ bool nfp_export_convex(NoFitPolygon2::Impl& N) {
   // at that edge's first elementary segment in increasing u (x, or y when vertical): the edge's
   // start when it runs towards increasing u or has no vertex inside, else its end.
   std::size_t first = 0;
-  std::vector<Seg> segs;
-  segs.reserve(ng);
+  thread_local std::vector<Seg> segs;
+  segs.clear();
   for (const Group& g : groups) segs.push_back(make_seg(N.pieces[order[g.b]], 0, 0));
   for (std::size_t k = 1; k < ng; ++k)
     if (compare_lines_filtered(segs[k], segs[first]) < 0) first = k;
@@ -486,6 +585,32 @@ bool nfp_export_convex(NoFitPolygon2::Impl& N) {
 }
 
 namespace {
+
+// Reused buffers of the general export (one per thread): its scratch arrays are sized by the
+// pieces, so after the first pairs no call allocates except for its output.
+struct Workspace {
+  std::vector<End> ends;
+  std::vector<int> id, rep, order, zero_points, verts, stamp, pos, us, first, out, fill, ring_verts, ring_start, cuts;
+  std::vector<Vec2> rv;
+  std::vector<char> fixed, seen, is_vertex, used;
+  std::vector<Seg> segs, sorted;
+  struct Edge {
+    int a, b;
+    std::size_t line;  // the group of its exact supporting line
+    bool fwd;          // along increasing u of that line
+  };
+  struct Iv {
+    int lo, hi;  // vertex ids (lower and higher u)
+    bool fwd;
+  };
+  std::vector<Edge> edges;
+  std::vector<Iv> ivs;
+  std::vector<std::array<int, 2>> slits;
+  std::vector<std::size_t> chain, outer, holes, owner;
+  std::vector<int> table, ghead, vnext;  // interning: hash table of rounding groups, vertex lists
+  std::vector<Vec2> gkey;
+};
+
 }  // namespace
 
 const NoFitPolygon2::Impl& nfp_impl(const NoFitPolygon2& n) { return *n.impl_; }
@@ -493,14 +618,17 @@ const NoFitPolygon2::Impl& nfp_impl(const NoFitPolygon2& n) { return *n.impl_; }
 void nfp_export(NoFitPolygon2::Impl& N) {
   // Two convex shapes: the pieces are edges of the convex sum, ordered by angle.
   if (nonconvex2::convex_shape(N.S.P) && nonconvex2::convex_shape(N.S.Q) && nfp_export_convex(N)) return;
+  thread_local Workspace W;
   const std::size_t np = N.pieces.size();
   // 1. Every end, rounded to nearest; ends[2k], ends[2k + 1] are piece k's lo and hi.
-  std::vector<End> ends;
-  ends.reserve(2 * np);
+  std::vector<End>& ends = W.ends;
+  ends.resize(2 * np);
+  std::vector<int>& cuts = W.cuts;  // rounded crossing ends, for reuse
+  cuts.clear();
   for (std::size_t k = 0; k < np; ++k) {
     const NfpPiece& pc = N.pieces[k];
     for (int j = 0; j < 2; ++j) {
-      End& v = ends.emplace_back();
+      End& v = ends[2 * k + j];
       v.E = &pc.E;
       v.edge = &pc.edge;
       v.raw = j == 0 ? &pc.lo : &pc.hi;
@@ -518,61 +646,107 @@ void nfp_export(NoFitPolygon2::Impl& N) {
         v.sb = e == 0 || E.q0 == E.q1 ? E.o2 : E.a1;
         v.den_sign = 1;
         v.r_sum = round_sum(v.sp.x(), v.sb.x(), v.r.x()) && round_sum(v.sp.y(), v.sb.y(), v.r.y());
+        exact::two_sum(v.sp.x(), v.sb.x(), v.tsx, v.tex);
+        exact::two_sum(v.sp.y(), v.sb.y(), v.tsy, v.tey);
         if (!v.r_sum) v.r = Vec2(round_q(mpq_class(v.sp.x()) + v.sb.x()), round_q(mpq_class(v.sp.y()) + v.sb.y()));
         continue;
       }
       v.pid = v.qid = 0;
       v.have_dd = false;
+      v.fx = 0;
       v.den_sign = v.kind == Param::Cut ? exact::exact_sign([&](auto L) { return coord_den(v, L); }) : 1;  // Proj: a squared length
+      // The crossing of the same two lines was rounded already (the end of one piece and the start
+      // of the next): rounding is a function of the exact point, so its rounding is this one's.
+      bool reused = false;
+      if (v.kind == Param::Cut) {
+        for (int c : cuts) {
+          const End& u = ends[c];
+          const bool uv = nonconvex2::same_line(u.raw->line, *v.edge), vu = nonconvex2::same_line(v.raw->line, *u.edge);
+          // Each cut by the other's line: the same crossing symbolically; one way only: same_point
+          // decides (the other line collinear, exactly).
+          if ((uv && vu) ||
+              ((uv || vu) && nonconvex2::same_point(nonconvex2::Cand{*u.E, u.param(), *u.edge}, nonconvex2::Cand{*v.E, v.param(), *v.edge}))) {
+            v.r = u.r;
+            reused = true;
+            break;
+          }
+        }
+      }
+      if (reused) continue;
       const Vec2& guess = j == 0 ? pc.a : pc.b;
       v.r = Vec2(round_coord(v, 0, guess.x()), round_coord(v, 1, guess.y()));
+      if (v.kind == Param::Cut) cuts.push_back(int(2 * k + j));
     }
   }
   // Intern: ends with equal roundings are candidates; the same point symbolically or exactly.
-  std::vector<int> id(ends.size(), -1);
+  std::vector<int>& id = W.id;
+  id.assign(ends.size(), -1);
   int nv = 0;
-  std::vector<int> rep;  // rep[vertex id] = one of its ends
+  std::vector<int>& rep = W.rep;  // rep[vertex id] = one of its ends
+  rep.clear();
   {
-    std::vector<int> order(ends.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
-    std::sort(order.begin(), order.end(), [&](int x, int y) {
-      const Vec2 &a = ends[x].r, &b = ends[y].r;
-      return a.x() != b.x() ? a.x() < b.x() : a.y() != b.y() ? a.y() < b.y() : x < y;
-    });
     auto same = [&](const End& a, const End& b) {
-      if (a.sum && b.sum && a.pid == b.pid && a.qid == b.qid) return true;
+      if (a.sum && b.sum) {
+        if (a.pid == b.pid && a.qid == b.qid) return true;
+        // Two sums of two doubles, both TwoSum pairs finite: equal iff the pairs are (s = fl(x)
+        // and e = x − s are functions of the exact x).
+        if (a.r_sum && b.r_sum) return a.tsx == b.tsx && a.tex == b.tex && a.tsy == b.tsy && a.tey == b.tey;
+      }
       if (nonconvex2::same_point(nonconvex2::Cand{*a.E, a.param(), *a.edge}, nonconvex2::Cand{*b.E, b.param(), *b.edge})) return true;
       return compare_coord(a, b, 0) == 0 && compare_coord(a, b, 1) == 0;
     };
-    for (std::size_t g0 = 0, g1; g0 < order.size(); g0 = g1) {
-      g1 = g0 + 1;
-      while (g1 < order.size() && ends[order[g1]].r == ends[order[g0]].r) ++g1;
-      const int first = nv;
-      for (std::size_t i = g0; i < g1; ++i) {
-        const int e = order[i];
-        for (int c = first; c < nv && id[e] < 0; ++c)
-          if (same(ends[rep[c]], ends[e])) id[e] = c;
-        if (id[e] < 0) {
-          id[e] = nv++;
-          rep.push_back(e);
-        }
+    // Groups of equal roundings (−0 = +0) in an open-addressing table; each group lists its
+    // vertices. Ends are visited in index order, so a vertex's representative is its first end.
+    int bits = 4;
+    while ((std::size_t(1) << bits) < 2 * ends.size()) ++bits;
+    std::vector<int>& table = W.table;
+    table.assign(std::size_t(1) << bits, -1);
+    std::vector<Vec2>& gkey = W.gkey;
+    gkey.clear();
+    std::vector<int>&ghead = W.ghead, &vnext = W.vnext;
+    ghead.clear();
+    vnext.clear();
+    const std::size_t mask = (std::size_t(1) << bits) - 1;
+    for (std::size_t e = 0; e < ends.size(); ++e) {
+      const double x = ends[e].r.x() + 0.0, y = ends[e].r.y() + 0.0;  // +0.0: one key for ±0
+      std::size_t h = std::size_t((std::bit_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ull ^ std::bit_cast<std::uint64_t>(y) * 0xC2B2AE3D27D4EB4Full) >> (64 - bits));
+      int g;
+      for (;; h = (h + 1) & mask) {
+        g = table[h];
+        if (g < 0 || (gkey[g].x() == x && gkey[g].y() == y)) break;
+      }
+      if (g < 0) {
+        g = table[h] = int(gkey.size());
+        gkey.emplace_back(x, y);
+        ghead.push_back(-1);
+      }
+      for (int v = ghead[g]; v >= 0 && id[e] < 0; v = vnext[v])
+        if (same(ends[rep[v]], ends[e])) id[e] = v;
+      if (id[e] < 0) {
+        id[e] = nv++;
+        rep.push_back(int(e));
+        vnext.push_back(ghead[g]);
+        ghead[g] = id[e];
       }
     }
   }
   // The exported rounding of a vertex: that of its first sum-vertex end with a TwoSum rounding (the
   // previous export's choice, which also fixes the sign of a zero), else of any end.
-  std::vector<Vec2> rv(nv);
+  std::vector<Vec2>& rv = W.rv;
+  rv.resize(nv);
   {
-    std::vector<char> fixed(nv, 0);
+    std::vector<char>& fixed = W.fixed;
+    fixed.assign(nv, 0);
     for (std::size_t e = 0; e < ends.size(); ++e)
       if (ends[e].r_sum && !fixed[id[e]]) rv[id[e]] = ends[e].r, fixed[id[e]] = 1;
     for (int v = 0; v < nv; ++v)
       if (!fixed[v]) rv[v] = ends[rep[v]].r;
   }
 
-  std::vector<Seg> segs;
-  segs.reserve(np);
-  std::vector<int> zero_points;
+  std::vector<Seg>& segs = W.segs;
+  segs.clear();
+  std::vector<int>& zero_points = W.zero_points;
+  zero_points.clear();
   for (std::size_t k = 0; k < np; ++k) {
     const int ia = id[2 * k], ib = id[2 * k + 1];
     if (ia == ib) {
@@ -582,20 +756,22 @@ void nfp_export(NoFitPolygon2::Impl& N) {
     segs.push_back(make_seg(N.pieces[k], ia, ib));
   }
   {  // sorted by line (indices: a Seg is large)
-    std::vector<int> order(segs.size());
+    std::vector<int>& order = W.order;
+    order.resize(segs.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = int(i);
     std::sort(order.begin(), order.end(), [&](int x, int y) { return compare_lines_filtered(segs[x], segs[y]) < 0; });
-    std::vector<Seg> sorted;
-    sorted.reserve(segs.size());
+    std::vector<Seg>& sorted = W.sorted;
+    sorted.clear();
     for (int i : order) sorted.push_back(segs[i]);
     segs.swap(sorted);
   }
 
   // Every vertex (piece ends and zero-length points), sorted by rounded x for range scans.
-  std::vector<int> verts;
-  verts.reserve(nv);
+  std::vector<int>& verts = W.verts;
+  verts.clear();
   {
-    std::vector<char> seen(nv, 0);
+    std::vector<char>& seen = W.seen;
+    seen.assign(nv, 0);
     for (const Seg& s : segs)
       for (int v : {s.a, s.b})
         if (!seen[v]) seen[v] = 1, verts.push_back(v);
@@ -604,21 +780,19 @@ void nfp_export(NoFitPolygon2::Impl& N) {
   }
   std::sort(verts.begin(), verts.end(), [&](int x, int y) { return rv[x].x() < rv[y].x(); });
 
-  struct Edge {
-    int a, b;
-    std::size_t line;  // the group of its exact supporting line
-    bool fwd;          // along increasing u of that line
-  };
-  std::vector<Edge> edges;
-  std::vector<std::array<int, 2>> slits;
-  std::vector<char> is_vertex(nv, 0);  // ends of edges and slit pieces
-  std::vector<int> stamp(nv, -1), pos(nv, 0);
-  struct Iv {
-    int lo, hi;  // vertex ids (lower and higher u)
-    bool fwd;
-  };
-  std::vector<Iv> ivs;
-  std::vector<int> us;
+  using Edge = Workspace::Edge;
+  using Iv = Workspace::Iv;
+  std::vector<Edge>& edges = W.edges;
+  edges.clear();
+  std::vector<std::array<int, 2>>& slits = W.slits;
+  slits.clear();
+  std::vector<char>& is_vertex = W.is_vertex;  // ends of edges and slit pieces
+  is_vertex.assign(nv, 0);
+  std::vector<int>&stamp = W.stamp, &pos = W.pos;
+  stamp.assign(nv, -1);
+  pos.assign(nv, 0);
+  std::vector<Iv>& ivs = W.ivs;
+  std::vector<int>& us = W.us;
   for (std::size_t g0 = 0, g1; g0 < segs.size(); g0 = g1) {
     g1 = g0 + 1;
     while (g1 < segs.size() && compare_lines_filtered(segs[g1], segs[g0]) == 0) ++g1;
@@ -685,21 +859,25 @@ void nfp_export(NoFitPolygon2::Impl& N) {
   }
 
   // Link edges into rings. Edges leaving each vertex, in edge order (compressed rows).
-  std::vector<int> first(nv + 1, 0), out(edges.size());
+  std::vector<int>&first = W.first, &out = W.out, &fill = W.fill;
+  first.assign(nv + 1, 0);
+  out.resize(edges.size());
   for (const Edge& e : edges) ++first[e.a + 1];
   for (int v = 0; v < nv; ++v) first[v + 1] += first[v];
-  {
-    std::vector<int> fill(first.begin(), first.end() - 1);
-    for (std::size_t e = 0; e < edges.size(); ++e) out[fill[edges[e].a]++] = int(e);
-  }
-  std::vector<char> used(edges.size(), 0);
-  std::vector<std::vector<int>> rings;
+  fill.assign(first.begin(), first.end() - 1);
+  for (std::size_t e = 0; e < edges.size(); ++e) out[fill[edges[e].a]++] = int(e);
+  std::vector<char>& used = W.used;
+  used.assign(edges.size(), 0);
+  // Rings as vertex ids: ring k is ring_verts[ring_start[k], ring_start[k + 1]).
+  std::vector<int>&ring_verts = W.ring_verts, &ring_start = W.ring_start;
+  ring_verts.clear();
+  ring_start.assign(1, 0);
   // The direction of an edge: its line's ray direction, signed to point from a to b.
   auto dir = [&](const Edge& e) {
     const Seg& s = segs[e.line];
     return Dir{s.E, e.fwd ? s.su : -s.su};
   };
-  std::vector<std::size_t> chain;
+  std::vector<std::size_t>& chain = W.chain;
   for (std::size_t e0 = 0; e0 < edges.size(); ++e0) {
     if (used[e0]) continue;
     chain.clear();
@@ -727,22 +905,22 @@ void nfp_export(NoFitPolygon2::Impl& N) {
         throw std::logic_error("no-fit polygon: a boundary chain does not close (internal inconsistency)");
       e = best;
     }
-    std::vector<int> ring;
+    const std::size_t r0 = ring_verts.size();
     for (std::size_t k = 0; k < chain.size(); ++k) {
       const Edge& in = edges[chain[(k + chain.size() - 1) % chain.size()]];
       const Edge& o = edges[chain[k]];
       // Pass-through: the same exact line (one group per line) in the same direction.
       if (chain.size() > 2 && in.line == o.line && in.fwd == o.fwd) continue;
-      ring.push_back(o.a);
+      ring_verts.push_back(o.a);
     }
-    if (ring.size() >= 3) rings.push_back(std::move(ring));
+    if (ring_verts.size() - r0 >= 3) ring_start.push_back(int(ring_verts.size()));
+    else ring_verts.resize(r0);
   }
+  const std::size_t nr = ring_start.size() - 1;
+  auto ring_of = [&](std::size_t k) {
+    return std::vector<int>(ring_verts.begin() + ring_start[k], ring_verts.begin() + ring_start[k + 1]);
+  };
 
-  std::vector<std::vector<Vec2>> rr(rings.size());
-  for (std::size_t k = 0; k < rings.size(); ++k) {
-    rr[k].reserve(rings[k].size());
-    for (int p : rings[k]) rr[k].push_back(rv[p]);
-  }
   // Exact vertices, only for the rare rational decisions below.
   std::vector<QP> V;
   auto exact_vertices = [&] {
@@ -752,28 +930,36 @@ void nfp_export(NoFitPolygon2::Impl& N) {
   // Outer rings and holes by the sign of the area: a floating shoelace sum on the rounded
   // vertices with a bound covering the rounding of the vertices (2^-53 relative each) and of the
   // sum; exact rationals when it cannot decide, and exact areas whenever there are holes to place.
-  std::vector<std::size_t> outer, holes;
-  for (std::size_t k = 0; k < rings.size(); ++k) {
-    const auto& r = rr[k];
-    const double n = double(r.size());
+  std::vector<std::size_t>&outer = W.outer, &holes = W.holes;
+  outer.clear();
+  holes.clear();
+  for (std::size_t k = 0; k < nr; ++k) {
+    const int* r = ring_verts.data() + ring_start[k];
+    const std::size_t m = std::size_t(ring_start[k + 1] - ring_start[k]);
+    const double n = double(m);
     double a = 0, big = 0;
-    for (std::size_t i = 0; i < r.size(); ++i) {
-      const Vec2 &u = r[i], &w = r[(i + 1) % r.size()];
+    for (std::size_t i = 0; i < m; ++i) {
+      const Vec2 &u = rv[r[i]], &w = rv[r[i + 1 == m ? 0 : i + 1]];
       a += u.x() * w.y() - w.x() * u.y();
       big = std::max(big, u.cwiseAbs().maxCoeff());
     }
     const double bound = (4 * n * n + 8 * n) * big * big * 0x1p-50 + 0x1p-1000;
     int sign;
     if (std::isfinite(a) && std::isfinite(bound) && std::abs(a) > bound) sign = a > 0 ? 1 : -1;
-    else exact_vertices(), sign = sgn(ring_area2(V, rings[k]));
+    else exact_vertices(), sign = sgn(ring_area2(V, ring_of(k)));
     (sign > 0 ? outer : holes).push_back(k);
   }
-  std::vector<std::vector<std::size_t>> holes_of(outer.size());
+  // owner[h]: the outer ring (index into outer) of hole h.
+  std::vector<std::size_t>& owner = W.owner;
+  owner.assign(holes.size(), 0);
   if (!holes.empty()) {
     exact_vertices();
-    std::vector<mpq_class> area(rings.size());
+    std::vector<std::vector<int>> rings(nr);
+    for (std::size_t k = 0; k < nr; ++k) rings[k] = ring_of(k);
+    std::vector<mpq_class> area(nr);
     for (std::size_t o : outer) area[o] = ring_area2(V, rings[o]);
-    for (std::size_t h : holes) {
+    for (std::size_t hi = 0; hi < holes.size(); ++hi) {
+      const std::size_t h = holes[hi];
       std::size_t best = outer.size();
       for (std::size_t o = 0; o < outer.size(); ++o) {
         int side = 0;
@@ -791,14 +977,22 @@ void nfp_export(NoFitPolygon2::Impl& N) {
       }
       if (best == outer.size())
         throw std::logic_error("no-fit polygon: a hole ring lies in no outer ring (internal inconsistency)");
-      holes_of[best].push_back(h);
+      owner[hi] = best;
     }
   }
+  auto ring_points = [&](std::size_t k) {
+    std::vector<Vec2> pts(std::size_t(ring_start[k + 1] - ring_start[k]));
+    for (std::size_t i = 0; i < pts.size(); ++i) pts[i] = rv[ring_verts[std::size_t(ring_start[k]) + i]];
+    return pts;
+  };
   N.polys.clear();
+  N.polys.reserve(outer.size());
   for (std::size_t o = 0; o < outer.size(); ++o) {
-    std::vector<std::vector<Vec2>> poly{std::move(rr[outer[o]])};
-    for (std::size_t h : holes_of[o]) poly.push_back(std::move(rr[h]));
-    N.polys.push_back(std::move(poly));
+    std::vector<std::vector<Vec2>>& poly = N.polys.emplace_back();
+    poly.reserve(1);
+    poly.push_back(ring_points(outer[o]));
+    for (std::size_t hi = 0; hi < holes.size(); ++hi)
+      if (owner[hi] == o) poly.push_back(ring_points(holes[hi]));
   }
   N.slits.clear();
   for (const auto& sl : slits) N.slits.push_back({rv[sl[0]], rv[sl[1]]});
