@@ -14,17 +14,24 @@
 // piece's ray with μ = num/den the crossing with a cut line (pair_sums.hpp: num, den of degree 2
 // in the input doubles, so a coordinate is a degree-3 polynomial over a degree-2 one).
 // 1. Each end is rounded to nearest first: a sum vertex by TwoSum; a coordinate along which the
-//    ray or the cut line does not move is a sum of two doubles, also TwoSum; any other by walking
+//    ray or the cut line does not move is a sum of two doubles, also TwoSum; a crossing already
+//    rounded for another end (the end of one piece and the start of the next are each cut by the
+//    other's line: symbolic same_line both ways, or one way and same_point) takes that rounding
+//    (rounding is a function of the exact point); on integer input, when FlX certifies num and
+//    den (and so the coordinate's numerator) as exact doubles, the IEEE quotient (never an exact
+//    tie: see round_coord); any other by walking
 //    from the builder's few-ulp value d (only a starting guess: a bad one costs steps, never the
 //    result) until x lies strictly between the midpoints to d's two neighbours. Each midpoint test
 //    is the sign of num − m·den from double-doubles of num and den stored per end (certified
 //    bound; exact_sign when it cannot decide), never x against d itself, whose frequent exact
 //    zero floating point cannot certify. Rounding is monotone, so equal exact points have equal
-//    roundings: ends are interned by their rounded coordinates, and ends with equal roundings are
-//    the same vertex iff symbolically the same (edge_cut.hpp same_point) or exactly equal
-//    coordinates (exact predicates).
+//    roundings: ends are interned by their rounded coordinates (a hash table, ±0 one key), and ends
+//    with equal roundings are the same vertex iff the same sum vertex, equal TwoSum pairs (two sum
+//    vertices), symbolically the same (edge_cut.hpp same_point) or exactly equal coordinates.
 // 2. Pieces of positive length are grouped by their exact supporting line, ordered by (vertical,
-//    slope, offset) with exact degree-2 signs on the rays (symbolic same_line first); on each line
+//    slope, offset): interval filters, then exact signs on exact doubles where the ray's direction
+//    and origin are exact differences (FMA: equal products compare their rounding errors), else
+//    degree-2 signs on the rays (symbolic same_line first); on each line
 //    the pieces oriented one way (O on their left) and the other way are cut at every piece end
 //    and every other vertex on the line inside its extent (rounded box, then an exact on-line
 //    test, symbolic first), giving elementary segments ordered by rounded, then exact, position.
@@ -44,11 +51,12 @@
 // tests, only when there are holes).
 // Cost: O(N log N) exact predicates of degree ≤ 5 for N pieces (floating filters decide almost
 // all), O(N·k) box-filtered on-line tests (k vertices in a line's box), O(H·R·n) rational
-// point-in-ring tests for H holes, R outer rings. Measured (callgrind, instructions per pair,
-// ~17–19 pieces each): albano ~63 k, shirts ~70 k, trousers ~58 k, 4.9–6.1× fewer than the
-// previous all-rational export (384 k, 347 k, 301 k; mpq points in a std::map, rational line
-// keys), whose output this one reproduces bit for bit (tests/nonconvex2/test_nfp_export.cpp keeps
-// it as the oracle).
+// point-in-ring tests for H holes, R outer rings; scratch arrays are thread-local and reused (no
+// allocation per call but the output). Measured (callgrind, instructions per pair over every
+// ordered pair, ~17–21 pieces each, convex pairs included): albano 33 k, shirts 35 k, trousers
+// 16 k (session 5: 55 k, 60 k, 26 k; the previous all-rational export 384 k, 347 k, 301 k: mpq
+// points in a std::map, rational line keys), whose output this one reproduces bit for bit
+// (tests/nonconvex2/test_nfp_export.cpp keeps it as the oracle).
 #include <gmpxx.h>
 
 #include <algorithm>
@@ -186,7 +194,10 @@ double round_coord(End& v, int axis, double d) {
   // odd part, and num = x·den would carry that odd part, more than a double holds.
   if (v.fx == 0) {
     v.fx = -1;
-    auto integral = [](const Vec2& p) { return p.x() == std::trunc(p.x()) && p.y() == std::trunc(p.y()); };
+    auto integer = [](double x) {  // |x| ≥ 2^52 is an integer (or not finite: FlX then fails)
+      return !(std::abs(x) < 0x1p52) || x == double(static_cast<std::int64_t>(x));
+    };
+    auto integral = [&](const Vec2& p) { return integer(p.x()) && integer(p.y()); };
     const Line& c = v.raw->line;
     if (integral(E.o1) && integral(E.o2) && integral(E.a1) && integral(E.a2) && integral(E.b1) && integral(E.b2) &&
         (v.kind != Param::Cut || (integral(c.c1) && integral(c.c2) && integral(c.e0) && integral(c.e1)))) {
@@ -352,11 +363,10 @@ struct Seg {
   double ex, ey, oxe, oye;
 };
 
-// The Seg of piece pc between vertex ids ia, ib, with its filters.
-Seg make_seg(const NfpPiece& pc, int ia, int ib) {
+// Fills s: the Seg of piece pc between vertex ids ia, ib, with its filters.
+void make_seg(Seg& s, const NfpPiece& pc, int ia, int ib) {
   const Ray& E = pc.E;
   const exact::LiftFl F;
-  Seg s;
   s.a = ia, s.b = ib, s.E = &E, s.edge = &pc.edge;
   s.dexact = E.a2.x() == 0 && E.a2.y() == 0 && E.b2.x() == 0 && E.b2.y() == 0 && exact_diff(E.a1.x(), E.b1.x(), s.ex) &&
              exact_diff(E.a1.y(), E.b1.y(), s.ey);
@@ -396,7 +406,6 @@ Seg make_seg(const NfpPiece& pc, int ia, int ib) {
   const exact::Fl& off = s.vertical ? s.ox : s.oy;
   const double eo = 2 * exact::safe_bound(off.e);  // twice: covers the rounding of v ± bound
   s.k_lo = off.v - eo, s.k_hi = off.v + eo;
-  return s;
 }
 
 // Exact order of supporting lines: (vertical, slope, offset) with y = slope·x + offset, or x =
@@ -559,7 +568,7 @@ bool nfp_export_convex(NoFitPolygon2::Impl& N) {
   std::size_t first = 0;
   thread_local std::vector<Seg> segs;
   segs.clear();
-  for (const Group& g : groups) segs.push_back(make_seg(N.pieces[order[g.b]], 0, 0));
+  for (const Group& g : groups) make_seg(segs.emplace_back(), N.pieces[order[g.b]], 0, 0);
   for (std::size_t k = 1; k < ng; ++k)
     if (compare_lines_filtered(segs[k], segs[first]) < 0) first = k;
   if (segs[first].su < 0) {
@@ -654,7 +663,8 @@ void nfp_export(NoFitPolygon2::Impl& N) {
       v.pid = v.qid = 0;
       v.have_dd = false;
       v.fx = 0;
-      v.den_sign = v.kind == Param::Cut ? exact::exact_sign([&](auto L) { return coord_den(v, L); }) : 1;  // Proj: a squared length
+      // The sign of μ's denominator (Proj: a squared length, positive); only the denominator lifted.
+      v.den_sign = v.kind == Param::Cut ? exact::exact_sign([&](auto L) { return nonconvex2::line_den(v.raw->line, pc.E, L); }) : 1;
       // The crossing of the same two lines was rounded already (the end of one piece and the start
       // of the next): rounding is a function of the exact point, so its rounding is this one's.
       bool reused = false;
@@ -753,7 +763,7 @@ void nfp_export(NoFitPolygon2::Impl& N) {
       zero_points.push_back(ia);
       continue;
     }
-    segs.push_back(make_seg(N.pieces[k], ia, ib));
+    make_seg(segs.emplace_back(), N.pieces[k], ia, ib);
   }
   {  // sorted by line (indices: a Seg is large)
     std::vector<int>& order = W.order;
