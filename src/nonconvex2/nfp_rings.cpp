@@ -53,7 +53,7 @@
 // all), O(N·k) box-filtered on-line tests (k vertices in a line's box), O(H·R·n) rational
 // point-in-ring tests for H holes, R outer rings; scratch arrays are thread-local and reused (no
 // allocation per call but the output). Measured (callgrind, instructions per pair over every
-// ordered pair, ~17–21 pieces each, convex pairs included): albano 33 k, shirts 35 k, trousers
+// ordered pair, ~17–21 pieces each, convex pairs included): albano 32 k, shirts 34 k, trousers
 // 16 k (session 5: 55 k, 60 k, 26 k; the previous all-rational export 384 k, 347 k, 301 k: mpq
 // points in a std::map, rational line keys), whose output this one reproduces bit for bit
 // (tests/nonconvex2/test_nfp_export.cpp keeps it as the oracle).
@@ -599,9 +599,9 @@ namespace {
 // pieces, so after the first pairs no call allocates except for its output.
 struct Workspace {
   std::vector<End> ends;
-  std::vector<int> id, rep, order, zero_points, verts, stamp, pos, us, first, out, fill, ring_verts, ring_start, cuts;
+  std::vector<int> id, rep, order, zero_points, stamp, pos, us, first, out, fill, ring_verts, ring_start, cuts;
   std::vector<Vec2> rv;
-  std::vector<char> fixed, seen, is_vertex, used;
+  std::vector<char> fixed, is_vertex, used;
   std::vector<Seg> segs, sorted;
   struct Edge {
     int a, b;
@@ -618,6 +618,11 @@ struct Workspace {
   std::vector<std::size_t> chain, outer, holes, owner;
   std::vector<int> table, ghead, vnext;  // interning: hash table of rounding groups, vertex lists
   std::vector<Vec2> gkey;
+  struct VX {
+    double x, y;  // the vertex's rounding
+    int v;
+  };
+  std::vector<VX> verts;
 };
 
 }  // namespace
@@ -776,19 +781,12 @@ void nfp_export(NoFitPolygon2::Impl& N) {
     segs.swap(sorted);
   }
 
-  // Every vertex (piece ends and zero-length points), sorted by rounded x for range scans.
-  std::vector<int>& verts = W.verts;
-  verts.clear();
-  {
-    std::vector<char>& seen = W.seen;
-    seen.assign(nv, 0);
-    for (const Seg& s : segs)
-      for (int v : {s.a, s.b})
-        if (!seen[v]) seen[v] = 1, verts.push_back(v);
-    for (int v : zero_points)
-      if (!seen[v]) seen[v] = 1, verts.push_back(v);
-  }
-  std::sort(verts.begin(), verts.end(), [&](int x, int y) { return rv[x].x() < rv[y].x(); });
+  // Every vertex (each is an end of a piece of positive length or a zero-length one) with its
+  // rounding inline, sorted by rounded x for range scans.
+  std::vector<Workspace::VX>& verts = W.verts;
+  verts.resize(nv);
+  for (int v = 0; v < nv; ++v) verts[v] = {rv[v].x(), rv[v].y(), v};
+  std::sort(verts.begin(), verts.end(), [](const Workspace::VX& a, const Workspace::VX& b) { return a.x < b.x; });
 
   using Edge = Workspace::Edge;
   using Iv = Workspace::Iv;
@@ -822,11 +820,11 @@ void nfp_export(NoFitPolygon2::Impl& N) {
     }
     // Other exact vertices on this line inside its extent split it too. Rounding is monotone, so
     // the extent's points round into [lo, hi]; those in the box are tested exactly.
-    auto it = std::lower_bound(verts.begin(), verts.end(), lo.x(), [&](int v, double x) { return rv[v].x() < x; });
+    auto it = std::lower_bound(verts.begin(), verts.end(), lo.x(), [](const Workspace::VX& a, double x) { return a.x < x; });
     bool split = false;
-    for (; it != verts.end() && rv[*it].x() <= hi.x(); ++it) {
-      const int v = *it;
-      if (stamp[v] == int(g0) || rv[v].y() < lo.y() || rv[v].y() > hi.y()) continue;
+    for (; it != verts.end() && it->x <= hi.x(); ++it) {
+      const int v = it->v;
+      if (it->y < lo.y() || it->y > hi.y() || stamp[v] == int(g0)) continue;
       if (!on_line(ends[rep[v]], segs[g0])) continue;
       stamp[v] = int(g0);
       us.push_back(v);
