@@ -27,7 +27,8 @@
 //    zero floating point cannot certify. Rounding is monotone, so equal exact points have equal
 //    roundings: ends are interned by their rounded coordinates (a hash table, ±0 one key), and ends
 //    with equal roundings are the same vertex iff the same sum vertex, equal TwoSum pairs (two sum
-//    vertices), symbolically the same (edge_cut.hpp same_point) or exactly equal coordinates.
+//    vertices), num = x·den on exact doubles (a sum vertex against an FlX-exact crossing),
+//    symbolically the same (edge_cut.hpp same_point) or exactly equal coordinates.
 // 2. Pieces of positive length are grouped by their exact supporting line, ordered by (vertical,
 //    slope, offset): interval filters, then exact signs on exact doubles where the ray's direction
 //    and origin are exact differences (FMA: equal products compare their rounding errors), else
@@ -53,7 +54,7 @@
 // all), O(N·k) box-filtered on-line tests (k vertices in a line's box), O(H·R·n) rational
 // point-in-ring tests for H holes, R outer rings; scratch arrays are thread-local and reused (no
 // allocation per call but the output). Measured (callgrind, instructions per pair over every
-// ordered pair, ~17–21 pieces each, convex pairs included): albano 32 k, shirts 34 k, trousers
+// ordered pair, ~17–21 pieces each, convex pairs included): albano 32 k, shirts 33.5 k, trousers
 // 16 k (session 5: 55 k, 60 k, 26 k; the previous all-rational export 384 k, 347 k, 301 k: mpq
 // points in a std::map, rational line keys), whose output this one reproduces bit for bit
 // (tests/nonconvex2/test_nfp_export.cpp keeps it as the oracle).
@@ -172,6 +173,28 @@ double round_q(const mpq_class& q) {
   return true;
 }
 
+// FlX values of an end that is not a sum vertex: its coordinates' numerators and denominator as
+// exact doubles when every input double is an integer and FlX certifies them (fx = 1), else
+// fx = -1. Computed once per end.
+void ensure_fx(End& v) {
+  if (v.fx != 0) return;
+  v.fx = -1;
+  const Ray& E = *v.E;
+  auto integer = [](double x) {  // |x| ≥ 2^52 is an integer (or not finite: FlX then fails)
+    return !(std::abs(x) < 0x1p52) || x == double(static_cast<std::int64_t>(x));
+  };
+  auto integral = [&](const Vec2& p) { return integer(p.x()) && integer(p.y()); };
+  const Line& c = v.raw->line;
+  if (integral(E.o1) && integral(E.o2) && integral(E.a1) && integral(E.a2) && integral(E.b1) && integral(E.b2) &&
+      (v.kind != Param::Cut || (integral(c.c1) && integral(c.c2) && integral(c.e0) && integral(c.e1)))) {
+    const exact::LiftFlX X;
+    const auto [n, dd] = end_nd(v, X);
+    const exact::FlX xn = (X(E.o1.x()) + X(E.o2.x())) * dd + n * nonconvex2::ray_dx(E, X);
+    const exact::FlX yn = (X(E.o1.y()) + X(E.o2.y())) * dd + n * nonconvex2::ray_dy(E, X);
+    if (xn.exact && yn.exact && dd.exact && dd.v != 0) v.fx = 1, v.fxn = xn.v, v.fyn = yn.v, v.fden = dd.v;
+  }
+}
+
 // round_q of coordinate `axis` of v without rationals: from the guess d (the builder's few-ulp
 // value), step to a neighbour while x lies beyond the midpoint to it; d is the result once x lies
 // strictly between the midpoints to both neighbours (on a midpoint: the neighbour nearer zero).
@@ -192,22 +215,7 @@ double round_coord(End& v, int axis, double d) {
   // exact doubles (FlX certifies it); then the IEEE quotient is the nearest double. It is never an
   // exact tie (where IEEE's even choice could differ from round_q's): a tie is odd·2^k with a 54-bit
   // odd part, and num = x·den would carry that odd part, more than a double holds.
-  if (v.fx == 0) {
-    v.fx = -1;
-    auto integer = [](double x) {  // |x| ≥ 2^52 is an integer (or not finite: FlX then fails)
-      return !(std::abs(x) < 0x1p52) || x == double(static_cast<std::int64_t>(x));
-    };
-    auto integral = [&](const Vec2& p) { return integer(p.x()) && integer(p.y()); };
-    const Line& c = v.raw->line;
-    if (integral(E.o1) && integral(E.o2) && integral(E.a1) && integral(E.a2) && integral(E.b1) && integral(E.b2) &&
-        (v.kind != Param::Cut || (integral(c.c1) && integral(c.c2) && integral(c.e0) && integral(c.e1)))) {
-      const exact::LiftFlX X;
-      const auto [n, dd] = end_nd(v, X);
-      const exact::FlX xn = (X(E.o1.x()) + X(E.o2.x())) * dd + n * nonconvex2::ray_dx(E, X);
-      const exact::FlX yn = (X(E.o1.y()) + X(E.o2.y())) * dd + n * nonconvex2::ray_dy(E, X);
-      if (xn.exact && yn.exact && dd.exact && dd.v != 0) v.fx = 1, v.fxn = xn.v, v.fyn = yn.v, v.fden = dd.v;
-    }
-  }
+  ensure_fx(v);
   if (v.fx > 0) {
     const double num = axis == 0 ? v.fxn : v.fyn, q = num / v.fden;
     if (num == 0) return 0.0;  // an exact zero is +0 (round_q)
@@ -700,12 +708,29 @@ void nfp_export(NoFitPolygon2::Impl& N) {
   std::vector<int>& rep = W.rep;  // rep[vertex id] = one of its ends
   rep.clear();
   {
-    auto same = [&](const End& a, const End& b) {
+    // A sum vertex that is an exact double pair against a crossing with FlX-exact numerators and
+    // denominator (integer data): equal iff num = x·den for both coordinates, each product exact
+    // or not a double at all (then not num). 1 equal, 0 not, -1 undecided.
+    auto sum_vs_cut = [&](const End& sv, End& c) {
+      if (!sv.sum || !sv.r_sum || sv.tex != 0 || sv.tey != 0 || c.sum || c.kind != Param::Cut) return -1;
+      ensure_fx(c);
+      if (c.fx <= 0) return -1;
+      int r = 1;
+      for (const auto& [t, num] : {std::pair{sv.tsx, c.fxn}, std::pair{sv.tsy, c.fyn}}) {
+        const double p = t * c.fden;
+        if (!std::isfinite(p) || (t != 0 && std::abs(p) <= 0x1p-960)) return -1;
+        if (std::fma(t, c.fden, -p) != 0 || p != num) r = 0;
+      }
+      return r;
+    };
+    auto same = [&](End& a, End& b) {
       if (a.sum && b.sum) {
         if (a.pid == b.pid && a.qid == b.qid) return true;
         // Two sums of two doubles, both TwoSum pairs finite: equal iff the pairs are (s = fl(x)
         // and e = x − s are functions of the exact x).
         if (a.r_sum && b.r_sum) return a.tsx == b.tsx && a.tex == b.tex && a.tsy == b.tsy && a.tey == b.tey;
+      } else if (int r = sum_vs_cut(a, b); r >= 0 || (r = sum_vs_cut(b, a)) >= 0) {
+        return r == 1;
       }
       if (nonconvex2::same_point(nonconvex2::Cand{*a.E, a.param(), *a.edge}, nonconvex2::Cand{*b.E, b.param(), *b.edge})) return true;
       return compare_coord(a, b, 0) == 0 && compare_coord(a, b, 1) == 0;
