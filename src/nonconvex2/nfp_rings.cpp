@@ -14,17 +14,25 @@
 // piece's ray with μ = num/den the crossing with a cut line (pair_sums.hpp: num, den of degree 2
 // in the input doubles, so a coordinate is a degree-3 polynomial over a degree-2 one).
 // 1. Each end is rounded to nearest first: a sum vertex by TwoSum; a coordinate along which the
-//    ray or the cut line does not move is a sum of two doubles, also TwoSum; any other by walking
+//    ray or the cut line does not move is a sum of two doubles, also TwoSum; a crossing already
+//    rounded for another end (the end of one piece and the start of the next are each cut by the
+//    other's line: symbolic same_line both ways, or one way and same_point) takes that rounding
+//    (rounding is a function of the exact point); on integer input, when FlX certifies num and
+//    den (and so the coordinate's numerator) as exact doubles, the IEEE quotient (never an exact
+//    tie: see round_coord); any other by walking
 //    from the builder's few-ulp value d (only a starting guess: a bad one costs steps, never the
 //    result) until x lies strictly between the midpoints to d's two neighbours. Each midpoint test
 //    is the sign of num − m·den from double-doubles of num and den stored per end (certified
 //    bound; exact_sign when it cannot decide), never x against d itself, whose frequent exact
 //    zero floating point cannot certify. Rounding is monotone, so equal exact points have equal
-//    roundings: ends are interned by their rounded coordinates, and ends with equal roundings are
-//    the same vertex iff symbolically the same (edge_cut.hpp same_point) or exactly equal
-//    coordinates (exact predicates).
+//    roundings: ends are interned by their rounded coordinates (a hash table, ±0 one key), and ends
+//    with equal roundings are the same vertex iff the same sum vertex, equal TwoSum pairs (two sum
+//    vertices), num = x·den on exact doubles (a sum vertex against an FlX-exact crossing),
+//    symbolically the same (edge_cut.hpp same_point) or exactly equal coordinates.
 // 2. Pieces of positive length are grouped by their exact supporting line, ordered by (vertical,
-//    slope, offset) with exact degree-2 signs on the rays (symbolic same_line first); on each line
+//    slope, offset): interval filters, then exact signs on exact doubles where the ray's direction
+//    and origin are exact differences (FMA: equal products compare their rounding errors), else
+//    degree-2 signs on the rays (symbolic same_line first); on each line
 //    the pieces oriented one way (O on their left) and the other way are cut at every piece end
 //    and every other vertex on the line inside its extent (rounded box, then an exact on-line
 //    test, symbolic first), giving elementary segments ordered by rounded, then exact, position.
@@ -44,15 +52,17 @@
 // tests, only when there are holes).
 // Cost: O(N log N) exact predicates of degree ≤ 5 for N pieces (floating filters decide almost
 // all), O(N·k) box-filtered on-line tests (k vertices in a line's box), O(H·R·n) rational
-// point-in-ring tests for H holes, R outer rings. Measured (callgrind, instructions per pair,
-// ~17–19 pieces each): albano ~63 k, shirts ~70 k, trousers ~58 k, 4.9–6.1× fewer than the
-// previous all-rational export (384 k, 347 k, 301 k; mpq points in a std::map, rational line
-// keys), whose output this one reproduces bit for bit (tests/nonconvex2/test_nfp_export.cpp keeps
-// it as the oracle).
+// point-in-ring tests for H holes, R outer rings; scratch arrays are thread-local and reused (no
+// allocation per call but the output). Measured (callgrind, instructions per pair over every
+// ordered pair, ~17–21 pieces each, convex pairs included): albano 32 k, shirts 33.5 k, trousers
+// 16 k (session 5: 55 k, 60 k, 26 k; the previous all-rational export 384 k, 347 k, 301 k: mpq
+// points in a std::map, rational line keys), whose output this one reproduces bit for bit
+// (tests/nonconvex2/test_nfp_export.cpp keeps it as the oracle).
 #include <gmpxx.h>
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
@@ -80,9 +90,12 @@ struct End {
   bool r_sum;                 // r from TwoSum of a sum vertex (round_sum succeeded)
   std::uint32_t pid, qid;
   Vec2 sp, sb;
+  double tsx, tex, tsy, tey;  // a sum vertex: its exact coordinates as TwoSum pairs (when r_sum)
   int den_sign;               // sign of the denominator of μ
   Vec2 r;                     // rounded to nearest
   bool have_dd;               // xn, yn, den computed (round_coord)
+  signed char fx;             // numerators and denominator exact in doubles: 1 yes, -1 no, 0 not tried
+  double fxn, fyn, fden;      // those exact values when fx = 1
   exact::DD xn, yn, den;      // not a sum vertex: the coordinates' numerators and denominator
   End() {}  // user-provided: no zero-filling of the whole struct on emplace_back
   Param param() const { return kind == Param::Zero || kind == Param::One ? Param{kind, {}, 0} : *raw; }
@@ -150,7 +163,7 @@ double round_q(const mpq_class& q) {
 
 // round_q of the exact sum a + b without rationals (TwoSum): fl(a + b) is the nearest double, and
 // on an exact tie round_q's choice (the neighbour nearer zero) is taken. False if it overflows.
-bool round_sum(double a, double b, double& out) {
+[[gnu::always_inline]] inline bool round_sum(double a, double b, double& out) {
   const double s = a + b, bb = s - a, e = (a - (s - bb)) + (b - bb);
   if (!std::isfinite(s) || !std::isfinite(e)) return false;
   out = s;
@@ -158,6 +171,28 @@ bool round_sum(double a, double b, double& out) {
   const double c = std::nextafter(s, e > 0 ? INFINITY : -INFINITY);
   if (std::isfinite(c) && 2 * std::abs(e) == std::abs(c - s) && std::abs(c) < std::abs(s)) out = c;
   return true;
+}
+
+// FlX values of an end that is not a sum vertex: its coordinates' numerators and denominator as
+// exact doubles when every input double is an integer and FlX certifies them (fx = 1), else
+// fx = -1. Computed once per end.
+void ensure_fx(End& v) {
+  if (v.fx != 0) return;
+  v.fx = -1;
+  const Ray& E = *v.E;
+  auto integer = [](double x) {  // |x| ≥ 2^52 is an integer (or not finite: FlX then fails)
+    return !(std::abs(x) < 0x1p52) || x == double(static_cast<std::int64_t>(x));
+  };
+  auto integral = [&](const Vec2& p) { return integer(p.x()) && integer(p.y()); };
+  const Line& c = v.raw->line;
+  if (integral(E.o1) && integral(E.o2) && integral(E.a1) && integral(E.a2) && integral(E.b1) && integral(E.b2) &&
+      (v.kind != Param::Cut || (integral(c.c1) && integral(c.c2) && integral(c.e0) && integral(c.e1)))) {
+    const exact::LiftFlX X;
+    const auto [n, dd] = end_nd(v, X);
+    const exact::FlX xn = (X(E.o1.x()) + X(E.o2.x())) * dd + n * nonconvex2::ray_dx(E, X);
+    const exact::FlX yn = (X(E.o1.y()) + X(E.o2.y())) * dd + n * nonconvex2::ray_dy(E, X);
+    if (xn.exact && yn.exact && dd.exact && dd.v != 0) v.fx = 1, v.fxn = xn.v, v.fyn = yn.v, v.fden = dd.v;
+  }
 }
 
 // round_q of coordinate `axis` of v without rationals: from the guess d (the builder's few-ulp
@@ -176,6 +211,16 @@ double round_coord(End& v, int axis, double d) {
     return r == 0 ? 0.0 : r;
   if (v.kind == Param::Cut && v.raw->line.e0[axis] == v.raw->line.e1[axis] && round_sum(v.raw->line.c1[axis], v.raw->line.c2[axis], r))
     return r == 0 ? 0.0 : r;
+  // Integer-like data (every input double an integer): the numerator and denominator are often
+  // exact doubles (FlX certifies it); then the IEEE quotient is the nearest double. It is never an
+  // exact tie (where IEEE's even choice could differ from round_q's): a tie is odd·2^k with a 54-bit
+  // odd part, and num = x·den would carry that odd part, more than a double holds.
+  ensure_fx(v);
+  if (v.fx > 0) {
+    const double num = axis == 0 ? v.fxn : v.fyn, q = num / v.fden;
+    if (num == 0) return 0.0;  // an exact zero is +0 (round_q)
+    if (std::isfinite(q) && std::abs(q) >= 0x1p-1022) return q;  // normal: correctly rounded
+  }
   // Sign of x − (hi + lo): from the stored double-double numerator and denominator when their
   // bounds decide, else exactly.
   if (!v.have_dd) {  // the double-double numerators and denominator, once per end
@@ -283,6 +328,30 @@ mpq_class ring_area2(const std::vector<QP>& V, const std::vector<int>& ring) {
   return a;
 }
 
+// Exact sign of a·b − c·d for doubles, 2 when undecided (a product overflows, or the products are
+// equal and one may have lost its rounding error below the normal range). Rounding is monotone, so
+// fl(a·b) > fl(c·d) implies a·b > c·d; on equal products the FMA rounding errors decide exactly.
+int sign_det(double a, double b, double c, double d) {
+  const double p = a * b, q = c * d;
+  if (!std::isfinite(p) || !std::isfinite(q)) return 2;
+  if (p != q) return p > q ? 1 : -1;
+  auto err = [](double x, double y, double r, double& e) {
+    if (x == 0 || y == 0) return e = 0, true;
+    if (std::abs(r) <= 0x1p-960) return false;
+    return e = std::fma(x, y, -r), true;
+  };
+  double ep, eq;
+  if (!err(a, b, p, ep) || !err(c, d, q, eq)) return 2;
+  return (ep > eq) - (ep < eq);
+}
+
+// x − y exactly as a double, or false.
+[[gnu::always_inline]] inline bool exact_diff(double x, double y, double& out) {
+  double e;
+  exact::two_sum(x, -y, out, e);
+  return e == 0 && std::isfinite(out);
+}
+
 // A piece of positive length: its ends (vertex ids), its ray and line, and the sign of its
 // direction along u (x, or y on a vertical line).
 struct Seg {
@@ -296,20 +365,40 @@ struct Seg {
   bool horizontal;           // dy exactly 0
   double s_lo, s_hi;         // interval of the exact slope (not vertical)
   double k_lo, k_hi;         // interval of the exact offset (vertical: x; horizontal: y)
+  // Exact doubles when available (integer-like data, nearby coordinates): the direction (ex, ey)
+  // when `dexact`, the origin (oxe, oye) when `oexact`; then line comparisons need no lifting.
+  bool dexact, oexact;
+  double ex, ey, oxe, oye;
 };
 
-// The Seg of piece pc between vertex ids ia, ib, with its filters.
-Seg make_seg(const NfpPiece& pc, int ia, int ib) {
+// Fills s: the Seg of piece pc between vertex ids ia, ib, with its filters.
+void make_seg(Seg& s, const NfpPiece& pc, int ia, int ib) {
   const Ray& E = pc.E;
   const exact::LiftFl F;
-  Seg s{ia, ib, &E, &pc.edge, false, 0, 0, nonconvex2::ray_dx(E, F), nonconvex2::ray_dy(E, F), F(E.o1.x()) + F(E.o2.x()),
-        F(E.o1.y()) + F(E.o2.y()), false, 0, 0, 0, 0};
-  s.sdx = exact::certified_sign(s.dx);
-  if (s.sdx == 2) s.sdx = exact::exact_sign([&](auto L) { return nonconvex2::ray_dx(E, L); });
+  s.a = ia, s.b = ib, s.E = &E, s.edge = &pc.edge;
+  s.dexact = E.a2.x() == 0 && E.a2.y() == 0 && E.b2.x() == 0 && E.b2.y() == 0 && exact_diff(E.a1.x(), E.b1.x(), s.ex) &&
+             exact_diff(E.a1.y(), E.b1.y(), s.ey);
+  s.oexact = exact_diff(E.o1.x(), -E.o2.x(), s.oxe) && exact_diff(E.o1.y(), -E.o2.y(), s.oye);
+  if (s.dexact) {
+    s.dx = {s.ex, 0};
+    s.dy = {s.ey, 0};
+    s.sdx = (s.ex > 0) - (s.ex < 0);
+  } else {
+    s.dx = nonconvex2::ray_dx(E, F);
+    s.dy = nonconvex2::ray_dy(E, F);
+    s.sdx = exact::certified_sign(s.dx);
+    if (s.sdx == 2) s.sdx = exact::exact_sign([&](auto L) { return nonconvex2::ray_dx(E, L); });
+  }
+  s.ox = s.oexact ? exact::Fl{s.oxe, 0} : F(E.o1.x()) + F(E.o2.x());
+  s.oy = s.oexact ? exact::Fl{s.oye, 0} : F(E.o1.y()) + F(E.o2.y());
   s.vertical = s.sdx == 0;
   s.su = s.sdx;
-  int sdy = exact::certified_sign(s.dy);
-  if (sdy == 2) sdy = exact::exact_sign([&](auto L) { return nonconvex2::ray_dy(E, L); });
+  int sdy;
+  if (s.dexact) sdy = (s.ey > 0) - (s.ey < 0);
+  else {
+    sdy = exact::certified_sign(s.dy);
+    if (sdy == 2) sdy = exact::exact_sign([&](auto L) { return nonconvex2::ray_dy(E, L); });
+  }
   if (s.vertical) s.su = sdy;
   s.horizontal = sdy == 0;
   // Intervals for line_less: the slope dy/dx from the bounded dx, dy (plus the division's
@@ -325,7 +414,6 @@ Seg make_seg(const NfpPiece& pc, int ia, int ib) {
   const exact::Fl& off = s.vertical ? s.ox : s.oy;
   const double eo = 2 * exact::safe_bound(off.e);  // twice: covers the rounding of v ± bound
   s.k_lo = off.v - eo, s.k_hi = off.v + eo;
-  return s;
 }
 
 // Exact order of supporting lines: (vertical, slope, offset) with y = slope·x + offset, or x =
@@ -335,23 +423,32 @@ int compare_lines(const Seg& s, const Seg& t) {
   if (s.vertical != t.vertical) return s.vertical ? 1 : -1;
   const Ray &A = *s.E, &B = *t.E;
   using nonconvex2::ray_dx, nonconvex2::ray_dy;
-  // Each sign: the stored floating values with their bounds first, exact when undecided.
+  // Each sign: exact doubles first, then the stored floating values with their bounds, exact
+  // (lifted) when undecided.
   if (s.vertical) {
+    if (s.oexact && t.oexact) return (s.oxe > t.oxe) - (s.oxe < t.oxe);
     const int c = exact::certified_sign(s.ox - t.ox);
     return c != 2 ? c : exact::exact_sign([&](auto L) { return L(A.o1.x()) + L(A.o2.x()) - L(B.o1.x()) - L(B.o2.x()); });
   }
   // slope_s − slope_t = (dy_s·dx_t − dy_t·dx_s) / (dx_s·dx_t)
-  int c = exact::certified_sign(s.dy * t.dx - t.dy * s.dx);
+  int c = s.dexact && t.dexact ? sign_det(s.ey, t.ex, t.ey, s.ex) : 2;
+  if (c == 2) c = exact::certified_sign(s.dy * t.dx - t.dy * s.dx);
   if (c == 2) c = exact::exact_sign([&](auto L) { return ray_dy(A, L) * ray_dx(B, L) - ray_dy(B, L) * ray_dx(A, L); });
   if (c != 0) return s.sdx * t.sdx * c;
   // Equal slopes: offset_s − offset_t = ((oy_s − oy_t)·dx_s − dy_s·(ox_s − ox_t)) / dx_s
-  c = exact::certified_sign((s.oy - t.oy) * s.dx - s.dy * (s.ox - t.ox));
-  if (c == 2)
+  c = 2;
+  if (double wx, wy; s.dexact && s.oexact && t.oexact && exact_diff(s.oxe, t.oxe, wx) && exact_diff(s.oye, t.oye, wy))
+    c = sign_det(wy, s.ex, s.ey, wx);
+  if (c == 2) c = exact::certified_sign((s.oy - t.oy) * s.dx - s.dy * (s.ox - t.ox));
+  if (c == 2) {
+    // A shared origin term (the same P vertex or the same −Q vertex) cancels exactly.
+    const bool same1 = A.o1 == B.o1, same2 = A.o2 == B.o2;
     c = exact::exact_sign([&](auto L) {
-      auto ox = L(A.o1.x()) + L(A.o2.x()) - L(B.o1.x()) - L(B.o2.x());
-      auto oy = L(A.o1.y()) + L(A.o2.y()) - L(B.o1.y()) - L(B.o2.y());
+      auto ox = same1 ? L(A.o2.x()) - L(B.o2.x()) : same2 ? L(A.o1.x()) - L(B.o1.x()) : L(A.o1.x()) + L(A.o2.x()) - L(B.o1.x()) - L(B.o2.x());
+      auto oy = same1 ? L(A.o2.y()) - L(B.o2.y()) : same2 ? L(A.o1.y()) - L(B.o1.y()) : L(A.o1.y()) + L(A.o2.y()) - L(B.o1.y()) - L(B.o2.y());
       return oy * ray_dx(A, L) - ray_dy(A, L) * ox;
     });
+  }
   return s.sdx * c;
 }
 
@@ -420,9 +517,27 @@ bool nfp_export_convex(NoFitPolygon2::Impl& N) {
   for (const NfpPiece& pc : N.pieces)
     if (!whole(pc)) return false;
   // The pieces by the angle of their direction (an input edge vector a1 − b1), exactly.
-  std::vector<int> order(np);
+  thread_local std::vector<int> order;  // reused buffers (no allocation per call)
+  order.resize(np);
   for (std::size_t k = 0; k < np; ++k) order[k] = int(k);
+  // Per piece: the half-plane of its direction and the direction as exact doubles when the
+  // differences are exact; compare_angle (the same order) only where those cannot decide.
+  struct AngleKey {
+    int half;
+    bool exact;
+    double x, y;
+  };
+  thread_local std::vector<AngleKey> ak;
+  ak.resize(np);
+  for (std::size_t k = 0; k < np; ++k) {
+    const Ray& E = N.pieces[k].E;
+    ak[k].half = (E.a1.y() < E.b1.y() || (E.a1.y() == E.b1.y() && E.a1.x() < E.b1.x())) ? 1 : 0;
+    ak[k].exact = exact_diff(E.a1.x(), E.b1.x(), ak[k].x) && exact_diff(E.a1.y(), E.b1.y(), ak[k].y);
+  }
   auto angle = [&](int a, int b) {
+    if (ak[a].half != ak[b].half) return ak[a].half < ak[b].half ? -1 : 1;
+    if (ak[a].exact && ak[b].exact)
+      if (const int c = sign_det(ak[a].x, ak[b].y, ak[a].y, ak[b].x); c != 2) return -c;
     const Ray &A = N.pieces[a].E, &B = N.pieces[b].E;
     return predicates::compare_angle(A.b1, A.a1, B.b1, B.a1);
   };
@@ -432,7 +547,8 @@ bool nfp_export_convex(NoFitPolygon2::Impl& N) {
     std::size_t b, e;  // order[b, e)
     SumPoint lo, hi;
   };
-  std::vector<Group> groups;
+  thread_local std::vector<Group> groups;
+  groups.clear();
   for (std::size_t b = 0, e; b < np; b = e) {
     e = b + 1;
     while (e < np && angle(order[b], order[e]) == 0) ++e;
@@ -458,9 +574,9 @@ bool nfp_export_convex(NoFitPolygon2::Impl& N) {
   // at that edge's first elementary segment in increasing u (x, or y when vertical): the edge's
   // start when it runs towards increasing u or has no vertex inside, else its end.
   std::size_t first = 0;
-  std::vector<Seg> segs;
-  segs.reserve(ng);
-  for (const Group& g : groups) segs.push_back(make_seg(N.pieces[order[g.b]], 0, 0));
+  thread_local std::vector<Seg> segs;
+  segs.clear();
+  for (const Group& g : groups) make_seg(segs.emplace_back(), N.pieces[order[g.b]], 0, 0);
   for (std::size_t k = 1; k < ng; ++k)
     if (compare_lines_filtered(segs[k], segs[first]) < 0) first = k;
   if (segs[first].su < 0) {
@@ -486,6 +602,37 @@ bool nfp_export_convex(NoFitPolygon2::Impl& N) {
 }
 
 namespace {
+
+// Reused buffers of the general export (one per thread): its scratch arrays are sized by the
+// pieces, so after the first pairs no call allocates except for its output.
+struct Workspace {
+  std::vector<End> ends;
+  std::vector<int> id, rep, order, zero_points, stamp, pos, us, first, out, fill, ring_verts, ring_start, cuts;
+  std::vector<Vec2> rv;
+  std::vector<char> fixed, is_vertex, used;
+  std::vector<Seg> segs, sorted;
+  struct Edge {
+    int a, b;
+    std::size_t line;  // the group of its exact supporting line
+    bool fwd;          // along increasing u of that line
+  };
+  struct Iv {
+    int lo, hi;  // vertex ids (lower and higher u)
+    bool fwd;
+  };
+  std::vector<Edge> edges;
+  std::vector<Iv> ivs;
+  std::vector<std::array<int, 2>> slits;
+  std::vector<std::size_t> chain, outer, holes, owner;
+  std::vector<int> table, ghead, vnext;  // interning: hash table of rounding groups, vertex lists
+  std::vector<Vec2> gkey;
+  struct VX {
+    double x, y;  // the vertex's rounding
+    int v;
+  };
+  std::vector<VX> verts;
+};
+
 }  // namespace
 
 const NoFitPolygon2::Impl& nfp_impl(const NoFitPolygon2& n) { return *n.impl_; }
@@ -493,14 +640,17 @@ const NoFitPolygon2::Impl& nfp_impl(const NoFitPolygon2& n) { return *n.impl_; }
 void nfp_export(NoFitPolygon2::Impl& N) {
   // Two convex shapes: the pieces are edges of the convex sum, ordered by angle.
   if (nonconvex2::convex_shape(N.S.P) && nonconvex2::convex_shape(N.S.Q) && nfp_export_convex(N)) return;
+  thread_local Workspace W;
   const std::size_t np = N.pieces.size();
   // 1. Every end, rounded to nearest; ends[2k], ends[2k + 1] are piece k's lo and hi.
-  std::vector<End> ends;
-  ends.reserve(2 * np);
+  std::vector<End>& ends = W.ends;
+  ends.resize(2 * np);
+  std::vector<int>& cuts = W.cuts;  // rounded crossing ends, for reuse
+  cuts.clear();
   for (std::size_t k = 0; k < np; ++k) {
     const NfpPiece& pc = N.pieces[k];
     for (int j = 0; j < 2; ++j) {
-      End& v = ends.emplace_back();
+      End& v = ends[2 * k + j];
       v.E = &pc.E;
       v.edge = &pc.edge;
       v.raw = j == 0 ? &pc.lo : &pc.hi;
@@ -518,107 +668,164 @@ void nfp_export(NoFitPolygon2::Impl& N) {
         v.sb = e == 0 || E.q0 == E.q1 ? E.o2 : E.a1;
         v.den_sign = 1;
         v.r_sum = round_sum(v.sp.x(), v.sb.x(), v.r.x()) && round_sum(v.sp.y(), v.sb.y(), v.r.y());
+        exact::two_sum(v.sp.x(), v.sb.x(), v.tsx, v.tex);
+        exact::two_sum(v.sp.y(), v.sb.y(), v.tsy, v.tey);
         if (!v.r_sum) v.r = Vec2(round_q(mpq_class(v.sp.x()) + v.sb.x()), round_q(mpq_class(v.sp.y()) + v.sb.y()));
         continue;
       }
       v.pid = v.qid = 0;
       v.have_dd = false;
-      v.den_sign = v.kind == Param::Cut ? exact::exact_sign([&](auto L) { return coord_den(v, L); }) : 1;  // Proj: a squared length
+      v.fx = 0;
+      // The sign of μ's denominator (Proj: a squared length, positive); only the denominator lifted.
+      v.den_sign = v.kind == Param::Cut ? exact::exact_sign([&](auto L) { return nonconvex2::line_den(v.raw->line, pc.E, L); }) : 1;
+      // The crossing of the same two lines was rounded already (the end of one piece and the start
+      // of the next): rounding is a function of the exact point, so its rounding is this one's.
+      bool reused = false;
+      if (v.kind == Param::Cut) {
+        for (int c : cuts) {
+          const End& u = ends[c];
+          const bool uv = nonconvex2::same_line(u.raw->line, *v.edge), vu = nonconvex2::same_line(v.raw->line, *u.edge);
+          // Each cut by the other's line: the same crossing symbolically; one way only: same_point
+          // decides (the other line collinear, exactly).
+          if ((uv && vu) ||
+              ((uv || vu) && nonconvex2::same_point(nonconvex2::Cand{*u.E, u.param(), *u.edge}, nonconvex2::Cand{*v.E, v.param(), *v.edge}))) {
+            v.r = u.r;
+            reused = true;
+            break;
+          }
+        }
+      }
+      if (reused) continue;
       const Vec2& guess = j == 0 ? pc.a : pc.b;
       v.r = Vec2(round_coord(v, 0, guess.x()), round_coord(v, 1, guess.y()));
+      if (v.kind == Param::Cut) cuts.push_back(int(2 * k + j));
     }
   }
   // Intern: ends with equal roundings are candidates; the same point symbolically or exactly.
-  std::vector<int> id(ends.size(), -1);
+  std::vector<int>& id = W.id;
+  id.assign(ends.size(), -1);
   int nv = 0;
-  std::vector<int> rep;  // rep[vertex id] = one of its ends
+  std::vector<int>& rep = W.rep;  // rep[vertex id] = one of its ends
+  rep.clear();
   {
-    std::vector<int> order(ends.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
-    std::sort(order.begin(), order.end(), [&](int x, int y) {
-      const Vec2 &a = ends[x].r, &b = ends[y].r;
-      return a.x() != b.x() ? a.x() < b.x() : a.y() != b.y() ? a.y() < b.y() : x < y;
-    });
-    auto same = [&](const End& a, const End& b) {
-      if (a.sum && b.sum && a.pid == b.pid && a.qid == b.qid) return true;
+    // A sum vertex that is an exact double pair against a crossing with FlX-exact numerators and
+    // denominator (integer data): equal iff num = x·den for both coordinates, each product exact
+    // or not a double at all (then not num). 1 equal, 0 not, -1 undecided.
+    auto sum_vs_cut = [&](const End& sv, End& c) {
+      if (!sv.sum || !sv.r_sum || sv.tex != 0 || sv.tey != 0 || c.sum || c.kind != Param::Cut) return -1;
+      ensure_fx(c);
+      if (c.fx <= 0) return -1;
+      int r = 1;
+      for (const auto& [t, num] : {std::pair{sv.tsx, c.fxn}, std::pair{sv.tsy, c.fyn}}) {
+        const double p = t * c.fden;
+        if (!std::isfinite(p) || (t != 0 && std::abs(p) <= 0x1p-960)) return -1;
+        if (std::fma(t, c.fden, -p) != 0 || p != num) r = 0;
+      }
+      return r;
+    };
+    auto same = [&](End& a, End& b) {
+      if (a.sum && b.sum) {
+        if (a.pid == b.pid && a.qid == b.qid) return true;
+        // Two sums of two doubles, both TwoSum pairs finite: equal iff the pairs are (s = fl(x)
+        // and e = x − s are functions of the exact x).
+        if (a.r_sum && b.r_sum) return a.tsx == b.tsx && a.tex == b.tex && a.tsy == b.tsy && a.tey == b.tey;
+      } else if (int r = sum_vs_cut(a, b); r >= 0 || (r = sum_vs_cut(b, a)) >= 0) {
+        return r == 1;
+      }
       if (nonconvex2::same_point(nonconvex2::Cand{*a.E, a.param(), *a.edge}, nonconvex2::Cand{*b.E, b.param(), *b.edge})) return true;
       return compare_coord(a, b, 0) == 0 && compare_coord(a, b, 1) == 0;
     };
-    for (std::size_t g0 = 0, g1; g0 < order.size(); g0 = g1) {
-      g1 = g0 + 1;
-      while (g1 < order.size() && ends[order[g1]].r == ends[order[g0]].r) ++g1;
-      const int first = nv;
-      for (std::size_t i = g0; i < g1; ++i) {
-        const int e = order[i];
-        for (int c = first; c < nv && id[e] < 0; ++c)
-          if (same(ends[rep[c]], ends[e])) id[e] = c;
-        if (id[e] < 0) {
-          id[e] = nv++;
-          rep.push_back(e);
-        }
+    // Groups of equal roundings (−0 = +0) in an open-addressing table; each group lists its
+    // vertices. Ends are visited in index order, so a vertex's representative is its first end.
+    int bits = 4;
+    while ((std::size_t(1) << bits) < 2 * ends.size()) ++bits;
+    std::vector<int>& table = W.table;
+    table.assign(std::size_t(1) << bits, -1);
+    std::vector<Vec2>& gkey = W.gkey;
+    gkey.clear();
+    std::vector<int>&ghead = W.ghead, &vnext = W.vnext;
+    ghead.clear();
+    vnext.clear();
+    const std::size_t mask = (std::size_t(1) << bits) - 1;
+    for (std::size_t e = 0; e < ends.size(); ++e) {
+      const double x = ends[e].r.x() + 0.0, y = ends[e].r.y() + 0.0;  // +0.0: one key for ±0
+      std::size_t h = std::size_t((std::bit_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ull ^ std::bit_cast<std::uint64_t>(y) * 0xC2B2AE3D27D4EB4Full) >> (64 - bits));
+      int g;
+      for (;; h = (h + 1) & mask) {
+        g = table[h];
+        if (g < 0 || (gkey[g].x() == x && gkey[g].y() == y)) break;
+      }
+      if (g < 0) {
+        g = table[h] = int(gkey.size());
+        gkey.emplace_back(x, y);
+        ghead.push_back(-1);
+      }
+      for (int v = ghead[g]; v >= 0 && id[e] < 0; v = vnext[v])
+        if (same(ends[rep[v]], ends[e])) id[e] = v;
+      if (id[e] < 0) {
+        id[e] = nv++;
+        rep.push_back(int(e));
+        vnext.push_back(ghead[g]);
+        ghead[g] = id[e];
       }
     }
   }
   // The exported rounding of a vertex: that of its first sum-vertex end with a TwoSum rounding (the
   // previous export's choice, which also fixes the sign of a zero), else of any end.
-  std::vector<Vec2> rv(nv);
+  std::vector<Vec2>& rv = W.rv;
+  rv.resize(nv);
   {
-    std::vector<char> fixed(nv, 0);
+    std::vector<char>& fixed = W.fixed;
+    fixed.assign(nv, 0);
     for (std::size_t e = 0; e < ends.size(); ++e)
       if (ends[e].r_sum && !fixed[id[e]]) rv[id[e]] = ends[e].r, fixed[id[e]] = 1;
     for (int v = 0; v < nv; ++v)
       if (!fixed[v]) rv[v] = ends[rep[v]].r;
   }
 
-  std::vector<Seg> segs;
-  segs.reserve(np);
-  std::vector<int> zero_points;
+  std::vector<Seg>& segs = W.segs;
+  segs.clear();
+  std::vector<int>& zero_points = W.zero_points;
+  zero_points.clear();
   for (std::size_t k = 0; k < np; ++k) {
     const int ia = id[2 * k], ib = id[2 * k + 1];
     if (ia == ib) {
       zero_points.push_back(ia);
       continue;
     }
-    segs.push_back(make_seg(N.pieces[k], ia, ib));
+    make_seg(segs.emplace_back(), N.pieces[k], ia, ib);
   }
   {  // sorted by line (indices: a Seg is large)
-    std::vector<int> order(segs.size());
+    std::vector<int>& order = W.order;
+    order.resize(segs.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = int(i);
     std::sort(order.begin(), order.end(), [&](int x, int y) { return compare_lines_filtered(segs[x], segs[y]) < 0; });
-    std::vector<Seg> sorted;
-    sorted.reserve(segs.size());
+    std::vector<Seg>& sorted = W.sorted;
+    sorted.clear();
     for (int i : order) sorted.push_back(segs[i]);
     segs.swap(sorted);
   }
 
-  // Every vertex (piece ends and zero-length points), sorted by rounded x for range scans.
-  std::vector<int> verts;
-  verts.reserve(nv);
-  {
-    std::vector<char> seen(nv, 0);
-    for (const Seg& s : segs)
-      for (int v : {s.a, s.b})
-        if (!seen[v]) seen[v] = 1, verts.push_back(v);
-    for (int v : zero_points)
-      if (!seen[v]) seen[v] = 1, verts.push_back(v);
-  }
-  std::sort(verts.begin(), verts.end(), [&](int x, int y) { return rv[x].x() < rv[y].x(); });
+  // Every vertex (each is an end of a piece of positive length or a zero-length one) with its
+  // rounding inline, sorted by rounded x for range scans.
+  std::vector<Workspace::VX>& verts = W.verts;
+  verts.resize(nv);
+  for (int v = 0; v < nv; ++v) verts[v] = {rv[v].x(), rv[v].y(), v};
+  std::sort(verts.begin(), verts.end(), [](const Workspace::VX& a, const Workspace::VX& b) { return a.x < b.x; });
 
-  struct Edge {
-    int a, b;
-    std::size_t line;  // the group of its exact supporting line
-    bool fwd;          // along increasing u of that line
-  };
-  std::vector<Edge> edges;
-  std::vector<std::array<int, 2>> slits;
-  std::vector<char> is_vertex(nv, 0);  // ends of edges and slit pieces
-  std::vector<int> stamp(nv, -1), pos(nv, 0);
-  struct Iv {
-    int lo, hi;  // vertex ids (lower and higher u)
-    bool fwd;
-  };
-  std::vector<Iv> ivs;
-  std::vector<int> us;
+  using Edge = Workspace::Edge;
+  using Iv = Workspace::Iv;
+  std::vector<Edge>& edges = W.edges;
+  edges.clear();
+  std::vector<std::array<int, 2>>& slits = W.slits;
+  slits.clear();
+  std::vector<char>& is_vertex = W.is_vertex;  // ends of edges and slit pieces
+  is_vertex.assign(nv, 0);
+  std::vector<int>&stamp = W.stamp, &pos = W.pos;
+  stamp.assign(nv, -1);
+  pos.assign(nv, 0);
+  std::vector<Iv>& ivs = W.ivs;
+  std::vector<int>& us = W.us;
   for (std::size_t g0 = 0, g1; g0 < segs.size(); g0 = g1) {
     g1 = g0 + 1;
     while (g1 < segs.size() && compare_lines_filtered(segs[g1], segs[g0]) == 0) ++g1;
@@ -638,11 +845,11 @@ void nfp_export(NoFitPolygon2::Impl& N) {
     }
     // Other exact vertices on this line inside its extent split it too. Rounding is monotone, so
     // the extent's points round into [lo, hi]; those in the box are tested exactly.
-    auto it = std::lower_bound(verts.begin(), verts.end(), lo.x(), [&](int v, double x) { return rv[v].x() < x; });
+    auto it = std::lower_bound(verts.begin(), verts.end(), lo.x(), [](const Workspace::VX& a, double x) { return a.x < x; });
     bool split = false;
-    for (; it != verts.end() && rv[*it].x() <= hi.x(); ++it) {
-      const int v = *it;
-      if (stamp[v] == int(g0) || rv[v].y() < lo.y() || rv[v].y() > hi.y()) continue;
+    for (; it != verts.end() && it->x <= hi.x(); ++it) {
+      const int v = it->v;
+      if (it->y < lo.y() || it->y > hi.y() || stamp[v] == int(g0)) continue;
       if (!on_line(ends[rep[v]], segs[g0])) continue;
       stamp[v] = int(g0);
       us.push_back(v);
@@ -685,21 +892,25 @@ void nfp_export(NoFitPolygon2::Impl& N) {
   }
 
   // Link edges into rings. Edges leaving each vertex, in edge order (compressed rows).
-  std::vector<int> first(nv + 1, 0), out(edges.size());
+  std::vector<int>&first = W.first, &out = W.out, &fill = W.fill;
+  first.assign(nv + 1, 0);
+  out.resize(edges.size());
   for (const Edge& e : edges) ++first[e.a + 1];
   for (int v = 0; v < nv; ++v) first[v + 1] += first[v];
-  {
-    std::vector<int> fill(first.begin(), first.end() - 1);
-    for (std::size_t e = 0; e < edges.size(); ++e) out[fill[edges[e].a]++] = int(e);
-  }
-  std::vector<char> used(edges.size(), 0);
-  std::vector<std::vector<int>> rings;
+  fill.assign(first.begin(), first.end() - 1);
+  for (std::size_t e = 0; e < edges.size(); ++e) out[fill[edges[e].a]++] = int(e);
+  std::vector<char>& used = W.used;
+  used.assign(edges.size(), 0);
+  // Rings as vertex ids: ring k is ring_verts[ring_start[k], ring_start[k + 1]).
+  std::vector<int>&ring_verts = W.ring_verts, &ring_start = W.ring_start;
+  ring_verts.clear();
+  ring_start.assign(1, 0);
   // The direction of an edge: its line's ray direction, signed to point from a to b.
   auto dir = [&](const Edge& e) {
     const Seg& s = segs[e.line];
     return Dir{s.E, e.fwd ? s.su : -s.su};
   };
-  std::vector<std::size_t> chain;
+  std::vector<std::size_t>& chain = W.chain;
   for (std::size_t e0 = 0; e0 < edges.size(); ++e0) {
     if (used[e0]) continue;
     chain.clear();
@@ -727,22 +938,22 @@ void nfp_export(NoFitPolygon2::Impl& N) {
         throw std::logic_error("no-fit polygon: a boundary chain does not close (internal inconsistency)");
       e = best;
     }
-    std::vector<int> ring;
+    const std::size_t r0 = ring_verts.size();
     for (std::size_t k = 0; k < chain.size(); ++k) {
       const Edge& in = edges[chain[(k + chain.size() - 1) % chain.size()]];
       const Edge& o = edges[chain[k]];
       // Pass-through: the same exact line (one group per line) in the same direction.
       if (chain.size() > 2 && in.line == o.line && in.fwd == o.fwd) continue;
-      ring.push_back(o.a);
+      ring_verts.push_back(o.a);
     }
-    if (ring.size() >= 3) rings.push_back(std::move(ring));
+    if (ring_verts.size() - r0 >= 3) ring_start.push_back(int(ring_verts.size()));
+    else ring_verts.resize(r0);
   }
+  const std::size_t nr = ring_start.size() - 1;
+  auto ring_of = [&](std::size_t k) {
+    return std::vector<int>(ring_verts.begin() + ring_start[k], ring_verts.begin() + ring_start[k + 1]);
+  };
 
-  std::vector<std::vector<Vec2>> rr(rings.size());
-  for (std::size_t k = 0; k < rings.size(); ++k) {
-    rr[k].reserve(rings[k].size());
-    for (int p : rings[k]) rr[k].push_back(rv[p]);
-  }
   // Exact vertices, only for the rare rational decisions below.
   std::vector<QP> V;
   auto exact_vertices = [&] {
@@ -752,28 +963,36 @@ void nfp_export(NoFitPolygon2::Impl& N) {
   // Outer rings and holes by the sign of the area: a floating shoelace sum on the rounded
   // vertices with a bound covering the rounding of the vertices (2^-53 relative each) and of the
   // sum; exact rationals when it cannot decide, and exact areas whenever there are holes to place.
-  std::vector<std::size_t> outer, holes;
-  for (std::size_t k = 0; k < rings.size(); ++k) {
-    const auto& r = rr[k];
-    const double n = double(r.size());
+  std::vector<std::size_t>&outer = W.outer, &holes = W.holes;
+  outer.clear();
+  holes.clear();
+  for (std::size_t k = 0; k < nr; ++k) {
+    const int* r = ring_verts.data() + ring_start[k];
+    const std::size_t m = std::size_t(ring_start[k + 1] - ring_start[k]);
+    const double n = double(m);
     double a = 0, big = 0;
-    for (std::size_t i = 0; i < r.size(); ++i) {
-      const Vec2 &u = r[i], &w = r[(i + 1) % r.size()];
+    for (std::size_t i = 0; i < m; ++i) {
+      const Vec2 &u = rv[r[i]], &w = rv[r[i + 1 == m ? 0 : i + 1]];
       a += u.x() * w.y() - w.x() * u.y();
       big = std::max(big, u.cwiseAbs().maxCoeff());
     }
     const double bound = (4 * n * n + 8 * n) * big * big * 0x1p-50 + 0x1p-1000;
     int sign;
     if (std::isfinite(a) && std::isfinite(bound) && std::abs(a) > bound) sign = a > 0 ? 1 : -1;
-    else exact_vertices(), sign = sgn(ring_area2(V, rings[k]));
+    else exact_vertices(), sign = sgn(ring_area2(V, ring_of(k)));
     (sign > 0 ? outer : holes).push_back(k);
   }
-  std::vector<std::vector<std::size_t>> holes_of(outer.size());
+  // owner[h]: the outer ring (index into outer) of hole h.
+  std::vector<std::size_t>& owner = W.owner;
+  owner.assign(holes.size(), 0);
   if (!holes.empty()) {
     exact_vertices();
-    std::vector<mpq_class> area(rings.size());
+    std::vector<std::vector<int>> rings(nr);
+    for (std::size_t k = 0; k < nr; ++k) rings[k] = ring_of(k);
+    std::vector<mpq_class> area(nr);
     for (std::size_t o : outer) area[o] = ring_area2(V, rings[o]);
-    for (std::size_t h : holes) {
+    for (std::size_t hi = 0; hi < holes.size(); ++hi) {
+      const std::size_t h = holes[hi];
       std::size_t best = outer.size();
       for (std::size_t o = 0; o < outer.size(); ++o) {
         int side = 0;
@@ -791,14 +1010,22 @@ void nfp_export(NoFitPolygon2::Impl& N) {
       }
       if (best == outer.size())
         throw std::logic_error("no-fit polygon: a hole ring lies in no outer ring (internal inconsistency)");
-      holes_of[best].push_back(h);
+      owner[hi] = best;
     }
   }
+  auto ring_points = [&](std::size_t k) {
+    std::vector<Vec2> pts(std::size_t(ring_start[k + 1] - ring_start[k]));
+    for (std::size_t i = 0; i < pts.size(); ++i) pts[i] = rv[ring_verts[std::size_t(ring_start[k]) + i]];
+    return pts;
+  };
   N.polys.clear();
+  N.polys.reserve(outer.size());
   for (std::size_t o = 0; o < outer.size(); ++o) {
-    std::vector<std::vector<Vec2>> poly{std::move(rr[outer[o]])};
-    for (std::size_t h : holes_of[o]) poly.push_back(std::move(rr[h]));
-    N.polys.push_back(std::move(poly));
+    std::vector<std::vector<Vec2>>& poly = N.polys.emplace_back();
+    poly.reserve(1);
+    poly.push_back(ring_points(outer[o]));
+    for (std::size_t hi = 0; hi < holes.size(); ++hi)
+      if (owner[hi] == o) poly.push_back(ring_points(holes[hi]));
   }
   N.slits.clear();
   for (const auto& sl : slits) N.slits.push_back({rv[sl[0]], rv[sl[1]]});

@@ -6,8 +6,10 @@
 // collinear and coincident edges, slits, touching parts), the same stars scaled by 1/10 (non-dyadic
 // coordinates: the exact ties then need more than the floating tiers), the slit / hole-fit / comb
 // cases of test_nfp.cpp, rounding ties of sum vertices and of crossings (offset 2^52), offsets of
-// 1e6, scales of 2^-30 and 2^-960 (subnormal gaps: the rational fallbacks); each also with its pieces
-// shuffled (another interning and grouping order). Pinned seeds.
+// 1e6, scales of 2^-30 and 2^-960 (subnormal gaps: the rational fallbacks), inputs chosen to take
+// each exact-double shortcut of the export and each of its fallbacks (integers, large integers,
+// dyadic offsets, integers against tenths); each also with its pieces shuffled (another interning
+// and grouping order). Pinned seeds.
 #include <pendepth/nfp2.hpp>
 
 #include <gtest/gtest.h>
@@ -199,6 +201,26 @@ TEST(NfpExport, SlitsHolesPointsCombs) {
   }
   EXPECT_GT(counts().slits, 0u);   // the cases above do produce slits, points and holes
   EXPECT_GT(counts().points, 0u);
+}
+
+// The export's shortcuts and their fallbacks on inputs chosen to take each: small integers (exact
+// doubles: line and angle order by FMA products, crossings rounded from FlX-exact quotients, sum
+// vertices interned by TwoSum pairs); integers scaled by the odd 99991 (every input an integer, but
+// the crossing numerators exceed 53 bits: FlX fails and the double-double walk rounds); dyadic
+// offsets (exact differences, non-integer anchors: exact slopes, lifted offsets, walked rounding);
+// an integer P against a Q scaled by 1/10 (inexact differences: the lifted line order throughout).
+TEST(NfpExport, ExactDoubleShortcutsAndFallbacks) {
+  std::mt19937_64 rng(777001);
+  for (int it = 0; it < pendepth_test::scaled(120); ++it) {
+    const Polygon P = star(rng, 5 + int(rng() % 8), 2, 7, true);
+    const Polygon Q = it % 4 == 0 ? P : star(rng, 4 + int(rng() % 6), 1, 4, true);
+    const std::string tag = " " + std::to_string(it);
+    check(P, Q, "integers" + tag, &rng);
+    check(scaled_by(P, 99991), scaled_by(Q, 99991), "integers x 99991" + tag, &rng);
+    check(shifted(P, Vec2(0.5, -0.25)), shifted(Q, Vec2(0.125, 0.75)), "dyadic offsets" + tag, &rng);
+    check(P, scaled_by(Q, 0.1), "integers / tenths" + tag, &rng);
+    if (HasFatalFailure()) return;
+  }
 }
 
 // Two convex shapes: the export by angle (nfp_export_convex) must give the oracle's output bit for
