@@ -38,9 +38,10 @@
 // overlapping(t) is PairDepth2's pair-sum test (worst O(nm), a few sums on real pieces);
 // along/minimum visit O(log N + k) hierarchy nodes for k boxes near the answer (worst O(N)).
 // Measured (docs/benchmarks.md, CPU time): on the nesting pieces (≤ 14 vertices, ~17 pieces of ∂O)
-// σ takes 1.6–2.1 µs and σ_d 1.5–2.0 µs per query; the build takes 7.8–27 µs per pair over every
-// ordered pair of an instance, 1.49–2.76× faster than CGAL's minkowski_sum_2 on the same pairs
-// (3.9–4.5× for two convex pieces, whose candidates are the convex sum's edges). Internal
+// σ takes 1.6–3.3 µs and σ_d 1.5–2.9 µs per query; the build takes 7.5–25 µs per pair over every
+// ordered pair of an instance, 3.4–4.0× faster than CGAL's minkowski_sum_2 on albano and
+// trousers, 2.1–2.3× on shirts (small integer pieces with many collinear edges); 5.5–6.1× for
+// two convex pieces, whose candidates are the convex sum's edges. Internal
 // inconsistencies of the pieces (a chain that does not close, a hole outside every outer ring)
 // throw std::logic_error rather than export a wrong polygon; no test input has produced one.
 // Departure from a winding-number / ray-parity NFP: membership in O is always decided by the open
