@@ -575,9 +575,13 @@ struct Classifier {
         auto where = [](const Split& x, const Param& p, const Ray& E) {
           if (x.v - x.err > 0 && x.v + x.err < 1) return 2;
           if (x.v + x.err < 0 || x.v - x.err > 1) return -1;
-          const int s0 = compare_params(p, kZero, E, kO);
+          // μ = num / den against 0 and 1 (symbolic when the line passes through an end vertex):
+          // the signs of num and num − den, times den's.
+          if (const int k = known_lambda(p.line, E); k >= 0) return k;
+          const int den = exact::exact_sign([&](auto L) { return line_den(p.line, E, L); });
+          const int s0 = den * exact::exact_sign([&](auto L) { return line_num(p.line, E, L); });
           if (s0 <= 0) return s0 == 0 ? 0 : -1;
-          const int s1 = compare_params(p, kOne, E, kO);
+          const int s1 = den * exact::exact_sign([&](auto L) { return line_num(p.line, E, L) - line_den(p.line, E, L); });
           return s1 < 0 ? 2 : s1 == 0 ? 1 : -1;
         };
         const int wc = where(sc, pc, c.E);
