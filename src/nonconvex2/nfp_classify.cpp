@@ -106,7 +106,14 @@ bool boxes_meet(const NfpCandidate& a, const NfpCandidate& b) {
 
 // Exact sign of cross(dir a, dir b); candidates' directions are a1 − b1 (a2 = b2 = 0), input
 // differences, so the static-filter predicate applies.
-int parallel_sign(const Ray& a, const Ray& b) { return predicates::cross_edges(a.b1, a.a1, b.b1, b.a1); }
+// A floating filter first (each direction a difference rounded once; 2⁻⁵⁰ of the products covers
+// those and the roundings of the cross product, 2⁻¹⁰⁰⁰ underflow), then the exact predicate.
+int parallel_sign(const Ray& a, const Ray& b) {
+  const Vec2 da = a.a1 - a.b1, db = b.a1 - b.b1;
+  const double p = da.x() * db.y(), q = da.y() * db.x(), cr = p - q;
+  if (std::abs(cr) > (std::abs(p) + std::abs(q)) * 0x1p-50 + 0x1p-1000) return cr > 0 ? 1 : -1;
+  return predicates::cross_edges(a.b1, a.a1, b.b1, b.a1);
+}
 
 // Exact: b's origin on a's line.
 bool origin_on_line(const Ray& a, const Ray& b) {
@@ -416,10 +423,11 @@ struct Classifier {
   std::unordered_map<std::uint64_t, signed char> vertex_map;
   // The known coverage of sum vertex `key`: -1 unknown, 0 not in O, 1 in O.
   signed char& vertex_state(std::uint64_t key) {
-    const std::uint64_t nq = S.Q.size(), cells = std::uint64_t(S.P.size()) * nq;
+    if (!vertex_table.empty()) return vertex_table[(key >> 32) * S.Q.size() + (key & 0xffffffffu)];
+    const std::uint64_t cells = std::uint64_t(S.P.size()) * S.Q.size();
     if (cells <= (std::uint64_t(1) << 20)) {
-      if (vertex_table.empty()) vertex_table.assign(cells, -1);
-      return vertex_table[(key >> 32) * nq + (key & 0xffffffffu)];
+      vertex_table.assign(cells, -1);
+      return vertex_table[(key >> 32) * S.Q.size() + (key & 0xffffffffu)];
     }
     return vertex_map.try_emplace(key, -1).first->second;
   }
