@@ -35,21 +35,25 @@ void convex_parts(const std::vector<Tri>& tris, bool merge, ConvexParts& out) {
     return t;
   };
   if (merge && T > 1) {
-    // Directed triangle edges by key (a << 32 | b) with their slot of a; a diagonal is an edge
-    // whose reverse also occurs (a polygon edge belongs to one triangle).
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> edges(3 * T);
-    for (std::uint32_t s = 0; s < 3 * T; ++s) edges[s] = {(std::uint64_t(I(s)) << 32) | I(next[s]), s};
-    std::sort(edges.begin(), edges.end());
-    for (const auto& [key, s] : edges) {
-      const std::uint32_t a = std::uint32_t(key >> 32), b = std::uint32_t(key);
+    // Directed triangle edges a → b by their slot of a, listed per start vertex; a diagonal is an
+    // edge whose reverse also occurs (a polygon edge belongs to one triangle).
+    auto tri_next = [](std::uint32_t s) { return s % 3 == 2 ? s - 2 : s + 1; };
+    std::uint32_t nv = 0;
+    for (std::uint32_t s = 0; s < 3 * T; ++s) nv = std::max(nv, I(s) + 1);
+    constexpr std::uint32_t kNone = ~std::uint32_t(0);
+    std::vector<std::uint32_t> lists(nv + 3 * T, kNone);
+    std::uint32_t *head = lists.data(), *link = head + nv;
+    for (std::uint32_t s = 0; s < 3 * T; ++s) link[s] = head[I(s)], head[I(s)] = s;
+    for (std::uint32_t s = 0; s < 3 * T; ++s) {
+      const std::uint32_t a = I(s), b = I(tri_next(s));
       if (a > b) continue;  // each diagonal once
-      const std::uint64_t rev = (std::uint64_t(b) << 32) | a;
-      const auto it = std::lower_bound(edges.begin(), edges.end(), std::make_pair(rev, std::uint32_t(0)));
-      if (it == edges.end() || it->first != rev) continue;  // a polygon edge
-      const std::uint32_t X = find(s / 3), Y = find(it->second / 3);
+      std::uint32_t r = head[b];
+      while (r != kNone && I(tri_next(r)) != a) r = link[r];
+      if (r == kNone) continue;  // a polygon edge
+      const std::uint32_t X = find(s / 3), Y = find(r / 3);
       if (X == Y) continue;
       // The diagonal is still an edge of both rings: a → b in X (slots u → v), b → a in Y.
-      const std::uint32_t u = live(s), v = next[u], yb = live(it->second), ya = next[yb];
+      const std::uint32_t u = live(s), v = next[u], yb = live(r), ya = next[yb];
       const std::uint32_t y_after_a = next[ya], y_before_b = prev[yb];
       if (turn(V(prev[u]), V(u), V(y_after_a)) < 0 || turn(V(y_before_b), V(v), V(next[v])) < 0) continue;
       next[u] = y_after_a, prev[y_after_a] = u;

@@ -106,7 +106,14 @@ bool boxes_meet(const NfpCandidate& a, const NfpCandidate& b) {
 
 // Exact sign of cross(dir a, dir b); candidates' directions are a1 − b1 (a2 = b2 = 0), input
 // differences, so the static-filter predicate applies.
-int parallel_sign(const Ray& a, const Ray& b) { return predicates::cross_edges(a.b1, a.a1, b.b1, b.a1); }
+// A floating filter first (each direction a difference rounded once; 2⁻⁵⁰ of the products covers
+// those and the roundings of the cross product, 2⁻¹⁰⁰⁰ underflow), then the exact predicate.
+int parallel_sign(const Ray& a, const Ray& b) {
+  const Vec2 da = a.a1 - a.b1, db = b.a1 - b.b1;
+  const double p = da.x() * db.y(), q = da.y() * db.x(), cr = p - q;
+  if (std::abs(cr) > (std::abs(p) + std::abs(q)) * 0x1p-50 + 0x1p-1000) return cr > 0 ? 1 : -1;
+  return predicates::cross_edges(a.b1, a.a1, b.b1, b.a1);
+}
 
 // Exact: b's origin on a's line.
 bool origin_on_line(const Ray& a, const Ray& b) {
@@ -282,21 +289,31 @@ struct Classifier {
     const auto VP = S.P.vertices(), VQ = S.Q.vertices();
     const auto pn = static_cast<std::uint32_t>(S.P.next(p)), pp = prevP[p];
     const auto qn = static_cast<std::uint32_t>(S.Q.next(q)), qp = prevQ[q];
-    Line L[4];
-    L[0].c1 = VP[p], L[0].c2 = -VQ[q], L[0].e0 = VP[p], L[0].e1 = VP[pn];
-    L[0].p0 = p, L[0].p1 = pn, L[0].q0 = L[0].q1 = q, L[0].q_edge = false;
-    L[1].c1 = VP[pp], L[1].c2 = -VQ[q], L[1].e0 = VP[pp], L[1].e1 = VP[p];
-    L[1].p0 = pp, L[1].p1 = p, L[1].q0 = L[1].q1 = q, L[1].q_edge = false;
-    L[2].c1 = VP[p], L[2].c2 = -VQ[q], L[2].e0 = -VQ[q], L[2].e1 = -VQ[qn];
-    L[2].p0 = L[2].p1 = p, L[2].q0 = q, L[2].q1 = qn, L[2].q_edge = true;
-    L[3].c1 = VP[p], L[3].c2 = -VQ[qp], L[3].e0 = -VQ[qp], L[3].e1 = -VQ[q];
-    L[3].p0 = L[3].p1 = p, L[3].q0 = qp, L[3].q1 = q, L[3].q_edge = true;
-    for (const Line& c : L)
-      if (predicates::cross_edges(avoid.b1, avoid.a1, c.e0, c.e1) != 0) {  // line_den(c, avoid) ≠ 0
-        out = c;
-        return true;
-      }
-    return false;
+    // The four edges at the vertex: 0, 1 of P (at p), 2, 3 of −Q (at q). Any one not parallel to
+    // `avoid` will do (the crossing is the same point): a floating test with a static bound picks
+    // a surely non-parallel one; the exact test only when none is certain.
+    const Vec2 e0[4] = {VP[p], VP[pp], -VQ[q], -VQ[qp]}, e1[4] = {VP[pn], VP[p], -VQ[qn], -VQ[q]};
+    const Vec2 dir = avoid.a1 - avoid.b1;
+    int pick = -1;
+    for (int k = 0; k < 4 && pick < 0; ++k) {
+      const Vec2 d = e1[k] - e0[k];
+      const double cr = dir.x() * d.y() - dir.y() * d.x();
+      // dir and d are differences rounded once (relative 2⁻⁵³ each): 2⁻⁵⁰ of the products covers
+      // them and the three roundings of cr; 2⁻¹⁰⁰⁰ covers underflow.
+      if (std::abs(cr) > (std::abs(dir.x() * d.y()) + std::abs(dir.y() * d.x())) * 0x1p-50 + 0x1p-1000) pick = k;
+    }
+    for (int k = 0; k < 4 && pick < 0; ++k)
+      if (predicates::cross_edges(avoid.b1, avoid.a1, e0[k], e1[k]) != 0) pick = k;  // line_den(c, avoid) ≠ 0
+    if (pick < 0) return false;
+    Line& c = out;
+    c.e0 = e0[pick], c.e1 = e1[pick];
+    switch (pick) {
+      case 0: c.c1 = VP[p], c.c2 = -VQ[q], c.p0 = p, c.p1 = pn, c.q0 = c.q1 = q, c.q_edge = false; break;
+      case 1: c.c1 = VP[pp], c.c2 = -VQ[q], c.p0 = pp, c.p1 = p, c.q0 = c.q1 = q, c.q_edge = false; break;
+      case 2: c.c1 = VP[p], c.c2 = -VQ[q], c.p0 = c.p1 = p, c.q0 = q, c.q1 = qn, c.q_edge = true; break;
+      default: c.c1 = VP[p], c.c2 = -VQ[qp], c.p0 = c.p1 = p, c.q0 = qp, c.q1 = q, c.q_edge = true; break;
+    }
+    return true;
   }
 
   // Floating filter for m ∈ int(T ⊕ B), m known to within tol per coordinate: +1 certainly
@@ -406,10 +423,11 @@ struct Classifier {
   std::unordered_map<std::uint64_t, signed char> vertex_map;
   // The known coverage of sum vertex `key`: -1 unknown, 0 not in O, 1 in O.
   signed char& vertex_state(std::uint64_t key) {
-    const std::uint64_t nq = S.Q.size(), cells = std::uint64_t(S.P.size()) * nq;
+    if (!vertex_table.empty()) return vertex_table[(key >> 32) * S.Q.size() + (key & 0xffffffffu)];
+    const std::uint64_t cells = std::uint64_t(S.P.size()) * S.Q.size();
     if (cells <= (std::uint64_t(1) << 20)) {
-      if (vertex_table.empty()) vertex_table.assign(cells, -1);
-      return vertex_table[(key >> 32) * nq + (key & 0xffffffffu)];
+      vertex_table.assign(cells, -1);
+      return vertex_table[(key >> 32) * S.Q.size() + (key & 0xffffffffu)];
     }
     return vertex_map.try_emplace(key, -1).first->second;
   }
@@ -575,9 +593,13 @@ struct Classifier {
         auto where = [](const Split& x, const Param& p, const Ray& E) {
           if (x.v - x.err > 0 && x.v + x.err < 1) return 2;
           if (x.v + x.err < 0 || x.v - x.err > 1) return -1;
-          const int s0 = compare_params(p, kZero, E, kO);
+          // μ = num / den against 0 and 1 (symbolic when the line passes through an end vertex):
+          // the signs of num and num − den, times den's.
+          if (const int k = known_lambda(p.line, E); k >= 0) return k;
+          const int den = exact::exact_sign([&](auto L) { return line_den(p.line, E, L); });
+          const int s0 = den * exact::exact_sign([&](auto L) { return line_num(p.line, E, L); });
           if (s0 <= 0) return s0 == 0 ? 0 : -1;
-          const int s1 = compare_params(p, kOne, E, kO);
+          const int s1 = den * exact::exact_sign([&](auto L) { return line_num(p.line, E, L) - line_den(p.line, E, L); });
           return s1 < 0 ? 2 : s1 == 0 ? 1 : -1;
         };
         const int wc = where(sc, pc, c.E);
