@@ -49,8 +49,8 @@
 // meeting pair; per part or point the pair sums whose boxes hold the point, O(1) tests each. For
 // X box-overlapping pairs: O(K log K + X + (K + X)·v), v sums per point (~5 on nesting pieces,
 // worst O(nm)); a candidate met by more than kMaxSplits others is cut by the reference instead.
-// Measured (callgrind, per pair over every ordered pair of the nesting instances): albano 82 k
-// instructions (103 k with triangle-pair point tests), shirts 101 k (133 k), trousers 26 k (32 k);
+// Measured (callgrind, per pair over every ordered pair of the nesting instances): albano 78 k
+// instructions (103 k with triangle-pair point tests), shirts 92 k (133 k), trousers 26 k (32 k);
 // ~26 point tests per shirts pair, ~3 sums per test left undecided by the floating filters (13.5
 // with triangle pairs).
 #include <algorithm>
