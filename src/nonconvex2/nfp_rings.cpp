@@ -82,22 +82,23 @@ using nonconvex2::Ray;
 // One piece end: the point at parameter *raw of ray E (whose line is `edge`); `kind` is the
 // normalised kind (a cut through a vertex of a symbolic ray is that vertex).
 struct End {
-  const Ray* E;
-  const Line* edge;
-  const Param* raw;
-  Param::Kind kind;
-  bool sum;                   // a sum vertex (pid, qid) = sp + sb
-  bool r_sum;                 // r from TwoSum of a sum vertex (round_sum succeeded)
-  std::uint32_t pid, qid;
-  Vec2 sp, sb;
-  double tsx, tex, tsy, tey;  // a sum vertex: its exact coordinates as TwoSum pairs (when r_sum)
-  int den_sign;               // sign of the denominator of μ
-  Vec2 r;                     // rounded to nearest
-  bool have_dd;               // xn, yn, den computed (round_coord)
-  signed char fx;             // numerators and denominator exact in doubles: 1 yes, -1 no, 0 not tried
-  double fxn, fyn, fden;      // those exact values when fx = 1
-  exact::DD xn, yn, den;      // not a sum vertex: the coordinates' numerators and denominator
-  End() {}  // user-provided: no zero-filling of the whole struct on emplace_back
+  // Every member initialised: the ends live in a reused vector that copies them when it grows,
+  // and copying an indeterminate value (a bool read as 190 under UBSan) is undefined.
+  const Ray* E = nullptr;
+  const Line* edge = nullptr;
+  const Param* raw = nullptr;
+  Param::Kind kind = Param::Zero;
+  bool sum = false;                          // a sum vertex (pid, qid) = sp + sb
+  bool r_sum = false;                        // r from TwoSum of a sum vertex (round_sum succeeded)
+  std::uint32_t pid = 0, qid = 0;
+  Vec2 sp{0, 0}, sb{0, 0};
+  double tsx = 0, tex = 0, tsy = 0, tey = 0;  // a sum vertex: its exact coordinates as TwoSum pairs (when r_sum)
+  int den_sign = 0;                          // sign of the denominator of μ
+  Vec2 r{0, 0};                              // rounded to nearest
+  bool have_dd = false;                      // xn, yn, den computed (round_coord)
+  signed char fx = 0;                        // numerators and denominator exact in doubles: 1 yes, -1 no, 0 not tried
+  double fxn = 0, fyn = 0, fden = 0;         // those exact values when fx = 1
+  exact::DD xn, yn, den;                     // not a sum vertex: the coordinates' numerators and denominator
   Param param() const { return kind == Param::Zero || kind == Param::One ? Param{kind, {}, 0} : *raw; }
 };
 
