@@ -581,10 +581,14 @@ struct Classifier {
     };
     auto meet = [&](std::size_t i, std::size_t j) {
       const NfpCandidate &c = cands[i], &d = cands[j];
-      if (apart(c, d) || apart(d, c)) return;
+      if ((c.redundant && d.redundant) || apart(c, d) || apart(d, c)) return;
       const int turn = parallel_sign(c.E, d.E);  // sign of cross(dir c, dir d)
       const bool non_parallel = turn != 0;
       if (non_parallel && shared_end(c.E, d.E)) return;
+      // A redundant candidate lies in the union of kept candidates on its line (nfp_candidates), so
+      // where it crosses another candidate, a kept one crosses it too: only its collinear ends
+      // split others (one of them is no kept candidate's end).
+      if (non_parallel && (c.redundant || d.redundant)) return;
       if (non_parallel) {
         const Param pc{Param::Cut, d.line, 0}, pd{Param::Cut, c.line, 0};
         Split sc = split(pc, c.E), sd = split(pd, d.E);
@@ -610,19 +614,19 @@ struct Classifier {
         // Crossing inside both, the other candidate strict: that candidate is an edge of an open
         // pair sum lying on its left (nfp_build.cpp step 1), so the side of the crossing on its
         // left is in O (see the header).
-        if (wc == 2) {
+        if (wc == 2 && !c.redundant) {
           if (wd < 2) sc.key = wd == 0 ? vertex_key(d.E.p0, d.E.q0) : vertex_key(d.E.p1, d.E.q1);
           else if (d.strict) sc.in_o = turn < 0 ? kAfter : kBefore;
           found.push_back({static_cast<std::uint32_t>(i), sc});
         }
-        if (wd == 2) {
+        if (wd == 2 && !d.redundant) {
           if (wc < 2) sd.key = wc == 0 ? vertex_key(c.E.p0, c.E.q0) : vertex_key(c.E.p1, c.E.q1);
           else if (c.strict) sd.in_o = turn > 0 ? kAfter : kBefore;
           found.push_back({static_cast<std::uint32_t>(j), sd});
         }
       } else if (origin_on_line(c.E, d.E)) {
-        if (!collinear_ends(c, d, static_cast<std::uint32_t>(i), found)) reference[i] = 1;
-        if (!collinear_ends(d, c, static_cast<std::uint32_t>(j), found)) reference[j] = 1;
+        if (!c.redundant && !collinear_ends(c, d, static_cast<std::uint32_t>(i), found)) reference[i] = 1;
+        if (!d.redundant && !collinear_ends(d, c, static_cast<std::uint32_t>(j), found)) reference[j] = 1;
       }
     };
     if (K <= 64) {
@@ -665,6 +669,7 @@ struct Classifier {
     std::vector<Split*> sp;  // pointers: a Split is large, and sorting moves them
     for (std::size_t k = 0; k < K; ++k) {
       const NfpCandidate& c = cands[k];
+      if (c.redundant) continue;  // its points are on kept candidates (nfp_candidates)
       if (reference[k]) {
         nfp_cut(S, c, out);
         continue;
@@ -766,6 +771,7 @@ void nfp_classify(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& ca
   // the two collinear edges, not the side of the angle: those few candidates are cut exactly.
   if (convex_shape(S.P) && convex_shape(S.Q)) {
     for (const NfpCandidate& c : cands) {
+      if (c.redundant) continue;
       if (c.strict) out.push_back(make_piece(c, kZero, kOne));
       else nfp_cut(S, c, out);
     }
