@@ -491,7 +491,18 @@ struct Classifier {
   // coordinate with A = B keeps A (the exact one lies between A* and B*, within an ulp of A).
   // A cut whose floating bound is too loose gets μ again from double-double numerator and
   // denominator (|μ − v| ≤ (bn + |v|·bd)/(|d| − bd) + u|v| for their bounds bn, bd).
-  static bool end_point(const NfpCandidate& c, const Split& s, Vec2& out) {
+  // A split known to be a sum vertex (an end of c, or a key) is that vertex rounded once (a
+  // difference of two input doubles): correctly rounded, and exact where a coordinate is 0, which
+  // no relative bound certifies.
+  bool end_point(const NfpCandidate& c, const Split& s, Vec2& out) const {
+    if (s.p.kind == Param::Zero || s.p.kind == Param::One) {
+      out = s.p.kind == Param::Zero ? c.A : c.B;
+      return true;
+    }
+    if (s.key != kNoKey) {
+      out = S.P.vertices()[s.key >> 32] - S.Q.vertices()[s.key & 0xffffffffu];
+      return true;
+    }
     constexpr double u = 0x1p-53;
     auto at = [&](double v, double err) {
       for (int k = 0; k < 2; ++k) {
