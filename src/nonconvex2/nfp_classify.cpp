@@ -54,6 +54,7 @@
 // ~26 point tests per shirts pair, ~3 sums per test left undecided by the floating filters (13.5
 // with triangle pairs).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <unordered_map>
 
@@ -108,19 +109,32 @@ bool boxes_meet(const NfpCandidate& a, const NfpCandidate& b) {
 // differences, so the static-filter predicate applies.
 // A floating filter first (each direction a difference rounded once; 2⁻⁵⁰ of the products covers
 // those and the roundings of the cross product, 2⁻¹⁰⁰⁰ underflow), then the exact predicate.
+// Then, for directions that are exact differences (integer-like data, where exactly parallel
+// candidates are common), the signs of exact products (exact::sign_ab_minus_cd); else the exact
+// predicate.
 int parallel_sign(const Ray& a, const Ray& b) {
   const Vec2 da = a.a1 - a.b1, db = b.a1 - b.b1;
   const double p = da.x() * db.y(), q = da.y() * db.x(), cr = p - q;
   if (std::abs(cr) > (std::abs(p) + std::abs(q)) * 0x1p-50 + 0x1p-1000) return cr > 0 ? 1 : -1;
-  return predicates::cross_edges(a.b1, a.a1, b.b1, b.a1);
+  const exact::LiftFlX X;
+  const int s = exact::sign_ab_minus_cd(X(a.a1.x()) - X(a.b1.x()), X(b.a1.y()) - X(b.b1.y()), X(a.a1.y()) - X(a.b1.y()), X(b.a1.x()) - X(b.b1.x()));
+  return s != 2 ? s : predicates::cross_edges(a.b1, a.a1, b.b1, b.a1);
 }
 
-// Exact: b's origin on a's line.
+// Exact: b's origin on a's line. Asked of parallel candidates, which are mostly collinear (an
+// exact zero), so exact differences and products are tried before the general tiers.
 bool origin_on_line(const Ray& a, const Ray& b) {
+  auto cross = [&](auto L) {
+    auto x = L(b.o1.x()) + L(b.o2.x()) - L(a.o1.x()) - L(a.o2.x());
+    auto y = L(b.o1.y()) + L(b.o2.y()) - L(a.o1.y()) - L(a.o2.y());
+    return std::array{ray_dx(a, L), y, ray_dy(a, L), x};
+  };
+  const auto t = cross(exact::LiftFlX{});
+  const int s = exact::sign_ab_minus_cd(t[0], t[1], t[2], t[3]);
+  if (s != 2) return s == 0;
   return exact::exact_sign([&](auto L) {
-           auto x = L(b.o1.x()) + L(b.o2.x()) - L(a.o1.x()) - L(a.o2.x());
-           auto y = L(b.o1.y()) + L(b.o2.y()) - L(a.o1.y()) - L(a.o2.y());
-           return ray_dx(a, L) * y - ray_dy(a, L) * x;
+           const auto u = cross(L);
+           return u[0] * u[1] - u[2] * u[3];
          }) == 0;
 }
 
@@ -548,13 +562,22 @@ struct Classifier {
       // (degree 2; X, A, B sums of two input doubles, dir = a1 − b1 exactly).
       if (std::abs(u) <= err || std::abs(u - len2) <= err) {
         auto along = [&](int end) {
-          return exact::exact_sign([&](auto L) {
+          auto terms = [&](auto L) {
             auto x = L(d.E.o1.x()) + L(d.E.o2.x()) - L(c.E.o1.x()) - L(c.E.o2.x());
             auto y = L(d.E.o1.y()) + L(d.E.o2.y()) - L(c.E.o1.y()) - L(c.E.o2.y());
             auto dx = L(c.E.a1.x()) - L(c.E.b1.x()), dy = L(c.E.a1.y()) - L(c.E.b1.y());
             if (k == 1) x = x + L(d.E.a1.x()) - L(d.E.b1.x()), y = y + L(d.E.a1.y()) - L(d.E.b1.y());
             if (end == 1) x = x - dx, y = y - dy;
-            return x * dx + y * dy;
+            return std::array{x, dx, -y, dy};  // x·dx − (−y)·dy
+          };
+          // Exact differences and products first (an end exactly at c's end is common), else the
+          // general tiers.
+          const auto t = terms(exact::LiftFlX{});
+          const int s = exact::sign_ab_minus_cd(t[0], t[1], t[2], t[3]);
+          if (s != 2) return s;
+          return exact::exact_sign([&](auto L) {
+            const auto u = terms(L);
+            return u[0] * u[1] - u[2] * u[3];
           });
         };
         if (along(0) <= 0 || along(1) >= 0) continue;
@@ -605,16 +628,28 @@ struct Classifier {
         Split sc = split(pc, c.E), sd = split(pd, d.E);
         // Where the crossing lies on a closed segment: -1 off it, 0 / 1 at that end, 2 strictly
         // inside; certified by the error bounds when clear, else exactly (symbolic ends included).
-        auto where = [](const Split& x, const Param& p, const Ray& E) {
-          if (x.v - x.err > 0 && x.v + x.err < 1) return 2;
-          if (x.v + x.err < 0 || x.v - x.err > 1) return -1;
+        auto where = [](const Split& sx, const Param& p, const Ray& E) {
+          if (sx.v - sx.err > 0 && sx.v + sx.err < 1) return 2;
+          if (sx.v + sx.err < 0 || sx.v - sx.err > 1) return -1;
           // μ = num / den against 0 and 1 (symbolic when the line passes through an end vertex):
           // the signs of num and num − den, times den's.
           if (const int k = known_lambda(p.line, E); k >= 0) return k;
-          const int den = exact::exact_sign([&](auto L) { return line_den(p.line, E, L); });
-          const int s0 = den * exact::exact_sign([&](auto L) { return line_num(p.line, E, L); });
+          // Exact differences and products first (integer-like data: the crossing is often
+          // exactly at an end), with num = x·ey − y·ex, den = dx·ey − dy·ex and
+          // num − den = (x − dx)·ey − (y − dy)·ex; else the general tiers.
+          const exact::LiftFlX X;
+          const Line& l = p.line;
+          const exact::FlX ex = X(l.e1.x()) - X(l.e0.x()), ey = X(l.e1.y()) - X(l.e0.y()), dx = ray_dx(E, X), dy = ray_dy(E, X);
+          const exact::FlX x = X(l.c1.x()) + X(l.c2.x()) - X(E.o1.x()) - X(E.o2.x()), y = X(l.c1.y()) + X(l.c2.y()) - X(E.o1.y()) - X(E.o2.y());
+          int den = exact::sign_ab_minus_cd(dx, ey, dy, ex);
+          if (den == 2) den = exact::exact_sign([&](auto L) { return line_den(l, E, L); });
+          int s0 = exact::sign_ab_minus_cd(x, ey, y, ex);
+          if (s0 == 2) s0 = exact::exact_sign([&](auto L) { return line_num(l, E, L); });
+          s0 *= den;
           if (s0 <= 0) return s0 == 0 ? 0 : -1;
-          const int s1 = den * exact::exact_sign([&](auto L) { return line_num(p.line, E, L) - line_den(p.line, E, L); });
+          int s1 = exact::sign_ab_minus_cd(x - dx, ey, y - dy, ex);
+          if (s1 == 2) s1 = exact::exact_sign([&](auto L) { return line_num(l, E, L) - line_den(l, E, L); });
+          s1 *= den;
           return s1 < 0 ? 2 : s1 == 0 ? 1 : -1;
         };
         const int wc = where(sc, pc, c.E);
