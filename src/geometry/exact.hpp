@@ -68,6 +68,33 @@ struct LiftFlX {
   FlX operator()(double x) const { return {x, true}; }
 };
 
+/// Exact sign of a·b − c·d for a, b, c, d taken as exact values (e.g. FlX sums known exact), or 2
+/// when undecided (a product overflowed, or its rounding error may be unrepresentable). Rounding
+/// is monotone, so fl(a·b) ≠ fl(c·d) orders the exact products; equal roundings p compare the
+/// products' exact errors (FMA): a·b − c·d = (p + e1) − (p + e2) = e1 − e2. For integer-like data
+/// this decides the frequent exact zeros that floating filters cannot, at the cost of one filter.
+inline int sign_ab_minus_cd(double a, double b, double c, double d) {
+  const double p = a * b, q = c * d;
+  if (!std::isfinite(p) || !std::isfinite(q)) return 2;
+  if (p != q) return p > q ? 1 : -1;
+  auto err = [](double x, double y, double r, double& e) {
+    if (x == 0 || y == 0) {
+      e = 0;  // r = x·y = 0 exactly
+      return true;
+    }
+    if (!(std::abs(r) >= 0x1p-900)) return false;  // every bit of x·y lies above 2⁻¹⁰⁰⁶ otherwise
+    e = std::fma(x, y, -r);
+    return true;
+  };
+  double e1, e2;
+  if (!err(a, b, p, e1) || !err(c, d, q, e2)) return 2;
+  return (e1 > e2) - (e1 < e2);
+}
+/// The same for a·b − c·d with FlX operands: 2 unless all four are exact.
+inline int sign_ab_minus_cd(FlX a, FlX b, FlX c, FlX d) {
+  return a.exact && b.exact && c.exact && d.exact ? sign_ab_minus_cd(a.v, b.v, c.v, d.v) : 2;
+}
+
 /// Double-double (hi + lo, |lo| <= ulp(hi)/2) with an absolute error bound e. Error bounds are
 /// taken relative to the operands' magnitudes (not the result's), so they stay valid under
 /// cancellation. Unit: 2^-100 covers the ~2^-104 rounding of each double-double operation with

@@ -113,12 +113,14 @@ struct Scratch {
   std::vector<EdgeVec> edges;
   std::vector<signed char> buf;
   std::vector<std::uint32_t> fits;
+  std::vector<char> keep;
   // Large pairs do not pin their memory: shrink after them.
   void trim() {
     if (buf.size() > (std::size_t(1) << 16)) {
       edges = {};
       buf = {};
       fits = {};
+      keep = {};
     }
   }
 };
@@ -216,6 +218,50 @@ std::vector<NfpCandidate> nfp_candidates(const Polygon& P, const Polygon& Q) {
       c.strict = turnP[p] > 0;
     }
     finish(c);
+  }
+  // Redundant candidates. An edge g = p0 → p1 of P antiparallel to an edge h = q0 → q1 of Q
+  // (cross sign 0 exactly, opposite directions) gives −h the direction of g and up to four
+  // candidates on one line, each from sum vertex to sum vertex: g − q0 = (p0,q0)→(p1,q0),
+  // p1 − h = (p1,q0)→(p1,q1), p0 − h = (p0,q0)→(p0,q1), g − q1 = (p0,q1)→(p1,q1). Each of the two
+  // paths from (p0,q0) to (p1,q1), through (p1,q0) or through (p0,q1), covers the whole segment
+  // between them, so when both candidates of one path are kept the other path's add no point of
+  // ∂O: they are marked redundant. They still split the other candidates (nfp_classify), so every
+  // kept candidate is split and classified as before, and the pieces cover the same points. A
+  // candidate kept for one group's path is never marked by another group (a straight vertex puts a
+  // candidate in two groups), so each redundant candidate stays covered by kept ones.
+  std::vector<char>& keep = scratch.keep;
+  keep.assign(cand.size(), 0);
+  auto sign_of = [&](std::size_t g, std::size_t h) { return table ? int(cross_table[g * m + h]) : edge_sign(g, h); };
+  // The candidate index of the (edge, vertex) pair in fits[from, to) (sorted), or npos.
+  constexpr std::size_t npos = ~std::size_t(0);
+  auto find = [&](std::size_t from, std::size_t to, std::uint32_t e, std::uint32_t v) {
+    std::size_t lo = from, hi = to;
+    while (lo < hi) {
+      const std::size_t mid = (lo + hi) / 2;
+      if (fits[2 * mid] < e || (fits[2 * mid] == e && fits[2 * mid + 1] < v)) lo = mid + 1;
+      else hi = mid;
+    }
+    return lo < to && fits[2 * lo] == e && fits[2 * lo + 1] == v ? lo : npos;
+  };
+  // Keeps path (x, y) when both are present and not redundant, and marks (u, w) redundant.
+  auto settle = [&](std::size_t x, std::size_t y, std::size_t u, std::size_t w) {
+    if (x == npos || y == npos || cand[x].redundant || cand[y].redundant) return false;
+    keep[x] = keep[y] = 1;
+    for (const std::size_t z : {u, w})
+      if (z != npos && !keep[z]) cand[z].redundant = true;
+    return true;
+  };
+  for (std::size_t a = 0; a < kp; ++a) {
+    const std::uint32_t g = fits[2 * a], h = fits[2 * a + 1];  // candidate g − q0 with q0 = h's start
+    if (sign_of(g, h) != 0) continue;
+    const std::uint32_t g1 = static_cast<std::uint32_t>(P.next(g)), h1 = static_cast<std::uint32_t>(Q.next(h));
+    // Parallel and both non-degenerate: opposite directions iff a non-zero coordinate of the edge
+    // vectors differs in sign (exact double comparisons).
+    const bool by_x = VP[g1].x() != VP[g].x();
+    const bool opposite = by_x ? (VP[g1].x() > VP[g].x()) != (VQ[h1].x() > VQ[h].x()) : (VP[g1].y() > VP[g].y()) != (VQ[h1].y() > VQ[h].y());
+    if (!opposite) continue;
+    const std::size_t b = find(0, kp, g, h1), c = find(kp, cand.size(), h, g), d = find(kp, cand.size(), h, g1);
+    if (!settle(a, d, b, c)) settle(c, b, a, d);
   }
   scratch.trim();
   return cand;

@@ -54,6 +54,7 @@
 // ~26 point tests per shirts pair, ~3 sums per test left undecided by the floating filters (13.5
 // with triangle pairs).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <unordered_map>
 
@@ -108,19 +109,32 @@ bool boxes_meet(const NfpCandidate& a, const NfpCandidate& b) {
 // differences, so the static-filter predicate applies.
 // A floating filter first (each direction a difference rounded once; 2⁻⁵⁰ of the products covers
 // those and the roundings of the cross product, 2⁻¹⁰⁰⁰ underflow), then the exact predicate.
+// Then, for directions that are exact differences (integer-like data, where exactly parallel
+// candidates are common), the signs of exact products (exact::sign_ab_minus_cd); else the exact
+// predicate.
 int parallel_sign(const Ray& a, const Ray& b) {
   const Vec2 da = a.a1 - a.b1, db = b.a1 - b.b1;
   const double p = da.x() * db.y(), q = da.y() * db.x(), cr = p - q;
   if (std::abs(cr) > (std::abs(p) + std::abs(q)) * 0x1p-50 + 0x1p-1000) return cr > 0 ? 1 : -1;
-  return predicates::cross_edges(a.b1, a.a1, b.b1, b.a1);
+  const exact::LiftFlX X;
+  const int s = exact::sign_ab_minus_cd(X(a.a1.x()) - X(a.b1.x()), X(b.a1.y()) - X(b.b1.y()), X(a.a1.y()) - X(a.b1.y()), X(b.a1.x()) - X(b.b1.x()));
+  return s != 2 ? s : predicates::cross_edges(a.b1, a.a1, b.b1, b.a1);
 }
 
-// Exact: b's origin on a's line.
+// Exact: b's origin on a's line. Asked of parallel candidates, which are mostly collinear (an
+// exact zero), so exact differences and products are tried before the general tiers.
 bool origin_on_line(const Ray& a, const Ray& b) {
+  auto cross = [&](auto L) {
+    auto x = L(b.o1.x()) + L(b.o2.x()) - L(a.o1.x()) - L(a.o2.x());
+    auto y = L(b.o1.y()) + L(b.o2.y()) - L(a.o1.y()) - L(a.o2.y());
+    return std::array{ray_dx(a, L), y, ray_dy(a, L), x};
+  };
+  const auto t = cross(exact::LiftFlX{});
+  const int s = exact::sign_ab_minus_cd(t[0], t[1], t[2], t[3]);
+  if (s != 2) return s == 0;
   return exact::exact_sign([&](auto L) {
-           auto x = L(b.o1.x()) + L(b.o2.x()) - L(a.o1.x()) - L(a.o2.x());
-           auto y = L(b.o1.y()) + L(b.o2.y()) - L(a.o1.y()) - L(a.o2.y());
-           return ray_dx(a, L) * y - ray_dy(a, L) * x;
+           const auto u = cross(L);
+           return u[0] * u[1] - u[2] * u[3];
          }) == 0;
 }
 
@@ -491,7 +505,18 @@ struct Classifier {
   // coordinate with A = B keeps A (the exact one lies between A* and B*, within an ulp of A).
   // A cut whose floating bound is too loose gets μ again from double-double numerator and
   // denominator (|μ − v| ≤ (bn + |v|·bd)/(|d| − bd) + u|v| for their bounds bn, bd).
-  static bool end_point(const NfpCandidate& c, const Split& s, Vec2& out) {
+  // A split known to be a sum vertex (an end of c, or a key) is that vertex rounded once (a
+  // difference of two input doubles): correctly rounded, and exact where a coordinate is 0, which
+  // no relative bound certifies.
+  bool end_point(const NfpCandidate& c, const Split& s, Vec2& out) const {
+    if (s.p.kind == Param::Zero || s.p.kind == Param::One) {
+      out = s.p.kind == Param::Zero ? c.A : c.B;
+      return true;
+    }
+    if (s.key != kNoKey) {
+      out = S.P.vertices()[s.key >> 32] - S.Q.vertices()[s.key & 0xffffffffu];
+      return true;
+    }
     constexpr double u = 0x1p-53;
     auto at = [&](double v, double err) {
       for (int k = 0; k < 2; ++k) {
@@ -537,13 +562,22 @@ struct Classifier {
       // (degree 2; X, A, B sums of two input doubles, dir = a1 − b1 exactly).
       if (std::abs(u) <= err || std::abs(u - len2) <= err) {
         auto along = [&](int end) {
-          return exact::exact_sign([&](auto L) {
+          auto terms = [&](auto L) {
             auto x = L(d.E.o1.x()) + L(d.E.o2.x()) - L(c.E.o1.x()) - L(c.E.o2.x());
             auto y = L(d.E.o1.y()) + L(d.E.o2.y()) - L(c.E.o1.y()) - L(c.E.o2.y());
             auto dx = L(c.E.a1.x()) - L(c.E.b1.x()), dy = L(c.E.a1.y()) - L(c.E.b1.y());
             if (k == 1) x = x + L(d.E.a1.x()) - L(d.E.b1.x()), y = y + L(d.E.a1.y()) - L(d.E.b1.y());
             if (end == 1) x = x - dx, y = y - dy;
-            return x * dx + y * dy;
+            return std::array{x, dx, -y, dy};  // x·dx − (−y)·dy
+          };
+          // Exact differences and products first (an end exactly at c's end is common), else the
+          // general tiers.
+          const auto t = terms(exact::LiftFlX{});
+          const int s = exact::sign_ab_minus_cd(t[0], t[1], t[2], t[3]);
+          if (s != 2) return s;
+          return exact::exact_sign([&](auto L) {
+            const auto u = terms(L);
+            return u[0] * u[1] - u[2] * u[3];
           });
         };
         if (along(0) <= 0 || along(1) >= 0) continue;
@@ -581,25 +615,41 @@ struct Classifier {
     };
     auto meet = [&](std::size_t i, std::size_t j) {
       const NfpCandidate &c = cands[i], &d = cands[j];
-      if (apart(c, d) || apart(d, c)) return;
+      if ((c.redundant && d.redundant) || apart(c, d) || apart(d, c)) return;
       const int turn = parallel_sign(c.E, d.E);  // sign of cross(dir c, dir d)
       const bool non_parallel = turn != 0;
       if (non_parallel && shared_end(c.E, d.E)) return;
+      // A redundant candidate lies in the union of kept candidates on its line (nfp_candidates), so
+      // where it crosses another candidate, a kept one crosses it too: only its collinear ends
+      // split others (one of them is no kept candidate's end).
+      if (non_parallel && (c.redundant || d.redundant)) return;
       if (non_parallel) {
         const Param pc{Param::Cut, d.line, 0}, pd{Param::Cut, c.line, 0};
         Split sc = split(pc, c.E), sd = split(pd, d.E);
         // Where the crossing lies on a closed segment: -1 off it, 0 / 1 at that end, 2 strictly
         // inside; certified by the error bounds when clear, else exactly (symbolic ends included).
-        auto where = [](const Split& x, const Param& p, const Ray& E) {
-          if (x.v - x.err > 0 && x.v + x.err < 1) return 2;
-          if (x.v + x.err < 0 || x.v - x.err > 1) return -1;
+        auto where = [](const Split& sx, const Param& p, const Ray& E) {
+          if (sx.v - sx.err > 0 && sx.v + sx.err < 1) return 2;
+          if (sx.v + sx.err < 0 || sx.v - sx.err > 1) return -1;
           // μ = num / den against 0 and 1 (symbolic when the line passes through an end vertex):
           // the signs of num and num − den, times den's.
           if (const int k = known_lambda(p.line, E); k >= 0) return k;
-          const int den = exact::exact_sign([&](auto L) { return line_den(p.line, E, L); });
-          const int s0 = den * exact::exact_sign([&](auto L) { return line_num(p.line, E, L); });
+          // Exact differences and products first (integer-like data: the crossing is often
+          // exactly at an end), with num = x·ey − y·ex, den = dx·ey − dy·ex and
+          // num − den = (x − dx)·ey − (y − dy)·ex; else the general tiers.
+          const exact::LiftFlX X;
+          const Line& l = p.line;
+          const exact::FlX ex = X(l.e1.x()) - X(l.e0.x()), ey = X(l.e1.y()) - X(l.e0.y()), dx = ray_dx(E, X), dy = ray_dy(E, X);
+          const exact::FlX x = X(l.c1.x()) + X(l.c2.x()) - X(E.o1.x()) - X(E.o2.x()), y = X(l.c1.y()) + X(l.c2.y()) - X(E.o1.y()) - X(E.o2.y());
+          int den = exact::sign_ab_minus_cd(dx, ey, dy, ex);
+          if (den == 2) den = exact::exact_sign([&](auto L) { return line_den(l, E, L); });
+          int s0 = exact::sign_ab_minus_cd(x, ey, y, ex);
+          if (s0 == 2) s0 = exact::exact_sign([&](auto L) { return line_num(l, E, L); });
+          s0 *= den;
           if (s0 <= 0) return s0 == 0 ? 0 : -1;
-          const int s1 = den * exact::exact_sign([&](auto L) { return line_num(p.line, E, L) - line_den(p.line, E, L); });
+          int s1 = exact::sign_ab_minus_cd(x - dx, ey, y - dy, ex);
+          if (s1 == 2) s1 = exact::exact_sign([&](auto L) { return line_num(l, E, L) - line_den(l, E, L); });
+          s1 *= den;
           return s1 < 0 ? 2 : s1 == 0 ? 1 : -1;
         };
         const int wc = where(sc, pc, c.E);
@@ -610,19 +660,19 @@ struct Classifier {
         // Crossing inside both, the other candidate strict: that candidate is an edge of an open
         // pair sum lying on its left (nfp_build.cpp step 1), so the side of the crossing on its
         // left is in O (see the header).
-        if (wc == 2) {
+        if (wc == 2 && !c.redundant) {
           if (wd < 2) sc.key = wd == 0 ? vertex_key(d.E.p0, d.E.q0) : vertex_key(d.E.p1, d.E.q1);
           else if (d.strict) sc.in_o = turn < 0 ? kAfter : kBefore;
           found.push_back({static_cast<std::uint32_t>(i), sc});
         }
-        if (wd == 2) {
+        if (wd == 2 && !d.redundant) {
           if (wc < 2) sd.key = wc == 0 ? vertex_key(c.E.p0, c.E.q0) : vertex_key(c.E.p1, c.E.q1);
           else if (c.strict) sd.in_o = turn > 0 ? kAfter : kBefore;
           found.push_back({static_cast<std::uint32_t>(j), sd});
         }
       } else if (origin_on_line(c.E, d.E)) {
-        if (!collinear_ends(c, d, static_cast<std::uint32_t>(i), found)) reference[i] = 1;
-        if (!collinear_ends(d, c, static_cast<std::uint32_t>(j), found)) reference[j] = 1;
+        if (!c.redundant && !collinear_ends(c, d, static_cast<std::uint32_t>(i), found)) reference[i] = 1;
+        if (!d.redundant && !collinear_ends(d, c, static_cast<std::uint32_t>(j), found)) reference[j] = 1;
       }
     };
     if (K <= 64) {
@@ -665,6 +715,7 @@ struct Classifier {
     std::vector<Split*> sp;  // pointers: a Split is large, and sorting moves them
     for (std::size_t k = 0; k < K; ++k) {
       const NfpCandidate& c = cands[k];
+      if (c.redundant) continue;  // its points are on kept candidates (nfp_candidates)
       if (reference[k]) {
         nfp_cut(S, c, out);
         continue;
@@ -766,6 +817,7 @@ void nfp_classify(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& ca
   // the two collinear edges, not the side of the angle: those few candidates are cut exactly.
   if (convex_shape(S.P) && convex_shape(S.Q)) {
     for (const NfpCandidate& c : cands) {
+      if (c.redundant) continue;
       if (c.strict) out.push_back(make_piece(c, kZero, kOne));
       else nfp_cut(S, c, out);
     }

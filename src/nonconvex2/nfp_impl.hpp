@@ -31,9 +31,14 @@ struct NfpCandidate {
   Line line;
   Vec2 A, B, lo, hi;
   bool strict = false;  // the candidate's vertex is strictly convex (not a straight vertex)
+  // Its points all lie on other, non-redundant candidates collinear with it (the second path of a
+  // pair of parallel edges, nfp_candidates): it only splits others, is never classified itself and
+  // gives no piece.
+  bool redundant = false;
 };
 
-/// The candidates of P ⊕ (−Q) (nfp_build.cpp): O(nm) exact orientation tests.
+/// The candidates of P ⊕ (−Q) (nfp_build.cpp): O(nm) exact orientation tests; the redundant ones
+/// marked.
 std::vector<NfpCandidate> nfp_candidates(const Polygon& P, const Polygon& Q);
 
 /// Appends the uncovered closed pieces of candidate c, in increasing μ, found by cutting c with

@@ -134,3 +134,60 @@ TEST(Exact, ExpansionGivesUpAndRationalsTakeOver) {
     EXPECT_EQ(r, mpq_class(mpq_class(a) + mpq_class(b) - mpq_class(c)).get_d());
   }
 }
+
+// sign_ab_minus_cd (exact products by rounding monotonicity and FMA errors) against GMP: random
+// doubles of every kind, products made equal on purpose (a·b = c·d exactly, and equal roundings
+// of different products: ties the filter alone cannot order), zeros, products near underflow and
+// overflow (where it must answer 2 or the true sign, never a wrong one); and the FlX overload
+// answers 2 unless all four operands are exact.
+TEST(Exact, SignOfExactProductDifference) {
+  std::mt19937_64 rng(8811);
+  auto sgn = [](const mpq_class& q) { return (q > 0) - (q < 0); };
+  auto check = [&](double a, double b, double c, double d) {
+    const int s = ex::sign_ab_minus_cd(a, b, c, d);
+    const int truth = sgn(mpq_class(a) * b - mpq_class(c) * d);
+    if (std::isfinite(a * b) && std::isfinite(c * d) && std::abs(a * b) >= 0x1p-900 && std::abs(c * d) >= 0x1p-900) {
+      EXPECT_NE(s, 2) << a << " " << b << " " << c << " " << d;
+    }
+    if (s != 2) {
+      EXPECT_EQ(s, truth) << a << " " << b << " " << c << " " << d;
+    }
+    return s;
+  };
+  int ties = 0, decided_ties = 0;
+  for (int it = 0; it < 200000; ++it) {
+    const double a = random_double(rng, int(rng() % 4)), b = random_double(rng, int(rng() % 4));
+    double c = random_double(rng, int(rng() % 4)), d = random_double(rng, int(rng() % 4));
+    switch (it % 5) {
+      case 0:  // the same product, factors swapped or scaled by powers of two
+        c = std::ldexp(b, 3), d = std::ldexp(a, -3);
+        break;
+      case 1:  // neighbours: equal roundings of different exact products are likely
+        c = std::nextafter(a, INFINITY), d = b;
+        break;
+      case 2:
+        c = a, d = std::nextafter(b, -INFINITY);
+        break;
+      default:
+        break;
+    }
+    if (a * b == c * d) {
+      ++ties;
+      decided_ties += check(a, b, c, d) != 2;
+    } else {
+      check(a, b, c, d);
+    }
+  }
+  EXPECT_GT(ties, 40000);
+  EXPECT_GT(decided_ties, ties * 9 / 10);
+  // Zeros, underflow and overflow.
+  check(0, 5, 0, -3);
+  check(0, 5, 1, -3);
+  EXPECT_EQ(check(0x1p-600, 0x1p-500, 0x1p-600, 0x1.0000000000001p-500), 2);  // errors below 2⁻¹⁰⁷⁴
+  EXPECT_EQ(check(0x1p600, 0x1p500, 1, 1), 2);                                // overflow
+  check(0x1p-500, 0x1p-500, 0, 1);
+  // FlX operands: inexact ones leave it undecided.
+  const ex::FlX e3{3, true}, e5{5, true}, i3{3, false};
+  EXPECT_EQ(ex::sign_ab_minus_cd(e3, e5, e5, e3), 0);
+  EXPECT_EQ(ex::sign_ab_minus_cd(e3, e5, e5, i3), 2);
+}
