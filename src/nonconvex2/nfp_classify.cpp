@@ -146,28 +146,57 @@ struct HalfPlanes {
   double smax;
 };
 
+struct PartPair {
+  Vec2 lo, hi;
+  std::uint32_t a, b;
+  std::uint32_t off;  // its half-planes: edges of part a (against part b's vertices), then of b
+  bool ready = false;
+  double smax = 0;  // bounds every coordinate of both parts
+};
+
+// The classifier's scratch, reused by the thread's next pair (a dozen vectors allocated and freed
+// per pair were ~3 % of the build on small pieces); released after a large pair (trim).
+struct Buffers {
+  std::vector<std::uint32_t> prevP, prevQ;
+  PairDepth2::Impl::DescentStack stack;
+  ConvexParts pp, pb;
+  std::vector<PartPair> flat;
+  std::vector<double> hdx, hdy, hc, he;
+  std::vector<signed char> vertex_table;
+  std::unordered_map<std::uint64_t, signed char> vertex_map;
+  std::vector<std::uint32_t> undecided, first, at;
+  std::vector<std::pair<std::uint32_t, Split>> found;  // (candidate, split parameter)
+  std::vector<char> reference, part, vert;
+  std::vector<Split*> grouped, sp;
+  void trim() {
+    const std::size_t big = std::size_t(1) << 14;
+    if (vertex_table.capacity() > big || found.capacity() > big || hdx.capacity() > big || !vertex_map.empty()) *this = Buffers();
+  }
+};
+
+Buffers& thread_buffers() {
+  thread_local Buffers b;
+  return b;
+}
+
 struct Classifier {
   const PairDepth2::Impl& S;
   const std::vector<NfpCandidate>& cands;
-  std::vector<std::uint32_t> prevP, prevQ;  // filled on first use
-  PairDepth2::Impl::DescentStack stack;
+  Buffers& buf = thread_buffers();
+  std::vector<std::uint32_t>&prevP = buf.prevP, &prevQ = buf.prevQ;  // filled on first use
+  PairDepth2::Impl::DescentStack& stack = buf.stack;
 
   // Convex parts of P and of −Q (convex_parts.hpp) and all their pairs with the sums' boxes, when
   // there are few (≤ 256): a point is then tested against the sums of parts (the same union O as
   // the sums of triangles), scanned flat; each pair's half-planes are computed on first use.
-  ConvexParts pp, pb;
-  struct PartPair {
-    Vec2 lo, hi;
-    std::uint32_t a, b;
-    std::uint32_t off;  // its half-planes: edges of part a (against part b's vertices), then of b
-    bool ready = false;
-    double smax = 0;  // bounds every coordinate of both parts
-  };
-  std::vector<PartPair> flat;
-  std::vector<double> hdx, hdy, hc, he;
+  ConvexParts &pp = buf.pp, &pb = buf.pb;
+  std::vector<PartPair>& flat = buf.flat;
+  std::vector<double>&hdx = buf.hdx, &hdy = buf.hdy, &hc = buf.hc, &he = buf.he;
 
   Classifier(const PairDepth2::Impl& s, const std::vector<NfpCandidate>& c) : S(s), cands(c) {
+    prevP.clear(), prevQ.clear(), flat.clear(), vertex_table.clear(), vertex_map.clear();
     if (S.tp.size() * S.tb.size() > 256 * 64) return;  // large shapes: the dual descent
+    for (ConvexParts* X : {&pp, &pb}) X->v.clear(), X->id.clear(), X->start.clear(), X->lo.clear(), X->hi.clear();
     convex_parts(S.tp, S.P.hole_count() == 0, pp);
     convex_parts(S.tb, S.Q.hole_count() == 0, pb);
     if (pp.size() * pb.size() > 256) return;
@@ -433,8 +462,8 @@ struct Classifier {
   // Exact: the point at parameter p (value v to a few ulps) of candidate c lies in O. Sum
   // vertices (the ends of most parts) are looked up once: each ends two or more candidates.
   // (A table over all (P, Q) vertex pairs when small, else a hash map.)
-  std::vector<signed char> vertex_table;
-  std::unordered_map<std::uint64_t, signed char> vertex_map;
+  std::vector<signed char>& vertex_table = buf.vertex_table;
+  std::unordered_map<std::uint64_t, signed char>& vertex_map = buf.vertex_map;
   // The known coverage of sum vertex `key`: -1 unknown, 0 not in O, 1 in O.
   signed char& vertex_state(std::uint64_t key) {
     if (!vertex_table.empty()) return vertex_table[(key >> 32) * S.Q.size() + (key & 0xffffffffu)];
@@ -460,7 +489,7 @@ struct Classifier {
   // ones (most have the point on their boundary, as the point lies on candidates, and are not
   // needed when another sum contains it). Large shapes: the triangle pairs by the dual descent,
   // each decided exactly at once (many sums per point; stops at the first that holds it).
-  std::vector<std::uint32_t> undecided;
+  std::vector<std::uint32_t>& undecided = buf.undecided;
   bool covered_point(const NfpCandidate& c, const Param& p, const Split& at) {
     // The point to within tol: A and B within a few ulps of the exact ends, v within err of μ.
     const Vec2 m = c.A + at.v * (c.B - c.A);
@@ -594,9 +623,11 @@ struct Classifier {
 
   void run(std::vector<NfpPiece>& out) {
     const std::size_t K = cands.size();
-    std::vector<std::pair<std::uint32_t, Split>> found;  // (candidate, split parameter)
+    auto& found = buf.found;
+    found.clear();
     found.reserve(4 * K);
-    std::vector<char> reference(K, 0);
+    auto& reference = buf.reference;
+    reference.assign(K, 0);
     // Floating filter: the ends of y strictly on one side of x's line, by a margin above the
     // roundings (A, B within 2⁻⁵³ relative of the exact ends; the direction exact differences
     // rounded once), so the closed segments cannot meet.
@@ -703,16 +734,19 @@ struct Classifier {
     }
 
     // The split parameters grouped by candidate (counting sort).
-    std::vector<std::uint32_t> first(K + 1, 0);
+    auto& first = buf.first;
+    first.assign(K + 1, 0);
     for (const auto& f : found) ++first[f.first + 1];
     for (std::size_t k = 0; k < K; ++k) first[k + 1] += first[k];
-    std::vector<Split*> grouped(found.size());
+    auto& grouped = buf.grouped;
+    grouped.resize(found.size());
     {
-      std::vector<std::uint32_t> at(first.begin(), first.end() - 1);
+      auto& at = buf.at;
+      at.assign(first.begin(), first.end() - 1);
       for (auto& f : found) grouped[at[f.first]++] = &f.second;
     }
-    std::vector<char> part, vert;
-    std::vector<Split*> sp;  // pointers: a Split is large, and sorting moves them
+    auto &part = buf.part, &vert = buf.vert;
+    auto& sp = buf.sp;  // pointers: a Split is large, and sorting moves them
     for (std::size_t k = 0; k < K; ++k) {
       const NfpCandidate& c = cands[k];
       if (c.redundant) continue;  // its points are on kept candidates (nfp_candidates)
@@ -824,6 +858,7 @@ void nfp_classify(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& ca
     return;
   }
   Classifier(S, cands).run(out);
+  thread_buffers().trim();
 }
 
 }  // namespace pendepth::nonconvex2
