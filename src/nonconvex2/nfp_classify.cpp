@@ -157,7 +157,7 @@ struct PartPair {
 // The classifier's scratch, reused by the thread's next pair (a dozen vectors allocated and freed
 // per pair were ~3 % of the build on small pieces); released after a large pair (trim).
 struct Buffers {
-  std::vector<std::uint32_t> prevP, prevQ;
+  std::vector<std::uint32_t> prevP, prevQ, edge_part_p, edge_part_q;
   PairDepth2::Impl::DescentStack stack;
   ConvexParts pp, pb;
   std::vector<PartPair> flat;
@@ -192,9 +192,16 @@ struct Classifier {
   ConvexParts &pp = buf.pp, &pb = buf.pb;
   std::vector<PartPair>& flat = buf.flat;
   std::vector<double>&hdx = buf.hdx, &hdy = buf.hdy, &hc = buf.hc, &he = buf.he;
+  // The part holding each boundary edge g → next(g) of P (of −Q: −h → −next(h)); a boundary edge
+  // lies in exactly one triangle, hence one part.
+  std::vector<std::uint32_t>&edge_part_p = buf.edge_part_p, &edge_part_q = buf.edge_part_q;
+  // The coverage of sum vertices (vertex_state): a table over all (P, Q) vertex pairs when small.
+  std::size_t qn = S.Q.size();
+  bool small_table = std::uint64_t(S.P.size()) * S.Q.size() <= (std::uint64_t(1) << 20);
 
   Classifier(const PairDepth2::Impl& s, const std::vector<NfpCandidate>& c) : S(s), cands(c) {
-    prevP.clear(), prevQ.clear(), flat.clear(), vertex_table.clear(), vertex_map.clear();
+    prevP.clear(), prevQ.clear(), flat.clear(), vertex_map.clear();
+    if (small_table) vertex_table.assign(S.P.size() * qn, -1);
     if (S.tp.size() * S.tb.size() > 256 * 64) return;  // large shapes: the dual descent
     for (ConvexParts* X : {&pp, &pb}) X->v.clear(), X->id.clear(), X->start.clear(), X->lo.clear(), X->hi.clear();
     convex_parts(S.tp, S.P.hole_count() == 0, pp);
@@ -210,6 +217,16 @@ struct Classifier {
         off += (pp.start[a + 1] - pp.start[a]) + (pb.start[b + 1] - pb.start[b]);
       }
     hdx.resize(off), hdy.resize(off), hc.resize(off), he.resize(off);
+    auto edge_parts = [](const ConvexParts& X, const Polygon& shape, std::vector<std::uint32_t>& out) {
+      out.assign(shape.size(), ~std::uint32_t(0));
+      for (std::uint32_t k = 0; k < X.size(); ++k) {
+        const std::uint32_t s = X.start[k], n = X.start[k + 1] - s;
+        for (std::uint32_t i = 0; i < n; ++i)
+          if (shape.next(X.id[s + i]) == X.id[s + (i + 1) % n]) out[X.id[s + i]] = k;
+      }
+    };
+    edge_parts(pp, S.P, edge_part_p);
+    edge_parts(pb, S.Q, edge_part_q);
   }
 
   // Half-planes of A ⊕ B for convex A, B: for each edge d of one part from x0, m is inside iff
@@ -305,19 +322,13 @@ struct Classifier {
   }
   // Symbolic: c's line is an edge line of A ⊕ B (own_edge below, for parts).
   bool own_edge_part(const PartPair& f, const Ray& E) const {
-    auto has_edge = [](const ConvexParts& X, std::uint32_t k, std::uint32_t a, std::uint32_t b) {
-      const std::uint32_t s = X.start[k], n = X.start[k + 1] - s;
-      for (std::uint32_t i = 0; i < n; ++i)
-        if (X.id[s + i] == a && X.id[s + (i + 1) % n] == b) return true;
-      return false;
-    };
     auto has_vertex = [](const ConvexParts& X, std::uint32_t k, std::uint32_t a) {
       for (std::uint32_t i = X.start[k]; i < X.start[k + 1]; ++i)
         if (X.id[i] == a) return true;
       return false;
     };
-    if (E.q0 == E.q1) return has_edge(pp, f.a, E.p0, E.p1) && has_vertex(pb, f.b, E.q0);
-    return has_edge(pb, f.b, E.q0, E.q1) && has_vertex(pp, f.a, E.p0);
+    if (E.q0 == E.q1) return f.a == edge_part_p[E.p0] && has_vertex(pb, f.b, E.q0);  // P's edge p0 → p1 = next(p0)
+    return f.b == edge_part_q[E.q0] && has_vertex(pp, f.a, E.p0);                    // −Q's edge −q0 → −q1, q1 = next(q0)
   }
 
   // A line through the sum vertex (p, q) not parallel to `avoid`: an input edge at p translated
@@ -466,12 +477,7 @@ struct Classifier {
   std::unordered_map<std::uint64_t, signed char>& vertex_map = buf.vertex_map;
   // The known coverage of sum vertex `key`: -1 unknown, 0 not in O, 1 in O.
   signed char& vertex_state(std::uint64_t key) {
-    if (!vertex_table.empty()) return vertex_table[(key >> 32) * S.Q.size() + (key & 0xffffffffu)];
-    const std::uint64_t cells = std::uint64_t(S.P.size()) * S.Q.size();
-    if (cells <= (std::uint64_t(1) << 20)) {
-      vertex_table.assign(cells, -1);
-      return vertex_table[(key >> 32) * S.Q.size() + (key & 0xffffffffu)];
-    }
+    if (small_table) return vertex_table[(key >> 32) * qn + (key & 0xffffffffu)];
     return vertex_map.try_emplace(key, -1).first->second;
   }
   bool covered(const NfpCandidate& c, const Split& at) {
