@@ -146,28 +146,64 @@ struct HalfPlanes {
   double smax;
 };
 
+struct PartPair {
+  Vec2 lo, hi;
+  std::uint32_t a, b;
+  std::uint32_t off;  // its half-planes: edges of part a (against part b's vertices), then of b
+  bool ready = false;
+  double smax = 0;  // bounds every coordinate of both parts
+};
+
+// The classifier's scratch, reused by the thread's next pair (a dozen vectors allocated and freed
+// per pair were ~3 % of the build on small pieces); released after a large pair (trim).
+struct Buffers {
+  std::vector<std::uint32_t> prevP, prevQ, edge_part_p, edge_part_q;
+  PairDepth2::Impl::DescentStack stack;
+  ConvexParts pp, pb;
+  std::vector<PartPair> flat;
+  std::vector<double> hdx, hdy, hc, he;
+  std::vector<signed char> vertex_table;
+  std::unordered_map<std::uint64_t, signed char> vertex_map;
+  std::vector<std::uint32_t> undecided, first, at;
+  std::vector<std::pair<std::uint32_t, Split>> found;  // (candidate, split parameter)
+  std::vector<char> reference, part, vert;
+  std::vector<Split*> grouped, sp;
+  void trim() {
+    const std::size_t big = std::size_t(1) << 14;
+    if (vertex_table.capacity() > big || found.capacity() > big || hdx.capacity() > big || !vertex_map.empty()) *this = Buffers();
+  }
+};
+
+Buffers& thread_buffers() {
+  thread_local Buffers b;
+  return b;
+}
+
 struct Classifier {
   const PairDepth2::Impl& S;
   const std::vector<NfpCandidate>& cands;
-  std::vector<std::uint32_t> prevP, prevQ;  // filled on first use
-  PairDepth2::Impl::DescentStack stack;
+  Buffers& buf = thread_buffers();
+  std::vector<std::uint32_t>&prevP = buf.prevP, &prevQ = buf.prevQ;  // filled on first use
+  PairDepth2::Impl::DescentStack& stack = buf.stack;
 
   // Convex parts of P and of −Q (convex_parts.hpp) and all their pairs with the sums' boxes, when
   // there are few (≤ 256): a point is then tested against the sums of parts (the same union O as
   // the sums of triangles), scanned flat; each pair's half-planes are computed on first use.
-  ConvexParts pp, pb;
-  struct PartPair {
-    Vec2 lo, hi;
-    std::uint32_t a, b;
-    std::uint32_t off;  // its half-planes: edges of part a (against part b's vertices), then of b
-    bool ready = false;
-    double smax = 0;  // bounds every coordinate of both parts
-  };
-  std::vector<PartPair> flat;
-  std::vector<double> hdx, hdy, hc, he;
+  ConvexParts &pp = buf.pp, &pb = buf.pb;
+  std::vector<PartPair>& flat = buf.flat;
+  std::vector<double>&hdx = buf.hdx, &hdy = buf.hdy, &hc = buf.hc, &he = buf.he;
+  // The part holding each boundary edge g → next(g) of P (of −Q: −h → −next(h)); a boundary edge
+  // lies in exactly one triangle, hence one part.
+  std::vector<std::uint32_t>&edge_part_p = buf.edge_part_p, &edge_part_q = buf.edge_part_q;
+  // The coverage of sum vertices (vertex_state): a table over all (P, Q) vertex pairs when small.
+  std::size_t qn = S.Q.size();
+  bool small_table = std::uint64_t(S.P.size()) * S.Q.size() <= (std::uint64_t(1) << 20);
 
   Classifier(const PairDepth2::Impl& s, const std::vector<NfpCandidate>& c) : S(s), cands(c) {
+    prevP.clear(), prevQ.clear(), flat.clear(), vertex_map.clear();
+    if (small_table) vertex_table.assign(S.P.size() * qn, -1);
     if (S.tp.size() * S.tb.size() > 256 * 64) return;  // large shapes: the dual descent
+    for (ConvexParts* X : {&pp, &pb}) X->v.clear(), X->id.clear(), X->start.clear(), X->lo.clear(), X->hi.clear();
     convex_parts(S.tp, S.P.hole_count() == 0, pp);
     convex_parts(S.tb, S.Q.hole_count() == 0, pb);
     if (pp.size() * pb.size() > 256) return;
@@ -181,6 +217,16 @@ struct Classifier {
         off += (pp.start[a + 1] - pp.start[a]) + (pb.start[b + 1] - pb.start[b]);
       }
     hdx.resize(off), hdy.resize(off), hc.resize(off), he.resize(off);
+    auto edge_parts = [](const ConvexParts& X, const Polygon& shape, std::vector<std::uint32_t>& out) {
+      out.assign(shape.size(), ~std::uint32_t(0));
+      for (std::uint32_t k = 0; k < X.size(); ++k) {
+        const std::uint32_t s = X.start[k], n = X.start[k + 1] - s;
+        for (std::uint32_t i = 0; i < n; ++i)
+          if (shape.next(X.id[s + i]) == X.id[s + (i + 1) % n]) out[X.id[s + i]] = k;
+      }
+    };
+    edge_parts(pp, S.P, edge_part_p);
+    edge_parts(pb, S.Q, edge_part_q);
   }
 
   // Half-planes of A ⊕ B for convex A, B: for each edge d of one part from x0, m is inside iff
@@ -276,19 +322,13 @@ struct Classifier {
   }
   // Symbolic: c's line is an edge line of A ⊕ B (own_edge below, for parts).
   bool own_edge_part(const PartPair& f, const Ray& E) const {
-    auto has_edge = [](const ConvexParts& X, std::uint32_t k, std::uint32_t a, std::uint32_t b) {
-      const std::uint32_t s = X.start[k], n = X.start[k + 1] - s;
-      for (std::uint32_t i = 0; i < n; ++i)
-        if (X.id[s + i] == a && X.id[s + (i + 1) % n] == b) return true;
-      return false;
-    };
     auto has_vertex = [](const ConvexParts& X, std::uint32_t k, std::uint32_t a) {
       for (std::uint32_t i = X.start[k]; i < X.start[k + 1]; ++i)
         if (X.id[i] == a) return true;
       return false;
     };
-    if (E.q0 == E.q1) return has_edge(pp, f.a, E.p0, E.p1) && has_vertex(pb, f.b, E.q0);
-    return has_edge(pb, f.b, E.q0, E.q1) && has_vertex(pp, f.a, E.p0);
+    if (E.q0 == E.q1) return f.a == edge_part_p[E.p0] && has_vertex(pb, f.b, E.q0);  // P's edge p0 → p1 = next(p0)
+    return f.b == edge_part_q[E.q0] && has_vertex(pp, f.a, E.p0);                    // −Q's edge −q0 → −q1, q1 = next(q0)
   }
 
   // A line through the sum vertex (p, q) not parallel to `avoid`: an input edge at p translated
@@ -433,16 +473,11 @@ struct Classifier {
   // Exact: the point at parameter p (value v to a few ulps) of candidate c lies in O. Sum
   // vertices (the ends of most parts) are looked up once: each ends two or more candidates.
   // (A table over all (P, Q) vertex pairs when small, else a hash map.)
-  std::vector<signed char> vertex_table;
-  std::unordered_map<std::uint64_t, signed char> vertex_map;
+  std::vector<signed char>& vertex_table = buf.vertex_table;
+  std::unordered_map<std::uint64_t, signed char>& vertex_map = buf.vertex_map;
   // The known coverage of sum vertex `key`: -1 unknown, 0 not in O, 1 in O.
   signed char& vertex_state(std::uint64_t key) {
-    if (!vertex_table.empty()) return vertex_table[(key >> 32) * S.Q.size() + (key & 0xffffffffu)];
-    const std::uint64_t cells = std::uint64_t(S.P.size()) * S.Q.size();
-    if (cells <= (std::uint64_t(1) << 20)) {
-      vertex_table.assign(cells, -1);
-      return vertex_table[(key >> 32) * S.Q.size() + (key & 0xffffffffu)];
-    }
+    if (small_table) return vertex_table[(key >> 32) * qn + (key & 0xffffffffu)];
     return vertex_map.try_emplace(key, -1).first->second;
   }
   bool covered(const NfpCandidate& c, const Split& at) {
@@ -460,7 +495,7 @@ struct Classifier {
   // ones (most have the point on their boundary, as the point lies on candidates, and are not
   // needed when another sum contains it). Large shapes: the triangle pairs by the dual descent,
   // each decided exactly at once (many sums per point; stops at the first that holds it).
-  std::vector<std::uint32_t> undecided;
+  std::vector<std::uint32_t>& undecided = buf.undecided;
   bool covered_point(const NfpCandidate& c, const Param& p, const Split& at) {
     // The point to within tol: A and B within a few ulps of the exact ends, v within err of μ.
     const Vec2 m = c.A + at.v * (c.B - c.A);
@@ -594,9 +629,11 @@ struct Classifier {
 
   void run(std::vector<NfpPiece>& out) {
     const std::size_t K = cands.size();
-    std::vector<std::pair<std::uint32_t, Split>> found;  // (candidate, split parameter)
+    auto& found = buf.found;
+    found.clear();
     found.reserve(4 * K);
-    std::vector<char> reference(K, 0);
+    auto& reference = buf.reference;
+    reference.assign(K, 0);
     // Floating filter: the ends of y strictly on one side of x's line, by a margin above the
     // roundings (A, B within 2⁻⁵³ relative of the exact ends; the direction exact differences
     // rounded once), so the closed segments cannot meet.
@@ -703,16 +740,19 @@ struct Classifier {
     }
 
     // The split parameters grouped by candidate (counting sort).
-    std::vector<std::uint32_t> first(K + 1, 0);
+    auto& first = buf.first;
+    first.assign(K + 1, 0);
     for (const auto& f : found) ++first[f.first + 1];
     for (std::size_t k = 0; k < K; ++k) first[k + 1] += first[k];
-    std::vector<Split*> grouped(found.size());
+    auto& grouped = buf.grouped;
+    grouped.resize(found.size());
     {
-      std::vector<std::uint32_t> at(first.begin(), first.end() - 1);
+      auto& at = buf.at;
+      at.assign(first.begin(), first.end() - 1);
       for (auto& f : found) grouped[at[f.first]++] = &f.second;
     }
-    std::vector<char> part, vert;
-    std::vector<Split*> sp;  // pointers: a Split is large, and sorting moves them
+    auto &part = buf.part, &vert = buf.vert;
+    auto& sp = buf.sp;  // pointers: a Split is large, and sorting moves them
     for (std::size_t k = 0; k < K; ++k) {
       const NfpCandidate& c = cands[k];
       if (c.redundant) continue;  // its points are on kept candidates (nfp_candidates)
@@ -810,6 +850,9 @@ bool convex_shape(const Polygon& S) {
 }
 
 void nfp_classify(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& cands, std::vector<NfpPiece>& out) {
+  // Mostly one piece per kept candidate or fewer: room for that at once (a piece is a large
+  // record; growing the vector by doubling copied each several times).
+  out.reserve(out.size() + cands.size());
   // Two convex shapes: a candidate at a strictly convex vertex is a whole edge of the convex sum
   // P ⊕ (−Q) (the vertex's angle, hence the whole convex shape, lies on the closed outer side of
   // the edge: the vertex is extreme against its outer normal), so nothing covers it and its piece
@@ -824,6 +867,7 @@ void nfp_classify(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& ca
     return;
   }
   Classifier(S, cands).run(out);
+  thread_buffers().trim();
 }
 
 }  // namespace pendepth::nonconvex2
