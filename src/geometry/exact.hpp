@@ -295,12 +295,10 @@ inline int certified_sign(Fl r) {
   return 2;
 }
 
+/// The tiers of exact_sign after the floating and exact-double ones: double-double, expansions,
+/// rationals.
 template <class F>
-int exact_sign(F&& f) {
-  int s = certified_sign(f(LiftFl{}));
-  if (s != 2) return s;
-  FlX x = f(LiftFlX{});
-  if (x.exact) return (x.v > 0) - (x.v < 0);
+int exact_sign_beyond_flx(F&& f) {
   DD d = f(LiftDD{});
   if (dd_finite(d)) {
     double b = safe_bound(d.e);
@@ -311,6 +309,31 @@ int exact_sign(F&& f) {
   if (e.ok) return ex_sign(e);
   Rat q = f(LiftQ{});
   return sgn(q.v);
+}
+
+/// Exact sign of a polynomial in input doubles, written once as a generic lambda over a lift:
+/// a floating value with a running error bound, then exact doubles, double-double, expansions,
+/// rationals — each only when the previous cannot decide.
+template <class F>
+int exact_sign(F&& f) {
+  int s = certified_sign(f(LiftFl{}));
+  if (s != 2) return s;
+  FlX x = f(LiftFlX{});
+  if (x.exact) return (x.v > 0) - (x.v < 0);
+  return exact_sign_beyond_flx(f);
+}
+
+/// exact_sign for a polynomial whose floating filter has just failed elsewhere (a point found on
+/// a line by a filter with a wider margin, say): the value is most likely an exact zero, which
+/// the Fl tier cannot certify, so the exact-double tier runs first (integer-like data ends
+/// there), then the usual tiers.
+template <class F>
+int exact_sign_tie_likely(F&& f) {
+  const FlX x = f(LiftFlX{});
+  if (x.exact) return (x.v > 0) - (x.v < 0);
+  const int s = certified_sign(f(LiftFl{}));
+  if (s != 2) return s;
+  return exact_sign_beyond_flx(f);
 }
 
 /// exact_sign with a caller-supplied fast filter: `approx` is the formula evaluated in plain

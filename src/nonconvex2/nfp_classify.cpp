@@ -268,22 +268,26 @@ struct Classifier {
     const double err = (std::abs(d.x()) + std::abs(d.y())) * slack;
     const double base = d.x() * m.y() - d.y() * m.x() - (d.x() * x0.y() - d.y() * x0.x());
     const double cr = d.x() * dirc.y() - d.y() * dirc.x();
-    const bool parallel = std::abs(cr) <= (std::abs(d.x()) + std::abs(d.y())) * (std::abs(dirc.x()) + std::abs(dirc.y())) * 0x1p-50 &&
-                          predicates::cross_edges(x0, x1, E.b1, E.a1) == 0;
+    bool parallel = std::abs(cr) <= (std::abs(d.x()) + std::abs(d.y())) * (std::abs(dirc.x()) + std::abs(dirc.y())) * 0x1p-50;
+    if (parallel) {  // exact: exact differences and products first, else the predicate
+      const exact::LiftFlX X;
+      const int s = exact::sign_ab_minus_cd(X(x1.x()) - X(x0.x()), X(E.a1.y()) - X(E.b1.y()), X(x1.y()) - X(x0.y()), X(E.a1.x()) - X(E.b1.x()));
+      parallel = (s != 2 ? s : predicates::cross_edges(x0, x1, E.b1, E.a1)) == 0;
+    }
     for (std::uint32_t j = Y.start[ky]; j < Y.start[ky + 1]; ++j) {
       const Vec2& y = Y.v[j];
       const double val = base - (d.x() * y.y() - d.y() * y.x());
       if (val < -err) continue;
       if (val > err) return true;
       if (parallel) {
-        if (exact::exact_sign([&](auto L) {
+        if (exact::exact_sign_tie_likely([&](auto L) {
               auto u = L(E.o1.x()) + L(E.o2.x()) - L(x0.x()) - L(y.x()), v = L(E.o1.y()) + L(E.o2.y()) - L(x0.y()) - L(y.y());
               return (L(x1.x()) - L(x0.x())) * v - (L(x1.y()) - L(x0.y())) * u;
             }) > 0)
           return true;
         continue;
       }
-      if (den * exact::exact_sign([&](auto L) {
+      if (den * exact::exact_sign_tie_likely([&](auto L) {
             auto [n, dd] = param_nd(p, E, kO, L);
             auto x = (L(E.o1.x()) + L(E.o2.x()) - L(x0.x()) - L(y.x())) * dd + n * ray_dx(E, L);
             auto yy = (L(E.o1.y()) + L(E.o2.y()) - L(x0.y()) - L(y.y())) * dd + n * ray_dy(E, L);
@@ -391,7 +395,7 @@ struct Classifier {
       return 0;
     for (int j = 0; j < 3; ++j) {
       const Vec2& y = Y.v[j];
-      if (exact::exact_sign([&](auto L) {
+      if (exact::exact_sign_tie_likely([&](auto L) {
             auto u = L(E.o1.x()) + L(E.o2.x()) - L(x0.x()) - L(y.x()), v = L(E.o1.y()) + L(E.o2.y()) - L(x0.y()) - L(y.y());
             return (L(x1.x()) - L(x0.x())) * v - (L(x1.y()) - L(x0.y())) * u;
           }) > 0)
@@ -459,7 +463,7 @@ struct Classifier {
     for (const Line& e : F.e)
       if (same_line(e, c.line) || (p.kind == Param::Cut && same_line(e, p.line))) return false;
     for (const Line& e : F.e) {
-      const int s = exact::exact_sign([&](auto L) {
+      const int s = exact::exact_sign_tie_likely([&](auto L) {
         auto [n, dd] = param_nd(p, E, kO, L);
         auto x = (L(E.o1.x()) + L(E.o2.x()) - L(e.c1.x()) - L(e.c2.x())) * dd + n * ray_dx(E, L);
         auto y = (L(E.o1.y()) + L(E.o2.y()) - L(e.c1.y()) - L(e.c2.y())) * dd + n * ray_dy(E, L);

@@ -191,3 +191,24 @@ TEST(Exact, SignOfExactProductDifference) {
   EXPECT_EQ(ex::sign_ab_minus_cd(e3, e5, e5, e3), 0);
   EXPECT_EQ(ex::sign_ab_minus_cd(e3, e5, e5, i3), 2);
 }
+
+// exact_sign_tie_likely (exact doubles first) agrees with GMP on cross products of differences of
+// random doubles of every kind: exact zeros (collinear by construction), near-zeros, inexact
+// decimal data that must fall through to the later tiers.
+TEST(Exact, TieLikelySignMatchesRationals) {
+  std::mt19937_64 rng(9090);
+  int zeros = 0;
+  for (int it = 0; it < 100000; ++it) {
+    const int kind = int(rng() % 4);
+    const double ax = random_double(rng, kind), ay = random_double(rng, kind), bx = random_double(rng, kind), by = random_double(rng, kind);
+    double cx = random_double(rng, kind), cy = random_double(rng, kind);
+    if (it % 3 == 0) cx = ax + 2 * (bx - ax), cy = ay + 2 * (by - ay);  // on the line when that rounds exactly
+    auto f = [&](auto L) { return (L(bx) - L(ax)) * (L(cy) - L(ay)) - (L(by) - L(ay)) * (L(cx) - L(ax)); };
+    const mpq_class q = (mpq_class(bx) - ax) * (mpq_class(cy) - ay) - (mpq_class(by) - ay) * (mpq_class(cx) - ax);
+    const int truth = (q > 0) - (q < 0);
+    zeros += truth == 0;
+    ASSERT_EQ(ex::exact_sign_tie_likely(f), truth) << it;
+    ASSERT_EQ(ex::exact_sign(f), truth) << it;
+  }
+  EXPECT_GT(zeros, 10000);
+}

@@ -84,4 +84,18 @@ inline std::vector<pendepth::Polygon> instance(const std::string& file) {
   return polys;
 }
 
+// A random rectilinear histogram: columns [i, i + 1] × [0, h_i], h_i in [1, hmax]; equal
+// neighbouring heights leave a straight vertex on the top (kept): many antiparallel edge pairs
+// between two such shapes, chains of collinear edges, exact fits of columns into gaps.
+inline pendepth::Polygon histogram(std::mt19937_64& rng, int k, int hmax) {
+  std::vector<double> h(k);
+  for (auto& x : h) x = 1 + double(rng() % hmax);
+  std::vector<pendepth::Vec2> r{{0, 0}, {double(k), 0}};
+  for (int i = k - 1; i >= 0; --i) {
+    r.emplace_back(i + 1, h[i]);
+    if (i == 0 || h[i - 1] != h[i]) r.emplace_back(i, h[i]);
+  }
+  return pendepth::Polygon::simple(r, "histogram");
+}
+
 }  // namespace nonconvex2_test

@@ -232,6 +232,18 @@ TEST(NoFitPolygon2, SmallGridPairsDegenerate) {
   }
 }
 
+// Rectilinear histograms (nfp_shapes.hpp) against each other and turned by 180°: antiparallel
+// edge pairs everywhere (redundant collinear candidates), straight vertices, exact fits.
+TEST(NoFitPolygon2, RectilinearHistograms) {
+  std::mt19937_64 rng(5151);
+  for (int it = 0; it < pendepth_test::scaled(40); ++it) {
+    const Polygon P = nonconvex2_test::histogram(rng, 2 + int(rng() % 6), 4), Q = nonconvex2_test::histogram(rng, 1 + int(rng() % 4), 3);
+    const Polygon R = nonconvex2_test::mapped(Q, [](const Vec2& p) { return Vec2(-p); });
+    check_all(P, Q, rng, 20, 3, "histograms " + std::to_string(it));
+    check_all(P, R, rng, 20, 3, "histogram / turned " + std::to_string(it));
+  }
+}
+
 TEST(NoFitPolygon2, LargeOffsets) {
   std::mt19937_64 rng(8086);
   for (int it = 0; it < pendepth_test::scaled(4); ++it) {

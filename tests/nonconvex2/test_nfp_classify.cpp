@@ -210,6 +210,21 @@ TEST(NfpClassify, LargePairsDescent) {
   }
 }
 
+// Rectilinear histograms against each other and against one turned by 180°: antiparallel edge
+// pairs everywhere (many redundant candidates), straight vertices putting a candidate in two
+// collinear groups, exact fits of columns into gaps.
+TEST(NfpClassify, RectilinearHistograms) {
+  std::mt19937_64 rng(5150);
+  for (int it = 0; it < pendepth_test::scaled(150); ++it) {
+    const Polygon P = nonconvex2_test::histogram(rng, 2 + int(rng() % 6), 4), Q = nonconvex2_test::histogram(rng, 1 + int(rng() % 4), 3);
+    const Polygon R = nonconvex2_test::mapped(Q, [](const Vec2& p) { return Vec2(-p); });
+    same_pieces(P, Q, "histograms " + std::to_string(it));
+    same_pieces(Q, P, "histograms swapped " + std::to_string(it));
+    same_pieces(P, R, "histogram / turned " + std::to_string(it));
+    same_pieces(nonconvex2_test::subdivided(P), R, "straight histogram / turned " + std::to_string(it));
+  }
+}
+
 TEST(NfpClassify, SmallGridPairsDegenerate) {
   std::mt19937_64 rng(4711);
   for (int it = 0; it < pendepth_test::scaled(400); ++it) {
