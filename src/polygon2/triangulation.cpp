@@ -171,9 +171,9 @@ std::vector<TriangleIds> cdt_triangulate(const Polygon& P) {
 
 }  // namespace
 
-std::vector<TriangleIds> triangulate(const Polygon& P, TriangulationPath* path) {
+void triangulate(const Polygon& P, std::vector<TriangleIds>& out, TriangulationPath* path) {
   TriangulationPath used = TriangulationPath::cdt;
-  std::vector<TriangleIds> out;
+  out.clear();
   if (P.hole_count() == 0 && P.size() <= kEarMax) {
     out.reserve(P.size() - 2);
     used = TriangulationPath::ear_clipping;
@@ -181,6 +181,11 @@ std::vector<TriangleIds> triangulate(const Polygon& P, TriangulationPath* path) 
   }
   if (used != TriangulationPath::ear_clipping) out = cdt_triangulate(P);
   if (path) *path = used;
+}
+
+std::vector<TriangleIds> triangulate(const Polygon& P, TriangulationPath* path) {
+  std::vector<TriangleIds> out;
+  triangulate(P, out, path);
   return out;
 }
 

@@ -11,7 +11,9 @@
 // lattice boundaries), reflex vertices exactly on would-be diagonals, thin spikes and notches,
 // random stars with decimal coordinates, random polygons on tiny integer grids (collinear runs,
 // subdivided), all nesting pieces, large N and holes; each hole-free one also under every cyclic
-// shift of its start vertex, reversed and mirrored. Pinned seeds.
+// shift of its start vertex, reversed and mirrored. Pinned seeds. Every triangulation is also
+// computed by the overload writing into a caller's vector (one vector reused by every call): the
+// same triangles and path.
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
@@ -65,6 +67,12 @@ PathCounts& counts() {
 void check_triangulation(const Polygon& P, const std::string& what) {
   TriangulationPath path{};
   const auto tris = pendepth::polygon2::triangulate(P, &path);
+  {  // The overload writing into a caller's vector, reused across every call (stale content).
+    static std::vector<pendepth::polygon2::TriangleIds> reused;
+    TriangulationPath path2{};
+    pendepth::polygon2::triangulate(P, reused, &path2);
+    ASSERT_TRUE(reused == tris && path2 == path) << what << ": the reusing overload differs";
+  }
   const bool small = P.hole_count() == 0 && P.size() <= kEarMax;
   (path == TriangulationPath::ear_clipping ? counts().ear : path == TriangulationPath::cdt ? counts().cdt : counts().fallback)++;
   EXPECT_NE(path, TriangulationPath::cdt_fallback) << what << ": ear clipping found no ear";
