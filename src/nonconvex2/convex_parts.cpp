@@ -4,12 +4,23 @@
 #include "nonconvex2/convex_parts.hpp"
 
 #include <algorithm>
+#include <cmath>
+
+#include "geometry/exact.hpp"
 
 namespace pendepth::nonconvex2 {
 
 namespace {
-// Exact turn at b on a → b → c: > 0 left, 0 straight, < 0 right.
-int turn(const Vec2& a, const Vec2& b, const Vec2& c) { return predicates::cross_edges(a, b, b, c); }
+// Exact turn at b on a → b → c: > 0 left, 0 straight, < 0 right. predicates::cross_edges with
+// its static filter inlined (the call and the generic filter cost more than the arithmetic);
+// what the filter cannot decide (straight turns of integer pieces) goes to the exact predicate.
+inline int turn(const Vec2& a, const Vec2& b, const Vec2& c) {
+  const double p1 = (b.x() - a.x()) * (c.y() - b.y()), p2 = (b.y() - a.y()) * (c.x() - b.x());
+  const double d = p1 - p2, bound = exact::kCrossBound * (std::abs(p1) + std::abs(p2)) + exact::kTiny;
+  if (d > bound) return 1;
+  if (d < -bound) return -1;
+  return predicates::cross_edges(a, b, b, c);
+}
 }  // namespace
 
 void convex_parts(const std::vector<Tri>& tris, bool merge, ConvexParts& out) {
