@@ -4,28 +4,50 @@
 #include "nonconvex2/convex_parts.hpp"
 
 #include <algorithm>
+#include <cmath>
+
+#include "geometry/exact.hpp"
 
 namespace pendepth::nonconvex2 {
 
 namespace {
-// Exact turn at b on a → b → c: > 0 left, 0 straight, < 0 right.
-int turn(const Vec2& a, const Vec2& b, const Vec2& c) { return predicates::cross_edges(a, b, b, c); }
+// Exact turn at b on a → b → c: > 0 left, 0 straight, < 0 right. predicates::cross_edges with
+// its static filter inlined (the call and the generic filter cost more than the arithmetic);
+// what the filter cannot decide (straight turns of integer pieces) goes to the exact predicate.
+inline int turn(const Vec2& a, const Vec2& b, const Vec2& c) {
+  const double p1 = (b.x() - a.x()) * (c.y() - b.y()), p2 = (b.y() - a.y()) * (c.x() - b.x());
+  const double d = p1 - p2, bound = exact::kCrossBound * (std::abs(p1) + std::abs(p2)) + exact::kTiny;
+  if (d > bound) return 1;
+  if (d < -bound) return -1;
+  return predicates::cross_edges(a, b, b, c);
+}
 }  // namespace
 
 void convex_parts(const std::vector<Tri>& tris, bool merge, ConvexParts& out) {
   const auto T = static_cast<std::uint32_t>(tris.size());
+  const std::uint32_t n3 = 3 * T;
   out.v.clear(), out.id.clear(), out.start.clear(), out.lo.clear(), out.hi.clear();
-  out.v.reserve(3 * T), out.id.reserve(3 * T), out.start.reserve(T + 1), out.lo.reserve(T), out.hi.reserve(T);
+  out.v.reserve(n3), out.id.reserve(n3), out.start.reserve(T + 1), out.lo.reserve(T), out.hi.reserve(T);
   auto V = [&](std::uint32_t s) -> const Vec2& { return tris[s / 3].v[s % 3]; };
-  auto I = [&](std::uint32_t s) { return tris[s / 3].id[s % 3]; };
-  std::vector<std::uint32_t> links(10 * T);  // one allocation: next, prev, alias (3T each), part (T)
-  std::uint32_t *next = links.data(), *prev = next + 3 * T, *alias = prev + 3 * T, *part = alias + 3 * T;
-  for (std::uint32_t s = 0; s < 3 * T; ++s) {
-    next[s] = s % 3 == 2 ? s - 2 : s + 1;
-    prev[s] = s % 3 == 0 ? s + 2 : s - 1;
-    alias[s] = s;
+  // Work arrays in one buffer kept by the thread (this runs once per shape and pair: fresh
+  // vectors were two allocations per call): per slot its vertex id and the id of the next vertex
+  // of its triangle (the triangle edge from the slot), the ring links next, prev, alias (3T
+  // each), the parts' union-find (T), then the per-vertex lists (nv + 3T, merge only).
+  std::uint32_t nv = 0;
+  if (merge)
+    for (const Tri& t : tris) nv = std::max({nv, t.id[0] + 1, t.id[1] + 1, t.id[2] + 1});
+  thread_local std::vector<std::uint32_t> work;
+  work.resize(std::size_t(5) * n3 + T + (merge ? nv + n3 : 0));
+  std::uint32_t *const id = work.data(), *const to = id + n3, *const next = to + n3, *const prev = next + n3,
+                       *const alias = prev + n3, *const part = alias + n3;
+  for (std::uint32_t t = 0, s = 0; t < T; ++t, s += 3) {
+    id[s] = tris[t].id[0], id[s + 1] = tris[t].id[1], id[s + 2] = tris[t].id[2];
+    to[s] = id[s + 1], to[s + 1] = id[s + 2], to[s + 2] = id[s];
+    next[s] = s + 1, next[s + 1] = s + 2, next[s + 2] = s;
+    prev[s] = s + 2, prev[s + 1] = s, prev[s + 2] = s + 1;
+    alias[s] = s, alias[s + 1] = s + 1, alias[s + 2] = s + 2;
+    part[t] = t;
   }
-  for (std::uint32_t t = 0; t < T; ++t) part[t] = t;
   auto live = [&](std::uint32_t s) {
     while (alias[s] != s) s = alias[s] = alias[alias[s]];
     return s;
@@ -37,18 +59,15 @@ void convex_parts(const std::vector<Tri>& tris, bool merge, ConvexParts& out) {
   if (merge && T > 1) {
     // Directed triangle edges a → b by their slot of a, listed per start vertex; a diagonal is an
     // edge whose reverse also occurs (a polygon edge belongs to one triangle).
-    auto tri_next = [](std::uint32_t s) { return s % 3 == 2 ? s - 2 : s + 1; };
-    std::uint32_t nv = 0;
-    for (std::uint32_t s = 0; s < 3 * T; ++s) nv = std::max(nv, I(s) + 1);
     constexpr std::uint32_t kNone = ~std::uint32_t(0);
-    std::vector<std::uint32_t> lists(nv + 3 * T, kNone);
-    std::uint32_t *head = lists.data(), *link = head + nv;
-    for (std::uint32_t s = 0; s < 3 * T; ++s) link[s] = head[I(s)], head[I(s)] = s;
-    for (std::uint32_t s = 0; s < 3 * T; ++s) {
-      const std::uint32_t a = I(s), b = I(tri_next(s));
+    std::uint32_t *const head = part + T, *const link = head + nv;
+    std::fill(head, head + nv, kNone);
+    for (std::uint32_t s = 0; s < n3; ++s) link[s] = head[id[s]], head[id[s]] = s;
+    for (std::uint32_t s = 0; s < n3; ++s) {
+      const std::uint32_t a = id[s], b = to[s];
       if (a > b) continue;  // each diagonal once
       std::uint32_t r = head[b];
-      while (r != kNone && I(tri_next(r)) != a) r = link[r];
+      while (r != kNone && to[r] != a) r = link[r];
       if (r == kNone) continue;  // a polygon edge
       const std::uint32_t X = find(s / 3), Y = find(r / 3);
       if (X == Y) continue;
@@ -70,16 +89,19 @@ void convex_parts(const std::vector<Tri>& tris, bool merge, ConvexParts& out) {
     Vec2 lo = V(s0), hi = lo;
     std::uint32_t s = s0;
     do {
-      out.v.push_back(V(s));
-      out.id.push_back(I(s));
-      lo = lo.cwiseMin(V(s));
-      hi = hi.cwiseMax(V(s));
+      const Vec2& x = V(s);
+      out.v.push_back(x);
+      out.id.push_back(id[s]);
+      lo = lo.cwiseMin(x);
+      hi = hi.cwiseMax(x);
       s = next[s];
     } while (s != s0);
     out.lo.push_back(lo);
     out.hi.push_back(hi);
   }
   out.start.push_back(std::uint32_t(out.v.size()));
+  // Large shapes do not pin their memory in the thread.
+  if (work.size() > (std::size_t(1) << 16)) work = {};
 }
 
 }  // namespace pendepth::nonconvex2

@@ -28,8 +28,15 @@ struct ConvexParts {
   std::vector<std::uint32_t> start;   // part k is [start[k], start[k + 1])
   std::vector<Vec2> lo, hi;           // boxes (exact: input coordinates)
   std::size_t size() const { return lo.size(); }
+  /// Frees the storage when it is large (after a large shape), so that an object kept for reuse
+  /// across calls (convex_parts reuses its capacity) does not pin a large shape's memory.
+  void trim() {
+    if (v.capacity() > (std::size_t(1) << 12)) *this = ConvexParts();
+  }
 };
 
+/// Fills `out` (its vectors' capacity reused: a caller that keeps one ConvexParts per thread and
+/// shape role, trim()med after use, allocates nothing per call on small shapes).
 void convex_parts(const std::vector<Tri>& tris, bool merge, ConvexParts& out);
 
 }  // namespace pendepth::nonconvex2

@@ -263,16 +263,35 @@ std::vector<NfpCandidate> nfp_candidates(const Polygon& P, const Polygon& Q) {
 
 }  // namespace nonconvex2
 
+namespace {
+// Largest piece count whose query tree is built in order. Measured (callgrind, 300 σ and σ_d
+// queries per pair on a sixth of the ordered nesting pairs and on 10/30/100-vertex stars, t = a
+// uniform point of P minus Q's vertex centroid, nearly all overlapping): σ and σ_d cost 5.1 % and
+// 6.1 % more instructions on the nesting pairs than with the median-split tree, 0.4 % on the
+// stars, while the tree costs ~4× fewer to build (~5 k instructions less per shirts pair, about
+// the cost of 5 queries); with no bound the stars' queries cost 7–10 % more (placements uniform
+// in P's box).
+constexpr std::size_t kInOrderTreeMax = 64;
+}  // namespace
+
 NoFitPolygon2::Impl::Impl(const Polygon& P, const Polygon& Q) : S(P, Q) {
   // Step 1: candidates.
   const std::vector<nonconvex2::NfpCandidate> cand = nonconvex2::nfp_candidates(P, Q);
   sz.candidates = cand.size();
-  // Step 2: their uncovered closed pieces.
+  // Step 2: their uncovered closed pieces. Usually about one per candidate (a candidate is cut
+  // into few pieces, many are covered whole): reserving that many saves the growth of a vector
+  // of large records (~2.5 reallocations per pair).
+  pieces.reserve(cand.size());
   nonconvex2::nfp_classify(S, cand, pieces);
   sz.pieces = pieces.size();
-  // Step 3: the query index over the piece boxes, read in place.
-  tree.build_boxes(
-      pieces.size(), [&](std::size_t k) -> const Vec2& { return pieces[k].blo; }, [&](std::size_t k) -> const Vec2& { return pieces[k].bhi; });
+  // Step 3: the query index over the piece boxes, read in place. Pieces come candidate by
+  // candidate in convolution order (P's edges, then Q's, each in ring order), so runs of
+  // consecutive pieces are mostly spatially close: for few pieces the linear in-order pairing
+  // makes a tree nearly as good for the queries as the sorting median split, built far cheaper.
+  const auto lo = [&](std::size_t k) -> const Vec2& { return pieces[k].blo; };
+  const auto hi = [&](std::size_t k) -> const Vec2& { return pieces[k].bhi; };
+  if (pieces.size() <= kInOrderTreeMax) tree.build_in_order(pieces.size(), lo, hi);
+  else tree.build_boxes(pieces.size(), lo, hi);
   nfp_export(*this);
 }
 

@@ -17,35 +17,38 @@ void require_finite(const Vec2& v, const char* what) {
   if (!std::isfinite(v.x()) || !std::isfinite(v.y())) throw InvalidInput(std::string(what) + " has a non-finite coordinate");
 }
 
-// Triangles of `shape` in normal form; `negate` stores −shape (for Q), keeping Q's vertex ids.
-std::vector<nonconvex2::Tri> normal_triangles(const Polygon& shape, bool negate) {
+// Triangles of `shape` in normal form into `out`; `negate` stores −shape (for Q), keeping Q's
+// vertex ids.
+void normal_triangles(const Polygon& shape, bool negate, std::vector<nonconvex2::Tri>& out) {
   const auto V = shape.vertices();
-  const std::vector<polygon2::TriangleIds> tris = polygon2::triangulate(shape);
-  std::vector<nonconvex2::Tri> out;
-  out.reserve(tris.size());
-  for (const auto& ids : tris) {
+  // The triangulation's id triples, kept by the thread: this runs twice per pair (the no-fit
+  // polygon builds one PairDepth2::Impl per pair), a fresh vector was an allocation each time.
+  thread_local std::vector<polygon2::TriangleIds> tris;
+  polygon2::triangulate(shape, tris);
+  out.resize(tris.size());
+  for (std::size_t t = 0; t < tris.size(); ++t) {
+    const auto& ids = tris[t];
     std::array<Vec2, 3> v;
     for (int k = 0; k < 3; ++k) v[k] = negate ? Vec2(-V[ids[k]]) : V[ids[k]];  // −x is exact; −U stays CCW
     int low = 0;
     for (int k = 1; k < 3; ++k)
       if (v[k].y() < v[low].y() || (v[k].y() == v[low].y() && v[k].x() < v[low].x())) low = k;
-    nonconvex2::Tri T;
-    for (int k = 0; k < 3; ++k) {
-      T.v[k] = v[(low + k) % 3];
-      T.id[k] = ids[(low + k) % 3];
+    nonconvex2::Tri& T = out[t];
+    for (int k = 0, i = low; k < 3; ++k, i = i == 2 ? 0 : i + 1) {
+      T.v[k] = v[i];
+      T.id[k] = ids[i];
     }
     T.lo = T.v[0].cwiseMin(T.v[1]).cwiseMin(T.v[2]);
     T.hi = T.v[0].cwiseMax(T.v[1]).cwiseMax(T.v[2]);
-    out.push_back(T);
   }
-  return out;
+  if (tris.capacity() > (std::size_t(1) << 12)) tris = {};  // large shapes do not pin their memory
 }
 
 }  // namespace
 
 PairDepth2::Impl::Impl(const Polygon& p, const Polygon& q) : P(p), Q(q) {
-  tp = normal_triangles(P, false);
-  tb = normal_triangles(Q, true);
+  normal_triangles(P, false, tp);
+  normal_triangles(Q, true, tb);
   hp.build(tp);
   hb.build(tb);
 }

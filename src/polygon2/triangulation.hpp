@@ -27,5 +27,8 @@ inline constexpr std::size_t kEarMax = 32;
 /// Otherwise: constrained Delaunay triangulation (CGAL, exact predicates), faces inside P
 /// selected by nesting depth, O(N log N). `path`, if given, receives the algorithm used.
 std::vector<TriangleIds> triangulate(const Polygon& P, TriangulationPath* path = nullptr);
+/// The same triangles written into `out` (replacing its content, reusing its capacity: a caller
+/// that keeps `out` allocates nothing per small polygon).
+void triangulate(const Polygon& P, std::vector<TriangleIds>& out, TriangulationPath* path = nullptr);
 
 }  // namespace pendepth::polygon2

@@ -5,12 +5,19 @@
 // essential (removing it makes a reflex vertex), and with holes (no merging) the parts are the
 // triangles. On P and on −Q (negated coordinates, as the no-fit polygon uses them). Inputs: random
 // stars (real and integer grid, straight vertices), combs, the nesting pieces; pinned seeds.
+// The output is also compared with the previous implementation (copied here as the reference:
+// per-vertex lists and ring links in fresh vectors, ids read through the triangles): the same
+// parts, vertex for vertex, computed into one ConvexParts reused by every call (its capacity and
+// stale content from the previous shape, trim()med after the large ones).
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdint>
 #include <map>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "nfp_shapes.hpp"
 #include "nonconvex2/convex_parts.hpp"
@@ -34,10 +41,86 @@ mpq_class area2(const std::vector<Vec2>& ring) {
 
 std::size_t g_parts = 0, g_triangles = 0;
 
+// The previous convex_parts, verbatim but for names: the reference for "same parts".
+void reference_parts(const std::vector<nc::Tri>& tris, bool merge, nc::ConvexParts& out) {
+  auto turn = [](const Vec2& a, const Vec2& b, const Vec2& c) { return pendepth::predicates::cross_edges(a, b, b, c); };
+  const auto T = static_cast<std::uint32_t>(tris.size());
+  out = nc::ConvexParts();
+  auto V = [&](std::uint32_t s) -> const Vec2& { return tris[s / 3].v[s % 3]; };
+  auto I = [&](std::uint32_t s) { return tris[s / 3].id[s % 3]; };
+  std::vector<std::uint32_t> links(10 * T);
+  std::uint32_t *next = links.data(), *prev = next + 3 * T, *alias = prev + 3 * T, *part = alias + 3 * T;
+  for (std::uint32_t s = 0; s < 3 * T; ++s) {
+    next[s] = s % 3 == 2 ? s - 2 : s + 1;
+    prev[s] = s % 3 == 0 ? s + 2 : s - 1;
+    alias[s] = s;
+  }
+  for (std::uint32_t t = 0; t < T; ++t) part[t] = t;
+  auto live = [&](std::uint32_t s) {
+    while (alias[s] != s) s = alias[s] = alias[alias[s]];
+    return s;
+  };
+  auto find = [&](std::uint32_t t) {
+    while (part[t] != t) t = part[t] = part[part[t]];
+    return t;
+  };
+  if (merge && T > 1) {
+    auto tri_next = [](std::uint32_t s) { return s % 3 == 2 ? s - 2 : s + 1; };
+    std::uint32_t nv = 0;
+    for (std::uint32_t s = 0; s < 3 * T; ++s) nv = std::max(nv, I(s) + 1);
+    constexpr std::uint32_t kNone = ~std::uint32_t(0);
+    std::vector<std::uint32_t> lists(nv + 3 * T, kNone);
+    std::uint32_t *head = lists.data(), *link = head + nv;
+    for (std::uint32_t s = 0; s < 3 * T; ++s) link[s] = head[I(s)], head[I(s)] = s;
+    for (std::uint32_t s = 0; s < 3 * T; ++s) {
+      const std::uint32_t a = I(s), b = I(tri_next(s));
+      if (a > b) continue;
+      std::uint32_t r = head[b];
+      while (r != kNone && I(tri_next(r)) != a) r = link[r];
+      if (r == kNone) continue;
+      const std::uint32_t X = find(s / 3), Y = find(r / 3);
+      if (X == Y) continue;
+      const std::uint32_t u = live(s), v = next[u], yb = live(r), ya = next[yb];
+      const std::uint32_t y_after_a = next[ya], y_before_b = prev[yb];
+      if (turn(V(prev[u]), V(u), V(y_after_a)) < 0 || turn(V(y_before_b), V(v), V(next[v])) < 0) continue;
+      next[u] = y_after_a, prev[y_after_a] = u;
+      next[y_before_b] = v, prev[v] = y_before_b;
+      alias[ya] = u, alias[yb] = v;
+      part[Y] = X;
+    }
+  }
+  for (std::uint32_t t = 0; t < T; ++t) {
+    if (find(t) != t) continue;
+    const std::uint32_t s0 = live(3 * t);
+    out.start.push_back(std::uint32_t(out.v.size()));
+    Vec2 lo = V(s0), hi = lo;
+    std::uint32_t s = s0;
+    do {
+      out.v.push_back(V(s));
+      out.id.push_back(I(s));
+      lo = lo.cwiseMin(V(s));
+      hi = hi.cwiseMax(V(s));
+      s = next[s];
+    } while (s != s0);
+    out.lo.push_back(lo);
+    out.hi.push_back(hi);
+  }
+  out.start.push_back(std::uint32_t(out.v.size()));
+}
+
+std::size_t g_same = 0;
+
 void check(const std::vector<nc::Tri>& tris, const Polygon& S, bool negated, const std::string& what) {
   const bool merge = S.hole_count() == 0;
-  nc::ConvexParts parts;
+  static nc::ConvexParts parts;  // reused by every call, like the builder's per-thread parts
   nc::convex_parts(tris, merge, parts);
+  {
+    nc::ConvexParts ref;
+    reference_parts(tris, merge, ref);
+    ASSERT_TRUE(parts.v == ref.v && parts.id == ref.id && parts.start == ref.start && parts.lo == ref.lo && parts.hi == ref.hi)
+        << what << ": not the previous implementation's parts";
+    ++g_same;
+  }
   ASSERT_EQ(parts.start.size(), parts.size() + 1) << what;
   ASSERT_GE(parts.size(), 1u) << what;
   if (!merge) ASSERT_EQ(parts.size(), tris.size()) << what;
@@ -82,6 +165,7 @@ void check(const std::vector<nc::Tri>& tris, const Polygon& S, bool negated, con
   }
   g_parts += parts.size();
   g_triangles += tris.size();
+  parts.trim();
 }
 
 void check_pair(const Polygon& P, const Polygon& Q, const std::string& what) {
@@ -101,6 +185,8 @@ TEST(ConvexParts, RandomShapes) {
                                   : nonconvex2_test::star(rng, 4 + int(rng() % 60), 50, 100, grid);
     const Polygon Q = nonconvex2_test::star(rng, 3 + int(rng() % 6), 1, 4, true);
     check_pair(P, Q, "random " + std::to_string(it));
+    // Once a large shape (the reused buffers grow past their trim thresholds), then small again.
+    if (it == 5) check_pair(nonconvex2_test::star(rng, 5000, 50, 100, false), Q, "large star");
   }
 }
 
@@ -114,5 +200,6 @@ TEST(ConvexParts, CombsAndNestingPieces) {
       check_pair(S, S, inst);
     }
   }
-  std::cout << "[convex parts] triangles " << g_triangles << ", parts " << g_parts << "\n";
+  std::cout << "[convex parts] triangles " << g_triangles << ", parts " << g_parts << ", " << g_same
+            << " decompositions identical to the reference\n";
 }

@@ -13,6 +13,9 @@
 // - BoxTree::build / build_boxes against the previous builder (index array, key table,
 //   nth_element, copied here as the reference): identical nodes, on random boxes with many ties;
 //   plus the hierarchy invariants (every node box is the exact union of its leaves' boxes).
+// - BoxTree::build_in_order (the piece tree of small no-fit polygons, a different tree): the
+//   invariants, every node reached once from the root, and its leaves left to right are the
+//   input order (so every subtree is a run of consecutive leaves), on reused trees.
 // Pinned seeds.
 #include <gmpxx.h>
 #include <gtest/gtest.h>
@@ -342,6 +345,48 @@ TEST(BoxTree, SameTreeAsReference) {
     ++trees;
   }
   std::cout << "[box tree] " << trees << " trees identical to the reference builder\n";
+}
+
+TEST(BoxTree, InOrderBuilder) {
+  std::mt19937_64 rng(4242);
+  nc::BoxTree got;
+  got.nodes.resize(5);  // a reused tree must be rebuilt from scratch
+  std::size_t trees = 0;
+  for (int it = 0; it < pendepth_test::scaled(2000); ++it) {
+    const std::size_t s = it < 70 ? std::size_t(it) : 1 + rng() % (it % 10 == 0 ? 1000 : 300);  // both sides of 256
+    const int span = 1 + int(rng() % (it % 3 == 0 ? 4 : 1000));
+    std::vector<nc::Tri> tris(s);
+    for (auto& t : tris) {
+      const Vec2 a(double(rng() % span), double(rng() % span)), b(double(rng() % span), double(rng() % span));
+      t.lo = a.cwiseMin(b);
+      t.hi = a.cwiseMax(b);
+    }
+    const std::string what = "in order " + std::to_string(it) + " (" + std::to_string(s) + ")";
+    got.build_in_order(
+        s, [&](std::size_t k) -> const Vec2& { return tris[k].lo; }, [&](std::size_t k) -> const Vec2& { return tris[k].hi; });
+    check_tree(got, tris, what);
+    if (s == 0) continue;
+    // Depth first from the root, left child first: every node once, leaves in input order.
+    std::vector<int> visits(got.nodes.size(), 0);
+    std::vector<std::int32_t> stack{0};
+    std::uint32_t expect = 0;
+    while (!stack.empty()) {
+      const std::int32_t k = stack.back();
+      stack.pop_back();
+      ASSERT_TRUE(k >= 0 && std::size_t(k) < got.nodes.size()) << what;
+      ASSERT_EQ(++visits[k], 1) << what << " node " << k << " reached twice";
+      const auto& N = got.nodes[k];
+      if (N.left < 0) {
+        ASSERT_EQ(N.tri, expect++) << what << ": leaves out of input order";
+        continue;
+      }
+      stack.push_back(N.right);
+      stack.push_back(N.left);
+    }
+    ASSERT_EQ(expect, s) << what;
+    ++trees;
+  }
+  std::cout << "[box tree] " << trees << " in-order trees checked\n";
 }
 
 }  // namespace

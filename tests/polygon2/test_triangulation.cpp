@@ -11,7 +11,10 @@
 // lattice boundaries), reflex vertices exactly on would-be diagonals, thin spikes and notches,
 // random stars with decimal coordinates, random polygons on tiny integer grids (collinear runs,
 // subdivided), all nesting pieces, large N and holes; each hole-free one also under every cyclic
-// shift of its start vertex, reversed and mirrored. Pinned seeds.
+// shift of its start vertex, reversed and mirrored. Pinned seeds. Every triangulation is also
+// computed by the overload writing into a caller's vector (one vector reused by every call): the
+// same triangles and path; and every ear-clipped one is compared with a reference ear clipping
+// (the algorithm as it stood, orientations in rationals): the same triangles in the same order.
 #include <gmpxx.h>
 #include <gtest/gtest.h>
 
@@ -54,6 +57,70 @@ int winding_q(const Polygon& P, const std::vector<QPoint>& Q, const QPoint& p) {
   return w;
 }
 
+// The ear clipping of src/polygon2/triangulation.cpp as it was before its orientation filter was
+// inlined, with every orientation decided here in rationals: the library must return exactly
+// these triangles (same ears, same order). Empty if no ear is found.
+std::vector<pendepth::polygon2::TriangleIds> reference_ear_clip(const Polygon& P, const std::vector<QPoint>& Q) {
+  const auto V = P.vertices();
+  const unsigned n = static_cast<unsigned>(P.size());
+  std::vector<unsigned> prv(n), nxt(n), reflex;
+  std::vector<bool> convex(n), ear(n);
+  std::vector<double> key(n);
+  for (unsigned i = 0; i < n; ++i) prv[i] = i == 0 ? n - 1 : i - 1, nxt[i] = i + 1 == n ? 0 : i + 1;
+  for (unsigned i = 0; i < n; ++i) {
+    convex[i] = orient_q(Q[prv[i]], Q[i], Q[nxt[i]]) > 0;
+    if (!convex[i]) reflex.push_back(i);
+  }
+  auto is_ear = [&](unsigned v) {
+    if (!convex[v]) return false;
+    const Vec2 lo = V[prv[v]].cwiseMin(V[v]).cwiseMin(V[nxt[v]]), hi = V[prv[v]].cwiseMax(V[v]).cwiseMax(V[nxt[v]]);
+    for (unsigned x : reflex) {
+      const Vec2& p = V[x];
+      if (p.x() < lo.x() || p.x() > hi.x() || p.y() < lo.y() || p.y() > hi.y() || x == prv[v] || x == nxt[v]) continue;
+      if (orient_q(Q[prv[v]], Q[v], Q[x]) >= 0 && orient_q(Q[v], Q[nxt[v]], Q[x]) >= 0 && orient_q(Q[nxt[v]], Q[prv[v]], Q[x]) >= 0)
+        return false;
+    }
+    return true;
+  };
+  auto refresh = [&](unsigned i) {
+    if (convex[i] || orient_q(Q[prv[i]], Q[i], Q[nxt[i]]) <= 0) return;
+    convex[i] = true;
+    for (std::size_t k = 0; k < reflex.size(); ++k)
+      if (reflex[k] == i) {
+        reflex[k] = reflex.back();
+        reflex.pop_back();
+        break;
+      }
+  };
+  auto update = [&](unsigned v) {
+    ear[v] = is_ear(v);
+    if (ear[v]) key[v] = (V[nxt[v]] - V[prv[v]]).squaredNorm();
+  };
+  for (unsigned i = 0; i < n; ++i) update(i);
+  std::vector<pendepth::polygon2::TriangleIds> out;
+  unsigned first = 0;
+  for (unsigned left = n; left > 3; --left) {
+    unsigned best = n;
+    for (unsigned k = 0, v = first; k < left; ++k, v = nxt[v])
+      if (ear[v] && (best == n || key[v] < key[best])) best = v;
+    if (best == n) return {};
+    const unsigned u = prv[best], w = nxt[best];
+    out.push_back({u, best, w});
+    nxt[u] = w;
+    prv[w] = u;
+    first = w;
+    refresh(u);
+    refresh(w);
+    update(u);
+    update(w);
+  }
+  if (orient_q(Q[prv[first]], Q[first], Q[nxt[first]]) <= 0) return {};
+  out.push_back({prv[first], first, nxt[first]});
+  return out;
+}
+
+std::size_t g_same_ears = 0;
+
 struct PathCounts {
   std::size_t ear = 0, fallback = 0, cdt = 0;
 };
@@ -65,6 +132,12 @@ PathCounts& counts() {
 void check_triangulation(const Polygon& P, const std::string& what) {
   TriangulationPath path{};
   const auto tris = pendepth::polygon2::triangulate(P, &path);
+  {  // The overload writing into a caller's vector, reused across every call (stale content).
+    static std::vector<pendepth::polygon2::TriangleIds> reused;
+    TriangulationPath path2{};
+    pendepth::polygon2::triangulate(P, reused, &path2);
+    ASSERT_TRUE(reused == tris && path2 == path) << what << ": the reusing overload differs";
+  }
   const bool small = P.hole_count() == 0 && P.size() <= kEarMax;
   (path == TriangulationPath::ear_clipping ? counts().ear : path == TriangulationPath::cdt ? counts().cdt : counts().fallback)++;
   EXPECT_NE(path, TriangulationPath::cdt_fallback) << what << ": ear clipping found no ear";
@@ -97,6 +170,10 @@ void check_triangulation(const Polygon& P, const std::string& what) {
     }
   }
   EXPECT_EQ(sum, area) << what;
+  if (path == TriangulationPath::ear_clipping) {
+    ASSERT_TRUE(tris == reference_ear_clip(P, Q)) << what << ": not the reference ear clipping's triangles";
+    ++g_same_ears;
+  }
 }
 
 // A hole-free ring, also under every cyclic shift of its first vertex (at most `shifts`, evenly
@@ -144,7 +221,7 @@ Ring valid_ring(Make&& make) {
 // polygons must have been ear-clipped, none may have fallen back to the CDT.
 void report(const char* test, std::size_t min_ear) {
   std::cout << "[ " << test << " ] ear clipping " << counts().ear << ", CDT " << counts().cdt << ", fallback "
-            << counts().fallback << "\n";
+            << counts().fallback << " (ear clippings identical to the reference so far " << g_same_ears << ")\n";
   EXPECT_GE(counts().ear, min_ear);
   EXPECT_EQ(counts().fallback, 0u);
 }
