@@ -171,6 +171,7 @@ struct Buffers {
   void trim() {
     const std::size_t big = std::size_t(1) << 14;
     if (vertex_table.capacity() > big || found.capacity() > big || hdx.capacity() > big || !vertex_map.empty()) *this = Buffers();
+    pp.trim(), pb.trim();
   }
 };
 
@@ -203,7 +204,6 @@ struct Classifier {
     prevP.clear(), prevQ.clear(), flat.clear(), vertex_map.clear();
     if (small_table) vertex_table.assign(S.P.size() * qn, -1);
     if (S.tp.size() * S.tb.size() > 256 * 64) return;  // large shapes: the dual descent
-    for (ConvexParts* X : {&pp, &pb}) X->v.clear(), X->id.clear(), X->start.clear(), X->lo.clear(), X->hi.clear();
     convex_parts(S.tp, S.P.hole_count() == 0, pp);
     convex_parts(S.tb, S.Q.hole_count() == 0, pb);
     if (pp.size() * pb.size() > 256) return;
