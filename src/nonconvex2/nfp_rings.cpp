@@ -69,6 +69,7 @@
 
 #include "geometry/exact.hpp"
 #include "nonconvex2/nfp_impl.hpp"
+#include "nonconvex2/nfp_rings.hpp"
 
 namespace pendepth {
 
@@ -186,6 +187,35 @@ void ensure_fx(End& v) {
   };
   auto integral = [&](const Vec2& p) { return integer(p.x()) && integer(p.y()); };
   const Line& c = v.raw->line;
+  // Small integers (|x| < 2^31, nesting data): the same polynomials in 128-bit integers, exact
+  // (|num| < 2^101), each value then an exact double or not one at all.
+  auto small = [](const Vec2& p) {
+    return std::abs(p.x()) < 0x1p31 && std::abs(p.y()) < 0x1p31 && p.x() == double(std::int64_t(p.x())) &&
+           p.y() == double(std::int64_t(p.y()));
+  };
+  if (v.kind != Param::Proj && v.kind != Param::Value && small(E.o1) && small(E.o2) && small(E.a1) && small(E.a2) && small(E.b1) &&
+      small(E.b2) && (v.kind != Param::Cut || (small(c.c1) && small(c.c2) && small(c.e0) && small(c.e1)))) {
+    __extension__ typedef __int128 I;  // GCC and Clang on 64-bit targets
+    auto i = [](double x) { return I(std::int64_t(x)); };
+    const I ox = i(E.o1.x()) + i(E.o2.x()), oy = i(E.o1.y()) + i(E.o2.y());
+    const I dx = i(E.a1.x()) + i(E.a2.x()) - i(E.b1.x()) - i(E.b2.x()), dy = i(E.a1.y()) + i(E.a2.y()) - i(E.b1.y()) - i(E.b2.y());
+    I n = v.kind == Param::One ? 1 : 0, d = 1;
+    if (v.kind == Param::Cut) {
+      const I lx = i(c.c1.x()) + i(c.c2.x()) - ox, ly = i(c.c1.y()) + i(c.c2.y()) - oy;
+      const I ex = i(c.e1.x()) - i(c.e0.x()), ey = i(c.e1.y()) - i(c.e0.y());
+      n = lx * ey - ly * ex;
+      d = dx * ey - dy * ex;
+    }
+    const I xn = ox * d + n * dx, yn = oy * d + n * dy;
+    // v as a double when exact (a 128-bit integer converts to the nearest double; exact iff it
+    // converts back to itself).
+    auto exact_double = [](I x, double& out) {
+      out = double(x);
+      return I(out) == x;
+    };
+    if (d != 0 && exact_double(xn, v.fxn) && exact_double(yn, v.fyn) && exact_double(d, v.fden)) v.fx = 1;
+    return;
+  }
   if (integral(E.o1) && integral(E.o2) && integral(E.a1) && integral(E.a2) && integral(E.b1) && integral(E.b2) &&
       (v.kind != Param::Cut || (integral(c.c1) && integral(c.c2) && integral(c.e0) && integral(c.e1)))) {
     const exact::LiftFlX X;
@@ -356,6 +386,7 @@ int sign_det(double a, double b, double c, double d) {
 // A piece of positive length: its ends (vertex ids), its ray and line, and the sign of its
 // direction along u (x, or y on a vertical line).
 struct Seg {
+  Seg() {}  // no zeroing: make_seg sets every member (segs.emplace_back() would value-initialise)
   int a, b;
   const Ray* E;
   const Line* edge;
@@ -377,6 +408,7 @@ void make_seg(Seg& s, const NfpPiece& pc, int ia, int ib) {
   const Ray& E = pc.E;
   const exact::LiftFl F;
   s.a = ia, s.b = ib, s.E = &E, s.edge = &pc.edge;
+  s.ex = s.ey = s.oxe = s.oye = 0;  // set below only when exact
   s.dexact = E.a2.x() == 0 && E.a2.y() == 0 && E.b2.x() == 0 && E.b2.y() == 0 && exact_diff(E.a1.x(), E.b1.x(), s.ex) &&
              exact_diff(E.a1.y(), E.b1.y(), s.ey);
   s.oexact = exact_diff(E.o1.x(), -E.o2.x(), s.oxe) && exact_diff(E.o1.y(), -E.o2.y(), s.oye);
@@ -611,7 +643,7 @@ struct Workspace {
   std::vector<int> id, rep, order, zero_points, stamp, pos, us, first, out, fill, ring_verts, ring_start, cuts;
   std::vector<Vec2> rv;
   std::vector<char> fixed, is_vertex, used;
-  std::vector<Seg> segs, sorted;
+  std::vector<Seg> segs;
   struct Edge {
     int a, b;
     std::size_t line;  // the group of its exact supporting line
@@ -632,15 +664,138 @@ struct Workspace {
     int v;
   };
   std::vector<VX> verts;
+  // The linked path: per vertex the piece leaving it and whether one enters; per ring its first
+  // piece and its chain in ring_chain[ring_at[k], ring_at[k + 1]).
+  std::vector<int> next_seg, ring_chain, ring_at, ring_first, ring_rank;
+  std::vector<char> has_in, through;
 };
+
+thread_local NfpExportPath last_path = NfpExportPath::General;
+
+// The linked path: when every vertex (of a piece of positive length) starts exactly one piece and
+// ends exactly one, no vertex lies on a piece's line inside its box other than its own ends, and no
+// two consecutive pieces of a chain run back along one line, the general path's elementary
+// segments are the pieces themselves and its linking has one choice at every vertex: the rings are
+// the cycles of "the piece leaving the end of this one". The general path takes its rings in the
+// order of their first edge (by line, then by position along it) and starts each at that edge;
+// here the same first edge is found by a scan of each cycle (O(N) line comparisons instead of the
+// O(N log N) sort). Collinear consecutive pieces (the same exact line, same direction) drop their
+// shared vertex, as the general path's pass-through. False, nothing decided, when the pieces are
+// not of this form (then the general path runs).
+bool export_linked(Workspace& W, const std::vector<End>& ends, const std::vector<Vec2>& rv, int nv) {
+  const std::vector<Seg>& segs = W.segs;
+  const std::size_t ns = segs.size();
+  if (ns < 3) return false;
+  std::vector<int>& next = W.next_seg;
+  next.assign(nv, -1);
+  std::vector<char>& has_in = W.has_in;
+  has_in.assign(nv, 0);
+  for (std::size_t i = 0; i < ns; ++i) {
+    const Seg& s = segs[i];
+    if (next[s.a] >= 0 || has_in[s.b]) return false;
+    next[s.a] = int(i);
+    has_in[s.b] = 1;
+  }
+  for (int v = 0; v < nv; ++v)
+    if ((next[v] >= 0) != (has_in[v] != 0)) return false;
+  // No vertex splits a piece (the general path would cut it there, and mark that vertex).
+  const std::vector<Workspace::VX>& verts = W.verts;
+  for (const Seg& s : segs) {
+    const Vec2 lo = rv[s.a].cwiseMin(rv[s.b]), hi = rv[s.a].cwiseMax(rv[s.b]);
+    auto it = std::lower_bound(verts.begin(), verts.end(), lo.x(), [](const Workspace::VX& a, double x) { return a.x < x; });
+    for (; it != verts.end() && it->x <= hi.x(); ++it) {
+      if (it->y < lo.y() || it->y > hi.y() || it->v == s.a || it->v == s.b) continue;
+      if (on_line(ends[W.rep[it->v]], s)) return false;
+    }
+  }
+  // The general path's edge order: line order, then along the line by the lower end (pieces on
+  // one line are disjoint but for shared ends here). 0 only for one piece (or an inconsistency).
+  auto edge_order = [&](int x, int y) {
+    if (x == y) return 0;
+    const Seg &s = segs[x], &t = segs[y];
+    if (const int c = compare_lines_filtered(s, t); c != 0) return c;
+    const int axis = s.vertical ? 1 : 0;
+    const int p = s.su > 0 ? s.a : s.b, q = t.su > 0 ? t.a : t.b;
+    if (rv[p][axis] != rv[q][axis]) return rv[p][axis] < rv[q][axis] ? -1 : 1;
+    return p == q ? 0 : compare_coord(ends[W.rep[p]], ends[W.rep[q]], axis);
+  };
+  std::vector<char>& used = W.used;
+  used.assign(ns, 0);
+  std::vector<int>&chain = W.ring_chain, &at = W.ring_at, &first = W.ring_first;
+  std::vector<char>& through = W.through;  // through[i]: the piece before chain[i] is on its line
+  chain.clear();
+  through.clear();
+  at.assign(1, 0);
+  first.clear();
+  for (std::size_t i0 = 0; i0 < ns; ++i0) {
+    if (used[i0]) continue;
+    const std::size_t c0 = chain.size();
+    for (int i = int(i0); !used[i]; i = next[segs[i].b]) {
+      used[i] = 1;
+      chain.push_back(i);
+    }
+    const std::size_t m = chain.size() - c0;
+    if (m < 3) return false;  // two pieces between the same two vertices: a slit
+    std::size_t best = c0;
+    for (std::size_t k = c0; k < chain.size(); ++k) {
+      const Seg &in = segs[chain[k == c0 ? chain.size() - 1 : k - 1]], &o = segs[chain[k]];
+      const int c = compare_lines_filtered(in, o);
+      if (c == 0 && in.su != o.su) return false;  // back along the same line: overlapping pieces
+      through.push_back(c == 0);
+      if (k > c0) {
+        const int b = edge_order(chain[k], chain[best]);
+        if (b == 0) return false;
+        if (b < 0) best = k;
+      }
+    }
+    std::rotate(chain.begin() + c0, chain.begin() + best, chain.end());
+    std::rotate(through.begin() + c0, through.begin() + best, through.end());
+    first.push_back(chain[c0]);
+    at.push_back(int(chain.size()));
+  }
+  // Rings in the order of their first edges (few rings: insertion sort).
+  const std::size_t nr = first.size();
+  std::vector<int>& rank = W.ring_rank;
+  rank.resize(nr);
+  for (std::size_t k = 0; k < nr; ++k) {
+    std::size_t j = k;
+    for (; j > 0; --j) {
+      const int b = edge_order(first[k], first[rank[j - 1]]);
+      if (b == 0) return false;
+      if (b > 0) break;
+      rank[j] = rank[j - 1];
+    }
+    rank[j] = int(k);
+  }
+  std::vector<int>&ring_verts = W.ring_verts, &ring_start = W.ring_start;
+  for (std::size_t r = 0; r < nr; ++r) {
+    const std::size_t k = std::size_t(rank[r]), r0 = ring_verts.size();
+    for (int i = at[k]; i < at[k + 1]; ++i)
+      if (!through[std::size_t(i)]) ring_verts.push_back(segs[chain[std::size_t(i)]].a);
+    if (ring_verts.size() - r0 >= 3) ring_start.push_back(int(ring_verts.size()));
+    else ring_verts.resize(r0);
+  }
+  for (const Seg& s : segs) W.is_vertex[s.a] = W.is_vertex[s.b] = 1;
+  return true;
+}
 
 }  // namespace
 
 const NoFitPolygon2::Impl& nfp_impl(const NoFitPolygon2& n) { return *n.impl_; }
 
-void nfp_export(NoFitPolygon2::Impl& N) {
+NfpExportPath nfp_export_last_path() { return last_path; }
+
+void nfp_export(NoFitPolygon2::Impl& N) { nfp_export_by(N, NfpExportPath::Any); }
+
+bool nfp_export_by(NoFitPolygon2::Impl& N, NfpExportPath path) {
   // Two convex shapes: the pieces are edges of the convex sum, ordered by angle.
-  if (nonconvex2::convex_shape(N.S.P) && nonconvex2::convex_shape(N.S.Q) && nfp_export_convex(N)) return;
+  if (path == NfpExportPath::Convex || (path == NfpExportPath::Any && nonconvex2::convex_shape(N.S.P) && nonconvex2::convex_shape(N.S.Q))) {
+    if (nfp_export_convex(N)) {
+      last_path = NfpExportPath::Convex;
+      return true;
+    }
+    if (path == NfpExportPath::Convex) return false;
+  }
   thread_local Workspace W;
   const std::size_t np = N.pieces.size();
   // 1. Every end, rounded to nearest; ends[2k], ends[2k + 1] are piece k's lo and hi.
@@ -796,16 +951,6 @@ void nfp_export(NoFitPolygon2::Impl& N) {
     }
     make_seg(segs.emplace_back(), N.pieces[k], ia, ib);
   }
-  {  // sorted by line (indices: a Seg is large)
-    std::vector<int>& order = W.order;
-    order.resize(segs.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = int(i);
-    std::sort(order.begin(), order.end(), [&](int x, int y) { return compare_lines_filtered(segs[x], segs[y]) < 0; });
-    std::vector<Seg>& sorted = W.sorted;
-    sorted.clear();
-    for (int i : order) sorted.push_back(segs[i]);
-    segs.swap(sorted);
-  }
 
   // Every vertex (each is an end of a piece of positive length or a zero-length one) with its
   // rounding inline, sorted by rounded x for range scans.
@@ -814,142 +959,154 @@ void nfp_export(NoFitPolygon2::Impl& N) {
   for (int v = 0; v < nv; ++v) verts[v] = {rv[v].x(), rv[v].y(), v};
   std::sort(verts.begin(), verts.end(), [](const Workspace::VX& a, const Workspace::VX& b) { return a.x < b.x; });
 
-  using Edge = Workspace::Edge;
-  using Iv = Workspace::Iv;
-  std::vector<Edge>& edges = W.edges;
-  edges.clear();
   std::vector<std::array<int, 2>>& slits = W.slits;
   slits.clear();
   std::vector<char>& is_vertex = W.is_vertex;  // ends of edges and slit pieces
   is_vertex.assign(nv, 0);
-  std::vector<int>&stamp = W.stamp, &pos = W.pos;
-  stamp.assign(nv, -1);
-  pos.assign(nv, 0);
-  std::vector<Iv>& ivs = W.ivs;
-  std::vector<int>& us = W.us;
-  for (std::size_t g0 = 0, g1; g0 < segs.size(); g0 = g1) {
-    g1 = g0 + 1;
-    while (g1 < segs.size() && compare_lines_filtered(segs[g1], segs[g0]) == 0) ++g1;
-    const int axis = segs[g0].vertical ? 1 : 0;
-    ivs.clear();
-    us.clear();
-    Vec2 lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
-    for (std::size_t k = g0; k < g1; ++k) {
-      const Seg& s = segs[k];
-      const bool fwd = s.su > 0;  // b − a is a positive multiple of E's direction
-      ivs.push_back({fwd ? s.a : s.b, fwd ? s.b : s.a, fwd});
-      for (int v : {s.a, s.b}) {
-        if (stamp[v] != int(g0)) stamp[v] = int(g0), us.push_back(v);
-        lo = lo.cwiseMin(rv[v]);
-        hi = hi.cwiseMax(rv[v]);
-      }
-    }
-    // Other exact vertices on this line inside its extent split it too. Rounding is monotone, so
-    // the extent's points round into [lo, hi]; those in the box are tested exactly.
-    auto it = std::lower_bound(verts.begin(), verts.end(), lo.x(), [](const Workspace::VX& a, double x) { return a.x < x; });
-    bool split = false;
-    for (; it != verts.end() && it->x <= hi.x(); ++it) {
-      const int v = it->v;
-      if (it->y < lo.y() || it->y > hi.y() || stamp[v] == int(g0)) continue;
-      if (!on_line(ends[rep[v]], segs[g0])) continue;
-      stamp[v] = int(g0);
-      us.push_back(v);
-      split = true;
-    }
-    if (g1 == g0 + 1 && !split) {  // a lone piece on its line, nothing inside it: one boundary edge
-      is_vertex[segs[g0].a] = 1;
-      is_vertex[segs[g0].b] = 1;
-      edges.push_back({segs[g0].a, segs[g0].b, g0, ivs[0].fwd});
-      continue;
-    }
-    // Distinct vertices on one line have distinct u: rounded u first, exact on equal roundings.
-    std::sort(us.begin(), us.end(), [&](int x, int y) {
-      if (rv[x][axis] != rv[y][axis]) return rv[x][axis] < rv[y][axis];
-      return x != y && compare_coord(ends[rep[x]], ends[rep[y]], axis) < 0;
-    });
-    for (std::size_t i = 0; i < us.size(); ++i) pos[us[i]] = int(i);
-    bool slit_open = false;
-    int slit_start = -1;
-    for (std::size_t i = 0; i + 1 < us.size(); ++i) {
-      bool f = false, b = false;
-      for (const Iv& iv : ivs)
-        if (pos[iv.lo] <= int(i) && int(i) + 1 <= pos[iv.hi]) (iv.fwd ? f : b) = true;
-      const int p0 = us[i], p1 = us[i + 1];
-      if (f || b) {
-        is_vertex[p0] = 1;
-        is_vertex[p1] = 1;
-      }
-      if (f && b) {
-        if (!slit_open) slit_start = p0;
-        slit_open = true;
-        if (i + 2 == us.size()) slits.push_back({slit_start, p1});
-        continue;
-      }
-      if (slit_open) slits.push_back({slit_start, p0});
-      slit_open = false;
-      if (f) edges.push_back({p0, p1, g0, true});
-      else if (b) edges.push_back({p1, p0, g0, false});
-    }
-  }
-
-  // Link edges into rings. Edges leaving each vertex, in edge order (compressed rows).
-  std::vector<int>&first = W.first, &out = W.out, &fill = W.fill;
-  first.assign(nv + 1, 0);
-  out.resize(edges.size());
-  for (const Edge& e : edges) ++first[e.a + 1];
-  for (int v = 0; v < nv; ++v) first[v + 1] += first[v];
-  fill.assign(first.begin(), first.end() - 1);
-  for (std::size_t e = 0; e < edges.size(); ++e) out[fill[edges[e].a]++] = int(e);
-  std::vector<char>& used = W.used;
-  used.assign(edges.size(), 0);
   // Rings as vertex ids: ring k is ring_verts[ring_start[k], ring_start[k + 1]).
   std::vector<int>&ring_verts = W.ring_verts, &ring_start = W.ring_start;
   ring_verts.clear();
   ring_start.assign(1, 0);
-  // The direction of an edge: its line's ray direction, signed to point from a to b.
-  auto dir = [&](const Edge& e) {
-    const Seg& s = segs[e.line];
-    return Dir{s.E, e.fwd ? s.su : -s.su};
-  };
-  std::vector<std::size_t>& chain = W.chain;
-  for (std::size_t e0 = 0; e0 < edges.size(); ++e0) {
-    if (used[e0]) continue;
-    chain.clear();
-    std::size_t e = e0;
-    for (;;) {
-      used[e] = 1;
-      chain.push_back(e);
-      const int v = edges[e].b;
-      std::size_t best = edges.size();
-      for (int i = first[v]; i < first[v + 1]; ++i) {
-        const std::size_t c = std::size_t(out[i]);
-        if (used[c] && c != e0) continue;
-        if (best == edges.size()) {
-          best = c;
+  const bool linked = path != NfpExportPath::General && export_linked(W, ends, rv, nv);
+  if (!linked && path == NfpExportPath::Linked) return false;
+  last_path = linked ? NfpExportPath::Linked : NfpExportPath::General;
+  if (!linked) {
+    // Sorted by line: sgs(k) is the k-th (indices only: a Seg is large).
+    std::vector<int>& order = W.order;
+    order.resize(segs.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = int(i);
+    std::sort(order.begin(), order.end(), [&](int x, int y) { return compare_lines_filtered(segs[x], segs[y]) < 0; });
+    auto sgs = [&](std::size_t k) -> const Seg& { return segs[std::size_t(order[k])]; };
+
+    using Edge = Workspace::Edge;
+    using Iv = Workspace::Iv;
+    std::vector<Edge>& edges = W.edges;
+    edges.clear();
+    std::vector<int>&stamp = W.stamp, &pos = W.pos;
+    stamp.assign(nv, -1);
+    pos.assign(nv, 0);
+    std::vector<Iv>& ivs = W.ivs;
+    std::vector<int>& us = W.us;
+    for (std::size_t g0 = 0, g1; g0 < segs.size(); g0 = g1) {
+      g1 = g0 + 1;
+      while (g1 < segs.size() && compare_lines_filtered(sgs(g1), sgs(g0)) == 0) ++g1;
+      const int axis = sgs(g0).vertical ? 1 : 0;
+      ivs.clear();
+      us.clear();
+      Vec2 lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
+      for (std::size_t k = g0; k < g1; ++k) {
+        const Seg& s = sgs(k);
+        const bool fwd = s.su > 0;  // b − a is a positive multiple of E's direction
+        ivs.push_back({fwd ? s.a : s.b, fwd ? s.b : s.a, fwd});
+        for (int v : {s.a, s.b}) {
+          if (stamp[v] != int(g0)) stamp[v] = int(g0), us.push_back(v);
+          lo = lo.cwiseMin(rv[v]);
+          hi = hi.cwiseMax(rv[v]);
+        }
+      }
+      // Other exact vertices on this line inside its extent split it too. Rounding is monotone, so
+      // the extent's points round into [lo, hi]; those in the box are tested exactly.
+      auto it = std::lower_bound(verts.begin(), verts.end(), lo.x(), [](const Workspace::VX& a, double x) { return a.x < x; });
+      bool split = false;
+      for (; it != verts.end() && it->x <= hi.x(); ++it) {
+        const int v = it->v;
+        if (it->y < lo.y() || it->y > hi.y() || stamp[v] == int(g0)) continue;
+        if (!on_line(ends[rep[v]], sgs(g0))) continue;
+        stamp[v] = int(g0);
+        us.push_back(v);
+        split = true;
+      }
+      if (g1 == g0 + 1 && !split) {  // a lone piece on its line, nothing inside it: one boundary edge
+        is_vertex[sgs(g0).a] = 1;
+        is_vertex[sgs(g0).b] = 1;
+        edges.push_back({sgs(g0).a, sgs(g0).b, g0, ivs[0].fwd});
+        continue;
+      }
+      // Distinct vertices on one line have distinct u: rounded u first, exact on equal roundings.
+      std::sort(us.begin(), us.end(), [&](int x, int y) {
+        if (rv[x][axis] != rv[y][axis]) return rv[x][axis] < rv[y][axis];
+        return x != y && compare_coord(ends[rep[x]], ends[rep[y]], axis) < 0;
+      });
+      for (std::size_t i = 0; i < us.size(); ++i) pos[us[i]] = int(i);
+      bool slit_open = false;
+      int slit_start = -1;
+      for (std::size_t i = 0; i + 1 < us.size(); ++i) {
+        bool f = false, b = false;
+        for (const Iv& iv : ivs)
+          if (pos[iv.lo] <= int(i) && int(i) + 1 <= pos[iv.hi]) (iv.fwd ? f : b) = true;
+        const int p0 = us[i], p1 = us[i + 1];
+        if (f || b) {
+          is_vertex[p0] = 1;
+          is_vertex[p1] = 1;
+        }
+        if (f && b) {
+          if (!slit_open) slit_start = p0;
+          slit_open = true;
+          if (i + 2 == us.size()) slits.push_back({slit_start, p1});
           continue;
         }
-        Dir r = dir(edges[e]);  // back along the incoming edge
-        r.s = -r.s;
-        if (larger_ccw_angle(r, dir(edges[c]), dir(edges[best]))) best = c;
+        if (slit_open) slits.push_back({slit_start, p0});
+        slit_open = false;
+        if (f) edges.push_back({p0, p1, g0, true});
+        else if (b) edges.push_back({p1, p0, g0, false});
       }
-      if (best == e0) break;  // closed
-      // Every vertex of ∂O has as many pieces leaving as entering; a dead end means the pieces
-      // are inconsistent, which must not be exported as if it were a ring.
-      if (best == edges.size())
-        throw std::logic_error("no-fit polygon: a boundary chain does not close (internal inconsistency)");
-      e = best;
     }
-    const std::size_t r0 = ring_verts.size();
-    for (std::size_t k = 0; k < chain.size(); ++k) {
-      const Edge& in = edges[chain[(k + chain.size() - 1) % chain.size()]];
-      const Edge& o = edges[chain[k]];
-      // Pass-through: the same exact line (one group per line) in the same direction.
-      if (chain.size() > 2 && in.line == o.line && in.fwd == o.fwd) continue;
-      ring_verts.push_back(o.a);
+
+    // Link edges into rings. Edges leaving each vertex, in edge order (compressed rows).
+    std::vector<int>&first = W.first, &out = W.out, &fill = W.fill;
+    first.assign(nv + 1, 0);
+    out.resize(edges.size());
+    for (const Edge& e : edges) ++first[e.a + 1];
+    for (int v = 0; v < nv; ++v) first[v + 1] += first[v];
+    fill.assign(first.begin(), first.end() - 1);
+    for (std::size_t e = 0; e < edges.size(); ++e) out[fill[edges[e].a]++] = int(e);
+    std::vector<char>& used = W.used;
+    used.assign(edges.size(), 0);
+    // The direction of an edge: its line's ray direction, signed to point from a to b.
+    auto dir = [&](const Edge& e) {
+      const Seg& s = sgs(e.line);
+      return Dir{s.E, e.fwd ? s.su : -s.su};
+    };
+    std::vector<std::size_t>& chain = W.chain;
+    for (std::size_t e0 = 0; e0 < edges.size(); ++e0) {
+      if (used[e0]) continue;
+      chain.clear();
+      std::size_t e = e0;
+      for (;;) {
+        used[e] = 1;
+        chain.push_back(e);
+        const int v = edges[e].b;
+        std::size_t best = edges.size();
+        for (int i = first[v]; i < first[v + 1]; ++i) {
+          const std::size_t c = std::size_t(out[i]);
+          if (used[c] && c != e0) continue;
+          if (best == edges.size()) {
+            best = c;
+            continue;
+          }
+          Dir r = dir(edges[e]);  // back along the incoming edge
+          r.s = -r.s;
+          if (larger_ccw_angle(r, dir(edges[c]), dir(edges[best]))) best = c;
+        }
+        if (best == e0) break;  // closed
+        // Every vertex of ∂O has as many pieces leaving as entering; a dead end means the pieces
+        // are inconsistent, which must not be exported as if it were a ring.
+        if (best == edges.size())
+          throw std::logic_error("no-fit polygon: a boundary chain does not close (internal inconsistency)");
+        e = best;
+      }
+      const std::size_t r0 = ring_verts.size();
+      for (std::size_t k = 0; k < chain.size(); ++k) {
+        const Edge& in = edges[chain[(k + chain.size() - 1) % chain.size()]];
+        const Edge& o = edges[chain[k]];
+        // Pass-through: the same exact line (one group per line) in the same direction.
+        if (chain.size() > 2 && in.line == o.line && in.fwd == o.fwd) continue;
+        ring_verts.push_back(o.a);
+      }
+      if (ring_verts.size() - r0 >= 3) ring_start.push_back(int(ring_verts.size()));
+      else ring_verts.resize(r0);
     }
-    if (ring_verts.size() - r0 >= 3) ring_start.push_back(int(ring_verts.size()));
-    else ring_verts.resize(r0);
-  }
+  }  // general path
   const std::size_t nr = ring_start.size() - 1;
   auto ring_of = [&](std::size_t k) {
     return std::vector<int>(ring_verts.begin() + ring_start[k], ring_verts.begin() + ring_start[k + 1]);
@@ -1043,6 +1200,7 @@ void nfp_export(NoFitPolygon2::Impl& N) {
   N.points.clear();
   for (int p : zero_points)
     if (!is_vertex[p]) N.points.push_back(rv[p]);
+  return true;
 }
 
 }  // namespace pendepth
