@@ -607,12 +607,45 @@ bool nfp_export_convex(NoFitPolygon2::Impl& N) {
   // at that edge's first elementary segment in increasing u (x, or y when vertical): the edge's
   // start when it runs towards increasing u or has no vertex inside, else its end.
   std::size_t first = 0;
-  thread_local std::vector<Seg> segs;
-  segs.clear();
-  for (const Group& g : groups) make_seg(segs.emplace_back(), N.pieces[order[g.b]], 0, 0);
-  for (std::size_t k = 1; k < ng; ++k)
-    if (compare_lines_filtered(segs[k], segs[first]) < 0) first = k;
-  if (segs[first].su < 0) {
+  thread_local std::vector<Seg> segs;  // segs[k]: group k's line, made only where needed
+  segs.resize(ng);
+  thread_local std::vector<char> made;
+  made.assign(ng, 0);
+  auto seg = [&](std::size_t k) -> const Seg& {
+    if (!made[k]) make_seg(segs[k], N.pieces[order[groups[k].b]], 0, 0), made[k] = 1;
+    return segs[k];
+  };
+  // Directions (a1 − b1) as exact doubles (x, y): the rounded slope fl(y / x) is monotone in the exact slope
+  // (a correctly rounded quotient), so a smaller rounded slope is a smaller slope and only equal
+  // roundings (parallel edges, or nearly so) need the exact line order; vertical lines come last
+  // and, the ring having ≥ 3 directions, one line is not vertical.
+  bool by_slope = true;
+  for (const Group& g : groups) {
+    const Ray& E = N.pieces[order[g.b]].E;
+    by_slope = by_slope && ak[order[g.b]].exact && E.a2 == Vec2(0, 0) && E.b2 == Vec2(0, 0);
+  }
+  if (by_slope) {
+    double qmin = INFINITY;
+    std::size_t ties = 0;
+    for (std::size_t k = 0; k < ng; ++k) {
+      const AngleKey& a = ak[order[groups[k].b]];
+      if (a.x == 0) continue;
+      const double q = a.y / a.x;
+      if (ties == 0 || q < qmin) qmin = q, first = k, ties = 1;
+      else if (q == qmin) ++ties;
+    }
+    if (ties > 1) {  // the exact order among the lines of the smallest rounded slope
+      const std::size_t f0 = first;
+      for (std::size_t k = f0 + 1; k < ng; ++k) {
+        const AngleKey& a = ak[order[groups[k].b]];
+        if (a.x != 0 && a.y / a.x == qmin && compare_lines_filtered(seg(k), seg(first)) < 0) first = k;
+      }
+    }
+  } else {
+    for (std::size_t k = 1; k < ng; ++k)
+      if (compare_lines_filtered(seg(k), seg(first)) < 0) first = k;
+  }
+  if (seg(first).su < 0) {
     const Group& g = groups[first];
     const Ray& E = N.pieces[order[g.b]].E;
     bool inside = false;
