@@ -9,7 +9,8 @@
 // 1e6, scales of 2^-30 and 2^-960 (subnormal gaps: the rational fallbacks), inputs chosen to take
 // each exact-double shortcut of the export and each of its fallbacks (integers, large integers,
 // dyadic offsets, integers against tenths); each also with its pieces shuffled (another interning
-// and grouping order). Pinned seeds.
+// and grouping order); the export's linked path and its general path each run on their own on the
+// same pieces (nesting pairs, grid stars, holes, a point on an edge). Pinned seeds.
 #include <pendepth/nfp2.hpp>
 
 #include <gtest/gtest.h>
