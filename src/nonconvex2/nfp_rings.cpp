@@ -67,8 +67,8 @@
 // all), O(N·k) box-filtered on-line tests (k vertices in a line's box), O(H·R·n) rational
 // point-in-ring tests for H holes, R outer rings; scratch arrays are thread-local and reused (no
 // allocation per call but the output). Measured (callgrind, instructions per pair over every
-// ordered pair, ~15–21 pieces each, convex pairs included): albano 26.5 k, shirts 24.4 k, trousers
-// 10.1 k (session 7 before the linked path, the same pieces: 31.0 k, 27.1 k, 12.1 k; session 6: 32 k,
+// ordered pair, ~15–21 pieces each, convex pairs included): albano 26.2 k, shirts 24.1 k, trousers
+// 10.0 k (session 7 before the linked path, the same pieces: 31.0 k, 27.1 k, 12.1 k; session 6: 32 k,
 // 33.5 k, 16 k and session 5: 55 k, 60 k, 26 k on their pieces; the previous all-rational export
 // 384 k, 347 k, 301 k: mpq points in a std::map, rational line keys), whose output this one
 // reproduces bit for bit (tests/nonconvex2/test_nfp_export.cpp keeps it as the oracle and runs the
@@ -917,6 +917,10 @@ bool nfp_export_by(NoFitPolygon2::Impl& N, NfpExportPath path) {
   int nv = 0;
   std::vector<int>& rep = W.rep;  // rep[vertex id] = one of its ends
   rep.clear();
+  std::vector<Vec2>& rv = W.rv;  // rv[vertex id]: its rounding (below)
+  rv.clear();
+  std::vector<char>& fixed = W.fixed;  // rv from a TwoSum rounding of a sum vertex
+  fixed.clear();
   {
     // A sum vertex that is an exact double pair against a crossing with FlX-exact numerators and
     // denominator (integer data): equal iff num = x·den for both coordinates, each product exact
@@ -977,20 +981,15 @@ bool nfp_export_by(NoFitPolygon2::Impl& N, NfpExportPath path) {
         rep.push_back(int(e));
         vnext.push_back(ghead[g]);
         ghead[g] = id[e];
+        // The exported rounding of a vertex: that of its first sum-vertex end with a TwoSum rounding
+        // (the previous export's choice, which also fixes the sign of a zero), else of its first end.
+        rv.push_back(ends[e].r);
+        fixed.push_back(ends[e].r_sum);
+      } else if (ends[e].r_sum && !fixed[id[e]]) {
+        rv[id[e]] = ends[e].r;
+        fixed[id[e]] = 1;
       }
     }
-  }
-  // The exported rounding of a vertex: that of its first sum-vertex end with a TwoSum rounding (the
-  // previous export's choice, which also fixes the sign of a zero), else of any end.
-  std::vector<Vec2>& rv = W.rv;
-  rv.resize(nv);
-  {
-    std::vector<char>& fixed = W.fixed;
-    fixed.assign(nv, 0);
-    for (std::size_t e = 0; e < ends.size(); ++e)
-      if (ends[e].r_sum && !fixed[id[e]]) rv[id[e]] = ends[e].r, fixed[id[e]] = 1;
-    for (int v = 0; v < nv; ++v)
-      if (!fixed[v]) rv[v] = ends[rep[v]].r;
   }
 
   std::vector<Seg>& segs = W.segs;
