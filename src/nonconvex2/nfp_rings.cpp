@@ -41,15 +41,16 @@
 //    test, symbolic first), giving elementary segments ordered by rounded, then exact, position.
 //    Covered both ways: a slit. Covered one way: a boundary edge of cl(O) with O on its left.
 // Linked path (export_linked), tried before step 2: when every vertex starts exactly one piece of
-//    positive length and ends exactly one, no vertex lies on a piece's line inside its box but its
-//    ends, and no chain turns back along its own line, step 2 would make every piece one edge and
+//    positive length and ends exactly one (a piece with the same two ends, the same way, as an
+//    earlier one is skipped: step 2 covers that segment once), no vertex lies on a piece's line
+//    inside its box but its ends, and no chain turns back along its own line, step 2 would make every piece one edge and
 //    step 3 would have one choice at each vertex: the rings are the cycles of "the piece leaving
 //    this one's end", each started at its first edge in step 2's order (line, then position along
 //    it) found by a scan, rings in the order of those edges; collinear consecutive pieces drop their
 //    shared vertex (step 3's pass-through). O(N) line comparisons instead of the sort; otherwise
 //    (coinciding collinear pieces, pinch vertices, slits, a vertex on a piece) nothing is decided
-//    and steps 2–3 run. Of the non-convex nesting pairs, 52 % take
-//    it on shirts, 65 % on albano, 84 % on trousers.
+//    and steps 2–3 run. Of the non-convex nesting pairs, 69 % take
+//    it on albano and shirts, 97 % on trousers.
 // 3. Edges are linked end to start by vertex id. Where several edges leave one vertex (two parts
 //    of O touching at a point), the incoming edge continues with the sharpest left turn (exact
 //    signs on the ray directions), so each ring bounds one side of the touching point. Collinear
@@ -67,8 +68,8 @@
 // all), O(N·k) box-filtered on-line tests (k vertices in a line's box), O(H·R·n) rational
 // point-in-ring tests for H holes, R outer rings; scratch arrays are thread-local and reused (no
 // allocation per call but the output). Measured (callgrind, instructions per pair over every
-// ordered pair, ~15–21 pieces each, convex pairs included): albano 26.2 k, shirts 24.1 k, trousers
-// 10.0 k (session 7 before the linked path, the same pieces: 31.0 k, 27.1 k, 12.1 k; session 6: 32 k,
+// ordered pair, ~15–21 pieces each, convex pairs included): albano 26.2 k, shirts 22.8 k, trousers
+// 9.9 k (session 7 before the linked path, the same pieces: 31.0 k, 27.1 k, 12.1 k; session 6: 32 k,
 // 33.5 k, 16 k and session 5: 55 k, 60 k, 26 k on their pieces; the previous all-rational export
 // 384 k, 347 k, 301 k: mpq points in a std::map, rational line keys), whose output this one
 // reproduces bit for bit (tests/nonconvex2/test_nfp_export.cpp keeps it as the oracle and runs the
@@ -721,7 +722,7 @@ struct Workspace {
   // The linked path: per vertex the piece leaving it and whether one enters; per ring its first
   // piece and its chain in ring_chain[ring_at[k], ring_at[k + 1]).
   std::vector<int> next_seg, ring_chain, ring_at, ring_first, ring_rank;
-  std::vector<char> has_in, through;
+  std::vector<char> has_in, dup, through;
 };
 
 thread_local NfpExportPath last_path = NfpExportPath::General;
@@ -744,8 +745,16 @@ bool export_linked(Workspace& W, const std::vector<End>& ends, const std::vector
   next.assign(nv, -1);
   std::vector<char>& has_in = W.has_in;
   has_in.assign(nv, 0);
+  // A piece with the same ends as an earlier one, the same way (coinciding candidates of different
+  // edge pairs): the general path covers that segment once, one edge; it is skipped here.
+  std::vector<char>& dup = W.dup;
+  dup.assign(ns, 0);
   for (std::size_t i = 0; i < ns; ++i) {
     const Seg& s = segs[i];
+    if (next[s.a] >= 0 && segs[std::size_t(next[s.a])].b == s.b) {
+      dup[i] = 1;
+      continue;
+    }
     if (next[s.a] >= 0 || has_in[s.b]) return false;
     next[s.a] = int(i);
     has_in[s.b] = 1;
@@ -754,7 +763,9 @@ bool export_linked(Workspace& W, const std::vector<End>& ends, const std::vector
     if ((next[v] >= 0) != (has_in[v] != 0)) return false;
   // No vertex splits a piece (the general path would cut it there, and mark that vertex).
   const std::vector<Workspace::VX>& verts = W.verts;
-  for (const Seg& s : segs) {
+  for (std::size_t i = 0; i < ns; ++i) {
+    if (dup[i]) continue;
+    const Seg& s = segs[i];
     const Vec2 lo = rv[s.a].cwiseMin(rv[s.b]), hi = rv[s.a].cwiseMax(rv[s.b]);
     auto it = std::lower_bound(verts.begin(), verts.end(), lo.x(), [](const Workspace::VX& a, double x) { return a.x < x; });
     for (; it != verts.end() && it->x <= hi.x(); ++it) {
@@ -782,7 +793,7 @@ bool export_linked(Workspace& W, const std::vector<End>& ends, const std::vector
   at.assign(1, 0);
   first.clear();
   for (std::size_t i0 = 0; i0 < ns; ++i0) {
-    if (used[i0]) continue;
+    if (used[i0] || dup[i0]) continue;
     const std::size_t c0 = chain.size();
     for (int i = int(i0); !used[i]; i = next[segs[i].b]) {
       used[i] = 1;

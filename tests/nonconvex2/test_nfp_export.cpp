@@ -272,7 +272,8 @@ TEST(NfpExport, ConvexPairsByAngle) {
 // own on the same pieces and compared with the oracle: every pair must give the oracle's output
 // by the general path, and by the linked path wherever that one applies. Inputs chosen to take
 // each: nesting pairs (both: coinciding collinear pieces and pinch vertices send about a third to
-// the general path), small integer stars (slits, touching parts, overlapping collinear pieces),
+// the general path; coinciding pieces, the same ends the same way, are one edge on both), small
+// integer stars (slits, touching parts, overlapping collinear pieces),
 // the same moved and scaled (the linked path's line order and its tie-break along a line on
 // inexact data), plates with a hole (a hole ring: ring order by first edge), a rectangle with a
 // collinear vertex (consecutive pieces on one line: pass-through vertices dropped), random
@@ -347,8 +348,10 @@ TEST(NfpExport, LinkedAndGeneralPaths) {
   run(star_p, star_q, "point on an edge");
   run(scaled_by(star_p, 0.1), scaled_by(star_q, 0.1), "point on an edge / 10");
   std::cout << "[nfp export] linked path " << linked << ", general only " << general << "\n";
-  EXPECT_GT(linked, 200u);   // both paths are exercised, on many inputs each
-  EXPECT_GT(general, 200u);
+  // Both paths exercised on many inputs each (Release ~2100 and ~220; sanitizer builds, which run
+  // an eighth of the random inputs, ~1100 and ~100).
+  EXPECT_GT(linked, 500u);
+  EXPECT_GT(general, 50u);
 }
 
 class Summary : public ::testing::Environment {
