@@ -646,9 +646,9 @@ bool nfp_export_convex(NoFitPolygon2::Impl& N) {
     const Ray& E = N.pieces[order[g.b]].E;
     by_slope = by_slope && ak[order[g.b]].exact && E.a2 == Vec2(0, 0) && E.b2 == Vec2(0, 0);
   }
+  double qmin = INFINITY;
+  std::size_t ties = 0;
   if (by_slope) {
-    double qmin = INFINITY;
-    std::size_t ties = 0;
     for (std::size_t k = 0; k < ng; ++k) {
       const AngleKey& a = ak[order[groups[k].b]];
       if (a.x == 0) continue;
@@ -663,7 +663,9 @@ bool nfp_export_convex(NoFitPolygon2::Impl& N) {
         if (a.x != 0 && a.y / a.x == qmin && compare_lines_filtered(seg(k), seg(first)) < 0) first = k;
       }
     }
-  } else {
+  }
+  if (ties == 0) {  // not by slope (or, defensively, no line that is not vertical)
+    first = 0;
     for (std::size_t k = 1; k < ng; ++k)
       if (compare_lines_filtered(seg(k), seg(first)) < 0) first = k;
   }
