@@ -630,6 +630,7 @@ bool nfp_export_convex(NoFitPolygon2::Impl& N) {
   // start when it runs towards increasing u or has no vertex inside, else its end.
   std::size_t first = 0;
   thread_local std::vector<Seg> segs;  // segs[k]: group k's line, made only where needed
+  segs.clear();  // (a Seg is not initialised until made: never copied by a reallocation)
   segs.resize(ng);
   thread_local std::vector<char> made;
   made.assign(ng, 0);
