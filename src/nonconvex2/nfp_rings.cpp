@@ -43,14 +43,14 @@
 // Linked path (export_linked), tried before step 2: when every vertex starts exactly one piece of
 //    positive length and ends exactly one (a piece with the same two ends, the same way, as an
 //    earlier one is skipped: step 2 covers that segment once), no vertex lies on a piece's line
-//    inside its box but its ends, and no chain turns back along its own line, step 2 would make every piece one edge and
-//    step 3 would have one choice at each vertex: the rings are the cycles of "the piece leaving
-//    this one's end", each started at its first edge in step 2's order (line, then position along
-//    it) found by a scan, rings in the order of those edges; collinear consecutive pieces drop their
-//    shared vertex (step 3's pass-through). O(N) line comparisons instead of the sort; otherwise
-//    (coinciding collinear pieces, pinch vertices, slits, a vertex on a piece) nothing is decided
-//    and steps 2–3 run. Of the non-convex nesting pairs, 69 % take
-//    it on albano and shirts, 97 % on trousers.
+//    inside its box but its ends, and no chain turns back along its own line, step 2 would make
+//    every piece one edge and step 3 would have one choice at each vertex: the rings are the
+//    cycles of "the piece leaving this one's end", each started at its first edge in step 2's
+//    order (line, then position along it) found by a scan, rings in the order of those edges;
+//    collinear consecutive pieces drop their shared vertex (step 3's pass-through). O(N) line
+//    comparisons instead of the sort. Otherwise (overlapping collinear pieces with different ends,
+//    pinch vertices, slits, a vertex on a piece) nothing is decided and steps 2–3 run. Of the
+//    non-convex nesting pairs, 69 % take it on albano and shirts, 97 % on trousers.
 // 3. Edges are linked end to start by vertex id. Where several edges leave one vertex (two parts
 //    of O touching at a point), the incoming edge continues with the sharpest left turn (exact
 //    signs on the ray directions), so each ring bounds one side of the touching point. Collinear

@@ -271,9 +271,9 @@ TEST(NfpExport, ConvexPairsByAngle) {
 // are the edges) and the general path (line groups cut into elementary segments), each run on its
 // own on the same pieces and compared with the oracle: every pair must give the oracle's output
 // by the general path, and by the linked path wherever that one applies. Inputs chosen to take
-// each: nesting pairs (both: coinciding collinear pieces and pinch vertices send about a third to
-// the general path; coinciding pieces, the same ends the same way, are one edge on both), small
-// integer stars (slits, touching parts, overlapping collinear pieces),
+// each: nesting pairs (both: overlapping collinear pieces with different ends send 3–31 % of the
+// non-convex pairs to the general path; coinciding pieces, the same ends the same way, are one edge
+// on both), small integer stars (slits, touching parts, overlapping collinear pieces),
 // the same moved and scaled (the linked path's line order and its tie-break along a line on
 // inexact data), plates with a hole (a hole ring: ring order by first edge), a rectangle with a
 // collinear vertex (consecutive pieces on one line: pass-through vertices dropped), random
