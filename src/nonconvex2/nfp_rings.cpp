@@ -8,8 +8,10 @@
 // Two convex shapes (nfp_export_convex): the pieces are whole candidates, edges of the convex sum;
 // sorted by the exact angle of their direction (an input edge vector) and grouped by equal angle,
 // they give the ring directly (one vertex per group, its lowest start along the direction), in
-// O(N log N) static-filter angle comparisons, started where the general linking below would start
-// it (the lowest line in its order), so the output is the same. Otherwise:
+// O(N log N) angle comparisons (a rounded −cot key per exact direction, monotone; exact signs only
+// on equal keys), started where the general linking below would start it (the lowest line in its
+// order: rounded slopes of exact directions, monotone too; the exact line order only on equal
+// roundings), so the output is the same. Otherwise:
 // Every piece end is an exact point: a sum vertex (P vertex + −Q vertex) or o + μ·dir on the
 // piece's ray with μ = num/den the crossing with a cut line (pair_sums.hpp: num, den of degree 2
 // in the input doubles, so a coordinate is a degree-3 polynomial over a degree-2 one).
@@ -18,8 +20,9 @@
 //    rounded for another end (the end of one piece and the start of the next are each cut by the
 //    other's line: symbolic same_line both ways, or one way and same_point) takes that rounding
 //    (rounding is a function of the exact point); on integer input, when FlX certifies num and
-//    den (and so the coordinate's numerator) as exact doubles, the IEEE quotient (never an exact
-//    tie: see round_coord); any other by walking
+//    den (and so the coordinate's numerator) as exact doubles (small integers, |x| < 2^31: the same
+//    polynomials in 128-bit integers), the IEEE quotient (never an exact tie: see round_coord); any
+//    other by walking
 //    from the builder's few-ulp value d (only a starting guess: a bad one costs steps, never the
 //    result) until x lies strictly between the midpoints to d's two neighbours. Each midpoint test
 //    is the sign of num − m·den from double-doubles of num and den stored per end (certified
@@ -37,6 +40,17 @@
 //    and every other vertex on the line inside its extent (rounded box, then an exact on-line
 //    test, symbolic first), giving elementary segments ordered by rounded, then exact, position.
 //    Covered both ways: a slit. Covered one way: a boundary edge of cl(O) with O on its left.
+// Linked path (export_linked), tried before step 2: when every vertex starts exactly one piece of
+//    positive length and ends exactly one (a piece with the same two ends, the same way, as an
+//    earlier one is skipped: step 2 covers that segment once), no vertex lies on a piece's line
+//    inside its box but its ends, and no chain turns back along its own line, step 2 would make
+//    every piece one edge and step 3 would have one choice at each vertex: the rings are the
+//    cycles of "the piece leaving this one's end", each started at its first edge in step 2's
+//    order (line, then position along it) found by a scan, rings in the order of those edges;
+//    collinear consecutive pieces drop their shared vertex (step 3's pass-through). O(N) line
+//    comparisons instead of the sort. Otherwise (overlapping collinear pieces with different ends,
+//    pinch vertices, slits, a vertex on a piece) nothing is decided and steps 2–3 run. Of the
+//    non-convex nesting pairs, 69 % take it on albano and shirts, 97 % on trousers.
 // 3. Edges are linked end to start by vertex id. Where several edges leave one vertex (two parts
 //    of O touching at a point), the incoming edge continues with the sharpest left turn (exact
 //    signs on the ray directions), so each ring bounds one side of the touching point. Collinear
@@ -54,10 +68,12 @@
 // all), O(N·k) box-filtered on-line tests (k vertices in a line's box), O(H·R·n) rational
 // point-in-ring tests for H holes, R outer rings; scratch arrays are thread-local and reused (no
 // allocation per call but the output). Measured (callgrind, instructions per pair over every
-// ordered pair, ~17–21 pieces each, convex pairs included): albano 32 k, shirts 33.5 k, trousers
-// 16 k (session 5: 55 k, 60 k, 26 k; the previous all-rational export 384 k, 347 k, 301 k: mpq
-// points in a std::map, rational line keys), whose output this one reproduces bit for bit
-// (tests/nonconvex2/test_nfp_export.cpp keeps it as the oracle).
+// ordered pair, ~15–21 pieces each, convex pairs included): albano 26.2 k, shirts 22.8 k, trousers
+// 9.9 k (session 7 before the linked path, the same pieces: 31.0 k, 27.1 k, 12.1 k; session 6: 32 k,
+// 33.5 k, 16 k and session 5: 55 k, 60 k, 26 k on their pieces; the previous all-rational export
+// 384 k, 347 k, 301 k: mpq points in a std::map, rational line keys), whose output this one
+// reproduces bit for bit (tests/nonconvex2/test_nfp_export.cpp keeps it as the oracle and runs the
+// linked and general paths each on their own).
 #include <gmpxx.h>
 
 #include <algorithm>
@@ -69,6 +85,7 @@
 
 #include "geometry/exact.hpp"
 #include "nonconvex2/nfp_impl.hpp"
+#include "nonconvex2/nfp_rings.hpp"
 
 namespace pendepth {
 
@@ -186,6 +203,35 @@ void ensure_fx(End& v) {
   };
   auto integral = [&](const Vec2& p) { return integer(p.x()) && integer(p.y()); };
   const Line& c = v.raw->line;
+  // Small integers (|x| < 2^31, nesting data): the same polynomials in 128-bit integers, exact
+  // (|num| < 2^101), each value then an exact double or not one at all.
+  auto small = [](const Vec2& p) {
+    return std::abs(p.x()) < 0x1p31 && std::abs(p.y()) < 0x1p31 && p.x() == double(std::int64_t(p.x())) &&
+           p.y() == double(std::int64_t(p.y()));
+  };
+  if (v.kind != Param::Proj && v.kind != Param::Value && small(E.o1) && small(E.o2) && small(E.a1) && small(E.a2) && small(E.b1) &&
+      small(E.b2) && (v.kind != Param::Cut || (small(c.c1) && small(c.c2) && small(c.e0) && small(c.e1)))) {
+    __extension__ typedef __int128 I;  // GCC and Clang on 64-bit targets
+    auto i = [](double x) { return I(std::int64_t(x)); };
+    const I ox = i(E.o1.x()) + i(E.o2.x()), oy = i(E.o1.y()) + i(E.o2.y());
+    const I dx = i(E.a1.x()) + i(E.a2.x()) - i(E.b1.x()) - i(E.b2.x()), dy = i(E.a1.y()) + i(E.a2.y()) - i(E.b1.y()) - i(E.b2.y());
+    I n = v.kind == Param::One ? 1 : 0, d = 1;
+    if (v.kind == Param::Cut) {
+      const I lx = i(c.c1.x()) + i(c.c2.x()) - ox, ly = i(c.c1.y()) + i(c.c2.y()) - oy;
+      const I ex = i(c.e1.x()) - i(c.e0.x()), ey = i(c.e1.y()) - i(c.e0.y());
+      n = lx * ey - ly * ex;
+      d = dx * ey - dy * ex;
+    }
+    const I xn = ox * d + n * dx, yn = oy * d + n * dy;
+    // v as a double when exact (a 128-bit integer converts to the nearest double; exact iff it
+    // converts back to itself).
+    auto exact_double = [](I x, double& out) {
+      out = double(x);
+      return I(out) == x;
+    };
+    if (d != 0 && exact_double(xn, v.fxn) && exact_double(yn, v.fyn) && exact_double(d, v.fden)) v.fx = 1;
+    return;
+  }
   if (integral(E.o1) && integral(E.o2) && integral(E.a1) && integral(E.a2) && integral(E.b1) && integral(E.b2) &&
       (v.kind != Param::Cut || (integral(c.c1) && integral(c.c2) && integral(c.e0) && integral(c.e1)))) {
     const exact::LiftFlX X;
@@ -356,6 +402,7 @@ int sign_det(double a, double b, double c, double d) {
 // A piece of positive length: its ends (vertex ids), its ray and line, and the sign of its
 // direction along u (x, or y on a vertical line).
 struct Seg {
+  Seg() {}  // no zeroing: make_seg sets every member (segs.emplace_back() would value-initialise)
   int a, b;
   const Ray* E;
   const Line* edge;
@@ -377,6 +424,7 @@ void make_seg(Seg& s, const NfpPiece& pc, int ia, int ib) {
   const Ray& E = pc.E;
   const exact::LiftFl F;
   s.a = ia, s.b = ib, s.E = &E, s.edge = &pc.edge;
+  s.ex = s.ey = s.oxe = s.oye = 0;  // set below only when exact
   s.dexact = E.a2.x() == 0 && E.a2.y() == 0 && E.b2.x() == 0 && E.b2.y() == 0 && exact_diff(E.a1.x(), E.b1.x(), s.ex) &&
              exact_diff(E.a1.y(), E.b1.y(), s.ey);
   s.oexact = exact_diff(E.o1.x(), -E.o2.x(), s.oxe) && exact_diff(E.o1.y(), -E.o2.y(), s.oye);
@@ -523,10 +571,13 @@ bool nfp_export_convex(NoFitPolygon2::Impl& N) {
   for (std::size_t k = 0; k < np; ++k) order[k] = int(k);
   // Per piece: the half-plane of its direction and the direction as exact doubles when the
   // differences are exact; compare_angle (the same order) only where those cannot decide.
+  // Exact directions also get a key increasing with the angle inside their half-plane, −x/y
+  // rounded (−cot: a correctly rounded quotient is monotone, so different keys are a strict order
+  // and only equal keys need the exact comparison), −∞ on the half's first ray (y = 0).
   struct AngleKey {
     int half;
     bool exact;
-    double x, y;
+    double x, y, key;
   };
   thread_local std::vector<AngleKey> ak;
   ak.resize(np);
@@ -534,11 +585,14 @@ bool nfp_export_convex(NoFitPolygon2::Impl& N) {
     const Ray& E = N.pieces[k].E;
     ak[k].half = (E.a1.y() < E.b1.y() || (E.a1.y() == E.b1.y() && E.a1.x() < E.b1.x())) ? 1 : 0;
     ak[k].exact = exact_diff(E.a1.x(), E.b1.x(), ak[k].x) && exact_diff(E.a1.y(), E.b1.y(), ak[k].y);
+    ak[k].key = ak[k].y == 0 ? -INFINITY : -ak[k].x / ak[k].y;
   }
   auto angle = [&](int a, int b) {
     if (ak[a].half != ak[b].half) return ak[a].half < ak[b].half ? -1 : 1;
-    if (ak[a].exact && ak[b].exact)
+    if (ak[a].exact && ak[b].exact) {
+      if (ak[a].key != ak[b].key) return ak[a].key < ak[b].key ? -1 : 1;
       if (const int c = sign_det(ak[a].x, ak[b].y, ak[a].y, ak[b].x); c != 2) return -c;
+    }
     const Ray &A = N.pieces[a].E, &B = N.pieces[b].E;
     return predicates::compare_angle(A.b1, A.a1, B.b1, B.a1);
   };
@@ -575,12 +629,48 @@ bool nfp_export_convex(NoFitPolygon2::Impl& N) {
   // at that edge's first elementary segment in increasing u (x, or y when vertical): the edge's
   // start when it runs towards increasing u or has no vertex inside, else its end.
   std::size_t first = 0;
-  thread_local std::vector<Seg> segs;
-  segs.clear();
-  for (const Group& g : groups) make_seg(segs.emplace_back(), N.pieces[order[g.b]], 0, 0);
-  for (std::size_t k = 1; k < ng; ++k)
-    if (compare_lines_filtered(segs[k], segs[first]) < 0) first = k;
-  if (segs[first].su < 0) {
+  thread_local std::vector<Seg> segs;  // segs[k]: group k's line, made only where needed
+  segs.clear();  // (a Seg is not initialised until made: never copied by a reallocation)
+  segs.resize(ng);
+  thread_local std::vector<char> made;
+  made.assign(ng, 0);
+  auto seg = [&](std::size_t k) -> const Seg& {
+    if (!made[k]) make_seg(segs[k], N.pieces[order[groups[k].b]], 0, 0), made[k] = 1;
+    return segs[k];
+  };
+  // Directions (a1 − b1) as exact doubles (x, y): the rounded slope fl(y / x) is monotone in the exact slope
+  // (a correctly rounded quotient), so a smaller rounded slope is a smaller slope and only equal
+  // roundings (parallel edges, or nearly so) need the exact line order; vertical lines come last
+  // and, the ring having ≥ 3 directions, one line is not vertical.
+  bool by_slope = true;
+  for (const Group& g : groups) {
+    const Ray& E = N.pieces[order[g.b]].E;
+    by_slope = by_slope && ak[order[g.b]].exact && E.a2 == Vec2(0, 0) && E.b2 == Vec2(0, 0);
+  }
+  double qmin = INFINITY;
+  std::size_t ties = 0;
+  if (by_slope) {
+    for (std::size_t k = 0; k < ng; ++k) {
+      const AngleKey& a = ak[order[groups[k].b]];
+      if (a.x == 0) continue;
+      const double q = a.y / a.x;
+      if (ties == 0 || q < qmin) qmin = q, first = k, ties = 1;
+      else if (q == qmin) ++ties;
+    }
+    if (ties > 1) {  // the exact order among the lines of the smallest rounded slope
+      const std::size_t f0 = first;
+      for (std::size_t k = f0 + 1; k < ng; ++k) {
+        const AngleKey& a = ak[order[groups[k].b]];
+        if (a.x != 0 && a.y / a.x == qmin && compare_lines_filtered(seg(k), seg(first)) < 0) first = k;
+      }
+    }
+  }
+  if (ties == 0) {  // not by slope (or, defensively, no line that is not vertical)
+    first = 0;
+    for (std::size_t k = 1; k < ng; ++k)
+      if (compare_lines_filtered(seg(k), seg(first)) < 0) first = k;
+  }
+  if (seg(first).su < 0) {
     const Group& g = groups[first];
     const Ray& E = N.pieces[order[g.b]].E;
     bool inside = false;
@@ -611,7 +701,7 @@ struct Workspace {
   std::vector<int> id, rep, order, zero_points, stamp, pos, us, first, out, fill, ring_verts, ring_start, cuts;
   std::vector<Vec2> rv;
   std::vector<char> fixed, is_vertex, used;
-  std::vector<Seg> segs, sorted;
+  std::vector<Seg> segs;
   struct Edge {
     int a, b;
     std::size_t line;  // the group of its exact supporting line
@@ -632,15 +722,148 @@ struct Workspace {
     int v;
   };
   std::vector<VX> verts;
+  // The linked path: per vertex the piece leaving it and whether one enters; per ring its first
+  // piece and its chain in ring_chain[ring_at[k], ring_at[k + 1]).
+  std::vector<int> next_seg, ring_chain, ring_at, ring_first, ring_rank;
+  std::vector<char> has_in, dup, through;
 };
+
+thread_local NfpExportPath last_path = NfpExportPath::General;
+
+// The linked path: when every vertex (of a piece of positive length) starts exactly one piece and
+// ends exactly one, no vertex lies on a piece's line inside its box other than its own ends, and no
+// two consecutive pieces of a chain run back along one line, the general path's elementary
+// segments are the pieces themselves and its linking has one choice at every vertex: the rings are
+// the cycles of "the piece leaving the end of this one". The general path takes its rings in the
+// order of their first edge (by line, then by position along it) and starts each at that edge;
+// here the same first edge is found by a scan of each cycle (O(N) line comparisons instead of the
+// O(N log N) sort). Collinear consecutive pieces (the same exact line, same direction) drop their
+// shared vertex, as the general path's pass-through. False, nothing decided, when the pieces are
+// not of this form (then the general path runs).
+bool export_linked(Workspace& W, const std::vector<End>& ends, const std::vector<Vec2>& rv, int nv) {
+  const std::vector<Seg>& segs = W.segs;
+  const std::size_t ns = segs.size();
+  if (ns < 3) return false;
+  std::vector<int>& next = W.next_seg;
+  next.assign(nv, -1);
+  std::vector<char>& has_in = W.has_in;
+  has_in.assign(nv, 0);
+  // A piece with the same ends as an earlier one, the same way (coinciding candidates of different
+  // edge pairs): the general path covers that segment once, one edge; it is skipped here.
+  std::vector<char>& dup = W.dup;
+  dup.assign(ns, 0);
+  for (std::size_t i = 0; i < ns; ++i) {
+    const Seg& s = segs[i];
+    if (next[s.a] >= 0 && segs[std::size_t(next[s.a])].b == s.b) {
+      dup[i] = 1;
+      continue;
+    }
+    if (next[s.a] >= 0 || has_in[s.b]) return false;
+    next[s.a] = int(i);
+    has_in[s.b] = 1;
+  }
+  for (int v = 0; v < nv; ++v)
+    if ((next[v] >= 0) != (has_in[v] != 0)) return false;
+  // No vertex splits a piece (the general path would cut it there, and mark that vertex).
+  const std::vector<Workspace::VX>& verts = W.verts;
+  for (std::size_t i = 0; i < ns; ++i) {
+    if (dup[i]) continue;
+    const Seg& s = segs[i];
+    const Vec2 lo = rv[s.a].cwiseMin(rv[s.b]), hi = rv[s.a].cwiseMax(rv[s.b]);
+    auto it = std::lower_bound(verts.begin(), verts.end(), lo.x(), [](const Workspace::VX& a, double x) { return a.x < x; });
+    for (; it != verts.end() && it->x <= hi.x(); ++it) {
+      if (it->y < lo.y() || it->y > hi.y() || it->v == s.a || it->v == s.b) continue;
+      if (on_line(ends[W.rep[it->v]], s)) return false;
+    }
+  }
+  // The general path's edge order: line order, then along the line by the lower end (pieces on
+  // one line are disjoint but for shared ends here). 0 only for one piece (or an inconsistency).
+  auto edge_order = [&](int x, int y) {
+    if (x == y) return 0;
+    const Seg &s = segs[x], &t = segs[y];
+    if (const int c = compare_lines_filtered(s, t); c != 0) return c;
+    const int axis = s.vertical ? 1 : 0;
+    const int p = s.su > 0 ? s.a : s.b, q = t.su > 0 ? t.a : t.b;
+    if (rv[p][axis] != rv[q][axis]) return rv[p][axis] < rv[q][axis] ? -1 : 1;
+    return p == q ? 0 : compare_coord(ends[W.rep[p]], ends[W.rep[q]], axis);
+  };
+  std::vector<char>& used = W.used;
+  used.assign(ns, 0);
+  std::vector<int>&chain = W.ring_chain, &at = W.ring_at, &first = W.ring_first;
+  std::vector<char>& through = W.through;  // through[i]: the piece before chain[i] is on its line
+  chain.clear();
+  through.clear();
+  at.assign(1, 0);
+  first.clear();
+  for (std::size_t i0 = 0; i0 < ns; ++i0) {
+    if (used[i0] || dup[i0]) continue;
+    const std::size_t c0 = chain.size();
+    for (int i = int(i0); !used[i]; i = next[segs[i].b]) {
+      used[i] = 1;
+      chain.push_back(i);
+    }
+    const std::size_t m = chain.size() - c0;
+    if (m < 3) return false;  // two pieces between the same two vertices: a slit
+    std::size_t best = c0;
+    for (std::size_t k = c0; k < chain.size(); ++k) {
+      const Seg &in = segs[chain[k == c0 ? chain.size() - 1 : k - 1]], &o = segs[chain[k]];
+      const int c = compare_lines_filtered(in, o);
+      if (c == 0 && in.su != o.su) return false;  // back along the same line: overlapping pieces
+      through.push_back(c == 0);
+      if (k > c0) {
+        const int b = edge_order(chain[k], chain[best]);
+        if (b == 0) return false;
+        if (b < 0) best = k;
+      }
+    }
+    std::rotate(chain.begin() + c0, chain.begin() + best, chain.end());
+    std::rotate(through.begin() + c0, through.begin() + best, through.end());
+    first.push_back(chain[c0]);
+    at.push_back(int(chain.size()));
+  }
+  // Rings in the order of their first edges (few rings: insertion sort).
+  const std::size_t nr = first.size();
+  std::vector<int>& rank = W.ring_rank;
+  rank.resize(nr);
+  for (std::size_t k = 0; k < nr; ++k) {
+    std::size_t j = k;
+    for (; j > 0; --j) {
+      const int b = edge_order(first[k], first[rank[j - 1]]);
+      if (b == 0) return false;
+      if (b > 0) break;
+      rank[j] = rank[j - 1];
+    }
+    rank[j] = int(k);
+  }
+  std::vector<int>&ring_verts = W.ring_verts, &ring_start = W.ring_start;
+  for (std::size_t r = 0; r < nr; ++r) {
+    const std::size_t k = std::size_t(rank[r]), r0 = ring_verts.size();
+    for (int i = at[k]; i < at[k + 1]; ++i)
+      if (!through[std::size_t(i)]) ring_verts.push_back(segs[chain[std::size_t(i)]].a);
+    if (ring_verts.size() - r0 >= 3) ring_start.push_back(int(ring_verts.size()));
+    else ring_verts.resize(r0);
+  }
+  for (const Seg& s : segs) W.is_vertex[s.a] = W.is_vertex[s.b] = 1;
+  return true;
+}
 
 }  // namespace
 
 const NoFitPolygon2::Impl& nfp_impl(const NoFitPolygon2& n) { return *n.impl_; }
 
-void nfp_export(NoFitPolygon2::Impl& N) {
+NfpExportPath nfp_export_last_path() { return last_path; }
+
+void nfp_export(NoFitPolygon2::Impl& N) { nfp_export_by(N, NfpExportPath::Any); }
+
+bool nfp_export_by(NoFitPolygon2::Impl& N, NfpExportPath path) {
   // Two convex shapes: the pieces are edges of the convex sum, ordered by angle.
-  if (nonconvex2::convex_shape(N.S.P) && nonconvex2::convex_shape(N.S.Q) && nfp_export_convex(N)) return;
+  if (path == NfpExportPath::Convex || (path == NfpExportPath::Any && nonconvex2::convex_shape(N.S.P) && nonconvex2::convex_shape(N.S.Q))) {
+    if (nfp_export_convex(N)) {
+      last_path = NfpExportPath::Convex;
+      return true;
+    }
+    if (path == NfpExportPath::Convex) return false;
+  }
   thread_local Workspace W;
   const std::size_t np = N.pieces.size();
   // 1. Every end, rounded to nearest; ends[2k], ends[2k + 1] are piece k's lo and hi.
@@ -708,6 +931,10 @@ void nfp_export(NoFitPolygon2::Impl& N) {
   int nv = 0;
   std::vector<int>& rep = W.rep;  // rep[vertex id] = one of its ends
   rep.clear();
+  std::vector<Vec2>& rv = W.rv;  // rv[vertex id]: its rounding (below)
+  rv.clear();
+  std::vector<char>& fixed = W.fixed;  // rv from a TwoSum rounding of a sum vertex
+  fixed.clear();
   {
     // A sum vertex that is an exact double pair against a crossing with FlX-exact numerators and
     // denominator (integer data): equal iff num = x·den for both coordinates, each product exact
@@ -768,20 +995,15 @@ void nfp_export(NoFitPolygon2::Impl& N) {
         rep.push_back(int(e));
         vnext.push_back(ghead[g]);
         ghead[g] = id[e];
+        // The exported rounding of a vertex: that of its first sum-vertex end with a TwoSum rounding
+        // (the previous export's choice, which also fixes the sign of a zero), else of its first end.
+        rv.push_back(ends[e].r);
+        fixed.push_back(ends[e].r_sum);
+      } else if (ends[e].r_sum && !fixed[id[e]]) {
+        rv[id[e]] = ends[e].r;
+        fixed[id[e]] = 1;
       }
     }
-  }
-  // The exported rounding of a vertex: that of its first sum-vertex end with a TwoSum rounding (the
-  // previous export's choice, which also fixes the sign of a zero), else of any end.
-  std::vector<Vec2>& rv = W.rv;
-  rv.resize(nv);
-  {
-    std::vector<char>& fixed = W.fixed;
-    fixed.assign(nv, 0);
-    for (std::size_t e = 0; e < ends.size(); ++e)
-      if (ends[e].r_sum && !fixed[id[e]]) rv[id[e]] = ends[e].r, fixed[id[e]] = 1;
-    for (int v = 0; v < nv; ++v)
-      if (!fixed[v]) rv[v] = ends[rep[v]].r;
   }
 
   std::vector<Seg>& segs = W.segs;
@@ -796,16 +1018,6 @@ void nfp_export(NoFitPolygon2::Impl& N) {
     }
     make_seg(segs.emplace_back(), N.pieces[k], ia, ib);
   }
-  {  // sorted by line (indices: a Seg is large)
-    std::vector<int>& order = W.order;
-    order.resize(segs.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = int(i);
-    std::sort(order.begin(), order.end(), [&](int x, int y) { return compare_lines_filtered(segs[x], segs[y]) < 0; });
-    std::vector<Seg>& sorted = W.sorted;
-    sorted.clear();
-    for (int i : order) sorted.push_back(segs[i]);
-    segs.swap(sorted);
-  }
 
   // Every vertex (each is an end of a piece of positive length or a zero-length one) with its
   // rounding inline, sorted by rounded x for range scans.
@@ -814,142 +1026,154 @@ void nfp_export(NoFitPolygon2::Impl& N) {
   for (int v = 0; v < nv; ++v) verts[v] = {rv[v].x(), rv[v].y(), v};
   std::sort(verts.begin(), verts.end(), [](const Workspace::VX& a, const Workspace::VX& b) { return a.x < b.x; });
 
-  using Edge = Workspace::Edge;
-  using Iv = Workspace::Iv;
-  std::vector<Edge>& edges = W.edges;
-  edges.clear();
   std::vector<std::array<int, 2>>& slits = W.slits;
   slits.clear();
   std::vector<char>& is_vertex = W.is_vertex;  // ends of edges and slit pieces
   is_vertex.assign(nv, 0);
-  std::vector<int>&stamp = W.stamp, &pos = W.pos;
-  stamp.assign(nv, -1);
-  pos.assign(nv, 0);
-  std::vector<Iv>& ivs = W.ivs;
-  std::vector<int>& us = W.us;
-  for (std::size_t g0 = 0, g1; g0 < segs.size(); g0 = g1) {
-    g1 = g0 + 1;
-    while (g1 < segs.size() && compare_lines_filtered(segs[g1], segs[g0]) == 0) ++g1;
-    const int axis = segs[g0].vertical ? 1 : 0;
-    ivs.clear();
-    us.clear();
-    Vec2 lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
-    for (std::size_t k = g0; k < g1; ++k) {
-      const Seg& s = segs[k];
-      const bool fwd = s.su > 0;  // b − a is a positive multiple of E's direction
-      ivs.push_back({fwd ? s.a : s.b, fwd ? s.b : s.a, fwd});
-      for (int v : {s.a, s.b}) {
-        if (stamp[v] != int(g0)) stamp[v] = int(g0), us.push_back(v);
-        lo = lo.cwiseMin(rv[v]);
-        hi = hi.cwiseMax(rv[v]);
-      }
-    }
-    // Other exact vertices on this line inside its extent split it too. Rounding is monotone, so
-    // the extent's points round into [lo, hi]; those in the box are tested exactly.
-    auto it = std::lower_bound(verts.begin(), verts.end(), lo.x(), [](const Workspace::VX& a, double x) { return a.x < x; });
-    bool split = false;
-    for (; it != verts.end() && it->x <= hi.x(); ++it) {
-      const int v = it->v;
-      if (it->y < lo.y() || it->y > hi.y() || stamp[v] == int(g0)) continue;
-      if (!on_line(ends[rep[v]], segs[g0])) continue;
-      stamp[v] = int(g0);
-      us.push_back(v);
-      split = true;
-    }
-    if (g1 == g0 + 1 && !split) {  // a lone piece on its line, nothing inside it: one boundary edge
-      is_vertex[segs[g0].a] = 1;
-      is_vertex[segs[g0].b] = 1;
-      edges.push_back({segs[g0].a, segs[g0].b, g0, ivs[0].fwd});
-      continue;
-    }
-    // Distinct vertices on one line have distinct u: rounded u first, exact on equal roundings.
-    std::sort(us.begin(), us.end(), [&](int x, int y) {
-      if (rv[x][axis] != rv[y][axis]) return rv[x][axis] < rv[y][axis];
-      return x != y && compare_coord(ends[rep[x]], ends[rep[y]], axis) < 0;
-    });
-    for (std::size_t i = 0; i < us.size(); ++i) pos[us[i]] = int(i);
-    bool slit_open = false;
-    int slit_start = -1;
-    for (std::size_t i = 0; i + 1 < us.size(); ++i) {
-      bool f = false, b = false;
-      for (const Iv& iv : ivs)
-        if (pos[iv.lo] <= int(i) && int(i) + 1 <= pos[iv.hi]) (iv.fwd ? f : b) = true;
-      const int p0 = us[i], p1 = us[i + 1];
-      if (f || b) {
-        is_vertex[p0] = 1;
-        is_vertex[p1] = 1;
-      }
-      if (f && b) {
-        if (!slit_open) slit_start = p0;
-        slit_open = true;
-        if (i + 2 == us.size()) slits.push_back({slit_start, p1});
-        continue;
-      }
-      if (slit_open) slits.push_back({slit_start, p0});
-      slit_open = false;
-      if (f) edges.push_back({p0, p1, g0, true});
-      else if (b) edges.push_back({p1, p0, g0, false});
-    }
-  }
-
-  // Link edges into rings. Edges leaving each vertex, in edge order (compressed rows).
-  std::vector<int>&first = W.first, &out = W.out, &fill = W.fill;
-  first.assign(nv + 1, 0);
-  out.resize(edges.size());
-  for (const Edge& e : edges) ++first[e.a + 1];
-  for (int v = 0; v < nv; ++v) first[v + 1] += first[v];
-  fill.assign(first.begin(), first.end() - 1);
-  for (std::size_t e = 0; e < edges.size(); ++e) out[fill[edges[e].a]++] = int(e);
-  std::vector<char>& used = W.used;
-  used.assign(edges.size(), 0);
   // Rings as vertex ids: ring k is ring_verts[ring_start[k], ring_start[k + 1]).
   std::vector<int>&ring_verts = W.ring_verts, &ring_start = W.ring_start;
   ring_verts.clear();
   ring_start.assign(1, 0);
-  // The direction of an edge: its line's ray direction, signed to point from a to b.
-  auto dir = [&](const Edge& e) {
-    const Seg& s = segs[e.line];
-    return Dir{s.E, e.fwd ? s.su : -s.su};
-  };
-  std::vector<std::size_t>& chain = W.chain;
-  for (std::size_t e0 = 0; e0 < edges.size(); ++e0) {
-    if (used[e0]) continue;
-    chain.clear();
-    std::size_t e = e0;
-    for (;;) {
-      used[e] = 1;
-      chain.push_back(e);
-      const int v = edges[e].b;
-      std::size_t best = edges.size();
-      for (int i = first[v]; i < first[v + 1]; ++i) {
-        const std::size_t c = std::size_t(out[i]);
-        if (used[c] && c != e0) continue;
-        if (best == edges.size()) {
-          best = c;
+  const bool linked = path != NfpExportPath::General && export_linked(W, ends, rv, nv);
+  if (!linked && path == NfpExportPath::Linked) return false;
+  last_path = linked ? NfpExportPath::Linked : NfpExportPath::General;
+  if (!linked) {
+    // Sorted by line: sgs(k) is the k-th (indices only: a Seg is large).
+    std::vector<int>& order = W.order;
+    order.resize(segs.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = int(i);
+    std::sort(order.begin(), order.end(), [&](int x, int y) { return compare_lines_filtered(segs[x], segs[y]) < 0; });
+    auto sgs = [&](std::size_t k) -> const Seg& { return segs[std::size_t(order[k])]; };
+
+    using Edge = Workspace::Edge;
+    using Iv = Workspace::Iv;
+    std::vector<Edge>& edges = W.edges;
+    edges.clear();
+    std::vector<int>&stamp = W.stamp, &pos = W.pos;
+    stamp.assign(nv, -1);
+    pos.assign(nv, 0);
+    std::vector<Iv>& ivs = W.ivs;
+    std::vector<int>& us = W.us;
+    for (std::size_t g0 = 0, g1; g0 < segs.size(); g0 = g1) {
+      g1 = g0 + 1;
+      while (g1 < segs.size() && compare_lines_filtered(sgs(g1), sgs(g0)) == 0) ++g1;
+      const int axis = sgs(g0).vertical ? 1 : 0;
+      ivs.clear();
+      us.clear();
+      Vec2 lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
+      for (std::size_t k = g0; k < g1; ++k) {
+        const Seg& s = sgs(k);
+        const bool fwd = s.su > 0;  // b − a is a positive multiple of E's direction
+        ivs.push_back({fwd ? s.a : s.b, fwd ? s.b : s.a, fwd});
+        for (int v : {s.a, s.b}) {
+          if (stamp[v] != int(g0)) stamp[v] = int(g0), us.push_back(v);
+          lo = lo.cwiseMin(rv[v]);
+          hi = hi.cwiseMax(rv[v]);
+        }
+      }
+      // Other exact vertices on this line inside its extent split it too. Rounding is monotone, so
+      // the extent's points round into [lo, hi]; those in the box are tested exactly.
+      auto it = std::lower_bound(verts.begin(), verts.end(), lo.x(), [](const Workspace::VX& a, double x) { return a.x < x; });
+      bool split = false;
+      for (; it != verts.end() && it->x <= hi.x(); ++it) {
+        const int v = it->v;
+        if (it->y < lo.y() || it->y > hi.y() || stamp[v] == int(g0)) continue;
+        if (!on_line(ends[rep[v]], sgs(g0))) continue;
+        stamp[v] = int(g0);
+        us.push_back(v);
+        split = true;
+      }
+      if (g1 == g0 + 1 && !split) {  // a lone piece on its line, nothing inside it: one boundary edge
+        is_vertex[sgs(g0).a] = 1;
+        is_vertex[sgs(g0).b] = 1;
+        edges.push_back({sgs(g0).a, sgs(g0).b, g0, ivs[0].fwd});
+        continue;
+      }
+      // Distinct vertices on one line have distinct u: rounded u first, exact on equal roundings.
+      std::sort(us.begin(), us.end(), [&](int x, int y) {
+        if (rv[x][axis] != rv[y][axis]) return rv[x][axis] < rv[y][axis];
+        return x != y && compare_coord(ends[rep[x]], ends[rep[y]], axis) < 0;
+      });
+      for (std::size_t i = 0; i < us.size(); ++i) pos[us[i]] = int(i);
+      bool slit_open = false;
+      int slit_start = -1;
+      for (std::size_t i = 0; i + 1 < us.size(); ++i) {
+        bool f = false, b = false;
+        for (const Iv& iv : ivs)
+          if (pos[iv.lo] <= int(i) && int(i) + 1 <= pos[iv.hi]) (iv.fwd ? f : b) = true;
+        const int p0 = us[i], p1 = us[i + 1];
+        if (f || b) {
+          is_vertex[p0] = 1;
+          is_vertex[p1] = 1;
+        }
+        if (f && b) {
+          if (!slit_open) slit_start = p0;
+          slit_open = true;
+          if (i + 2 == us.size()) slits.push_back({slit_start, p1});
           continue;
         }
-        Dir r = dir(edges[e]);  // back along the incoming edge
-        r.s = -r.s;
-        if (larger_ccw_angle(r, dir(edges[c]), dir(edges[best]))) best = c;
+        if (slit_open) slits.push_back({slit_start, p0});
+        slit_open = false;
+        if (f) edges.push_back({p0, p1, g0, true});
+        else if (b) edges.push_back({p1, p0, g0, false});
       }
-      if (best == e0) break;  // closed
-      // Every vertex of ∂O has as many pieces leaving as entering; a dead end means the pieces
-      // are inconsistent, which must not be exported as if it were a ring.
-      if (best == edges.size())
-        throw std::logic_error("no-fit polygon: a boundary chain does not close (internal inconsistency)");
-      e = best;
     }
-    const std::size_t r0 = ring_verts.size();
-    for (std::size_t k = 0; k < chain.size(); ++k) {
-      const Edge& in = edges[chain[(k + chain.size() - 1) % chain.size()]];
-      const Edge& o = edges[chain[k]];
-      // Pass-through: the same exact line (one group per line) in the same direction.
-      if (chain.size() > 2 && in.line == o.line && in.fwd == o.fwd) continue;
-      ring_verts.push_back(o.a);
+
+    // Link edges into rings. Edges leaving each vertex, in edge order (compressed rows).
+    std::vector<int>&first = W.first, &out = W.out, &fill = W.fill;
+    first.assign(nv + 1, 0);
+    out.resize(edges.size());
+    for (const Edge& e : edges) ++first[e.a + 1];
+    for (int v = 0; v < nv; ++v) first[v + 1] += first[v];
+    fill.assign(first.begin(), first.end() - 1);
+    for (std::size_t e = 0; e < edges.size(); ++e) out[fill[edges[e].a]++] = int(e);
+    std::vector<char>& used = W.used;
+    used.assign(edges.size(), 0);
+    // The direction of an edge: its line's ray direction, signed to point from a to b.
+    auto dir = [&](const Edge& e) {
+      const Seg& s = sgs(e.line);
+      return Dir{s.E, e.fwd ? s.su : -s.su};
+    };
+    std::vector<std::size_t>& chain = W.chain;
+    for (std::size_t e0 = 0; e0 < edges.size(); ++e0) {
+      if (used[e0]) continue;
+      chain.clear();
+      std::size_t e = e0;
+      for (;;) {
+        used[e] = 1;
+        chain.push_back(e);
+        const int v = edges[e].b;
+        std::size_t best = edges.size();
+        for (int i = first[v]; i < first[v + 1]; ++i) {
+          const std::size_t c = std::size_t(out[i]);
+          if (used[c] && c != e0) continue;
+          if (best == edges.size()) {
+            best = c;
+            continue;
+          }
+          Dir r = dir(edges[e]);  // back along the incoming edge
+          r.s = -r.s;
+          if (larger_ccw_angle(r, dir(edges[c]), dir(edges[best]))) best = c;
+        }
+        if (best == e0) break;  // closed
+        // Every vertex of ∂O has as many pieces leaving as entering; a dead end means the pieces
+        // are inconsistent, which must not be exported as if it were a ring.
+        if (best == edges.size())
+          throw std::logic_error("no-fit polygon: a boundary chain does not close (internal inconsistency)");
+        e = best;
+      }
+      const std::size_t r0 = ring_verts.size();
+      for (std::size_t k = 0; k < chain.size(); ++k) {
+        const Edge& in = edges[chain[(k + chain.size() - 1) % chain.size()]];
+        const Edge& o = edges[chain[k]];
+        // Pass-through: the same exact line (one group per line) in the same direction.
+        if (chain.size() > 2 && in.line == o.line && in.fwd == o.fwd) continue;
+        ring_verts.push_back(o.a);
+      }
+      if (ring_verts.size() - r0 >= 3) ring_start.push_back(int(ring_verts.size()));
+      else ring_verts.resize(r0);
     }
-    if (ring_verts.size() - r0 >= 3) ring_start.push_back(int(ring_verts.size()));
-    else ring_verts.resize(r0);
-  }
+  }  // general path
   const std::size_t nr = ring_start.size() - 1;
   auto ring_of = [&](std::size_t k) {
     return std::vector<int>(ring_verts.begin() + ring_start[k], ring_verts.begin() + ring_start[k + 1]);
@@ -1043,6 +1267,7 @@ void nfp_export(NoFitPolygon2::Impl& N) {
   N.points.clear();
   for (int p : zero_points)
     if (!is_vertex[p]) N.points.push_back(rv[p]);
+  return true;
 }
 
 }  // namespace pendepth

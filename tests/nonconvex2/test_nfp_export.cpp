@@ -9,7 +9,8 @@
 // 1e6, scales of 2^-30 and 2^-960 (subnormal gaps: the rational fallbacks), inputs chosen to take
 // each exact-double shortcut of the export and each of its fallbacks (integers, large integers,
 // dyadic offsets, integers against tenths); each also with its pieces shuffled (another interning
-// and grouping order). Pinned seeds.
+// and grouping order); the export's linked path and its general path each run on their own on the
+// same pieces (nesting pairs, grid stars, holes, a point on an edge). Pinned seeds.
 #include <pendepth/nfp2.hpp>
 
 #include <gtest/gtest.h>
@@ -26,6 +27,7 @@
 #include "nfp_export_rational.hpp"
 #include "nfp_shapes.hpp"
 #include "nonconvex2/nfp_impl.hpp"
+#include "nonconvex2/nfp_rings.hpp"
 #include "polygon2/shapes.hpp"
 #include "test_scale.hpp"
 
@@ -263,6 +265,93 @@ TEST(NfpExport, ConvexPairsByAngle) {
   }
   std::cout << "[nfp export] convex pairs by angle " << fast << ", general " << general << "\n";
   EXPECT_GT(fast, 10 * general);  // the angle path is the one taken on convex pairs
+}
+
+// The linked path (every vertex starts one piece and ends one, no vertex inside a piece: the pieces
+// are the edges) and the general path (line groups cut into elementary segments), each run on its
+// own on the same pieces and compared with the oracle: every pair must give the oracle's output
+// by the general path, and by the linked path wherever that one applies. Inputs chosen to take
+// each: nesting pairs (both: overlapping collinear pieces with different ends send 3–31 % of the
+// non-convex pairs to the general path; coinciding pieces, the same ends the same way, are one edge
+// on both), small integer stars (slits, touching parts, overlapping collinear pieces),
+// the same moved and scaled (the linked path's line order and its tie-break along a line on
+// inexact data), plates with a hole (a hole ring: ring order by first edge), a rectangle with a
+// collinear vertex (consecutive pieces on one line: pass-through vertices dropped), random
+// polygons with holes against stars (a vertex of one part on an edge of another). Also checks
+// that nfp_export itself takes the linked path whenever it applies to a non-convex pair.
+TEST(NfpExport, LinkedAndGeneralPaths) {
+  std::mt19937_64 rng(5150);
+  std::size_t linked = 0, general = 0;
+  auto run = [&](const Polygon& P, const Polygon& Q, const std::string& what) {
+    const NoFitPolygon2 nfp(P, Q);
+    const bool convex = pendepth::nonconvex2::convex_shape(P) && pendepth::nonconvex2::convex_shape(Q);
+    const pendepth::NfpExportPath took = pendepth::nfp_export_last_path();
+    for (int shuffled = 0; shuffled < 2; ++shuffled) {
+      NoFitPolygon2::Impl copy = nfp_impl(nfp);
+      if (shuffled) std::shuffle(copy.pieces.begin(), copy.pieces.end(), rng);
+      const std::string tag = what + (shuffled ? " (shuffled)" : "");
+      ASSERT_TRUE(pendepth::nfp_export_by(copy, pendepth::NfpExportPath::General));
+      expect_same(copy, tag + " by the general path");
+      const bool applies = pendepth::nfp_export_by(copy, pendepth::NfpExportPath::Linked);
+      if (applies) {
+        ++linked;
+        expect_same(copy, tag + " by the linked path");
+        if (!shuffled && !convex) EXPECT_EQ(int(took), int(pendepth::NfpExportPath::Linked)) << what;
+      } else {
+        ++general;
+        if (!shuffled && !convex) EXPECT_EQ(int(took), int(pendepth::NfpExportPath::General)) << what;
+      }
+      if (HasFatalFailure()) return;
+    }
+  };
+  for (const char* file : {"albano.json", "shirts.json", "trousers.json"}) {
+    const auto polys = instance(file);
+    for (std::size_t i = 0; i < polys.size() && !HasFatalFailure(); ++i)
+      for (std::size_t j = 0; j < polys.size() && !HasFatalFailure(); ++j) {
+        const std::string what = std::string(file) + " " + std::to_string(i) + "/" + std::to_string(j);
+        run(polys[i], polys[j], what);
+        if ((i + j) % 4 == 0) run(shifted(scaled_by(polys[i], 0.1), Vec2(1e6, -2e6)), scaled_by(polys[j], 0.1), what + " moved / 10");
+      }
+  }
+  for (int it = 0; it < pendepth_test::scaled(150) && !HasFatalFailure(); ++it) {
+    const Polygon P = star(rng, 5 + int(rng() % 6), 2, 6, true);
+    const Polygon Q = it % 3 == 0 ? P : star(rng, 4 + int(rng() % 5), 1, 4, true);
+    run(P, Q, "grid " + std::to_string(it));
+    run(scaled_by(P, 0.1), scaled_by(Q, 0.1), "grid / 10 " + std::to_string(it));
+    run(shifted(P, Vec2(0.5, -0.25)), shifted(Q, Vec2(0.125, 0.75)), "grid dyadic offsets " + std::to_string(it));
+  }
+  // Random polygons with holes against stars: vertices of one part touching an edge of another
+  // (a vertex inside a piece: the general path must cut it there).
+  for (int it = 0; it < pendepth_test::scaled(200) && !HasFatalFailure(); ++it) {
+    const bool grid = it % 2;
+    const Polygon P = it % 3 == 0 ? polygon2_test::random_polygon(rng, 10 + int(rng() % 10), 1 + int(rng() % 2), grid)
+                                  : star(rng, 8 + int(rng() % 16), 50, 100, grid);
+    const Polygon Q = it % 4 == 3 ? polygon2_test::random_polygon(rng, 8, 1, grid) : star(rng, 5 + int(rng() % 10), 15, 45, grid);
+    run(P, Q, "random " + std::to_string(it));
+  }
+  const std::vector<Vec2> outer{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  const Polygon square = Polygon::simple(std::vector<Vec2>{{0, 0}, {2, 0}, {2, 2}, {0, 2}}, "square");
+  const Polygon unit = Polygon::simple(std::vector<Vec2>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, "unit");
+  run(Polygon({outer, {{3, 3}, {7, 3}, {7, 7}, {3, 7}}}, "plate"), unit, "plate / unit");
+  run(Polygon({outer, {{3, 3}, {7, 3}, {7, 7}, {3, 7}}}, "plate"), square, "plate / square");
+  run(Polygon::simple(std::vector<Vec2>{{0, 0}, {2, 0}, {4, 0}, {4, 2}, {0, 2}}, "rect with a collinear vertex"), unit, "collinear vertex");
+  // A grid star pair (RandomStarPairs' pair 25) whose no-fit polygon has a zero-length piece on the
+  // interior of a piece: not an isolated point (the general path cuts the piece there), so the
+  // linked path must refuse it.
+  const Polygon star_p = Polygon::simple(
+      std::vector<Vec2>{{77, 1}, {63, 28}, {39, 46}, {-14, 57}, {-54, 27}, {-53, -9}, {-75, -58}, {-11, -63}, {74, -46}, {74, -17},
+                        {69, -9}, {72, -8}},
+      "star P");
+  const Polygon star_q = Polygon::simple(
+      std::vector<Vec2>{{35, 22}, {0, 31}, {-8, 31}, {-16, 32}, {-13, 23}, {-28, 21}, {-25, 18}, {-31, -10}, {-14, -38}, {-4, -19}, {26, -24}},
+      "star Q");
+  run(star_p, star_q, "point on an edge");
+  run(scaled_by(star_p, 0.1), scaled_by(star_q, 0.1), "point on an edge / 10");
+  std::cout << "[nfp export] linked path " << linked << ", general only " << general << "\n";
+  // Both paths exercised on many inputs each (Release ~2100 and ~220; sanitizer builds, which run
+  // an eighth of the random inputs, ~1100 and ~100).
+  EXPECT_GT(linked, 500u);
+  EXPECT_GT(general, 50u);
 }
 
 class Summary : public ::testing::Environment {
