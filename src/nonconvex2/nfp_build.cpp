@@ -34,9 +34,10 @@
 // pairs plus one point test (O(1) sums on real pieces, worst O(nm)) per part and per split point;
 // worst case O(n²m²) exact tests (a candidate met by > 256 others is cut by the reference, O(nm)).
 // Measured (callgrind, Release, per pair over every ordered pair of the nesting instances):
-// albano 137 k instructions (classification 78 k, export 32 k, candidates 11 k, triangulations
-// and their hierarchies 10 k, piece hierarchy 6 k), shirts 152 k, trousers 59 k — the reference
-// cutting with the rational export took 1.16 M on albano (docs/algorithms.md).
+// albano 107 k instructions (classification 59 k, export 26 k, candidates 11 k, triangulations
+// and their hierarchies 9 k, piece hierarchy 2 k), shirts 103 k (59 k, 23 k, 11 k, 8 k, 2 k),
+// trousers 39 k — the reference cutting with the rational export took 1.16 M on albano
+// (docs/algorithms.md).
 // Departure from the usual reduced-convolution builders (CGAL, Clipper):
 // no arrangement of the candidates is built and no winding numbers are computed; membership in O
 // is decided directly by the open convex pair sums, which also yields the slits and isolated

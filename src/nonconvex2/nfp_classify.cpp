@@ -49,10 +49,14 @@
 // meeting pair; per part or point the pair sums whose boxes hold the point, O(1) tests each. For
 // X box-overlapping pairs: O(K log K + X + (K + X)·v), v sums per point (~5 on nesting pieces,
 // worst O(nm)); a candidate met by more than kMaxSplits others is cut by the reference instead.
-// Measured (callgrind, per pair over every ordered pair of the nesting instances): albano 78 k
-// instructions (103 k with triangle-pair point tests), shirts 92 k (133 k), trousers 26 k (32 k);
-// ~26 point tests per shirts pair, ~3 sums per test left undecided by the floating filters (13.5
-// with triangle pairs).
+// Redundant candidates (nfp_build.cpp step 1) split the others where they end on a collinear
+// candidate (crossings of a redundant candidate are crossings of the kept ones on its line) and
+// are not classified. Exact ties of integer-like data (parallel and collinear candidates, a
+// crossing exactly at a candidate's end) are decided by exact differences and products first.
+// Measured (callgrind, per pair over every ordered pair of the nesting instances): albano 59 k
+// instructions (103 k with triangle-pair point tests, 78 k before the redundant candidates and
+// the exact-product ties), shirts 59 k (133 k, 92 k), trousers 14 k (32 k, 26 k); ~3 sums per
+// point test left undecided by the floating filters on shirts (13.5 with triangle pairs).
 #include <algorithm>
 #include <array>
 #include <cmath>
