@@ -284,6 +284,9 @@ NoFitPolygon2::Impl::Impl(const Polygon& P, const Polygon& Q) : S(P, Q) {
   // of large records (~2.5 reallocations per pair).
   pieces.reserve(cand.size());
   nonconvex2::nfp_classify(S, cand, pieces);
+  // Large pairs cover most candidates whole (a 300-vertex star pair: ~10× more candidates than
+  // pieces): the stored no-fit polygon does not keep that slack.
+  if (pieces.capacity() > 2 * pieces.size() + 64) pieces.shrink_to_fit();
   sz.pieces = pieces.size();
   // Step 3: the query index over the piece boxes, read in place. Pieces come candidate by
   // candidate in convolution order (P's edges, then Q's, each in ring order), so runs of

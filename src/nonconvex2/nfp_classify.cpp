@@ -858,9 +858,6 @@ bool convex_shape(const Polygon& S) {
 }
 
 void nfp_classify(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& cands, std::vector<NfpPiece>& out) {
-  // Mostly one piece per kept candidate or fewer: room for that at once (a piece is a large
-  // record; growing the vector by doubling copied each several times).
-  out.reserve(out.size() + cands.size());
   // Two convex shapes: a candidate at a strictly convex vertex is a whole edge of the convex sum
   // P ⊕ (−Q) (the vertex's angle, hence the whole convex shape, lies on the closed outer side of
   // the edge: the vertex is extreme against its outer normal), so nothing covers it and its piece
