@@ -20,7 +20,9 @@
 //   1. candidates = the reduced convolution: an edge of P paired with each vertex of −Q at which
 //      Q + x can touch that edge from outside only at the vertex (both incident Q edges lie on the
 //      non-P side), and symmetrically an edge of Q with the vertices of P; every candidate is an
-//      edge of some convex pair sum S_ij, kept symbolic (P vertex + −Q vertex);
+//      edge of some convex pair sum S_ij, kept symbolic (P vertex + −Q vertex); of the collinear
+//      candidates of two antiparallel edges, one convolution path's are redundant (the other
+//      path covers them) and only split the others in step 2;
 //   2. each candidate is split where other candidates meet it (crossings, collinear ends) and each
 //      part, and each split point, is classified by one exact point test against the open sums
 //      S_ij whose boxes hold it; maximal uncovered runs are the pieces of ∂O (the same pieces as
@@ -37,11 +39,11 @@
 // explicit convolution (DHS §6); export O(N log N) filtered exact predicates. Queries:
 // overlapping(t) is PairDepth2's pair-sum test (worst O(nm), a few sums on real pieces);
 // along/minimum visit O(log N + k) hierarchy nodes for k boxes near the answer (worst O(N)).
-// Measured (docs/benchmarks.md, CPU time): on the nesting pieces (≤ 14 vertices, ~17 pieces of ∂O)
-// σ takes 1.6–3.3 µs and σ_d 1.5–2.9 µs per query; the build takes 7.5–25 µs per pair over every
-// ordered pair of an instance, 3.4–4.0× faster than CGAL's minkowski_sum_2 on albano and
-// trousers, 2.1–2.3× on shirts (small integer pieces with many collinear edges); 5.5–6.1× for
-// two convex pieces, whose candidates are the convex sum's edges. Internal
+// Measured (docs/benchmarks.md, CPU time): on the nesting pieces (≤ 14 vertices, ~12–15 pieces
+// of ∂O) σ takes 1.9–3.4 µs and σ_d 1.2–1.9 µs per query; the build takes 3.6–14 µs per pair over
+// every ordered pair of an instance, 4.3–7.1× faster than CGAL's minkowski_sum_2 (shirts, small
+// integer pieces with many collinear edges, the slowest relative to CGAL); 8.5–9.9× for two
+// convex pieces, whose candidates are the convex sum's edges. Internal
 // inconsistencies of the pieces (a chain that does not close, a hole outside every outer ring)
 // throw std::logic_error rather than export a wrong polygon; no test input has produced one.
 // Departure from a winding-number / ray-parity NFP: membership in O is always decided by the open
