@@ -112,10 +112,9 @@ bool boxes_meet(const NfpCandidate& a, const NfpCandidate& b) {
 // Exact sign of cross(dir a, dir b); candidates' directions are a1 − b1 (a2 = b2 = 0), input
 // differences, so the static-filter predicate applies.
 // A floating filter first (each direction a difference rounded once; 2⁻⁵⁰ of the products covers
-// those and the roundings of the cross product, 2⁻¹⁰⁰⁰ underflow), then the exact predicate.
-// Then, for directions that are exact differences (integer-like data, where exactly parallel
-// candidates are common), the signs of exact products (exact::sign_ab_minus_cd); else the exact
-// predicate.
+// those and the roundings of the cross product, 2⁻¹⁰⁰⁰ underflow); then, for directions that are
+// exact differences (integer-like data, where exactly parallel candidates are common), the sign
+// of exact products (exact::sign_ab_minus_cd); else the exact predicate.
 int parallel_sign(const Ray& a, const Ray& b) {
   const Vec2 da = a.a1 - a.b1, db = b.a1 - b.b1;
   const double p = da.x() * db.y(), q = da.y() * db.x(), cr = p - q;
