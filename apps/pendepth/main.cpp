@@ -1,29 +1,21 @@
-// pendepth — command-line tool (DESIGN.md §3).
+// pendepth — command-line tool (docs/design.md §3): argument parsing plus front-door calls
+// (include/pendepth/pendepth.hpp).
 //
 //   pendepth depth P Q [--offset X,Y[,Z]] [--direction X,Y[,Z]] [--separate] [--json] [--svg FILE]
 //                      [--rotate-q QW,QX,QY,QZ] [--rotate-p QW,QX,QY,QZ]
-//   pendepth batch P Q --queries FILE [--json] [--rotate-q ...] [--rotate-p ...]
+//   pendepth batch P Q --queries FILE [--json] [--threads N] [--rotate-q ...] [--rotate-p ...]
 //   pendepth nfp P Q [--json]
 //
 // Exit status: 0 success, 2 bad input (one line on stderr naming file, line and problem),
 // 1 internal error. Shapes: .wkt (2D polygons); .obj, .off, .stl (3D: the convex hull of the
 // vertices). P and Q must have the same dimension. Rotations are 3D only.
 //
-// 2D algorithm choice: both convex → the convex queries (DHS §3); one polygon non-convex or with
-// holes and the other convex → PolygonDepth2 (DHS §4, §6), built once per run. PolygonDepth2 fixes
-// the polygon, so when Q is the non-convex one the roles are swapped: Q + t overlaps P exactly when
-// P − t overlaps Q, moving Q by v is moving P by −v, so depth(P, Q, t, d) is depth(Q, P, −t, −d)
-// with translation and normal negated, witnesses mapped back into P's frame and features swapped.
-// Two non-convex polygons (issue 5): `depth` asks PairDepth2 (per-query dual-tree descent, no
-// preprocessing beyond the triangulations); `batch` builds the no-fit polygon NoFitPolygon2 once
-// and answers every query on it; `--svg` draws the no-fit polygon (cl O, slits, points).
-// `nfp` prints the no-fit polygon of any two polygons as WKT (see its --help for the semantics).
-#include <pendepth/depth2.hpp>
-#include <pendepth/depth2_nonconvex.hpp>
-#include <pendepth/depth2_polygon.hpp>
-#include <pendepth/depth3.hpp>
+// Engines: Pair2 / Pair3 pick them. `depth` asks one question, so it prepares only what the query
+// needs (Prepare::Queries: two non-convex polygons are answered per query, nothing built);
+// `batch` prepares everything once (Prepare::Full: the depth field, the no-fit polygon) and
+// answers the queries in parallel batches; `--svg` draws the no-fit polygon of non-convex pairs.
 #include <pendepth/io.hpp>
-#include <pendepth/nfp2.hpp>
+#include <pendepth/pendepth.hpp>
 
 #include <CLI/CLI.hpp>
 
@@ -36,14 +28,14 @@
 
 namespace {
 
-using pendepth::ConvexPolygon;
-using pendepth::ConvexPolytope;
 using pendepth::Depth2;
 using pendepth::Depth3;
 using pendepth::InvalidInput;
-using pendepth::NoFitPolygon2;
-using pendepth::Polygon;
+using pendepth::Pair2;
+using pendepth::Pair3;
 using pendepth::Pose3;
+using pendepth::Shape2;
+using pendepth::Shape3;
 using pendepth::Vec2;
 using pendepth::Vec3;
 namespace io = pendepth::io;
@@ -104,103 +96,51 @@ Eigen::Matrix<double, N, 1> parse_numbers(const std::string& text, const char* o
 Vec2 parse_vec(const std::string& text, const char* option) { return parse_numbers<2>(text, option, "X,Y"); }
 Vec3 parse_vec3(const std::string& text, const char* option) { return parse_numbers<3>(text, option, "X,Y,Z"); }
 
-// v scaled by a power of two so its largest |component| lies in [1, 2): exact (up to components
-// 2^-1000 times smaller than the largest), so the library's norms can neither underflow nor
-// overflow. v must not be zero.
-template <class V>
-V rescale(const V& v) {
-  const int e = std::ilogb(v.cwiseAbs().maxCoeff());
-  V r;
-  for (int k = 0; k < v.size(); ++k) r[k] = std::ldexp(v[k], -e);
-  return r;
-}
-
-// --rotate-p / --rotate-q: a quaternion w,x,y,z, normalised by the library (after an exact
-// power-of-two rescaling); zero is bad input. Empty text: the identity.
+// --rotate-p / --rotate-q: a quaternion w,x,y,z, normalised by the library; zero is bad input. Empty text: the identity.
 Eigen::Quaterniond parse_rotation(const std::string& text, const char* option) {
   if (text.empty()) return Eigen::Quaterniond::Identity();
   const Eigen::Vector4d q = parse_numbers<4>(text, option, "QW,QX,QY,QZ");
   if (q.isZero(0)) throw InvalidInput(std::string(option) + ": the quaternion is zero (it must be a rotation)");
-  const Eigen::Vector4d r = rescale(q);
-  return Eigen::Quaterniond(r[0], r[1], r[2], r[3]);
+  return Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
 }
 
 void write_stdout(const std::string& s) { std::fwrite(s.data(), 1, s.size(), stdout); }
 
-// A 2D pair with at least one non-convex polygon (DHS §4): PolygonDepth2 on (polygon, convex),
-// with the roles swapped back when P is the convex one (see the file comment).
-class PolygonPair {
- public:
-  // Takes the shapes of P and Q, exactly one of them convex.
-  PolygonPair(io::Shape2 P, io::Shape2 Q) : P_(std::move(P)), Q_(std::move(Q)), swapped_(P_.convex.has_value()) {
-    pd_.emplace(swapped_ ? *Q_.polygon : *P_.polygon, swapped_ ? *P_.convex : *Q_.convex);
-  }
+// ---- output of 2D results: the io writers take the shapes' own classes ----
 
-  Depth2 minimum(const Vec2& t) const { return back(swapped_ ? pd_->minimum(-t) : pd_->minimum(t), t); }
-  Depth2 along(const Vec2& t, const Vec2& d) const {
-    return back(swapped_ ? pd_->along(-t, -d) : pd_->along(t, d), t);
-  }
-  Depth2 separation(const Vec2& t, const Vec2& d) const {
-    return back(swapped_ ? pd_->separation(-t, -d) : pd_->separation(t, d), t);
-  }
+void append_json(std::string& out, const Depth2& r, const Shape2& P, const Shape2& Q) {
+  if (P.is_convex() && Q.is_convex()) io::append_json(out, r, P.convex(), Q.convex());
+  else if (Q.is_convex()) io::append_json(out, r, P.polygon(), Q.convex());
+  else if (P.is_convex()) io::append_json(out, r, P.convex(), Q.polygon());
+  else io::append_json(out, r, P.polygon(), Q.polygon());
+}
 
-  void append_json(std::string& out, const Depth2& r) const {
-    if (swapped_) io::append_json(out, r, *P_.convex, *Q_.polygon);
-    else io::append_json(out, r, *P_.polygon, *Q_.convex);
-  }
-  std::string summary(const Depth2& r) const {
-    return swapped_ ? io::summary(r, *P_.convex, *Q_.polygon) : io::summary(r, *P_.polygon, *Q_.convex);
-  }
+std::string summary(const Depth2& r, const Shape2& P, const Shape2& Q) {
+  if (P.is_convex() && Q.is_convex()) return io::summary(r, P.convex(), Q.convex());
+  if (Q.is_convex()) return io::summary(r, P.polygon(), Q.convex());
+  if (P.is_convex()) return io::summary(r, P.convex(), Q.polygon());
+  return io::summary(r, P.polygon(), Q.polygon());
+}
 
-  // The picture: P and Q in their own frames; the configuration panel shows ∂O, the boundary of
-  // the set of placements t of Q where the interiors overlap, arcs expanded (for a swapped pair
-  // PolygonDepth2's own set is −O, so its rings are negated).
-  void write_svg(const std::string& path, const Vec2& t, const Depth2& r, const std::optional<Vec2>& d) const {
-    io::SvgScene scene;
-    scene.P = rings(P_);
-    scene.Q = rings(Q_);
-    scene.config = pd_->boundary_rings();
-    if (swapped_)
-      for (auto& ring : scene.config)
-        for (Vec2& x : ring) x = Vec2(0, 0) - x;
-    scene.config_label = "O: placements t where Q + t overlaps P (outline ∂O)";
-    scene.config_target = "t + v on ∂O";
-    io::write_svg(path, scene, t, r, io::SvgOptions{d, true});
+// The picture: P and Q in their own frames; the configuration panel shows M for two convex shapes,
+// else the no-fit polygon (cl O, slits, exact fits).
+void write_svg(const std::string& path, const Pair2& pair, const Vec2& t, const Depth2& r, const std::optional<Vec2>& d) {
+  const Shape2 &P = pair.P(), &Q = pair.Q();
+  if (P.is_convex() && Q.is_convex()) {
+    io::write_svg(path, P.convex(), Q.convex(), t, r, io::SvgOptions{d, true});
+    return;
   }
-
- private:
-  static std::vector<std::vector<Vec2>> rings(const io::Shape2& s) {
-    std::vector<std::vector<Vec2>> out;
-    if (s.convex) {
-      out.emplace_back(s.convex->vertices().begin(), s.convex->vertices().end());
-    } else {
-      for (std::size_t k = 0; k < s.polygon->ring_count(); ++k)
-        out.emplace_back(s.polygon->ring(k).begin(), s.polygon->ring(k).end());
-    }
-    return out;
-  }
-
-  // Maps an answer of the swapped problem (Q fixed at 0, P placed at −t, moved by v') back:
-  // v = −v', and a point x of the swapped frame after the move is x + t + v in P's frame.
-  Depth2 back(Depth2 r, const Vec2& t) const {
-    if (!swapped_) return r;
-    const Vec2 zero(0, 0);
-    r.translation = zero - r.translation;  // 0 − x, never −0
-    r.normal = zero - r.normal;
-    std::swap(r.feature_p, r.feature_q);
-    if (r.overlapping || r.depth > 0) {
-      const Vec2 shift = t + r.translation;
-      const Vec2 wp = r.witness_q + shift, wq = r.witness_p + shift;
-      r.witness_p = wp;
-      r.witness_q = wq;
-    }
-    return r;
-  }
-
-  io::Shape2 P_, Q_;
-  bool swapped_;
-  std::optional<pendepth::PolygonDepth2> pd_;
-};
+  const pendepth::NoFitPolygonParts& nfp = pair.no_fit_polygon();
+  io::SvgScene scene;
+  scene.P = P.rings();
+  scene.Q = Q.rings();
+  for (const auto& poly : nfp.polygons) scene.config.insert(scene.config.end(), poly.begin(), poly.end());
+  scene.config_segments = nfp.slits;
+  scene.config_points = nfp.points;
+  scene.config_label = "no-fit polygon: cl O, slits, exact fits";
+  scene.config_target = "t + v on ∂O";
+  io::write_svg(path, scene, t, r, io::SvgOptions{d, true});
+}
 
 struct DepthArgs {
   std::string p, q, offset, direction, svg, rotate_p, rotate_q;
@@ -222,95 +162,16 @@ int run_depth3(const DepthArgs& a) {
     d = parse_vec3(a.direction, "--direction");
     if (d->isZero(0)) throw InvalidInput("--direction: the direction is zero");
   }
-  const ConvexPolytope P = io::read_convex_polytope(a.p, "P");
-  const ConvexPolytope Q = io::read_convex_polytope(a.q, "Q");
+  const Pair3 pair(Shape3::from_file(a.p, "P"), Shape3::from_file(a.q, "Q"));
   const Pose3 pose_p(rp, Vec3::Zero()), pose_q(rq, t);
-  Depth3 r;
-  if (d) {
-    // Complete separation equals σ_d for convex shapes: once the ray leaves the convex M it
-    // never re-enters.
-    r = pendepth::directional_depth(P, pose_p, Q, pose_q, rescale(*d));
-    if (a.separate) r.kind = pendepth::DepthKind::Separation;
-  } else {
-    r = pendepth::minimum_depth(P, pose_p, Q, pose_q);
-  }
+  const Depth3 r = !d ? pair.minimum(pose_p, pose_q)
+                      : a.separate ? pair.separation(pose_p, pose_q, *d) : pair.along(pose_p, pose_q, *d);
   std::string out;
   if (a.json) {
-    io::append_json(out, r, P, Q);
+    io::append_json(out, r, pair.P().polytope(), pair.Q().polytope());
     out += '\n';
   } else {
-    out = io::summary(r, P, Q);
-  }
-  write_stdout(out);
-  return 0;
-}
-
-int run_depth_polygon(const DepthArgs& a, io::Shape2 P, io::Shape2 Q, const Vec2& t, const std::optional<Vec2>& d) {
-  const PolygonPair pair(std::move(P), std::move(Q));
-  Depth2 r;
-  if (d) {
-    const Vec2 u = rescale(*d);
-    r = a.separate ? pair.separation(t, u) : pair.along(t, u);
-  } else {
-    r = pair.minimum(t);
-  }
-  if (!a.svg.empty()) pair.write_svg(a.svg, t, r, d);
-  std::string out;
-  if (a.json) {
-    pair.append_json(out, r);
-    out += '\n';
-  } else {
-    out = pair.summary(r);
-  }
-  write_stdout(out);
-  return 0;
-}
-
-// The no-fit polygon's parts as a WKT geometry: polygons with holes, slits as 2-point lines, points.
-io::Geometry2 nfp_geometry(const NoFitPolygon2& nfp) {
-  io::Geometry2 g;
-  g.polygons = nfp.polygons();
-  for (const auto& s : nfp.slits()) g.lines.push_back({s[0], s[1]});
-  g.points = nfp.points();
-  return g;
-}
-
-std::vector<std::vector<Vec2>> polygon_rings(const Polygon& P) {
-  std::vector<std::vector<Vec2>> out;
-  for (std::size_t k = 0; k < P.ring_count(); ++k) out.emplace_back(P.ring(k).begin(), P.ring(k).end());
-  return out;
-}
-
-// Two non-convex polygons (or with holes), one placement: PairDepth2, which needs no preprocessing
-// beyond the triangulations; the no-fit polygon is built only for the picture.
-int run_depth_pair(const DepthArgs& a, const Polygon& P, const Polygon& Q, const Vec2& t,
-                   const std::optional<Vec2>& d) {
-  const pendepth::PairDepth2 pd(P, Q);
-  Depth2 r;
-  if (d) {
-    const Vec2 u = rescale(*d);
-    r = a.separate ? pd.separation(t, u) : pd.along(t, u);
-  } else {
-    r = pd.minimum(t);
-  }
-  if (!a.svg.empty()) {
-    const NoFitPolygon2 nfp(P, Q);
-    io::SvgScene scene;
-    scene.P = polygon_rings(P);
-    scene.Q = polygon_rings(Q);
-    for (const auto& poly : nfp.polygons()) scene.config.insert(scene.config.end(), poly.begin(), poly.end());
-    scene.config_segments = nfp.slits();
-    scene.config_points = nfp.points();
-    scene.config_label = "no-fit polygon: cl O, slits, exact fits";
-    scene.config_target = "t + v on ∂O";
-    io::write_svg(a.svg, scene, t, r, io::SvgOptions{d, true});
-  }
-  std::string out;
-  if (a.json) {
-    io::append_json(out, r, P, Q);
-    out += '\n';
-  } else {
-    out = io::summary(r, P, Q);
+    out = io::summary(r, pair.P().polytope(), pair.Q().polytope());
   }
   write_stdout(out);
   return 0;
@@ -319,32 +180,23 @@ int run_depth_pair(const DepthArgs& a, const Polygon& P, const Polygon& Q, const
 int run_depth(const DepthArgs& a) {
   if (pair_dimension(a.p, a.q) == 3) return run_depth3(a);
   reject_rotations(a.rotate_p, a.rotate_q);
-  io::Shape2 SP = io::read_shape2(a.p, "P");
-  io::Shape2 SQ = io::read_shape2(a.q, "Q");
+  const Shape2 P = Shape2::from_file(a.p, "P");
+  const Shape2 Q = Shape2::from_file(a.q, "Q");
   const Vec2 t = a.offset.empty() ? Vec2(0, 0) : parse_vec(a.offset, "--offset");
   std::optional<Vec2> d;
   if (!a.direction.empty()) {
     d = parse_vec(a.direction, "--direction");
     if (d->x() == 0 && d->y() == 0) throw InvalidInput("--direction: the direction is zero");
   }
-  if (SP.polygon && SQ.polygon) return run_depth_pair(a, *SP.polygon, *SQ.polygon, t, d);
-  if (!SP.convex || !SQ.convex) return run_depth_polygon(a, std::move(SP), std::move(SQ), t, d);
-  const ConvexPolygon& P = *SP.convex;
-  const ConvexPolygon& Q = *SQ.convex;
-  Depth2 r;
-  if (d) {
-    const Vec2 u = rescale(*d);
-    r = a.separate ? pendepth::separation_depth(P, Q, t, u) : pendepth::directional_depth(P, Q, t, u);
-  } else {
-    r = pendepth::minimum_depth(P, Q, t);
-  }
-  if (!a.svg.empty()) io::write_svg(a.svg, P, Q, t, r, io::SvgOptions{d, true});
+  const Pair2 pair(P, Q, pendepth::Prepare::Queries);
+  const Depth2 r = !d ? pair.minimum(t) : a.separate ? pair.separation(t, *d) : pair.along(t, *d);
+  if (!a.svg.empty()) write_svg(a.svg, pair, t, r, d);
   std::string out;
   if (a.json) {
-    io::append_json(out, r, P, Q);
+    append_json(out, r, P, Q);
     out += '\n';
   } else {
-    out = io::summary(r, P, Q);
+    out = summary(r, P, Q);
   }
   write_stdout(out);
   return 0;
@@ -352,25 +204,44 @@ int run_depth(const DepthArgs& a) {
 
 struct BatchArgs {
   std::string p, q, queries, rotate_p, rotate_q;
+  unsigned threads = 0;
   bool json = false;
 };
 
-// The loop every batch shares: one answer per query line (the library's InvalidInput gets the
-// query's file and line), CSV rows under `header` or JSON Lines, written in blocks of 1 MiB.
-template <class Query, class Answer, class Json>
-int write_batch(const BatchArgs& a, const std::vector<Query>& queries, const char* header, Answer&& answer,
-                Json&& json) {
+// Answers every query in two parallel batches, σ (zero direction) and σ_d, each in file order;
+// `minimum(ts, out)` and `along(ts, ds, out)` are the pair's batch calls. Returns the answers in
+// query order.
+template <class Result, class Query, class Minimum, class Along>
+std::vector<Result> answer_all(const std::vector<Query>& queries, Minimum&& minimum, Along&& along) {
+  using V = decltype(Query::t);
+  std::vector<V> tm, ta, da;
+  std::vector<std::size_t> im, ia;
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    if (queries[i].d.isZero(0)) {
+      tm.push_back(queries[i].t);
+      im.push_back(i);
+    } else {
+      ta.push_back(queries[i].t);
+      da.push_back(queries[i].d);
+      ia.push_back(i);
+    }
+  }
+  std::vector<Result> rm(tm.size()), ra(ta.size()), out(queries.size());
+  minimum(tm, rm);
+  along(ta, da, ra);
+  for (std::size_t k = 0; k < im.size(); ++k) out[im[k]] = rm[k];
+  for (std::size_t k = 0; k < ia.size(); ++k) out[ia[k]] = ra[k];
+  return out;
+}
+
+// One answer per query line as CSV rows under `header`, or JSON Lines, written in blocks of 1 MiB.
+template <class Result, class Json>
+int write_batch(const BatchArgs& a, const std::vector<Result>& results, const char* header, Json&& json) {
   constexpr std::size_t kFlushBytes = 1 << 20;
   std::string out;
   out.reserve(kFlushBytes + 4096);
   if (!a.json) out += header;
-  for (const Query& q : queries) {
-    decltype(answer(q)) r;
-    try {
-      r = answer(q);
-    } catch (const InvalidInput& e) {
-      throw InvalidInput(a.queries + ":" + std::to_string(q.line) + ": " + e.what());
-    }
+  for (const Result& r : results) {
     if (a.json) {
       json(out, r);
       out += '\n';
@@ -389,71 +260,39 @@ int write_batch(const BatchArgs& a, const std::vector<Query>& queries, const cha
 int run_batch3(const BatchArgs& a) {
   const Eigen::Quaterniond rq = parse_rotation(a.rotate_q, "--rotate-q");
   const Eigen::Quaterniond rp = parse_rotation(a.rotate_p, "--rotate-p");
-  // Hulls and their hierarchies are built here, once for the whole batch.
-  const ConvexPolytope P = io::read_convex_polytope(a.p, "P");
-  const ConvexPolytope Q = io::read_convex_polytope(a.q, "Q");
+  const Pair3 pair(Shape3::from_file(a.p, "P"), Shape3::from_file(a.q, "Q"), pendepth::Prepare::Full);
   const std::vector<io::Query3> queries = io::read_queries3_csv(a.queries);
   const Pose3 pose_p(rp, Vec3::Zero());
-
-  return write_batch(
-      a, queries, "depth,tx,ty,tz\n",
-      [&](const io::Query3& q) -> Depth3 {
-        const Pose3 pose_q(rq, q.t);
-        return q.d.isZero(0) ? pendepth::minimum_depth(P, pose_p, Q, pose_q)
-                             : pendepth::directional_depth(P, pose_p, Q, pose_q, rescale(q.d));
-      },
-      [&](std::string& out, const Depth3& r) { io::append_json(out, r, P, Q); });
+  const auto poses = [&](const std::vector<Vec3>& ts) {
+    std::vector<Pose3> p;
+    p.reserve(ts.size());
+    for (const Vec3& t : ts) p.emplace_back(rq, t);
+    return p;
+  };
+  const std::vector<Depth3> results = answer_all<Depth3>(
+      queries, [&](const std::vector<Vec3>& ts, std::vector<Depth3>& out) { pair.minimum(pose_p, poses(ts), out, a.threads); },
+      [&](const std::vector<Vec3>& ts, const std::vector<Vec3>& ds, std::vector<Depth3>& out) {
+        pair.along(pose_p, poses(ts), ds, out, a.threads);
+      });
+  return write_batch(a, results, "depth,tx,ty,tz\n", [&](std::string& out, const Depth3& r) {
+    io::append_json(out, r, pair.P().polytope(), pair.Q().polytope());
+  });
 }
 
-// A batch with a non-convex polygon: PolygonDepth2 is built once, before the first query.
-int run_batch_polygon(const BatchArgs& a, io::Shape2 P, io::Shape2 Q, const std::vector<io::Query2>& queries) {
-  const PolygonPair pair(std::move(P), std::move(Q));
-  return write_batch(
-      a, queries, "depth,tx,ty\n",
-      [&](const io::Query2& q) -> Depth2 {
-        return (q.d.x() == 0 && q.d.y() == 0) ? pair.minimum(q.t) : pair.along(q.t, rescale(q.d));
-      },
-      [&](std::string& out, const Depth2& r) { pair.append_json(out, r); });
-}
-
-// A batch with two non-convex polygons: the no-fit polygon is built once, before the first query,
-// and every query is answered on it (σ for a zero direction, σ_d otherwise).
-int run_batch_pair(const BatchArgs& a, const Polygon& P, const Polygon& Q, const std::vector<io::Query2>& queries) {
-  const NoFitPolygon2 nfp(P, Q);
-  return write_batch(
-      a, queries, "depth,tx,ty\n",
-      [&](const io::Query2& q) -> Depth2 {
-        return (q.d.x() == 0 && q.d.y() == 0) ? nfp.minimum(q.t) : nfp.along(q.t, rescale(q.d));
-      },
-      [&](std::string& out, const Depth2& r) { io::append_json(out, r, P, Q); });
-}
-
+// 2D: every per-pair structure is built once, before the first query (the depth field of two
+// convex polygons, the no-fit polygon of two non-convex ones).
 int run_batch(const BatchArgs& a) {
   if (pair_dimension(a.p, a.q) == 3) return run_batch3(a);
   reject_rotations(a.rotate_p, a.rotate_q);
-  io::Shape2 SP = io::read_shape2(a.p, "P");
-  io::Shape2 SQ = io::read_shape2(a.q, "Q");
+  const Pair2 pair(Shape2::from_file(a.p, "P"), Shape2::from_file(a.q, "Q"), pendepth::Prepare::Full);
   const std::vector<io::Query2> queries = io::read_queries_csv(a.queries);
-  if (SP.polygon && SQ.polygon) return run_batch_pair(a, *SP.polygon, *SQ.polygon, queries);
-  if (!SP.convex || !SQ.convex) return run_batch_polygon(a, std::move(SP), std::move(SQ), queries);
-  ConvexPolygon P = std::move(*SP.convex);
-  ConvexPolygon Q = std::move(*SQ.convex);
-
-  // σ goes through the preprocessed field, built once and only if some query asks for it.
-  const bool any_minimum = std::any_of(queries.begin(), queries.end(),
-                                       [](const io::Query2& q) { return q.d.x() == 0 && q.d.y() == 0; });
-  std::optional<pendepth::DepthQuery2> field;
-  if (any_minimum) field.emplace(std::move(P), std::move(Q));
-  const ConvexPolygon& PP = field ? field->P() : P;
-  const ConvexPolygon& QQ = field ? field->Q() : Q;
-
-  return write_batch(
-      a, queries, "depth,tx,ty\n",
-      [&](const io::Query2& q) -> Depth2 {
-        return (q.d.x() == 0 && q.d.y() == 0) ? field->minimum(q.t)
-                                              : pendepth::directional_depth(PP, QQ, q.t, rescale(q.d));
-      },
-      [&](std::string& out, const Depth2& r) { io::append_json(out, r, PP, QQ); });
+  const std::vector<Depth2> results = answer_all<Depth2>(
+      queries, [&](const std::vector<Vec2>& ts, std::vector<Depth2>& out) { pair.minimum(ts, out, a.threads); },
+      [&](const std::vector<Vec2>& ts, const std::vector<Vec2>& ds, std::vector<Depth2>& out) {
+        pair.along(ts, ds, out, a.threads);
+      });
+  return write_batch(a, results, "depth,tx,ty\n",
+                     [&](std::string& out, const Depth2& r) { append_json(out, r, pair.P(), pair.Q()); });
 }
 
 struct NfpArgs {
@@ -461,14 +300,16 @@ struct NfpArgs {
   bool json = false;
 };
 
-// The no-fit polygon of any two polygons (convex ones too: read as polygons), as WKT or JSON.
+// The no-fit polygon of any two polygons (convex ones too), as WKT or JSON.
 int run_nfp(const NfpArgs& a) {
   if (shape_dimension(a.p) != 2 || shape_dimension(a.q) != 2)
     throw InvalidInput((shape_dimension(a.p) != 2 ? a.p : a.q) + ": nfp takes 2D shapes (.wkt) only");
-  const Polygon P = io::read_polygon(a.p, "P");
-  const Polygon Q = io::read_polygon(a.q, "Q");
-  const NoFitPolygon2 nfp(P, Q);
-  const io::Geometry2 g = nfp_geometry(nfp);
+  const pendepth::NoFitPolygonParts nfp =
+      pendepth::no_fit_polygon(Shape2::from_file(a.p, "P"), Shape2::from_file(a.q, "Q"));
+  io::Geometry2 g;
+  g.polygons = nfp.polygons;
+  for (const auto& s : nfp.slits) g.lines.push_back({s[0], s[1]});
+  g.points = nfp.points;
   std::string out;
   if (a.json) io::append_json(out, g);
   else out = io::to_wkt(g);
@@ -519,6 +360,8 @@ int main(int argc, char** argv) {
   batch->add_option("Q", ba.q, "moving shape file (same dimension as P)")->required()->type_name("FILE");
   batch->add_option("--queries", ba.queries, "CSV file of queries x,y[,z],dx,dy[,dz]")->required()->type_name("FILE");
   batch->add_flag("--json", ba.json, "print JSON Lines (one object per query) instead of CSV");
+  batch->add_option("--threads", ba.threads, "threads for the queries (default 0: every core; answers do not depend on it)")
+      ->type_name("N");
   batch->add_option("--rotate-q", ba.rotate_q, "3D: rotation of Q for every query (quaternion, normalised)")
       ->type_name("QW,QX,QY,QZ");
   batch->add_option("--rotate-p", ba.rotate_p, "3D: rotation of P (quaternion, normalised)")->type_name("QW,QX,QY,QZ");

@@ -65,6 +65,8 @@ struct Shape2 {
   std::optional<Polygon> polygon;
 };
 Shape2 read_shape2(const std::filesystem::path& path, std::string_view name);
+/// As read_shape2, for a parsed polygon; error messages start "SOURCE:LINE: ".
+Shape2 shape2_from_wkt(const WktPolygon& w, std::string_view source, std::string_view name);
 
 /// The whole content of a file. Throws InvalidInput "PATH: cannot read file (reason)".
 std::string read_text_file(const std::filesystem::path& path);

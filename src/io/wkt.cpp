@@ -175,8 +175,11 @@ Polygon read_polygon(const std::filesystem::path& path, std::string_view name) {
 }
 
 Shape2 read_shape2(const std::filesystem::path& path, std::string_view name) {
-  const WktPolygon w = read_wkt_polygon(path);
-  const std::string src = path.string();
+  return shape2_from_wkt(read_wkt_polygon(path), path.string(), name);
+}
+
+Shape2 shape2_from_wkt(const WktPolygon& w, std::string_view source, std::string_view name) {
+  const std::string src(source);
   Shape2 s;
   if (w.rings.size() == 1) {
     try {

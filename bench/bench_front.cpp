@@ -1,0 +1,158 @@
+// Batches through the front door (include/pendepth/pendepth.hpp) on 1 and 2 threads: the
+// speed-up of Pair2 / Pair3 batch calls over the cores, per kind of query (issue 14: ≥ 1.8× on
+// 2 cores for queries of ≥ 1 µs). Wall-clock time (UseRealTime), 4096 queries per batch, shapes
+// and pairs prepared once outside the timed loop, as a user would.
+//
+//   bench_front --benchmark_filter=... ; the argument is the thread count (1, 2).
+// Ratios (time at 1 thread / time at 2) are in docs/benchmarks.md.
+#include <pendepth/pendepth.hpp>
+
+#include <benchmark/benchmark.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "common.hpp"
+
+namespace {
+
+using namespace pendepth;
+
+constexpr std::size_t kBatch = 4096;
+
+std::vector<Shape2> nesting_pieces(const std::string& instance) {
+  std::ifstream in(std::string(PENDEPTH_SHARED_DATA) + "/nesting/" + instance + ".json");
+  nlohmann::json j;
+  in >> j;
+  std::vector<Shape2> out;
+  for (const auto& item : j["items"]) {
+    std::vector<Vec2> r;
+    for (const auto& p : item["shape"]["data"]) r.push_back({p[0].get<double>(), p[1].get<double>()});
+    out.emplace_back(r, std::vector<std::vector<Vec2>>{}, instance);
+  }
+  return out;
+}
+
+// Placements over the box of the configuration space of P and Q (a mix of overlapping and
+// apart), directions uniform.
+void placements(const Shape2& P, const Shape2& Q, std::vector<Vec2>& ts, std::vector<Vec2>& ds) {
+  Vec2 lo(1e300, 1e300), hi(-1e300, -1e300), qlo(1e300, 1e300), qhi(-1e300, -1e300);
+  for (const Vec2& p : P.rings()[0]) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  for (const Vec2& q : Q.rings()[0]) qlo = qlo.cwiseMin(q), qhi = qhi.cwiseMax(q);
+  const Vec2 a = lo - qhi, b = hi - qlo;
+  std::mt19937_64 rng(42);
+  std::uniform_real_distribution<double> u(0, 1), w(-1, 1);
+  ts.clear();
+  ds.clear();
+  for (std::size_t k = 0; k < kBatch; ++k) {
+    ts.emplace_back(a.x() + u(rng) * (b.x() - a.x()), a.y() + u(rng) * (b.y() - a.y()));
+    ds.emplace_back(w(rng), w(rng) + 1e-3);
+  }
+}
+
+enum class Query { Minimum, Along, Overlap };
+
+void run2(benchmark::State& state, const Pair2& pair, Query q) {
+  std::vector<Vec2> ts, ds;
+  placements(pair.P(), pair.Q(), ts, ds);
+  std::vector<Depth2> out(ts.size());
+  std::unique_ptr<bool[]> o(new bool[ts.size()]);
+  const unsigned threads = static_cast<unsigned>(state.range(0));
+  for (auto _ : state) {
+    if (q == Query::Minimum) pair.minimum(ts, out, threads);
+    else if (q == Query::Along) pair.along(ts, ds, out, threads);
+    else pair.overlapping(ts, std::span<bool>(o.get(), ts.size()), threads);
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(ts.size()));
+}
+
+const Pair2& convex_pair(std::size_t n) {
+  static std::map<std::size_t, Pair2> pairs;
+  auto it = pairs.find(n);
+  if (it == pairs.end()) {
+    pendepth::bench::Rng rng(7 + n);
+    const Shape2 P(pendepth::bench::random_ellipse_polygon(n, rng, "P"));
+    const Shape2 Q(pendepth::bench::random_ellipse_polygon(n, rng, "Q"));
+    it = pairs.emplace(n, Pair2(P, Q, Prepare::Full)).first;
+  }
+  return it->second;
+}
+
+// Two trousers pieces (non-convex): the no-fit polygon engine (built once).
+const Pair2& nesting_pair() {
+  static const Pair2 pair = [] {
+    std::vector<Shape2> nonconvex;
+    for (const Shape2& s : nesting_pieces("trousers"))
+      if (!s.is_convex()) nonconvex.push_back(s);
+    return Pair2(nonconvex.at(0), nonconvex.at(1), Prepare::Full);
+  }();
+  return pair;
+}
+
+const Pair2& nesting_pair_per_query() {
+  static const Pair2 pair(nesting_pair().P(), nesting_pair().Q(), Prepare::Queries);
+  return pair;
+}
+
+void BM_convex2_sigma_n8(benchmark::State& s) { run2(s, convex_pair(8), Query::Minimum); }
+void BM_convex2_sigma_d_n64(benchmark::State& s) { run2(s, convex_pair(64), Query::Along); }
+void BM_nfp_sigma(benchmark::State& s) { run2(s, nesting_pair(), Query::Minimum); }
+void BM_nfp_sigma_d(benchmark::State& s) { run2(s, nesting_pair(), Query::Along); }
+void BM_nfp_overlap(benchmark::State& s) { run2(s, nesting_pair(), Query::Overlap); }
+void BM_pair_per_query_sigma_d(benchmark::State& s) { run2(s, nesting_pair_per_query(), Query::Along); }
+
+// ---- 3D: two hulls of the shared data (real game objects), random poses of Q ----
+
+const Pair3& hull_pair() {
+  static const Pair3 pair(Shape3::from_file(std::string(PENDEPTH_SHARED_DATA) + "/hulls/hull03.obj", "P"),
+                          Shape3::from_file(std::string(PENDEPTH_SHARED_DATA) + "/hulls/hull12.obj", "Q"));
+  return pair;
+}
+
+void run3(benchmark::State& state, bool along) {
+  const Pair3& pair = hull_pair();
+  std::mt19937_64 rng(9);
+  std::normal_distribution<double> g;
+  std::uniform_real_distribution<double> u(-1, 1);
+  double radius = 0;
+  for (const Vec3& v : pair.P().polytope().vertices()) radius = std::max(radius, v.norm());
+  std::vector<Pose3> poses;
+  std::vector<Vec3> ds;
+  for (std::size_t k = 0; k < kBatch; ++k) {
+    poses.emplace_back(Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)),
+                       Vec3(u(rng), u(rng), u(rng)) * radius);
+    ds.emplace_back(g(rng), g(rng), g(rng) + 1e-3);
+  }
+  std::vector<Depth3> out(poses.size());
+  const unsigned threads = static_cast<unsigned>(state.range(0));
+  for (auto _ : state) {
+    if (along) pair.along(poses, ds, out, threads);
+    else pair.minimum(poses, out, threads);
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(poses.size()));
+}
+
+void BM_convex3_sigma(benchmark::State& s) { run3(s, false); }
+void BM_convex3_sigma_d(benchmark::State& s) { run3(s, true); }
+
+#define THREADS(b) BENCHMARK(b)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMicrosecond)
+THREADS(BM_convex2_sigma_n8);
+THREADS(BM_convex2_sigma_d_n64);
+THREADS(BM_nfp_overlap);
+THREADS(BM_nfp_sigma);
+THREADS(BM_nfp_sigma_d);
+THREADS(BM_pair_per_query_sigma_d);
+THREADS(BM_convex3_sigma);
+THREADS(BM_convex3_sigma_d);
+
+}  // namespace
+
+BENCHMARK_MAIN();

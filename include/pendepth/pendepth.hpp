@@ -1,0 +1,229 @@
+// pendepth — the front door: one header, two shape classes, two pair classes.
+//
+//   #include <pendepth/pendepth.hpp>
+//   using namespace pendepth;
+//   Shape2 P = Shape2::from_wkt(text);                 // any 2D shape: convex, simple, with holes
+//   Shape2 Q(std::vector<Vec2>{...});                   // outer ring; holes as 2nd argument
+//   Pair2 pair(P, Q);                                   // picks the engine, preprocesses once
+//   Depth2 s = pair.minimum(t);  pair.along(t, d);  pair.separation(t, d);  pair.overlapping(t);
+//   pair.minimum(ts, out);                              // batch: parallel, bit-identical to singles
+//   Shape3 A = Shape3::hull(points), B = Shape3::from_file("part.obj");
+//   Pair3 pair3(A, B);  pair3.minimum(pose_p, pose_q);  pair3.along(pose_p, pose_q, d);
+//
+// Conventions (docs/design.md §1): P is fixed, Q moves; Q is placed at t (2D) or posed (3D);
+// M = P ⊕ (−Q); touching is not overlapping (depth 0); `translation` is the move to apply to Q;
+// witnesses are world coordinates. For non-convex shapes overlap means t ∈ O, the open overlap
+// set (exact fits and slits are touching placements, depth 0).
+//
+// Which engine a pair uses (Pair2::engine(), docs/design.md §2):
+//   convex × convex        the O(log) queries of DHS §3 (σ by the depth field or the
+//                          O(n + m) merge, see Prepare);
+//   polygon × convex       PolygonDepth2 (DHS §4, §6), either way round: when Q is the polygon
+//                          the roles are swapped internally and the answer mapped back;
+//   polygon × polygon      PairDepth2 (per query, nothing built) or the no-fit polygon
+//                          NoFitPolygon2 (built once, fast queries), see Prepare.
+// Errors: invalid shapes and queries throw InvalidInput (a std::invalid_argument) naming the
+// shape or the query; valid queries never throw and never return NaN.
+#pragma once
+
+#include <pendepth/depth2.hpp>
+#include <pendepth/depth3.hpp>
+#include <pendepth/geometry.hpp>
+#include <pendepth/polygon.hpp>
+#include <pendepth/polytope.hpp>
+
+#include <array>
+#include <cstddef>
+#include <filesystem>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace pendepth {
+
+/// How much a pair prepares before its queries.
+///   Queries: only what every query needs (triangulations, hierarchies); σ of two convex
+///            polygons by the O(n + m) merge, two non-convex polygons by PairDepth2.
+///   Full:    every per-pair structure: the depth field of two convex polygons, the no-fit
+///            polygon of two non-convex ones (worst case O(n²m²) to build).
+///   Auto:    convex × convex: the depth field when n + m > Pair2::kFieldAutoSize (there its
+///            O(log) query beats the merge by 2× or more), else the merge; polygon × polygon:
+///            the no-fit polygon when n·m ≤ Pair2::kNfpAutoLimit (its build then costs less than
+///            a few PairDepth2 queries), else PairDepth2. polygon × convex has one engine.
+/// The choice is made at construction, so an answer never depends on which calls came before
+/// (a structure may be built on first use, under std::call_once).
+enum class Prepare { Auto, Queries, Full };
+
+/// The engine a Pair2 answers with.
+enum class Engine2 {
+  Convex,         ///< both convex (DepthQuery2 / directional_depth / separation_depth)
+  PolygonConvex,  ///< P a polygon, Q convex (PolygonDepth2)
+  PolygonConvexSwapped,  ///< P convex, Q a polygon (PolygonDepth2 on the swapped pair)
+  PairPerQuery,   ///< both non-convex or with holes, per query (PairDepth2)
+  NoFitPolygon,   ///< both non-convex or with holes, on the built no-fit polygon (NoFitPolygon2)
+};
+const char* to_string(Engine2 e);
+
+/// A validated 2D shape: a simple polygon, convex or not, possibly with holes. Cheap to copy
+/// (the validated data is shared, immutable). A single ring that is convex (collinear and
+/// repeated vertices allowed) is kept in the convex normal form and uses the convex engines.
+///
+/// Feature indices in results: for a convex shape they index convex() (the normal form), for
+/// any other shape polygon()'s global vertex numbering; input_vertex() maps either back to the
+/// ring and vertex as given.
+class Shape2 {
+ public:
+  /// Validates the outer ring and the holes (either orientation; closing vertex optional).
+  /// Throws InvalidInput naming `name`, the ring (0 = outer, k = hole k) and the vertex.
+  explicit Shape2(std::vector<Vec2> outer, std::vector<std::vector<Vec2>> holes = {},
+                  std::string_view name = "shape");
+  explicit Shape2(ConvexPolygon convex);
+  explicit Shape2(Polygon polygon);
+
+  /// One `POLYGON ((...), (...))` in WKT. Throws InvalidInput "NAME:LINE: problem".
+  static Shape2 from_wkt(std::string_view text, std::string_view name = "shape");
+  /// A .wkt file. Throws InvalidInput "PATH:LINE: problem" (named `name` in the message).
+  static Shape2 from_file(const std::filesystem::path& path, std::string_view name = "shape");
+
+  bool is_convex() const;
+  std::size_t hole_count() const;
+  /// The convex normal form. Precondition: is_convex() (else throws std::logic_error).
+  const ConvexPolygon& convex() const;
+  /// The shape as a polygon with holes (a convex shape: its normal form as one ring; built on
+  /// first use, thread-safe).
+  const Polygon& polygon() const;
+  /// The rings in normal form: outer counter-clockwise first, then the holes clockwise.
+  std::vector<std::vector<Vec2>> rings() const;
+  /// Number of vertices (of the normal form).
+  std::size_t size() const;
+  const std::string& name() const;
+  /// Ring (0 = outer, k = hole k) and index, as given on input, of the vertex a result feature
+  /// names (see the class comment).
+  std::array<std::size_t, 2> input_vertex(std::size_t vertex) const;
+
+  struct Data;
+
+ private:
+  Shape2() = default;
+  std::shared_ptr<const Data> d_;
+};
+
+/// The no-fit polygon of P and Q: the boundary of O = {t : int P ∩ int(Q + t) ≠ ∅} as polygons
+/// with holes (polygons[k][0] an outer ring, counter-clockwise; polygons[k][1..] its holes,
+/// clockwise), slits (Q slides exactly in a slot of P: touching, depth 0, O on both sides) and
+/// isolated points (Q fits a pocket or hole exactly), vertices rounded to the nearest double.
+struct NoFitPolygonParts {
+  std::vector<std::vector<std::vector<Vec2>>> polygons;
+  std::vector<std::array<Vec2, 2>> slits;
+  std::vector<Vec2> points;
+};
+
+/// Builds the no-fit polygon of any two 2D shapes (reduced convolution, exact; see nfp2.hpp for
+/// the cost). For many queries on the same pair, use Pair2.
+NoFitPolygonParts no_fit_polygon(const Shape2& P, const Shape2& Q);
+
+/// A pair of 2D shapes, P fixed and Q moving, with the per-pair work done once. Cheap to copy;
+/// all queries are const and thread-safe.
+class Pair2 {
+ public:
+  /// Auto: two convex shapes with n + m above this use the depth field for σ.
+  static constexpr std::size_t kFieldAutoSize = 64;
+  /// Auto: two non-convex shapes with n·m at most this use the no-fit polygon.
+  static constexpr std::size_t kNfpAutoLimit = 16384;
+
+  Pair2(Shape2 P, Shape2 Q, Prepare prepare = Prepare::Auto);
+
+  /// Exact: do the interiors of P and Q + t overlap (t ∈ O)? Throws InvalidInput for a
+  /// non-finite t.
+  bool overlapping(const Vec2& t) const;
+  /// σ: the shortest move of Q + t that separates the interiors (kind Minimum).
+  Depth2 minimum(const Vec2& t) const;
+  /// σ_d: the shortest move along d (kind Directional). d may have any non-zero finite length.
+  Depth2 along(const Vec2& t, const Vec2& d) const;
+  /// Complete separation along d (DHS §6; kind Separation): the shortest move along d after
+  /// which Q can slide on to infinity without overlap (positive also when t ∉ O but the ray
+  /// meets O later; `overlapping` tells t ∈ O).
+  Depth2 separation(const Vec2& t, const Vec2& d) const;
+
+  // Batches: out[i] is the single call's answer for ts[i] (ds[i], or ds[0] when ds has one
+  // entry), bit for bit, whatever `threads` is. threads = 0 uses every core, 1 runs in the
+  // calling thread. All inputs are checked before any query runs; a bad one throws
+  // InvalidInput naming its index. out must have ts.size() entries.
+  void overlapping(std::span<const Vec2> ts, std::span<bool> out, unsigned threads = 0) const;
+  void minimum(std::span<const Vec2> ts, std::span<Depth2> out, unsigned threads = 0) const;
+  void along(std::span<const Vec2> ts, std::span<const Vec2> ds, std::span<Depth2> out,
+             unsigned threads = 0) const;
+  void separation(std::span<const Vec2> ts, std::span<const Vec2> ds, std::span<Depth2> out,
+                  unsigned threads = 0) const;
+
+  /// The no-fit polygon of the pair (see NoFitPolygonParts), built on first use unless the
+  /// engine holds it (thread-safe).
+  using NoFitPolygon = NoFitPolygonParts;
+  const NoFitPolygon& no_fit_polygon() const;
+
+  const Shape2& P() const;
+  const Shape2& Q() const;
+  Engine2 engine() const;
+
+  struct Impl;
+
+ private:
+  std::shared_ptr<const Impl> impl_;
+};
+
+/// A validated convex polytope (the convex hull of a point set), with its Dobkin–Kirkpatrick
+/// hierarchy built once. Cheap to copy.
+class Shape3 {
+ public:
+  explicit Shape3(ConvexPolytope polytope);
+  /// Exact convex hull. Throws InvalidInput for non-finite points or flat input (fewer than 4
+  /// affinely independent points).
+  static Shape3 hull(std::span<const Vec3> points, std::string_view name = "points");
+  /// .obj, .off or .stl (ASCII or binary): the hull of the file's vertices. Throws InvalidInput
+  /// "PATH:LINE: problem".
+  static Shape3 from_file(const std::filesystem::path& path, std::string_view name = "shape");
+
+  const ConvexPolytope& polytope() const;
+  std::size_t size() const;
+  const std::string& name() const;
+
+ private:
+  std::shared_ptr<const ConvexPolytope> p_;
+};
+
+/// A pair of convex polytopes, P and Q each with a pose (only the relative pose matters; results
+/// are in the world frame). Queries are const and thread-safe.
+class Pair3 {
+ public:
+  Pair3(Shape3 P, Shape3 Q, Prepare prepare = Prepare::Auto);
+
+  /// Exact: do the interiors of the posed P and Q overlap?
+  bool overlapping(const Pose3& pose_p, const Pose3& pose_q) const;
+  /// σ, exact (lower_bound == upper_bound == depth).
+  Depth3 minimum(const Pose3& pose_p, const Pose3& pose_q) const;
+  /// σ_d along d (world frame), exact.
+  Depth3 along(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const;
+  /// Complete separation along d: for convex shapes the ray leaves M once, so this is σ_d with
+  /// kind Separation.
+  Depth3 separation(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const;
+
+  // Batches (as Pair2's): P at identity, or at pose_p for every query.
+  void overlapping(std::span<const Pose3> poses_q, std::span<bool> out, unsigned threads = 0) const;
+  void minimum(std::span<const Pose3> poses_q, std::span<Depth3> out, unsigned threads = 0) const;
+  void along(std::span<const Pose3> poses_q, std::span<const Vec3> ds, std::span<Depth3> out,
+             unsigned threads = 0) const;
+  void minimum(const Pose3& pose_p, std::span<const Pose3> poses_q, std::span<Depth3> out,
+               unsigned threads = 0) const;
+  void along(const Pose3& pose_p, std::span<const Pose3> poses_q, std::span<const Vec3> ds,
+             std::span<Depth3> out, unsigned threads = 0) const;
+
+  const Shape3& P() const { return P_; }
+  const Shape3& Q() const { return Q_; }
+
+ private:
+  Shape3 P_, Q_;
+};
+
+}  // namespace pendepth

@@ -1,0 +1,64 @@
+// pendepth — input checks of the front door (src/front/): every query's placement and direction
+// is checked at the API boundary, and a batch is checked whole before any query runs, so a bad
+// entry is reported by its index and a batch never stops half-way.
+#pragma once
+
+#include <pendepth/geometry.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <span>
+#include <string>
+
+namespace pendepth::front {
+
+template <class V>
+bool finite(const V& v) {
+  for (int k = 0; k < v.size(); ++k)
+    if (!std::isfinite(v[k])) return false;
+  return true;
+}
+
+template <class V>
+std::string text(const V& v) {
+  std::string s = "(";
+  for (int k = 0; k < v.size(); ++k) s += (k ? ", " : "") + std::to_string(v[k]);
+  return s + ")";
+}
+
+/// Throws InvalidInput unless t is finite. `what` names the query ("placement", "placement 7").
+template <class V>
+void check_placement(const V& t, const std::string& what = "placement") {
+  if (!finite(t)) throw InvalidInput(what + " " + text(t) + " is not finite");
+}
+
+/// d scaled by a power of two so that its largest |component| lies in [1, 2): exact, the same
+/// unit direction, and norms can neither overflow nor underflow. Throws InvalidInput for a zero
+/// or non-finite d.
+template <class V>
+V unit_scale(const V& d, const std::string& what = "direction") {
+  if (!finite(d)) throw InvalidInput(what + " " + text(d) + " is not finite");
+  const double big = d.cwiseAbs().maxCoeff();
+  if (big == 0) throw InvalidInput(what + " is zero");
+  const int e = std::ilogb(big);
+  V r;
+  for (int k = 0; k < d.size(); ++k) r[k] = std::ldexp(d[k], -e);
+  return r;
+}
+
+/// A batch: out has one entry per placement; ds is empty (no directions), one direction for all,
+/// or one per placement; every placement finite, every direction finite and non-zero.
+template <class V>
+void check_batch(std::span<const V> ts, std::span<const V> ds, std::size_t out_size, bool directions) {
+  if (out_size != ts.size())
+    throw InvalidInput("batch: " + std::to_string(ts.size()) + " placements but room for " +
+                       std::to_string(out_size) + " results");
+  if (directions && ds.size() != 1 && ds.size() != ts.size())
+    throw InvalidInput("batch: " + std::to_string(ds.size()) + " directions for " + std::to_string(ts.size()) +
+                       " placements (give one direction, or one per placement)");
+  for (std::size_t i = 0; i < ts.size(); ++i) check_placement(ts[i], "batch: placement " + std::to_string(i));
+  if (directions)
+    for (std::size_t i = 0; i < ds.size(); ++i) unit_scale(ds[i], "batch: direction " + std::to_string(i));
+}
+
+}  // namespace pendepth::front

@@ -1,0 +1,249 @@
+// pendepth — Pair2: one front door over the 2D engines (include/pendepth/pendepth.hpp).
+//
+// The engine is chosen once, at construction, from the shapes' kinds and Prepare (the rule is
+// documented at Prepare), and so is the path of every query kind: answers never depend on the
+// order of the calls. Structures that serve one query kind only (the convex depth field for σ,
+// PairDepth2's separation next to a no-fit polygon, the exported no-fit polygon) are built on
+// first use, under std::call_once.
+#include <pendepth/depth2_nonconvex.hpp>
+#include <pendepth/depth2_polygon.hpp>
+#include <pendepth/nfp2.hpp>
+#include <pendepth/pendepth.hpp>
+
+#include "front/batch.hpp"
+#include "front/checks.hpp"
+
+#include <mutex>
+#include <optional>
+
+namespace pendepth {
+
+const char* to_string(Engine2 e) {
+  switch (e) {
+    case Engine2::Convex: return "convex";
+    case Engine2::PolygonConvex: return "polygon-convex";
+    case Engine2::PolygonConvexSwapped: return "convex-polygon";
+    case Engine2::PairPerQuery: return "pair-per-query";
+    case Engine2::NoFitPolygon: return "no-fit-polygon";
+  }
+  return "?";
+}
+
+namespace {
+
+NoFitPolygonParts parts_of(const NoFitPolygon2& n) {
+  return NoFitPolygonParts{n.polygons(), n.slits(), n.points()};
+}
+
+}  // namespace
+
+NoFitPolygonParts no_fit_polygon(const Shape2& P, const Shape2& Q) {
+  return parts_of(NoFitPolygon2(P.polygon(), Q.polygon()));
+}
+
+struct Pair2::Impl {
+  Shape2 P, Q;
+  Prepare prepare;
+  Engine2 engine;
+
+  // Convex × convex: σ by the depth field (built on the first σ query) or by the merge.
+  bool use_field = false;
+  mutable std::optional<DepthField> field;
+  mutable std::once_flag field_once;
+
+  // Polygon × convex (either way round): P' = the polygon, Q' = the convex shape.
+  std::optional<PolygonDepth2> polygon;
+
+  // Polygon × polygon.
+  mutable std::optional<PairDepth2> pair;  // PairPerQuery: built at once; NoFitPolygon: separation only
+  mutable std::once_flag pair_once;
+  std::optional<NoFitPolygon2> nfp;
+
+  // The exported no-fit polygon (no_fit_polygon()).
+  mutable std::optional<NoFitPolygonParts> exported;
+  mutable std::once_flag export_once;
+
+  Impl(Shape2 p, Shape2 q, Prepare prep) : P(std::move(p)), Q(std::move(q)), prepare(prep) {
+    choose_engine();
+    build();
+  }
+
+  void choose_engine() {
+    if (P.is_convex() && Q.is_convex()) {
+      engine = Engine2::Convex;
+      use_field = prepare == Prepare::Full ||
+                  (prepare == Prepare::Auto && P.size() + Q.size() > Pair2::kFieldAutoSize);
+    } else if (Q.is_convex()) {
+      engine = Engine2::PolygonConvex;
+    } else if (P.is_convex()) {
+      engine = Engine2::PolygonConvexSwapped;
+    } else if (prepare == Prepare::Full ||
+               (prepare == Prepare::Auto && P.size() * Q.size() <= Pair2::kNfpAutoLimit)) {
+      engine = Engine2::NoFitPolygon;
+    } else {
+      engine = Engine2::PairPerQuery;
+    }
+  }
+
+  void build() {
+    switch (engine) {
+      case Engine2::Convex:
+        if (prepare == Prepare::Full) depth_field();
+        break;
+      case Engine2::PolygonConvex: polygon.emplace(P.polygon(), Q.convex()); break;
+      case Engine2::PolygonConvexSwapped: polygon.emplace(Q.polygon(), P.convex()); break;
+      case Engine2::PairPerQuery: pair.emplace(P.polygon(), Q.polygon()); break;
+      case Engine2::NoFitPolygon: nfp.emplace(P.polygon(), Q.polygon()); break;
+    }
+  }
+
+  const DepthField& depth_field() const {
+    std::call_once(field_once, [&] { field.emplace(P.convex(), Q.convex()); });
+    return *field;
+  }
+
+  const PairDepth2& pair_engine() const {
+    std::call_once(pair_once, [&] {
+      if (!pair) pair.emplace(P.polygon(), Q.polygon());
+    });
+    return *pair;
+  }
+
+  bool swapped() const { return engine == Engine2::PolygonConvexSwapped; }
+
+  // An answer of the swapped problem (Q fixed at 0, P placed at −t, moved by v') mapped back:
+  // Q + t overlaps P exactly when P − t overlaps Q, so v = −v', features swap, and a point x of
+  // the swapped frame after the move is x + t + v in P's frame.
+  static Depth2 back(Depth2 r, const Vec2& t) {
+    const Vec2 zero(0, 0);
+    r.translation = zero - r.translation;  // 0 − x, never −0
+    r.normal = zero - r.normal;
+    std::swap(r.feature_p, r.feature_q);
+    if (r.overlapping || r.depth > 0) {
+      const Vec2 shift = t + r.translation;
+      const Vec2 wp = r.witness_q + shift, wq = r.witness_p + shift;
+      r.witness_p = wp;
+      r.witness_q = wq;
+    }
+    return r;
+  }
+
+  // ---- single queries on validated input (t finite; d finite, non-zero, rescaled) ----
+
+  bool overlapping(const Vec2& t) const {
+    switch (engine) {
+      case Engine2::Convex: return directional_depth(P.convex(), Q.convex(), t, Vec2(1, 0)).overlapping;
+      case Engine2::PolygonConvex: return polygon->overlapping(t);
+      case Engine2::PolygonConvexSwapped: return polygon->overlapping(-t);
+      case Engine2::PairPerQuery: return pair->overlapping(t);
+      case Engine2::NoFitPolygon: return nfp->overlapping(t);
+    }
+    return false;
+  }
+
+  Depth2 minimum(const Vec2& t) const {
+    switch (engine) {
+      case Engine2::Convex:
+        return use_field ? depth_field().minimum(t) : minimum_depth(P.convex(), Q.convex(), t);
+      case Engine2::PolygonConvex: return polygon->minimum(t);
+      case Engine2::PolygonConvexSwapped: return back(polygon->minimum(-t), t);
+      case Engine2::PairPerQuery: return pair->minimum(t);
+      case Engine2::NoFitPolygon: return nfp->minimum(t);
+    }
+    return {};
+  }
+
+  Depth2 along(const Vec2& t, const Vec2& d) const {
+    switch (engine) {
+      case Engine2::Convex: return directional_depth(P.convex(), Q.convex(), t, d);
+      case Engine2::PolygonConvex: return polygon->along(t, d);
+      case Engine2::PolygonConvexSwapped: return back(polygon->along(-t, -d), t);
+      case Engine2::PairPerQuery: return pair->along(t, d);
+      case Engine2::NoFitPolygon: return nfp->along(t, d);
+    }
+    return {};
+  }
+
+  Depth2 separation(const Vec2& t, const Vec2& d) const {
+    switch (engine) {
+      case Engine2::Convex: return separation_depth(P.convex(), Q.convex(), t, d);
+      case Engine2::PolygonConvex: return polygon->separation(t, d);
+      case Engine2::PolygonConvexSwapped:
+        return back(polygon->separation(-t, -d), t);
+      case Engine2::PairPerQuery:
+      case Engine2::NoFitPolygon: return pair_engine().separation(t, d);
+    }
+    return {};
+  }
+
+  const NoFitPolygonParts& no_fit_polygon() const {
+    std::call_once(export_once, [&] { exported.emplace(nfp ? parts_of(*nfp) : pendepth::no_fit_polygon(P, Q)); });
+    return *exported;
+  }
+};
+
+Pair2::Pair2(Shape2 P, Shape2 Q, Prepare prepare)
+    : impl_(std::make_shared<const Impl>(std::move(P), std::move(Q), prepare)) {}
+
+bool Pair2::overlapping(const Vec2& t) const {
+  front::check_placement(t);
+  return impl_->overlapping(t);
+}
+
+Depth2 Pair2::minimum(const Vec2& t) const {
+  front::check_placement(t);
+  return impl_->minimum(t);
+}
+
+Depth2 Pair2::along(const Vec2& t, const Vec2& d) const {
+  front::check_placement(t);
+  return impl_->along(t, front::unit_scale(d));
+}
+
+Depth2 Pair2::separation(const Vec2& t, const Vec2& d) const {
+  front::check_placement(t);
+  return impl_->separation(t, front::unit_scale(d));
+}
+
+void Pair2::overlapping(std::span<const Vec2> ts, std::span<bool> out, unsigned threads) const {
+  front::check_batch<Vec2>(ts, {}, out.size(), false);
+  const Impl& I = *impl_;
+  front::parallel_for(ts.size(), threads, [&](std::size_t i) { out[i] = I.overlapping(ts[i]); });
+}
+
+void Pair2::minimum(std::span<const Vec2> ts, std::span<Depth2> out, unsigned threads) const {
+  front::check_batch<Vec2>(ts, {}, out.size(), false);
+  const Impl& I = *impl_;
+  front::parallel_for(ts.size(), threads, [&](std::size_t i) { out[i] = I.minimum(ts[i]); });
+}
+
+void Pair2::along(std::span<const Vec2> ts, std::span<const Vec2> ds, std::span<Depth2> out,
+                  unsigned threads) const {
+  front::check_batch<Vec2>(ts, ds, out.size(), true);
+  const Impl& I = *impl_;
+  if (ts.empty()) return;
+  const bool one = ds.size() == 1;
+  const Vec2 d0 = front::unit_scale(ds[0]);
+  front::parallel_for(ts.size(), threads, [&](std::size_t i) {
+    out[i] = I.along(ts[i], one ? d0 : front::unit_scale(ds[i]));
+  });
+}
+
+void Pair2::separation(std::span<const Vec2> ts, std::span<const Vec2> ds, std::span<Depth2> out,
+                       unsigned threads) const {
+  front::check_batch<Vec2>(ts, ds, out.size(), true);
+  const Impl& I = *impl_;
+  if (ts.empty()) return;
+  const bool one = ds.size() == 1;
+  const Vec2 d0 = front::unit_scale(ds[0]);
+  front::parallel_for(ts.size(), threads, [&](std::size_t i) {
+    out[i] = I.separation(ts[i], one ? d0 : front::unit_scale(ds[i]));
+  });
+}
+
+const Pair2::NoFitPolygon& Pair2::no_fit_polygon() const { return impl_->no_fit_polygon(); }
+const Shape2& Pair2::P() const { return impl_->P; }
+const Shape2& Pair2::Q() const { return impl_->Q; }
+Engine2 Pair2::engine() const { return impl_->engine; }
+
+}  // namespace pendepth

@@ -1,0 +1,113 @@
+// pendepth — Shape2: a validated 2D shape, convex or not (include/pendepth/pendepth.hpp).
+//
+// A single ring that ConvexPolygon accepts is kept in the convex normal form (docs/design.md §1),
+// so pairs with it use the O(log) convex engines; anything else is a Polygon (simple, with holes).
+#include <pendepth/io.hpp>
+#include <pendepth/pendepth.hpp>
+
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+
+namespace pendepth {
+
+struct Shape2::Data {
+  std::optional<ConvexPolygon> convex;
+  mutable std::optional<Polygon> polygon;  // for a convex shape: built on first use
+  mutable std::once_flag polygon_once;
+  std::string name;
+};
+
+namespace {
+
+std::shared_ptr<Shape2::Data> from_io(io::Shape2 s, std::string_view name) {
+  auto d = std::make_shared<Shape2::Data>();
+  d->convex = std::move(s.convex);
+  d->polygon = std::move(s.polygon);
+  d->name = std::string(name);
+  return d;
+}
+
+}  // namespace
+
+Shape2::Shape2(std::vector<Vec2> outer, std::vector<std::vector<Vec2>> holes, std::string_view name) {
+  std::vector<std::vector<Vec2>> rings;
+  rings.reserve(1 + holes.size());
+  rings.push_back(std::move(outer));
+  for (auto& h : holes) rings.push_back(std::move(h));
+  if (rings.size() == 1) {
+    // Same rule as a file: convex when ConvexPolygon accepts the ring; a reflex vertex or a ring
+    // winding twice makes it a general polygon, any other defect is reported as it is.
+    try {
+      d_ = from_io(io::Shape2{ConvexPolygon(rings[0], name), std::nullopt}, name);
+      return;
+    } catch (const InvalidInput& e) {
+      const std::string msg = e.what();
+      if (msg.find("not convex") == std::string::npos && msg.find("self-intersecting") == std::string::npos)
+        throw;
+    }
+  }
+  d_ = from_io(io::Shape2{std::nullopt, Polygon(rings, name)}, name);
+}
+
+Shape2::Shape2(ConvexPolygon convex) {
+  const std::string name = convex.name();
+  d_ = from_io(io::Shape2{std::move(convex), std::nullopt}, name);
+}
+
+Shape2::Shape2(Polygon polygon) {
+  const std::string name = polygon.name();
+  d_ = from_io(io::Shape2{std::nullopt, std::move(polygon)}, name);
+}
+
+Shape2 Shape2::from_wkt(std::string_view text, std::string_view name) {
+  Shape2 s;
+  s.d_ = from_io(io::shape2_from_wkt(io::parse_wkt_polygon(text, name), name, name), name);
+  return s;
+}
+
+Shape2 Shape2::from_file(const std::filesystem::path& path, std::string_view name) {
+  Shape2 s;
+  s.d_ = from_io(io::read_shape2(path, name), name);
+  return s;
+}
+
+bool Shape2::is_convex() const { return d_->convex.has_value(); }
+
+std::size_t Shape2::hole_count() const { return d_->convex ? 0 : d_->polygon->hole_count(); }
+
+const ConvexPolygon& Shape2::convex() const {
+  if (!d_->convex) throw std::logic_error("Shape2::convex(): " + d_->name + " is not convex");
+  return *d_->convex;
+}
+
+const Polygon& Shape2::polygon() const {
+  if (d_->convex)
+    std::call_once(d_->polygon_once, [&] { d_->polygon.emplace(Polygon::simple(d_->convex->vertices(), d_->name)); });
+  return *d_->polygon;
+}
+
+std::vector<std::vector<Vec2>> Shape2::rings() const {
+  std::vector<std::vector<Vec2>> out;
+  if (d_->convex) {
+    out.emplace_back(d_->convex->vertices().begin(), d_->convex->vertices().end());
+  } else {
+    for (std::size_t k = 0; k < d_->polygon->ring_count(); ++k)
+      out.emplace_back(d_->polygon->ring(k).begin(), d_->polygon->ring(k).end());
+  }
+  return out;
+}
+
+std::size_t Shape2::size() const { return d_->convex ? d_->convex->size() : d_->polygon->size(); }
+
+const std::string& Shape2::name() const { return d_->name; }
+
+std::array<std::size_t, 2> Shape2::input_vertex(std::size_t vertex) const {
+  if (vertex >= size())
+    throw InvalidInput(d_->name + ": vertex " + std::to_string(vertex) + " out of range (" +
+                       std::to_string(size()) + " vertices)");
+  if (d_->convex) return {0, d_->convex->input_index(vertex)};
+  return {d_->polygon->ring_of(vertex), d_->polygon->input_index(vertex)};
+}
+
+}  // namespace pendepth
