@@ -1,5 +1,5 @@
 // σ_d of two convex polytopes by Algorithm Compute-Depth-3D (DHS §5.2, Phase 1 / Phase 2),
-// descending the inner DK hierarchies of P and Q simultaneously (DHS §5.1; notes §4).
+// descending the inner DK hierarchies of P and Q simultaneously (DHS §5.1; docs/algorithms.md §R4).
 //
 // Notation: everything lives in P's frame; Q' = R Q + t (RelativePose semantics: exact for the
 // double R and t); M_i = P_i ⊕ (−Q'_i) for the hierarchy levels (M_0 = M); the query line is

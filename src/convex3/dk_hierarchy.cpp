@@ -1,4 +1,5 @@
-// Inner Dobkin–Kirkpatrick hierarchy (DHS §5.1, Fact 5.1; Dobkin–Kirkpatrick 1990; notes §4.2).
+// Inner Dobkin–Kirkpatrick hierarchy (DHS §5.1, Fact 5.1; Dobkin–Kirkpatrick 1990;
+// docs/algorithms.md §R4.2).
 //
 // Level i+1 = conv(V_i \ R_i) where R_i is an independent set of vertices of degree <= 8 in
 // level i, chosen greedily lowest degree first. Four affinely independent vertices are protected

@@ -1,4 +1,4 @@
-// Mesh file readers for 3D point sets: OBJ, OFF, STL (ASCII and binary) (DESIGN.md §3).
+// Mesh file readers for 3D point sets: OBJ, OFF, STL (ASCII and binary) (docs/design.md §3).
 //
 // Convex algorithms take the hull of the vertices, so only vertex coordinates are read; faces
 // and attributes are skipped without being parsed. Text formats are scanned line by line over
