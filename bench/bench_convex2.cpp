@@ -1,5 +1,5 @@
 // Benchmark: 2D convex intersection depth (DHS §3) — pendepth's queries against the naive linear
-// methods and Box2D's b2CollidePolygons, on the same inputs in the same run (DESIGN.md §6).
+// methods and Box2D's b2CollidePolygons, on the same inputs in the same run (docs/design.md §6).
 //
 // Notation: P fixed, Q moving, placement t, M = P ⊕ (−Q), n = |P| = m = |Q| (4 … 10⁶).
 // Benchmark names are <query>/<implementation>/<n>:

@@ -1,5 +1,5 @@
 // Benchmark: 3D convex intersection depth (DHS §5-§6) — pendepth's public queries against the
-// usual GJK/EPA/MPR peers and a linear scan, on the same inputs in the same run (DESIGN.md §6).
+// usual GJK/EPA/MPR peers and a linear scan, on the same inputs in the same run (docs/design.md §6).
 //
 // Notation: P fixed at the identity, Q placed by (rotation, translation); M = P ⊕ (−Q').
 // Benchmark names are <query>/<implementation>/<n>:

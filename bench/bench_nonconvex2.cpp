@@ -1,7 +1,7 @@
 // Benchmark: two simple non-convex polygons (issue 5, DHS §6, survey §2) — pendepth's per-pair
 // no-fit polygon NoFitPolygon2 and its per-query PairDepth2 against the explicit Minkowski sums of
 // CGAL (reduced convolution) and Clipper (MinkowskiSum), each followed by a scan of the explicit
-// sum per query, on the same inputs in the same run (DESIGN.md §6).
+// sum per query, on the same inputs in the same run (docs/design.md §6).
 //
 // Benchmark names are <what>/<implementation>/<case>/<n>/<m> (case: albano, shirts, trousers, star):
 //   build/pendepth      NoFitPolygon2 construction (reduced convolution cut exactly by the open

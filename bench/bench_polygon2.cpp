@@ -1,7 +1,7 @@
 // Benchmark: a simple polygon P (n vertices, holes allowed) against a convex Q (m vertices), DHS §4
 // — pendepth's implicit structure against the explicit Minkowski sums of CGAL (reduced
 // convolution) and Clipper (MinkowskiSum), each followed by a scan of the explicit sum per query,
-// on the same inputs in the same run (DESIGN.md §6).
+// on the same inputs in the same run (docs/design.md §6).
 //
 // Benchmark names are <what>/<implementation>/<shape>/<n>/<m>:
 //   build/pendepth        PolygonDepth2 construction: triangulation, convolved triangles, union

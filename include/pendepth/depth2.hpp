@@ -49,8 +49,8 @@ struct Depth2 {
 };
 
 /// σ_d: smallest s >= 0 such that P and Q + t + s·d̂ have disjoint interiors, by prune-and-search
-/// on the implicit front chains of P and −Q (DHS §3; notes §2.7). O(log n + log m), M never built.
-/// Throws InvalidInput if d is zero or non-finite, or t is non-finite.
+/// on the implicit front chains of P and −Q (DHS §3; docs/algorithms.md §R2.7). O(log n + log m), M
+/// never built. Throws InvalidInput if d is zero or non-finite, or t is non-finite.
 Depth2 directional_depth(const ConvexPolygon& P, const ConvexPolygon& Q, const Vec2& t, const Vec2& d);
 
 /// Complete separation along d (DHS §6): smallest s >= 0 such that Q + t + s'·d̂ is
@@ -70,7 +70,7 @@ std::vector<Vec2> minkowski_difference(const ConvexPolygon& P, const ConvexPolyg
 
 /// Preprocessed depth field for a fixed pair (DHS Theorem 3.2): the medial axis of M and a
 /// point-location structure over it (centroid decomposition of the medial-axis tree, 3-sector
-/// tests; notes §3). Build O((n + m) log(n + m)); query O(log(n + m)).
+/// tests; docs/algorithms.md §R3). Build O((n + m) log(n + m)); query O(log(n + m)).
 /// The field keeps copies of what it needs; P and Q may be destroyed afterwards.
 class DepthField {
  public:
@@ -94,7 +94,7 @@ class DepthField {
   std::unique_ptr<Impl> impl_;
 };
 
-/// Per-pair query object: validate once, preprocess once, query many (DESIGN.md §2).
+/// Per-pair query object: validate once, preprocess once, query many (docs/design.md §2).
 /// minimum() uses the DepthField (O(log)), along()/separation() the O(log n + log m) search.
 class DepthQuery2 {
  public:

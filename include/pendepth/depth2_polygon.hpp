@@ -7,14 +7,14 @@
 // exactly (an open non-empty int P ∩ int(Q + t) meets some int T_i; for convex T_i and Q,
 // int T_i ∩ int(Q + t) ≠ ∅ ⇔ t ∈ int R_i). O ⊆ int M, but NOT always equal: where Q fits a
 // pocket exactly, M has a slit of touching placements inside its topological interior (DHS
-// Lemma 2.1 assumes this away). Touching is not overlapping (DESIGN.md §1), so O is used:
+// Lemma 2.1 assumes this away). Touching is not overlapping (docs/design.md §1.2), so O is used:
 //   overlapping(t)  ⇔ t ∈ O;
 //   σ_d(t)          = end of the connected component containing λ = 0 of {λ : t + λ·d̂ ∈ O}, the
 //                     union of the open intervals the line spends in each int R_i. Intervals that
 //                     only share an endpoint are NOT connected: Q touches P there, e.g. Q sliding
 //                     along a slot it fits exactly has depth 0 along the slot;
 //   separation(t,d) = sup{λ ≥ 0 : t + λ·d̂ ∈ O} (0 if the ray never meets O): the last exit, after
-//                     which Q slides to infinity without overlap (DESIGN.md §1 literally: also
+//                     which Q slides to infinity without overlap (docs/design.md §1.1 literally: also
 //                     positive when t ∉ O but the ray meets O later; `overlapping` tells t ∈ O).
 // Features in results use Polygon's global numbering (vertex g = Polygon::vertices()[g], edge g
 // from g to Polygon::next(g)) and Q's normal-form numbering.

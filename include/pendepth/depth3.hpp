@@ -64,8 +64,8 @@ struct Depth3 {
 /// upper_bound == depth (a few ulps from the exact value); `candidates` counts support queries;
 /// features are the defining ones of M's facet (P face + Q vertex, P vertex + Q face, or two
 /// edges); the witnesses coincide on the contact after the move. Cost O(k log k + climbs) for
-/// k support queries (measured k ≈ 20–65 for 64–32,768-vertex round hulls); the shapes' CSR
-/// adjacency is built once on first use (O(n)). Thread-safe.
+/// k support queries (k grows slowly with the size of round hulls, docs/benchmarks.md); the
+/// shapes' CSR adjacency is built once on first use (O(n)). Thread-safe.
 /// Throws InvalidInput for non-finite or zero quaternions / non-finite translations.
 Depth3 minimum_depth(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
                      const Pose3& pose_q);

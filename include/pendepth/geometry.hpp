@@ -1,6 +1,6 @@
 // pendepth — vectors, the error type and robust predicates.
 //
-// Exactness rule (DESIGN.md §2): every combinatorial decision is the exact sign of a polynomial
+// Exactness rule (docs/design.md §2): every combinatorial decision is the exact sign of a polynomial
 // in the input doubles. Predicates evaluate it in double with a running forward error bound and
 // fall back to exact rational arithmetic (GMP) only when the bound cannot certify the sign.
 #pragma once

@@ -1,4 +1,4 @@
-// pendepth — reading shapes and writing results (DESIGN.md §3).
+// pendepth — reading shapes and writing results (docs/design.md §3).
 //
 // Readers report bad input as InvalidInput with a message "SOURCE:LINE: problem" (SOURCE is the
 // file name or the name given for a string), or "SOURCE: problem (byte offset K)" for binary
@@ -96,7 +96,7 @@ struct Query3 {
 std::vector<Query3> parse_queries3_csv(std::string_view text, std::string_view source = "<csv>");
 std::vector<Query3> read_queries3_csv(const std::filesystem::path& path);
 
-// ---- 3D point sets (DESIGN.md §3: convex algorithms take the hull of the vertices) ----
+// ---- 3D point sets (docs/design.md §3: convex algorithms take the hull of the vertices) ----
 // The parsers return the vertices in file order (empty if the file holds none); faces, normals,
 // colours and texture coordinates are not read. Numbers go through std::from_chars: 10⁶ vertices
 // parse in well under a second. Every coordinate is checked finite.

@@ -39,13 +39,9 @@
 // explicit convolution (DHS §6); export O(N log N) filtered exact predicates. Queries:
 // overlapping(t) is PairDepth2's pair-sum test (worst O(nm), a few sums on real pieces);
 // along/minimum visit O(log N + k) hierarchy nodes for k boxes near the answer (worst O(N)).
-// Measured (docs/benchmarks.md, CPU time): on the nesting pieces (≤ 14 vertices, ~12–15 pieces
-// of ∂O) σ takes 1.9–3.4 µs and σ_d 1.2–1.9 µs per query; the build takes 3.6–14 µs per pair over
-// every ordered pair of an instance, 4.3–7.1× faster than CGAL's minkowski_sum_2 (shirts, small
-// integer pieces with many collinear edges, the slowest relative to CGAL); 8.5–9.9× for two
-// convex pieces, whose candidates are the convex sum's edges. Internal
-// inconsistencies of the pieces (a chain that does not close, a hole outside every outer ring)
-// throw std::logic_error rather than export a wrong polygon; no test input has produced one.
+// Build and query times, and the comparison with CGAL's minkowski_sum_2: docs/benchmarks.md.
+// Internal inconsistencies of the pieces (a chain that does not close, a hole outside every outer
+// ring) throw std::logic_error rather than export a wrong polygon; no test input has produced one.
 // Departure from a winding-number / ray-parity NFP: membership in O is always decided by the open
 // convex pair sums (exact and symbolic), which is what separates slits and isolated points from the
 // interior of M.

@@ -1,9 +1,10 @@
 // pendepth — validated 2D shapes.
 //
-// ConvexPolygon is the normal form every O(log n) search relies on (DESIGN.md §1, notes §2.1):
-// counter-clockwise, no duplicate or collinear vertices (strictly convex), vertex 0 the lowest
-// then leftmost. Then edge vectors e_i = v_{i+1} - v_i have strictly increasing polar angle in
-// [0, 2*pi), and extreme-vertex / front-chain questions are binary searches by exact angle order.
+// ConvexPolygon is the normal form every O(log n) search relies on (docs/design.md §1.3,
+// docs/algorithms.md §R2.1): counter-clockwise, no duplicate or collinear vertices (strictly
+// convex), vertex 0 the lowest then leftmost. Then edge vectors e_i = v_{i+1} - v_i have strictly
+// increasing polar angle in [0, 2*pi), and extreme-vertex / front-chain questions are binary
+// searches by exact angle order.
 #pragma once
 
 #include <pendepth/geometry.hpp>
@@ -61,10 +62,10 @@ class ConvexPolygon {
   std::string name_;
 };
 
-/// A simple polygon, possibly with holes (DESIGN.md §1): ring 0 is the outer boundary, ring k >= 1
-/// is hole k. Normal form: outer ring counter-clockwise, holes clockwise (so P's interior is on
-/// the left of every edge), a repeated closing vertex dropped. Each ring keeps its input vertex 0
-/// as vertex 0 (a reversed ring reads 0, n-1, ..., 1). Collinear pass-through vertices are KEPT
+/// A simple polygon, possibly with holes (docs/design.md §1.3): ring 0 is the outer boundary, ring
+/// k >= 1 is hole k. Normal form: outer ring counter-clockwise, holes clockwise (so P's interior is
+/// on the left of every edge), a repeated closing vertex dropped. Each ring keeps its input vertex
+/// 0 as vertex 0 (a reversed ring reads 0, n-1, ..., 1). Collinear pass-through vertices are KEPT
 /// (they are legitimate vertices of a simple polygon; the triangulation handles them).
 ///
 /// Validation (throws InvalidInput naming `name`, ring k — 0 = outer, k = hole k — and input

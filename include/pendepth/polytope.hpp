@@ -1,6 +1,6 @@
 // pendepth — validated convex polytopes in 3D and their Dobkin–Kirkpatrick hierarchy.
 //
-// ConvexPolytope is the 3D normal form every O(log n) search relies on (notes §4.2):
+// ConvexPolytope is the 3D normal form every O(log n) search relies on (docs/algorithms.md §R4.2):
 //   * the vertex set is STRICTLY convex: every vertex is a proper extreme point (points inside,
 //     on facets or on edges of the hull are dropped, decided by exact orient3d), so no three
 //     vertices are collinear and no triangle is degenerate;
@@ -94,7 +94,7 @@ class ConvexPolytope {
   const std::string& name() const;
 
   /// Support vertex in direction u (a vertex maximising u . v), by the walk down the inner DK
-  /// hierarchy (O'Rourke CGC §7.10 / Edelsbrunner–Maurer; notes §4.3). O(log n).
+  /// hierarchy (O'Rourke CGC §7.10 / Edelsbrunner–Maurer; docs/algorithms.md §R4.3). O(log n).
   /// Ties are broken deterministically by a symbolic perturbation: among maximisers of u . v
   /// the one maximising coordinate k, then coordinate j, where k, j are the axes of the
   /// smallest and middle |u_i| (k < j on equal magnitudes). Exact: the returned vertex is a

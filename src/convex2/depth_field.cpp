@@ -1,5 +1,5 @@
 // DepthField: σ(t) for a fixed pair of convex polygons in O(log(n + m)) per query after
-// O((n + m) log(n + m)) preprocessing (DHS §3, Theorem 3.2; notes §3.2 "spoke tree").
+// O((n + m) log(n + m)) preprocessing (DHS §3, Theorem 3.2; docs/algorithms.md §R3.2 "spoke tree").
 // N = |M|, M = P ⊕ (−Q); σ(t) = dist(t, ∂M) for t ∈ int M, else 0.
 //
 // Structure: the medial axis of M (convex2/medial_axis.cpp) and a centroid decomposition of its

@@ -1,4 +1,4 @@
-// DepthQuery2: validate once, preprocess once, query many (DESIGN.md §2).
+// DepthQuery2: validate once, preprocess once, query many (docs/design.md §2).
 #include <pendepth/depth2.hpp>
 
 namespace pendepth {

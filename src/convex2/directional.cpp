@@ -1,4 +1,5 @@
-// σ_d for two convex polygons in O(log n + log m) without building M (DHS §3; notes §2.7).
+// σ_d for two convex polygons in O(log n + log m) without building M (DHS §3; docs/algorithms.md
+// §R2.7).
 //
 // Notation: A = P, B = −Q (normal form of −Q starts at Q's top vertex), t the placement of Q,
 // d the direction. X(v) = cross(d, v − t). Front edges of a polygon are those with

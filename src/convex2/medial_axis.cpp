@@ -1,5 +1,5 @@
 // Medial axis of the convex polygon M = P ⊕ (−Q) by the shrinking wavefront (DHS §3,
-// Theorem 3.2; notes §3.1, prototype medial_spoke.py). N = |M|.
+// Theorem 3.2; docs/algorithms.md §R3.1). N = |M|.
 //
 // The wavefront is M shrunk by time r: every edge line moves inward at unit speed, every vertex
 // slides along the bisector of its two lines. A convex polygon has only edge events: edge i
@@ -9,13 +9,13 @@
 // are prefetched: radius order is random in memory); an edge whose neighbours change gets a new
 // stamp and a fresh entry, stale entries are skipped when popped (lazy deletion). Memory O(N).
 //
-// Departure from the prototype: it solves the 3×3 system n_t·x + r = c_t by Cramer's rule,
-// whose determinant cross(n_i − n_a, n_b − n_a) is O(Δ²) for consecutive normals Δ apart and is
-// built from the cancelling differences n_i − n_a. Here each wavefront vertex carries its
-// bisector line u·x = h with u computed without cancellation (rot90(n_a + n_b)/|n_a + n_b| when
-// the lines are within 90°), anchored at the exact-ish vertex of M or at the node it came from;
-// an event is the intersection of two such lines, determinant O(Δ). The position error of a node
-// along its spokes is then O(ε·|M|/Δ) and across them O(ε·|M|), which is what routing needs.
+// Departure from the recipe (docs/algorithms.md §R3.1): it solves the 3×3 system n_t·x + r = c_t by
+// Cramer's rule, whose determinant cross(n_i − n_a, n_b − n_a) is O(Δ²) for consecutive normals Δ
+// apart and is built from the cancelling differences n_i − n_a. Here each wavefront vertex carries
+// its bisector line u·x = h with u computed without cancellation (rot90(n_a + n_b)/|n_a + n_b| when
+// the lines are within 90°), anchored at the exact-ish vertex of M or at the node it came from; an
+// event is the intersection of two such lines, determinant O(Δ). The position error of a node along
+// its spokes is then O(ε·|M|/Δ) and across them O(ε·|M|), which is what routing needs.
 #include "convex2/medial_axis.hpp"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
-// Private: the medial axis of the convex polygon M = P ⊕ (−Q), by the shrinking wavefront
-// (DHS §3, Theorem 3.2; notes §3.1). For convex M the medial axis is its straight skeleton: a
-// tree whose leaves are the N vertices of M and whose N − 2 internal nodes are centres of
-// maximal inscribed disks, each touching three edge lines. Build O(N log N), memory O(N).
+// Private: the medial axis of the convex polygon M = P ⊕ (−Q), by the shrinking wavefront (DHS §3,
+// Theorem 3.2; docs/algorithms.md §R3.1). For convex M the medial axis is its straight skeleton: a
+// tree whose leaves are the N vertices of M and whose N − 2 internal nodes are centres of maximal
+// inscribed disks, each touching three edge lines. Build O(N log N), memory O(N).
 //
 // Coordinates are relative to `origin` (the centre of M's bounding box) so shapes far from (0,0)
 // keep their precision: edge k's line is {x : normal[k]·(x − origin) = offset[k]}, M lies on

@@ -1,5 +1,5 @@
 // σ_d of two convex polytopes by Algorithm Compute-Depth-3D (DHS §5.2, Phase 1 / Phase 2),
-// descending the inner DK hierarchies of P and Q simultaneously (DHS §5.1; notes §4).
+// descending the inner DK hierarchies of P and Q simultaneously (DHS §5.1; docs/algorithms.md §R4).
 //
 // Notation: everything lives in P's frame; Q' = R Q + t (RelativePose semantics: exact for the
 // double R and t); M_i = P_i ⊕ (−Q'_i) for the hierarchy levels (M_0 = M); the query line is
@@ -61,9 +61,8 @@
 // 5.6 for n ≈ m; a walk restart at a vertex of degree > 48 adds O(log) (worst case O(log³)).
 // A second descent (−d) decides overlap when the top pair does not. The top levels (≤ 12
 // vertices unless the DK build stops early) are solved by brute force, O(size²).
-// Measured (bench_convex3, m = 64, CPU time): 91 µs at n = 64, 384 µs at 32,768 (was 294 µs and
-// 1.0 ms before the top-pair certificate, the caches and the static filters); the remaining
-// cost is the constant×constant subproblems (≈ 60 %) and the walks (≈ 25 %).
+// Most of the cost is the constant×constant subproblems, then the walks (times and profile in
+// docs/benchmarks.md).
 #include "convex3/minkowski_facets.hpp"
 #include "convex3/polytope_data.hpp"
 #include "geometry/exact.hpp"

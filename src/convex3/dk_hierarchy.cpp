@@ -1,4 +1,5 @@
-// Inner Dobkin–Kirkpatrick hierarchy (DHS §5.1, Fact 5.1; Dobkin–Kirkpatrick 1990; notes §4.2).
+// Inner Dobkin–Kirkpatrick hierarchy (DHS §5.1, Fact 5.1; Dobkin–Kirkpatrick 1990;
+// docs/algorithms.md §R4.2).
 //
 // Level i+1 = conv(V_i \ R_i) where R_i is an independent set of vertices of degree <= 8 in
 // level i, chosen greedily lowest degree first. Four affinely independent vertices are protected
@@ -9,9 +10,10 @@
 // (coplanar) links, where an arbitrary hull triangulation need not contain the link edges.
 // Every edge of level i+1 keeps a `down` link to level i (its own copy, or origin -> v for a
 // diagonal created in the hole of v: the parent pointer of DHS §5.1 item 1).
-// Stops when at most kTopSize vertices remain or nothing can be removed. In practice ~27% of
-// the vertices disappear per level, so there are about 2 log2 n levels; O(n log n) time (the
-// twin arrays are rebuilt by sorting per level), O(n) memory (levels shrink geometrically).
+// Stops when at most kTopSize vertices remain or nothing can be removed. In practice about a
+// quarter of the vertices disappear per level (docs/algorithms.md §R4.2), so there are about
+// 2 log2 n levels; O(n log n) time (the twin arrays are rebuilt by sorting per level), O(n) memory
+// (levels shrink geometrically).
 #include "convex3/cap_triangulation.hpp"
 #include "convex3/polytope_data.hpp"
 

@@ -1,5 +1,6 @@
-// Extremal (support) query on the inner DK hierarchy: O'Rourke CGC §7.10.5 / Edelsbrunner–
-// Maurer walk (notes §4.3), used for Lemma 5.4 of DHS (first contact of a translating plane).
+// Extremal (support) query on the inner DK hierarchy: O'Rourke CGC §7.10.5 / Edelsbrunner–Maurer
+// walk (docs/algorithms.md §R4.3), used for Lemma 5.4 of DHS (first contact of a translating
+// plane).
 //
 // Notation: u the query direction; k, j the axes of the smallest and middle |u_i|. Functionals
 // Z(w) = u·w, X(w) = w_k, Y(w) = w_j are linearly independent (det = ±u_i, i the largest axis).

@@ -32,8 +32,8 @@
 // An empty chord (or an entry face crossed the wrong way) proves the line / plane misses P_i,
 // hence P. Departures from DHS (who cite DK for the proofs): both lemmas descend the OUTER
 // hierarchy inside a plane through the line, so a query never has to track a separation; on an
-// inner level P_i the descent uses P_i's own outer hierarchy (built on demand). Measured
-// constant: 50–120 µs per query at 4 096 – 262 144 vertices (docs/benchmarks.md).
+// inner level P_i the descent uses P_i's own outer hierarchy (built on demand). Query times:
+// docs/benchmarks.md.
 #include "convex3/outer_hierarchy.hpp"
 
 #include <cassert>

@@ -1,7 +1,8 @@
-// Outer Dobkin–Kirkpatrick hierarchy (DHS §5.1 and Fact 5.1; Dobkin–Kirkpatrick 1990; notes §4.2,
-// §4.4): P = P_1 ⊂ P_2 ⊂ … ⊂ P_k, H(P_{i+1}) ⊂ H(P_i), the planes dropped from P_i bound an
-// independent set of faces of P_i of degree <= 8, and every vertex of P_{i+1} that is not a vertex
-// of P_i records the face of P_i whose removal created it (OuterLevel::creator).
+// Outer Dobkin–Kirkpatrick hierarchy (DHS §5.1 and Fact 5.1; Dobkin–Kirkpatrick 1990;
+// docs/algorithms.md §R4.2, §R4.4): P = P_1 ⊂ P_2 ⊂ … ⊂ P_k, H(P_{i+1}) ⊂ H(P_i), the planes
+// dropped from P_i bound an independent set of faces of P_i of degree <= 8, and every vertex of
+// P_{i+1} that is not a vertex of P_i records the face of P_i whose removal created it
+// (OuterLevel::creator).
 //
 // Construction = the inner hierarchy of the polar dual about an interior point c (see
 // outer_hierarchy.hpp): faces are the TRUE faces of P (coplanar triangles merged), the dual

@@ -1,6 +1,7 @@
 // ConvexPolytope::hull: validation, exact hull, reduction to a strictly convex vertex set,
-// half-edges, and the inner DK hierarchy (notes §4.2 step 1: hull libraries keep non-extreme
-// points on facets and edges — CGAL issue #3192 — so the vertex set is filtered exactly).
+// half-edges, and the inner DK hierarchy (docs/algorithms.md §R4.2 step 1: hull libraries keep
+// non-extreme points on facets and edges — CGAL issue #3192 — so the vertex set is filtered
+// exactly).
 //
 // A hull vertex v is a proper extreme point iff its incident triangles span at least three
 // distinct planes: a point in the relative interior of a facet sees one plane, of an edge two,

@@ -117,7 +117,7 @@ std::vector<std::array<int, 3>> incremental_hull(const std::vector<Vec3>& pts, s
 /// Returns false if some half-edge has no unique twin (not a closed 2-manifold).
 bool build_twins(const std::vector<int>& fv, std::vector<int>& twin);
 
-/// Builds levels 1.. of the inner hierarchy from d.levels[0] (DHS §5.1, notes §4.2).
+/// Builds levels 1.. of the inner hierarchy from d.levels[0] (DHS §5.1, docs/algorithms.md §R4.2).
 void build_dk_hierarchy(PolytopeData& d);
 
 }  // namespace pendepth::convex3

@@ -1,4 +1,4 @@
-// ConvexPolygon: validation and normal form (DESIGN.md §1; notes §2.1).
+// ConvexPolygon: validation and normal form (docs/design.md §1.3; docs/algorithms.md §R2.1).
 // Every decision (duplicate, collinear, turn direction, winding) is an exact predicate.
 #include <pendepth/polygon.hpp>
 

@@ -6,8 +6,8 @@
 // bound), then exactly with `Ex` (Shewchuk's floating-point expansions: sums of non-overlapping
 // doubles, exact while no product underflows or overflows and the length stays under a cap), and
 // only when that cannot decide either with exact rationals (mpq_set_d is exact). Exact zeros of
-// non-integer data (collinear points with decimal coordinates) end in the Ex tier: ~4× cheaper than
-// GMP on a degree-2 orientation (320 ns against 1.35 µs measured; no allocation, no gcd).
+// non-integer data (collinear points with decimal coordinates) end in the Ex tier, several times
+// cheaper than GMP (no allocation, no gcd; docs/benchmarks.md).
 //   exact_sign(f)      : exact sign of the polynomial
 //   accurate_value(f)  : the value to within ~1 ulp (relative), exact fallback when needed
 #pragma once

@@ -1,4 +1,4 @@
-// Result writers: JSON object, CSV row, human summary (DESIGN.md §3).
+// Result writers: JSON object, CSV row, human summary (docs/design.md §3).
 //
 // JSON is written by hand with std::to_chars rather than through a DOM: the values are numbers,
 // booleans and fixed words, and `pendepth batch` appends 10⁵ objects into one reused buffer

@@ -1,4 +1,4 @@
-// Result writers for 3D queries: JSON object, CSV row, human summary (DESIGN.md §3).
+// Result writers for 3D queries: JSON object, CSV row, human summary (docs/design.md §3).
 //
 // Same approach as format.cpp (hand-written JSON into a reused buffer, shortest round-trip
 // doubles). Features are reported with the vertex indices of the input file, so a user can find

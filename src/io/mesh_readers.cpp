@@ -1,4 +1,4 @@
-// Mesh file readers for 3D point sets: OBJ, OFF, STL (ASCII and binary) (DESIGN.md §3).
+// Mesh file readers for 3D point sets: OBJ, OFF, STL (ASCII and binary) (docs/design.md §3).
 //
 // Convex algorithms take the hull of the vertices, so only vertex coordinates are read; faces
 // and attributes are skipped without being parsed. Text formats are scanned line by line over
@@ -144,8 +144,8 @@ bool starts_with_solid(std::string_view bytes) {
 }
 
 // Distinct vertices in order of first appearance; -0 and +0 compare equal (x + 0.0 maps -0 to
-// +0). Open addressing with linear probing on the coordinates' bit patterns: 6·10⁶ STL vertex
-// records (10⁶ distinct) take a fraction of a second, several times faster than a node-based map.
+// +0). Open addressing with linear probing on the coordinates' bit patterns: several times faster
+// than a node-based map on large STL files (docs/benchmarks.md).
 class VertexSet {
  public:
   explicit VertexSet(std::size_t expected) {

@@ -1,4 +1,4 @@
-// Batch query files: one `x,y,dx,dy` (2D) or `x,y,z,dx,dy,dz` (3D) per line (DESIGN.md §3,
+// Batch query files: one `x,y,dx,dy` (2D) or `x,y,z,dx,dy,dz` (3D) per line (docs/design.md §3,
 // `pendepth batch`).
 //
 // One pass over the text, std::from_chars per field, no allocation per line, so 10⁵ queries

@@ -1,4 +1,4 @@
-// SVG picture of one 2D depth query (DESIGN.md §3, `pendepth depth --svg`).
+// SVG picture of one 2D depth query (docs/design.md §3, `pendepth depth --svg`).
 //
 // Left panel, the workspace: P, Q + t, Q + t + v (v = the separating translation), the move and
 // the witness point; the direction d is a glyph in the legend. Right panel (optional), the

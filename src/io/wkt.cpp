@@ -1,4 +1,4 @@
-// WKT reader and writer for 2D polygons (DESIGN.md §3).
+// WKT reader and writer for 2D polygons (docs/design.md §3).
 //
 // A hand-written scanner over the whole text: one pass, std::from_chars for numbers (a 10⁶-vertex
 // file parses in a fraction of a second), a running line counter so every error and every vertex

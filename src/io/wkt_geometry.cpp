@@ -1,5 +1,5 @@
 // WKT writer and reader for geometries of several parts (`pendepth nfp`: the no-fit polygon as
-// polygons with holes, slits and isolated points), DESIGN.md §3.
+// polygons with holes, slits and isolated points), docs/design.md §3.
 //
 // Writer: MULTIPOLYGON when there are only polygons, else a GEOMETRYCOLLECTION of the non-empty
 // MULTIPOLYGON / MULTILINESTRING / MULTIPOINT parts; shortest round-trip doubles, so reading the

@@ -30,7 +30,7 @@ void convex_parts(const std::vector<Tri>& tris, bool merge, ConvexParts& out) {
   out.v.reserve(n3), out.id.reserve(n3), out.start.reserve(T + 1), out.lo.reserve(T), out.hi.reserve(T);
   auto V = [&](std::uint32_t s) -> const Vec2& { return tris[s / 3].v[s % 3]; };
   // Work arrays in one buffer kept by the thread (this runs once per shape and pair: fresh
-  // vectors were two allocations per call): per slot its vertex id and the id of the next vertex
+  // vectors would allocate on every call): per slot its vertex id and the id of the next vertex
   // of its triangle (the triangle edge from the slot), the ring links next, prev, alias (3T
   // each), the parts' union-find (T), then the per-vertex lists (nv + 3T, merge only).
   std::uint32_t nv = 0;

@@ -16,8 +16,8 @@
 //    An edge of P antiparallel to an edge of Q gives up to four collinear candidates forming two
 //    paths between the same two sum vertices, each covering the segment between them; when one
 //    path is complete the other path's candidates are marked redundant: they still split the
-//    other candidates in step 2 but are not classified (on shirts and trousers ~22–31 % of the
-//    candidates; the pieces cover the same points of ∂O, fewer duplicated).
+//    other candidates in step 2 but are not classified (a sizeable share of the candidates on
+//    real pieces, docs/benchmarks.md; the pieces cover the same points of ∂O, fewer duplicated).
 // 2. Each candidate is classified (nfp_classify.cpp): split where other candidates meet it, one
 //    exact point test per part against the open sums; maximal runs of uncovered parts are kept.
 //    A point of a candidate lies on ∂S for a non-degenerate S of the family, so if no open sum
@@ -33,11 +33,8 @@
 // typically O(n + m) on real pieces); classification O(K log K + X) for X box-overlapping candidate
 // pairs plus one point test (O(1) sums on real pieces, worst O(nm)) per part and per split point;
 // worst case O(n²m²) exact tests (a candidate met by > 256 others is cut by the reference, O(nm)).
-// Measured (callgrind, Release, per pair over every ordered pair of the nesting instances):
-// albano 107 k instructions (classification 59 k, export 26 k, candidates 11 k, triangulations
-// and their hierarchies 9 k, piece hierarchy 2 k), shirts 103 k (59 k, 23 k, 11 k, 8 k, 2 k),
-// trousers 39 k — the reference cutting with the rational export took 1.16 M on albano
-// (docs/algorithms.md).
+// The cost per pair by step (classification, export, candidates, triangulations, hierarchies) is
+// in docs/benchmarks.md.
 // Departure from the usual reduced-convolution builders (CGAL, Clipper):
 // no arrangement of the candidates is built and no winding numbers are computed; membership in O
 // is decided directly by the open convex pair sums, which also yields the slits and isolated
@@ -133,8 +130,9 @@ void finish(NfpCandidate& c) {
 std::vector<NfpCandidate> nfp_candidates(const Polygon& P, const Polygon& Q) {
   const auto VP = P.vertices(), VQ = Q.vertices();
   const std::size_t n = P.size(), m = Q.size();
-  // Scratch reused by the thread's next call (the builder runs once per pair, ~10 allocations
-  // per pair were ~10 % of the set-up): edge vectors, turns and signs, the qualifying pairs.
+  // Scratch reused by the thread's next call (the builder runs once per pair, and fresh
+  // allocations were a visible part of the set-up): edge vectors, turns and signs, the
+  // qualifying pairs.
   thread_local Scratch scratch;
   std::vector<EdgeVec>& edges = scratch.edges;
   edges.resize(n + m);
@@ -265,13 +263,10 @@ std::vector<NfpCandidate> nfp_candidates(const Polygon& P, const Polygon& Q) {
 }  // namespace nonconvex2
 
 namespace {
-// Largest piece count whose query tree is built in order. Measured (callgrind, 300 σ and σ_d
-// queries per pair on a sixth of the ordered nesting pairs and on 10/30/100-vertex stars, t = a
-// uniform point of P minus Q's vertex centroid, nearly all overlapping): σ and σ_d cost 5.1 % and
-// 6.1 % more instructions on the nesting pairs than with the median-split tree, 0.4 % on the
-// stars, while the tree costs ~4× fewer to build (~5 k instructions less per shirts pair, about
-// the cost of 5 queries); with no bound the stars' queries cost 7–10 % more (placements uniform
-// in P's box).
+// Largest piece count whose query tree is built in order (BoxTree::build_in_order) rather than by
+// median splits: for small no-fit polygons the in-order tree is several times cheaper to build
+// and costs σ and σ_d only a few per cent, a trade-off that pays within a handful of queries; for
+// large ones its queries get noticeably slower, hence the bound (docs/benchmarks.md).
 constexpr std::size_t kInOrderTreeMax = 64;
 }  // namespace
 
@@ -281,10 +276,10 @@ NoFitPolygon2::Impl::Impl(const Polygon& P, const Polygon& Q) : S(P, Q) {
   sz.candidates = cand.size();
   // Step 2: their uncovered closed pieces. Usually about one per candidate (a candidate is cut
   // into few pieces, many are covered whole): reserving that many saves the growth of a vector
-  // of large records (~2.5 reallocations per pair).
+  // of large records.
   pieces.reserve(cand.size());
   nonconvex2::nfp_classify(S, cand, pieces);
-  // Large pairs cover most candidates whole (a 300-vertex star pair: ~10× more candidates than
+  // Large pairs cover most candidates whole (large star pairs have many times more candidates than
   // pieces): the stored no-fit polygon does not keep that slack.
   if (pieces.capacity() > 2 * pieces.size() + 64) pieces.shrink_to_fit();
   sz.pieces = pieces.size();

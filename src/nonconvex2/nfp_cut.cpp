@@ -6,8 +6,8 @@
 // cl(O) \ O = ∂O.
 // Cost per candidate: the pairs whose sum box meets the candidate's box, worst case O(nm) exact
 // tests. A floating oriented-slab filter (the candidate's line and its extent along it, separable
-// over the two triangles) drops most visited pairs before a sum is built; on albano ~7 sums per
-// candidate are built and cut exactly (~3,000 instructions each).
+// over the two triangles) drops most visited pairs before a sum is built; on real pieces only a
+// few sums per candidate are built and cut exactly (counts in docs/benchmarks.md).
 // The builder classifies candidates by nfp_classify.cpp, which is cheaper when few candidates
 // cross; it falls back to this cutting for a candidate it cannot settle, and the tests use this
 // as the reference for nfp_classify (the same pieces, exactly).

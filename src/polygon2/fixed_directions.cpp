@@ -54,10 +54,10 @@
 // Complexity per direction, E = O(n) sub-pieces: build O(E log E) exact comparisons for the keys
 // plus expected O(E log E) cut comparisons (each O(log m) for arcs) for the sweep; space O(E):
 // the sub-pieces, the keys, one root and one flag per slab, and expected O(E) persistent nodes
-// (per sub-piece: 20 bytes, two 4-byte key ends, ~2 slabs of a 4-byte root and a bit, ~2.4
-// nodes of 20 bytes; measured ≤ 102 bytes per piece of ∂O on combs seen across their teeth,
-// n = 10² … 10⁵, where the per-slab lists took Θ(n²): 3.7 kB per piece at n = 10⁴); query expected O(log n · log m) exact predicates (O(log n)
-// when the pieces met are segments).
+// (per sub-piece: a 20-byte record, two 4-byte key ends, a 4-byte root and a bit for each slab it
+// starts, and a few 20-byte persistent nodes; bytes per piece of ∂O in docs/benchmarks.md — the
+// per-slab lists this replaced took Θ(n²) on combs seen across their teeth); query expected
+// O(log n · log m) exact predicates (O(log n) when the pieces met are segments).
 #include <pendepth/depth2_polygon.hpp>
 
 #include <algorithm>

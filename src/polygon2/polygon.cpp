@@ -1,4 +1,4 @@
-// Polygon (simple, with holes): validation and normal form (DESIGN.md §1).
+// Polygon (simple, with holes): validation and normal form (docs/design.md §1.3).
 //
 // Every decision is an exact predicate on the input doubles. Ring simplicity and ring–ring
 // disjointness are checked together by a sort-and-sweep over the edges' x-extents with a y-extent

@@ -8,7 +8,7 @@
 //                 boxes, nearest boxes first, pruned by the best hit so far; arcs are located by
 //                 binary search on B (O(log m)). Departure from DHS §4.3 (ears + partition trees):
 //                 the hierarchy is simpler and its measured query time grows sublinearly in n
-//                 (report / bench); the worst case stays O(n log m). t ∈ O is decided from the
+//                 (docs/benchmarks.md); the worst case stays O(n log m). t ∈ O is decided from the
 //                 first hit h itself, as the fixed directions do (§6): the segment (t, h) misses
 //                 ∂O, so it lies in O or outside closure(O); at a point interior to one piece O
 //                 is on the piece's left only, so t ∈ O iff the ray crosses the piece from left to

@@ -22,11 +22,11 @@
 // exact predicate where it cannot decide) or an exact comparison of input
 // coordinates (bounding-box rejection). Among the ears the one with the shortest diagonal is
 // clipped (a float key that only orders valid choices): fatter triangles than the first ear
-// found, measured 3 % fewer instructions in the no-fit-polygon build that uses them.
+// found make the no-fit-polygon build that uses them slightly cheaper (docs/benchmarks.md).
 // Cost: N + 2(N - 3) ear tests of O(r) orient2d each for r non-convex vertices, plus an O(N)
-// scan per clip: O(N^2) worst case. kEarMax = 32 by measurement (instructions per polygon, ear
-// clipping / CDT): random stars 24 k / 131 k at N = 32, combs (worst: long collinear runs in
-// wide ears) 61 k / 92 k at N = 32 and 159 k / 184 k at N = 64, nesting pieces 1.7 k / 16.8 k.
+// scan per clip: O(N^2) worst case. kEarMax = 32: there ear clipping still clearly beats the CDT
+// even on its worst inputs (combs: long collinear runs in wide ears), and the margin shrinks as N
+// grows (comparison in docs/benchmarks.md).
 //
 // CDT: Epick's predicates are exact; the only constructions a CDT needs are intersections of
 // crossing constraints, which cannot occur because Polygon's validation guarantees the rings are

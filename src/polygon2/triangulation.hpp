@@ -22,8 +22,9 @@ inline constexpr std::size_t kEarMax = 32;
 /// triangle vertex is a vertex of P, no vertex of P lies on a triangle edge except at its ends;
 /// N - 2 + 2h triangles for N vertices and h holes), each strictly counter-clockwise.
 /// Hole-free P with N <= kEarMax: exact ear clipping, O(N^2) (O(N·r) predicates for r reflex or
-/// straight vertices; ~1.7 k instructions per nesting piece against ~17 k for the CDT); should no
-/// ear be found (impossible for a valid P, kept as a safety net) the CDT triangulates P instead.
+/// straight vertices; about ten times cheaper than the CDT on nesting pieces, docs/benchmarks.md);
+/// should no ear be found (impossible for a valid P, kept as a safety net) the CDT triangulates P
+/// instead.
 /// Otherwise: constrained Delaunay triangulation (CGAL, exact predicates), faces inside P
 /// selected by nesting depth, O(N log N). `path`, if given, receives the algorithm used.
 std::vector<TriangleIds> triangulate(const Polygon& P, TriangulationPath* path = nullptr);

@@ -1,4 +1,4 @@
-// End-to-end tests of the `pendepth` binary (DESIGN.md §3): exit codes, one-line errors naming
+// End-to-end tests of the `pendepth` binary (docs/design.md §3): exit codes, one-line errors naming
 // file and line, JSON keys, and batch output equal bit for bit to the library's answers.
 #include <pendepth/depth2.hpp>
 #include <pendepth/io.hpp>

@@ -1,4 +1,4 @@
-// End-to-end tests of `pendepth` on 3D shapes (DESIGN.md §3): analytic cube depths in every
+// End-to-end tests of `pendepth` on 3D shapes (docs/design.md §3): analytic cube depths in every
 // mesh format, rotations, exit codes and one-line errors naming file and line (or byte offset),
 // and batch output equal bit for bit to the library's answers.
 #include <pendepth/depth3.hpp>

@@ -1,4 +1,4 @@
-// End-to-end tests of the CLI on two non-convex polygons (issue 5 item 5, DESIGN.md §3):
+// End-to-end tests of the CLI on two non-convex polygons (issue 5 item 5, docs/design.md §3):
 //   - `depth` (σ, σ_d, complete separation; JSON with ring-aware features) equals PairDepth2 run
 //     in-process on the same files, bit for bit (same algorithm, same inputs);
 //   - `batch` (answered on NoFitPolygon2) equals NoFitPolygon2 in-process bit for bit and

@@ -1,5 +1,5 @@
 // End-to-end tests of `pendepth depth/batch` on a polygon with holes against a convex polygon
-// (DESIGN.md §3, DHS §4, §6): the CLI picks PolygonDepth2 by shape kind; its answers equal the
+// (docs/design.md §3, DHS §4, §6): the CLI picks PolygonDepth2 by shape kind; its answers equal the
 // library's bit for bit (JSON and CSV, σ, σ_d, separation); analytic values on a U-shaped part
 // and a square with a square hole; the role swap (P convex, Q non-convex) against the library run
 // on the swapped pair; features with rings and input indices; SVG with holes and ∂O; bad input.

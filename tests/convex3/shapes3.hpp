@@ -1,4 +1,5 @@
-// Test shape generators for 3D convex polytopes (pinned seeds; notes §5 degenerate families).
+// Test shape generators for 3D convex polytopes (pinned seeds; docs/algorithms.md §R5 degenerate
+// families).
 #pragma once
 
 #include <pendepth/polytope.hpp>

@@ -1,5 +1,6 @@
-// Extremal query on the DK hierarchy vs brute force (notes §4.3, §5): integer spheres (massive
-// coplanarity, directions along facet normals), prisms, bipyramids, random hulls, shared hulls.
+// Extremal query on the DK hierarchy vs brute force (docs/algorithms.md §R4.3, §R5): integer
+// spheres (massive coplanarity, directions along facet normals), prisms, bipyramids, random hulls,
+// shared hulls.
 #include <gtest/gtest.h>
 
 #include <pendepth/polytope.hpp>

@@ -1,4 +1,4 @@
-// Exact reference for the 2D convex intersection depth (tests only; DESIGN.md §5).
+// Exact reference for the 2D convex intersection depth (tests only; docs/design.md §5).
 //
 // Notation: P fixed, Q moving, placed at t; M = P ⊕ (−Q); σ_d(t) the exit parameter of the ray
 // t + s·d̂ from int M, σ(t) = dist(t, ∂M) inside M, 0 elsewhere.

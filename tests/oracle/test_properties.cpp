@@ -1,4 +1,4 @@
-// The properties of DESIGN.md §5 on random pairs, decided with the oracle's exact point location:
+// The properties of docs/design.md §5 on random pairs, decided with the oracle's exact point location:
 //  - moving Q by the returned translation v separates: t + (1+ε)v ∉ int M, and any shorter move
 //    along v does not: t + (1−ε)v ∈ int M (σ and σ_d);
 //  - σ <= σ_d for every direction tried; σ_d along σ's normal equals σ;

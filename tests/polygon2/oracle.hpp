@@ -2,13 +2,13 @@
 // convolved triangles R_i = T_i ⊕ (−Q), each the exact convex hull of its 3m vertex differences.
 //
 // Overlap set O = {t : interiors of P and Q + t overlap} = ∪ int R_i (exact for convex T_i, Q).
-// Note O ⊆ int M but O ≠ int M in general: where Q fits a pocket exactly, M = ∪ R_i has a slit
-// of touching placements inside its topological interior. The DESIGN's "touching is not
-// overlapping" makes O the set that matters, so the ray queries use O; the regularised union
-// (Polygon_set_2 join, DESIGN.md §4) is kept to check O ⊆ int M and to count slit placements.
-// A ray query intersects the line t + λ·d with every explicit R_i exactly (λ of the crossings
-// with its edges, interior crossing confirmed by an exact midpoint test), then classifies the
-// sorted breakpoints.
+// Note O ⊆ int M but O ≠ int M in general: where Q fits a pocket exactly, M = ∪ R_i has a slit of
+// touching placements inside its topological interior. Touching is not overlapping (docs/design.md
+// §1.2), which makes O the set that matters, so the ray queries use O; the regularised union
+// (Polygon_set_2 join, docs/design.md §4) is kept to check O ⊆ int M and to count slit placements.
+// A ray query intersects the line t + λ·d with every explicit R_i exactly (λ of the crossings with
+// its edges, interior crossing confirmed by an exact midpoint test), then classifies the sorted
+// breakpoints.
 #pragma once
 
 #include <pendepth/geometry.hpp>
