@@ -42,7 +42,7 @@
 // default 10,30,100,300; at 1000 NoFitPolygon2's build takes ~6 min CPU at this commit, and CGAL
 // with its budget raised ran out of 23 GB of memory). bench/run_nonconvex2.sh prints the tables of docs/benchmarks.md.
 #include <benchmark/benchmark.h>
-#include <pendepth/depth2_nonconvex.hpp>
+#include <pendepth/depth2_polygon_polygon.hpp>
 #include <pendepth/nfp2.hpp>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>

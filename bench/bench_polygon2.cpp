@@ -11,7 +11,7 @@
 //   build/clipper         ClipperLib::MinkowskiSum(−Q, rings of P, closed) on coordinates scaled
 //                         by 2^20 and rounded to integers (Clipper's grid), union included
 //   sigma_d/pendepth      PolygonDepth2::along, the fast σ_d path (DHS §4.3)
-//   sigma_d/pendepth_scan PolygonDepth2::along_scan, every piece of ∂O, O(n log m) (DHS §4.2)
+//   sigma_d/pendepth_scan polygon2::along_scan (src/polygon2/query_impl.hpp), every piece of ∂O, O(n log m) (DHS §4.2)
 //   sigma/pendepth        PolygonDepth2::minimum, σ (DHS §4.2, Lemma 4.3)
 //   build/pendepth_fixed8 PolygonDirectionSet for 8 directions (DHS §6); counter bytes_per_direction
 //   sigma_d/pendepth_fixed PolygonDirectionSet::along, query i along direction i mod 8
@@ -35,7 +35,9 @@
 // PENDEPTH_BENCH_M (comma lists; defaults 10,100,1000,10000,100000 and 4,16,100,1000).
 // bench/run_polygon2.sh prints the tables of docs/benchmarks.md from this program's JSON output.
 #include <benchmark/benchmark.h>
-#include <pendepth/depth2_polygon.hpp>
+#include <pendepth/depth2_polygon_convex.hpp>
+
+#include "polygon2/query_impl.hpp"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_2.h>
@@ -296,7 +298,7 @@ void BM_query_pendepth(benchmark::State& state, std::string shape, std::size_t n
   double sum = 0;
   for (auto _ : state) {
     const pendepth::Depth2 r = q == Query::AlongFast   ? pd.along(c.t[i], c.d[i])
-                               : q == Query::AlongScan ? pd.along_scan(c.t[i], c.d[i])
+                               : q == Query::AlongScan ? pendepth::polygon2::along_scan(pd, c.t[i], c.d[i])
                                                        : pd.minimum(c.t[i]);
     sum += r.depth;
     i = pb::next_query(i);

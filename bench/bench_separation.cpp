@@ -5,7 +5,7 @@
 // P: a random star polygon or a thick spiral with n vertices; Q: a 16-vertex star. n = 10 … 10^5.
 // BM_Overlapping times the overlap test alone (reported by every separation query).
 //   bench_separation --benchmark_filter=Envelope
-#include <pendepth/depth2_nonconvex.hpp>
+#include <pendepth/depth2_polygon_polygon.hpp>
 
 #include <benchmark/benchmark.h>
 

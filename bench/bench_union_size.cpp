@@ -3,7 +3,9 @@
 // of σ_d (hierarchy ray shooting, piece scan, triangle scan) and σ, for n = 10 … 10^5 and
 // m = 4 … 10^3 on four shape families. Plain program (no peers): prints one table row per pair.
 //   usage: bench_union_size [max_n] [max_m] [shape: star|smooth|comb|spiral] [min_n]
-#include <pendepth/depth2_polygon.hpp>
+#include <pendepth/depth2_polygon_convex.hpp>
+
+#include "polygon2/query_impl.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -127,8 +129,8 @@ int main(int argc, char** argv) {
         };
         const double q_along = per_query(2000, [&](const Vec2& t, const Vec2& d) { return pd.along(t, d).depth; });
         const int slow = n >= 10000 ? 20 : 200;
-        const double q_scan = per_query(slow, [&](const Vec2& t, const Vec2& d) { return pd.along_scan(t, d).depth; });
-        const double q_tri = per_query(slow, [&](const Vec2& t, const Vec2& d) { return pd.along_triangles(t, d).depth; });
+        const double q_scan = per_query(slow, [&](const Vec2& t, const Vec2& d) { return pendepth::polygon2::along_scan(pd, t, d).depth; });
+        const double q_tri = per_query(slow, [&](const Vec2& t, const Vec2& d) { return pendepth::polygon2::along_triangles(pd, t, d).depth; });
         const double q_min = per_query(2000, [&](const Vec2& t, const Vec2&) { return pd.minimum(t).depth; });
         std::printf("%-7s %7zu %5zu | %5zu %7zu %7zu %6zu %10zu %7.0f | %9.2f | %9.2f %9.2f %9.2f %9.2f%s\n", shape.c_str(),
                     P.size(), Q.size(), s.rings, s.vertices, s.segments, s.arcs, s.bytes,

@@ -1,7 +1,7 @@
 // pendepth — the per-pair no-fit polygon of two simple polygons with holes (issue 5 item 4;
 // DHS §6 "build the convolution", survey §2 reduced convolution).
 //
-// Conventions and semantics as depth2_nonconvex.hpp: P fixed, Q placed at t, M = P ⊕ (−Q),
+// Conventions and semantics as depth2_polygon_polygon.hpp: P fixed, Q placed at t, M = P ⊕ (−Q),
 // the overlap set O = {t : int P ∩ int(Q + t) ≠ ∅} = ∪ int S_ij (S_ij = T_i ⊕ (−U_j) for the
 // triangles T_i of P and U_j of Q). NoFitPolygon2 builds ∂O once, exactly, and answers batches of
 // queries with a spatial index; every answer equals PairDepth2's (same kind, features, value to a

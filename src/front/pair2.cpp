@@ -5,8 +5,8 @@
 // order of the calls. Structures that serve one query kind only (the convex depth field for σ,
 // PairDepth2's separation next to a no-fit polygon, the exported no-fit polygon) are built on
 // first use, under std::call_once.
-#include <pendepth/depth2_nonconvex.hpp>
-#include <pendepth/depth2_polygon.hpp>
+#include <pendepth/depth2_polygon_polygon.hpp>
+#include <pendepth/depth2_polygon_convex.hpp>
 #include <pendepth/nfp2.hpp>
 #include <pendepth/pendepth.hpp>
 

@@ -1,7 +1,7 @@
 // σ_d for two simple polygons with holes (issue 5 item 2; DHS §4.2 generalised, §6 "no o(n²)
 // algorithm known" for the fixed-direction depth of two non-convex polygons).
 //
-// O = ∪ int S_ij (depth2_nonconvex.hpp); the line t + λ·d meets each open S_ij in an open interval
+// O = ∪ int S_ij (depth2_polygon_polygon.hpp); the line t + λ·d meets each open S_ij in an open interval
 // and σ_d is the end `cur` of the connected component of their union containing λ = 0 (intervals
 // sharing only an endpoint are not connected). Pruning: a best-first dual traversal of the two box
 // hierarchies, node pairs keyed by the λ at which the line enters box(A) ⊕ (−box(B)) (a lower bound

@@ -1,5 +1,5 @@
 // σ for two simple polygons with holes (issue 5 item 3): σ(t) = dist(t, ℝ² \ O) for t ∈ O,
-// O = ∪ int S_ij (depth2_nonconvex.hpp). DHS §6 leaves the non-convex minimum depth open (O(n⁴)
+// O = ∪ int S_ij (depth2_polygon_polygon.hpp). DHS §6 leaves the non-convex minimum depth open (O(n⁴)
 // by building the convolution); this is a pruned exact search that never builds M.
 //
 // 1. Upper bound U = min σ_d(t) over 8 directions (each point t + σ_d·d̂ lies outside O).

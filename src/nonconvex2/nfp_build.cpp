@@ -1,5 +1,5 @@
 // The per-pair no-fit polygon, construction (issue 5 item 4; survey §2 reduced convolution, DHS §6):
-// the boundary of O = ∪ int S_ij (depth2_nonconvex.hpp) as exact uncovered pieces.
+// the boundary of O = ∪ int S_ij (depth2_polygon_polygon.hpp) as exact uncovered pieces.
 //
 // 1. Candidates (reduced convolution): an edge e = p0 → p1 of P (any ring, P's interior on its
 //    left) with a vertex q of Q such that q is convex in Q (interior angle ≤ π) and both Q edges

@@ -14,7 +14,7 @@
 //   and bound on the hierarchy with conservative box distances, exact comparisons of squared
 //   distances (edge_cut.hpp, the same candidates as PairDepth2::minimum).
 // Results go through PairDepth2::Impl::contact, so kinds, features and witnesses follow
-// depth2_nonconvex.hpp. Cost per query: O(log N + k) node visits for N pieces and k boxes near the
+// depth2_polygon_polygon.hpp. Cost per query: O(log N + k) node visits for N pieces and k boxes near the
 // answer (worst case O(N)), plus the overlap test.
 #include <cmath>
 #include <limits>

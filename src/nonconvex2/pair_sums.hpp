@@ -11,7 +11,7 @@
 // (copied, not shared, so the two modules evolve independently).
 #pragma once
 
-#include <pendepth/depth2_nonconvex.hpp>
+#include <pendepth/depth2_polygon_polygon.hpp>
 
 #include <algorithm>
 #include <array>

@@ -14,6 +14,7 @@ void require_finite(const Vec2& v, const char* what) {
 }  // namespace
 
 PolygonDepth2::PolygonDepth2(const Polygon& P, const ConvexPolygon& Q) : impl_(std::make_unique<Impl>(P, Q)) {}
+const PolygonDepth2::Impl& polygon_depth_impl(const PolygonDepth2& pd) { return *pd.impl_; }
 PolygonDepth2::~PolygonDepth2() = default;
 PolygonDepth2::PolygonDepth2(PolygonDepth2&&) noexcept = default;
 PolygonDepth2& PolygonDepth2::operator=(PolygonDepth2&&) noexcept = default;

@@ -58,7 +58,7 @@
 // starts, and a few 20-byte persistent nodes; bytes per piece of ∂O in docs/benchmarks.md — the
 // per-slab lists this replaced took Θ(n²) on combs seen across their teeth); query expected
 // O(log n · log m) exact predicates (O(log n) when the pieces met are segments).
-#include <pendepth/depth2_polygon.hpp>
+#include <pendepth/depth2_polygon_convex.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -396,8 +396,8 @@ void PolygonDirectionSet::Impl::build(Direction& D) {
 
 PolygonDirectionSet::PolygonDirectionSet(const PolygonDepth2& pd, std::vector<Vec2> directions)
     : impl_(std::make_unique<Impl>()) {
-  impl_->pd = &pd.impl();
-  impl_->ub = &pd.impl().U;
+  impl_->pd = &polygon_depth_impl(pd);
+  impl_->ub = &polygon_depth_impl(pd).U;
   for (std::size_t k = 0; k < directions.size(); ++k) {
     const Vec2& d = directions[k];
     if (!std::isfinite(d.x()) || !std::isfinite(d.y()))

@@ -1,7 +1,7 @@
 // Private: state shared by the PolygonDepth2 queries (DHS §4) and helpers building results.
 #pragma once
 
-#include <pendepth/depth2_polygon.hpp>
+#include <pendepth/depth2_polygon_convex.hpp>
 
 #include "polygon2/convolved_triangles.hpp"
 #include "polygon2/union_boundary.hpp"
@@ -16,7 +16,19 @@ struct PolygonDepth2::Impl {
   Impl(const Polygon& p, const ConvexPolygon& q) : P(p), Q(q), R(P, Q), U(P, R) {}
 };
 
+const PolygonDepth2::Impl& polygon_depth_impl(const PolygonDepth2& pd);
+
 namespace polygon2 {
+
+// ---- reference paths (tests and benchmarks): same contract and results as PolygonDepth2's ----
+
+/// σ_d by visiting every piece of the implicit union boundary, O(n log m) (DHS §4.2): the second,
+/// independent query path of along().
+Depth2 along_scan(const PolygonDepth2& pd, const Vec2& t, const Vec2& d);
+/// σ_d from the convolved triangles directly (exact reference, O(n log m + n log n)).
+Depth2 along_triangles(const PolygonDepth2& pd, const Vec2& t, const Vec2& d);
+/// Complete separation from the convolved triangles directly (exact reference, O(n log m)).
+Depth2 separation_triangles(const PolygonDepth2& pd, const Vec2& t, const Vec2& d);
 
 /// Validates (t, d) like the convex queries and returns d scaled by a power of two (exact, same
 /// direction) so its largest component is in [1, 2).

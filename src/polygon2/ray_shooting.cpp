@@ -93,6 +93,8 @@ Depth2 along_with(const PolygonDepth2::Impl& S, const Vec2& t, const Vec2& d_in,
 }  // namespace
 
 Depth2 PolygonDepth2::along(const Vec2& t, const Vec2& d) const { return along_with(*impl_, t, d, false); }
-Depth2 PolygonDepth2::along_scan(const Vec2& t, const Vec2& d) const { return along_with(*impl_, t, d, true); }
+Depth2 polygon2::along_scan(const PolygonDepth2& pd, const Vec2& t, const Vec2& d) {
+  return along_with(polygon_depth_impl(pd), t, d, true);
+}
 
 }  // namespace pendepth

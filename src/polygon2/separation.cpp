@@ -14,20 +14,21 @@
 
 namespace pendepth {
 
-Depth2 PolygonDepth2::separation_triangles(const Vec2& t, const Vec2& d_in) const {
+Depth2 polygon2::separation_triangles(const PolygonDepth2& pd, const Vec2& t, const Vec2& d_in) {
+  const PolygonDepth2::Impl& S = polygon_depth_impl(pd);
   const Vec2 d = polygon2::check_and_scale(t, d_in);
   polygon2::Cut best, entry, exit;
   bool found = false;
-  for (std::size_t i = 0; i < impl_->R.size(); ++i)
-    if (impl_->R.line_interval(i, t, d, entry, exit) && polygon2::cut_sign(exit, t, d) > 0 &&
+  for (std::size_t i = 0; i < S.R.size(); ++i)
+    if (S.R.line_interval(i, t, d, entry, exit) && polygon2::cut_sign(exit, t, d) > 0 &&
         (!found || polygon2::compare_cuts(exit, best, t, d) > 0)) {
       best = exit;
       found = true;
     }
   Depth2 r;
-  if (found) r = polygon2::result_at_cut(*impl_, best, t, d);
+  if (found) r = polygon2::result_at_cut(S, best, t, d);
   r.kind = DepthKind::Separation;
-  r.overlapping = overlapping(t);
+  r.overlapping = pd.overlapping(t);
   return r;
 }
 

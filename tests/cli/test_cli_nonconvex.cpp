@@ -14,7 +14,7 @@
 // Inputs: random star polygons with and without holes (pinned seed), nesting pieces from
 // ../shared/data/nesting, and the analytic shapes above.
 #include <pendepth/depth2.hpp>
-#include <pendepth/depth2_nonconvex.hpp>
+#include <pendepth/depth2_polygon_polygon.hpp>
 #include <pendepth/io.hpp>
 #include <pendepth/nfp2.hpp>
 

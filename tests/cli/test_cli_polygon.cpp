@@ -4,7 +4,7 @@
 // and a square with a square hole; the role swap (P convex, Q non-convex) against the library run
 // on the swapped pair; features with rings and input indices; SVG with holes and ∂O; bad input.
 #include <pendepth/depth2.hpp>
-#include <pendepth/depth2_polygon.hpp>
+#include <pendepth/depth2_polygon_convex.hpp>
 #include <pendepth/io.hpp>
 
 #include <gtest/gtest.h>

@@ -1,8 +1,8 @@
 // Front door, 2D (include/pendepth/pendepth.hpp): Pair2 gives the values of the engine it picks,
 // bit for bit; the polygon × convex role swap both ways; every query for every pair; batches
 // equal to single calls bit for bit at 1, 2 and 8 threads; errors at the boundary.
-#include <pendepth/depth2_nonconvex.hpp>
-#include <pendepth/depth2_polygon.hpp>
+#include <pendepth/depth2_polygon_polygon.hpp>
+#include <pendepth/depth2_polygon_convex.hpp>
 #include <pendepth/nfp2.hpp>
 #include <pendepth/pendepth.hpp>
 

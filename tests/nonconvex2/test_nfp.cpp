@@ -6,7 +6,7 @@
 // of Q's width (a slit), a hole Q fits exactly (an isolated point), collinear contacts, every
 // ordered pair of albano and pairs of shirts and trousers, large offsets, placements on vertices
 // of ∂O. The documented semantics of slits and isolated points are checked explicitly. Pinned seeds.
-#include <pendepth/depth2_nonconvex.hpp>
+#include <pendepth/depth2_polygon_polygon.hpp>
 #include <pendepth/nfp2.hpp>
 
 #include <gtest/gtest.h>

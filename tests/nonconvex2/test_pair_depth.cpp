@@ -3,7 +3,7 @@
 // properties every answer must have. Inputs: random star-shaped pairs (with and without holes,
 // integer and real coordinates), combs whose teeth fit each other exactly, a slot Q fits exactly,
 // collinear contacts, every ordered pair of the albano nesting instance. Pinned seeds.
-#include <pendepth/depth2_nonconvex.hpp>
+#include <pendepth/depth2_polygon_polygon.hpp>
 
 #include <gtest/gtest.h>
 

@@ -9,7 +9,7 @@
 // nesting pieces, 10^6 offsets, staircases, spikes, several rightmost vertices; directions random,
 // axis-aligned, along and across edges, and along vertex differences (equal levels). Pinned seeds.
 // A timing table (walk vs divide and conquer) for n = 10 … 10^4 is printed.
-#include <pendepth/depth2_nonconvex.hpp>
+#include <pendepth/depth2_polygon_polygon.hpp>
 
 #include <gtest/gtest.h>
 

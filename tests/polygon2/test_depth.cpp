@@ -5,7 +5,7 @@
 // random, on vertices/edges of the R_i and on vertices of ∂M; directions random, axis-parallel,
 // parallel to P's and Q's edges. Pinned seeds.
 #include <pendepth/depth2.hpp>
-#include <pendepth/depth2_polygon.hpp>
+#include <pendepth/depth2_polygon_convex.hpp>
 
 #include <gtest/gtest.h>
 

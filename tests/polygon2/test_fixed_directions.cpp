@@ -8,7 +8,7 @@
 // The reference along() is itself checked against the exact CGAL union in test_depth.cpp.
 // Pinned seeds. Also: bad input errors, and the space per direction: linear in the pieces of ∂O on
 // combs seen across their teeth (the slab method's quadratic case), with a stated constant.
-#include <pendepth/depth2_polygon.hpp>
+#include <pendepth/depth2_polygon_convex.hpp>
 
 #include <gtest/gtest.h>
 
@@ -71,7 +71,7 @@ ConvexPolygon random_convex(std::mt19937_64& rng, int m, double scale, bool grid
 void check_pair(const Polygon& P, const ConvexPolygon& Q, std::mt19937_64& rng, int random_queries, Stats& st,
                 const std::string& what) {
   const PolygonDepth2 pd(P, Q);
-  const auto& ub = pd.impl().U;
+  const auto& ub = pendepth::polygon_depth_impl(pd).U;
 
   std::vector<Vec2> ds{{1, 0}, {0, 1}, {-1, 0}, {0, -1}, {std::sqrt(2.0), 1 / 3.0}};
   std::uniform_int_distribution<int> ud(-5, 5);

@@ -10,7 +10,7 @@
 // Shapes: random star-shaped polygons with holes, spirals, combs whose pockets Q fits exactly,
 // squares with grids of holes (Q smaller than / exactly the size of a hole), a frame with
 // collinear vertices, axis-parallel P and Q, coordinates offset by 1e6, nesting pieces.
-#include <pendepth/depth2_polygon.hpp>
+#include <pendepth/depth2_polygon_convex.hpp>
 
 #include <gtest/gtest.h>
 
@@ -76,7 +76,7 @@ void check_case(const std::string& what, const Polygon& P, const ConvexPolygon& 
   ++st.cases;
   placements = std::max(2, pendepth_test::scaled(placements));  // Debug / sanitizer builds: fewer
   PolygonDepth2 pd(P, Q);
-  const auto& U = pd.impl().U;
+  const auto& U = pendepth::polygon_depth_impl(pd).U;
   std::vector<Vec2> qv(Q.vertices().begin(), Q.vertices().end());
   UnionOracle oracle(triangles_of(P), qv);
   st.pieces += U.pieces().size();
@@ -158,7 +158,7 @@ void check_case(const std::string& what, const Polygon& P, const ConvexPolygon& 
     ASSERT_EQ(pd.overlapping(t), inside) << t.transpose();
     for (const Vec2& d : ds) {
       ++st.rays;
-      const auto a = pd.along(t, d), s = pd.along_scan(t, d), r = pd.along_triangles(t, d);
+      const auto a = pd.along(t, d), s = pendepth::polygon2::along_scan(pd, t, d), r = pendepth::polygon2::along_triangles(pd, t, d);
       ASSERT_EQ(a.overlapping, inside);
       ASSERT_EQ(s.overlapping, inside);
       st.rays_overlapping += inside;
@@ -172,7 +172,7 @@ void check_case(const std::string& what, const Polygon& P, const ConvexPolygon& 
       // The points before the exit overlap (moves large enough to survive rounding t + move).
       if (generic_t && inside && a.depth > 1e-6 * (t.norm() + 1))
         EXPECT_TRUE(pd.overlapping(t + (1 - 1e-9) * a.translation)) << t.transpose() << " " << d.transpose();
-      const auto sp = pd.separation(t, d), sr = pd.separation_triangles(t, d);
+      const auto sp = pd.separation(t, d), sr = pendepth::polygon2::separation_triangles(pd, t, d);
       ++st.seps;
       // Same exact λ; the exit line may differ where several meet (edge sausage vs triangle).
       const double esp = ulps(sp.depth, sr.depth);

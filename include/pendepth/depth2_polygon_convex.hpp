@@ -50,14 +50,6 @@ class PolygonDepth2 {
   /// σ (kind Minimum): dist(t, ∂O) for t ∈ O (0 and overlapping = false otherwise), the nearest
   /// point of the implicit union boundary (DHS §4.2, Lemma 4.3). Throws InvalidInput for non-finite t.
   Depth2 minimum(const Vec2& t) const;
-  /// σ_d computed by visiting every piece of the implicit union boundary, O(n log m) (DHS §4.2).
-  /// Same result as along(); kept as the second, independent query path.
-  Depth2 along_scan(const Vec2& t, const Vec2& d) const;
-  /// σ_d from the convolved triangles directly (exact reference, O(n log m + n log n)).
-  Depth2 along_triangles(const Vec2& t, const Vec2& d) const;
-  /// Complete separation from the convolved triangles directly (exact reference, O(n log m)).
-  Depth2 separation_triangles(const Vec2& t, const Vec2& d) const;
-
   std::size_t triangle_count() const;
 
   /// Size of the implicit union boundary ∂O (DHS §4.1 Step 3, Facts 4.1-4.2).
@@ -77,7 +69,9 @@ class PolygonDepth2 {
   std::vector<std::vector<Vec2>> boundary_rings() const;
 
   struct Impl;
-  const Impl& impl() const { return *impl_; }
+  /// Test and benchmark hook: the private header src/polygon2/query_impl.hpp has Impl and the
+  /// reference query paths (along_scan, along_triangles, separation_triangles).
+  friend const Impl& polygon_depth_impl(const PolygonDepth2& pd);
 
  private:
   std::unique_ptr<Impl> impl_;

@@ -2,7 +2,7 @@
 // (DHS §6, last paragraphs; issue 5).
 //
 // Conventions as depth2.hpp: P fixed, Q placed at t, M = P ⊕ (−Q), d̂ = d/|d|.
-// Semantics (exact, as depth2_polygon.hpp): P is triangulated into T_1..T_s, Q into U_1..U_r, and
+// Semantics (exact, as depth2_polygon_convex.hpp): P is triangulated into T_1..T_s, Q into U_1..U_r, and
 // S_ij = T_i ⊕ (−U_j) (a convex polygon with at most 6 edges). The overlap set is
 //   O = {t : int P ∩ int(Q + t) ≠ ∅} = ∪ int S_ij
 // exactly (a non-empty open int P ∩ int(Q + t) meets some int T_i ∩ int(U_j + t), and for convex
