@@ -1,5 +1,5 @@
 // Prints σ for a unit square pushed 0.25 into a 2×2 square; ctest checks the output.
-#include <pendepth/depth2.hpp>
+#include <pendepth/depth2.hpp>  // the only pendepth include: the line to switch to an umbrella header
 
 #include <cstdio>
 
