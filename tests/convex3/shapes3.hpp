@@ -1,6 +1,7 @@
 // Test shape generators for 3D convex polytopes (pinned seeds; notes §5 degenerate families).
 #pragma once
 
+#include <pendepth/io.hpp>  // read_obj_vertices
 #include <pendepth/polytope.hpp>
 
 #include <cmath>
