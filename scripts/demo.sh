@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# pendepth demo: builds the command-line tool and runs it on examples/data (see its README for
-# where the shapes come from). Pictures go to out/*.svg. BUILD=<dir> picks the build directory.
+# pendepth demo: installs what the build needs (scripts/setup.sh: Debian packages), builds the
+# command-line tool and runs it on examples/data (see its README for where the shapes come from).
+# Pictures go to out/*.svg. BUILD=<dir> picks the build directory.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+./scripts/setup.sh  # installs the Debian packages the build needs (nothing when all are there)
 BUILD=${BUILD:-build}
 cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$BUILD" -j2 --target pendepth-cli

@@ -4,10 +4,11 @@
 set -euo pipefail
 PKGS=(cmake g++ make pkg-config libeigen3-dev libgmp-dev libcgal-dev libgtest-dev libgmock-dev
       libbenchmark-dev libcli11-dev nlohmann-json3-dev libbox2d-dev
-      libccd-dev libfcl-dev libbullet-dev libpolyclipping-dev)
+      libccd-dev libfcl-dev libbullet-dev libpolyclipping-dev libtbb-dev)
 missing=()
 for p in "${PKGS[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
+  [ "$status" = "install ok installed" ] || missing+=("$p")
 done
 if [ ${#missing[@]} -gt 0 ]; then
   SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"

@@ -251,3 +251,14 @@ void write_svg(const std::filesystem::path& path, const SvgScene& scene, const V
                const SvgOptions& options = {});
 
 }  // namespace pendepth::io
+
+namespace pendepth {
+
+/// Reads the vertices ("v x y z" lines) of a Wavefront OBJ file with io::parse_obj_points; other
+/// lines are ignored. Unlike io::read_mesh_points it takes only OBJ, whatever the extension, and
+/// an empty file is an error. Throws InvalidInput naming the file (and line) if it cannot be
+/// opened, a "v" line is malformed, or it holds no vertex. (In namespace pendepth, not
+/// pendepth::io: tests and benchmarks call it as pendepth::read_obj_vertices.)
+std::vector<Vec3> read_obj_vertices(const std::string& path);
+
+}  // namespace pendepth

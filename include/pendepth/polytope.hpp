@@ -141,9 +141,4 @@ class ConvexPolytope {
   std::shared_ptr<const convex3::PolytopeData> d_;
 };
 
-/// Reads the vertices ("v x y z" lines) of a Wavefront OBJ file; other lines are ignored.
-/// Throws InvalidInput naming the file (and line) if it cannot be opened, a "v" line is
-/// malformed, or it holds no vertex.
-std::vector<Vec3> read_obj_vertices(const std::string& path);
-
 }  // namespace pendepth

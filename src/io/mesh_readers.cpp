@@ -430,7 +430,7 @@ ConvexPolytope read_convex_polytope(const std::filesystem::path& path, std::stri
 
 namespace pendepth {
 
-// Declared in polytope.hpp (the library's own OBJ entry point, used by tests and benchmarks).
+// Declared in io.hpp (the library's own OBJ entry point, used by tests and benchmarks).
 std::vector<Vec3> read_obj_vertices(const std::string& path) {
   std::vector<Vec3> pts = io::parse_obj_points(io::read_text_file(path), path);
   if (pts.empty()) throw InvalidInput(path + ": no vertex ('v x y z') lines");

@@ -2,6 +2,7 @@
 // families).
 #pragma once
 
+#include <pendepth/io.hpp>  // read_obj_vertices
 #include <pendepth/polytope.hpp>
 
 #include <cmath>
