@@ -217,28 +217,32 @@ void Pair2::minimum(std::span<const Vec2> ts, std::span<Depth2> out, unsigned th
   front::parallel_for(ts.size(), threads, [&](std::size_t i) { out[i] = I.minimum(ts[i]); });
 }
 
-void Pair2::along(std::span<const Vec2> ts, std::span<const Vec2> ds, std::span<Depth2> out,
-                  unsigned threads) const {
+namespace {
+
+// A directional batch: query(t, d) for every placement, with ds[i] or the one direction ds[0].
+template <class Query>
+void directional_batch(std::span<const Vec2> ts, std::span<const Vec2> ds, std::span<Depth2> out, unsigned threads,
+                       Query&& query) {
   front::check_batch<Vec2>(ts, ds, out.size(), true);
-  const Impl& I = *impl_;
   if (ts.empty()) return;
   const bool one = ds.size() == 1;
   const Vec2 d0 = front::unit_scale(ds[0]);
-  front::parallel_for(ts.size(), threads, [&](std::size_t i) {
-    out[i] = I.along(ts[i], one ? d0 : front::unit_scale(ds[i]));
-  });
+  front::parallel_for(ts.size(), threads,
+                      [&](std::size_t i) { out[i] = query(ts[i], one ? d0 : front::unit_scale(ds[i])); });
+}
+
+}  // namespace
+
+void Pair2::along(std::span<const Vec2> ts, std::span<const Vec2> ds, std::span<Depth2> out,
+                  unsigned threads) const {
+  const Impl& I = *impl_;
+  directional_batch(ts, ds, out, threads, [&](const Vec2& t, const Vec2& d) { return I.along(t, d); });
 }
 
 void Pair2::separation(std::span<const Vec2> ts, std::span<const Vec2> ds, std::span<Depth2> out,
                        unsigned threads) const {
-  front::check_batch<Vec2>(ts, ds, out.size(), true);
   const Impl& I = *impl_;
-  if (ts.empty()) return;
-  const bool one = ds.size() == 1;
-  const Vec2 d0 = front::unit_scale(ds[0]);
-  front::parallel_for(ts.size(), threads, [&](std::size_t i) {
-    out[i] = I.separation(ts[i], one ? d0 : front::unit_scale(ds[i]));
-  });
+  directional_batch(ts, ds, out, threads, [&](const Vec2& t, const Vec2& d) { return I.separation(t, d); });
 }
 
 const Pair2::NoFitPolygon& Pair2::no_fit_polygon() const { return impl_->no_fit_polygon(); }

@@ -18,17 +18,17 @@
 #include <string>
 #include <vector>
 
+#include "front/common.hpp"
 #include "nonconvex2/nfp_shapes.hpp"
 #include "polygon2/shapes.hpp"
 
 namespace {
 
 using namespace pendepth;
+using front_test::error_of;
+using front_test::same_bits;
+bool same_bits(const Vec2& a, const Vec2& b) { return front_test::same_bits_v(a, b); }
 
-// Bitwise equality of two results (doubles compared by their bits: -0 ≠ +0, as a user diffing
-// two outputs would see).
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-bool same_bits(const Vec2& a, const Vec2& b) { return same_bits(a.x(), b.x()) && same_bits(a.y(), b.y()); }
 
 ::testing::AssertionResult same(const Depth2& a, const Depth2& b) {
   if (same_bits(a.depth, b.depth) && same_bits(a.translation, b.translation) && same_bits(a.normal, b.normal) &&
@@ -307,14 +307,6 @@ TEST(Pair2, BatchesEqualSingleCallsBitForBitAtAnyThreadCount) {
 
 // ---- errors at the boundary ----
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
 
 TEST(Pair2, BadQueriesAreNamed) {
   const Shape2 P(std::vector<Vec2>{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {}, "P");

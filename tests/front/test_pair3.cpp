@@ -14,15 +14,15 @@
 #include <vector>
 
 #include "convex3/shapes3.hpp"
+#include "front/common.hpp"
 
 namespace {
 
 using namespace pendepth;
+using front_test::error_of;
+using front_test::same_bits;
+bool same_bits(const Vec3& a, const Vec3& b) { return front_test::same_bits_v(a, b); }
 
-bool same_bits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
-bool same_bits(const Vec3& a, const Vec3& b) {
-  return same_bits(a.x(), b.x()) && same_bits(a.y(), b.y()) && same_bits(a.z(), b.z());
-}
 
 ::testing::AssertionResult same(const Depth3& a, const Depth3& b) {
   if (same_bits(a.depth, b.depth) && same_bits(a.translation, b.translation) && same_bits(a.normal, b.normal) &&
@@ -124,14 +124,6 @@ TEST(Pair3, BatchesEqualSingleCallsBitForBitAtAnyThreadCount) {
   }
 }
 
-std::string error_of(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
 
 TEST(Pair3, BadInputIsNamed) {
   const auto shapes = test_shapes();
