@@ -221,7 +221,7 @@ struct Workspace {
 // Inlining (a hot path tuned by instruction counts): the named steps are [[gnu::always_inline]],
 // compiled into their callers as when they were written there; init_tetrahedron and phase_b stay
 // out of line ([[gnu::noinline]]) and the double-double operations inline, as GCC chose for the
-// former single functions, which the split would otherwise change (+1–3 % instructions).
+// former single functions, which the split would otherwise change (measured: docs/benchmarks.md).
 class Expander {
  public:
   Expander(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel, Workspace& ws)
