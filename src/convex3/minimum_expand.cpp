@@ -45,8 +45,8 @@
 // point of K's facet nearest to 0 written as a convex combination of pairs (P part, Q' part).
 // Complexity: O(k (f + c)) for k support queries, f the facets of K (a branch-free scan for
 // the nearest one; f = O(k)), c the climb length (O(1) from warm starts or the cube-map seeds
-// of vertex_adjacency.cpp). k is at most n·m in theory; measured 20–65 for round random hulls
-// of 64–32,768 vertices (tests/convex3/test_minimum_fast.cpp prints the counts).
+// of vertex_adjacency.cpp). k is at most n·m in theory; measured counts: docs/benchmarks.md
+// (tests/convex3/test_minimum_fast.cpp prints them).
 #include "convex3/minimum_expand.hpp"
 
 #include "convex3/polytope_data.hpp"
@@ -89,7 +89,7 @@ inline void fast_two_sum(double a, double b, double& s, double& t) {
   t = b - (s - a);
 }
 // Joldes, Muller, Popescu 2017: AccurateDWPlusDW (relative error <= 3u² + 13u³).
-inline DD operator+(const DD& x, const DD& y) {
+[[gnu::always_inline]] inline DD operator+(const DD& x, const DD& y) {
   double sh, sl, th, tl, vh, vl, zh, zl;
   two_sum(x.hi, y.hi, sh, sl);
   two_sum(x.lo, y.lo, th, tl);
@@ -100,7 +100,7 @@ inline DD operator+(const DD& x, const DD& y) {
 inline DD operator-(const DD& x) { return {-x.hi, -x.lo, x.e}; }
 inline DD operator-(const DD& x, const DD& y) { return x + (-y); }
 // Same paper: DWTimesDW3 (relative error <= 4u²).
-inline DD operator*(const DD& x, const DD& y) {
+[[gnu::always_inline]] inline DD operator*(const DD& x, const DD& y) {
   double ch = x.hi * y.hi;
   double cl1 = std::fma(x.hi, y.hi, -ch);
   double cl2 = std::fma(x.lo, y.hi, std::fma(x.hi, y.lo, x.lo * y.lo));
@@ -218,6 +218,10 @@ struct Workspace {
   std::vector<double> keys;     // Phase B key of alive[k]; +inf: not a candidate
 };
 
+// Inlining (a hot path tuned by instruction counts): the named steps are [[gnu::always_inline]],
+// compiled into their callers as when they were written there; init_tetrahedron and phase_b stay
+// out of line ([[gnu::noinline]]) and the double-double operations inline, as GCC chose for the
+// former single functions, which the split would otherwise change (measured: docs/benchmarks.md).
 class Expander {
  public:
   Expander(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel, Workspace& ws)
@@ -225,51 +229,13 @@ class Expander {
         V_(ws.V), F_(ws.F), mark_(ws.mark), vis_(ws.vis), by_start_(ws.by_start), by_end_(ws.by_end),
         hor_(ws.hor), alive_(ws.alive), pos_(ws.pos), keys_(ws.keys) {
     V_.clear(), F_.clear(), mark_.clear(), alive_.clear(), pos_.clear(), keys_.clear();
-    const Vec3 &cp = P_.v[0], &cq = Q_.v[0];
-    cp_ = cp, cq_ = cq;
-    for (int k = 0; k < 3; ++k) {
-      two_sum(rel.tq[k], -rel.tp[k], thi_[k], tlo_[k]);  // t = tq − tp exactly
-      DD tau = (DD{thi_[k]} + DD{tlo_[k]}) +
-               ((DD{R_(k, 0)} * DD{cq[0]} + DD{R_(k, 1)} * DD{cq[1]}) + DD{R_(k, 2)} * DD{cq[2]}) - DD{cp[k]};
-      tau_[k] = tau.hi;
-      double tau_err = std::abs(tau.lo) + safe_bound(tau.e);
-      double ep = AP_.extent[k] * (1 + 4 * kU), erq = 0;
-      for (int l = 0; l < 3; ++l) erq += std::abs(R_(k, l)) * AQ_.extent[l] * (1 + 4 * kU);
-      double dp = kU * ep, dr = 4.03 * kU * erq;  // |fl(p − c_P) − (p − c_P)|, same for R(q − c_Q)
-      ext_p_[k] = ep;
-      mb_[k] = (ep + erq + std::abs(tau_[k]) + tau_err) * kInflate;                // >= |m_k|
-      em_[k] = (dp + dr + tau_err + 2.02 * kU * mb_[k]) * kInflate + exact::kTiny;  // >= |m̂_k − m_k|
-      bd_[k] = (ep + erq) * kInflate;                                             // >= |m_x − m_a|_k
-      ed_[k] = (2 * em_[k] + 1.01 * kU * (bd_[k] + 2 * em_[k])) * kInflate;       // >= |D̂_k − D_k|
-      B_[k] = bd_[k] + ed_[k];                                                    // >= |D̂_k|
-    }
-    double nn = 0;
-    for (int k = 0; k < 3; ++k) {  // cross product of two rounded differences
-      int y = (k + 1) % 3, z = (k + 2) % 3;
-      ne_[k] = (2 * (ed_[y] * bd_[z] + B_[y] * ed_[z]) + 4.02 * kU * B_[y] * B_[z]) * kInflate + exact::kTiny;
-      nn += ne_[k] * ne_[k];
-    }
-    ne_norm_ = std::sqrt(nn) * kInflate;
-    ed_max_ = std::max({ed_[0], ed_[1], ed_[2]});
-    // The bounds below are affine in |n_k| (and |w_l|) for facet normals: fold the constants.
-    // kInflate also covers the rounding of the short sums that evaluate them.
-    co_ = ch_ = cep_ = ceq_ = exact::kTiny;
-    for (int k = 0; k < 3; ++k) {
-      double eq = AQ_.extent[k] * (1 + 4 * kU), rq = 0, rne = 0;
-      for (int l = 0; l < 3; ++l) rq += std::abs(R_(k, l)) * AQ_.extent[l] * (1 + 4 * kU);
-      for (int l = 0; l < 3; ++l) rne += std::abs(R_(k, l)) * ne_[k] * AQ_.extent[l] * (1 + 4 * kU);
-      ch_ += kInflate * ne_[k] * mb_[k];
-      bh_[k] = kInflate * (em_[k] + 3.02 * kU * (mb_[k] + em_[k]));
-      co_ += 2 * kInflate * ne_[k] * mb_[k];  // orient = n·m̂_x − h̃: twice he, plus a rounding
-      bo_[k] = 2 * bh_[k] + kInflate * 2.02 * kU * (mb_[k] + em_[k]);
-      cep_ += kInflate * ne_[k] * ext_p_[k];
-      bp_[k] = kInflate * 4.02 * kU * ext_p_[k];
-      ceq_ += kInflate * kInflate * rne;
-      bqn_[k] = kInflate * kInflate * 3.02 * kU * rq;
-      bqw_[k] = kInflate * 4.02 * kU * eq;
-    }
+    init_coordinate_bounds(rel);
+    init_normal_bounds();
+    fold_facet_constants();
   }
 
+  // σ: the minimum depth in the world frame of P's pose (Rp, tp); a Depth3 with only
+  // `candidates` set when the shapes do not overlap (touching included).
   Depth3 run(const Eigen::Matrix3d& Rp, const Vec3& tp) {
     init_tetrahedron();
     if (!phase_a()) {
@@ -302,6 +268,65 @@ class Expander {
   std::vector<double>& keys_;
   int stamp_ = 0;
   std::size_t iters_ = 0;
+
+  // ---- per-query bounds (semi-static filters) -------------------------------------------------
+  // The reference vertices c_P, c_Q, t = tq − tp exactly (thi_ + tlo_), τ̂, and per coordinate the
+  // bounds of |m|, |m̂ − m|, |m_x − m_a| and its rounding error (mb_, em_, bd_, ed_, B_).
+  [[gnu::always_inline]] void init_coordinate_bounds(const RelativePose& rel) {
+    const Vec3 &cp = P_.v[0], &cq = Q_.v[0];
+    cp_ = cp, cq_ = cq;
+    for (int k = 0; k < 3; ++k) {
+      two_sum(rel.tq[k], -rel.tp[k], thi_[k], tlo_[k]);  // t = tq − tp exactly
+      DD tau = (DD{thi_[k]} + DD{tlo_[k]}) +
+               ((DD{R_(k, 0)} * DD{cq[0]} + DD{R_(k, 1)} * DD{cq[1]}) + DD{R_(k, 2)} * DD{cq[2]}) - DD{cp[k]};
+      tau_[k] = tau.hi;
+      double tau_err = std::abs(tau.lo) + safe_bound(tau.e);
+      double ep = AP_.extent[k] * (1 + 4 * kU), erq = 0;
+      for (int l = 0; l < 3; ++l) erq += std::abs(R_(k, l)) * AQ_.extent[l] * (1 + 4 * kU);
+      double dp = kU * ep, dr = 4.03 * kU * erq;  // |fl(p − c_P) − (p − c_P)|, same for R(q − c_Q)
+      ext_p_[k] = ep;
+      mb_[k] = (ep + erq + std::abs(tau_[k]) + tau_err) * kInflate;                // >= |m_k|
+      em_[k] = (dp + dr + tau_err + 2.02 * kU * mb_[k]) * kInflate + exact::kTiny;  // >= |m̂_k − m_k|
+      bd_[k] = (ep + erq) * kInflate;                                             // >= |m_x − m_a|_k
+      ed_[k] = (2 * em_[k] + 1.01 * kU * (bd_[k] + 2 * em_[k])) * kInflate;       // >= |D̂_k − D_k|
+      B_[k] = bd_[k] + ed_[k];                                                    // >= |D̂_k|
+    }
+  }
+
+  // ne_: the error bound of a rounded facet normal (cross product of two rounded differences),
+  // its norm ne_norm_, and ed_max_.
+  [[gnu::always_inline]] void init_normal_bounds() {
+    double nn = 0;
+    for (int k = 0; k < 3; ++k) {  // cross product of two rounded differences
+      int y = (k + 1) % 3, z = (k + 2) % 3;
+      ne_[k] = (2 * (ed_[y] * bd_[z] + B_[y] * ed_[z]) + 4.02 * kU * B_[y] * B_[z]) * kInflate + exact::kTiny;
+      nn += ne_[k] * ne_[k];
+    }
+    ne_norm_ = std::sqrt(nn) * kInflate;
+    ed_max_ = std::max({ed_[0], ed_[1], ed_[2]});
+  }
+
+  // The constants of the facet bounds (he, eo of add_facet; ep, eq of facet_dir), affine in |n_k|
+  // (and |w_l|): co_, bo_, ch_, bh_, cep_, bp_, ceq_, bqn_, bqw_.
+  [[gnu::always_inline]] void fold_facet_constants() {
+    // The bounds below are affine in |n_k| (and |w_l|) for facet normals: fold the constants.
+    // kInflate also covers the rounding of the short sums that evaluate them.
+    co_ = ch_ = cep_ = ceq_ = exact::kTiny;
+    for (int k = 0; k < 3; ++k) {
+      double eq = AQ_.extent[k] * (1 + 4 * kU), rq = 0, rne = 0;
+      for (int l = 0; l < 3; ++l) rq += std::abs(R_(k, l)) * AQ_.extent[l] * (1 + 4 * kU);
+      for (int l = 0; l < 3; ++l) rne += std::abs(R_(k, l)) * ne_[k] * AQ_.extent[l] * (1 + 4 * kU);
+      ch_ += kInflate * ne_[k] * mb_[k];
+      bh_[k] = kInflate * (em_[k] + 3.02 * kU * (mb_[k] + em_[k]));
+      co_ += 2 * kInflate * ne_[k] * mb_[k];  // orient = n·m̂_x − h̃: twice he, plus a rounding
+      bo_[k] = 2 * bh_[k] + kInflate * 2.02 * kU * (mb_[k] + em_[k]);
+      cep_ += kInflate * ne_[k] * ext_p_[k];
+      bp_[k] = kInflate * 4.02 * kU * ext_p_[k];
+      ceq_ += kInflate * kInflate * rne;
+      bqn_[k] = kInflate * kInflate * 3.02 * kU * rq;
+      bqw_[k] = kInflate * 4.02 * kU * eq;
+    }
+  }
 
   Pairs pairs(int a, int b, int c) const {
     return {{V_[a].i, V_[b].i, V_[c].i}, {V_[a].j, V_[b].j, V_[c].j}};
@@ -574,31 +599,51 @@ class Expander {
   static constexpr double kGeneric[3][3] = {
       {0.4612, -0.6287, 0.6262}, {-0.7033, 0.2117, 0.6786}, {0.3819, 0.8573, 0.3452}};
 
-  void init_tetrahedron() {
-    // s1, s2: supports along d1 (from M's centre towards 0, tilted) and about −d1.
+  // The initial K: a tetrahedron of four pairs (M is full-dimensional), facets linked, Phase A
+  // signs set.
+  [[gnu::noinline]] void init_tetrahedron() {
+    int s1, s2;
+    first_supports(s1, s2);
+    double e[3];  // the rounded m_s2 − m_s1
+    diff_r(V_[s2], V_[s1], e);
+    int s3 = third_support(s1, s2, e);
+    int o = 0;
+    const int s4 = fourth_support(s1, s2, s3, e, o);
+    if (o > 0) std::swap(s2, s3);  // now s4 lies below the plane of (s1, s2, s3)
+    add_facet(s1, s2, s3), add_facet(s1, s4, s2), add_facet(s2, s4, s3), add_facet(s3, s4, s1);
+    F_[0].nb = {1, 2, 3}, F_[1].nb = {3, 2, 0}, F_[2].nb = {1, 3, 0}, F_[3].nb = {2, 1, 0};  // twins
+    for (int a = 0; a < 4; ++a) F_[a].hsign = hsign(a);
+  }
+
+  // A support query along a plain vector d (exact as given).
+  [[gnu::always_inline]] Dir vec_dir(const Vec3& d) const {
+    const double zero[3] = {0, 0, 0};
+    Dir D;
+    D.d = D.n = d;
+    finish_dir(D, zero);
+    return D;
+  }
+
+  // s1, s2: two different pairs, the supports along d1 (from M's centre towards 0, tilted) and
+  // about −d1 (exactly −d1 if that gave s1 again).
+  [[gnu::always_inline]] void first_supports(int& s1, int& s2) {
     const Vec3 g0(kGeneric[0][0], kGeneric[0][1], kGeneric[0][2]), g1(kGeneric[1][0], kGeneric[1][1], kGeneric[1][2]);
     Vec3 d1 = R_ * AQ_.centroid + Vec3(thi_[0], thi_[1], thi_[2]) - AP_.centroid;
     d1 += 0.125 * d1.norm() * g0;
     if (!(d1.allFinite() && d1.squaredNorm() > 0)) d1 = g0;
-    const double zero[3] = {0, 0, 0};
-    auto vec_dir = [&](const Vec3& d) {
-      Dir D;
-      D.d = D.n = d;
-      finish_dir(D, zero);
-      return D;
-    };
-    int s1 = support_cold(vec_dir(d1));
+    s1 = support_cold(vec_dir(d1));
     Vec3 d2 = -d1 + 0.25 * d1.norm() * g1;
     if (!(d2.allFinite() && d2.squaredNorm() > 0)) d2 = -d1;
-    int s2 = support_cold(vec_dir(d2));
+    s2 = support_cold(vec_dir(d2));
     if (V_[s2].i == V_[s1].i && V_[s2].j == V_[s1].j) {  // M is full-dimensional: ±d1 differ
       V_.pop_back();
       s2 = support_cold(vec_dir(-d1));
     }
-    // Some ±(m_s2 − m_s1) × g_k, then ± the normal of (s1, s2, s3), has a support strictly off
-    // the line / plane (M is full-dimensional; the g_k are linearly independent).
-    double e[3];
-    diff_r(V_[s2], V_[s1], e);
+  }
+
+  // s3: a support strictly off the line of s1, s2 (e = the rounded m_s2 − m_s1), along some
+  // ±(m_s2 − m_s1) × g_k (M is full-dimensional; the g_k are linearly independent).
+  [[gnu::always_inline]] int third_support(int s1, int s2, const double e[3]) {
     int s3 = -1;
     const double bmax = std::max({B_[0], B_[1], B_[2]});
     const double cerr[3] = {2.02 * (ed_max_ + 2.02 * kU * bmax), 2.02 * (ed_max_ + 2.02 * kU * bmax),
@@ -618,7 +663,13 @@ class Expander {
         V_.pop_back();
       }
     assert(s3 >= 0 && "M is not full-dimensional");
-    int s4 = -1, o = 0;
+    return s3;
+  }
+
+  // s4: a support strictly off the plane of s1, s2, s3, along ± its normal; o > 0 when s4 lies
+  // above that plane (on the side of the normal (m_s2 − m_s1) × (m_s3 − m_s1)).
+  [[gnu::always_inline]] int fourth_support(int s1, int s2, int s3, const double e[3], int& o) {
+    int s4 = -1;
     for (int sg : {1, -1}) {
       Dir D;
       D.kind = Dir::Normal;
@@ -635,10 +686,7 @@ class Expander {
       V_.pop_back();
     }
     assert(s4 >= 0 && "M is not full-dimensional");
-    if (o > 0) std::swap(s2, s3);  // now s4 lies below the plane of (s1, s2, s3)
-    add_facet(s1, s2, s3), add_facet(s1, s4, s2), add_facet(s2, s4, s3), add_facet(s3, s4, s1);
-    F_[0].nb = {1, 2, 3}, F_[1].nb = {3, 2, 0}, F_[2].nb = {1, 3, 0}, F_[3].nb = {2, 1, 0};  // twins
-    for (int a = 0; a < 4; ++a) F_[a].hsign = hsign(a);
+    return s4;
   }
 
   Vec3 approx(int x) const { return Vec3(V_[x].mh[0], V_[x].mh[1], V_[x].mh[2]); }
@@ -646,7 +694,14 @@ class Expander {
   // Replaces the facets visible from s (strictly beyond their planes; f0 is one) by the cone
   // from s over the horizon. Visible facets of a convex polytope form a disc, so each horizon
   // vertex starts exactly one horizon edge.
-  void expand(int f0, int s, bool phase_a) {
+  [[gnu::always_inline]] void expand(int f0, int s, bool phase_a) {
+    find_horizon(f0, s);
+    build_cone(s, phase_a);
+  }
+
+  // vis_: the facets visible from s (a search from f0 over neighbours); hor_: the horizon, each
+  // edge as (visible facet, edge index), its other side hidden.
+  [[gnu::always_inline]] void find_horizon(int f0, int s) {
     ++stamp_;
     const int vis = 2 * stamp_, hid = 2 * stamp_ + 1;
     vis_.clear();
@@ -669,6 +724,11 @@ class Expander {
         hor_.push_back({f, k});
       }
     }
+  }
+
+  // Kills the visible facets and adds the cone from s over the horizon, linked to its neighbours;
+  // each new facet gets its Phase A sign or (Phase B) its key.
+  [[gnu::always_inline]] void build_cone(int s, bool phase_a) {
     for (int f : vis_) kill(f);
     if (by_start_.size() < V_.size()) by_start_.resize(2 * V_.size()), by_end_.resize(2 * V_.size());
     const int first = static_cast<int>(F_.size());
@@ -754,34 +814,48 @@ class Expander {
     });
   }
 
-  int phase_b() {
+  // The index into alive_ of the live facet with the least key, that key in `key` (a dense scan:
+  // K has few facets, no branches).
+  [[gnu::always_inline]] std::size_t least_key(double& key) const {
+    const std::size_t na = keys_.size();
+    std::size_t kmin = 0;
+    key = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < na; ++k) {
+      kmin = keys_[k] < key ? k : kmin;
+      key = keys_[k] < key ? keys_[k] : key;
+    }
+    return kmin;
+  }
+
+  // Facet f (alive_[kmin], least key) against the best facet so far: true iff f is exactly
+  // nearer to 0; otherwise its key is settled (coplanar with best or not nearer: +inf; not yet
+  // refined: refined, the key raised to its accurate distance) and false.
+  [[gnu::always_inline]] bool nearer_than_best(int f, std::size_t kmin, int best) {
+    if (coplanar(f, best)) {  // same plane, same distance (often a symbolic identity)
+      keys_[kmin] = std::numeric_limits<double>::infinity();
+      return false;
+    }
+    if (!F_[f].refined) {
+      refine(f);
+      keys_[kmin] = F_[f].dist * F_[f].dist * (1 - 0x1p-47);  // dist within 2 ulps
+      return false;
+    }
+    keys_[kmin] = std::numeric_limits<double>::infinity();
+    return closer(f, best) < 0;  // not nearer than best: false
+  }
+
+  // The nearest facet of M (its index in F_), certified: K is expanded until the facet of K
+  // nearest to 0 has a supporting plane of M and no other facet of K is exactly nearer.
+  [[gnu::noinline]] int phase_b() {
     for (std::size_t k = 0; k < alive_.size(); ++k) keys_[k] = lower_key(alive_[k]);
     int best = -1;
     double best_hi = 0;
     for (;;) {
-      // The live facet with the least key (a dense scan: K has few facets, no branches).
-      const std::size_t na = keys_.size();
-      std::size_t kmin = 0;
-      double key = std::numeric_limits<double>::infinity();
-      for (std::size_t k = 0; k < na; ++k) {
-        kmin = keys_[k] < key ? k : kmin;
-        key = keys_[k] < key ? keys_[k] : key;
-      }
+      double key;
+      const std::size_t kmin = least_key(key);
       if (best >= 0 && !(key < best_hi)) break;  // every other facet is at least as far as best
       const int f = alive_[kmin];
-      if (best >= 0) {
-        if (coplanar(f, best)) {  // same plane, same distance (often a symbolic identity)
-          keys_[kmin] = std::numeric_limits<double>::infinity();
-          continue;
-        }
-        if (!F_[f].refined) {
-          refine(f);
-          keys_[kmin] = F_[f].dist * F_[f].dist * (1 - 0x1p-47);  // dist within 2 ulps
-          continue;
-        }
-        keys_[kmin] = std::numeric_limits<double>::infinity();
-        if (closer(f, best) >= 0) continue;  // not nearer than best
-      }
+      if (best >= 0 && !nearer_than_best(f, kmin, best)) continue;
       Dir D = facet_dir(f);
       int s = support_facet(f, D);
       int o = orient(f, s);
@@ -834,11 +908,21 @@ class Expander {
     r.candidates = iters_;
     r.depth = r.lower_bound = r.upper_bound = B.dist;
     const Vec3 u(B.unit[0], B.unit[1], B.unit[2]);
-    Vec3 move = B.dist * u;
+    const Vec3 move = B.dist * u;
+    Vec3 wp, wq;
+    witnesses(b, move, wp, wq);
+    r.translation = Rp * move;
+    r.normal = r.facet_normal = Rp * u;
+    r.witness_p = Rp * wp + tp;
+    r.witness_q = Rp * wq + tp;
+    features(b, r);
+    return r;
+  }
 
-    // Witness: the foot of 0 on the plane lies in K's facet region there (B is nearest), so
-    // walk over coplanar neighbours to the triangle containing it; barycentric weights of the
-    // pairs give a point of P and a point of Q'.
+  // Witnesses in P's frame: the foot of 0 on facet b's plane (−move) lies in K's facet region
+  // there (b is nearest), so walk over coplanar neighbours to the triangle containing it;
+  // barycentric weights of the pairs give a point wp of P and wq of Q' (moved by `move`).
+  [[gnu::always_inline]] void witnesses(int b, const Vec3& move, Vec3& wp, Vec3& wq) const {
     int f = b;
     std::array<double, 3> lam{1, 0, 0}, best_lam = lam;
     double best_min = -std::numeric_limits<double>::infinity();
@@ -860,7 +944,7 @@ class Expander {
     }
     double sum = 0;
     for (double& l : best_lam) sum += (l = std::max(l, 0.0));
-    Vec3 wp = Vec3::Zero(), wq = Vec3::Zero();
+    wp = Vec3::Zero(), wq = Vec3::Zero();
     const Vec3 t(thi_[0] + tlo_[0], thi_[1] + tlo_[1], thi_[2] + tlo_[2]);
     for (int k = 0; k < 3; ++k) {
       const Vert& X = V_[F_[best_f].v[k]];
@@ -868,11 +952,12 @@ class Expander {
       wq += best_lam[k] / sum * (R_ * Q_.v[X.j] + t);
     }
     wq += move;
-    r.translation = Rp * move;
-    r.normal = r.facet_normal = Rp * u;
-    r.witness_p = Rp * wp + tp;
-    r.witness_q = Rp * wq + tp;
+  }
 
+  // The defining features of M's facet b: a face of P and a vertex of Q, a vertex of P and a face
+  // of Q, or two edges (P's face preferred).
+  [[gnu::always_inline]] void features(int b, Depth3& r) const {
+    const Facet& B = F_[b];
     Dir D = facet_dir(b);
     int dp = 0, dq = 0;
     Feature3 fp = support_feature(D, true, V_[B.v[0]].i, dp);
@@ -884,7 +969,6 @@ class Expander {
     } else {
       r.feature_p = fp, r.feature_q = fq;
     }
-    return r;
   }
 };
 

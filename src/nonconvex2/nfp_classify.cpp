@@ -17,12 +17,12 @@
 //     against the open sums whose boxes contain it (exact signs of degree 3): for small shapes the
 //     sums of convex parts A ⊕ (−B) (convex_parts.hpp: Hertel–Mehlhorn on the triangulations; O
 //     is also the union of the open sums of the parts, as both are {t : int P ∩ int(Q + t) ≠ ∅}),
-//     3–7× fewer sums than triangle pairs on nesting pieces, and far fewer with the point on their
-//     boundary; for large shapes the triangle pairs by the dual box descent. No test is needed for
-//     a part next to a crossing where c enters the left of a strict candidate d inside both: d is
-//     an edge of an open pair sum lying on d's left (nfp_build.cpp step 1), so c's points just
-//     past the crossing, hence the whole part, are in O. Each split point
-//     not closing a boundary part is tested itself (an exact fit: an isolated point of ∂O).
+//     fewer sums than triangle pairs, and far fewer with the point on their boundary (counts:
+//     docs/benchmarks.md); for large shapes the triangle pairs by the dual box descent. No test
+//     is needed for a part next to a crossing where c enters the left of a strict candidate d
+//     inside both: d is an edge of an open pair sum lying on d's left (nfp_build.cpp step 1), so
+//     c's points just past the crossing, hence the whole part, are in O. Each split point not
+//     closing a boundary part is tested itself (an exact fit: an isolated point of ∂O).
 //     Split points that are sum vertices (the ends of c, a crossing at an end of the other
 //     candidate, a collinear neighbour's end) carry the vertex as a key: equal keys are equal
 //     points without arithmetic, and each vertex's membership in O is known once per pair. O is
@@ -47,16 +47,13 @@
 // sum and is kept whole without a test (nfp_classify below).
 // Cost: candidate pairs by boxes (all pairs for K ≤ 64, else a box hierarchy), O(1) exact tests per
 // meeting pair; per part or point the pair sums whose boxes hold the point, O(1) tests each. For
-// X box-overlapping pairs: O(K log K + X + (K + X)·v), v sums per point (~5 on nesting pieces,
-// worst O(nm)); a candidate met by more than kMaxSplits others is cut by the reference instead.
+// X box-overlapping pairs: O(K log K + X + (K + X)·v), v sums per point (worst O(nm)); a
+// candidate met by more than kMaxSplits others is cut by the reference instead.
 // Redundant candidates (nfp_build.cpp step 1) split the others where they end on a collinear
 // candidate (crossings of a redundant candidate are crossings of the kept ones on its line) and
 // are not classified. Exact ties of integer-like data (parallel and collinear candidates, a
 // crossing exactly at a candidate's end) are decided by exact differences and products first.
-// Measured (callgrind, per pair over every ordered pair of the nesting instances): albano 59 k
-// instructions (103 k with triangle-pair point tests, 78 k before the redundant candidates and
-// the exact-product ties), shirts 59 k (133 k, 92 k), trousers 14 k (32 k, 26 k); ~3 sums per
-// point test left undecided by the floating filters on shirts (13.5 with triangle pairs).
+// Measured costs: docs/benchmarks.md.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -157,8 +154,8 @@ struct PartPair {
   double smax = 0;  // bounds every coordinate of both parts
 };
 
-// The classifier's scratch, reused by the thread's next pair (a dozen vectors allocated and freed
-// per pair were ~3 % of the build on small pieces); released after a large pair (trim).
+// The classifier's scratch, reused by the thread's next pair (no allocation per pair on small
+// pieces); released after a large pair (trim).
 struct Buffers {
   std::vector<std::uint32_t> prevP, prevQ, edge_part_p, edge_part_q;
   PairDepth2::Impl::DescentStack stack;
@@ -181,6 +178,52 @@ struct Buffers {
 Buffers& thread_buffers() {
   thread_local Buffers b;
   return b;
+}
+
+// Floating filter: the ends of y strictly on one side of x's line, by a margin above the
+// roundings (A, B within 2⁻⁵³ relative of the exact ends; the direction exact differences
+// rounded once), so the closed segments cannot meet.
+inline bool apart(const NfpCandidate& x, const NfpCandidate& y) {
+  const Vec2 dir = x.E.a1 - x.E.b1, u = y.A - x.A, w = y.B - x.A;
+  const double S = std::max({x.A.cwiseAbs().maxCoeff(), y.A.cwiseAbs().maxCoeff(), y.B.cwiseAbs().maxCoeff()});
+  const double err = (std::abs(dir.x()) + std::abs(dir.y())) * S * 0x1p-48;
+  const double su = dir.x() * u.y() - dir.y() * u.x(), sw = dir.x() * w.y() - dir.y() * w.x();
+  return (su > err && sw > err) || (su < -err && sw < -err);
+}
+
+// Candidates sharing an end vertex (neighbours along the convolution, most meeting pairs on
+// real pieces): non-parallel lines meet only there, an end of both, which splits nothing.
+inline bool shared_end(const Ray& a, const Ray& b) {
+  return (a.p0 == b.p0 && a.q0 == b.q0) || (a.p0 == b.p1 && a.q0 == b.q1) || (a.p1 == b.p0 && a.q1 == b.q0) ||
+         (a.p1 == b.p1 && a.q1 == b.q1);
+}
+
+// Where the crossing sx (at parameter p, the cut by another candidate's line) lies on the closed
+// segment of E: -1 off it, 0 / 1 at that end, 2 strictly inside; certified by the error bounds
+// when clear, else exactly (symbolic ends included).
+inline int crossing_where(const Split& sx, const Param& p, const Ray& E) {
+  if (sx.v - sx.err > 0 && sx.v + sx.err < 1) return 2;
+  if (sx.v + sx.err < 0 || sx.v - sx.err > 1) return -1;
+  // μ = num / den against 0 and 1 (symbolic when the line passes through an end vertex):
+  // the signs of num and num − den, times den's.
+  if (const int k = known_lambda(p.line, E); k >= 0) return k;
+  // Exact differences and products first (integer-like data: the crossing is often
+  // exactly at an end), with num = x·ey − y·ex, den = dx·ey − dy·ex and
+  // num − den = (x − dx)·ey − (y − dy)·ex; else the general tiers.
+  const exact::LiftFlX X;
+  const Line& l = p.line;
+  const exact::FlX ex = X(l.e1.x()) - X(l.e0.x()), ey = X(l.e1.y()) - X(l.e0.y()), dx = ray_dx(E, X), dy = ray_dy(E, X);
+  const exact::FlX x = X(l.c1.x()) + X(l.c2.x()) - X(E.o1.x()) - X(E.o2.x()), y = X(l.c1.y()) + X(l.c2.y()) - X(E.o1.y()) - X(E.o2.y());
+  int den = exact::sign_ab_minus_cd(dx, ey, dy, ex);
+  if (den == 2) den = exact::exact_sign([&](auto L) { return line_den(l, E, L); });
+  int s0 = exact::sign_ab_minus_cd(x, ey, y, ex);
+  if (s0 == 2) s0 = exact::exact_sign([&](auto L) { return line_num(l, E, L); });
+  s0 *= den;
+  if (s0 <= 0) return s0 == 0 ? 0 : -1;
+  int s1 = exact::sign_ab_minus_cd(x - dx, ey, y - dy, ex);
+  if (s1 == 2) s1 = exact::exact_sign([&](auto L) { return line_num(l, E, L) - line_den(l, E, L); });
+  s1 *= den;
+  return s1 < 0 ? 2 : s1 == 0 ? 1 : -1;
 }
 
 struct Classifier {
@@ -634,212 +677,214 @@ struct Classifier {
     return true;
   }
 
+  // The pieces of every candidate that is not redundant, appended to out (nfp_classify).
   void run(std::vector<NfpPiece>& out) {
+    find_splits();  // 1. split points of every meeting pair of candidates
+    group_splits(); //    grouped by candidate
+    for (std::size_t k = 0; k < cands.size(); ++k) classify_candidate(k, out);  // 2.–4.
+  }
+
+ private:
+  // Step 1 for one box-overlapping pair i < j: the split points each puts on the other, appended
+  // to buf.found (with a vertex key or an in_o side when known); buf.reference[i] / [j] set for a
+  // collinear candidate whose neighbour's end has no usable line.
+  void meet(std::size_t i, std::size_t j) {
+    auto& found = buf.found;
+    const NfpCandidate &c = cands[i], &d = cands[j];
+    if ((c.redundant && d.redundant) || apart(c, d) || apart(d, c)) return;
+    const int turn = parallel_sign(c.E, d.E);  // sign of cross(dir c, dir d)
+    const bool non_parallel = turn != 0;
+    if (non_parallel && shared_end(c.E, d.E)) return;
+    // A redundant candidate lies in the union of kept candidates on its line (nfp_candidates), so
+    // where it crosses another candidate, a kept one crosses it too: only its collinear ends
+    // split others (one of them is no kept candidate's end).
+    if (non_parallel && (c.redundant || d.redundant)) return;
+    if (non_parallel) {
+      const Param pc{Param::Cut, d.line, 0}, pd{Param::Cut, c.line, 0};
+      Split sc = split(pc, c.E), sd = split(pd, d.E);
+      const int wc = crossing_where(sc, pc, c.E);
+      if (wc < 0) return;
+      const int wd = crossing_where(sd, pd, d.E);
+      if (wd < 0) return;
+      // A crossing at an end of c splits nothing there; at an end of d it is d's sum vertex.
+      // Crossing inside both, the other candidate strict: that candidate is an edge of an open
+      // pair sum lying on its left (nfp_build.cpp step 1), so the side of the crossing on its
+      // left is in O (see the header).
+      if (wc == 2 && !c.redundant) {
+        if (wd < 2) sc.key = wd == 0 ? vertex_key(d.E.p0, d.E.q0) : vertex_key(d.E.p1, d.E.q1);
+        else if (d.strict) sc.in_o = turn < 0 ? kAfter : kBefore;
+        found.push_back({static_cast<std::uint32_t>(i), sc});
+      }
+      if (wd == 2 && !d.redundant) {
+        if (wc < 2) sd.key = wc == 0 ? vertex_key(c.E.p0, c.E.q0) : vertex_key(c.E.p1, c.E.q1);
+        else if (c.strict) sd.in_o = turn > 0 ? kAfter : kBefore;
+        found.push_back({static_cast<std::uint32_t>(j), sd});
+      }
+    } else if (origin_on_line(c.E, d.E)) {
+      if (!c.redundant && !collinear_ends(c, d, static_cast<std::uint32_t>(i), found)) buf.reference[i] = 1;
+      if (!d.redundant && !collinear_ends(d, c, static_cast<std::uint32_t>(j), found)) buf.reference[j] = 1;
+    }
+  }
+
+  // Step 1: buf.found, the split points of all candidates (meet over every pair with overlapping
+  // boxes: all pairs for K ≤ 64, else a box hierarchy), and buf.reference.
+  void find_splits() {
     const std::size_t K = cands.size();
     auto& found = buf.found;
     found.clear();
     found.reserve(4 * K);
-    auto& reference = buf.reference;
-    reference.assign(K, 0);
-    // Floating filter: the ends of y strictly on one side of x's line, by a margin above the
-    // roundings (A, B within 2⁻⁵³ relative of the exact ends; the direction exact differences
-    // rounded once), so the closed segments cannot meet.
-    auto apart = [](const NfpCandidate& x, const NfpCandidate& y) {
-      const Vec2 dir = x.E.a1 - x.E.b1, u = y.A - x.A, w = y.B - x.A;
-      const double S = std::max({x.A.cwiseAbs().maxCoeff(), y.A.cwiseAbs().maxCoeff(), y.B.cwiseAbs().maxCoeff()});
-      const double err = (std::abs(dir.x()) + std::abs(dir.y())) * S * 0x1p-48;
-      const double su = dir.x() * u.y() - dir.y() * u.x(), sw = dir.x() * w.y() - dir.y() * w.x();
-      return (su > err && sw > err) || (su < -err && sw < -err);
-    };
-    // Candidates sharing an end vertex (neighbours along the convolution, most meeting pairs on
-    // real pieces): non-parallel lines meet only there, an end of both, which splits nothing.
-    auto shared_end = [](const Ray& a, const Ray& b) {
-      return (a.p0 == b.p0 && a.q0 == b.q0) || (a.p0 == b.p1 && a.q0 == b.q1) || (a.p1 == b.p0 && a.q1 == b.q0) ||
-             (a.p1 == b.p1 && a.q1 == b.q1);
-    };
-    auto meet = [&](std::size_t i, std::size_t j) {
-      const NfpCandidate &c = cands[i], &d = cands[j];
-      if ((c.redundant && d.redundant) || apart(c, d) || apart(d, c)) return;
-      const int turn = parallel_sign(c.E, d.E);  // sign of cross(dir c, dir d)
-      const bool non_parallel = turn != 0;
-      if (non_parallel && shared_end(c.E, d.E)) return;
-      // A redundant candidate lies in the union of kept candidates on its line (nfp_candidates), so
-      // where it crosses another candidate, a kept one crosses it too: only its collinear ends
-      // split others (one of them is no kept candidate's end).
-      if (non_parallel && (c.redundant || d.redundant)) return;
-      if (non_parallel) {
-        const Param pc{Param::Cut, d.line, 0}, pd{Param::Cut, c.line, 0};
-        Split sc = split(pc, c.E), sd = split(pd, d.E);
-        // Where the crossing lies on a closed segment: -1 off it, 0 / 1 at that end, 2 strictly
-        // inside; certified by the error bounds when clear, else exactly (symbolic ends included).
-        auto where = [](const Split& sx, const Param& p, const Ray& E) {
-          if (sx.v - sx.err > 0 && sx.v + sx.err < 1) return 2;
-          if (sx.v + sx.err < 0 || sx.v - sx.err > 1) return -1;
-          // μ = num / den against 0 and 1 (symbolic when the line passes through an end vertex):
-          // the signs of num and num − den, times den's.
-          if (const int k = known_lambda(p.line, E); k >= 0) return k;
-          // Exact differences and products first (integer-like data: the crossing is often
-          // exactly at an end), with num = x·ey − y·ex, den = dx·ey − dy·ex and
-          // num − den = (x − dx)·ey − (y − dy)·ex; else the general tiers.
-          const exact::LiftFlX X;
-          const Line& l = p.line;
-          const exact::FlX ex = X(l.e1.x()) - X(l.e0.x()), ey = X(l.e1.y()) - X(l.e0.y()), dx = ray_dx(E, X), dy = ray_dy(E, X);
-          const exact::FlX x = X(l.c1.x()) + X(l.c2.x()) - X(E.o1.x()) - X(E.o2.x()), y = X(l.c1.y()) + X(l.c2.y()) - X(E.o1.y()) - X(E.o2.y());
-          int den = exact::sign_ab_minus_cd(dx, ey, dy, ex);
-          if (den == 2) den = exact::exact_sign([&](auto L) { return line_den(l, E, L); });
-          int s0 = exact::sign_ab_minus_cd(x, ey, y, ex);
-          if (s0 == 2) s0 = exact::exact_sign([&](auto L) { return line_num(l, E, L); });
-          s0 *= den;
-          if (s0 <= 0) return s0 == 0 ? 0 : -1;
-          int s1 = exact::sign_ab_minus_cd(x - dx, ey, y - dy, ex);
-          if (s1 == 2) s1 = exact::exact_sign([&](auto L) { return line_num(l, E, L) - line_den(l, E, L); });
-          s1 *= den;
-          return s1 < 0 ? 2 : s1 == 0 ? 1 : -1;
-        };
-        const int wc = where(sc, pc, c.E);
-        if (wc < 0) return;
-        const int wd = where(sd, pd, d.E);
-        if (wd < 0) return;
-        // A crossing at an end of c splits nothing there; at an end of d it is d's sum vertex.
-        // Crossing inside both, the other candidate strict: that candidate is an edge of an open
-        // pair sum lying on its left (nfp_build.cpp step 1), so the side of the crossing on its
-        // left is in O (see the header).
-        if (wc == 2 && !c.redundant) {
-          if (wd < 2) sc.key = wd == 0 ? vertex_key(d.E.p0, d.E.q0) : vertex_key(d.E.p1, d.E.q1);
-          else if (d.strict) sc.in_o = turn < 0 ? kAfter : kBefore;
-          found.push_back({static_cast<std::uint32_t>(i), sc});
-        }
-        if (wd == 2 && !d.redundant) {
-          if (wc < 2) sd.key = wc == 0 ? vertex_key(c.E.p0, c.E.q0) : vertex_key(c.E.p1, c.E.q1);
-          else if (c.strict) sd.in_o = turn > 0 ? kAfter : kBefore;
-          found.push_back({static_cast<std::uint32_t>(j), sd});
-        }
-      } else if (origin_on_line(c.E, d.E)) {
-        if (!c.redundant && !collinear_ends(c, d, static_cast<std::uint32_t>(i), found)) reference[i] = 1;
-        if (!d.redundant && !collinear_ends(d, c, static_cast<std::uint32_t>(j), found)) reference[j] = 1;
-      }
-    };
+    buf.reference.assign(K, 0);
     if (K <= 64) {
       for (std::size_t i = 0; i < K; ++i)
         for (std::size_t j = i + 1; j < K; ++j)
           if (boxes_meet(cands[i], cands[j])) meet(i, j);
-    } else {
-      std::vector<Tri> boxes(K);
-      for (std::size_t k = 0; k < K; ++k) boxes[k].lo = cands[k].lo, boxes[k].hi = cands[k].hi;
-      BoxTree tree;
-      tree.build(boxes);
-      std::vector<std::int32_t> st;
-      for (std::size_t i = 0; i < K; ++i) {
-        st.assign(1, 0);
-        while (!st.empty()) {
-          const auto& N = tree.nodes[st.back()];
-          st.pop_back();
-          if (N.lo.x() > cands[i].hi.x() || cands[i].lo.x() > N.hi.x() || N.lo.y() > cands[i].hi.y() || cands[i].lo.y() > N.hi.y())
-            continue;
-          if (N.left >= 0) {
-            st.push_back(N.left);
-            st.push_back(N.right);
-          } else if (N.tri > i) {
-            meet(i, N.tri);
-          }
+      return;
+    }
+    std::vector<Tri> boxes(K);
+    for (std::size_t k = 0; k < K; ++k) boxes[k].lo = cands[k].lo, boxes[k].hi = cands[k].hi;
+    BoxTree tree;
+    tree.build(boxes);
+    std::vector<std::int32_t> st;
+    for (std::size_t i = 0; i < K; ++i) {
+      st.assign(1, 0);
+      while (!st.empty()) {
+        const auto& N = tree.nodes[st.back()];
+        st.pop_back();
+        if (N.lo.x() > cands[i].hi.x() || cands[i].lo.x() > N.hi.x() || N.lo.y() > cands[i].hi.y() || cands[i].lo.y() > N.hi.y())
+          continue;
+        if (N.left >= 0) {
+          st.push_back(N.left);
+          st.push_back(N.right);
+        } else if (N.tri > i) {
+          meet(i, N.tri);
         }
       }
     }
+  }
 
-    // The split parameters grouped by candidate (counting sort).
+  // Step 1: the split parameters grouped by candidate (counting sort): candidate k's are
+  // buf.grouped[buf.first[k], buf.first[k + 1]).
+  void group_splits() {
+    const std::size_t K = cands.size();
+    auto& found = buf.found;
     auto& first = buf.first;
     first.assign(K + 1, 0);
     for (const auto& f : found) ++first[f.first + 1];
     for (std::size_t k = 0; k < K; ++k) first[k + 1] += first[k];
     auto& grouped = buf.grouped;
     grouped.resize(found.size());
-    {
-      auto& at = buf.at;
-      at.assign(first.begin(), first.end() - 1);
-      for (auto& f : found) grouped[at[f.first]++] = &f.second;
+    auto& at = buf.at;
+    at.assign(first.begin(), first.end() - 1);
+    for (auto& f : found) grouped[at[f.first]++] = &f.second;
+  }
+
+  // Steps 2–4 for candidate k: its pieces appended to out (none for a redundant candidate; the
+  // reference cut nfp_cut when it has no usable split, too many, or a part too short to sample).
+  void classify_candidate(std::size_t k, std::vector<NfpPiece>& out) {
+    const NfpCandidate& c = cands[k];
+    if (c.redundant) return;  // its points are on kept candidates (nfp_candidates)
+    if (buf.reference[k]) {
+      nfp_cut(S, c, out);
+      return;
     }
-    auto &part = buf.part, &vert = buf.vert;
+    // Many candidates meet c (dense convolutions): one cut by the sums costs less than a point
+    // test per part, and keeps the worst case at the reference's O(nm) per candidate.
+    if (buf.first[k + 1] - buf.first[k] > kMaxSplits) {
+      nfp_cut(S, c, out);
+      return;
+    }
+    Split end0{kZero, 0, 0, vertex_key(c.E.p0, c.E.q0)}, end1{kOne, 1, 0, vertex_key(c.E.p1, c.E.q1)};
+    const bool whole = sort_splits(c, k, end0, end1);  // 2.
+    if (!classify_parts(c, whole)) {                   // 3.
+      nfp_cut(S, c, out);
+      return;
+    }
+    emit_pieces(c, out);  // 4.
+  }
+
+  // Step 2: buf.sp, candidate k's split points and its ends end0, end1 in exact order, equal
+  // points merged (what any of them knows about the parts next to it kept). True when nothing
+  // meets c inside (one part, sampled at μ = 1/2).
+  bool sort_splits(const NfpCandidate& c, std::size_t k, Split& end0, Split& end1) {
     auto& sp = buf.sp;  // pointers: a Split is large, and sorting moves them
-    for (std::size_t k = 0; k < K; ++k) {
-      const NfpCandidate& c = cands[k];
-      if (c.redundant) continue;  // its points are on kept candidates (nfp_candidates)
-      if (reference[k]) {
-        nfp_cut(S, c, out);
+    sp.assign(buf.grouped.begin() + buf.first[k], buf.grouped.begin() + buf.first[k + 1]);
+    const bool whole = sp.empty();
+    sp.push_back(&end0);
+    sp.push_back(&end1);
+    if (whole) return true;
+    // Exact order; among equal parameters the ends 0 and 1 first (symbolic sum vertices), so
+    // the kept representative is the cheapest one.
+    // Values further apart than their error bounds are ordered without exact arithmetic.
+    auto cmp = [&](const Split& x, const Split& y) {
+      if (x.v + x.err < y.v - y.err) return -1;
+      if (y.v + y.err < x.v - x.err) return 1;
+      if (x.key != kNoKey && x.key == y.key) return 0;
+      return compare_params(x.p, y.p, c.E, kO);
+    };
+    auto rank = [](const Split& x) { return x.p.kind == Param::Cut ? 1 : 0; };
+    std::sort(sp.begin(), sp.end(), [&](const Split* x, const Split* y) {
+      const int s = cmp(*x, *y);
+      return s != 0 ? s < 0 : rank(*x) < rank(*y);
+    });
+    // Equal split points merged; what any of them knows about the parts next to it is kept.
+    std::size_t n = 1;
+    for (std::size_t i = 1; i < sp.size(); ++i) {
+      if (cmp(*sp[n - 1], *sp[i]) == 0) sp[n - 1]->in_o |= sp[i]->in_o;
+      else sp[n++] = sp[i];
+    }
+    sp.resize(n);
+    return false;
+  }
+
+  // Step 3: buf.part[i], the open part between buf.sp[i] and buf.sp[i + 1] lies on ∂O (1) or in
+  // O (0). False when a part cannot be sampled (no double certified strictly inside it).
+  bool classify_parts(const NfpCandidate& c, bool whole) {
+    const auto& sp = buf.sp;
+    auto& part = buf.part;
+    const std::size_t V = sp.size();
+    part.assign(V - 1, 0);
+    bool sampled = true;
+    for (std::size_t i = 0; i + 1 < V && sampled; ++i) {
+      // An end known to be in O (open): the part next to it is in O too, no test. A part on ∂O
+      // (closed) has its ends on ∂O: remembered for the other candidates through them.
+      if ((sp[i]->in_o & kAfter) || (sp[i + 1]->in_o & kBefore) || (sp[i]->key != kNoKey && vertex_state(sp[i]->key) == 1) ||
+          (sp[i + 1]->key != kNoKey && vertex_state(sp[i + 1]->key) == 1)) {
+        part[i] = 0;
         continue;
       }
-      // Many candidates meet c (dense convolutions): one cut by the sums costs less than a point
-      // test per part, and keeps the worst case at the reference's O(nm) per candidate.
-      if (first[k + 1] - first[k] > kMaxSplits) {
-        nfp_cut(S, c, out);
+      const Split mid = split(Param{Param::Value, {}, 0.5 * (sp[i]->v + sp[i + 1]->v)}, c.E);
+      // μ strictly between the two ends: by their error bounds when clear, else exactly.
+      const bool certified = whole || (sp[i]->v + sp[i]->err < mid.v && mid.v < sp[i + 1]->v - sp[i + 1]->err) ||
+                             (compare_params(sp[i]->p, mid.p, c.E, kO) < 0 && compare_params(mid.p, sp[i + 1]->p, c.E, kO) < 0);
+      if (!certified) sampled = false;
+      else if ((part[i] = !covered(c, mid))) {
+        if (sp[i]->key != kNoKey) vertex_state(sp[i]->key) = 0;
+        if (sp[i + 1]->key != kNoKey) vertex_state(sp[i + 1]->key) = 0;
+      }
+    }
+    return sampled;
+  }
+
+  // Step 4: c's pieces appended to out, the maximal runs of boundary parts and split points on ∂O
+  // (each split point not next to a boundary part tested itself), with their rounded ends.
+  void emit_pieces(const NfpCandidate& c, std::vector<NfpPiece>& out) {
+    const auto& sp = buf.sp;
+    const auto& part = buf.part;
+    auto& vert = buf.vert;
+    const std::size_t V = sp.size();
+    vert.assign(V, 0);
+    for (std::size_t i = 0; i < V; ++i) vert[i] = (i > 0 && part[i - 1]) || (i + 1 < V && part[i]) || !covered(c, *sp[i]);
+    for (std::size_t i = 0; i < V;) {
+      if (!vert[i]) {
+        ++i;
         continue;
       }
-      sp.assign(grouped.begin() + first[k], grouped.begin() + first[k + 1]);
-      const bool whole = sp.empty();  // nothing meets c inside: one part, sampled at μ = 1/2
-      Split end0{kZero, 0, 0, vertex_key(c.E.p0, c.E.q0)}, end1{kOne, 1, 0, vertex_key(c.E.p1, c.E.q1)};
-      sp.push_back(&end0);
-      sp.push_back(&end1);
-      if (!whole) {
-        // Exact order; among equal parameters the ends 0 and 1 first (symbolic sum vertices), so
-        // the kept representative is the cheapest one.
-        // Values further apart than their error bounds are ordered without exact arithmetic.
-        auto cmp = [&](const Split& x, const Split& y) {
-          if (x.v + x.err < y.v - y.err) return -1;
-          if (y.v + y.err < x.v - x.err) return 1;
-          if (x.key != kNoKey && x.key == y.key) return 0;
-          return compare_params(x.p, y.p, c.E, kO);
-        };
-        auto rank = [](const Split& x) { return x.p.kind == Param::Cut ? 1 : 0; };
-        std::sort(sp.begin(), sp.end(), [&](const Split* x, const Split* y) {
-          const int s = cmp(*x, *y);
-          return s != 0 ? s < 0 : rank(*x) < rank(*y);
-        });
-        // Equal split points merged; what any of them knows about the parts next to it is kept.
-        std::size_t n = 1;
-        for (std::size_t k = 1; k < sp.size(); ++k) {
-          if (cmp(*sp[n - 1], *sp[k]) == 0) sp[n - 1]->in_o |= sp[k]->in_o;
-          else sp[n++] = sp[k];
-        }
-        sp.resize(n);
-      }
-      const std::size_t V = sp.size();
-      part.assign(V - 1, 0);
-      bool sampled = true;
-      for (std::size_t i = 0; i + 1 < V && sampled; ++i) {
-        // An end known to be in O (open): the part next to it is in O too, no test. A part on ∂O
-        // (closed) has its ends on ∂O: remembered for the other candidates through them.
-        if ((sp[i]->in_o & kAfter) || (sp[i + 1]->in_o & kBefore) || (sp[i]->key != kNoKey && vertex_state(sp[i]->key) == 1) ||
-            (sp[i + 1]->key != kNoKey && vertex_state(sp[i + 1]->key) == 1)) {
-          part[i] = 0;
-          continue;
-        }
-        const Split mid = split(Param{Param::Value, {}, 0.5 * (sp[i]->v + sp[i + 1]->v)}, c.E);
-        // μ strictly between the two ends: by their error bounds when clear, else exactly.
-        const bool certified = whole || (sp[i]->v + sp[i]->err < mid.v && mid.v < sp[i + 1]->v - sp[i + 1]->err) ||
-                               (compare_params(sp[i]->p, mid.p, c.E, kO) < 0 && compare_params(mid.p, sp[i + 1]->p, c.E, kO) < 0);
-        if (!certified) sampled = false;
-        else if ((part[i] = !covered(c, mid))) {
-          if (sp[i]->key != kNoKey) vertex_state(sp[i]->key) = 0;
-          if (sp[i + 1]->key != kNoKey) vertex_state(sp[i + 1]->key) = 0;
-        }
-      }
-      if (!sampled) {
-        nfp_cut(S, c, out);
-        continue;
-      }
-      vert.assign(V, 0);
-      for (std::size_t i = 0; i < V; ++i) vert[i] = (i > 0 && part[i - 1]) || (i + 1 < V && part[i]) || !covered(c, *sp[i]);
-      for (std::size_t i = 0; i < V;) {
-        if (!vert[i]) {
-          ++i;
-          continue;
-        }
-        std::size_t j = i;
-        while (j + 1 < V && part[j]) ++j;
-        Vec2 a, b;
-        if (end_point(c, *sp[i], a) && end_point(c, *sp[j], b)) out.push_back(make_piece(c, sp[i]->p, sp[j]->p, a, b));
-        else out.push_back(make_piece(c, sp[i]->p, sp[j]->p));
-        i = j + 1;
-      }
+      std::size_t j = i;
+      while (j + 1 < V && part[j]) ++j;
+      Vec2 a, b;
+      if (end_point(c, *sp[i], a) && end_point(c, *sp[j], b)) out.push_back(make_piece(c, sp[i]->p, sp[j]->p, a, b));
+      else out.push_back(make_piece(c, sp[i]->p, sp[j]->p));
+      i = j + 1;
     }
   }
 };

@@ -49,8 +49,8 @@
 //    order (line, then position along it) found by a scan, rings in the order of those edges;
 //    collinear consecutive pieces drop their shared vertex (step 3's pass-through). O(N) line
 //    comparisons instead of the sort. Otherwise (overlapping collinear pieces with different ends,
-//    pinch vertices, slits, a vertex on a piece) nothing is decided and steps 2–3 run. Of the
-//    non-convex nesting pairs, 69 % take it on albano and shirts, 97 % on trousers.
+//    pinch vertices, slits, a vertex on a piece) nothing is decided and steps 2–3 run (the share
+//    of pairs taking it: docs/benchmarks.md).
 // 3. Edges are linked end to start by vertex id. Where several edges leave one vertex (two parts
 //    of O touching at a point), the incoming edge continues with the sharpest left turn (exact
 //    signs on the ray directions), so each ring bounds one side of the touching point. Collinear
@@ -67,13 +67,10 @@
 // Cost: O(N log N) exact predicates of degree ≤ 5 for N pieces (floating filters decide almost
 // all), O(N·k) box-filtered on-line tests (k vertices in a line's box), O(H·R·n) rational
 // point-in-ring tests for H holes, R outer rings; scratch arrays are thread-local and reused (no
-// allocation per call but the output). Measured (callgrind, instructions per pair over every
-// ordered pair, ~15–21 pieces each, convex pairs included): albano 26.2 k, shirts 22.8 k, trousers
-// 9.9 k (session 7 before the linked path, the same pieces: 31.0 k, 27.1 k, 12.1 k; session 6: 32 k,
-// 33.5 k, 16 k and session 5: 55 k, 60 k, 26 k on their pieces; the previous all-rational export
-// 384 k, 347 k, 301 k: mpq points in a std::map, rational line keys), whose output this one
-// reproduces bit for bit (tests/nonconvex2/test_nfp_export.cpp keeps it as the oracle and runs the
-// linked and general paths each on their own).
+// allocation per call but the output). The output is bit for bit that of the previous
+// all-rational export (mpq points in a std::map, rational line keys), which
+// tests/nonconvex2/test_nfp_export.cpp keeps as the oracle, running the linked and general paths
+// each on their own; measured costs: docs/benchmarks.md.
 #include <gmpxx.h>
 
 #include <algorithm>
@@ -847,26 +844,11 @@ bool export_linked(Workspace& W, const std::vector<End>& ends, const std::vector
   return true;
 }
 
-}  // namespace
+// ---- the steps of the general export (nfp_export_by), in their order --------------------------
 
-const NoFitPolygon2::Impl& nfp_impl(const NoFitPolygon2& n) { return *n.impl_; }
-
-NfpExportPath nfp_export_last_path() { return last_path; }
-
-void nfp_export(NoFitPolygon2::Impl& N) { nfp_export_by(N, NfpExportPath::Any); }
-
-bool nfp_export_by(NoFitPolygon2::Impl& N, NfpExportPath path) {
-  // Two convex shapes: the pieces are edges of the convex sum, ordered by angle.
-  if (path == NfpExportPath::Convex || (path == NfpExportPath::Any && nonconvex2::convex_shape(N.S.P) && nonconvex2::convex_shape(N.S.Q))) {
-    if (nfp_export_convex(N)) {
-      last_path = NfpExportPath::Convex;
-      return true;
-    }
-    if (path == NfpExportPath::Convex) return false;
-  }
-  thread_local Workspace W;
+// Step 1: fills W.ends (ends[2k], ends[2k + 1]: piece k's lo and hi), each rounded to nearest.
+void round_ends(Workspace& W, const NoFitPolygon2::Impl& N) {
   const std::size_t np = N.pieces.size();
-  // 1. Every end, rounded to nearest; ends[2k], ends[2k + 1] are piece k's lo and hi.
   std::vector<End>& ends = W.ends;
   ends.resize(2 * np);
   std::vector<int>& cuts = W.cuts;  // rounded crossing ends, for reuse
@@ -925,7 +907,13 @@ bool nfp_export_by(NoFitPolygon2::Impl& N, NfpExportPath path) {
       if (v.kind == Param::Cut) cuts.push_back(int(2 * k + j));
     }
   }
-  // Intern: ends with equal roundings are candidates; the same point symbolically or exactly.
+}
+
+// Step 1 (interning): vertex ids of the ends (W.id), one representative end per vertex (W.rep) and
+// its exported rounding (W.rv); ends with equal roundings are one vertex iff the same exact point.
+// Returns the number of vertices.
+int intern_ends(Workspace& W) {
+  std::vector<End>& ends = W.ends;
   std::vector<int>& id = W.id;
   id.assign(ends.size(), -1);
   int nv = 0;
@@ -935,82 +923,86 @@ bool nfp_export_by(NoFitPolygon2::Impl& N, NfpExportPath path) {
   rv.clear();
   std::vector<char>& fixed = W.fixed;  // rv from a TwoSum rounding of a sum vertex
   fixed.clear();
-  {
-    // A sum vertex that is an exact double pair against a crossing with FlX-exact numerators and
-    // denominator (integer data): equal iff num = x·den for both coordinates, each product exact
-    // or not a double at all (then not num). 1 equal, 0 not, -1 undecided.
-    auto sum_vs_cut = [&](const End& sv, End& c) {
-      if (!sv.sum || !sv.r_sum || sv.tex != 0 || sv.tey != 0 || c.sum || c.kind != Param::Cut) return -1;
-      ensure_fx(c);
-      if (c.fx <= 0) return -1;
-      int r = 1;
-      for (const auto& [t, num] : {std::pair{sv.tsx, c.fxn}, std::pair{sv.tsy, c.fyn}}) {
-        const double p = t * c.fden;
-        if (!std::isfinite(p) || (t != 0 && std::abs(p) <= 0x1p-960)) return -1;
-        if (std::fma(t, c.fden, -p) != 0 || p != num) r = 0;
-      }
-      return r;
-    };
-    auto same = [&](End& a, End& b) {
-      if (a.sum && b.sum) {
-        if (a.pid == b.pid && a.qid == b.qid) return true;
-        // Two sums of two doubles, both TwoSum pairs finite: equal iff the pairs are (s = fl(x)
-        // and e = x − s are functions of the exact x).
-        if (a.r_sum && b.r_sum) return a.tsx == b.tsx && a.tex == b.tex && a.tsy == b.tsy && a.tey == b.tey;
-      } else if (int r = sum_vs_cut(a, b); r >= 0 || (r = sum_vs_cut(b, a)) >= 0) {
-        return r == 1;
-      }
-      if (nonconvex2::same_point(nonconvex2::Cand{*a.E, a.param(), *a.edge}, nonconvex2::Cand{*b.E, b.param(), *b.edge})) return true;
-      return compare_coord(a, b, 0) == 0 && compare_coord(a, b, 1) == 0;
-    };
-    // Groups of equal roundings (−0 = +0) in an open-addressing table; each group lists its
-    // vertices. Ends are visited in index order, so a vertex's representative is its first end.
-    int bits = 4;
-    while ((std::size_t(1) << bits) < 2 * ends.size()) ++bits;
-    std::vector<int>& table = W.table;
-    table.assign(std::size_t(1) << bits, -1);
-    std::vector<Vec2>& gkey = W.gkey;
-    gkey.clear();
-    std::vector<int>&ghead = W.ghead, &vnext = W.vnext;
-    ghead.clear();
-    vnext.clear();
-    const std::size_t mask = (std::size_t(1) << bits) - 1;
-    for (std::size_t e = 0; e < ends.size(); ++e) {
-      const double x = ends[e].r.x() + 0.0, y = ends[e].r.y() + 0.0;  // +0.0: one key for ±0
-      std::size_t h = std::size_t((std::bit_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ull ^ std::bit_cast<std::uint64_t>(y) * 0xC2B2AE3D27D4EB4Full) >> (64 - bits));
-      int g;
-      for (;; h = (h + 1) & mask) {
-        g = table[h];
-        if (g < 0 || (gkey[g].x() == x && gkey[g].y() == y)) break;
-      }
-      if (g < 0) {
-        g = table[h] = int(gkey.size());
-        gkey.emplace_back(x, y);
-        ghead.push_back(-1);
-      }
-      for (int v = ghead[g]; v >= 0 && id[e] < 0; v = vnext[v])
-        if (same(ends[rep[v]], ends[e])) id[e] = v;
-      if (id[e] < 0) {
-        id[e] = nv++;
-        rep.push_back(int(e));
-        vnext.push_back(ghead[g]);
-        ghead[g] = id[e];
-        // The exported rounding of a vertex: that of its first sum-vertex end with a TwoSum rounding
-        // (the previous export's choice, which also fixes the sign of a zero), else of its first end.
-        rv.push_back(ends[e].r);
-        fixed.push_back(ends[e].r_sum);
-      } else if (ends[e].r_sum && !fixed[id[e]]) {
-        rv[id[e]] = ends[e].r;
-        fixed[id[e]] = 1;
-      }
+  // A sum vertex that is an exact double pair against a crossing with FlX-exact numerators and
+  // denominator (integer data): equal iff num = x·den for both coordinates, each product exact
+  // or not a double at all (then not num). 1 equal, 0 not, -1 undecided.
+  auto sum_vs_cut = [&](const End& sv, End& c) {
+    if (!sv.sum || !sv.r_sum || sv.tex != 0 || sv.tey != 0 || c.sum || c.kind != Param::Cut) return -1;
+    ensure_fx(c);
+    if (c.fx <= 0) return -1;
+    int r = 1;
+    for (const auto& [t, num] : {std::pair{sv.tsx, c.fxn}, std::pair{sv.tsy, c.fyn}}) {
+      const double p = t * c.fden;
+      if (!std::isfinite(p) || (t != 0 && std::abs(p) <= 0x1p-960)) return -1;
+      if (std::fma(t, c.fden, -p) != 0 || p != num) r = 0;
+    }
+    return r;
+  };
+  auto same = [&](End& a, End& b) {
+    if (a.sum && b.sum) {
+      if (a.pid == b.pid && a.qid == b.qid) return true;
+      // Two sums of two doubles, both TwoSum pairs finite: equal iff the pairs are (s = fl(x)
+      // and e = x − s are functions of the exact x).
+      if (a.r_sum && b.r_sum) return a.tsx == b.tsx && a.tex == b.tex && a.tsy == b.tsy && a.tey == b.tey;
+    } else if (int r = sum_vs_cut(a, b); r >= 0 || (r = sum_vs_cut(b, a)) >= 0) {
+      return r == 1;
+    }
+    if (nonconvex2::same_point(nonconvex2::Cand{*a.E, a.param(), *a.edge}, nonconvex2::Cand{*b.E, b.param(), *b.edge})) return true;
+    return compare_coord(a, b, 0) == 0 && compare_coord(a, b, 1) == 0;
+  };
+  // Groups of equal roundings (−0 = +0) in an open-addressing table; each group lists its
+  // vertices. Ends are visited in index order, so a vertex's representative is its first end.
+  int bits = 4;
+  while ((std::size_t(1) << bits) < 2 * ends.size()) ++bits;
+  std::vector<int>& table = W.table;
+  table.assign(std::size_t(1) << bits, -1);
+  std::vector<Vec2>& gkey = W.gkey;
+  gkey.clear();
+  std::vector<int>&ghead = W.ghead, &vnext = W.vnext;
+  ghead.clear();
+  vnext.clear();
+  const std::size_t mask = (std::size_t(1) << bits) - 1;
+  for (std::size_t e = 0; e < ends.size(); ++e) {
+    const double x = ends[e].r.x() + 0.0, y = ends[e].r.y() + 0.0;  // +0.0: one key for ±0
+    std::size_t h = std::size_t((std::bit_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ull ^ std::bit_cast<std::uint64_t>(y) * 0xC2B2AE3D27D4EB4Full) >> (64 - bits));
+    int g;
+    for (;; h = (h + 1) & mask) {
+      g = table[h];
+      if (g < 0 || (gkey[g].x() == x && gkey[g].y() == y)) break;
+    }
+    if (g < 0) {
+      g = table[h] = int(gkey.size());
+      gkey.emplace_back(x, y);
+      ghead.push_back(-1);
+    }
+    for (int v = ghead[g]; v >= 0 && id[e] < 0; v = vnext[v])
+      if (same(ends[rep[v]], ends[e])) id[e] = v;
+    if (id[e] < 0) {
+      id[e] = nv++;
+      rep.push_back(int(e));
+      vnext.push_back(ghead[g]);
+      ghead[g] = id[e];
+      // The exported rounding of a vertex: that of its first sum-vertex end with a TwoSum rounding
+      // (the previous export's choice, which also fixes the sign of a zero), else of its first end.
+      rv.push_back(ends[e].r);
+      fixed.push_back(ends[e].r_sum);
+    } else if (ends[e].r_sum && !fixed[id[e]]) {
+      rv[id[e]] = ends[e].r;
+      fixed[id[e]] = 1;
     }
   }
+  return nv;
+}
 
+// W.segs: the pieces of positive length with their line filters; W.zero_points: the vertex of
+// each zero-length piece.
+void collect_segs(Workspace& W, const NoFitPolygon2::Impl& N) {
   std::vector<Seg>& segs = W.segs;
   segs.clear();
   std::vector<int>& zero_points = W.zero_points;
   zero_points.clear();
-  for (std::size_t k = 0; k < np; ++k) {
+  const std::vector<int>& id = W.id;
+  for (std::size_t k = 0; k < N.pieces.size(); ++k) {
     const int ia = id[2 * k], ib = id[2 * k + 1];
     if (ia == ib) {
       zero_points.push_back(ia);
@@ -1018,176 +1010,207 @@ bool nfp_export_by(NoFitPolygon2::Impl& N, NfpExportPath path) {
     }
     make_seg(segs.emplace_back(), N.pieces[k], ia, ib);
   }
+}
 
-  // Every vertex (each is an end of a piece of positive length or a zero-length one) with its
-  // rounding inline, sorted by rounded x for range scans.
+// W.verts: every vertex (each is an end of a piece of positive length or a zero-length one) with
+// its rounding inline, sorted by rounded x for range scans.
+void sort_vertices(Workspace& W, int nv) {
   std::vector<Workspace::VX>& verts = W.verts;
+  const std::vector<Vec2>& rv = W.rv;
   verts.resize(nv);
   for (int v = 0; v < nv; ++v) verts[v] = {rv[v].x(), rv[v].y(), v};
   std::sort(verts.begin(), verts.end(), [](const Workspace::VX& a, const Workspace::VX& b) { return a.x < b.x; });
+}
 
+// Empties the output of the linking steps: slits, is_vertex (nv zeros) and the rings (ring k is
+// ring_verts[ring_start[k], ring_start[k + 1]), vertex ids).
+void clear_rings(Workspace& W, int nv) {
+  W.slits.clear();
+  W.is_vertex.assign(nv, 0);  // ends of edges and slit pieces
+  W.ring_verts.clear();
+  W.ring_start.assign(1, 0);
+}
+
+// Step 2: W.order, the segments sorted by exact supporting line (indices only: a Seg is large).
+void sort_by_line(Workspace& W) {
+  const std::vector<Seg>& segs = W.segs;
+  std::vector<int>& order = W.order;
+  order.resize(segs.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = int(i);
+  std::sort(order.begin(), order.end(), [&](int x, int y) { return compare_lines_filtered(segs[x], segs[y]) < 0; });
+}
+
+// Step 2: per exact line (a run of W.order), the pieces cut at every vertex on the line inside
+// their extent into elementary segments: W.edges (covered one way), W.slits (both ways), and
+// is_vertex for their ends.
+void cut_lines(Workspace& W, int nv) {
+  const std::vector<Seg>& segs = W.segs;
+  const std::vector<int>& order = W.order;
+  const std::vector<End>& ends = W.ends;
+  const std::vector<int>& rep = W.rep;
+  const std::vector<Vec2>& rv = W.rv;
+  const std::vector<Workspace::VX>& verts = W.verts;
   std::vector<std::array<int, 2>>& slits = W.slits;
-  slits.clear();
-  std::vector<char>& is_vertex = W.is_vertex;  // ends of edges and slit pieces
-  is_vertex.assign(nv, 0);
-  // Rings as vertex ids: ring k is ring_verts[ring_start[k], ring_start[k + 1]).
-  std::vector<int>&ring_verts = W.ring_verts, &ring_start = W.ring_start;
-  ring_verts.clear();
-  ring_start.assign(1, 0);
-  const bool linked = path != NfpExportPath::General && export_linked(W, ends, rv, nv);
-  if (!linked && path == NfpExportPath::Linked) return false;
-  last_path = linked ? NfpExportPath::Linked : NfpExportPath::General;
-  if (!linked) {
-    // Sorted by line: sgs(k) is the k-th (indices only: a Seg is large).
-    std::vector<int>& order = W.order;
-    order.resize(segs.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = int(i);
-    std::sort(order.begin(), order.end(), [&](int x, int y) { return compare_lines_filtered(segs[x], segs[y]) < 0; });
-    auto sgs = [&](std::size_t k) -> const Seg& { return segs[std::size_t(order[k])]; };
-
-    using Edge = Workspace::Edge;
-    using Iv = Workspace::Iv;
-    std::vector<Edge>& edges = W.edges;
-    edges.clear();
-    std::vector<int>&stamp = W.stamp, &pos = W.pos;
-    stamp.assign(nv, -1);
-    pos.assign(nv, 0);
-    std::vector<Iv>& ivs = W.ivs;
-    std::vector<int>& us = W.us;
-    for (std::size_t g0 = 0, g1; g0 < segs.size(); g0 = g1) {
-      g1 = g0 + 1;
-      while (g1 < segs.size() && compare_lines_filtered(sgs(g1), sgs(g0)) == 0) ++g1;
-      const int axis = sgs(g0).vertical ? 1 : 0;
-      ivs.clear();
-      us.clear();
-      Vec2 lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
-      for (std::size_t k = g0; k < g1; ++k) {
-        const Seg& s = sgs(k);
-        const bool fwd = s.su > 0;  // b − a is a positive multiple of E's direction
-        ivs.push_back({fwd ? s.a : s.b, fwd ? s.b : s.a, fwd});
-        for (int v : {s.a, s.b}) {
-          if (stamp[v] != int(g0)) stamp[v] = int(g0), us.push_back(v);
-          lo = lo.cwiseMin(rv[v]);
-          hi = hi.cwiseMax(rv[v]);
-        }
+  std::vector<char>& is_vertex = W.is_vertex;
+  auto sgs = [&](std::size_t k) -> const Seg& { return segs[std::size_t(order[k])]; };
+  using Iv = Workspace::Iv;
+  std::vector<Workspace::Edge>& edges = W.edges;
+  edges.clear();
+  std::vector<int>&stamp = W.stamp, &pos = W.pos;
+  stamp.assign(nv, -1);
+  pos.assign(nv, 0);
+  std::vector<Iv>& ivs = W.ivs;
+  std::vector<int>& us = W.us;
+  for (std::size_t g0 = 0, g1; g0 < segs.size(); g0 = g1) {
+    g1 = g0 + 1;
+    while (g1 < segs.size() && compare_lines_filtered(sgs(g1), sgs(g0)) == 0) ++g1;
+    const int axis = sgs(g0).vertical ? 1 : 0;
+    ivs.clear();
+    us.clear();
+    Vec2 lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
+    for (std::size_t k = g0; k < g1; ++k) {
+      const Seg& s = sgs(k);
+      const bool fwd = s.su > 0;  // b − a is a positive multiple of E's direction
+      ivs.push_back({fwd ? s.a : s.b, fwd ? s.b : s.a, fwd});
+      for (int v : {s.a, s.b}) {
+        if (stamp[v] != int(g0)) stamp[v] = int(g0), us.push_back(v);
+        lo = lo.cwiseMin(rv[v]);
+        hi = hi.cwiseMax(rv[v]);
       }
-      // Other exact vertices on this line inside its extent split it too. Rounding is monotone, so
-      // the extent's points round into [lo, hi]; those in the box are tested exactly.
-      auto it = std::lower_bound(verts.begin(), verts.end(), lo.x(), [](const Workspace::VX& a, double x) { return a.x < x; });
-      bool split = false;
-      for (; it != verts.end() && it->x <= hi.x(); ++it) {
-        const int v = it->v;
-        if (it->y < lo.y() || it->y > hi.y() || stamp[v] == int(g0)) continue;
-        if (!on_line(ends[rep[v]], sgs(g0))) continue;
-        stamp[v] = int(g0);
-        us.push_back(v);
-        split = true;
+    }
+    // Other exact vertices on this line inside its extent split it too. Rounding is monotone, so
+    // the extent's points round into [lo, hi]; those in the box are tested exactly.
+    auto it = std::lower_bound(verts.begin(), verts.end(), lo.x(), [](const Workspace::VX& a, double x) { return a.x < x; });
+    bool split = false;
+    for (; it != verts.end() && it->x <= hi.x(); ++it) {
+      const int v = it->v;
+      if (it->y < lo.y() || it->y > hi.y() || stamp[v] == int(g0)) continue;
+      if (!on_line(ends[rep[v]], sgs(g0))) continue;
+      stamp[v] = int(g0);
+      us.push_back(v);
+      split = true;
+    }
+    if (g1 == g0 + 1 && !split) {  // a lone piece on its line, nothing inside it: one boundary edge
+      is_vertex[sgs(g0).a] = 1;
+      is_vertex[sgs(g0).b] = 1;
+      edges.push_back({sgs(g0).a, sgs(g0).b, g0, ivs[0].fwd});
+      continue;
+    }
+    // Distinct vertices on one line have distinct u: rounded u first, exact on equal roundings.
+    std::sort(us.begin(), us.end(), [&](int x, int y) {
+      if (rv[x][axis] != rv[y][axis]) return rv[x][axis] < rv[y][axis];
+      return x != y && compare_coord(ends[rep[x]], ends[rep[y]], axis) < 0;
+    });
+    for (std::size_t i = 0; i < us.size(); ++i) pos[us[i]] = int(i);
+    bool slit_open = false;
+    int slit_start = -1;
+    for (std::size_t i = 0; i + 1 < us.size(); ++i) {
+      bool f = false, b = false;
+      for (const Iv& iv : ivs)
+        if (pos[iv.lo] <= int(i) && int(i) + 1 <= pos[iv.hi]) (iv.fwd ? f : b) = true;
+      const int p0 = us[i], p1 = us[i + 1];
+      if (f || b) {
+        is_vertex[p0] = 1;
+        is_vertex[p1] = 1;
       }
-      if (g1 == g0 + 1 && !split) {  // a lone piece on its line, nothing inside it: one boundary edge
-        is_vertex[sgs(g0).a] = 1;
-        is_vertex[sgs(g0).b] = 1;
-        edges.push_back({sgs(g0).a, sgs(g0).b, g0, ivs[0].fwd});
+      if (f && b) {
+        if (!slit_open) slit_start = p0;
+        slit_open = true;
+        if (i + 2 == us.size()) slits.push_back({slit_start, p1});
         continue;
       }
-      // Distinct vertices on one line have distinct u: rounded u first, exact on equal roundings.
-      std::sort(us.begin(), us.end(), [&](int x, int y) {
-        if (rv[x][axis] != rv[y][axis]) return rv[x][axis] < rv[y][axis];
-        return x != y && compare_coord(ends[rep[x]], ends[rep[y]], axis) < 0;
-      });
-      for (std::size_t i = 0; i < us.size(); ++i) pos[us[i]] = int(i);
-      bool slit_open = false;
-      int slit_start = -1;
-      for (std::size_t i = 0; i + 1 < us.size(); ++i) {
-        bool f = false, b = false;
-        for (const Iv& iv : ivs)
-          if (pos[iv.lo] <= int(i) && int(i) + 1 <= pos[iv.hi]) (iv.fwd ? f : b) = true;
-        const int p0 = us[i], p1 = us[i + 1];
-        if (f || b) {
-          is_vertex[p0] = 1;
-          is_vertex[p1] = 1;
-        }
-        if (f && b) {
-          if (!slit_open) slit_start = p0;
-          slit_open = true;
-          if (i + 2 == us.size()) slits.push_back({slit_start, p1});
+      if (slit_open) slits.push_back({slit_start, p0});
+      slit_open = false;
+      if (f) edges.push_back({p0, p1, g0, true});
+      else if (b) edges.push_back({p1, p0, g0, false});
+    }
+  }
+}
+
+// Step 3: W.edges linked end to start into rings (W.ring_verts, W.ring_start), the sharpest left
+// turn where several edges leave a vertex, collinear pass-through vertices dropped. Throws
+// std::logic_error on a chain that does not close.
+void link_rings(Workspace& W, int nv) {
+  using Edge = Workspace::Edge;
+  const std::vector<Edge>& edges = W.edges;
+  const std::vector<Seg>& segs = W.segs;
+  const std::vector<int>& order = W.order;
+  auto sgs = [&](std::size_t k) -> const Seg& { return segs[std::size_t(order[k])]; };
+  std::vector<int>&ring_verts = W.ring_verts, &ring_start = W.ring_start;
+  // Edges leaving each vertex, in edge order (compressed rows).
+  std::vector<int>&first = W.first, &out = W.out, &fill = W.fill;
+  first.assign(nv + 1, 0);
+  out.resize(edges.size());
+  for (const Edge& e : edges) ++first[e.a + 1];
+  for (int v = 0; v < nv; ++v) first[v + 1] += first[v];
+  fill.assign(first.begin(), first.end() - 1);
+  for (std::size_t e = 0; e < edges.size(); ++e) out[fill[edges[e].a]++] = int(e);
+  std::vector<char>& used = W.used;
+  used.assign(edges.size(), 0);
+  // The direction of an edge: its line's ray direction, signed to point from a to b.
+  auto dir = [&](const Edge& e) {
+    const Seg& s = sgs(e.line);
+    return Dir{s.E, e.fwd ? s.su : -s.su};
+  };
+  std::vector<std::size_t>& chain = W.chain;
+  for (std::size_t e0 = 0; e0 < edges.size(); ++e0) {
+    if (used[e0]) continue;
+    chain.clear();
+    std::size_t e = e0;
+    for (;;) {
+      used[e] = 1;
+      chain.push_back(e);
+      const int v = edges[e].b;
+      std::size_t best = edges.size();
+      for (int i = first[v]; i < first[v + 1]; ++i) {
+        const std::size_t c = std::size_t(out[i]);
+        if (used[c] && c != e0) continue;
+        if (best == edges.size()) {
+          best = c;
           continue;
         }
-        if (slit_open) slits.push_back({slit_start, p0});
-        slit_open = false;
-        if (f) edges.push_back({p0, p1, g0, true});
-        else if (b) edges.push_back({p1, p0, g0, false});
+        Dir r = dir(edges[e]);  // back along the incoming edge
+        r.s = -r.s;
+        if (larger_ccw_angle(r, dir(edges[c]), dir(edges[best]))) best = c;
       }
+      if (best == e0) break;  // closed
+      // Every vertex of ∂O has as many pieces leaving as entering; a dead end means the pieces
+      // are inconsistent, which must not be exported as if it were a ring.
+      if (best == edges.size())
+        throw std::logic_error("no-fit polygon: a boundary chain does not close (internal inconsistency)");
+      e = best;
     }
+    const std::size_t r0 = ring_verts.size();
+    for (std::size_t k = 0; k < chain.size(); ++k) {
+      const Edge& in = edges[chain[(k + chain.size() - 1) % chain.size()]];
+      const Edge& o = edges[chain[k]];
+      // Pass-through: the same exact line (one group per line) in the same direction.
+      if (chain.size() > 2 && in.line == o.line && in.fwd == o.fwd) continue;
+      ring_verts.push_back(o.a);
+    }
+    if (ring_verts.size() - r0 >= 3) ring_start.push_back(int(ring_verts.size()));
+    else ring_verts.resize(r0);
+  }
+}
 
-    // Link edges into rings. Edges leaving each vertex, in edge order (compressed rows).
-    std::vector<int>&first = W.first, &out = W.out, &fill = W.fill;
-    first.assign(nv + 1, 0);
-    out.resize(edges.size());
-    for (const Edge& e : edges) ++first[e.a + 1];
-    for (int v = 0; v < nv; ++v) first[v + 1] += first[v];
-    fill.assign(first.begin(), first.end() - 1);
-    for (std::size_t e = 0; e < edges.size(); ++e) out[fill[edges[e].a]++] = int(e);
-    std::vector<char>& used = W.used;
-    used.assign(edges.size(), 0);
-    // The direction of an edge: its line's ray direction, signed to point from a to b.
-    auto dir = [&](const Edge& e) {
-      const Seg& s = sgs(e.line);
-      return Dir{s.E, e.fwd ? s.su : -s.su};
-    };
-    std::vector<std::size_t>& chain = W.chain;
-    for (std::size_t e0 = 0; e0 < edges.size(); ++e0) {
-      if (used[e0]) continue;
-      chain.clear();
-      std::size_t e = e0;
-      for (;;) {
-        used[e] = 1;
-        chain.push_back(e);
-        const int v = edges[e].b;
-        std::size_t best = edges.size();
-        for (int i = first[v]; i < first[v + 1]; ++i) {
-          const std::size_t c = std::size_t(out[i]);
-          if (used[c] && c != e0) continue;
-          if (best == edges.size()) {
-            best = c;
-            continue;
-          }
-          Dir r = dir(edges[e]);  // back along the incoming edge
-          r.s = -r.s;
-          if (larger_ccw_angle(r, dir(edges[c]), dir(edges[best]))) best = c;
-        }
-        if (best == e0) break;  // closed
-        // Every vertex of ∂O has as many pieces leaving as entering; a dead end means the pieces
-        // are inconsistent, which must not be exported as if it were a ring.
-        if (best == edges.size())
-          throw std::logic_error("no-fit polygon: a boundary chain does not close (internal inconsistency)");
-        e = best;
-      }
-      const std::size_t r0 = ring_verts.size();
-      for (std::size_t k = 0; k < chain.size(); ++k) {
-        const Edge& in = edges[chain[(k + chain.size() - 1) % chain.size()]];
-        const Edge& o = edges[chain[k]];
-        // Pass-through: the same exact line (one group per line) in the same direction.
-        if (chain.size() > 2 && in.line == o.line && in.fwd == o.fwd) continue;
-        ring_verts.push_back(o.a);
-      }
-      if (ring_verts.size() - r0 >= 3) ring_start.push_back(int(ring_verts.size()));
-      else ring_verts.resize(r0);
-    }
-  }  // general path
+// Ring k as a vector of vertex ids.
+std::vector<int> ring_of(const Workspace& W, std::size_t k) {
+  return std::vector<int>(W.ring_verts.begin() + W.ring_start[k], W.ring_verts.begin() + W.ring_start[k + 1]);
+}
+
+// V: the exact vertices (rationals), computed on first use (only for the rare rational decisions).
+void exact_vertices(const Workspace& W, int nv, std::vector<QP>& V) {
+  if (V.empty())
+    for (int v = 0; v < nv; ++v) V.push_back(exact_point(W.ends[W.rep[v]]));
+}
+
+// Step 3: W.outer and W.holes, the rings by the sign of their area (positive: outer), a floating
+// shoelace sum on the rounded vertices with a bound covering the rounding of the vertices (2^-53
+// relative each) and of the sum; exact rationals (V) when it cannot decide.
+void split_rings(Workspace& W, int nv, std::vector<QP>& V) {
+  const std::vector<Vec2>& rv = W.rv;
+  const std::vector<int>&ring_verts = W.ring_verts, &ring_start = W.ring_start;
   const std::size_t nr = ring_start.size() - 1;
-  auto ring_of = [&](std::size_t k) {
-    return std::vector<int>(ring_verts.begin() + ring_start[k], ring_verts.begin() + ring_start[k + 1]);
-  };
-
-  // Exact vertices, only for the rare rational decisions below.
-  std::vector<QP> V;
-  auto exact_vertices = [&] {
-    if (V.empty())
-      for (int v = 0; v < nv; ++v) V.push_back(exact_point(ends[rep[v]]));
-  };
-  // Outer rings and holes by the sign of the area: a floating shoelace sum on the rounded
-  // vertices with a bound covering the rounding of the vertices (2^-53 relative each) and of the
-  // sum; exact rationals when it cannot decide, and exact areas whenever there are holes to place.
   std::vector<std::size_t>&outer = W.outer, &holes = W.holes;
   outer.clear();
   holes.clear();
@@ -1204,43 +1227,56 @@ bool nfp_export_by(NoFitPolygon2::Impl& N, NfpExportPath path) {
     const double bound = (4 * n * n + 8 * n) * big * big * 0x1p-50 + 0x1p-1000;
     int sign;
     if (std::isfinite(a) && std::isfinite(bound) && std::abs(a) > bound) sign = a > 0 ? 1 : -1;
-    else exact_vertices(), sign = sgn(ring_area2(V, ring_of(k)));
+    else exact_vertices(W, nv, V), sign = sgn(ring_area2(V, ring_of(W, k)));
     (sign > 0 ? outer : holes).push_back(k);
   }
-  // owner[h]: the outer ring (index into outer) of hole h.
+}
+
+// Step 3: W.owner[h], the outer ring (index into W.outer) of hole h: the smallest (exact area)
+// containing one of its vertices, or an edge midpoint when all lie on that ring. Throws
+// std::logic_error on a hole in no outer ring.
+void place_holes(Workspace& W, int nv, std::vector<QP>& V) {
+  const std::vector<std::size_t>&outer = W.outer, &holes = W.holes;
   std::vector<std::size_t>& owner = W.owner;
   owner.assign(holes.size(), 0);
-  if (!holes.empty()) {
-    exact_vertices();
-    std::vector<std::vector<int>> rings(nr);
-    for (std::size_t k = 0; k < nr; ++k) rings[k] = ring_of(k);
-    std::vector<mpq_class> area(nr);
-    for (std::size_t o : outer) area[o] = ring_area2(V, rings[o]);
-    for (std::size_t hi = 0; hi < holes.size(); ++hi) {
-      const std::size_t h = holes[hi];
-      std::size_t best = outer.size();
-      for (std::size_t o = 0; o < outer.size(); ++o) {
-        int side = 0;
-        for (int p : rings[h]) {
-          side = point_in_ring(V, rings[outer[o]], V[p]);
-          if (side != 0) break;
-        }
-        // All vertices on that ring's boundary: decide by the midpoints of the hole's edges (a
-        // hole that shares every vertex with the ring still has an edge off it, or it is the ring).
-        for (std::size_t i = 0; side == 0 && i < rings[h].size(); ++i) {
-          const QP &a = V[rings[h][i]], &b = V[rings[h][(i + 1) % rings[h].size()]];
-          side = point_in_ring(V, rings[outer[o]], QP{(a.x + b.x) / 2, (a.y + b.y) / 2});
-        }
-        if (side > 0 && (best == outer.size() || area[outer[o]] < area[outer[best]])) best = o;
+  if (holes.empty()) return;
+  exact_vertices(W, nv, V);
+  const std::size_t nr = W.ring_start.size() - 1;
+  std::vector<std::vector<int>> rings(nr);
+  for (std::size_t k = 0; k < nr; ++k) rings[k] = ring_of(W, k);
+  std::vector<mpq_class> area(nr);
+  for (std::size_t o : outer) area[o] = ring_area2(V, rings[o]);
+  for (std::size_t hi = 0; hi < holes.size(); ++hi) {
+    const std::size_t h = holes[hi];
+    std::size_t best = outer.size();
+    for (std::size_t o = 0; o < outer.size(); ++o) {
+      int side = 0;
+      for (int p : rings[h]) {
+        side = point_in_ring(V, rings[outer[o]], V[p]);
+        if (side != 0) break;
       }
-      if (best == outer.size())
-        throw std::logic_error("no-fit polygon: a hole ring lies in no outer ring (internal inconsistency)");
-      owner[hi] = best;
+      // All vertices on that ring's boundary: decide by the midpoints of the hole's edges (a
+      // hole that shares every vertex with the ring still has an edge off it, or it is the ring).
+      for (std::size_t i = 0; side == 0 && i < rings[h].size(); ++i) {
+        const QP &a = V[rings[h][i]], &b = V[rings[h][(i + 1) % rings[h].size()]];
+        side = point_in_ring(V, rings[outer[o]], QP{(a.x + b.x) / 2, (a.y + b.y) / 2});
+      }
+      if (side > 0 && (best == outer.size() || area[outer[o]] < area[outer[best]])) best = o;
     }
+    if (best == outer.size())
+      throw std::logic_error("no-fit polygon: a hole ring lies in no outer ring (internal inconsistency)");
+    owner[hi] = best;
   }
+}
+
+// Steps 3–4: N.polys (each outer ring, then its holes), N.slits and N.points (the zero-length
+// pieces that are no vertex of an edge or slit, in exact (x, y) order), as rounded coordinates.
+void write_output(NoFitPolygon2::Impl& N, Workspace& W) {
+  const std::vector<Vec2>& rv = W.rv;
+  const std::vector<std::size_t>&outer = W.outer, &holes = W.holes, &owner = W.owner;
   auto ring_points = [&](std::size_t k) {
-    std::vector<Vec2> pts(std::size_t(ring_start[k + 1] - ring_start[k]));
-    for (std::size_t i = 0; i < pts.size(); ++i) pts[i] = rv[ring_verts[std::size_t(ring_start[k]) + i]];
+    std::vector<Vec2> pts(std::size_t(W.ring_start[k + 1] - W.ring_start[k]));
+    for (std::size_t i = 0; i < pts.size(); ++i) pts[i] = rv[W.ring_verts[std::size_t(W.ring_start[k]) + i]];
     return pts;
   };
   N.polys.clear();
@@ -1253,8 +1289,11 @@ bool nfp_export_by(NoFitPolygon2::Impl& N, NfpExportPath path) {
       if (owner[hi] == o) poly.push_back(ring_points(holes[hi]));
   }
   N.slits.clear();
-  for (const auto& sl : slits) N.slits.push_back({rv[sl[0]], rv[sl[1]]});
+  for (const auto& sl : W.slits) N.slits.push_back({rv[sl[0]], rv[sl[1]]});
   // Isolated points in exact (x, y) order: rounded first (monotone), exact on equal roundings.
+  const std::vector<End>& ends = W.ends;
+  const std::vector<int>& rep = W.rep;
+  std::vector<int>& zero_points = W.zero_points;
   std::sort(zero_points.begin(), zero_points.end(), [&](int x, int y) {
     if (x == y) return false;
     for (int axis = 0; axis < 2; ++axis) {
@@ -1266,7 +1305,44 @@ bool nfp_export_by(NoFitPolygon2::Impl& N, NfpExportPath path) {
   zero_points.erase(std::unique(zero_points.begin(), zero_points.end()), zero_points.end());
   N.points.clear();
   for (int p : zero_points)
-    if (!is_vertex[p]) N.points.push_back(rv[p]);
+    if (!W.is_vertex[p]) N.points.push_back(rv[p]);
+}
+
+}  // namespace
+
+const NoFitPolygon2::Impl& nfp_impl(const NoFitPolygon2& n) { return *n.impl_; }
+
+NfpExportPath nfp_export_last_path() { return last_path; }
+
+void nfp_export(NoFitPolygon2::Impl& N) { nfp_export_by(N, NfpExportPath::Any); }
+
+bool nfp_export_by(NoFitPolygon2::Impl& N, NfpExportPath path) {
+  // Two convex shapes: the pieces are edges of the convex sum, ordered by angle.
+  if (path == NfpExportPath::Convex || (path == NfpExportPath::Any && nonconvex2::convex_shape(N.S.P) && nonconvex2::convex_shape(N.S.Q))) {
+    if (nfp_export_convex(N)) {
+      last_path = NfpExportPath::Convex;
+      return true;
+    }
+    if (path == NfpExportPath::Convex) return false;
+  }
+  thread_local Workspace W;
+  round_ends(W, N);                  // 1. every end rounded to nearest
+  const int nv = intern_ends(W);     //    and interned: vertex ids
+  collect_segs(W, N);                //    pieces of positive length, zero-length points
+  sort_vertices(W, nv);              //    vertices by rounded x
+  clear_rings(W, nv);
+  const bool linked = path != NfpExportPath::General && export_linked(W, W.ends, W.rv, nv);  // rings directly
+  if (!linked && path == NfpExportPath::Linked) return false;
+  last_path = linked ? NfpExportPath::Linked : NfpExportPath::General;
+  if (!linked) {
+    sort_by_line(W);    // 2. pieces by exact line
+    cut_lines(W, nv);   //    elementary segments: edges and slits
+    link_rings(W, nv);  // 3. edges into rings
+  }
+  std::vector<QP> V;      // exact vertices, only for the rare rational decisions
+  split_rings(W, nv, V);  //    outer rings and holes by area sign
+  place_holes(W, nv, V);  //    each hole in its smallest outer ring
+  write_output(N, W);     // 4. rings, slits, isolated points
   return true;
 }
 
