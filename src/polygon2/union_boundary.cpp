@@ -57,6 +57,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "geometry/box_tree.hpp"
 #include "geometry/exact.hpp"
 
 namespace pendepth::polygon2 {
@@ -375,85 +376,17 @@ std::array<decltype(LF{}(0.0)), 2> near_d2(const Near& n, const Vec2& t, LF L) {
   }
 }
 
-// ---- bounding-volume hierarchy over boxes (xmin, ymin, xmax, ymax) ----
+// ---- boxes (xmin, ymin, xmax, ymax) and the hierarchies over them (src/geometry/box_tree.hpp) ----
 using Box = std::array<double, 4>;
+using geometry::BoxTree;
 
-struct Bvh {
-  struct Node {
-    Box box;
-    std::uint32_t a = 0, b = 0;  // leaf: items [a, b); inner: children a, b
-    bool leaf = true;
-  };
-  std::vector<Node> nodes;
-  std::vector<std::uint32_t> items;
+Vec2 box_lo(const Box& b) { return Vec2(b[0], b[1]); }
+Vec2 box_hi(const Box& b) { return Vec2(b[2], b[3]); }
 
-  void build(const std::vector<Box>& boxes) {
-    nodes.clear();
-    items.resize(boxes.size());
-    std::iota(items.begin(), items.end(), 0u);
-    if (boxes.empty()) return;
-    nodes.reserve(2 * boxes.size() / 2 + 2);
-    build_rec(boxes, 0, static_cast<std::uint32_t>(boxes.size()));
-    nodes.shrink_to_fit();
-  }
-  std::uint32_t build_rec(const std::vector<Box>& boxes, std::uint32_t lo, std::uint32_t hi) {
-    Node n;
-    n.box = boxes[items[lo]];
-    for (std::uint32_t i = lo + 1; i < hi; ++i) {
-      const Box& b = boxes[items[i]];
-      n.box[0] = std::min(n.box[0], b[0]);
-      n.box[1] = std::min(n.box[1], b[1]);
-      n.box[2] = std::max(n.box[2], b[2]);
-      n.box[3] = std::max(n.box[3], b[3]);
-    }
-    const std::uint32_t id = static_cast<std::uint32_t>(nodes.size());
-    nodes.push_back(n);
-    if (hi - lo <= 4) {
-      nodes[id].a = lo;
-      nodes[id].b = hi;
-      return id;
-    }
-    const int axis = (n.box[2] - n.box[0]) >= (n.box[3] - n.box[1]) ? 0 : 1;
-    const std::uint32_t mid = (lo + hi) / 2;
-    std::nth_element(items.begin() + lo, items.begin() + mid, items.begin() + hi, [&](std::uint32_t x, std::uint32_t y) {
-      return boxes[x][axis] + boxes[x][axis + 2] < boxes[y][axis] + boxes[y][axis + 2];
-    });
-    const std::uint32_t l = build_rec(boxes, lo, mid);
-    const std::uint32_t r = build_rec(boxes, mid, hi);
-    nodes[id].leaf = false;
-    nodes[id].a = l;
-    nodes[id].b = r;
-    return id;
-  }
-  template <class F>
-  void overlap(const Box& q, F&& f) const {
-    overlap_until(q, [&](std::uint32_t i) {
-      f(i);
-      return false;
-    });
-  }
-  /// Visits the items whose boxes meet q until f returns true; returns whether it did.
-  template <class F>
-  bool overlap_until(const Box& q, F&& f) const {
-    if (nodes.empty()) return false;
-    std::uint32_t st[128];
-    int top = 0;
-    st[top++] = 0;
-    while (top > 0) {
-      const Node& n = nodes[st[--top]];
-      if (n.box[0] > q[2] || n.box[2] < q[0] || n.box[1] > q[3] || n.box[3] < q[1]) continue;
-      if (n.leaf) {
-        for (std::uint32_t i = n.a; i < n.b; ++i)
-          if (f(items[i])) return true;
-      } else {
-        st[top++] = n.a;
-        st[top++] = n.b;
-      }
-    }
-    return false;
-  }
-  std::size_t bytes() const { return nodes.capacity() * sizeof(Node) + items.capacity() * sizeof(std::uint32_t); }
-};
+// The hierarchy over `boxes`: median splits, up to 4 items per leaf.
+void build_tree(BoxTree& T, const std::vector<Box>& boxes) {
+  T.build_buckets<4>(boxes.size(), [&](std::size_t k) { return box_lo(boxes[k]); }, [&](std::size_t k) { return box_hi(boxes[k]); });
+}
 
 bool boxes_meet(const Box& a, const Box& b) { return !(a[0] > b[2] || a[2] < b[0] || a[1] > b[3] || a[3] < b[1]); }
 
@@ -465,30 +398,16 @@ Box pad(Box r) {
   return r;
 }
 
-// Parameter range [enter, exit] of the ray t + λ·d inside box b (conservative, widened), or false.
-bool ray_box(const Box& b, const Vec2& t, const Vec2& d, double& enter, double& exit) {
-  enter = -INFINITY;
-  exit = INFINITY;
-  for (int c = 0; c < 2; ++c) {
-    if (d[c] == 0) {
-      if (t[c] < b[c] || t[c] > b[c + 2]) return false;
-      continue;
-    }
-    double l0 = (b[c] - t[c]) / d[c], l1 = (b[c + 2] - t[c]) / d[c];
-    if (l0 > l1) std::swap(l0, l1);
-    enter = std::max(enter, l0);
-    exit = std::min(exit, l1);
-  }
-  const double slack = (std::abs(enter) + std::abs(exit)) * 0x1p-40 + 0x1p-1000;
-  if (std::isfinite(enter)) enter -= slack;
-  if (std::isfinite(exit)) exit += slack;
-  return enter <= exit;
+// Parameter range [enter, exit] of the ray t + λ·d inside node n (conservative, widened), or false.
+bool ray_node(const BoxTree::Node& n, const Vec2& t, const Vec2& d, double& enter, double& exit) {
+  return geometry::ray_box(t, d, n.lo, n.hi, enter, exit, geometry::RaySlack::Interval);
 }
 
-double box_dist2(const Box& b, const Vec2& t) {
-  const double dx = std::max({b[0] - t.x(), 0.0, t.x() - b[2]}), dy = std::max({b[1] - t.y(), 0.0, t.y() - b[3]});
+double box_dist2(const Vec2& lo, const Vec2& hi, const Vec2& t) {
+  const double dx = std::max({lo.x() - t.x(), 0.0, t.x() - hi.x()}), dy = std::max({lo.y() - t.y(), 0.0, t.y() - hi.y()});
   return (dx * dx + dy * dy) * (1 - 0x1p-40);
 }
+double box_dist2(const Box& b, const Vec2& t) { return box_dist2(box_lo(b), box_hi(b), t); }
 
 // Clockwise order of directions w (as edge pairs) starting from the reference r, exact.
 int cw_class(const Vec2& r0, const Vec2& r1, const Vec2& w0, const Vec2& w1) {
@@ -565,7 +484,7 @@ Vec2 near_point(const Near& n) {
 // ---- the structure ----
 
 struct UnionBoundary::Index {
-  Bvh pieces, sausages, edges;  // pieces of ∂O; the edge sausages f_g ⊕ B; P's edges
+  BoxTree pieces, sausages, edges;  // pieces of ∂O; the edge sausages f_g ⊕ B; P's edges
   std::vector<Box> piece_box;
   std::array<std::uint32_t, 4> ext{};  // B vertices with min x, min y, max x, max y
 };
@@ -738,17 +657,17 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
   for (std::size_t g = 0; g < sbox.size(); ++g) sbox[g] = R.segment_box(g);
   {
     std::vector<Box> sb = sbox;
-    X.sausages.build(sb);
+    build_tree(X.sausages, sb);
     for (std::size_t g = 0; g < sb.size(); ++g) {
       const Vec2 &a = V[g], &b = V[P.next(g)];
       sb[g] = Box{std::min(a.x(), b.x()), std::min(a.y(), b.y()), std::max(a.x(), b.x()), std::max(a.y(), b.y())};
     }
-    X.edges.build(sb);
+    build_tree(X.edges, sb);
   }
   std::vector<Box> cb(cand.size());
   for (std::size_t c = 0; c < cand.size(); ++c) cb[c] = cand_box(cand[c]);
-  Bvh cbvh;
-  cbvh.build(cb);
+  BoxTree cbvh;
+  build_tree(cbvh, cb);
 
   struct Raw {
     std::uint32_t cand;
@@ -857,7 +776,7 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
     // vertex from inside — the only contact placements with Q + x ⊂ P). Both sets lie in O.
     // `near`: the sausages whose boxes meet the candidate's.
     near.clear();
-    X.sausages.overlap(cb[ci], [&](std::uint32_t g) {
+    X.sausages.overlap(box_lo(cb[ci]), box_hi(cb[ci]), [&](std::uint32_t g) {
       if (boxes_meet(sbox[g], cb[ci])) near.push_back(g);
     });
     {  // likely covers first: edges near the candidate's contact with P (its P edge or vertex),
@@ -994,7 +913,7 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
     }
     // Same-orientation coinciding copies in candidates with a smaller id.
     near.clear();
-    cbvh.overlap(cb[ci], [&](std::uint32_t o) {
+    cbvh.overlap(box_lo(cb[ci]), box_hi(cb[ci]), [&](std::uint32_t o) {
       if (o < ci) near.push_back(o);
     });
     auto in_range = [&](const Candidate& c, std::size_t k) { return (k + m - c.b0) % m < c.count; };
@@ -1093,14 +1012,14 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
   {
     std::vector<Box> boxes(K);
     for (std::size_t k = 0; k < K; ++k) boxes[k] = piece_box_of(k);
-    Bvh tmp;
-    tmp.build(boxes);
+    BoxTree tmp;
+    build_tree(tmp, boxes);
     for (std::size_t k = 0; k < K; ++k) {
       if (!zero[k]) continue;
       const auto x = exact_point(element(k, 0), mu_of(pieces_[k].start));
       const double w = tol(sp[k]) * 16;
       bool on = false;
-      tmp.overlap(Box{sp[k].x() - w, sp[k].y() - w, sp[k].x() + w, sp[k].y() + w}, [&](std::uint32_t o) {
+      tmp.overlap(Vec2(sp[k].x() - w, sp[k].y() - w), Vec2(sp[k].x() + w, sp[k].y() + w), [&](std::uint32_t o) {
         if (on || o == k || (zero[o] && o > k)) return;
         const std::size_t Le = element_count(o);
         for (std::size_t j = 0; j < Le && !on; ++j) {
@@ -1253,7 +1172,7 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
   // 5. The hierarchy over the pieces.
   X.piece_box.resize(pieces_.size());
   for (std::size_t k = 0; k < pieces_.size(); ++k) X.piece_box[k] = piece_box_of(k);
-  X.pieces.build(X.piece_box);
+  build_tree(X.pieces, X.piece_box);
   pieces_.shrink_to_fit();
   rings_.shrink_to_fit();
 }
@@ -1421,7 +1340,7 @@ bool UnionBoundary::ray_first_scan(const Vec2& t, const Vec2& d, Hit& h) const {
 }
 
 bool UnionBoundary::ray_first(const Vec2& t, const Vec2& d, Hit& h, bool* tie) const {
-  const Bvh& T = index_->pieces;
+  const BoxTree& T = index_->pieces;
   if (tie) *tie = false;
   if (T.nodes.empty()) return false;
   bool found = false;
@@ -1429,12 +1348,12 @@ bool UnionBoundary::ray_first(const Vec2& t, const Vec2& d, Hit& h, bool* tie) c
   Hit x;
   std::vector<std::uint32_t> st{0};
   while (!st.empty()) {
-    const Bvh::Node& n = T.nodes[st.back()];
+    const BoxTree::Node& n = T.nodes[st.back()];
     st.pop_back();
     double en, ex;
-    if (!ray_box(n.box, t, d, en, ex) || ex < 0 || en > best) continue;
-    if (n.leaf) {
-      for (std::uint32_t i = n.a; i < n.b; ++i) {
+    if (!ray_node(n, t, d, en, ex) || ex < 0 || en > best) continue;
+    if (n.left < 0) {
+      for (std::uint32_t i = n.tri; i < n.tri + n.count; ++i) {
         const std::uint32_t k = T.items[i];
         if (!first_hit(k, t, d, x)) continue;
         const int c = found ? compare_hits(x, h, t, d) : -1;
@@ -1451,19 +1370,19 @@ bool UnionBoundary::ray_first(const Vec2& t, const Vec2& d, Hit& h, bool* tie) c
       continue;
     }
     double e1, x1, e2, x2;
-    const bool h1 = ray_box(T.nodes[n.a].box, t, d, e1, x1), h2 = ray_box(T.nodes[n.b].box, t, d, e2, x2);
+    const bool h1 = ray_node(T.nodes[n.left], t, d, e1, x1), h2 = ray_node(T.nodes[n.right], t, d, e2, x2);
     if (h1 && h2) {
       if (e1 <= e2) {
-        st.push_back(n.b);
-        st.push_back(n.a);
+        st.push_back(static_cast<std::uint32_t>(n.right));
+        st.push_back(static_cast<std::uint32_t>(n.left));
       } else {
-        st.push_back(n.a);
-        st.push_back(n.b);
+        st.push_back(static_cast<std::uint32_t>(n.left));
+        st.push_back(static_cast<std::uint32_t>(n.right));
       }
     } else if (h1) {
-      st.push_back(n.a);
+      st.push_back(static_cast<std::uint32_t>(n.left));
     } else if (h2) {
-      st.push_back(n.b);
+      st.push_back(static_cast<std::uint32_t>(n.right));
     }
   }
   return found;
@@ -1583,17 +1502,17 @@ Near UnionBoundary::nearest_on_piece(std::size_t k, const Vec2& t) const {
 }
 
 bool UnionBoundary::nearest(const Vec2& t, Near& best) const {
-  const Bvh& T = index_->pieces;
+  const BoxTree& T = index_->pieces;
   if (T.nodes.empty()) return false;
   bool found = false;
   double bd2 = INFINITY;
   std::vector<std::uint32_t> st{0};
   while (!st.empty()) {
-    const Bvh::Node& n = T.nodes[st.back()];
+    const BoxTree::Node& n = T.nodes[st.back()];
     st.pop_back();
-    if (box_dist2(n.box, t) > bd2) continue;
-    if (n.leaf) {
-      for (std::uint32_t i = n.a; i < n.b; ++i) {
+    if (box_dist2(n.lo, n.hi, t) > bd2) continue;
+    if (n.left < 0) {
+      for (std::uint32_t i = n.tri; i < n.tri + n.count; ++i) {
         const std::uint32_t k = T.items[i];
         if (found && box_dist2(index_->piece_box[k], t) > bd2) continue;
         Near x = nearest_on_piece(k, t);
@@ -1606,13 +1525,13 @@ bool UnionBoundary::nearest(const Vec2& t, Near& best) const {
       }
       continue;
     }
-    const double d1 = box_dist2(T.nodes[n.a].box, t), d2 = box_dist2(T.nodes[n.b].box, t);
+    const double d1 = box_dist2(T.nodes[n.left].lo, T.nodes[n.left].hi, t), d2 = box_dist2(T.nodes[n.right].lo, T.nodes[n.right].hi, t);
     if (d1 <= d2) {
-      st.push_back(n.b);
-      st.push_back(n.a);
+      st.push_back(static_cast<std::uint32_t>(n.right));
+      st.push_back(static_cast<std::uint32_t>(n.left));
     } else {
-      st.push_back(n.a);
-      st.push_back(n.b);
+      st.push_back(static_cast<std::uint32_t>(n.left));
+      st.push_back(static_cast<std::uint32_t>(n.right));
     }
   }
   return found;
@@ -1622,7 +1541,7 @@ bool UnionBoundary::nearest(const Vec2& t, Near& best) const {
 
 bool UnionBoundary::in_overlap(const Vec2& t) const {
   // Q + t meets the relative interior of some P edge: t ∈ int(f_g ⊕ B).
-  if (index_->sausages.overlap_until(Box{t.x(), t.y(), t.x(), t.y()},
+  if (index_->sausages.overlap_until(t, t,
                                      [&](std::uint32_t g) { return R_->segment_contains_interior(g, t); }))
     return true;
   // Otherwise int(Q + t) misses ∂P: it overlaps P iff it lies inside P. Test the interior point
@@ -1636,7 +1555,7 @@ bool UnionBoundary::in_overlap(const Vec2& t) const {
                     std::abs(q1.y()) + std::abs(q2.x()) + std::abs(q2.y())) * 0x1p-40 + 0x1p-1000;
   const auto V = P_->vertices();
   std::size_t crossings = 0;
-  index_->edges.overlap(Box{ca.x() - w, ca.y() - w, INFINITY, ca.y() + w}, [&](std::uint32_t g) {
+  index_->edges.overlap(Vec2(ca.x() - w, ca.y() - w), Vec2(INFINITY, ca.y() + w), [&](std::uint32_t g) {
     const Vec2 &a = V[g], &b = V[P_->next(g)];
     const bool above_a = exact_sign([&](auto L) { return L(3.0) * L(a.y()) - c3(1, L); }) > 0;
     const bool above_b = exact_sign([&](auto L) { return L(3.0) * L(b.y()) - c3(1, L); }) > 0;
@@ -1655,25 +1574,25 @@ bool UnionBoundary::on_boundary(const Vec2& t) const {
   zero.kind = Near::Kind::Point;
   zero.cut.pt = zero.cut.pb = zero.cut.e0 = zero.cut.e1 = Vec2(0, 0);
   zero.p = t;
-  return index_->pieces.overlap_until(Box{t.x(), t.y(), t.x(), t.y()}, [&](std::uint32_t k) {
+  return index_->pieces.overlap_until(t, t, [&](std::uint32_t k) {
     return compare_near(nearest_on_piece(k, t), zero, t) == 0;
   });
 }
 
 bool UnionBoundary::last_exit(const Vec2& t, const Vec2& d, Cut& best) const {
-  const Bvh& T = index_->sausages;
+  const BoxTree& T = index_->sausages;
   if (T.nodes.empty()) return false;
   bool found = false;
   double bound = 0;  // exits at or before this λ cannot win (λ > 0 is required anyway)
   Cut en, ex;
   std::vector<std::uint32_t> st{0};
   while (!st.empty()) {
-    const Bvh::Node& n = T.nodes[st.back()];
+    const BoxTree::Node& n = T.nodes[st.back()];
     st.pop_back();
     double e0, x0;
-    if (!ray_box(n.box, t, d, e0, x0) || x0 < bound) continue;
-    if (n.leaf) {
-      for (std::uint32_t i = n.a; i < n.b; ++i) {
+    if (!ray_node(n, t, d, e0, x0) || x0 < bound) continue;
+    if (n.left < 0) {
+      for (std::uint32_t i = n.tri; i < n.tri + n.count; ++i) {
         const std::uint32_t r = T.items[i];
         if (!R_->segment_line_interval(r, t, d, en, ex) || cut_sign(ex, t, d) <= 0) continue;
         const int c = found ? compare_cuts(ex, best, t, d) : 1;
@@ -1687,19 +1606,19 @@ bool UnionBoundary::last_exit(const Vec2& t, const Vec2& d, Cut& best) const {
       continue;
     }
     double e1, x1, e2, x2;
-    const bool h1 = ray_box(T.nodes[n.a].box, t, d, e1, x1), h2 = ray_box(T.nodes[n.b].box, t, d, e2, x2);
+    const bool h1 = ray_node(T.nodes[n.left], t, d, e1, x1), h2 = ray_node(T.nodes[n.right], t, d, e2, x2);
     if (h1 && h2) {  // farther exit first
       if (x1 >= x2) {
-        st.push_back(n.b);
-        st.push_back(n.a);
+        st.push_back(static_cast<std::uint32_t>(n.right));
+        st.push_back(static_cast<std::uint32_t>(n.left));
       } else {
-        st.push_back(n.a);
-        st.push_back(n.b);
+        st.push_back(static_cast<std::uint32_t>(n.left));
+        st.push_back(static_cast<std::uint32_t>(n.right));
       }
     } else if (h1) {
-      st.push_back(n.a);
+      st.push_back(static_cast<std::uint32_t>(n.left));
     } else if (h2) {
-      st.push_back(n.b);
+      st.push_back(static_cast<std::uint32_t>(n.right));
     }
   }
   return found;
