@@ -31,10 +31,9 @@ enum class RaySlack : std::uint8_t {
              ///< ties between hits by visit order, so they keep this margin (results unchanged).
 };
 
-/// Conservative ray–box test on the line t + λ·d against the box [lo, hi]: false only if the line
-/// provably misses the box; otherwise [lmin, lmax] ⊇ the λ range inside the box. O(1).
-inline bool ray_box(const Vec2& t, const Vec2& d, const Vec2& lo, const Vec2& hi, double& lmin, double& lmax,
-                    RaySlack slack = RaySlack::Bounds) {
+namespace detail {
+template <RaySlack Slack>
+inline bool ray_box(const Vec2& t, const Vec2& d, const Vec2& lo, const Vec2& hi, double& lmin, double& lmax) {
   lmin = -std::numeric_limits<double>::infinity();
   lmax = std::numeric_limits<double>::infinity();
   for (int k = 0; k < 2; ++k) {
@@ -44,20 +43,31 @@ inline bool ray_box(const Vec2& t, const Vec2& d, const Vec2& lo, const Vec2& hi
     }
     double a = (lo[k] - t[k]) / d[k], b = (hi[k] - t[k]) / d[k];
     if (a > b) std::swap(a, b);
-    if (slack == RaySlack::Bounds) {
+    if constexpr (Slack == RaySlack::Bounds) {
       a = widen_down(a);
       b = widen_up(b);
     }
     lmin = std::max(lmin, a);
     lmax = std::min(lmax, b);
   }
-  if (slack == RaySlack::Interval) {
+  if constexpr (Slack == RaySlack::Interval) {
     const double s = (std::abs(lmin) + std::abs(lmax)) * 0x1p-40 + 0x1p-1000;
     if (std::isfinite(lmin)) lmin -= s;
     if (std::isfinite(lmax)) lmax += s;
   }
   return lmin <= lmax;
 }
+}  // namespace detail
+
+/// Conservative ray–box test on the line t + λ·d against the box [lo, hi]: false only if the line
+/// provably misses the box; otherwise [lmin, lmax] ⊇ the λ range inside the box. O(1).
+template <RaySlack Slack = RaySlack::Bounds>
+inline bool ray_box(const Vec2& t, const Vec2& d, const Vec2& lo, const Vec2& hi, double& lmin, double& lmax) {
+  return detail::ray_box<Slack>(t, d, lo, hi, lmin, lmax);
+}
+/// The per-bound test is out of line (box_tree.cpp): its callers' descent loops stay small.
+template <>
+bool ray_box<RaySlack::Bounds>(const Vec2& t, const Vec2& d, const Vec2& lo, const Vec2& hi, double& lmin, double& lmax);
 
 /// Binary box hierarchy over items given by their boxes (median split on the longer axis of the
 /// node's box, by box centre). Two leaf layouts:
@@ -115,20 +125,7 @@ struct BoxTree {
   template <class F>
   bool overlap_until(const Vec2& qlo, const Vec2& qhi, F&& f) const {
     if (nodes.empty()) return false;
-    std::uint32_t st[128];
-    int top = 0;
-    st[top++] = 0;
-    while (top > 0) {
-      const Node& n = nodes[st[--top]];
-      if (n.lo.x() > qhi.x() || n.hi.x() < qlo.x() || n.lo.y() > qhi.y() || n.hi.y() < qlo.y()) continue;
-      if (n.left < 0) {
-        if (leaf_until(n, f)) return true;
-      } else {
-        st[top++] = static_cast<std::uint32_t>(n.left);
-        st[top++] = static_cast<std::uint32_t>(n.right);
-      }
-    }
-    return false;
+    return items.empty() ? overlap_impl<false>(qlo, qhi, f) : overlap_impl<true>(qlo, qhi, f);
   }
   /// Visits every item whose leaf box meets [qlo, qhi].
   template <class F>
@@ -144,6 +141,28 @@ struct BoxTree {
  private:
   template <std::uint32_t LeafMax, class Lo, class Hi>
   void build_split(std::size_t count, Lo&& lo_of, Hi&& hi_of);
+  template <bool Buckets, class F>
+  bool overlap_impl(const Vec2& qlo, const Vec2& qhi, F& f) const {
+    std::uint32_t st[128];
+    int top = 0;
+    st[top++] = 0;
+    while (top > 0) {
+      const Node& n = nodes[st[--top]];
+      if (n.lo.x() > qhi.x() || n.hi.x() < qlo.x() || n.lo.y() > qhi.y() || n.hi.y() < qlo.y()) continue;
+      if (n.left < 0) {
+        if constexpr (Buckets) {
+          for (std::uint32_t i = n.tri; i < n.tri + n.count; ++i)
+            if (f(items[i])) return true;
+        } else if (f(n.tri)) {
+          return true;
+        }
+      } else {
+        st[top++] = static_cast<std::uint32_t>(n.left);
+        st[top++] = static_cast<std::uint32_t>(n.right);
+      }
+    }
+    return false;
+  }
 };
 
 template <std::uint32_t LeafMax, class Lo, class Hi>

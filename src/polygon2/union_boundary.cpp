@@ -400,7 +400,7 @@ Box pad(Box r) {
 
 // Parameter range [enter, exit] of the ray t + λ·d inside node n (conservative, widened), or false.
 bool ray_node(const BoxTree::Node& n, const Vec2& t, const Vec2& d, double& enter, double& exit) {
-  return geometry::ray_box(t, d, n.lo, n.hi, enter, exit, geometry::RaySlack::Interval);
+  return geometry::ray_box<geometry::RaySlack::Interval>(t, d, n.lo, n.hi, enter, exit);
 }
 
 double box_dist2(const Vec2& lo, const Vec2& hi, const Vec2& t) {
