@@ -1,7 +1,8 @@
 // Convex pair sums S_ij = T_i ⊕ (−U_j) of two triangulations, implicit (DHS §4.1 Step 2 with both
-// shapes decomposed), their exact line algebra, and the box hierarchies (see pair_sums.hpp).
-// Sum construction O(1) (5 exact angle comparisons); interval / containment O(1) (≤ 16 exact
-// signs); hierarchy build O(s log s) for s triangles.
+// shapes decomposed), and their exact line algebra (see pair_sums.hpp). Sum construction O(1)
+// (5 exact angle comparisons); interval / containment O(1) (≤ 16 exact signs). The box
+// hierarchies over the triangulations: src/geometry/box_tree.hpp (build O(s log s) for s
+// triangles).
 #include "nonconvex2/pair_sums.hpp"
 
 #include <algorithm>

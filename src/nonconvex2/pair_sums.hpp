@@ -1,6 +1,6 @@
 // Private: the convex pair sums S_ij = T_i ⊕ (−U_j) of two triangulated polygons, kept implicit
 // (DHS §4.1 Step 2 generalised to two decompositions), the exact line algebra shared by the
-// queries, and the box hierarchies over both triangulations.
+// queries, and the box hierarchies over both triangulations (src/geometry/box_tree.hpp).
 //
 // Every point of a sum is symbolic: a vertex of P plus a vertex of B = −Q (exact negation), never
 // rounded before a decision. A line is "through c1 + c2 with direction e1 − e0"; a ray is

@@ -2,44 +2,44 @@
 // contract in union_boundary.hpp.
 //
 // Construction (departure from DHS, stated as the issue allows):
-//   1. Candidates: the reduced convolution of ∂P with B — one segment per P edge, one implicit arc
-//      per convex vertex of P (≤ 2N candidates, O(N log m) binary searches). Every contact
-//      placement with disjoint interiors lies on it (a vertex of Q against an edge of P only with
-//      Q's vertex extreme for that edge's outward normal; a vertex of P against an edge of Q only
-//      at a convex vertex with Q's edge normal in P's normal cone there).
-//   2. Each candidate loses its points in O. At a candidate point x, Q + x touches ∂P with points
-//      outside P next to the contact, except possibly at the candidate's natural ends (Q's vertex
-//      at a P vertex). So x ∈ O ⇔ int(Q + x) meets the relative interior of some P edge f ⇔
-//      x ∈ int(f ⊕ B) (the edge "sausage", an implicit (m+2)-gon, ConvolvedTriangles::segment_*),
-//      or, at the ends, x ∈ int R_T for a triangle T around the P vertex (its fan; R_T is cut
-//      with the end's element only when it contains the end, an exact O(1) angle test at B's
-//      vertex there). Sausages have small boxes (|f| + |B|; the R_i of long diagonals do not),
-//      found in a bounding-volume hierarchy (BVH); a segment meets an open convex (m+2)-gon in
-//      one open interval (O(log m)). A candidate's own sausages (its edge; an arc's two edges) are
-//      skipped: it lies on their boundaries. Arcs are split recursively into B-edge ranges
-//      (boxes in O(1) from B's four extreme vertices); a range whose padded box has its four
-//      corners inside one sausage (at most three tried, nearest edges first) is covered at
-//      once, a single B edge is cut by the sausages meeting it until one covers it. Same-
-//      orientation coinciding copies (collinear, overlapping, O on the same side) are removed from
-//      the candidate with the larger id (candidate BVH). Sorting the open intervals and sweeping
-//      leaves the closed remnants. Ties that are structural (two cuts on the same line, a
-//      convolution vertex on a line through it, B-edge angle ranks, a B vertex shared by both
-//      sides of a side test) are decided without arithmetic; all other decisions are filtered
-//      exact predicates, and the O(log m) binary searches on the R_i and sausages run on the
-//      floating-point values with the answer confirmed by two exact predicates
-//      (ConvolvedTriangles), so most of their steps cost no exact evaluation.
-//   3. Zero-length remnants lying on another piece are dropped; pieces are linked into rings by
-//      exact equality of their symbolic ends (candidates found by sorting rounded coordinates),
-//      the clockwise-first rule at vertices with several continuations.
+//   1. Candidates (Build::find_candidates): the reduced convolution of ∂P with B — one segment per
+//      P edge, one implicit arc per convex vertex of P (≤ 2N candidates, O(N log m) binary
+//      searches). Every contact placement with disjoint interiors lies on it (a vertex of Q against
+//      an edge of P only with Q's vertex extreme for that edge's outward normal; a vertex of P
+//      against an edge of Q only at a convex vertex with Q's edge normal in P's normal cone there).
+//   2. Each candidate loses its points in O (Build::subtract_overlap). At a candidate point x,
+//      Q + x touches ∂P with points outside P next to the contact, except possibly at the
+//      candidate's natural ends (Q's vertex at a P vertex). So x ∈ O ⇔ int(Q + x) meets the
+//      relative interior of some P edge f ⇔ x ∈ int(f ⊕ B) (the edge "sausage", an implicit
+//      (m+2)-gon, ConvolvedTriangles::segment_*), or, at the ends, x ∈ int R_T for a triangle T
+//      around the P vertex (its fan; R_T is cut with the end's element only when it contains the
+//      end, an exact O(1) angle test at B's vertex there). Sausages have small boxes (|f| + |B|;
+//      the R_i of long diagonals do not), found in a bounding-volume hierarchy (BVH,
+//      src/geometry/box_tree.hpp); a segment meets an open convex (m+2)-gon in one open interval
+//      (O(log m)). A candidate's own sausages (its edge; an arc's two edges) are skipped: it lies
+//      on their boundaries. Arcs are split recursively into B-edge ranges (boxes in O(1) from B's
+//      four extreme vertices); a range whose padded box has its four corners inside one sausage (at
+//      most three tried, nearest edges first) is covered at once, a single B edge is cut by the
+//      sausages meeting it until one covers it. Same-orientation coinciding copies (collinear,
+//      overlapping, O on the same side) are removed from the candidate with the larger id
+//      (candidate BVH). Sorting the open intervals and sweeping leaves the closed remnants. Ties
+//      that are structural (two cuts on the same line, a convolution vertex on a line through it,
+//      B-edge angle ranks, a B vertex shared by both sides of a side test) are decided without
+//      arithmetic; all other decisions are filtered exact predicates, and the O(log m) binary
+//      searches on the R_i and sausages run on the floating-point values with the answer confirmed
+//      by two exact predicates (ConvolvedTriangles), so most of their steps cost no exact
+//      evaluation.
+//   3. Zero-length remnants lying on another piece are dropped (drop_covered_points).
+//   4. Pieces are linked into rings by exact equality of their symbolic ends (candidates found by
+//      sorting rounded coordinates), the clockwise-first rule at vertices with several
+//      continuations (link_rings); each ring's orientation by its signed area (orient_rings).
+//   5. The BVH over the piece boxes for the queries (index_pieces).
 //   The paper's divide and conquer (O(N log²(N+m) + m)) is replaced by this local subtraction,
 //   far simpler to make exact. Worst case: a candidate can meet Θ(N) sausages (Q much larger than
 //   P's edges) and an arc Θ(m) B edges near one sausage, so the build is O(N²·m log m) in the worst
-//   case; measured (bench/bench_union_size.cpp, Release, wall clock on a shared 2-core machine,
-//   commit f8eeb53): N = 1000, m = 4…1000: 9-140 ms; N = 10^4: 0.05-2.5 s on stars / smooth stars
-//   / spirals / combs with Q a tenth of P's size (combs: a tool fitting the gaps) — superlinear
-//   in N because the number of sausages within reach of Q grows with the edge density (gathering
-//   them dominates there). Against CGAL's reduced convolution (bench/bench_polygon2.cpp) the
-//   build is 13-177× faster at m >= 100 (docs/benchmarks.md).
+//   case; in practice it grows superlinearly in N because the number of sausages within reach of
+//   Q grows with the edge density (gathering them dominates). Measured build times and the
+//   comparison with CGAL's reduced convolution: docs/benchmarks.md.
 //   Space stays O(N + m): the transient interval lists are per candidate, the result is O(N)
 //   pieces (Facts 4.1-4.2) plus three BVHs (pieces, sausages, edges: O(N)); B is shared with the
 //   convolved triangles.
