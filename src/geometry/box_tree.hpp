@@ -28,7 +28,7 @@ enum class RaySlack : std::uint8_t {
   Bounds,    ///< each slab bound by widen_down / widen_up before they are combined (tightest)
   Interval,  ///< the combined interval by (|lmin| + |lmax|)·2^-40 + 2^-1000 on both sides. The
              ///< union boundary's queries order sibling boxes by these values and break exact
-             ///< ties between hits by visit order, so they keep this margin (results unchanged).
+             ///< ties between hits by visit order: their answers depend on this margin.
 };
 
 namespace detail {
