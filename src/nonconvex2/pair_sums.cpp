@@ -1,7 +1,8 @@
 // Convex pair sums S_ij = T_i ⊕ (−U_j) of two triangulations, implicit (DHS §4.1 Step 2 with both
-// shapes decomposed), their exact line algebra, and the box hierarchies (see pair_sums.hpp).
-// Sum construction O(1) (5 exact angle comparisons); interval / containment O(1) (≤ 16 exact
-// signs); hierarchy build O(s log s) for s triangles.
+// shapes decomposed), and their exact line algebra (see pair_sums.hpp). Sum construction O(1)
+// (5 exact angle comparisons); interval / containment O(1) (≤ 16 exact signs). The box
+// hierarchies over the triangulations: src/geometry/box_tree.hpp (build O(s log s) for s
+// triangles).
 #include "nonconvex2/pair_sums.hpp"
 
 #include <algorithm>
@@ -167,34 +168,10 @@ Sum make_sum(const Tri& T, const Tri& B) {
   return S;
 }
 
-namespace {
-double down(double x) { return x - std::abs(x) * 0x1p-50 - 0x1p-1000; }
-double up(double x) { return x + std::abs(x) * 0x1p-50 + 0x1p-1000; }
-}  // namespace
-
 void sum_box(const Vec2& alo, const Vec2& ahi, const Vec2& blo, const Vec2& bhi, Vec2& lo, Vec2& hi) {
-  lo = Vec2(down(alo.x() + blo.x()), down(alo.y() + blo.y()));
-  hi = Vec2(up(ahi.x() + bhi.x()), up(ahi.y() + bhi.y()));
-}
-
-bool ray_box(const Vec2& t, const Vec2& d, const Vec2& lo, const Vec2& hi, double& lmin, double& lmax) {
-  lmin = -std::numeric_limits<double>::infinity();
-  lmax = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < 2; ++k) {
-    if (d[k] == 0) {
-      if (t[k] < lo[k] || t[k] > hi[k]) return false;
-      continue;
-    }
-    double a = (lo[k] - t[k]) / d[k], b = (hi[k] - t[k]) / d[k];
-    if (a > b) std::swap(a, b);
-    lmin = std::max(lmin, down(a));  // two roundings, each relative 2^-53: widened by 2^-50
-    lmax = std::min(lmax, up(b));
-  }
-  return lmin <= lmax;
-}
-
-void BoxTree::build(const std::vector<Tri>& tris) {
-  build_boxes(tris.size(), [&](std::size_t k) -> const Vec2& { return tris[k].lo; }, [&](std::size_t k) -> const Vec2& { return tris[k].hi; });
+  using geometry::widen_down, geometry::widen_up;
+  lo = Vec2(widen_down(alo.x() + blo.x()), widen_down(alo.y() + blo.y()));
+  hi = Vec2(widen_up(ahi.x() + bhi.x()), widen_up(ahi.y() + bhi.y()));
 }
 
 }  // namespace pendepth::nonconvex2

@@ -1,6 +1,6 @@
 // Private: the convex pair sums S_ij = T_i ⊕ (−U_j) of two triangulated polygons, kept implicit
 // (DHS §4.1 Step 2 generalised to two decompositions), the exact line algebra shared by the
-// queries, and the box hierarchies over both triangulations.
+// queries, and the box hierarchies over both triangulations (src/geometry/box_tree.hpp).
 //
 // Every point of a sum is symbolic: a vertex of P plus a vertex of B = −Q (exact negation), never
 // rounded before a decision. A line is "through c1 + c2 with direction e1 − e0"; a ray is
@@ -17,6 +17,8 @@
 #include <array>
 #include <cstdint>
 #include <vector>
+
+#include "geometry/box_tree.hpp"
 
 namespace pendepth::nonconvex2 {
 
@@ -108,139 +110,10 @@ struct Tri {
   Vec2 lo, hi;  // bounding box (exact: coordinates are input doubles)
 };
 
-/// Binary box hierarchy over triangles (median split on the longer axis), one triangle per leaf.
-struct BoxTree {
-  struct Node {
-    Vec2 lo{0, 0}, hi{0, 0};
-    std::int32_t left = -1, right = -1;  // children; leaf when left < 0
-    std::uint32_t tri = 0;               // leaf triangle
-  };
-  std::vector<Node> nodes;  // nodes[0] is the root
-  void build(const std::vector<Tri>& tris);
-  /// The same tree over `count` leaves whose boxes are lo_of(k), hi_of(k) (any record type, no
-  /// copy into Tri records). O(s log s); no allocation besides `nodes` up to 64 leaves.
-  template <class Lo, class Hi>
-  void build_boxes(std::size_t count, Lo&& lo_of, Hi&& hi_of);
-  /// A tree over `count` leaves in their given order, no sorting: neighbours paired bottom-up,
-  /// level by level (an odd last node moves up a level unpaired), so subtrees are runs of
-  /// consecutive leaves. For leaves whose order is already spatially coherent (the no-fit
-  /// polygon's pieces follow the convolution). O(s), ~2 box unions per leaf; no allocation
-  /// besides `nodes` up to 256 leaves. Same invariants as build_boxes (2s − 1 nodes, root 0).
-  template <class Lo, class Hi>
-  void build_in_order(std::size_t count, Lo&& lo_of, Hi&& hi_of);
-};
-
-template <class Lo, class Hi>
-void BoxTree::build_boxes(std::size_t count, Lo&& lo_of, Hi&& hi_of) {
-  nodes.clear();
-  if (count == 0) return;
-  // Per leaf its index and split keys (twice the box centre, computed once: the selections
-  // compare them often), kept together so the selection moves one record and reads no other.
-  // The selection permutes these exactly as it permuted a bare index array compared through a
-  // key table (the same comparisons in the same order), so the tree is the same as before.
-  struct Item {
-    double key[2];
-    std::uint32_t idx;
-  };
-  // Up to 64 leaves (the triangulations and piece sets of real nesting pieces) on the stack.
-  Item small[64];
-  std::vector<Item> large(count > 64 ? count : 0);
-  Item* const item = count > 64 ? large.data() : small;
-  for (std::size_t k = 0; k < count; ++k) {
-    const Vec2 &lo = lo_of(k), &hi = hi_of(k);
-    item[k] = {{lo.x() + hi.x(), lo.y() + hi.y()}, static_cast<std::uint32_t>(k)};
-  }
-  nodes.resize(2 * count - 1);
-  // Depth-first by explicit stack: (node, begin, end). Ranges halve, so the stack holds at most
-  // one pending sibling per level: ≤ 64 + 1 entries for any count.
-  struct Job {
-    std::int32_t node;
-    std::uint32_t b, e;
-  };
-  Job jobs[66];
-  int top = 0;
-  jobs[top++] = {0, 0, static_cast<std::uint32_t>(count)};
-  std::int32_t used = 1;
-  while (top > 0) {
-    const Job J = jobs[--top];
-    Node& N = nodes[J.node];
-    Vec2 lo = lo_of(item[J.b].idx), hi = hi_of(item[J.b].idx);
-    for (std::uint32_t k = J.b + 1; k < J.e; ++k) {
-      lo = lo.cwiseMin(lo_of(item[k].idx));
-      hi = hi.cwiseMax(hi_of(item[k].idx));
-    }
-    N.lo = lo;
-    N.hi = hi;
-    if (J.e - J.b == 1) {
-      N.tri = item[J.b].idx;
-      continue;
-    }
-    const int axis = (hi.x() - lo.x()) >= (hi.y() - lo.y()) ? 0 : 1;
-    const std::uint32_t mid = (J.b + J.e) / 2;
-    auto less = [axis](const Item& a, const Item& b) { return a.key[axis] < b.key[axis]; };
-    if (J.e - J.b <= 3) {
-      // std::nth_element sorts ranges of ≤ 3 by insertion, a stable sort: the same order here.
-      for (Item* i = item + J.b + 1; i < item + J.e; ++i) {
-        const Item v = *i;
-        Item* j = i;
-        for (; j > item + J.b && less(v, j[-1]); --j) *j = j[-1];
-        *j = v;
-      }
-    } else {
-      std::nth_element(item + J.b, item + mid, item + J.e, less);
-    }
-    N.left = used;
-    N.right = used + 1;
-    // A one-leaf child is filled here rather than by a job of its own (node ids are assigned
-    // at this point either way, so the tree is unchanged).
-    const Job child[2] = {{used, J.b, mid}, {used + 1, mid, J.e}};
-    for (const Job& C : child) {
-      if (C.e - C.b > 1) {
-        jobs[top++] = C;
-        continue;
-      }
-      Node& leaf = nodes[C.node];
-      leaf.lo = lo_of(item[C.b].idx);
-      leaf.hi = hi_of(item[C.b].idx);
-      leaf.tri = item[C.b].idx;
-    }
-    used += 2;
-  }
-}
-
-template <class Lo, class Hi>
-void BoxTree::build_in_order(std::size_t count, Lo&& lo_of, Hi&& hi_of) {
-  nodes.resize(count == 0 ? 0 : 2 * count - 1);
-  if (count == 0) return;
-  // Slots are handed out from the back: the leaves take the last `count`, each new parent the
-  // slot before the previous one; a tree of s leaves has s − 1 parents, so the last parent made,
-  // the root, gets slot 0. `level` holds the node ids of the current level, left to right.
-  std::int32_t small[256];
-  std::vector<std::int32_t> large(count > 256 ? count : 0);
-  std::int32_t* const level = count > 256 ? large.data() : small;
-  auto slot = static_cast<std::int32_t>(2 * count - 2);
-  for (std::size_t k = 0; k < count; ++k, --slot) {
-    Node& L = nodes[slot];
-    L.lo = lo_of(k);
-    L.hi = hi_of(k);
-    L.left = L.right = -1;
-    L.tri = static_cast<std::uint32_t>(k);
-    level[k] = slot;
-  }
-  for (std::size_t n = count; n > 1; n = (n + 1) / 2) {
-    for (std::size_t i = 0; i + 1 < n; i += 2, --slot) {
-      const std::int32_t a = level[i], b = level[i + 1];
-      Node& N = nodes[slot];
-      N.lo = nodes[a].lo.cwiseMin(nodes[b].lo);
-      N.hi = nodes[a].hi.cwiseMax(nodes[b].hi);
-      N.left = a;
-      N.right = b;
-      N.tri = 0;
-      level[i / 2] = slot;  // i / 2 ≤ i: read before written
-    }
-    if (n % 2 == 1) level[n / 2] = level[n - 1];
-  }
-}
+/// The box hierarchy over triangles and pieces, and the ray–box test: src/geometry/box_tree.hpp
+/// (shared with polygon2); the names stay valid here.
+using BoxTree = geometry::BoxTree;
+using geometry::ray_box;
 
 /// T ⊕ B for a P triangle and a −Q triangle (both normal form): exact angle merge, 5 comparisons.
 Sum make_sum(const Tri& T, const Tri& B);
@@ -248,10 +121,6 @@ Sum make_sum(const Tri& T, const Tri& B);
 /// Conservative box of A ⊕ (−B's original) = [A.lo + B.lo, A.hi + B.hi] for B stored as −Q,
 /// inflated outwards by a few ulps so the rounding of the sums never shrinks it.
 void sum_box(const Vec2& alo, const Vec2& ahi, const Vec2& blo, const Vec2& bhi, Vec2& lo, Vec2& hi);
-
-/// Conservative ray–box test on the line t + λ·d: false only if the line provably misses the box;
-/// otherwise [lmin, lmax] ⊇ the λ range inside the box.
-bool ray_box(const Vec2& t, const Vec2& d, const Vec2& lo, const Vec2& hi, double& lmin, double& lmax);
 
 }  // namespace pendepth::nonconvex2
 

@@ -2,44 +2,44 @@
 // contract in union_boundary.hpp.
 //
 // Construction (departure from DHS, stated as the issue allows):
-//   1. Candidates: the reduced convolution of ∂P with B — one segment per P edge, one implicit arc
-//      per convex vertex of P (≤ 2N candidates, O(N log m) binary searches). Every contact
-//      placement with disjoint interiors lies on it (a vertex of Q against an edge of P only with
-//      Q's vertex extreme for that edge's outward normal; a vertex of P against an edge of Q only
-//      at a convex vertex with Q's edge normal in P's normal cone there).
-//   2. Each candidate loses its points in O. At a candidate point x, Q + x touches ∂P with points
-//      outside P next to the contact, except possibly at the candidate's natural ends (Q's vertex
-//      at a P vertex). So x ∈ O ⇔ int(Q + x) meets the relative interior of some P edge f ⇔
-//      x ∈ int(f ⊕ B) (the edge "sausage", an implicit (m+2)-gon, ConvolvedTriangles::segment_*),
-//      or, at the ends, x ∈ int R_T for a triangle T around the P vertex (its fan; R_T is cut
-//      with the end's element only when it contains the end, an exact O(1) angle test at B's
-//      vertex there). Sausages have small boxes (|f| + |B|; the R_i of long diagonals do not),
-//      found in a bounding-volume hierarchy (BVH); a segment meets an open convex (m+2)-gon in
-//      one open interval (O(log m)). A candidate's own sausages (its edge; an arc's two edges) are
-//      skipped: it lies on their boundaries. Arcs are split recursively into B-edge ranges
-//      (boxes in O(1) from B's four extreme vertices); a range whose padded box has its four
-//      corners inside one sausage (at most three tried, nearest edges first) is covered at
-//      once, a single B edge is cut by the sausages meeting it until one covers it. Same-
-//      orientation coinciding copies (collinear, overlapping, O on the same side) are removed from
-//      the candidate with the larger id (candidate BVH). Sorting the open intervals and sweeping
-//      leaves the closed remnants. Ties that are structural (two cuts on the same line, a
-//      convolution vertex on a line through it, B-edge angle ranks, a B vertex shared by both
-//      sides of a side test) are decided without arithmetic; all other decisions are filtered
-//      exact predicates, and the O(log m) binary searches on the R_i and sausages run on the
-//      floating-point values with the answer confirmed by two exact predicates
-//      (ConvolvedTriangles), so most of their steps cost no exact evaluation.
-//   3. Zero-length remnants lying on another piece are dropped; pieces are linked into rings by
-//      exact equality of their symbolic ends (candidates found by sorting rounded coordinates),
-//      the clockwise-first rule at vertices with several continuations.
+//   1. Candidates (Build::find_candidates): the reduced convolution of ∂P with B — one segment per
+//      P edge, one implicit arc per convex vertex of P (≤ 2N candidates, O(N log m) binary
+//      searches). Every contact placement with disjoint interiors lies on it (a vertex of Q against
+//      an edge of P only with Q's vertex extreme for that edge's outward normal; a vertex of P
+//      against an edge of Q only at a convex vertex with Q's edge normal in P's normal cone there).
+//   2. Each candidate loses its points in O (Build::subtract_overlap). At a candidate point x,
+//      Q + x touches ∂P with points outside P next to the contact, except possibly at the
+//      candidate's natural ends (Q's vertex at a P vertex). So x ∈ O ⇔ int(Q + x) meets the
+//      relative interior of some P edge f ⇔ x ∈ int(f ⊕ B) (the edge "sausage", an implicit
+//      (m+2)-gon, ConvolvedTriangles::segment_*), or, at the ends, x ∈ int R_T for a triangle T
+//      around the P vertex (its fan; R_T is cut with the end's element only when it contains the
+//      end, an exact O(1) angle test at B's vertex there). Sausages have small boxes (|f| + |B|;
+//      the R_i of long diagonals do not), found in a bounding-volume hierarchy (BVH,
+//      src/geometry/box_tree.hpp); a segment meets an open convex (m+2)-gon in one open interval
+//      (O(log m)). A candidate's own sausages (its edge; an arc's two edges) are skipped: it lies
+//      on their boundaries. Arcs are split recursively into B-edge ranges (boxes in O(1) from B's
+//      four extreme vertices); a range whose padded box has its four corners inside one sausage (at
+//      most three tried, nearest edges first) is covered at once, a single B edge is cut by the
+//      sausages meeting it until one covers it. Same-orientation coinciding copies (collinear,
+//      overlapping, O on the same side) are removed from the candidate with the larger id
+//      (candidate BVH). Sorting the open intervals and sweeping leaves the closed remnants. Ties
+//      that are structural (two cuts on the same line, a convolution vertex on a line through it,
+//      B-edge angle ranks, a B vertex shared by both sides of a side test) are decided without
+//      arithmetic; all other decisions are filtered exact predicates, and the O(log m) binary
+//      searches on the R_i and sausages run on the floating-point values with the answer confirmed
+//      by two exact predicates (ConvolvedTriangles), so most of their steps cost no exact
+//      evaluation.
+//   3. Zero-length remnants lying on another piece are dropped (drop_covered_points).
+//   4. Pieces are linked into rings by exact equality of their symbolic ends (candidates found by
+//      sorting rounded coordinates), the clockwise-first rule at vertices with several
+//      continuations (link_rings); each ring's orientation by its signed area (orient_rings).
+//   5. The BVH over the piece boxes for the queries (index_pieces).
 //   The paper's divide and conquer (O(N log²(N+m) + m)) is replaced by this local subtraction,
 //   far simpler to make exact. Worst case: a candidate can meet Θ(N) sausages (Q much larger than
 //   P's edges) and an arc Θ(m) B edges near one sausage, so the build is O(N²·m log m) in the worst
-//   case; measured (bench/bench_union_size.cpp, Release, wall clock on a shared 2-core machine,
-//   commit f8eeb53): N = 1000, m = 4…1000: 9-140 ms; N = 10^4: 0.05-2.5 s on stars / smooth stars
-//   / spirals / combs with Q a tenth of P's size (combs: a tool fitting the gaps) — superlinear
-//   in N because the number of sausages within reach of Q grows with the edge density (gathering
-//   them dominates there). Against CGAL's reduced convolution (bench/bench_polygon2.cpp) the
-//   build is 13-177× faster at m >= 100 (docs/benchmarks.md).
+//   case; in practice it grows superlinearly in N because the number of sausages within reach of
+//   Q grows with the edge density (gathering them dominates). Measured build times and the
+//   comparison with CGAL's reduced convolution: docs/benchmarks.md.
 //   Space stays O(N + m): the transient interval lists are per candidate, the result is O(N)
 //   pieces (Facts 4.1-4.2) plus three BVHs (pieces, sausages, edges: O(N)); B is shared with the
 //   convolved triangles.
@@ -57,6 +57,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "geometry/box_tree.hpp"
 #include "geometry/exact.hpp"
 
 namespace pendepth::polygon2 {
@@ -375,85 +376,17 @@ std::array<decltype(LF{}(0.0)), 2> near_d2(const Near& n, const Vec2& t, LF L) {
   }
 }
 
-// ---- bounding-volume hierarchy over boxes (xmin, ymin, xmax, ymax) ----
+// ---- boxes (xmin, ymin, xmax, ymax) and the hierarchies over them (src/geometry/box_tree.hpp) ----
 using Box = std::array<double, 4>;
+using geometry::BoxTree;
 
-struct Bvh {
-  struct Node {
-    Box box;
-    std::uint32_t a = 0, b = 0;  // leaf: items [a, b); inner: children a, b
-    bool leaf = true;
-  };
-  std::vector<Node> nodes;
-  std::vector<std::uint32_t> items;
+Vec2 box_lo(const Box& b) { return Vec2(b[0], b[1]); }
+Vec2 box_hi(const Box& b) { return Vec2(b[2], b[3]); }
 
-  void build(const std::vector<Box>& boxes) {
-    nodes.clear();
-    items.resize(boxes.size());
-    std::iota(items.begin(), items.end(), 0u);
-    if (boxes.empty()) return;
-    nodes.reserve(2 * boxes.size() / 2 + 2);
-    build_rec(boxes, 0, static_cast<std::uint32_t>(boxes.size()));
-    nodes.shrink_to_fit();
-  }
-  std::uint32_t build_rec(const std::vector<Box>& boxes, std::uint32_t lo, std::uint32_t hi) {
-    Node n;
-    n.box = boxes[items[lo]];
-    for (std::uint32_t i = lo + 1; i < hi; ++i) {
-      const Box& b = boxes[items[i]];
-      n.box[0] = std::min(n.box[0], b[0]);
-      n.box[1] = std::min(n.box[1], b[1]);
-      n.box[2] = std::max(n.box[2], b[2]);
-      n.box[3] = std::max(n.box[3], b[3]);
-    }
-    const std::uint32_t id = static_cast<std::uint32_t>(nodes.size());
-    nodes.push_back(n);
-    if (hi - lo <= 4) {
-      nodes[id].a = lo;
-      nodes[id].b = hi;
-      return id;
-    }
-    const int axis = (n.box[2] - n.box[0]) >= (n.box[3] - n.box[1]) ? 0 : 1;
-    const std::uint32_t mid = (lo + hi) / 2;
-    std::nth_element(items.begin() + lo, items.begin() + mid, items.begin() + hi, [&](std::uint32_t x, std::uint32_t y) {
-      return boxes[x][axis] + boxes[x][axis + 2] < boxes[y][axis] + boxes[y][axis + 2];
-    });
-    const std::uint32_t l = build_rec(boxes, lo, mid);
-    const std::uint32_t r = build_rec(boxes, mid, hi);
-    nodes[id].leaf = false;
-    nodes[id].a = l;
-    nodes[id].b = r;
-    return id;
-  }
-  template <class F>
-  void overlap(const Box& q, F&& f) const {
-    overlap_until(q, [&](std::uint32_t i) {
-      f(i);
-      return false;
-    });
-  }
-  /// Visits the items whose boxes meet q until f returns true; returns whether it did.
-  template <class F>
-  bool overlap_until(const Box& q, F&& f) const {
-    if (nodes.empty()) return false;
-    std::uint32_t st[128];
-    int top = 0;
-    st[top++] = 0;
-    while (top > 0) {
-      const Node& n = nodes[st[--top]];
-      if (n.box[0] > q[2] || n.box[2] < q[0] || n.box[1] > q[3] || n.box[3] < q[1]) continue;
-      if (n.leaf) {
-        for (std::uint32_t i = n.a; i < n.b; ++i)
-          if (f(items[i])) return true;
-      } else {
-        st[top++] = n.a;
-        st[top++] = n.b;
-      }
-    }
-    return false;
-  }
-  std::size_t bytes() const { return nodes.capacity() * sizeof(Node) + items.capacity() * sizeof(std::uint32_t); }
-};
+// The hierarchy over `boxes`: median splits, up to 4 items per leaf.
+void build_tree(BoxTree& T, const std::vector<Box>& boxes) {
+  T.build_buckets<4>(boxes.size(), [&](std::size_t k) { return box_lo(boxes[k]); }, [&](std::size_t k) { return box_hi(boxes[k]); });
+}
 
 bool boxes_meet(const Box& a, const Box& b) { return !(a[0] > b[2] || a[2] < b[0] || a[1] > b[3] || a[3] < b[1]); }
 
@@ -465,30 +398,16 @@ Box pad(Box r) {
   return r;
 }
 
-// Parameter range [enter, exit] of the ray t + λ·d inside box b (conservative, widened), or false.
-bool ray_box(const Box& b, const Vec2& t, const Vec2& d, double& enter, double& exit) {
-  enter = -INFINITY;
-  exit = INFINITY;
-  for (int c = 0; c < 2; ++c) {
-    if (d[c] == 0) {
-      if (t[c] < b[c] || t[c] > b[c + 2]) return false;
-      continue;
-    }
-    double l0 = (b[c] - t[c]) / d[c], l1 = (b[c + 2] - t[c]) / d[c];
-    if (l0 > l1) std::swap(l0, l1);
-    enter = std::max(enter, l0);
-    exit = std::min(exit, l1);
-  }
-  const double slack = (std::abs(enter) + std::abs(exit)) * 0x1p-40 + 0x1p-1000;
-  if (std::isfinite(enter)) enter -= slack;
-  if (std::isfinite(exit)) exit += slack;
-  return enter <= exit;
+// Parameter range [enter, exit] of the ray t + λ·d inside node n (conservative, widened), or false.
+bool ray_node(const BoxTree::Node& n, const Vec2& t, const Vec2& d, double& enter, double& exit) {
+  return geometry::ray_box<geometry::RaySlack::Interval>(t, d, n.lo, n.hi, enter, exit);
 }
 
-double box_dist2(const Box& b, const Vec2& t) {
-  const double dx = std::max({b[0] - t.x(), 0.0, t.x() - b[2]}), dy = std::max({b[1] - t.y(), 0.0, t.y() - b[3]});
+double box_dist2(const Vec2& lo, const Vec2& hi, const Vec2& t) {
+  const double dx = std::max({lo.x() - t.x(), 0.0, t.x() - hi.x()}), dy = std::max({lo.y() - t.y(), 0.0, t.y() - hi.y()});
   return (dx * dx + dy * dy) * (1 - 0x1p-40);
 }
+double box_dist2(const Box& b, const Vec2& t) { return box_dist2(box_lo(b), box_hi(b), t); }
 
 // Clockwise order of directions w (as edge pairs) starting from the reference r, exact.
 int cw_class(const Vec2& r0, const Vec2& r1, const Vec2& w0, const Vec2& w1) {
@@ -565,7 +484,7 @@ Vec2 near_point(const Near& n) {
 // ---- the structure ----
 
 struct UnionBoundary::Index {
-  Bvh pieces, sausages, edges;  // pieces of ∂O; the edge sausages f_g ⊕ B; P's edges
+  BoxTree pieces, sausages, edges;  // pieces of ∂O; the edge sausages f_g ⊕ B; P's edges
   std::vector<Box> piece_box;
   std::array<std::uint32_t, 4> ext{};  // B vertices with min x, min y, max x, max y
 };
@@ -638,32 +557,172 @@ std::array<mpq_class, 2> UnionBoundary::exact_end(std::size_t k) const {
 }
 std::array<double, 4> UnionBoundary::box(std::size_t k) const { return index_->piece_box[k]; }
 
-UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_(&P), R_(&R), index_(std::make_unique<Index>()) {
-  const auto V = P.vertices();
-  const auto& B = R.B();
-  const std::size_t N = V.size(), m = B.size();
-  Index& X = *index_;
+// ---- construction (DHS §4.1 Step 3; the steps are described in the file header) ----
+
+namespace {
+
+// A closed remnant of candidate `cand` from position a to position b (a piece before linking).
+struct Raw {
+  std::uint32_t cand;
+  Pos a, b;
+};
+
+// Padded box of the B vertices k0 .. k0 + len (cyclic, len + 1 vertices) translated by v, from
+// the two end vertices and those of B's extreme vertices `ext` in the range. O(1).
+Box range_box(const std::vector<Vec2>& B, const std::array<std::uint32_t, 4>& ext, const Vec2& v, std::size_t k0,
+              std::size_t len) {
+  const std::size_t m = B.size();
+  Box r{INFINITY, INFINITY, -INFINITY, -INFINITY};
+  auto add = [&](std::size_t k) {
+    const Vec2& b = B[k % m];
+    r[0] = std::min(r[0], b.x());
+    r[1] = std::min(r[1], b.y());
+    r[2] = std::max(r[2], b.x());
+    r[3] = std::max(r[3], b.y());
+  };
+  add(k0);
+  add(k0 + len);
+  for (std::uint32_t e : ext)
+    if ((e + m - k0 % m) % m <= len) add(e);
+  r[0] += v.x();
+  r[1] += v.y();
+  r[2] += v.x();
+  r[3] += v.y();
+  return pad(r);
+}
+
+// Padded box of the segment a → b translated by t.
+Box segment_box(const Vec2& a, const Vec2& b, const Vec2& t) {
+  return pad(Box{std::min(a.x(), b.x()) + t.x(), std::min(a.y(), b.y()) + t.y(), std::max(a.x(), b.x()) + t.x(),
+                 std::max(a.y(), b.y()) + t.y()});
+}
+
+// Half-width of the window in which rounded copies of one exact point p lie (a few ulps).
+double point_tol(const Vec2& p) { return (std::abs(p.x()) + std::abs(p.y())) * 0x1p-44 + 0x1p-1000; }
+
+// Steps 1-2 of the construction: the candidates (the reduced convolution of ∂P with B) and the
+// closed remnants each keeps outside O. Scratch buffers are reused from candidate to candidate.
+struct Build {
+  const Polygon& P;
+  const ConvolvedTriangles& R;
+  UnionBoundary::Index& X;
+  std::span<const Vec2> V;
+  const std::vector<Vec2>& B;
+  std::size_t N, m;
+  std::vector<std::uint32_t> prev;  // prev[next(g)] = g
+  std::vector<Candidate> cand;      // segments 0..N-1 by P edge, then arcs by P vertex
+  std::vector<Box> sbox, cb;        // boxes of the edge sausages; of the candidates
+  BoxTree cbvh;                     // over cb
+  std::vector<Raw> raw;             // the remnants, candidate by candidate
+  std::vector<Interval> ivs;        // scratch: the current candidate's covered intervals
+  std::vector<std::uint32_t> near;  // scratch: sausages / candidates near the current candidate
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> st;  // scratch: B-edge ranges [lo, hi)
+
+  // B's extreme vertices (into X.ext) and P's predecessor links. O(N + m).
+  Build(const Polygon& P_in, const ConvolvedTriangles& R_in, UnionBoundary::Index& X_in);
+  // First B edge whose angle is >= angle(x1 − x0) (m if none). O(log m).
+  std::uint32_t lower(const Vec2& x0, const Vec2& x1) const;
+  // Element j of candidate c as a Cut (a segment has the one element j = 0).
+  Cut elem(const Candidate& c, std::size_t j) const;
+  Box cand_box(const Candidate& c) const;
+
+  // Step 1: one segment per P edge, one arc per convex vertex with a non-empty B-edge range.
+  // O(N log m).
+  void find_candidates();
+  // The hierarchies over the edge sausages (X.sausages), P's edges (X.edges) and the candidates
+  // (cbvh), with the boxes sbox, cb. O(N log N).
+  void build_hierarchies();
+  // Step 2 for candidate ci: appends to `raw` its closed remnants outside O (its points in no
+  // int R_T of its ends' fans, in no sausage other than its own, and not on a same-orientation
+  // copy in a candidate of smaller id), in order along the candidate.
+  void subtract_overlap(std::uint32_t ci);
+  // The pieces of the remnants (ring links not yet set).
+  std::vector<Piece> pieces() const;
+};
+
+// The covered parts of one candidate: open (or, at the candidate's ends, closed) intervals of
+// positions (element j, μ) lying in O, collected in `ivs`, and the sweep leaving the rest.
+struct Cover {
+  Build& S;
+  const std::uint32_t ci;
+  const Candidate& C;
+  const std::uint32_t Lc;  // number of elements
+  LineDir seg_dir;         // a segment's direction data, computed at most once (O(log m))
+  bool have_seg_dir = false;
+
+  Cover(Build& s, std::uint32_t c) : S(s), ci(c), C(s.cand[c]), Lc(C.arc ? C.count : 1) {}
+  // An interval ending at μ = 1 of a non-last element ends at μ = 0 of the next one instead.
+  void normalize_end(Interval& I) const;
+  // Open interval (in, out) of element j's line inside some int R: clip to the element.
+  void add_cover(std::uint32_t j, const Cut& E, const Cut& in, const Cut& out);
+  // Open overlap of element j with the collinear, same-direction segment [x0, x1] (points p + b).
+  void add_coincident(std::uint32_t j, const Cut& E, const Mu& x0, const Mu& x1);
+  Mu pt_mu(std::uint32_t pi, std::uint32_t bi) const;
+  int cmp_pos(const Pos& a, const Pos& b) const;
+  // Sweep: the closed remnants of `list` (appended to S.raw when `emit`); whether any exists.
+  bool sweep(std::vector<Interval>& list, bool emit) const;
+  // S.near := the sausages whose boxes meet the candidate's, except its own, likely covers first.
+  void gather_sausages();
+  // The candidate's natural ends inside int R_T of a fan triangle T at its P vertices.
+  void cover_ends_by_fans();
+  // Element ranges inside sausages: a range whose box lies in one is covered at once; a single
+  // element is cut by the sausages meeting it until it is covered.
+  void cover_by_sausages();
+  // Same-orientation coinciding copies in candidates with a smaller id.
+  void cover_coincident();
+};
+
+Build::Build(const Polygon& P_in, const ConvolvedTriangles& R_in, UnionBoundary::Index& X_in)
+    : P(P_in), R(R_in), X(X_in), V(P_in.vertices()), B(R_in.B()), N(V.size()), m(B.size()) {
   for (std::uint32_t k = 0; k < m; ++k) {
     if (B[k].x() < B[X.ext[0]].x()) X.ext[0] = k;
     if (B[k].y() < B[X.ext[1]].y()) X.ext[1] = k;
     if (B[k].x() > B[X.ext[2]].x()) X.ext[2] = k;
     if (B[k].y() > B[X.ext[3]].y()) X.ext[3] = k;
   }
-  // First B edge whose angle is >= angle(x1 − x0) (m if none).
-  auto lower = [&](const Vec2& x0, const Vec2& x1) {
-    std::size_t lo = 0, hi = m;
-    while (lo < hi) {
-      std::size_t mid = (lo + hi) / 2;
-      if (compare_angle(B[mid], B[(mid + 1) % m], x0, x1) >= 0) hi = mid;
-      else lo = mid + 1;
-    }
-    return static_cast<std::uint32_t>(lo);
-  };
-  std::vector<std::uint32_t> prev(N);
+  prev.resize(N);
   for (std::size_t g = 0; g < N; ++g) prev[P.next(g)] = static_cast<std::uint32_t>(g);
+}
 
-  // 1. Candidates.
-  std::vector<Candidate> cand;
+std::uint32_t Build::lower(const Vec2& x0, const Vec2& x1) const {
+  std::size_t lo = 0, hi = m;
+  while (lo < hi) {
+    std::size_t mid = (lo + hi) / 2;
+    if (compare_angle(B[mid], B[(mid + 1) % m], x0, x1) >= 0) hi = mid;
+    else lo = mid + 1;
+  }
+  return static_cast<std::uint32_t>(lo);
+}
+
+Cut Build::elem(const Candidate& c, std::size_t j) const {
+  Cut e;
+  if (!c.arc) {
+    e.pt = V[c.p];
+    e.pb = B[c.b0];
+    e.e0 = V[c.p];
+    e.p_from = c.p;
+    e.p_to = static_cast<std::uint32_t>(P.next(c.p));
+    e.e1 = V[e.p_to];
+    e.b = c.b0;
+  } else {
+    const std::size_t bk = (c.b0 + j) % m;
+    e.pt = V[c.p];
+    e.pb = B[bk];
+    e.e0 = B[bk];
+    e.e1 = B[(bk + 1) % m];
+    e.p_from = e.p_to = c.p;
+    e.b = static_cast<std::uint32_t>(bk);
+    e.b_edge = true;
+  }
+  return e;
+}
+
+Box Build::cand_box(const Candidate& c) const {
+  if (c.arc) return range_box(B, X.ext, V[c.p], c.b0, c.count);
+  return segment_box(V[c.p], V[P.next(c.p)], B[c.b0]);
+}
+
+void Build::find_candidates() {
   cand.reserve(2 * N);
   for (std::uint32_t g = 0; g < N; ++g) {
     Candidate c;
@@ -684,363 +743,40 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
     c.count = cnt;
     cand.push_back(c);
   }
-  auto elem = [&](const Candidate& c, std::size_t j) {
-    Cut e;
-    if (!c.arc) {
-      e.pt = V[c.p];
-      e.pb = B[c.b0];
-      e.e0 = V[c.p];
-      e.p_from = c.p;
-      e.p_to = static_cast<std::uint32_t>(P.next(c.p));
-      e.e1 = V[e.p_to];
-      e.b = c.b0;
-    } else {
-      const std::size_t bk = (c.b0 + j) % m;
-      e.pt = V[c.p];
-      e.pb = B[bk];
-      e.e0 = B[bk];
-      e.e1 = B[(bk + 1) % m];
-      e.p_from = e.p_to = c.p;
-      e.b = static_cast<std::uint32_t>(bk);
-      e.b_edge = true;
-    }
-    return e;
-  };
-  // Box of B vertices k0 .. k0 + len (cyclic, len + 1 vertices) translated by v.
-  auto range_box = [&](const Vec2& v, std::size_t k0, std::size_t len) {
-    Box r{INFINITY, INFINITY, -INFINITY, -INFINITY};
-    auto add = [&](std::size_t k) {
-      const Vec2& b = B[k % m];
-      r[0] = std::min(r[0], b.x());
-      r[1] = std::min(r[1], b.y());
-      r[2] = std::max(r[2], b.x());
-      r[3] = std::max(r[3], b.y());
-    };
-    add(k0);
-    add(k0 + len);
-    for (std::uint32_t e : X.ext)
-      if ((e + m - k0 % m) % m <= len) add(e);
-    r[0] += v.x();
-    r[1] += v.y();
-    r[2] += v.x();
-    r[3] += v.y();
-    return pad(r);
-  };
-  auto cand_box = [&](const Candidate& c) {
-    if (c.arc) return range_box(V[c.p], c.b0, c.count);
-    const Vec2 &a = V[c.p], &b = V[P.next(c.p)], &t = B[c.b0];
-    return pad(Box{std::min(a.x(), b.x()) + t.x(), std::min(a.y(), b.y()) + t.y(), std::max(a.x(), b.x()) + t.x(),
-                   std::max(a.y(), b.y()) + t.y()});
-  };
+}
 
-  // 2. Hierarchies over the edge sausages and the candidates.
-  std::vector<Box> sbox(R.segment_count());
+void Build::build_hierarchies() {
+  sbox.resize(R.segment_count());
   for (std::size_t g = 0; g < sbox.size(); ++g) sbox[g] = R.segment_box(g);
   {
     std::vector<Box> sb = sbox;
-    X.sausages.build(sb);
+    build_tree(X.sausages, sb);
     for (std::size_t g = 0; g < sb.size(); ++g) {
       const Vec2 &a = V[g], &b = V[P.next(g)];
       sb[g] = Box{std::min(a.x(), b.x()), std::min(a.y(), b.y()), std::max(a.x(), b.x()), std::max(a.y(), b.y())};
     }
-    X.edges.build(sb);
+    build_tree(X.edges, sb);
   }
-  std::vector<Box> cb(cand.size());
+  cb.resize(cand.size());
   for (std::size_t c = 0; c < cand.size(); ++c) cb[c] = cand_box(cand[c]);
-  Bvh cbvh;
-  cbvh.build(cb);
+  build_tree(cbvh, cb);
+}
 
-  struct Raw {
-    std::uint32_t cand;
-    Pos a, b;
-  };
-  std::vector<Raw> raw;
-  std::vector<Interval> ivs;
-  std::vector<std::uint32_t> near;
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> st;  // B-edge ranges [lo, hi) of a candidate
-  for (std::uint32_t ci = 0; ci < cand.size(); ++ci) {
-    const Candidate& C = cand[ci];
-    const std::uint32_t Lc = C.arc ? C.count : 1;
-    ivs.clear();
-    auto normalize_end = [&](Interval& I) {
-      if (I.e.mu.k == Mu::C1 && I.e.j + 1 < Lc) {
-        I.e.j += 1;
-        I.e.mu = c0();
-      }
-    };
-    // Open interval (in, out) of element j's line inside some int R: clip to the element.
-    auto add_cover = [&](std::uint32_t j, const Cut& E, const Cut& in, const Cut& out) {
-      const Mu mi = line_mu(in), mo = line_mu(out);
-      if (cmp_mu(E, mo, c0()) <= 0 || cmp_mu(E, mi, c1()) >= 0) return;
-      Interval I;
-      I.s.j = I.e.j = j;
-      if (cmp_mu(E, mi, c0()) < 0) {
-        I.s.mu = c0();
-        I.s_incl = true;
-      } else {
-        I.s.mu = mi;
-      }
-      if (cmp_mu(E, mo, c1()) > 0) {
-        I.e.mu = c1();
-        I.e_incl = true;
-      } else {
-        I.e.mu = mo;
-      }
-      normalize_end(I);
-      ivs.push_back(std::move(I));
-    };
-    // Open overlap of element j with the collinear, same-direction segment [x0, x1] (points p + b).
-    auto add_coincident = [&](std::uint32_t j, const Cut& E, const Mu& x0, const Mu& x1) {
-      Mu lo = cmp_mu(E, x0, c0()) > 0 ? x0 : c0();
-      Mu hi = cmp_mu(E, x1, c1()) < 0 ? x1 : c1();
-      if (cmp_mu(E, lo, hi) >= 0) return;
-      Interval I;
-      I.s.j = I.e.j = j;
-      I.s.mu = lo;
-      I.e.mu = hi;
-      normalize_end(I);
-      ivs.push_back(std::move(I));
-    };
-    auto pt_mu = [&](std::uint32_t pi, std::uint32_t bi) {
-      Mu r;
-      r.k = Mu::Pt;
-      r.p = V[pi];
-      r.b = B[bi % m];
-      r.pi = pi;
-      r.bi = static_cast<std::uint32_t>(bi % m);
-      return r;
-    };
-    // Sweep: the closed remnants (emitted when `emit`; the result says whether any exists).
-    auto cmp_pos = [&](const Pos& a, const Pos& b) {
-      if (a.j != b.j) return a.j < b.j ? -1 : 1;
-      return cmp_mu(elem(C, a.j), a.mu, b.mu);
-    };
-    auto sweep = [&](std::vector<Interval>& list, bool emit) {
-      std::sort(list.begin(), list.end(), [&](const Interval& a, const Interval& b) {
-        const int c = cmp_pos(a.s, b.s);
-        if (c != 0) return c < 0;
-        return a.s_incl && !b.s_incl;
-      });
-      bool any = false;
-      Pos cur;
-      cur.j = 0;
-      cur.mu = c0();
-      bool cur_cov = false;
-      Pos end;
-      end.j = Lc - 1;
-      end.mu = c1();
-      for (const Interval& I : list) {
-        const int c = cmp_pos(I.s, cur);
-        if (c > 0 || (c == 0 && !I.s_incl && !cur_cov)) {
-          any = true;
-          if (!emit) return true;
-          raw.push_back({ci, cur, I.s});
-          cur = I.e;
-          cur_cov = I.e_incl;
-        } else {
-          const int e = cmp_pos(I.e, cur);
-          if (e > 0 || (e == 0 && I.e_incl)) {
-            cur = I.e;
-            cur_cov = cur_cov && e == 0 ? true : I.e_incl;
-          }
-        }
-      }
-      const int c = cmp_pos(end, cur);
-      if (c > 0 || (c == 0 && !cur_cov)) {
-        any = true;
-        if (emit) raw.push_back({ci, cur, end});
-      }
-      return any;
-    };
-    // Points of O: inside an edge sausage int(f_g ⊕ B) (Q + x meets the relative interior of f_g),
-    // or inside int R_T for a triangle T around the candidate's P vertices (Q + x touching P at a
-    // vertex from inside — the only contact placements with Q + x ⊂ P). Both sets lie in O.
-    // `near`: the sausages whose boxes meet the candidate's.
-    near.clear();
-    X.sausages.overlap(cb[ci], [&](std::uint32_t g) {
-      if (boxes_meet(sbox[g], cb[ci])) near.push_back(g);
-    });
-    {  // likely covers first: edges near the candidate's contact with P (its P edge or vertex),
-       // which cross Q + x there when ∂P bends towards Q; the order only affects speed
-      const Vec2 f = C.arc ? Vec2(2 * V[C.p]) : Vec2(V[C.p] + V[P.next(C.p)]);
-      const double cx = f.x(), cy = f.y();
-      std::vector<std::pair<double, std::uint32_t>> order;
-      order.reserve(near.size());
-      for (std::uint32_t g : near) {
-        // The candidate lies on the boundary of its own sausages (a segment: its edge's; an arc:
-        // the two edges at its vertex, whose outward normals bound the arc's normals), never in
-        // their interiors: skipping them changes no cover and keeps the range test from wasting
-        // its tries on them.
-        if (g == C.p || (C.arc && g == prev[C.p])) continue;
-        const Vec2 e = V[g] + V[P.next(g)];
-        order.push_back({std::abs(e.x() - cx) + std::abs(e.y() - cy), g});
-      }
-      // Only the head of the order matters (most candidates are covered by one of the first few).
-      const std::size_t head = std::min<std::size_t>(order.size(), 32);
-      if (order.size() > head) std::nth_element(order.begin(), order.begin() + head, order.end());
-      std::sort(order.begin(), order.begin() + head);
-      near.clear();
-      for (const auto& o : order) near.push_back(o.second);
-    }
-    // Fan triangles: only the candidate's natural ends can lie in them (elsewhere Q + x has points
-    // outside P near the contact, and x ∈ O is decided by the sausages). So R_T matters only when
-    // it contains the end x = v + b_e (v the P vertex, b_e the B vertex there): exactly when the
-    // triangle b_e + (v − T) meets int B, i.e. (both convex, b_e on ∂B) when its closed angle at
-    // b_e, from v − u1 to v − u2, meets B's open angle at b_e, from b_{e+1} − b_e to b_{e−1} − b_e.
-    // Exact and O(1); only then is the O(log m) interval computed.
-    Cut in, out;
-    LineDir seg_dir;  // a segment's direction data, computed at most once (O(log m))
-    bool have_seg_dir = false;
-    auto end_in_fan = [&](std::uint32_t T, std::uint32_t v, std::uint32_t e) {
-      const TriangleIds& t = R.triangle(T);
-      const int sl = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
-      const Vec2 &pv = V[v], &u1 = V[t[(sl + 1) % 3]], &u2 = V[t[(sl + 2) % 3]];
-      const Vec2 &be = B[e], &bn = B[(e + 1) % m], &bp = B[(e + m - 1) % m];
-      // v − u1 strictly inside B's angle
-      if (predicates::cross_edges(be, bn, u1, pv) > 0 && predicates::cross_edges(u1, pv, be, bp) > 0) return true;
-      // else they meet iff b_{e+1} − b_e lies in [v − u1, v − u2)
-      const int c = predicates::cross_edges(u1, pv, be, bn);
-      return (c > 0 || (c == 0 && predicates::dot_edges(u1, pv, be, bn) > 0)) && predicates::cross_edges(be, bn, u2, pv) > 0;
-    };
-    for (int side = 0; side < 2; ++side) {
-      const std::uint32_t j = side == 0 ? 0 : Lc - 1;
-      const std::uint32_t v = side == 0 || C.arc ? C.p : static_cast<std::uint32_t>(P.next(C.p));
-      const std::uint32_t e = side == 0 || !C.arc ? C.b0 : static_cast<std::uint32_t>((C.b0 + Lc) % m);
-      const Cut E = elem(C, j);
-      bool have_dir = false;
-      LineDir D;
-      for (std::uint32_t T : R.triangles_at(v)) {
-        if (!end_in_fan(T, v, e)) continue;
-        if (!have_dir) {
-          D = R.line_dir(E);
-          have_dir = true;
-          if (!C.arc) {
-            seg_dir = D;
-            have_seg_dir = true;
-          }
-        }
-        if (R.line_interval(T, E, D, in, out)) add_cover(j, E, in, out);
-      }
-    }
-    // Sausages: recursive element ranges. A range whose (padded) box has its four corners inside
-    // one int S_g is covered at once (S_g convex); a single element is cut by every sausage whose
-    // box meets it, until one covers it entirely.
-    auto rng_box = [&](std::uint32_t lo, std::uint32_t hi) { return C.arc ? range_box(V[C.p], C.b0 + lo, hi - lo) : cb[ci]; };
-    st.clear();
-    st.push_back({0, Lc});
-    while (!st.empty()) {
-      const auto [lo, hi] = st.back();
-      st.pop_back();
-      const Box rb = rng_box(lo, hi);
-      // Every sausage of `near` meets the whole candidate's box (filtered when gathered).
-      const bool root = lo == 0 && hi == Lc;
-      bool whole = false, any = false;
-      int tries = 0;
-      for (const std::uint32_t g : near) {
-        const Box& sb = sbox[g];
-        if (!root && !boxes_meet(sb, rb)) continue;
-        any = true;
-        if (sb[0] > rb[0] || sb[1] > rb[1] || sb[2] < rb[2] || sb[3] < rb[3]) continue;
-        whole = R.segment_contains_interior(g, Vec2(rb[0], rb[1])) && R.segment_contains_interior(g, Vec2(rb[2], rb[1])) &&
-                R.segment_contains_interior(g, Vec2(rb[2], rb[3])) && R.segment_contains_interior(g, Vec2(rb[0], rb[3]));
-        if (whole || ++tries >= 3) break;
-      }
-      if (!any) continue;
-      if (whole) {
-        Interval I;
-        I.s.j = lo;
-        I.s.mu = c0();
-        I.s_incl = true;
-        I.e.j = hi - 1;
-        I.e.mu = c1();
-        I.e_incl = true;
-        normalize_end(I);
-        ivs.push_back(std::move(I));
-        continue;
-      }
-      if (hi - lo == 1) {
-        // Stop once the element is covered: by one interval, or by a prefix (from its start)
-        // and a suffix (to its end) that overlap.
-        const Cut E = elem(C, lo);
-        const LineDir D = have_seg_dir ? seg_dir : R.line_dir(E);
-        bool has_pre = false, has_suf = false;
-        Mu pre_end, suf_start;
-        for (const std::uint32_t g : near) {
-          if ((!root && !boxes_meet(sbox[g], rb)) || !R.segment_line_interval(g, E, D, in, out)) continue;
-          const std::size_t before = ivs.size();
-          add_cover(lo, E, in, out);
-          if (ivs.size() == before) continue;
-          const Interval& I = ivs.back();
-          if (I.s_incl && I.e_incl) break;
-          if (I.s_incl && (!has_pre || cmp_mu(E, I.e.mu, pre_end) > 0)) {
-            pre_end = I.e.mu;
-            has_pre = true;
-          }
-          if (I.e_incl && (!has_suf || cmp_mu(E, I.s.mu, suf_start) < 0)) {
-            suf_start = I.s.mu;
-            has_suf = true;
-          }
-          if (has_pre && has_suf && cmp_mu(E, suf_start, pre_end) < 0) break;
-        }
-        continue;
-      }
-      const std::uint32_t mid = (lo + hi) / 2;
-      st.push_back({lo, mid});
-      st.push_back({mid, hi});
-    }
-    {
-      std::vector<Interval> copy = ivs;
-      if (!sweep(copy, false)) continue;  // nothing left: skip the coincidence search
-    }
-    // Same-orientation coinciding copies in candidates with a smaller id.
-    near.clear();
-    cbvh.overlap(cb[ci], [&](std::uint32_t o) {
-      if (o < ci) near.push_back(o);
-    });
-    auto in_range = [&](const Candidate& c, std::size_t k) { return (k + m - c.b0) % m < c.count; };
-    for (std::uint32_t oi : near) {
-      const Candidate& O = cand[oi];
-      auto try_pair = [&](std::uint32_t j, const Cut& E, const Cut& F, const Mu& f0, const Mu& f1) {
-        if (compare_angle(E.e0, E.e1, F.e0, F.e1) != 0) return;
-        // Same B vertex (parallel edges share their extreme vertex): it cancels exactly, and the
-        // plain cross product certifies the frequent exact zero (collinear edges) cheaply.
-        const int side = E.pb == F.pb ? predicates::cross_edges(E.e0, E.e1, E.pt, F.pt) : exact_sign([&](auto L) {
-          auto Dx = L(E.e1.x()) - L(E.e0.x()), Dy = L(E.e1.y()) - L(E.e0.y());
-          return Dx * (L(F.pt.y()) + L(F.pb.y()) - L(E.pt.y()) - L(E.pb.y())) -
-                 Dy * (L(F.pt.x()) + L(F.pb.x()) - L(E.pt.x()) - L(E.pb.x()));
-        });
-        if (side == 0) add_coincident(j, E, f0, f1);
-      };
-      if (!C.arc && !O.arc) {
-        const Cut E = elem(C, 0), F = elem(O, 0);
-        try_pair(0, E, F, pt_mu(O.p, O.b0), pt_mu(F.p_to, O.b0));
-      } else if (!C.arc && O.arc) {
-        const Cut E = elem(C, 0);
-        const std::uint32_t k = lower(E.e0, E.e1) % m;
-        if (in_range(O, k)) {
-          const Cut F = elem(O, (k + m - O.b0) % m);
-          try_pair(0, E, F, pt_mu(O.p, k), pt_mu(O.p, k + 1));
-        }
-      } else if (C.arc && !O.arc) {
-        const Cut F = elem(O, 0);
-        const std::uint32_t k = lower(F.e0, F.e1) % m;
-        if (in_range(C, k)) {
-          const std::uint32_t j = static_cast<std::uint32_t>((k + m - C.b0) % m);
-          try_pair(j, elem(C, j), F, pt_mu(O.p, O.b0), pt_mu(F.p_to, O.b0));
-        }
-      } else if (V[C.p] != V[O.p]) {
-        for (int s = 0; s < 2; ++s) {
-          const std::uint32_t k = s ? lower(V[O.p], V[C.p]) % m : lower(V[C.p], V[O.p]) % m;
-          if (!in_range(C, k) || !in_range(O, k)) continue;
-          const std::uint32_t j = static_cast<std::uint32_t>((k + m - C.b0) % m);
-          try_pair(j, elem(C, j), elem(O, (k + m - O.b0) % m), pt_mu(O.p, k), pt_mu(O.p, k + 1));
-        }
-      }
-    }
-    sweep(ivs, true);
+void Build::subtract_overlap(std::uint32_t ci) {
+  ivs.clear();
+  Cover cover(*this, ci);
+  cover.gather_sausages();
+  cover.cover_ends_by_fans();
+  cover.cover_by_sausages();
+  {
+    std::vector<Interval> copy = ivs;
+    if (!cover.sweep(copy, false)) return;  // nothing left: skip the coincidence search
   }
+  cover.cover_coincident();
+  cover.sweep(ivs, true);
+}
 
-  // 3. Pieces; zero-length remnants lying on another piece are dropped.
+std::vector<Piece> Build::pieces() const {
   std::vector<Piece> all;
   all.reserve(raw.size());
   for (const Raw& r : raw) {
@@ -1055,58 +791,369 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
     pc.end = end_of(r.b.mu);
     all.push_back(pc);
   }
-  pieces_ = std::move(all);
+  return all;
+}
+
+void Cover::normalize_end(Interval& I) const {
+  if (I.e.mu.k == Mu::C1 && I.e.j + 1 < Lc) {
+    I.e.j += 1;
+    I.e.mu = c0();
+  }
+}
+
+void Cover::add_cover(std::uint32_t j, const Cut& E, const Cut& in, const Cut& out) {
+  const Mu mi = line_mu(in), mo = line_mu(out);
+  if (cmp_mu(E, mo, c0()) <= 0 || cmp_mu(E, mi, c1()) >= 0) return;
+  Interval I;
+  I.s.j = I.e.j = j;
+  if (cmp_mu(E, mi, c0()) < 0) {
+    I.s.mu = c0();
+    I.s_incl = true;
+  } else {
+    I.s.mu = mi;
+  }
+  if (cmp_mu(E, mo, c1()) > 0) {
+    I.e.mu = c1();
+    I.e_incl = true;
+  } else {
+    I.e.mu = mo;
+  }
+  normalize_end(I);
+  S.ivs.push_back(std::move(I));
+}
+
+void Cover::add_coincident(std::uint32_t j, const Cut& E, const Mu& x0, const Mu& x1) {
+  Mu lo = cmp_mu(E, x0, c0()) > 0 ? x0 : c0();
+  Mu hi = cmp_mu(E, x1, c1()) < 0 ? x1 : c1();
+  if (cmp_mu(E, lo, hi) >= 0) return;
+  Interval I;
+  I.s.j = I.e.j = j;
+  I.s.mu = lo;
+  I.e.mu = hi;
+  normalize_end(I);
+  S.ivs.push_back(std::move(I));
+}
+
+Mu Cover::pt_mu(std::uint32_t pi, std::uint32_t bi) const {
+  Mu r;
+  r.k = Mu::Pt;
+  r.p = S.V[pi];
+  r.b = S.B[bi % S.m];
+  r.pi = pi;
+  r.bi = static_cast<std::uint32_t>(bi % S.m);
+  return r;
+}
+
+int Cover::cmp_pos(const Pos& a, const Pos& b) const {
+  if (a.j != b.j) return a.j < b.j ? -1 : 1;
+  return cmp_mu(S.elem(C, a.j), a.mu, b.mu);
+}
+
+bool Cover::sweep(std::vector<Interval>& list, bool emit) const {
+  std::sort(list.begin(), list.end(), [&](const Interval& a, const Interval& b) {
+    const int c = cmp_pos(a.s, b.s);
+    if (c != 0) return c < 0;
+    return a.s_incl && !b.s_incl;
+  });
+  bool any = false;
+  Pos cur;
+  cur.j = 0;
+  cur.mu = c0();
+  bool cur_cov = false;
+  Pos end;
+  end.j = Lc - 1;
+  end.mu = c1();
+  for (const Interval& I : list) {
+    const int c = cmp_pos(I.s, cur);
+    if (c > 0 || (c == 0 && !I.s_incl && !cur_cov)) {
+      any = true;
+      if (!emit) return true;
+      S.raw.push_back({ci, cur, I.s});
+      cur = I.e;
+      cur_cov = I.e_incl;
+    } else {
+      const int e = cmp_pos(I.e, cur);
+      if (e > 0 || (e == 0 && I.e_incl)) {
+        cur = I.e;
+        cur_cov = cur_cov && e == 0 ? true : I.e_incl;
+      }
+    }
+  }
+  const int c = cmp_pos(end, cur);
+  if (c > 0 || (c == 0 && !cur_cov)) {
+    any = true;
+    if (emit) S.raw.push_back({ci, cur, end});
+  }
+  return any;
+}
+
+void Cover::gather_sausages() {
+  // Points of O: inside an edge sausage int(f_g ⊕ B) (Q + x meets the relative interior of f_g),
+  // or inside int R_T for a triangle T around the candidate's P vertices (Q + x touching P at a
+  // vertex from inside — the only contact placements with Q + x ⊂ P). Both sets lie in O.
+  // `near`: the sausages whose boxes meet the candidate's.
+  const auto& V = S.V;
+  auto& near = S.near;
+  near.clear();
+  S.X.sausages.overlap(box_lo(S.cb[ci]), box_hi(S.cb[ci]), [&](std::uint32_t g) {
+    if (boxes_meet(S.sbox[g], S.cb[ci])) near.push_back(g);
+  });
+  // Likely covers first: edges near the candidate's contact with P (its P edge or vertex), which
+  // cross Q + x there when ∂P bends towards Q; the order only affects speed.
+  const Vec2 f = C.arc ? Vec2(2 * V[C.p]) : Vec2(V[C.p] + V[S.P.next(C.p)]);
+  const double cx = f.x(), cy = f.y();
+  std::vector<std::pair<double, std::uint32_t>> order;
+  order.reserve(near.size());
+  for (std::uint32_t g : near) {
+    // The candidate lies on the boundary of its own sausages (a segment: its edge's; an arc: the
+    // two edges at its vertex, whose outward normals bound the arc's normals), never in their
+    // interiors: skipping them changes no cover and keeps the range test from wasting its tries
+    // on them.
+    if (g == C.p || (C.arc && g == S.prev[C.p])) continue;
+    const Vec2 e = V[g] + V[S.P.next(g)];
+    order.push_back({std::abs(e.x() - cx) + std::abs(e.y() - cy), g});
+  }
+  // Only the head of the order matters (most candidates are covered by one of the first few).
+  const std::size_t head = std::min<std::size_t>(order.size(), 32);
+  if (order.size() > head) std::nth_element(order.begin(), order.begin() + head, order.end());
+  std::sort(order.begin(), order.begin() + head);
+  near.clear();
+  for (const auto& o : order) near.push_back(o.second);
+}
+
+void Cover::cover_ends_by_fans() {
+  // Fan triangles: only the candidate's natural ends can lie in them (elsewhere Q + x has points
+  // outside P near the contact, and x ∈ O is decided by the sausages). So R_T matters only when
+  // it contains the end x = v + b_e (v the P vertex, b_e the B vertex there): exactly when the
+  // triangle b_e + (v − T) meets int B, i.e. (both convex, b_e on ∂B) when its closed angle at
+  // b_e, from v − u1 to v − u2, meets B's open angle at b_e, from b_{e+1} − b_e to b_{e−1} − b_e.
+  // Exact and O(1); only then is the O(log m) interval computed.
+  const auto& V = S.V;
+  const auto& B = S.B;
+  const std::size_t m = S.m;
+  Cut in, out;
+  auto end_in_fan = [&](std::uint32_t T, std::uint32_t v, std::uint32_t e) {
+    const TriangleIds& t = S.R.triangle(T);
+    const int sl = t[0] == v ? 0 : (t[1] == v ? 1 : 2);
+    const Vec2 &pv = V[v], &u1 = V[t[(sl + 1) % 3]], &u2 = V[t[(sl + 2) % 3]];
+    const Vec2 &be = B[e], &bn = B[(e + 1) % m], &bp = B[(e + m - 1) % m];
+    // v − u1 strictly inside B's angle
+    if (predicates::cross_edges(be, bn, u1, pv) > 0 && predicates::cross_edges(u1, pv, be, bp) > 0) return true;
+    // else they meet iff b_{e+1} − b_e lies in [v − u1, v − u2)
+    const int c = predicates::cross_edges(u1, pv, be, bn);
+    return (c > 0 || (c == 0 && predicates::dot_edges(u1, pv, be, bn) > 0)) && predicates::cross_edges(be, bn, u2, pv) > 0;
+  };
+  for (int side = 0; side < 2; ++side) {
+    const std::uint32_t j = side == 0 ? 0 : Lc - 1;
+    const std::uint32_t v = side == 0 || C.arc ? C.p : static_cast<std::uint32_t>(S.P.next(C.p));
+    const std::uint32_t e = side == 0 || !C.arc ? C.b0 : static_cast<std::uint32_t>((C.b0 + Lc) % m);
+    const Cut E = S.elem(C, j);
+    bool have_dir = false;
+    LineDir D;
+    for (std::uint32_t T : S.R.triangles_at(v)) {
+      if (!end_in_fan(T, v, e)) continue;
+      if (!have_dir) {
+        D = S.R.line_dir(E);
+        have_dir = true;
+        if (!C.arc) {
+          seg_dir = D;
+          have_seg_dir = true;
+        }
+      }
+      if (S.R.line_interval(T, E, D, in, out)) add_cover(j, E, in, out);
+    }
+  }
+}
+
+void Cover::cover_by_sausages() {
+  // Recursive element ranges. A range whose (padded) box has its four corners inside one int S_g
+  // is covered at once (S_g convex); a single element is cut by every sausage whose box meets it,
+  // until one covers it entirely.
+  const auto& R = S.R;
+  const auto& near = S.near;
+  const auto& sbox = S.sbox;
+  auto& ivs = S.ivs;
+  auto& st = S.st;
+  Cut in, out;
+  auto rng_box = [&](std::uint32_t lo, std::uint32_t hi) {
+    return C.arc ? range_box(S.B, S.X.ext, S.V[C.p], C.b0 + lo, hi - lo) : S.cb[ci];
+  };
+  st.clear();
+  st.push_back({0, Lc});
+  while (!st.empty()) {
+    const auto [lo, hi] = st.back();
+    st.pop_back();
+    const Box rb = rng_box(lo, hi);
+    // Every sausage of `near` meets the whole candidate's box (filtered when gathered).
+    const bool root = lo == 0 && hi == Lc;
+    bool whole = false, any = false;
+    int tries = 0;
+    for (const std::uint32_t g : near) {
+      const Box& sb = sbox[g];
+      if (!root && !boxes_meet(sb, rb)) continue;
+      any = true;
+      if (sb[0] > rb[0] || sb[1] > rb[1] || sb[2] < rb[2] || sb[3] < rb[3]) continue;
+      whole = R.segment_contains_interior(g, Vec2(rb[0], rb[1])) && R.segment_contains_interior(g, Vec2(rb[2], rb[1])) &&
+              R.segment_contains_interior(g, Vec2(rb[2], rb[3])) && R.segment_contains_interior(g, Vec2(rb[0], rb[3]));
+      if (whole || ++tries >= 3) break;
+    }
+    if (!any) continue;
+    if (whole) {
+      Interval I;
+      I.s.j = lo;
+      I.s.mu = c0();
+      I.s_incl = true;
+      I.e.j = hi - 1;
+      I.e.mu = c1();
+      I.e_incl = true;
+      normalize_end(I);
+      ivs.push_back(std::move(I));
+      continue;
+    }
+    if (hi - lo == 1) {
+      // Stop once the element is covered: by one interval, or by a prefix (from its start) and a
+      // suffix (to its end) that overlap.
+      const Cut E = S.elem(C, lo);
+      const LineDir D = have_seg_dir ? seg_dir : R.line_dir(E);
+      bool has_pre = false, has_suf = false;
+      Mu pre_end, suf_start;
+      for (const std::uint32_t g : near) {
+        if ((!root && !boxes_meet(sbox[g], rb)) || !R.segment_line_interval(g, E, D, in, out)) continue;
+        const std::size_t before = ivs.size();
+        add_cover(lo, E, in, out);
+        if (ivs.size() == before) continue;
+        const Interval& I = ivs.back();
+        if (I.s_incl && I.e_incl) break;
+        if (I.s_incl && (!has_pre || cmp_mu(E, I.e.mu, pre_end) > 0)) {
+          pre_end = I.e.mu;
+          has_pre = true;
+        }
+        if (I.e_incl && (!has_suf || cmp_mu(E, I.s.mu, suf_start) < 0)) {
+          suf_start = I.s.mu;
+          has_suf = true;
+        }
+        if (has_pre && has_suf && cmp_mu(E, suf_start, pre_end) < 0) break;
+      }
+      continue;
+    }
+    const std::uint32_t mid = (lo + hi) / 2;
+    st.push_back({lo, mid});
+    st.push_back({mid, hi});
+  }
+}
+
+void Cover::cover_coincident() {
+  const auto& V = S.V;
+  const std::size_t m = S.m;
+  auto& near = S.near;
+  near.clear();
+  S.cbvh.overlap(box_lo(S.cb[ci]), box_hi(S.cb[ci]), [&](std::uint32_t o) {
+    if (o < ci) near.push_back(o);
+  });
+  auto in_range = [&](const Candidate& c, std::size_t k) { return (k + m - c.b0) % m < c.count; };
+  for (std::uint32_t oi : near) {
+    const Candidate& O = S.cand[oi];
+    auto try_pair = [&](std::uint32_t j, const Cut& E, const Cut& F, const Mu& f0, const Mu& f1) {
+      if (compare_angle(E.e0, E.e1, F.e0, F.e1) != 0) return;
+      // Same B vertex (parallel edges share their extreme vertex): it cancels exactly, and the
+      // plain cross product certifies the frequent exact zero (collinear edges) cheaply.
+      const int side = E.pb == F.pb ? predicates::cross_edges(E.e0, E.e1, E.pt, F.pt) : exact_sign([&](auto L) {
+        auto Dx = L(E.e1.x()) - L(E.e0.x()), Dy = L(E.e1.y()) - L(E.e0.y());
+        return Dx * (L(F.pt.y()) + L(F.pb.y()) - L(E.pt.y()) - L(E.pb.y())) -
+               Dy * (L(F.pt.x()) + L(F.pb.x()) - L(E.pt.x()) - L(E.pb.x()));
+      });
+      if (side == 0) add_coincident(j, E, f0, f1);
+    };
+    if (!C.arc && !O.arc) {
+      const Cut E = S.elem(C, 0), F = S.elem(O, 0);
+      try_pair(0, E, F, pt_mu(O.p, O.b0), pt_mu(F.p_to, O.b0));
+    } else if (!C.arc && O.arc) {
+      const Cut E = S.elem(C, 0);
+      const std::uint32_t k = S.lower(E.e0, E.e1) % m;
+      if (in_range(O, k)) {
+        const Cut F = S.elem(O, (k + m - O.b0) % m);
+        try_pair(0, E, F, pt_mu(O.p, k), pt_mu(O.p, k + 1));
+      }
+    } else if (C.arc && !O.arc) {
+      const Cut F = S.elem(O, 0);
+      const std::uint32_t k = S.lower(F.e0, F.e1) % m;
+      if (in_range(C, k)) {
+        const std::uint32_t j = static_cast<std::uint32_t>((k + m - C.b0) % m);
+        try_pair(j, S.elem(C, j), F, pt_mu(O.p, O.b0), pt_mu(F.p_to, O.b0));
+      }
+    } else if (V[C.p] != V[O.p]) {
+      for (int s = 0; s < 2; ++s) {
+        const std::uint32_t k = s ? S.lower(V[O.p], V[C.p]) % m : S.lower(V[C.p], V[O.p]) % m;
+        if (!in_range(C, k) || !in_range(O, k)) continue;
+        const std::uint32_t j = static_cast<std::uint32_t>((k + m - C.b0) % m);
+        try_pair(j, S.elem(C, j), S.elem(O, (k + m - O.b0) % m), pt_mu(O.p, k), pt_mu(O.p, k + 1));
+      }
+    }
+  }
+}
+
+}  // namespace
+
+UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_(&P), R_(&R), index_(std::make_unique<Index>()) {
+  Build S(P, R, *index_);
+  // 1. Candidates: the reduced convolution of ∂P with B, with the boxes and hierarchies used below.
+  S.find_candidates();
+  S.build_hierarchies();
+  // 2. Covering: each candidate minus its points in O leaves closed remnants, the pieces.
+  for (std::uint32_t ci = 0; ci < S.cand.size(); ++ci) S.subtract_overlap(ci);
+  pieces_ = S.pieces();
+  // 3. Zero-length remnants lying on another piece are dropped.
+  std::vector<Vec2> sp, ep;  // rounded start / end of each piece
+  std::vector<char> zero;    // whether the piece has zero length
+  drop_covered_points(sp, ep, zero);
+  // 4. Linking into rings, and their orientation.
+  link_rings(sp, ep, zero);
+  orient_rings(sp, ep);
+  // 5. Index: the hierarchy over the pieces for the queries.
+  index_pieces();
+  pieces_.shrink_to_fit();
+  rings_.shrink_to_fit();
+}
+
+std::array<double, 4> UnionBoundary::piece_box_of(std::size_t k) const {
+  const Piece& pc = pieces_[k];
+  const auto V = P_->vertices();
+  const auto& B = R_->B();
+  if (pc.kind == Piece::Kind::Arc) return range_box(B, index_->ext, V[pc.p], pc.b0, element_count(k));
+  return segment_box(V[pc.p], V[P_->next(pc.p)], B[pc.b0]);
+}
+
+void UnionBoundary::drop_covered_points(std::vector<Vec2>& sp, std::vector<Vec2>& ep, std::vector<char>& zero) {
   const std::size_t K = pieces_.size();
-  std::vector<Vec2> sp(K), ep(K);
-  std::vector<char> zero(K, 0);
+  sp.resize(K);
+  ep.resize(K);
+  zero.assign(K, 0);
   for (std::size_t k = 0; k < K; ++k) {
     sp[k] = start_point(k);
     ep[k] = end_point(k);
     zero[k] = element_count(k) <= 2 &&
               same_point(element(k, 0), mu_of(pieces_[k].start), element(k, element_count(k) - 1), mu_of(pieces_[k].end));
   }
-  // Candidates for equal points: sorted by rounded x; equal exact points round within a few ulps.
-  std::vector<std::uint32_t> by_x(K);
-  std::iota(by_x.begin(), by_x.end(), 0u);
-  std::sort(by_x.begin(), by_x.end(), [&](std::uint32_t a, std::uint32_t b) { return sp[a].x() < sp[b].x(); });
-  auto tol = [](const Vec2& p) { return (std::abs(p.x()) + std::abs(p.y())) * 0x1p-44 + 0x1p-1000; };
-  auto starts_at = [&](const Vec2& q, const Cut& E, const Mu& mq, auto&& f) {
-    const double w = tol(q);
-    auto it = std::lower_bound(by_x.begin(), by_x.end(), q.x() - w, [&](std::uint32_t a, double x) { return sp[a].x() < x; });
-    for (; it != by_x.end() && sp[*it].x() <= q.x() + w; ++it) {
-      const std::uint32_t k = *it;
-      if (std::abs(sp[k].y() - q.y()) > w) continue;
-      if (same_point(element(k, 0), mu_of(pieces_[k].start), E, mq)) f(k);
-    }
-  };
-  // Box of piece k (conservative).
-  auto piece_box_of = [&](std::size_t k) {
-    const Piece& pc = pieces_[k];
-    if (pc.kind == Piece::Kind::Arc) return range_box(V[pc.p], pc.b0, element_count(k));
-    const Vec2 &a = V[pc.p], &b = V[P.next(pc.p)], &t = B[pc.b0];
-    return pad(Box{std::min(a.x(), b.x()) + t.x(), std::min(a.y(), b.y()) + t.y(), std::max(a.x(), b.x()) + t.x(),
-                   std::max(a.y(), b.y()) + t.y()});
-  };
   // A zero-length remnant is dropped when its point lies on another piece (exact, rationals; such
   // remnants are rare: a candidate touching ∂O at one point).
   std::vector<char> drop(K, 0);
   {
     std::vector<Box> boxes(K);
     for (std::size_t k = 0; k < K; ++k) boxes[k] = piece_box_of(k);
-    Bvh tmp;
-    tmp.build(boxes);
+    BoxTree tmp;
+    build_tree(tmp, boxes);
     for (std::size_t k = 0; k < K; ++k) {
       if (!zero[k]) continue;
       const auto x = exact_point(element(k, 0), mu_of(pieces_[k].start));
-      const double w = tol(sp[k]) * 16;
+      const double w = point_tol(sp[k]) * 16;
       bool on = false;
-      tmp.overlap(Box{sp[k].x() - w, sp[k].y() - w, sp[k].x() + w, sp[k].y() + w}, [&](std::uint32_t o) {
+      tmp.overlap(Vec2(sp[k].x() - w, sp[k].y() - w), Vec2(sp[k].x() + w, sp[k].y() + w), [&](std::uint32_t o) {
         if (on || o == k || (zero[o] && o > k)) return;
         const std::size_t Le = element_count(o);
         for (std::size_t j = 0; j < Le && !on; ++j) {
           const Cut E = element(o, j);
           const Vec2 a0 = E.pt + E.pb, a1 = a0 + (E.e1 - E.e0);
-          const double ww = w + tol(a0) + tol(a1);
+          const double ww = w + point_tol(a0) + point_tol(a1);
           if (sp[k].x() < std::min(a0.x(), a1.x()) - ww || sp[k].x() > std::max(a0.x(), a1.x()) + ww ||
               sp[k].y() < std::min(a0.y(), a1.y()) - ww || sp[k].y() > std::max(a0.y(), a1.y()) + ww)
             continue;
@@ -1123,28 +1170,38 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
       drop[k] = on;
     }
   }
-  {
-    std::vector<Piece> kept;
-    std::vector<Vec2> ks, ke;
-    std::vector<char> kz;
-    for (std::size_t k = 0; k < K; ++k)
-      if (!drop[k]) {
-        kept.push_back(pieces_[k]);
-        ks.push_back(sp[k]);
-        ke.push_back(ep[k]);
-        kz.push_back(zero[k]);
-      }
-    pieces_ = std::move(kept);
-    sp = std::move(ks);
-    ep = std::move(ke);
-    zero = std::move(kz);
-  }
+  std::vector<Piece> kept;
+  std::vector<Vec2> ks, ke;
+  std::vector<char> kz;
+  for (std::size_t k = 0; k < K; ++k)
+    if (!drop[k]) {
+      kept.push_back(pieces_[k]);
+      ks.push_back(sp[k]);
+      ke.push_back(ep[k]);
+      kz.push_back(zero[k]);
+    }
+  pieces_ = std::move(kept);
+  sp = std::move(ks);
+  ep = std::move(ke);
+  zero = std::move(kz);
+}
+
+void UnionBoundary::link_rings(std::vector<Vec2>& sp, std::vector<Vec2>& ep, const std::vector<char>& zero) {
   const std::size_t KP = pieces_.size();
-  by_x.resize(KP);
+  // Candidates for equal points: sorted by rounded x; equal exact points round within a few ulps.
+  std::vector<std::uint32_t> by_x(KP);
   std::iota(by_x.begin(), by_x.end(), 0u);
   std::sort(by_x.begin(), by_x.end(), [&](std::uint32_t a, std::uint32_t b) { return sp[a].x() < sp[b].x(); });
-
-  // 4. Rings: end → start links, clockwise-first from the reversed incoming direction.
+  auto starts_at = [&](const Vec2& q, const Cut& E, const Mu& mq, auto&& f) {
+    const double w = point_tol(q);
+    auto it = std::lower_bound(by_x.begin(), by_x.end(), q.x() - w, [&](std::uint32_t a, double x) { return sp[a].x() < x; });
+    for (; it != by_x.end() && sp[*it].x() <= q.x() + w; ++it) {
+      const std::uint32_t k = *it;
+      if (std::abs(sp[k].y() - q.y()) > w) continue;
+      if (same_point(element(k, 0), mu_of(pieces_[k].start), E, mq)) f(k);
+    }
+  };
+  // End → start links, clockwise-first from the reversed incoming direction.
   const std::uint32_t kNone = ~0u;
   std::vector<std::uint32_t> nxt(KP, kNone);
   std::vector<char> taken(KP, 0);
@@ -1206,8 +1263,11 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
     rings_.push_back(ring);
   }
   pieces_ = std::move(ordered);
+  sp = std::move(osp);
+  ep = std::move(oep);
+}
 
-  // Ring orientation: signed area, floating with a bound, exact when undecided.
+void UnionBoundary::orient_rings(const std::vector<Vec2>& sp, const std::vector<Vec2>& ep) {
   for (Ring& rg : rings_) {
     double sum = 0, mag = 0;
     std::size_t terms = 0;
@@ -1219,14 +1279,14 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
     for (std::uint32_t q = 0; q < rg.count; ++q) {
       const std::size_t k = rg.first + q;
       const std::size_t Le = element_count(k);
-      Vec2 prevp = osp[k];  // = start_point(k)
+      Vec2 prevp = sp[k];  // = start_point(k)
       for (std::size_t j = 1; j < Le; ++j) {
         const Cut E = element(k, j);
         const Vec2 v = E.pt + E.pb;
         acc(prevp, v);
         prevp = v;
       }
-      acc(prevp, oep[k]);  // = end_point(k)
+      acc(prevp, ep[k]);  // = end_point(k)
     }
     if (std::abs(sum) > (64.0 + 4.0 * terms) * 0x1p-52 * mag + 0x1p-900) {
       rg.area_sign = sum > 0 ? 1 : -1;
@@ -1249,13 +1309,13 @@ UnionBoundary::UnionBoundary(const Polygon& P, const ConvolvedTriangles& R) : P_
     }
     rg.area_sign = sgn(exact_sum);
   }
+}
 
-  // 5. The hierarchy over the pieces.
+void UnionBoundary::index_pieces() {
+  Index& X = *index_;
   X.piece_box.resize(pieces_.size());
   for (std::size_t k = 0; k < pieces_.size(); ++k) X.piece_box[k] = piece_box_of(k);
-  X.pieces.build(X.piece_box);
-  pieces_.shrink_to_fit();
-  rings_.shrink_to_fit();
+  build_tree(X.pieces, X.piece_box);
 }
 
 // ---- line / ray against a piece ----
@@ -1421,7 +1481,7 @@ bool UnionBoundary::ray_first_scan(const Vec2& t, const Vec2& d, Hit& h) const {
 }
 
 bool UnionBoundary::ray_first(const Vec2& t, const Vec2& d, Hit& h, bool* tie) const {
-  const Bvh& T = index_->pieces;
+  const BoxTree& T = index_->pieces;
   if (tie) *tie = false;
   if (T.nodes.empty()) return false;
   bool found = false;
@@ -1429,12 +1489,12 @@ bool UnionBoundary::ray_first(const Vec2& t, const Vec2& d, Hit& h, bool* tie) c
   Hit x;
   std::vector<std::uint32_t> st{0};
   while (!st.empty()) {
-    const Bvh::Node& n = T.nodes[st.back()];
+    const BoxTree::Node& n = T.nodes[st.back()];
     st.pop_back();
     double en, ex;
-    if (!ray_box(n.box, t, d, en, ex) || ex < 0 || en > best) continue;
-    if (n.leaf) {
-      for (std::uint32_t i = n.a; i < n.b; ++i) {
+    if (!ray_node(n, t, d, en, ex) || ex < 0 || en > best) continue;
+    if (n.left < 0) {
+      for (std::uint32_t i = n.tri; i < n.tri + n.count; ++i) {
         const std::uint32_t k = T.items[i];
         if (!first_hit(k, t, d, x)) continue;
         const int c = found ? compare_hits(x, h, t, d) : -1;
@@ -1451,19 +1511,19 @@ bool UnionBoundary::ray_first(const Vec2& t, const Vec2& d, Hit& h, bool* tie) c
       continue;
     }
     double e1, x1, e2, x2;
-    const bool h1 = ray_box(T.nodes[n.a].box, t, d, e1, x1), h2 = ray_box(T.nodes[n.b].box, t, d, e2, x2);
+    const bool h1 = ray_node(T.nodes[n.left], t, d, e1, x1), h2 = ray_node(T.nodes[n.right], t, d, e2, x2);
     if (h1 && h2) {
       if (e1 <= e2) {
-        st.push_back(n.b);
-        st.push_back(n.a);
+        st.push_back(static_cast<std::uint32_t>(n.right));
+        st.push_back(static_cast<std::uint32_t>(n.left));
       } else {
-        st.push_back(n.a);
-        st.push_back(n.b);
+        st.push_back(static_cast<std::uint32_t>(n.left));
+        st.push_back(static_cast<std::uint32_t>(n.right));
       }
     } else if (h1) {
-      st.push_back(n.a);
+      st.push_back(static_cast<std::uint32_t>(n.left));
     } else if (h2) {
-      st.push_back(n.b);
+      st.push_back(static_cast<std::uint32_t>(n.right));
     }
   }
   return found;
@@ -1583,17 +1643,17 @@ Near UnionBoundary::nearest_on_piece(std::size_t k, const Vec2& t) const {
 }
 
 bool UnionBoundary::nearest(const Vec2& t, Near& best) const {
-  const Bvh& T = index_->pieces;
+  const BoxTree& T = index_->pieces;
   if (T.nodes.empty()) return false;
   bool found = false;
   double bd2 = INFINITY;
   std::vector<std::uint32_t> st{0};
   while (!st.empty()) {
-    const Bvh::Node& n = T.nodes[st.back()];
+    const BoxTree::Node& n = T.nodes[st.back()];
     st.pop_back();
-    if (box_dist2(n.box, t) > bd2) continue;
-    if (n.leaf) {
-      for (std::uint32_t i = n.a; i < n.b; ++i) {
+    if (box_dist2(n.lo, n.hi, t) > bd2) continue;
+    if (n.left < 0) {
+      for (std::uint32_t i = n.tri; i < n.tri + n.count; ++i) {
         const std::uint32_t k = T.items[i];
         if (found && box_dist2(index_->piece_box[k], t) > bd2) continue;
         Near x = nearest_on_piece(k, t);
@@ -1606,13 +1666,13 @@ bool UnionBoundary::nearest(const Vec2& t, Near& best) const {
       }
       continue;
     }
-    const double d1 = box_dist2(T.nodes[n.a].box, t), d2 = box_dist2(T.nodes[n.b].box, t);
+    const double d1 = box_dist2(T.nodes[n.left].lo, T.nodes[n.left].hi, t), d2 = box_dist2(T.nodes[n.right].lo, T.nodes[n.right].hi, t);
     if (d1 <= d2) {
-      st.push_back(n.b);
-      st.push_back(n.a);
+      st.push_back(static_cast<std::uint32_t>(n.right));
+      st.push_back(static_cast<std::uint32_t>(n.left));
     } else {
-      st.push_back(n.a);
-      st.push_back(n.b);
+      st.push_back(static_cast<std::uint32_t>(n.left));
+      st.push_back(static_cast<std::uint32_t>(n.right));
     }
   }
   return found;
@@ -1622,7 +1682,7 @@ bool UnionBoundary::nearest(const Vec2& t, Near& best) const {
 
 bool UnionBoundary::in_overlap(const Vec2& t) const {
   // Q + t meets the relative interior of some P edge: t ∈ int(f_g ⊕ B).
-  if (index_->sausages.overlap_until(Box{t.x(), t.y(), t.x(), t.y()},
+  if (index_->sausages.overlap_until(t, t,
                                      [&](std::uint32_t g) { return R_->segment_contains_interior(g, t); }))
     return true;
   // Otherwise int(Q + t) misses ∂P: it overlaps P iff it lies inside P. Test the interior point
@@ -1636,7 +1696,7 @@ bool UnionBoundary::in_overlap(const Vec2& t) const {
                     std::abs(q1.y()) + std::abs(q2.x()) + std::abs(q2.y())) * 0x1p-40 + 0x1p-1000;
   const auto V = P_->vertices();
   std::size_t crossings = 0;
-  index_->edges.overlap(Box{ca.x() - w, ca.y() - w, INFINITY, ca.y() + w}, [&](std::uint32_t g) {
+  index_->edges.overlap(Vec2(ca.x() - w, ca.y() - w), Vec2(INFINITY, ca.y() + w), [&](std::uint32_t g) {
     const Vec2 &a = V[g], &b = V[P_->next(g)];
     const bool above_a = exact_sign([&](auto L) { return L(3.0) * L(a.y()) - c3(1, L); }) > 0;
     const bool above_b = exact_sign([&](auto L) { return L(3.0) * L(b.y()) - c3(1, L); }) > 0;
@@ -1655,25 +1715,25 @@ bool UnionBoundary::on_boundary(const Vec2& t) const {
   zero.kind = Near::Kind::Point;
   zero.cut.pt = zero.cut.pb = zero.cut.e0 = zero.cut.e1 = Vec2(0, 0);
   zero.p = t;
-  return index_->pieces.overlap_until(Box{t.x(), t.y(), t.x(), t.y()}, [&](std::uint32_t k) {
+  return index_->pieces.overlap_until(t, t, [&](std::uint32_t k) {
     return compare_near(nearest_on_piece(k, t), zero, t) == 0;
   });
 }
 
 bool UnionBoundary::last_exit(const Vec2& t, const Vec2& d, Cut& best) const {
-  const Bvh& T = index_->sausages;
+  const BoxTree& T = index_->sausages;
   if (T.nodes.empty()) return false;
   bool found = false;
   double bound = 0;  // exits at or before this λ cannot win (λ > 0 is required anyway)
   Cut en, ex;
   std::vector<std::uint32_t> st{0};
   while (!st.empty()) {
-    const Bvh::Node& n = T.nodes[st.back()];
+    const BoxTree::Node& n = T.nodes[st.back()];
     st.pop_back();
     double e0, x0;
-    if (!ray_box(n.box, t, d, e0, x0) || x0 < bound) continue;
-    if (n.leaf) {
-      for (std::uint32_t i = n.a; i < n.b; ++i) {
+    if (!ray_node(n, t, d, e0, x0) || x0 < bound) continue;
+    if (n.left < 0) {
+      for (std::uint32_t i = n.tri; i < n.tri + n.count; ++i) {
         const std::uint32_t r = T.items[i];
         if (!R_->segment_line_interval(r, t, d, en, ex) || cut_sign(ex, t, d) <= 0) continue;
         const int c = found ? compare_cuts(ex, best, t, d) : 1;
@@ -1687,19 +1747,19 @@ bool UnionBoundary::last_exit(const Vec2& t, const Vec2& d, Cut& best) const {
       continue;
     }
     double e1, x1, e2, x2;
-    const bool h1 = ray_box(T.nodes[n.a].box, t, d, e1, x1), h2 = ray_box(T.nodes[n.b].box, t, d, e2, x2);
+    const bool h1 = ray_node(T.nodes[n.left], t, d, e1, x1), h2 = ray_node(T.nodes[n.right], t, d, e2, x2);
     if (h1 && h2) {  // farther exit first
       if (x1 >= x2) {
-        st.push_back(n.b);
-        st.push_back(n.a);
+        st.push_back(static_cast<std::uint32_t>(n.right));
+        st.push_back(static_cast<std::uint32_t>(n.left));
       } else {
-        st.push_back(n.a);
-        st.push_back(n.b);
+        st.push_back(static_cast<std::uint32_t>(n.left));
+        st.push_back(static_cast<std::uint32_t>(n.right));
       }
     } else if (h1) {
-      st.push_back(n.a);
+      st.push_back(static_cast<std::uint32_t>(n.left));
     } else if (h2) {
-      st.push_back(n.b);
+      st.push_back(static_cast<std::uint32_t>(n.right));
     }
   }
   return found;

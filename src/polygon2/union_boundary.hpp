@@ -184,6 +184,22 @@ class UnionBoundary {
   struct Index;  ///< bounding-volume hierarchies (private)
 
  private:
+  // Construction steps 3-5 (union_boundary.cpp; steps 1-2 produce pieces_ from the candidates).
+  /// Conservative box of piece k (box(k) once the index exists).
+  std::array<double, 4> piece_box_of(std::size_t k) const;
+  /// Step 3: sp, ep := the rounded start / end of every piece, zero := whether it has zero length;
+  /// then drops each zero-length piece whose point lies on another piece (exact), keeping the
+  /// three lists aligned with pieces_.
+  void drop_covered_points(std::vector<Vec2>& sp, std::vector<Vec2>& ep, std::vector<char>& zero);
+  /// Step 4: links every piece's end to a piece starting there (exact symbolic equality; the
+  /// clockwise-first continuation where there are several), reorders pieces_ ring by ring (sp, ep
+  /// follow) and sets rings_ with the next / prev links.
+  void link_rings(std::vector<Vec2>& sp, std::vector<Vec2>& ep, const std::vector<char>& zero);
+  /// Every ring's area sign: floating with an error bound, exact (rationals) when undecided.
+  void orient_rings(const std::vector<Vec2>& sp, const std::vector<Vec2>& ep);
+  /// Step 5: the piece boxes and the hierarchy over them.
+  void index_pieces();
+
   const Polygon* P_ = nullptr;
   const ConvolvedTriangles* R_ = nullptr;
   std::vector<Piece> pieces_;

@@ -1,4 +1,4 @@
-// The no-fit polygon's set-up (src/nonconvex2/nfp_build.cpp candidates, pair_sums BoxTree):
+// The no-fit polygon's set-up (src/nonconvex2/nfp_build.cpp candidates, geometry::BoxTree (src/geometry/box_tree.hpp)):
 // - nfp_candidates (a table of n·m exact cross signs of edge vectors, decided by rounding
 //   monotonicity and exact product errors when the edge vectors are exact, else a static filter
 //   and the exact predicate) against a plain enumeration with GMP rationals (every turn test
