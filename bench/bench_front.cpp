@@ -43,8 +43,9 @@ std::vector<Shape2> nesting_pieces(const std::string& instance) {
 // apart), directions uniform.
 void placements(const Shape2& P, const Shape2& Q, std::vector<Vec2>& ts, std::vector<Vec2>& ds) {
   Vec2 lo(1e300, 1e300), hi(-1e300, -1e300), qlo(1e300, 1e300), qhi(-1e300, -1e300);
-  for (const Vec2& p : P.rings()[0]) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
-  for (const Vec2& q : Q.rings()[0]) qlo = qlo.cwiseMin(q), qhi = qhi.cwiseMax(q);
+  const auto pr = P.rings(), qr = Q.rings();
+  for (const Vec2& p : pr[0]) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+  for (const Vec2& q : qr[0]) qlo = qlo.cwiseMin(q), qhi = qhi.cwiseMax(q);
   const Vec2 a = lo - qhi, b = hi - qlo;
   std::mt19937_64 rng(42);
   std::uniform_real_distribution<double> u(0, 1), w(-1, 1);
