@@ -39,9 +39,12 @@ int dot3_sign(const Vec3& u, const Vec3& a, const Vec3& b);
 
 }  // namespace predicates
 
+class ConvexPolytope;
 namespace convex3 {
 struct PolytopeData;
-}
+/// The polytope's internal structures (src/convex3/polytope_data.hpp): for the engines and tests.
+const PolytopeData& data_of(const ConvexPolytope& P);
+}  // namespace convex3
 
 /// First intersection of a directed line with a ConvexPolytope (DHS Lemma 5.2).
 struct LineHit {
@@ -100,8 +103,6 @@ class ConvexPolytope {
   /// smallest and middle |u_i| (k < j on equal magnitudes). Exact: the returned vertex is a
   /// true maximiser of u . v for the double vector u. Precondition: u finite and non-zero.
   int support(const Vec3& u) const;
-  /// Same answer (same tie-break) by scanning all vertices. O(n). For tests and tiny shapes.
-  int support_brute(const Vec3& u) const;
 
   /// Number of hierarchy levels (1 = the polytope itself is the top level) and vertex counts.
   std::size_t hierarchy_levels() const;
@@ -135,7 +136,7 @@ class ConvexPolytope {
   LineContact first_contact(const Vec3& point, const Vec3& line_dir, const Vec3& move_dir,
                             std::size_t level = 0) const;
 
-  const convex3::PolytopeData& data() const { return *d_; }
+  friend const convex3::PolytopeData& convex3::data_of(const ConvexPolytope& P);
 
  private:
   std::shared_ptr<const convex3::PolytopeData> d_;

@@ -61,8 +61,8 @@ Depth3 finish(const ConvexPolytope& P, const ConvexPolytope& Q, const Pose3& pos
   } else if (k.source == FacetSource::FaceQ) {
     w = P[k.p_vertex];
   } else {  // closest point of the two edge lines after the move (they intersect)
-    const auto& LP = P.data().levels[0];
-    const auto& LQ = Q.data().levels[0];
+    const auto& LP = convex3::data_of(P).levels[0];
+    const auto& LQ = convex3::data_of(Q).levels[0];
     Vec3 a = P[LP.origin(k.p_feature)], e = P[LP.target(k.p_feature)] - a;
     Vec3 b = rel.place(Q[LQ.origin(k.q_feature)]) + v, f = rel.R * (Q[LQ.target(k.q_feature)] - Q[LQ.origin(k.q_feature)]);
     Vec3 n = e.cross(f);

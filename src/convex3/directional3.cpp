@@ -1269,7 +1269,7 @@ Depth3 directional_depth_dk(const ConvexPolytope& Pp, const Pose3& pose_p, const
   int big = 0;
   for (int i = 1; i < 3; ++i)
     if (std::abs(d[i]) > std::abs(d[big])) big = i;
-  Ctx c{Pp.data(), Qp.data(), pose, {}, 0};
+  Ctx c{convex3::data_of(Pp), convex3::data_of(Qp), pose, {}, 0};
   if (small_cache().map.size() > SmallCache::kMaxEntries) small_cache().map.clear();
   const Small& topP = cached_top(c, false);
   const Small& topQ = cached_top(c, true);

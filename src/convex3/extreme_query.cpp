@@ -62,11 +62,12 @@ struct Frame {
 
 }  // namespace
 
-int ConvexPolytope::support_brute(const Vec3& u) const {
+int convex3::support_brute(const ConvexPolytope& P, const Vec3& u) {
+  const auto& V = data_of(P).v;
   Frame fr(u);
   int best = 0;
-  for (int i = 1; i < static_cast<int>(d_->v.size()); ++i)
-    if (fr.compare(d_->v[i], d_->v[best]) > 0) best = i;
+  for (int i = 1; i < static_cast<int>(V.size()); ++i)
+    if (fr.compare(V[i], V[best]) > 0) best = i;
   return best;
 }
 

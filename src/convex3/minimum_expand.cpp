@@ -225,7 +225,7 @@ struct Workspace {
 class Expander {
  public:
   Expander(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel, Workspace& ws)
-      : P_(Pp.data()), Q_(Qp.data()), AP_(vertex_adjacency(P_)), AQ_(vertex_adjacency(Q_)), R_(rel.R),
+      : P_(convex3::data_of(Pp)), Q_(convex3::data_of(Qp)), AP_(vertex_adjacency(P_)), AQ_(vertex_adjacency(Q_)), R_(rel.R),
         V_(ws.V), F_(ws.F), mark_(ws.mark), vis_(ws.vis), by_start_(ws.by_start), by_end_(ws.by_end),
         hor_(ws.hor), alive_(ws.alive), pos_(ws.pos), keys_(ws.keys) {
     V_.clear(), F_.clear(), mark_.clear(), alive_.clear(), pos_.clear(), keys_.clear();

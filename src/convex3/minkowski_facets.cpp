@@ -109,8 +109,8 @@ void evaluate(const Ctx& c, UF U, const std::optional<Vec3>& d, FacetCandidate& 
 
 std::vector<FacetCandidate> minkowski_facets(const ConvexPolytope& Pp, const ConvexPolytope& Qp,
                                              const RelativePose& pose, const std::optional<Vec3>& d) {
-  const PolytopeData& P = Pp.data();
-  const PolytopeData& Q = Qp.data();
+  const PolytopeData& P = convex3::data_of(Pp);
+  const PolytopeData& Q = convex3::data_of(Qp);
   Ctx c{P, Q, pose};
   std::vector<FacetCandidate> out;
   out.reserve(P.tris.size() + Q.tris.size());

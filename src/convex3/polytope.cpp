@@ -143,6 +143,7 @@ ConvexPolytope ConvexPolytope::hull(std::span<const Vec3> points, std::string_vi
 }
 
 std::size_t ConvexPolytope::size() const { return d_->v.size(); }
+const convex3::PolytopeData& convex3::data_of(const ConvexPolytope& P) { return *P.d_; }
 const Vec3& ConvexPolytope::operator[](std::size_t i) const { return d_->v[i]; }
 std::span<const Vec3> ConvexPolytope::vertices() const { return d_->v; }
 std::span<const std::array<int, 3>> ConvexPolytope::triangles() const { return d_->tris; }

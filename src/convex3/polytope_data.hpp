@@ -92,6 +92,10 @@ const OuterHierarchy& outer_hierarchy(const PolytopeData& d, std::size_t level =
 /// O(1).
 const VertexAdjacency& vertex_adjacency(const PolytopeData& d);
 
+/// The reference support query (tests): same answer and tie-break as ConvexPolytope::support by
+/// scanning all vertices, O(n).
+int support_brute(const ConvexPolytope& P, const Vec3& u);
+
 /// A vertex near the maximiser of u·v (from the cube map; any vertex for a zero or non-finite
 /// u). O(1).
 inline int seed_vertex(const VertexAdjacency& a, const Vec3& u) {

@@ -61,7 +61,7 @@ struct Stats {
 };
 
 std::vector<Vec3> feature_vertices(const ConvexPolytope& S, const Feature3& f) {
-  const auto& L = S.data().levels[0];
+  const auto& L = convex3::data_of(S).levels[0];
   switch (f.kind) {
     case FeatureKind3::Vertex: return {S[f.index]};
     case FeatureKind3::Edge: return {S[L.origin(f.index)], S[L.target(f.index)]};
@@ -348,8 +348,8 @@ TEST(MinimumFast, AdjacencyMatchesHalfEdges) {
   std::mt19937_64 rng(99);
   for (int n : {4, 50, 700}) {
     auto P = ConvexPolytope::hull(test3::random_sphere(rng, n));
-    const auto& A = convex3::vertex_adjacency(P.data());
-    const auto& L = P.data().levels[0];
+    const auto& A = convex3::vertex_adjacency(convex3::data_of(P));
+    const auto& L = convex3::data_of(P).levels[0];
     ASSERT_EQ(A.start.back(), static_cast<int>(L.fv.size()));
     for (int v = 0; v < static_cast<int>(P.size()); ++v)
       for (int e = A.start[v]; e < A.start[v + 1]; ++e) {

@@ -28,7 +28,7 @@ struct Check {
 
   template <class L>
   auto plane(int f, L lift) const {
-    return convex3::eval_plane(O.face_plane(P.data().v, f), O.center, lift);
+    return convex3::eval_plane(O.face_plane(convex3::data_of(P).v, f), O.center, lift);
   }
   int dsign(int a, int b, int c) const {
     return exact::exact_sign([&](auto L) { return convex3::meet(plane(a, L), plane(b, L), plane(c, L)).D; });
@@ -44,7 +44,7 @@ struct Check {
 
 void check_hierarchy(const ConvexPolytope& P, const std::string& name, std::mt19937_64& rng, std::size_t level = 0) {
   SCOPED_TRACE(name + " inner level " + std::to_string(level));
-  const auto& d = P.data();
+  const auto& d = convex3::data_of(P);
   const OuterHierarchy& O = convex3::outer_hierarchy(d, level);
   Check ck{P, O};
   const int F = static_cast<int>(O.face_ref.size());
@@ -186,7 +186,7 @@ TEST(OuterHierarchy, LevelsGrowLogarithmically) {
   std::mt19937_64 rng(20);
   for (int n : {1000, pendepth_test::scaled(40000)}) {
     auto P = ConvexPolytope::hull(test3::random_sphere(rng, n), "s");
-    const auto& O = convex3::outer_hierarchy(P.data());
+    const auto& O = convex3::outer_hierarchy(convex3::data_of(P));
     std::size_t total = 0;
     for (const auto& l : O.levels) total += l.dual.fv.size();
     std::cout << "[ stats    ] n = " << n << ": " << O.face_ref.size() << " faces, " << O.levels.size()

@@ -5,6 +5,7 @@
 
 #include <pendepth/polytope.hpp>
 
+#include "convex3/polytope_data.hpp"
 #include "shapes3.hpp"
 
 namespace pendepth {
@@ -38,7 +39,7 @@ void check_support(const ConvexPolytope& P, const std::string& name, int count, 
   SCOPED_TRACE(name);
   int mismatches = 0;
   for (const Vec3& u : directions(P, rng, count)) {
-    int m = P.support(u), b = P.support_brute(u);
+    int m = P.support(u), b = convex3::support_brute(P, u);
     if (m != b) ++mismatches;
     // Exactly maximal: no vertex strictly better.
     for (std::size_t w = 0; w < P.size(); ++w)
