@@ -107,7 +107,7 @@ class ConvexPolytope {
   /// Number of hierarchy levels (1 = the polytope itself is the top level) and vertex counts.
   std::size_t hierarchy_levels() const;
   std::vector<std::size_t> level_sizes() const;
-  /// Triangles of hierarchy level i (0 = the polytope). For tests.
+  /// Triangles of hierarchy level i (0 = the polytope): the levels first_hit and first_contact take.
   std::vector<std::array<int, 3>> level_triangles(std::size_t i) const;
 
   /// Number of true faces (maximal coplanar sets of triangles) and the face of triangle t.
