@@ -1,15 +1,20 @@
 #!/usr/bin/env bash
 # pendepth demo: installs what the build needs (scripts/setup.sh: Debian packages), builds the
-# command-line tool and runs it on examples/data (see its README for where the shapes come from).
+# library's quickstart programs (the front door, include/pendepth/pendepth.hpp) and the
+# command-line tool, and runs them on examples/data (see its README for where the shapes come from).
 # Pictures go to out/*.svg. BUILD=<dir> picks the build directory.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/setup.sh  # installs the Debian packages the build needs (nothing when all are there)
 BUILD=${BUILD:-build}
 cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$BUILD" -j2 --target pendepth-cli
+cmake --build "$BUILD" -j2 --target pendepth-cli example_quickstart example_quickstart3
 mkdir -p out
 pd="$BUILD/bin/pendepth"
+
+echo "== the library: examples/quickstart.cpp (2D) and examples/quickstart3.cpp (3D), one header"
+"$BUILD/bin/example_quickstart"
+"$BUILD/bin/example_quickstart3"
 data=examples/data
 
 echo "== octagon P fixed, hexagon Q at t = (2.5, 2): minimum depth σ  (out/demo.svg)"
