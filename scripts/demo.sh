@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # pendepth demo: installs what the build needs (scripts/setup.sh: Debian packages), builds the
-# library's quickstart programs (the front door, include/pendepth/pendepth.hpp) and the
-# command-line tool, and runs them on examples/data (see its README for where the shapes come from).
+# library's quickstart programs (the front door, include/pendepth/pendepth.hpp), the Python package
+# (installed for Debian's /usr/bin/python3) and the command-line tool, and runs them on
+# examples/data (see its README for where the shapes come from).
 # Pictures go to out/*.svg. BUILD=<dir> picks the build directory.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/setup.sh  # installs the Debian packages the build needs (nothing when all are there)
 BUILD=${BUILD:-build}
-cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build "$BUILD" -j2 --target pendepth-cli example_quickstart example_quickstart3
+cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release -DPENDEPTH_BUILD_PYTHON=ON >/dev/null
+cmake --build "$BUILD" -j2 --target pendepth-cli example_quickstart example_quickstart3 _pendepth
 mkdir -p out
 pd="$BUILD/bin/pendepth"
 
@@ -16,6 +17,18 @@ echo "== the library: examples/quickstart.cpp (2D) and examples/quickstart3.cpp 
 "$BUILD/bin/example_quickstart"
 "$BUILD/bin/example_quickstart3"
 data=examples/data
+
+echo "== the Python package: installed for Debian's /usr/bin/python3, then examples/python/quickstart.py"
+# The built package (extension + pure-Python files) goes to python3's site directory, so that
+# `/usr/bin/python3 -c "import pendepth"` works from any directory afterwards.
+site=$(/usr/bin/python3 -c 'import site; print(site.getsitepackages()[0])')
+SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+$SUDO mkdir -p "$site"
+$SUDO rm -rf "$site/pendepth"
+$SUDO cp -r "$BUILD/python/pendepth" "$site/pendepth"
+echo "(installed in $site/pendepth)"
+(cd / && /usr/bin/python3 -c "import pendepth; print('pendepth', pendepth.__version__, 'from', pendepth.__file__)")
+/usr/bin/python3 examples/python/quickstart.py
 
 echo "== octagon P fixed, hexagon Q at t = (2.5, 2): minimum depth σ  (out/demo.svg)"
 "$pd" depth "$data/octagon.wkt" "$data/hexagon.wkt" --offset 2.5,2 --svg out/demo.svg

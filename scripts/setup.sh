@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# Installs the Debian packages pendepth needs to build, test and benchmark.
+# Installs the Debian packages pendepth needs to build, test and benchmark (C++ and the Python
+# package python/, for Debian's /usr/bin/python3).
 # Idempotent: skips apt entirely when everything is already installed.
 set -euo pipefail
 PKGS=(cmake g++ make pkg-config libeigen3-dev libgmp-dev libcgal-dev libgtest-dev libgmock-dev
       libbenchmark-dev libcli11-dev nlohmann-json3-dev libbox2d-dev
-      libccd-dev libfcl-dev libbullet-dev libpolyclipping-dev libtbb-dev)
+      libccd-dev libfcl-dev libbullet-dev libpolyclipping-dev libtbb-dev
+      pybind11-dev python3-dev python3-numpy python3-pytest python3-hypothesis python3-dask
+      python3-distributed python3-matplotlib python3-shapely)
 missing=()
 for p in "${PKGS[@]}"; do
   status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The README's test command: installs what the build needs (Debian packages), builds everything
-# (library, CLI, tests, benchmarks, examples) in Release and runs the whole test suite; then
+# (library, CLI, tests, benchmarks, examples, the Python package) in Release and runs the whole
+# test suite and the Python tests (python/tests, pytest); then
 # builds and runs the tests once more under AddressSanitizer + UndefinedBehaviorSanitizer.
 # Usage: scripts/test.sh [--no-sanitize]
 set -euo pipefail
@@ -9,9 +10,19 @@ cd "$(dirname "$0")/.."
 JOBS=${JOBS:-2}
 
 echo "== Release build + tests =="
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPENDEPTH_BUILD_PYTHON=ON >/dev/null
 cmake --build build -j"$JOBS"
 ctest --test-dir build --output-on-failure -j"$JOBS"
+
+echo "== Python tests (Debian's /usr/bin/python3, the package built in build/python) =="
+# Exit status 5 (no tests collected) is a failure too, never a silent pass.
+rc=0
+PYTHONPATH="$PWD/build/python" /usr/bin/python3 -m pytest -p no:cacheprovider -q python/tests || rc=$?
+if [ "$rc" -eq 5 ]; then
+  echo "test.sh: pytest collected no Python tests" >&2
+  exit 1
+fi
+[ "$rc" -eq 0 ] || exit "$rc"
 
 if [ "${1:-}" != "--no-sanitize" ]; then
   echo "== ASan + UBSan build + tests =="

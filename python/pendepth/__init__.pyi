@@ -1,0 +1,129 @@
+# Type stubs of the pendepth package (the extension _pendepth re-exported, plus pendepth.plot).
+from types import SimpleNamespace
+from typing import Any, Literal, Optional, Sequence, Tuple, Union, overload
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+FEATURE_NONE: int
+FEATURE_VERTEX: int
+FEATURE_EDGE: int
+FEATURE_FACE: int
+
+ArrayLike = npt.ArrayLike
+F64 = npt.NDArray[np.float64]
+Prepare = Literal["auto", "queries", "full"]
+
+class InvalidInput(ValueError):
+    """Invalid input; the message is the C++ one (shape, ring, vertex, or batch index)."""
+
+class Shape2:
+    """A validated 2D shape: a simple polygon, convex or not, possibly with holes."""
+    def __init__(self, outer: Union[ArrayLike, Any], holes: Optional[Sequence[ArrayLike]] = ..., name: str = ...) -> None: ...
+    @staticmethod
+    def from_wkt(text: str, name: str = ...) -> Shape2: ...
+    @staticmethod
+    def from_file(path: str, name: str = ...) -> Shape2: ...
+    @property
+    def is_convex(self) -> bool: ...
+    @property
+    def hole_count(self) -> int: ...
+    @property
+    def name(self) -> str: ...
+    def rings(self) -> list[F64]: ...
+    def input_vertex(self, vertex: int) -> Tuple[int, int]: ...
+    def __len__(self) -> int: ...
+    def _repr_svg_(self) -> str: ...
+
+class Depth2Result:
+    """Answers of a 2D batch: (N,) / (N, 2) arrays, or scalars / (2,) for one point."""
+    depth: Any  # (N,) float64 or np.float64
+    translation: F64  # (N, 2) or (2,)
+    normal: F64
+    witness_p: F64
+    witness_q: F64
+    feature_p: npt.NDArray[np.int64]  # (N, 2) [kind, index]
+    feature_q: npt.NDArray[np.int64]
+    overlapping: Any  # (N,) bool or np.bool_
+    kind: str  # "minimum" | "directional" | "separation"
+    engine: str
+    pair: Pair2
+    offsets: F64
+    directions: Optional[F64]
+    def __len__(self) -> int: ...
+    def _repr_svg_(self) -> str: ...
+
+class Pair2:
+    """P fixed, Q moving (placed at an offset t); per-pair work done once."""
+    def __init__(self, P: Shape2, Q: Shape2, prepare: Prepare = ...) -> None: ...
+    @property
+    def P(self) -> Shape2: ...
+    @property
+    def Q(self) -> Shape2: ...
+    @property
+    def prepare(self) -> str: ...
+    @property
+    def engine(self) -> str: ...
+    def no_fit_polygon(self) -> SimpleNamespace: ...
+    @overload
+    def overlapping(self, offsets: Sequence[float], *, threads: Optional[int] = ..., progress: bool = ...) -> bool: ...
+    @overload
+    def overlapping(self, offsets: ArrayLike, *, threads: Optional[int] = ..., progress: bool = ...) -> npt.NDArray[np.bool_]: ...
+    def minimum(self, offsets: ArrayLike, *, threads: Optional[int] = ..., progress: bool = ...) -> Depth2Result: ...
+    def along(self, offsets: ArrayLike, directions: ArrayLike, *, threads: Optional[int] = ...,
+              progress: bool = ...) -> Depth2Result: ...
+    def separation(self, offsets: ArrayLike, directions: ArrayLike, *, threads: Optional[int] = ...,
+                   progress: bool = ...) -> Depth2Result: ...
+
+def no_fit_polygon(P: Shape2, Q: Shape2) -> SimpleNamespace: ...
+
+class Shape3:
+    """A validated convex polytope (the convex hull of a point set)."""
+    @staticmethod
+    def hull(points: ArrayLike, name: str = ...) -> Shape3: ...
+    @staticmethod
+    def from_file(path: str, name: str = ...) -> Shape3: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def vertices(self) -> F64: ...
+    @property
+    def triangles(self) -> npt.NDArray[np.int64]: ...
+    def __len__(self) -> int: ...
+
+class Depth3Result:
+    """Answers of a 3D batch (world frame)."""
+    depth: Any
+    translation: F64
+    normal: F64
+    facet_normal: F64
+    witness_p: F64
+    witness_q: F64
+    feature_p: npt.NDArray[np.int64]
+    feature_q: npt.NDArray[np.int64]
+    lower_bound: Any
+    upper_bound: Any
+    candidates: Any
+    overlapping: Any
+    kind: str
+    def __len__(self) -> int: ...
+
+class Pair3:
+    """P at the identity, Q posed per query (translations (N, 3), quaternions (N, 4) w, x, y, z)."""
+    def __init__(self, P: Shape3, Q: Shape3, prepare: Prepare = ...) -> None: ...
+    @property
+    def P(self) -> Shape3: ...
+    @property
+    def Q(self) -> Shape3: ...
+    @property
+    def prepare(self) -> str: ...
+    def overlapping(self, translations: ArrayLike, rotations: Optional[ArrayLike] = ..., *,
+                    threads: Optional[int] = ..., progress: bool = ...) -> Any: ...
+    def minimum(self, translations: ArrayLike, rotations: Optional[ArrayLike] = ..., *,
+                threads: Optional[int] = ..., progress: bool = ...) -> Depth3Result: ...
+    def along(self, translations: ArrayLike, directions: ArrayLike, rotations: Optional[ArrayLike] = ..., *,
+              threads: Optional[int] = ..., progress: bool = ...) -> Depth3Result: ...
+
+def plot(pair: Pair2, offset: ArrayLike, direction: Optional[ArrayLike] = ..., ax: Any = ...,
+         separation: bool = ...) -> Tuple[Any, Tuple[Any, ...], Depth2Result]: ...

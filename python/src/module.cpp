@@ -1,0 +1,761 @@
+// pendepth — Python bindings of the front door (include/pendepth/pendepth.hpp): Shape2, Pair2,
+// Shape3, Pair3, no_fit_polygon. Only the front door is bound, not the engines.
+//
+// Batches: placements arrive as numpy arrays, are copied into std::vector<Vec2/Vec3> (Eigen's
+// fixed-size vectors may need an alignment numpy does not promise), the C++ batch runs with the
+// GIL released, and the answers are copied into numpy arrays. The C++ batches are bit-identical
+// to single calls whatever the thread count; so are these, and a single (2,) / (3,) point is a
+// batch of one. Errors: pendepth::InvalidInput becomes pendepth.InvalidInput (a ValueError) with
+// the C++ message.
+#include <pendepth/pendepth.hpp>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "front/checks.hpp"
+
+namespace py = pybind11;
+using namespace pendepth;
+
+namespace {
+
+using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+std::string shape_text(const py::array& a) {
+  std::string s = "(";
+  for (py::ssize_t k = 0; k < a.ndim(); ++k) s += (k ? ", " : "") + std::to_string(a.shape(k));
+  return s + (a.ndim() == 1 ? ",)" : ")");
+}
+
+/// Points given as an (N, D) array or one (D,) point.
+template <int D>
+struct Points {
+  std::vector<Eigen::Matrix<double, D, 1>> v;
+  bool single = false;
+};
+
+template <int D>
+Points<D> points(const py::object& obj, const char* what) {
+  Array a = py::cast<Array>(obj);
+  Points<D> r;
+  if (a.ndim() == 1 && a.shape(0) == D) {
+    r.single = true;
+  } else if (!(a.ndim() == 2 && a.shape(1) == D)) {
+    throw InvalidInput(std::string(what) + ": expected an (N, " + std::to_string(D) + ") array or one (" +
+                       std::to_string(D) + ",) point, got shape " + shape_text(a));
+  }
+  const std::size_t n = r.single ? 1 : static_cast<std::size_t>(a.shape(0));
+  r.v.resize(n);
+  const double* p = a.data();
+  for (std::size_t i = 0; i < n; ++i)
+    for (int k = 0; k < D; ++k) r.v[i][k] = p[i * D + k];
+  return r;
+}
+
+std::vector<Vec2> ring(const py::object& obj, const std::string& what) {
+  Array a = py::cast<Array>(obj);
+  if (a.ndim() != 2 || a.shape(1) != 2)
+    throw InvalidInput(what + ": expected an (n, 2) array of vertices, got shape " + shape_text(a));
+  std::vector<Vec2> r(static_cast<std::size_t>(a.shape(0)));
+  const double* p = a.data();
+  for (std::size_t i = 0; i < r.size(); ++i) r[i] = Vec2(p[2 * i], p[2 * i + 1]);
+  return r;
+}
+
+unsigned thread_count(const py::object& threads) {
+  if (threads.is_none()) return 0;
+  const long n = py::cast<long>(threads);
+  if (n < 0) throw InvalidInput("threads must be None (every core) or a count >= 0, got " + std::to_string(n));
+  return static_cast<unsigned>(n);
+}
+
+Prepare prepare_of(const std::string& s) {
+  if (s == "auto") return Prepare::Auto;
+  if (s == "queries") return Prepare::Queries;
+  if (s == "full") return Prepare::Full;
+  throw InvalidInput("prepare must be \"auto\", \"queries\" or \"full\", got \"" + s + "\"");
+}
+
+const char* kind_name(DepthKind k) {
+  switch (k) {
+    case DepthKind::Minimum: return "minimum";
+    case DepthKind::Directional: return "directional";
+    case DepthKind::Separation: return "separation";
+  }
+  return "minimum";
+}
+
+// ---- numpy output helpers ----
+
+py::array_t<double> vectors(std::size_t n, int d) {
+  return py::array_t<double>(std::vector<py::ssize_t>{static_cast<py::ssize_t>(n), d});
+}
+py::array_t<double> scalars(std::size_t n) { return py::array_t<double>(static_cast<py::ssize_t>(n)); }
+
+/// A batch of one answer given as a single point: (1,) -> 0-d scalar, (1, D) -> (D,).
+py::object squeeze(const py::array& a, bool single) {
+  if (!single) return a;
+  if (a.ndim() == 1) return a.attr("__getitem__")(0);  // numpy scalar (float64 / bool_ / int64)
+  return a.attr("__getitem__")(0);                     // row view (D,)
+}
+
+/// Runs a batch in chunks with a progress bar on sys.stderr, or in one call. run(begin, end) is
+/// called with the GIL released.
+template <class Run>
+void chunked(std::size_t n, bool progress, Run&& run) {
+  if (!progress || n == 0) {
+    py::gil_scoped_release nogil;
+    run(std::size_t{0}, n);
+    return;
+  }
+  py::object err = py::module_::import("sys").attr("stderr");
+  const std::size_t chunk = std::max<std::size_t>(256, (n + 99) / 100);
+  const int width = 40;
+  for (std::size_t b = 0; b < n; b += chunk) {
+    const std::size_t e = std::min(n, b + chunk);
+    {
+      py::gil_scoped_release nogil;
+      run(b, e);
+    }
+    const int filled = static_cast<int>(static_cast<double>(e) / static_cast<double>(n) * width);
+    std::string bar = "\rpendepth [" + std::string(filled, '#') + std::string(width - filled, '.') + "] " +
+                      std::to_string(e) + "/" + std::to_string(n);
+    if (e == n) bar += "\n";
+    err.attr("write")(bar);
+    err.attr("flush")();
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+  }
+}
+
+// ---- wrappers keeping what pickling needs ----
+
+struct PyPair2 {
+  Pair2 pair;
+  std::string prepare;
+};
+
+struct PyPair3 {
+  Pair3 pair;
+  std::string prepare;
+};
+
+/// Results of a 2D batch (or of one query given as a single point).
+struct Result2 {
+  py::object depth, translation, normal, witness_p, witness_q, feature_p, feature_q, overlapping;
+  std::string kind, engine;
+  py::object pair, offsets, directions;
+  std::size_t size = 0;
+  bool single = false;
+};
+
+struct Result3 {
+  py::object depth, translation, normal, facet_normal, witness_p, witness_q, feature_p, feature_q,
+      lower_bound, upper_bound, candidates, overlapping;
+  std::string kind;
+  std::size_t size = 0;
+  bool single = false;
+};
+
+template <class V>
+void put(double* p, std::size_t i, const V& v) {
+  for (int k = 0; k < v.size(); ++k) p[i * v.size() + k] = v[k];
+}
+
+py::array_t<std::int64_t> features(std::size_t n) {
+  return py::array_t<std::int64_t>(std::vector<py::ssize_t>{static_cast<py::ssize_t>(n), 2});
+}
+
+Result2 result2(const std::vector<Depth2>& out, bool single, const py::object& pair, py::object offsets,
+                py::object directions, DepthKind kind, const std::string& engine) {
+  const std::size_t n = out.size();
+  auto depth = scalars(n);
+  auto tr = vectors(n, 2), nr = vectors(n, 2), wp = vectors(n, 2), wq = vectors(n, 2);
+  auto fp = features(n), fq = features(n);
+  py::array_t<bool> ov(static_cast<py::ssize_t>(n));
+  double *pd = depth.mutable_data(), *pt = tr.mutable_data(), *pn = nr.mutable_data(), *pp = wp.mutable_data(),
+         *pq = wq.mutable_data();
+  std::int64_t *pfp = fp.mutable_data(), *pfq = fq.mutable_data();
+  bool* po = ov.mutable_data();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Depth2& r = out[i];
+    pd[i] = r.depth;
+    put(pt, i, r.translation);
+    put(pn, i, r.normal);
+    put(pp, i, r.witness_p);
+    put(pq, i, r.witness_q);
+    pfp[2 * i] = static_cast<int>(r.feature_p.kind);
+    pfp[2 * i + 1] = r.feature_p.index;
+    pfq[2 * i] = static_cast<int>(r.feature_q.kind);
+    pfq[2 * i + 1] = r.feature_q.index;
+    po[i] = r.overlapping;
+  }
+  Result2 r;
+  r.depth = squeeze(depth, single);
+  r.translation = squeeze(tr, single);
+  r.normal = squeeze(nr, single);
+  r.witness_p = squeeze(wp, single);
+  r.witness_q = squeeze(wq, single);
+  r.feature_p = squeeze(fp, single);
+  r.feature_q = squeeze(fq, single);
+  r.overlapping = squeeze(ov, single);
+  r.kind = kind_name(kind);
+  r.engine = engine;
+  r.pair = pair;
+  r.offsets = std::move(offsets);
+  r.directions = std::move(directions);
+  r.size = n;
+  r.single = single;
+  return r;
+}
+
+Result3 result3(const std::vector<Depth3>& out, bool single, DepthKind kind) {
+  const std::size_t n = out.size();
+  auto depth = scalars(n), lo = scalars(n), hi = scalars(n);
+  auto tr = vectors(n, 3), nr = vectors(n, 3), fn = vectors(n, 3), wp = vectors(n, 3), wq = vectors(n, 3);
+  auto fp = features(n), fq = features(n);
+  py::array_t<std::int64_t> cand(static_cast<py::ssize_t>(n));
+  py::array_t<bool> ov(static_cast<py::ssize_t>(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    const Depth3& r = out[i];
+    depth.mutable_data()[i] = r.depth;
+    lo.mutable_data()[i] = r.lower_bound;
+    hi.mutable_data()[i] = r.upper_bound;
+    put(tr.mutable_data(), i, r.translation);
+    put(nr.mutable_data(), i, r.normal);
+    put(fn.mutable_data(), i, r.facet_normal);
+    put(wp.mutable_data(), i, r.witness_p);
+    put(wq.mutable_data(), i, r.witness_q);
+    fp.mutable_data()[2 * i] = static_cast<int>(r.feature_p.kind);
+    fp.mutable_data()[2 * i + 1] = r.feature_p.index;
+    fq.mutable_data()[2 * i] = static_cast<int>(r.feature_q.kind);
+    fq.mutable_data()[2 * i + 1] = r.feature_q.index;
+    cand.mutable_data()[i] = static_cast<std::int64_t>(r.candidates);
+    ov.mutable_data()[i] = r.overlapping;
+  }
+  Result3 r;
+  r.depth = squeeze(depth, single);
+  r.lower_bound = squeeze(lo, single);
+  r.upper_bound = squeeze(hi, single);
+  r.translation = squeeze(tr, single);
+  r.normal = squeeze(nr, single);
+  r.facet_normal = squeeze(fn, single);
+  r.witness_p = squeeze(wp, single);
+  r.witness_q = squeeze(wq, single);
+  r.feature_p = squeeze(fp, single);
+  r.feature_q = squeeze(fq, single);
+  r.candidates = squeeze(cand, single);
+  r.overlapping = squeeze(ov, single);
+  r.kind = kind_name(kind);
+  r.size = n;
+  r.single = single;
+  return r;
+}
+
+template <int D>
+py::array_t<double> to_array(const std::vector<Eigen::Matrix<double, D, 1>>& v) {
+  auto a = vectors(v.size(), D);
+  for (std::size_t i = 0; i < v.size(); ++i) put(a.mutable_data(), i, v[i]);
+  return a;
+}
+
+py::list rings_of(const Shape2& s) {
+  py::list l;
+  for (const auto& r : s.rings()) l.append(to_array<2>(r));
+  return l;
+}
+
+Shape2 make_shape2(const py::object& outer, const py::object& holes, const std::string& name) {
+  if (py::hasattr(outer, "exterior") && py::hasattr(outer, "interiors")) {
+    // A shapely Polygon (or anything shaped like one): its rings' coordinates, x and y.
+    if (!holes.is_none() && py::len(holes) != 0)
+      throw InvalidInput(name + ": holes given both in the polygon object and as holes=");
+    py::module_ np = py::module_::import("numpy");
+    auto coords = [&](const py::handle& r) -> py::object {
+      py::object a = np.attr("asarray")(py::list(r.attr("coords")), "float64");
+      if (a.attr("ndim").cast<int>() == 2 && a.attr("shape").cast<py::tuple>()[1].cast<int>() > 2)
+        a = a.attr("__getitem__")(py::make_tuple(py::slice(0, a.attr("shape").cast<py::tuple>()[0].cast<py::ssize_t>(), 1),
+                                                  py::slice(0, 2, 1)));
+      return a;
+    };
+    std::vector<std::vector<Vec2>> hs;
+    std::size_t k = 1;
+    for (const py::handle& h : outer.attr("interiors")) hs.push_back(ring(coords(h), name + " hole " + std::to_string(k++)));
+    return Shape2(ring(coords(outer.attr("exterior")), name + " outer ring"), std::move(hs), name);
+  }
+  std::vector<std::vector<Vec2>> hs;
+  if (!holes.is_none()) {
+    std::size_t k = 1;
+    for (const py::handle& h : holes) hs.push_back(ring(py::reinterpret_borrow<py::object>(h), name + " hole " + std::to_string(k++)));
+  }
+  return Shape2(ring(outer, name + " outer ring"), std::move(hs), name);
+}
+
+std::vector<Pose3> poses(const Points<3>& ts, const py::object& rotations, bool& single) {
+  single = ts.single;
+  std::vector<Pose3> ps(ts.v.size());
+  for (std::size_t i = 0; i < ps.size(); ++i) ps[i].translation = ts.v[i];
+  if (rotations.is_none()) return ps;
+  Points<4> qs = points<4>(rotations, "rotations");
+  if (qs.v.size() != ps.size() && qs.v.size() != 1)
+    throw InvalidInput("rotations: " + std::to_string(qs.v.size()) + " quaternions for " + std::to_string(ps.size()) +
+                       " translations (give one, or one per translation)");
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    const Eigen::Vector4d& q = qs.v[qs.v.size() == 1 ? 0 : i];
+    ps[i].rotation = Eigen::Quaterniond(q[0], q[1], q[2], q[3]);  // w, x, y, z
+  }
+  return ps;
+}
+
+/// The checks Pair3's batches make, made before a chunked (progress) run so that a bad entry is
+/// reported by its index in the whole batch and nothing runs.
+void check_poses(const std::vector<Pose3>& ps) {
+  for (std::size_t i = 0; i < ps.size(); ++i) {
+    const std::string what = "batch: pose " + std::to_string(i);
+    front::check_placement(ps[i].translation, what + " translation");
+    if (!front::finite(ps[i].rotation.coeffs()))
+      throw InvalidInput(what + " rotation " + front::text(ps[i].rotation.coeffs()) + " is not finite");
+    if (ps[i].rotation.coeffs().isZero(0)) throw InvalidInput(what + " rotation is the zero quaternion");
+  }
+}
+
+py::object nfp_object(const NoFitPolygonParts& n) {
+  py::list polys;
+  for (const auto& poly : n.polygons) {
+    py::list rings;
+    for (const auto& r : poly) rings.append(to_array<2>(r));
+    polys.append(rings);
+  }
+  py::array_t<double> slits(std::vector<py::ssize_t>{static_cast<py::ssize_t>(n.slits.size()), 2, 2});
+  for (std::size_t i = 0; i < n.slits.size(); ++i)
+    for (int j = 0; j < 2; ++j)
+      for (int k = 0; k < 2; ++k) slits.mutable_data()[4 * i + 2 * j + k] = n.slits[i][j][k];
+  py::object types = py::module_::import("types");
+  return types.attr("SimpleNamespace")(py::arg("polygons") = polys, py::arg("slits") = slits,
+                                       py::arg("points") = to_array<2>(n.points));
+}
+
+constexpr const char* kShape2Doc = R"(A validated 2D shape: a simple polygon, convex or not, possibly with holes.
+
+Shape2(outer, holes=[], name="shape")
+    outer: an (n, 2) array of vertices (either orientation, closing vertex optional), or a
+           shapely Polygon (any object with .exterior.coords and .interiors; then no holes=).
+    holes: a list of (k, 2) arrays.
+Raises pendepth.InvalidInput (a ValueError) naming the shape, the ring (0 = outer, k = hole k)
+and the vertex when the rings are not simple, cross each other, or are degenerate.
+
+A single convex ring is kept in the convex normal form and uses the convex engines. Immutable,
+cheap to copy, picklable (by its rings).)";
+
+constexpr const char* kPair2Doc = R"(A pair of 2D shapes: P fixed, Q moving, with the per-pair work done once.
+
+Pair2(P, Q, prepare="auto")
+    prepare: "queries" (only what every query needs), "full" (every per-pair structure: the
+             depth field of two convex shapes, the no-fit polygon of two non-convex ones), or
+             "auto" (decided from the sizes, see the C++ Prepare).
+Conventions: Q is placed at the offset t (Q + t); the translation in a result is the move to
+apply to Q after t so that the interiors become disjoint (Q + t + translation touches P);
+depth = |translation|; normal = translation / depth (the direction d normalised for along and
+separation); witness points are in world coordinates (P's frame). Touching is not overlapping
+(depth 0). For non-convex shapes overlap means t in O, the open overlap set.
+
+Queries take offsets as an (N, 2) array or one (2,) point, threads=None (every core) or a
+count (1 = the calling thread), and progress=False (True: chunks the batch and draws a
+progress bar on stderr). They release the GIL while they run. Batch answers equal the single
+calls bit for bit, whatever the thread count. Non-finite offsets, zero or non-finite
+directions raise pendepth.InvalidInput naming the index; nothing runs then.
+Picklable (by its two shapes and prepare).)";
+
+constexpr const char* kMinimumDoc = R"(minimum(offsets, threads=None, progress=False) -> Depth2Result
+
+sigma: the shortest translation of Q + t that separates the interiors of P and Q + t.
+offsets: (N, 2) array (results (N,) and (N, 2)) or one (2,) point (scalar results, (2,)
+vectors). depth >= 0; 0 (and zero vectors) when P and Q + t do not overlap. The normal is the
+outward unit normal of M = P + (-Q) (of the boundary of O for non-convex shapes) where the move
+ends. Raises InvalidInput for non-finite offsets.)";
+
+constexpr const char* kAlongDoc = R"(along(offsets, directions, threads=None, progress=False) -> Depth2Result
+
+sigma_d: the shortest translation of Q + t along the direction d that separates the interiors
+(depth >= sigma). directions: (N, 2), one per offset, or one (2,) direction for all; any
+non-zero finite length. translation = depth * d / |d|. Raises InvalidInput for non-finite
+offsets and zero or non-finite directions.)";
+
+constexpr const char* kSeparationDoc = R"(separation(offsets, directions, threads=None, progress=False) -> Depth2Result
+
+Complete separation along d: the shortest move along d after which Q can slide on to infinity
+without overlapping P. Positive also when Q + t does not overlap P but the ray meets P later
+(then overlapping is False). Same arguments as along. Raises InvalidInput for non-finite
+offsets and zero or non-finite directions.)";
+
+constexpr const char* kOverlappingDoc = R"(overlapping(offsets, threads=None, progress=False) -> (N,) bool array or bool
+
+Exact: do the interiors of P and Q + t overlap? Touching placements are not overlapping.
+Raises InvalidInput for non-finite offsets.)";
+
+constexpr const char* kShape3Doc = R"(A validated convex polytope (the convex hull of a point set), hierarchy built once.
+
+Shape3.hull(points, name="points"): points an (n, 3) array. Shape3.from_file(path): .obj, .off
+or .stl (ASCII or binary), the hull of the file's vertices. Raise pendepth.InvalidInput for
+non-finite or flat input (fewer than 4 affinely independent points) and unreadable files.
+Picklable (by its vertices).)";
+
+constexpr const char* kPair3Doc = R"(A pair of convex polytopes: P at the identity pose, Q posed per query.
+
+Pair3(P, Q, prepare="auto")
+Queries take translations of Q as an (N, 3) array or one (3,) point, and rotations=None
+(identity) or quaternions (N, 4) / one (4,) as w, x, y, z (any non-zero length; normalised).
+Results are in the world frame: translation is the move to apply to Q after its pose,
+depth = |translation|, lower_bound == upper_bound == depth (exact methods). threads,
+progress, the GIL and bit-identity as in Pair2. Raises InvalidInput for non-finite
+translations, zero or non-finite quaternions and directions, naming the index.
+Picklable (by its two shapes and prepare).)";
+
+}  // namespace
+
+PYBIND11_MODULE(_pendepth, m) {
+  m.doc() = "pendepth: exact penetration depth of 2D and 3D shapes (the C++ front door, pendepth.hpp).";
+  m.attr("__version__") = "0.1.0";
+  py::options options;
+  options.disable_function_signatures();  // the docstrings start with their Python signatures
+
+  static py::exception<InvalidInput> invalid(m, "InvalidInput", PyExc_ValueError);
+  invalid.attr("__module__") = "pendepth";
+  invalid.attr("__doc__") =
+      "Invalid input (bad shapes, non-finite placements, zero directions, unreadable files): a "
+      "ValueError carrying the C++ message, which names the shape, ring and vertex, or the batch index.";
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const InvalidInput& e) {
+      PyErr_SetString(invalid.ptr(), e.what());
+    }
+  });
+
+  m.attr("FEATURE_NONE") = 0;
+  m.attr("FEATURE_VERTEX") = 1;
+  m.attr("FEATURE_EDGE") = 2;
+  m.attr("FEATURE_FACE") = 3;
+
+  // ---- results ----
+  py::class_<Result2>(m, "Depth2Result", R"(Answers of a 2D query batch (numpy arrays, world frame).
+
+depth (N,), translation (N, 2), normal (N, 2), witness_p (N, 2), witness_q (N, 2),
+overlapping (N,) bool, feature_p / feature_q (N, 2) int64 as [kind, index] (kind 0 none,
+1 vertex, 2 edge), kind ("minimum", "directional", "separation"), engine (the pair's engine).
+A query given as one (2,) point has scalars and (2,) vectors instead.)")
+      .def_readonly("depth", &Result2::depth, "length of the translation, >= 0")
+      .def_readonly("translation", &Result2::translation, "move to apply to Q after its offset t")
+      .def_readonly("normal", &Result2::normal, "unit direction of the translation (0 when not overlapping)")
+      .def_readonly("witness_p", &Result2::witness_p, "point of P's boundary touching the moved Q")
+      .def_readonly("witness_q", &Result2::witness_q, "point of the moved Q's boundary touching P")
+      .def_readonly("feature_p", &Result2::feature_p, "[kind, index] of P's feature at the contact")
+      .def_readonly("feature_q", &Result2::feature_q, "[kind, index] of Q's feature at the contact")
+      .def_readonly("overlapping", &Result2::overlapping, "do the interiors of P and Q + t overlap")
+      .def_readonly("kind", &Result2::kind)
+      .def_readonly("engine", &Result2::engine)
+      .def_readonly("pair", &Result2::pair, "the Pair2 asked")
+      .def_readonly("offsets", &Result2::offsets, "the offsets asked, (N, 2) or (2,)")
+      .def_readonly("directions", &Result2::directions, "the directions asked, or None")
+      .def("__len__", [](const Result2& r) { return r.size; })
+      .def("__repr__", [](const Result2& r) {
+        return "<pendepth.Depth2Result " + r.kind + ", " + (r.single ? "one placement" : std::to_string(r.size) + " placements") +
+               ", engine " + r.engine + ">";
+      });
+
+  py::class_<Result3>(m, "Depth3Result", R"(Answers of a 3D query batch (numpy arrays, world frame).
+
+depth (N,), translation, normal, facet_normal, witness_p, witness_q (N, 3), lower_bound,
+upper_bound (N,) (equal to depth: exact methods), candidates (N,) int64 (work counter),
+overlapping (N,) bool, feature_p / feature_q (N, 2) int64 [kind, index] (kind 0 none,
+1 vertex, 2 edge = level-0 half-edge id, 3 face = triangle id), kind. A query given as one
+(3,) point has scalars and (3,) vectors instead.)")
+      .def_readonly("depth", &Result3::depth)
+      .def_readonly("translation", &Result3::translation)
+      .def_readonly("normal", &Result3::normal)
+      .def_readonly("facet_normal", &Result3::facet_normal)
+      .def_readonly("witness_p", &Result3::witness_p)
+      .def_readonly("witness_q", &Result3::witness_q)
+      .def_readonly("feature_p", &Result3::feature_p)
+      .def_readonly("feature_q", &Result3::feature_q)
+      .def_readonly("lower_bound", &Result3::lower_bound)
+      .def_readonly("upper_bound", &Result3::upper_bound)
+      .def_readonly("candidates", &Result3::candidates)
+      .def_readonly("overlapping", &Result3::overlapping)
+      .def_readonly("kind", &Result3::kind)
+      .def("__len__", [](const Result3& r) { return r.size; })
+      .def("__repr__", [](const Result3& r) {
+        return "<pendepth.Depth3Result " + r.kind + ", " + (r.single ? "one pose" : std::to_string(r.size) + " poses") + ">";
+      });
+
+  // ---- Shape2 ----
+  py::class_<Shape2>(m, "Shape2", kShape2Doc)
+      .def(py::init(&make_shape2), py::arg("outer"), py::arg("holes") = py::none(), py::arg("name") = "shape")
+      .def_static("from_wkt", [](const std::string& text, const std::string& name) { return Shape2::from_wkt(text, name); },
+                  py::arg("text"), py::arg("name") = "shape",
+                  "from_wkt(text, name=\"shape\") -> Shape2\n\nOne POLYGON ((...), (...)) in WKT. Raises InvalidInput \"NAME:LINE: problem\".")
+      .def_static("from_file", [](const std::string& path, const std::string& name) { return Shape2::from_file(path, name); },
+                  py::arg("path"), py::arg("name") = "shape",
+                  "from_file(path, name=\"shape\") -> Shape2\n\nA .wkt file. Raises InvalidInput \"PATH:LINE: problem\".")
+      .def_property_readonly("is_convex", &Shape2::is_convex)
+      .def_property_readonly("hole_count", &Shape2::hole_count)
+      .def_property_readonly("name", &Shape2::name)
+      .def("rings", &rings_of,
+           "rings() -> list of (k, 2) arrays\n\nThe rings in normal form: the outer ring counter-clockwise first, then the holes clockwise, as (k, 2) arrays.")
+      .def("input_vertex", [](const Shape2& s, std::size_t v) { auto a = s.input_vertex(v); return py::make_tuple(a[0], a[1]); },
+           py::arg("vertex"), "input_vertex(vertex) -> (ring, index)\n\n(ring, index) as given on input of the vertex a result feature names.")
+      .def("__len__", &Shape2::size)
+      .def("__repr__", [](const Shape2& s) {
+        return "<pendepth.Shape2 '" + s.name() + "': " + std::to_string(s.size()) + " vertices, " +
+               (s.is_convex() ? "convex" : std::to_string(s.hole_count()) + " holes") + ">";
+      })
+      .def(py::pickle([](const Shape2& s) { return py::make_tuple(rings_of(s), s.name()); },
+                      [](const py::tuple& st) {
+                        py::list rings = st[0];
+                        py::list holes;
+                        for (std::size_t k = 1; k < rings.size(); ++k) holes.append(rings[k]);
+                        return make_shape2(rings[0], holes, st[1].cast<std::string>());
+                      }));
+
+  m.def("no_fit_polygon", [](const Shape2& P, const Shape2& Q) {
+        NoFitPolygonParts n;
+        {
+          py::gil_scoped_release nogil;
+          n = no_fit_polygon(P, Q);
+        }
+        return nfp_object(n);
+      }, py::arg("P"), py::arg("Q"),
+      R"(no_fit_polygon(P, Q) -> namespace(polygons, slits, points)
+
+The no-fit polygon of P and Q: the boundary of O = {t : int P and int(Q + t) overlap}.
+
+Returns a namespace with polygons (a list of polygons, each a list of rings as (k, 2) arrays:
+outer counter-clockwise, then holes clockwise), slits ((s, 2, 2): touching segments inside O)
+and points ((p, 2): exact fits). Vertices rounded to the nearest double.)");
+
+  // ---- Pair2 ----
+  py::class_<PyPair2>(m, "Pair2", kPair2Doc)
+      .def(py::init([](const Shape2& P, const Shape2& Q, const std::string& prepare) {
+             const Prepare p = prepare_of(prepare);
+             py::gil_scoped_release nogil;
+             return PyPair2{Pair2(P, Q, p), prepare};
+           }),
+           py::arg("P"), py::arg("Q"), py::arg("prepare") = "auto")
+      .def_property_readonly("P", [](const PyPair2& p) { return p.pair.P(); })
+      .def_property_readonly("Q", [](const PyPair2& p) { return p.pair.Q(); })
+      .def_property_readonly("prepare", [](const PyPair2& p) { return p.prepare; })
+      .def_property_readonly("engine", [](const PyPair2& p) { return std::string(to_string(p.pair.engine())); },
+                             "The engine answering: \"convex\", \"polygon-convex\", \"convex-polygon\" (P convex, Q a polygon), \"pair-per-query\" or \"no-fit-polygon\".")
+      .def("no_fit_polygon", [](const PyPair2& p) {
+             const NoFitPolygonParts* n;
+             {
+               py::gil_scoped_release nogil;
+               n = &p.pair.no_fit_polygon();
+             }
+             return nfp_object(*n);
+           }, "no_fit_polygon() -> namespace(polygons, slits, points)\n\nThe pair's no-fit polygon (see pendepth.no_fit_polygon), built on first use.")
+      .def("overlapping", [](const py::object& self, const py::object& offsets, const py::object& threads, bool progress) -> py::object {
+             const PyPair2& p = self.cast<const PyPair2&>();
+             Points<2> ts = points<2>(offsets, "offsets");
+             const unsigned th = thread_count(threads);
+             std::unique_ptr<bool[]> out(new bool[ts.v.size()]());
+             if (progress) front::check_batch<Vec2>(ts.v, {}, ts.v.size(), false);
+             chunked(ts.v.size(), progress, [&](std::size_t b, std::size_t e) {
+               std::span<bool> o(out.get() + b, e - b);
+               p.pair.overlapping(std::span<const Vec2>(ts.v).subspan(b, e - b), o, th);
+             });
+             if (ts.single) return py::bool_(out[0]);
+             py::array_t<bool> a(static_cast<py::ssize_t>(ts.v.size()));
+             std::copy(out.get(), out.get() + ts.v.size(), a.mutable_data());
+             return a;
+           }, py::arg("offsets"), py::kw_only(), py::arg("threads") = py::none(), py::arg("progress") = false, kOverlappingDoc)
+      .def("minimum", [](const py::object& self, const py::object& offsets, const py::object& threads, bool progress) {
+             const PyPair2& p = self.cast<const PyPair2&>();
+             Points<2> ts = points<2>(offsets, "offsets");
+             const unsigned th = thread_count(threads);
+             std::vector<Depth2> out(ts.v.size());
+             if (progress) front::check_batch<Vec2>(ts.v, {}, out.size(), false);
+             chunked(ts.v.size(), progress, [&](std::size_t b, std::size_t e) {
+               p.pair.minimum(std::span<const Vec2>(ts.v).subspan(b, e - b), std::span<Depth2>(out).subspan(b, e - b), th);
+             });
+             return result2(out, ts.single, self, Array(py::cast<Array>(offsets)).attr("copy")(), py::none(),
+                            DepthKind::Minimum, to_string(p.pair.engine()));
+           }, py::arg("offsets"), py::kw_only(), py::arg("threads") = py::none(), py::arg("progress") = false, kMinimumDoc)
+      .def("along", [](const py::object& self, const py::object& offsets, const py::object& directions, const py::object& threads,
+                       bool progress) {
+             const PyPair2& p = self.cast<const PyPair2&>();
+             Points<2> ts = points<2>(offsets, "offsets");
+             Points<2> ds = points<2>(directions, "directions");
+             const unsigned th = thread_count(threads);
+             std::vector<Depth2> out(ts.v.size());
+             if (progress) front::check_batch<Vec2>(ts.v, ds.v, out.size(), true);
+             const bool one = ds.v.size() == 1;
+             chunked(ts.v.size(), progress, [&](std::size_t b, std::size_t e) {
+               // one direction for all, or a count mismatch the C++ batch reports: pass ds whole
+               std::span<const Vec2> d = one || ds.v.size() != ts.v.size() ? std::span<const Vec2>(ds.v)
+                                                                            : std::span<const Vec2>(ds.v).subspan(b, e - b);
+               p.pair.along(std::span<const Vec2>(ts.v).subspan(b, e - b), d, std::span<Depth2>(out).subspan(b, e - b), th);
+             });
+             return result2(out, ts.single, self, py::cast<Array>(offsets).attr("copy")(), py::cast<Array>(directions).attr("copy")(),
+                            DepthKind::Directional, to_string(p.pair.engine()));
+           }, py::arg("offsets"), py::arg("directions"), py::kw_only(), py::arg("threads") = py::none(),
+           py::arg("progress") = false, kAlongDoc)
+      .def("separation", [](const py::object& self, const py::object& offsets, const py::object& directions,
+                            const py::object& threads, bool progress) {
+             const PyPair2& p = self.cast<const PyPair2&>();
+             Points<2> ts = points<2>(offsets, "offsets");
+             Points<2> ds = points<2>(directions, "directions");
+             const unsigned th = thread_count(threads);
+             std::vector<Depth2> out(ts.v.size());
+             if (progress) front::check_batch<Vec2>(ts.v, ds.v, out.size(), true);
+             const bool one = ds.v.size() == 1;
+             chunked(ts.v.size(), progress, [&](std::size_t b, std::size_t e) {
+               std::span<const Vec2> d = one || ds.v.size() != ts.v.size() ? std::span<const Vec2>(ds.v)
+                                                                            : std::span<const Vec2>(ds.v).subspan(b, e - b);
+               p.pair.separation(std::span<const Vec2>(ts.v).subspan(b, e - b), d, std::span<Depth2>(out).subspan(b, e - b), th);
+             });
+             return result2(out, ts.single, self, py::cast<Array>(offsets).attr("copy")(), py::cast<Array>(directions).attr("copy")(),
+                            DepthKind::Separation, to_string(p.pair.engine()));
+           }, py::arg("offsets"), py::arg("directions"), py::kw_only(), py::arg("threads") = py::none(),
+           py::arg("progress") = false, kSeparationDoc)
+      .def("__repr__", [](const PyPair2& p) {
+        return "<pendepth.Pair2 P='" + p.pair.P().name() + "' Q='" + p.pair.Q().name() + "' engine " +
+               to_string(p.pair.engine()) + ", prepare \"" + p.prepare + "\">";
+      })
+      .def(py::pickle([](const PyPair2& p) { return py::make_tuple(p.pair.P(), p.pair.Q(), p.prepare); },
+                      [](const py::tuple& st) {
+                        const std::string prep = st[2].cast<std::string>();
+                        return PyPair2{Pair2(st[0].cast<Shape2>(), st[1].cast<Shape2>(), prepare_of(prep)), prep};
+                      }));
+
+  // ---- Shape3 ----
+  py::class_<Shape3>(m, "Shape3", kShape3Doc)
+      .def_static("hull", [](const py::object& pts, const std::string& name) {
+                    Array a = py::cast<Array>(pts);
+                    if (a.ndim() != 2 || a.shape(1) != 3)
+                      throw InvalidInput(name + ": expected an (n, 3) array of points, got shape " + shape_text(a));
+                    std::vector<Vec3> v(static_cast<std::size_t>(a.shape(0)));
+                    for (std::size_t i = 0; i < v.size(); ++i) v[i] = Vec3(a.data()[3 * i], a.data()[3 * i + 1], a.data()[3 * i + 2]);
+                    py::gil_scoped_release nogil;
+                    return Shape3::hull(v, name);
+                  }, py::arg("points"), py::arg("name") = "points",
+                  "hull(points, name=\"points\") -> Shape3\n\nExact convex hull of an (n, 3) array. Raises InvalidInput for non-finite or flat input.")
+      .def_static("from_file", [](const std::string& path, const std::string& name) { return Shape3::from_file(path, name); },
+                  py::arg("path"), py::arg("name") = "shape",
+                  "from_file(path, name=\"shape\") -> Shape3\n\nThe hull of a .obj, .off or .stl file's vertices. Raises InvalidInput \"PATH:LINE: problem\".")
+      .def_property_readonly("name", &Shape3::name)
+      .def_property_readonly("vertices", [](const Shape3& s) {
+             auto v = s.polytope().vertices();
+             return to_array<3>(std::vector<Vec3>(v.begin(), v.end()));
+           }, "The hull's vertices, (n, 3).")
+      .def_property_readonly("triangles", [](const Shape3& s) {
+             auto t = s.polytope().triangles();
+             py::array_t<std::int64_t> a(std::vector<py::ssize_t>{static_cast<py::ssize_t>(t.size()), 3});
+             for (std::size_t i = 0; i < t.size(); ++i)
+               for (int k = 0; k < 3; ++k) a.mutable_data()[3 * i + k] = t[i][k];
+             return a;
+           }, "The hull's triangles (indices into vertices, counter-clockwise seen from outside), (k, 3).")
+      .def("__len__", &Shape3::size)
+      .def("__repr__", [](const Shape3& s) { return "<pendepth.Shape3 '" + s.name() + "': " + std::to_string(s.size()) + " vertices>"; })
+      .def(py::pickle([](const Shape3& s) {
+                        auto v = s.polytope().vertices();
+                        return py::make_tuple(to_array<3>(std::vector<Vec3>(v.begin(), v.end())), s.name());
+                      },
+                      [](const py::tuple& st) {
+                        Array a = py::cast<Array>(st[0]);
+                        std::vector<Vec3> v(static_cast<std::size_t>(a.shape(0)));
+                        for (std::size_t i = 0; i < v.size(); ++i) v[i] = Vec3(a.data()[3 * i], a.data()[3 * i + 1], a.data()[3 * i + 2]);
+                        return Shape3::hull(v, st[1].cast<std::string>());
+                      }));
+
+  // ---- Pair3 ----
+  auto pose_batch = [](const py::object& translations, const py::object& rotations, bool& single) {
+    Points<3> ts = points<3>(translations, "translations");
+    return poses(ts, rotations, single);
+  };
+  py::class_<PyPair3>(m, "Pair3", kPair3Doc)
+      .def(py::init([](const Shape3& P, const Shape3& Q, const std::string& prepare) {
+             return PyPair3{Pair3(P, Q, prepare_of(prepare)), prepare};
+           }),
+           py::arg("P"), py::arg("Q"), py::arg("prepare") = "auto")
+      .def_property_readonly("P", [](const PyPair3& p) { return p.pair.P(); })
+      .def_property_readonly("Q", [](const PyPair3& p) { return p.pair.Q(); })
+      .def_property_readonly("prepare", [](const PyPair3& p) { return p.prepare; })
+      .def("overlapping", [pose_batch](const PyPair3& p, const py::object& translations, const py::object& rotations,
+                                       const py::object& threads, bool progress) -> py::object {
+             bool single = false;
+             std::vector<Pose3> ps = pose_batch(translations, rotations, single);
+             const unsigned th = thread_count(threads);
+             std::unique_ptr<bool[]> out(new bool[ps.size()]());
+             if (progress) check_poses(ps);
+             chunked(ps.size(), progress, [&](std::size_t b, std::size_t e) {
+               p.pair.overlapping(std::span<const Pose3>(ps).subspan(b, e - b), std::span<bool>(out.get() + b, e - b), th);
+             });
+             if (single) return py::bool_(out[0]);
+             py::array_t<bool> a(static_cast<py::ssize_t>(ps.size()));
+             std::copy(out.get(), out.get() + ps.size(), a.mutable_data());
+             return a;
+           }, py::arg("translations"), py::arg("rotations") = py::none(), py::kw_only(), py::arg("threads") = py::none(),
+           py::arg("progress") = false,
+           "overlapping(translations, rotations=None, threads=None, progress=False) -> (N,) bool or bool\n\n"
+           "Exact: do the interiors of P and the posed Q overlap? Touching is not overlapping.")
+      .def("minimum", [pose_batch](const PyPair3& p, const py::object& translations, const py::object& rotations,
+                                   const py::object& threads, bool progress) {
+             bool single = false;
+             std::vector<Pose3> ps = pose_batch(translations, rotations, single);
+             const unsigned th = thread_count(threads);
+             std::vector<Depth3> out(ps.size());
+             if (progress) check_poses(ps);
+             chunked(ps.size(), progress, [&](std::size_t b, std::size_t e) {
+               p.pair.minimum(std::span<const Pose3>(ps).subspan(b, e - b), std::span<Depth3>(out).subspan(b, e - b), th);
+             });
+             return result3(out, single, DepthKind::Minimum);
+           }, py::arg("translations"), py::arg("rotations") = py::none(), py::kw_only(), py::arg("threads") = py::none(),
+           py::arg("progress") = false,
+           "minimum(translations, rotations=None, threads=None, progress=False) -> Depth3Result\n\n"
+           "sigma, exact: the shortest translation of the posed Q separating the interiors (world frame);\n"
+           "lower_bound == upper_bound == depth. 0 and zero vectors when not overlapping.\n"
+           "rotations: None, (N, 4) or one (4,) quaternion w, x, y, z.")
+      .def("along", [pose_batch](const PyPair3& p, const py::object& translations, const py::object& directions,
+                                 const py::object& rotations, const py::object& threads, bool progress) {
+             bool single = false;
+             std::vector<Pose3> ps = pose_batch(translations, rotations, single);
+             Points<3> ds = points<3>(directions, "directions");
+             const unsigned th = thread_count(threads);
+             std::vector<Depth3> out(ps.size());
+             const bool one = ds.v.size() == 1;
+             if (progress) {
+               check_poses(ps);
+               if (!one && ds.v.size() != ps.size())
+                 throw InvalidInput("batch: " + std::to_string(ds.v.size()) + " directions for " + std::to_string(ps.size()) +
+                                    " poses (give one direction, or one per pose)");
+               for (std::size_t i = 0; i < ds.v.size(); ++i) front::unit_scale(ds.v[i], "batch: direction " + std::to_string(i));
+             }
+             chunked(ps.size(), progress, [&](std::size_t b, std::size_t e) {
+               std::span<const Vec3> d = one || ds.v.size() != ps.size() ? std::span<const Vec3>(ds.v)
+                                                                         : std::span<const Vec3>(ds.v).subspan(b, e - b);
+               p.pair.along(std::span<const Pose3>(ps).subspan(b, e - b), d, std::span<Depth3>(out).subspan(b, e - b), th);
+             });
+             return result3(out, single, DepthKind::Directional);
+           }, py::arg("translations"), py::arg("directions"), py::arg("rotations") = py::none(), py::kw_only(),
+           py::arg("threads") = py::none(), py::arg("progress") = false,
+           "along(translations, directions, rotations=None, threads=None, progress=False) -> Depth3Result\n\n"
+           "sigma_d, exact: the shortest translation of the posed Q along d (world frame) separating the\n"
+           "interiors; directions (N, 3) or one (3,) for all, any non-zero finite length.\n"
+           "Raises InvalidInput for zero or non-finite directions.")
+      .def("__repr__", [](const PyPair3& p) {
+        return "<pendepth.Pair3 P='" + p.pair.P().name() + "' Q='" + p.pair.Q().name() + "'>";
+      })
+      .def(py::pickle([](const PyPair3& p) { return py::make_tuple(p.pair.P(), p.pair.Q(), p.prepare); },
+                      [](const py::tuple& st) {
+                        const std::string prep = st[2].cast<std::string>();
+                        return PyPair3{Pair3(st[0].cast<Shape3>(), st[1].cast<Shape3>(), prepare_of(prep)), prep};
+                      }));
+}
