@@ -69,7 +69,7 @@ def _block3(x, pair, method, direction, threads):
 def _map(pair, placements, method, direction, threads):
     is3 = isinstance(pair, _pendepth.Pair3)
     if is3:
-        width = (3, 7) if direction is not None else (6, 10)
+        width = (3, 7) if direction is not None or method == "minimum" else (6, 10)
     else:
         width = (2,) if direction is not None or method == "minimum" else (4,)
     x = _as_array(placements, width)

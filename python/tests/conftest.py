@@ -21,10 +21,8 @@ import pendepth  # noqa: E402
 
 def star(rng, n, convex=False, radius=1.0, center=(0.0, 0.0)):
     """A random simple polygon, star-shaped around `center` (convex: points on an ellipse)."""
-    ang = np.sort(rng.uniform(0, 2 * np.pi, n))
-    ang = ang[np.concatenate([[True], np.diff(ang) > 1e-3])]
-    if len(ang) < 3:
-        ang = np.array([0.0, 2.1, 4.2])
+    n = max(n, 4)  # one angle per sector of 2 pi / n: consecutive gaps < pi, so the star is simple
+    ang = 2 * np.pi * (np.arange(n) + rng.uniform(0.1, 0.9, n)) / n
     if convex:
         a, b = radius * rng.uniform(0.5, 1.5), radius * rng.uniform(0.5, 1.5)
         pts = np.column_stack([a * np.cos(ang), b * np.sin(ang)])
