@@ -42,7 +42,7 @@ Depth2Result._repr_svg_ = _svg.result_svg
 
 __all__ = [
     "Shape2", "Pair2", "Shape3", "Pair3", "Depth2Result", "Depth3Result", "InvalidInput",
-    "no_fit_polygon", "plot", "FEATURE_NONE", "FEATURE_VERTEX", "FEATURE_EDGE", "FEATURE_FACE",
+    "no_fit_polygon", "plot", "FEATURE_NONE", "FEATURE_VERTEX", "FEATURE_EDGE", "FEATURE_FACE", "__version__",
 ]
 
 
