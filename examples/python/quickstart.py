@@ -23,7 +23,7 @@ a = pair.along(t, [0, 1])    # sigma_d: move up only
 print(f"sigma_d = {a.depth!r}  along (0, 1)")
 
 # A batch over every core: (N, 2) offsets, the single calls' answers bit for bit.
-ts = np.column_stack([np.linspace(-2, 8, 1000), np.full(1000, 1.5)])
+ts = np.column_stack([-2 + 0.01 * np.arange(1000), np.full(1000, 1.5)])
 r = pair.minimum(ts)
 print(f"batch   : {int(r.overlapping.sum())} of {len(ts)} placements overlap, deepest {r.depth.max()}")
 assert r.depth[300] == pair.minimum(ts[300]).depth

@@ -422,7 +422,7 @@ Picklable (by its two shapes and prepare).)";
 
 PYBIND11_MODULE(_pendepth, m) {
   m.doc() = "pendepth: exact penetration depth of 2D and 3D shapes (the C++ front door, pendepth.hpp).";
-  m.attr("__version__") = "0.1.0";
+  m.attr("__version__") = PENDEPTH_VERSION;  // the CMake project version
   py::options options;
   options.disable_function_signatures();  // the docstrings start with their Python signatures
 
