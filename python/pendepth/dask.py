@@ -62,7 +62,7 @@ def _block3(x, pair, method, direction, threads):
         r = pair.minimum(t, rot, threads=threads)
     else:
         d = x[:, -3:] if direction is None else direction
-        r = pair.along(t, np.ascontiguousarray(d), rot, threads=threads)
+        r = getattr(pair, method)(t, np.ascontiguousarray(d), rot, threads=threads)
     return records(r)
 
 
@@ -95,7 +95,5 @@ def along(pair, placements, direction=None, threads=1):
 
 
 def separation(pair, placements, direction=None, threads=1):
-    """Complete separation along d (2D pairs), arguments as along."""
-    if isinstance(pair, _pendepth.Pair3):
-        raise _pendepth.InvalidInput("separation: 2D pairs only (for convex polytopes it equals along)")
+    """Complete separation along d, arguments as along."""
     return _map(pair, placements, "separation", direction, threads)

@@ -342,6 +342,29 @@ py::object nfp_object(const NoFitPolygonParts& n) {
                                        py::arg("points") = to_array<2>(n.points));
 }
 
+Result3 along3(const PyPair3& p, const py::object& translations, const py::object& directions, const py::object& rotations,
+               const py::object& threads, bool progress, DepthKind kind) {
+  bool single = false;
+  std::vector<Pose3> ps = poses(points<3>(translations, "translations"), rotations, single);
+  Points<3> ds = points<3>(directions, "directions");
+  const unsigned th = thread_count(threads);
+  std::vector<Depth3> out(ps.size());
+  const bool one = ds.v.size() == 1;
+  if (progress) {
+    check_poses(ps);
+    if (!one && ds.v.size() != ps.size())
+      throw InvalidInput("batch: " + std::to_string(ds.v.size()) + " directions for " + std::to_string(ps.size()) +
+                         " poses (give one direction, or one per pose)");
+    for (std::size_t i = 0; i < ds.v.size(); ++i) front::unit_scale(ds.v[i], "batch: direction " + std::to_string(i));
+  }
+  chunked(ps.size(), progress, [&](std::size_t b, std::size_t e) {
+    std::span<const Vec3> d = one || ds.v.size() != ps.size() ? std::span<const Vec3>(ds.v)
+                                                              : std::span<const Vec3>(ds.v).subspan(b, e - b);
+    p.pair.along(std::span<const Pose3>(ps).subspan(b, e - b), d, std::span<Depth3>(out).subspan(b, e - b), th);
+  });
+  return result3(out, single, kind);
+}
+
 constexpr const char* kShape2Doc = R"(A validated 2D shape: a simple polygon, convex or not, possibly with holes.
 
 Shape2(outer, holes=[], name="shape")
@@ -723,33 +746,24 @@ and points ((p, 2): exact fits). Vertices rounded to the nearest double.)");
            "sigma, exact: the shortest translation of the posed Q separating the interiors (world frame);\n"
            "lower_bound == upper_bound == depth. 0 and zero vectors when not overlapping.\n"
            "rotations: None, (N, 4) or one (4,) quaternion w, x, y, z.")
-      .def("along", [pose_batch](const PyPair3& p, const py::object& translations, const py::object& directions,
-                                 const py::object& rotations, const py::object& threads, bool progress) {
-             bool single = false;
-             std::vector<Pose3> ps = pose_batch(translations, rotations, single);
-             Points<3> ds = points<3>(directions, "directions");
-             const unsigned th = thread_count(threads);
-             std::vector<Depth3> out(ps.size());
-             const bool one = ds.v.size() == 1;
-             if (progress) {
-               check_poses(ps);
-               if (!one && ds.v.size() != ps.size())
-                 throw InvalidInput("batch: " + std::to_string(ds.v.size()) + " directions for " + std::to_string(ps.size()) +
-                                    " poses (give one direction, or one per pose)");
-               for (std::size_t i = 0; i < ds.v.size(); ++i) front::unit_scale(ds.v[i], "batch: direction " + std::to_string(i));
-             }
-             chunked(ps.size(), progress, [&](std::size_t b, std::size_t e) {
-               std::span<const Vec3> d = one || ds.v.size() != ps.size() ? std::span<const Vec3>(ds.v)
-                                                                         : std::span<const Vec3>(ds.v).subspan(b, e - b);
-               p.pair.along(std::span<const Pose3>(ps).subspan(b, e - b), d, std::span<Depth3>(out).subspan(b, e - b), th);
-             });
-             return result3(out, single, DepthKind::Directional);
+      .def("along", [](const PyPair3& p, const py::object& translations, const py::object& directions,
+                       const py::object& rotations, const py::object& threads, bool progress) {
+             return along3(p, translations, directions, rotations, threads, progress, DepthKind::Directional);
            }, py::arg("translations"), py::arg("directions"), py::arg("rotations") = py::none(), py::kw_only(),
            py::arg("threads") = py::none(), py::arg("progress") = false,
            "along(translations, directions, rotations=None, threads=None, progress=False) -> Depth3Result\n\n"
            "sigma_d, exact: the shortest translation of the posed Q along d (world frame) separating the\n"
            "interiors; directions (N, 3) or one (3,) for all, any non-zero finite length.\n"
            "Raises InvalidInput for zero or non-finite directions.")
+      .def("separation", [](const PyPair3& p, const py::object& translations, const py::object& directions,
+                            const py::object& rotations, const py::object& threads, bool progress) {
+             // Pair3::separation is along with kind Separation (the ray leaves the convex M once)
+             return along3(p, translations, directions, rotations, threads, progress, DepthKind::Separation);
+           }, py::arg("translations"), py::arg("directions"), py::arg("rotations") = py::none(), py::kw_only(),
+           py::arg("threads") = py::none(), py::arg("progress") = false,
+           "separation(translations, directions, rotations=None, threads=None, progress=False) -> Depth3Result\n\n"
+           "Complete separation along d: for convex shapes the ray leaves M once, so this is sigma_d\n"
+           "(along) with kind \"separation\". Raises InvalidInput for zero or non-finite directions.")
       .def("__repr__", [](const PyPair3& p) {
         return "<pendepth.Pair3 P='" + p.pair.P().name() + "' Q='" + p.pair.Q().name() + "'>";
       })

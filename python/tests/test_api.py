@@ -229,6 +229,10 @@ def test_pair3(pair3):
     assert np.all(a.depth >= r.depth * (1 - 1e-12) - 1e-12)
     assert np.array_equal(a.overlapping, r.overlapping)
     assert np.array_equal(pair3.overlapping(t, q), r.overlapping)
+    sep = pair3.separation(t, [0.0, 0.0, 2.0], rotations=q, threads=1)
+    assert sep.kind == "separation" and sep.depth.tobytes() == a.depth.tobytes()
+    one = pair3.separation(t[3], [0.0, 0.0, 2.0], q[3])
+    assert one.kind == "separation" and one.depth.tobytes() == a.depth[3].tobytes()
     single = pair3.along(t[0], [0, 0, 1])
     assert np.ndim(single.depth) == 0 and single.witness_p.shape == (3,)
     with pytest.raises(pendepth.InvalidInput, match="zero quaternion"):

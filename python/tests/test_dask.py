@@ -54,6 +54,9 @@ def test_3d_on_a_cluster_equals_the_batch(client, pair3):
     got = client.compute(pendepth.dask.minimum(pair3, da.from_array(x, chunks=(300, 7)))).result(timeout=TIMEOUT)
     ref = pendepth.dask.records(pair3.minimum(x[:, :3].copy(), x[:, 3:].copy()))
     assert got.dtype == pendepth.dask.DTYPE3 and got.tobytes() == ref.tobytes()
+    sep = pendepth.dask.separation(pair3, da.from_array(x, chunks=(300, 7)), direction=[0, 0, 1])
+    ref = pendepth.dask.records(pair3.separation(x[:, :3].copy(), [0, 0, 1], x[:, 3:].copy()))
+    assert client.compute(sep).result(timeout=TIMEOUT).tobytes() == ref.tobytes()
 
 
 @pytest.mark.filterwarnings("ignore:Running on a single-machine scheduler")
