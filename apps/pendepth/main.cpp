@@ -3,7 +3,7 @@
 //
 //   pendepth depth P Q [--offset X,Y[,Z]] [--direction X,Y[,Z]] [--separate] [--json] [--svg FILE]
 //                      [--rotate-q QW,QX,QY,QZ] [--rotate-p QW,QX,QY,QZ]
-//   pendepth batch P Q --queries FILE [--json] [--threads N] [--rotate-q ...] [--rotate-p ...]
+//   pendepth batch P Q --queries FILE [--json] [--threads N] [--progress] [--rotate-q ...] [--rotate-p ...]
 //   pendepth nfp P Q [--json]
 //
 // Exit status: 0 success, 2 bad input (one line on stderr naming file, line and problem),
@@ -24,7 +24,10 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <span>
 #include <string>
+
+#include <unistd.h>
 
 namespace {
 
@@ -205,15 +208,40 @@ int run_depth(const DepthArgs& a) {
 struct BatchArgs {
   std::string p, q, queries, rotate_p, rotate_q;
   unsigned threads = 0;
-  bool json = false;
+  bool json = false, progress = false;
 };
 
-// Answers every query in two parallel batches, σ (zero direction) and σ_d, each in file order;
-// `minimum(ts, out)` and `along(ts, ds, out)` are the pair's batch calls. Returns the answers in
-// query order.
+bool show_progress(const BatchArgs& a) { return a.progress || isatty(fileno(stderr)); }
+
+// A progress line on stderr ("pendepth batch: K / N queries"), redrawn as chunks finish; off
+// unless asked for (--progress) or stderr is a terminal.
+class Progress {
+ public:
+  Progress(std::size_t total, bool on) : total_(total), on_(on && total > 0) { draw(); }
+  void add(std::size_t n) {
+    done_ += n;
+    draw();
+  }
+  ~Progress() {
+    if (on_) std::fputc('\n', stderr);
+  }
+
+ private:
+  void draw() const {
+    if (on_) std::fprintf(stderr, "\rpendepth batch: %zu / %zu queries", done_, total_);
+  }
+  std::size_t total_, done_ = 0;
+  bool on_;
+};
+
+// Answers every query in two parallel batches, σ (zero direction) and σ_d, each in file order and
+// in chunks of kChunk queries (for the progress line; every answer depends on its query only, so
+// chunking changes no bit). `minimum(ts, out)` and `along(ts, ds, out)` are the pair's batch calls
+// on spans. Returns the answers in query order.
 template <class Result, class Query, class Minimum, class Along>
-std::vector<Result> answer_all(const std::vector<Query>& queries, Minimum&& minimum, Along&& along) {
+std::vector<Result> answer_all(const std::vector<Query>& queries, bool progress, Minimum&& minimum, Along&& along) {
   using V = decltype(Query::t);
+  constexpr std::size_t kChunk = 1 << 14;
   std::vector<V> tm, ta, da;
   std::vector<std::size_t> im, ia;
   for (std::size_t i = 0; i < queries.size(); ++i) {
@@ -227,8 +255,17 @@ std::vector<Result> answer_all(const std::vector<Query>& queries, Minimum&& mini
     }
   }
   std::vector<Result> rm(tm.size()), ra(ta.size()), out(queries.size());
-  minimum(tm, rm);
-  along(ta, da, ra);
+  Progress bar(queries.size(), progress);
+  for (std::size_t b = 0; b < tm.size(); b += kChunk) {
+    const std::size_t n = std::min(kChunk, tm.size() - b);
+    minimum(std::span<const V>(tm).subspan(b, n), std::span<Result>(rm).subspan(b, n));
+    bar.add(n);
+  }
+  for (std::size_t b = 0; b < ta.size(); b += kChunk) {
+    const std::size_t n = std::min(kChunk, ta.size() - b);
+    along(std::span<const V>(ta).subspan(b, n), std::span<const V>(da).subspan(b, n), std::span<Result>(ra).subspan(b, n));
+    bar.add(n);
+  }
   for (std::size_t k = 0; k < im.size(); ++k) out[im[k]] = rm[k];
   for (std::size_t k = 0; k < ia.size(); ++k) out[ia[k]] = ra[k];
   return out;
@@ -263,15 +300,16 @@ int run_batch3(const BatchArgs& a) {
   const Pair3 pair(Shape3::from_file(a.p, "P"), Shape3::from_file(a.q, "Q"), pendepth::Prepare::Full);
   const std::vector<io::Query3> queries = io::read_queries3_csv(a.queries);
   const Pose3 pose_p(rp, Vec3::Zero());
-  const auto poses = [&](const std::vector<Vec3>& ts) {
+  const auto poses = [&](std::span<const Vec3> ts) {
     std::vector<Pose3> p;
     p.reserve(ts.size());
     for (const Vec3& t : ts) p.emplace_back(rq, t);
     return p;
   };
   const std::vector<Depth3> results = answer_all<Depth3>(
-      queries, [&](const std::vector<Vec3>& ts, std::vector<Depth3>& out) { pair.minimum(pose_p, poses(ts), out, a.threads); },
-      [&](const std::vector<Vec3>& ts, const std::vector<Vec3>& ds, std::vector<Depth3>& out) {
+      queries, show_progress(a),
+      [&](std::span<const Vec3> ts, std::span<Depth3> out) { pair.minimum(pose_p, poses(ts), out, a.threads); },
+      [&](std::span<const Vec3> ts, std::span<const Vec3> ds, std::span<Depth3> out) {
         pair.along(pose_p, poses(ts), ds, out, a.threads);
       });
   return write_batch(a, results, "depth,tx,ty,tz\n", [&](std::string& out, const Depth3& r) {
@@ -287,8 +325,9 @@ int run_batch(const BatchArgs& a) {
   const Pair2 pair(Shape2::from_file(a.p, "P"), Shape2::from_file(a.q, "Q"), pendepth::Prepare::Full);
   const std::vector<io::Query2> queries = io::read_queries_csv(a.queries);
   const std::vector<Depth2> results = answer_all<Depth2>(
-      queries, [&](const std::vector<Vec2>& ts, std::vector<Depth2>& out) { pair.minimum(ts, out, a.threads); },
-      [&](const std::vector<Vec2>& ts, const std::vector<Vec2>& ds, std::vector<Depth2>& out) {
+      queries, show_progress(a),
+      [&](std::span<const Vec2> ts, std::span<Depth2> out) { pair.minimum(ts, out, a.threads); },
+      [&](std::span<const Vec2> ts, std::span<const Vec2> ds, std::span<Depth2> out) {
         pair.along(ts, ds, out, a.threads);
       });
   return write_batch(a, results, "depth,tx,ty\n",
@@ -362,6 +401,7 @@ int main(int argc, char** argv) {
   batch->add_flag("--json", ba.json, "print JSON Lines (one object per query) instead of CSV");
   batch->add_option("--threads", ba.threads, "threads for the queries (default 0: every core; answers do not depend on it)")
       ->type_name("N");
+  batch->add_flag("--progress", ba.progress, "print progress on stderr (default: only when stderr is a terminal)");
   batch->add_option("--rotate-q", ba.rotate_q, "3D: rotation of Q for every query (quaternion, normalised)")
       ->type_name("QW,QX,QY,QZ");
   batch->add_option("--rotate-p", ba.rotate_p, "3D: rotation of P (quaternion, normalised)")->type_name("QW,QX,QY,QZ");

@@ -287,6 +287,26 @@ TEST_F(Cli, DirectionScaleDoesNotMatter) {
   }
 }
 
+// --threads changes nothing in the output; --progress adds a progress line on stderr only.
+TEST_F(Cli, BatchThreadsAndProgress) {
+  const std::string P = square_p(), Q = square_q();
+  std::string csv;
+  for (int k = 0; k < 40000; ++k) csv += std::to_string(0.001 * (k % 997)) + ",0.5," + (k % 3 ? "1,0.25" : "0,0") + "\n";
+  const std::string file = write("many.csv", csv);
+  const Result all = run("batch " + quote(P) + " " + quote(Q) + " --queries " + quote(file));
+  ASSERT_EQ(all.status, 0) << all.err;
+  EXPECT_EQ(all.err, "");  // stderr is a file here: no progress unless asked for
+  const Result one = run("batch " + quote(P) + " " + quote(Q) + " --queries " + quote(file) + " --threads 1");
+  ASSERT_EQ(one.status, 0) << one.err;
+  EXPECT_EQ(one.out, all.out);
+  const Result bar = run("batch " + quote(P) + " " + quote(Q) + " --queries " + quote(file) + " --progress");
+  ASSERT_EQ(bar.status, 0) << bar.err;
+  EXPECT_EQ(bar.out, all.out);
+  EXPECT_NE(bar.err.find("pendepth batch: 40000 / 40000 queries\n"), std::string::npos) << bar.err;
+  // σ queries (every third line) in one chunk, then the σ_d queries in chunks of 16384.
+  EXPECT_NE(bar.err.find("\rpendepth batch: 13334 / 40000 queries\rpendepth batch: 29718 / 40000"), std::string::npos) << bar.err;
+}
+
 TEST_F(Cli, BatchDirectionalOnlyAndEmpty) {
   const std::string P = square_p(), Q = square_q();
   const std::string csv = write("q.csv", "0.5,0.5,1,0\n0.5,0.5,0,2\n9,9,1,1\n");
