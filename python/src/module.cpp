@@ -441,6 +441,29 @@ progress, the GIL and bit-identity as in Pair2. Raises InvalidInput for non-fini
 translations, zero or non-finite quaternions and directions, naming the index.
 Picklable (by its two shapes and prepare).)";
 
+// A directional 2D batch (along, separation): offsets and directions as arrays or single points,
+// checked whole before any query, run in chunks with the GIL released; query(pair, ts, ds, out,
+// threads) is the C++ batch call.
+template <class Query>
+Result2 directional2(const py::object& self, const py::object& offsets, const py::object& directions,
+                     const py::object& threads, bool progress, DepthKind kind, Query&& query) {
+  const PyPair2& p = self.cast<const PyPair2&>();
+  Points<2> ts = points<2>(offsets, "offsets");
+  Points<2> ds = points<2>(directions, "directions");
+  const unsigned th = thread_count(threads);
+  std::vector<Depth2> out(ts.v.size());
+  if (progress) front::check_batch<Vec2>(ts.v, ds.v, out.size(), true);
+  const bool one = ds.v.size() == 1;
+  chunked(ts.v.size(), progress, [&](std::size_t b, std::size_t e) {
+    // one direction for all, or a count mismatch the C++ batch reports: pass ds whole
+    std::span<const Vec2> d = one || ds.v.size() != ts.v.size() ? std::span<const Vec2>(ds.v)
+                                                                 : std::span<const Vec2>(ds.v).subspan(b, e - b);
+    query(p.pair, std::span<const Vec2>(ts.v).subspan(b, e - b), d, std::span<Depth2>(out).subspan(b, e - b), th);
+  });
+  return result2(out, ts.single, self, py::cast<Array>(offsets).attr("copy")(), py::cast<Array>(directions).attr("copy")(),
+                 kind, to_string(p.pair.engine()));
+}
+
 }  // namespace
 
 PYBIND11_MODULE(_pendepth, m) {
@@ -613,39 +636,14 @@ and points ((p, 2): exact fits). Vertices rounded to the nearest double.)");
            }, py::arg("offsets"), py::kw_only(), py::arg("threads") = py::none(), py::arg("progress") = false, kMinimumDoc)
       .def("along", [](const py::object& self, const py::object& offsets, const py::object& directions, const py::object& threads,
                        bool progress) {
-             const PyPair2& p = self.cast<const PyPair2&>();
-             Points<2> ts = points<2>(offsets, "offsets");
-             Points<2> ds = points<2>(directions, "directions");
-             const unsigned th = thread_count(threads);
-             std::vector<Depth2> out(ts.v.size());
-             if (progress) front::check_batch<Vec2>(ts.v, ds.v, out.size(), true);
-             const bool one = ds.v.size() == 1;
-             chunked(ts.v.size(), progress, [&](std::size_t b, std::size_t e) {
-               // one direction for all, or a count mismatch the C++ batch reports: pass ds whole
-               std::span<const Vec2> d = one || ds.v.size() != ts.v.size() ? std::span<const Vec2>(ds.v)
-                                                                            : std::span<const Vec2>(ds.v).subspan(b, e - b);
-               p.pair.along(std::span<const Vec2>(ts.v).subspan(b, e - b), d, std::span<Depth2>(out).subspan(b, e - b), th);
-             });
-             return result2(out, ts.single, self, py::cast<Array>(offsets).attr("copy")(), py::cast<Array>(directions).attr("copy")(),
-                            DepthKind::Directional, to_string(p.pair.engine()));
+             return directional2(self, offsets, directions, threads, progress, DepthKind::Directional,
+                                 [](const Pair2& pair, auto ts, auto ds, auto out, unsigned th) { pair.along(ts, ds, out, th); });
            }, py::arg("offsets"), py::arg("directions"), py::kw_only(), py::arg("threads") = py::none(),
            py::arg("progress") = false, kAlongDoc)
       .def("separation", [](const py::object& self, const py::object& offsets, const py::object& directions,
                             const py::object& threads, bool progress) {
-             const PyPair2& p = self.cast<const PyPair2&>();
-             Points<2> ts = points<2>(offsets, "offsets");
-             Points<2> ds = points<2>(directions, "directions");
-             const unsigned th = thread_count(threads);
-             std::vector<Depth2> out(ts.v.size());
-             if (progress) front::check_batch<Vec2>(ts.v, ds.v, out.size(), true);
-             const bool one = ds.v.size() == 1;
-             chunked(ts.v.size(), progress, [&](std::size_t b, std::size_t e) {
-               std::span<const Vec2> d = one || ds.v.size() != ts.v.size() ? std::span<const Vec2>(ds.v)
-                                                                            : std::span<const Vec2>(ds.v).subspan(b, e - b);
-               p.pair.separation(std::span<const Vec2>(ts.v).subspan(b, e - b), d, std::span<Depth2>(out).subspan(b, e - b), th);
-             });
-             return result2(out, ts.single, self, py::cast<Array>(offsets).attr("copy")(), py::cast<Array>(directions).attr("copy")(),
-                            DepthKind::Separation, to_string(p.pair.engine()));
+             return directional2(self, offsets, directions, threads, progress, DepthKind::Separation,
+                                 [](const Pair2& pair, auto ts, auto ds, auto out, unsigned th) { pair.separation(ts, ds, out, th); });
            }, py::arg("offsets"), py::arg("directions"), py::kw_only(), py::arg("threads") = py::none(),
            py::arg("progress") = false, kSeparationDoc)
       .def("__repr__", [](const PyPair2& p) {
