@@ -26,8 +26,8 @@ struct Pose3 {
   Pose3() = default;
   explicit Pose3(const Vec3& t) : translation(t) {}
   Pose3(const Eigen::Quaterniond& q, const Vec3& t) : rotation(q), translation(t) {}
-  /// Rotation matrix of the normalised quaternion. Throws InvalidInput if the quaternion is
-  /// zero or non-finite.
+  /// Rotation matrix of the normalised quaternion, any magnitude (scaled by a power of two
+  /// first, exactly). Throws InvalidInput if the quaternion is zero or non-finite.
   Eigen::Matrix3d matrix() const;
   Vec3 apply(const Vec3& x) const { return matrix() * x + translation; }
 };

@@ -355,7 +355,7 @@ Result3 along3(const PyPair3& p, const py::object& translations, const py::objec
     if (!one && ds.v.size() != ps.size())
       throw InvalidInput("batch: " + std::to_string(ds.v.size()) + " directions for " + std::to_string(ps.size()) +
                          " poses (give one direction, or one per pose)");
-    for (std::size_t i = 0; i < ds.v.size(); ++i) front::unit_scale(ds.v[i], "batch: direction " + std::to_string(i));
+    for (std::size_t i = 0; i < ds.v.size(); ++i) front::check_direction(ds.v[i], "batch: direction " + std::to_string(i));
   }
   chunked(ps.size(), progress, [&](std::size_t b, std::size_t e) {
     std::span<const Vec3> d = one || ds.v.size() != ps.size() ? std::span<const Vec3>(ds.v)

@@ -19,11 +19,18 @@ using convex3::FacetCandidate;
 using convex3::FacetSource;
 using convex3::RelativePose;
 
+// The quaternion is first scaled by a power of two so that its largest |coefficient| lies in
+// [1, 2): exact (the same rotation, the same normalised quaternion bit for bit when nothing
+// over- or underflows), and its squared norm can then neither overflow nor underflow at any
+// magnitude (2^±1000 quaternions are valid rotations).
 Eigen::Matrix3d Pose3::matrix() const {
-  const auto& c = rotation.coeffs();
-  if (!c.allFinite() || c.squaredNorm() == 0)
-    throw InvalidInput("pose: rotation quaternion is zero or non-finite");
-  return rotation.normalized().toRotationMatrix();
+  const Eigen::Vector4d c = rotation.coeffs();
+  const double big = c.cwiseAbs().maxCoeff();
+  if (!c.allFinite() || big == 0) throw InvalidInput("pose: rotation quaternion is zero or non-finite");
+  const int e = std::ilogb(big);
+  Eigen::Quaterniond q;
+  for (int k = 0; k < 4; ++k) q.coeffs()[k] = std::ldexp(c[k], -e);
+  return q.normalized().toRotationMatrix();
 }
 
 namespace {

@@ -32,18 +32,12 @@ void check_placement(const V& t, const std::string& what = "placement") {
   if (!finite(t)) throw InvalidInput(what + " " + text(t) + " is not finite");
 }
 
-/// d scaled by a power of two so that its largest |component| lies in [1, 2): exact, the same
-/// unit direction, and norms can neither overflow nor underflow. Throws InvalidInput for a zero
-/// or non-finite d.
+/// Throws InvalidInput for a zero or non-finite direction. Any other magnitude is fine: the
+/// engines scale directions (and quaternions) by powers of two themselves, exactly.
 template <class V>
-V unit_scale(const V& d, const std::string& what = "direction") {
+void check_direction(const V& d, const std::string& what = "direction") {
   if (!finite(d)) throw InvalidInput(what + " " + text(d) + " is not finite");
-  const double big = d.cwiseAbs().maxCoeff();
-  if (big == 0) throw InvalidInput(what + " is zero");
-  const int e = std::ilogb(big);
-  V r;
-  for (int k = 0; k < d.size(); ++k) r[k] = std::ldexp(d[k], -e);
-  return r;
+  if (d.cwiseAbs().maxCoeff() == 0) throw InvalidInput(what + " is zero");
 }
 
 /// A batch: out has one entry per placement; ds is empty (no directions), one direction for all,
@@ -58,7 +52,7 @@ void check_batch(std::span<const V> ts, std::span<const V> ds, std::size_t out_s
                        " placements (give one direction, or one per placement)");
   for (std::size_t i = 0; i < ts.size(); ++i) check_placement(ts[i], "batch: placement " + std::to_string(i));
   if (directions)
-    for (std::size_t i = 0; i < ds.size(); ++i) unit_scale(ds[i], "batch: direction " + std::to_string(i));
+    for (std::size_t i = 0; i < ds.size(); ++i) check_direction(ds[i], "batch: direction " + std::to_string(i));
 }
 
 }  // namespace pendepth::front

@@ -128,7 +128,7 @@ struct Pair2::Impl {
     return r;
   }
 
-  // ---- single queries on validated input (t finite; d finite, non-zero, rescaled) ----
+  // ---- single queries on validated input (t finite; d finite and non-zero) ----
 
   bool overlapping(const Vec2& t) const {
     switch (engine) {
@@ -197,12 +197,14 @@ Depth2 Pair2::minimum(const Vec2& t) const {
 
 Depth2 Pair2::along(const Vec2& t, const Vec2& d) const {
   front::check_placement(t);
-  return impl_->along(t, front::unit_scale(d));
+  front::check_direction(d);
+  return impl_->along(t, d);
 }
 
 Depth2 Pair2::separation(const Vec2& t, const Vec2& d) const {
   front::check_placement(t);
-  return impl_->separation(t, front::unit_scale(d));
+  front::check_direction(d);
+  return impl_->separation(t, d);
 }
 
 void Pair2::overlapping(std::span<const Vec2> ts, std::span<bool> out, unsigned threads) const {
@@ -226,9 +228,7 @@ void directional_batch(std::span<const Vec2> ts, std::span<const Vec2> ds, std::
   front::check_batch<Vec2>(ts, ds, out.size(), true);
   if (ts.empty()) return;
   const bool one = ds.size() == 1;
-  const Vec2 d0 = front::unit_scale(ds[0]);
-  front::parallel_for(ts.size(), threads,
-                      [&](std::size_t i) { out[i] = query(ts[i], one ? d0 : front::unit_scale(ds[i])); });
+  front::parallel_for(ts.size(), threads, [&](std::size_t i) { out[i] = query(ts[i], ds[one ? 0 : i]); });
 }
 
 }  // namespace

@@ -38,15 +38,6 @@ void check_pose(const Pose3& pose, const std::string& what) {
   if (pose.rotation.coeffs().isZero(0)) throw InvalidInput(what + " rotation is the zero quaternion");
 }
 
-// The pose with its quaternion scaled by a power of two (front::unit_scale): the same rotation,
-// the same normalised quaternion bit for bit, and no overflow at any magnitude.
-Pose3 scaled(const Pose3& pose) {
-  const Eigen::Vector4d q = front::unit_scale(Eigen::Vector4d(pose.rotation.coeffs()), "rotation");
-  Pose3 r = pose;
-  r.rotation.coeffs() = q;
-  return r;
-}
-
 void check_poses(std::span<const Pose3> poses, std::size_t out_size) {
   if (out_size != poses.size())
     throw InvalidInput("batch: " + std::to_string(poses.size()) + " poses but room for " + std::to_string(out_size) +
@@ -58,7 +49,7 @@ void check_directions(std::span<const Vec3> ds, std::size_t n) {
   if (ds.size() != 1 && ds.size() != n)
     throw InvalidInput("batch: " + std::to_string(ds.size()) + " directions for " + std::to_string(n) +
                        " poses (give one direction, or one per pose)");
-  for (std::size_t i = 0; i < ds.size(); ++i) front::unit_scale(ds[i], "batch: direction " + std::to_string(i));
+  for (std::size_t i = 0; i < ds.size(); ++i) front::check_direction(ds[i], "batch: direction " + std::to_string(i));
 }
 
 }  // namespace
@@ -72,13 +63,14 @@ bool Pair3::overlapping(const Pose3& pose_p, const Pose3& pose_q) const {
 Depth3 Pair3::minimum(const Pose3& pose_p, const Pose3& pose_q) const {
   check_pose(pose_p, "pose of P");
   check_pose(pose_q, "pose of Q");
-  return minimum_depth(P_.polytope(), scaled(pose_p), Q_.polytope(), scaled(pose_q));
+  return minimum_depth(P_.polytope(), pose_p, Q_.polytope(), pose_q);
 }
 
 Depth3 Pair3::along(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const {
   check_pose(pose_p, "pose of P");
   check_pose(pose_q, "pose of Q");
-  return directional_depth(P_.polytope(), scaled(pose_p), Q_.polytope(), scaled(pose_q), front::unit_scale(d));
+  front::check_direction(d);
+  return directional_depth(P_.polytope(), pose_p, Q_.polytope(), pose_q, d);
 }
 
 Depth3 Pair3::separation(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const {
@@ -91,7 +83,7 @@ void Pair3::overlapping(std::span<const Pose3> poses_q, std::span<bool> out, uns
   check_poses(poses_q, out.size());
   const Pose3 pose_p;
   front::parallel_for(poses_q.size(), threads, [&](std::size_t i) {
-    out[i] = minimum_depth(P_.polytope(), pose_p, Q_.polytope(), scaled(poses_q[i])).overlapping;
+    out[i] = minimum_depth(P_.polytope(), pose_p, Q_.polytope(), poses_q[i]).overlapping;
   });
 }
 
@@ -108,9 +100,8 @@ void Pair3::minimum(const Pose3& pose_p, std::span<const Pose3> poses_q, std::sp
                     unsigned threads) const {
   check_pose(pose_p, "pose of P");
   check_poses(poses_q, out.size());
-  const Pose3 pp = scaled(pose_p);
   front::parallel_for(poses_q.size(), threads, [&](std::size_t i) {
-    out[i] = minimum_depth(P_.polytope(), pp, Q_.polytope(), scaled(poses_q[i]));
+    out[i] = minimum_depth(P_.polytope(), pose_p, Q_.polytope(), poses_q[i]);
   });
 }
 
@@ -121,10 +112,8 @@ void Pair3::along(const Pose3& pose_p, std::span<const Pose3> poses_q, std::span
   if (poses_q.empty()) return;
   check_directions(ds, poses_q.size());
   const bool one = ds.size() == 1;
-  const Vec3 d0 = front::unit_scale(ds[0]);
-  const Pose3 pp = scaled(pose_p);
   front::parallel_for(poses_q.size(), threads, [&](std::size_t i) {
-    out[i] = directional_depth(P_.polytope(), pp, Q_.polytope(), scaled(poses_q[i]), one ? d0 : front::unit_scale(ds[i]));
+    out[i] = directional_depth(P_.polytope(), pose_p, Q_.polytope(), poses_q[i], ds[one ? 0 : i]);
   });
 }
 

@@ -26,19 +26,9 @@ namespace {
 
 using namespace pendepth;
 using front_test::error_of;
+using front_test::same;
 using front_test::same_bits;
 bool same_bits(const Vec2& a, const Vec2& b) { return front_test::same_bits_v(a, b); }
-
-
-::testing::AssertionResult same(const Depth2& a, const Depth2& b) {
-  if (same_bits(a.depth, b.depth) && same_bits(a.translation, b.translation) && same_bits(a.normal, b.normal) &&
-      same_bits(a.witness_p, b.witness_p) && same_bits(a.witness_q, b.witness_q) && a.feature_p == b.feature_p &&
-      a.feature_q == b.feature_q && a.overlapping == b.overlapping && a.kind == b.kind)
-    return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "depth " << a.depth << " vs " << b.depth << ", translation ("
-                                       << a.translation.transpose() << ") vs (" << b.translation.transpose()
-                                       << "), overlapping " << a.overlapping << " vs " << b.overlapping;
-}
 
 std::vector<Vec2> ring_of(const ConvexPolygon& C) { return {C.vertices().begin(), C.vertices().end()}; }
 
@@ -306,7 +296,6 @@ TEST(Pair2, BatchesEqualSingleCallsBitForBitAtAnyThreadCount) {
 }
 
 // ---- errors at the boundary ----
-
 
 TEST(Pair2, BadQueriesAreNamed) {
   const Shape2 P(std::vector<Vec2>{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {}, "P");

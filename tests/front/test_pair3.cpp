@@ -20,18 +20,9 @@ namespace {
 
 using namespace pendepth;
 using front_test::error_of;
+using front_test::same;
 using front_test::same_bits;
 bool same_bits(const Vec3& a, const Vec3& b) { return front_test::same_bits_v(a, b); }
-
-
-::testing::AssertionResult same(const Depth3& a, const Depth3& b) {
-  if (same_bits(a.depth, b.depth) && same_bits(a.translation, b.translation) && same_bits(a.normal, b.normal) &&
-      same_bits(a.witness_p, b.witness_p) && same_bits(a.witness_q, b.witness_q) && a.feature_p == b.feature_p &&
-      a.feature_q == b.feature_q && a.overlapping == b.overlapping && a.kind == b.kind &&
-      same_bits(a.lower_bound, b.lower_bound) && same_bits(a.upper_bound, b.upper_bound))
-    return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << "depth " << a.depth << " vs " << b.depth;
-}
 
 Eigen::Quaterniond random_rotation(std::mt19937_64& rng) {
   std::normal_distribution<double> g;
@@ -123,7 +114,6 @@ TEST(Pair3, BatchesEqualSingleCallsBitForBitAtAnyThreadCount) {
     }
   }
 }
-
 
 TEST(Pair3, BadInputIsNamed) {
   const auto shapes = test_shapes();
