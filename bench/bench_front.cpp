@@ -97,6 +97,24 @@ const Pair2& nesting_pair() {
   return pair;
 }
 
+// Two generated star polygons of 40 vertices (not from ../shared/data): the no-fit polygon engine.
+const Pair2& star_pair() {
+  static const Pair2 pair = [] {
+    std::mt19937_64 rng(17);
+    const auto star = [&](double r0, double r1) {
+      std::uniform_real_distribution<double> u(r0, r1);
+      std::vector<Vec2> ring;
+      for (int k = 0; k < 40; ++k) {
+        const double a = 2 * 3.14159265358979323846 * k / 40, r = u(rng);
+        ring.emplace_back(r * std::cos(a), r * std::sin(a));
+      }
+      return Shape2(ring, {}, "star");
+    };
+    return Pair2(star(0.5, 2.0), star(0.3, 1.0), Prepare::Full);
+  }();
+  return pair;
+}
+
 const Pair2& nesting_pair_per_query() {
   static const Pair2 pair(nesting_pair().P(), nesting_pair().Q(), Prepare::Queries);
   return pair;
@@ -108,6 +126,7 @@ void BM_nfp_sigma(benchmark::State& s) { run2(s, nesting_pair(), Query::Minimum)
 void BM_nfp_sigma_d(benchmark::State& s) { run2(s, nesting_pair(), Query::Along); }
 void BM_nfp_overlap(benchmark::State& s) { run2(s, nesting_pair(), Query::Overlap); }
 void BM_pair_per_query_sigma_d(benchmark::State& s) { run2(s, nesting_pair_per_query(), Query::Along); }
+void BM_star_nfp_sigma(benchmark::State& s) { run2(s, star_pair(), Query::Minimum); }
 
 // ---- 3D: two hulls of the shared data (real game objects), random poses of Q ----
 
@@ -117,8 +136,22 @@ const Pair3& hull_pair() {
   return pair;
 }
 
-void run3(benchmark::State& state, bool along) {
-  const Pair3& pair = hull_pair();
+// Hulls of 64 random points on an ellipsoid each (generated, not from ../shared/data).
+const Pair3& ellipsoid_pair() {
+  static const Pair3 pair = [] {
+    std::mt19937_64 rng(23);
+    std::normal_distribution<double> g;
+    const auto cloud = [&](const Vec3& axes) {
+      std::vector<Vec3> p;
+      for (int k = 0; k < 64; ++k) p.push_back(Vec3(g(rng), g(rng), g(rng)).normalized().cwiseProduct(axes));
+      return Shape3::hull(p, "ellipsoid");
+    };
+    return Pair3(cloud(Vec3(2, 1, 0.7)), cloud(Vec3(1, 0.8, 0.5)));
+  }();
+  return pair;
+}
+
+void run3(benchmark::State& state, const Pair3& pair, bool along) {
   std::mt19937_64 rng(9);
   std::normal_distribution<double> g;
   std::uniform_real_distribution<double> u(-1, 1);
@@ -141,8 +174,9 @@ void run3(benchmark::State& state, bool along) {
   state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(poses.size()));
 }
 
-void BM_convex3_sigma(benchmark::State& s) { run3(s, false); }
-void BM_convex3_sigma_d(benchmark::State& s) { run3(s, true); }
+void BM_convex3_sigma(benchmark::State& s) { run3(s, hull_pair(), false); }
+void BM_convex3_sigma_d(benchmark::State& s) { run3(s, hull_pair(), true); }
+void BM_ellipsoids_sigma(benchmark::State& s) { run3(s, ellipsoid_pair(), false); }
 
 #define THREADS(b) BENCHMARK(b)->Arg(1)->Arg(2)->UseRealTime()->Unit(benchmark::kMicrosecond)
 THREADS(BM_convex2_sigma_n8);
@@ -151,8 +185,10 @@ THREADS(BM_nfp_overlap);
 THREADS(BM_nfp_sigma);
 THREADS(BM_nfp_sigma_d);
 THREADS(BM_pair_per_query_sigma_d);
+THREADS(BM_star_nfp_sigma);
 THREADS(BM_convex3_sigma);
 THREADS(BM_convex3_sigma_d);
+THREADS(BM_ellipsoids_sigma);
 
 }  // namespace
 
