@@ -172,7 +172,8 @@ Geometry2 parse_wkt_geometry(std::string_view text, std::string_view source = "<
 /// ...],...],"points":[[x,y],...]}, shortest round-trip doubles.
 void append_json(std::string& out, const Geometry2& g);
 
-/// Appends the shortest decimal text that reads back as exactly x (std::to_chars). x finite.
+/// Appends the shortest decimal text that reads back as exactly x (std::to_chars); ±infinity as
+/// ±1e999 (valid JSON that parsers read as infinity). x not NaN.
 void append_double(std::string& out, double x);
 
 /// Appends one JSON object (no newline) for a 2D result: depth, translation [x,y], normal,

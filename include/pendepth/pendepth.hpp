@@ -224,6 +224,12 @@ class Pair3 {
 
  private:
   Shape3 P_, Q_;
+  // The numeric domain (src/front/scale.hpp): the engines see P_, Q_ scaled by 2^-scale_exp_
+  // (the same objects unless the pair lies outside the comfort band).
+  int scale_exp_ = 0;
+  Shape3 engine_P_, engine_Q_;
+  Depth3 min_engine(const Pose3& pose_p, const Pose3& pose_q) const;
+  Depth3 along_engine(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const;
 };
 
 }  // namespace pendepth

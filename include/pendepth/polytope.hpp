@@ -85,6 +85,11 @@ class ConvexPolytope {
   /// O(n log n) expected (randomised insertion order from a pinned seed: deterministic).
   static ConvexPolytope hull(std::span<const Vec3> points, std::string_view name = "points");
 
+  /// The same polytope with every coordinate multiplied by 2^exponent: the same numbering of
+  /// vertices, triangles, half-edges and hierarchy levels (scaling by a power of two keeps every
+  /// orientation). Throws InvalidInput when a coordinate would overflow or lose bits. O(n).
+  ConvexPolytope scaled(int exponent) const;
+
   std::size_t size() const;
   const Vec3& operator[](std::size_t i) const;
   std::span<const Vec3> vertices() const;

@@ -142,6 +142,21 @@ ConvexPolytope ConvexPolytope::hull(std::span<const Vec3> points, std::string_vi
   return P;
 }
 
+ConvexPolytope ConvexPolytope::scaled(int exponent) const {
+  auto d = std::make_shared<PolytopeData>(*d_);  // the caches' copies start empty
+  for (std::size_t i = 0; i < d->v.size(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      const double x = d_->v[i][k], y = std::ldexp(x, exponent);
+      if (!std::isfinite(y) || std::ldexp(y, -exponent) != x)
+        fail(d->name, "vertex " + std::to_string(i) + " cannot be scaled by 2^" + std::to_string(exponent) +
+                          " exactly");
+      d->v[i][k] = y;
+    }
+  ConvexPolytope P;
+  P.d_ = std::move(d);
+  return P;
+}
+
 std::size_t ConvexPolytope::size() const { return d_->v.size(); }
 const convex3::PolytopeData& convex3::data_of(const ConvexPolytope& P) { return *P.d_; }
 const Vec3& ConvexPolytope::operator[](std::size_t i) const { return d_->v[i]; }

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <span>
 #include <string>
 
@@ -19,10 +20,15 @@ bool finite(const V& v) {
   return true;
 }
 
+/// "(x, y[, z])" with every value in full (%.17g: 1e-300 must not print as 0.000000).
 template <class V>
 std::string text(const V& v) {
   std::string s = "(";
-  for (int k = 0; k < v.size(); ++k) s += (k ? ", " : "") + std::to_string(v[k]);
+  char buf[32];
+  for (int k = 0; k < v.size(); ++k) {
+    std::snprintf(buf, sizeof buf, "%.17g", static_cast<double>(v[k]));
+    s += (k ? ", " : "") + std::string(buf);
+  }
   return s + ")";
 }
 

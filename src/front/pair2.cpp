@@ -12,6 +12,7 @@
 
 #include "front/batch.hpp"
 #include "front/checks.hpp"
+#include "front/scale.hpp"
 
 #include <mutex>
 #include <optional>
@@ -35,14 +36,73 @@ NoFitPolygonParts parts_of(const NoFitPolygon2& n) {
   return NoFitPolygonParts{n.polygons(), n.slits(), n.points()};
 }
 
+// The sizes of a shape's normal form: its largest coordinate and its smallest edge.
+void add_extent(front::Extent& x, const Shape2& s) {
+  for (const auto& ring : s.rings())
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const Vec2 &a = ring[i], &b = ring[i + 1 == ring.size() ? 0 : i + 1];
+      x.add_point(std::max(std::abs(a.x()), std::abs(a.y())));
+      x.add_edge(a, b);
+    }
+}
+
+// The pair's scale (src/front/scale.hpp): identity for every pair inside the comfort band.
+front::Scale pair_scale(const Shape2& P, const Shape2& Q) {
+  front::Extent x;
+  add_extent(x, P);
+  add_extent(x, Q);
+  return front::Scale::for_pair(x, front::kBand2);
+}
+
+// `s` in engine coordinates: a copy scaled by 2^-e (exact, checked), with the same normal form
+// and so the same feature numbering (scaling by a power of two keeps every orientation).
+Shape2 engine_shape(const Shape2& s, const front::Scale& scale, const char* which) {
+  if (scale.identity()) return s;
+  auto rings = s.rings();
+  for (std::size_t k = 0; k < rings.size(); ++k)
+    for (std::size_t i = 0; i < rings[k].size(); ++i)
+      rings[k][i] = scale.vec_to_engine(rings[k][i], std::string(which) + " (" + s.name() + ") ring " +
+                                                         std::to_string(k) + " vertex " + std::to_string(i) + ":");
+  if (s.is_convex()) return Shape2(ConvexPolygon(rings[0], s.name()));
+  return Shape2(Polygon(rings, s.name()));
+}
+
+// Parts in engine coordinates back to input coordinates.
+NoFitPolygonParts scaled_back(NoFitPolygonParts parts, const front::Scale& scale) {
+  if (scale.identity()) return parts;
+  for (auto& poly : parts.polygons)
+    for (auto& ring : poly)
+      for (Vec2& v : ring) v = scale.vec(v);
+  for (auto& s : parts.slits) s = {scale.vec(s[0]), scale.vec(s[1])};
+  for (Vec2& v : parts.points) v = scale.vec(v);
+  return parts;
+}
+
+// An engine answer back to input units: every length and point scaled by 2^e (the normal and
+// the features are scale-free). A length that overflows becomes an explicit infinity.
+Depth2 scaled_back(Depth2 r, const front::Scale& scale) {
+  if (scale.identity()) return r;
+  r.depth = scale.length(r.depth);
+  r.translation = scale.vec(r.translation);
+  r.witness_p = scale.vec(r.witness_p);
+  r.witness_q = scale.vec(r.witness_q);
+  return r;
+}
+
 }  // namespace
 
 NoFitPolygonParts no_fit_polygon(const Shape2& P, const Shape2& Q) {
-  return parts_of(NoFitPolygon2(P.polygon(), Q.polygon()));
+  const front::Scale scale = pair_scale(P, Q);
+  const Shape2 Pe = engine_shape(P, scale, "P"), Qe = engine_shape(Q, scale, "Q");
+  return scaled_back(parts_of(NoFitPolygon2(Pe.polygon(), Qe.polygon())), scale);
 }
 
+// Pair2::Impl answers in engine coordinates (P, Q scaled by 2^-scale.e, see src/front/scale.hpp);
+// the public methods convert placements in and answers out.
 struct Pair2::Impl {
-  Shape2 P, Q;
+  Shape2 input_P, input_Q;  // as given (P(), Q(), feature numbering)
+  front::Scale scale;
+  Shape2 P, Q;              // engine coordinates (the same objects when scale is the identity)
   Prepare prepare;
   Engine2 engine;
 
@@ -63,7 +123,13 @@ struct Pair2::Impl {
   mutable std::optional<NoFitPolygonParts> exported;
   mutable std::once_flag export_once;
 
-  Impl(Shape2 p, Shape2 q, Prepare prep) : P(std::move(p)), Q(std::move(q)), prepare(prep) {
+  Impl(Shape2 p, Shape2 q, Prepare prep)
+      : input_P(std::move(p)),
+        input_Q(std::move(q)),
+        scale(pair_scale(input_P, input_Q)),
+        P(engine_shape(input_P, scale, "P")),
+        Q(engine_shape(input_Q, scale, "Q")),
+        prepare(prep) {
     choose_engine();
     build();
   }
@@ -177,7 +243,9 @@ struct Pair2::Impl {
   }
 
   const NoFitPolygonParts& no_fit_polygon() const {
-    std::call_once(export_once, [&] { exported.emplace(nfp ? parts_of(*nfp) : pendepth::no_fit_polygon(P, Q)); });
+    std::call_once(export_once, [&] {
+      exported.emplace(scaled_back(nfp ? parts_of(*nfp) : parts_of(NoFitPolygon2(P.polygon(), Q.polygon())), scale));
+    });
     return *exported;
   }
 };
@@ -185,50 +253,78 @@ struct Pair2::Impl {
 Pair2::Pair2(Shape2 P, Shape2 Q, Prepare prepare)
     : impl_(std::make_shared<const Impl>(std::move(P), std::move(Q), prepare)) {}
 
+namespace {
+
+// A placement in engine coordinates; throws InvalidInput naming it when it has none (see
+// src/front/scale.hpp). The identity scale returns t unchanged.
+Vec2 engine_placement(const front::Scale& scale, const Vec2& t, const std::string& what = "placement") {
+  return scale.vec_to_engine(t, what + " " + front::text(t) + ":");
+}
+
+// Every placement of a batch in engine coordinates, checked before any query runs.
+void check_batch_scale(const front::Scale& scale, std::span<const Vec2> ts) {
+  if (scale.identity()) return;
+  for (std::size_t i = 0; i < ts.size(); ++i) engine_placement(scale, ts[i], "batch: placement " + std::to_string(i));
+}
+
+}  // namespace
+
 bool Pair2::overlapping(const Vec2& t) const {
   front::check_placement(t);
-  return impl_->overlapping(t);
+  return impl_->overlapping(engine_placement(impl_->scale, t));
 }
 
 Depth2 Pair2::minimum(const Vec2& t) const {
   front::check_placement(t);
-  return impl_->minimum(t);
+  const Impl& I = *impl_;
+  return scaled_back(I.minimum(engine_placement(I.scale, t)), I.scale);
 }
 
 Depth2 Pair2::along(const Vec2& t, const Vec2& d) const {
   front::check_placement(t);
   front::check_direction(d);
-  return impl_->along(t, d);
+  const Impl& I = *impl_;
+  return scaled_back(I.along(engine_placement(I.scale, t), d), I.scale);
 }
 
 Depth2 Pair2::separation(const Vec2& t, const Vec2& d) const {
   front::check_placement(t);
   front::check_direction(d);
-  return impl_->separation(t, d);
+  const Impl& I = *impl_;
+  return scaled_back(I.separation(engine_placement(I.scale, t), d), I.scale);
 }
 
 void Pair2::overlapping(std::span<const Vec2> ts, std::span<bool> out, unsigned threads) const {
   front::check_batch<Vec2>(ts, {}, out.size(), false);
   const Impl& I = *impl_;
-  front::parallel_for(ts.size(), threads, [&](std::size_t i) { out[i] = I.overlapping(ts[i]); });
+  check_batch_scale(I.scale, ts);
+  front::parallel_for(ts.size(), threads,
+                      [&](std::size_t i) { out[i] = I.overlapping(engine_placement(I.scale, ts[i])); });
 }
 
 void Pair2::minimum(std::span<const Vec2> ts, std::span<Depth2> out, unsigned threads) const {
   front::check_batch<Vec2>(ts, {}, out.size(), false);
   const Impl& I = *impl_;
-  front::parallel_for(ts.size(), threads, [&](std::size_t i) { out[i] = I.minimum(ts[i]); });
+  check_batch_scale(I.scale, ts);
+  front::parallel_for(ts.size(), threads, [&](std::size_t i) {
+    out[i] = scaled_back(I.minimum(engine_placement(I.scale, ts[i])), I.scale);
+  });
 }
 
 namespace {
 
-// A directional batch: query(t, d) for every placement, with ds[i] or the one direction ds[0].
+// A directional batch: query(t, d) for every placement (in engine coordinates), with ds[i] or
+// the one direction ds[0]; answers scaled back.
 template <class Query>
-void directional_batch(std::span<const Vec2> ts, std::span<const Vec2> ds, std::span<Depth2> out, unsigned threads,
-                       Query&& query) {
+void directional_batch(const front::Scale& scale, std::span<const Vec2> ts, std::span<const Vec2> ds,
+                       std::span<Depth2> out, unsigned threads, Query&& query) {
   front::check_batch<Vec2>(ts, ds, out.size(), true);
+  check_batch_scale(scale, ts);
   if (ts.empty()) return;
   const bool one = ds.size() == 1;
-  front::parallel_for(ts.size(), threads, [&](std::size_t i) { out[i] = query(ts[i], ds[one ? 0 : i]); });
+  front::parallel_for(ts.size(), threads, [&](std::size_t i) {
+    out[i] = scaled_back(query(engine_placement(scale, ts[i]), ds[one ? 0 : i]), scale);
+  });
 }
 
 }  // namespace
@@ -236,18 +332,19 @@ void directional_batch(std::span<const Vec2> ts, std::span<const Vec2> ds, std::
 void Pair2::along(std::span<const Vec2> ts, std::span<const Vec2> ds, std::span<Depth2> out,
                   unsigned threads) const {
   const Impl& I = *impl_;
-  directional_batch(ts, ds, out, threads, [&](const Vec2& t, const Vec2& d) { return I.along(t, d); });
+  directional_batch(I.scale, ts, ds, out, threads, [&](const Vec2& t, const Vec2& d) { return I.along(t, d); });
 }
 
 void Pair2::separation(std::span<const Vec2> ts, std::span<const Vec2> ds, std::span<Depth2> out,
                        unsigned threads) const {
   const Impl& I = *impl_;
-  directional_batch(ts, ds, out, threads, [&](const Vec2& t, const Vec2& d) { return I.separation(t, d); });
+  directional_batch(I.scale, ts, ds, out, threads,
+                    [&](const Vec2& t, const Vec2& d) { return I.separation(t, d); });
 }
 
 const Pair2::NoFitPolygon& Pair2::no_fit_polygon() const { return impl_->no_fit_polygon(); }
-const Shape2& Pair2::P() const { return impl_->P; }
-const Shape2& Pair2::Q() const { return impl_->Q; }
+const Shape2& Pair2::P() const { return impl_->input_P; }
+const Shape2& Pair2::Q() const { return impl_->input_Q; }
 Engine2 Pair2::engine() const { return impl_->engine; }
 
 }  // namespace pendepth

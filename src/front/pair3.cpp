@@ -10,6 +10,7 @@
 
 #include "front/batch.hpp"
 #include "front/checks.hpp"
+#include "front/scale.hpp"
 
 namespace pendepth {
 
@@ -38,11 +39,18 @@ void check_pose(const Pose3& pose, const std::string& what) {
   if (pose.rotation.coeffs().isZero(0)) throw InvalidInput(what + " rotation is the zero quaternion");
 }
 
-void check_poses(std::span<const Pose3> poses, std::size_t out_size) {
+Pose3 engine_pose(const front::Scale& scale, const Pose3& pose, const std::string& what);
+
+// Every pose checked (and, for a scaled pair, converted to engine coordinates) before any
+// query of the batch runs.
+void check_poses(std::span<const Pose3> poses, std::size_t out_size, int scale_exp) {
   if (out_size != poses.size())
     throw InvalidInput("batch: " + std::to_string(poses.size()) + " poses but room for " + std::to_string(out_size) +
                        " results");
-  for (std::size_t i = 0; i < poses.size(); ++i) check_pose(poses[i], "batch: pose " + std::to_string(i));
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    check_pose(poses[i], "batch: pose " + std::to_string(i));
+    engine_pose(front::Scale{scale_exp}, poses[i], "batch: pose " + std::to_string(i));
+  }
 }
 
 void check_directions(std::span<const Vec3> ds, std::size_t n) {
@@ -54,7 +62,76 @@ void check_directions(std::span<const Vec3> ds, std::size_t n) {
 
 }  // namespace
 
-Pair3::Pair3(Shape3 P, Shape3 Q, Prepare) : P_(std::move(P)), Q_(std::move(Q)) {}
+namespace {
+
+// The sizes of a polytope: its largest coordinate and its smallest edge.
+void add_extent(front::Extent& x, const Shape3& s) {
+  const ConvexPolytope& P = s.polytope();
+  for (const Vec3& v : P.vertices()) x.add_point(v.cwiseAbs().maxCoeff());
+  for (const auto& tri : P.triangles())
+    for (int k = 0; k < 3; ++k) x.add_edge(P[tri[k]], P[tri[(k + 1) % 3]]);
+}
+
+front::Scale pair_scale(const Shape3& P, const Shape3& Q) {
+  front::Extent x;
+  add_extent(x, P);
+  add_extent(x, Q);
+  return front::Scale::for_pair(x, front::kBand3);
+}
+
+// `s` in engine coordinates: the polytope scaled by 2^-e (exact, checked here so that the error
+// names the vertex and the range), with the same numbering, so features need no mapping.
+Shape3 engine_shape(const Shape3& s, const front::Scale& scale, const char* which) {
+  if (scale.identity()) return s;
+  const auto v = s.polytope().vertices();
+  for (std::size_t i = 0; i < v.size(); ++i)
+    scale.vec_to_engine(v[i], std::string(which) + " (" + s.name() + ") vertex " + std::to_string(i) + ":");
+  return Shape3(s.polytope().scaled(-scale.e));
+}
+
+// A pose in engine coordinates (its translation scaled; the rotation is scale-free).
+Pose3 engine_pose(const front::Scale& scale, const Pose3& pose, const std::string& what) {
+  if (scale.identity()) return pose;
+  return Pose3(pose.rotation, scale.vec_to_engine(pose.translation, what + " translation " +
+                                                                        front::text(pose.translation) + ":"));
+}
+
+// An engine answer back to input units (lengths and points scaled by 2^e; an overflowing length
+// becomes an explicit infinity).
+Depth3 scaled_back(Depth3 r, const front::Scale& scale) {
+  if (scale.identity()) return r;
+  r.depth = scale.length(r.depth);
+  r.lower_bound = scale.length(r.lower_bound);
+  r.upper_bound = scale.length(r.upper_bound);
+  r.translation = scale.vec(r.translation);
+  r.witness_p = scale.vec(r.witness_p);
+  r.witness_q = scale.vec(r.witness_q);
+  return r;
+}
+
+}  // namespace
+
+Pair3::Pair3(Shape3 P, Shape3 Q, Prepare)
+    : P_(std::move(P)),
+      Q_(std::move(Q)),
+      scale_exp_(pair_scale(P_, Q_).e),
+      engine_P_(engine_shape(P_, front::Scale{scale_exp_}, "P")),
+      engine_Q_(engine_shape(Q_, front::Scale{scale_exp_}, "Q")) {}
+
+// One query in engine coordinates: poses converted in (checked), the answer scaled back.
+Depth3 Pair3::min_engine(const Pose3& pose_p, const Pose3& pose_q) const {
+  const front::Scale scale{scale_exp_};
+  return scaled_back(minimum_depth(engine_P_.polytope(), engine_pose(scale, pose_p, "pose of P"),
+                                   engine_Q_.polytope(), engine_pose(scale, pose_q, "pose of Q")),
+                     scale);
+}
+
+Depth3 Pair3::along_engine(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const {
+  const front::Scale scale{scale_exp_};
+  return scaled_back(directional_depth(engine_P_.polytope(), engine_pose(scale, pose_p, "pose of P"),
+                                       engine_Q_.polytope(), engine_pose(scale, pose_q, "pose of Q"), d),
+                     scale);
+}
 
 bool Pair3::overlapping(const Pose3& pose_p, const Pose3& pose_q) const {
   return minimum(pose_p, pose_q).overlapping;
@@ -63,14 +140,14 @@ bool Pair3::overlapping(const Pose3& pose_p, const Pose3& pose_q) const {
 Depth3 Pair3::minimum(const Pose3& pose_p, const Pose3& pose_q) const {
   check_pose(pose_p, "pose of P");
   check_pose(pose_q, "pose of Q");
-  return minimum_depth(P_.polytope(), pose_p, Q_.polytope(), pose_q);
+  return min_engine(pose_p, pose_q);
 }
 
 Depth3 Pair3::along(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const {
   check_pose(pose_p, "pose of P");
   check_pose(pose_q, "pose of Q");
   front::check_direction(d);
-  return directional_depth(P_.polytope(), pose_p, Q_.polytope(), pose_q, d);
+  return along_engine(pose_p, pose_q, d);
 }
 
 Depth3 Pair3::separation(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const {
@@ -80,11 +157,10 @@ Depth3 Pair3::separation(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d
 }
 
 void Pair3::overlapping(std::span<const Pose3> poses_q, std::span<bool> out, unsigned threads) const {
-  check_poses(poses_q, out.size());
+  check_poses(poses_q, out.size(), scale_exp_);
   const Pose3 pose_p;
-  front::parallel_for(poses_q.size(), threads, [&](std::size_t i) {
-    out[i] = minimum_depth(P_.polytope(), pose_p, Q_.polytope(), poses_q[i]).overlapping;
-  });
+  front::parallel_for(poses_q.size(), threads,
+                      [&](std::size_t i) { out[i] = min_engine(pose_p, poses_q[i]).overlapping; });
 }
 
 void Pair3::minimum(std::span<const Pose3> poses_q, std::span<Depth3> out, unsigned threads) const {
@@ -99,22 +175,21 @@ void Pair3::along(std::span<const Pose3> poses_q, std::span<const Vec3> ds, std:
 void Pair3::minimum(const Pose3& pose_p, std::span<const Pose3> poses_q, std::span<Depth3> out,
                     unsigned threads) const {
   check_pose(pose_p, "pose of P");
-  check_poses(poses_q, out.size());
-  front::parallel_for(poses_q.size(), threads, [&](std::size_t i) {
-    out[i] = minimum_depth(P_.polytope(), pose_p, Q_.polytope(), poses_q[i]);
-  });
+  check_poses(poses_q, out.size(), scale_exp_);
+  engine_pose(front::Scale{scale_exp_}, pose_p, "pose of P");
+  front::parallel_for(poses_q.size(), threads, [&](std::size_t i) { out[i] = min_engine(pose_p, poses_q[i]); });
 }
 
 void Pair3::along(const Pose3& pose_p, std::span<const Pose3> poses_q, std::span<const Vec3> ds,
                   std::span<Depth3> out, unsigned threads) const {
   check_pose(pose_p, "pose of P");
-  check_poses(poses_q, out.size());
+  check_poses(poses_q, out.size(), scale_exp_);
+  engine_pose(front::Scale{scale_exp_}, pose_p, "pose of P");
   if (poses_q.empty()) return;
   check_directions(ds, poses_q.size());
   const bool one = ds.size() == 1;
-  front::parallel_for(poses_q.size(), threads, [&](std::size_t i) {
-    out[i] = directional_depth(P_.polytope(), pose_p, Q_.polytope(), poses_q[i], ds[one ? 0 : i]);
-  });
+  front::parallel_for(poses_q.size(), threads,
+                      [&](std::size_t i) { out[i] = along_engine(pose_p, poses_q[i], ds[one ? 0 : i]); });
 }
 
 }  // namespace pendepth

@@ -15,7 +15,13 @@
 namespace pendepth::io {
 
 void append_double(std::string& out, double x) {
-  assert(std::isfinite(x));
+  assert(!std::isnan(x));
+  // An answer whose true value overflows a double is an explicit infinity (docs/robustness.md).
+  // JSON has no infinity; 1e999 is a valid JSON number that every parser reads as one.
+  if (std::isinf(x)) {
+    out += x > 0 ? "1e999" : "-1e999";
+    return;
+  }
   char buf[32];
   auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, x);
   assert(ec == std::errc());
