@@ -33,4 +33,7 @@ if [ "${1:-}" != "--no-sanitize" ]; then
   cmake --build build-asan -j"$JOBS"
   ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --test-dir build-asan --output-on-failure -j"$JOBS" -LE package
+
+  echo "== Determinism: the Release and the sanitized Debug CLI give the same bits, at 1 and 2 threads =="
+  ./scripts/determinism.sh build build-asan
 fi
