@@ -251,6 +251,78 @@ struct SvgScene {
 void write_svg(const std::filesystem::path& path, const SvgScene& scene, const Vec2& t, const Depth2& r,
                const SvgOptions& options = {});
 
+/// A 3D scene for write_html, in world coordinates: meshes, points and arrows grouped in layers
+/// that the page shows or hides, and the panel's numbers (label, text) and notes. depth_scene3
+/// builds the scene of a depth query; other query kinds fill one their own way.
+struct Scene3 {
+  struct Layer {
+    std::string id, label;
+    std::string color;  ///< swatch in the layer list, "#rrggbb"
+    bool visible = true;
+  };
+  /// Parts of a mesh drawn in the highlight colour: triangles (indices into `triangles`),
+  /// edges and vertices (indices into `vertices`).
+  struct Highlight {
+    std::vector<int> triangles;
+    std::vector<std::array<int, 2>> edges;
+    std::vector<int> vertices;
+  };
+  struct Mesh {
+    std::string layer, color = "#808080";
+    double opacity = 1;  ///< < 1: translucent
+    std::vector<Vec3> vertices;
+    std::vector<std::array<int, 3>> triangles;  ///< counter-clockwise seen from outside
+    Highlight highlight;
+    std::string highlight_color = "#f2b200";
+  };
+  struct Point {
+    std::string layer, color, label;
+    Vec3 at{0, 0, 0};
+  };
+  struct Arrow {
+    std::string layer, color, label;
+    Vec3 from{0, 0, 0}, to{0, 0, 0};
+  };
+  std::string title;
+  std::vector<Layer> layers;
+  std::vector<Mesh> meshes;
+  std::vector<Point> points;
+  std::vector<Arrow> arrows;
+  std::vector<std::array<std::string, 2>> numbers;
+  std::vector<std::string> notes;
+};
+
+/// What depth_scene3 adds besides the shapes and the answer.
+struct Html3Options {
+  std::optional<Vec3> direction;  ///< σ_d / separation direction, drawn as an arrow from Q's centre
+  std::string p_label = "P", q_label = "Q";  ///< e.g. the file names
+  bool draw_M = true;  ///< a layer (hidden at first) with M = P ⊕ (−Q), t, t → t + v and M's facet there
+  std::size_t M_max_pairs = 1 << 16;  ///< M is the hull of the n·m vertex differences: skipped above this
+};
+
+/// The scene of a 3D depth query (world frame): P at pose_p, Q at pose_q, Q moved by
+/// r.translation (ghosted), the move as an arrow from the moved Q's witness back where it came
+/// from, the witness points, the features r.feature_p / r.feature_q highlighted (vertex, edge =
+/// half-edge 3f + k, face = every triangle of the true face of triangle f), the numbers, and M in
+/// placement coordinates (t = pose_q's translation relative to P's; t + v lies on ∂M) with the
+/// facet of normal r.facet_normal highlighted. Not overlapping: no move, witnesses or features.
+/// M is computed with ConvexPolytope::hull of the differences, O(nm log nm); skipped with a note
+/// above options.M_max_pairs pairs or when a difference is not finite.
+Scene3 depth_scene3(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q, const Pose3& pose_q,
+                    const Depth3& r, const Html3Options& options = {});
+
+/// The self-contained HTML page of a scene (three.js and the viewer inlined, no network needed):
+/// orbit / pan / zoom, layer toggles, the numbers panel, automatic framing. Coordinates are
+/// written normalised (centre subtracted, scaled by a power of two to a half-extent in
+/// [0.5, 1]), so any finite input scale (1e-300 … 1e300) gives finite JSON and a visible view.
+/// Throws InvalidInput for a non-finite coordinate, or if the library was built without the
+/// viewer (PENDEPTH_HTML_VIEWER=OFF). O(size of the scene).
+std::string html_page(const Scene3& scene);
+
+/// Writes html_page(scene) to a file. Throws InvalidInput as html_page, or "PATH: cannot write
+/// file (reason)".
+void write_html(const std::filesystem::path& path, const Scene3& scene);
+
 }  // namespace pendepth::io
 
 namespace pendepth {

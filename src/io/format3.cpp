@@ -109,6 +109,8 @@ std::string vec_text(const Vec3& v) {
 
 }  // namespace
 
+std::string detail::feature3_text(const Feature3& f, const ConvexPolytope& poly) { return feature_text(f, poly); }
+
 void append_json(std::string& out, const Depth3& r, const ConvexPolytope& P, const ConvexPolytope& Q) {
   detail::append_result_fields(
       out, r, P, Q, [](std::string& o, const auto& v) { append_vec(o, v); },

@@ -43,4 +43,8 @@ void append_result_fields(std::string& out, const Result& r, const ShapeP& P, co
   append_feature(out, r.feature_q, Q);
 }
 
+/// "vertex 4", "edge from vertex 1 to vertex 2", "face (triangle of vertices 0, 3, 5)": input
+/// vertex indices, as the 3D summary prints them (format3.cpp); "none" for FeatureKind3::None.
+std::string feature3_text(const Feature3& f, const ConvexPolytope& poly);
+
 }  // namespace pendepth::io::detail
