@@ -2,7 +2,7 @@
 // (include/pendepth/pendepth.hpp).
 //
 //   pendepth depth P Q [--offset X,Y[,Z]] [--direction X,Y[,Z]] [--separate] [--json] [--svg FILE]
-//                      [--rotate-q QW,QX,QY,QZ] [--rotate-p QW,QX,QY,QZ]
+//                      [--html FILE] [--rotate-q QW,QX,QY,QZ] [--rotate-p QW,QX,QY,QZ]
 //   pendepth batch P Q --queries FILE [--json] [--threads N] [--progress] [--rotate-q ...] [--rotate-p ...]
 //   pendepth nfp P Q [--json]
 //
@@ -146,7 +146,7 @@ void write_svg(const std::string& path, const Pair2& pair, const Vec2& t, const 
 }
 
 struct DepthArgs {
-  std::string p, q, offset, direction, svg, rotate_p, rotate_q;
+  std::string p, q, offset, direction, svg, html, rotate_p, rotate_q;
   bool separate = false, json = false;
 };
 
@@ -169,6 +169,9 @@ int run_depth3(const DepthArgs& a) {
   const Pose3 pose_p(rp, Vec3::Zero()), pose_q(rq, t);
   const Depth3 r = !d ? pair.minimum(pose_p, pose_q)
                       : a.separate ? pair.separation(pose_p, pose_q, *d) : pair.along(pose_p, pose_q, *d);
+  if (!a.html.empty())
+    io::write_html(a.html, io::depth_scene3(pair.P().polytope(), pose_p, pair.Q().polytope(), pose_q, r,
+                                            io::Html3Options{d, a.p, a.q}));
   std::string out;
   if (a.json) {
     io::append_json(out, r, pair.P().polytope(), pair.Q().polytope());
@@ -183,6 +186,7 @@ int run_depth3(const DepthArgs& a) {
 int run_depth(const DepthArgs& a) {
   if (pair_dimension(a.p, a.q) == 3) return run_depth3(a);
   reject_rotations(a.rotate_p, a.rotate_q);
+  if (!a.html.empty()) throw InvalidInput("--html draws 3D shapes only (use --svg for 2D)");
   const Shape2 P = Shape2::from_file(a.p, "P");
   const Shape2 Q = Shape2::from_file(a.q, "Q");
   const Vec2 t = a.offset.empty() ? Vec2(0, 0) : parse_vec(a.offset, "--offset");
@@ -385,6 +389,8 @@ int main(int argc, char** argv) {
       ->needs(dir);
   depth->add_flag("--json", da.json, "print one JSON object instead of a summary");
   depth->add_option("--svg", da.svg, "also draw the query into this SVG file (2D)")->type_name("FILE");
+  depth->add_option("--html", da.html, "also write a self-contained HTML page showing the 3D query (orbit, zoom)")
+      ->type_name("FILE");
   depth->add_option("--rotate-q", da.rotate_q, "3D: rotation of Q about its origin, before the offset (quaternion, normalised)")
       ->type_name("QW,QX,QY,QZ");
   depth->add_option("--rotate-p", da.rotate_p, "3D: rotation of P about its origin (quaternion, normalised)")
