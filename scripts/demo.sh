@@ -3,7 +3,8 @@
 # library's quickstart programs (the front door, include/pendepth/pendepth.hpp), the Python package
 # (installed for Debian's /usr/bin/python3) and the command-line tool, and runs them on
 # examples/data (see its README for where the shapes come from).
-# Pictures go to out/*.svg. BUILD=<dir> picks the build directory.
+# Pictures go to out/*.svg (2D) and out/*.html (3D: open in a browser, turn the scene around).
+# BUILD=<dir> picks the build directory.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/setup.sh  # installs the Debian packages the build needs (nothing when all are there)
@@ -68,6 +69,14 @@ set +e
 "$pd" batch "$data/octagon.wkt" "$data/hexagon.wkt" --queries out/demo_bad.csv >/dev/null
 echo "(exit status $?)"
 set -e
+
+echo "== 3D: a hexagonal prism P fixed (examples/data/hex_prism.off), an icosahedron Q at"
+echo "   t = (1.2, 0.5, 1.9) turned by the quaternion (0.95, 0.1, 0.2, 0.2): σ, then σ_d along (1, 0.3, 0.2)"
+echo "   (out/demo3d.html, out/demo3d_directional.html: self-contained pages, open them in a browser)"
+"$pd" depth "$data/hex_prism.off" "$data/icosahedron.obj" --offset 1.2,0.5,1.9 --rotate-q 0.95,0.1,0.2,0.2 \
+  --html out/demo3d.html
+"$pd" depth "$data/hex_prism.off" "$data/icosahedron.obj" --offset 1.2,0.5,1.9 --rotate-q 0.95,0.1,0.2,0.2 \
+  --direction 1,0.3,0.2 --json --html out/demo3d_directional.html
 
 # 3D: convex hulls of real game objects from the project's shared data, ../shared/data/hulls
 # relative to the repository root (Jolt Physics' convex_hulls.bin, MIT licence; see
