@@ -34,6 +34,7 @@ constexpr const char* kColorMove = "#1f9d55";
 constexpr const char* kColorWitness = "#1f2328";
 constexpr const char* kColorDirection = "#7b4fc9";
 constexpr const char* kColorM = "#9b7fd4";
+constexpr const char* kColorMFacet = "#d6336c";  // not the features' amber: a different space
 constexpr double kQOpacity = 0.55, kGhostOpacity = 0.2, kMOpacity = 0.22;
 constexpr double kDirectionLength = 0.6;  // the d arrow, in units of Q's largest box half-extent
 
@@ -142,6 +143,7 @@ void add_minkowski(Scene3& s, const std::vector<Vec3>& pw, const std::vector<Vec
   }
   s.layers.push_back({"M", "M = P ⊕ (−Q): placements t where they overlap", kColorM, false});
   Scene3::Mesh m = mesh("M", kColorM, kMOpacity, {M->vertices().begin(), M->vertices().end()}, M->triangles());
+  m.highlight_color = kColorMFacet;
   const Vec3 u = unit(r.facet_normal);
   if (r.overlapping && u != Vec3::Zero()) {
     int best = -1;
@@ -157,6 +159,7 @@ void add_minkowski(Scene3& s, const std::vector<Vec3>& pw, const std::vector<Vec
     for (std::size_t k = 0; k < m.triangles.size(); ++k)
       if (M->face_of_triangle(k) == best) m.highlight.triangles.push_back(static_cast<int>(k));
   }
+  if (!m.highlight.triangles.empty()) s.notes.push_back("Pink (layer M): the facet of M where t + v lies.");
   s.meshes.push_back(std::move(m));
   s.points.push_back({"M", kColorWitness, "t", t});
   if (r.overlapping && (t + r.translation).allFinite())
