@@ -307,7 +307,9 @@ struct Html3Options {
 /// placement coordinates (t = pose_q's translation relative to P's; t + v lies on ∂M) with the
 /// facet of normal r.facet_normal highlighted. Not overlapping: no move, witnesses or features.
 /// M is computed with ConvexPolytope::hull of the differences, O(nm log nm); skipped with a note
-/// above options.M_max_pairs pairs or when a difference is not finite.
+/// above options.M_max_pairs pairs or when a difference is not finite. Anything else that is not
+/// finite (a pose or an answer beyond the double range) is left out with a note: the scene is
+/// always one html_page accepts.
 Scene3 depth_scene3(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q, const Pose3& pose_q,
                     const Depth3& r, const Html3Options& options = {});
 

@@ -162,9 +162,46 @@ void add_minkowski(Scene3& s, const std::vector<Vec3>& pw, const std::vector<Vec
   if (!m.highlight.triangles.empty()) s.notes.push_back("Pink (layer M): the facet of M where t + v lies.");
   s.meshes.push_back(std::move(m));
   s.points.push_back({"M", kColorWitness, "t", t});
-  if (r.overlapping && (t + r.translation).allFinite())
-    s.arrows.push_back({"M", kColorMove, "t → t + v on ∂M", t, t + r.translation});
+  if (r.overlapping) s.arrows.push_back({"M", kColorMove, "t → t + v on ∂M", t, t + r.translation});
   s.numbers.push_back({"M", std::to_string(M->size()) + " vertices, " + std::to_string(M->face_count()) + " faces"});
+}
+
+// html_page takes finite scenes only. What overflows (a shape posed near the double range, an
+// answer the numeric domain reports as infinite, docs/robustness.md) is left out of the picture
+// with a note; the numbers panel still shows it. Layers left empty are removed.
+void drop_non_finite(Scene3& s) {
+  const auto label = [&](const std::string& layer) {
+    for (const auto& l : s.layers)
+      if (l.id == layer) return l.label;
+    return layer;
+  };
+  std::vector<std::string> dropped;
+  const auto note = [&](const std::string& what) { dropped.push_back(what); };
+  std::erase_if(s.meshes, [&](const Scene3::Mesh& m) {
+    if (all_finite(m.vertices)) return false;
+    note(label(m.layer));
+    return true;
+  });
+  std::erase_if(s.points, [&](const Scene3::Point& p) {
+    if (p.at.allFinite()) return false;
+    note(p.label);
+    return true;
+  });
+  std::erase_if(s.arrows, [&](const Scene3::Arrow& a) {
+    if (a.from.allFinite() && a.to.allFinite()) return false;
+    note(a.label);
+    return true;
+  });
+  std::erase_if(s.layers, [&](const Scene3::Layer& l) {
+    const auto in = [&](const auto& items) {
+      return std::any_of(items.begin(), items.end(), [&](const auto& x) { return x.layer == l.id; });
+    };
+    return !in(s.meshes) && !in(s.points) && !in(s.arrows);
+  });
+  if (dropped.empty()) return;
+  std::string n = "Not drawn, a coordinate not finite (beyond the double range): ";
+  for (std::size_t i = 0; i < dropped.size(); ++i) n += (i ? "; " : "") + dropped[i];
+  s.notes.push_back(n + ".");
 }
 
 // ---- JSON ----
@@ -377,32 +414,18 @@ Scene3 depth_scene3(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPo
   if (moved) {
     std::vector<Vec3> qm;
     for (const Vec3& q : qw) qm.push_back(q + r.translation);
-    if (all_finite(qm)) {
-      s.layers.push_back({"Q_moved", "Q after the move v (ghost)", kColorQ, true});
-      s.meshes.push_back(mesh("Q_moved", kColorQ, kGhostOpacity, std::move(qm), Q.triangles()));
-      s.meshes.back().highlight = feature_highlight(r.feature_q, Q);
-    } else {
-      s.notes.push_back("Q after the move not drawn: a coordinate is not finite.");
-    }
+    s.layers.push_back({"Q_moved", "Q after the move v (ghost)", kColorQ, true});
+    s.meshes.push_back(mesh("Q_moved", kColorQ, kGhostOpacity, std::move(qm), Q.triangles()));
+    s.meshes.back().highlight = feature_highlight(r.feature_q, Q);
   } else if (r.overlapping) {
     s.meshes[1].highlight = feature_highlight(r.feature_q, Q);
   }
   if (r.overlapping) {
-    // Every drawn item must be finite (html_page's contract); a non-finite one is left out, with
-    // a note, so that the page still shows the shapes and the numbers.
-    const auto finite = [&](const Vec3& a, const Vec3& b, const char* what) {
-      if (a.allFinite() && b.allFinite()) return true;
-      s.notes.push_back(std::string(what) + " not drawn: not finite.");
-      return false;
-    };
     s.layers.push_back({"move", "the move v (from the witness on Q)", kColorMove, true});
     s.layers.push_back({"witness", "witness points", kColorWitness, true});
-    if (moved && finite(r.witness_q - r.translation, r.witness_q, "The move v"))
-      s.arrows.push_back({"move", kColorMove, "v", r.witness_q - r.translation, r.witness_q});
-    if (finite(r.witness_p, r.witness_p, "The witness on P"))
-      s.points.push_back({"witness", kColorWitness, "witness on P", r.witness_p});
-    if (r.witness_q != r.witness_p && finite(r.witness_q, r.witness_q, "The witness on Q"))
-      s.points.push_back({"witness", kColorWitness, "witness on the moved Q", r.witness_q});
+    if (moved) s.arrows.push_back({"move", kColorMove, "the move v", r.witness_q - r.translation, r.witness_q});
+    s.points.push_back({"witness", kColorWitness, "the witness on P", r.witness_p});
+    if (r.witness_q != r.witness_p) s.points.push_back({"witness", kColorWitness, "the witness on Q", r.witness_q});
   }
   if (opt.direction && !opt.direction->isZero(0)) {
     Box3 qbox;
@@ -442,6 +465,7 @@ Scene3 depth_scene3(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPo
   if (r.overlapping)
     s.notes.push_back("Amber: the features of P and of the moved Q that span the facet of M where the move ends.");
   if (opt.draw_M) add_minkowski(s, pw, qrot, r, pose_q.translation, opt);
+  drop_non_finite(s);
   return s;
 }
 

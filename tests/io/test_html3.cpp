@@ -167,4 +167,21 @@ TEST(Html3, MinkowskiSumIsSkippedAboveTheCap) {
   EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const std::string& n) { return n.rfind("M not drawn", 0) == 0; }));
 }
 
+// Q at its pose overflows (vertices ±1.5e308 moved by 1e308): left out with a note, the page
+// still holds P and valid JSON.
+TEST(Html3, DepthSceneLeavesOutWhatOverflows) {
+  std::vector<Vec3> big;
+  for (const Vec3& v : cube(2)) big.push_back(1.5e308 * (v - Vec3::Ones()));  // ±1.5e308
+  const ConvexPolytope P = ConvexPolytope::hull(big), Q = ConvexPolytope::hull(big);
+  const Pose3 pp, pq(Vec3(1e308, 0, 0));
+  Depth3 r;  // whatever the engines answer, the picture must be valid: take "not overlapping"
+  const io::Scene3 s = io::depth_scene3(P, pp, Q, pq, r);
+  const json j = scene_json(io::html_page(s));
+  EXPECT_TRUE(has_layer(j, "P"));
+  EXPECT_FALSE(has_layer(j, "Q"));
+  EXPECT_FALSE(has_layer(j, "M"));
+  const auto& notes = s.notes;
+  EXPECT_TRUE(std::any_of(notes.begin(), notes.end(), [](const std::string& n) { return n.find("not finite") != std::string::npos; }));
+}
+
 }  // namespace
