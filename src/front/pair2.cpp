@@ -78,17 +78,6 @@ NoFitPolygonParts scaled_back(NoFitPolygonParts parts, const front::Scale& scale
   return parts;
 }
 
-// An engine answer back to input units: every length and point scaled by 2^e (the normal and
-// the features are scale-free). A length that overflows becomes an explicit infinity.
-Depth2 scaled_back(Depth2 r, const front::Scale& scale) {
-  if (scale.identity()) return r;
-  r.depth = scale.length(r.depth);
-  r.translation = scale.vec(r.translation);
-  r.witness_p = scale.vec(r.witness_p);
-  r.witness_q = scale.vec(r.witness_q);
-  return r;
-}
-
 }  // namespace
 
 NoFitPolygonParts no_fit_polygon(const Shape2& P, const Shape2& Q) {
@@ -277,21 +266,21 @@ bool Pair2::overlapping(const Vec2& t) const {
 Depth2 Pair2::minimum(const Vec2& t) const {
   front::check_placement(t);
   const Impl& I = *impl_;
-  return scaled_back(I.minimum(engine_placement(I.scale, t)), I.scale);
+  return I.scale.answer(I.minimum(engine_placement(I.scale, t)));
 }
 
 Depth2 Pair2::along(const Vec2& t, const Vec2& d) const {
   front::check_placement(t);
   front::check_direction(d);
   const Impl& I = *impl_;
-  return scaled_back(I.along(engine_placement(I.scale, t), d), I.scale);
+  return I.scale.answer(I.along(engine_placement(I.scale, t), d));
 }
 
 Depth2 Pair2::separation(const Vec2& t, const Vec2& d) const {
   front::check_placement(t);
   front::check_direction(d);
   const Impl& I = *impl_;
-  return scaled_back(I.separation(engine_placement(I.scale, t), d), I.scale);
+  return I.scale.answer(I.separation(engine_placement(I.scale, t), d));
 }
 
 void Pair2::overlapping(std::span<const Vec2> ts, std::span<bool> out, unsigned threads) const {
@@ -307,7 +296,7 @@ void Pair2::minimum(std::span<const Vec2> ts, std::span<Depth2> out, unsigned th
   const Impl& I = *impl_;
   check_batch_scale(I.scale, ts);
   front::parallel_for(ts.size(), threads, [&](std::size_t i) {
-    out[i] = scaled_back(I.minimum(engine_placement(I.scale, ts[i])), I.scale);
+    out[i] = I.scale.answer(I.minimum(engine_placement(I.scale, ts[i])));
   });
 }
 
@@ -323,7 +312,7 @@ void directional_batch(const front::Scale& scale, std::span<const Vec2> ts, std:
   if (ts.empty()) return;
   const bool one = ds.size() == 1;
   front::parallel_for(ts.size(), threads, [&](std::size_t i) {
-    out[i] = scaled_back(query(engine_placement(scale, ts[i]), ds[one ? 0 : i]), scale);
+    out[i] = scale.answer(query(engine_placement(scale, ts[i]), ds[one ? 0 : i]));
   });
 }
 

@@ -96,19 +96,6 @@ Pose3 engine_pose(const front::Scale& scale, const Pose3& pose, const std::strin
                                                                         front::text(pose.translation) + ":"));
 }
 
-// An engine answer back to input units (lengths and points scaled by 2^e; an overflowing length
-// becomes an explicit infinity).
-Depth3 scaled_back(Depth3 r, const front::Scale& scale) {
-  if (scale.identity()) return r;
-  r.depth = scale.length(r.depth);
-  r.lower_bound = scale.length(r.lower_bound);
-  r.upper_bound = scale.length(r.upper_bound);
-  r.translation = scale.vec(r.translation);
-  r.witness_p = scale.vec(r.witness_p);
-  r.witness_q = scale.vec(r.witness_q);
-  return r;
-}
-
 }  // namespace
 
 Pair3::Pair3(Shape3 P, Shape3 Q, Prepare)
@@ -121,16 +108,14 @@ Pair3::Pair3(Shape3 P, Shape3 Q, Prepare)
 // One query in engine coordinates: poses converted in (checked), the answer scaled back.
 Depth3 Pair3::min_engine(const Pose3& pose_p, const Pose3& pose_q) const {
   const front::Scale scale{scale_exp_};
-  return scaled_back(minimum_depth(engine_P_.polytope(), engine_pose(scale, pose_p, "pose of P"),
-                                   engine_Q_.polytope(), engine_pose(scale, pose_q, "pose of Q")),
-                     scale);
+  return scale.answer(minimum_depth(engine_P_.polytope(), engine_pose(scale, pose_p, "pose of P"),
+                                    engine_Q_.polytope(), engine_pose(scale, pose_q, "pose of Q")));
 }
 
 Depth3 Pair3::along_engine(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const {
   const front::Scale scale{scale_exp_};
-  return scaled_back(directional_depth(engine_P_.polytope(), engine_pose(scale, pose_p, "pose of P"),
-                                       engine_Q_.polytope(), engine_pose(scale, pose_q, "pose of Q"), d),
-                     scale);
+  return scale.answer(directional_depth(engine_P_.polytope(), engine_pose(scale, pose_p, "pose of P"),
+                                        engine_Q_.polytope(), engine_pose(scale, pose_q, "pose of Q"), d));
 }
 
 bool Pair3::overlapping(const Pose3& pose_p, const Pose3& pose_q) const {

@@ -110,6 +110,23 @@ struct Scale {
     return out;
   }
 
+  /// An engine answer (Depth2 or Depth3) back to input units: every length and point scaled by
+  /// 2^e (normals and features are scale-free). A length that overflows becomes an explicit
+  /// infinity.
+  template <class Result>
+  Result answer(Result r) const {
+    if (identity()) return r;
+    r.depth = length(r.depth);
+    if constexpr (requires { r.lower_bound; }) {
+      r.lower_bound = length(r.lower_bound);
+      r.upper_bound = length(r.upper_bound);
+    }
+    r.translation = vec(r.translation);
+    r.witness_p = vec(r.witness_p);
+    r.witness_q = vec(r.witness_q);
+    return r;
+  }
+
   /// Why `x` has no exact engine value at this scale, with the range it must lie in.
   std::string describe(double x) const {
     char buf[256];
