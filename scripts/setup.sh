@@ -7,7 +7,8 @@ PKGS=(cmake g++ make pkg-config libeigen3-dev libgmp-dev libcgal-dev libgtest-de
       libbenchmark-dev libcli11-dev nlohmann-json3-dev libbox2d-dev
       libccd-dev libfcl-dev libbullet-dev libpolyclipping-dev libtbb-dev
       pybind11-dev python3-dev python3-numpy python3-pytest python3-hypothesis python3-dask
-      python3-distributed python3-pandas python3-matplotlib python3-shapely)
+      python3-distributed python3-pandas python3-matplotlib python3-shapely
+      clang libfuzzer-14-dev)  # the fuzz stage of scripts/test.sh (scripts/fuzz.sh)
 missing=()
 for p in "${PKGS[@]}"; do
   status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
