@@ -77,7 +77,7 @@ void check_same_dimension(const std::string& p, int dp, const std::string& q, in
 void check_one_stdin(std::initializer_list<const std::string*> args) {
   int n = 0;
   for (const std::string* a : args) n += *a == "-";
-  if (n > 1) throw InvalidInput("only one of P, Q and --queries can be '-' (standard input is read once)");
+  if (n > 1) throw InvalidInput("only one file argument can be '-' (standard input is read once)");
 }
 
 // A shape argument read once: a path, or `-` for standard input. The format comes from the

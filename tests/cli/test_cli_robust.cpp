@@ -126,10 +126,10 @@ TEST_F(CliRobust, DashReadsStandardInput) {
   EXPECT_EQ(r.err, "<stdin>:1: expected a number for y, got 'x'\n");
   r = shell("PENDEPTH depth - - < " + quote(P));
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.err, "only one of P, Q and --queries can be '-' (standard input is read once)\n");
+  EXPECT_EQ(r.err, "only one file argument can be '-' (standard input is read once)\n");
   r = shell("PENDEPTH batch - " + quote(P) + " --queries - < " + quote(P));
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.err, "only one of P, Q and --queries can be '-' (standard input is read once)\n");
+  EXPECT_EQ(r.err, "only one file argument can be '-' (standard input is read once)\n");
   r = shell("printf 'hello' | PENDEPTH depth - " + quote(P));
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err,

@@ -15,6 +15,14 @@
 #include <exception>
 #include <string_view>
 
+/// The entry point of a target: libFuzzer's, or, when the sources are compiled into the test
+/// suite to replay the seed corpus (tests/fuzz_corpus), a function named after the target.
+#ifdef PENDEPTH_FUZZ_REPLAY
+#define PENDEPTH_FUZZ_TARGET(name) int name(const std::uint8_t* data, std::size_t size)
+#else
+#define PENDEPTH_FUZZ_TARGET(name) extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+#endif
+
 namespace fuzz {
 
 /// Aborts with a message (a crash for libFuzzer, which then saves the input).

@@ -22,7 +22,7 @@ void check_queries(const Queries& qs, std::string_view text) {
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+PENDEPTH_FUZZ_TARGET(fuzz_queries_csv) {
   if (size > 4096) return 0;
   const std::string_view text(reinterpret_cast<const char*>(data), size);
   fuzz::allowed([&] { check_queries(pendepth::io::parse_queries_csv(text, "q.csv"), text); });

@@ -3,7 +3,7 @@
 // depth field), batch = single, the no-fit polygon, with their invariants.
 #include "fuzz_shapes.hpp"
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+PENDEPTH_FUZZ_TARGET(fuzz_query2_convex) {
   if (size > 1024) return 0;
   fuzz::Bytes b(data, size);
   const auto P = fuzz::shape2(b, 0, "P");

@@ -3,7 +3,7 @@
 // their invariants.
 #include "fuzz_shapes.hpp"
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+PENDEPTH_FUZZ_TARGET(fuzz_query3) {
   if (size > 1024) return 0;
   fuzz::Bytes b(data, size);
   const auto P = fuzz::shape3(b, "P");

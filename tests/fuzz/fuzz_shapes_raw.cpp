@@ -23,7 +23,7 @@ bool small(const std::vector<std::vector<fuzz::Vec2>>& rings, std::size_t max_ve
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+PENDEPTH_FUZZ_TARGET(fuzz_shapes_raw) {
   if (size > 4096) return 0;
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);
   const auto format = io::guess_shape_format(bytes);

@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <string>
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+PENDEPTH_FUZZ_TARGET(fuzz_stl_ascii) {
   if (size > 4096) return 0;
   std::string text(reinterpret_cast<const char*>(data), size);
   if (text.rfind("solid", 0) != 0) text.insert(0, "solid fuzz\n");

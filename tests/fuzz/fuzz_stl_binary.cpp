@@ -8,7 +8,7 @@
 
 #include <string>
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+PENDEPTH_FUZZ_TARGET(fuzz_stl_binary) {
   if (size < 1 || size > 8192) return 0;
   std::string bytes;
   std::size_t triangles = 0;
