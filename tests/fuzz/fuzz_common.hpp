@@ -67,15 +67,23 @@ class Bytes {
   Bytes(const std::uint8_t* data, std::size_t size) : p_(data), n_(size) {}
   std::size_t left() const { return n_ - i_; }
   std::uint8_t u8() { return i_ < n_ ? p_[i_++] : 0; }
-  std::uint16_t u16() { return static_cast<std::uint16_t>(u8() | u8() << 8); }
-  std::uint32_t u32() { return static_cast<std::uint32_t>(u16()) | static_cast<std::uint32_t>(u16()) << 16; }
+  // Reads in sequence (the operands of | are unsequenced: GCC and clang would differ).
+  std::uint16_t u16() {
+    const unsigned lo = u8();
+    return static_cast<std::uint16_t>(lo | unsigned(u8()) << 8);
+  }
+  std::uint32_t u32() {
+    const std::uint32_t lo = u16();
+    return lo | static_cast<std::uint32_t>(u16()) << 16;
+  }
   /// An integer in [lo, hi].
   int range(int lo, int hi) { return lo + static_cast<int>(u16() % static_cast<unsigned>(hi - lo + 1)); }
   /// A signed 16-bit integer as a double (small integer coordinates: exact degeneracies are common).
   double i16() { return static_cast<double>(static_cast<std::int16_t>(u16())); }
   /// A double of any bit pattern that is finite with |x| <= limit (else a small integer).
   double finite(double limit) {
-    std::uint64_t bits = static_cast<std::uint64_t>(u32()) | static_cast<std::uint64_t>(u32()) << 32;
+    const std::uint64_t lo = u32();
+    const std::uint64_t bits = lo | static_cast<std::uint64_t>(u32()) << 32;
     double x;
     std::memcpy(&x, &bits, sizeof x);
     if (!std::isfinite(x) || std::fabs(x) > limit) return static_cast<double>(static_cast<std::int8_t>(bits & 0xFF));

@@ -35,6 +35,23 @@ using pendepth::Vec2;
 using pendepth::Vec3;
 using Rings = std::vector<std::vector<Vec2>>;
 
+// Byte reads are sequenced explicitly (one per statement, or in a braced list): the order in
+// which function arguments are evaluated differs between GCC and clang, and the corpus replay
+// (tests/fuzz_corpus, GCC) must read an input as the fuzzer (clang) did.
+
+/// Integers in [lo, hi] as a vector, read in order.
+inline Vec2 ints2(Bytes& b, int lo, int hi) {
+  const double x = b.range(lo, hi);
+  const double y = b.range(lo, hi);
+  return Vec2(x, y);
+}
+inline Vec3 ints3(Bytes& b, int lo, int hi) {
+  const double x = b.range(lo, hi);
+  const double y = b.range(lo, hi);
+  const double z = b.range(lo, hi);
+  return Vec3(x, y, z);
+}
+
 /// Largest coordinate magnitude of the query targets (see the header comment: part 1 of issue 20
 /// widens it).
 constexpr double kCoordLimit = 1e6;
@@ -48,7 +65,7 @@ struct Frame {
   static Frame from(Bytes& b) {
     Frame f;
     f.e = b.range(-12, 4);
-    if (b.u8() & 1) f.offset = Vec2(b.range(-30000, 30000) * 8.0, b.range(-30000, 30000) * 8.0);
+    if (b.u8() & 1) f.offset = ints2(b, -30000, 30000) * 8.0;
     return f;
   }
 };
@@ -172,14 +189,15 @@ inline Vec2 placement(Bytes& b, const Shape2& P, const Shape2& Q) {
   const auto rp = P.rings(), rq = Q.rings();
   const auto& a = rp[b.u8() % rp.size()];
   const auto& c = rq[b.u8() % rq.size()];
-  const Vec2 t = a[b.u8() % a.size()] - c[b.u8() % c.size()];
+  const Vec2 from = a[b.u8() % a.size()];
+  const Vec2 t = from - c[b.u8() % c.size()];
   const double step = std::ldexp(1.0, b.range(-6, 3));
-  return t + Vec2(b.range(-3, 3) * step, b.range(-3, 3) * step);
+  return t + ints2(b, -3, 3) * step;
 }
 
 inline Vec2 direction(Bytes& b) {
   for (;;) {
-    const Vec2 d(b.range(-8, 8), b.range(-8, 8));
+    const Vec2 d = ints2(b, -8, 8);
     if (d != Vec2(0, 0)) return d;
     if (b.left() == 0) return Vec2(1, 0);
   }
@@ -241,12 +259,14 @@ inline void exercise2(Bytes& b, const Shape2& P, const Shape2& Q) {
 inline std::optional<Shape3> shape3(Bytes& b, const char* name) {
   const int n = b.range(4, 40);
   const int e = b.range(-12, 4);
-  const Vec3 offset = (b.u8() & 1) ? Vec3(b.range(-30000, 30000), b.range(-30000, 30000), b.range(-30000, 30000)) * 8.0
-                                   : Vec3(0, 0, 0);
+  const Vec3 offset = (b.u8() & 1) ? Vec3(ints3(b, -30000, 30000) * 8.0) : Vec3(0, 0, 0);
   std::vector<Vec3> pts;
   for (int i = 0; i < n; ++i) {
     const auto c = [&] { return std::ldexp(double(static_cast<std::int8_t>(b.u8())), e); };
-    pts.push_back(Vec3(c(), c(), c()) + offset);
+    const double x = c();
+    const double y = c();
+    const double z = c();
+    pts.push_back(Vec3(x, y, z) + offset);
   }
   std::optional<Shape3> s;
   allowed([&] { s.emplace(Shape3::hull(pts, name)); });  // flat point sets are rejected
@@ -262,16 +282,19 @@ inline void exercise3(Bytes& b, const Shape3& P, const Shape3& Q) {
   for (int q = 0; q < 3 && b.left() > 0; ++q) {
     Eigen::Quaterniond rot = Eigen::Quaterniond::Identity();
     if (b.u8() & 1) {
-      const Eigen::Vector4d c(b.range(-4, 4), b.range(-4, 4), b.range(-4, 4), b.range(-4, 4));
+      Eigen::Vector4d c;
+      for (int k = 0; k < 4; ++k) c[k] = b.range(-4, 4);
       if (!c.isZero(0)) rot = Eigen::Quaterniond(c[0], c[1], c[2], c[3]);
     }
     const auto& vp = P.polytope().vertices();
     const auto& vq = Q.polytope().vertices();
     const Pose3 pose_q0(rot, Vec3::Zero());
-    const Vec3 t = vp[b.u8() % vp.size()] - pose_q0.apply(vq[b.u8() % vq.size()]) +
-                   Vec3(b.range(-2, 2), b.range(-2, 2), b.range(-2, 2)) * std::ldexp(1.0, b.range(-6, 3));
+    const Vec3 from = vp[b.u8() % vp.size()];
+    const Vec3 to = pose_q0.apply(vq[b.u8() % vq.size()]);
+    const Vec3 step = ints3(b, -2, 2);
+    const Vec3 t = from - to + step * std::ldexp(1.0, b.range(-6, 3));
     const Pose3 pose_p, pose_q(rot, t);
-    Vec3 d(b.range(-4, 4), b.range(-4, 4), b.range(-4, 4));
+    Vec3 d = ints3(b, -4, 4);
     if (d.isZero(0)) d = Vec3(0, 0, 1);
     const double tol = 1e-9 * (S + t.norm()) + 1e-300;
     const Depth3 r = pair.minimum(pose_p, pose_q);
