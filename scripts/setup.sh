@@ -9,7 +9,8 @@ PKGS=(cmake g++ make pkg-config libeigen3-dev libgmp-dev libcgal-dev libgtest-de
       libccd-dev libfcl-dev libbullet-dev libpolyclipping-dev libtbb-dev
       pybind11-dev python3-dev python3-numpy python3-pytest python3-hypothesis python3-dask
       python3-distributed python3-pandas python3-matplotlib python3-shapely
-      chromium fonts-dejavu-core python3-pil)
+      chromium fonts-dejavu-core python3-pil
+      clang libfuzzer-14-dev)  # the fuzz stage of scripts/test.sh (scripts/fuzz.sh)
 # npm: Debian's package, unless an npm is already on the PATH (NodeSource's nodejs bundles one and
 # conflicts with Debian's npm package).
 command -v npm >/dev/null 2>&1 || PKGS+=(npm)

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The README's test command: installs what the build needs (Debian packages), builds everything
 # (library, CLI, tests, benchmarks, examples, the Python package) in Release and runs the whole
-# test suite and the Python tests (python/tests, pytest); then
-# builds and runs the tests once more under AddressSanitizer + UndefinedBehaviorSanitizer.
+# test suite and the Python tests (python/tests, pytest); then a bounded fuzz stage (every
+# libFuzzer target of tests/fuzz for FUZZ_SECONDS, default 12, each: scripts/fuzz.sh; skipped with
+# PENDEPTH_SKIP_FUZZ=1); then builds and runs the tests once more under AddressSanitizer +
+# UndefinedBehaviorSanitizer.
 # Usage: scripts/test.sh [--no-sanitize]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -23,6 +25,11 @@ if [ "$rc" -eq 5 ]; then
   exit 1
 fi
 [ "$rc" -eq 0 ] || exit "$rc"
+
+if [ "${PENDEPTH_SKIP_FUZZ:-0}" != 1 ]; then
+  echo "== Fuzzing: ${FUZZ_SECONDS:-12} s per target (clang + libFuzzer, build-fuzz; a campaign: scripts/fuzz.sh 600) =="
+  JOBS="$JOBS" ./scripts/fuzz.sh "${FUZZ_SECONDS:-12}"
+fi
 
 if [ "${1:-}" != "--no-sanitize" ]; then
   echo "== ASan + UBSan build + tests =="

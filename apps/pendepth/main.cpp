@@ -7,8 +7,11 @@
 //   pendepth nfp P Q [--json]
 //
 // Exit status: 0 success, 2 bad input (one line on stderr naming file, line and problem),
-// 1 internal error. Shapes: .wkt (2D polygons); .obj, .off, .stl (3D: the convex hull of the
-// vertices). P and Q must have the same dimension. Rotations are 3D only.
+// 3 an output that cannot be written (standard output or --svg FILE: full disk, closed pipe,
+// a path that cannot be created), 1 internal error. Shapes: .wkt (2D polygons); .obj, .off, .stl
+// (3D: the convex hull of the vertices); `-` (standard input) or a path without an extension (a
+// FIFO, /dev/stdin, a process substitution) is recognised by its content. P and Q must have the
+// same dimension. Rotations are 3D only.
 //
 // Engines: Pair2 / Pair3 pick them. `depth` asks one question, so it prepares only what the query
 // needs (Prepare::Queries: two non-convex polygons are answered per query, nothing built);
@@ -20,9 +23,13 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
+#include <cstring>
+#include <iostream>
 #include <optional>
 #include <span>
 #include <string>
@@ -49,21 +56,72 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
-// The dimension of a shape file, by its extension: 2 (.wkt) or 3 (.obj, .off, .stl).
+constexpr const char* kStdin = "<stdin>";  // the source name of `-` in messages
+
+// The dimension of a shape file by its extension: 2 (.wkt) or 3 (.obj, .off, .stl); 0 for `-`
+// and paths without an extension (known once the content is read).
 int shape_dimension(const std::string& path) {
-  const std::string ext = lower_extension(path);
-  if (ext == ".wkt") return 2;
-  if (ext == ".obj" || ext == ".off" || ext == ".stl") return 3;
-  throw InvalidInput(path + ": unknown shape format '" + ext + "' (expected .wkt, .obj, .off or .stl)");
+  if (path == "-" || std::filesystem::path(path).extension().empty()) return 0;
+  if (const auto f = io::shape_format_of(path)) return *f == io::ShapeFormat::Wkt ? 2 : 3;
+  throw InvalidInput(path + ": unknown shape format '" + lower_extension(path) +
+                     "' (expected .wkt, .obj, .off or .stl)");
 }
 
-// The common dimension of P and Q; mixing a 2D and a 3D shape is bad input.
-int pair_dimension(const std::string& p, const std::string& q) {
-  const int dp = shape_dimension(p), dq = shape_dimension(q);
-  if (dp != dq)
+void check_same_dimension(const std::string& p, int dp, const std::string& q, int dq) {
+  if (dp != 0 && dq != 0 && dp != dq)
     throw InvalidInput(q + ": Q is a " + std::to_string(dq) + "D shape but P (" + p + ") is " + std::to_string(dp) +
                        "D; both must be 2D (.wkt) or both 3D (.obj, .off, .stl)");
-  return dp;
+}
+
+// Standard input may be read once: at most one of the file arguments is `-`.
+void check_one_stdin(std::initializer_list<const std::string*> args) {
+  int n = 0;
+  for (const std::string* a : args) n += *a == "-";
+  if (n > 1) throw InvalidInput("only one file argument can be '-' (standard input is read once)");
+}
+
+// A shape argument read once: a path, or `-` for standard input. The format comes from the
+// extension, else (standard input, a FIFO or process substitution without one) from the content.
+struct ShapeText {
+  std::string source;  // the path as given, or <stdin>
+  io::ShapeFormat format = io::ShapeFormat::Wkt;
+  std::string text;
+  int dimension() const { return format == io::ShapeFormat::Wkt ? 2 : 3; }
+};
+
+ShapeText load_shape(const std::string& arg) {
+  ShapeText s;
+  s.source = arg == "-" ? kStdin : arg;
+  if (arg != "-" && shape_dimension(arg) != 0) {
+    s.format = *io::shape_format_of(arg);
+    s.text = io::read_text_file(arg);
+    return s;
+  }
+  s.text = arg == "-" ? io::read_stream(std::cin, kStdin) : io::read_text_file(arg);
+  const auto f = io::guess_shape_format(s.text);
+  if (!f)
+    throw InvalidInput(s.source + ": cannot tell the shape format from the content (expected a WKT POLYGON, OBJ, "
+                                  "OFF or STL; name the file .wkt, .obj, .off or .stl)");
+  s.format = *f;
+  return s;
+}
+
+// P and Q, read once each, of the same dimension (checked by extension before anything is read).
+std::pair<ShapeText, ShapeText> load_pair(const std::string& p, const std::string& q) {
+  check_same_dimension(p, shape_dimension(p), q, shape_dimension(q));
+  ShapeText P = load_shape(p), Q = load_shape(q);
+  check_same_dimension(P.source, P.dimension(), Q.source, Q.dimension());
+  return {std::move(P), std::move(Q)};
+}
+
+Shape2 make_shape2(const ShapeText& s, std::string_view name) {
+  io::Shape2 r = io::shape2_from_wkt(io::parse_wkt_polygon(s.text, s.source), s.source, name);
+  return r.convex ? Shape2(std::move(*r.convex)) : Shape2(std::move(*r.polygon));
+}
+
+Shape3 make_shape3(const ShapeText& s, std::string_view name) {
+  return Shape3(
+      io::convex_polytope_from_points(io::parse_mesh_points(s.text, s.format, s.source), s.source, name));
 }
 
 
@@ -107,7 +165,19 @@ Eigen::Quaterniond parse_rotation(const std::string& text, const char* option) {
   return Eigen::Quaterniond(q[0], q[1], q[2], q[3]);
 }
 
-void write_stdout(const std::string& s) { std::fwrite(s.data(), 1, s.size(), stdout); }
+// Standard output, checked: a full disk or a closed pipe (SIGPIPE is ignored) is a WriteError,
+// never a silent exit 0 with the answers lost.
+void write_stdout(const std::string& s) {
+  errno = 0;
+  if (!s.empty() && std::fwrite(s.data(), 1, s.size(), stdout) != s.size())
+    throw io::WriteError(std::string("standard output: cannot write (") + (errno ? std::strerror(errno) : "write error") + ")");
+}
+
+void flush_stdout() {
+  errno = 0;
+  if (std::fflush(stdout) != 0 || std::ferror(stdout))
+    throw io::WriteError(std::string("standard output: cannot write (") + (errno ? std::strerror(errno) : "write error") + ")");
+}
 
 // ---- output of 2D results: the io writers take the shapes' own classes ----
 
@@ -155,7 +225,7 @@ void reject_rotations(const std::string& rotate_p, const std::string& rotate_q) 
   if (!rotate_p.empty()) throw InvalidInput("--rotate-p: rotations apply to 3D shapes only");
 }
 
-int run_depth3(const DepthArgs& a) {
+int run_depth3(const DepthArgs& a, const ShapeText& p, const ShapeText& q) {
   if (!a.svg.empty()) throw InvalidInput("--svg draws 2D shapes only");
   const Eigen::Quaterniond rq = parse_rotation(a.rotate_q, "--rotate-q");
   const Eigen::Quaterniond rp = parse_rotation(a.rotate_p, "--rotate-p");
@@ -165,7 +235,7 @@ int run_depth3(const DepthArgs& a) {
     d = parse_vec3(a.direction, "--direction");
     if (d->isZero(0)) throw InvalidInput("--direction: the direction is zero");
   }
-  const Pair3 pair(Shape3::from_file(a.p, "P"), Shape3::from_file(a.q, "Q"));
+  const Pair3 pair(make_shape3(p, "P"), make_shape3(q, "Q"));
   const Pose3 pose_p(rp, Vec3::Zero()), pose_q(rq, t);
   const Depth3 r = !d ? pair.minimum(pose_p, pose_q)
                       : a.separate ? pair.separation(pose_p, pose_q, *d) : pair.along(pose_p, pose_q, *d);
@@ -184,11 +254,13 @@ int run_depth3(const DepthArgs& a) {
 }
 
 int run_depth(const DepthArgs& a) {
-  if (pair_dimension(a.p, a.q) == 3) return run_depth3(a);
+  check_one_stdin({&a.p, &a.q});
+  const auto [p, q] = load_pair(a.p, a.q);
+  if (p.dimension() == 3) return run_depth3(a, p, q);
   reject_rotations(a.rotate_p, a.rotate_q);
   if (!a.html.empty()) throw InvalidInput("--html draws 3D shapes only (use --svg for 2D)");
-  const Shape2 P = Shape2::from_file(a.p, "P");
-  const Shape2 Q = Shape2::from_file(a.q, "Q");
+  const Shape2 P = make_shape2(p, "P");
+  const Shape2 Q = make_shape2(q, "Q");
   const Vec2 t = a.offset.empty() ? Vec2(0, 0) : parse_vec(a.offset, "--offset");
   std::optional<Vec2> d;
   if (!a.direction.empty()) {
@@ -298,11 +370,12 @@ int write_batch(const BatchArgs& a, const std::vector<Result>& results, const ch
   return 0;
 }
 
-int run_batch3(const BatchArgs& a) {
+int run_batch3(const BatchArgs& a, const ShapeText& p, const ShapeText& q) {
   const Eigen::Quaterniond rq = parse_rotation(a.rotate_q, "--rotate-q");
   const Eigen::Quaterniond rp = parse_rotation(a.rotate_p, "--rotate-p");
-  const Pair3 pair(Shape3::from_file(a.p, "P"), Shape3::from_file(a.q, "Q"), pendepth::Prepare::Full);
-  const std::vector<io::Query3> queries = io::read_queries3_csv(a.queries);
+  const Pair3 pair(make_shape3(p, "P"), make_shape3(q, "Q"), pendepth::Prepare::Full);
+  const std::vector<io::Query3> queries = a.queries == "-" ? io::parse_queries3_csv(io::read_stream(std::cin, kStdin), kStdin)
+                                                           : io::read_queries3_csv(a.queries);
   const Pose3 pose_p(rp, Vec3::Zero());
   const auto poses = [&](std::span<const Vec3> ts) {
     std::vector<Pose3> p;
@@ -324,10 +397,13 @@ int run_batch3(const BatchArgs& a) {
 // 2D: every per-pair structure is built once, before the first query (the depth field of two
 // convex polygons, the no-fit polygon of two non-convex ones).
 int run_batch(const BatchArgs& a) {
-  if (pair_dimension(a.p, a.q) == 3) return run_batch3(a);
+  check_one_stdin({&a.p, &a.q, &a.queries});
+  const auto [p, q] = load_pair(a.p, a.q);
+  if (p.dimension() == 3) return run_batch3(a, p, q);
   reject_rotations(a.rotate_p, a.rotate_q);
-  const Pair2 pair(Shape2::from_file(a.p, "P"), Shape2::from_file(a.q, "Q"), pendepth::Prepare::Full);
-  const std::vector<io::Query2> queries = io::read_queries_csv(a.queries);
+  const Pair2 pair(make_shape2(p, "P"), make_shape2(q, "Q"), pendepth::Prepare::Full);
+  const std::vector<io::Query2> queries = a.queries == "-" ? io::parse_queries_csv(io::read_stream(std::cin, kStdin), kStdin)
+                                                           : io::read_queries_csv(a.queries);
   const std::vector<Depth2> results = answer_all<Depth2>(
       queries, show_progress(a),
       [&](std::span<const Vec2> ts, std::span<Depth2> out) { pair.minimum(ts, out, a.threads); },
@@ -345,10 +421,13 @@ struct NfpArgs {
 
 // The no-fit polygon of any two polygons (convex ones too), as WKT or JSON.
 int run_nfp(const NfpArgs& a) {
-  if (shape_dimension(a.p) != 2 || shape_dimension(a.q) != 2)
-    throw InvalidInput((shape_dimension(a.p) != 2 ? a.p : a.q) + ": nfp takes 2D shapes (.wkt) only");
-  const pendepth::NoFitPolygonParts nfp =
-      pendepth::no_fit_polygon(Shape2::from_file(a.p, "P"), Shape2::from_file(a.q, "Q"));
+  check_one_stdin({&a.p, &a.q});
+  for (const std::string* s : {&a.p, &a.q})
+    if (const int d = shape_dimension(*s); d == 3) throw InvalidInput(*s + ": nfp takes 2D shapes (.wkt) only");
+  const ShapeText p = load_shape(a.p), q = load_shape(a.q);
+  for (const ShapeText* s : {&p, &q})
+    if (s->dimension() != 2) throw InvalidInput(s->source + ": nfp takes 2D shapes (.wkt) only");
+  const pendepth::NoFitPolygonParts nfp = pendepth::no_fit_polygon(make_shape2(p, "P"), make_shape2(q, "Q"));
   io::Geometry2 g;
   g.polygons = nfp.polygons;
   for (const auto& s : nfp.slits) g.lines.push_back({s[0], s[1]});
@@ -374,12 +453,14 @@ int main(int argc, char** argv) {
                "(2D: simple polygons, convex or not, with holes); "
                ".obj, .off, .stl meshes (3D: the convex hull of the vertices)."};
   app.require_subcommand(1);
-  app.footer("Exit status: 0 success, 2 bad input (one line on stderr: FILE:LINE: problem).");
+  app.footer("A shape or query file '-' is standard input (one of them at most).\n"
+             "Exit status: 0 success, 2 bad input (one line on stderr: FILE:LINE: problem), "
+             "3 output not written (full disk, closed pipe), 1 internal error.");
 
   DepthArgs da;
   CLI::App* depth = app.add_subcommand(
       "depth", "Depth of one placement: the minimum σ, or σ_d along --direction, or the complete separation.");
-  depth->add_option("P", da.p, "fixed shape file (.wkt, or 3D .obj/.off/.stl)")->required()->type_name("FILE");
+  depth->add_option("P", da.p, "fixed shape file (.wkt, or 3D .obj/.off/.stl; - reads standard input)")->required()->type_name("FILE");
   depth->add_option("Q", da.q, "moving shape file (same dimension as P)")->required()->type_name("FILE");
   depth->add_option("--offset", da.offset, "placement t of Q (default 0); negative: --offset=-1,2")
       ->type_name("X,Y[,Z]");
@@ -401,9 +482,9 @@ int main(int argc, char** argv) {
       "batch", "Many placements: CSV lines x,y,dx,dy or x,y,z,dx,dy,dz (zero direction asks for σ). "
                "Prints CSV depth,tx,ty[,tz]. Shapes are preprocessed once (two non-convex polygons: "
                "their no-fit polygon, see nfp).");
-  batch->add_option("P", ba.p, "fixed shape file (.wkt, or 3D .obj/.off/.stl)")->required()->type_name("FILE");
+  batch->add_option("P", ba.p, "fixed shape file (.wkt, or 3D .obj/.off/.stl; - reads standard input)")->required()->type_name("FILE");
   batch->add_option("Q", ba.q, "moving shape file (same dimension as P)")->required()->type_name("FILE");
-  batch->add_option("--queries", ba.queries, "CSV file of queries x,y[,z],dx,dy[,dz]")->required()->type_name("FILE");
+  batch->add_option("--queries", ba.queries, "CSV file of queries x,y[,z],dx,dy[,dz] (- reads standard input)")->required()->type_name("FILE");
   batch->add_flag("--json", ba.json, "print JSON Lines (one object per query) instead of CSV");
   batch->add_option("--threads", ba.threads, "threads for the queries (default 0: every core; answers do not depend on it)")
       ->type_name("N");
@@ -437,13 +518,19 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  // A closed pipe is reported as a failed write (exit 3 with a message), not a silent death by
+  // SIGPIPE.
+  std::signal(SIGPIPE, SIG_IGN);
   try {
-    if (depth->parsed()) return run_depth(da);
-    if (nfp->parsed()) return run_nfp(na);
-    return run_batch(ba);
+    const int status = depth->parsed() ? run_depth(da) : nfp->parsed() ? run_nfp(na) : run_batch(ba);
+    flush_stdout();
+    return status;
   } catch (const InvalidInput& e) {
     std::fprintf(stderr, "%s\n", one_line(e.what()).c_str());
     return 2;
+  } catch (const io::WriteError& e) {
+    std::fprintf(stderr, "pendepth: %s\n", one_line(e.what()).c_str());
+    return 3;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pendepth: internal error: %s\n", one_line(e.what()).c_str());
     return 1;

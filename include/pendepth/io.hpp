@@ -15,13 +15,22 @@
 #include <array>
 #include <cstddef>
 #include <filesystem>
+#include <iosfwd>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace pendepth::io {
+
+/// An output that could not be written (a file that cannot be created, a full disk, a closed
+/// pipe): not bad input, so a distinct type (the command-line tool exits with status 3).
+class WriteError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 /// A polygon as written in a file: rings (outer first, then holes) in the order and orientation
 /// given, the repeated closing vertex of each ring dropped. line[r][i] is the 1-based source line
@@ -68,8 +77,23 @@ Shape2 read_shape2(const std::filesystem::path& path, std::string_view name);
 /// As read_shape2, for a parsed polygon; error messages start "SOURCE:LINE: ".
 Shape2 shape2_from_wkt(const WktPolygon& w, std::string_view source, std::string_view name);
 
-/// The whole content of a file. Throws InvalidInput "PATH: cannot read file (reason)".
+/// The whole content of a file, read to its end: FIFOs, pipes and character devices work like
+/// regular files (no size is asked, no seek). Throws InvalidInput "PATH: cannot read file
+/// (reason)".
 std::string read_text_file(const std::filesystem::path& path);
+/// The rest of a stream (e.g. std::cin), read to its end; `size_hint` bytes are reserved first.
+/// Throws InvalidInput "SOURCE: cannot read file (read error)" if the stream fails before its end.
+std::string read_stream(std::istream& in, std::string_view source, std::size_t size_hint = 0);
+
+/// The shape file formats: 2D WKT, 3D OBJ, OFF and STL.
+enum class ShapeFormat { Wkt, Obj, Off, Stl };
+/// The format of a path by its extension (.wkt, .obj, .off, .stl, any case), else nullopt.
+std::optional<ShapeFormat> shape_format_of(const std::filesystem::path& path);
+/// The format of a file's content, for standard input and paths without an extension: binary
+/// STL by its size (84 + 50·count bytes); otherwise the first word past blank and '#' lines —
+/// a WKT geometry type (POLYGON, ...), `solid` (ASCII STL), an OFF keyword or a bare count (OFF),
+/// an OBJ statement (v, f, o, g, mtllib, ...). Nullopt when none fits. O(size) at worst.
+std::optional<ShapeFormat> guess_shape_format(std::string_view bytes);
 
 /// One line of a batch query file: placement t, direction d (all zero: ask for σ), source line.
 struct Query2 {
@@ -78,10 +102,12 @@ struct Query2 {
   std::size_t line = 0;
 };
 
-/// Parses batch queries, one `x,y,dx,dy` per line (spaces around fields allowed). Blank lines and
-/// lines starting with '#' are skipped, and so is a header: a first data line whose first field
-/// is not a number. Throws InvalidInput "SOURCE:LINE: problem" for a wrong field count ("expected
-/// 4 numbers, got 3"), an empty, non-numeric or non-finite field. O(length of text).
+/// Parses batch queries, one `x,y,dx,dy` per line (spaces and tabs around fields allowed). Blank
+/// lines and lines starting with '#' are skipped, and so is a header: a first data line that is
+/// exactly `x,y,dx,dy` (spaces and tabs around the names allowed). Any other line must be numbers:
+/// throws InvalidInput "SOURCE:LINE: problem" for a wrong field count ("expected 4 numbers, got
+/// 3"), an empty, non-numeric or non-finite field (offending text quoted with non-printable bytes
+/// as \xNN). O(length of text).
 std::vector<Query2> parse_queries_csv(std::string_view text, std::string_view source = "<csv>");
 std::vector<Query2> read_queries_csv(const std::filesystem::path& path);
 
@@ -92,44 +118,65 @@ struct Query3 {
   std::size_t line = 0;
 };
 
-/// As parse_queries_csv, with lines `x,y,z,dx,dy,dz` (6 numbers).
+/// As parse_queries_csv, with lines `x,y,z,dx,dy,dz` (6 numbers; header `x,y,z,dx,dy,dz`).
 std::vector<Query3> parse_queries3_csv(std::string_view text, std::string_view source = "<csv>");
 std::vector<Query3> read_queries3_csv(const std::filesystem::path& path);
 
 // ---- 3D point sets (docs/design.md §3: convex algorithms take the hull of the vertices) ----
 // The parsers return the vertices in file order (empty if the file holds none); faces, normals,
-// colours and texture coordinates are not read. Numbers go through std::from_chars: 10⁶ vertices
-// parse in well under a second. Every coordinate is checked finite.
+// colours and texture coordinates are checked but not kept. Numbers go through std::from_chars:
+// 10⁶ vertices parse in well under a second. Every coordinate is checked finite. Offending text
+// is quoted in messages with non-printable bytes as \xNN.
 
 /// Wavefront OBJ: `v x y z [w]` lines (also `v x y z r g b`, a common colour extension); w is
 /// the rational weight of curves and surfaces and does not move the point. `#` starts a comment
-/// anywhere; all other statements (vn, vt, f, g, ...) are ignored. Throws "SOURCE:LINE: malformed
-/// vertex line: ..." for a wrong number count or a non-numeric field, "SOURCE:LINE: ... not a
-/// finite number" for inf, nan or an out-of-range value. O(length of text).
+/// anywhere. Checked: `vt u [v [w]]` and `vn i j k` are numbers; the references of faces `f`
+/// (v, v/vt, v//vn, v/vt/vn, at least 3), lines `l` (v, v/vt, at least 2) and points `p` are
+/// non-zero integers naming an existing vertex, texture vertex, normal (negative: relative to
+/// those read so far; positive: checked against the file's totals). Other statements of the
+/// OBJ specification (g, o, s, usemtl, mtllib, curves, ...) are accepted without being read; any
+/// other first word is an error, and so is a line continuation (a trailing backslash). Throws "SOURCE:LINE:
+/// malformed vertex line: ..." for a wrong number count or a non-numeric field, "SOURCE:LINE: ...
+/// not a finite number" for inf, nan or an out-of-range value, "SOURCE:LINE: malformed face..."
+/// or "reference to vertex K, but the file has N vertices". O(length of text).
 std::vector<Vec3> parse_obj_points(std::string_view text, std::string_view source = "<obj>");
 
 /// Geomview OFF: optional header keyword [ST][C][N]OFF or nOFF (then the dimension, which must
 /// be 3; 4OFF, 4D and binary OFF are rejected), then `vertices faces [edges]`, then one vertex
 /// per line: x y z followed by the normal, colour or texture fields the keyword announces
-/// (plain OFF: exactly 3 numbers). `#` comments and blank lines anywhere. Throws "SOURCE:LINE:
-/// problem" for a bad keyword, bad counts, a malformed or non-finite vertex, or a file ending
-/// before the declared vertex count. O(length of text).
+/// (plain OFF: exactly 3 numbers), then exactly `faces` face lines `k i_1 ... i_k [colour]` (k >= 3,
+/// 0-based indices below the vertex count, colour 0, 1, 3 or 4 numbers), then nothing but blank
+/// and `#` comment lines (the edge count is not checked). Throws "SOURCE:LINE: problem" for a bad
+/// keyword, bad counts, a malformed or non-finite vertex, a malformed face or index out of range,
+/// a file ending before the declared counts, or content after the last face (the messages name
+/// the header's counts). O(length of text).
 std::vector<Vec3> parse_off_points(std::string_view text, std::string_view source = "<off>");
 
 /// STL, ASCII or binary. Binary is recognised by its size, 84 + 50·triangles bytes (the count
 /// is the little-endian uint32 at byte 80), whatever the header says — binary files often begin
 /// with "solid" too; otherwise a file beginning with "solid" (any case) and holding no NUL byte
-/// is ASCII. Returns the distinct vertices in order of first appearance (every STL vertex is
-/// repeated by each of its triangles); -0 and 0 are the same vertex. Errors: ASCII "SOURCE:LINE:
-/// problem" (unexpected keyword, malformed or non-finite vertex, a file ending inside a solid);
-/// binary "SOURCE: problem (byte offset K)" (size not 84 + 50·count, non-finite coordinate).
-/// O(size) expected.
+/// is ASCII: `solid [name]`, facets `facet normal nx ny nz` / `outer loop` / three `vertex x y z`
+/// / `endloop` / `endfacet`, `endsolid [name]` (keywords any case, one statement per line, several
+/// solids allowed). Returns the distinct vertices in order of first appearance (every STL vertex
+/// is repeated by each of its triangles); -0 and 0 are the same vertex. Errors: ASCII
+/// "SOURCE:LINE: problem" (unexpected keyword, malformed statement, a loop of other than 3
+/// vertices, malformed or non-finite vertex, a file ending inside a solid); binary "SOURCE:
+/// problem (byte offset K)" (size not 84 + 50·count, non-finite coordinate). O(size) expected.
 std::vector<Vec3> parse_stl_points(std::string_view bytes, std::string_view source = "<stl>");
+
+/// The vertices of a 3D shape file's content with the parser of `format` (Obj, Off or Stl; Wkt
+/// throws InvalidInput).
+std::vector<Vec3> parse_mesh_points(std::string_view bytes, ShapeFormat format, std::string_view source);
 
 /// Reads a .obj, .off or .stl file (extension case-insensitive) with the parser above. Throws
 /// "PATH: cannot read file (reason)" or "PATH: unknown 3D shape format '.ext' (expected .obj,
 /// .off or .stl)".
 std::vector<Vec3> read_mesh_points(const std::filesystem::path& path);
+
+/// The convex hull of points read from SOURCE, as read_convex_polytope reports it: "SOURCE: NAME:
+/// only K points (...)" for fewer than 4, "SOURCE: NAME: <hull message>" for flat sets.
+ConvexPolytope convex_polytope_from_points(std::span<const Vec3> points, std::string_view source,
+                                           std::string_view name);
 
 /// The convex hull of a mesh file's vertices as a ConvexPolytope named `name` (hierarchy
 /// included). Besides the reader's errors, throws "PATH: NAME: only K points (...)" for fewer
@@ -226,8 +273,8 @@ struct SvgOptions {
 /// Q + t + r.translation (dashed outline), the move, the witness point, the direction, and,
 /// with draw_M, a second panel at the same scale with M, the point t and the arrow t → t + v.
 /// Y axis points up; the view fits the content; outlines are decimated to half a pixel so
-/// 10⁶-vertex shapes give small files. Throws InvalidInput if the file cannot be written.
-/// O(n + m).
+/// 10⁶-vertex shapes give small files. Throws WriteError "PATH: cannot write file (reason)" if
+/// the file cannot be created or written (checked after flushing and closing). O(n + m).
 void write_svg(const std::filesystem::path& path, const ConvexPolygon& P, const ConvexPolygon& Q,
                const Vec2& t, const Depth2& r, const SvgOptions& options = {});
 
@@ -246,8 +293,8 @@ struct SvgScene {
 };
 
 /// As above for any scene: the configuration panel is drawn when options.draw_M is set and
-/// scene.config is not empty. Throws InvalidInput if P or Q has no ring of 3 points or the file
-/// cannot be written. O(total size of the rings).
+/// scene.config is not empty. Throws InvalidInput if P or Q has no ring of 3 points, WriteError if
+/// the file cannot be written. O(total size of the rings).
 void write_svg(const std::filesystem::path& path, const SvgScene& scene, const Vec2& t, const Depth2& r,
                const SvgOptions& options = {});
 
@@ -321,8 +368,8 @@ Scene3 depth_scene3(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPo
 /// viewer (PENDEPTH_HTML_VIEWER=OFF). O(size of the scene).
 std::string html_page(const Scene3& scene);
 
-/// Writes html_page(scene) to a file. Throws InvalidInput as html_page, or "PATH: cannot write
-/// file (reason)".
+/// Writes html_page(scene) to a file. Throws InvalidInput as html_page, or WriteError "PATH:
+/// cannot write file (reason)".
 void write_html(const std::filesystem::path& path, const Scene3& scene);
 
 }  // namespace pendepth::io

@@ -489,7 +489,8 @@ void write_html(const std::filesystem::path& path, const Scene3& scene) {
   std::ofstream out(path, std::ios::binary);
   if (out) out.write(page.data(), static_cast<std::streamsize>(page.size()));
   if (out) out.close();
-  if (!out) throw InvalidInput(path.string() + ": cannot write file (" + std::strerror(errno) + ")");
+  if (!out)
+    throw WriteError(path.string() + ": cannot write file (" + (errno ? std::strerror(errno) : "write error") + ")");
 }
 
 }  // namespace pendepth::io

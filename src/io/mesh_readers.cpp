@@ -7,6 +7,8 @@
 // (text) or the byte offset (binary STL).
 #include <pendepth/io.hpp>
 
+#include "io/printable.hpp"
+
 #include <algorithm>
 #include <array>
 #include <bit>
@@ -72,6 +74,24 @@ std::size_t split(std::string_view line, std::array<std::string_view, N>& tok) {
   }
 }
 
+// The blank-separated tokens of a line, one at a time (for lines of any length).
+class Tokens {
+ public:
+  explicit Tokens(std::string_view line) : s_(line) {}
+  bool next(std::string_view& out) {
+    while (i_ < s_.size() && is_blank(s_[i_])) ++i_;
+    if (i_ == s_.size()) return false;
+    const std::size_t b = i_;
+    while (i_ < s_.size() && !is_blank(s_[i_])) ++i_;
+    out = s_.substr(b, i_ - b);
+    return true;
+  }
+
+ private:
+  std::string_view s_;
+  std::size_t i_ = 0;
+};
+
 enum class Num { Ok, NotNumber, NotFinite };
 
 // One decimal number, the whole token. Underflow rounds to 0 or a subnormal (as strtod does);
@@ -89,9 +109,7 @@ Num parse_number(std::string_view f, double& x) {
   return std::isfinite(x) ? Num::Ok : Num::NotFinite;
 }
 
-std::string shorten(std::string_view s) {
-  return s.size() > 24 ? std::string(s.substr(0, 24)) + "..." : std::string(s);
-}
+std::string shorten(std::string_view s) { return detail::printable(s); }
 
 [[noreturn]] void fail_at(std::string_view source, std::size_t line, const std::string& what) {
   throw InvalidInput(std::string(source) + ":" + std::to_string(line) + ": " + what);
@@ -229,8 +247,10 @@ std::vector<Vec3> parse_binary_stl(std::string_view bytes, std::string_view sour
   return set.take();
 }
 
+// solid [name] { facet normal nx ny nz / outer loop / vertex x y z (3 times) / endloop / endfacet }
+// endsolid [name], several solids allowed; keywords case-insensitive, one statement per line.
 std::vector<Vec3> parse_ascii_stl(std::string_view text, std::string_view source) {
-  enum class State { Outside, Solid, Facet, Loop };
+  enum class State { Outside, Solid, Facet, Loop, LoopDone };
   State state = State::Outside;
   VertexSet set(text.size() / 500 + 4);  // ~ 250 bytes per facet, V ≈ F / 2 for closed meshes
   Lines lines(text);
@@ -241,8 +261,9 @@ std::vector<Vec3> parse_ascii_stl(std::string_view text, std::string_view source
     switch (state) {
       case State::Outside: return "'solid'";
       case State::Solid: return "'facet' or 'endsolid'";
-      case State::Facet: return "'outer loop' or 'endfacet'";
-      case State::Loop: return "'vertex' or 'endloop'";
+      case State::Facet: return "'outer loop'";
+      case State::Loop: return loop_vertices < 3 ? "'vertex'" : "'endloop'";
+      case State::LoopDone: return "'endfacet'";
     }
     return "";
   };
@@ -251,33 +272,43 @@ std::vector<Vec3> parse_ascii_stl(std::string_view text, std::string_view source
     if (n == 0) continue;
     const std::string_view key = tok[0];
     const std::size_t at = lines.line();
-    auto unexpected = [&]() {
-      fail_at(source, at, "unexpected '" + shorten(key) + "' (expected " + expected() + ")");
+    auto malformed = [&](const char* form) {
+      std::string_view text = line;
+      while (!text.empty() && is_blank(text.front())) text.remove_prefix(1);
+      while (!text.empty() && is_blank(text.back())) text.remove_suffix(1);
+      fail_at(source, at, std::string("expected '") + form + "', got '" + detail::printable(text, 40) + "'");
     };
-    if (state == State::Loop && iequals(key, "vertex")) {
+    if (state == State::Loop && loop_vertices < 3 && iequals(key, "vertex")) {
       if (n != 4)
         fail_at(source, at, "malformed vertex line: expected 'vertex x y z', got " + std::to_string(n - 1) +
                                 (n == 2 ? " field" : " fields"));
       set.add(parse_xyz(tok.data() + 1, source, at, "vertex"));
       ++loop_vertices;
     } else if (state == State::Outside && iequals(key, "solid")) {
-      state = State::Solid;
+      state = State::Solid;  // the name, if any, is free text
     } else if (state == State::Solid && iequals(key, "facet")) {
-      state = State::Facet;  // the normal is recomputed by the hull: not read
+      // The normal is recomputed by the hull: checked to be three numbers, not read.
+      if (n != 5 || !iequals(tok[1], "normal")) malformed("facet normal nx ny nz");
+      check_numbers(tok.data(), 2, 5, source, at, "facet normal");
+      state = State::Facet;
     } else if (state == State::Solid && iequals(key, "endsolid")) {
       state = State::Outside;
     } else if (state == State::Facet && iequals(key, "outer")) {
-      if (n < 2 || !iequals(tok[1], "loop")) fail_at(source, at, "expected 'outer loop'");
+      if (n != 2 || !iequals(tok[1], "loop")) malformed("outer loop");
       state = State::Loop;
       loop_vertices = 0;
-    } else if (state == State::Facet && iequals(key, "endfacet")) {
+    } else if (state == State::Loop && loop_vertices == 3 && iequals(key, "endloop")) {
+      if (n != 1) malformed("endloop");
+      state = State::LoopDone;
+    } else if (state == State::LoopDone && iequals(key, "endfacet")) {
+      if (n != 1) malformed("endfacet");
       state = State::Solid;
     } else if (state == State::Loop && iequals(key, "endloop")) {
-      if (loop_vertices < 3)
-        fail_at(source, at, "a facet loop has " + std::to_string(loop_vertices) + " vertices (at least 3)");
-      state = State::Facet;
+      fail_at(source, at, "a facet loop has " + std::to_string(loop_vertices) + " vertices (STL facets are triangles)");
+    } else if (state == State::Loop && iequals(key, "vertex")) {
+      fail_at(source, at, "a facet loop has more than 3 vertices (STL facets are triangles)");
     } else {
-      unexpected();
+      fail_at(source, at, "unexpected '" + shorten(key) + "' (expected " + expected() + ")");
     }
   }
   if (state != State::Outside)
@@ -286,10 +317,53 @@ std::vector<Vec3> parse_ascii_stl(std::string_view text, std::string_view source
   return set.take();
 }
 
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  for (char& c : ext) c = lower(c);
-  return ext;
+}  // namespace
+
+namespace {
+
+// Statements of the OBJ specification (Wavefront, appendix B1) that pendepth does not use: they
+// are accepted without being read. Anything else is an error (a file that is not OBJ at all).
+bool known_obj_statement(std::string_view k) {
+  static constexpr std::string_view kKnown[] = {
+      "vp",     "cstype", "deg",      "bmat",     "step",     "curv",  "curv2",      "surf",
+      "parm",   "trim",   "hole",     "scrv",     "sp",       "end",   "con",        "g",
+      "s",      "mg",     "o",        "bevel",    "c_interp", "d_interp", "lod",     "usemtl",
+      "mtllib", "shadow_obj", "trace_obj", "ctech", "stech",  "maplib", "usemap",   "call",
+      "csh"};
+  for (std::string_view s : kKnown)
+    if (k == s) return true;
+  return false;
+}
+
+// One vertex reference of an element: v, v/vt, v//vn or v/vt/vn (`parts` of them allowed: 1 for
+// points, 2 for lines, 3 for faces), each a non-zero integer, negative = relative to the vertices
+// read so far. Returns false if malformed; stores the absolute 1-based indices (0 = absent).
+bool parse_obj_ref(std::string_view r, int parts, const std::array<std::uint64_t, 3>& count,
+                   std::array<std::int64_t, 3>& idx) {
+  idx = {0, 0, 0};
+  std::array<std::string_view, 3> f;
+  int slashes = 0;
+  for (;;) {
+    const std::size_t slash = r.find('/');
+    f[slashes] = r.substr(0, slash);
+    if (slash == std::string_view::npos) break;
+    if (++slashes >= parts) return false;
+    r.remove_prefix(slash + 1);
+  }
+  for (int k = 0; k <= slashes; ++k) {
+    if (f[k].empty()) {
+      if (k == 1 && slashes == 2) continue;  // v//vn
+      return false;
+    }
+    std::int64_t i = 0;
+    auto [ptr, ec] = std::from_chars(f[k].data(), f[k].data() + f[k].size(), i);
+    if (ec != std::errc() || ptr != f[k].data() + f[k].size() || i == 0) return false;
+    // Relative: -1 is the last one read so far; before the first one is out of range (-1 here).
+    const auto n = static_cast<std::int64_t>(count[k]);
+    if (i < 0) i = i >= -n ? n + i + 1 : -1;
+    idx[k] = i;
+  }
+  return true;
 }
 
 }  // namespace
@@ -300,19 +374,79 @@ std::vector<Vec3> parse_obj_points(std::string_view text, std::string_view sourc
   Lines lines(text);
   std::string_view line;
   std::array<std::string_view, 8> tok;
+  // Vertices, texture vertices, normals read so far; the largest positive reference of each kind
+  // and its line, checked at the end (an element may name a vertex defined further down).
+  std::array<std::uint64_t, 3> count = {0, 0, 0};
+  std::array<std::int64_t, 3> max_ref = {0, 0, 0};
+  std::array<std::size_t, 3> max_ref_line = {0, 0, 0};
+  static constexpr const char* kKind[] = {"vertex", "texture vertex", "normal"};
+  static constexpr const char* kKinds[] = {"vertices", "texture vertices", "normals"};
   while (lines.next(line)) {
-    // Quick reject: only "v" statements matter (vn, vt, vp, f, ... start differently).
-    std::size_t i = 0;
-    while (i < line.size() && is_blank(line[i])) ++i;
-    if (i >= line.size() || line[i] != 'v' || (i + 1 < line.size() && !is_blank(line[i + 1]))) continue;
-    const std::size_t n = split(strip_comment(line.substr(i + 1)), tok);
-    if (n != 3 && n != 4 && n != 6)
-      fail_at(source, lines.line(),
-              "malformed vertex line: expected 'v x y z [w]', got " + std::to_string(n) +
-                  (n == 1 ? " number" : " numbers"));
-    pts.push_back(parse_xyz(tok.data(), source, lines.line(), "vertex line"));
-    check_numbers(tok.data(), 3, n, source, lines.line(), "vertex line");
+    const std::string_view body = strip_comment(line);
+    const std::size_t n = split(body, tok);
+    if (n == 0) continue;
+    const std::string_view key = tok[0];
+    const std::size_t at = lines.line();
+    std::string_view end = body;
+    while (!end.empty() && is_blank(end.back())) end.remove_suffix(1);
+    if (end.ends_with('\\'))
+      fail_at(source, at, "line continuation ('\\' at the end of a line) is not supported");
+    if (key == "v") {
+      if (n != 4 && n != 5 && n != 7)
+        fail_at(source, at,
+                "malformed vertex line: expected 'v x y z [w]', got " + std::to_string(n - 1) +
+                    (n == 2 ? " number" : " numbers"));
+      pts.push_back(parse_xyz(tok.data() + 1, source, at, "vertex line"));
+      check_numbers(tok.data() + 1, 3, n - 1, source, at, "vertex line");
+      ++count[0];
+    } else if (key == "vt" || key == "vn") {
+      const bool normal = key == "vn";
+      if (normal ? n != 4 : (n < 2 || n > 4))
+        fail_at(source, at,
+                std::string("malformed ") + (normal ? "normal line: expected 'vn i j k'" : "texture vertex line: expected 'vt u [v [w]]'") +
+                    ", got " + std::to_string(n - 1) + (n == 2 ? " number" : " numbers"));
+      check_numbers(tok.data() + 1, 0, n - 1, source, at, normal ? "normal line" : "texture vertex line");
+      ++count[normal ? 2 : 1];
+    } else if (key == "f" || key == "fo" || key == "l" || key == "p") {
+      const bool face = key[0] == 'f';
+      const int parts = face ? 3 : key == "l" ? 2 : 1;
+      const std::size_t min_refs = face ? 3 : key == "l" ? 2 : 1;
+      const char* what = face ? "face" : key == "l" ? "line element" : "point element";
+      std::size_t refs = 0;
+      Tokens t(body);
+      std::string_view r;
+      t.next(r);  // the keyword
+      while (t.next(r)) {
+        ++refs;
+        std::array<std::int64_t, 3> idx;
+        if (!parse_obj_ref(r, parts, count, idx))
+          fail_at(source, at,
+                  std::string("malformed ") + what + ": reference " + std::to_string(refs) + " is '" + shorten(r) +
+                      (face ? "' (expected v, v/vt, v//vn or v/vt/vn with non-zero integers)"
+                            : parts == 2 ? "' (expected v or v/vt with non-zero integers)"
+                                         : "' (expected a non-zero integer)"));
+        for (int k = 0; k < 3; ++k) {
+          if (idx[k] < 0)
+            fail_at(source, at,
+                    std::string(what) + " reference " + std::to_string(refs) + " ('" + shorten(r) + "') names a " +
+                        kKind[k] + " before the first (" + std::to_string(count[k]) + " " + kKinds[k] +
+                        " read so far)");
+          if (idx[k] > max_ref[k]) max_ref[k] = idx[k], max_ref_line[k] = at;
+        }
+      }
+      if (refs < min_refs)
+        fail_at(source, at,
+                std::string("malformed ") + what + ": " + std::to_string(refs) + " vertex reference" +
+                    (refs == 1 ? "" : "s") + " (at least " + std::to_string(min_refs) + ")");
+    } else if (!known_obj_statement(key)) {
+      fail_at(source, at, "unknown OBJ statement '" + shorten(key) + "'");
+    }
   }
+  for (int k = 0; k < 3; ++k)
+    if (max_ref[k] > 0 && static_cast<std::uint64_t>(max_ref[k]) > count[k])
+      fail_at(source, max_ref_line[k],
+              std::string("reference to ") + kKind[k] + " " + std::to_string(max_ref[k]) + ", but the file has " +
+                  std::to_string(count[k]) + " " + kKinds[k]);
   return pts;
 }
 
@@ -372,7 +506,12 @@ std::vector<Vec3> parse_off_points(std::string_view text, std::string_view sourc
       fail_at(source, lines.line(),
               std::string("expected the ") + kCountName[c] + " (a non-negative integer), got '" + shorten(tok[k + c]) + "'");
 
-  const std::uint64_t nv = counts[0];
+  const std::uint64_t nv = counts[0], nf = counts[1];
+  const std::size_t header_line = lines.line();
+  const auto declared = [&] {
+    return " (the header at line " + std::to_string(header_line) + " declares " + std::to_string(nv) +
+           (nv == 1 ? " vertex and " : " vertices and ") + std::to_string(nf) + (nf == 1 ? " face)" : " faces)");
+  };
   std::vector<Vec3> pts;
   pts.reserve(static_cast<std::size_t>(std::min<std::uint64_t>(nv, text.size() / 6 + 1)));
   while (pts.size() < nv) {
@@ -391,6 +530,56 @@ std::vector<Vec3> parse_off_points(std::string_view text, std::string_view sourc
     pts.push_back(parse_xyz(tok.data(), source, lines.line(), "vertex line"));
     check_numbers(tok.data(), 3, n, source, lines.line(), "vertex line");
   }
+
+  // Faces: `k i_1 ... i_k [colour]`, k >= 3, indices 0-based below the vertex count, the colour
+  // a colour-map index, RGB or RGBA (0, 1, 3 or 4 numbers). Faces are checked, not kept.
+  for (std::uint64_t f = 0; f < nf;) {
+    if (!lines.next(line))
+      fail_at(source, std::max<std::size_t>(lines.line(), 1),
+              "the file ends after " + std::to_string(f) + " of " + std::to_string(nf) + " faces");
+    const std::string_view body = strip_comment(line);
+    Tokens t(body);
+    std::string_view w;
+    if (!t.next(w)) continue;
+    const std::string face = "face " + std::to_string(f);
+    std::uint64_t k = 0;
+    if (!parse_count(w, k))
+      fail_at(source, lines.line(),
+              "malformed " + face + ": expected its vertex count (an integer), got '" + shorten(w) + "'" + declared());
+    if (k < 3) fail_at(source, lines.line(), "malformed " + face + ": " + std::to_string(k) + (k == 1 ? " vertex" : " vertices") + " (at least 3)" + declared());
+    for (std::uint64_t j = 0; j < k; ++j) {
+      std::uint64_t v = 0;
+      if (!t.next(w))
+        fail_at(source, lines.line(),
+                "malformed " + face + ": only " + std::to_string(j) + " of its " + std::to_string(k) + " vertex indices" +
+                    declared());
+      if (!parse_count(w, v))
+        fail_at(source, lines.line(),
+                "malformed " + face + ": vertex index " + std::to_string(j) + " is '" + shorten(w) +
+                    "' (expected a non-negative integer)" + declared());
+      if (v >= nv)
+        fail_at(source, lines.line(),
+                face + ": vertex index " + std::to_string(v) + " is out of range (the file has " + std::to_string(nv) +
+                    (nv == 1 ? " vertex)" : " vertices)") + declared());
+    }
+    std::size_t colour = 0;
+    for (; t.next(w); ++colour) {
+      double x = 0;
+      if (parse_number(w, x) == Num::NotNumber)
+        fail_at(source, lines.line(),
+                "malformed " + face + ": '" + shorten(w) + "' after its " + std::to_string(k) +
+                    " vertex indices is not a colour number" + declared());
+    }
+    if (colour == 2 || colour > 4)
+      fail_at(source, lines.line(),
+              "malformed " + face + ": " + std::to_string(k) + " vertex indices then " + std::to_string(colour) +
+                  " numbers (a colour is 0, 1, 3 or 4 numbers)" + declared());
+    ++f;
+  }
+  while (lines.next(line))
+    if (split(strip_comment(line), tok) > 0)
+      fail_at(source, lines.line(),
+              "unexpected '" + shorten(tok[0]) + "' after the last face" + declared());
   return pts;
 }
 
@@ -401,21 +590,27 @@ std::vector<Vec3> parse_stl_points(std::string_view bytes, std::string_view sour
   return parse_binary_stl(bytes, source);  // reports the size mismatch
 }
 
-std::vector<Vec3> read_mesh_points(const std::filesystem::path& path) {
-  const std::string ext = lower_extension(path);
-  const std::string src = path.string();
-  if (ext != ".obj" && ext != ".off" && ext != ".stl")
-    throw InvalidInput(src + ": unknown 3D shape format '" + path.extension().string() +
-                       "' (expected .obj, .off or .stl)");
-  const std::string text = read_text_file(path);
-  if (ext == ".obj") return parse_obj_points(text, src);
-  if (ext == ".off") return parse_off_points(text, src);
-  return parse_stl_points(text, src);
+std::vector<Vec3> parse_mesh_points(std::string_view bytes, ShapeFormat format, std::string_view source) {
+  switch (format) {
+    case ShapeFormat::Obj: return parse_obj_points(bytes, source);
+    case ShapeFormat::Off: return parse_off_points(bytes, source);
+    case ShapeFormat::Stl: return parse_stl_points(bytes, source);
+    case ShapeFormat::Wkt: break;
+  }
+  throw InvalidInput(std::string(source) + ": a 2D shape (WKT) where a 3D shape (.obj, .off, .stl) is expected");
 }
 
-ConvexPolytope read_convex_polytope(const std::filesystem::path& path, std::string_view name) {
-  const std::vector<Vec3> pts = read_mesh_points(path);
+std::vector<Vec3> read_mesh_points(const std::filesystem::path& path) {
   const std::string src = path.string();
+  const std::optional<ShapeFormat> format = shape_format_of(path);
+  if (!format || *format == ShapeFormat::Wkt)
+    throw InvalidInput(src + ": unknown 3D shape format '" + path.extension().string() +
+                       "' (expected .obj, .off or .stl)");
+  return parse_mesh_points(read_text_file(path), *format, src);
+}
+
+ConvexPolytope convex_polytope_from_points(std::span<const Vec3> pts, std::string_view source, std::string_view name) {
+  const std::string src(source);
   if (pts.size() < 4)
     throw InvalidInput(src + ": " + std::string(name) + ": only " + std::to_string(pts.size()) +
                        (pts.size() == 1 ? " point" : " points") + " (a polytope needs 4 affinely independent points)");
@@ -424,6 +619,10 @@ ConvexPolytope read_convex_polytope(const std::filesystem::path& path, std::stri
   } catch (const InvalidInput& e) {
     throw InvalidInput(src + ": " + e.what());
   }
+}
+
+ConvexPolytope read_convex_polytope(const std::filesystem::path& path, std::string_view name) {
+  return convex_polytope_from_points(read_mesh_points(path), path.string(), name);
 }
 
 }  // namespace pendepth::io

@@ -2,11 +2,17 @@
 // `pendepth batch`).
 //
 // One pass over the text, std::from_chars per field, no allocation per line, so 10⁵ queries
-// parse in milliseconds. Errors name the source line; a first non-numeric line is a header.
+// parse in milliseconds. Errors name the source line. A header is accepted only as the first data
+// line and only when it is exactly the expected names: anything else that is not numbers (a
+// misspelt header, ';' separators, quoted fields, hexadecimal, a binary file) is an error, never
+// silently skipped.
 #include <pendepth/io.hpp>
+
+#include "io/printable.hpp"
 
 #include <charconv>
 #include <cmath>
+#include <span>
 #include <utility>
 
 namespace pendepth::io {
@@ -32,9 +38,33 @@ Field parse_field(std::string_view f, double& x) {
   return Field::Ok;
 }
 
-std::string shorten(std::string_view s) {
-  s = trim(s);
-  return s.size() > 24 ? std::string(s.substr(0, 24)) + "..." : std::string(s);
+std::string shorten(std::string_view s) { return detail::printable(trim(s)); }
+
+// The header names of a row of N fields: offset then direction.
+constexpr std::string_view kNames4[] = {"x", "y", "dx", "dy"};
+constexpr std::string_view kNames6[] = {"x", "y", "z", "dx", "dy", "dz"};
+
+// True if `row` is exactly the header names, fields trimmed of spaces and tabs.
+template <std::size_t N>
+bool is_header(std::string_view row) {
+  const auto& names = N == 4 ? std::span<const std::string_view>(kNames4) : std::span<const std::string_view>(kNames6);
+  for (std::size_t k = 0; k < N; ++k) {
+    const std::size_t comma = row.find(',');
+    if ((comma == std::string_view::npos) != (k + 1 == N)) return false;
+    if (trim(row.substr(0, comma)) != names[k]) return false;
+    if (comma != std::string_view::npos) row.remove_prefix(comma + 1);
+  }
+  return true;
+}
+
+template <std::size_t N>
+std::string header_text() {
+  std::string h;
+  for (std::string_view n : N == 4 ? std::span<const std::string_view>(kNames4) : std::span<const std::string_view>(kNames6)) {
+    if (!h.empty()) h += ',';
+    h += n;
+  }
+  return h;
 }
 
 // Rows of N = 2·dim numbers: offset then direction. `Query` is Query2 or Query3.
@@ -56,16 +86,22 @@ std::vector<Query> parse_rows(std::string_view text, std::string_view source) {
     const std::string_view row = trim(text.substr(pos, end - pos));
     pos = end + 1;
     if (row.empty() || row.front() == '#') continue;
-    if (std::exchange(first_row, false)) {  // header: the first token is not a number
-      double x = 0;
-      if (parse_field(row.substr(0, row.find_first_of(", \t")), x) == Field::NotNumber) continue;
-    }
+    const bool first = std::exchange(first_row, false);
+    if (first && is_header<N>(row)) continue;
+    // A first row starting with a letter may be meant as a header: say which one is accepted.
+    const bool letter = (row.front() >= 'a' && row.front() <= 'z') || (row.front() >= 'A' && row.front() <= 'Z');
+    const std::string hint =
+        first && letter ? " (a header line must be exactly '" + header_text<N>() + "')" : std::string();
 
     std::size_t count = 1;
     for (char c : row) count += c == ',';
-    if (count != N)
-      fail("expected " + std::to_string(N) + " numbers, got " + std::to_string(count) +
-           (count == kOther ? (N == 4 ? " (a 3D query; the shapes are 2D)" : " (a 2D query; the shapes are 3D)") : ""));
+    if (count != N) {
+      std::string why;
+      if (count == kOther) why = N == 4 ? " (a 3D query; the shapes are 2D)" : " (a 2D query; the shapes are 3D)";
+      else if (count == 1 && row.find(';') != std::string_view::npos) why = " (fields are separated by ',', not ';')";
+      else if (count == 1 && row.find('\t') != std::string_view::npos) why = " (fields are separated by ',', not tabs)";
+      fail("expected " + std::to_string(N) + " numbers, got " + std::to_string(count) + (why.empty() ? hint : why));
+    }
     double v[N];
     std::string_view rest = row;
     for (std::size_t k = 0; k < N; ++k) {
@@ -76,7 +112,7 @@ std::vector<Query> parse_rows(std::string_view text, std::string_view source) {
       const Field st = parse_field(f, x);
       if (st == Field::Empty) fail("field " + std::to_string(k + 1) + " is empty");
       if (st == Field::NotNumber)
-        fail("field " + std::to_string(k + 1) + " is not a number: '" + shorten(f) + "'");
+        fail("field " + std::to_string(k + 1) + " is not a number: '" + shorten(f) + "'" + hint);
       if (st == Field::NotFinite)
         fail("field " + std::to_string(k + 1) + " is not a finite number: '" + shorten(f) + "'");
       v[k] = x;

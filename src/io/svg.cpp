@@ -268,9 +268,13 @@ void write_svg(const std::filesystem::path& path, const SvgScene& scene, const V
   }
   w << "</svg>\n";
 
+  // Every failure counts: the open, the write, and the flush on close (a full disk shows there).
+  errno = 0;
   std::ofstream out(path, std::ios::binary);
-  if (!out || !out.write(w.s.data(), std::streamsize(w.s.size())))
-    throw InvalidInput(path.string() + ": cannot write file (" + std::strerror(errno) + ")");
+  if (out) out.write(w.s.data(), std::streamsize(w.s.size()));
+  if (out) out.close();
+  if (!out)
+    throw WriteError(path.string() + ": cannot write file (" + (errno ? std::strerror(errno) : "write error") + ")");
 }
 
 

@@ -28,14 +28,14 @@ WktPolygon parse_wkt_polygon(std::string_view text, std::string_view source) {
   std::string_view type = sc.word();
   if (type.empty()) sc.fail("expected a geometry type (POLYGON), got " + sc.token());
   if (!iequals(type, "POLYGON"))
-    sc.fail("unknown geometry type '" + std::string(type) + "' (expected POLYGON)");
+    sc.fail("unknown geometry type '" + detail::printable(type) + "' (expected POLYGON)");
   if (is_alpha(sc.peek())) {
     std::size_t l = sc.line();
     std::string_view tag = sc.word();
     if (iequals(tag, "EMPTY")) sc.fail_at(l, "POLYGON EMPTY: the polygon has no rings");
     if (iequals(tag, "Z") || iequals(tag, "M") || iequals(tag, "ZM"))
       sc.fail_at(l, "POLYGON " + std::string(tag) + ": only 2D coordinates are supported");
-    sc.fail_at(l, "unexpected '" + std::string(tag) + "' after POLYGON");
+    sc.fail_at(l, "unexpected '" + detail::printable(tag) + "' after POLYGON");
   }
   sc.expect('(', "after POLYGON");
   for (std::size_t r = 0;; ++r) {

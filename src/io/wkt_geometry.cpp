@@ -71,10 +71,11 @@ class Parser {
   // After an item of a parenthesised list: true on ',', false on ')' (both consumed).
   bool list_continues(const std::string& where) {
     const char c = sc_.peek();
-    sc_.advance();
-    if (c == ',') return true;
-    if (c == ')') return false;
-    sc_.fail("missing ',' or ')' " + where + ", got " + (c ? "'" + std::string(1, c) + "'" : "end of input"));
+    if (c == ',' || c == ')') {
+      sc_.advance();
+      return c == ',';
+    }
+    sc_.fail("missing ',' or ')' " + where + ", got " + sc_.token());
   }
 
   // Reads an optional EMPTY (true) after a type; rejects Z / M tags.
@@ -85,7 +86,7 @@ class Parser {
     if (iequals(tag, "EMPTY")) return true;
     if (iequals(tag, "Z") || iequals(tag, "M") || iequals(tag, "ZM"))
       sc_.fail_at(l, std::string(type) + " " + std::string(tag) + ": only 2D coordinates are supported");
-    sc_.fail_at(l, "unexpected '" + std::string(tag) + "' after " + std::string(type));
+    sc_.fail_at(l, "unexpected '" + detail::printable(tag) + "' after " + std::string(type));
   }
 
   Vec2 xy(const std::string& what) {
@@ -118,12 +119,11 @@ class Parser {
   }
 
   void part(std::string_view type, Geometry2& g) {
-    const std::string T(type);
     if (type.empty()) sc_.fail("expected a geometry type, got " + sc_.token());
     auto known = [&](const char* k) { return iequals(type, k); };
     if (!(known("POLYGON") || known("MULTIPOLYGON") || known("LINESTRING") || known("MULTILINESTRING") ||
           known("POINT") || known("MULTIPOINT")))
-      sc_.fail("unknown geometry type '" + T +
+      sc_.fail("unknown geometry type '" + detail::printable(type) +
                "' (expected POLYGON, MULTIPOLYGON, LINESTRING, MULTILINESTRING, POINT, MULTIPOINT or "
                "GEOMETRYCOLLECTION)");
     if (empty_tag(type)) return;

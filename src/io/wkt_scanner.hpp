@@ -5,6 +5,8 @@
 
 #include <pendepth/geometry.hpp>
 
+#include "io/printable.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -31,7 +33,9 @@ class Scanner {
  public:
   Scanner(std::string_view text, std::string_view source) : s_(text), src_(source) {}
 
-  // Skips whitespace, counting lines; returns the next character or '\0' at the end.
+  // Skips whitespace, counting lines; returns the next character or '\0' at the end (a NUL byte
+  // in the text is returned as '\0' too but is not the end: at_end() tells them apart, and
+  // token() shows it as \x00).
   char peek() {
     while (pos_ < s_.size() && is_space(s_[pos_])) {
       if (s_[pos_] == '\n') ++line_;
@@ -43,15 +47,17 @@ class Scanner {
   std::size_t line() const { return line_; }
   void advance() { ++pos_; }
 
-  // The next token, for messages: up to a delimiter (or the delimiter itself), shortened.
+  // The next token, for messages: up to a delimiter (or the delimiter itself), shortened, bytes
+  // that are not printable ASCII (a NUL, a control character) shown as \xNN.
   std::string token() {
     if (at_end()) return "end of input";
     std::size_t e = pos_;
     while (e < s_.size() && !is_delim(s_[e])) ++e;
     if (e == pos_) e = pos_ + 1;
-    std::string t(s_.substr(pos_, std::min<std::size_t>(e - pos_, 24)));
-    if (e - pos_ > 24) t += "...";
-    return "'" + t + "'";
+    std::string t = "'";
+    t += detail::printable(s_.substr(pos_, e - pos_));
+    t += '\'';
+    return t;
   }
 
   std::string_view word() {

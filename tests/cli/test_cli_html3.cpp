@@ -43,12 +43,16 @@ TEST_F(CliHtml3, TwoDimensionalShapesAreRejected) {
   EXPECT_FALSE(fs::exists(dir_ / "x.html"));
 }
 
-TEST_F(CliHtml3, UnwritableFileIsBadInput) {
+// A page that cannot be written is a failed write (exit 3, as --svg and standard output), not
+// bad input; so is a full device.
+TEST_F(CliHtml3, UnwritableFileIsAWriteError) {
   const std::string c = quote(cube());
   const std::string page = (dir_ / "no" / "such" / "dir.html").string();
   const cli_test::Result r = run("depth " + c + " " + c + " --html " + quote(page));
-  EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.err.rfind(page + ": cannot write file (", 0), 0u) << r.err;
+  EXPECT_EQ(r.status, 3);
+  EXPECT_EQ(r.err.rfind("pendepth: " + page + ": cannot write file (", 0), 0u) << r.err;
+  const cli_test::Result full = run("depth " + c + " " + c + " --html /dev/full");
+  EXPECT_EQ(full.status, 3) << full.err;
 }
 
 }  // namespace

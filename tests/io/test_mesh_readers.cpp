@@ -138,7 +138,11 @@ TEST(ObjReader, VerticesCommentsAndIgnoredStatements) {
       "o thing\n"
       "v 1 2 3\n"
       "vn 0 0 1\n"
+      "vn 0 1 0\n"
+      "vn 1 0 0\n"
       "vt 0.5 0.5\n"
+      "vt 0.5\n"
+      "vt 0.5 0.5 0\n"
       "vp 0.1 0.2\n"
       "  v\t-1.5e2   +4 .25 # trailing comment\r\n"
       "v 7 8 9 0.5\n"            // w: the rational weight, not a divisor
@@ -154,7 +158,7 @@ TEST(ObjReader, VerticesCommentsAndIgnoredStatements) {
   EXPECT_EQ(p[3], Vec3(1, 1, 1));
   EXPECT_EQ(p[4], Vec3(0, 0, 4.9e-324));
   EXPECT_TRUE(io::parse_obj_points("").empty());
-  EXPECT_TRUE(io::parse_obj_points("f 1 2 3\n# nothing\n").empty());
+  EXPECT_TRUE(io::parse_obj_points("g nothing\n# nothing\n").empty());
 }
 
 TEST(ObjReader, RandomValuesReadBackExactly) {
@@ -196,16 +200,24 @@ TEST(OffReader, HeaderVariants) {
   const std::string faces = "3 0 1 2\n3 0 1 3\n3 0 2 3\n3 1 2 3\n";
   EXPECT_EQ(io::parse_off_points("OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + faces), want);
   EXPECT_EQ(io::parse_off_points("# made by hand\nOFF 4 4 6\n\n0 0 0 # origin\n1 0 0\n  0 1 0\n0 0 1\n" + faces), want);
-  EXPECT_EQ(io::parse_off_points("4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"), want);  // keyword optional
-  EXPECT_EQ(io::parse_off_points("OFF\n4 4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"), want);  // no edge count
+  EXPECT_EQ(io::parse_off_points("4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + faces), want);  // keyword optional
+  EXPECT_EQ(io::parse_off_points("OFF\n4 4\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + faces), want);  // no edge count
+  EXPECT_EQ(io::parse_off_points("OFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"), want);  // a point set
+  // Face colours: a colour-map index, RGB, RGBA; comments and blank lines after the last face.
+  EXPECT_EQ(io::parse_off_points("OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2 7\n3 0 1 3 1 0 0\n"
+                                 "3 0 2 3 0.5 0.5 0.5 1\n4 1 2 3 3\n\n# end\n  \n"),
+            want);
   EXPECT_EQ(io::parse_off_points("COFF\n4 4 6\n0 0 0 255 0 0 255\n1 0 0 0 255 0\n0 1 0 0.5 0.5 0.5 1\n0 0 1 7\n" + faces),
             want);  // RGBA, RGB, float RGBA, colour-map index
   EXPECT_EQ(io::parse_off_points("NOFF\n4 4 6\n0 0 0 0 0 -1\n1 0 0 1 0 0\n0 1 0 0 1 0\n0 0 1 0 0 1\n" + faces), want);
-  EXPECT_EQ(io::parse_off_points("CNOFF\n4 4 6\n0 0 0 0 0 -1 1 1 1\n1 0 0 1 0 0 1 1 1\n0 1 0 0 1 0 1 1 1\n0 0 1 0 0 1 1 1 1\n"),
+  EXPECT_EQ(io::parse_off_points("CNOFF\n4 4 6\n0 0 0 0 0 -1 1 1 1\n1 0 0 1 0 0 1 1 1\n0 1 0 0 1 0 1 1 1\n0 0 1 0 0 1 1 1 1\n" +
+                                 faces),
             want);
-  EXPECT_EQ(io::parse_off_points("STOFF\n4 4 6\n0 0 0 0 0\n1 0 0 1 0\n0 1 0 0 1\n0 0 1 1 1\n"), want);
-  EXPECT_EQ(io::parse_off_points("nOFF\n3\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"), want);
-  EXPECT_EQ(io::parse_off_points("nOFF 3 4 4 6\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n0 0 1\r\n"), want);
+  EXPECT_EQ(io::parse_off_points("STOFF\n4 4 6\n0 0 0 0 0\n1 0 0 1 0\n0 1 0 0 1\n0 0 1 1 1\n" + faces), want);
+  EXPECT_EQ(io::parse_off_points("nOFF\n3\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + faces), want);
+  EXPECT_EQ(io::parse_off_points("nOFF 3 4 4 6\r\n0 0 0\r\n1 0 0\r\n0 1 0\r\n0 0 1\r\n3 0 1 2\r\n3 0 1 3\r\n"
+                                 "3 0 2 3\r\n3 1 2 3\r\n"),
+            want);
   EXPECT_TRUE(io::parse_off_points("OFF\n0 0 0\n").empty());
 }
 
@@ -282,13 +294,13 @@ TEST(StlReader, AsciiErrorsNameTheLine) {
   EXPECT_EQ(stl_error("solid a\nfacet normal 0 0 1\nouter loop\nvertex 0 0\n"),
             "m.stl:4: malformed vertex line: expected 'vertex x y z', got 2 fields");
   EXPECT_EQ(stl_error("solid a\nfacet normal 0 0 1\n  vertex 0 0 0\n"),
-            "m.stl:3: unexpected 'vertex' (expected 'outer loop' or 'endfacet')");
-  EXPECT_EQ(stl_error("solid a\nfacet normal 0 0 1\nouter\n"), "m.stl:3: expected 'outer loop'");
+            "m.stl:3: unexpected 'vertex' (expected 'outer loop')");
+  EXPECT_EQ(stl_error("solid a\nfacet normal 0 0 1\nouter\n"), "m.stl:3: expected 'outer loop', got 'outer'");
   EXPECT_EQ(stl_error("solid a\nendfacet\n"), "m.stl:2: unexpected 'endfacet' (expected 'facet' or 'endsolid')");
   EXPECT_EQ(stl_error("solid a\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nendloop\n"),
-            "m.stl:6: a facet loop has 2 vertices (at least 3)");
+            "m.stl:6: a facet loop has 2 vertices (STL facets are triangles)");
   EXPECT_EQ(stl_error("solid a\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n"),
-            "m.stl:4: the file ends inside a solid (expected 'vertex' or 'endloop')");
+            "m.stl:4: the file ends inside a solid (expected 'vertex')");
   EXPECT_EQ(stl_error("solid a\n"), "m.stl:1: the file ends inside a solid (expected 'facet' or 'endsolid')");
   EXPECT_EQ(stl_error("solid a\nendsolid a\nvertex 0 0 0\n"), "m.stl:3: unexpected 'vertex' (expected 'solid')");
 }
