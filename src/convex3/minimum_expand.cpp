@@ -797,8 +797,23 @@ class Expander {
     double hv = ok(h) ? h.hi : accurate(h_l), n2v = ok(n2) ? n2.hi : accurate(n2_l);
     F_[f].dist = hv / std::sqrt(n2v);
     F_[f].refined = true;
-    Vec3 u = Vec3(n[0].hi, n[1].hi, n[2].hi).normalized();
+    // The unit normal: each component of n from the double-double value when that is accurate,
+    // else exactly (a normal spanned by pairs that differ by far less than the shapes' size can
+    // cancel completely in double-double: 1e-44 details on a unit shape gave n̂ = 0, a move of 0);
+    // normalised after scaling by a power of two, so that no square underflows.
+    Vec3 nv;
+    for (int k = 0; k < 3; ++k)
+      nv[k] = ok(n[k]) ? n[k].hi : accurate([&](auto L) { return normal_l(L, v[0], v[1], v[2])[k]; });
+    const Vec3 u = unit_vector(nv);
     for (int k = 0; k < 3; ++k) F_[f].unit[k] = u[k];
+  }
+  // v / |v| with v first scaled by a power of two (exact), so that |v|² neither under- nor
+  // overflows; bit-identical to v.normalized() whenever that does not.
+  static Vec3 unit_vector(const Vec3& v) {
+    const double m = v.cwiseAbs().maxCoeff();
+    if (!(m > 0)) return Vec3::Zero();
+    const Vec3 w = v * std::ldexp(1.0, -std::ilogb(m));
+    return w / w.norm();
   }
   bool coplanar(int f, int g) const {
     for (int x : F_[f].v)

@@ -284,6 +284,30 @@ TEST(Domain3, TheLargestCubeIsAnsweredOrRejected) {
   EXPECT_TRUE(finite(m));
 }
 
+// Fuzzing finding (tests/fuzz/findings/README.md): a hull mixing 0 and 1 with 1e-44 coordinates
+// against itself got the right σ but a zero translation and normal (the facet normal cancelled in
+// double-double). The move must now have the depth's length, and must separate.
+TEST(Domain3, TinyDetailsOnAUnitHullKeepTheirNormal) {
+  const Shape3 P = Shape3::from_file(std::string(PENDEPTH_SOURCE_DIR) +
+                                     "/tests/fuzz/corpus/fuzz_shapes_raw/sigma3-tiny-coordinates-zero-translation.stl");
+  const Pair3 pair(P, P);
+  const Pose3 q(Eigen::Quaterniond(-3, 4, 2, 2), Vec3(0.15151515151515138, 0.33712121212121238, 0.35984848484848486));
+  const Depth3 r = pair.minimum(Pose3(), q);
+  EXPECT_NEAR(r.depth, 0.82196969696969679, 1e-15);
+  EXPECT_NEAR(r.translation.norm(), r.depth, 1e-15);
+  EXPECT_NEAR(r.normal.norm(), 1, 1e-15);
+  // Moved a little further than the answer, Q no longer overlaps; a little less, it still does.
+  EXPECT_FALSE(pair.overlapping(Pose3(), Pose3(q.rotation, q.translation + r.translation * (1 + 1e-9))));
+  EXPECT_TRUE(pair.overlapping(Pose3(), Pose3(q.rotation, q.translation + r.translation * (1 - 1e-9))));
+  // The same at scales the domain moves into the engines' band, and for the raw engine.
+  for (int k : {-500, 300}) {
+    const Pair3 s(Shape3(P.polytope().scaled(k)), Shape3(P.polytope().scaled(k)));
+    const Depth3 rs = s.minimum(Pose3(), Pose3(q.rotation, q.translation * std::ldexp(1.0, k)));
+    EXPECT_NEAR(std::ldexp(rs.translation.norm(), -k), r.depth, 1e-15) << k;
+  }
+  EXPECT_NEAR(minimum_depth(P.polytope(), Pose3(), P.polytope(), q).translation.norm(), r.depth, 1e-15);
+}
+
 // A pose translation that has no exact value at the pair's scale is named; batches check first.
 TEST(Domain3, PoseTranslationsOutsideThePairsScaleAreNamed) {
   const Pair3 big(hull_scaled(box(1, 1, 1), 1e300), hull_scaled(box(1, 2, 3), 1e300));

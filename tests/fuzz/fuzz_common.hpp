@@ -120,10 +120,10 @@ void check_depth(const Depth& r, bool separation = false) {
     check(std::isfinite(r.normal[k]), "normal is not finite", r.normal[k]);
     check(std::isfinite(r.witness_p[k]) && std::isfinite(r.witness_q[k]), "witness is not finite");
   }
-  const double len = r.translation.norm();
+  const double len = r.translation.stableNorm();  // no overflow for huge shapes
   check(std::fabs(len - r.depth) <= 1e-9 * (r.depth + 1e-300) + 1e-300 || len == r.depth,
         "depth is not the length of the translation", r.depth, len);
-  if (r.depth > 0) check(std::fabs(r.normal.norm() - 1) <= 1e-9, "normal is not a unit vector", r.normal.norm());
+  if (r.depth > 0) check(std::fabs(r.normal.stableNorm() - 1) <= 1e-9, "normal is not a unit vector", r.normal.norm());
   if (!separation && !r.overlapping) check(r.depth == 0, "depth > 0 without overlap", r.depth);
 }
 
