@@ -110,6 +110,7 @@ std::string vec_text(const Vec3& v) {
 }  // namespace
 
 std::string detail::feature3_text(const Feature3& f, const ConvexPolytope& poly) { return feature_text(f, poly); }
+std::string detail::vec3_text(const Vec3& v) { return vec_text(v); }
 
 void append_json(std::string& out, const Depth3& r, const ConvexPolytope& P, const ConvexPolytope& Q) {
   detail::append_result_fields(

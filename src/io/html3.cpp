@@ -44,15 +44,7 @@ std::string text(double x) {
   return s;
 }
 
-std::string text(const Vec3& v) {
-  std::string s = "(";
-  append_double(s, v.x());
-  s += ", ";
-  append_double(s, v.y());
-  s += ", ";
-  append_double(s, v.z());
-  return s + ")";
-}
+std::string text(const Vec3& v) { return detail::vec3_text(v); }
 
 double max_abs(const Vec3& v) { return v.cwiseAbs().maxCoeff(); }
 

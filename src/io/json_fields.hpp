@@ -47,4 +47,7 @@ void append_result_fields(std::string& out, const Result& r, const ShapeP& P, co
 /// vertex indices, as the 3D summary prints them (format3.cpp); "none" for FeatureKind3::None.
 std::string feature3_text(const Feature3& f, const ConvexPolytope& poly);
 
+/// "(x, y, z)" with shortest round-trip doubles, as the 3D summary prints vectors (format3.cpp).
+std::string vec3_text(const Vec3& v);
+
 }  // namespace pendepth::io::detail
