@@ -97,9 +97,16 @@ Depth3 minimum_depth(const ConvexPolytope& P, const Pose3& pose_p, const ConvexP
 
 namespace convex3 {
 
-// σ_d by Algorithm Compute-Depth-3D on the DK hierarchies (directional3.cpp).
-Depth3 directional_depth_dk(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
-                            const Pose3& pose_q, const Vec3& d);
+// σ_d by the directional phase of the certified expansion (minimum_expand.cpp).
+Depth3 directional_depth_expand(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
+                                const Pose3& pose_q, const Vec3& d) {
+  if (!d.allFinite() || d == Vec3::Zero()) throw InvalidInput("direction: zero or non-finite");
+  RelativePose rel = relative(pose_p, pose_q);
+  const Eigen::Matrix3d Rp = pose_p.matrix();
+  const Vec3 dl = Rp.transpose() * d;  // direction in P's frame
+  if (dl == Vec3::Zero()) throw InvalidInput("direction: underflows to zero in P's frame");
+  return directional_depth_expand(P, Q, rel, dl, Rp, pose_p.translation);
+}
 
 // Reference for tests: the exit facet as the minimum over ALL implicit facet normals of M
 // (minkowski_facets.cpp), O(n·m) exact predicates.
@@ -125,6 +132,8 @@ Depth3 directional_depth_facets(const ConvexPolytope& P, const Pose3& pose_p, co
 
 Depth3 directional_depth(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q, const Pose3& pose_q,
                          const Vec3& d) {
+  if (P.size() + Q.size() <= convex3::kDirectionalExpandMax)
+    return convex3::directional_depth_expand(P, pose_p, Q, pose_q, d);
   return convex3::directional_depth_dk(P, pose_p, Q, pose_q, d);
 }
 

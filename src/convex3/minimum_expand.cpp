@@ -1,9 +1,10 @@
-// Exact minimum depth σ = dist(0, ∂M), M = P ⊕ (−Q'), by certified expansion of an inner
-// polytope of M: the Expanding Polytope Algorithm (van den Bergen 2001; Ericson, Real-Time
-// Collision Detection §9.5) made exact. DEPARTURE from DHS §5: the paper computes σ from the
-// explicit M (O(n²)); this is output-sensitive instead — the work is proportional to the number
-// of support queries, each an exact warm-started hill climb. The O(n·m) enumeration of every
-// implicit facet normal (minkowski_facets.cpp) stays as the test reference.
+// Exact minimum depth σ = dist(0, ∂M) and directional depth σ_d (Phase D), M = P ⊕ (−Q'), by
+// certified expansion of an inner polytope of M: the Expanding Polytope Algorithm (van den Bergen
+// 2001; Ericson, Real-Time Collision Detection §9.5) made exact. DEPARTURE from DHS §5: the paper
+// computes σ from the explicit M (O(n²)); this is output-sensitive instead — the work is
+// proportional to the number of support queries, each an exact warm-started hill climb. The
+// O(n·m) enumeration of every implicit facet normal (minkowski_facets.cpp) stays as the test
+// reference.
 //
 // Notation: P fixed (its own frame), Q' = R Q + t with t = tq − tp (exact semantics for the
 // doubles R, tq, tp, as in minkowski_facets.hpp). A point of M is kept symbolically as a pair
@@ -31,6 +32,20 @@
 //    Otherwise s is strictly beyond F: expand. Every step adds a new pair, so the loop ends.
 //  * Values: d_F = h_F/|n_F| from h_F and |n_F|² in double-double with a rigorous error bound
 //    (exact rationals when that bound is not within half an ulp): within ~2 ulps.
+//  * Phase D (σ_d along d, instead of Phase B; a ray cast by expanding polytope): 0 ∈ int K, so
+//    the cones from 0 over K's facets partition space. Take the facet F of K through which the
+//    ray s·d (s > 0) leaves K — its closed cone contains d: the exact signs of det(m_a, m_b, d),
+//    det(m_b, m_c, d), det(m_c, m_a, d) are >= 0 — and the support s along n_F. If s lies exactly
+//    on F's plane, that plane supports M (K ⊆ M below it) and the ray's exit point from K, on F,
+//    is its exit from M: σ_d = h_F·|d| / (n_F·d). Otherwise s is strictly beyond F: expand. After
+//    an expansion the exit point lies on a facet of the new cone (beyond the old exit point it
+//    is on no old facet; at the old exit point it is on the horizon), so only those are tested.
+//    Ties (the ray through an edge or vertex of K) may pick any facet containing the exit point.
+//    σ_d = (h_F / (n_F·d))·|d| in double-double from values within 2^-60 (rationals when the
+//    bound fails), rounded once: within ~half an ulp. Not overlapping (Phase A): depth 0.
+//    DEPARTURE from DHS §5.2 (Compute-Depth-3D on the DK hierarchies, O(log n · log m)): output-
+//    sensitive like σ, and several times faster on small hulls; depth3.cpp picks it below a
+//    measured size (docs/algorithms.md).
 // Predicates: a semi-static filter (uniform per-query bounds on every rounded quantity, from
 // the coordinate extents), then exact::exact_sign (running-error double of the full polynomial,
 // then GMP). Rounded points are taken relative to reference vertices of P and Q, so offsets of
@@ -39,10 +54,13 @@
 // a Q index) are recognised symbolically, so the exact zeros met at every termination never
 // reach the exact fallback.
 //
-// Result: depth = d_F, lower_bound = upper_bound = depth, candidates = number of support queries,
+// Result (σ): depth = d_F, lower_bound = upper_bound = depth, candidates = number of support queries,
 // features = the defining features of M's facet (a face of P and a vertex of Q, a vertex of P
 // and a face of Q, or two edges; P's face preferred, as in minkowski_facets), witnesses = the
 // point of K's facet nearest to 0 written as a convex combination of pairs (P part, Q' part).
+// Result (σ_d): kind Directional, depth = lower = upper bound, translation = σ_d·d̂, normal = d̂,
+// facet_normal = n_F/|n_F|, the same features, witnesses = the exit point t·d as a convex
+// combination of F's pairs (weights from the accurate dets above), candidates = support queries.
 // Complexity: O(k (f + c)) for k support queries, f the facets of K (a branch-free scan for
 // the nearest one; f = O(k)), c the climb length (O(1) from warm starts or the cube-map seeds
 // of vertex_adjacency.cpp). k is at most n·m in theory; measured counts: docs/benchmarks.md
@@ -246,6 +264,21 @@ class Expander {
     return result(phase_b(), Rp, tp);
   }
 
+  // σ_d along d (P's frame; nonzero, finite, largest |coordinate| in [1/2, 1) so that no product
+  // over- or underflows): the exit of the ray s·d (s > 0) from M, in the world frame of P's pose.
+  // A Depth3 with only `kind` and `candidates` set when the shapes do not overlap.
+  Depth3 run_directional(const Vec3& d, const Eigen::Matrix3d& Rp, const Vec3& tp) {
+    init_tetrahedron();
+    if (!phase_a()) {
+      Depth3 none;
+      none.kind = DepthKind::Directional;
+      none.candidates = iters_;
+      return none;
+    }
+    init_direction(d);
+    return directional_result(phase_d(), Rp, tp);
+  }
+
  private:
   const PolytopeData& P_;
   const PolytopeData& Q_;
@@ -268,6 +301,13 @@ class Expander {
   std::vector<double>& keys_;
   int stamp_ = 0;
   std::size_t iters_ = 0;
+  int cone_first_ = 0;  // first facet of the last cone built
+  // Phase D: the query direction (P's frame, scaled by a power of two) and the bound of the
+  // rounded det(m̂_a, m̂_b, d).
+  Vec3 dir_{0, 0, 0};
+  double edet_ = 0;
+
+  enum class Mode { A, B, D };  // which phase expands: what a new facet needs
 
   // ---- per-query bounds (semi-static filters) -------------------------------------------------
   // The reference vertices c_P, c_Q, t = tq − tp exactly (thi_ + tlo_), τ̂, and per coordinate the
@@ -694,9 +734,9 @@ class Expander {
   // Replaces the facets visible from s (strictly beyond their planes; f0 is one) by the cone
   // from s over the horizon. Visible facets of a convex polytope form a disc, so each horizon
   // vertex starts exactly one horizon edge.
-  [[gnu::always_inline]] void expand(int f0, int s, bool phase_a) {
+  [[gnu::always_inline]] void expand(int f0, int s, Mode mode) {
     find_horizon(f0, s);
-    build_cone(s, phase_a);
+    build_cone(s, mode);
   }
 
   // vis_: the facets visible from s (a search from f0 over neighbours); hor_: the horizon, each
@@ -727,11 +767,13 @@ class Expander {
   }
 
   // Kills the visible facets and adds the cone from s over the horizon, linked to its neighbours;
-  // each new facet gets its Phase A sign or (Phase B) its key.
-  [[gnu::always_inline]] void build_cone(int s, bool phase_a) {
+  // each new facet gets its Phase A sign or (Phase B) its key (Phase D needs neither). The new
+  // facets are F_[cone_first_, F_.size()).
+  [[gnu::always_inline]] void build_cone(int s, Mode mode) {
     for (int f : vis_) kill(f);
     if (by_start_.size() < V_.size()) by_start_.resize(2 * V_.size()), by_end_.resize(2 * V_.size());
     const int first = static_cast<int>(F_.size());
+    cone_first_ = first;
     for (auto [f, k] : hor_) {
       int a = F_[f].v[k], b = F_[f].v[(k + 1) % 3], g = F_[f].nb[k];
       int id = add_facet(a, b, s);
@@ -747,8 +789,8 @@ class Expander {
       N.nb[1] = by_start_[N.v[1]];
       N.nb[2] = by_end_[N.v[0]];
       assert(F_[N.nb[1]].v[0] == N.v[1] && F_[N.nb[2]].v[1] == N.v[0]);
-      if (phase_a) N.hsign = hsign(id);
-      else keys_[pos_[id]] = lower_key(id);
+      if (mode == Mode::A) N.hsign = hsign(id);
+      else if (mode == Mode::B) keys_[pos_[id]] = lower_key(id);
     }
   }
 
@@ -767,7 +809,7 @@ class Expander {
       Dir D = facet_dir(f);
       int s = support_facet(f, D);
       if (side0(D, s) <= 0) return false;  // h_M(n_f) <= 0: 0 ∉ int M
-      expand(f, s, true);
+      expand(f, s, Mode::A);
     }
   }
 
@@ -868,9 +910,119 @@ class Expander {
         keys_[pos_[f]] = std::numeric_limits<double>::infinity();
         continue;
       }
-      expand(f, s, false);
+      expand(f, s, Mode::B);
     }
     return best;
+  }
+
+  // ---- Phase D: the exit of the ray s·d from M (σ_d) --------------------------------------------
+  // 0 ∈ int K, so the cones from 0 over K's facets partition space: the ray leaves K through the
+  // facet (a, b, c) whose closed cone contains d, i.e. det(m_a, m_b, d), det(m_b, m_c, d) and
+  // det(m_c, m_a, d) are all >= 0 (each is λ·det(m_a, m_b, m_c) for a barycentric weight λ of the
+  // exit point, and det(m_a, m_b, m_c) = h > 0). Ties (the ray through an edge or a vertex of K)
+  // accept every facet containing the exit point: any of them is correct below.
+
+  // The bound of the rounded d·(m̂_a × m̂_b) (semi-static: uniform over pairs). With |m_k| <= mb_k,
+  // |m̂_k − m_k| <= em_k, A_k = mb_k + em_k: each cross component carries the input error
+  // em_y mb_z + A_y em_z + em_z mb_y + A_z em_y and the rounding 4u A_y A_z (two products, one
+  // difference), and |ĉ_k| <= 2.01 A_y A_z; the dot product adds γ₃ Σ|d_k||ĉ_k|.
+  void init_direction(const Vec3& d) {
+    dir_ = d;
+    double e = 0;
+    for (int k = 0; k < 3; ++k) {
+      const int y = (k + 1) % 3, z = (k + 2) % 3;
+      const double Ay = mb_[y] + em_[y], Az = mb_[z] + em_[z];
+      const double ce = em_[y] * mb_[z] + Ay * em_[z] + em_[z] * mb_[y] + Az * em_[y] + 4.02 * kU * Ay * Az;
+      e += std::abs(d[k]) * (ce * kInflate + 3.02 * kU * 2.01 * Ay * Az);
+    }
+    edet_ = e * kInflate + exact::kTiny;
+  }
+
+  // Sign of det(m_a, m_b, d) = d·(m_a × m_b), exactly.
+  int det_sign(int a, int b) const {
+    const double *x = V_[a].mh, *y = V_[b].mh;
+    const double s = dir_[0] * (x[1] * y[2] - x[2] * y[1]) + dir_[1] * (x[2] * y[0] - x[0] * y[2]) +
+                     dir_[2] * (x[0] * y[1] - x[1] * y[0]);
+    if (s > edet_) return 1;
+    if (s < -edet_) return -1;
+    return exact_sign([&](auto L) {
+      V3<Num<decltype(L)>> dl{L(dir_[0]), L(dir_[1]), L(dir_[2])};
+      return dot(dl, cross(m_l(L, V_[a]), m_l(L, V_[b])));
+    });
+  }
+  // True iff the closed cone from 0 over facet f contains d.
+  bool cone_contains(int f) const {
+    const auto& v = F_[f].v;
+    return det_sign(v[0], v[1]) >= 0 && det_sign(v[1], v[2]) >= 0 && det_sign(v[2], v[0]) >= 0;
+  }
+  // The exit facet of K: among the facets of the last cone when K was just expanded (the exit
+  // point of the larger K lies on it: either beyond the old exit point, hence not on an old facet,
+  // or the old exit point itself, on the horizon then, hence on a closed cone facet), else among
+  // all live facets.
+  int exit_facet(bool after_expand) const {
+    if (after_expand) {
+      for (int f = cone_first_; f < static_cast<int>(F_.size()); ++f)
+        if (cone_contains(f)) return f;
+      assert(false && "the ray leaves K through no facet of the new cone");
+    }
+    for (int f : alive_)
+      if (cone_contains(f)) return f;
+    assert(false && "the ray leaves K through no facet");
+    return alive_[0];
+  }
+
+  // The facet of K on the ray's exit point whose plane supports M: then that point is the
+  // ray's exit from M (K ⊆ M lies below the plane, and the point is in K).
+  int phase_d() {
+    bool expanded = false;
+    for (;;) {
+      const int f = exit_facet(expanded);
+      Dir D = facet_dir(f);
+      const int s = support_facet(f, D);
+      const int o = orient(f, s);
+      assert(o >= 0 && "a support point below the facet's plane");
+      if (o <= 0) {  // f's plane supports M
+        V_.pop_back();
+        return f;
+      }
+      expand(f, s, Mode::D);
+      expanded = true;
+    }
+  }
+
+  // σ_d on facet f: depth = (h_f / (n_f·d))·|d|, h_f and n_f·d to within 2^-60 relative
+  // (double-double with a rigorous bound, exact rationals otherwise), the quotient, |d| and the
+  // product in double-double, rounded once: within ~half an ulp (exact depths come out exact).
+  // Also the unit normal.
+  double exit_distance(int f, Vec3& unit) const {
+    const auto v = F_[f].v;
+    auto n = normal_l(LiftDD{}, v[0], v[1], v[2]);
+    const V3<DD> dd{DD{dir_[0]}, DD{dir_[1]}, DD{dir_[2]}};
+    const DD h = dot(n, m_l(LiftDD{}, V_[v[0]])), nd = dot(n, dd);
+    unit = Vec3(n[0].hi, n[1].hi, n[2].hi).normalized();
+    auto ok = [](const DD& r) {
+      return std::isfinite(r.hi) && std::isfinite(r.e) && safe_bound(r.e) <= std::abs(r.hi) * 0x1p-60;
+    };
+    DD t;
+    if (ok(h) && ok(nd)) {
+      const double q1 = h.hi / nd.hi;
+      const DD r = h - DD{q1} * nd;  // h − q1·nd, nearly exact
+      fast_two_sum(q1, r.hi / nd.hi, t.hi, t.lo);
+    } else {
+      const exact::LiftQ L;
+      auto nq = normal_l(L, v[0], v[1], v[2]);
+      const V3<exact::Rat> dq{L(dir_[0]), L(dir_[1]), L(dir_[2])};
+      const mpq_class q = dot(nq, m_l(L, V_[v[0]])).v / dot(nq, dq).v;
+      t.hi = q.get_d();
+      t.lo = mpq_class(q - t.hi).get_d();
+    }
+    // |d| = sqrt(d·d): the squares and their sum in double-double, one Newton step.
+    const DD s = (dd[0] * dd[0] + dd[1] * dd[1]) + dd[2] * dd[2];
+    const double x = std::sqrt(s.hi);
+    const DD res = s - DD{x} * DD{x};
+    DD norm;
+    fast_two_sum(x, res.hi / (2 * x), norm.hi, norm.lo);
+    return (t * norm).hi;
   }
 
   // ---- result ------------------------------------------------------------------------------
@@ -916,6 +1068,45 @@ class Expander {
     r.witness_p = Rp * wp + tp;
     r.witness_q = Rp * wq + tp;
     features(b, r);
+    return r;
+  }
+
+  Depth3 directional_result(int f, const Eigen::Matrix3d& Rp, const Vec3& tp) const {
+    Depth3 r;
+    r.kind = DepthKind::Directional;
+    r.overlapping = true;
+    r.candidates = iters_;
+    Vec3 u;
+    r.depth = r.lower_bound = r.upper_bound = exit_distance(f, u);
+    const Vec3 dir = dir_.normalized();
+    const Vec3 move = r.depth * dir;
+    // The exit point t·d of facet f, barycentric weights ∝ det(m_b, m_c, d), … (each to ~1 ulp,
+    // exact zeros exactly: K's facets may be slivers): a point wp of P and wq of Q' on the
+    // contact (after the move).
+    const auto& v = F_[f].v;
+    auto det_v = [&](int a, int b) {
+      return std::max(0.0, exact::accurate_value([&](auto L) {
+                        V3<Num<decltype(L)>> dl{L(dir_[0]), L(dir_[1]), L(dir_[2])};
+                        return dot(dl, cross(m_l(L, V_[a]), m_l(L, V_[b])));
+                      }));
+    };
+    double lam[3] = {det_v(v[1], v[2]), det_v(v[2], v[0]), det_v(v[0], v[1])};
+    double sum = lam[0] + lam[1] + lam[2];
+    if (!(sum > 0 && std::isfinite(sum))) lam[0] = lam[1] = lam[2] = sum = 1;
+    Vec3 wp = Vec3::Zero(), wq = Vec3::Zero();
+    const Vec3 t(thi_[0] + tlo_[0], thi_[1] + tlo_[1], thi_[2] + tlo_[2]);
+    for (int k = 0; k < 3; ++k) {
+      const Vert& X = V_[v[k]];
+      wp += lam[k] / sum * P_.v[X.i];
+      wq += lam[k] / sum * (R_ * Q_.v[X.j] + t);
+    }
+    wq += move;
+    r.translation = Rp * move;
+    r.normal = Rp * dir;
+    r.facet_normal = Rp * u;
+    r.witness_p = Rp * wp + tp;
+    r.witness_q = Rp * wq + tp;
+    features(f, r);
     return r;
   }
 
@@ -972,12 +1163,28 @@ class Expander {
   }
 };
 
+// One scratch workspace per thread, shared by σ and σ_d.
+Workspace& workspace() {
+  thread_local Workspace ws;
+  return ws;
+}
+
 }  // namespace
 
 Depth3 minimum_depth_expand(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,
                             const Eigen::Matrix3d& Rp, const Vec3& tp) {
-  thread_local Workspace ws;
-  return Expander(P, Q, rel, ws).run(Rp, tp);
+  return Expander(P, Q, rel, workspace()).run(Rp, tp);
+}
+
+Depth3 directional_depth_expand(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,
+                                const Vec3& d, const Eigen::Matrix3d& Rp, const Vec3& tp) {
+  assert(d.allFinite() && d != Vec3::Zero());
+  // Scale d by a power of two (exact: the same ray) so that its products neither overflow nor
+  // underflow.
+  int ex = 0;
+  std::frexp(d.cwiseAbs().maxCoeff(), &ex);
+  const Vec3 ds(std::ldexp(d.x(), -ex), std::ldexp(d.y(), -ex), std::ldexp(d.z(), -ex));
+  return Expander(P, Q, rel, workspace()).run_directional(ds, Rp, tp);
 }
 
 }  // namespace pendepth::convex3

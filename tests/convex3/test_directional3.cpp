@@ -31,11 +31,7 @@ struct Stats {
   }
 };
 
-double ulps(double a, double b) {
-  double scale = std::max(std::abs(a), std::abs(b));
-  if (scale == 0) return 0;
-  return std::abs(a - b) / (std::ldexp(1.0, std::ilogb(scale)) * 0x1p-52);
-}
+using test3::ulps;
 
 // 0 ∈ ∂M exactly: P and Q' touch without overlapping (every facet has h ≥ 0, one has h = 0).
 bool touching(const ConvexPolytope& P, const ConvexPolytope& Q, const Pose3& pq) {
