@@ -1,7 +1,8 @@
 // 3D depth queries on two convex polytopes with poses: the public entry points.
 //   σ   : minimum_expand.cpp — exact certified expansion on the implicit M = P ⊕ (−Q').
-//   σ_d : directional3.cpp — Compute-Depth-3D (DHS §5.2) on the inner DK hierarchies,
-//         O(log n · log m) constant-size steps, exact.
+//   σ_d : minimum_expand.cpp's Phase D — the same certified expansion cast along the ray, within
+//         a work budget O(log n · log m); beyond it directional3.cpp — Compute-Depth-3D
+//         (DHS §5.2) on the inner DK hierarchies, O(log n · log m) constant-size steps. Both exact.
 // The O(n·m) enumeration of M's implicit facet normals (minkowski_facets.cpp) is kept here as
 // convex3::directional_depth_facets and friends: the exact reference for tests and benchmarks.
 #include <pendepth/depth3.hpp>
@@ -105,7 +106,7 @@ Depth3 directional_depth_expand(const ConvexPolytope& P, const Pose3& pose_p, co
   const Eigen::Matrix3d Rp = pose_p.matrix();
   const Vec3 dl = Rp.transpose() * d;  // direction in P's frame
   if (dl == Vec3::Zero()) throw InvalidInput("direction: underflows to zero in P's frame");
-  return directional_depth_expand(P, Q, rel, dl, Rp, pose_p.translation);
+  return *directional_depth_expand(P, Q, rel, dl, Rp, pose_p.translation);
 }
 
 // Reference for tests: the exit facet as the minimum over ALL implicit facet normals of M
@@ -132,8 +133,14 @@ Depth3 directional_depth_facets(const ConvexPolytope& P, const Pose3& pose_p, co
 
 Depth3 directional_depth(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q, const Pose3& pose_q,
                          const Vec3& d) {
-  if (P.size() + Q.size() <= convex3::kDirectionalExpandMax)
-    return convex3::directional_depth_expand(P, pose_p, Q, pose_q, d);
+  if (!d.allFinite() || d == Vec3::Zero()) throw InvalidInput("direction: zero or non-finite");
+  const RelativePose rel = relative(pose_p, pose_q);
+  const Eigen::Matrix3d Rp = pose_p.matrix();
+  const Vec3 dl = Rp.transpose() * d;  // direction in P's frame
+  if (dl == Vec3::Zero()) throw InvalidInput("direction: underflows to zero in P's frame");
+  if (auto r = convex3::directional_depth_expand(P, Q, rel, dl, Rp, pose_p.translation,
+                                                 convex3::directional_work_budget(P.size(), Q.size())))
+    return *r;
   return convex3::directional_depth_dk(P, pose_p, Q, pose_q, d);
 }
 

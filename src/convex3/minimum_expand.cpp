@@ -44,8 +44,11 @@
 //    σ_d = (h_F / (n_F·d))·|d| in double-double from values within 2^-60 (rationals when the
 //    bound fails), rounded once: within ~half an ulp. Not overlapping (Phase A): depth 0.
 //    DEPARTURE from DHS §5.2 (Compute-Depth-3D on the DK hierarchies, O(log n · log m)): output-
-//    sensitive like σ, and several times faster on small hulls; depth3.cpp picks it below a
-//    measured size (docs/algorithms.md).
+//    sensitive like σ and an order of magnitude faster on every input measured, but with no
+//    useful worst-case bound (hub vertices make climbs long; k is at most n·m). So Phases A and
+//    D count their work (neighbours scanned by the climbs, facets scanned or built) and give up
+//    past a budget: depth3.cpp then runs Compute-Depth-3D, which keeps the O(log n · log m)
+//    bound (budget: minimum_expand.hpp, measured work: docs/benchmarks.md).
 // Predicates: a semi-static filter (uniform per-query bounds on every rounded quantity, from
 // the coordinate extents), then exact::exact_sign (running-error double of the full polynomial,
 // then GMP). Rounded points are taken relative to reference vertices of P and Q, so offsets of
@@ -75,6 +78,7 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -256,7 +260,7 @@ class Expander {
   // `candidates` set when the shapes do not overlap (touching included).
   Depth3 run(const Eigen::Matrix3d& Rp, const Vec3& tp) {
     init_tetrahedron();
-    if (!phase_a()) {
+    if (phase_a() != Overlap::Yes) {
       Depth3 none;
       none.candidates = iters_;
       return none;
@@ -266,18 +270,26 @@ class Expander {
 
   // σ_d along d (P's frame; nonzero, finite, largest |coordinate| in [1/2, 1) so that no product
   // over- or underflows): the exit of the ray s·d (s > 0) from M, in the world frame of P's pose.
-  // A Depth3 with only `kind` and `candidates` set when the shapes do not overlap.
-  Depth3 run_directional(const Vec3& d, const Eigen::Matrix3d& Rp, const Vec3& tp) {
+  // A Depth3 with only `kind` and `candidates` set when the shapes do not overlap; nullopt when
+  // the work exceeded `budget` (see work_).
+  std::optional<Depth3> run_directional(const Vec3& d, const Eigen::Matrix3d& Rp, const Vec3& tp,
+                                        std::size_t budget) {
+    budget_ = budget;
     init_tetrahedron();
-    if (!phase_a()) {
+    const Overlap o = phase_a();
+    if (o == Overlap::Exhausted) return std::nullopt;
+    if (o == Overlap::No) {
       Depth3 none;
       none.kind = DepthKind::Directional;
       none.candidates = iters_;
       return none;
     }
     init_direction(d);
-    return directional_result(phase_d(), Rp, tp);
+    const int f = phase_d();
+    if (f < 0) return std::nullopt;
+    return directional_result(f, Rp, tp);
   }
+  std::size_t work() const { return work_; }
 
  private:
   const PolytopeData& P_;
@@ -302,6 +314,11 @@ class Expander {
   int stamp_ = 0;
   std::size_t iters_ = 0;
   int cone_first_ = 0;  // first facet of the last cone built
+  // Elementary steps so far (neighbours scanned by the climbs, facets scanned, visited or built)
+  // and the limit above which Phases A and D give up (σ: none).
+  mutable std::size_t work_ = 0;
+  std::size_t budget_ = std::numeric_limits<std::size_t>::max();
+  enum class Overlap { No, Yes, Exhausted };
   // Phase D: the query direction (P's frame, scaled by a power of two) and the bound of the
   // rounded det(m̂_a, m̂_b, d).
   Vec3 dir_{0, 0, 0};
@@ -592,6 +609,7 @@ class Expander {
     const bool finite = eb < 1e280;
     for (;;) {
       const int b = A.start[v], end = A.start[v + 1];
+      work_ += static_cast<std::size_t>(end - b);
       double bv = -std::numeric_limits<double>::infinity();
       int be = b;
       for (int e = b; e < end; ++e) {
@@ -774,6 +792,7 @@ class Expander {
     if (by_start_.size() < V_.size()) by_start_.resize(2 * V_.size()), by_end_.resize(2 * V_.size());
     const int first = static_cast<int>(F_.size());
     cone_first_ = first;
+    work_ += vis_.size() + hor_.size();
     for (auto [f, k] : hor_) {
       int a = F_[f].v[k], b = F_[f].v[(k + 1) % 3], g = F_[f].nb[k];
       int id = add_facet(a, b, s);
@@ -795,8 +814,10 @@ class Expander {
   }
 
   // ---- Phase A: decide 0 ∈ int M exactly --------------------------------------------------------
-  bool phase_a() {
+  Overlap phase_a() {
     for (;;) {
+      work_ += alive_.size();
+      if (work_ > budget_) return Overlap::Exhausted;
       int f = -1;
       double worst = 0;
       for (int g : alive_) {
@@ -805,10 +826,10 @@ class Expander {
         double sd = G.h / std::sqrt(G.n[0] * G.n[0] + G.n[1] * G.n[1] + G.n[2] * G.n[2]);  // for choice only
         if (f < 0 || sd < worst) f = g, worst = sd;
       }
-      if (f < 0) return true;  // 0 strictly inside every facet: 0 ∈ int K ⊆ int M
+      if (f < 0) return Overlap::Yes;  // 0 strictly inside every facet: 0 ∈ int K ⊆ int M
       Dir D = facet_dir(f);
       int s = support_facet(f, D);
-      if (side0(D, s) <= 0) return false;  // h_M(n_f) <= 0: 0 ∉ int M
+      if (side0(D, s) <= 0) return Overlap::No;  // h_M(n_f) <= 0: 0 ∉ int M
       expand(f, s, Mode::A);
     }
   }
@@ -965,6 +986,7 @@ class Expander {
         if (cone_contains(f)) return f;
       assert(false && "the ray leaves K through no facet of the new cone");
     }
+    work_ += alive_.size();
     for (int f : alive_)
       if (cone_contains(f)) return f;
     assert(false && "the ray leaves K through no facet");
@@ -972,10 +994,11 @@ class Expander {
   }
 
   // The facet of K on the ray's exit point whose plane supports M: then that point is the
-  // ray's exit from M (K ⊆ M lies below the plane, and the point is in K).
+  // ray's exit from M (K ⊆ M lies below the plane, and the point is in K). −1: over budget.
   int phase_d() {
     bool expanded = false;
     for (;;) {
+      if (work_ > budget_) return -1;
       const int f = exit_facet(expanded);
       Dir D = facet_dir(f);
       const int s = support_facet(f, D);
@@ -1080,18 +1103,24 @@ class Expander {
     r.depth = r.lower_bound = r.upper_bound = exit_distance(f, u);
     const Vec3 dir = dir_.normalized();
     const Vec3 move = r.depth * dir;
-    // The exit point t·d of facet f, barycentric weights ∝ det(m_b, m_c, d), … (each to ~1 ulp,
-    // exact zeros exactly: K's facets may be slivers): a point wp of P and wq of Q' on the
-    // contact (after the move).
+    // The exit point t·d of facet f, barycentric weights ∝ det(m_b, m_c, d), … (>= 0 exactly): a
+    // point wp of P and wq of Q' on the contact (after the move). The rounded dets (error <=
+    // edet_ each) when their sum dwarfs that error, else each to ~1 ulp with exact zeros (K's
+    // facets may be slivers).
     const auto& v = F_[f].v;
-    auto det_v = [&](int a, int b) {
-      return std::max(0.0, exact::accurate_value([&](auto L) {
-                        V3<Num<decltype(L)>> dl{L(dir_[0]), L(dir_[1]), L(dir_[2])};
-                        return dot(dl, cross(m_l(L, V_[a]), m_l(L, V_[b])));
-                      }));
-    };
-    double lam[3] = {det_v(v[1], v[2]), det_v(v[2], v[0]), det_v(v[0], v[1])};
+    auto det_r = [&](int a, int b) { return std::max(0.0, dir_.dot(approx(a).cross(approx(b)))); };
+    double lam[3] = {det_r(v[1], v[2]), det_r(v[2], v[0]), det_r(v[0], v[1])};
     double sum = lam[0] + lam[1] + lam[2];
+    if (!(sum > 0x1p42 * edet_)) {
+      auto det_v = [&](int a, int b) {
+        return std::max(0.0, exact::accurate_value([&](auto L) {
+                          V3<Num<decltype(L)>> dl{L(dir_[0]), L(dir_[1]), L(dir_[2])};
+                          return dot(dl, cross(m_l(L, V_[a]), m_l(L, V_[b])));
+                        }));
+      };
+      lam[0] = det_v(v[1], v[2]), lam[1] = det_v(v[2], v[0]), lam[2] = det_v(v[0], v[1]);
+      sum = lam[0] + lam[1] + lam[2];
+    }
     if (!(sum > 0 && std::isfinite(sum))) lam[0] = lam[1] = lam[2] = sum = 1;
     Vec3 wp = Vec3::Zero(), wq = Vec3::Zero();
     const Vec3 t(thi_[0] + tlo_[0], thi_[1] + tlo_[1], thi_[2] + tlo_[2]);
@@ -1176,15 +1205,19 @@ Depth3 minimum_depth_expand(const ConvexPolytope& P, const ConvexPolytope& Q, co
   return Expander(P, Q, rel, workspace()).run(Rp, tp);
 }
 
-Depth3 directional_depth_expand(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,
-                                const Vec3& d, const Eigen::Matrix3d& Rp, const Vec3& tp) {
+std::optional<Depth3> directional_depth_expand(const ConvexPolytope& P, const ConvexPolytope& Q,
+                                               const RelativePose& rel, const Vec3& d, const Eigen::Matrix3d& Rp,
+                                               const Vec3& tp, std::size_t budget, std::size_t* work) {
   assert(d.allFinite() && d != Vec3::Zero());
   // Scale d by a power of two (exact: the same ray) so that its products neither overflow nor
   // underflow.
   int ex = 0;
   std::frexp(d.cwiseAbs().maxCoeff(), &ex);
   const Vec3 ds(std::ldexp(d.x(), -ex), std::ldexp(d.y(), -ex), std::ldexp(d.z(), -ex));
-  return Expander(P, Q, rel, workspace()).run_directional(ds, Rp, tp);
+  Expander e(P, Q, rel, workspace());
+  std::optional<Depth3> r = e.run_directional(ds, Rp, tp, budget);
+  if (work) *work = e.work();
+  return r;
 }
 
 }  // namespace pendepth::convex3

@@ -6,6 +6,11 @@
 
 #include "convex3/minkowski_facets.hpp"
 
+#include <bit>
+#include <cstddef>
+#include <limits>
+#include <optional>
+
 namespace pendepth::convex3 {
 
 /// σ for Q placed by `rel` in P's frame. The result is expressed in the world frame given by
@@ -16,12 +21,16 @@ Depth3 minimum_depth_expand(const ConvexPolytope& P, const ConvexPolytope& Q, co
 /// σ_d along d (P's frame; precondition: finite and nonzero) for Q placed by `rel`: the exit of
 /// the ray s·d̂ from int M by the same expansion (Phase D), result in the world frame of P's pose.
 /// Exact: lower_bound == upper_bound == depth on overlap; not overlapping (touching included):
-/// depth 0, kind Directional.
-Depth3 directional_depth_expand(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,
-                                const Vec3& d, const Eigen::Matrix3d& Rp, const Vec3& tp);
+/// depth 0, kind Directional. nullopt when the work (climb steps, facets scanned or built)
+/// exceeds `budget`; `work` (if given) receives the work done.
+std::optional<Depth3> directional_depth_expand(const ConvexPolytope& P, const ConvexPolytope& Q,
+                                               const RelativePose& rel, const Vec3& d, const Eigen::Matrix3d& Rp,
+                                               const Vec3& tp,
+                                               std::size_t budget = std::numeric_limits<std::size_t>::max(),
+                                               std::size_t* work = nullptr);
 
 /// The same with validation (InvalidInput for a zero or non-finite d and bad poses), d in the
-/// world frame: what pendepth::directional_depth runs when |P| + |Q| <= kDirectionalExpandMax.
+/// world frame, no budget (tests, benchmarks).
 Depth3 directional_depth_expand(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
                                 const Pose3& pose_q, const Vec3& d);
 
@@ -29,8 +38,14 @@ Depth3 directional_depth_expand(const ConvexPolytope& P, const Pose3& pose_p, co
 Depth3 directional_depth_dk(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
                             const Pose3& pose_q, const Vec3& d);
 
-/// Crossover of pendepth::directional_depth: the expansion up to this many vertices in total
-/// (measured: docs/benchmarks.md), Compute-Depth-3D above (its O(log n · log m) bound).
-inline constexpr std::size_t kDirectionalExpandMax = 256;
+/// The work budget of the expansion in pendepth::directional_depth, O(log n · log m): beyond it
+/// the query is answered by Compute-Depth-3D (so the bound of DHS Theorem 5.6 holds). The
+/// constants are set from the measured work (docs/benchmarks.md): typical queries use a small
+/// fraction of it.
+inline constexpr std::size_t kExpandWorkBase = 4096, kExpandWorkPerLog = 256;
+inline std::size_t directional_work_budget(std::size_t n, std::size_t m) {
+  auto lg = [](std::size_t x) { return static_cast<std::size_t>(std::bit_width(x)); };  // ⌈log2(x + 1)⌉
+  return kExpandWorkBase + kExpandWorkPerLog * lg(n) * lg(m);
+}
 
 }  // namespace pendepth::convex3

@@ -331,26 +331,34 @@ TEST(DirectionalExpand, NearlyCoplanarAndSlivers) {
   EXPECT_GT(st.overlapping, 100);
 }
 
-TEST(DirectionalExpand, PublicQueryUsesItForSmallPairs) {
-  // pendepth::directional_depth runs the expansion up to kDirectionalExpandMax vertices in total
-  // (same bits), Compute-Depth-3D above.
+TEST(DirectionalExpand, PublicQueryAndWorkBudget) {
+  // pendepth::directional_depth runs the expansion within a work budget O(log n · log m) (same
+  // bits), Compute-Depth-3D when the budget runs out; the budget is checked as documented.
   std::mt19937_64 rng(12);
   auto P = ConvexPolytope::hull(test3::random_sphere(rng, 40));
   auto Q = ConvexPolytope::hull(test3::random_sphere(rng, 30, 0.6));
   Pose3 pq(random_rotation(rng), Vec3(0.2, 0.1, -0.3));
+  convex3::RelativePose rel;
+  rel.R = pq.matrix(), rel.tq = pq.translation;
+  const Eigen::Matrix3d I = Eigen::Matrix3d::Identity();
   for (const Vec3& d : directions(rng, 6)) {
     Depth3 a = directional_depth(P, Pose3(), Q, pq, d), b = convex3::directional_depth_expand(P, Pose3(), Q, pq, d);
     EXPECT_EQ(a.depth, b.depth);
     EXPECT_EQ(a.candidates, b.candidates);
+    EXPECT_EQ(a.witness_p, b.witness_p);
+    std::size_t work = 0;
+    auto full = convex3::directional_depth_expand(P, Q, rel, d, I, Vec3::Zero(), SIZE_MAX, &work);
+    ASSERT_TRUE(full.has_value());
+    EXPECT_EQ(full->depth, b.depth);
+    EXPECT_LT(work, convex3::directional_work_budget(P.size(), Q.size()) / 4);  // typical: far below
+    // Exactly the work needed passes; less gives up (before any answer).
+    EXPECT_TRUE(convex3::directional_depth_expand(P, Q, rel, d, I, Vec3::Zero(), work).has_value());
+    EXPECT_FALSE(convex3::directional_depth_expand(P, Q, rel, d, I, Vec3::Zero(), work / 2).has_value());
+    EXPECT_FALSE(convex3::directional_depth_expand(P, Q, rel, d, I, Vec3::Zero(), 0).has_value());
   }
-  std::size_t big = convex3::kDirectionalExpandMax + 1;
-  auto L = ConvexPolytope::hull(test3::random_sphere(rng, static_cast<int>(big)));
-  ASSERT_GT(L.size() + Q.size(), convex3::kDirectionalExpandMax);
-  for (const Vec3& d : directions(rng, 4)) {
-    Depth3 a = directional_depth(L, Pose3(), Q, pq, d), b = convex3::directional_depth_dk(L, Pose3(), Q, pq, d);
-    EXPECT_EQ(a.depth, b.depth);
-    EXPECT_EQ(a.candidates, b.candidates);
-  }
+  // Budgets grow as log n · log m.
+  EXPECT_EQ(convex3::directional_work_budget(1, 1), convex3::kExpandWorkBase + convex3::kExpandWorkPerLog);
+  EXPECT_EQ(convex3::directional_work_budget(1023, 1023), convex3::kExpandWorkBase + 100 * convex3::kExpandWorkPerLog);
 }
 
 }  // namespace
