@@ -244,9 +244,14 @@ struct Workspace {
 // compiled into their callers as when they were written there; init_tetrahedron and phase_b stay
 // out of line ([[gnu::noinline]]) and the double-double operations inline, as GCC chose for the
 // former single functions, which the split would otherwise change (measured: docs/benchmarks.md).
+// σ_d (Phase D) instantiates the class a second time, with work counting (kBudget); the
+// constructor, phase_a and facet_dir are forced inline so that σ's instantiation keeps GCC's
+// former choices (σ within 0.5 % of its instruction count before Phase D existed).
+// kBudget: count the work and give up past budget_ (σ_d); σ compiles without either.
+template <bool kBudget>
 class Expander {
  public:
-  Expander(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel, Workspace& ws)
+  [[gnu::always_inline]] Expander(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel, Workspace& ws)
       : P_(convex3::data_of(Pp)), Q_(convex3::data_of(Qp)), AP_(vertex_adjacency(P_)), AQ_(vertex_adjacency(Q_)), R_(rel.R),
         V_(ws.V), F_(ws.F), mark_(ws.mark), vis_(ws.vis), by_start_(ws.by_start), by_end_(ws.by_end),
         hor_(ws.hor), alive_(ws.alive), pos_(ws.pos), keys_(ws.keys) {
@@ -259,7 +264,8 @@ class Expander {
   // σ: the minimum depth in the world frame of P's pose (Rp, tp); a Depth3 with only
   // `candidates` set when the shapes do not overlap (touching included).
   Depth3 run(const Eigen::Matrix3d& Rp, const Vec3& tp) {
-    init_tetrahedron();
+    [[maybe_unused]] const bool built = init_tetrahedron();  // σ has no budget
+    assert(built);
     if (phase_a() != Overlap::Yes) {
       Depth3 none;
       none.candidates = iters_;
@@ -275,7 +281,7 @@ class Expander {
   std::optional<Depth3> run_directional(const Vec3& d, const Eigen::Matrix3d& Rp, const Vec3& tp,
                                         std::size_t budget) {
     budget_ = budget;
-    init_tetrahedron();
+    if (!init_tetrahedron()) return std::nullopt;
     const Overlap o = phase_a();
     if (o == Overlap::Exhausted) return std::nullopt;
     if (o == Overlap::No) {
@@ -575,7 +581,7 @@ class Expander {
     D.es = bound_side(n, nerr);
     D.e0 = bound_zero(n, nerr);
   }
-  Dir facet_dir(int f) const {
+  [[gnu::always_inline]] Dir facet_dir(int f) const {
     const Facet& F = F_[f];
     Dir D;
     D.kind = Dir::Normal;
@@ -607,9 +613,13 @@ class Expander {
     const double u0 = u[0], u1 = u[1], u2 = u[2];
     const double *dx = A.dx.data(), *dy = A.dy.data(), *dz = A.dz.data();
     const bool finite = eb < 1e280;
+    // The work counter in a register; a climb cut short by the budget returns a non-maximal
+    // vertex, which the caller never uses (over_budget()).
+    std::size_t work = work_;
+    const std::size_t budget = kBudget ? budget_ : std::numeric_limits<std::size_t>::max();
     for (;;) {
       const int b = A.start[v], end = A.start[v + 1];
-      work_ += static_cast<std::size_t>(end - b);
+      if constexpr (kBudget) work += static_cast<std::size_t>(end - b);
       double bv = -std::numeric_limits<double>::infinity();
       int be = b;
       for (int e = b; e < end; ++e) {
@@ -617,17 +627,19 @@ class Expander {
         be = s > bv ? e : be;
         bv = s > bv ? s : bv;
       }
-      if (finite && bv > eb) {
+      if (finite && bv > eb && work <= budget) {
         v = A.nbr[be];
         continue;
       }
-      if (finite && bv < -eb) return v;  // every neighbour certified lower
+      if ((finite && bv < -eb) || work > budget) break;  // every neighbour certified lower
       int next = -1;
       for (int e = b; e < end && next < 0; ++e)
         if ((of_p ? cmp_p(D, v, A.nbr[e]) : cmp_q(D, v, A.nbr[e])) > 0) next = A.nbr[e];
-      if (next < 0) return v;
+      if (next < 0) break;
       v = next;
     }
+    if constexpr (kBudget) work_ = work;
+    return v;
   }
   // Adds the support of M along D (a new vertex of V_; the caller may pop it).
   int support(const Dir& D, int p0, int q0) {
@@ -658,20 +670,24 @@ class Expander {
       {0.4612, -0.6287, 0.6262}, {-0.7033, 0.2117, 0.6786}, {0.3819, 0.8573, 0.3452}};
 
   // The initial K: a tetrahedron of four pairs (M is full-dimensional), facets linked, Phase A
-  // signs set.
-  [[gnu::noinline]] void init_tetrahedron() {
+  // signs set. False (and no K) when over budget.
+  [[gnu::noinline]] bool init_tetrahedron() {
     int s1, s2;
-    first_supports(s1, s2);
+    if (!first_supports(s1, s2)) return false;
     double e[3];  // the rounded m_s2 − m_s1
     diff_r(V_[s2], V_[s1], e);
     int s3 = third_support(s1, s2, e);
+    if (s3 < 0) return false;
     int o = 0;
     const int s4 = fourth_support(s1, s2, s3, e, o);
+    if (s4 < 0) return false;
     if (o > 0) std::swap(s2, s3);  // now s4 lies below the plane of (s1, s2, s3)
     add_facet(s1, s2, s3), add_facet(s1, s4, s2), add_facet(s2, s4, s3), add_facet(s3, s4, s1);
     F_[0].nb = {1, 2, 3}, F_[1].nb = {3, 2, 0}, F_[2].nb = {1, 3, 0}, F_[3].nb = {2, 1, 0};  // twins
     for (int a = 0; a < 4; ++a) F_[a].hsign = hsign(a);
+    return true;
   }
+  bool over_budget() const { return kBudget && work_ > budget_; }
 
   // A support query along a plain vector d (exact as given).
   [[gnu::always_inline]] Dir vec_dir(const Vec3& d) const {
@@ -683,24 +699,28 @@ class Expander {
   }
 
   // s1, s2: two different pairs, the supports along d1 (from M's centre towards 0, tilted) and
-  // about −d1 (exactly −d1 if that gave s1 again).
-  [[gnu::always_inline]] void first_supports(int& s1, int& s2) {
+  // about −d1 (exactly −d1 if that gave s1 again). False when over budget.
+  [[gnu::always_inline]] bool first_supports(int& s1, int& s2) {
     const Vec3 g0(kGeneric[0][0], kGeneric[0][1], kGeneric[0][2]), g1(kGeneric[1][0], kGeneric[1][1], kGeneric[1][2]);
     Vec3 d1 = R_ * AQ_.centroid + Vec3(thi_[0], thi_[1], thi_[2]) - AP_.centroid;
     d1 += 0.125 * d1.norm() * g0;
     if (!(d1.allFinite() && d1.squaredNorm() > 0)) d1 = g0;
     s1 = support_cold(vec_dir(d1));
+    if (over_budget()) return false;
     Vec3 d2 = -d1 + 0.25 * d1.norm() * g1;
     if (!(d2.allFinite() && d2.squaredNorm() > 0)) d2 = -d1;
     s2 = support_cold(vec_dir(d2));
+    if (over_budget()) return false;
     if (V_[s2].i == V_[s1].i && V_[s2].j == V_[s1].j) {  // M is full-dimensional: ±d1 differ
       V_.pop_back();
       s2 = support_cold(vec_dir(-d1));
     }
+    return !over_budget();
   }
 
   // s3: a support strictly off the line of s1, s2 (e = the rounded m_s2 − m_s1), along some
-  // ±(m_s2 − m_s1) × g_k (M is full-dimensional; the g_k are linearly independent).
+  // ±(m_s2 − m_s1) × g_k (M is full-dimensional; the g_k are linearly independent). −1 when
+  // over budget.
   [[gnu::always_inline]] int third_support(int s1, int s2, const double e[3]) {
     int s3 = -1;
     const double bmax = std::max({B_[0], B_[1], B_[2]});
@@ -717,6 +737,7 @@ class Expander {
         D.n = sg * Vec3(n[0], n[1], n[2]);
         finish_dir(D, cerr);
         int x = support_cold(D);
+        if (over_budget()) return -1;
         if (dir_side(D, x, s1) != 0) { s3 = x; break; }
         V_.pop_back();
       }
@@ -725,7 +746,8 @@ class Expander {
   }
 
   // s4: a support strictly off the plane of s1, s2, s3, along ± its normal; o > 0 when s4 lies
-  // above that plane (on the side of the normal (m_s2 − m_s1) × (m_s3 − m_s1)).
+  // above that plane (on the side of the normal (m_s2 − m_s1) × (m_s3 − m_s1)). −1 when over
+  // budget.
   [[gnu::always_inline]] int fourth_support(int s1, int s2, int s3, const double e[3], int& o) {
     int s4 = -1;
     for (int sg : {1, -1}) {
@@ -740,6 +762,7 @@ class Expander {
       D.n = sg * Vec3(n[0], n[1], n[2]);
       finish_dir(D, ne_);
       int x = support_cold(D);
+      if (over_budget()) return -1;
       if (int side = dir_side(D, x, s1); side != 0) { s4 = x, o = side * sg; break; }
       V_.pop_back();
     }
@@ -792,7 +815,7 @@ class Expander {
     if (by_start_.size() < V_.size()) by_start_.resize(2 * V_.size()), by_end_.resize(2 * V_.size());
     const int first = static_cast<int>(F_.size());
     cone_first_ = first;
-    work_ += vis_.size() + hor_.size();
+    if constexpr (kBudget) work_ += vis_.size() + hor_.size();
     for (auto [f, k] : hor_) {
       int a = F_[f].v[k], b = F_[f].v[(k + 1) % 3], g = F_[f].nb[k];
       int id = add_facet(a, b, s);
@@ -814,10 +837,10 @@ class Expander {
   }
 
   // ---- Phase A: decide 0 ∈ int M exactly --------------------------------------------------------
-  Overlap phase_a() {
+  [[gnu::always_inline]] Overlap phase_a() {
     for (;;) {
-      work_ += alive_.size();
-      if (work_ > budget_) return Overlap::Exhausted;
+      if constexpr (kBudget) work_ += alive_.size();
+      if (over_budget()) return Overlap::Exhausted;
       int f = -1;
       double worst = 0;
       for (int g : alive_) {
@@ -829,6 +852,7 @@ class Expander {
       if (f < 0) return Overlap::Yes;  // 0 strictly inside every facet: 0 ∈ int K ⊆ int M
       Dir D = facet_dir(f);
       int s = support_facet(f, D);
+      if (over_budget()) return Overlap::Exhausted;
       if (side0(D, s) <= 0) return Overlap::No;  // h_M(n_f) <= 0: 0 ∉ int M
       expand(f, s, Mode::A);
     }
@@ -986,7 +1010,7 @@ class Expander {
         if (cone_contains(f)) return f;
       assert(false && "the ray leaves K through no facet of the new cone");
     }
-    work_ += alive_.size();
+    if constexpr (kBudget) work_ += alive_.size();
     for (int f : alive_)
       if (cone_contains(f)) return f;
     assert(false && "the ray leaves K through no facet");
@@ -998,10 +1022,11 @@ class Expander {
   int phase_d() {
     bool expanded = false;
     for (;;) {
-      if (work_ > budget_) return -1;
+      if (over_budget()) return -1;
       const int f = exit_facet(expanded);
       Dir D = facet_dir(f);
       const int s = support_facet(f, D);
+      if (over_budget()) return -1;
       const int o = orient(f, s);
       assert(o >= 0 && "a support point below the facet's plane");
       if (o <= 0) {  // f's plane supports M
@@ -1105,20 +1130,21 @@ class Expander {
     const Vec3 move = r.depth * dir;
     // The exit point t·d of facet f, barycentric weights ∝ det(m_b, m_c, d), … (>= 0 exactly): a
     // point wp of P and wq of Q' on the contact (after the move). The rounded dets (error <=
-    // edet_ each) when their sum dwarfs that error, else each to ~1 ulp with exact zeros (K's
-    // facets may be slivers).
+    // edet_ each) when their sum dwarfs that error, else in double-double with exact zeros
+    // (K's facets may be slivers).
     const auto& v = F_[f].v;
     auto det_r = [&](int a, int b) { return std::max(0.0, dir_.dot(approx(a).cross(approx(b)))); };
     double lam[3] = {det_r(v[1], v[2]), det_r(v[2], v[0]), det_r(v[0], v[1])};
     double sum = lam[0] + lam[1] + lam[2];
     if (!(sum > 0x1p42 * edet_)) {
-      auto det_v = [&](int a, int b) {
-        return std::max(0.0, exact::accurate_value([&](auto L) {
-                          V3<Num<decltype(L)>> dl{L(dir_[0]), L(dir_[1]), L(dir_[2])};
-                          return dot(dl, cross(m_l(L, V_[a]), m_l(L, V_[b])));
-                        }));
-      };
-      lam[0] = det_v(v[1], v[2]), lam[1] = det_v(v[2], v[0]), lam[2] = det_v(v[0], v[1]);
+      const V3<DD> dl{DD{dir_[0]}, DD{dir_[1]}, DD{dir_[2]}};
+      const V3<DD> m[3] = {m_l(LiftDD{}, V_[v[0]]), m_l(LiftDD{}, V_[v[1]]), m_l(LiftDD{}, V_[v[2]])};
+      for (int k = 0; k < 3; ++k) {
+        const int b = (k + 1) % 3, c = (k + 2) % 3;
+        const DD x = dot(dl, cross(m[b], m[c]));
+        const bool sure = std::isfinite(x.hi) && std::abs(x.hi) > safe_bound(x.e);
+        lam[k] = std::max(0.0, sure || det_sign(v[b], v[c]) != 0 ? x.hi : 0.0);
+      }
       sum = lam[0] + lam[1] + lam[2];
     }
     if (!(sum > 0 && std::isfinite(sum))) lam[0] = lam[1] = lam[2] = sum = 1;
@@ -1202,7 +1228,7 @@ Workspace& workspace() {
 
 Depth3 minimum_depth_expand(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,
                             const Eigen::Matrix3d& Rp, const Vec3& tp) {
-  return Expander(P, Q, rel, workspace()).run(Rp, tp);
+  return Expander<false>(P, Q, rel, workspace()).run(Rp, tp);
 }
 
 std::optional<Depth3> directional_depth_expand(const ConvexPolytope& P, const ConvexPolytope& Q,
@@ -1214,7 +1240,7 @@ std::optional<Depth3> directional_depth_expand(const ConvexPolytope& P, const Co
   int ex = 0;
   std::frexp(d.cwiseAbs().maxCoeff(), &ex);
   const Vec3 ds(std::ldexp(d.x(), -ex), std::ldexp(d.y(), -ex), std::ldexp(d.z(), -ex));
-  Expander e(P, Q, rel, workspace());
+  Expander<true> e(P, Q, rel, workspace());
   std::optional<Depth3> r = e.run_directional(ds, Rp, tp, budget);
   if (work) *work = e.work();
   return r;

@@ -356,6 +356,43 @@ TEST(DirectionalExpand, PublicQueryAndWorkBudget) {
     EXPECT_FALSE(convex3::directional_depth_expand(P, Q, rel, d, I, Vec3::Zero(), work / 2).has_value());
     EXPECT_FALSE(convex3::directional_depth_expand(P, Q, rel, d, I, Vec3::Zero(), 0).has_value());
   }
+  // A hub vertex of degree 8000 (bipyramid apexes): climbs through it scan 8000 neighbours, so
+  // some queries exceed the budget and are answered by Compute-Depth-3D (same bits as
+  // directional_depth_dk); the others by the expansion.
+  std::vector<Vec3> bip;
+  for (int i = 0; i < 8000; ++i) {
+    const double a = 2 * M_PI * i / 8000;
+    bip.emplace_back(std::cos(a), std::sin(a), 0);
+  }
+  bip.emplace_back(0, 0, 1.5), bip.emplace_back(0, 0, -0.5);
+  auto H = ConvexPolytope::hull(bip, "bipyramid8000");
+  auto S = ConvexPolytope::hull(test3::random_sphere(rng, 24, 0.3));
+  int fallbacks = 0, direct = 0;
+  std::uniform_real_distribution<double> U(-0.5, 0.5);
+  for (int it = 0; it < 64 && (fallbacks < 2 || direct < 2); ++it) {
+    Pose3 hq(random_rotation(rng), Vec3(U(rng), U(rng), 0.3 * U(rng)));
+    Vec3 d = directions(rng, 6).back();
+    convex3::RelativePose hr;
+    hr.R = hq.matrix(), hr.tq = hq.translation;
+    std::size_t work = 0;
+    auto e = convex3::directional_depth_expand(H, S, hr, d, I, Vec3::Zero(), SIZE_MAX, &work);
+    ASSERT_TRUE(e.has_value());
+    Depth3 pub = directional_depth(H, Pose3(), S, hq, d);
+    if (work > convex3::directional_work_budget(H.size(), S.size())) {
+      ++fallbacks;
+      Depth3 k = convex3::directional_depth_dk(H, Pose3(), S, hq, d);
+      EXPECT_EQ(pub.depth, k.depth);
+      EXPECT_EQ(pub.candidates, k.candidates);
+      EXPECT_LE(ulps(pub.depth, e->depth), 8);
+    } else {
+      ++direct;
+      EXPECT_EQ(pub.depth, e->depth);
+    }
+    EXPECT_EQ(pub.overlapping, e->overlapping);
+  }
+  std::printf("bipyramid8000: %d queries over budget (DK), %d by the expansion\n", fallbacks, direct);
+  EXPECT_GE(fallbacks, 1);
+  EXPECT_GE(direct, 1);
   // Budgets grow as log n · log m.
   EXPECT_EQ(convex3::directional_work_budget(1, 1), convex3::kExpandWorkBase + convex3::kExpandWorkPerLog);
   EXPECT_EQ(convex3::directional_work_budget(1023, 1023), convex3::kExpandWorkBase + 100 * convex3::kExpandWorkPerLog);
