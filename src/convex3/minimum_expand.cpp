@@ -1130,13 +1130,13 @@ class Expander {
     const Vec3 move = r.depth * dir;
     // The exit point t·d of facet f, barycentric weights ∝ det(m_b, m_c, d), … (>= 0 exactly): a
     // point wp of P and wq of Q' on the contact (after the move). The rounded dets (error <=
-    // edet_ each) when their sum dwarfs that error, else in double-double with exact zeros
-    // (K's facets may be slivers).
+    // edet_ each) when their sum exceeds 2^40 edet_ (weights within 3·2^-40 ≈ 3e-12), else in
+    // double-double with exact zeros (K's facets may be slivers).
     const auto& v = F_[f].v;
     auto det_r = [&](int a, int b) { return std::max(0.0, dir_.dot(approx(a).cross(approx(b)))); };
     double lam[3] = {det_r(v[1], v[2]), det_r(v[2], v[0]), det_r(v[0], v[1])};
     double sum = lam[0] + lam[1] + lam[2];
-    if (!(sum > 0x1p42 * edet_)) {
+    if (!(sum > 0x1p40 * edet_)) {
       const V3<DD> dl{DD{dir_[0]}, DD{dir_[1]}, DD{dir_[2]}};
       const V3<DD> m[3] = {m_l(LiftDD{}, V_[v[0]]), m_l(LiftDD{}, V_[v[1]]), m_l(LiftDD{}, V_[v[2]])};
       for (int k = 0; k < 3; ++k) {
