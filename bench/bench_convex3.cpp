@@ -30,7 +30,8 @@
 //   with <q> = sigma (minimum_depth), sigma_d_dk (Compute-Depth-3D, convex3::directional_depth_dk),
 //   sigma_d_expand (the certified expansion's Phase D, convex3::directional_depth_expand); every
 //   query is checked before timing: both σ_d methods agree within 8 ulps and on overlap, σ ≤ σ_d.
-//   They locate pendepth::directional_depth's crossover (kDirectionalExpandMax).
+//   They chose pendepth::directional_depth's rule (no size crossover: a work budget, see
+//   convex3::directional_work_budget) and report the work against that budget.
 // libccd's support functions are written here as plain scans over the vertex arrays (as
 // Bullet's btConvexHullShape does); FCL's Convex walks its vertex adjacency for > 32 vertices.
 // Inputs (fixed seed per size, generated outside the timed loops): P and Q are the hulls

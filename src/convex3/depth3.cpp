@@ -98,15 +98,29 @@ Depth3 minimum_depth(const ConvexPolytope& P, const Pose3& pose_p, const ConvexP
 
 namespace convex3 {
 
-// σ_d by the directional phase of the certified expansion (minimum_expand.cpp).
+namespace {
+
+// The validated inputs of the expansion: relative pose, P's rotation, d in P's frame.
+struct DirectionalInput {
+  RelativePose rel;
+  Eigen::Matrix3d Rp;
+  Vec3 d;
+};
+DirectionalInput directional_input(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) {
+  if (!d.allFinite() || d == Vec3::Zero()) throw InvalidInput("direction: zero or non-finite");
+  DirectionalInput in{relative(pose_p, pose_q), pose_p.matrix(), Vec3::Zero()};
+  in.d = in.Rp.transpose() * d;
+  if (in.d == Vec3::Zero()) throw InvalidInput("direction: underflows to zero in P's frame");
+  return in;
+}
+
+}  // namespace
+
+// σ_d by the directional phase of the certified expansion (minimum_expand.cpp), no budget.
 Depth3 directional_depth_expand(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
                                 const Pose3& pose_q, const Vec3& d) {
-  if (!d.allFinite() || d == Vec3::Zero()) throw InvalidInput("direction: zero or non-finite");
-  RelativePose rel = relative(pose_p, pose_q);
-  const Eigen::Matrix3d Rp = pose_p.matrix();
-  const Vec3 dl = Rp.transpose() * d;  // direction in P's frame
-  if (dl == Vec3::Zero()) throw InvalidInput("direction: underflows to zero in P's frame");
-  return *directional_depth_expand(P, Q, rel, dl, Rp, pose_p.translation);
+  const DirectionalInput in = directional_input(pose_p, pose_q, d);
+  return *directional_depth_expand(P, Q, in.rel, in.d, in.Rp, pose_p.translation);
 }
 
 // Reference for tests: the exit facet as the minimum over ALL implicit facet normals of M
@@ -133,12 +147,9 @@ Depth3 directional_depth_facets(const ConvexPolytope& P, const Pose3& pose_p, co
 
 Depth3 directional_depth(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q, const Pose3& pose_q,
                          const Vec3& d) {
-  if (!d.allFinite() || d == Vec3::Zero()) throw InvalidInput("direction: zero or non-finite");
-  const RelativePose rel = relative(pose_p, pose_q);
-  const Eigen::Matrix3d Rp = pose_p.matrix();
-  const Vec3 dl = Rp.transpose() * d;  // direction in P's frame
-  if (dl == Vec3::Zero()) throw InvalidInput("direction: underflows to zero in P's frame");
-  if (auto r = convex3::directional_depth_expand(P, Q, rel, dl, Rp, pose_p.translation,
+  // The expansion within its work budget, Compute-Depth-3D beyond it (minimum_expand.hpp).
+  const convex3::DirectionalInput in = convex3::directional_input(pose_p, pose_q, d);
+  if (auto r = convex3::directional_depth_expand(P, Q, in.rel, in.d, in.Rp, pose_p.translation,
                                                  convex3::directional_work_budget(P.size(), Q.size())))
     return *r;
   return convex3::directional_depth_dk(P, pose_p, Q, pose_q, d);
