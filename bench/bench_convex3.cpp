@@ -15,9 +15,23 @@
 //                         the magnitude is compared
 //   sigma/bullet          Bullet 3.24 float64 btGjkEpaSolver2::Penetration, btConvexHullShape
 //                         with margin 0
-//   sigma_d/pendepth      directional_depth (Compute-Depth-3D on the DK hierarchies)
+//   sigma_d/pendepth      directional_depth (the public query: expansion or DK by size)
+//   sigma_d/dk, /expand   its two exact methods: Compute-Depth-3D on the DK hierarchies
+//                         (convex3::directional_depth_dk), the certified expansion
+//                         (convex3::directional_depth_expand)
 //   sigma_d/facet_scan    ray exit over every facet plane of M, prebuilt for Q's rotation:
 //                         the O(|facets of M|) = O(n + m) linear reference
+// σ against σ_d's two exact methods on the same placements and directions (pendepth only):
+//   small/<q>/<n>         P and Q hulls of n ellipsoid points each (|P| + |Q| ≈ 2n), random
+//                         rotations and translations kept when overlapping, random directions
+//   small16/<q>/<n>       the same with |Q| = 16 points (a large P against a small Q)
+//   hulls/<q>/all         the 60 shared real hulls (../shared/data/hulls, 4–~60 vertices), pairs
+//                         (i, i + 7), Q rotated and placed around P's centroid, overlapping
+//   with <q> = sigma (minimum_depth), sigma_d_dk (Compute-Depth-3D, convex3::directional_depth_dk),
+//   sigma_d_expand (the certified expansion's Phase D, convex3::directional_depth_expand); every
+//   query is checked before timing: both σ_d methods agree within 8 ulps and on overlap, σ ≤ σ_d.
+//   They chose pendepth::directional_depth's rule (no size crossover: a work budget, see
+//   convex3::directional_work_budget) and report the work against that budget.
 // libccd's support functions are written here as plain scans over the vertex arrays (as
 // Bullet's btConvexHullShape does); FCL's Convex walks its vertex adjacency for > 32 vertices.
 // Inputs (fixed seed per size, generated outside the timed loops): P and Q are the hulls
@@ -31,8 +45,10 @@
 // docs/benchmarks.md from this program's JSON output.
 #include <benchmark/benchmark.h>
 #include <pendepth/depth3.hpp>
+#include <pendepth/io.hpp>
 #include <pendepth/polytope.hpp>
 
+#include "convex3/minimum_expand.hpp"
 #include "convex3/minkowski_facets.hpp"
 
 #include <algorithm>
@@ -40,6 +56,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <functional>
 #include <limits>
 #include <map>
@@ -450,7 +467,9 @@ const DirCase& dir_case(std::size_t n) {
   return *p;
 }
 
-void bm_dir(benchmark::State& state, bool scan, std::size_t n) {
+enum class DirImpl { Public, Scan, DK, Expand };
+
+void bm_dir(benchmark::State& state, DirImpl impl, std::size_t n) {
   const DirCase& c = dir_case(n);
   if (!c.error.empty()) {
     state.SkipWithError(c.error.c_str());
@@ -458,11 +477,30 @@ void bm_dir(benchmark::State& state, bool scan, std::size_t n) {
   }
   std::size_t i = 0;
   for (auto _ : state) {
-    if (scan)
-      benchmark::DoNotOptimize(c.scan(i));
-    else
-      benchmark::DoNotOptimize(pendepth::directional_depth(c.P, Pose3(), c.Q, Pose3(c.rot, c.t[i]), c.d[i]).depth);
+    const Pose3 pq(c.rot, c.t[i]);
+    switch (impl) {
+      case DirImpl::Public:
+        benchmark::DoNotOptimize(pendepth::directional_depth(c.P, Pose3(), c.Q, pq, c.d[i]).depth);
+        break;
+      case DirImpl::Scan: benchmark::DoNotOptimize(c.scan(i)); break;
+      case DirImpl::DK: benchmark::DoNotOptimize(pc3::directional_depth_dk(c.P, Pose3(), c.Q, pq, c.d[i]).depth); break;
+      case DirImpl::Expand:
+        benchmark::DoNotOptimize(pc3::directional_depth_expand(c.P, Pose3(), c.Q, pq, c.d[i]).depth);
+        break;
+    }
     i = i + 1 == c.t.size() ? 0 : i + 1;
+  }
+  if (impl == DirImpl::Expand || impl == DirImpl::DK) {  // agreement with the public query
+    double worst = 0;
+    for (std::size_t k = 0; k < c.t.size(); ++k) {
+      const Pose3 pq(c.rot, c.t[k]);
+      const double a = pendepth::directional_depth(c.P, Pose3(), c.Q, pq, c.d[k]).depth;
+      const double b = impl == DirImpl::DK ? pc3::directional_depth_dk(c.P, Pose3(), c.Q, pq, c.d[k]).depth
+                                           : pc3::directional_depth_expand(c.P, Pose3(), c.Q, pq, c.d[k]).depth;
+      worst = std::max(worst, std::abs(a - b) / (a * 0x1p-52));
+    }
+    state.counters["max_ulps_vs_public"] = worst;
+    if (worst > 8) state.SkipWithError("σ_d methods disagree");
   }
   state.counters["P_vertices"] = double(c.P.size());
   state.counters["Q_vertices"] = double(c.Q.size());
@@ -472,6 +510,250 @@ void bm_dir(benchmark::State& state, bool scan, std::size_t n) {
   state.counters["verified"] = double(c.verified);
   state.counters["max_ulps_exact"] = c.max_ulps_exact;
   state.counters["max_diff_scan"] = c.max_diff_scan;
+}
+
+// ---- σ, σ_d (DK) and σ_d (expansion) on the same queries ----
+
+struct CrossQuery {
+  int pair = 0;  // index into CrossCase::P / Q
+  Pose3 pose;    // of Q (P at the identity)
+  Vec3 d;
+};
+
+struct CrossCase {
+  std::vector<ConvexPolytope> P, Q;
+  std::vector<CrossQuery> queries;
+  double max_ulps = 0;  // between the two σ_d methods
+  double supports_sigma = 0, supports_expand = 0;  // per query
+  double work_mean = 0, work_max = 0, budget_share_max = 0;  // the expansion's work (σ_d)
+  std::string error;
+};
+
+// Keeps q if the shapes overlap there; checks the two σ_d methods against each other and σ ≤ σ_d.
+void add_cross_query(CrossCase& c, const CrossQuery& q) {
+  const ConvexPolytope &P = c.P[q.pair], &Q = c.Q[q.pair];
+  Depth3 s = pendepth::minimum_depth(P, Pose3(), Q, q.pose);
+  if (!s.overlapping) return;
+  Depth3 a = pc3::directional_depth_expand(P, Pose3(), Q, q.pose, q.d);
+  std::size_t work = 0;
+  pc3::RelativePose rel;
+  rel.R = q.pose.matrix(), rel.tq = q.pose.translation;
+  (void)pc3::directional_depth_expand(P, Q, rel, q.d, Mat3::Identity(), Vec3::Zero(), SIZE_MAX, &work);
+  const double share = double(work) / double(pc3::directional_work_budget(P.size(), Q.size()));
+  c.work_mean += double(work), c.work_max = std::max(c.work_max, double(work));
+  c.budget_share_max = std::max(c.budget_share_max, share);
+  Depth3 b = pc3::directional_depth_dk(P, Pose3(), Q, q.pose, q.d);
+  const double ulps = std::abs(a.depth - b.depth) / (std::max(a.depth, b.depth) * 0x1p-52);
+  c.max_ulps = std::max(c.max_ulps, ulps);
+  if (!a.overlapping || !b.overlapping || ulps > 8) c.error = "σ_d: expansion and DK disagree";
+  if (s.depth > a.depth * (1 + 0x1p-50)) c.error = "σ > σ_d";
+  c.supports_sigma += double(s.candidates);
+  c.supports_expand += double(a.candidates);
+  c.queries.push_back(q);
+}
+
+void finish_cross_case(CrossCase& c, std::size_t want) {
+  if (c.queries.size() < want) c.error = "too few overlapping placements";
+  c.supports_sigma /= double(std::max<std::size_t>(c.queries.size(), 1));
+  c.supports_expand /= double(std::max<std::size_t>(c.queries.size(), 1));
+  c.work_mean /= double(std::max<std::size_t>(c.queries.size(), 1));
+}
+
+// n ellipsoid points for P, m for Q (m = 0: m = n).
+const CrossCase& small_case(std::size_t n, std::size_t m) {
+  static std::map<std::pair<std::size_t, std::size_t>, std::unique_ptr<CrossCase>> cache;
+  auto& p = cache[{n, m}];
+  if (p) return *p;
+  p = std::make_unique<CrossCase>();
+  CrossCase& c = *p;
+  std::mt19937_64 rng(0x5a11c3 + 7919 * n + m);
+  constexpr int kShapes = 8;
+  for (int k = 0; k < kShapes; ++k) {
+    c.P.push_back(ConvexPolytope::hull(ellipsoid_points(n, rng), "P"));
+    c.Q.push_back(ConvexPolytope::hull(ellipsoid_points(m ? m : n, rng), "Q"));
+  }
+  std::size_t attempts = 0;
+  while (c.queries.size() < kDirQueries && attempts++ < 100 * kDirQueries) {
+    CrossQuery q;
+    q.pair = int(attempts % kShapes);
+    q.pose = Pose3(random_rotation(rng), random_in_ball(rng, 1.0));
+    q.d = random_in_ball(rng, 1.0);
+    if (q.d.norm() < 1e-3) continue;
+    add_cross_query(c, q);
+  }
+  finish_cross_case(c, kDirQueries);
+  return c;
+}
+
+const CrossCase& hulls_case() {
+  static std::unique_ptr<CrossCase> p;
+  if (p) return *p;
+  p = std::make_unique<CrossCase>();
+  CrossCase& c = *p;
+  std::vector<std::string> files;
+  for (const auto& e : std::filesystem::directory_iterator(std::string(PENDEPTH_SHARED_DATA) + "/hulls"))
+    if (e.path().extension() == ".obj") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  std::vector<ConvexPolytope> H;
+  for (const auto& f : files) H.push_back(ConvexPolytope::hull(pendepth::read_obj_vertices(f), f));
+  if (H.size() < 8) {
+    c.error = "shared hulls not found";
+    return c;
+  }
+  std::mt19937_64 rng(0x6a11);
+  std::uniform_real_distribution<double> U(-0.3, 0.3);
+  auto centroid = [](const ConvexPolytope& S) {
+    Vec3 x = Vec3::Zero();
+    for (const Vec3& v : S.vertices()) x += v / double(S.size());
+    return x;
+  };
+  for (std::size_t i = 0; i < H.size(); ++i) c.P.push_back(H[i]), c.Q.push_back(H[(i + 7) % H.size()]);
+  const std::size_t want = 16 * H.size();
+  std::size_t attempts = 0;
+  while (c.queries.size() < want && attempts++ < 100 * want) {
+    CrossQuery q;
+    q.pair = int(attempts % H.size());
+    const ConvexPolytope &P = c.P[q.pair], &Q = c.Q[q.pair];
+    double r = 0;
+    const Vec3 cp = centroid(P);
+    for (const Vec3& v : P.vertices()) r = std::max(r, (v - cp).norm());
+    auto rot = random_rotation(rng);
+    q.pose = Pose3(rot, cp - rot.toRotationMatrix() * centroid(Q) + r * Vec3(U(rng), U(rng), U(rng)));
+    q.d = random_in_ball(rng, 1.0);
+    if (q.d.norm() < 1e-3) continue;
+    add_cross_query(c, q);
+  }
+  finish_cross_case(c, want);
+  return c;
+}
+
+// Hard inputs for the expansion (same queries for the three methods): massive coplanarity and
+// hub vertices of high degree (long climbs), slivers, a fine sphere; Q a small integer sphere or
+// a random hull.
+std::vector<Vec3> integer_sphere_points(int N) {
+  std::vector<Vec3> p;
+  const int R = static_cast<int>(std::sqrt(double(N))) + 1;
+  for (int x = -R; x <= R; ++x)
+    for (int y = -R; y <= R; ++y)
+      for (int z = -R; z <= R; ++z)
+        if (x * x + y * y + z * z == N) p.emplace_back(x, y, z);
+  return p;
+}
+std::vector<Vec3> circle_solid(int k, double z0, double z1, bool apexes) {  // prism or bipyramid
+  std::vector<Vec3> p;
+  for (int i = 0; i < k; ++i) {
+    const double t = 2 * M_PI * i / k;
+    if (apexes) {
+      p.emplace_back(std::cos(t), std::sin(t), 0);
+    } else {
+      p.emplace_back(std::cos(t), std::sin(t), z0);
+      p.emplace_back(std::cos(t), std::sin(t), z1);
+    }
+  }
+  if (apexes) p.emplace_back(0, 0, z1), p.emplace_back(0, 0, z0);
+  return p;
+}
+const char* const kHardNames[] = {"intsphere1105", "bipyramid2000", "prism2000", "sliver1000", "sphere20000"};
+
+const CrossCase& hard_case(std::size_t which) {
+  static std::map<std::size_t, std::unique_ptr<CrossCase>> cache;
+  auto& p = cache[which];
+  if (p) return *p;
+  p = std::make_unique<CrossCase>();
+  CrossCase& c = *p;
+  std::mt19937_64 rng(0x4a2d + which);
+  std::vector<Vec3> pts;
+  double scale = 1;
+  switch (which) {
+    case 0: pts = integer_sphere_points(1105), scale = 33; break;
+    case 1: pts = circle_solid(2000, -0.5, 1.5, true); break;
+    case 2: pts = circle_solid(2000, -0.3, 0.3, false); break;
+    case 3: {
+      pts = ellipsoid_points(1000, rng);
+      for (auto& x : pts) x.z() *= 1e-6;
+      break;
+    }
+    default: pts = ellipsoid_points(20000, rng); break;
+  }
+  c.P.push_back(ConvexPolytope::hull(pts, kHardNames[which]));
+  auto q = which == 0 ? integer_sphere_points(11) : ellipsoid_points(24, rng);
+  for (auto& x : q) x *= which == 0 ? 3.0 : 0.4;
+  c.Q.push_back(ConvexPolytope::hull(q, "Q"));
+  std::size_t attempts = 0;
+  std::uniform_int_distribution<int> I(-30, 30);
+  while (c.queries.size() < kQueries && attempts++ < 1000 * kQueries) {
+    CrossQuery cq;
+    cq.pose = which == 0 ? Pose3(Vec3(I(rng), I(rng), I(rng)))  // integer: exact coincidences
+                         : Pose3(random_rotation(rng), scale * random_in_ball(rng, 1.0));
+    cq.d = random_in_ball(rng, 1.0);
+    if (cq.d.norm() < 1e-3) continue;
+    if (which == 0 && attempts % 2) cq.d = Vec3(I(rng) % 2, I(rng) % 2, 1);  // axis-like directions
+    add_cross_query(c, cq);
+  }
+  finish_cross_case(c, kQueries);
+  return c;
+}
+
+enum class CrossQ { Sigma, SigmaDK, SigmaExpand };
+
+void bm_cross(benchmark::State& state, CrossQ which, const CrossCase* (*get)(std::size_t, std::size_t),
+              std::size_t n, std::size_t m) {
+  const CrossCase& c = *get(n, m);
+  if (!c.error.empty()) {
+    state.SkipWithError(c.error.c_str());
+    return;
+  }
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const CrossQuery& q = c.queries[i];
+    const ConvexPolytope &P = c.P[q.pair], &Q = c.Q[q.pair];
+    double v = 0;
+    switch (which) {
+      case CrossQ::Sigma: v = pendepth::minimum_depth(P, Pose3(), Q, q.pose).depth; break;
+      case CrossQ::SigmaDK: v = pc3::directional_depth_dk(P, Pose3(), Q, q.pose, q.d).depth; break;
+      case CrossQ::SigmaExpand: v = pc3::directional_depth_expand(P, Pose3(), Q, q.pose, q.d).depth; break;
+    }
+    benchmark::DoNotOptimize(v);
+    i = i + 1 == c.queries.size() ? 0 : i + 1;
+  }
+  double vp = 0, vq = 0;
+  for (std::size_t k = 0; k < c.P.size(); ++k) vp += double(c.P[k].size()), vq += double(c.Q[k].size());
+  state.counters["P_vertices"] = vp / double(c.P.size());
+  state.counters["Q_vertices"] = vq / double(c.Q.size());
+  state.counters["queries"] = double(c.queries.size());
+  state.counters["max_ulps_dk_vs_expand"] = c.max_ulps;
+  state.counters["supports_sigma"] = c.supports_sigma;
+  state.counters["supports_expand"] = c.supports_expand;
+  state.counters["work_mean"] = c.work_mean;
+  state.counters["work_max"] = c.work_max;
+  state.counters["budget_share_max"] = c.budget_share_max;
+}
+
+const CrossCase* small_getter(std::size_t n, std::size_t m) { return &small_case(n, m); }
+const CrossCase* hulls_getter(std::size_t, std::size_t) { return &hulls_case(); }
+const CrossCase* hard_getter(std::size_t which, std::size_t) { return &hard_case(which); }
+
+void register_cross() {
+  const std::pair<CrossQ, const char*> qs[] = {
+      {CrossQ::Sigma, "sigma"}, {CrossQ::SigmaDK, "sigma_d_dk"}, {CrossQ::SigmaExpand, "sigma_d_expand"}};
+  for (const auto& [w, name] : qs)
+    benchmark::RegisterBenchmark((std::string("hulls/") + name + "/all").c_str(), bm_cross, w, hulls_getter, 0, 0)
+        ->Unit(benchmark::kMicrosecond);
+  for (std::size_t n : {4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048})
+    for (const auto& [w, name] : qs)
+      benchmark::RegisterBenchmark((std::string("small/") + name + "/" + std::to_string(n)).c_str(), bm_cross, w,
+                                   small_getter, n, 0)
+          ->Unit(benchmark::kMicrosecond);
+  for (std::size_t k = 0; k < std::size(kHardNames); ++k)
+    for (const auto& [w, name] : qs)
+      benchmark::RegisterBenchmark((std::string("hard/") + name + "/" + kHardNames[k]).c_str(), bm_cross, w,
+                                   hard_getter, k, 0)
+          ->Unit(benchmark::kMicrosecond);
+  for (std::size_t n : {64, 128, 256, 512, 1024, 4096})
+    for (const auto& [w, name] : qs)
+      benchmark::RegisterBenchmark((std::string("small16/") + name + "/" + std::to_string(n)).c_str(), bm_cross, w,
+                                   small_getter, n, 16)
+          ->Unit(benchmark::kMicrosecond);
 }
 
 }  // namespace
@@ -604,12 +886,14 @@ int main(int argc, char** argv) {
     for (const auto& [name, make] : impls)
       benchmark::RegisterBenchmark(("sigma/" + name + "/" + std::to_string(n)).c_str(), bm_sigma, make, n)
           ->Unit(benchmark::kMicrosecond);
+  const std::pair<DirImpl, const char*> dir_impls[] = {
+      {DirImpl::Public, "pendepth"}, {DirImpl::Scan, "facet_scan"}, {DirImpl::DK, "dk"}, {DirImpl::Expand, "expand"}};
   for (std::size_t n : {64, 512, 4096, 32768, 262144, 1000000})
-    for (bool scan : {false, true})
-      benchmark::RegisterBenchmark(
-          (std::string("sigma_d/") + (scan ? "facet_scan/" : "pendepth/") + std::to_string(n)).c_str(), bm_dir,
-          scan, n)
+    for (const auto& [impl, name] : dir_impls)
+      benchmark::RegisterBenchmark((std::string("sigma_d/") + name + "/" + std::to_string(n)).c_str(), bm_dir, impl,
+                                   n)
           ->Unit(benchmark::kMicrosecond);
+  register_cross();
   lines::register_benchmarks();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

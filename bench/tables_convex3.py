@@ -30,7 +30,9 @@ with open(csv_path, "w", newline="") as f:
     w = csv.writer(f)
     keys = ["queries", "failures", "exceptions", "no_contact", "err_max", "err_median", "verified",
             "ref_max_ulps", "hull_ms", "depth_mean", "P_vertices", "Q_vertices", "M_facets",
-            "facets_ms", "max_ulps_exact", "max_diff_scan"]
+            "facets_ms", "max_ulps_exact", "max_diff_scan", "max_ulps_vs_public",
+            "max_ulps_dk_vs_expand", "supports_sigma", "supports_expand", "work_mean", "work_max",
+            "budget_share_max"]
     w.writerow(["name", "query", "implementation", "size", "cpu_ns", "real_ns", "iterations",
                 "error"] + keys)
     for name, b in runs.items():
@@ -75,19 +77,49 @@ for n in sizes("sigma/"):
              f"| {g2(c('ref_max_ulps')) if v else 'certified (lower = upper)'} "
              f"| {g2(c('depth_mean'))} |")
 L.append("")
-L.append("| n = \\|P\\| (m = 64) | facets of M | σ_d pendepth | σ_d facet scan | scan / pendepth "
+L.append("| n = \\|P\\| (m = 64) | facets of M | σ_d pendepth | σ_d DK | σ_d expansion | σ_d facet scan "
+         "| scan / pendepth "
          "| hull of P build | facet list build (O(n·m)) | exact check: queries, max ulp | max \\|scan − pendepth\\| |")
-L.append("|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+L.append("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
 for n in sizes("sigma_d/"):
     p, s = f"sigma_d/pendepth/{n}", f"sigma_d/facet_scan/{n}"
     c = lambda key: counter(p, key)
     v = c("verified")
     ex = "—" if v is None else (f"{int(v)}, {g2(c('max_ulps_exact'))}" if v else "none (too costly)")
     fac = c("M_facets")
-    L.append(f"| {n:,} | {'—' if fac is None else f'{int(fac):,}'} | {fmt_t(ns(p))} | {fmt_t(ns(s))} "
+    L.append(f"| {n:,} | {'—' if fac is None else f'{int(fac):,}'} | {fmt_t(ns(p))} "
+             f"| {fmt_t(ns(f'sigma_d/dk/{n}'))} | {fmt_t(ns(f'sigma_d/expand/{n}'))} | {fmt_t(ns(s))} "
              f"| {fmt_r(ns(s), ns(p))} "
              f"| {fmt_t(None if c('hull_ms') is None else c('hull_ms') * 1e6)} "
              f"| {fmt_t(None if c('facets_ms') is None else c('facets_ms') * 1e6)} | {ex} "
              f"| {g2(c('max_diff_scan'))} |")
+
+# σ, σ_d (DK) and σ_d (expansion) on the same queries: real hulls, generated sizes, hard inputs.
+groups = [("hulls", "shared hulls"), ("small", "n = m"), ("small16", "m = 16"), ("hard", "hard")]
+rows = []
+for g, label in groups:
+    keys = sorted({n.rsplit("/", 1)[1] for n in runs if n.startswith(f"{g}/sigma/")},
+                  key=lambda k: (not k.isdigit(), int(k) if k.isdigit() else 0, k))
+    for k in keys:
+        rows.append((g, label, k))
+if rows:
+    L.append("")
+    L.append("| input | \\|P\\| | \\|Q\\| | σ | σ_d DK | σ_d expansion | expansion / σ | DK / expansion "
+             "| supports σ / σ_d | σ_d work mean / max (max share of budget) | max ulp DK vs expansion |")
+    L.append("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|")
+    for g, label, k in rows:
+        a, b, e = f"{g}/sigma/{k}", f"{g}/sigma_d_dk/{k}", f"{g}/sigma_d_expand/{k}"
+        c = lambda key: counter(e, key)
+        name = f"{label} {k}" if g != "hulls" else "shared hulls (60 pairs)"
+        pv, qv = c("P_vertices"), c("Q_vertices")
+        wm, wx, share = c("work_mean"), c("work_max"), c("budget_share_max")
+        work = "—" if wm is None else f"{wm:.0f} / {wx:.0f} ({share:.2f})"
+        sup = "—" if c("supports_sigma") is None else f"{c('supports_sigma'):.1f} / {c('supports_expand'):.1f}"
+        L.append(f"| {name} | {'—' if pv is None else f'{pv:.0f}'} | {'—' if qv is None else f'{qv:.0f}'} "
+                 f"| {fmt_t(ns(a))} | {fmt_t(ns(b))} | {fmt_t(ns(e))} | {fmt_r(ns(e), ns(a))} "
+                 f"| {fmt_r(ns(b), ns(e))} | {sup} | {work} | {g2(c('max_ulps_dk_vs_expand'))} |")
+    L.append("")
+    L.append("Median CPU time per query, the same placements and directions for the three columns. "
+             "\\|P\\|, \\|Q\\|: mean hull vertices. expansion / σ < 1: σ_d faster than σ.")
 
 finish(md_path, L, res.errors(), f"{res.run_line()}, library build {res.library_build()}.")

@@ -71,9 +71,15 @@ Depth3 minimum_depth(const ConvexPolytope& P, const Pose3& pose_p, const ConvexP
                      const Pose3& pose_q);
 
 /// σ_d for direction d (world frame): the exit facet u of the ray (u·d > 0), σ_d =
-/// h_M(u)/(u·d̂), by Compute-Depth-3D (DHS §5.2) on the inner DK hierarchies of P and Q:
-/// O(log n · log m) constant-size steps (worst case O(log³) when walk restarts meet vertices of
-/// degree > 48), every decision exact (src/convex3/directional3.cpp). Throws InvalidInput if d is zero or non-finite (and for bad poses).
+/// h_M(u)/(u·d̂), exact (lower_bound == upper_bound == depth, within an ulp or so). Method: the
+/// certified expansion of minimum_depth cast along the ray (src/convex3/minimum_expand.cpp,
+/// Phase D: ~10–20 support queries, a few µs, typically no slower than σ), stopped when its work
+/// (climb steps, facets) exceeds 4096 + 256·⌈log₂(n+1)⌉·⌈log₂(m+1)⌉ — it needs a small fraction
+/// of that on every input measured (docs/benchmarks.md); then Compute-Depth-3D (DHS §5.2) on the
+/// inner DK hierarchies (src/convex3/directional3.cpp), so a query costs O(log n · log m)
+/// constant-size steps at worst (O(log³) when walk restarts meet vertices of degree > 48).
+/// `candidates` counts support queries (expansion) or facet candidates (DK). Throws
+/// InvalidInput if d is zero or non-finite (and for bad poses).
 Depth3 directional_depth(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
                          const Pose3& pose_q, const Vec3& d);
 

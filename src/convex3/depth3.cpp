@@ -1,7 +1,8 @@
 // 3D depth queries on two convex polytopes with poses: the public entry points.
 //   σ   : minimum_expand.cpp — exact certified expansion on the implicit M = P ⊕ (−Q').
-//   σ_d : directional3.cpp — Compute-Depth-3D (DHS §5.2) on the inner DK hierarchies,
-//         O(log n · log m) constant-size steps, exact.
+//   σ_d : minimum_expand.cpp's Phase D — the same certified expansion cast along the ray, within
+//         a work budget O(log n · log m); beyond it directional3.cpp — Compute-Depth-3D
+//         (DHS §5.2) on the inner DK hierarchies, O(log n · log m) constant-size steps. Both exact.
 // The O(n·m) enumeration of M's implicit facet normals (minkowski_facets.cpp) is kept here as
 // convex3::directional_depth_facets and friends: the exact reference for tests and benchmarks.
 #include <pendepth/depth3.hpp>
@@ -97,9 +98,30 @@ Depth3 minimum_depth(const ConvexPolytope& P, const Pose3& pose_p, const ConvexP
 
 namespace convex3 {
 
-// σ_d by Algorithm Compute-Depth-3D on the DK hierarchies (directional3.cpp).
-Depth3 directional_depth_dk(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
-                            const Pose3& pose_q, const Vec3& d);
+namespace {
+
+// The validated inputs of the expansion: relative pose, P's rotation, d in P's frame.
+struct DirectionalInput {
+  RelativePose rel;
+  Eigen::Matrix3d Rp;
+  Vec3 d;
+};
+DirectionalInput directional_input(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) {
+  if (!d.allFinite() || d == Vec3::Zero()) throw InvalidInput("direction: zero or non-finite");
+  DirectionalInput in{relative(pose_p, pose_q), pose_p.matrix(), Vec3::Zero()};
+  in.d = in.Rp.transpose() * d;
+  if (in.d == Vec3::Zero()) throw InvalidInput("direction: underflows to zero in P's frame");
+  return in;
+}
+
+}  // namespace
+
+// σ_d by the directional phase of the certified expansion (minimum_expand.cpp), no budget.
+Depth3 directional_depth_expand(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
+                                const Pose3& pose_q, const Vec3& d) {
+  const DirectionalInput in = directional_input(pose_p, pose_q, d);
+  return *directional_depth_expand(P, Q, in.rel, in.d, in.Rp, pose_p.translation);
+}
 
 // Reference for tests: the exit facet as the minimum over ALL implicit facet normals of M
 // (minkowski_facets.cpp), O(n·m) exact predicates.
@@ -125,6 +147,11 @@ Depth3 directional_depth_facets(const ConvexPolytope& P, const Pose3& pose_p, co
 
 Depth3 directional_depth(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q, const Pose3& pose_q,
                          const Vec3& d) {
+  // The expansion within its work budget, Compute-Depth-3D beyond it (minimum_expand.hpp).
+  const convex3::DirectionalInput in = convex3::directional_input(pose_p, pose_q, d);
+  if (auto r = convex3::directional_depth_expand(P, Q, in.rel, in.d, in.Rp, pose_p.translation,
+                                                 convex3::directional_work_budget(P.size(), Q.size())))
+    return *r;
   return convex3::directional_depth_dk(P, pose_p, Q, pose_q, d);
 }
 

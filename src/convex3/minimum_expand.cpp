@@ -1,9 +1,10 @@
-// Exact minimum depth σ = dist(0, ∂M), M = P ⊕ (−Q'), by certified expansion of an inner
-// polytope of M: the Expanding Polytope Algorithm (van den Bergen 2001; Ericson, Real-Time
-// Collision Detection §9.5) made exact. DEPARTURE from DHS §5: the paper computes σ from the
-// explicit M (O(n²)); this is output-sensitive instead — the work is proportional to the number
-// of support queries, each an exact warm-started hill climb. The O(n·m) enumeration of every
-// implicit facet normal (minkowski_facets.cpp) stays as the test reference.
+// Exact minimum depth σ = dist(0, ∂M) and directional depth σ_d (Phase D), M = P ⊕ (−Q'), by
+// certified expansion of an inner polytope of M: the Expanding Polytope Algorithm (van den Bergen
+// 2001; Ericson, Real-Time Collision Detection §9.5) made exact. DEPARTURE from DHS §5: the paper
+// computes σ from the explicit M (O(n²)); this is output-sensitive instead — the work is
+// proportional to the number of support queries, each an exact warm-started hill climb. The
+// O(n·m) enumeration of every implicit facet normal (minkowski_facets.cpp) stays as the test
+// reference.
 //
 // Notation: P fixed (its own frame), Q' = R Q + t with t = tq − tp (exact semantics for the
 // doubles R, tq, tp, as in minkowski_facets.hpp). A point of M is kept symbolically as a pair
@@ -31,6 +32,23 @@
 //    Otherwise s is strictly beyond F: expand. Every step adds a new pair, so the loop ends.
 //  * Values: d_F = h_F/|n_F| from h_F and |n_F|² in double-double with a rigorous error bound
 //    (exact rationals when that bound is not within half an ulp): within ~2 ulps.
+//  * Phase D (σ_d along d, instead of Phase B; a ray cast by expanding polytope): 0 ∈ int K, so
+//    the cones from 0 over K's facets partition space. Take the facet F of K through which the
+//    ray s·d (s > 0) leaves K — its closed cone contains d: the exact signs of det(m_a, m_b, d),
+//    det(m_b, m_c, d), det(m_c, m_a, d) are >= 0 — and the support s along n_F. If s lies exactly
+//    on F's plane, that plane supports M (K ⊆ M below it) and the ray's exit point from K, on F,
+//    is its exit from M: σ_d = h_F·|d| / (n_F·d). Otherwise s is strictly beyond F: expand. After
+//    an expansion the exit point lies on a facet of the new cone (beyond the old exit point it
+//    is on no old facet; at the old exit point it is on the horizon), so only those are tested.
+//    Ties (the ray through an edge or vertex of K) may pick any facet containing the exit point.
+//    σ_d = (h_F / (n_F·d))·|d| in double-double from values within 2^-60 (rationals when the
+//    bound fails), rounded once: within ~half an ulp. Not overlapping (Phase A): depth 0.
+//    DEPARTURE from DHS §5.2 (Compute-Depth-3D on the DK hierarchies, O(log n · log m)): output-
+//    sensitive like σ and an order of magnitude faster on every input measured, but with no
+//    useful worst-case bound (hub vertices make climbs long; k is at most n·m). So Phases A and
+//    D count their work (neighbours scanned by the climbs, facets scanned or built) and give up
+//    past a budget: depth3.cpp then runs Compute-Depth-3D, which keeps the O(log n · log m)
+//    bound (budget: minimum_expand.hpp, measured work: docs/benchmarks.md).
 // Predicates: a semi-static filter (uniform per-query bounds on every rounded quantity, from
 // the coordinate extents), then exact::exact_sign (running-error double of the full polynomial,
 // then GMP). Rounded points are taken relative to reference vertices of P and Q, so offsets of
@@ -39,10 +57,13 @@
 // a Q index) are recognised symbolically, so the exact zeros met at every termination never
 // reach the exact fallback.
 //
-// Result: depth = d_F, lower_bound = upper_bound = depth, candidates = number of support queries,
+// Result (σ): depth = d_F, lower_bound = upper_bound = depth, candidates = number of support queries,
 // features = the defining features of M's facet (a face of P and a vertex of Q, a vertex of P
 // and a face of Q, or two edges; P's face preferred, as in minkowski_facets), witnesses = the
 // point of K's facet nearest to 0 written as a convex combination of pairs (P part, Q' part).
+// Result (σ_d): kind Directional, depth = lower = upper bound, translation = σ_d·d̂, normal = d̂,
+// facet_normal = n_F/|n_F|, the same features, witnesses = the exit point t·d as a convex
+// combination of F's pairs (weights from the accurate dets above), candidates = support queries.
 // Complexity: O(k (f + c)) for k support queries, f the facets of K (a branch-free scan for
 // the nearest one; f = O(k)), c the climb length (O(1) from warm starts or the cube-map seeds
 // of vertex_adjacency.cpp). k is at most n·m in theory; measured counts: docs/benchmarks.md
@@ -57,6 +78,7 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -222,9 +244,14 @@ struct Workspace {
 // compiled into their callers as when they were written there; init_tetrahedron and phase_b stay
 // out of line ([[gnu::noinline]]) and the double-double operations inline, as GCC chose for the
 // former single functions, which the split would otherwise change (measured: docs/benchmarks.md).
+// σ_d (Phase D) instantiates the class a second time, with work counting (kBudget); the
+// constructor, phase_a and facet_dir are forced inline so that σ's instantiation keeps GCC's
+// former choices (σ within 0.5 % of its instruction count before Phase D existed).
+// kBudget: count the work and give up past budget_ (σ_d); σ compiles without either.
+template <bool kBudget>
 class Expander {
  public:
-  Expander(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel, Workspace& ws)
+  [[gnu::always_inline]] Expander(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel, Workspace& ws)
       : P_(convex3::data_of(Pp)), Q_(convex3::data_of(Qp)), AP_(vertex_adjacency(P_)), AQ_(vertex_adjacency(Q_)), R_(rel.R),
         V_(ws.V), F_(ws.F), mark_(ws.mark), vis_(ws.vis), by_start_(ws.by_start), by_end_(ws.by_end),
         hor_(ws.hor), alive_(ws.alive), pos_(ws.pos), keys_(ws.keys) {
@@ -237,14 +264,38 @@ class Expander {
   // σ: the minimum depth in the world frame of P's pose (Rp, tp); a Depth3 with only
   // `candidates` set when the shapes do not overlap (touching included).
   Depth3 run(const Eigen::Matrix3d& Rp, const Vec3& tp) {
-    init_tetrahedron();
-    if (!phase_a()) {
+    [[maybe_unused]] const bool built = init_tetrahedron();  // σ has no budget
+    assert(built);
+    if (phase_a() != Overlap::Yes) {
       Depth3 none;
       none.candidates = iters_;
       return none;
     }
     return result(phase_b(), Rp, tp);
   }
+
+  // σ_d along d (P's frame; nonzero, finite, largest |coordinate| in [1/2, 1) so that no product
+  // over- or underflows): the exit of the ray s·d (s > 0) from M, in the world frame of P's pose.
+  // A Depth3 with only `kind` and `candidates` set when the shapes do not overlap; nullopt when
+  // the work exceeded `budget` (see work_).
+  std::optional<Depth3> run_directional(const Vec3& d, const Eigen::Matrix3d& Rp, const Vec3& tp,
+                                        std::size_t budget) {
+    budget_ = budget;
+    if (!init_tetrahedron()) return std::nullopt;
+    const Overlap o = phase_a();
+    if (o == Overlap::Exhausted) return std::nullopt;
+    if (o == Overlap::No) {
+      Depth3 none;
+      none.kind = DepthKind::Directional;
+      none.candidates = iters_;
+      return none;
+    }
+    init_direction(d);
+    const int f = phase_d();
+    if (f < 0) return std::nullopt;
+    return directional_result(f, Rp, tp);
+  }
+  std::size_t work() const { return work_; }
 
  private:
   const PolytopeData& P_;
@@ -268,6 +319,18 @@ class Expander {
   std::vector<double>& keys_;
   int stamp_ = 0;
   std::size_t iters_ = 0;
+  int cone_first_ = 0;  // first facet of the last cone built
+  // Elementary steps so far (neighbours scanned by the climbs, facets scanned, visited or built)
+  // and the limit above which Phases A and D give up (σ: none).
+  mutable std::size_t work_ = 0;
+  std::size_t budget_ = std::numeric_limits<std::size_t>::max();
+  enum class Overlap { No, Yes, Exhausted };
+  // Phase D: the query direction (P's frame, scaled by a power of two) and the bound of the
+  // rounded det(m̂_a, m̂_b, d).
+  Vec3 dir_{0, 0, 0};
+  double edet_ = 0;
+
+  enum class Mode { A, B, D };  // which phase expands: what a new facet needs
 
   // ---- per-query bounds (semi-static filters) -------------------------------------------------
   // The reference vertices c_P, c_Q, t = tq − tp exactly (thi_ + tlo_), τ̂, and per coordinate the
@@ -518,7 +581,7 @@ class Expander {
     D.es = bound_side(n, nerr);
     D.e0 = bound_zero(n, nerr);
   }
-  Dir facet_dir(int f) const {
+  [[gnu::always_inline]] Dir facet_dir(int f) const {
     const Facet& F = F_[f];
     Dir D;
     D.kind = Dir::Normal;
@@ -550,8 +613,13 @@ class Expander {
     const double u0 = u[0], u1 = u[1], u2 = u[2];
     const double *dx = A.dx.data(), *dy = A.dy.data(), *dz = A.dz.data();
     const bool finite = eb < 1e280;
+    // The work counter in a register; a climb cut short by the budget returns a non-maximal
+    // vertex, which the caller never uses (over_budget()).
+    std::size_t work = work_;
+    const std::size_t budget = kBudget ? budget_ : std::numeric_limits<std::size_t>::max();
     for (;;) {
       const int b = A.start[v], end = A.start[v + 1];
+      if constexpr (kBudget) work += static_cast<std::size_t>(end - b);
       double bv = -std::numeric_limits<double>::infinity();
       int be = b;
       for (int e = b; e < end; ++e) {
@@ -559,17 +627,19 @@ class Expander {
         be = s > bv ? e : be;
         bv = s > bv ? s : bv;
       }
-      if (finite && bv > eb) {
+      if (finite && bv > eb && work <= budget) {
         v = A.nbr[be];
         continue;
       }
-      if (finite && bv < -eb) return v;  // every neighbour certified lower
+      if ((finite && bv < -eb) || work > budget) break;  // every neighbour certified lower
       int next = -1;
       for (int e = b; e < end && next < 0; ++e)
         if ((of_p ? cmp_p(D, v, A.nbr[e]) : cmp_q(D, v, A.nbr[e])) > 0) next = A.nbr[e];
-      if (next < 0) return v;
+      if (next < 0) break;
       v = next;
     }
+    if constexpr (kBudget) work_ = work;
+    return v;
   }
   // Adds the support of M along D (a new vertex of V_; the caller may pop it).
   int support(const Dir& D, int p0, int q0) {
@@ -600,20 +670,24 @@ class Expander {
       {0.4612, -0.6287, 0.6262}, {-0.7033, 0.2117, 0.6786}, {0.3819, 0.8573, 0.3452}};
 
   // The initial K: a tetrahedron of four pairs (M is full-dimensional), facets linked, Phase A
-  // signs set.
-  [[gnu::noinline]] void init_tetrahedron() {
+  // signs set. False (and no K) when over budget.
+  [[gnu::noinline]] bool init_tetrahedron() {
     int s1, s2;
-    first_supports(s1, s2);
+    if (!first_supports(s1, s2)) return false;
     double e[3];  // the rounded m_s2 − m_s1
     diff_r(V_[s2], V_[s1], e);
     int s3 = third_support(s1, s2, e);
+    if (s3 < 0) return false;
     int o = 0;
     const int s4 = fourth_support(s1, s2, s3, e, o);
+    if (s4 < 0) return false;
     if (o > 0) std::swap(s2, s3);  // now s4 lies below the plane of (s1, s2, s3)
     add_facet(s1, s2, s3), add_facet(s1, s4, s2), add_facet(s2, s4, s3), add_facet(s3, s4, s1);
     F_[0].nb = {1, 2, 3}, F_[1].nb = {3, 2, 0}, F_[2].nb = {1, 3, 0}, F_[3].nb = {2, 1, 0};  // twins
     for (int a = 0; a < 4; ++a) F_[a].hsign = hsign(a);
+    return true;
   }
+  bool over_budget() const { return kBudget && work_ > budget_; }
 
   // A support query along a plain vector d (exact as given).
   [[gnu::always_inline]] Dir vec_dir(const Vec3& d) const {
@@ -625,24 +699,28 @@ class Expander {
   }
 
   // s1, s2: two different pairs, the supports along d1 (from M's centre towards 0, tilted) and
-  // about −d1 (exactly −d1 if that gave s1 again).
-  [[gnu::always_inline]] void first_supports(int& s1, int& s2) {
+  // about −d1 (exactly −d1 if that gave s1 again). False when over budget.
+  [[gnu::always_inline]] bool first_supports(int& s1, int& s2) {
     const Vec3 g0(kGeneric[0][0], kGeneric[0][1], kGeneric[0][2]), g1(kGeneric[1][0], kGeneric[1][1], kGeneric[1][2]);
     Vec3 d1 = R_ * AQ_.centroid + Vec3(thi_[0], thi_[1], thi_[2]) - AP_.centroid;
     d1 += 0.125 * d1.norm() * g0;
     if (!(d1.allFinite() && d1.squaredNorm() > 0)) d1 = g0;
     s1 = support_cold(vec_dir(d1));
+    if (over_budget()) return false;
     Vec3 d2 = -d1 + 0.25 * d1.norm() * g1;
     if (!(d2.allFinite() && d2.squaredNorm() > 0)) d2 = -d1;
     s2 = support_cold(vec_dir(d2));
+    if (over_budget()) return false;
     if (V_[s2].i == V_[s1].i && V_[s2].j == V_[s1].j) {  // M is full-dimensional: ±d1 differ
       V_.pop_back();
       s2 = support_cold(vec_dir(-d1));
     }
+    return !over_budget();
   }
 
   // s3: a support strictly off the line of s1, s2 (e = the rounded m_s2 − m_s1), along some
-  // ±(m_s2 − m_s1) × g_k (M is full-dimensional; the g_k are linearly independent).
+  // ±(m_s2 − m_s1) × g_k (M is full-dimensional; the g_k are linearly independent). −1 when
+  // over budget.
   [[gnu::always_inline]] int third_support(int s1, int s2, const double e[3]) {
     int s3 = -1;
     const double bmax = std::max({B_[0], B_[1], B_[2]});
@@ -659,6 +737,7 @@ class Expander {
         D.n = sg * Vec3(n[0], n[1], n[2]);
         finish_dir(D, cerr);
         int x = support_cold(D);
+        if (over_budget()) return -1;
         if (dir_side(D, x, s1) != 0) { s3 = x; break; }
         V_.pop_back();
       }
@@ -667,7 +746,8 @@ class Expander {
   }
 
   // s4: a support strictly off the plane of s1, s2, s3, along ± its normal; o > 0 when s4 lies
-  // above that plane (on the side of the normal (m_s2 − m_s1) × (m_s3 − m_s1)).
+  // above that plane (on the side of the normal (m_s2 − m_s1) × (m_s3 − m_s1)). −1 when over
+  // budget.
   [[gnu::always_inline]] int fourth_support(int s1, int s2, int s3, const double e[3], int& o) {
     int s4 = -1;
     for (int sg : {1, -1}) {
@@ -682,6 +762,7 @@ class Expander {
       D.n = sg * Vec3(n[0], n[1], n[2]);
       finish_dir(D, ne_);
       int x = support_cold(D);
+      if (over_budget()) return -1;
       if (int side = dir_side(D, x, s1); side != 0) { s4 = x, o = side * sg; break; }
       V_.pop_back();
     }
@@ -694,9 +775,9 @@ class Expander {
   // Replaces the facets visible from s (strictly beyond their planes; f0 is one) by the cone
   // from s over the horizon. Visible facets of a convex polytope form a disc, so each horizon
   // vertex starts exactly one horizon edge.
-  [[gnu::always_inline]] void expand(int f0, int s, bool phase_a) {
+  [[gnu::always_inline]] void expand(int f0, int s, Mode mode) {
     find_horizon(f0, s);
-    build_cone(s, phase_a);
+    build_cone(s, mode);
   }
 
   // vis_: the facets visible from s (a search from f0 over neighbours); hor_: the horizon, each
@@ -727,11 +808,14 @@ class Expander {
   }
 
   // Kills the visible facets and adds the cone from s over the horizon, linked to its neighbours;
-  // each new facet gets its Phase A sign or (Phase B) its key.
-  [[gnu::always_inline]] void build_cone(int s, bool phase_a) {
+  // each new facet gets its Phase A sign or (Phase B) its key (Phase D needs neither). The new
+  // facets are F_[cone_first_, F_.size()).
+  [[gnu::always_inline]] void build_cone(int s, Mode mode) {
     for (int f : vis_) kill(f);
     if (by_start_.size() < V_.size()) by_start_.resize(2 * V_.size()), by_end_.resize(2 * V_.size());
     const int first = static_cast<int>(F_.size());
+    cone_first_ = first;
+    if constexpr (kBudget) work_ += vis_.size() + hor_.size();
     for (auto [f, k] : hor_) {
       int a = F_[f].v[k], b = F_[f].v[(k + 1) % 3], g = F_[f].nb[k];
       int id = add_facet(a, b, s);
@@ -747,14 +831,16 @@ class Expander {
       N.nb[1] = by_start_[N.v[1]];
       N.nb[2] = by_end_[N.v[0]];
       assert(F_[N.nb[1]].v[0] == N.v[1] && F_[N.nb[2]].v[1] == N.v[0]);
-      if (phase_a) N.hsign = hsign(id);
-      else keys_[pos_[id]] = lower_key(id);
+      if (mode == Mode::A) N.hsign = hsign(id);
+      else if (mode == Mode::B) keys_[pos_[id]] = lower_key(id);
     }
   }
 
   // ---- Phase A: decide 0 ∈ int M exactly --------------------------------------------------------
-  bool phase_a() {
+  [[gnu::always_inline]] Overlap phase_a() {
     for (;;) {
+      if constexpr (kBudget) work_ += alive_.size();
+      if (over_budget()) return Overlap::Exhausted;
       int f = -1;
       double worst = 0;
       for (int g : alive_) {
@@ -763,11 +849,12 @@ class Expander {
         double sd = G.h / std::sqrt(G.n[0] * G.n[0] + G.n[1] * G.n[1] + G.n[2] * G.n[2]);  // for choice only
         if (f < 0 || sd < worst) f = g, worst = sd;
       }
-      if (f < 0) return true;  // 0 strictly inside every facet: 0 ∈ int K ⊆ int M
+      if (f < 0) return Overlap::Yes;  // 0 strictly inside every facet: 0 ∈ int K ⊆ int M
       Dir D = facet_dir(f);
       int s = support_facet(f, D);
-      if (side0(D, s) <= 0) return false;  // h_M(n_f) <= 0: 0 ∉ int M
-      expand(f, s, true);
+      if (over_budget()) return Overlap::Exhausted;
+      if (side0(D, s) <= 0) return Overlap::No;  // h_M(n_f) <= 0: 0 ∉ int M
+      expand(f, s, Mode::A);
     }
   }
 
@@ -883,9 +970,122 @@ class Expander {
         keys_[pos_[f]] = std::numeric_limits<double>::infinity();
         continue;
       }
-      expand(f, s, false);
+      expand(f, s, Mode::B);
     }
     return best;
+  }
+
+  // ---- Phase D: the exit of the ray s·d from M (σ_d) --------------------------------------------
+  // 0 ∈ int K, so the cones from 0 over K's facets partition space: the ray leaves K through the
+  // facet (a, b, c) whose closed cone contains d, i.e. det(m_a, m_b, d), det(m_b, m_c, d) and
+  // det(m_c, m_a, d) are all >= 0 (each is λ·det(m_a, m_b, m_c) for a barycentric weight λ of the
+  // exit point, and det(m_a, m_b, m_c) = h > 0). Ties (the ray through an edge or a vertex of K)
+  // accept every facet containing the exit point: any of them is correct below.
+
+  // The bound of the rounded d·(m̂_a × m̂_b) (semi-static: uniform over pairs). With |m_k| <= mb_k,
+  // |m̂_k − m_k| <= em_k, A_k = mb_k + em_k: each cross component carries the input error
+  // em_y mb_z + A_y em_z + em_z mb_y + A_z em_y and the rounding 4u A_y A_z (two products, one
+  // difference), and |ĉ_k| <= 2.01 A_y A_z; the dot product adds γ₃ Σ|d_k||ĉ_k|.
+  void init_direction(const Vec3& d) {
+    dir_ = d;
+    double e = 0;
+    for (int k = 0; k < 3; ++k) {
+      const int y = (k + 1) % 3, z = (k + 2) % 3;
+      const double Ay = mb_[y] + em_[y], Az = mb_[z] + em_[z];
+      const double ce = em_[y] * mb_[z] + Ay * em_[z] + em_[z] * mb_[y] + Az * em_[y] + 4.02 * kU * Ay * Az;
+      e += std::abs(d[k]) * (ce * kInflate + 3.02 * kU * 2.01 * Ay * Az);
+    }
+    edet_ = e * kInflate + exact::kTiny;
+  }
+
+  // Sign of det(m_a, m_b, d) = d·(m_a × m_b), exactly.
+  int det_sign(int a, int b) const {
+    const double *x = V_[a].mh, *y = V_[b].mh;
+    const double s = dir_[0] * (x[1] * y[2] - x[2] * y[1]) + dir_[1] * (x[2] * y[0] - x[0] * y[2]) +
+                     dir_[2] * (x[0] * y[1] - x[1] * y[0]);
+    if (s > edet_) return 1;
+    if (s < -edet_) return -1;
+    return exact_sign([&](auto L) {
+      V3<Num<decltype(L)>> dl{L(dir_[0]), L(dir_[1]), L(dir_[2])};
+      return dot(dl, cross(m_l(L, V_[a]), m_l(L, V_[b])));
+    });
+  }
+  // True iff the closed cone from 0 over facet f contains d.
+  bool cone_contains(int f) const {
+    const auto& v = F_[f].v;
+    return det_sign(v[0], v[1]) >= 0 && det_sign(v[1], v[2]) >= 0 && det_sign(v[2], v[0]) >= 0;
+  }
+  // The exit facet of K: among the facets of the last cone when K was just expanded (the exit
+  // point of the larger K lies on it: either beyond the old exit point, hence not on an old facet,
+  // or the old exit point itself, on the horizon then, hence on a closed cone facet), else among
+  // all live facets.
+  int exit_facet(bool after_expand) const {
+    if (after_expand) {
+      for (int f = cone_first_; f < static_cast<int>(F_.size()); ++f)
+        if (cone_contains(f)) return f;
+      assert(false && "the ray leaves K through no facet of the new cone");
+    }
+    if constexpr (kBudget) work_ += alive_.size();
+    for (int f : alive_)
+      if (cone_contains(f)) return f;
+    assert(false && "the ray leaves K through no facet");
+    return alive_[0];
+  }
+
+  // The facet of K on the ray's exit point whose plane supports M: then that point is the
+  // ray's exit from M (K ⊆ M lies below the plane, and the point is in K). −1: over budget.
+  int phase_d() {
+    bool expanded = false;
+    for (;;) {
+      if (over_budget()) return -1;
+      const int f = exit_facet(expanded);
+      Dir D = facet_dir(f);
+      const int s = support_facet(f, D);
+      if (over_budget()) return -1;
+      const int o = orient(f, s);
+      assert(o >= 0 && "a support point below the facet's plane");
+      if (o <= 0) {  // f's plane supports M
+        V_.pop_back();
+        return f;
+      }
+      expand(f, s, Mode::D);
+      expanded = true;
+    }
+  }
+
+  // σ_d on facet f: depth = (h_f / (n_f·d))·|d|, h_f and n_f·d to within 2^-60 relative
+  // (double-double with a rigorous bound, exact rationals otherwise), the quotient, |d| and the
+  // product in double-double, rounded once: within ~half an ulp (exact depths come out exact).
+  // Also the unit normal.
+  double exit_distance(int f, Vec3& unit) const {
+    const auto v = F_[f].v;
+    auto n = normal_l(LiftDD{}, v[0], v[1], v[2]);
+    const V3<DD> dd{DD{dir_[0]}, DD{dir_[1]}, DD{dir_[2]}};
+    const DD h = dot(n, m_l(LiftDD{}, V_[v[0]])), nd = dot(n, dd);
+    unit = Vec3(n[0].hi, n[1].hi, n[2].hi).normalized();
+    auto ok = [](const DD& r) {
+      return std::isfinite(r.hi) && std::isfinite(r.e) && safe_bound(r.e) <= std::abs(r.hi) * 0x1p-60;
+    };
+    DD t;
+    if (ok(h) && ok(nd)) {
+      const double q1 = h.hi / nd.hi;
+      const DD r = h - DD{q1} * nd;  // h − q1·nd, nearly exact
+      fast_two_sum(q1, r.hi / nd.hi, t.hi, t.lo);
+    } else {
+      const exact::LiftQ L;
+      auto nq = normal_l(L, v[0], v[1], v[2]);
+      const V3<exact::Rat> dq{L(dir_[0]), L(dir_[1]), L(dir_[2])};
+      const mpq_class q = dot(nq, m_l(L, V_[v[0]])).v / dot(nq, dq).v;
+      t.hi = q.get_d();
+      t.lo = mpq_class(q - t.hi).get_d();
+    }
+    // |d| = sqrt(d·d): the squares and their sum in double-double, one Newton step.
+    const DD s = (dd[0] * dd[0] + dd[1] * dd[1]) + dd[2] * dd[2];
+    const double x = std::sqrt(s.hi);
+    const DD res = s - DD{x} * DD{x};
+    DD norm;
+    fast_two_sum(x, res.hi / (2 * x), norm.hi, norm.lo);
+    return (t * norm).hi;
   }
 
   // ---- result ------------------------------------------------------------------------------
@@ -931,6 +1131,52 @@ class Expander {
     r.witness_p = Rp * wp + tp;
     r.witness_q = Rp * wq + tp;
     features(b, r);
+    return r;
+  }
+
+  Depth3 directional_result(int f, const Eigen::Matrix3d& Rp, const Vec3& tp) const {
+    Depth3 r;
+    r.kind = DepthKind::Directional;
+    r.overlapping = true;
+    r.candidates = iters_;
+    Vec3 u;
+    r.depth = r.lower_bound = r.upper_bound = exit_distance(f, u);
+    const Vec3 dir = dir_.normalized();
+    const Vec3 move = r.depth * dir;
+    // The exit point t·d of facet f, barycentric weights ∝ det(m_b, m_c, d), … (>= 0 exactly): a
+    // point wp of P and wq of Q' on the contact (after the move). The rounded dets (error <=
+    // edet_ each) when their sum exceeds 2^40 edet_ (weights within 3·2^-40 ≈ 3e-12), else in
+    // double-double with exact zeros (K's facets may be slivers).
+    const auto& v = F_[f].v;
+    auto det_r = [&](int a, int b) { return std::max(0.0, dir_.dot(approx(a).cross(approx(b)))); };
+    double lam[3] = {det_r(v[1], v[2]), det_r(v[2], v[0]), det_r(v[0], v[1])};
+    double sum = lam[0] + lam[1] + lam[2];
+    if (!(sum > 0x1p40 * edet_)) {
+      const V3<DD> dl{DD{dir_[0]}, DD{dir_[1]}, DD{dir_[2]}};
+      const V3<DD> m[3] = {m_l(LiftDD{}, V_[v[0]]), m_l(LiftDD{}, V_[v[1]]), m_l(LiftDD{}, V_[v[2]])};
+      for (int k = 0; k < 3; ++k) {
+        const int b = (k + 1) % 3, c = (k + 2) % 3;
+        const DD x = dot(dl, cross(m[b], m[c]));
+        const bool sure = std::isfinite(x.hi) && std::abs(x.hi) > safe_bound(x.e);
+        lam[k] = std::max(0.0, sure || det_sign(v[b], v[c]) != 0 ? x.hi : 0.0);
+      }
+      sum = lam[0] + lam[1] + lam[2];
+    }
+    if (!(sum > 0 && std::isfinite(sum))) lam[0] = lam[1] = lam[2] = sum = 1;
+    Vec3 wp = Vec3::Zero(), wq = Vec3::Zero();
+    const Vec3 t(thi_[0] + tlo_[0], thi_[1] + tlo_[1], thi_[2] + tlo_[2]);
+    for (int k = 0; k < 3; ++k) {
+      const Vert& X = V_[v[k]];
+      wp += lam[k] / sum * P_.v[X.i];
+      wq += lam[k] / sum * (R_ * Q_.v[X.j] + t);
+    }
+    wq += move;
+    r.translation = Rp * move;
+    r.normal = Rp * dir;
+    r.facet_normal = Rp * u;
+    r.witness_p = Rp * wp + tp;
+    r.witness_q = Rp * wq + tp;
+    features(f, r);
     return r;
   }
 
@@ -987,12 +1233,32 @@ class Expander {
   }
 };
 
+// One scratch workspace per thread, shared by σ and σ_d.
+Workspace& workspace() {
+  thread_local Workspace ws;
+  return ws;
+}
+
 }  // namespace
 
 Depth3 minimum_depth_expand(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,
                             const Eigen::Matrix3d& Rp, const Vec3& tp) {
-  thread_local Workspace ws;
-  return Expander(P, Q, rel, ws).run(Rp, tp);
+  return Expander<false>(P, Q, rel, workspace()).run(Rp, tp);
+}
+
+std::optional<Depth3> directional_depth_expand(const ConvexPolytope& P, const ConvexPolytope& Q,
+                                               const RelativePose& rel, const Vec3& d, const Eigen::Matrix3d& Rp,
+                                               const Vec3& tp, std::size_t budget, std::size_t* work) {
+  assert(d.allFinite() && d != Vec3::Zero());
+  // Scale d by a power of two (exact: the same ray) so that its products neither overflow nor
+  // underflow.
+  int ex = 0;
+  std::frexp(d.cwiseAbs().maxCoeff(), &ex);
+  const Vec3 ds(std::ldexp(d.x(), -ex), std::ldexp(d.y(), -ex), std::ldexp(d.z(), -ex));
+  Expander<true> e(P, Q, rel, workspace());
+  std::optional<Depth3> r = e.run_directional(ds, Rp, tp, budget);
+  if (work) *work = e.work();
+  return r;
 }
 
 }  // namespace pendepth::convex3

@@ -1,10 +1,15 @@
-// Private: exact minimum depth σ by certified expansion on the implicit M = P ⊕ (−Q')
-// (see minimum_expand.cpp).
+// Private: exact minimum depth σ and directional depth σ_d by certified expansion on the
+// implicit M = P ⊕ (−Q') (see minimum_expand.cpp).
 #pragma once
 
 #include <pendepth/depth3.hpp>
 
 #include "convex3/minkowski_facets.hpp"
+
+#include <bit>
+#include <cstddef>
+#include <limits>
+#include <optional>
 
 namespace pendepth::convex3 {
 
@@ -12,5 +17,35 @@ namespace pendepth::convex3 {
 /// P's pose (x_world = Rp x + tp). Exact: lower_bound == upper_bound == depth on overlap.
 Depth3 minimum_depth_expand(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,
                             const Eigen::Matrix3d& Rp, const Vec3& tp);
+
+/// σ_d along d (P's frame; precondition: finite and nonzero) for Q placed by `rel`: the exit of
+/// the ray s·d̂ from int M by the same expansion (Phase D), result in the world frame of P's pose.
+/// Exact: lower_bound == upper_bound == depth on overlap; not overlapping (touching included):
+/// depth 0, kind Directional. nullopt when the work (climb steps, facets scanned or built)
+/// exceeds `budget`; `work` (if given) receives the work done.
+std::optional<Depth3> directional_depth_expand(const ConvexPolytope& P, const ConvexPolytope& Q,
+                                               const RelativePose& rel, const Vec3& d, const Eigen::Matrix3d& Rp,
+                                               const Vec3& tp,
+                                               std::size_t budget = std::numeric_limits<std::size_t>::max(),
+                                               std::size_t* work = nullptr);
+
+/// The same with validation (InvalidInput for a zero or non-finite d and bad poses), d in the
+/// world frame, no budget (tests, benchmarks).
+Depth3 directional_depth_expand(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
+                                const Pose3& pose_q, const Vec3& d);
+
+/// σ_d by Compute-Depth-3D on the DK hierarchies (directional3.cpp): O(log n · log m).
+Depth3 directional_depth_dk(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
+                            const Pose3& pose_q, const Vec3& d);
+
+/// The work budget of the expansion in pendepth::directional_depth, O(log n · log m): beyond it
+/// the query is answered by Compute-Depth-3D (so the bound of DHS Theorem 5.6 holds). The
+/// constants are set from the measured work (docs/benchmarks.md): typical queries use a small
+/// fraction of it.
+inline constexpr std::size_t kExpandWorkBase = 4096, kExpandWorkPerLog = 256;
+inline std::size_t directional_work_budget(std::size_t n, std::size_t m) {
+  auto lg = [](std::size_t x) { return static_cast<std::size_t>(std::bit_width(x)); };  // ⌈log2(x + 1)⌉
+  return kExpandWorkBase + kExpandWorkPerLog * lg(n) * lg(m);
+}
 
 }  // namespace pendepth::convex3

@@ -5,6 +5,7 @@
 #include <pendepth/io.hpp>  // read_obj_vertices
 #include <pendepth/polytope.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <random>
@@ -75,6 +76,13 @@ inline std::vector<Vec3> random_ball(std::mt19937_64& rng, int n, double r = 1) 
     if (v.norm() <= 1) p.push_back(r * v);
   }
   return p;
+}
+
+/// |a − b| in ulps of the larger magnitude (0 when both are 0).
+inline double ulps(double a, double b) {
+  double scale = std::max(std::abs(a), std::abs(b));
+  if (scale == 0) return 0;
+  return std::abs(a - b) / (std::ldexp(1.0, std::ilogb(scale)) * 0x1p-52);
 }
 
 inline std::vector<std::string> shared_hull_files() {

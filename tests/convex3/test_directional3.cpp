@@ -1,4 +1,6 @@
-// σ_d by Compute-Depth-3D (directional3.cpp, behind pendepth::directional_depth) against two
+// σ_d by Compute-Depth-3D (directional3.cpp, convex3::directional_depth_dk) and by the public
+// pendepth::directional_depth (the expansion of minimum_expand.cpp within its work budget, else
+// Compute-Depth-3D; its own tests: test_directional_expand.cpp), each against two
 // independent references: the minimum over ALL implicit facet normals of M (minkowski_facets,
 // O(n·m)) and, for small shapes, the explicit M = hull of all differences with an exact ray exit.
 // Random hulls 4…2000 vertices, the 60 shared hulls, degenerate integer suites (face–face,
@@ -15,6 +17,8 @@
 #include <limits>
 
 namespace pendepth::convex3 {
+Depth3 directional_depth_dk(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
+                            const Pose3& pose_q, const Vec3& d);
 Depth3 directional_depth_facets(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
                                 const Pose3& pose_q, const Vec3& d);
 }  // namespace pendepth::convex3
@@ -31,11 +35,7 @@ struct Stats {
   }
 };
 
-double ulps(double a, double b) {
-  double scale = std::max(std::abs(a), std::abs(b));
-  if (scale == 0) return 0;
-  return std::abs(a - b) / (std::ldexp(1.0, std::ilogb(scale)) * 0x1p-52);
-}
+using test3::ulps;
 
 // 0 ∈ ∂M exactly: P and Q' touch without overlapping (every facet has h ≥ 0, one has h = 0).
 bool touching(const ConvexPolytope& P, const ConvexPolytope& Q, const Pose3& pq) {
@@ -66,10 +66,19 @@ double sigma_reference(const ConvexPolytope& P, const Pose3& pp, const ConvexPol
 }
 
 // One query against the facet reference; `tol_ulps` allows for the two roundings of each side.
+void check_one(const Depth3& a, const Depth3& r, const ConvexPolytope& P, const Pose3& pp, const Vec3& d,
+               Stats& st, const std::string& what, double sigma);
+
+// The public query (the expansion, or DK beyond its work budget) and the DK path itself.
 void check(const ConvexPolytope& P, const Pose3& pp, const ConvexPolytope& Q, const Pose3& pq, const Vec3& d,
            Stats& st, const std::string& what, double sigma = -1) {
-  Depth3 a = directional_depth(P, pp, Q, pq, d);
   Depth3 r = convex3::directional_depth_facets(P, pp, Q, pq, d);
+  check_one(directional_depth(P, pp, Q, pq, d), r, P, pp, d, st, what, sigma);
+  check_one(convex3::directional_depth_dk(P, pp, Q, pq, d), r, P, pp, d, st, what + " (DK)", sigma);
+}
+
+void check_one(const Depth3& a, const Depth3& r, const ConvexPolytope& P, const Pose3& pp, const Vec3& d,
+               Stats& st, const std::string& what, double sigma) {
   ++st.queries;
   bool ok = a.overlapping == r.overlapping;
   double e = ulps(a.depth, r.depth);
@@ -96,7 +105,7 @@ void check(const ConvexPolytope& P, const Pose3& pp, const ConvexPolytope& Q, co
   }
   if (!ok) {
     ++st.failures;
-    ADD_FAILURE() << what << ": d = " << d.transpose() << " dk " << a.overlapping << " " << a.depth << " ref "
+    ADD_FAILURE() << what << ": d = " << d.transpose() << " got " << a.overlapping << " " << a.depth << " ref "
                   << r.overlapping << " " << r.depth << " (" << e << " ulp)";
   }
 }
