@@ -1062,10 +1062,14 @@ class Expander {
     auto n = normal_l(LiftDD{}, v[0], v[1], v[2]);
     const V3<DD> dd{DD{dir_[0]}, DD{dir_[1]}, DD{dir_[2]}};
     const DD h = dot(n, m_l(LiftDD{}, V_[v[0]])), nd = dot(n, dd);
-    unit = Vec3(n[0].hi, n[1].hi, n[2].hi).normalized();
     auto ok = [](const DD& r) {
       return std::isfinite(r.hi) && std::isfinite(r.e) && safe_bound(r.e) <= std::abs(r.hi) * 0x1p-60;
     };
+    // The unit normal as refine() makes it (exact components where double-double cancelled).
+    Vec3 nv;
+    for (int k = 0; k < 3; ++k)
+      nv[k] = ok(n[k]) ? n[k].hi : accurate([&](auto L) { return normal_l(L, v[0], v[1], v[2])[k]; });
+    unit = unit_vector(nv);
     DD t;
     if (ok(h) && ok(nd)) {
       const double q1 = h.hi / nd.hi;
@@ -1141,7 +1145,7 @@ class Expander {
     r.candidates = iters_;
     Vec3 u;
     r.depth = r.lower_bound = r.upper_bound = exit_distance(f, u);
-    const Vec3 dir = dir_.normalized();
+    const Vec3 dir = unit_vector(dir_);
     const Vec3 move = r.depth * dir;
     // The exit point t·d of facet f, barycentric weights ∝ det(m_b, m_c, d), … (>= 0 exactly): a
     // point wp of P and wq of Q' on the contact (after the move). The rounded dets (error <=

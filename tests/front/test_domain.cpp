@@ -306,6 +306,14 @@ TEST(Domain3, TinyDetailsOnAUnitHullKeepTheirNormal) {
     EXPECT_NEAR(std::ldexp(rs.translation.norm(), -k), r.depth, 1e-15) << k;
   }
   EXPECT_NEAR(minimum_depth(P.polytope(), Pose3(), P.polytope(), q).translation.norm(), r.depth, 1e-15);
+  // σ_d's exit facet has such a normal too.
+  for (const Vec3& d : {Vec3(0, 1, 0), Vec3(1, 2, -3), Vec3(0.1, 0.9, -0.2)}) {
+    const Depth3 a = pair.along(Pose3(), q, d);
+    ASSERT_TRUE(a.overlapping);
+    EXPECT_NEAR(a.facet_normal.norm(), 1, 1e-15) << d.transpose();
+    EXPECT_GT(a.facet_normal.dot(d), 0) << d.transpose();  // the ray leaves through that facet
+    EXPECT_GE(a.depth, r.depth * (1 - 1e-15));            // σ ≤ σ_d
+  }
 }
 
 // A pose translation that has no exact value at the pair's scale is named; batches check first.
