@@ -15,18 +15,7 @@ SECS=${1:-60}
 [ $# -gt 0 ] && shift
 JOBS=${JOBS:-2}
 
-PKGS=(clang libfuzzer-14-dev cmake pkg-config libeigen3-dev libgmp-dev libcgal-dev libtbb-dev)
-missing=()
-for p in "${PKGS[@]}"; do
-  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
-  [ "$status" = "install ok installed" ] || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
-  echo "fuzz.sh: installing ${missing[*]}"
-  $SUDO apt-get update -q
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
-fi
+./scripts/setup.sh  # the Debian packages, clang and libfuzzer-14-dev included
 
 LAUNCHER=()
 command -v ccache >/dev/null && LAUNCHER=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)

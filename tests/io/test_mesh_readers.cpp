@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "io/reader_errors.hpp"
+
 #include <algorithm>
 #include <bit>
 #include <cstdint>
@@ -22,19 +24,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-template <class F>
-std::string error_of(F&& f) {
-  try {
-    f();
-  } catch (const InvalidInput& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
-std::string obj_error(std::string_view text) { return error_of([&] { io::parse_obj_points(text, "m.obj"); }); }
-std::string off_error(std::string_view text) { return error_of([&] { io::parse_off_points(text, "m.off"); }); }
-std::string stl_error(std::string_view bytes) { return error_of([&] { io::parse_stl_points(bytes, "m.stl"); }); }
+using io_test::error_of;
+using io_test::obj_error;
+using io_test::off_error;
+using io_test::stl_error;
 
 // Binary STL writer (little-endian, as the format requires), independent of the reader.
 struct Triangle {
