@@ -24,6 +24,11 @@
 //                          NoFitPolygon2 (built once, fast queries), see Prepare.
 // Errors: invalid shapes and queries throw InvalidInput (a std::invalid_argument) naming the
 // shape or the query; valid queries never throw and never return NaN.
+// Magnitudes (docs/robustness.md): any finite size. Pairs of huge or tiny shapes are answered on
+// copies scaled by a power of two (the same bits as at unit size; an explicit infinity only where
+// the true value overflows); a pair spanning more than 2^600 (2D) / 2^280 (3D) from its largest
+// coordinate to its smallest edge, or a placement with no exact value at the pair's scale, is
+// InvalidInput naming the values and the limit.
 #pragma once
 
 #include <pendepth/depth2.hpp>
