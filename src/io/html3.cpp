@@ -235,7 +235,11 @@ struct Frame {
 Frame frame_of(const Scene3& s) {
   Box3 box;
   const auto add = [&](const Vec3& p) {
-    if (!p.allFinite()) throw InvalidInput("html: the scene has a non-finite coordinate " + text(p));
+    if (!p.allFinite()) {  // printed with %g: append_double (JSON) takes no NaN
+      char buf[96];
+      std::snprintf(buf, sizeof buf, "(%g, %g, %g)", p.x(), p.y(), p.z());
+      throw InvalidInput(std::string("html: the scene has a non-finite coordinate ") + buf);
+    }
     box.add(p);
   };
   for (const auto& m : s.meshes)
