@@ -10,7 +10,9 @@ PKGS=(cmake g++ make pkg-config libeigen3-dev libgmp-dev libcgal-dev libgtest-de
       pybind11-dev python3-dev python3-numpy python3-pytest python3-hypothesis python3-dask
       python3-distributed python3-pandas python3-matplotlib python3-shapely
       chromium fonts-dejavu-core python3-pil
-      clang libfuzzer-14-dev)  # the fuzz stage of scripts/test.sh (scripts/fuzz.sh)
+      clang libfuzzer-14-dev libclang-rt-14-dev)  # the fuzz stage of scripts/test.sh (scripts/fuzz.sh;
+      # clang -fsanitize=fuzzer,address links libclang_rt.fuzzer and .asan_static, which only
+      # clang's Recommends would bring)
 # npm: Debian's package, unless an npm is already on the PATH (NodeSource's nodejs bundles one and
 # conflicts with Debian's npm package).
 command -v npm >/dev/null 2>&1 || PKGS+=(npm)
