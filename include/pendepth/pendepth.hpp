@@ -108,6 +108,15 @@ class Shape2 {
   /// names (see the class comment).
   std::array<std::size_t, 2> input_vertex(std::size_t vertex) const;
 
+  /// Q rotated counter-clockwise by `degrees` about its own origin (its reference point), as a
+  /// new shape named NAME@DEGREES. Exact for multiples of 90° (coordinates are swapped and
+  /// negated); any other angle rotates each coordinate once with the rounded cos and sin of the
+  /// angle (rotation_is_exact() tells which). Throws InvalidInput for a non-finite angle, or
+  /// when rounding makes the rotated rings invalid (named as for any shape).
+  Shape2 rotated(double degrees) const;
+  /// Whether rotated(degrees) is exact: `degrees` is a multiple of 90.
+  static bool rotation_is_exact(double degrees);
+
   struct Data;
 
  private:

@@ -5,7 +5,11 @@
 #include <pendepth/io.hpp>
 #include <pendepth/pendepth.hpp>
 
+#include <cmath>
+#include <cstdio>
+#include <functional>
 #include <mutex>
+#include <numbers>
 #include <optional>
 #include <stdexcept>
 
@@ -108,6 +112,49 @@ std::array<std::size_t, 2> Shape2::input_vertex(std::size_t vertex) const {
                        std::to_string(size()) + " vertices)");
   if (d_->convex) return {0, d_->convex->input_index(vertex)};
   return {d_->polygon->ring_of(vertex), d_->polygon->input_index(vertex)};
+}
+
+namespace {
+
+// `degrees` reduced to [0, 360), exactly (fmod is exact).
+double reduce_degrees(double degrees) {
+  double r = std::fmod(degrees, 360.0);
+  if (r < 0) r += 360.0;
+  return r == 360.0 ? 0.0 : r;
+}
+
+}  // namespace
+
+bool Shape2::rotation_is_exact(double degrees) {
+  return std::isfinite(degrees) && std::fmod(reduce_degrees(degrees), 90.0) == 0.0;
+}
+
+Shape2 Shape2::rotated(double degrees) const {
+  if (!std::isfinite(degrees))
+    throw InvalidInput(d_->name + ": rotation angle is not finite (" + std::to_string(degrees) + " degrees)");
+  const double r = reduce_degrees(degrees);
+  std::function<Vec2(const Vec2&)> turn;
+  if (rotation_is_exact(r)) {
+    switch (static_cast<int>(r / 90.0)) {
+      case 0: turn = [](const Vec2& p) { return p; }; break;
+      case 1: turn = [](const Vec2& p) { return Vec2(-p.y(), p.x()); }; break;
+      case 2: turn = [](const Vec2& p) { return Vec2(-p.x(), -p.y()); }; break;
+      default: turn = [](const Vec2& p) { return Vec2(p.y(), -p.x()); }; break;
+    }
+  } else {
+    const double rad = r * (std::numbers::pi / 180.0);
+    const double c = std::cos(rad), s = std::sin(rad);
+    turn = [c, s](const Vec2& p) { return Vec2(c * p.x() - s * p.y(), s * p.x() + c * p.y()); };
+  }
+  char suffix[64];
+  std::snprintf(suffix, sizeof suffix, "@%.17g", degrees);
+  const std::string name = d_->name + suffix;
+  std::vector<std::vector<Vec2>> rings = this->rings();
+  for (auto& ring : rings)
+    for (auto& p : ring) p = turn(p);
+  std::vector<Vec2> outer = std::move(rings.front());
+  rings.erase(rings.begin());
+  return Shape2(std::move(outer), std::move(rings), name);
 }
 
 }  // namespace pendepth

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <numbers>
 #include <cstring>
 #include <limits>
 #include <random>
@@ -366,6 +367,54 @@ TEST(Shape2, KindsRingsAndInputVertices) {
   // Copies share the validated data.
   const Shape2 copy = plate;
   EXPECT_EQ(&copy.polygon(), &plate.polygon());
+}
+
+TEST(Shape2, RotatedByQuarterTurnsIsExactAndOtherAnglesRoundOnce) {
+  const Shape2 plate = Shape2::from_wkt("POLYGON ((0 0, 6 0, 6 6, 0 6), (2 2, 2 4, 4 4, 4 2))", "plate");
+  const Shape2 L = Shape2::from_wkt("POLYGON ((0 0, 3 0, 3 1, 1 1, 1 2, 0 2))", "L");
+  for (const double deg : {90.0, -270.0, 450.0}) EXPECT_TRUE(Shape2::rotation_is_exact(deg));
+  for (const double deg : {45.0, 1e-300, 89.999}) EXPECT_FALSE(Shape2::rotation_is_exact(deg));
+  // A quarter turn maps (x, y) to (−y, x) exactly: the rings as a set of points.
+  const Shape2 L90 = L.rotated(90);
+  EXPECT_EQ(L90.name(), "L@90");
+  auto points = [](const Shape2& s) {
+    std::vector<std::array<double, 2>> out;
+    for (const auto& r : s.rings())
+      for (const Vec2& p : r) out.push_back({p.x(), p.y()});
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  std::vector<std::array<double, 2>> expected;
+  for (const auto& r : L.rings())
+    for (const Vec2& p : r) expected.push_back({-p.y(), p.x()});
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(points(L90), expected);
+  EXPECT_EQ(points(L.rotated(90).rotated(270)), points(L));
+  EXPECT_EQ(points(L.rotated(-90)), points(L.rotated(270)));
+  // Rotating the whole scene by a quarter turn: the same depths, bit for bit, every engine.
+  const Shape2 sq(std::vector<Vec2>{{0, 0}, {2, 0}, {2, 1}, {0, 1}}, {}, "sq");
+  std::mt19937_64 rng(7);
+  for (const auto& [P, Q] : {std::pair{plate, sq}, std::pair{L, sq}, std::pair{L, plate}, std::pair{sq, L}}) {
+    const Pair2 a(P, Q), b(P.rotated(90), Q.rotated(90));
+    for (const Vec2& t : placements(rng, P, Q, 40)) {
+      const Vec2 t90(-t.y(), t.x());
+      EXPECT_TRUE(same_bits(a.minimum(t).depth, b.minimum(t90).depth)) << P.name() << " " << Q.name() << " t " << t.transpose();
+      EXPECT_EQ(a.overlapping(t), b.overlapping(t90));
+    }
+  }
+  // Another angle: each coordinate rotated once with the rounded cos and sin.
+  const double rad = 30.0 * std::numbers::pi / 180.0, c = std::cos(rad), s = std::sin(rad);
+  const auto r30 = L.rotated(30).rings()[0], r0 = L.rings()[0];
+  ASSERT_EQ(r30.size(), r0.size());
+  std::vector<std::array<double, 2>> want;
+  for (const Vec2& p : r0) want.push_back({c * p.x() - s * p.y(), s * p.x() + c * p.y()});
+  std::vector<std::array<double, 2>> got;
+  for (const Vec2& p : r30) got.push_back({p.x(), p.y()});
+  std::sort(want.begin(), want.end()), std::sort(got.begin(), got.end());
+  EXPECT_EQ(got, want);
+  EXPECT_NE(error_of([&] { L.rotated(std::numeric_limits<double>::quiet_NaN()); }).find("L: rotation angle is not finite"),
+            std::string::npos);
+  EXPECT_THROW(L.rotated(std::numeric_limits<double>::infinity()), InvalidInput);
 }
 
 }  // namespace
