@@ -31,6 +31,7 @@
 // InvalidInput naming the values and the limit.
 #pragma once
 
+#include <pendepth/approximate.hpp>
 #include <pendepth/depth2.hpp>
 #include <pendepth/depth3.hpp>
 #include <pendepth/geometry.hpp>

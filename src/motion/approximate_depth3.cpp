@@ -1,0 +1,420 @@
+// Certified (1+δ)-approximate σ of two huge point sets (include/pendepth/approximate.hpp; survey
+// §3.4–§4, Agarwal–Har-Peled–Varadarajan's ε-kernels; DHS §5 via minimum_depth on small hulls).
+//
+// Contract: lower ≤ σ ≤ upper = depth, upper ≤ (1+δ)·lower when converged. Proof sketch
+// (docs/algorithms.md "Approximate σ"): kernels K ⊆ X give an inner Minkowski sum, hence
+// σ(K) ≤ σ (lower); any direction u gives σ ≤ h_M(u)/|u| evaluated exactly on the full sets
+// (upper). Refinement adds the full sets' extreme points where the kernels' sum is low.
+//
+// Steps: (1) validation, an exact affine basis per set (orient3d), the column-grid ε-kernel W of
+// each set (O(n)); (2) rounds: exact σ of the kernels' hulls (minimum_depth), a batch of B
+// directions (σ's normal and the kernels' facet normals with the lowest Minkowski support), their
+// extreme points over W added to the kernels; (3) when W cannot improve the bound, the best
+// direction is certified on the full sets (exact argmax: floating filter, exact tournament on the
+// candidates; value by exact::accurate_value, rounded up); a failed certification adds the full
+// sets' extreme points of the batch to W and the kernels. Separated kernels: a facet normal of the
+// kernels' explicit Minkowski difference is tried as a separating direction, exactly.
+// Complexity: O(n + m) + rounds·O((|W_P| + |W_Q|)·B + k log k) + scans·O(n + m).
+#include <pendepth/approximate.hpp>
+#include <pendepth/depth3.hpp>
+#include <pendepth/polytope.hpp>
+
+#include "geometry/exact.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <set>
+#include <string>
+#include <tuple>
+#include <unordered_set>
+#include <vector>
+
+namespace pendepth {
+namespace {
+
+using exact::accurate_value;
+using exact::exact_sign;
+
+constexpr double kU = 0x1p-53;
+constexpr double kMaxCoordinate = 0x1p96;
+constexpr int kGrid = 64;                 // columns per axis of W (at most 6·64² = 24576 points)
+constexpr std::size_t kBatch = 32;        // directions per round
+constexpr std::size_t kMaxRounds = 400;
+constexpr std::size_t kMaxFullScans = 64;
+constexpr std::size_t kMaxDifferences = 1 << 18;  // explicit Minkowski difference (separated kernels)
+
+struct Rel {  // as RelativePose in src/convex3/depth3.cpp: q' = R q + (tq − tp), doubles
+  Eigen::Matrix3d Rp, R;
+  Vec3 tq, tp, t;  // t = fl(tq − tp), for floating estimates only
+};
+
+struct Cloud {
+  std::span<const Vec3> X;
+  std::string name;
+  Vec3 maxabs{0, 0, 0};       // per axis max |x_k| (bounds of the floating filters)
+  std::vector<int> W, K;      // working set and kernel (indices into X)
+  std::unordered_set<int> inW, inK;
+  bool add_W(int i) { return inW.insert(i).second ? (W.push_back(i), true) : false; }
+  bool add_K(int i) {
+    add_W(i);
+    return inK.insert(i).second ? (K.push_back(i), true) : false;
+  }
+};
+
+void validate(Cloud& c) {
+  if (c.X.empty()) throw InvalidInput(c.name + ": no points");
+  for (std::size_t i = 0; i < c.X.size(); ++i) {
+    const Vec3& x = c.X[i];
+    if (!x.allFinite()) throw InvalidInput(c.name + ": point " + std::to_string(i) + " is not finite");
+    for (int k = 0; k < 3; ++k) c.maxabs[k] = std::max(c.maxabs[k], std::abs(x[k]));
+  }
+  if (c.maxabs.maxCoeff() >= kMaxCoordinate)
+    throw InvalidInput(c.name + ": coordinates of magnitude 2^96 or more are not supported by the approximate depth");
+}
+
+// Four affinely independent points (exact predicates), or InvalidInput.
+std::array<int, 4> affine_basis(const Cloud& c) {
+  const auto& X = c.X;
+  const int n = static_cast<int>(X.size());
+  int b = -1, cc = -1, d = -1;
+  for (int i = 1; i < n && b < 0; ++i)
+    if (X[i] != X[0]) b = i;
+  for (int i = 1; b >= 0 && i < n && cc < 0; ++i)
+    if (!predicates::collinear3(X[0], X[b], X[i])) cc = i;
+  for (int i = 1; cc >= 0 && i < n && d < 0; ++i)
+    if (predicates::orient3d(X[0], X[b], X[cc], X[i]) != 0) d = i;
+  if (d < 0) throw InvalidInput(c.name + ": flat input (fewer than 4 affinely independent points)");
+  return {0, b, cc, d};
+}
+
+// The column-grid ε-kernel (AHV's simple kernel): per axis a, a G×G grid over the other two
+// coordinates' bounding box; the top and bottom point (in coordinate a) of each column.
+void column_kernel(Cloud& c) {
+  const auto& X = c.X;
+  Vec3 lo = X[0], hi = X[0];
+  for (const Vec3& x : X) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+  const int G = kGrid, GG = G * G;
+  auto cell = [&](double v, int k) {
+    const double w = hi[k] - lo[k];
+    if (!(w > 0)) return 0;
+    return std::clamp(static_cast<int>((v - lo[k]) / w * G), 0, G - 1);
+  };
+  std::vector<int> top(3 * GG, -1), bot(3 * GG, -1);
+  for (int i = 0; i < static_cast<int>(X.size()); ++i) {
+    const Vec3& x = X[i];
+    const int cx = cell(x[0], 0), cy = cell(x[1], 1), cz = cell(x[2], 2);
+    const int col[3] = {cy * G + cz, GG + cz * G + cx, 2 * GG + cx * G + cy};
+    for (int a = 0; a < 3; ++a) {
+      int& t = top[col[a]];
+      int& b = bot[col[a]];
+      if (t < 0 || x[a] > X[t][a]) t = i;
+      if (b < 0 || x[a] < X[b][a]) b = i;
+    }
+  }
+  for (int k = 0; k < 3 * GG; ++k)
+    if (top[k] >= 0) c.add_W(top[k]), c.add_W(bot[k]);
+}
+
+// Floating argmax of dirs[j]·x over the index set S (nullptr: all of X).
+void scan_max(const Cloud& c, const std::vector<int>* S, const std::vector<Vec3>& dirs, std::vector<int>& arg) {
+  const std::size_t B = dirs.size();
+  std::vector<double> best(B, -std::numeric_limits<double>::infinity());
+  arg.assign(B, -1);
+  auto visit = [&](int i) {
+    const Vec3& x = c.X[i];
+    for (std::size_t j = 0; j < B; ++j) {
+      const double f = dirs[j].x() * x.x() + dirs[j].y() * x.y() + dirs[j].z() * x.z();
+      if (f > best[j]) best[j] = f, arg[j] = i;
+    }
+  };
+  if (S)
+    for (int i : *S) visit(i);
+  else
+    for (int i = 0; i < static_cast<int>(c.X.size()); ++i) visit(i);
+}
+
+// The exact maximiser over S (nullptr: X) of φ(x), where w·x approximates φ(x) within `err` and
+// better(a, b) is the exact sign of φ(a) − φ(b): floating pass, candidates within 2·err of the
+// floating maximum, exact tournament among them.
+template <class Better>
+int exact_argmax(const Cloud& c, const std::vector<int>* S, const Vec3& w, double err, Better&& better) {
+  const int n = S ? static_cast<int>(S->size()) : static_cast<int>(c.X.size());
+  auto id = [&](int k) { return S ? (*S)[k] : k; };
+  double fmax = -std::numeric_limits<double>::infinity();
+  for (int k = 0; k < n; ++k) fmax = std::max(fmax, w.dot(c.X[id(k)]));
+  const double cut = fmax - 2 * err;
+  int best = -1;
+  for (int k = 0; k < n; ++k) {
+    const int i = id(k);
+    if (w.dot(c.X[i]) < cut) continue;
+    if (best < 0 || better(i, best) > 0) best = i;
+  }
+  return best;
+}
+
+// Exact support points of P (max u·p) and Q (min u·(R q)) for u in P's frame, and the certified
+// upper bound h_M(u)/|u| (0 when h_M(u) ≤ 0 exactly).
+struct Certified {
+  int p = -1, q = -1;
+  double upper = std::numeric_limits<double>::infinity();
+  bool separates = false;  // h_M(u) ≤ 0 exactly
+};
+
+Certified certify(const Cloud& P, const std::vector<int>* SP, const Cloud& Q, const std::vector<int>* SQ,
+                  const Rel& rel, const Vec3& u) {
+  const auto& R = rel.R;
+  const double ep = 3.02 * kU * (std::abs(u.x()) * P.maxabs.x() + std::abs(u.y()) * P.maxabs.y() +
+                                 std::abs(u.z()) * P.maxabs.z()) + 0x1p-1000;
+  const Vec3 w = -(R.transpose() * u);
+  double eq = 0x1p-1000;
+  for (int l = 0; l < 3; ++l) {
+    double ew = 0;
+    for (int k = 0; k < 3; ++k) ew += std::abs(R(k, l)) * std::abs(u[k]);
+    eq += (3.02 * kU * ew) * Q.maxabs[l] * 1.01 + 3.02 * kU * std::abs(w[l]) * Q.maxabs[l];
+  }
+  Certified r;
+  r.p = exact_argmax(P, SP, u, ep, [&](int a, int b) { return predicates::dot3_sign(u, P.X[a], P.X[b]); });
+  r.q = exact_argmax(Q, SQ, w, eq, [&](int a, int b) {
+    const Vec3 &qa = Q.X[a], &qb = Q.X[b];
+    return exact_sign([&](auto L) {  // −u·R(qa − qb)
+      auto s = L(0.0);
+      for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l) s = s - L(u[k]) * L(R(k, l)) * (L(qa[l]) - L(qb[l]));
+      return s;
+    });
+  });
+  const Vec3 &p = P.X[r.p], &q = Q.X[r.q];
+  auto h = [&](auto L) {  // u·p − u·(R q + tq − tp)
+    auto s = L(0.0);
+    for (int k = 0; k < 3; ++k) {
+      auto rq = L(R(k, 0)) * L(q[0]) + L(R(k, 1)) * L(q[1]) + L(R(k, 2)) * L(q[2]);
+      s = s + L(u[k]) * (L(p[k]) - rq - L(rel.tq[k]) + L(rel.tp[k]));
+    }
+    return s;
+  };
+  if (exact_sign(h) <= 0) {
+    r.separates = true;
+    r.upper = 0;
+    return r;
+  }
+  const double v = accurate_value(h) * (1 + 0x1p-50);  // ≥ h_M(u): accurate to ~1 ulp
+  const double norm_lo = std::sqrt(u.squaredNorm()) * (1 - 0x1p-50);
+  r.upper = v / norm_lo * (1 + 0x1p-50);
+  return r;
+}
+
+ConvexPolytope kernel_hull(Cloud& c) {
+  std::vector<Vec3> pts;
+  pts.reserve(c.K.size());
+  for (int i : c.K) pts.push_back(c.X[i]);
+  ConvexPolytope H = ConvexPolytope::hull(pts, c.name);  // K holds an affine basis: never flat
+  std::vector<int> keep;
+  keep.reserve(H.size());
+  for (std::size_t v = 0; v < H.size(); ++v) keep.push_back(c.K[H.input_index(v)]);
+  c.K = std::move(keep);  // the hull's vertices (interior points never matter again)
+  return H;
+}
+
+double est_h(const Rel& rel, const Vec3& u, const Vec3& p, const Vec3& q) {  // floating h_M(u)/|u|
+  return (u.dot(p) - u.dot(rel.R * q + rel.t)) / u.norm();
+}
+
+}  // namespace
+
+ApproxDepth3 approximate_minimum_depth(std::span<const Vec3> P_points, const Pose3& pose_p,
+                                       std::span<const Vec3> Q_points, const Pose3& pose_q, double delta) {
+  if (!(delta >= 1e-9 && delta < 1))
+    throw InvalidInput("approximate depth: delta must lie in [1e-9, 1), got " + std::to_string(delta));
+  if (!pose_p.translation.allFinite()) throw InvalidInput("pose of P: non-finite translation");
+  if (!pose_q.translation.allFinite()) throw InvalidInput("pose of Q: non-finite translation");
+  if (pose_p.translation.cwiseAbs().maxCoeff() >= kMaxCoordinate ||
+      pose_q.translation.cwiseAbs().maxCoeff() >= kMaxCoordinate)
+    throw InvalidInput("approximate depth: pose translations of magnitude 2^96 or more are not supported");
+  Rel rel;
+  rel.Rp = pose_p.matrix();
+  rel.R = rel.Rp.transpose() * pose_q.matrix();
+  rel.tq = rel.Rp.transpose() * pose_q.translation;
+  rel.tp = rel.Rp.transpose() * pose_p.translation;
+  rel.t = rel.tq - rel.tp;
+
+  Cloud P, Q;
+  P.X = P_points, P.name = "P", Q.X = Q_points, Q.name = "Q";
+  validate(P), validate(Q);
+  for (Cloud* c : {&P, &Q}) {
+    for (int i : affine_basis(*c)) c->add_K(i);
+    if (c->X.size() <= 6u * kGrid * kGrid) {
+      for (int i = 0; i < static_cast<int>(c->X.size()); ++i) c->add_W(i);
+    } else {
+      column_kernel(*c);
+    }
+    // Initial kernel: W's extreme points in the 26 directions of the cube's faces, edges, corners.
+    std::vector<Vec3> dirs;
+    for (int x = -1; x <= 1; ++x)
+      for (int y = -1; y <= 1; ++y)
+        for (int z = -1; z <= 1; ++z)
+          if (x || y || z) dirs.emplace_back(x, y, z);
+    std::vector<int> arg;
+    scan_max(*c, &c->W, dirs, arg);
+    for (int i : arg) c->add_K(i);
+  }
+  const bool w_is_all = P.W.size() == P.X.size() && Q.W.size() == Q.X.size();
+
+  ApproxDepth3 out;
+  double lower = 0, upper = std::numeric_limits<double>::infinity();
+  Vec3 best_u = Vec3::Zero();  // P's frame, the direction of `upper`
+  std::set<std::tuple<int, int, int, int>> scanned;  // facets whose normals were already scanned on W
+  std::size_t full_scans = 0;
+  bool done = false;
+
+  auto full_certify = [&](const Vec3& u) {
+    ++full_scans;
+    Certified c = certify(P, nullptr, Q, nullptr, rel, u);
+    if (c.upper < upper) upper = c.upper, best_u = u;
+    return c;
+  };
+  // Repairs W where it is too coarse: the full sets' extreme points for `dirs` (P's frame).
+  auto repair = [&](const std::vector<Vec3>& dirs) {
+    ++full_scans;
+    std::vector<Vec3> dq;
+    for (const Vec3& u : dirs) dq.push_back(-(rel.R.transpose() * u));
+    std::vector<int> ap, aq;
+    scan_max(P, nullptr, dirs, ap), scan_max(Q, nullptr, dq, aq);
+    bool grew = false;
+    for (int i : ap) grew |= P.add_K(i);
+    for (int i : aq) grew |= Q.add_K(i);
+    return grew;
+  };
+
+  std::size_t round = 0;
+  for (; round < kMaxRounds && !done && full_scans < kMaxFullScans; ++round) {
+    ConvexPolytope HP = kernel_hull(P), HQ = kernel_hull(Q);
+    const Depth3 s = minimum_depth(HP, pose_p, HQ, pose_q);
+
+    if (!s.overlapping) {
+      // Separated (or touching) kernels: a facet of their explicit Minkowski difference whose
+      // plane has 0 outside (or on it) is a candidate separating direction of the full sets.
+      lower = 0;
+      if (HP.size() * HQ.size() > kMaxDifferences) break;
+      std::vector<Vec3> diff;
+      for (const Vec3& p : HP.vertices())
+        for (const Vec3& q : HQ.vertices()) diff.push_back(p - (rel.R * q + rel.t));
+      Vec3 u = Vec3::Zero();
+      try {
+        ConvexPolytope D = ConvexPolytope::hull(diff, "kernels' Minkowski difference");
+        double most = std::numeric_limits<double>::infinity();
+        for (const auto& t : D.triangles()) {
+          Vec3 n = (D[t[1]] - D[t[0]]).cross(D[t[2]] - D[t[0]]);
+          const double len = n.norm();
+          if (!(len > 0)) continue;
+          const double off = n.dot(D[t[0]]) / len;
+          if (off < most) most = off, u = n;
+        }
+      } catch (const InvalidInput&) {  // rounded differences flat: no candidate
+      }
+      if (u == Vec3::Zero()) break;
+      const Certified cw = certify(P, &P.W, Q, &Q.W, rel, u);
+      if (!cw.separates) {
+        if (!(P.add_K(cw.p) | Q.add_K(cw.q))) {  // the kernels themselves are not separated by u
+          full_certify(u);
+          break;
+        }
+        continue;
+      }
+      const Certified cx = w_is_all ? cw : full_certify(u);
+      if (w_is_all) ++full_scans, upper = 0, best_u = u;
+      if (cx.separates) {
+        done = true;
+        break;
+      }
+      P.add_K(cx.p), Q.add_K(cx.q);
+      continue;
+    }
+
+    lower = s.lower_bound * (1 - 0x1p-48);  // σ of the kernels, a few ulps from exact: rounded down
+    const Vec3 u0 = rel.Rp.transpose() * s.normal;
+    // Candidate directions: σ's normal, then the kernels' facet normals by their (floating)
+    // Minkowski support, lowest first, skipping facets already scanned.
+    struct Cand {
+      double h;
+      Vec3 u;
+      std::tuple<int, int, int, int> key;
+    };
+    std::vector<Cand> cands;
+    const auto TP = HP.triangles(), TQ = HQ.triangles();
+    for (const auto& t : TP) {
+      Vec3 n = (HP[t[1]] - HP[t[0]]).cross(HP[t[2]] - HP[t[0]]);
+      if (!(n.squaredNorm() > 0)) continue;
+      const int qv = HQ.support(-(rel.R.transpose() * n));
+      std::array<int, 3> k{P.K[t[0]], P.K[t[1]], P.K[t[2]]};
+      std::sort(k.begin(), k.end());
+      cands.push_back({est_h(rel, n, HP[t[0]], HQ[qv]), n, {0, k[0], k[1], k[2]}});
+    }
+    for (const auto& t : TQ) {
+      Vec3 m = (HQ[t[1]] - HQ[t[0]]).cross(HQ[t[2]] - HQ[t[0]]);
+      if (!(m.squaredNorm() > 0)) continue;
+      const Vec3 u = -(rel.R * m);
+      const int pv = HP.support(u);
+      std::array<int, 3> k{Q.K[t[0]], Q.K[t[1]], Q.K[t[2]]};
+      std::sort(k.begin(), k.end());
+      cands.push_back({est_h(rel, u, HP[pv], HQ[t[0]]), u, {1, k[0], k[1], k[2]}});
+    }
+    std::sort(cands.begin(), cands.end(), [](const Cand& a, const Cand& b) { return a.h < b.h; });
+    std::vector<Vec3> dirs{u0};
+    for (const Cand& c : cands) {
+      if (dirs.size() >= kBatch) break;
+      if (scanned.insert(c.key).second) dirs.push_back(c.u);
+    }
+    // Extreme points over W.
+    std::vector<Vec3> dq;
+    for (const Vec3& u : dirs) dq.push_back(-(rel.R.transpose() * u));
+    std::vector<int> ap, aq;
+    scan_max(P, &P.W, dirs, ap), scan_max(Q, &Q.W, dq, aq);
+    bool grew = false;
+    std::size_t best = 0;
+    double best_h = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < dirs.size(); ++j) {
+      grew |= P.add_K(ap[j]);
+      grew |= Q.add_K(aq[j]);
+      const double h = est_h(rel, dirs[j], P.X[ap[j]], Q.X[aq[j]]);
+      if (h < best_h) best_h = h, best = j;
+    }
+    // Certify on the full sets when W's bound is good enough or W cannot improve any further.
+    if (best_h <= (1 + delta) * lower || !grew) {
+      const Certified c = full_certify(dirs[best]);
+      if (upper <= (1 + delta) * lower) {
+        done = true;
+        break;
+      }
+      if (w_is_all) {
+        if (!grew) break;  // nothing left to add: stuck at the rounding level
+        continue;
+      }
+      const bool added = (P.add_K(c.p) | Q.add_K(c.q));
+      if (!repair(dirs) && !added && !grew) break;
+    }
+  }
+  if (!done && !(upper < std::numeric_limits<double>::infinity()) && full_scans < kMaxFullScans + 8) {
+    // Always return a certified upper bound: the kernels' last σ direction, or an axis.
+    ConvexPolytope HP = kernel_hull(P), HQ = kernel_hull(Q);
+    const Depth3 s = minimum_depth(HP, pose_p, HQ, pose_q);
+    full_certify(s.overlapping ? Vec3(rel.Rp.transpose() * s.normal) : Vec3(1, 0, 0));
+  }
+
+  out.lower_bound = lower;
+  out.upper_bound = out.depth = upper;
+  out.converged = done;
+  out.overlapping = upper > 0;
+  if (best_u != Vec3::Zero()) {
+    out.normal = rel.Rp * best_u.normalized();
+    out.translation = out.depth * out.normal;
+  }
+  out.kernel_p = P.K.size(), out.kernel_q = Q.K.size();
+  out.working_p = P.W.size(), out.working_q = Q.W.size();
+  out.rounds = round;
+  out.full_scans = full_scans;
+  return out;
+}
+
+}  // namespace pendepth
