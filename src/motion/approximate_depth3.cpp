@@ -25,6 +25,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <set>
 #include <string>
 #include <tuple>
@@ -39,8 +40,10 @@ using exact::exact_sign;
 
 constexpr double kU = 0x1p-53;
 constexpr double kMaxCoordinate = 0x1p96;
-constexpr int kGrid = 64;                 // columns per axis of W (at most 6·64² = 24576 points)
-constexpr std::size_t kBatch = 32;        // directions per round
+constexpr int kGridCoarse = 64;           // columns per axis of W (at most 6·G² points): δ ≥ 1e-2
+constexpr int kGridFine = 128;            // δ < 1e-2 (W's error must stay well below δ·σ)
+constexpr std::size_t kBatch = 32;        // directions per round at least (and per repair scan)
+constexpr std::size_t kBatchMax = 512;    // at most: every kernel facet below the target, lowest first
 constexpr std::size_t kMaxRounds = 400;
 constexpr std::size_t kMaxFullScans = 64;
 constexpr std::size_t kMaxDifferences = 1 << 18;  // explicit Minkowski difference (separated kernels)
@@ -91,26 +94,29 @@ std::array<int, 4> affine_basis(const Cloud& c) {
 
 // The column-grid ε-kernel (AHV's simple kernel): per axis a, a G×G grid over the other two
 // coordinates' bounding box; the top and bottom point (in coordinate a) of each column.
-void column_kernel(Cloud& c) {
+void column_kernel(Cloud& c, int G) {
   const auto& X = c.X;
   Vec3 lo = X[0], hi = X[0];
   for (const Vec3& x : X) lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
-  const int G = kGrid, GG = G * G;
-  auto cell = [&](double v, int k) {
-    const double w = hi[k] - lo[k];
-    if (!(w > 0)) return 0;
-    return std::clamp(static_cast<int>((v - lo[k]) / w * G), 0, G - 1);
-  };
+  const int GG = G * G;
+  Vec3 scale;
+  for (int k = 0; k < 3; ++k) {
+    scale[k] = G / (hi[k] - lo[k]);  // an extent of 0 or a tiny one: every point in column 0
+    if (!std::isfinite(scale[k])) scale[k] = 0;
+  }
+  auto cell = [&](double v, int k) { return std::clamp(static_cast<int>((v - lo[k]) * scale[k]), 0, G - 1); };
+  // The columns' current extreme values are kept next to their indices (no random reads of X).
   std::vector<int> top(3 * GG, -1), bot(3 * GG, -1);
+  std::vector<double> topv(3 * GG, -std::numeric_limits<double>::infinity()),
+      botv(3 * GG, std::numeric_limits<double>::infinity());
   for (int i = 0; i < static_cast<int>(X.size()); ++i) {
     const Vec3& x = X[i];
     const int cx = cell(x[0], 0), cy = cell(x[1], 1), cz = cell(x[2], 2);
     const int col[3] = {cy * G + cz, GG + cz * G + cx, 2 * GG + cx * G + cy};
     for (int a = 0; a < 3; ++a) {
-      int& t = top[col[a]];
-      int& b = bot[col[a]];
-      if (t < 0 || x[a] > X[t][a]) t = i;
-      if (b < 0 || x[a] < X[b][a]) b = i;
+      const int k = col[a];
+      if (x[a] > topv[k]) topv[k] = x[a], top[k] = i;
+      if (x[a] < botv[k]) botv[k] = x[a], bot[k] = i;
     }
   }
   for (int k = 0; k < 3 * GG; ++k)
@@ -244,10 +250,11 @@ ApproxDepth3 approximate_minimum_depth(std::span<const Vec3> P_points, const Pos
   validate(P), validate(Q);
   for (Cloud* c : {&P, &Q}) {
     for (int i : affine_basis(*c)) c->add_K(i);
-    if (c->X.size() <= 6u * kGrid * kGrid) {
+    const int G = delta < 1e-2 ? kGridFine : kGridCoarse;
+    if (c->X.size() <= 6u * G * G) {
       for (int i = 0; i < static_cast<int>(c->X.size()); ++i) c->add_W(i);
     } else {
-      column_kernel(*c);
+      column_kernel(*c, G);
     }
     // Initial kernel: W's extreme points in the 26 directions of the cube's faces, edges, corners.
     std::vector<Vec3> dirs;
@@ -265,7 +272,9 @@ ApproxDepth3 approximate_minimum_depth(std::span<const Vec3> P_points, const Pos
   double lower = 0, upper = std::numeric_limits<double>::infinity();
   Vec3 best_u = Vec3::Zero();  // P's frame, the direction of `upper`
   std::set<std::tuple<int, int, int, int>> scanned;  // facets whose normals were already scanned on W
+  std::map<std::tuple<int, int, int, int>, double> hcache;  // facets' floating Minkowski supports
   std::size_t full_scans = 0;
+  double best_estimate = std::numeric_limits<double>::infinity();  // lowest floating h over W
   bool done = false;
 
   auto full_certify = [&](const Vec3& u) {
@@ -341,30 +350,46 @@ ApproxDepth3 approximate_minimum_depth(std::span<const Vec3> P_points, const Pos
       Vec3 u;
       std::tuple<int, int, int, int> key;
     };
+    // A facet's Minkowski support only grows as the other kernel grows, so a cached value below
+    // which the facet is not needed stays valid: only new or low facets are re-evaluated.
     std::vector<Cand> cands;
-    const auto TP = HP.triangles(), TQ = HQ.triangles();
-    for (const auto& t : TP) {
+    const double target_old = best_estimate / (1 + delta);
+    auto consider = [&](const std::tuple<int, int, int, int>& key, const Vec3& u, auto&& eval) {
+      if (scanned.count(key)) return;
+      auto it = hcache.find(key);
+      if (it != hcache.end() && !(it->second < target_old)) {
+        cands.push_back({it->second, u, key});
+        return;
+      }
+      const double h = eval();
+      hcache[key] = h;
+      cands.push_back({h, u, key});
+    };
+    for (const auto& t : HP.triangles()) {
       Vec3 n = (HP[t[1]] - HP[t[0]]).cross(HP[t[2]] - HP[t[0]]);
       if (!(n.squaredNorm() > 0)) continue;
-      const int qv = HQ.support(-(rel.R.transpose() * n));
       std::array<int, 3> k{P.K[t[0]], P.K[t[1]], P.K[t[2]]};
       std::sort(k.begin(), k.end());
-      cands.push_back({est_h(rel, n, HP[t[0]], HQ[qv]), n, {0, k[0], k[1], k[2]}});
+      consider({0, k[0], k[1], k[2]}, n, [&] {
+        return est_h(rel, n, HP[t[0]], HQ[HQ.support(-(rel.R.transpose() * n))]);
+      });
     }
-    for (const auto& t : TQ) {
+    for (const auto& t : HQ.triangles()) {
       Vec3 m = (HQ[t[1]] - HQ[t[0]]).cross(HQ[t[2]] - HQ[t[0]]);
       if (!(m.squaredNorm() > 0)) continue;
       const Vec3 u = -(rel.R * m);
-      const int pv = HP.support(u);
       std::array<int, 3> k{Q.K[t[0]], Q.K[t[1]], Q.K[t[2]]};
       std::sort(k.begin(), k.end());
-      cands.push_back({est_h(rel, u, HP[pv], HQ[t[0]]), u, {1, k[0], k[1], k[2]}});
+      consider({1, k[0], k[1], k[2]}, u, [&] { return est_h(rel, u, HP[HP.support(u)], HQ[t[0]]); });
     }
     std::sort(cands.begin(), cands.end(), [](const Cand& a, const Cand& b) { return a.h < b.h; });
+    // Every facet below the target lower bound needs refining: take them all (up to kBatchMax).
+    const double target = best_estimate / (1 + delta);
     std::vector<Vec3> dirs{u0};
     for (const Cand& c : cands) {
-      if (dirs.size() >= kBatch) break;
-      if (scanned.insert(c.key).second) dirs.push_back(c.u);
+      if (dirs.size() >= kBatchMax || (dirs.size() >= kBatch && !(c.h < target))) break;
+      scanned.insert(c.key);
+      dirs.push_back(c.u);
     }
     // Extreme points over W.
     std::vector<Vec3> dq;
@@ -380,6 +405,7 @@ ApproxDepth3 approximate_minimum_depth(std::span<const Vec3> P_points, const Pos
       const double h = est_h(rel, dirs[j], P.X[ap[j]], Q.X[aq[j]]);
       if (h < best_h) best_h = h, best = j;
     }
+    best_estimate = std::min(best_estimate, best_h);
     // Certify on the full sets when W's bound is good enough or W cannot improve any further.
     if (best_h <= (1 + delta) * lower || !grew) {
       const Certified c = full_certify(dirs[best]);
@@ -392,6 +418,7 @@ ApproxDepth3 approximate_minimum_depth(std::span<const Vec3> P_points, const Pos
         continue;
       }
       const bool added = (P.add_K(c.p) | Q.add_K(c.q));
+      dirs.resize(std::min(dirs.size(), kBatch));
       if (!repair(dirs) && !added && !grew) break;
     }
   }
