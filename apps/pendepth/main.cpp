@@ -2,7 +2,7 @@
 // (include/pendepth/pendepth.hpp).
 //
 //   pendepth depth P Q [--offset X,Y[,Z]] [--direction X,Y[,Z]] [--separate] [--json] [--svg FILE]
-//                      [--html FILE] [--rotate-q QW,QX,QY,QZ] [--rotate-p QW,QX,QY,QZ]
+//                      [--html FILE] [--rotate-q QW,QX,QY,QZ] [--rotate-p QW,QX,QY,QZ] [--approximate DELTA]
 //   pendepth batch P Q --queries FILE [--json] [--threads N] [--progress] [--rotate-q ...] [--rotate-p ...]
 //   pendepth nfp P Q [--json]
 //
@@ -216,13 +216,46 @@ void write_svg(const std::string& path, const Pair2& pair, const Vec2& t, const 
 }
 
 struct DepthArgs {
-  std::string p, q, offset, direction, svg, html, rotate_p, rotate_q;
+  std::string p, q, offset, direction, svg, html, rotate_p, rotate_q, approximate;
   bool separate = false, json = false;
 };
 
 void reject_rotations(const std::string& rotate_p, const std::string& rotate_q) {
   if (!rotate_q.empty()) throw InvalidInput("--rotate-q: rotations apply to 3D shapes only");
   if (!rotate_p.empty()) throw InvalidInput("--rotate-p: rotations apply to 3D shapes only");
+}
+
+// --approximate DELTA: certified (1+δ)-approximate σ of the point sets' hulls, no hull built
+// (include/pendepth/approximate.hpp).
+int run_approximate3(const DepthArgs& a, const ShapeText& p, const ShapeText& q, const Pose3& pose_p,
+                     const Pose3& pose_q) {
+  if (!a.direction.empty() || !a.html.empty()) throw InvalidInput("--approximate: answers σ only (no --direction, --html)");
+  double delta = 0;
+  const char* end = a.approximate.data() + a.approximate.size();
+  if (auto [ptr, ec] = std::from_chars(a.approximate.data(), end, delta); ec != std::errc() || ptr != end)
+    throw InvalidInput("--approximate: '" + a.approximate + "' is not a number");
+  const auto P = io::parse_mesh_points(p.text, p.format, p.source), Q = io::parse_mesh_points(q.text, q.format, q.source);
+  const pendepth::ApproxDepth3 r = pendepth::approximate_minimum_depth(P, pose_p, Q, pose_q, delta);
+  std::string out;
+  auto vec = [&](const Vec3& v) {
+    out += '[';
+    for (int k = 0; k < 3; ++k) io::append_double(out, v[k]), out += k < 2 ? "," : "]";
+  };
+  auto num = [&](const char* key, double v, bool last = false) {
+    out += a.json ? std::string("\"") + key + "\":" : std::string(key) + " ";
+    io::append_double(out, v);
+    out += a.json ? (last ? "" : ",") : "\n";
+  };
+  if (a.json) out += '{';
+  num("depth", r.depth), num("lower_bound", r.lower_bound), num("upper_bound", r.upper_bound);
+  out += a.json ? "\"normal\":" : "normal ", vec(r.normal), out += a.json ? "," : "\n";
+  out += a.json ? "\"translation\":" : "translation ", vec(r.translation), out += a.json ? "," : "\n";
+  out += a.json ? "\"converged\":" : "converged ", out += r.converged ? "true" : "false", out += a.json ? "," : "\n";
+  out += a.json ? "\"overlapping\":" : "overlapping ", out += r.overlapping ? "true" : "false", out += a.json ? "," : "\n";
+  num("kernel_p", double(r.kernel_p)), num("kernel_q", double(r.kernel_q), true);
+  out += a.json ? "}\n" : "";
+  write_stdout(out);
+  return 0;
 }
 
 int run_depth3(const DepthArgs& a, const ShapeText& p, const ShapeText& q) {
@@ -235,6 +268,7 @@ int run_depth3(const DepthArgs& a, const ShapeText& p, const ShapeText& q) {
     d = parse_vec3(a.direction, "--direction");
     if (d->isZero(0)) throw InvalidInput("--direction: the direction is zero");
   }
+  if (!a.approximate.empty()) return run_approximate3(a, p, q, Pose3(rp, Vec3::Zero()), Pose3(rq, t));
   const Pair3 pair(make_shape3(p, "P"), make_shape3(q, "Q"));
   const Pose3 pose_p(rp, Vec3::Zero()), pose_q(rq, t);
   const Depth3 r = !d ? pair.minimum(pose_p, pose_q)
@@ -258,6 +292,7 @@ int run_depth(const DepthArgs& a) {
   const auto [p, q] = load_pair(a.p, a.q);
   if (p.dimension() == 3) return run_depth3(a, p, q);
   reject_rotations(a.rotate_p, a.rotate_q);
+  if (!a.approximate.empty()) throw InvalidInput("--approximate: 3D point sets only");
   if (!a.html.empty()) throw InvalidInput("--html draws 3D shapes only (use --svg for 2D)");
   const Shape2 P = make_shape2(p, "P");
   const Shape2 Q = make_shape2(q, "Q");
@@ -474,6 +509,9 @@ int main(int argc, char** argv) {
       ->type_name("FILE");
   depth->add_option("--rotate-q", da.rotate_q, "3D: rotation of Q about its origin, before the offset (quaternion, normalised)")
       ->type_name("QW,QX,QY,QZ");
+  depth->add_option("--approximate", da.approximate,
+                    "3D: certified (1+DELTA)-approximate σ of huge point sets, no hull built (DELTA in [1e-9, 1))")
+      ->type_name("DELTA");
   depth->add_option("--rotate-p", da.rotate_p, "3D: rotation of P about its origin (quaternion, normalised)")
       ->type_name("QW,QX,QY,QZ");
 
