@@ -1,6 +1,6 @@
 # Type stubs of the pendepth package (the extension _pendepth re-exported, plus pendepth.plot).
 from types import SimpleNamespace
-from typing import Any, Literal, Optional, Sequence, Tuple, Union, overload
+from typing import Any, Dict, Literal, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -77,6 +77,9 @@ class Pair2:
                    progress: bool = ...) -> Depth2Result: ...
 
 def no_fit_polygon(P: Shape2, Q: Shape2) -> SimpleNamespace: ...
+
+def approximate_minimum_depth(P: ArrayLike, Q: ArrayLike, delta: float, translation: Optional[ArrayLike] = ...,
+                              rotation: Optional[ArrayLike] = ...) -> Dict[str, Any]: ...
 
 class Shape3:
     """A validated convex polytope (the convex hull of a point set)."""

@@ -696,6 +696,49 @@ and points ((p, 2): exact fits). Vertices rounded to the nearest double.)");
                         return Shape3::hull(v, st[1].cast<std::string>());
                       }));
 
+  // ---- (1+δ)-approximate σ of huge 3D point sets (include/pendepth/approximate.hpp) ----
+  m.def("approximate_minimum_depth", [](const py::object& P, const py::object& Q, double delta, const py::object& translation,
+                                        const py::object& rotation) {
+          auto cloud = [](const py::object& o, const char* what) {
+            Array a = py::cast<Array>(o);
+            if (a.ndim() != 2 || a.shape(1) != 3)
+              throw InvalidInput(std::string(what) + ": expected an (n, 3) array of points, got shape " + shape_text(a));
+            std::vector<Vec3> v(static_cast<std::size_t>(a.shape(0)));
+            for (std::size_t i = 0; i < v.size(); ++i) v[i] = Vec3(a.data()[3 * i], a.data()[3 * i + 1], a.data()[3 * i + 2]);
+            return v;
+          };
+          const std::vector<Vec3> vp = cloud(P, "P"), vq = cloud(Q, "Q");
+          Pose3 pose_q;
+          if (!translation.is_none()) {
+            Points<3> t = points<3>(translation, "translation");
+            if (!t.single) throw InvalidInput("translation: expected one (3,) vector");
+            pose_q.translation = t.v[0];
+          }
+          if (!rotation.is_none()) {
+            Points<4> q = points<4>(rotation, "rotation");
+            if (!q.single) throw InvalidInput("rotation: expected one (4,) quaternion w, x, y, z");
+            pose_q.rotation = Eigen::Quaterniond(q.v[0][0], q.v[0][1], q.v[0][2], q.v[0][3]);
+          }
+          ApproxDepth3 r;
+          {
+            py::gil_scoped_release nogil;
+            r = approximate_minimum_depth(vp, Pose3(), vq, pose_q, delta);
+          }
+          py::dict d;
+          d["depth"] = r.depth, d["lower_bound"] = r.lower_bound, d["upper_bound"] = r.upper_bound;
+          d["normal"] = py::make_tuple(r.normal.x(), r.normal.y(), r.normal.z());
+          d["translation"] = py::make_tuple(r.translation.x(), r.translation.y(), r.translation.z());
+          d["converged"] = r.converged, d["overlapping"] = r.overlapping;
+          d["kernel_p"] = r.kernel_p, d["kernel_q"] = r.kernel_q;
+          return d;
+        },
+        py::arg("P"), py::arg("Q"), py::arg("delta"), py::arg("translation") = py::none(), py::arg("rotation") = py::none(),
+        "approximate_minimum_depth(P, Q, delta, translation=None, rotation=None) -> dict\n\n"
+        "Certified (1+delta)-approximate minimum depth of the convex hulls of two (n, 3) point arrays, Q posed by\n"
+        "translation (3,) and rotation (w, x, y, z), without building the hulls. Keys: depth (== upper_bound, the\n"
+        "length of a separating move), lower_bound, upper_bound (lower <= sigma <= upper <= (1+delta)*lower when\n"
+        "converged), normal, translation, converged, overlapping, kernel_p, kernel_q. delta in [1e-9, 1).");
+
   // ---- Pair3 ----
   auto pose_batch = [](const py::object& translations, const py::object& rotations, bool& single) {
     Points<3> ts = points<3>(translations, "translations");
