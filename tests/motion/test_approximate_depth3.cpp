@@ -137,6 +137,48 @@ TEST(ApproximateDepth3, HundredThousandPointsUseTheColumnKernel) {
   }
 }
 
+// Beyond the exact hull's reach in a test (3·10⁵ points, W a column kernel, repairs possible):
+// the certificates checked directly on the full sets in long double. upper = h_M(normal) (the
+// exact support value along the returned normal); lower ≤ h_M(u) for every u, probed on random
+// directions and on directions near the returned normal (where an overestimated lower bound
+// would show). Long double evaluation errors are below 1e-15 here; 1e-12 is the slack.
+long double support_gap(const std::vector<Vec3>& P, const std::vector<Vec3>& Q, const Pose3& pq, const Vec3& u) {
+  const Eigen::Matrix3d R = pq.matrix();
+  long double hp = -1e300L, mq = 1e300L;
+  for (const Vec3& p : P) hp = std::max(hp, (long double)u.x() * p.x() + (long double)u.y() * p.y() + (long double)u.z() * p.z());
+  for (const Vec3& q : Q) {
+    long double v = 0;
+    for (int k = 0; k < 3; ++k) {
+      long double c = pq.translation[k];
+      for (int l = 0; l < 3; ++l) c += (long double)R(k, l) * q[l];
+      v += (long double)u[k] * c;
+    }
+    mq = std::min(mq, v);
+  }
+  return (hp - mq) / std::sqrt((long double)u.squaredNorm());
+}
+
+TEST(ApproximateDepth3, LargeSetsCertificatesOnTheFullSets) {
+  std::mt19937_64 g(81);
+  const std::vector<Vec3> P = ellipsoid(300000, Vec3(1.5, 1, 1.2), 82), Q = cloud(300000, 1.0, 83);
+  const Pose3 pq(Eigen::Quaterniond(1, 0.2, 0.3, 0.1), Vec3(0.2, 0.1, 0));
+  for (double delta : {1e-2, 1e-3}) {
+    const ApproxDepth3 r = approximate_minimum_depth(P, Pose3(), Q, pq, delta);
+    ASSERT_TRUE(r.converged);
+    EXPECT_LE(r.upper_bound, (1 + delta) * r.lower_bound);
+    EXPECT_LT(r.working_p, P.size());
+    const long double h = support_gap(P, Q, pq, r.normal);
+    EXPECT_NEAR(double(h), r.upper_bound, 1e-12 * r.upper_bound);
+    EXPECT_GE(r.upper_bound, double(h));
+    std::normal_distribution<double> N;
+    for (int i = 0; i < 120; ++i) {
+      const double spread = i < 40 ? 1.0 : i < 80 ? 1e-2 : 1e-3;
+      const Vec3 u = (r.normal + spread * Vec3(N(g), N(g), N(g))).normalized();
+      EXPECT_GE(double(support_gap(P, Q, pq, u)), r.lower_bound * (1 - 1e-12)) << i;
+    }
+  }
+}
+
 TEST(ApproximateDepth3, SmallerDeltaNeverLooser) {
   const std::vector<Vec3> P = ellipsoid(5000, Vec3(1, 1, 1), 31), Q = ellipsoid(5000, Vec3(1, 1, 1), 32);
   const Pose3 pq(Vec3(0.3, 0.1, -0.2));
