@@ -28,9 +28,10 @@
 // Cost: O(n + m) for W, then per refinement round O(|W|·B) scans plus the exact σ of the kernels'
 // hulls (O(k log k)), and a few O(n + m) certification scans; kernel sizes grow like O(1/δ) for
 // round shapes (the ε-kernel bound for d = 3), far less for polytopes with few faces.
-// Limits: δ in [1e-9, 1) (the certificates carry a relative rounding of ~1e-15); coordinates and
-// translations of magnitude below 2^96 (the exact engines' comfort band, docs/robustness.md; no
-// power-of-two rescaling here). A touching pair is certified σ = 0 only when a floating
+// Limits: δ in [1e-9, 1) (the certificates carry a relative rounding of ~1e-15). Magnitudes: a
+// pair whose largest coordinate or translation lies outside [2^-60, 2^60) is answered on copies
+// scaled by a power of two (lengths scaled back exactly, as the front door does,
+// docs/robustness.md); a coordinate with no exact value at that scale is InvalidInput. A touching pair is certified σ = 0 only when a floating
 // direction separates exactly (always for contacts along axis-aligned planes); otherwise the
 // answer is lower = 0, upper = a few ulps of the shapes' size, converged = false.
 #pragma once
@@ -62,7 +63,8 @@ struct ApproxDepth3 {
 /// header comment: certified lower ≤ σ ≤ upper = depth with upper ≤ (1+δ)·lower when converged
 /// (always, in every test and benchmark; the refinement is capped at 400 rounds and 64 full scans).
 /// Throws InvalidInput for: empty or flat point sets (fewer than 4 affinely independent points),
-/// non-finite or too large (≥ 2^96) coordinates, bad poses, δ not in [1e-9, 1).
+/// non-finite coordinates, coordinates with no exact value at the pair's power-of-two scale, bad
+/// poses, δ not in [1e-9, 1).
 ApproxDepth3 approximate_minimum_depth(std::span<const Vec3> P_points, const Pose3& pose_p,
                                        std::span<const Vec3> Q_points, const Pose3& pose_q, double delta);
 

@@ -39,7 +39,7 @@ using exact::accurate_value;
 using exact::exact_sign;
 
 constexpr double kU = 0x1p-53;
-constexpr double kMaxCoordinate = 0x1p96;
+constexpr double kComfortHi = 0x1p60, kComfortLo = 0x1p-60;  // no rescaling inside this band
 constexpr int kGridCoarse = 64;           // columns per axis of W (at most 6·G² points): δ ≥ 1e-2
 constexpr int kGridFine = 128;            // δ < 1e-2 (W's error must stay well below δ·σ)
 constexpr std::size_t kBatch = 32;        // directions per round at least (and per repair scan)
@@ -73,8 +73,6 @@ void validate(Cloud& c) {
     if (!x.allFinite()) throw InvalidInput(c.name + ": point " + std::to_string(i) + " is not finite");
     for (int k = 0; k < 3; ++k) c.maxabs[k] = std::max(c.maxabs[k], std::abs(x[k]));
   }
-  if (c.maxabs.maxCoeff() >= kMaxCoordinate)
-    throw InvalidInput(c.name + ": coordinates of magnitude 2^96 or more are not supported by the approximate depth");
 }
 
 // Four affinely independent points (exact predicates), or InvalidInput.
@@ -229,15 +227,10 @@ double est_h(const Rel& rel, const Vec3& u, const Vec3& p, const Vec3& q) {  // 
 
 }  // namespace
 
-ApproxDepth3 approximate_minimum_depth(std::span<const Vec3> P_points, const Pose3& pose_p,
-                                       std::span<const Vec3> Q_points, const Pose3& pose_q, double delta) {
-  if (!(delta >= 1e-9 && delta < 1))
-    throw InvalidInput("approximate depth: delta must lie in [1e-9, 1), got " + std::to_string(delta));
-  if (!pose_p.translation.allFinite()) throw InvalidInput("pose of P: non-finite translation");
-  if (!pose_q.translation.allFinite()) throw InvalidInput("pose of Q: non-finite translation");
-  if (pose_p.translation.cwiseAbs().maxCoeff() >= kMaxCoordinate ||
-      pose_q.translation.cwiseAbs().maxCoeff() >= kMaxCoordinate)
-    throw InvalidInput("approximate depth: pose translations of magnitude 2^96 or more are not supported");
+namespace {
+
+ApproxDepth3 approximate_in_band(std::span<const Vec3> P_points, const Pose3& pose_p, std::span<const Vec3> Q_points,
+                                 const Pose3& pose_q, double delta) {
   Rel rel;
   rel.Rp = pose_p.matrix();
   rel.R = rel.Rp.transpose() * pose_q.matrix();
@@ -442,6 +435,48 @@ ApproxDepth3 approximate_minimum_depth(std::span<const Vec3> P_points, const Pos
   out.rounds = round;
   out.full_scans = full_scans;
   return out;
+}
+
+}  // namespace
+
+// The numeric domain (as src/front/scale.hpp, without a hull to measure edges): inputs whose
+// largest magnitude lies outside [2^-60, 2^60) are answered on copies scaled by 2^-e (e its binary
+// exponent), and lengths scaled back; a coordinate that scaling would round is InvalidInput.
+ApproxDepth3 approximate_minimum_depth(std::span<const Vec3> P_points, const Pose3& pose_p,
+                                       std::span<const Vec3> Q_points, const Pose3& pose_q, double delta) {
+  if (!(delta >= 1e-9 && delta < 1))
+    throw InvalidInput("approximate depth: delta must lie in [1e-9, 1), got " + std::to_string(delta));
+  if (!pose_p.translation.allFinite()) throw InvalidInput("pose of P: non-finite translation");
+  if (!pose_q.translation.allFinite()) throw InvalidInput("pose of Q: non-finite translation");
+  double largest = std::max(pose_p.translation.cwiseAbs().maxCoeff(), pose_q.translation.cwiseAbs().maxCoeff());
+  for (auto [X, name] : {std::pair{P_points, "P"}, std::pair{Q_points, "Q"}})
+    for (std::size_t i = 0; i < X.size(); ++i) {
+      if (!X[i].allFinite()) throw InvalidInput(std::string(name) + ": point " + std::to_string(i) + " is not finite");
+      largest = std::max(largest, X[i].cwiseAbs().maxCoeff());
+    }
+  if (largest == 0 || (largest >= kComfortLo && largest < kComfortHi))
+    return approximate_in_band(P_points, pose_p, Q_points, pose_q, delta);
+  const int e = std::ilogb(largest);
+  auto down = [&](const Vec3& x, const char* what, std::size_t i) {
+    Vec3 y;
+    for (int k = 0; k < 3; ++k) {
+      y[k] = std::ldexp(x[k], -e);
+      if (std::ldexp(y[k], e) != x[k])
+        throw InvalidInput(std::string("approximate depth: ") + what + (i == std::size_t(-1) ? "" : " " + std::to_string(i)) +
+                           " has no exact value at the pair's scale 2^" + std::to_string(e) +
+                           " (its sizes span too many orders of magnitude)");
+    }
+    return y;
+  };
+  std::vector<Vec3> Ps(P_points.size()), Qs(Q_points.size());
+  for (std::size_t i = 0; i < Ps.size(); ++i) Ps[i] = down(P_points[i], "P point", i);
+  for (std::size_t i = 0; i < Qs.size(); ++i) Qs[i] = down(Q_points[i], "Q point", i);
+  const Pose3 pp(pose_p.rotation, down(pose_p.translation, "the translation of P", std::size_t(-1))),
+      pq(pose_q.rotation, down(pose_q.translation, "the translation of Q", std::size_t(-1)));
+  ApproxDepth3 r = approximate_in_band(Ps, pp, Qs, pq, delta);
+  r.depth = std::ldexp(r.depth, e), r.lower_bound = std::ldexp(r.lower_bound, e), r.upper_bound = std::ldexp(r.upper_bound, e);
+  for (int k = 0; k < 3; ++k) r.translation[k] = std::ldexp(r.translation[k], e);
+  return r;
 }
 
 }  // namespace pendepth

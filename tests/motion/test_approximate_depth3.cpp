@@ -228,6 +228,31 @@ TEST(ApproximateDepth3, BoxesMatchTheAnalyticDepth) {
   }
 }
 
+// Huge and tiny pairs are answered on copies scaled by a power of two: the analytic σ of two
+// boxes scaled by 2^±600 is bracketed, and the bounds are the unit answer's scaled (the scaled
+// copies have the same bits whenever the unit pair is scaled to the same exponent).
+TEST(ApproximateDepth3, HugeAndTinyPairsAreScaled) {
+  const std::vector<Vec3> A = box(300, Vec3(0, 0, 0), Vec3(1.5, 1.25, 1.75), 91), B = box(300, Vec3(0, 0, 0), Vec3(1, 1, 1), 92);
+  const Vec3 t(0.5, 0.75, 1.25);  // σ = min(1.5 − .5, .5 + 1, 1.25 − .75, .75 + 1, 1.75 − 1.25, 1.25 + 1) = 0.5
+  const Eigen::Quaterniond rot(1, 0.1, -0.2, 0.3);
+  const ApproxDepth3 unit = approximate_minimum_depth(A, Pose3(), B, Pose3(t), 1e-3);
+  const ApproxDepth3 unit_rot = approximate_minimum_depth(A, Pose3(), B, Pose3(rot, t), 1e-3);
+  for (int e : {600, -600, 70, -70}) {
+    std::vector<Vec3> As = A, Bs = B;
+    for (auto& p : As) p = std::ldexp(1.0, e) * p;
+    for (auto& p : Bs) p = std::ldexp(1.0, e) * p;
+    const ApproxDepth3 r = approximate_minimum_depth(As, Pose3(), Bs, Pose3(std::ldexp(1.0, e) * t), 1e-3);
+    EXPECT_TRUE(r.converged) << e;
+    EXPECT_LE(r.lower_bound, std::ldexp(0.5, e)) << e;
+    EXPECT_GE(r.upper_bound, std::ldexp(0.5, e)) << e;
+    EXPECT_EQ(r.upper_bound, std::ldexp(unit.upper_bound, e)) << e;
+    EXPECT_EQ(r.lower_bound, std::ldexp(unit.lower_bound, e)) << e;
+    const ApproxDepth3 rr = approximate_minimum_depth(As, Pose3(), Bs, Pose3(rot, std::ldexp(1.0, e) * t), 1e-3);
+    EXPECT_TRUE(rr.converged) << e;
+    EXPECT_EQ(rr.upper_bound, std::ldexp(unit_rot.upper_bound, e)) << e;
+  }
+}
+
 TEST(ApproximateDepth3, IdenticalShapes) {
   std::mt19937_64 g(61);
   const std::vector<Vec3> P = ellipsoid(4000, Vec3(1, 0.6, 0.3), 62);
@@ -258,7 +283,7 @@ TEST(ApproximateDepth3, InvalidInput) {
   EXPECT_THROW(approximate_minimum_depth(bad, Pose3(), P, Pose3(), 0.1), InvalidInput);
   bad[17] = Vec3(0, 0, inf);
   EXPECT_THROW(approximate_minimum_depth(P, Pose3(), bad, Pose3(), 0.1), InvalidInput);
-  bad[17] = Vec3(0x1p100, 0, 0);
+  bad[17] = Vec3(0x1p1020, 0, 0), bad[18] = Vec3(1e-5, 0, 0);  // 1e-5 has no exact value at scale 2^1020
   EXPECT_THROW(approximate_minimum_depth(P, Pose3(), bad, Pose3(), 0.1), InvalidInput);
   EXPECT_THROW(approximate_minimum_depth(P, Pose3(Vec3(nan, 0, 0)), P, Pose3(), 0.1), InvalidInput);
   EXPECT_THROW(approximate_minimum_depth(P, Pose3(), P, Pose3(Eigen::Quaterniond(0, 0, 0, 0), Vec3::Zero()), 0.1),
