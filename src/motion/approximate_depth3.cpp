@@ -24,6 +24,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <set>
@@ -121,22 +122,31 @@ void column_kernel(Cloud& c, int G) {
     if (top[k] >= 0) c.add_W(top[k]), c.add_W(bot[k]);
 }
 
-// Floating argmax of dirs[j]·x over the index set S (nullptr: all of X).
+// Floating argmax of dirs[j]·x over the index set S (nullptr: all of X). Directions in separate
+// coordinate arrays and a branch-free update, so the inner loop vectorises.
 void scan_max(const Cloud& c, const std::vector<int>* S, const std::vector<Vec3>& dirs, std::vector<int>& arg) {
   const std::size_t B = dirs.size();
-  std::vector<double> best(B, -std::numeric_limits<double>::infinity());
-  arg.assign(B, -1);
-  auto visit = [&](int i) {
-    const Vec3& x = c.X[i];
+  std::vector<double> dx(B), dy(B), dz(B), best(B, -std::numeric_limits<double>::infinity());
+  std::vector<std::int64_t> at(B, -1);
+  for (std::size_t j = 0; j < B; ++j) dx[j] = dirs[j].x(), dy[j] = dirs[j].y(), dz[j] = dirs[j].z();
+  auto visit = [&](std::int64_t i) {
+    const double x = c.X[i].x(), y = c.X[i].y(), z = c.X[i].z();
+    double* __restrict bp = best.data();
+    std::int64_t* __restrict ap = at.data();
+    const double *__restrict px = dx.data(), *__restrict py = dy.data(), *__restrict pz = dz.data();
     for (std::size_t j = 0; j < B; ++j) {
-      const double f = dirs[j].x() * x.x() + dirs[j].y() * x.y() + dirs[j].z() * x.z();
-      if (f > best[j]) best[j] = f, arg[j] = i;
+      const double f = px[j] * x + py[j] * y + pz[j] * z;
+      const bool better = f > bp[j];
+      bp[j] = better ? f : bp[j];
+      ap[j] = better ? i : ap[j];
     }
   };
   if (S)
     for (int i : *S) visit(i);
   else
-    for (int i = 0; i < static_cast<int>(c.X.size()); ++i) visit(i);
+    for (std::int64_t i = 0; i < static_cast<std::int64_t>(c.X.size()); ++i) visit(i);
+  arg.assign(B, -1);
+  for (std::size_t j = 0; j < B; ++j) arg[j] = static_cast<int>(at[j]);
 }
 
 // The exact maximiser over S (nullptr: X) of φ(x), where w·x approximates φ(x) within `err` and
