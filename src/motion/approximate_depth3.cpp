@@ -14,6 +14,7 @@
 // candidates; value by exact::accurate_value, rounded up); a failed certification adds the full
 // sets' extreme points of the batch to W and the kernels. Separated kernels: a facet normal of the
 // kernels' explicit Minkowski difference is tried as a separating direction, exactly.
+// Pairs outside the magnitude band [2^-60, 2^60) run on copies scaled by a power of two.
 // Complexity: O(n + m) + rounds·O((|W_P| + |W_Q|)·B + k log k) + scans·O(n + m).
 #include <pendepth/approximate.hpp>
 #include <pendepth/depth3.hpp>
@@ -458,6 +459,8 @@ ApproxDepth3 approximate_minimum_depth(std::span<const Vec3> P_points, const Pos
     throw InvalidInput("approximate depth: delta must lie in [1e-9, 1), got " + std::to_string(delta));
   if (!pose_p.translation.allFinite()) throw InvalidInput("pose of P: non-finite translation");
   if (!pose_q.translation.allFinite()) throw InvalidInput("pose of Q: non-finite translation");
+  if (P_points.size() > std::size_t(std::numeric_limits<int>::max()) || Q_points.size() > std::size_t(std::numeric_limits<int>::max()))
+    throw InvalidInput("approximate depth: more than 2^31 - 1 points in one set");
   double largest = std::max(pose_p.translation.cwiseAbs().maxCoeff(), pose_q.translation.cwiseAbs().maxCoeff());
   for (auto [X, name] : {std::pair{P_points, "P"}, std::pair{Q_points, "Q"}})
     for (std::size_t i = 0; i < X.size(); ++i) {
