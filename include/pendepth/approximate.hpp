@@ -32,7 +32,8 @@
 // pair whose largest coordinate or translation lies outside [2^-60, 2^60) is answered on copies
 // scaled by a power of two (lengths scaled back exactly, as the front door does,
 // docs/robustness.md); a coordinate with no exact value at that scale is InvalidInput. A touching pair is certified σ = 0 only when a floating
-// direction separates exactly (always for contacts along axis-aligned planes); otherwise the
+// direction separates exactly (a rounded facet normal of the kernels' Minkowski difference that is
+// exact: contacts along axis-aligned planes, or planes like x + y + z = 1); otherwise the
 // answer is lower = 0, upper = a few ulps of the shapes' size, converged = false.
 #pragma once
 

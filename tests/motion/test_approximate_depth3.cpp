@@ -209,6 +209,28 @@ TEST(ApproximateDepth3, SeparatedAndTouchingAreCertifiedZero) {
   }
 }
 
+// Touching along the skew plane x + y + z = 1 (P the unit corner tetrahedron with interior points,
+// Q its mirror image sharing the face e1 e2 e3): certified σ = 0; then shifted into P by
+// 1e-9·(1, 1, 1) and 1e-3·(1, 1, 1) (σ = √3·shift: tiny depths keep their relative guarantee).
+TEST(ApproximateDepth3, SkewTouchingAndShallowOverlap) {
+  std::mt19937_64 g(5);
+  std::uniform_real_distribution<double> U(0, 1);
+  std::vector<Vec3> P{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, Q{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {2. / 3, 2. / 3, 2. / 3}};
+  while (P.size() < 3000) {
+    const Vec3 v(U(g), U(g), U(g));
+    if (v.sum() < 1) P.push_back(v);
+  }
+  const ConvexPolytope HP = ConvexPolytope::hull(P), HQ = ConvexPolytope::hull(Q);
+  for (double shift : {0.0, 1e-9, -1e-9, -1e-3}) {
+    SCOPED_TRACE(testing::Message() << "shift " << shift);
+    check(P, Pose3(), Q, Pose3(Vec3(shift, shift, shift)), 1e-2, HP, HQ);
+  }
+  const ApproxDepth3 r = approximate_minimum_depth(P, Pose3(), Q, Pose3(), 1e-3);
+  EXPECT_TRUE(r.converged);
+  EXPECT_EQ(r.upper_bound, 0);
+  EXPECT_NEAR(std::abs(r.normal.dot(Vec3(1, 1, 1).normalized())), 1, 1e-12);  // the separating plane
+}
+
 TEST(ApproximateDepth3, BoxesMatchTheAnalyticDepth) {
   // Axis-aligned boxes: σ = the smallest overlap of the coordinate intervals, exactly.
   const std::vector<Vec3> A = box(3000, Vec3(0, 0, 0), Vec3(4, 3, 2), 51), B = box(3000, Vec3(0, 0, 0), Vec3(1, 1, 1), 52);
