@@ -2,12 +2,12 @@
 // nesting pieces: the same pairs and placements in one run. Pairs: every ordered pair of the
 // first 5 pieces of an instance, Q placed with its box centre on P's plus an offset of 10 % of
 // P's box (pinned seed), overlapping placements only. One "query" answers one pair from scratch,
-// as a single question would: σ = Pair2(P, Q, prepare) + minimum; PD_g = generalized_depth (its
-// probes build one Pair2 per angle). Counters: probes per PD_g query, the mean relative gap
+// as a single question would: σ = Pair2(P, Q, prepare) + minimum (second argument: 0 Auto, 1
+// Queries); PD_g = generalized_depth (its probes build one Pair2 per angle). Counters: probes per PD_g query, the mean relative gap
 // (upper − lower)/upper, the fraction of queries whose gap closed (≤ 1e-6), the mean PD_g / σ.
 //
 //   bench_motion --benchmark_filter=...   (arguments: the instance index 0 albano, 1 shirts,
-//   2 trousers; the Prepare of the probes for PD_g: 0 Auto, 1 Queries)
+//   2 trousers; the Prepare of σ's pair or of PD_g's probes: 0 Auto, 1 Queries)
 #include <pendepth/pendepth.hpp>
 
 #include <benchmark/benchmark.h>
@@ -60,7 +60,7 @@ void BM_Sigma(benchmark::State& state) {
   std::size_t i = 0;
   for (auto _ : state) {
     const Case& c = cs[i++ % cs.size()];
-    benchmark::DoNotOptimize(Pair2(c.P, c.Q, Prepare::Queries).minimum(c.t));
+    benchmark::DoNotOptimize(Pair2(c.P, c.Q, state.range(1) == 0 ? Prepare::Auto : Prepare::Queries).minimum(c.t));
   }
   state.counters["pairs"] = double(cs.size());
 }
@@ -87,7 +87,7 @@ void BM_Generalized(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(BM_Sigma)->DenseRange(0, 2)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Sigma)->ArgsProduct({{0, 1, 2}, {0, 1}})->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Generalized)->ArgsProduct({{0, 1, 2}, {0}})->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_Generalized)->ArgsProduct({{0}, {1}})->Unit(benchmark::kMillisecond)->Iterations(16);
 BENCHMARK_MAIN();

@@ -51,7 +51,7 @@ struct GeneralizedDepth2 {
   double sigma_at_angle = 0;   ///< σ of P and Q.rotated(angle) at the same t
   bool overlapping = false;
   bool rotation_exact = true;  ///< angle is a multiple of 90 (Shape2::rotation_is_exact)
-  bool converged = true;       ///< the gap is within tolerance (else the probe cap was hit)
+  bool converged = true;       ///< upper − lower ≤ tolerance·upper (else the gap is reported as is)
   std::size_t probes = 0;      ///< angles probed
 };
 
