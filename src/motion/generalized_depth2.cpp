@@ -41,6 +41,7 @@
 #include "polygon2/triangulation.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -240,11 +241,25 @@ GeneralizedDepth2 generalized_depth(const Shape2& P_in, const Shape2& Q_in, cons
   // Lower bound: pairs of convex parts.
   double lower = 0;
   const auto parts_p = convex_parts_of(P), parts_q = convex_parts_of(Q);
-  for (const auto& A : parts_p)
-    for (const auto& B : parts_q) {
-      const Depth2 d = minimum_depth(A, B, t);
+  // Only pairs whose boxes overlap can overlap (boxes of Q's parts placed at t, widened by a
+  // relative 2^-40 so that the rounding of the placed box never drops a pair).
+  auto box = [](const ConvexPolygon& C, const Vec2& at) {
+    Vec2 lo = C[0] + at, hi = lo;
+    for (const Vec2& v : C.vertices()) lo = lo.cwiseMin(v + at), hi = hi.cwiseMax(v + at);
+    const Vec2 pad = 0x1p-40 * (lo.cwiseAbs().cwiseMax(hi.cwiseAbs()));
+    return std::array<Vec2, 2>{lo - pad, hi + pad};
+  };
+  std::vector<std::array<Vec2, 2>> boxes_q;
+  for (const auto& B : parts_q) boxes_q.push_back(box(B, t));
+  for (const auto& A : parts_p) {
+    const auto a = box(A, Vec2(0, 0));
+    for (std::size_t j = 0; j < parts_q.size(); ++j) {
+      const auto& b = boxes_q[j];
+      if ((a[1].array() < b[0].array()).any() || (b[1].array() < a[0].array()).any()) continue;
+      const Depth2 d = minimum_depth(A, parts_q[j], t);
       if (d.overlapping) lower = std::max(lower, d.depth);
     }
+  }
   lower *= 1 - 16 * kU;
 
   Search S{P, Q, t, o.prepare, {}, {}, 0, std::numeric_limits<double>::infinity(), r, {}};
