@@ -4,7 +4,7 @@
 //   pendepth depth P Q [--offset X,Y[,Z]] [--direction X,Y[,Z]] [--separate] [--json] [--svg FILE]
 //                      [--html FILE] [--rotate-q QW,QX,QY,QZ | DEG (2D)] [--rotate-p QW,QX,QY,QZ]
 //                      [--generalized]
-//   pendepth batch P Q --queries FILE [--json] [--threads N] [--progress] [--rotate-q ...] [--rotate-p ...]
+//   pendepth batch P Q --queries FILE [--json] [--threads N] [--progress] [--rotate-q ...|DEG] [--rotate-p ...]
 //   pendepth nfp P Q [--json]
 //
 // Exit status: 0 success, 2 bad input (one line on stderr naming file, line and problem),
@@ -483,8 +483,9 @@ int run_batch(const BatchArgs& a) {
   check_one_stdin({&a.p, &a.q, &a.queries});
   const auto [p, q] = load_pair(a.p, a.q);
   if (p.dimension() == 3) return run_batch3(a, p, q);
-  reject_rotations(a.rotate_p, a.rotate_q);
-  const Pair2 pair(make_shape2(p, "P"), make_shape2(q, "Q"), pendepth::Prepare::Full);
+  reject_rotations(a.rotate_p, "");
+  const Pair2 pair(make_shape2(p, "P"), rotate_q2(make_shape2(q, "Q"), a.rotate_q), pendepth::Prepare::Full);
+  if (const std::string note = rotation_note(a.rotate_q); !note.empty()) std::fputs(("pendepth: " + note).c_str(), stderr);
   const std::vector<io::Query2> queries = a.queries == "-" ? io::parse_queries_csv(io::read_stream(std::cin, kStdin), kStdin)
                                                            : io::read_queries_csv(a.queries);
   const std::vector<Depth2> results = answer_all<Depth2>(
@@ -577,8 +578,10 @@ int main(int argc, char** argv) {
   batch->add_option("--threads", ba.threads, "threads for the queries (default 0: every core; answers do not depend on it)")
       ->type_name("N");
   batch->add_flag("--progress", ba.progress, "print progress on stderr (default: only when stderr is a terminal)");
-  batch->add_option("--rotate-q", ba.rotate_q, "3D: rotation of Q for every query (quaternion, normalised)")
-      ->type_name("QW,QX,QY,QZ");
+  batch->add_option("--rotate-q", ba.rotate_q,
+                    "rotation of Q for every query: 3D a quaternion (normalised); 2D an angle in degrees (a note "
+                    "on stderr when it is not a multiple of 90: Q's coordinates are rounded)")
+      ->type_name("QW,QX,QY,QZ|DEG");
   batch->add_option("--rotate-p", ba.rotate_p, "3D: rotation of P (quaternion, normalised)")->type_name("QW,QX,QY,QZ");
 
   NfpArgs na;

@@ -6,6 +6,7 @@
 //     rotation quaternion;
 //   - --rotate-q DEG in 2D equals Pair2 on Q.rotated(DEG); a quarter turn reports
 //     rotation_exact true and no note, 30° reports rotation_exact false and the human note;
+//   - batch --rotate-q DEG answers on Q.rotated(DEG), the rounding note on stderr;
 //   - bad combinations: exit 2 with one line (--direction with --generalized, --rotate-p in 2D,
 //     a non-numeric angle).
 #include <pendepth/pendepth.hpp>
@@ -97,6 +98,19 @@ TEST_F(CliGeneralized, RotateQ2) {
     const Result h = run("depth " + quote(p) + " " + quote(q) + " --offset=0.1,0.2 --rotate-q=" + a);
     ASSERT_EQ(h.status, 0);
     EXPECT_EQ(h.out.find("note: Q's coordinates were rotated") != std::string::npos, !Shape2::rotation_is_exact(deg)) << h.out;
+  }
+  // batch --rotate-q DEG: the same answers; the rounding note goes to stderr.
+  const std::string csv = write("q.csv", "0.1,0.2,0,0\n0.1,0.2,1,0\n");
+  for (double deg : {90.0, 30.0}) {
+    const Result r = run("batch " + quote(p) + " " + quote(q) + " --queries " + quote(csv) + " --rotate-q=" + (deg == 90 ? "90" : "30"));
+    ASSERT_EQ(r.status, 0) << r.err;
+    const Pair2 pair(P, Q.rotated(deg));
+    const Depth2 s = pair.minimum(Vec2(0.1, 0.2)), d = pair.along(Vec2(0.1, 0.2), Vec2(1, 0));
+    std::string expected = "depth,tx,ty\n";
+    io::append_csv_row(expected, s);
+    io::append_csv_row(expected, d);
+    EXPECT_EQ(r.out, expected) << deg;
+    EXPECT_EQ(r.err.empty(), deg == 90) << r.err;
   }
   // Turned by 90° the bar lies across the slot: deeply overlapping; unturned it fits (apart).
   EXPECT_TRUE(Pair2(P, Q.rotated(90)).overlapping(Vec2(0.1, 0.2)));
