@@ -250,28 +250,31 @@ std::vector<Shape2> nesting(const std::string& file) {
 }
 
 TEST(Generalized2, NestingPieces) {
-  const auto pieces = nesting("albano.json");
-  ASSERT_GE(pieces.size(), 4u);
   std::mt19937_64 rng(77);
   int n = 0, certified = 0;
-  for (std::size_t i = 0; i < 4; ++i)
-    for (std::size_t j = 0; j < 4; ++j) {
-      const Shape2 &P = pieces[i], &Q = pieces[j];
-      // Q placed so that its box centre lands near P's: a deep overlap.
-      Vec2 plo(1e300, 1e300), phi(-1e300, -1e300), qlo = plo, qhi = phi;
-      const auto pr = P.rings(), qr = Q.rings();
-      for (const Vec2& p : pr[0]) plo = plo.cwiseMin(p), phi = phi.cwiseMax(p);
-      for (const Vec2& q : qr[0]) qlo = qlo.cwiseMin(q), qhi = qhi.cwiseMax(q);
-      std::uniform_real_distribution<double> u(-0.2, 0.2);
-      const Vec2 t = 0.5 * (plo + phi - qlo - qhi) + Vec2(u(rng) * (phi - plo).x(), u(rng) * (phi - plo).y());
-      if (!Pair2(P, Q).overlapping(t)) continue;
-      ++n;
-      const GeneralizedDepth2 r = generalized_depth(P, Q, t);
-      SCOPED_TRACE("pieces " + std::to_string(i) + ", " + std::to_string(j));
-      check_against_brute(P, Q, t, r, 90);
-      certified += r.converged;
-    }
-  EXPECT_GE(n, 10);
+  for (const char* file : {"albano.json", "trousers.json", "shirts.json"}) {
+    const auto pieces = nesting(file);
+    ASSERT_GE(pieces.size(), 4u) << file;
+    for (std::size_t i = 0; i < 3; ++i)
+      for (std::size_t j = 0; j < 3; ++j) {
+        const Shape2 &P = pieces[i], &Q = pieces[j];
+        // Q placed so that its box centre lands near P's: a deep overlap.
+        Vec2 plo(1e300, 1e300), phi(-1e300, -1e300), qlo = plo, qhi = phi;
+        const auto pr = P.rings(), qr = Q.rings();
+        for (const Vec2& p : pr[0]) plo = plo.cwiseMin(p), phi = phi.cwiseMax(p);
+        for (const Vec2& q : qr[0]) qlo = qlo.cwiseMin(q), qhi = qhi.cwiseMax(q);
+        std::uniform_real_distribution<double> u(-0.2, 0.2);
+        const Vec2 t = 0.5 * (plo + phi - qlo - qhi) + Vec2(u(rng) * (phi - plo).x(), u(rng) * (phi - plo).y());
+        if (!Pair2(P, Q).overlapping(t)) continue;
+        ++n;
+        const GeneralizedDepth2 r = generalized_depth(P, Q, t);
+        SCOPED_TRACE(std::string(file) + " pieces " + std::to_string(i) + ", " + std::to_string(j));
+        check_against_brute(P, Q, t, r, 72);
+        certified += r.converged;
+        if (P.is_convex() && Q.is_convex()) EXPECT_TRUE(r.converged);
+      }
+  }
+  EXPECT_GE(n, 20);
   RecordProperty("certified", certified);
 }
 
