@@ -2,8 +2,9 @@
 // (include/pendepth/pendepth.hpp).
 //
 //   pendepth depth P Q [--offset X,Y[,Z]] [--direction X,Y[,Z]] [--separate] [--json] [--svg FILE]
-//                      [--html FILE] [--rotate-q QW,QX,QY,QZ] [--rotate-p QW,QX,QY,QZ]
-//   pendepth batch P Q --queries FILE [--json] [--threads N] [--progress] [--rotate-q ...] [--rotate-p ...]
+//                      [--html FILE] [--rotate-q QW,QX,QY,QZ | DEG (2D)] [--rotate-p QW,QX,QY,QZ]
+//                      [--generalized]
+//   pendepth batch P Q --queries FILE [--json] [--threads N] [--progress] [--rotate-q ...|DEG] [--rotate-p ...]
 //   pendepth nfp P Q [--json]
 //
 // Exit status: 0 success, 2 bad input (one line on stderr naming file, line and problem),
@@ -11,7 +12,7 @@
 // a path that cannot be created), 1 internal error. Shapes: .wkt (2D polygons); .obj, .off, .stl
 // (3D: the convex hull of the vertices); `-` (standard input) or a path without an extension (a
 // FIFO, /dev/stdin, a process substitution) is recognised by its content. P and Q must have the
-// same dimension. Rotations are 3D only.
+// same dimension. Rotations: 3D quaternions for P and Q; 2D an angle in degrees for Q only.
 //
 // Engines: Pair2 / Pair3 pick them. `depth` asks one question, so it prepares only what the query
 // needs (Prepare::Queries: two non-convex polygons are answered per query, nothing built);
@@ -130,7 +131,7 @@ Shape3 make_shape3(const ShapeText& s, std::string_view name) {
 template <int N>
 Eigen::Matrix<double, N, 1> parse_numbers(const std::string& text, const char* option, const char* names) {
   static constexpr const char* kCount[] = {"", "one", "two", "three", "four"};
-  const std::string expected = std::string(option) + ": expected " + names + " (" + kCount[N] + " numbers), got '" + text + "'";
+  const std::string expected = std::string(option) + ": expected " + names + " (" + kCount[N] + (N == 1 ? " number" : " numbers") + "), got '" + text + "'";
   Eigen::Matrix<double, N, 1> v;
   int count = 0;
   std::string_view rest = text;
@@ -217,12 +218,90 @@ void write_svg(const std::string& path, const Pair2& pair, const Vec2& t, const 
 
 struct DepthArgs {
   std::string p, q, offset, direction, svg, html, rotate_p, rotate_q;
-  bool separate = false, json = false;
+  bool separate = false, json = false, generalized = false;
 };
+
+// ---- 2D rotations of Q (issue 19 item 3) and the generalized depth PD_g (issue 18) ----
 
 void reject_rotations(const std::string& rotate_p, const std::string& rotate_q) {
   if (!rotate_q.empty()) throw InvalidInput("--rotate-q: rotations apply to 3D shapes only");
-  if (!rotate_p.empty()) throw InvalidInput("--rotate-p: rotations apply to 3D shapes only");
+  if (!rotate_p.empty()) throw InvalidInput("--rotate-p: 2D rotates Q only (--rotate-q DEG)");
+}
+
+// Q turned by --rotate-q DEG (Shape2::rotated: exact for multiples of 90°, else rounded).
+Shape2 rotate_q2(const Shape2& Q, const std::string& degrees) {
+  if (degrees.empty()) return Q;
+  return Q.rotated(parse_numbers<1>(degrees, "--rotate-q", "DEG")[0]);
+}
+
+// The note a rounded rotation owes the reader (human output), and its JSON field.
+std::string rotation_note(const std::string& degrees) {
+  if (degrees.empty() || Shape2::rotation_is_exact(parse_numbers<1>(degrees, "--rotate-q", "DEG")[0])) return "";
+  return "note: Q's coordinates were rotated by " + degrees + " degrees and rounded to doubles (not a multiple of 90)\n";
+}
+void add_rotation_field(std::string& json_object, const std::string& degrees) {
+  if (degrees.empty()) return;
+  while (!json_object.empty() && json_object.back() != '}') json_object.pop_back();
+  json_object.pop_back();
+  json_object += std::string(",\"rotation_exact\":") +
+                 (Shape2::rotation_is_exact(parse_numbers<1>(degrees, "--rotate-q", "DEG")[0]) ? "true" : "false") + "}";
+}
+
+std::string num(double x) {
+  if (!std::isfinite(x)) return x > 0 ? "1e999" : "-1e999";  // an overflowed length (docs/robustness.md)
+  char b[32];
+  std::snprintf(b, sizeof b, "%.17g", x);
+  return b;
+}
+
+int run_generalized2(const DepthArgs& a, const Shape2& P, const Shape2& Q, const Vec2& t) {
+  const pendepth::GeneralizedDepth2 r = pendepth::generalized_depth(P, Q, t);
+  std::string out;
+  if (a.json) {
+    out = "{\"kind\":\"generalized\",\"metric\":\"max_displacement\",\"overlapping\":" +
+          std::string(r.overlapping ? "true" : "false") + ",\"depth\":" + num(r.depth) + ",\"lower_bound\":" +
+          num(r.lower_bound) + ",\"upper_bound\":" + num(r.upper_bound) + ",\"angle\":" + num(r.angle) +
+          ",\"translation\":[" + num(r.translation.x()) + "," + num(r.translation.y()) + "],\"sigma\":" + num(r.sigma) +
+          ",\"sigma_at_angle\":" + num(r.sigma_at_angle) + ",\"converged\":" + (r.converged ? "true" : "false") +
+          ",\"probes\":" + std::to_string(r.probes) + ",\"angle_exact\":" + (r.rotation_exact ? "true" : "false") + "}";
+    add_rotation_field(out, a.rotate_q);
+    out += '\n';
+  } else {
+    out = rotation_note(a.rotate_q) + "generalized depth PD_g (largest displacement of Q's points): " + num(r.depth) +
+          "\n  certified bounds: [" + num(r.lower_bound) + ", " + num(r.upper_bound) + "]" +
+          (r.converged ? "" : " (not converged: the gap is above the tolerance)") + "\n  motion: rotate Q by " +
+          num(r.angle) + " degrees about its reference point" + (r.rotation_exact ? "" : " (coordinates rounded)") +
+          ", then translate by (" + num(r.translation.x()) + ", " + num(r.translation.y()) + ")\n  translational depth: " +
+          num(r.sigma) + " (at that angle: " + num(r.sigma_at_angle) + "); angles probed: " + std::to_string(r.probes) + "\n";
+  }
+  write_stdout(out);
+  return 0;
+}
+
+int run_generalized3(const DepthArgs& a, const Shape3& P, const Pose3& pose_p, const Shape3& Q, const Pose3& pose_q) {
+  const pendepth::GeneralizedDepth3 r = pendepth::generalized_depth(P, pose_p, Q, pose_q);
+  const auto& w = r.rotation;
+  std::string out;
+  if (a.json) {
+    out = "{\"kind\":\"generalized\",\"metric\":\"max_displacement\",\"overlapping\":" +
+          std::string(r.overlapping ? "true" : "false") + ",\"depth\":" + num(r.depth) + ",\"lower_bound\":" +
+          num(r.lower_bound) + ",\"upper_bound\":" + num(r.upper_bound) + ",\"rotation\":[" + num(w.w()) + "," +
+          num(w.x()) + "," + num(w.y()) + "," + num(w.z()) + "],\"translation\":[" + num(r.translation.x()) + "," +
+          num(r.translation.y()) + "," + num(r.translation.z()) + "],\"sigma\":" + num(r.sigma) + "}\n";
+  } else {
+    out = "generalized depth PD_g (largest displacement of Q's points): " + num(r.depth) + " = σ (convex polytopes)" +
+          "\n  certified bounds: [" + num(r.lower_bound) + ", " + num(r.upper_bound) + "]\n  motion: rotation (w,x,y,z) (" +
+          num(w.w()) + ", " + num(w.x()) + ", " + num(w.y()) + ", " + num(w.z()) + "), then translate by (" +
+          num(r.translation.x()) + ", " + num(r.translation.y()) + ", " + num(r.translation.z()) + ")\n";
+  }
+  write_stdout(out);
+  return 0;
+}
+
+void check_generalized(const DepthArgs& a) {
+  if (!a.generalized) return;
+  if (!a.direction.empty()) throw InvalidInput("--generalized: asks for the minimum depth under rigid motion; drop --direction");
+  if (!a.svg.empty() || !a.html.empty()) throw InvalidInput("--generalized: --svg and --html are not drawn for it");
 }
 
 int run_depth3(const DepthArgs& a, const ShapeText& p, const ShapeText& q) {
@@ -237,6 +316,7 @@ int run_depth3(const DepthArgs& a, const ShapeText& p, const ShapeText& q) {
   }
   const Pair3 pair(make_shape3(p, "P"), make_shape3(q, "Q"));
   const Pose3 pose_p(rp, Vec3::Zero()), pose_q(rq, t);
+  if (a.generalized) return run_generalized3(a, pair.P(), pose_p, pair.Q(), pose_q);
   const Depth3 r = !d ? pair.minimum(pose_p, pose_q)
                       : a.separate ? pair.separation(pose_p, pose_q, *d) : pair.along(pose_p, pose_q, *d);
   if (!a.html.empty())
@@ -256,12 +336,14 @@ int run_depth3(const DepthArgs& a, const ShapeText& p, const ShapeText& q) {
 int run_depth(const DepthArgs& a) {
   check_one_stdin({&a.p, &a.q});
   const auto [p, q] = load_pair(a.p, a.q);
+  check_generalized(a);
   if (p.dimension() == 3) return run_depth3(a, p, q);
-  reject_rotations(a.rotate_p, a.rotate_q);
+  reject_rotations(a.rotate_p, "");
   if (!a.html.empty()) throw InvalidInput("--html draws 3D shapes only (use --svg for 2D)");
   const Shape2 P = make_shape2(p, "P");
-  const Shape2 Q = make_shape2(q, "Q");
+  const Shape2 Q = rotate_q2(make_shape2(q, "Q"), a.rotate_q);
   const Vec2 t = a.offset.empty() ? Vec2(0, 0) : parse_vec(a.offset, "--offset");
+  if (a.generalized) return run_generalized2(a, P, Q, t);
   std::optional<Vec2> d;
   if (!a.direction.empty()) {
     d = parse_vec(a.direction, "--direction");
@@ -273,9 +355,10 @@ int run_depth(const DepthArgs& a) {
   std::string out;
   if (a.json) {
     append_json(out, r, P, Q);
+    add_rotation_field(out, a.rotate_q);
     out += '\n';
   } else {
-    out = summary(r, P, Q);
+    out = rotation_note(a.rotate_q) + summary(r, P, Q);
   }
   write_stdout(out);
   return 0;
@@ -400,8 +483,9 @@ int run_batch(const BatchArgs& a) {
   check_one_stdin({&a.p, &a.q, &a.queries});
   const auto [p, q] = load_pair(a.p, a.q);
   if (p.dimension() == 3) return run_batch3(a, p, q);
-  reject_rotations(a.rotate_p, a.rotate_q);
-  const Pair2 pair(make_shape2(p, "P"), make_shape2(q, "Q"), pendepth::Prepare::Full);
+  reject_rotations(a.rotate_p, "");
+  const Pair2 pair(make_shape2(p, "P"), rotate_q2(make_shape2(q, "Q"), a.rotate_q), pendepth::Prepare::Full);
+  if (const std::string note = rotation_note(a.rotate_q); !note.empty()) std::fputs(("pendepth: " + note).c_str(), stderr);
   const std::vector<io::Query2> queries = a.queries == "-" ? io::parse_queries_csv(io::read_stream(std::cin, kStdin), kStdin)
                                                            : io::read_queries_csv(a.queries);
   const std::vector<Depth2> results = answer_all<Depth2>(
@@ -472,8 +556,13 @@ int main(int argc, char** argv) {
   depth->add_option("--svg", da.svg, "also draw the query into this SVG file (2D)")->type_name("FILE");
   depth->add_option("--html", da.html, "also write a self-contained HTML page showing the 3D query (orbit, zoom)")
       ->type_name("FILE");
-  depth->add_option("--rotate-q", da.rotate_q, "3D: rotation of Q about its origin, before the offset (quaternion, normalised)")
-      ->type_name("QW,QX,QY,QZ");
+  depth->add_option("--rotate-q", da.rotate_q,
+                    "rotation of Q about its origin, before the offset: 3D a quaternion (normalised); 2D an angle in "
+                    "degrees, counter-clockwise (exact for multiples of 90, else Q's coordinates are rotated and rounded)")
+      ->type_name("QW,QX,QY,QZ|DEG");
+  depth->add_flag("--generalized", da.generalized,
+                  "generalized depth PD_g: Q may also rotate (about its reference point); cost = the largest "
+                  "displacement of Q's points; prints certified bounds, the rotation and the translation");
   depth->add_option("--rotate-p", da.rotate_p, "3D: rotation of P about its origin (quaternion, normalised)")
       ->type_name("QW,QX,QY,QZ");
 
@@ -489,8 +578,10 @@ int main(int argc, char** argv) {
   batch->add_option("--threads", ba.threads, "threads for the queries (default 0: every core; answers do not depend on it)")
       ->type_name("N");
   batch->add_flag("--progress", ba.progress, "print progress on stderr (default: only when stderr is a terminal)");
-  batch->add_option("--rotate-q", ba.rotate_q, "3D: rotation of Q for every query (quaternion, normalised)")
-      ->type_name("QW,QX,QY,QZ");
+  batch->add_option("--rotate-q", ba.rotate_q,
+                    "rotation of Q for every query: 3D a quaternion (normalised); 2D an angle in degrees (a note "
+                    "on stderr when it is not a multiple of 90: Q's coordinates are rounded)")
+      ->type_name("QW,QX,QY,QZ|DEG");
   batch->add_option("--rotate-p", ba.rotate_p, "3D: rotation of P (quaternion, normalised)")->type_name("QW,QX,QY,QZ");
 
   NfpArgs na;

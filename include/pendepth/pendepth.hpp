@@ -247,3 +247,6 @@ class Pair3 {
 };
 
 }  // namespace pendepth
+
+// PD_g, the generalized depth under rigid motion (rotation and translation): motion.hpp.
+#include <pendepth/motion.hpp>

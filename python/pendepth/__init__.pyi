@@ -78,6 +78,12 @@ class Pair2:
 
 def no_fit_polygon(P: Shape2, Q: Shape2) -> SimpleNamespace: ...
 
+@overload
+def generalized_depth(P: Shape2, Q: Shape2, offset: ArrayLike, *, min_degrees: float = ..., max_degrees: float = ...,
+                      max_probes: int = ..., tolerance: float = ...) -> SimpleNamespace: ...
+@overload
+def generalized_depth(P: Shape3, Q: Shape3, translation: ArrayLike, rotation: Optional[ArrayLike] = ...) -> SimpleNamespace: ...
+
 class Shape3:
     """A validated convex polytope (the convex hull of a point set)."""
     @staticmethod

@@ -770,4 +770,58 @@ and points ((p, 2): exact fits). Vertices rounded to the nearest double.)");
                         const std::string prep = st[2].cast<std::string>();
                         return PyPair3{Pair3(st[0].cast<Shape3>(), st[1].cast<Shape3>(), prepare_of(prep)), prep};
                       }));
+
+  // ---- generalized depth PD_g (issue 18; include/pendepth/motion.hpp) ----
+  m.def("generalized_depth", [](const Shape2& P, const Shape2& Q, const py::object& offset, double min_degrees,
+                                double max_degrees, std::size_t max_probes, double tolerance) {
+        Points<2> t = points<2>(offset, "offset");
+        if (!t.single) throw InvalidInput("offset: expected one (2,) point");
+        GeneralizedOptions2 o;
+        o.min_degrees = min_degrees, o.max_degrees = max_degrees, o.max_probes = max_probes, o.tolerance = tolerance;
+        GeneralizedDepth2 r;
+        {
+          py::gil_scoped_release nogil;
+          r = generalized_depth(P, Q, t.v[0], o);
+        }
+        return py::module_::import("types").attr("SimpleNamespace")(
+            py::arg("kind") = "generalized", py::arg("depth") = r.depth, py::arg("lower_bound") = r.lower_bound,
+            py::arg("upper_bound") = r.upper_bound, py::arg("angle") = r.angle,
+            py::arg("translation") = to_array<2>(std::vector<Vec2>{r.translation}).attr("reshape")(2),
+            py::arg("sigma") = r.sigma, py::arg("sigma_at_angle") = r.sigma_at_angle, py::arg("overlapping") = r.overlapping,
+            py::arg("rotation_exact") = r.rotation_exact, py::arg("converged") = r.converged, py::arg("probes") = r.probes);
+      }, py::arg("P"), py::arg("Q"), py::arg("offset"), py::kw_only(), py::arg("min_degrees") = -180.0,
+      py::arg("max_degrees") = 180.0, py::arg("max_probes") = 512, py::arg("tolerance") = 1e-6,
+      R"(generalized_depth(P, Q, offset, *, min_degrees=-180, max_degrees=180, max_probes=512, tolerance=1e-6)
+
+2D generalized depth PD_g: Q (placed at offset) may rotate about its reference point by an angle in
+[min_degrees, max_degrees] (the range must contain 0) and translate; the cost of a motion is the
+largest displacement of Q's points. Returns a namespace: depth (= upper_bound, the cost of the
+motion found), lower_bound (certified), angle (degrees; Q's coordinates as Shape2 rotated by it),
+translation (2,), sigma (translational depth, >= depth), sigma_at_angle, overlapping,
+rotation_exact, converged (gap <= tolerance * depth), probes. Convex pairs: PD_g = sigma.)");
+  m.def("generalized_depth", [](const Shape3& P, const Shape3& Q, const py::object& translation, const py::object& rotation) {
+        Points<3> t = points<3>(translation, "translation");
+        if (!t.single) throw InvalidInput("translation: expected one (3,) point");
+        bool single = true;
+        std::vector<Pose3> pose = poses(t, rotation, single);
+        GeneralizedDepth3 r;
+        {
+          py::gil_scoped_release nogil;
+          r = generalized_depth(P, Pose3(), Q, pose.at(0));
+        }
+        const auto& w = r.rotation;
+        py::array_t<double> q(4);
+        q.mutable_data()[0] = w.w(), q.mutable_data()[1] = w.x(), q.mutable_data()[2] = w.y(), q.mutable_data()[3] = w.z();
+        return py::module_::import("types").attr("SimpleNamespace")(
+            py::arg("kind") = "generalized", py::arg("depth") = r.depth, py::arg("lower_bound") = r.lower_bound,
+            py::arg("upper_bound") = r.upper_bound, py::arg("rotation") = q,
+            py::arg("translation") = to_array<3>(std::vector<Vec3>{r.translation}).attr("reshape")(3),
+            py::arg("sigma") = r.sigma, py::arg("overlapping") = r.overlapping);
+      }, py::arg("P"), py::arg("Q"), py::arg("translation"), py::arg("rotation") = py::none(),
+      R"(generalized_depth(P, Q, translation, rotation=None)
+
+3D generalized depth of two convex polytopes (P at the identity, Q posed by translation (3,) and
+rotation (4,) w, x, y, z): PD_g = sigma by the theorem for convex shapes. Returns a namespace:
+depth, lower_bound, upper_bound, rotation (identity quaternion), translation (3,), sigma,
+overlapping.)");
 }
