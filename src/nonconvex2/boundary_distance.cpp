@@ -277,7 +277,7 @@ Distance2 BoundaryPair2::distance(const Vec2& t) const {
   if (best.kind == 2) {
     const Vec2 e(accurate_value([&](auto l) { return l(best.b.x()) - l(best.a.x()); }),
                  accurate_value([&](auto l) { return l(best.b.y()) - l(best.a.y()); }));
-    dir = Vec2(e.y(), -e.x());  // the edge's outward side (its shape's interior is on the left)
+    dir = Vec2(e.y(), 0 - e.x());  // the edge's outward side (its shape's interior is on the left)
   } else {
     dir = accurate_diff(best.x0, best.sh, foot);
   }
@@ -364,7 +364,7 @@ Cast2 BoundaryPair2::cast(const Vec2& t, const Vec2& d_in) const {
   // normal of Q's edge (a vertex of P hits it); for collinear contacts the same formula (⟂ d).
   const Vec2 e(accurate_value([&](auto l) { return l(best.b.x()) - l(best.a.x()); }),
                accurate_value([&](auto l) { return l(best.b.y()) - l(best.a.y()); }));
-  Vec2 nrm = best.q_vertex ? Vec2(e.y(), -e.x()) : Vec2(-e.y(), e.x());
+  Vec2 nrm = best.q_vertex ? Vec2(e.y(), 0 - e.x()) : Vec2(0 - e.y(), e.x());
   r.normal = nrm / norm_of(nrm.x(), nrm.y());
   // The contact point: a vertex of Q moved, or the vertex of P.
   r.witness_p = best.q_vertex ? Vec2(best.x0 + t + r.translation) : best.x0;
