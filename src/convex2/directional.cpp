@@ -12,7 +12,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 
+#include "convex2/convex_cast.hpp"
 #include "convex2/minkowski_sum.hpp"
 #include "geometry/exact.hpp"
 
@@ -269,3 +272,73 @@ Depth2 separation_depth(const ConvexPolygon& P, const ConvexPolygon& Q, const Ve
 }
 
 }  // namespace pendepth
+
+// ---- shape cast (src/convex2/convex_cast.hpp): the entry of the ray into the closed M ----
+
+
+namespace pendepth::convex2 {
+
+std::optional<Cast2> convex_cast(const ConvexPolygon& P, const ConvexPolygon& Q, const Vec2& t, const Vec2& d_in) {
+  const Vec2 d = normalized_scale(d_in);
+  const Side A{P, false}, B{Q, true};
+  const Chains ca = front_chains(A, d), cb = front_chains(B, d);
+  // X = cross(d, x − t) increases along the front chains from M's extreme vertex on one side of
+  // the line to the other: the line meets the closed M iff X(start) <= 0 <= X(end).
+  auto X = [&](const Vec2& a, const Vec2& b) {
+    return exact::exact_sign([&](auto L) {
+      return L(d.x()) * (L(a.y()) + L(b.y()) - L(t.y())) - L(d.y()) * (L(a.x()) + L(b.x()) - L(t.x()));
+    });
+  };
+  const int lo = X(A.v(ca.forward.start), B.v(cb.forward.start));
+  const int hi = X(A.v(ca.forward.start + ca.forward.edges), B.v(cb.forward.start + cb.forward.edges));
+  Cast2 r;
+  if (lo > 0 || hi < 0) {  // the line misses M
+    r.distance = std::numeric_limits<double>::infinity();
+    return r;
+  }
+  if (lo == 0 || hi == 0) return std::nullopt;  // tangent: contact on ∂M only
+  // The line crosses int M: it enters where it leaves M along −d (λ along −d, s = −λ).
+  Exit en = find_exit(A, B, ca.backward, cb.backward, t, Vec2(-d));
+  bool zero = en.s_sign == 0;
+  if (en.s_sign > 0) {
+    // The entry is behind t, which is not in int M: t is on ∂M at the exit (touching) or past M.
+    const Exit ex = find_exit(A, B, ca.forward, cb.forward, t, d);
+    if (ex.s_sign < 0) {
+      r.distance = std::numeric_limits<double>::infinity();
+      return r;
+    }
+    en = ex;
+    zero = true;
+  }
+  double s = 0;
+  if (!zero)
+    s = exact::accurate_ratio([&](auto L) { return exit_numerator(L, en, t); },
+                              [&](auto L) {
+                                return L(d.x()) * (L(en.e1.y()) - L(en.e0.y())) - L(d.y()) * (L(en.e1.x()) - L(en.e0.x()));
+                              });
+  const double dn = std::sqrt(exact::accurate_value([&](auto L) { return L(d.x()) * L(d.x()) + L(d.y()) * L(d.y()); }));
+  r.hit = true;
+  r.distance = s * dn;
+  r.translation = s * d;
+  // M's edge at the contact, counter-clockwise (P's edge, or −Q's): outward normal (e.y, −e.x).
+  const Vec2 e(exact::accurate_value([&](auto L) { return L(en.e1.x()) - L(en.e0.x()); }),
+               exact::accurate_value([&](auto L) { return L(en.e1.y()) - L(en.e0.y()); }));
+  r.normal = Vec2(e.y(), 0 - e.x()) / std::hypot(e.x(), e.y());
+  const Vec2 f = t + r.translation;
+  if (en.at_vertex) {
+    r.feature_p = {FeatureKind::Vertex, int(en.wa)};
+    r.feature_q = {FeatureKind::Vertex, int(en.wq)};
+    r.witness_p = r.witness_q = P[en.wa];
+  } else if (en.edge_from_p) {
+    r.feature_p = {FeatureKind::Edge, int(en.ia)};
+    r.feature_q = {FeatureKind::Vertex, int(en.iq)};
+    r.witness_q = r.witness_p = Q[en.iq] + f;
+  } else {
+    r.feature_p = {FeatureKind::Vertex, int(en.ia)};
+    r.feature_q = {FeatureKind::Edge, int(en.iq)};
+    r.witness_q = r.witness_p = P[en.ia];
+  }
+  return r;
+}
+
+}  // namespace pendepth::convex2

@@ -12,6 +12,7 @@
 
 #include "front/batch.hpp"
 #include "front/checks.hpp"
+#include "convex2/convex_cast.hpp"
 #include "front/scale.hpp"
 #include "nonconvex2/boundary_distance.hpp"
 
@@ -258,9 +259,15 @@ struct Pair2::Impl {
     return r;
   }
 
-  // Shape cast (issue 16 item 3): 0 when overlapping, else the first boundary contact.
+  // Shape cast (issue 16 item 3): 0 when overlapping, else the first contact: the ray's entry
+  // into M in O(log) for two convex shapes (the boundaries when the line is tangent to M), the
+  // first boundary contact for the others.
   Cast2 cast(const Vec2& t, const Vec2& d) const {
-    if (!overlapping(t)) return boundary_engine().cast(t, d);
+    if (!overlapping(t)) {
+      if (engine == Engine2::Convex)
+        if (auto r = convex2::convex_cast(P.convex(), Q.convex(), t, d)) return *r;
+      return boundary_engine().cast(t, d);
+    }
     Cast2 r;
     r.hit = r.overlapping = true;
     return r;
