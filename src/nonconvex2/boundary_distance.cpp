@@ -3,6 +3,7 @@
 
 #include "geometry/exact.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -29,7 +30,17 @@ struct Pair {
   // cast: 0 crossing hit, 1 collinear reaching a, 2 collinear reaching b, 3 collinear at s = 0.
   int kind = 0;
   int flip = 1;  // cast, kind 0: sign making the denominator positive
+  std::uint32_t end = 0;  // distance, kind 0 or 1: the edge's vertex nearest to the point
 };
+
+constexpr std::uint32_t kNoEnd = 0xffffffffu;
+
+// Two vertex–vertex candidates naming the same vertex of P and the same vertex of Q.
+bool same_vertices(const Pair& a, const Pair& b) {
+  const std::uint32_t ap = a.q_vertex ? a.end : a.vertex, aq = a.q_vertex ? a.vertex : a.end;
+  const std::uint32_t bp = b.q_vertex ? b.end : b.vertex, bq = b.q_vertex ? b.vertex : b.end;
+  return ap == bp && aq == bq;
+}
 
 template <class L>
 auto px(const Pair& c, L l) { return l(c.x0.x()) + l(c.sh.x()); }
@@ -184,7 +195,7 @@ BoundaryPair2::BoundaryPair2(const Polygon& P, const Polygon& Q) : P_(P), Q_(Q) 
 
 Distance2 BoundaryPair2::distance(const Vec2& t) const {
   Pair best;
-  double best_v = kInf;
+  double best_v = kInf, best_d = kInf;
   bool have = false;
   const Vec2 minus_t = Vec2(0, 0) - t;
   // Every vertex of one shape against the other shape's edge tree, branch and bound.
@@ -222,16 +233,33 @@ Distance2 BoundaryPair2::distance(const Vec2& t) const {
           continue;
         }
         const std::uint32_t e = n.tri;
-        Pair c{vs[k], sh, es[e], es[E.next(e)]};
+        const Vec2 &a = es[e], &b = es[E.next(e)];
+        if (have) {
+          // Floating filter: the point–segment distance in double is within err of the exact one
+          // (a few roundings of the coordinates' magnitude; 2^-40 is a wide margin). A pair
+          // certainly farther than the best so far needs no exact evaluation.
+          const Vec2 ev = b - a, w = X - a;
+          const double lam = std::clamp(w.dot(ev) / ev.squaredNorm(), 0.0, 1.0);
+          const double approx = (w - lam * ev).norm();
+          const double mag = std::max({X.cwiseAbs().maxCoeff(), a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff()});
+          const double err = mag * 0x1p-40 + 0x1p-1000;
+          if (approx - err > best_d * (1 + 0x1p-40) + err) continue;
+        }
+        Pair c{vs[k], sh, a, b};
         c.vertex = static_cast<std::uint32_t>(k);
         c.edge = e;
         c.q_vertex = q_vertex;
         classify_nearest(c);
+        c.end = c.kind == 0 ? e : c.kind == 1 ? static_cast<std::uint32_t>(E.next(e)) : kNoEnd;
+        // The same two vertices met before (through the edge's neighbour, or from the other
+        // side): the same distance exactly, and the first one stays.
+        if (have && c.kind != 2 && best.kind != 2 && same_vertices(c, best)) continue;
         const double v = distance_value(c);
         if (!have || smaller(c, v, best, best_v, [](const Pair& p, auto l) { return dnum(p, l); },
                              [](const Pair& p, auto l) { return dden(p, l); })) {
           best = c;
           best_v = v;
+          best_d = std::sqrt(v);
           have = true;
         }
       }
