@@ -245,7 +245,14 @@ struct Pair2::Impl {
   }
 
   Distance2 signed_distance(const Vec2& t) const {
-    if (!overlapping(t)) return boundary_engine().distance(t);
+    if (!overlapping(t)) {
+      // Two convex shapes: the nearest vertex of M located by binary searches, then measured
+      // exactly on its few segments (src/convex2/convex_cast.hpp); else the boundary search.
+      if (engine == Engine2::Convex)
+        if (const auto v = convex2::convex_nearest_vertex(P.convex(), Q.convex(), t))
+          return boundary_engine().distance_near(t, (*v)[0], (*v)[1]);
+      return boundary_engine().distance(t);
+    }
     const Depth2 s = minimum(t);
     Distance2 r;
     r.distance = -s.depth;

@@ -4,6 +4,7 @@
 #include "geometry/exact.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -186,88 +187,50 @@ void build_tree(const Polygon& S, geometry::BoxTree& tree) {
 // The absolute error of the rounded point x0 + sh, with a margin.
 double point_pad(const Vec2& X) { return (std::abs(X.x()) + std::abs(X.y())) * 0x1p-50 + 0x1p-1000; }
 
-}  // namespace
-
-BoundaryPair2::BoundaryPair2(const Polygon& P, const Polygon& Q) : P_(P), Q_(Q) {
-  build_tree(P_, p_edges_);
-  build_tree(Q_, q_edges_);
-}
-
-Distance2 BoundaryPair2::distance(const Vec2& t) const {
+// The nearest vertex–edge pair so far, and the rule that replaces it (filter, exact order,
+// first of equals kept).
+struct Nearest {
   Pair best;
   double best_v = kInf, best_d = kInf;
   bool have = false;
-  const Vec2 minus_t = Vec2(0, 0) - t;
-  // Every vertex of one shape against the other shape's edge tree, branch and bound.
-  auto run = [&](const Polygon& V, const Vec2& sh, const Polygon& E, const geometry::BoxTree& tree, bool q_vertex) {
-    const auto vs = V.vertices();
-    const auto es = E.vertices();
-    for (std::size_t k = 0; k < vs.size(); ++k) {
-      const Vec2 X = vs[k] + sh;
-      const double pad = point_pad(X);
-      std::int32_t stack[128];
-      int top = 0;
-      stack[top++] = 0;
-      while (top > 0) {
-        const auto& n = tree.nodes[stack[--top]];
-        const double dx = std::max({n.lo.x() - X.x(), X.x() - n.hi.x(), 0.0});
-        const double dy = std::max({n.lo.y() - X.y(), X.y() - n.hi.y(), 0.0});
-        const double gx = std::max(dx * (1 - 0x1p-50) - pad, 0.0), gy = std::max(dy * (1 - 0x1p-50) - pad, 0.0);
-        if ((gx * gx + gy * gy) * (1 - 0x1p-50) > best_v * (1 + 0x1p-30)) continue;
-        if (n.left >= 0) {
-          // Nearer child last (popped first).
-          const auto& L = tree.nodes[n.left];
-          const auto& R = tree.nodes[n.right];
-          auto box_d = [&](const geometry::BoxTree::Node& m) {
-            const double ax = std::max({m.lo.x() - X.x(), X.x() - m.hi.x(), 0.0});
-            const double ay = std::max({m.lo.y() - X.y(), X.y() - m.hi.y(), 0.0});
-            return ax * ax + ay * ay;
-          };
-          if (box_d(L) <= box_d(R)) {
-            stack[top++] = n.right;
-            stack[top++] = n.left;
-          } else {
-            stack[top++] = n.left;
-            stack[top++] = n.right;
-          }
-          continue;
-        }
-        const std::uint32_t e = n.tri;
-        const Vec2 &a = es[e], &b = es[E.next(e)];
-        if (have) {
-          // Floating filter: the point–segment distance in double is within err of the exact one
-          // (a few roundings of the coordinates' magnitude; 2^-40 is a wide margin). A pair
-          // certainly farther than the best so far needs no exact evaluation.
-          const Vec2 ev = b - a, w = X - a;
-          const double lam = std::clamp(w.dot(ev) / ev.squaredNorm(), 0.0, 1.0);
-          const double approx = (w - lam * ev).norm();
-          const double mag = std::max({X.cwiseAbs().maxCoeff(), a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff()});
-          const double err = mag * 0x1p-40 + 0x1p-1000;
-          if (approx - err > best_d * (1 + 0x1p-40) + err) continue;
-        }
-        Pair c{vs[k], sh, a, b};
-        c.vertex = static_cast<std::uint32_t>(k);
-        c.edge = e;
-        c.q_vertex = q_vertex;
-        classify_nearest(c);
-        c.end = c.kind == 0 ? e : c.kind == 1 ? static_cast<std::uint32_t>(E.next(e)) : kNoEnd;
-        // The same two vertices met before (through the edge's neighbour, or from the other
-        // side): the same distance exactly, and the first one stays.
-        if (have && c.kind != 2 && best.kind != 2 && same_vertices(c, best)) continue;
-        const double v = distance_value(c);
-        if (!have || smaller(c, v, best, best_v, [](const Pair& p, auto l) { return dnum(p, l); },
-                             [](const Pair& p, auto l) { return dden(p, l); })) {
-          best = c;
-          best_v = v;
-          best_d = std::sqrt(v);
-          have = true;
-        }
-      }
-    }
-  };
-  run(Q_, t, P_, p_edges_, true);
-  run(P_, minus_t, Q_, q_edges_, false);
 
+  // Vertex x0 + sh (rounded: X) against the edge a → b (indices: vertex k, edge e from e to e_next).
+  void consider(const Vec2& X, const Vec2& x0, const Vec2& sh, const Vec2& a, const Vec2& b, std::uint32_t k,
+                std::uint32_t e, std::uint32_t e_next, bool q_vertex) {
+    if (have) {
+      // Floating filter: the point–segment distance in double is within err of the exact one
+      // (a few roundings of the coordinates' magnitude; 2^-40 is a wide margin). A pair
+      // certainly farther than the best so far needs no exact evaluation.
+      const Vec2 ev = b - a, w = X - a;
+      const double lam = std::clamp(w.dot(ev) / ev.squaredNorm(), 0.0, 1.0);
+      const double approx = (w - lam * ev).norm();
+      const double mag = std::max({X.cwiseAbs().maxCoeff(), a.cwiseAbs().maxCoeff(), b.cwiseAbs().maxCoeff()});
+      const double err = mag * 0x1p-40 + 0x1p-1000;
+      if (approx - err > best_d * (1 + 0x1p-40) + err) return;
+    }
+    Pair c{x0, sh, a, b};
+    c.vertex = k;
+    c.edge = e;
+    c.q_vertex = q_vertex;
+    classify_nearest(c);
+    c.end = c.kind == 0 ? e : c.kind == 1 ? e_next : kNoEnd;
+    // The same two vertices met before (through the edge's neighbour, or from the other
+    // side): the same distance exactly, and the first one stays.
+    if (have && c.kind != 2 && best.kind != 2 && same_vertices(c, best)) return;
+    const double v = distance_value(c);
+    if (!have || smaller(c, v, best, best_v, [](const Pair& p, auto l) { return dnum(p, l); },
+                         [](const Pair& p, auto l) { return dden(p, l); })) {
+      best = c;
+      best_v = v;
+      best_d = std::sqrt(v);
+      have = true;
+    }
+  }
+};
+
+Distance2 assemble(const Nearest& near, const Polygon& P_, const Polygon& Q_, const Vec2& t) {
+  const Pair& best = near.best;
+  const double best_v = near.best_v;
   Distance2 r;
   const Polygon& E = best.q_vertex ? P_ : Q_;
   const std::uint32_t a_index = best.edge, b_index = static_cast<std::uint32_t>(E.next(best.edge));
@@ -315,6 +278,82 @@ Distance2 BoundaryPair2::distance(const Vec2& t) const {
   r.normal = dir / len;
   r.translation = Vec2(0, 0) - r.distance * r.normal;
   return r;
+}
+
+}  // namespace
+
+BoundaryPair2::BoundaryPair2(const Polygon& P, const Polygon& Q) : P_(P), Q_(Q) {
+  build_tree(P_, p_edges_);
+  build_tree(Q_, q_edges_);
+}
+
+Distance2 BoundaryPair2::distance(const Vec2& t) const {
+  Nearest near;
+  const double& best_v = near.best_v;
+  const Vec2 minus_t = Vec2(0, 0) - t;
+  // Every vertex of one shape against the other shape's edge tree, branch and bound.
+  auto run = [&](const Polygon& V, const Vec2& sh, const Polygon& E, const geometry::BoxTree& tree, bool q_vertex) {
+    const auto vs = V.vertices();
+    const auto es = E.vertices();
+    for (std::size_t k = 0; k < vs.size(); ++k) {
+      const Vec2 X = vs[k] + sh;
+      const double pad = point_pad(X);
+      std::int32_t stack[128];
+      int top = 0;
+      stack[top++] = 0;
+      while (top > 0) {
+        const auto& n = tree.nodes[stack[--top]];
+        const double dx = std::max({n.lo.x() - X.x(), X.x() - n.hi.x(), 0.0});
+        const double dy = std::max({n.lo.y() - X.y(), X.y() - n.hi.y(), 0.0});
+        const double gx = std::max(dx * (1 - 0x1p-50) - pad, 0.0), gy = std::max(dy * (1 - 0x1p-50) - pad, 0.0);
+        if ((gx * gx + gy * gy) * (1 - 0x1p-50) > best_v * (1 + 0x1p-30)) continue;
+        if (n.left >= 0) {
+          // Nearer child last (popped first).
+          const auto& L = tree.nodes[n.left];
+          const auto& R = tree.nodes[n.right];
+          auto box_d = [&](const geometry::BoxTree::Node& m) {
+            const double ax = std::max({m.lo.x() - X.x(), X.x() - m.hi.x(), 0.0});
+            const double ay = std::max({m.lo.y() - X.y(), X.y() - m.hi.y(), 0.0});
+            return ax * ax + ay * ay;
+          };
+          if (box_d(L) <= box_d(R)) {
+            stack[top++] = n.right;
+            stack[top++] = n.left;
+          } else {
+            stack[top++] = n.left;
+            stack[top++] = n.right;
+          }
+          continue;
+        }
+        const std::uint32_t e = n.tri;
+        near.consider(X, vs[k], sh, es[e], es[E.next(e)], static_cast<std::uint32_t>(k), e,
+                      static_cast<std::uint32_t>(E.next(e)), q_vertex);
+      }
+    }
+  };
+  run(Q_, t, P_, p_edges_, true);
+  run(P_, minus_t, Q_, q_edges_, false);
+  return assemble(near, P_, Q_, t);
+}
+
+Distance2 BoundaryPair2::distance_near(const Vec2& t, std::size_t ip, std::size_t iq) const {
+  // The segments of M through vertex (ip, iq) and through its two possible predecessors on M's
+  // boundary: each a vertex of one shape against an edge of the other (all inside M, so none
+  // is nearer than M; the nearest point of M lies on one of them).
+  Nearest near;
+  const auto pv = P_.vertices(), qv = Q_.vertices();
+  const std::size_t n = pv.size(), m = qv.size();
+  const Vec2 minus_t = Vec2(0, 0) - t;
+  for (const auto& [a, b] : {std::array<std::size_t, 2>{ip, iq}, std::array<std::size_t, 2>{(ip + n - 1) % n, iq},
+                             std::array<std::size_t, 2>{ip, (iq + m - 1) % m}}) {
+    for (const std::size_t e : {(a + n - 1) % n, a})
+      near.consider(Vec2(qv[b] + t), qv[b], t, pv[e], pv[(e + 1) % n], static_cast<std::uint32_t>(b),
+                    static_cast<std::uint32_t>(e), static_cast<std::uint32_t>((e + 1) % n), true);
+    for (const std::size_t e : {(b + m - 1) % m, b})
+      near.consider(Vec2(pv[a] - t), pv[a], minus_t, qv[e], qv[(e + 1) % m], static_cast<std::uint32_t>(a),
+                    static_cast<std::uint32_t>(e), static_cast<std::uint32_t>((e + 1) % m), false);
+  }
+  return assemble(near, P_, Q_, t);
 }
 
 Cast2 BoundaryPair2::cast(const Vec2& t, const Vec2& d_in) const {

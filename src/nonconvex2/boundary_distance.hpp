@@ -30,6 +30,8 @@
 
 #include "geometry/box_tree.hpp"
 
+#include <cstddef>
+
 namespace pendepth::nonconvex2 {
 
 class BoundaryPair2 {
@@ -39,6 +41,10 @@ class BoundaryPair2 {
   /// Distance of P and Q + t (precondition: interiors do not overlap). `overlapping` false;
   /// distance 0 and normal 0 when touching; features as in Distance2 (global vertex/edge indices).
   Distance2 distance(const Vec2& t) const;
+  /// The same answer computed from the vertex–edge pairs around one vertex of M (P vertex ip,
+  /// Q vertex iq) and its two possible predecessors on ∂M only: for two convex shapes whose
+  /// nearest point of M to t lies there (convex2::convex_nearest_vertex). O(1) pairs.
+  Distance2 distance_near(const Vec2& t, std::size_t ip, std::size_t iq) const;
   /// Cast of Q + t along d (d finite, non-zero; precondition: interiors do not overlap at t).
   Cast2 cast(const Vec2& t, const Vec2& d) const;
 
