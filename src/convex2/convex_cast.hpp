@@ -1,6 +1,6 @@
-// Private: the shape cast of two convex polygons in O(log n + log m) (issue 16 item 3;
-// docs/algorithms.md "Signed distance and shape cast in 2D"), defined in directional.cpp next to
-// the prune-and-search it reuses.
+// Private: the shape cast of two convex polygons in O(log n + log m) (issue 16 item 3) and the
+// localisation of their distance (item 2; docs/algorithms.md "Signed distance and shape cast in
+// 2D"), defined in directional.cpp next to the prune-and-search and chains they reuse.
 //
 // Contract: P, Q convex, t finite with the interiors of P and Q + t not overlapping (the caller
 // checked), d finite non-zero. The ray t + s·d̂ enters the closed M = P ⊕ (−Q) where the line
