@@ -6,6 +6,9 @@
 //                      [--generalized]
 //   pendepth batch P Q --queries FILE [--json] [--threads N] [--progress] [--rotate-q ...|DEG] [--rotate-p ...]
 //   pendepth nfp P Q [--json]
+//   pendepth distance P Q [--offset X,Y[,Z]] [--rotate-q ...] [--rotate-p ...] [--json]
+//   pendepth cast P Q [--offset X,Y[,Z]] --direction X,Y[,Z] [--rotate-q ...] [--rotate-p ...] [--json]
+//   pendepth batch P Q --queries FILE --signed ...   (signed distances: distance,tx,ty[,tz])
 //
 // Exit status: 0 success, 2 bad input (one line on stderr naming file, line and problem),
 // 3 an output that cannot be written (standard output or --svg FILE: full disk, closed pipe,
@@ -367,7 +370,7 @@ int run_depth(const DepthArgs& a) {
 struct BatchArgs {
   std::string p, q, queries, rotate_p, rotate_q;
   unsigned threads = 0;
-  bool json = false, progress = false;
+  bool json = false, progress = false, signed_distance = false;
 };
 
 bool show_progress(const BatchArgs& a) { return a.progress || isatty(fileno(stderr)); }
@@ -453,6 +456,104 @@ int write_batch(const BatchArgs& a, const std::vector<Result>& results, const ch
   return 0;
 }
 
+// ---- signed distance and shape cast (issue 16 item 7) ----
+
+io::Features2 features_of(const Shape2& s) {
+  return s.is_convex() ? io::Features2{&s.convex(), nullptr} : io::Features2{nullptr, &s.polygon()};
+}
+
+struct DistanceArgs {
+  std::string p, q, offset, direction, rotate_p, rotate_q;
+  bool json = false;
+};
+
+// `distance` (cast false) and `cast` (cast true), 2D or 3D by the shapes.
+int run_distance(const DistanceArgs& a, bool cast) {
+  check_one_stdin({&a.p, &a.q});
+  const auto [p, q] = load_pair(a.p, a.q);
+  std::string out;
+  if (p.dimension() == 3) {
+    const Eigen::Quaterniond rq = parse_rotation(a.rotate_q, "--rotate-q");
+    const Eigen::Quaterniond rp = parse_rotation(a.rotate_p, "--rotate-p");
+    const Vec3 t = a.offset.empty() ? Vec3(0, 0, 0) : parse_vec3(a.offset, "--offset");
+    const Vec3 d = cast ? parse_vec3(a.direction, "--direction") : Vec3(0, 0, 0);
+    if (cast && d.isZero(0)) throw InvalidInput("--direction: the direction is zero");
+    const Pair3 pair(make_shape3(p, "P"), make_shape3(q, "Q"));
+    const Pose3 pose_p(rp, Vec3::Zero()), pose_q(rq, t);
+    const auto &P = pair.P().polytope(), &Q = pair.Q().polytope();
+    if (cast) {
+      const pendepth::Cast3 r = pair.cast(pose_p, pose_q, d);
+      a.json ? io::append_json(out, r, P, Q) : void(out = io::summary(r, P, Q));
+    } else {
+      const pendepth::Distance3 r = pair.signed_distance(pose_p, pose_q);
+      a.json ? io::append_json(out, r, P, Q) : void(out = io::summary(r, P, Q));
+    }
+  } else {
+    reject_rotations(a.rotate_p, a.rotate_q);
+    const Shape2 P = make_shape2(p, "P"), Q = make_shape2(q, "Q");
+    const Vec2 t = a.offset.empty() ? Vec2(0, 0) : parse_vec(a.offset, "--offset");
+    const Vec2 d = cast ? parse_vec(a.direction, "--direction") : Vec2(0, 0);
+    if (cast && d.x() == 0 && d.y() == 0) throw InvalidInput("--direction: the direction is zero");
+    const Pair2 pair(P, Q, pendepth::Prepare::Queries);
+    if (cast) {
+      const pendepth::Cast2 r = pair.cast(t, d);
+      a.json ? io::append_json(out, r, features_of(P), features_of(Q)) : void(out = io::summary(r, features_of(P), features_of(Q)));
+    } else {
+      const pendepth::Distance2 r = pair.signed_distance(t);
+      a.json ? io::append_json(out, r, features_of(P), features_of(Q)) : void(out = io::summary(r, features_of(P), features_of(Q)));
+    }
+  }
+  if (a.json) out += '\n';
+  write_stdout(out);
+  return 0;
+}
+
+// `batch --signed`: placements only (every direction must be zero), answered in chunks.
+template <class Query>
+void require_placements(const BatchArgs& a, const std::vector<Query>& queries) {
+  for (const Query& q : queries)
+    if (!q.d.isZero(0))
+      throw InvalidInput((a.queries == "-" ? std::string(kStdin) : a.queries) + ":" + std::to_string(q.line) +
+                         ": --signed takes placements only: the direction columns must be 0");
+}
+
+template <class Result, class V, class Query, class Run>
+std::vector<Result> signed_all(const BatchArgs& a, const std::vector<Query>& queries, Run&& run) {
+  require_placements(a, queries);
+  constexpr std::size_t kChunk = 1 << 14;
+  std::vector<V> ts;
+  for (const Query& q : queries) ts.push_back(q.t);
+  std::vector<Result> out(ts.size());
+  Progress bar(ts.size(), show_progress(a));
+  for (std::size_t b = 0; b < ts.size(); b += kChunk) {
+    const std::size_t n = std::min(kChunk, ts.size() - b);
+    run(std::span<const V>(ts).subspan(b, n), std::span<Result>(out).subspan(b, n));
+    bar.add(n);
+  }
+  return out;
+}
+
+int run_signed_batch(const BatchArgs& a, const Pair2& pair, const std::vector<io::Query2>& queries) {
+  const auto results = signed_all<pendepth::Distance2, Vec2>(
+      a, queries, [&](std::span<const Vec2> ts, std::span<pendepth::Distance2> out) { pair.signed_distance(ts, out, a.threads); });
+  return write_batch(a, results, "distance,tx,ty\n", [&](std::string& out, const pendepth::Distance2& r) {
+    io::append_json(out, r, features_of(pair.P()), features_of(pair.Q()));
+  });
+}
+
+int run_signed_batch3(const BatchArgs& a, const Pair3& pair, const Pose3& pose_p, const Eigen::Quaterniond& rq,
+                      const std::vector<io::Query3>& queries) {
+  const auto results = signed_all<pendepth::Distance3, Vec3>(
+      a, queries, [&](std::span<const Vec3> ts, std::span<pendepth::Distance3> out) {
+        std::vector<Pose3> poses;
+        for (const Vec3& t : ts) poses.emplace_back(rq, t);
+        pair.signed_distance(pose_p, poses, out, a.threads);
+      });
+  return write_batch(a, results, "distance,tx,ty,tz\n", [&](std::string& out, const pendepth::Distance3& r) {
+    io::append_json(out, r, pair.P().polytope(), pair.Q().polytope());
+  });
+}
+
 int run_batch3(const BatchArgs& a, const ShapeText& p, const ShapeText& q) {
   const Eigen::Quaterniond rq = parse_rotation(a.rotate_q, "--rotate-q");
   const Eigen::Quaterniond rp = parse_rotation(a.rotate_p, "--rotate-p");
@@ -460,6 +561,7 @@ int run_batch3(const BatchArgs& a, const ShapeText& p, const ShapeText& q) {
   const std::vector<io::Query3> queries = a.queries == "-" ? io::parse_queries3_csv(io::read_stream(std::cin, kStdin), kStdin)
                                                            : io::read_queries3_csv(a.queries);
   const Pose3 pose_p(rp, Vec3::Zero());
+  if (a.signed_distance) return run_signed_batch3(a, pair, pose_p, rq, queries);
   const auto poses = [&](std::span<const Vec3> ts) {
     std::vector<Pose3> p;
     p.reserve(ts.size());
@@ -488,6 +590,7 @@ int run_batch(const BatchArgs& a) {
   if (const std::string note = rotation_note(a.rotate_q); !note.empty()) std::fputs(("pendepth: " + note).c_str(), stderr);
   const std::vector<io::Query2> queries = a.queries == "-" ? io::parse_queries_csv(io::read_stream(std::cin, kStdin), kStdin)
                                                            : io::read_queries_csv(a.queries);
+  if (a.signed_distance) return run_signed_batch(a, pair, queries);
   const std::vector<Depth2> results = answer_all<Depth2>(
       queries, show_progress(a),
       [&](std::span<const Vec2> ts, std::span<Depth2> out) { pair.minimum(ts, out, a.threads); },
@@ -583,6 +686,28 @@ int main(int argc, char** argv) {
                     "on stderr when it is not a multiple of 90: Q's coordinates are rounded)")
       ->type_name("QW,QX,QY,QZ|DEG");
   batch->add_option("--rotate-p", ba.rotate_p, "3D: rotation of P (quaternion, normalised)")->type_name("QW,QX,QY,QZ");
+  batch->add_flag("--signed", ba.signed_distance,
+                  "signed distances instead of depths: CSV distance,tx,ty[,tz] (translation to touching); "
+                  "the queries' direction columns must be 0");
+
+  // distance and cast (issue 16): one placement, 2D or 3D by the shapes.
+  DistanceArgs dsa, csa;
+  CLI::App* distance = app.add_subcommand(
+      "distance", "Signed distance of one placement: > 0 apart (Euclidean distance), 0 touching, -σ overlapping; "
+                  "the translation brings Q into touching contact.");
+  CLI::App* cast = app.add_subcommand(
+      "cast", "Shape cast (time of impact): the smallest s >= 0 with Q moved by s along --direction touching P "
+              "(0 when touching or overlapping, 1e999 in JSON / inf when it never does).");
+  for (auto [cmd, args] : {std::pair{distance, &dsa}, std::pair{cast, &csa}}) {
+    cmd->add_option("P", args->p, "fixed shape file (.wkt, or 3D .obj/.off/.stl; - reads standard input)")->required()->type_name("FILE");
+    cmd->add_option("Q", args->q, "moving shape file (same dimension as P)")->required()->type_name("FILE");
+    cmd->add_option("--offset", args->offset, "placement t of Q (default 0); negative: --offset=-1,2")->type_name("X,Y[,Z]");
+    cmd->add_flag("--json", args->json, "print one JSON object instead of a summary");
+    cmd->add_option("--rotate-q", args->rotate_q, "3D: rotation of Q about its origin, before the offset (quaternion)")
+        ->type_name("QW,QX,QY,QZ");
+    cmd->add_option("--rotate-p", args->rotate_p, "3D: rotation of P about its origin (quaternion)")->type_name("QW,QX,QY,QZ");
+  }
+  cast->add_option("--direction", csa.direction, "direction d of the motion (any non-zero length)")->required()->type_name("X,Y[,Z]");
 
   NfpArgs na;
   CLI::App* nfp = app.add_subcommand(
@@ -613,7 +738,11 @@ int main(int argc, char** argv) {
   // SIGPIPE.
   std::signal(SIGPIPE, SIG_IGN);
   try {
-    const int status = depth->parsed() ? run_depth(da) : nfp->parsed() ? run_nfp(na) : run_batch(ba);
+    const int status = depth->parsed()      ? run_depth(da)
+                       : nfp->parsed()      ? run_nfp(na)
+                       : distance->parsed() ? run_distance(dsa, false)
+                       : cast->parsed()     ? run_distance(csa, true)
+                                            : run_batch(ba);
     flush_stdout();
     return status;
   } catch (const InvalidInput& e) {
