@@ -13,6 +13,18 @@
 //   field_build/pendepth      DepthField construction (and destruction), per pair
 //   sigma/box2d               b2CollidePolygons, polygon radius 0 (n <= b2_maxPolygonVertices)
 //   sigma/box2d_world         the same + b2WorldManifold::Initialize, which yields the depth
+// Signed distance and cast (issue 16), names <query>/<implementation>/<engine>/<n>, placements
+// apart (|t| beyond both shapes' reach; casts aimed at M, most hit):
+//   distance/pendepth         Pair2::signed_distance (the boundary vertex–edge search, box trees)
+//   distance/scan             plain double minimum over every vertex–edge pair, O(nm)
+//   distance/box2d            b2Distance (GJK, float), convex engine, n <= 64
+//   cast/pendepth             Pair2::cast (convex: the ray's entry into M, O(log n + log m);
+//                             others: first boundary contact)
+//   cast/scan                 plain double first vertex–edge contact over every pair, O(nm)
+//   cast/box2d                b2ShapeCast (conservative advancement, float; stops within
+//                             b2_linearSlop = 0.005 of contact), convex engine, n <= 64
+// Engines: convex (two ellipse polygons of n vertices), polygon-convex (a star of n vertices,
+// an ellipse of 8), no-fit-polygon and pair-per-query (two stars of n and n/2 vertices).
 // Every query benchmark cycles through the same kQueries placements t ∈ int M (and directions),
 // generated outside the timed loop from a fixed seed. The naive references are plain double and
 // independent of pendepth (own merge from the vertex arrays); before timing, each size's fixture
@@ -21,14 +33,18 @@
 // docs/benchmarks.md from this program's JSON output.
 #include <benchmark/benchmark.h>
 #include <box2d/b2_collision.h>
+#include <box2d/b2_distance.h>
 #include <box2d/b2_polygon_shape.h>
 #include <pendepth/depth2.hpp>
+#include <pendepth/pendepth.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <memory>
+#include <numbers>
 #include <span>
 #include <string>
 #include <vector>
@@ -386,6 +402,158 @@ void sigma_box2d_world(benchmark::State& st, std::size_t n) {
   }
 }
 
+// ---- signed distance and cast (issue 16) ----
+
+std::vector<Vec2> star_ring(std::size_t n, pb::Rng& rng) {
+  std::vector<Vec2> r(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const double th = 2 * std::numbers::pi * (double(k) + rng.uniform(0, 0.9)) / double(n);
+    const double rad = rng.uniform(0.8, 2.0);
+    r[k] = Vec2(rad * std::cos(th), rad * std::sin(th));
+  }
+  return r;
+}
+
+struct DistanceFixture {
+  std::unique_ptr<pendepth::Pair2> pair;
+  std::vector<std::vector<Vec2>> p_rings, q_rings;  // normal-form rings for the scans
+  std::vector<Vec2> ts, ds;
+  std::vector<b2Vec2> bp, bq;                        // Box2D copies (convex engine)
+};
+
+// Every vertex of one ring set against every edge of the other, shifted by sh: plain double.
+double scan_distance(const DistanceFixture& f, const Vec2& t) {
+  double best = kInf;
+  auto run = [&](const auto& vr, const auto& er, const Vec2& sh) {
+    for (const auto& ring : vr)
+      for (const Vec2& v0 : ring) {
+        const Vec2 v = v0 + sh;
+        for (const auto& er_ring : er)
+          for (std::size_t k = 0; k < er_ring.size(); ++k) {
+            const Vec2 a = er_ring[k], e = er_ring[(k + 1) % er_ring.size()] - a;
+            const double lam = std::clamp((v - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
+            best = std::min(best, (v - a - lam * e).squaredNorm());
+          }
+      }
+  };
+  run(f.q_rings, f.p_rings, t);
+  run(f.p_rings, f.q_rings, Vec2(-t));
+  return std::sqrt(best);
+}
+
+// First contact of vertices moving along dir against edges: plain double, O(nm).
+double scan_cast(const DistanceFixture& f, const Vec2& t, const Vec2& d) {
+  double best = kInf;
+  auto run = [&](const auto& vr, const auto& er, const Vec2& sh, const Vec2& dir) {
+    for (const auto& ring : vr)
+      for (const Vec2& v0 : ring) {
+        const Vec2 v = v0 + sh;
+        for (const auto& er_ring : er)
+          for (std::size_t k = 0; k < er_ring.size(); ++k) {
+            const Vec2 a = er_ring[k], e = er_ring[(k + 1) % er_ring.size()] - a;
+            const double den = dir.x() * e.y() - dir.y() * e.x();
+            if (den == 0) continue;
+            const Vec2 w = a - v;
+            const double s = (w.x() * e.y() - w.y() * e.x()) / den, mu = (w.x() * dir.y() - w.y() * dir.x()) / den;
+            if (s >= 0 && mu >= 0 && mu <= 1) best = std::min(best, s);
+          }
+      }
+  };
+  run(f.q_rings, f.p_rings, t, d);
+  run(f.p_rings, f.q_rings, Vec2(-t), Vec2(-d));
+  return best * d.norm();
+}
+
+const DistanceFixture* distance_fixture(const std::string& engine, std::size_t n) {
+  static std::map<std::pair<std::string, std::size_t>, std::unique_ptr<DistanceFixture>> cache;
+  auto& slot = cache[{engine, n}];
+  if (slot) return slot.get();
+  pb::Rng rng(1600 + n);
+  auto f = std::make_unique<DistanceFixture>();
+  pendepth::Shape2 P = pendepth::Shape2(pb::random_ellipse_polygon(n, rng, "P"));
+  pendepth::Shape2 Q = pendepth::Shape2(pb::random_ellipse_polygon(engine == "convex" ? n : 8, rng, "Q"));
+  pendepth::Prepare prep = pendepth::Prepare::Auto;
+  if (engine != "convex") P = pendepth::Shape2(star_ring(n, rng), {}, "P");
+  if (engine == "no-fit-polygon" || engine == "pair-per-query") {
+    Q = pendepth::Shape2(star_ring(std::max<std::size_t>(n / 2, 4), rng), {}, "Q");
+    prep = engine == "no-fit-polygon" ? pendepth::Prepare::Full : pendepth::Prepare::Queries;
+  }
+  f->pair = std::make_unique<pendepth::Pair2>(P, Q, prep);
+  if (std::string(pendepth::to_string(f->pair->engine())) != engine) return nullptr;
+  f->p_rings = P.rings();
+  f->q_rings = Q.rings();
+  for (std::size_t k = 0; k < pb::kQueries; ++k) {
+    const double a = rng.uniform(0, 2 * std::numbers::pi), r = rng.uniform(5.6, 8.0);
+    f->ts.emplace_back(r * std::cos(a), r * std::sin(a));
+    const double b = a + std::numbers::pi + rng.uniform(-0.4, 0.4);
+    f->ds.emplace_back(std::cos(b), std::sin(b));
+  }
+  if (engine == "convex") {
+    for (const Vec2& v : f->p_rings[0]) f->bp.emplace_back(float(v.x()), float(v.y()));
+    for (const Vec2& v : f->q_rings[0]) f->bq.emplace_back(float(v.x()), float(v.y()));
+  }
+  slot = std::move(f);
+  return slot.get();
+}
+
+enum class DistImpl { Pendepth, Scan, Box2d };
+
+void distance_bench(benchmark::State& st, const std::string& engine, std::size_t n, DistImpl impl, bool cast) {
+  const DistanceFixture* f = distance_fixture(engine, n);
+  if (!f) {
+    st.SkipWithError("engine not chosen for this size");
+    return;
+  }
+  // Agreement of the double scan with pendepth (a broken build or benchmark, not accuracy).
+  double worst = 0;
+  for (std::size_t q = 0; q < 64; ++q) {
+    const double a = cast ? f->pair->cast(f->ts[q], f->ds[q]).distance : f->pair->signed_distance(f->ts[q]).distance;
+    const double b = cast ? scan_cast(*f, f->ts[q], f->ds[q]) : scan_distance(*f, f->ts[q]);
+    if (std::isfinite(a) || std::isfinite(b)) worst = std::max(worst, std::abs(a - b));
+  }
+  if (!(worst <= kAgreeTol)) {
+    st.SkipWithError("scan and pendepth disagree");
+    return;
+  }
+  b2DistanceProxy pa, pq;
+  if (impl == DistImpl::Box2d) {
+    pa.Set(f->bp.data(), int32(f->bp.size()), 0);
+    pq.Set(f->bq.data(), int32(f->bq.size()), 0);
+  }
+  std::size_t q = 0, hits = 0;
+  for (auto _ : st) {
+    const Vec2 &t = f->ts[q], &d = f->ds[q];
+    double v = 0;
+    switch (impl) {
+      case DistImpl::Pendepth: v = cast ? f->pair->cast(t, d).distance : f->pair->signed_distance(t).distance; break;
+      case DistImpl::Scan: v = cast ? scan_cast(*f, t, d) : scan_distance(*f, t); break;
+      case DistImpl::Box2d: {
+        b2Transform xa, xb;
+        xa.SetIdentity();
+        xb.Set(b2Vec2(float(t.x()), float(t.y())), 0);
+        if (cast) {
+          b2ShapeCastInput in{pa, pq, xa, xb, b2Vec2(float(16 * d.x()), float(16 * d.y()))};
+          b2ShapeCastOutput out;
+          v = b2ShapeCast(&out, &in) ? 16 * out.lambda : kInf;
+        } else {
+          b2DistanceInput in{pa, pq, xa, xb, false};
+          b2SimplexCache cache;
+          cache.count = 0;
+          b2DistanceOutput out;
+          b2Distance(&out, &cache, &in);
+          v = out.distance;
+        }
+        break;
+      }
+    }
+    hits += std::isfinite(v);
+    benchmark::DoNotOptimize(v);
+    q = pb::next_query(q);
+  }
+  st.counters["finite_share"] = double(hits) / double(st.iterations());
+  st.counters["scan_diff_max"] = worst;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -419,6 +587,22 @@ int main(int argc, char** argv) {
       add("sigma/box2d_world", sigma_box2d_world);
     }
   }
+  for (const char* engine : {"convex", "polygon-convex", "no-fit-polygon", "pair-per-query"})
+    for (std::size_t n : {8, 16, 64, 512})
+      for (bool cast : {false, true}) {
+        const bool convex = std::string(engine) == "convex";
+        const std::string tag = std::string(engine) + "/" + std::to_string(n);
+        const std::string what = cast ? "cast/" : "distance/";
+        if (!convex && n == 512 && std::string(engine) == "no-fit-polygon") continue;  // its build: seconds
+        auto reg = [&](const char* impl, DistImpl k) {
+          benchmark::RegisterBenchmark((what + impl + "/" + tag).c_str(), [engine, n, k, cast](benchmark::State& st) {
+            distance_bench(st, engine, n, k, cast);
+          })->Unit(benchmark::kNanosecond);
+        };
+        reg("pendepth", DistImpl::Pendepth);
+        reg("scan", DistImpl::Scan);
+        if (convex && n <= 64) reg("box2d", DistImpl::Box2d);
+      }
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

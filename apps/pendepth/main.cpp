@@ -2,16 +2,20 @@
 // (include/pendepth/pendepth.hpp).
 //
 //   pendepth depth P Q [--offset X,Y[,Z]] [--direction X,Y[,Z]] [--separate] [--json] [--svg FILE]
-//                      [--html FILE] [--rotate-q QW,QX,QY,QZ] [--rotate-p QW,QX,QY,QZ] [--approximate DELTA]
-//   pendepth batch P Q --queries FILE [--json] [--threads N] [--progress] [--rotate-q ...] [--rotate-p ...]
+//                      [--html FILE] [--rotate-q QW,QX,QY,QZ | DEG (2D)] [--rotate-p QW,QX,QY,QZ]
+//                      [--generalized] [--approximate DELTA]
+//   pendepth batch P Q --queries FILE [--json] [--threads N] [--progress] [--rotate-q ...|DEG] [--rotate-p ...]
 //   pendepth nfp P Q [--json]
+//   pendepth distance P Q [--offset X,Y[,Z]] [--rotate-q ...] [--rotate-p ...] [--json]
+//   pendepth cast P Q [--offset X,Y[,Z]] --direction X,Y[,Z] [--rotate-q ...] [--rotate-p ...] [--json]
+//   pendepth batch P Q --queries FILE --signed ...   (signed distances: distance,tx,ty[,tz])
 //
 // Exit status: 0 success, 2 bad input (one line on stderr naming file, line and problem),
 // 3 an output that cannot be written (standard output or --svg FILE: full disk, closed pipe,
 // a path that cannot be created), 1 internal error. Shapes: .wkt (2D polygons); .obj, .off, .stl
 // (3D: the convex hull of the vertices); `-` (standard input) or a path without an extension (a
 // FIFO, /dev/stdin, a process substitution) is recognised by its content. P and Q must have the
-// same dimension. Rotations are 3D only.
+// same dimension. Rotations: 3D quaternions for P and Q; 2D an angle in degrees for Q only.
 //
 // Engines: Pair2 / Pair3 pick them. `depth` asks one question, so it prepares only what the query
 // needs (Prepare::Queries: two non-convex polygons are answered per query, nothing built);
@@ -130,7 +134,7 @@ Shape3 make_shape3(const ShapeText& s, std::string_view name) {
 template <int N>
 Eigen::Matrix<double, N, 1> parse_numbers(const std::string& text, const char* option, const char* names) {
   static constexpr const char* kCount[] = {"", "one", "two", "three", "four"};
-  const std::string expected = std::string(option) + ": expected " + names + " (" + kCount[N] + " numbers), got '" + text + "'";
+  const std::string expected = std::string(option) + ": expected " + names + " (" + kCount[N] + (N == 1 ? " number" : " numbers") + "), got '" + text + "'";
   Eigen::Matrix<double, N, 1> v;
   int count = 0;
   std::string_view rest = text;
@@ -217,19 +221,98 @@ void write_svg(const std::string& path, const Pair2& pair, const Vec2& t, const 
 
 struct DepthArgs {
   std::string p, q, offset, direction, svg, html, rotate_p, rotate_q, approximate;
-  bool separate = false, json = false;
+  bool separate = false, json = false, generalized = false;
 };
+
+// ---- 2D rotations of Q (issue 19 item 3) and the generalized depth PD_g (issue 18) ----
 
 void reject_rotations(const std::string& rotate_p, const std::string& rotate_q) {
   if (!rotate_q.empty()) throw InvalidInput("--rotate-q: rotations apply to 3D shapes only");
-  if (!rotate_p.empty()) throw InvalidInput("--rotate-p: rotations apply to 3D shapes only");
+  if (!rotate_p.empty()) throw InvalidInput("--rotate-p: 2D rotates Q only (--rotate-q DEG)");
+}
+
+// Q turned by --rotate-q DEG (Shape2::rotated: exact for multiples of 90°, else rounded).
+Shape2 rotate_q2(const Shape2& Q, const std::string& degrees) {
+  if (degrees.empty()) return Q;
+  return Q.rotated(parse_numbers<1>(degrees, "--rotate-q", "DEG")[0]);
+}
+
+// The note a rounded rotation owes the reader (human output), and its JSON field.
+std::string rotation_note(const std::string& degrees) {
+  if (degrees.empty() || Shape2::rotation_is_exact(parse_numbers<1>(degrees, "--rotate-q", "DEG")[0])) return "";
+  return "note: Q's coordinates were rotated by " + degrees + " degrees and rounded to doubles (not a multiple of 90)\n";
+}
+void add_rotation_field(std::string& json_object, const std::string& degrees) {
+  if (degrees.empty()) return;
+  while (!json_object.empty() && json_object.back() != '}') json_object.pop_back();
+  json_object.pop_back();
+  json_object += std::string(",\"rotation_exact\":") +
+                 (Shape2::rotation_is_exact(parse_numbers<1>(degrees, "--rotate-q", "DEG")[0]) ? "true" : "false") + "}";
+}
+
+std::string num(double x) {
+  if (!std::isfinite(x)) return x > 0 ? "1e999" : "-1e999";  // an overflowed length (docs/robustness.md)
+  char b[32];
+  std::snprintf(b, sizeof b, "%.17g", x);
+  return b;
+}
+
+int run_generalized2(const DepthArgs& a, const Shape2& P, const Shape2& Q, const Vec2& t) {
+  const pendepth::GeneralizedDepth2 r = pendepth::generalized_depth(P, Q, t);
+  std::string out;
+  if (a.json) {
+    out = "{\"kind\":\"generalized\",\"metric\":\"max_displacement\",\"overlapping\":" +
+          std::string(r.overlapping ? "true" : "false") + ",\"depth\":" + num(r.depth) + ",\"lower_bound\":" +
+          num(r.lower_bound) + ",\"upper_bound\":" + num(r.upper_bound) + ",\"angle\":" + num(r.angle) +
+          ",\"translation\":[" + num(r.translation.x()) + "," + num(r.translation.y()) + "],\"sigma\":" + num(r.sigma) +
+          ",\"sigma_at_angle\":" + num(r.sigma_at_angle) + ",\"converged\":" + (r.converged ? "true" : "false") +
+          ",\"probes\":" + std::to_string(r.probes) + ",\"angle_exact\":" + (r.rotation_exact ? "true" : "false") + "}";
+    add_rotation_field(out, a.rotate_q);
+    out += '\n';
+  } else {
+    out = rotation_note(a.rotate_q) + "generalized depth PD_g (largest displacement of Q's points): " + num(r.depth) +
+          "\n  certified bounds: [" + num(r.lower_bound) + ", " + num(r.upper_bound) + "]" +
+          (r.converged ? "" : " (not converged: the gap is above the tolerance)") + "\n  motion: rotate Q by " +
+          num(r.angle) + " degrees about its reference point" + (r.rotation_exact ? "" : " (coordinates rounded)") +
+          ", then translate by (" + num(r.translation.x()) + ", " + num(r.translation.y()) + ")\n  translational depth: " +
+          num(r.sigma) + " (at that angle: " + num(r.sigma_at_angle) + "); angles probed: " + std::to_string(r.probes) + "\n";
+  }
+  write_stdout(out);
+  return 0;
+}
+
+int run_generalized3(const DepthArgs& a, const Shape3& P, const Pose3& pose_p, const Shape3& Q, const Pose3& pose_q) {
+  const pendepth::GeneralizedDepth3 r = pendepth::generalized_depth(P, pose_p, Q, pose_q);
+  const auto& w = r.rotation;
+  std::string out;
+  if (a.json) {
+    out = "{\"kind\":\"generalized\",\"metric\":\"max_displacement\",\"overlapping\":" +
+          std::string(r.overlapping ? "true" : "false") + ",\"depth\":" + num(r.depth) + ",\"lower_bound\":" +
+          num(r.lower_bound) + ",\"upper_bound\":" + num(r.upper_bound) + ",\"rotation\":[" + num(w.w()) + "," +
+          num(w.x()) + "," + num(w.y()) + "," + num(w.z()) + "],\"translation\":[" + num(r.translation.x()) + "," +
+          num(r.translation.y()) + "," + num(r.translation.z()) + "],\"sigma\":" + num(r.sigma) + "}\n";
+  } else {
+    out = "generalized depth PD_g (largest displacement of Q's points): " + num(r.depth) + " = σ (convex polytopes)" +
+          "\n  certified bounds: [" + num(r.lower_bound) + ", " + num(r.upper_bound) + "]\n  motion: rotation (w,x,y,z) (" +
+          num(w.w()) + ", " + num(w.x()) + ", " + num(w.y()) + ", " + num(w.z()) + "), then translate by (" +
+          num(r.translation.x()) + ", " + num(r.translation.y()) + ", " + num(r.translation.z()) + ")\n";
+  }
+  write_stdout(out);
+  return 0;
+}
+
+void check_generalized(const DepthArgs& a) {
+  if (!a.generalized) return;
+  if (!a.direction.empty()) throw InvalidInput("--generalized: asks for the minimum depth under rigid motion; drop --direction");
+  if (!a.svg.empty() || !a.html.empty()) throw InvalidInput("--generalized: --svg and --html are not drawn for it");
 }
 
 // --approximate DELTA: certified (1+δ)-approximate σ of the point sets' hulls, no hull built
 // (include/pendepth/approximate.hpp).
 int run_approximate3(const DepthArgs& a, const ShapeText& p, const ShapeText& q, const Pose3& pose_p,
                      const Pose3& pose_q) {
-  if (!a.direction.empty() || !a.html.empty()) throw InvalidInput("--approximate: answers σ only (no --direction, --html)");
+  if (!a.direction.empty() || !a.html.empty() || a.generalized)
+    throw InvalidInput("--approximate: answers σ only (no --direction, --html, --generalized)");
   double delta = 0;
   const char* end = a.approximate.data() + a.approximate.size();
   if (auto [ptr, ec] = std::from_chars(a.approximate.data(), end, delta); ec != std::errc() || ptr != end)
@@ -271,6 +354,7 @@ int run_depth3(const DepthArgs& a, const ShapeText& p, const ShapeText& q) {
   if (!a.approximate.empty()) return run_approximate3(a, p, q, Pose3(rp, Vec3::Zero()), Pose3(rq, t));
   const Pair3 pair(make_shape3(p, "P"), make_shape3(q, "Q"));
   const Pose3 pose_p(rp, Vec3::Zero()), pose_q(rq, t);
+  if (a.generalized) return run_generalized3(a, pair.P(), pose_p, pair.Q(), pose_q);
   const Depth3 r = !d ? pair.minimum(pose_p, pose_q)
                       : a.separate ? pair.separation(pose_p, pose_q, *d) : pair.along(pose_p, pose_q, *d);
   if (!a.html.empty())
@@ -290,13 +374,15 @@ int run_depth3(const DepthArgs& a, const ShapeText& p, const ShapeText& q) {
 int run_depth(const DepthArgs& a) {
   check_one_stdin({&a.p, &a.q});
   const auto [p, q] = load_pair(a.p, a.q);
+  check_generalized(a);
   if (p.dimension() == 3) return run_depth3(a, p, q);
-  reject_rotations(a.rotate_p, a.rotate_q);
+  reject_rotations(a.rotate_p, "");
   if (!a.approximate.empty()) throw InvalidInput("--approximate: 3D point sets only");
   if (!a.html.empty()) throw InvalidInput("--html draws 3D shapes only (use --svg for 2D)");
   const Shape2 P = make_shape2(p, "P");
-  const Shape2 Q = make_shape2(q, "Q");
+  const Shape2 Q = rotate_q2(make_shape2(q, "Q"), a.rotate_q);
   const Vec2 t = a.offset.empty() ? Vec2(0, 0) : parse_vec(a.offset, "--offset");
+  if (a.generalized) return run_generalized2(a, P, Q, t);
   std::optional<Vec2> d;
   if (!a.direction.empty()) {
     d = parse_vec(a.direction, "--direction");
@@ -308,9 +394,10 @@ int run_depth(const DepthArgs& a) {
   std::string out;
   if (a.json) {
     append_json(out, r, P, Q);
+    add_rotation_field(out, a.rotate_q);
     out += '\n';
   } else {
-    out = summary(r, P, Q);
+    out = rotation_note(a.rotate_q) + summary(r, P, Q);
   }
   write_stdout(out);
   return 0;
@@ -319,7 +406,7 @@ int run_depth(const DepthArgs& a) {
 struct BatchArgs {
   std::string p, q, queries, rotate_p, rotate_q;
   unsigned threads = 0;
-  bool json = false, progress = false;
+  bool json = false, progress = false, signed_distance = false;
 };
 
 bool show_progress(const BatchArgs& a) { return a.progress || isatty(fileno(stderr)); }
@@ -405,6 +492,104 @@ int write_batch(const BatchArgs& a, const std::vector<Result>& results, const ch
   return 0;
 }
 
+// ---- signed distance and shape cast (issue 16 item 7) ----
+
+io::Features2 features_of(const Shape2& s) {
+  return s.is_convex() ? io::Features2{&s.convex(), nullptr} : io::Features2{nullptr, &s.polygon()};
+}
+
+struct DistanceArgs {
+  std::string p, q, offset, direction, rotate_p, rotate_q;
+  bool json = false;
+};
+
+// `distance` (cast false) and `cast` (cast true), 2D or 3D by the shapes.
+int run_distance(const DistanceArgs& a, bool cast) {
+  check_one_stdin({&a.p, &a.q});
+  const auto [p, q] = load_pair(a.p, a.q);
+  std::string out;
+  if (p.dimension() == 3) {
+    const Eigen::Quaterniond rq = parse_rotation(a.rotate_q, "--rotate-q");
+    const Eigen::Quaterniond rp = parse_rotation(a.rotate_p, "--rotate-p");
+    const Vec3 t = a.offset.empty() ? Vec3(0, 0, 0) : parse_vec3(a.offset, "--offset");
+    const Vec3 d = cast ? parse_vec3(a.direction, "--direction") : Vec3(0, 0, 0);
+    if (cast && d.isZero(0)) throw InvalidInput("--direction: the direction is zero");
+    const Pair3 pair(make_shape3(p, "P"), make_shape3(q, "Q"));
+    const Pose3 pose_p(rp, Vec3::Zero()), pose_q(rq, t);
+    const auto &P = pair.P().polytope(), &Q = pair.Q().polytope();
+    if (cast) {
+      const pendepth::Cast3 r = pair.cast(pose_p, pose_q, d);
+      a.json ? io::append_json(out, r, P, Q) : void(out = io::summary(r, P, Q));
+    } else {
+      const pendepth::Distance3 r = pair.signed_distance(pose_p, pose_q);
+      a.json ? io::append_json(out, r, P, Q) : void(out = io::summary(r, P, Q));
+    }
+  } else {
+    reject_rotations(a.rotate_p, a.rotate_q);
+    const Shape2 P = make_shape2(p, "P"), Q = make_shape2(q, "Q");
+    const Vec2 t = a.offset.empty() ? Vec2(0, 0) : parse_vec(a.offset, "--offset");
+    const Vec2 d = cast ? parse_vec(a.direction, "--direction") : Vec2(0, 0);
+    if (cast && d.x() == 0 && d.y() == 0) throw InvalidInput("--direction: the direction is zero");
+    const Pair2 pair(P, Q, pendepth::Prepare::Queries);
+    if (cast) {
+      const pendepth::Cast2 r = pair.cast(t, d);
+      a.json ? io::append_json(out, r, features_of(P), features_of(Q)) : void(out = io::summary(r, features_of(P), features_of(Q)));
+    } else {
+      const pendepth::Distance2 r = pair.signed_distance(t);
+      a.json ? io::append_json(out, r, features_of(P), features_of(Q)) : void(out = io::summary(r, features_of(P), features_of(Q)));
+    }
+  }
+  if (a.json) out += '\n';
+  write_stdout(out);
+  return 0;
+}
+
+// `batch --signed`: placements only (every direction must be zero), answered in chunks.
+template <class Query>
+void require_placements(const BatchArgs& a, const std::vector<Query>& queries) {
+  for (const Query& q : queries)
+    if (!q.d.isZero(0))
+      throw InvalidInput((a.queries == "-" ? std::string(kStdin) : a.queries) + ":" + std::to_string(q.line) +
+                         ": --signed takes placements only: the direction columns must be 0");
+}
+
+template <class Result, class V, class Query, class Run>
+std::vector<Result> signed_all(const BatchArgs& a, const std::vector<Query>& queries, Run&& run) {
+  require_placements(a, queries);
+  constexpr std::size_t kChunk = 1 << 14;
+  std::vector<V> ts;
+  for (const Query& q : queries) ts.push_back(q.t);
+  std::vector<Result> out(ts.size());
+  Progress bar(ts.size(), show_progress(a));
+  for (std::size_t b = 0; b < ts.size(); b += kChunk) {
+    const std::size_t n = std::min(kChunk, ts.size() - b);
+    run(std::span<const V>(ts).subspan(b, n), std::span<Result>(out).subspan(b, n));
+    bar.add(n);
+  }
+  return out;
+}
+
+int run_signed_batch(const BatchArgs& a, const Pair2& pair, const std::vector<io::Query2>& queries) {
+  const auto results = signed_all<pendepth::Distance2, Vec2>(
+      a, queries, [&](std::span<const Vec2> ts, std::span<pendepth::Distance2> out) { pair.signed_distance(ts, out, a.threads); });
+  return write_batch(a, results, "distance,tx,ty\n", [&](std::string& out, const pendepth::Distance2& r) {
+    io::append_json(out, r, features_of(pair.P()), features_of(pair.Q()));
+  });
+}
+
+int run_signed_batch3(const BatchArgs& a, const Pair3& pair, const Pose3& pose_p, const Eigen::Quaterniond& rq,
+                      const std::vector<io::Query3>& queries) {
+  const auto results = signed_all<pendepth::Distance3, Vec3>(
+      a, queries, [&](std::span<const Vec3> ts, std::span<pendepth::Distance3> out) {
+        std::vector<Pose3> poses;
+        for (const Vec3& t : ts) poses.emplace_back(rq, t);
+        pair.signed_distance(pose_p, poses, out, a.threads);
+      });
+  return write_batch(a, results, "distance,tx,ty,tz\n", [&](std::string& out, const pendepth::Distance3& r) {
+    io::append_json(out, r, pair.P().polytope(), pair.Q().polytope());
+  });
+}
+
 int run_batch3(const BatchArgs& a, const ShapeText& p, const ShapeText& q) {
   const Eigen::Quaterniond rq = parse_rotation(a.rotate_q, "--rotate-q");
   const Eigen::Quaterniond rp = parse_rotation(a.rotate_p, "--rotate-p");
@@ -412,6 +597,7 @@ int run_batch3(const BatchArgs& a, const ShapeText& p, const ShapeText& q) {
   const std::vector<io::Query3> queries = a.queries == "-" ? io::parse_queries3_csv(io::read_stream(std::cin, kStdin), kStdin)
                                                            : io::read_queries3_csv(a.queries);
   const Pose3 pose_p(rp, Vec3::Zero());
+  if (a.signed_distance) return run_signed_batch3(a, pair, pose_p, rq, queries);
   const auto poses = [&](std::span<const Vec3> ts) {
     std::vector<Pose3> p;
     p.reserve(ts.size());
@@ -435,10 +621,12 @@ int run_batch(const BatchArgs& a) {
   check_one_stdin({&a.p, &a.q, &a.queries});
   const auto [p, q] = load_pair(a.p, a.q);
   if (p.dimension() == 3) return run_batch3(a, p, q);
-  reject_rotations(a.rotate_p, a.rotate_q);
-  const Pair2 pair(make_shape2(p, "P"), make_shape2(q, "Q"), pendepth::Prepare::Full);
+  reject_rotations(a.rotate_p, "");
+  const Pair2 pair(make_shape2(p, "P"), rotate_q2(make_shape2(q, "Q"), a.rotate_q), pendepth::Prepare::Full);
+  if (const std::string note = rotation_note(a.rotate_q); !note.empty()) std::fputs(("pendepth: " + note).c_str(), stderr);
   const std::vector<io::Query2> queries = a.queries == "-" ? io::parse_queries_csv(io::read_stream(std::cin, kStdin), kStdin)
                                                            : io::read_queries_csv(a.queries);
+  if (a.signed_distance) return run_signed_batch(a, pair, queries);
   const std::vector<Depth2> results = answer_all<Depth2>(
       queries, show_progress(a),
       [&](std::span<const Vec2> ts, std::span<Depth2> out) { pair.minimum(ts, out, a.threads); },
@@ -507,8 +695,13 @@ int main(int argc, char** argv) {
   depth->add_option("--svg", da.svg, "also draw the query into this SVG file (2D)")->type_name("FILE");
   depth->add_option("--html", da.html, "also write a self-contained HTML page showing the 3D query (orbit, zoom)")
       ->type_name("FILE");
-  depth->add_option("--rotate-q", da.rotate_q, "3D: rotation of Q about its origin, before the offset (quaternion, normalised)")
-      ->type_name("QW,QX,QY,QZ");
+  depth->add_option("--rotate-q", da.rotate_q,
+                    "rotation of Q about its origin, before the offset: 3D a quaternion (normalised); 2D an angle in "
+                    "degrees, counter-clockwise (exact for multiples of 90, else Q's coordinates are rotated and rounded)")
+      ->type_name("QW,QX,QY,QZ|DEG");
+  depth->add_flag("--generalized", da.generalized,
+                  "generalized depth PD_g: Q may also rotate (about its reference point); cost = the largest "
+                  "displacement of Q's points; prints certified bounds, the rotation and the translation");
   depth->add_option("--approximate", da.approximate,
                     "3D: certified (1+DELTA)-approximate σ of huge point sets, no hull built (DELTA in [1e-9, 1))")
       ->type_name("DELTA");
@@ -527,9 +720,33 @@ int main(int argc, char** argv) {
   batch->add_option("--threads", ba.threads, "threads for the queries (default 0: every core; answers do not depend on it)")
       ->type_name("N");
   batch->add_flag("--progress", ba.progress, "print progress on stderr (default: only when stderr is a terminal)");
-  batch->add_option("--rotate-q", ba.rotate_q, "3D: rotation of Q for every query (quaternion, normalised)")
-      ->type_name("QW,QX,QY,QZ");
+  batch->add_option("--rotate-q", ba.rotate_q,
+                    "rotation of Q for every query: 3D a quaternion (normalised); 2D an angle in degrees (a note "
+                    "on stderr when it is not a multiple of 90: Q's coordinates are rounded)")
+      ->type_name("QW,QX,QY,QZ|DEG");
   batch->add_option("--rotate-p", ba.rotate_p, "3D: rotation of P (quaternion, normalised)")->type_name("QW,QX,QY,QZ");
+  batch->add_flag("--signed", ba.signed_distance,
+                  "signed distances instead of depths: CSV distance,tx,ty[,tz] (translation to touching); "
+                  "the queries' direction columns must be 0");
+
+  // distance and cast (issue 16): one placement, 2D or 3D by the shapes.
+  DistanceArgs dsa, csa;
+  CLI::App* distance = app.add_subcommand(
+      "distance", "Signed distance of one placement: > 0 apart (Euclidean distance), 0 touching, -σ overlapping; "
+                  "the translation brings Q into touching contact.");
+  CLI::App* cast = app.add_subcommand(
+      "cast", "Shape cast (time of impact): the smallest s >= 0 with Q moved by s along --direction touching P "
+              "(0 when touching or overlapping, 1e999 in JSON / inf when it never does).");
+  for (auto [cmd, args] : {std::pair{distance, &dsa}, std::pair{cast, &csa}}) {
+    cmd->add_option("P", args->p, "fixed shape file (.wkt, or 3D .obj/.off/.stl; - reads standard input)")->required()->type_name("FILE");
+    cmd->add_option("Q", args->q, "moving shape file (same dimension as P)")->required()->type_name("FILE");
+    cmd->add_option("--offset", args->offset, "placement t of Q (default 0); negative: --offset=-1,2")->type_name("X,Y[,Z]");
+    cmd->add_flag("--json", args->json, "print one JSON object instead of a summary");
+    cmd->add_option("--rotate-q", args->rotate_q, "3D: rotation of Q about its origin, before the offset (quaternion)")
+        ->type_name("QW,QX,QY,QZ");
+    cmd->add_option("--rotate-p", args->rotate_p, "3D: rotation of P about its origin (quaternion)")->type_name("QW,QX,QY,QZ");
+  }
+  cast->add_option("--direction", csa.direction, "direction d of the motion (any non-zero length)")->required()->type_name("X,Y[,Z]");
 
   NfpArgs na;
   CLI::App* nfp = app.add_subcommand(
@@ -560,7 +777,11 @@ int main(int argc, char** argv) {
   // SIGPIPE.
   std::signal(SIGPIPE, SIG_IGN);
   try {
-    const int status = depth->parsed() ? run_depth(da) : nfp->parsed() ? run_nfp(na) : run_batch(ba);
+    const int status = depth->parsed()      ? run_depth(da)
+                       : nfp->parsed()      ? run_nfp(na)
+                       : distance->parsed() ? run_distance(dsa, false)
+                       : cast->parsed()     ? run_distance(csa, true)
+                                            : run_batch(ba);
     flush_stdout();
     return status;
   } catch (const InvalidInput& e) {

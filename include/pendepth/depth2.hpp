@@ -48,6 +48,42 @@ struct Depth2 {
   DepthKind kind = DepthKind::Minimum;
 };
 
+/// Signed distance (docs/design.md §1; the FCL / Drake / Coal convention): `distance` > 0 when
+/// the shapes are apart (their Euclidean distance), 0 when they touch, −σ(t) when the interiors
+/// overlap. Uniformly: witness_p ∈ ∂P and witness_q ∈ ∂(Q + t) (the unmoved Q, world frame) with
+/// witness_q − witness_p = distance·normal; `normal` is the unit direction in which moving Q
+/// increases the distance (from P towards Q when apart, σ's normal when overlapping; 0 when
+/// touching); `translation` = witness_p − witness_q = −distance·normal brings Q into touching
+/// contact (towards P when apart, out of P when overlapping). Features as in Depth2 (of Q + t).
+struct Distance2 {
+  double distance = 0;
+  Vec2 translation{0, 0};
+  Vec2 normal{0, 0};
+  Vec2 witness_p{0, 0};
+  Vec2 witness_q{0, 0};
+  Feature feature_p;
+  Feature feature_q;
+  bool overlapping = false;  ///< interiors of P and Q + t overlap (distance < 0)
+};
+
+/// Shape cast (time of impact) along d: the smallest s >= 0 with Q + t + s·d̂ touching P, i.e.
+/// the ray t + s·d̂ entering P ⊕ (−Q) (closed). `distance` = s: 0 when Q + t already touches or
+/// overlaps P, +infinity when the ray never meets P ⊕ (−Q) (then `hit` is false and the vectors
+/// are 0). On a hit: `translation` = s·d̂, `normal` the outward unit normal of P ⊕ (−Q) at the
+/// entry point (pointing from P towards Q; 0 when s = 0 and the shapes overlap), witnesses the
+/// contact point on ∂P and on the moved ∂Q (they coincide), features of the contact.
+struct Cast2 {
+  double distance = 0;
+  Vec2 translation{0, 0};
+  Vec2 normal{0, 0};
+  Vec2 witness_p{0, 0};
+  Vec2 witness_q{0, 0};
+  Feature feature_p;
+  Feature feature_q;
+  bool hit = false;          ///< the ray meets P ⊕ (−Q) (distance finite)
+  bool overlapping = false;  ///< interiors of P and Q + t overlap at s = 0
+};
+
 /// σ_d: smallest s >= 0 such that P and Q + t + s·d̂ have disjoint interiors, by prune-and-search
 /// on the implicit front chains of P and −Q (DHS §3; docs/algorithms.md §R2.7). O(log n + log m), M
 /// never built. Throws InvalidInput if d is zero or non-finite, or t is non-finite.

@@ -57,6 +57,34 @@ struct Depth3 {
   DepthKind kind = DepthKind::Minimum;
 };
 
+/// Signed distance of two posed convex polytopes (conventions of Distance2, world frame):
+/// > 0 apart (Euclidean distance), 0 touching, −σ overlapping; witness_q − witness_p =
+/// distance·normal, translation = −distance·normal brings Q into touching contact.
+/// lower_bound == upper_bound == distance (exact method: a few ulps from the exact value).
+struct Distance3 {
+  double distance = 0;
+  Vec3 translation{0, 0, 0};
+  Vec3 normal{0, 0, 0};
+  Vec3 witness_p{0, 0, 0};
+  Vec3 witness_q{0, 0, 0};
+  Feature3 feature_p, feature_q;
+  double lower_bound = 0, upper_bound = 0;
+  bool overlapping = false;
+};
+
+/// Shape cast of posed convex polytopes along d (conventions of Cast2, world frame): the
+/// smallest s >= 0 with Q + s·d̂ touching P; +infinity (hit false) when never.
+struct Cast3 {
+  double distance = 0;
+  Vec3 translation{0, 0, 0};
+  Vec3 normal{0, 0, 0};
+  Vec3 witness_p{0, 0, 0};
+  Vec3 witness_q{0, 0, 0};
+  Feature3 feature_p, feature_q;
+  bool hit = false;
+  bool overlapping = false;
+};
+
 /// σ: exact minimum depth = distance from 0 to the nearest facet plane of M (0 when touching or
 /// separated). Certified expansion of an inner polytope of the implicit M (exact EPA, see
 /// src/convex3/minimum_expand.cpp): vertices are pairs (P vertex, Q vertex), every decision an

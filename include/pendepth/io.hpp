@@ -263,6 +263,28 @@ void append_csv_row(std::string& out, const Depth3& r);
 /// A multi-line human-readable summary of a 3D result (ends with a newline).
 std::string summary(const Depth3& r, const ConvexPolytope& P, const ConvexPolytope& Q);
 
+/// Signed distance and shape cast (Distance2/3, Cast2/3; docs/design.md §3 `distance`, `cast`):
+/// one JSON object (no newline) {"distance", "translation", "normal", "witness_p", "witness_q",
+/// "overlapping", "feature_p", "feature_q"} (a cast adds "hit" after "distance"; 3D distance adds
+/// "lower_bound", "upper_bound"; a missed cast's distance is 1e999), a CSV row
+/// "distance,tx,ty[,tz]\n", or a summary. Features are formatted as for Depth2/Depth3 against the
+/// shape whose numbering they use: Features2 holds a convex shape's ConvexPolygon or another
+/// shape's Polygon (exactly one of the two).
+struct Features2 {
+  const ConvexPolygon* convex = nullptr;
+  const Polygon* polygon = nullptr;
+};
+void append_json(std::string& out, const Distance2& r, Features2 P, Features2 Q);
+void append_json(std::string& out, const Cast2& r, Features2 P, Features2 Q);
+void append_csv_row(std::string& out, const Distance2& r);
+std::string summary(const Distance2& r, Features2 P, Features2 Q);
+std::string summary(const Cast2& r, Features2 P, Features2 Q);
+void append_json(std::string& out, const Distance3& r, const ConvexPolytope& P, const ConvexPolytope& Q);
+void append_json(std::string& out, const Cast3& r, const ConvexPolytope& P, const ConvexPolytope& Q);
+void append_csv_row(std::string& out, const Distance3& r);
+std::string summary(const Distance3& r, const ConvexPolytope& P, const ConvexPolytope& Q);
+std::string summary(const Cast3& r, const ConvexPolytope& P, const ConvexPolytope& Q);
+
 /// What write_svg draws besides P and Q.
 struct SvgOptions {
   std::optional<Vec2> direction;  ///< σ_d / separation direction, drawn as an arrow

@@ -161,6 +161,10 @@ class Pair2 {
   /// which Q can slide on to infinity without overlap (positive also when t ∉ O but the ray
   /// meets O later; `overlapping` tells t ∈ O).
   Depth2 separation(const Vec2& t, const Vec2& d) const;
+  /// Signed distance (Distance2): > 0 apart, 0 touching, −σ(t) overlapping.
+  Distance2 signed_distance(const Vec2& t) const;
+  /// Shape cast (Cast2): the smallest s >= 0 with Q + t + s·d̂ touching P (+inf when never).
+  Cast2 cast(const Vec2& t, const Vec2& d) const;
 
   // Batches: out[i] is the single call's answer for ts[i] (ds[i], or ds[0] when ds has one
   // entry), bit for bit, whatever `threads` is. threads = 0 uses every core, 1 runs in the
@@ -172,6 +176,7 @@ class Pair2 {
              unsigned threads = 0) const;
   void separation(std::span<const Vec2> ts, std::span<const Vec2> ds, std::span<Depth2> out,
                   unsigned threads = 0) const;
+  void signed_distance(std::span<const Vec2> ts, std::span<Distance2> out, unsigned threads = 0) const;
 
   /// The no-fit polygon of the pair (see NoFitPolygonParts), built on first use unless the
   /// engine holds it (thread-safe).
@@ -223,6 +228,10 @@ class Pair3 {
   /// Complete separation along d: for convex shapes the ray leaves M once, so this is σ_d with
   /// kind Separation.
   Depth3 separation(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const;
+  /// Signed distance (Distance3): > 0 apart, 0 touching, −σ overlapping; exact.
+  Distance3 signed_distance(const Pose3& pose_p, const Pose3& pose_q) const;
+  /// Shape cast (Cast3) along d (world frame): the smallest s >= 0 with Q + s·d̂ touching P.
+  Cast3 cast(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const;
 
   // Batches (as Pair2's): P at identity, or at pose_p for every query.
   void overlapping(std::span<const Pose3> poses_q, std::span<bool> out, unsigned threads = 0) const;
@@ -233,6 +242,9 @@ class Pair3 {
                unsigned threads = 0) const;
   void along(const Pose3& pose_p, std::span<const Pose3> poses_q, std::span<const Vec3> ds,
              std::span<Depth3> out, unsigned threads = 0) const;
+  void signed_distance(std::span<const Pose3> poses_q, std::span<Distance3> out, unsigned threads = 0) const;
+  void signed_distance(const Pose3& pose_p, std::span<const Pose3> poses_q, std::span<Distance3> out,
+                       unsigned threads = 0) const;
 
   const Shape3& P() const { return P_; }
   const Shape3& Q() const { return Q_; }
@@ -248,3 +260,6 @@ class Pair3 {
 };
 
 }  // namespace pendepth
+
+// PD_g, the generalized depth under rigid motion (rotation and translation): motion.hpp.
+#include <pendepth/motion.hpp>

@@ -464,6 +464,61 @@ Result2 directional2(const py::object& self, const py::object& offsets, const py
                  kind, to_string(p.pair.engine()));
 }
 
+// Signed distance and cast answers (Distance2 / Cast2) as a namespace of numpy arrays: distance
+// (N,), translation, normal, witness_p, witness_q (N, 2), feature_p / feature_q (N, 2) [kind,
+// index], overlapping (N,) bool, and hit (N,) bool for a cast; scalars and (2,) for one point.
+template <class R>
+py::object distance_result(const std::vector<R>& out, bool single) {
+  const std::size_t n = out.size();
+  auto dist = scalars(n);
+  auto tr = vectors(n, 2), nr = vectors(n, 2), wp = vectors(n, 2), wq = vectors(n, 2);
+  auto fp = features(n), fq = features(n);
+  py::array_t<bool> ov(static_cast<py::ssize_t>(n)), hit(static_cast<py::ssize_t>(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    const R& r = out[i];
+    dist.mutable_data()[i] = r.distance;
+    put(tr.mutable_data(), i, r.translation);
+    put(nr.mutable_data(), i, r.normal);
+    put(wp.mutable_data(), i, r.witness_p);
+    put(wq.mutable_data(), i, r.witness_q);
+    fp.mutable_data()[2 * i] = static_cast<int>(r.feature_p.kind);
+    fp.mutable_data()[2 * i + 1] = r.feature_p.index;
+    fq.mutable_data()[2 * i] = static_cast<int>(r.feature_q.kind);
+    fq.mutable_data()[2 * i + 1] = r.feature_q.index;
+    ov.mutable_data()[i] = r.overlapping;
+    if constexpr (requires { r.hit; }) hit.mutable_data()[i] = r.hit;
+  }
+  py::dict d;
+  d["distance"] = squeeze(dist, single);
+  d["translation"] = squeeze(tr, single);
+  d["normal"] = squeeze(nr, single);
+  d["witness_p"] = squeeze(wp, single);
+  d["witness_q"] = squeeze(wq, single);
+  d["feature_p"] = squeeze(fp, single);
+  d["feature_q"] = squeeze(fq, single);
+  d["overlapping"] = squeeze(ov, single);
+  if constexpr (requires { R{}.hit; }) d["hit"] = squeeze(hit, single);
+  return py::module_::import("types").attr("SimpleNamespace")(**d);
+}
+
+constexpr const char* kSignedDistanceDoc = R"(signed_distance(offsets, threads=None, progress=False) -> namespace
+
+Signed distance (FCL / Drake / Coal convention): distance > 0 when P and Q + t are apart (their
+Euclidean distance), 0 touching, -sigma overlapping. translation = -distance * normal brings Q
+into touching contact; witness_q - witness_p = distance * normal (witness_q on the unmoved
+Q + t); normal points from P towards Q (0 when touching). Returns a namespace of arrays:
+distance (N,), translation, normal, witness_p, witness_q (N, 2), feature_p, feature_q (N, 2)
+[kind, index], overlapping (N,) bool; scalars and (2,) vectors for one (2,) point. Batch
+answers equal single calls bit for bit. Raises InvalidInput for non-finite offsets.)";
+
+constexpr const char* kCastDoc = R"(cast(offsets, directions) -> namespace
+
+Shape cast (time of impact): the smallest s >= 0 with Q + t + s * d/|d| touching P; 0 when
+touching or overlapping, inf (hit False) when never. directions: (N, 2) or one (2,) for all.
+Returns the fields of signed_distance (distance = s, translation = s * d/|d|, normal the
+outward normal of M at the entry, witnesses the contact point) plus hit (N,) bool. Raises
+InvalidInput for non-finite offsets and zero or non-finite directions.)";
+
 }  // namespace
 
 PYBIND11_MODULE(_pendepth, m) {
@@ -646,6 +701,26 @@ and points ((p, 2): exact fits). Vertices rounded to the nearest double.)");
                                  [](const Pair2& pair, auto ts, auto ds, auto out, unsigned th) { pair.separation(ts, ds, out, th); });
            }, py::arg("offsets"), py::arg("directions"), py::kw_only(), py::arg("threads") = py::none(),
            py::arg("progress") = false, kSeparationDoc)
+      .def("signed_distance", [](const PyPair2& p, const py::object& offsets, const py::object& threads, bool progress) {
+             Points<2> ts = points<2>(offsets, "offsets");
+             const unsigned th = thread_count(threads);
+             std::vector<Distance2> out(ts.v.size());
+             if (progress) front::check_batch<Vec2>(ts.v, {}, out.size(), false);
+             chunked(ts.v.size(), progress, [&](std::size_t b, std::size_t e) {
+               p.pair.signed_distance(std::span<const Vec2>(ts.v).subspan(b, e - b), std::span<Distance2>(out).subspan(b, e - b), th);
+             });
+             return distance_result(out, ts.single);
+           }, py::arg("offsets"), py::kw_only(), py::arg("threads") = py::none(), py::arg("progress") = false, kSignedDistanceDoc)
+      .def("cast", [](const PyPair2& p, const py::object& offsets, const py::object& directions) {
+             Points<2> ts = points<2>(offsets, "offsets"), ds = points<2>(directions, "directions");
+             front::check_batch<Vec2>(ts.v, ds.v, ts.v.size(), true);
+             std::vector<Cast2> out(ts.v.size());
+             {
+               py::gil_scoped_release nogil;
+               for (std::size_t i = 0; i < out.size(); ++i) out[i] = p.pair.cast(ts.v[i], ds.v[ds.v.size() == 1 ? 0 : i]);
+             }
+             return distance_result(out, ts.single);
+           }, py::arg("offsets"), py::arg("directions"), kCastDoc)
       .def("__repr__", [](const PyPair2& p) {
         return "<pendepth.Pair2 P='" + p.pair.P().name() + "' Q='" + p.pair.Q().name() + "' engine " +
                to_string(p.pair.engine()) + ", prepare \"" + p.prepare + "\">";
@@ -813,4 +888,58 @@ and points ((p, 2): exact fits). Vertices rounded to the nearest double.)");
                         const std::string prep = st[2].cast<std::string>();
                         return PyPair3{Pair3(st[0].cast<Shape3>(), st[1].cast<Shape3>(), prepare_of(prep)), prep};
                       }));
+
+  // ---- generalized depth PD_g (issue 18; include/pendepth/motion.hpp) ----
+  m.def("generalized_depth", [](const Shape2& P, const Shape2& Q, const py::object& offset, double min_degrees,
+                                double max_degrees, std::size_t max_probes, double tolerance) {
+        Points<2> t = points<2>(offset, "offset");
+        if (!t.single) throw InvalidInput("offset: expected one (2,) point");
+        GeneralizedOptions2 o;
+        o.min_degrees = min_degrees, o.max_degrees = max_degrees, o.max_probes = max_probes, o.tolerance = tolerance;
+        GeneralizedDepth2 r;
+        {
+          py::gil_scoped_release nogil;
+          r = generalized_depth(P, Q, t.v[0], o);
+        }
+        return py::module_::import("types").attr("SimpleNamespace")(
+            py::arg("kind") = "generalized", py::arg("depth") = r.depth, py::arg("lower_bound") = r.lower_bound,
+            py::arg("upper_bound") = r.upper_bound, py::arg("angle") = r.angle,
+            py::arg("translation") = to_array<2>(std::vector<Vec2>{r.translation}).attr("reshape")(2),
+            py::arg("sigma") = r.sigma, py::arg("sigma_at_angle") = r.sigma_at_angle, py::arg("overlapping") = r.overlapping,
+            py::arg("rotation_exact") = r.rotation_exact, py::arg("converged") = r.converged, py::arg("probes") = r.probes);
+      }, py::arg("P"), py::arg("Q"), py::arg("offset"), py::kw_only(), py::arg("min_degrees") = -180.0,
+      py::arg("max_degrees") = 180.0, py::arg("max_probes") = 512, py::arg("tolerance") = 1e-6,
+      R"(generalized_depth(P, Q, offset, *, min_degrees=-180, max_degrees=180, max_probes=512, tolerance=1e-6)
+
+2D generalized depth PD_g: Q (placed at offset) may rotate about its reference point by an angle in
+[min_degrees, max_degrees] (the range must contain 0) and translate; the cost of a motion is the
+largest displacement of Q's points. Returns a namespace: depth (= upper_bound, the cost of the
+motion found), lower_bound (certified), angle (degrees; Q's coordinates as Shape2 rotated by it),
+translation (2,), sigma (translational depth, >= depth), sigma_at_angle, overlapping,
+rotation_exact, converged (gap <= tolerance * depth), probes. Convex pairs: PD_g = sigma.)");
+  m.def("generalized_depth", [](const Shape3& P, const Shape3& Q, const py::object& translation, const py::object& rotation) {
+        Points<3> t = points<3>(translation, "translation");
+        if (!t.single) throw InvalidInput("translation: expected one (3,) point");
+        bool single = true;
+        std::vector<Pose3> pose = poses(t, rotation, single);
+        GeneralizedDepth3 r;
+        {
+          py::gil_scoped_release nogil;
+          r = generalized_depth(P, Pose3(), Q, pose.at(0));
+        }
+        const auto& w = r.rotation;
+        py::array_t<double> q(4);
+        q.mutable_data()[0] = w.w(), q.mutable_data()[1] = w.x(), q.mutable_data()[2] = w.y(), q.mutable_data()[3] = w.z();
+        return py::module_::import("types").attr("SimpleNamespace")(
+            py::arg("kind") = "generalized", py::arg("depth") = r.depth, py::arg("lower_bound") = r.lower_bound,
+            py::arg("upper_bound") = r.upper_bound, py::arg("rotation") = q,
+            py::arg("translation") = to_array<3>(std::vector<Vec3>{r.translation}).attr("reshape")(3),
+            py::arg("sigma") = r.sigma, py::arg("overlapping") = r.overlapping);
+      }, py::arg("P"), py::arg("Q"), py::arg("translation"), py::arg("rotation") = py::none(),
+      R"(generalized_depth(P, Q, translation, rotation=None)
+
+3D generalized depth of two convex polytopes (P at the identity, Q posed by translation (3,) and
+rotation (4,) w, x, y, z): PD_g = sigma by the theorem for convex shapes. Returns a namespace:
+depth, lower_bound, upper_bound, rotation (identity quaternion), translation (3,), sigma,
+overlapping.)");
 }

@@ -12,7 +12,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 
+#include "convex2/convex_cast.hpp"
 #include "convex2/minkowski_sum.hpp"
 #include "geometry/exact.hpp"
 
@@ -269,3 +272,182 @@ Depth2 separation_depth(const ConvexPolygon& P, const ConvexPolygon& Q, const Ve
 }
 
 }  // namespace pendepth
+
+// ---- shape cast (src/convex2/convex_cast.hpp): the entry of the ray into the closed M ----
+
+
+namespace pendepth::convex2 {
+
+std::optional<Cast2> convex_cast(const ConvexPolygon& P, const ConvexPolygon& Q, const Vec2& t, const Vec2& d_in) {
+  const Vec2 d = normalized_scale(d_in);
+  const Side A{P, false}, B{Q, true};
+  const Chains ca = front_chains(A, d), cb = front_chains(B, d);
+  // X = cross(d, x − t) increases along the front chains from M's extreme vertex on one side of
+  // the line to the other: the line meets the closed M iff X(start) <= 0 <= X(end).
+  auto X = [&](const Vec2& a, const Vec2& b) {
+    return exact::exact_sign([&](auto L) {
+      return L(d.x()) * (L(a.y()) + L(b.y()) - L(t.y())) - L(d.y()) * (L(a.x()) + L(b.x()) - L(t.x()));
+    });
+  };
+  const int lo = X(A.v(ca.forward.start), B.v(cb.forward.start));
+  const int hi = X(A.v(ca.forward.start + ca.forward.edges), B.v(cb.forward.start + cb.forward.edges));
+  Cast2 r;
+  if (lo > 0 || hi < 0) {  // the line misses M
+    r.distance = std::numeric_limits<double>::infinity();
+    return r;
+  }
+  if (lo == 0 || hi == 0) return std::nullopt;  // tangent: contact on ∂M only
+  // The line crosses int M: it enters where it leaves M along −d (λ along −d, s = −λ).
+  Exit en = find_exit(A, B, ca.backward, cb.backward, t, Vec2(-d));
+  bool zero = en.s_sign == 0;
+  if (en.s_sign > 0) {
+    // The entry is behind t, which is not in int M: t is on ∂M at the exit (touching) or past M.
+    const Exit ex = find_exit(A, B, ca.forward, cb.forward, t, d);
+    if (ex.s_sign < 0) {
+      r.distance = std::numeric_limits<double>::infinity();
+      return r;
+    }
+    en = ex;
+    zero = true;
+  }
+  double s = 0;
+  if (!zero)
+    s = exact::accurate_ratio([&](auto L) { return exit_numerator(L, en, t); },
+                              [&](auto L) {
+                                return L(d.x()) * (L(en.e1.y()) - L(en.e0.y())) - L(d.y()) * (L(en.e1.x()) - L(en.e0.x()));
+                              });
+  const double dn = std::sqrt(exact::accurate_value([&](auto L) { return L(d.x()) * L(d.x()) + L(d.y()) * L(d.y()); }));
+  r.hit = true;
+  r.distance = s * dn;
+  r.translation = s * d;
+  // M's edge at the contact, counter-clockwise (P's edge, or −Q's): outward normal (e.y, −e.x).
+  const Vec2 e(exact::accurate_value([&](auto L) { return L(en.e1.x()) - L(en.e0.x()); }),
+               exact::accurate_value([&](auto L) { return L(en.e1.y()) - L(en.e0.y()); }));
+  r.normal = Vec2(e.y(), 0 - e.x()) / std::hypot(e.x(), e.y());
+  const Vec2 f = t + r.translation;
+  if (en.at_vertex) {
+    r.feature_p = {FeatureKind::Vertex, int(en.wa)};
+    r.feature_q = {FeatureKind::Vertex, int(en.wq)};
+    r.witness_p = r.witness_q = P[en.wa];
+  } else if (en.edge_from_p) {
+    r.feature_p = {FeatureKind::Edge, int(en.ia)};
+    r.feature_q = {FeatureKind::Vertex, int(en.iq)};
+    r.witness_q = r.witness_p = Q[en.iq] + f;
+  } else {
+    r.feature_p = {FeatureKind::Vertex, int(en.ia)};
+    r.feature_q = {FeatureKind::Edge, int(en.iq)};
+    r.witness_q = r.witness_p = P[en.ia];
+  }
+  return r;
+}
+
+// ---- distance, localised (convex_cast.hpp: convex_nearest_vertex) ----
+
+namespace {
+
+// front_chains for the direction of the edge x0 → x1 (an edge of A or B, not a Vec2 direction).
+Chains edge_chains(const Side& S, const Vec2& x0, const Vec2& x1) {
+  const std::size_t n = S.size();
+  auto lower = [&](const Vec2& y0, const Vec2& y1, std::size_t& lb, std::size_t& ub) {
+    lb = partition_point(S, 0, 0, n, [&](std::size_t i) { return compare_angle(S.v(i), S.v(i + 1), y0, y1) >= 0; });
+    ub = lb + (lb < n && compare_angle(S.v(lb), S.v(lb + 1), y0, y1) == 0);
+  };
+  std::size_t ld, ud, lnd, und;
+  lower(x0, x1, ld, ud);
+  lower(x1, x0, lnd, und);
+  auto make = [&](std::size_t s, std::size_t f) {
+    s %= n;
+    return Chain{s, (f + n - s) % n};
+  };
+  return {make(ud, lnd), make(und, ld)};
+}
+
+}  // namespace
+
+std::optional<std::array<std::size_t, 2>> convex_nearest_vertex(const ConvexPolygon& P, const ConvexPolygon& Q,
+                                                                const Vec2& t) {
+  const Side A{P, false}, B{Q, true};
+  // A point well inside M: the centroid of three vertices of each shape (rounding only moves it
+  // slightly; the crossing test below is exact for the direction actually used).
+  auto inner = [](const Side& S) {
+    const std::size_t n = S.size();
+    return Vec2((S.v(0) + S.v(n / 3) + S.v(2 * n / 3)) / 3);
+  };
+  Vec2 d = inner(A) + inner(B) - t;
+  if (!d.allFinite() || (d.x() == 0 && d.y() == 0)) return std::nullopt;
+  d = normalized_scale(d);
+  const Chains ca = front_chains(A, d), cb = front_chains(B, d);
+  auto X = [&](const Vec2& a, const Vec2& b) {
+    return exact::exact_sign([&](auto L) {
+      return L(d.x()) * (L(a.y()) + L(b.y()) - L(t.y())) - L(d.y()) * (L(a.x()) + L(b.x()) - L(t.x()));
+    });
+  };
+  if (X(A.v(ca.forward.start), B.v(cb.forward.start)) >= 0 ||
+      X(A.v(ca.forward.start + ca.forward.edges), B.v(cb.forward.start + cb.forward.edges)) <= 0)
+    return std::nullopt;
+  const Exit en = find_exit(A, B, ca.backward, cb.backward, t, Vec2(-d));
+  if (!en.crosses || en.s_sign >= 0) return std::nullopt;  // t must lie before the entry
+  // The entry edge E (x0 → x1, counter-clockwise on M): t is strictly outside its line.
+  const Vec2 x0 = en.e0, x1 = en.e1;
+  const Chains wa = edge_chains(A, x0, x1), wb = edge_chains(B, x0, x1);
+  // outside: t strictly right of the edge line through v; proj: sign of (x1 − x0)·(t − v).
+  auto outside = [&](const Vec2& e0, const Vec2& e1, const Vec2& a, const Vec2& b) {
+    return exact::exact_sign([&](auto L) {
+             return (L(e1.x()) - L(e0.x())) * (L(t.y()) - L(a.y()) - L(b.y())) -
+                    (L(e1.y()) - L(e0.y())) * (L(t.x()) - L(a.x()) - L(b.x()));
+           }) < 0;
+  };
+  auto proj = [&](const Vec2& e0, const Vec2& e1, const Vec2& a, const Vec2& b) {
+    return exact::exact_sign([&](auto L) {
+      return (L(e1.x()) - L(e0.x())) * (L(t.x()) - L(a.x()) - L(b.x())) +
+             (L(e1.y()) - L(e0.y())) * (L(t.y()) - L(a.y()) - L(b.y()));
+    });
+  };
+  // "The nearest point is at or before this edge" (start vertex a + b): before the entry edge
+  // the edge must face t and t project before its start; from the entry edge on, either.
+  auto R = [&](bool after, const Vec2& e0, const Vec2& e1, const Vec2& a, const Vec2& b) {
+    const bool out = outside(e0, e1, a, b);
+    if (!after && !out) return false;
+    if (after && !out) return true;
+    return proj(e0, e1, a, b) <= 0;
+  };
+  // The first edge of a half window (chains ca, cb merged in slope order) where R holds: the path
+  // point (A chain index, B chain index) of its start, or nullopt.
+  auto first_true = [&](const Chain& ka, const Chain& kb, bool after) -> std::optional<std::array<std::size_t, 2>> {
+    const std::size_t p = ka.edges, q = kb.edges;
+    auto av = [&](std::size_t i) { return A.v(ka.start + i); };
+    auto bv = [&](std::size_t j) { return B.v(kb.start + j); };
+    auto before = [&](std::size_t k, std::size_t l) {
+      return predicates::cross_edges(av(k), av(k + 1), bv(l), bv(l + 1)) >= 0;
+    };
+    auto j_of = [&](std::size_t k) {  // B edges before A edge k
+      return partition_point(B, kb.start, 0, q, [&](std::size_t l) { return before(k, l); });
+    };
+    auto i_of = [&](std::size_t l) {  // A edges before B edge l (ties: A first)
+      return partition_point(A, ka.start, 0, p, [&](std::size_t k) { return !before(k, l); });
+    };
+    const std::size_t kA = partition_point(A, ka.start, 0, p, [&](std::size_t k) {
+      return R(after, av(k), av(k + 1), av(k), bv(j_of(k)));
+    });
+    const std::size_t lB = partition_point(B, kb.start, 0, q, [&](std::size_t l) {
+      return R(after, bv(l), bv(l + 1), av(i_of(l)), bv(l));
+    });
+    if (kA == p && lB == q) return std::nullopt;
+    if (lB == q || (kA < p && before(kA, lB))) return std::array<std::size_t, 2>{kA, j_of(kA)};
+    return std::array<std::size_t, 2>{i_of(lB), lB};
+  };
+  auto vertex = [&](const Chain& ka, const Chain& kb, std::size_t i, std::size_t j) {
+    return std::array<std::size_t, 2>{A.input(ka.start + i), B.input(kb.start + j)};
+  };
+  // First half: the edges before the entry edge (angles in (θ − π, θ)), the backward chains.
+  if (const auto h = first_true(wa.backward, wb.backward, false))
+    return vertex(wa.backward, wb.backward, (*h)[0], (*h)[1]);
+  // The entry edge's direction (with a parallel edge of the other shape), starting where the
+  // first half ends.
+  const Vec2 ea = A.v(wa.backward.start + wa.backward.edges), eb = B.v(wb.backward.start + wb.backward.edges);
+  if (R(true, x0, x1, ea, eb)) return vertex(wa.backward, wb.backward, wa.backward.edges, wb.backward.edges);
+  if (const auto h = first_true(wa.forward, wb.forward, true)) return vertex(wa.forward, wb.forward, (*h)[0], (*h)[1]);
+  return std::nullopt;
+}
+
+}  // namespace pendepth::convex2

@@ -114,6 +114,13 @@ std::string vec_text(const Vec2& v) {
 
 }  // namespace
 
+void detail::append_feature2(std::string& out, const Feature& f, const ConvexPolygon& poly) { append_feature(out, f, poly); }
+void detail::append_feature2(std::string& out, const Feature& f, const Polygon& poly) { append_feature(out, f, poly); }
+std::string detail::feature2_text(const Feature& f, const ConvexPolygon& poly) { return feature_text(f, poly); }
+std::string detail::feature2_text(const Feature& f, const Polygon& poly) { return feature_text(f, poly); }
+std::string detail::vec2_text(const Vec2& v) { return vec_text(v); }
+void detail::append_vec2(std::string& out, const Vec2& v) { append_vec(out, v); }
+
 namespace {
 template <class ShapeP, class ShapeQ>
 void append_json_any(std::string& out, const Depth2& r, const ShapeP& P, const ShapeQ& Q) {

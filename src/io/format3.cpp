@@ -111,6 +111,8 @@ std::string vec_text(const Vec3& v) {
 
 std::string detail::feature3_text(const Feature3& f, const ConvexPolytope& poly) { return feature_text(f, poly); }
 std::string detail::vec3_text(const Vec3& v) { return vec_text(v); }
+void detail::append_feature3(std::string& out, const Feature3& f, const ConvexPolytope& poly) { append_feature(out, f, poly); }
+void detail::append_vec3(std::string& out, const Vec3& v) { append_vec(out, v); }
 
 void append_json(std::string& out, const Depth3& r, const ConvexPolytope& P, const ConvexPolytope& Q) {
   detail::append_result_fields(

@@ -50,4 +50,15 @@ std::string feature3_text(const Feature3& f, const ConvexPolytope& poly);
 /// "(x, y, z)" with shortest round-trip doubles, as the 3D summary prints vectors (format3.cpp).
 std::string vec3_text(const Vec3& v);
 
+/// The feature and vector formatting of the 2D and 3D writers (format.cpp, format3.cpp), for the
+/// signed distance and cast writers (format_distance.cpp).
+void append_feature2(std::string& out, const Feature& f, const ConvexPolygon& poly);
+void append_feature2(std::string& out, const Feature& f, const Polygon& poly);
+std::string feature2_text(const Feature& f, const ConvexPolygon& poly);
+std::string feature2_text(const Feature& f, const Polygon& poly);
+std::string vec2_text(const Vec2& v);
+void append_vec2(std::string& out, const Vec2& v);
+void append_feature3(std::string& out, const Feature3& f, const ConvexPolytope& poly);
+void append_vec3(std::string& out, const Vec3& v);
+
 }  // namespace pendepth::io::detail

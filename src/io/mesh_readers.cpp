@@ -7,6 +7,7 @@
 // (text) or the byte offset (binary STL).
 #include <pendepth/io.hpp>
 
+#include "io/number.hpp"
 #include "io/printable.hpp"
 
 #include <algorithm>
@@ -94,19 +95,13 @@ class Tokens {
 
 enum class Num { Ok, NotNumber, NotFinite };
 
-// One decimal number, the whole token. Underflow rounds to 0 or a subnormal (as strtod does);
-// overflow, inf and nan are NotFinite.
+// One decimal number, the whole token (src/io/number.hpp: underflow rounds to 0 or a subnormal;
+// overflow, inf and nan are NotFinite).
 Num parse_number(std::string_view f, double& x) {
-  const char* b = f.data();
-  const char* e = f.data() + f.size();
-  if (e - b > 1 && *b == '+' && b[1] != '-' && b[1] != '+') ++b;  // from_chars rejects a leading '+'
-  auto [ptr, ec] = std::from_chars(b, e, x, std::chars_format::general);
-  if (b == e || ec == std::errc::invalid_argument || ptr != e) return Num::NotNumber;
-  if (ec == std::errc::result_out_of_range) {  // from_chars does not say which way: ask strtod
-    const std::string copy(b, e);
-    x = std::strtod(copy.c_str(), nullptr);
-  }
-  return std::isfinite(x) ? Num::Ok : Num::NotFinite;
+  const char* end = nullptr;
+  const auto st = detail::read_decimal(f.data(), f.data() + f.size(), x, end);
+  if (st == detail::Decimal::NotNumber || end != f.data() + f.size()) return Num::NotNumber;
+  return st == detail::Decimal::Ok ? Num::Ok : Num::NotFinite;  // inf, nan or overflow
 }
 
 std::string shorten(std::string_view s) { return detail::printable(s); }

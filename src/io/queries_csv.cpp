@@ -8,6 +8,7 @@
 // silently skipped.
 #include <pendepth/io.hpp>
 
+#include "io/number.hpp"
 #include "io/printable.hpp"
 
 #include <charconv>
@@ -29,13 +30,10 @@ enum class Field { Ok, Empty, NotNumber, NotFinite };
 Field parse_field(std::string_view f, double& x) {
   f = trim(f);
   if (f.empty()) return Field::Empty;
-  const char* b = f.data();
-  const char* e = f.data() + f.size();
-  if (e - b > 1 && *b == '+' && b[1] != '-') ++b;  // from_chars rejects a leading '+'
-  auto [ptr, ec] = std::from_chars(b, e, x, std::chars_format::general);
-  if (ec == std::errc::invalid_argument || ptr != e) return Field::NotNumber;
-  if (ec == std::errc::result_out_of_range || !std::isfinite(x)) return Field::NotFinite;
-  return Field::Ok;
+  const char* end = nullptr;
+  const auto st = detail::read_decimal(f.data(), f.data() + f.size(), x, end);  // src/io/number.hpp
+  if (st == detail::Decimal::NotNumber || end != f.data() + f.size()) return Field::NotNumber;
+  return st == detail::Decimal::Ok ? Field::Ok : Field::NotFinite;  // inf, nan or overflow
 }
 
 std::string shorten(std::string_view s) { return detail::printable(trim(s)); }

@@ -5,6 +5,7 @@
 
 #include <pendepth/geometry.hpp>
 
+#include "io/number.hpp"
 #include "io/printable.hpp"
 
 #include <algorithm>
@@ -76,14 +77,13 @@ class Scanner {
     peek();
     const char* first = s_.data() + pos_;
     const char* last = s_.data() + s_.size();
-    const char* p = first;
-    if (p + 1 < last && *p == '+' && p[1] != '-') ++p;  // from_chars rejects a leading '+'
     double x = 0;
-    auto [ptr, ec] = std::from_chars(p, last, x, std::chars_format::general);
-    if (ec == std::errc::invalid_argument || ptr == p || (ptr < last && !is_delim(*ptr)))
+    const char* ptr = nullptr;
+    const auto st = detail::read_decimal(first, last, x, ptr);  // src/io/number.hpp: underflow rounds
+    if (st == detail::Decimal::NotNumber || (ptr < last && !is_delim(*ptr)))
       fail(std::string("expected a number for ") + what + ", got " + token());
-    if (ec == std::errc::result_out_of_range) fail("number out of range " + token());
-    if (!std::isfinite(x)) fail("non-finite number " + token());
+    if (st == detail::Decimal::Overflow) fail("number out of range " + token());
+    if (st == detail::Decimal::NotFinite) fail("non-finite number " + token());
     pos_ = static_cast<std::size_t>(ptr - s_.data());
     return x;
   }

@@ -182,7 +182,7 @@ TEST_F(Cli, BadInputExitsWithOneLine) {
   expect_error("depth " + pq + " --offset 1,b", "--offset: expected X,Y (two numbers), got '1,b'");
   expect_error("depth " + pq + " --offset 1", "--offset: expected X,Y (two numbers), got '1'");
   expect_error("depth " + pq + " --offset 1,2,3", "--offset: expected X,Y (two numbers), got '1,2,3'");
-  expect_error("depth " + pq + " --rotate-q 1,0,0,0", "--rotate-q: rotations apply to 3D shapes only");
+  expect_error("depth " + pq + " --rotate-q 1,0,0,0", "--rotate-q: expected DEG (one number), got '1,0,0,0'");  // 2D: an angle
 
   // Usage errors: status 2 and one line too.
   for (const std::string& args : std::vector<std::string>{"", "depth " + quote(P), "depth " + pq + " --separate", "batch " + pq,

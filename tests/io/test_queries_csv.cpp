@@ -66,6 +66,13 @@ TEST(QueriesCsv, RandomValuesReadBackExactly) {
   }
 }
 
+TEST(QueriesCsv, UnderflowRoundsLikeEveryReader) {
+  const auto q = io::parse_queries_csv("1e-400,4.9e-324,-1e-320,+2.5e-324\n");
+  ASSERT_EQ(q.size(), 1u);
+  EXPECT_EQ(q[0].t, Vec2(0, 4.9e-324));
+  EXPECT_EQ(q[0].d, Vec2(-1e-320, 4.9e-324));
+}
+
 TEST(QueriesCsv, ErrorsNameTheLine) {
   EXPECT_EQ(error_of("x,y,dx,dy\n0,0,1,0\n\n1,2,3\n"), "q.csv:4: expected 4 numbers, got 3");
   EXPECT_EQ(error_of("0,0,1,0,5\n"), "q.csv:1: expected 4 numbers, got 5");

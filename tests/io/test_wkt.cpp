@@ -99,6 +99,17 @@ TEST(Wkt, NumberSyntaxAndOpenRing) {
   EXPECT_EQ(w.lines[0], (std::vector<std::size_t>{2, 2, 2}));
 }
 
+TEST(Wkt, UnderflowRoundsLikeEveryReader) {
+  // One rule for every reader (src/io/number.hpp): below the double range rounds as strtod does.
+  const auto w = io::parse_wkt_polygon("POLYGON ((1e-400 0, 1 4.9e-324, 0 1, -1e-320 -2.5e-324))");
+  ASSERT_EQ(w.rings[0].size(), 4u);
+  EXPECT_EQ(w.rings[0][0].x(), 0.0);
+  EXPECT_EQ(w.rings[0][1].y(), 4.9e-324);
+  EXPECT_EQ(w.rings[0][3].x(), -1e-320);
+  EXPECT_TRUE(std::signbit(w.rings[0][3].x()));
+  EXPECT_EQ(w.rings[0][3].y(), -4.9e-324);  // -2.5e-324 rounds to the smallest subnormal
+}
+
 TEST(Wkt, ByteOrderMark) {
   const auto w = io::parse_wkt_polygon("\xEF\xBB\xBFPOLYGON ((0 0, 1 0, 0 1))");
   EXPECT_EQ(w.rings.at(0).size(), 3u);

@@ -1,0 +1,93 @@
+// Generalized depth PD_g (include/pendepth/motion.hpp, issue 18) against the translational σ on
+// nesting pieces: the same pairs and placements in one run. Pairs: every ordered pair of the
+// first 5 pieces of an instance, Q placed with its box centre on P's plus an offset of 10 % of
+// P's box (pinned seed), overlapping placements only. One "query" answers one pair from scratch,
+// as a single question would: σ = Pair2(P, Q, prepare) + minimum (second argument: 0 Auto, 1
+// Queries); PD_g = generalized_depth (its probes build one Pair2 per angle). Counters: probes per PD_g query, the mean relative gap
+// (upper − lower)/upper, the fraction of queries whose gap closed (≤ 1e-6), the mean PD_g / σ.
+//
+//   bench_motion --benchmark_filter=...   (arguments: the instance index 0 albano, 1 shirts,
+//   2 trousers; the Prepare of σ's pair or of PD_g's probes: 0 Auto, 1 Queries)
+#include <pendepth/pendepth.hpp>
+
+#include <benchmark/benchmark.h>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace pendepth;
+
+const char* const kInstances[] = {"albano", "shirts", "trousers"};
+
+struct Case {
+  Shape2 P, Q;
+  Vec2 t;
+};
+
+std::vector<Case> cases(int instance) {
+  std::ifstream in(std::string(PENDEPTH_SHARED_DATA) + "/nesting/" + kInstances[instance] + ".json");
+  nlohmann::json j;
+  in >> j;
+  std::vector<Shape2> pieces;
+  for (const auto& item : j["items"]) {
+    std::vector<Vec2> r;
+    for (const auto& p : item["shape"]["data"]) r.push_back({p[0].get<double>(), p[1].get<double>()});
+    pieces.emplace_back(r, std::vector<std::vector<Vec2>>{}, kInstances[instance]);
+    if (pieces.size() == 5) break;
+  }
+  std::mt19937_64 rng(18);
+  std::uniform_real_distribution<double> u(-0.1, 0.1);
+  std::vector<Case> out;
+  for (const Shape2& P : pieces)
+    for (const Shape2& Q : pieces) {
+      Vec2 plo(1e300, 1e300), phi(-1e300, -1e300), qlo = plo, qhi = phi;
+      const auto pr = P.rings(), qr = Q.rings();
+      for (const Vec2& p : pr[0]) plo = plo.cwiseMin(p), phi = phi.cwiseMax(p);
+      for (const Vec2& q : qr[0]) qlo = qlo.cwiseMin(q), qhi = qhi.cwiseMax(q);
+      const Vec2 t = 0.5 * (plo + phi - qlo - qhi) + Vec2(u(rng) * (phi - plo).x(), u(rng) * (phi - plo).y());
+      if (Pair2(P, Q).overlapping(t)) out.push_back({P, Q, t});
+    }
+  return out;
+}
+
+void BM_Sigma(benchmark::State& state) {
+  const auto cs = cases(static_cast<int>(state.range(0)));
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Case& c = cs[i++ % cs.size()];
+    benchmark::DoNotOptimize(Pair2(c.P, c.Q, state.range(1) == 0 ? Prepare::Auto : Prepare::Queries).minimum(c.t));
+  }
+  state.counters["pairs"] = double(cs.size());
+}
+
+void BM_Generalized(benchmark::State& state) {
+  const auto cs = cases(static_cast<int>(state.range(0)));
+  GeneralizedOptions2 o;
+  o.prepare = state.range(1) == 0 ? Prepare::Auto : Prepare::Queries;
+  std::size_t i = 0, n = 0, probes = 0, closed = 0;
+  double gap = 0, ratio = 0;
+  for (auto _ : state) {
+    const Case& c = cs[i++ % cs.size()];
+    const GeneralizedDepth2 r = generalized_depth(c.P, c.Q, c.t, o);
+    ++n, probes += r.probes, closed += r.converged;
+    gap += (r.upper_bound - r.lower_bound) / r.upper_bound;
+    ratio += r.depth / r.sigma;
+  }
+  state.counters["pairs"] = double(cs.size());
+  state.counters["probes"] = double(probes) / double(n);
+  state.counters["gap"] = gap / double(n);
+  state.counters["closed"] = double(closed) / double(n);
+  state.counters["pdg/sigma"] = ratio / double(n);
+}
+
+}  // namespace
+
+BENCHMARK(BM_Sigma)->ArgsProduct({{0, 1, 2}, {0, 1}})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Generalized)->ArgsProduct({{0, 1, 2}, {0}})->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK(BM_Generalized)->ArgsProduct({{0}, {1}})->Unit(benchmark::kMillisecond)->Iterations(16);
+BENCHMARK_MAIN();

@@ -1,0 +1,91 @@
+// pendepth — depth under rigid motion: the generalized penetration depth PD_g (survey §4,
+// Zhang, Kim, Varadhan, Manocha). Included at the end of pendepth.hpp.
+//
+// P is fixed; Q, placed at t (2D) or posed (3D), may rotate about its reference point (its own
+// origin, placed at t) and translate. The cost of a rigid motion is DISP, the largest distance any
+// point of Q travels between its start and its end:
+//     DISP(θ, v) = max_{q ∈ Q} |R_θ q + v − q|          (q in Q's own frame),
+// and PD_g = min { DISP(θ, v) : the interiors of P and Q moved by (θ, v) are disjoint }.
+// DISP depends on the end placement only (not on the rotation centre used to describe it), a pure
+// translation v costs |v| (so PD_g ≤ σ), and it is a lower bound of the survey's path metric D_g
+// (an arc is at least its chord), so PD_g under DISP ≤ PD_g under D_g with equality for convex
+// pairs. Theorem (docs/algorithms.md "Generalized depth"): when P and Q are both convex,
+// PD_g = σ. Proof: a separating end placement M(Q) and P are split by a line with unit normal n,
+// M(Q) on the side {x : n·x ≥ h_P(n)}; the point a ∈ Q deepest against n (n·a = −h_{−Q}(n))
+// moves by at least n·(M(a) − a) ≥ h_P(n) + h_{−Q}(n) ≥ σ, since σ is the smallest support overlap
+// of two convex sets. The same argument in 3D with a plane. It needs both shapes convex.
+#pragma once
+
+#include <pendepth/pendepth.hpp>
+
+#include <cstddef>
+
+namespace pendepth {
+
+/// Options of generalized_depth (2D).
+struct GeneralizedOptions2 {
+  /// The rotations Q may take, in degrees, counter-clockwise about its reference point. The range
+  /// must contain 0 (so that σ's motion is allowed and PD_g ≤ σ).
+  double min_degrees = -180, max_degrees = 180;
+  /// Angles probed at most (each probe: Q rotated once, a Pair2, a few σ and overlap queries).
+  /// The search stops earlier when the gap closes.
+  std::size_t max_probes = 512;
+  /// Stop when upper_bound − lower_bound ≤ tolerance · upper_bound.
+  double tolerance = 1e-6;
+  /// How each probe's Pair2 prepares (Auto: the no-fit polygon for small non-convex pairs, whose
+  /// build costs less than a few per-query σ answers; docs/benchmarks.md "Generalized depth").
+  Prepare prepare = Prepare::Auto;
+  /// Both shapes convex: answer σ by the theorem without probing (false: search anyway; tests).
+  bool convex_theorem = true;
+};
+
+/// 2D generalized depth. `depth` = upper_bound, the DISP cost of the best motion found: rotate Q
+/// by `angle` degrees about its reference point (coordinates as Shape2::rotated(angle), which
+/// rounds them unless angle is a multiple of 90) and move its reference point by `translation`;
+/// that motion separates P and the rotated Q, decided exactly. `lower_bound` ≤ PD_g ≤ upper_bound.
+struct GeneralizedDepth2 {
+  double depth = 0, lower_bound = 0, upper_bound = 0;
+  double angle = 0;            ///< degrees
+  Vec2 translation{0, 0};      ///< of Q's reference point, after the rotation
+  double sigma = 0;            ///< translational σ at angle 0 (≥ depth)
+  double sigma_at_angle = 0;   ///< σ of P and Q.rotated(angle) at the same t
+  bool overlapping = false;
+  bool rotation_exact = true;  ///< angle is a multiple of 90 (Shape2::rotation_is_exact)
+  bool converged = true;       ///< upper − lower ≤ tolerance·upper (else the gap is reported as is)
+  std::size_t probes = 0;      ///< angles probed
+};
+
+/// PD_g of P and Q + t (2D). Both convex: σ, lower = upper (the theorem). Otherwise:
+///   lower bound: the largest σ(P_i, Q_j) over pairs of convex parts (Hertel–Mehlhorn parts of the
+///     triangulations) — every separating motion separates each pair of parts, and for a convex
+///     pair the theorem gives DISP ≥ σ(P_i, Q_j);
+///   upper bound: the best verified motion over probed angles (a grid over the range, refined
+///     around the best angle), each answered by exact σ queries on P and Q.rotated(θ) with
+///     Q rotated about its reference point and about two more centres of Q.
+/// The bounds meet (gap 0) when one pair of convex parts is as deep as the whole pair; otherwise
+/// the gap is reported (converged false). Throws InvalidInput for a non-finite t, a non-finite
+/// angle range or one without 0, a negative tolerance.
+GeneralizedDepth2 generalized_depth(const Shape2& P, const Shape2& Q, const Vec2& t,
+                                    const GeneralizedOptions2& options = {});
+
+/// 3D generalized depth of convex polytopes: Q, at pose_q, rotates by `rotation` (world frame,
+/// about its placed reference point pose_q.translation) then moves by `translation`.
+struct GeneralizedDepth3 {
+  double depth = 0, lower_bound = 0, upper_bound = 0;
+  Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
+  Vec3 translation{0, 0, 0};
+  double sigma = 0;
+  bool overlapping = false;
+};
+
+/// PD_g of two convex polytopes = σ (the theorem): identity rotation, σ's translation, σ's
+/// certified bounds. Meshes (non-convex 3D shapes) are not supported by pendepth yet.
+GeneralizedDepth3 generalized_depth(const Shape3& P, const Pose3& pose_p, const Shape3& Q,
+                                    const Pose3& pose_q);
+
+/// DISP of a 2D motion for Q's vertices `q` (own frame) rotated to `rq` (same order) and
+/// translated by v: max |rq − q + v|, rounded up past the evaluation's rounding (a certified
+/// upper bound of the displacement of those coordinates). Used by the search and the tests.
+double displacement_upper(const Vec2* q, const Vec2* rq, std::size_t n, const Vec2& v);
+
+}  // namespace pendepth

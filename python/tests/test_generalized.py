@@ -1,0 +1,75 @@
+"""pendepth.generalized_depth (issue 18): the binding equals the C++ front door's contract —
+convex pairs give sigma (2D and 3D, the theorem), a peg turned in a slot is freed by turning back
+(far below sigma), the reported motion separates (checked with Pair2 on a rotation of Q's
+coordinates by the same formula), bounds are ordered, bad input raises InvalidInput."""
+import math
+
+import numpy as np
+import pytest
+
+import pendepth
+
+
+def square(h, c=(0.0, 0.0)):
+    return np.array([[c[0] - h, c[1] - h], [c[0] + h, c[1] - h], [c[0] + h, c[1] + h], [c[0] - h, c[1] + h]])
+
+
+def turned(pts, deg):
+    a = math.radians(deg % 360.0)
+    c, s = math.cos(a), math.sin(a)
+    return np.array([[c * x - s * y, s * x + c * y] for x, y in pts])
+
+
+def test_convex_2d_is_sigma():
+    rng = np.random.default_rng(18)
+    for _ in range(10):
+        P = pendepth.Shape2(square(1.0, tuple(rng.normal(size=2) * 0.1)))
+        Q = pendepth.Shape2(turned(square(0.5), float(rng.uniform(0, 90))))
+        t = rng.uniform(-0.8, 0.8, size=2)
+        s = pendepth.Pair2(P, Q).minimum(t)
+        g = pendepth.generalized_depth(P, Q, t)
+        assert g.kind == "generalized"
+        assert g.depth == float(s.depth) == g.lower_bound == g.upper_bound
+        assert g.angle == 0.0
+        assert np.array_equal(g.translation, s.translation)
+
+
+def test_peg_in_slot_turns_back():
+    slot = pendepth.Shape2(np.array([[-3, -5], [3, -5], [3, 4], [0.26, 4], [0.26, -4], [-0.26, -4], [-0.26, 4], [-3, 4]], float))
+    bar = turned(np.array([[-0.25, -3], [0.25, -3], [0.25, 3], [-0.25, 3]]), 3.0)
+    Q = pendepth.Shape2(bar)
+    g = pendepth.generalized_depth(slot, Q, (0.0, 0.0))
+    assert g.overlapping
+    assert g.lower_bound <= g.upper_bound == g.depth
+    assert g.depth < 0.1 * g.sigma
+    assert -4 < g.angle < 0
+    # The motion separates: Q's coordinates rotated by the same formula as Shape2.rotated.
+    moved = pendepth.Shape2(turned(bar, g.angle))
+    assert not pendepth.Pair2(slot, moved).overlapping(g.translation)
+    # Its cost: the largest displacement of Q's vertices.
+    cost = max(np.hypot(*(turned(bar, g.angle)[i] + g.translation - bar[i])) for i in range(4))
+    assert cost <= g.depth * (1 + 1e-12)
+
+
+def test_convex_3d_is_sigma():
+    rng = np.random.default_rng(3)
+    P = pendepth.Shape3.hull(rng.normal(size=(20, 3)))
+    Q = pendepth.Shape3.hull(rng.normal(size=(15, 3)) * 0.7)
+    t = np.array([0.1, -0.2, 0.05])
+    q = np.array([0.9, 0.1, -0.3, 0.2])
+    s = pendepth.Pair3(P, Q).minimum(t, q)
+    g = pendepth.generalized_depth(P, Q, t, q)
+    assert g.depth == float(s.depth)
+    assert np.array_equal(g.rotation, [1.0, 0.0, 0.0, 0.0])
+    assert np.array_equal(g.translation, s.translation)
+    assert g.lower_bound <= g.depth <= g.upper_bound
+
+
+def test_bad_input():
+    P = pendepth.Shape2(square(1.0))
+    with pytest.raises(pendepth.InvalidInput):
+        pendepth.generalized_depth(P, P, (math.nan, 0.0))
+    with pytest.raises(pendepth.InvalidInput):
+        pendepth.generalized_depth(P, P, (0.0, 0.0), min_degrees=5.0)
+    with pytest.raises(pendepth.InvalidInput):
+        pendepth.generalized_depth(P, P, np.zeros((3, 2)))
