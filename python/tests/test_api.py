@@ -243,7 +243,7 @@ def test_pair3(pair3):
 
 def test_shape3_from_file(tmp_path):
     f = tmp_path / "tet.off"
-    f.write_text("OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n")
+    f.write_text("OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")  # closed
     s = pendepth.Shape3.from_file(str(f), name="tet")
     assert len(s) == 4 and s.vertices.shape == (4, 3) and s.triangles.shape == (4, 3)
     p = pendepth.Pair3(s, s)
