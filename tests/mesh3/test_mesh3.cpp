@@ -120,6 +120,39 @@ TEST(MeshReaders, FaceLocationsAndErrors) {
   EXPECT_EQ(error_of([] { io::read_mesh("a.xyz"); }), "a.xyz: unknown 3D shape format '.xyz' (expected .obj, .off, .stl or .ply)");
 }
 
+TEST(MeshReaders, StlMergesExactlyEqualCornersAndPlyTakesItsVariants) {
+  // -0 and 0 are one vertex; 1 and the next float up are two.
+  const std::string stl = "solid s\nfacet normal 0 0 0\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\n"
+                          "facet normal 0 0 0\nouter loop\nvertex -0 0 0\nvertex 0 1 0\nvertex 1.0000001 0 0\nendloop\nendfacet\nendsolid s\n";
+  const io::MeshFile f = io::parse_mesh(stl, io::MeshFormat::Stl, "s.stl");
+  EXPECT_EQ(f.points.size(), 4u);
+  EXPECT_EQ(f.indices, (std::vector<std::size_t>{0, 1, 2, 0, 2, 3}));
+  EXPECT_EQ(f.face_where(1), "s.stl:9: face 1");  // its facet line
+  // PLY: float coordinates, the index list named vertex_index with other types, an extra element
+  // and properties to skip, binary big endian.
+  std::string ply = "ply\nformat binary_big_endian 1.0\nelement vertex 4\nproperty short id\nproperty float x\nproperty float y\n"
+                    "property float z\nelement face 4\nproperty uchar flags\nproperty list ushort uint vertex_index\n"
+                    "element edge 1\nproperty list uchar int ends\nend_header\n";
+  const Gen tet{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}};
+  for (std::size_t i = 0; i < 4; ++i) {
+    put<std::int16_t>(ply, static_cast<std::int16_t>(i), true);
+    for (int a = 0; a < 3; ++a) put<float>(ply, static_cast<float>(tet.points[i][a]), true);
+  }
+  for (const auto& face : tet.faces) {
+    put<std::uint8_t>(ply, 1, true);
+    put<std::uint16_t>(ply, 3, true);
+    for (std::size_t v : face) put<std::uint32_t>(ply, static_cast<std::uint32_t>(v), true);
+  }
+  put<std::uint8_t>(ply, 2, true);
+  put<std::int32_t>(ply, 0, true);
+  put<std::int32_t>(ply, 1, true);
+  const io::MeshFile p = io::parse_mesh(ply, io::MeshFormat::Ply, "t.ply");
+  EXPECT_EQ(p.points, tet.points);
+  const Mesh3 m = Mesh3::validate(p, "tet");
+  EXPECT_TRUE(m.convex());
+  EXPECT_EQ(six_volume(p.points, tris_of(m)), 1);
+}
+
 // ---- validation: every defect class, the error text ----
 
 TEST(MeshValidate, DefectsAreNamed) {
