@@ -1,8 +1,9 @@
 // Validation of a closed triangle mesh (include/pendepth/mesh3.hpp; docs/algorithms.md "Mesh
 // validation"). Every decision is an exact predicate on the input doubles:
 //   1. faces → triangles: a triangle must not be collinear (exact collinear3); a larger face must
-//      be planar (exact orient3d) and strictly convex (exact orient2d in a projection that keeps
-//      its orientation) and is split into a fan;
+//      be planar (exact orient3d) and strictly convex (every corner turning the same way by exact
+//      orient2d in a projection that keeps its orientation, and winding once: exact polar-angle
+//      comparisons of consecutive edges; O(k)) and is split into a fan;
 //   2. edges (sorted half-edges): each undirected edge in exactly two triangles, once in each
 //      direction (closed, edge-manifold, consistently oriented);
 //   3. vertices: the triangles around a vertex form one fan (walk through the twins);
@@ -101,17 +102,25 @@ void triangulate_face(const io::MeshFile& file, std::size_t f, std::string_view 
   int drop = 0;
   const auto proj = [&](const Vec3& v, int d) { return d == 0 ? Vec2(v.y(), v.z()) : d == 1 ? Vec2(v.z(), v.x()) : Vec2(v.x(), v.y()); };
   while (predicates::orient2d(proj(pt(0), drop), proj(pt(1), drop), proj(pt(c), drop)) == 0) ++drop;
-  int turn = 0;
-  for (std::size_t i = 0; i < k; ++i)
-    for (std::size_t j = 0; j < k; ++j) {
-      if (j == i || j == (i + 1) % k) continue;
-      const int s = predicates::orient2d(proj(pt(i), drop), proj(pt((i + 1) % k), drop), proj(pt(j), drop));
-      if (turn == 0) turn = s;
-      if (s == 0 || s != turn)
-        fail(file, f, name, "a face of " + std::to_string(k) + " vertices is not a strictly convex polygon (vertex " +
-                                file.vertex_name(idx(j)) + " against its edge " + file.vertex_name(idx(i)) + "-" +
-                                file.vertex_name(idx((i + 1) % k)) + "): give triangles");
-    }
+  // Strictly convex ⇔ every corner turns the same way (exact orient2d, no collinear corner) and
+  // the boundary winds once: the edge directions, turning monotonically, pass the +x direction
+  // exactly once (exact polar-angle comparisons). O(k).
+  const auto q = [&](std::size_t i) { return proj(pt(i % k), drop); };
+  const int turn = predicates::orient2d(q(0), q(1), q(2));
+  std::size_t wraps = 0;
+  for (std::size_t i = 0; i < k; ++i) {
+    const int s = predicates::orient2d(q(i), q(i + 1), q(i + 2));
+    if (s == 0 || s != turn)
+      fail(file, f, name, "a face of " + std::to_string(k) + " vertices is not a strictly convex polygon (its corner at vertex " +
+                              file.vertex_name(idx((i + 1) % k)) + (s == 0 ? " is straight" : " turns the other way") +
+                              "): give triangles");
+    // Edge i+1's direction angle below edge i's (turning left) or above it (turning right): a wrap.
+    const int c = predicates::compare_angle(q(i), q(i + 1), q(i + 1), q(i + 2));
+    if (c == turn) ++wraps;
+  }
+  if (wraps != 1)
+    fail(file, f, name, "a face of " + std::to_string(k) + " vertices winds " + std::to_string(wraps) +
+                            " times around its interior (a star polygon): give triangles");
   for (std::size_t i = 1; i + 1 < k; ++i) {
     tris.push_back({idx(0), idx(i), idx(i + 1)});
     face_of.push_back(f);

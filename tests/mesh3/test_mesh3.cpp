@@ -197,6 +197,14 @@ TEST(MeshValidate, DefectsAreNamed) {
   star.points = {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {1, 0.5, 0}, {0, 2, 0}};
   star.faces = {{0, 1, 2, 3, 4}};
   EXPECT_NE(err(star).find("is not a strictly convex polygon"), std::string::npos) << err(star);
+  Gen pentagram;  // every corner turns left, but the boundary winds twice
+  for (int i = 0; i < 5; ++i)
+    pentagram.points.emplace_back(std::cos(2 * 3.14159 * i / 5), std::sin(2 * 3.14159 * i / 5), 0);
+  pentagram.faces = {{0, 2, 4, 1, 3}};
+  EXPECT_EQ(err(pentagram), "g.off:1: face 0: M: a face of 5 vertices winds 2 times around its interior (a star polygon): give triangles");
+  Gen pillow = pentagram;  // two triangles back to back: closed, manifold, oriented, but flat
+  pillow.faces = {{0, 1, 2}, {0, 2, 1}};
+  EXPECT_EQ(err(pillow), "g.off:1: face 0: M: self-intersection: this face and g.off:2: face 1 coincide (same three vertices)");
   EXPECT_EQ(error_of([] { Mesh3::validate(io::parse_mesh("v 0 0 0\n", io::MeshFormat::Obj, "p.obj"), "M"); }),
             "p.obj: M: no faces");
 }
