@@ -200,7 +200,8 @@ class Shape3 {
   /// .obj, .off, .stl (ASCII or binary) or .ply (io::read_mesh). A file without faces: the hull
   /// of its vertices. A file with faces: a closed mesh (Mesh3::validate's checks and errors);
   /// convex → the convex path (the hull of its vertices: the same solid); not convex → a mesh
-  /// shape (is_convex() false). `hull` = true: the hull of the vertices, faces ignored. Throws
+  /// shape (is_convex() false); input_index() of a mesh's polytope counts the vertices some face
+  /// uses, in file order. `hull` = true: the hull of the vertices, faces ignored. Throws
   /// InvalidInput "PATH:LINE: problem" / "PATH:LINE: face F: NAME: problem".
   static Shape3 from_file(const std::filesystem::path& path, std::string_view name = "shape", bool hull = false);
   /// A validated mesh: convex → the convex path, else a mesh shape.
