@@ -42,7 +42,8 @@ struct ConvexDecomposition3 {
 
 /// A validated closed, oriented, 2-manifold, non-self-intersecting triangle mesh bounding one
 /// solid (one closed surface). Triangles are oriented outwards (CCW seen from outside; a file
-/// oriented inwards is flipped, as polygons accept either orientation). Cheap to copy.
+/// oriented inwards is flipped, as polygons accept either orientation). Cheap to copy; a
+/// default-constructed Mesh3 is empty and may only be assigned to.
 class Mesh3 {
  public:
   /// Triangulates the file's faces (a face of more than 3 vertices must be planar and strictly

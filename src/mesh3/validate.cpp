@@ -141,6 +141,20 @@ Mesh3 Mesh3::validate(const io::MeshFile& file, std::string_view name) {
   impl->points = file.points;
   const std::size_t nf = file.faces();
   if (nf == 0) throw InvalidInput(file.source + ": " + std::string(name) + ": no faces");
+  // A MeshFile may be built by hand: its structure is checked, not assumed.
+  if (file.face_start.front() != 0 || file.face_start.back() != file.indices.size())
+    throw InvalidInput(file.source + ": " + std::string(name) + ": face_start does not span the indices");
+  for (std::size_t f = 0; f < nf; ++f) {
+    if (file.face_start[f + 1] < file.face_start[f] + 3)
+      fail(file, f, name, "a face needs at least 3 vertices");
+    for (std::size_t i = file.face_start[f]; i < file.face_start[f + 1]; ++i) {
+      const std::size_t v = file.indices[i];
+      if (v >= file.points.size())
+        fail(file, f, name, "vertex index " + file.vertex_name(v) + " is out of range (" +
+                                std::to_string(file.points.size()) + " vertices)");
+      if (!file.points[v].allFinite()) fail(file, f, name, "vertex " + file.vertex_name(v) + " is not finite");
+    }
+  }
   auto& tris = impl->triangles;
   auto& face_of = impl->face_of;
   for (std::size_t f = 0; f < nf; ++f) triangulate_face(file, f, name, tris, face_of);

@@ -207,6 +207,16 @@ TEST(MeshValidate, DefectsAreNamed) {
   EXPECT_EQ(err(pillow), "g.off:1: face 0: M: self-intersection: this face and g.off:2: face 1 coincide (same three vertices)");
   EXPECT_EQ(error_of([] { Mesh3::validate(io::parse_mesh("v 0 0 0\n", io::MeshFormat::Obj, "p.obj"), "M"); }),
             "p.obj: M: no faces");
+  // Hand-built MeshFiles are checked, not trusted.
+  io::MeshFile hand = to_file(cube(), "h");
+  hand.indices[5] = 99;
+  EXPECT_EQ(error_of([&] { Mesh3::validate(hand, "M"); }), "h:2: face 1: M: vertex index 99 is out of range (8 vertices)");
+  hand = to_file(cube(), "h");
+  hand.points[0].x() = std::numeric_limits<double>::infinity();
+  EXPECT_NE(error_of([&] { Mesh3::validate(hand, "M"); }).find("is not finite"), std::string::npos);
+  hand = to_file(cube(), "h");
+  hand.face_start.back() -= 1;
+  EXPECT_EQ(error_of([&] { Mesh3::validate(hand, "M"); }), "h: M: face_start does not span the indices");
 }
 
 TEST(MeshValidate, InwardMeshesAreFlipped) {
