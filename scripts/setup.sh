@@ -4,7 +4,7 @@
 # fetched by the build) and Chromium for the test that opens the viewer's pages (tests/html3).
 # Idempotent: skips apt entirely when everything is already installed.
 set -euo pipefail
-PKGS=(cmake g++ make pkg-config libeigen3-dev libgmp-dev libcgal-dev libgtest-dev libgmock-dev
+PKGS=(cmake g++ make pkg-config libeigen3-dev libgmp-dev libmpfr-dev libcgal-dev libcgal-demo libgtest-dev libgmock-dev
       libbenchmark-dev libcli11-dev nlohmann-json3-dev libbox2d-dev
       libccd-dev libfcl-dev libbullet-dev libpolyclipping-dev libtbb-dev
       pybind11-dev python3-dev python3-numpy python3-pytest python3-hypothesis python3-dask

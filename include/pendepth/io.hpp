@@ -173,6 +173,51 @@ std::vector<Vec3> parse_mesh_points(std::string_view bytes, ShapeFormat format, 
 /// .off or .stl)".
 std::vector<Vec3> read_mesh_points(const std::filesystem::path& path);
 
+/// A 3D mesh file as read: every vertex and every face (a polygon of vertex indices), with where
+/// each face is in the file for messages. Faces are not validated here (src/mesh3/validate.cpp).
+struct MeshFile {
+  std::string source;                     ///< the file name used in messages
+  std::vector<Vec3> points;               ///< the vertices, in file order (STL: distinct, merged)
+  std::vector<std::size_t> indices;       ///< face f's vertices: indices[face_start[f], face_start[f+1])
+  std::vector<std::size_t> face_start;    ///< faces() + 1 entries
+  std::vector<std::size_t> face_location; ///< face f's line (text) or byte offset (binary formats)
+  bool byte_offsets = false;              ///< face_location holds byte offsets
+  int index_base = 0;                     ///< the file's own vertex numbering: 1 for OBJ, else 0
+
+  std::size_t faces() const { return face_start.empty() ? 0 : face_start.size() - 1; }
+  /// "SOURCE:LINE: face F" (text) or "SOURCE: face F (byte offset K)" (binary); F 0-based.
+  std::string face_where(std::size_t f) const;
+  /// Vertex i as the file numbers it (i + index_base).
+  std::string vertex_name(std::size_t i) const { return std::to_string(i + index_base); }
+  /// Reader use: a new face starts at `location`.
+  void begin_face(std::size_t location) {
+    face_start.push_back(indices.size());
+    face_location.push_back(location);
+  }
+};
+
+/// The 3D mesh formats parse_mesh reads.
+enum class MeshFormat { Obj, Off, Stl, Ply };
+
+/// PLY (ASCII, binary_little_endian or binary_big_endian 1.0): the `vertex` element's x, y, z
+/// (float or double; other properties of any type are skipped) and the `face` element's
+/// `vertex_indices` (or `vertex_index`) list (any integer types); other elements are skipped.
+/// ASCII: one element per line. Errors "SOURCE:LINE: problem" (header, ASCII body) or "SOURCE:
+/// problem (byte offset K)" (binary body): a bad header, a missing x/y/z, a malformed or
+/// non-finite number, an index out of range, a file ending early, or bytes/lines after the last
+/// element. O(size).
+MeshFile parse_ply(std::string_view bytes, std::string_view source = "<ply>");
+
+/// Vertices and faces of a mesh file's content with the reader of `format`, with exactly the
+/// errors of parse_obj_points, parse_off_points, parse_stl_points (OBJ `l` and `p` elements are
+/// checked and ignored; STL vertices with equal coordinates are merged, -0 == 0) or parse_ply.
+MeshFile parse_mesh(std::string_view bytes, MeshFormat format, std::string_view source);
+
+/// Reads a .obj, .off, .stl or .ply file (extension case-insensitive) with parse_mesh. Throws
+/// "PATH: cannot read file (reason)" or "PATH: unknown 3D shape format '.ext' (expected .obj,
+/// .off, .stl or .ply)".
+MeshFile read_mesh(const std::filesystem::path& path);
+
 /// The convex hull of points read from SOURCE, as read_convex_polytope reports it: "SOURCE: NAME:
 /// only K points (...)" for fewer than 4, "SOURCE: NAME: <hull message>" for flat sets.
 ConvexPolytope convex_polytope_from_points(std::span<const Vec3> points, std::string_view source,

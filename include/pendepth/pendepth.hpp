@@ -49,6 +49,8 @@
 
 namespace pendepth {
 
+class Mesh3;  // include/pendepth/mesh3.hpp
+
 /// How much a pair prepares before its queries.
 ///   Queries: only what every query needs (triangulations, hierarchies); σ of two convex
 ///            polygons by the O(n + m) merge, two non-convex polygons by PairDepth2.
@@ -201,16 +203,29 @@ class Shape3 {
   /// Exact convex hull. Throws InvalidInput for non-finite points or flat input (fewer than 4
   /// affinely independent points).
   static Shape3 hull(std::span<const Vec3> points, std::string_view name = "points");
-  /// .obj, .off or .stl (ASCII or binary): the hull of the file's vertices. Throws InvalidInput
-  /// "PATH:LINE: problem".
-  static Shape3 from_file(const std::filesystem::path& path, std::string_view name = "shape");
+  /// .obj, .off, .stl (ASCII or binary) or .ply (io::read_mesh). A file without faces: the hull
+  /// of its vertices. A file with faces: a closed mesh (Mesh3::validate's checks and errors);
+  /// convex → the convex path (the hull of its vertices: the same solid); not convex → a mesh
+  /// shape (is_convex() false); input_index() of a mesh's polytope counts the vertices some face
+  /// uses, in file order. `hull` = true: the hull of the vertices, faces ignored. Throws
+  /// InvalidInput "PATH:LINE: problem" / "PATH:LINE: face F: NAME: problem".
+  static Shape3 from_file(const std::filesystem::path& path, std::string_view name = "shape", bool hull = false);
+  /// A validated mesh: convex → the convex path, else a mesh shape.
+  static Shape3 from_mesh(const Mesh3& mesh);
 
+  /// The convex polytope; for a non-convex mesh shape, the hull of its vertices.
   const ConvexPolytope& polytope() const;
   std::size_t size() const;
   const std::string& name() const;
+  /// False only for a non-convex mesh shape. Pair3 takes convex shapes only for now: with a
+  /// non-convex one it throws InvalidInput "mesh queries are not implemented yet: ...".
+  bool is_convex() const;
+  /// The mesh of a shape made from a mesh (from_file with faces, from_mesh), else null.
+  const Mesh3* mesh() const;
 
  private:
   std::shared_ptr<const ConvexPolytope> p_;
+  std::shared_ptr<const Mesh3> mesh_;
 };
 
 /// A pair of convex polytopes, P and Q each with a pose (only the relative pose matters; results

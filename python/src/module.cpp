@@ -743,9 +743,10 @@ and points ((p, 2): exact fits). Vertices rounded to the nearest double.)");
                     return Shape3::hull(v, name);
                   }, py::arg("points"), py::arg("name") = "points",
                   "hull(points, name=\"points\") -> Shape3\n\nExact convex hull of an (n, 3) array. Raises InvalidInput for non-finite or flat input.")
-      .def_static("from_file", [](const std::string& path, const std::string& name) { return Shape3::from_file(path, name); },
-                  py::arg("path"), py::arg("name") = "shape",
-                  "from_file(path, name=\"shape\") -> Shape3\n\nThe hull of a .obj, .off or .stl file's vertices. Raises InvalidInput \"PATH:LINE: problem\".")
+      .def_static("from_file", [](const std::string& path, const std::string& name, bool hull) { return Shape3::from_file(path, name, hull); },
+                  py::arg("path"), py::arg("name") = "shape", py::arg("hull") = false,
+                  "from_file(path, name=\"shape\", hull=False) -> Shape3\n\nA .obj, .off, .stl or .ply file: without faces the hull of its vertices; with faces a closed mesh\n(validated; a convex one takes the convex path, a non-convex one cannot be paired yet); hull=True: the\nhull of the vertices, faces ignored. Raises InvalidInput \"PATH:LINE: problem\".")
+      .def_property_readonly("is_convex", &Shape3::is_convex)
       .def_property_readonly("name", &Shape3::name)
       .def_property_readonly("vertices", [](const Shape3& s) {
              auto v = s.polytope().vertices();

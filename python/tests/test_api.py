@@ -243,12 +243,25 @@ def test_pair3(pair3):
 
 def test_shape3_from_file(tmp_path):
     f = tmp_path / "tet.off"
-    f.write_text("OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n")
+    f.write_text("OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n")  # closed
     s = pendepth.Shape3.from_file(str(f), name="tet")
     assert len(s) == 4 and s.vertices.shape == (4, 3) and s.triangles.shape == (4, 3)
     p = pendepth.Pair3(s, s)
     assert p.minimum([0.1, 0.1, 0.1]).overlapping
     assert not p.overlapping([5.0, 0.0, 0.0])
+
+
+def test_shape3_from_file_meshes(tmp_path):
+    # An L-shaped prism whose top and bottom are non-convex hexagons: rejected as faces (give
+    # triangles); hull=True takes the hull of the vertices.
+    f = tmp_path / "l.off"
+    f.write_text("OFF\n12 8 0\n0 0 0\n2 0 0\n2 1 0\n1 1 0\n1 2 0\n0 2 0\n"
+                 "0 0 1\n2 0 1\n2 1 1\n1 1 1\n1 2 1\n0 2 1\n"
+                 "6 0 5 4 3 2 1\n6 6 7 8 9 10 11\n4 0 1 7 6\n4 1 2 8 7\n4 2 3 9 8\n4 3 4 10 9\n4 4 5 11 10\n4 5 0 6 11\n")
+    with pytest.raises(pendepth.InvalidInput, match="not a strictly convex polygon"):
+        pendepth.Shape3.from_file(str(f), name="L")
+    h = pendepth.Shape3.from_file(str(f), name="L", hull=True)
+    assert h.is_convex and len(h) == 10
 
 
 def test_data_dir_exists():

@@ -10,6 +10,7 @@
 
 #include "front/batch.hpp"
 #include "front/checks.hpp"
+#include "front/mesh_shapes.hpp"
 #include "front/scale.hpp"
 
 namespace pendepth {
@@ -18,10 +19,6 @@ Shape3::Shape3(ConvexPolytope polytope) : p_(std::make_shared<const ConvexPolyto
 
 Shape3 Shape3::hull(std::span<const Vec3> points, std::string_view name) {
   return Shape3(ConvexPolytope::hull(points, name));
-}
-
-Shape3 Shape3::from_file(const std::filesystem::path& path, std::string_view name) {
-  return Shape3(io::read_convex_polytope(path, name));
 }
 
 const ConvexPolytope& Shape3::polytope() const { return *p_; }
@@ -99,8 +96,8 @@ Pose3 engine_pose(const front::Scale& scale, const Pose3& pose, const std::strin
 }  // namespace
 
 Pair3::Pair3(Shape3 P, Shape3 Q, Prepare)
-    : P_(std::move(P)),
-      Q_(std::move(Q)),
+    : P_(front::convex_only(std::move(P), "P")),
+      Q_(front::convex_only(std::move(Q), "Q")),
       scale_exp_(pair_scale(P_, Q_).e),
       engine_P_(engine_shape(P_, front::Scale{scale_exp_}, "P")),
       engine_Q_(engine_shape(Q_, front::Scale{scale_exp_}, "Q")) {}

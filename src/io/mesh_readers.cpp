@@ -166,16 +166,18 @@ class VertexSet {
     keys_.reserve(expected);
     rehash(std::bit_ceil(std::max<std::size_t>(16, 2 * expected)));
   }
-  void add(const Vec3& v) {
+  std::size_t add(const Vec3& v) {
     const Key k{std::bit_cast<std::uint64_t>(v.x() + 0.0), std::bit_cast<std::uint64_t>(v.y() + 0.0),
                 std::bit_cast<std::uint64_t>(v.z() + 0.0)};
     std::size_t i = hash(k) & mask_;
     for (; slots_[i] != kEmpty; i = (i + 1) & mask_)
-      if (keys_[slots_[i]] == k) return;
-    slots_[i] = points_.size();
+      if (keys_[slots_[i]] == k) return slots_[i];
+    const std::size_t id = points_.size();
+    slots_[i] = id;
     points_.push_back(v);
     keys_.push_back(k);
     if (2 * points_.size() > slots_.size()) rehash(2 * slots_.size());  // load factor <= 1/2
+    return id;
   }
   std::vector<Vec3> take() { return std::move(points_); }
 
@@ -212,7 +214,7 @@ float read_f32le(const char* p) { return std::bit_cast<float>(read_u32le(p)); }
 
 constexpr std::size_t kStlHeader = 84, kStlTriangle = 50;
 
-std::vector<Vec3> parse_binary_stl(std::string_view bytes, std::string_view source) {
+std::vector<Vec3> parse_binary_stl(std::string_view bytes, std::string_view source, MeshFile* mesh = nullptr) {
   if (bytes.size() < kStlHeader)
     fail_binary(source, bytes.size(),
                 "not an STL file: too short for binary STL (" + std::to_string(bytes.size()) +
@@ -226,6 +228,7 @@ std::vector<Vec3> parse_binary_stl(std::string_view bytes, std::string_view sour
   VertexSet set(static_cast<std::size_t>(count) / 2 + 4);  // closed meshes: V ≈ F / 2
   for (std::size_t t = 0; t < count; ++t) {
     const std::size_t base = kStlHeader + kStlTriangle * t + 12;  // after the facet normal
+    if (mesh) mesh->begin_face(base - 12);
     for (std::size_t k = 0; k < 3; ++k) {
       Vec3 v;
       for (std::size_t a = 0; a < 3; ++a) {
@@ -236,7 +239,8 @@ std::vector<Vec3> parse_binary_stl(std::string_view bytes, std::string_view sour
                       "triangle " + std::to_string(t) + ", vertex " + std::to_string(k) + ": " + kAxis[a] +
                           " is not a finite number");
       }
-      set.add(v);
+      const std::size_t id = set.add(v);
+      if (mesh) mesh->indices.push_back(id);
     }
   }
   return set.take();
@@ -244,7 +248,7 @@ std::vector<Vec3> parse_binary_stl(std::string_view bytes, std::string_view sour
 
 // solid [name] { facet normal nx ny nz / outer loop / vertex x y z (3 times) / endloop / endfacet }
 // endsolid [name], several solids allowed; keywords case-insensitive, one statement per line.
-std::vector<Vec3> parse_ascii_stl(std::string_view text, std::string_view source) {
+std::vector<Vec3> parse_ascii_stl(std::string_view text, std::string_view source, MeshFile* mesh = nullptr) {
   enum class State { Outside, Solid, Facet, Loop, LoopDone };
   State state = State::Outside;
   VertexSet set(text.size() / 500 + 4);  // ~ 250 bytes per facet, V ≈ F / 2 for closed meshes
@@ -277,7 +281,8 @@ std::vector<Vec3> parse_ascii_stl(std::string_view text, std::string_view source
       if (n != 4)
         fail_at(source, at, "malformed vertex line: expected 'vertex x y z', got " + std::to_string(n - 1) +
                                 (n == 2 ? " field" : " fields"));
-      set.add(parse_xyz(tok.data() + 1, source, at, "vertex"));
+      const std::size_t id = set.add(parse_xyz(tok.data() + 1, source, at, "vertex"));
+      if (mesh) mesh->indices.push_back(id);
       ++loop_vertices;
     } else if (state == State::Outside && iequals(key, "solid")) {
       state = State::Solid;  // the name, if any, is free text
@@ -285,6 +290,7 @@ std::vector<Vec3> parse_ascii_stl(std::string_view text, std::string_view source
       // The normal is recomputed by the hull: checked to be three numbers, not read.
       if (n != 5 || !iequals(tok[1], "normal")) malformed("facet normal nx ny nz");
       check_numbers(tok.data(), 2, 5, source, at, "facet normal");
+      if (mesh) mesh->begin_face(at);
       state = State::Facet;
     } else if (state == State::Solid && iequals(key, "endsolid")) {
       state = State::Outside;
@@ -363,7 +369,9 @@ bool parse_obj_ref(std::string_view r, int parts, const std::array<std::uint64_t
 
 }  // namespace
 
-std::vector<Vec3> parse_obj_points(std::string_view text, std::string_view source) {
+namespace {
+
+std::vector<Vec3> parse_obj(std::string_view text, std::string_view source, MeshFile* mesh) {
   std::vector<Vec3> pts;
   pts.reserve(text.size() / 32);
   Lines lines(text);
@@ -408,6 +416,7 @@ std::vector<Vec3> parse_obj_points(std::string_view text, std::string_view sourc
       const std::size_t min_refs = face ? 3 : key == "l" ? 2 : 1;
       const char* what = face ? "face" : key == "l" ? "line element" : "point element";
       std::size_t refs = 0;
+      if (mesh && face) mesh->begin_face(at);
       Tokens t(body);
       std::string_view r;
       t.next(r);  // the keyword
@@ -428,6 +437,7 @@ std::vector<Vec3> parse_obj_points(std::string_view text, std::string_view sourc
                         " read so far)");
           if (idx[k] > max_ref[k]) max_ref[k] = idx[k], max_ref_line[k] = at;
         }
+        if (mesh && face) mesh->indices.push_back(static_cast<std::size_t>(idx[0] - 1));
       }
       if (refs < min_refs)
         fail_at(source, at,
@@ -445,7 +455,7 @@ std::vector<Vec3> parse_obj_points(std::string_view text, std::string_view sourc
   return pts;
 }
 
-std::vector<Vec3> parse_off_points(std::string_view text, std::string_view source) {
+std::vector<Vec3> parse_off(std::string_view text, std::string_view source, MeshFile* mesh) {
   Lines lines(text);
   std::string_view line;
   std::array<std::string_view, 16> tok;
@@ -538,6 +548,7 @@ std::vector<Vec3> parse_off_points(std::string_view text, std::string_view sourc
     if (!t.next(w)) continue;
     const std::string face = "face " + std::to_string(f);
     std::uint64_t k = 0;
+    if (mesh) mesh->begin_face(lines.line());
     if (!parse_count(w, k))
       fail_at(source, lines.line(),
               "malformed " + face + ": expected its vertex count (an integer), got '" + shorten(w) + "'" + declared());
@@ -556,6 +567,7 @@ std::vector<Vec3> parse_off_points(std::string_view text, std::string_view sourc
         fail_at(source, lines.line(),
                 face + ": vertex index " + std::to_string(v) + " is out of range (the file has " + std::to_string(nv) +
                     (nv == 1 ? " vertex)" : " vertices)") + declared());
+      if (mesh) mesh->indices.push_back(static_cast<std::size_t>(v));
     }
     std::size_t colour = 0;
     for (; t.next(w); ++colour) {
@@ -578,11 +590,55 @@ std::vector<Vec3> parse_off_points(std::string_view text, std::string_view sourc
   return pts;
 }
 
+std::vector<Vec3> parse_stl(std::string_view bytes, std::string_view source, MeshFile* mesh) {
+  const bool binary =
+      bytes.size() >= kStlHeader && bytes.size() == kStlHeader + kStlTriangle * std::uint64_t(read_u32le(bytes.data() + 80));
+  if (mesh) mesh->byte_offsets = binary;
+  if (binary) return parse_binary_stl(bytes, source, mesh);
+  if (starts_with_solid(bytes) && bytes.find('\0') == std::string_view::npos) return parse_ascii_stl(bytes, source, mesh);
+  if (mesh) mesh->byte_offsets = true;
+  return parse_binary_stl(bytes, source, mesh);  // reports the size mismatch
+}
+
+}  // namespace
+
+std::vector<Vec3> parse_obj_points(std::string_view text, std::string_view source) {
+  return parse_obj(text, source, nullptr);
+}
+
+std::vector<Vec3> parse_off_points(std::string_view text, std::string_view source) {
+  return parse_off(text, source, nullptr);
+}
+
 std::vector<Vec3> parse_stl_points(std::string_view bytes, std::string_view source) {
-  if (bytes.size() >= kStlHeader && bytes.size() == kStlHeader + kStlTriangle * std::uint64_t(read_u32le(bytes.data() + 80)))
-    return parse_binary_stl(bytes, source);
-  if (starts_with_solid(bytes) && bytes.find('\0') == std::string_view::npos) return parse_ascii_stl(bytes, source);
-  return parse_binary_stl(bytes, source);  // reports the size mismatch
+  return parse_stl(bytes, source, nullptr);
+}
+
+MeshFile parse_mesh(std::string_view bytes, MeshFormat format, std::string_view source) {
+  MeshFile m;
+  m.source = std::string(source);
+  switch (format) {
+    case MeshFormat::Obj: m.index_base = 1, m.points = parse_obj(bytes, source, &m); break;
+    case MeshFormat::Off: m.points = parse_off(bytes, source, &m); break;
+    case MeshFormat::Stl: m.points = parse_stl(bytes, source, &m); break;
+    case MeshFormat::Ply: m = parse_ply(bytes, source); break;
+  }
+  m.face_start.push_back(m.indices.size());
+  return m;
+}
+
+MeshFile read_mesh(const std::filesystem::path& path) {
+  const std::string src = path.string();
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = lower(c);
+  std::optional<MeshFormat> format;
+  if (ext == ".ply") format = MeshFormat::Ply;
+  else if (const auto f = shape_format_of(path); f && *f != ShapeFormat::Wkt)
+    format = *f == ShapeFormat::Obj ? MeshFormat::Obj : *f == ShapeFormat::Off ? MeshFormat::Off : MeshFormat::Stl;
+  if (!format)
+    throw InvalidInput(src + ": unknown 3D shape format '" + path.extension().string() +
+                       "' (expected .obj, .off, .stl or .ply)");
+  return parse_mesh(read_text_file(path), *format, src);
 }
 
 std::vector<Vec3> parse_mesh_points(std::string_view bytes, ShapeFormat format, std::string_view source) {
@@ -632,3 +688,13 @@ std::vector<Vec3> read_obj_vertices(const std::string& path) {
 }
 
 }  // namespace pendepth
+
+namespace pendepth::io {
+
+std::string MeshFile::face_where(std::size_t f) const {
+  const std::string loc = f < face_location.size() ? std::to_string(face_location[f]) : "?";
+  if (byte_offsets) return source + ": face " + std::to_string(f) + " (byte offset " + loc + ")";
+  return source + ":" + loc + ": face " + std::to_string(f);
+}
+
+}  // namespace pendepth::io

@@ -289,7 +289,8 @@ TEST(Domain3, TheLargestCubeIsAnsweredOrRejected) {
 // double-double). The move must now have the depth's length, and must separate.
 TEST(Domain3, TinyDetailsOnAUnitHullKeepTheirNormal) {
   const Shape3 P = Shape3::from_file(std::string(PENDEPTH_SOURCE_DIR) +
-                                     "/tests/fuzz/corpus/fuzz_shapes_raw/sigma3-tiny-coordinates-zero-translation.stl");
+                                     "/tests/fuzz/corpus/fuzz_shapes_raw/sigma3-tiny-coordinates-zero-translation.stl",
+                                     "shape", /*hull=*/true);  // a triangle soup: its hull
   const Pair3 pair(P, P);
   const Pose3 q(Eigen::Quaterniond(-3, 4, 2, 2), Vec3(0.15151515151515138, 0.33712121212121238, 0.35984848484848486));
   const Depth3 r = pair.minimum(Pose3(), q);
