@@ -297,8 +297,8 @@ namespace {
 
 // A placement in engine coordinates; throws InvalidInput naming it when it has none (see
 // src/front/scale.hpp). The identity scale returns t unchanged.
-Vec2 engine_placement(const front::Scale& scale, const Vec2& t, const std::string& what = "placement") {
-  return scale.vec_to_engine(t, what + " " + front::text(t) + ":");
+Vec2 engine_placement(const front::Scale& scale, const Vec2& t, std::string_view what = "placement") {
+  return scale.vec_to_engine(t, [&] { return std::string(what) + " " + front::text(t) + ":"; });
 }
 
 // Every placement of a batch in engine coordinates, checked before any query runs.

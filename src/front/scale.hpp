@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <concepts>
 #include <cstdio>
 #include <limits>
 #include <string>
@@ -92,13 +93,21 @@ struct Scale {
     return std::isfinite(out) && std::ldexp(out, e) == x;
   }
 
-  template <class V>
-  V vec_to_engine(const V& v, const std::string& what) const {
+  /// v × 2^-e, or InvalidInput "WHAT VALUE-and-range" when a coordinate has no exact engine
+  /// value. `what` is a callable returning the message's subject: it runs only on failure, so an
+  /// ordinary query formats nothing.
+  template <class V, class What>
+    requires std::invocable<What&>
+  V vec_to_engine(const V& v, What&& what) const {
     if (identity()) return v;
     V out = v;
     for (int k = 0; k < v.size(); ++k)
-      if (!to_engine(v[k], out[k])) throw InvalidInput(what + " " + describe(v[k]));
+      if (!to_engine(v[k], out[k])) throw InvalidInput(what() + " " + describe(v[k]));
     return out;
+  }
+  template <class V>
+  V vec_to_engine(const V& v, const std::string& what) const {
+    return vec_to_engine(v, [&] { return what; });
   }
 
   double length(double x) const { return identity() ? x : std::ldexp(x, e); }
