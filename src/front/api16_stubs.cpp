@@ -6,10 +6,6 @@
 #include <stdexcept>
 
 namespace pendepth {
-Distance3 Pair3::signed_distance(const Pose3&, const Pose3&) const { throw std::logic_error("Pair3::signed_distance: not yet"); }
-Cast3 Pair3::cast(const Pose3&, const Pose3&, const Vec3&) const { throw std::logic_error("Pair3::cast: not yet"); }
-void Pair3::signed_distance(std::span<const Pose3>, std::span<Distance3>, unsigned) const { throw std::logic_error("not yet"); }
-void Pair3::signed_distance(const Pose3&, std::span<const Pose3>, std::span<Distance3>, unsigned) const { throw std::logic_error("not yet"); }
 Distance2 Pair2::signed_distance(const Vec2&) const { throw std::logic_error("Pair2::signed_distance: not yet"); }
 Cast2 Pair2::cast(const Vec2&, const Vec2&) const { throw std::logic_error("Pair2::cast: not yet"); }
 void Pair2::signed_distance(std::span<const Vec2>, std::span<Distance2>, unsigned) const { throw std::logic_error("not yet"); }

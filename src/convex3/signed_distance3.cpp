@@ -1,0 +1,509 @@
+// Exact signed distance of two posed convex polytopes: GJK (Gilbert–Johnson–Keerthi 1988; van den
+// Bergen 2003; Ericson, Real-Time Collision Detection §9.5) on the implicit M = P ⊕ (−Q') with
+// every decision an exact sign, then σ (minimum_expand.cpp) when 0 ∈ M.
+//
+// Contract (include/pendepth/depth3.hpp, Distance3): dist(0, M) when 0 ∉ M — the Euclidean
+// distance of P and Q' — with witnesses and the features that define it; 0 when 0 ∈ ∂M
+// (touching); −σ when 0 ∈ int M.
+//
+// Notation as in minimum_expand.cpp: P fixed, Q' = R Q + tq − tp (exact semantics for the double
+// R, tq, tp), a point of M kept symbolically as a pair (i, j): m = p_i − q'_j. The simplex X holds
+// at most 4 affinely independent pairs and the closest point w of conv(X) to 0, written
+// w = Σ_{k∈S} λ_k m_k with λ > 0 on the subset S.
+//
+// Why the answer is exact:
+//  * Closest point of conv(X) (Johnson's sub-algorithm, exact): a subset S of X is accepted iff
+//    its barycentric coordinates of the projection of 0 onto aff(S) are all > 0 (exact signs of
+//    dets: λ_a ∝ n·(b × c) for a triangle, λ_b ∝ −a·(b − a) for a segment) and every other point
+//    y of X satisfies w_S·(y − a) ≥ 0. Then w_S ∈ conv(X) and conv(X) lies in the half-space
+//    {w_S·x ≥ |w_S|²}: w_S is the closest point. Exactly one S passes (the face whose relative
+//    interior holds the closest point). If w_S = 0 exactly (0 on aff(S) inside conv(S), or 0
+//    inside the tetrahedron) then 0 ∈ M: σ (minimum_expand.cpp) tells overlap (−σ) from touching
+//    (0). The direction U is a polynomial positive multiple of w_S: m_a (vertex),
+//    |e|² a − (a·e) e (segment, e = b − a), ±n with n = (b − a) × (c − a) (triangle, the sign of
+//    n·a).
+//  * Support: i minimising U·p over P and j maximising U·q' over Q' (so m_ij minimises U·m over
+//    M). Hill climbing in doubles from the previous answer proposes (i, j); if m_ij is strictly
+//    closer than the plane (exact sign of U·(m_ij − a) < 0) it joins X — the distance strictly
+//    decreases, so no simplex repeats and the loop ends. Otherwise (i, j) is certified by an
+//    exact climb: on a convex polytope a vertex with no strictly better neighbour (exact signs
+//    over the level-0 adjacency, flat-facet diagonals included) is a global optimum. If the
+//    certified pair is still not strictly closer, then M ⊂ {U·x ≥ U·w_S}: dist(0, M) ≥ |w_S|,
+//    and w_S ∈ conv(X) ⊂ M gives equality.
+//  * Value: |w_S| = |m_a|, |e × a|/|e| or |n·a|/|n| from accurately evaluated polynomials
+//    (exact::accurate_value / accurate_ratio: double, double-double, exact rationals when their
+//    bound fails), then one square root: within ~2 ulps.
+// Predicates: each sign is first evaluated from the simplex points cached as doubles with a
+// rigorous error bound (exact::Fl), then exact::exact_sign (double-double, expansions, GMP).
+//
+// Result: witnesses = Σ λ_k p_{i_k} and Σ λ_k q'_{j_k} (λ rounded), normal = −U/|U| (from P
+// towards Q), features = the distinct P (Q) vertices of S: one vertex, an edge (a level-0
+// half-edge; a flat-facet diagonal is reported as a face), or a face (a level-0 triangle in
+// the support plane containing the witness, up to rounding).
+// Complexity: O(k·(c + 1)) for k GJK iterations (a handful on real hulls; at most the number of
+// simplices of M in theory) and c the climb lengths (O(1) from warm starts). DEPARTURE from the
+// O(log n · log m) DK separation of DHS §5: GJK is output-sensitive like σ's expansion, and an
+// order of magnitude faster on hulls of up to hundreds of vertices (docs/benchmarks.md).
+#include <pendepth/depth3.hpp>
+
+#include "convex3/minimum_expand.hpp"
+#include "convex3/polytope_data.hpp"
+#include "geometry/exact.hpp"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <type_traits>
+
+namespace pendepth {
+
+namespace convex3 {
+
+namespace {
+
+using exact::exact_sign;
+using exact::Fl;
+using exact::LiftFl;
+
+template <class T>
+using V3 = std::array<T, 3>;
+template <class L>
+using Num = decltype(std::declval<L>()(0.0));
+
+template <class T>
+V3<T> cross(const V3<T>& a, const V3<T>& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+template <class T>
+T dot(const V3<T>& a, const V3<T>& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+template <class T>
+V3<T> sub(const V3<T>& a, const V3<T>& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+template <class T>
+V3<T> scale(const T& s, const V3<T>& a) {
+  return {s * a[0], s * a[1], s * a[2]};
+}
+
+struct PairId {
+  int i = -1, j = -1;
+  friend bool operator==(const PairId&, const PairId&) = default;
+};
+
+// A simplex point: its pair, and its coordinates as Fl (value + rigorous error bound).
+struct Member {
+  PairId id;
+  V3<Fl> fl;
+};
+
+struct Ctx {
+  const PolytopeData& P;
+  const PolytopeData& Q;
+  const RelativePose& rel;
+
+  template <class L>
+  V3<Num<L>> qplaced(L lift, int j) const {
+    const Vec3& q = Q.v[j];
+    V3<Num<L>> r;
+    for (int k = 0; k < 3; ++k)
+      r[k] = lift(rel.R(k, 0)) * lift(q[0]) + lift(rel.R(k, 1)) * lift(q[1]) + lift(rel.R(k, 2)) * lift(q[2]) +
+             (lift(rel.tq[k]) - lift(rel.tp[k]));
+    return r;
+  }
+  template <class L>
+  V3<Num<L>> pvec(L lift, int i) const {
+    return {lift(P.v[i][0]), lift(P.v[i][1]), lift(P.v[i][2])};
+  }
+  template <class L>
+  V3<Num<L>> m(L lift, PairId s) const {
+    return sub(pvec(lift, s.i), qplaced(lift, s.j));
+  }
+  // A member's point: the cached Fl in the first tier, recomputed in the others.
+  template <class L>
+  V3<Num<L>> pt(L lift, const Member& x) const {
+    if constexpr (std::is_same_v<L, LiftFl>)
+      return x.fl;
+    else
+      return m(lift, x.id);
+  }
+  Member member(PairId s) const { return {s, m(LiftFl{}, s)}; }
+  Vec3 approx_p(int i) const { return P.v[i]; }
+  Vec3 approx_q(int j) const { return rel.R * Q.v[j] + (rel.tq - rel.tp); }
+};
+
+// The search direction of a subset S (size 1–3, S[0] = a): a polynomial positive multiple of
+// the closest point w_S of aff(S) to 0 (tri_sign = sign of n·a for a triangle).
+struct Dir {
+  const Ctx* c;
+  int size = 1;
+  Member s[3];
+  int tri_sign = 1;
+
+  template <class L>
+  V3<Num<L>> operator()(L lift) const {
+    auto a = c->pt(lift, s[0]);
+    if (size == 1) return a;
+    auto e = sub(c->pt(lift, s[1]), a);
+    if (size == 2) return sub(scale(dot(e, e), a), scale(dot(a, e), e));
+    auto n = cross(e, sub(c->pt(lift, s[2]), a));
+    return tri_sign > 0 ? n : V3<Num<L>>{-n[0], -n[1], -n[2]};
+  }
+};
+
+// Exact sign of U·(x − y) given lazily: f(lift) returns the vector x − y.
+template <class F>
+int dir_sign(const Dir& U, const V3<Fl>& Ufl, F&& diff) {
+  const int s = exact::certified_sign(dot(Ufl, diff(LiftFl{})));
+  if (s != 2) return s;
+  return exact_sign([&](auto L) { return dot(U(L), diff(L)); });
+}
+
+// Rounded steepest ascent of u·v from v (a proposal; certified later).
+int climb_rounded(const PolytopeData& d, const VertexAdjacency& a, const Vec3& u, int v) {
+  double bv = u.dot(d.v[v]);
+  for (;;) {
+    int next = -1;
+    for (int e = a.start[v]; e < a.start[v + 1]; ++e)
+      if (double s = u.dot(d.v[a.nbr[e]]); s > bv) bv = s, next = a.nbr[e];
+    if (next < 0) return v;
+    v = next;
+  }
+}
+
+// Result of the closest-point step on X ∪ {new}.
+struct Reduced {
+  bool contact = false;  // 0 ∈ conv(S): 0 ∈ M
+  int size = 0;
+  Member s[4];
+  int tri_sign = 1;
+};
+
+// Exact sign of the barycentric numerators and the tests of Johnson's sub-algorithm.
+class Johnson {
+ public:
+  explicit Johnson(const Ctx& c) : c_(c) {}
+
+  // The closest point of conv(X) to 0 for affinely independent X (size 1–4, X[last] newest).
+  Reduced reduce(const Member* X, int n) const {
+    // Subsets as bit masks, those holding the newest point first, smallest first.
+    const int all = (1 << n) - 1, newest = 1 << (n - 1);
+    for (int pass = 0; pass < 2; ++pass)
+      for (int size = 1; size <= n; ++size)
+        for (int mask = 1; mask <= all; ++mask) {
+          if (std::popcount(static_cast<unsigned>(mask)) != size) continue;
+          if (((mask & newest) != 0) != (pass == 0)) continue;
+          Reduced r;
+          if (accept(X, n, mask, r)) return r;
+        }
+    // Unreachable for affinely independent X (exactly one face holds the closest point).
+    Reduced r;
+    r.size = 1;
+    r.s[0] = X[n - 1];
+    return r;
+  }
+
+ private:
+  const Ctx& c_;
+
+  template <class F>
+  static int sgn(F&& f) {
+    return exact_sign(std::forward<F>(f));
+  }
+
+  bool accept(const Member* X, int nx, int mask, Reduced& r) const {
+    int idx[4], k = 0, out[4], o = 0;
+    for (int b = 0; b < nx; ++b) (mask >> b & 1 ? idx[k++] : out[o++]) = b;
+    const Member* S[4];
+    for (int t = 0; t < k; ++t) S[t] = &X[idx[t]];
+    r.size = k;
+    for (int t = 0; t < k; ++t) r.s[t] = *S[t];
+    auto P = [&](auto L, const Member* x) { return c_.pt(L, *x); };
+    if (k == 4) {  // 0 inside the tetrahedron (closed): contact
+      auto D = [&](auto L, int replace) {
+        V3<Num<decltype(L)>> p[4];
+        for (int t = 0; t < 4; ++t)
+          p[t] = t == replace ? V3<Num<decltype(L)>>{L(0.0), L(0.0), L(0.0)} : P(L, S[t]);
+        return dot(cross(sub(p[1], p[0]), sub(p[2], p[0])), sub(p[3], p[0]));
+      };
+      const int v = sgn([&](auto L) { return D(L, -1); });
+      for (int t = 0; t < 4; ++t)
+        if (sgn([&](auto L) { return D(L, t); }) * v < 0) return false;
+      r.contact = true;
+      return true;
+    }
+    if (k == 1) {
+      auto a = [&](auto L) { return P(L, S[0]); };
+      bool zero = true;
+      for (int t = 0; t < 3 && zero; ++t) zero = sgn([&](auto L) { return a(L)[t]; }) == 0;
+      if (zero) return r.contact = true;
+      for (int t = 0; t < o; ++t)
+        if (sgn([&](auto L) { return dot(a(L), sub(P(L, &X[out[t]]), a(L))); }) < 0) return false;
+      return true;
+    }
+    if (k == 2) {
+      // λ_a ∝ b·(b − a), λ_b ∝ −a·(b − a).
+      if (sgn([&](auto L) { return dot(P(L, S[1]), sub(P(L, S[1]), P(L, S[0]))); }) <= 0) return false;
+      if (sgn([&](auto L) { return dot(P(L, S[0]), sub(P(L, S[1]), P(L, S[0]))); }) >= 0) return false;
+      bool zero = true;  // 0 on the segment's line: e × a = 0
+      for (int t = 0; t < 3 && zero; ++t)
+        zero = sgn([&](auto L) { return cross(sub(P(L, S[1]), P(L, S[0])), P(L, S[0]))[t]; }) == 0;
+      if (zero) return r.contact = true;
+      Dir U{&c_, 2, {*S[0], *S[1], {}}, 1};
+      for (int t = 0; t < o; ++t)
+        if (sgn([&](auto L) { return dot(U(L), sub(P(L, &X[out[t]]), P(L, S[0]))); }) < 0) return false;
+      return true;
+    }
+    // k == 3: λ_a ∝ n·(b × c), λ_b ∝ n·(c × a), λ_c ∝ n·(a × b).
+    auto n = [&](auto L) { return cross(sub(P(L, S[1]), P(L, S[0])), sub(P(L, S[2]), P(L, S[0]))); };
+    for (int t = 0; t < 3; ++t)
+      if (sgn([&](auto L) { return dot(n(L), cross(P(L, S[(t + 1) % 3]), P(L, S[(t + 2) % 3]))); }) <= 0)
+        return false;
+    const int h = sgn([&](auto L) { return dot(n(L), P(L, S[0])); });
+    if (h == 0) return r.contact = true;
+    r.tri_sign = h;
+    for (int t = 0; t < o; ++t)
+      if (h * sgn([&](auto L) { return dot(n(L), sub(P(L, &X[out[t]]), P(L, S[0]))); }) < 0) return false;
+    return true;
+  }
+};
+
+RelativePose relative_pose(const Pose3& pp, const Pose3& pq) {
+  if (!pp.translation.allFinite()) throw InvalidInput("pose of P: non-finite translation");
+  if (!pq.translation.allFinite()) throw InvalidInput("pose of Q: non-finite translation");
+  const Eigen::Matrix3d Rp = pp.matrix(), Rq = pq.matrix();
+  RelativePose r;
+  r.R = Rp.transpose() * Rq;
+  r.tq = Rp.transpose() * pq.translation;
+  r.tp = Rp.transpose() * pp.translation;
+  return r;
+}
+
+// The feature of one side spanned by the distinct vertices vs (1–3) lying in the support plane
+// {U·x = U·x_vs[0]} (P side) or {U·Rq = const} (Q side): vertex, true edge, or a level-0
+// triangle in that plane containing `wit` (the side's witness, in the side's own frame) up to
+// rounding.
+Feature3 feature_of(const Ctx& c, bool isq, const int* vs, int nv, const Dir& U, const Vec3& wit) {
+  const PolytopeData& D = isq ? c.Q : c.P;
+  if (nv == 1) return {FeatureKind3::Vertex, vs[0]};
+  const DKLevel& L0 = D.levels[0];
+  if (nv == 2) {
+    const int h0 = D.vertex_he[vs[0]];
+    int h = h0;
+    do {
+      if (L0.target(h) == vs[1]) {
+        // A true edge unless its two triangles are coplanar (a flat-facet diagonal).
+        const int t1 = h / 3, t2 = L0.twin[h] / 3;
+        const auto& T1 = D.tris[t1];
+        const int far = L0.fv[3 * t2 + (L0.twin[h] % 3 + 2) % 3];
+        const bool flat = exact_sign([&](auto L) {
+                            auto x = [&](int v) { return V3<Num<decltype(L)>>{L(D.v[v][0]), L(D.v[v][1]), L(D.v[v][2])}; };
+                            return dot(cross(sub(x(T1[1]), x(T1[0])), sub(x(T1[2]), x(T1[0]))), sub(x(far), x(T1[0])));
+                          }) == 0;
+        if (!flat) return {FeatureKind3::Edge, h};
+        break;
+      }
+      h = L0.ccw(h);
+    } while (h != h0);
+  }
+  // A face: the level-0 triangles around vs[0] whose vertices all lie in the support plane; the
+  // one containing the witness best (rounded barycentric coordinates).
+  auto on_plane = [&](int w) {
+    if (w == vs[0]) return true;
+    return exact_sign([&](auto L) {
+             auto u = U(L);
+             if (!isq) return dot(u, sub(c.pvec(L, w), c.pvec(L, vs[0])));
+             return dot(u, sub(c.qplaced(L, w), c.qplaced(L, vs[0])));
+           }) == 0;
+  };
+  int best = -1;
+  double best_score = -1e300;
+  const int h0 = D.vertex_he[vs[0]];
+  int h = h0;
+  do {
+    const int t = h / 3;
+    const auto& T = D.tris[t];
+    if (on_plane(T[0]) && on_plane(T[1]) && on_plane(T[2])) {
+      const Vec3 a = D.v[T[0]], b = D.v[T[1]], cc = D.v[T[2]];
+      const Vec3 n = (b - a).cross(cc - a);
+      const double l0 = n.dot((b - wit).cross(cc - wit)), l1 = n.dot((cc - wit).cross(a - wit)),
+                   l2 = n.dot((a - wit).cross(b - wit));
+      const double score = std::min({l0, l1, l2}) / n.squaredNorm();
+      if (best < 0 || score > best_score) best = t, best_score = score;
+    }
+    h = L0.ccw(h);
+  } while (h != h0);
+  return {FeatureKind3::Face, best};
+}
+
+}  // namespace
+
+// Signed distance in P's frame for Q placed by rel; result in the world frame of (Rp, tp_world).
+Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel,
+                              const Eigen::Matrix3d& Rp, const Vec3& tp_world) {
+  const PolytopeData& PD = data_of(Pp);
+  const PolytopeData& QD = data_of(Qp);
+  const VertexAdjacency& aP = vertex_adjacency(PD);
+  const VertexAdjacency& aQ = vertex_adjacency(QD);
+  const Ctx c{PD, QD, rel};
+  const Johnson johnson(c);
+
+  // First direction: from Q' towards P (centroids).
+  Vec3 v = aP.centroid - (rel.R * aQ.centroid + (rel.tq - rel.tp));
+  if (!v.allFinite() || v == Vec3::Zero()) v = Vec3::UnitX();
+  // Support of M minimising v·m: P minimises v·p, Q' maximises v·q' = (Rᵀ v)·q.
+  auto support = [&](const Vec3& u, int i0, int j0) {
+    const Vec3 uq = rel.R.transpose() * u;
+    return PairId{climb_rounded(PD, aP, -u, i0 >= 0 ? i0 : seed_vertex(aP, -u)),
+                  climb_rounded(QD, aQ, uq, j0 >= 0 ? j0 : seed_vertex(aQ, uq))};
+  };
+  PairId s = support(v, -1, -1);
+  Reduced X;
+  X.size = 1;
+  X.s[0] = c.member(s);
+  {
+    Reduced r = johnson.reduce(X.s, 1);
+    X = r;
+  }
+  Dir U{};
+  V3<Fl> Ufl{};
+  auto set_dir = [&]() {
+    U = Dir{&c, X.size, {X.s[0], X.size > 1 ? X.s[1] : Member{}, X.size > 2 ? X.s[2] : Member{}}, X.tri_sign};
+    Ufl = U(LiftFl{});
+  };
+  bool contact = X.contact;
+  while (!contact) {
+    set_dir();
+    const Vec3 u(Ufl[0].v, Ufl[1].v, Ufl[2].v);
+    s = support(u, s.i, s.j);
+    const Member& a = X.s[0];
+    auto improves = [&](PairId x) {
+      for (int k = 0; k < X.size; ++k)
+        if (X.s[k].id == x) return false;
+      return dir_sign(U, Ufl, [&](auto L) { return sub(c.m(L, x), c.pt(L, a)); }) < 0;
+    };
+    if (!improves(s)) {
+      // Certify (i, j) exactly: no neighbour strictly better.
+      for (bool moved = true; moved;) {
+        moved = false;
+        for (int e = aP.start[s.i]; e < aP.start[s.i + 1] && !moved; ++e) {
+          const int k = aP.nbr[e], i = s.i;
+          if (dir_sign(U, Ufl, [&](auto L) { return sub(c.pvec(L, k), c.pvec(L, i)); }) < 0) s.i = k, moved = true;
+        }
+      }
+      for (bool moved = true; moved;) {
+        moved = false;
+        for (int e = aQ.start[s.j]; e < aQ.start[s.j + 1] && !moved; ++e) {
+          const int k = aQ.nbr[e], j = s.j;
+          if (dir_sign(U, Ufl, [&](auto L) { return sub(c.qplaced(L, k), c.qplaced(L, j)); }) > 0)
+            s.j = k, moved = true;
+        }
+      }
+      if (!improves(s)) break;  // certified: M ⊂ {U·x ≥ U·w}
+    }
+    Member Y[4];
+    for (int k = 0; k < X.size; ++k) Y[k] = X.s[k];
+    Y[X.size] = c.member(s);
+    X = johnson.reduce(Y, X.size + 1);
+    contact = X.contact;
+  }
+
+  Distance3 r;
+  // Barycentric weights (rounded) of the closest point (or of 0) on S.
+  std::array<double, 4> lam{1, 0, 0, 0};
+  {
+    Vec3 m[4];
+    for (int k = 0; k < X.size; ++k) m[k] = c.approx_p(X.s[k].id.i) - c.approx_q(X.s[k].id.j);
+    if (X.size == 2) {
+      const Vec3 e = m[1] - m[0];
+      double t = e.squaredNorm() > 0 ? std::clamp(-m[0].dot(e) / e.squaredNorm(), 0.0, 1.0) : 0.0;
+      lam = {1 - t, t, 0, 0};
+    } else if (X.size == 3) {
+      const Vec3 n = (m[1] - m[0]).cross(m[2] - m[0]);
+      double l[3], sum = 0;
+      for (int k = 0; k < 3; ++k) sum += l[k] = std::max(0.0, n.dot(m[(k + 1) % 3].cross(m[(k + 2) % 3])));
+      for (int k = 0; k < 3; ++k) lam[k] = sum > 0 ? l[k] / sum : 1.0 / 3;
+    } else if (X.size == 4) {
+      auto det = [](const Vec3& a, const Vec3& b, const Vec3& cc) { return a.dot(b.cross(cc)); };
+      double V = det(m[1] - m[0], m[2] - m[0], m[3] - m[0]), sum = 0;
+      double l[4];
+      const Vec3 z = Vec3::Zero();
+      for (int k = 0; k < 4; ++k) {
+        Vec3 p[4] = {m[0], m[1], m[2], m[3]};
+        p[k] = z;
+        sum += l[k] = std::max(0.0, det(p[1] - p[0], p[2] - p[0], p[3] - p[0]) / V);
+      }
+      for (int k = 0; k < 4; ++k) lam[k] = sum > 0 ? l[k] / sum : 0.25;
+    }
+  }
+  Vec3 wp = Vec3::Zero(), wq = Vec3::Zero();
+  for (int k = 0; k < X.size; ++k) wp += lam[k] * c.approx_p(X.s[k].id.i), wq += lam[k] * c.approx_q(X.s[k].id.j);
+
+  if (contact) {
+    // 0 ∈ M: σ decides overlap (−σ) or touching (0).
+    const Depth3 d = minimum_depth_expand(Pp, Qp, rel, Rp, tp_world);
+    if (d.overlapping) {
+      r.overlapping = true;
+      r.distance = -d.depth;
+      r.lower_bound = -d.upper_bound;
+      r.upper_bound = -d.lower_bound;
+      r.translation = d.translation;
+      r.normal = d.normal;
+      r.witness_p = d.witness_p;
+      r.witness_q = d.witness_q - d.translation;
+      r.feature_p = d.feature_p;
+      r.feature_q = d.feature_q;
+      return r;
+    }
+    r.witness_p = Rp * wp + tp_world;
+    r.witness_q = Rp * wq + tp_world;
+    if (X.size == 4) X.size = 3;  // 0 on a face of the tetrahedron: report its first three pairs
+    set_dir();
+  } else {
+    // Distance |w_S| from accurately evaluated polynomials, one square root.
+    const Member& a = X.s[0];
+    double d2;
+    if (X.size == 1) {
+      d2 = exact::accurate_value([&](auto L) { auto x = c.pt(L, a); return dot(x, x); });
+    } else if (X.size == 2) {
+      const Member& b = X.s[1];
+      d2 = exact::accurate_ratio(
+          [&](auto L) { auto x = cross(sub(c.pt(L, b), c.pt(L, a)), c.pt(L, a)); return dot(x, x); },
+          [&](auto L) { auto e = sub(c.pt(L, b), c.pt(L, a)); return dot(e, e); });
+    } else {
+      auto n = [&](auto L) { return cross(sub(c.pt(L, X.s[1]), c.pt(L, a)), sub(c.pt(L, X.s[2]), c.pt(L, a))); };
+      d2 = exact::accurate_ratio([&](auto L) { auto h = dot(n(L), c.pt(L, a)); return h * h; },
+                                 [&](auto L) { auto x = n(L); return dot(x, x); });
+    }
+    r.distance = r.lower_bound = r.upper_bound = std::sqrt(d2);
+    // normal = −U/|U|, U evaluated accurately per component.
+    Vec3 u;
+    for (int k = 0; k < 3; ++k) u[k] = exact::accurate_value([&](auto L) { return U(L)[k]; });
+    const Vec3 nl = -u.normalized();
+    r.normal = Rp * nl;
+    r.translation = -r.distance * r.normal;
+    r.witness_p = Rp * wp + tp_world;
+    r.witness_q = Rp * wq + tp_world;
+  }
+  // Features: the distinct vertices of each side in S.
+  int vp[3], vq[3], np = 0, nq = 0;
+  for (int k = 0; k < X.size; ++k) {
+    if (std::find(vp, vp + np, X.s[k].id.i) == vp + np) vp[np++] = X.s[k].id.i;
+    if (std::find(vq, vq + nq, X.s[k].id.j) == vq + nq) vq[nq++] = X.s[k].id.j;
+  }
+  const Vec3 wq_own = rel.R.transpose() * (wq - (rel.tq - rel.tp));
+  r.feature_p = feature_of(c, false, vp, np, U, wp);
+  r.feature_q = feature_of(c, true, vq, nq, U, wq_own);
+  return r;
+}
+
+}  // namespace convex3
+
+Distance3 signed_distance(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q, const Pose3& pose_q) {
+  const convex3::RelativePose rel = convex3::relative_pose(pose_p, pose_q);
+  return convex3::signed_distance_gjk(P, Q, rel, pose_p.matrix(), pose_p.translation);
+}
+
+}  // namespace pendepth
