@@ -47,6 +47,7 @@
 #include <pendepth/depth3.hpp>
 
 #include "convex3/minimum_expand.hpp"
+#include "convex3/outer_hierarchy.hpp"
 #include "convex3/polytope_data.hpp"
 #include "geometry/exact.hpp"
 
@@ -88,6 +89,11 @@ V3<T> scale(const T& s, const V3<T>& a) {
   return {s * a[0], s * a[1], s * a[2]};
 }
 
+// Plain doubles: the rounded guess of Johnson's sub-algorithm (verified exactly afterwards).
+struct LiftD {
+  double operator()(double x) const { return x; }
+};
+
 struct PairId {
   int i = -1, j = -1;
   friend bool operator==(const PairId&, const PairId&) = default;
@@ -126,8 +132,23 @@ struct Ctx {
   V3<Num<L>> pt(L lift, const Member& x) const {
     if constexpr (std::is_same_v<L, LiftFl>)
       return x.fl;
+    else if constexpr (std::is_same_v<L, LiftD>)
+      return {x.fl[0].v, x.fl[1].v, x.fl[2].v};
     else
       return m(lift, x.id);
+  }
+  // m_x − m_y written structurally: p_x − p_y (same j), −R(q_x − q_y) (same i), or both; the
+  // same exact value with a smaller degree and tighter filter bounds.
+  template <class L>
+  V3<Num<L>> dm(L lift, PairId x, PairId y) const {
+    V3<Num<L>> r{lift(0.0), lift(0.0), lift(0.0)};
+    if (x.i != y.i) r = sub(pvec(lift, x.i), pvec(lift, y.i));
+    if (x.j != y.j) {
+      const Vec3 &qa = Q.v[x.j], &qb = Q.v[y.j];
+      const Num<L> d0 = lift(qa[0]) - lift(qb[0]), d1 = lift(qa[1]) - lift(qb[1]), d2 = lift(qa[2]) - lift(qb[2]);
+      for (int k = 0; k < 3; ++k) r[k] = r[k] - (lift(rel.R(k, 0)) * d0 + lift(rel.R(k, 1)) * d1 + lift(rel.R(k, 2)) * d2);
+    }
+    return r;
   }
   Member member(PairId s) const { return {s, m(LiftFl{}, s)}; }
   Vec3 approx_p(int i) const { return P.v[i]; }
@@ -146,9 +167,9 @@ struct Dir {
   V3<Num<L>> operator()(L lift) const {
     auto a = c->pt(lift, s[0]);
     if (size == 1) return a;
-    auto e = sub(c->pt(lift, s[1]), a);
+    auto e = c->dm(lift, s[1].id, s[0].id);
     if (size == 2) return sub(scale(dot(e, e), a), scale(dot(a, e), e));
-    auto n = cross(e, sub(c->pt(lift, s[2]), a));
+    auto n = cross(e, c->dm(lift, s[2].id, s[0].id));
     return tri_sign > 0 ? n : V3<Num<L>>{-n[0], -n[1], -n[2]};
   }
 };
@@ -190,13 +211,24 @@ class Johnson {
   Reduced reduce(const Member* X, int n) const {
     // Subsets as bit masks, those holding the newest point first, smallest first.
     const int all = (1 << n) - 1, newest = 1 << (n - 1);
+    // A guess in doubles, verified exactly; the exact enumeration only when the guess fails.
+    for (int size = 1; size <= n; ++size)
+      for (int mask = 1; mask <= all; ++mask) {
+        if (std::popcount(static_cast<unsigned>(mask)) != size || !(mask & newest)) continue;
+        Reduced r;
+        if (accept<false>(X, n, mask, r)) {
+          if (accept<true>(X, n, mask, r)) return r;
+          size = n + 1;
+          break;
+        }
+      }
     for (int pass = 0; pass < 2; ++pass)
       for (int size = 1; size <= n; ++size)
         for (int mask = 1; mask <= all; ++mask) {
           if (std::popcount(static_cast<unsigned>(mask)) != size) continue;
           if (((mask & newest) != 0) != (pass == 0)) continue;
           Reduced r;
-          if (accept(X, n, mask, r)) return r;
+          if (accept<true>(X, n, mask, r)) return r;
         }
     // Unreachable for affinely independent X (exactly one face holds the closest point).
     Reduced r;
@@ -208,19 +240,26 @@ class Johnson {
  private:
   const Ctx& c_;
 
-  template <class F>
+  template <bool kExact, class F>
   static int sgn(F&& f) {
-    return exact_sign(std::forward<F>(f));
+    if constexpr (kExact) {
+      return exact_sign(std::forward<F>(f));
+    } else {
+      const double v = f(LiftD{});
+      return (v > 0) - (v < 0);
+    }
   }
 
+  template <bool kExact>
   bool accept(const Member* X, int nx, int mask, Reduced& r) const {
-    int idx[4], k = 0, out[4], o = 0;
+    int idx[4] = {}, k = 0, out[4] = {}, o = 0;
     for (int b = 0; b < nx; ++b) (mask >> b & 1 ? idx[k++] : out[o++]) = b;
-    const Member* S[4];
+    const Member* S[4] = {};
     for (int t = 0; t < k; ++t) S[t] = &X[idx[t]];
     r.size = k;
     for (int t = 0; t < k; ++t) r.s[t] = *S[t];
     auto P = [&](auto L, const Member* x) { return c_.pt(L, *x); };
+    auto D = [&](auto L, const Member* x, const Member* y) { return c_.dm(L, x->id, y->id); };
     if (k == 4) {  // 0 inside the tetrahedron (closed): contact
       auto D = [&](auto L, int replace) {
         V3<Num<decltype(L)>> p[4];
@@ -228,44 +267,44 @@ class Johnson {
           p[t] = t == replace ? V3<Num<decltype(L)>>{L(0.0), L(0.0), L(0.0)} : P(L, S[t]);
         return dot(cross(sub(p[1], p[0]), sub(p[2], p[0])), sub(p[3], p[0]));
       };
-      const int v = sgn([&](auto L) { return D(L, -1); });
+      const int v = sgn<kExact>([&](auto L) { return D(L, -1); });
       for (int t = 0; t < 4; ++t)
-        if (sgn([&](auto L) { return D(L, t); }) * v < 0) return false;
+        if (sgn<kExact>([&](auto L) { return D(L, t); }) * v < 0) return false;
       r.contact = true;
       return true;
     }
     if (k == 1) {
       auto a = [&](auto L) { return P(L, S[0]); };
       bool zero = true;
-      for (int t = 0; t < 3 && zero; ++t) zero = sgn([&](auto L) { return a(L)[t]; }) == 0;
+      for (int t = 0; t < 3 && zero; ++t) zero = sgn<kExact>([&](auto L) { return a(L)[t]; }) == 0;
       if (zero) return r.contact = true;
       for (int t = 0; t < o; ++t)
-        if (sgn([&](auto L) { return dot(a(L), sub(P(L, &X[out[t]]), a(L))); }) < 0) return false;
+        if (sgn<kExact>([&](auto L) { return dot(a(L), D(L, &X[out[t]], S[0])); }) < 0) return false;
       return true;
     }
     if (k == 2) {
       // λ_a ∝ b·(b − a), λ_b ∝ −a·(b − a).
-      if (sgn([&](auto L) { return dot(P(L, S[1]), sub(P(L, S[1]), P(L, S[0]))); }) <= 0) return false;
-      if (sgn([&](auto L) { return dot(P(L, S[0]), sub(P(L, S[1]), P(L, S[0]))); }) >= 0) return false;
+      if (sgn<kExact>([&](auto L) { return dot(P(L, S[1]), D(L, S[1], S[0])); }) <= 0) return false;
+      if (sgn<kExact>([&](auto L) { return dot(P(L, S[0]), D(L, S[1], S[0])); }) >= 0) return false;
       bool zero = true;  // 0 on the segment's line: e × a = 0
       for (int t = 0; t < 3 && zero; ++t)
-        zero = sgn([&](auto L) { return cross(sub(P(L, S[1]), P(L, S[0])), P(L, S[0]))[t]; }) == 0;
+        zero = sgn<kExact>([&](auto L) { return cross(D(L, S[1], S[0]), P(L, S[0]))[t]; }) == 0;
       if (zero) return r.contact = true;
       Dir U{&c_, 2, {*S[0], *S[1], {}}, 1};
       for (int t = 0; t < o; ++t)
-        if (sgn([&](auto L) { return dot(U(L), sub(P(L, &X[out[t]]), P(L, S[0]))); }) < 0) return false;
+        if (sgn<kExact>([&](auto L) { return dot(U(L), D(L, &X[out[t]], S[0])); }) < 0) return false;
       return true;
     }
     // k == 3: λ_a ∝ n·(b × c), λ_b ∝ n·(c × a), λ_c ∝ n·(a × b).
-    auto n = [&](auto L) { return cross(sub(P(L, S[1]), P(L, S[0])), sub(P(L, S[2]), P(L, S[0]))); };
+    auto n = [&](auto L) { return cross(D(L, S[1], S[0]), D(L, S[2], S[0])); };
     for (int t = 0; t < 3; ++t)
-      if (sgn([&](auto L) { return dot(n(L), cross(P(L, S[(t + 1) % 3]), P(L, S[(t + 2) % 3]))); }) <= 0)
+      if (sgn<kExact>([&](auto L) { return dot(n(L), cross(P(L, S[(t + 1) % 3]), P(L, S[(t + 2) % 3]))); }) <= 0)
         return false;
-    const int h = sgn([&](auto L) { return dot(n(L), P(L, S[0])); });
+    const int h = sgn<kExact>([&](auto L) { return dot(n(L), P(L, S[0])); });
     if (h == 0) return r.contact = true;
     r.tri_sign = h;
     for (int t = 0; t < o; ++t)
-      if (h * sgn([&](auto L) { return dot(n(L), sub(P(L, &X[out[t]]), P(L, S[0]))); }) < 0) return false;
+      if (h * sgn<kExact>([&](auto L) { return dot(n(L), D(L, &X[out[t]], S[0])); }) < 0) return false;
     return true;
   }
 };
@@ -281,60 +320,53 @@ RelativePose relative_pose(const Pose3& pp, const Pose3& pq) {
   return r;
 }
 
-// The feature of one side spanned by the distinct vertices vs (1–3) lying in the support plane
-// {U·x = U·x_vs[0]} (P side) or {U·Rq = const} (Q side): vertex, true edge, or a level-0
-// triangle in that plane containing `wit` (the side's witness, in the side's own frame) up to
-// rounding.
-Feature3 feature_of(const Ctx& c, bool isq, const int* vs, int nv, const Dir& U, const Vec3& wit) {
-  const PolytopeData& D = isq ? c.Q : c.P;
+// The feature of one side spanned by the distinct vertices vs (1–3) of S on that side, all on
+// the side's support plane for U: a vertex; a true edge; else the true face containing them
+// (the support set is then a face of the polytope: combinatorial, through the faces of the
+// triangles around them), reported as its level-0 triangle around vs that best contains `wit`
+// (the side's witness in its own frame; rounded barycentric coordinates).
+Feature3 feature_of(const ConvexPolytope& S, const int* vs, int nv, const Vec3& wit) {
+  const PolytopeData& D = data_of(S);
   if (nv == 1) return {FeatureKind3::Vertex, vs[0]};
+  const std::vector<int>& face_of = outer_hierarchy(D).face_of_tri;
   const DKLevel& L0 = D.levels[0];
-  if (nv == 2) {
-    const int h0 = D.vertex_he[vs[0]];
+  auto around = [&](int v, auto&& f) {
+    const int h0 = D.vertex_he[v];
     int h = h0;
     do {
-      if (L0.target(h) == vs[1]) {
-        // A true edge unless its two triangles are coplanar (a flat-facet diagonal).
-        const int t1 = h / 3, t2 = L0.twin[h] / 3;
-        const auto& T1 = D.tris[t1];
-        const int far = L0.fv[3 * t2 + (L0.twin[h] % 3 + 2) % 3];
-        const bool flat = exact_sign([&](auto L) {
-                            auto x = [&](int v) { return V3<Num<decltype(L)>>{L(D.v[v][0]), L(D.v[v][1]), L(D.v[v][2])}; };
-                            return dot(cross(sub(x(T1[1]), x(T1[0])), sub(x(T1[2]), x(T1[0]))), sub(x(far), x(T1[0])));
-                          }) == 0;
-        if (!flat) return {FeatureKind3::Edge, h};
-        break;
-      }
+      f(h);
       h = L0.ccw(h);
     } while (h != h0);
+  };
+  if (nv == 2) {
+    int edge = -1;
+    around(vs[0], [&](int h) {
+      if (L0.target(h) == vs[1]) edge = h;
+    });
+    if (edge >= 0 && face_of.at(edge / 3) != face_of.at(L0.twin[edge] / 3))
+      return {FeatureKind3::Edge, edge};
   }
-  // A face: the level-0 triangles around vs[0] whose vertices all lie in the support plane; the
-  // one containing the witness best (rounded barycentric coordinates).
-  auto on_plane = [&](int w) {
-    if (w == vs[0]) return true;
-    return exact_sign([&](auto L) {
-             auto u = U(L);
-             if (!isq) return dot(u, sub(c.pvec(L, w), c.pvec(L, vs[0])));
-             return dot(u, sub(c.qplaced(L, w), c.qplaced(L, vs[0])));
-           }) == 0;
+  // Faces around vs[0] that every other vertex of vs also touches.
+  auto touches = [&](int v, int f) {
+    bool yes = false;
+    around(v, [&](int h) { yes = yes || face_of.at(h / 3) == f; });
+    return yes;
   };
   int best = -1;
-  double best_score = -1e300;
-  const int h0 = D.vertex_he[vs[0]];
-  int h = h0;
-  do {
-    const int t = h / 3;
-    const auto& T = D.tris[t];
-    if (on_plane(T[0]) && on_plane(T[1]) && on_plane(T[2])) {
-      const Vec3 a = D.v[T[0]], b = D.v[T[1]], cc = D.v[T[2]];
-      const Vec3 n = (b - a).cross(cc - a);
-      const double l0 = n.dot((b - wit).cross(cc - wit)), l1 = n.dot((cc - wit).cross(a - wit)),
-                   l2 = n.dot((a - wit).cross(b - wit));
-      const double score = std::min({l0, l1, l2}) / n.squaredNorm();
+  double best_score = 0;
+  for (int k = 0; k < nv; ++k)
+    around(vs[k], [&](int h) {
+      const int t = h / 3, f = face_of.at(t);
+      for (int l = 0; l < nv; ++l)
+        if (l != k && !touches(vs[l], f)) return;
+      const auto& T = D.tris[t];
+      const Vec3 a = D.v[T[0]], b = D.v[T[1]], c = D.v[T[2]];
+      const Vec3 n = (b - a).cross(c - a);
+      const double score =
+          std::min({n.dot((b - wit).cross(c - wit)), n.dot((c - wit).cross(a - wit)), n.dot((a - wit).cross(b - wit))}) /
+          n.squaredNorm();
       if (best < 0 || score > best_score) best = t, best_score = score;
-    }
-    h = L0.ccw(h);
-  } while (h != h0);
+    });
   return {FeatureKind3::Face, best};
 }
 
@@ -379,10 +411,35 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
     const Vec3 u(Ufl[0].v, Ufl[1].v, Ufl[2].v);
     s = support(u, s.i, s.j);
     const Member& a = X.s[0];
+    // Pairs on the plane through X by construction: members, and the fourth corner
+    // m_x + m_y − m_z of a parallelogram of members (x.i = s.i, y.j = s.j, z = (y.i, x.j)).
+    auto member = [&](int i, int j) {
+      for (int k = 0; k < X.size; ++k)
+        if (X.s[k].id.i == i && X.s[k].id.j == j) return true;
+      return false;
+    };
+    auto on_plane = [&](PairId x) {
+      for (int u = 0; u < X.size; ++u)
+        for (int v = 0; v < X.size; ++v)
+          if (X.s[u].id.i == x.i && X.s[v].id.j == x.j && member(X.s[v].id.i, X.s[u].id.j)) return true;
+      return false;
+    };
+    // U·(p_k − p_i) = U·(m_(k,j') − m_(i,j')) is 0 when both pairs are on the plane (same for Q).
+    auto p_zero = [&](int k, int i) {
+      for (int u = 0; u < X.size; ++u)
+        if (on_plane({k, X.s[u].id.j}) && on_plane({i, X.s[u].id.j})) return true;
+      return false;
+    };
+    auto q_zero = [&](int k, int j) {
+      for (int u = 0; u < X.size; ++u)
+        if (on_plane({X.s[u].id.i, k}) && on_plane({X.s[u].id.i, j})) return true;
+      return false;
+    };
     auto improves = [&](PairId x) {
       for (int k = 0; k < X.size; ++k)
         if (X.s[k].id == x) return false;
-      return dir_sign(U, Ufl, [&](auto L) { return sub(c.m(L, x), c.pt(L, a)); }) < 0;
+      if (on_plane(x)) return false;  // structurally on the plane
+      return dir_sign(U, Ufl, [&](auto L) { return c.dm(L, x, a.id); }) < 0;
     };
     if (!improves(s)) {
       // Certify (i, j) exactly: no neighbour strictly better.
@@ -390,6 +447,7 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
         moved = false;
         for (int e = aP.start[s.i]; e < aP.start[s.i + 1] && !moved; ++e) {
           const int k = aP.nbr[e], i = s.i;
+          if (p_zero(k, i)) continue;
           if (dir_sign(U, Ufl, [&](auto L) { return sub(c.pvec(L, k), c.pvec(L, i)); }) < 0) s.i = k, moved = true;
         }
       }
@@ -397,7 +455,8 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
         moved = false;
         for (int e = aQ.start[s.j]; e < aQ.start[s.j + 1] && !moved; ++e) {
           const int k = aQ.nbr[e], j = s.j;
-          if (dir_sign(U, Ufl, [&](auto L) { return sub(c.qplaced(L, k), c.qplaced(L, j)); }) > 0)
+          if (q_zero(k, j)) continue;
+          if (dir_sign(U, Ufl, [&](auto L) { return c.dm(L, PairId{0, k}, PairId{0, j}); }) < 0)
             s.j = k, moved = true;
         }
       }
@@ -470,17 +529,23 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
     } else if (X.size == 2) {
       const Member& b = X.s[1];
       d2 = exact::accurate_ratio(
-          [&](auto L) { auto x = cross(sub(c.pt(L, b), c.pt(L, a)), c.pt(L, a)); return dot(x, x); },
-          [&](auto L) { auto e = sub(c.pt(L, b), c.pt(L, a)); return dot(e, e); });
+          [&](auto L) { auto x = cross(c.dm(L, b.id, a.id), c.pt(L, a)); return dot(x, x); },
+          [&](auto L) { auto e = c.dm(L, b.id, a.id); return dot(e, e); });
     } else {
-      auto n = [&](auto L) { return cross(sub(c.pt(L, X.s[1]), c.pt(L, a)), sub(c.pt(L, X.s[2]), c.pt(L, a))); };
+      auto n = [&](auto L) { return cross(c.dm(L, X.s[1].id, a.id), c.dm(L, X.s[2].id, a.id)); };
       d2 = exact::accurate_ratio([&](auto L) { auto h = dot(n(L), c.pt(L, a)); return h * h; },
                                  [&](auto L) { auto x = n(L); return dot(x, x); });
     }
     r.distance = r.lower_bound = r.upper_bound = std::sqrt(d2);
     // normal = −U/|U|, U evaluated accurately per component.
     Vec3 u;
-    for (int k = 0; k < 3; ++k) u[k] = exact::accurate_value([&](auto L) { return U(L)[k]; });
+    {
+      const auto ud = U(exact::LiftDD{});
+      for (int k = 0; k < 3; ++k)
+        u[k] = exact::dd_finite(ud[k]) && exact::safe_bound(ud[k].e) <= std::abs(ud[k].hi) * 0x1p-54
+                   ? ud[k].hi
+                   : exact::accurate_value([&](auto L) { return U(L)[k]; });
+    }
     const Vec3 nl = -u.normalized();
     r.normal = Rp * nl;
     r.translation = -r.distance * r.normal;
@@ -494,8 +559,8 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
     if (std::find(vq, vq + nq, X.s[k].id.j) == vq + nq) vq[nq++] = X.s[k].id.j;
   }
   const Vec3 wq_own = rel.R.transpose() * (wq - (rel.tq - rel.tp));
-  r.feature_p = feature_of(c, false, vp, np, U, wp);
-  r.feature_q = feature_of(c, true, vq, nq, U, wq_own);
+  r.feature_p = feature_of(Pp, vp, np, wp);
+  r.feature_q = feature_of(Qp, vq, nq, wq_own);
   return r;
 }
 
