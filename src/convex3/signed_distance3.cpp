@@ -30,9 +30,9 @@
 //    over the level-0 adjacency, flat-facet diagonals included) is a global optimum. If the
 //    certified pair is still not strictly closer, then M ⊂ {U·x ≥ U·w_S}: dist(0, M) ≥ |w_S|,
 //    and w_S ∈ conv(X) ⊂ M gives equality.
-//  * Value: |w_S| = |m_a|, |e × a|/|e| or |n·a|/|n| from accurately evaluated polynomials
-//    (exact::accurate_value / accurate_ratio: double, double-double, exact rationals when their
-//    bound fails), then one square root: within ~2 ulps.
+//  * Value: |w_S| = |m_a|, |e × a|/|e| or |n·a|/|n|, every polynomial (coordinates of m_a,
+//    e × a, e, n, and n·a) evaluated to ~1 ulp (double-double, exact tiers when its bound fails),
+//    norms by stableNorm, one division: within ~3 ulps (1 ulp measured against CGAL).
 // Predicates: each sign is first evaluated from the simplex points cached as doubles with a
 // rigorous error bound (exact::Fl), then exact::exact_sign (double-double, expansions, GMP).
 //
@@ -309,6 +309,15 @@ class Johnson {
   }
 };
 
+// f's value within ~1 ulp: double-double first (the formulas here are of high degree, so the
+// plain floating tier of exact::accurate_value almost never certifies), then exact tiers.
+template <class F>
+double accurate_dd(F&& f) {
+  const exact::DD r = f(exact::LiftDD{});
+  if (exact::dd_finite(r) && exact::safe_bound(r.e) <= std::abs(r.hi) * 0x1p-54) return r.hi;
+  return exact::accurate_value(std::forward<F>(f));
+}
+
 RelativePose relative_pose(const Pose3& pp, const Pose3& pq) {
   if (!pp.translation.allFinite()) throw InvalidInput("pose of P: non-finite translation");
   if (!pq.translation.allFinite()) throw InvalidInput("pose of Q: non-finite translation");
@@ -346,19 +355,27 @@ Feature3 feature_of(const ConvexPolytope& S, const int* vs, int nv, const Vec3& 
     if (edge >= 0 && face_of.at(edge / 3) != face_of.at(L0.twin[edge] / 3))
       return {FeatureKind3::Edge, edge};
   }
-  // Faces around vs[0] that every other vertex of vs also touches.
+  // The true face around vs[0] that every other vertex of vs also touches, then its triangles
+  // around vs scored by how well they contain the witness.
   auto touches = [&](int v, int f) {
     bool yes = false;
     around(v, [&](int h) { yes = yes || face_of.at(h / 3) == f; });
     return yes;
   };
+  int face = -1;
+  around(vs[0], [&](int h) {
+    const int f = face_of.at(h / 3);
+    if (face >= 0) return;
+    for (int l = 1; l < nv; ++l)
+      if (!touches(vs[l], f)) return;
+    face = f;
+  });
   int best = -1;
   double best_score = 0;
   for (int k = 0; k < nv; ++k)
     around(vs[k], [&](int h) {
-      const int t = h / 3, f = face_of.at(t);
-      for (int l = 0; l < nv; ++l)
-        if (l != k && !touches(vs[l], f)) return;
+      const int t = h / 3;
+      if (face_of.at(t) != face) return;
       const auto& T = D.tris[t];
       const Vec3 a = D.v[T[0]], b = D.v[T[1]], c = D.v[T[2]];
       const Vec3 n = (b - a).cross(c - a);
@@ -523,20 +540,29 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
   } else {
     // Distance |w_S| from accurately evaluated polynomials, one square root.
     const Member& a = X.s[0];
-    double d2;
+    // Each factor from accurately evaluated polynomials of low degree (no squares, so tiny
+    // distances do not underflow), norms by Eigen's stableNorm: within ~3 ulps.
+    auto acc3 = [&](auto&& f) {
+      const auto v = f(exact::LiftDD{});
+      Vec3 r;
+      for (int k = 0; k < 3; ++k)
+        r[k] = exact::dd_finite(v[k]) && exact::safe_bound(v[k].e) <= std::abs(v[k].hi) * 0x1p-54
+                   ? v[k].hi
+                   : exact::accurate_value([&](auto L) { return f(L)[k]; });
+      return r;
+    };
+    double dist;
     if (X.size == 1) {
-      d2 = exact::accurate_value([&](auto L) { auto x = c.pt(L, a); return dot(x, x); });
+      dist = acc3([&](auto L) { return c.pt(L, a); }).stableNorm();
     } else if (X.size == 2) {
       const Member& b = X.s[1];
-      d2 = exact::accurate_ratio(
-          [&](auto L) { auto x = cross(c.dm(L, b.id, a.id), c.pt(L, a)); return dot(x, x); },
-          [&](auto L) { auto e = c.dm(L, b.id, a.id); return dot(e, e); });
+      dist = acc3([&](auto L) { return cross(c.dm(L, b.id, a.id), c.pt(L, a)); }).stableNorm() /
+             acc3([&](auto L) { return c.dm(L, b.id, a.id); }).stableNorm();
     } else {
       auto n = [&](auto L) { return cross(c.dm(L, X.s[1].id, a.id), c.dm(L, X.s[2].id, a.id)); };
-      d2 = exact::accurate_ratio([&](auto L) { auto h = dot(n(L), c.pt(L, a)); return h * h; },
-                                 [&](auto L) { auto x = n(L); return dot(x, x); });
+      dist = std::abs(accurate_dd([&](auto L) { return dot(n(L), c.pt(L, a)); })) / acc3(n).stableNorm();
     }
-    r.distance = r.lower_bound = r.upper_bound = std::sqrt(d2);
+    r.distance = r.lower_bound = r.upper_bound = dist;
     // normal = −U/|U|, U evaluated accurately per component.
     Vec3 u;
     {
@@ -546,7 +572,7 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
                    ? ud[k].hi
                    : exact::accurate_value([&](auto L) { return U(L)[k]; });
     }
-    const Vec3 nl = -u.normalized();
+    const Vec3 nl = -u.stableNormalized();
     r.normal = Rp * nl;
     r.translation = -r.distance * r.normal;
     r.witness_p = Rp * wp + tp_world;

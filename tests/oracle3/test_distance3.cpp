@@ -269,6 +269,10 @@ TEST(Distance3Oracle, DegenerateGrids) {
   grid(oct, {-3, -2, 0, 2, 2.5}, 4, "octahedron/cube");
   Pair tets({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {0, 0, 4}}, {{0, 0, 0}, {-1, 0, 0}, {0, -1, 0}, {0, 0, -1}});
   grid(tets, {-1, 0, 1, 5}, 0, "tet/tet vertex–vertex");
+  // Tiny gaps next to unit shapes (no underflow in the value): face–face, edge–edge, vertex–vertex.
+  Pair cubes(box({-1, -1, -1}, {0, 0, 0}), box({0, 0, 0}, {1, 1, 1}));
+  for (double g : {1e-200, 3e-150, 0x1p-60})
+    for (const Vec3& t : {Vec3(g, -0.5, -0.5), Vec3(g, g, -0.5), Vec3(g, g, g)}) check_pose(cubes, Pose3(), Pose3(t), {}, st, "tiny gap");
   st.print("degenerate grids");
   EXPECT_GT(st.touching, 20);
   EXPECT_GT(st.apart, 50);
