@@ -76,6 +76,7 @@
 #if PENDEPTH_BENCH_BULLET
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpa2.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkConvexCast.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
 #include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
@@ -890,6 +891,9 @@ struct DistQuery {
   Pose3 pose;
   Mat3 R;
   double exact = 0;
+  Vec3 d;                  // cast direction: towards P's centroid, perturbed (about half hit)
+  double cast_exact = 0;   // pendepth's exact time of impact (+inf: miss)
+  double cast_length = 0;  // length of the sweep given to the peers (beyond every hit)
 };
 struct DistCase {
   std::vector<ConvexPolytope> P, Q;
@@ -941,6 +945,10 @@ const DistCase& dist_case() {
     const pendepth::Distance3 d = pendepth::signed_distance(P, Pose3(), Q, q.pose);
     if (!(d.distance > 0)) continue;
     q.exact = d.distance;
+    q.d = (centroid(P) - q.pose.translation).normalized() + 0.5 * random_in_ball(rng, 1.0);
+    if (q.d.norm() < 1e-3) continue;
+    q.cast_exact = pendepth::shape_cast(P, Pose3(), Q, q.pose, q.d).distance;
+    q.cast_length = 4 * (radius(P) + radius(Q)) + (q.pose.translation - centroid(P)).norm();
     c.queries.push_back(q);
   }
   if (c.queries.size() < want) c.error = "too few disjoint placements";
@@ -1058,6 +1066,77 @@ void bm_distance(benchmark::State& state, DistFactory make) {
   state.counters["rel_err_max"] = rel_max;
 }
 
+// ---- shape cast on the same placements (pendepth exact vs Bullet's GJK convex cast) ----
+//   cast/pendepth/hulls   pendepth::shape_cast (exact; two DK line descents)
+//   cast/bullet_gjk/hulls Bullet float64 btGjkConvexCast (GJK ray cast, van den Bergen) sweeping
+//                         Q over cast_length along d̂, margin 0; time of impact = fraction·length
+// err_max over the queries both call a hit; failures = hit/miss disagreements (Bullet's
+// default tolerances) or relative error > kFailRel.
+using CastFn = std::function<double(std::size_t)>;  // +inf for a miss
+using CastFactory = std::function<CastFn(const DistCase&)>;
+
+CastFactory pendepth_cast() {
+  return [](const DistCase& c) -> CastFn {
+    return [&c](std::size_t i) {
+      const DistQuery& q = c.queries[i];
+      return pendepth::shape_cast(c.P[q.pair], Pose3(), c.Q[q.pair], q.pose, q.d).distance;
+    };
+  };
+}
+
+#if PENDEPTH_BENCH_BULLET
+CastFactory bullet_cast() {
+  return [](const DistCase& c) -> CastFn {
+    auto hulls = std::make_shared<std::vector<std::pair<std::shared_ptr<btConvexHullShape>, std::shared_ptr<btConvexHullShape>>>>();
+    for (std::size_t k = 0; k < c.P.size(); ++k) hulls->emplace_back(bullet_hull(c.P[k]), bullet_hull(c.Q[k]));
+    return [hulls, &c](std::size_t i) {
+      const DistQuery& q = c.queries[i];
+      const auto& [a, b] = (*hulls)[q.pair];
+      btVoronoiSimplexSolver simplex;
+      btGjkConvexCast cast(b.get(), a.get(), &simplex);  // Q moves, P stays
+      btTransform ta;
+      ta.setIdentity();
+      const btTransform from = bt_transform(q.R, q.pose.translation);
+      const btTransform to = bt_transform(q.R, q.pose.translation + q.cast_length * q.d.normalized());
+      btConvexCast::CastResult res;
+      if (!cast.calcTimeOfImpact(from, to, ta, ta, res)) return std::numeric_limits<double>::infinity();
+      return double(res.m_fraction) * q.cast_length;
+    };
+  };
+}
+#endif
+
+void bm_cast(benchmark::State& state, CastFactory make) {
+  const DistCase& c = dist_case();
+  if (!c.error.empty()) {
+    state.SkipWithError(c.error.c_str());
+    return;
+  }
+  CastFn f = make(c);
+  double err_max = 0;
+  int failures = 0, hits = 0;
+  for (std::size_t i = 0; i < c.queries.size(); ++i) {
+    const double x = f(i), e = c.queries[i].cast_exact;
+    hits += std::isfinite(e);
+    if (std::isfinite(x) != std::isfinite(e)) {
+      ++failures;
+      continue;
+    }
+    if (!std::isfinite(e)) continue;
+    err_max = std::max(err_max, std::abs(x - e));
+    failures += std::abs(x - e) > kFailRel * std::max(e, 1e-300);
+  }
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(f(i));
+    i = i + 1 == c.queries.size() ? 0 : i + 1;
+  }
+  state.counters["queries"] = double(c.queries.size());
+  state.counters["hits"] = hits;
+  state.counters["failures"] = failures;
+  state.counters["err_max"] = err_max;
+}
+
 void register_benchmarks() {
   std::vector<std::pair<std::string, DistFactory>> impls{{"pendepth", pendepth_distance()}};
 #if PENDEPTH_BENCH_BULLET
@@ -1071,6 +1150,12 @@ void register_benchmarks() {
   for (const auto& [name, make] : impls)
     benchmark::RegisterBenchmark(("distance/" + name + "/hulls").c_str(), bm_distance, make)
         ->Unit(benchmark::kMicrosecond);
+  std::vector<std::pair<std::string, CastFactory>> casts{{"pendepth", pendepth_cast()}};
+#if PENDEPTH_BENCH_BULLET
+  casts.emplace_back("bullet_gjk", bullet_cast());
+#endif
+  for (const auto& [name, make] : casts)
+    benchmark::RegisterBenchmark(("cast/" + name + "/hulls").c_str(), bm_cast, make)->Unit(benchmark::kMicrosecond);
 }
 
 }  // namespace sdist

@@ -38,6 +38,7 @@ Cast3 shape_cast(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolyt
   const Vec3 dl = Rp.transpose() * d;
   if (dl == Vec3::Zero()) throw InvalidInput("direction: underflows to zero in P's frame");
 
+  if (auto fast = convex3::shape_cast_certified(P, Q, rel, dl, Rp, pose_p.translation)) return *fast;
   Cast3 r;
   r.distance = std::numeric_limits<double>::infinity();
   const convex3::LineExit in = convex3::line_exit_dk(P, Q, rel, -dl);

@@ -54,6 +54,8 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <limits>
+#include <optional>
 #include <cmath>
 #include <type_traits>
 
@@ -587,6 +589,250 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
   const Vec3 wq_own = rel.R.transpose() * (wq - (rel.tq - rel.tp));
   r.feature_p = feature_of(Pp, vp, np, wp);
   r.feature_q = feature_of(Qp, vq, nq, wq_own);
+  return r;
+}
+
+
+// ---- Shape cast: GJK ray cast in doubles, certified exactly (cast3.cpp's fast path) -----------
+namespace {
+
+// Closest point of conv(pts) to 0 in doubles (brute force over the ≤ 15 faces): the subset mask,
+// its weights and the point. A proposal only.
+struct Closest {
+  int mask = 0;
+  double lam[4] = {0, 0, 0, 0};
+  Vec3 v{0, 0, 0};
+};
+Closest closest_double(const Vec3* pts, int n) {
+  Closest best;
+  double best_d = std::numeric_limits<double>::infinity();
+  for (int mask = 1; mask < (1 << n); ++mask) {
+    int idx[4], k = 0;
+    for (int b = 0; b < n; ++b)
+      if (mask >> b & 1) idx[k++] = b;
+    double lam[4] = {1, 0, 0, 0};
+    if (k > 1) {
+      Eigen::Matrix3d G = Eigen::Matrix3d::Identity();
+      Vec3 rhs = Vec3::Zero();
+      for (int a = 1; a < k; ++a) {
+        rhs[a - 1] = -pts[idx[0]].dot(pts[idx[a]] - pts[idx[0]]);
+        for (int b = 1; b < k; ++b) G(a - 1, b - 1) = (pts[idx[a]] - pts[idx[0]]).dot(pts[idx[b]] - pts[idx[0]]);
+      }
+      const Eigen::Block<Eigen::Matrix3d> g = G.topLeftCorner(k - 1, k - 1);
+      const Eigen::MatrixXd gm = g;
+      const double det = gm.determinant();
+      if (!(std::abs(det) > 0)) continue;
+      const Eigen::VectorXd mu = gm.fullPivLu().solve(rhs.head(k - 1));
+      lam[0] = 1;
+      for (int a = 1; a < k; ++a) lam[a] = mu[a - 1], lam[0] -= mu[a - 1];
+    }
+    bool inside = true;
+    for (int a = 0; a < k; ++a) inside = inside && lam[a] >= 0;
+    if (!inside) continue;
+    Vec3 v = Vec3::Zero();
+    for (int a = 0; a < k; ++a) v += lam[a] * pts[idx[a]];
+    const double dv = v.squaredNorm();
+    if (dv < best_d) {
+      best_d = dv, best.mask = mask, best.v = v;
+      for (int a = 0; a < 4; ++a) best.lam[a] = 0;
+      for (int a = 0; a < k; ++a) best.lam[idx[a]] = lam[a];
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+std::optional<Cast3> shape_cast_certified(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel,
+                                          const Vec3& d, const Eigen::Matrix3d& Rp, const Vec3& tp_world) {
+  const PolytopeData& PD = data_of(Pp);
+  const PolytopeData& QD = data_of(Qp);
+  const VertexAdjacency& aP = vertex_adjacency(PD);
+  const VertexAdjacency& aQ = vertex_adjacency(QD);
+  const Ctx c{PD, QD, rel};
+  const Vec3 t = rel.tq - rel.tp;
+  auto approx = [&](PairId x) { return Vec3(PD.v[x.i] - (rel.R * QD.v[x.j] + t)); };
+  // Support of M maximising u·m: P maximises u·p, Q' minimises u·q'.
+  PairId s{seed_vertex(aP, d), seed_vertex(aQ, -(rel.R.transpose() * d))};
+  auto support = [&](const Vec3& u) {
+    s = {climb_rounded(PD, aP, u, s.i), climb_rounded(QD, aQ, -(rel.R.transpose() * u), s.j)};
+    return s;
+  };
+  const double scale = std::max(aP.extent.maxCoeff(), aQ.extent.maxCoeff()) + t.norm();
+  // van den Bergen's GJK ray cast (2004) on the ray λ·d.
+  double lambda = 0;
+  Vec3 v = -approx(support(-d));  // x − (a point of M), x = 0
+  Vec3 nlast = Vec3::Zero();      // the plane of the last advance of λ
+  PairId Y[4];
+  int ny = 0;
+  bool hit = false;
+  for (int iter = 0; iter < 64; ++iter) {
+    if (v.squaredNorm() <= std::pow(0x1p-40 * scale, 2)) {
+      hit = true;
+      break;
+    }
+    const PairId p = support(v);
+    const Vec3 x = lambda * d, w = x - approx(p);
+    if (v.dot(w) > 0) {
+      if (v.dot(d) >= 0) break;  // a proposed miss: certified below
+      lambda -= v.dot(w) / v.dot(d);
+      nlast = v;
+    }
+    bool dup = false;
+    for (int k = 0; k < ny; ++k) dup = dup || Y[k] == p;
+    if (!dup && ny < 4) Y[ny++] = p;
+    Vec3 pts[4];
+    for (int k = 0; k < ny; ++k) pts[k] = lambda * d - approx(Y[k]);
+    const Closest cl = closest_double(pts, ny);
+    if (cl.mask == 0) return std::nullopt;
+    int m = 0;
+    for (int k = 0; k < ny; ++k)
+      if (cl.mask >> k & 1) Y[m++] = Y[k];
+    ny = m;
+    v = cl.v;
+    if (dup && v.squaredNorm() > std::pow(0x1p-40 * scale, 2)) break;  // no progress
+  }
+  // Exact certificates. Lifted d for the predicates.
+  auto dl = [&](auto L) { return V3<Num<decltype(L)>>{L(d[0]), L(d[1]), L(d[2])}; };
+  if (!hit) {
+    // Miss, certified by the double vectors as exact directions: v with v·d >= 0 excludes the
+    // ray beyond h_M(v)/(v·d) (all of it when v·d = 0 and h_M(v) < 0, or when h_M(v) < 0 and no
+    // advance happened); the last advance plane n (n·d < 0) excludes s < h_M(n)/(n·d). Miss iff
+    // these cover s >= 0: h_M(v)·(n·d) > h_M(n)·(v·d) (both denominators' signs known).
+    if (!v.allFinite() || v == Vec3::Zero() || !nlast.allFinite()) return std::nullopt;
+    auto exact_support = [&](const Vec3& u) {  // maximiser of u·m over M, exact
+      auto ul = [&](auto L) { return V3<Num<decltype(L)>>{L(u[0]), L(u[1]), L(u[2])}; };
+      PairId q = support(u);
+      for (bool moved = true; moved;) {
+        moved = false;
+        for (int e = aP.start[q.i]; e < aP.start[q.i + 1] && !moved; ++e) {
+          const int k = aP.nbr[e], i = q.i;
+          if (exact_sign([&](auto L) { return dot(ul(L), sub(c.pvec(L, k), c.pvec(L, i))); }) > 0) q.i = k, moved = true;
+        }
+      }
+      for (bool moved = true; moved;) {
+        moved = false;
+        for (int e = aQ.start[q.j]; e < aQ.start[q.j + 1] && !moved; ++e) {
+          const int k = aQ.nbr[e], j = q.j;
+          if (exact_sign([&](auto L) { return dot(ul(L), c.dm(L, PairId{0, k}, PairId{0, j})); }) > 0)
+            q.j = k, moved = true;
+        }
+      }
+      return q;
+    };
+    auto lift = [](const Vec3& u) {
+      return [u](auto L) { return V3<Num<decltype(L)>>{L(u[0]), L(u[1]), L(u[2])}; };
+    };
+    const auto vl = lift(v), nl = lift(nlast);
+    const PairId qv = exact_support(v);
+    const int vd = exact_sign([&](auto L) { return dot(vl(L), dl(L)); });
+    if (vd < 0) return std::nullopt;
+    if (nlast == Vec3::Zero() || vd == 0) {
+      if (exact_sign([&](auto L) { return dot(vl(L), c.m(L, qv)); }) >= 0) return std::nullopt;
+    } else {
+      if (exact_sign([&](auto L) { return dot(nl(L), dl(L)); }) >= 0) return std::nullopt;
+      const PairId qn = exact_support(nlast);
+      if (exact_sign([&](auto L) {
+            return dot(vl(L), c.m(L, qv)) * dot(nl(L), dl(L)) - dot(nl(L), c.m(L, qn)) * dot(vl(L), dl(L));
+          }) <= 0)
+        return std::nullopt;
+    }
+    Cast3 r;
+    r.distance = std::numeric_limits<double>::infinity();
+    return r;
+  }
+  if (ny == 4) {  // x on a facet of the tetrahedron (up to rounding): keep that facet
+    Vec3 pts[4];
+    for (int k = 0; k < 4; ++k) pts[k] = lambda * d - approx(Y[k]);
+    const Closest cl = closest_double(pts, 4);
+    int drop = 0;
+    for (int k = 1; k < 4; ++k)
+      if (cl.lam[k] < cl.lam[drop]) drop = k;
+    for (int k = drop; k < 3; ++k) Y[k] = Y[k + 1];
+    ny = 3;
+  }
+  if (ny != 3) return std::nullopt;  // entry through an edge or vertex of M: the DK path decides
+  const Member A = c.member(Y[0]), B = c.member(Y[1]), C = c.member(Y[2]);
+  auto n = [&](auto L) { return cross(c.dm(L, B.id, A.id), c.dm(L, C.id, A.id)); };
+  const int nd = exact_sign([&](auto L) { return dot(n(L), dl(L)); });
+  if (nd == 0) return std::nullopt;
+  const int sigma = -nd;  // n' = sigma·n faces against d: outward at the entry
+  // The line s·d crosses the closed triangle: [d, a, b], [d, b, c], [d, c, a] of one sign.
+  const Member* T[3] = {&A, &B, &C};
+  int pos = 0, neg = 0;
+  for (int k = 0; k < 3; ++k) {
+    const int sg =
+        exact_sign([&](auto L) { return dot(dl(L), cross(c.pt(L, *T[k]), c.pt(L, *T[(k + 1) % 3]))); });
+    pos += sg > 0, neg += sg < 0;
+  }
+  if (pos && neg) return std::nullopt;
+  // Entry at s >= 0: n'·a <= 0.
+  const int ha = sigma * exact_sign([&](auto L) { return dot(n(L), c.pt(L, A)); });
+  if (ha > 0) return std::nullopt;
+  // n'·m is maximal over M at the triangle: P maximises n'·p at A.i, Q' minimises n'·q' at A.j
+  // (neighbours on the plane by construction skipped).
+  Reduced X;
+  X.size = 3;
+  X.s[0] = A, X.s[1] = B, X.s[2] = C;
+  auto member = [&](int i, int j) {
+    for (int k = 0; k < 3; ++k)
+      if (X.s[k].id.i == i && X.s[k].id.j == j) return true;
+    return false;
+  };
+  auto on_plane = [&](PairId x) {
+    for (int u = 0; u < 3; ++u)
+      for (int w = 0; w < 3; ++w)
+        if (X.s[u].id.i == x.i && X.s[w].id.j == x.j && member(X.s[w].id.i, X.s[u].id.j)) return true;
+    return false;
+  };
+  for (int e = aP.start[A.id.i]; e < aP.start[A.id.i + 1]; ++e) {
+    const int k = aP.nbr[e];
+    bool zero = false;
+    for (int u = 0; u < 3 && !zero; ++u) zero = on_plane({k, X.s[u].id.j}) && on_plane({A.id.i, X.s[u].id.j});
+    if (!zero && sigma * exact_sign([&](auto L) { return dot(n(L), sub(c.pvec(L, k), c.pvec(L, A.id.i))); }) > 0)
+      return std::nullopt;
+  }
+  for (int e = aQ.start[A.id.j]; e < aQ.start[A.id.j + 1]; ++e) {
+    const int k = aQ.nbr[e];
+    bool zero = false;
+    for (int u = 0; u < 3 && !zero; ++u) zero = on_plane({X.s[u].id.i, k}) && on_plane({X.s[u].id.i, A.id.j});
+    // n'·(q'_k − q'_j) < 0 ⇔ n'·dm((·,k), (·,j)) > 0 (dm = −R(q_k − q_j))
+    if (!zero && sigma * exact_sign([&](auto L) { return dot(n(L), c.dm(L, PairId{0, k}, PairId{0, A.id.j})); }) > 0)
+      return std::nullopt;
+  }
+  // Certified: the entry is at s = (n·a)/(n·d) (in units of d), on the triangle.
+  Cast3 r;
+  r.hit = true;
+  const double na = accurate_dd([&](auto L) { return dot(n(L), c.pt(L, A)); });
+  const double ndv = accurate_dd([&](auto L) { return dot(n(L), dl(L)); });
+  const double sp = ha == 0 ? 0.0 : na / ndv;
+  r.distance = sp * d.norm();
+  const Vec3 dir = d.normalized();
+  r.translation = Rp * (r.distance * dir);
+  Vec3 nn;
+  {
+    const auto v3 = n(exact::LiftDD{});
+    for (int k = 0; k < 3; ++k) nn[k] = v3[k].hi;
+  }
+  r.normal = Rp * (sigma * nn).stableNormalized();
+  // Contact: the entry point's weights on the triangle (rounded), its P part.
+  const Vec3 x = sp * d, a = approx(A.id), b = approx(B.id), cc = approx(C.id);
+  const Vec3 nr = (b - a).cross(cc - a);
+  double l[3] = {nr.dot((b - x).cross(cc - x)), nr.dot((cc - x).cross(a - x)), nr.dot((a - x).cross(b - x))};
+  double sum = 0;
+  for (double& z : l) sum += z = std::max(0.0, z);
+  Vec3 wp = Vec3::Zero();
+  for (int k = 0; k < 3; ++k) wp += (sum > 0 ? l[k] / sum : 1.0 / 3) * PD.v[T[k]->id.i];
+  r.witness_p = r.witness_q = Rp * wp + tp_world;
+  int vp[3], vq[3], np = 0, nq = 0;
+  Vec3 wq = Vec3::Zero();
+  for (int k = 0; k < 3; ++k) {
+    wq += (sum > 0 ? l[k] / sum : 1.0 / 3) * QD.v[T[k]->id.j];
+    if (std::find(vp, vp + np, T[k]->id.i) == vp + np) vp[np++] = T[k]->id.i;
+    if (std::find(vq, vq + nq, T[k]->id.j) == vq + nq) vq[nq++] = T[k]->id.j;
+  }
+  r.feature_p = feature_of(Pp, vp, np, wp);
+  r.feature_q = feature_of(Qp, vq, nq, wq);
   return r;
 }
 
