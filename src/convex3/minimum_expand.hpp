@@ -57,7 +57,7 @@ LineExit line_exit_dk(const ConvexPolytope& P, const ConvexPolytope& Q, const Re
 /// Shape cast fast path (signed_distance3.cpp): a GJK ray cast in doubles proposes the entry
 /// triangle of pairs (or a separating plane), then exact certificates (the line crosses the
 /// triangle, its plane supports M with n·d < 0 and the entry at s >= 0; or a plane v with
-/// h_M(v) < 0 <= v·d). nullopt when a certificate fails or the entry is at an edge or vertex of
+/// h_M(v) < 0 <= v·d; or the line misses M, by exact GJK on the projection along d). nullopt when a certificate fails or the entry is at an edge or vertex of
 /// M: the caller then uses line_exit_dk. d in P's frame; result in the world frame.
 std::optional<Cast3> shape_cast_certified(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,
                                           const Vec3& d, const Eigen::Matrix3d& Rp, const Vec3& tp);

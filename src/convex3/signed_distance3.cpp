@@ -1,6 +1,8 @@
 // Exact signed distance of two posed convex polytopes: GJK (Gilbert–Johnson–Keerthi 1988; van den
 // Bergen 2003; Ericson, Real-Time Collision Detection §9.5) on the implicit M = P ⊕ (−Q') with
-// every decision an exact sign, then σ (minimum_expand.cpp) when 0 ∈ M.
+// every decision an exact sign, then σ (minimum_expand.cpp) when 0 ∈ M. The same exact pair
+// machinery also serves the shape cast's fast path (shape_cast_certified, at the end of this
+// file; cast3.cpp): a GJK ray cast in doubles whose answer is certified exactly.
 //
 // Contract (include/pendepth/depth3.hpp, Distance3): dist(0, M) when 0 ∉ M — the Euclidean
 // distance of P and Q' — with witnesses and the features that define it; 0 when 0 ∈ ∂M
@@ -111,6 +113,17 @@ struct Ctx {
   const PolytopeData& P;
   const PolytopeData& Q;
   const RelativePose& rel;
+  /// When set: every point is mapped by the linear projection π(v) = (d·d)v − (v·d)d along d
+  /// (0 ∈ π(M) ⇔ the line s·d meets M; used to certify that a cast's line misses M).
+  const Vec3* proj = nullptr;
+
+  template <class L>
+  V3<Num<L>> project(L lift, const V3<Num<L>>& v) const {
+    if (!proj) return v;
+    const V3<Num<L>> d{lift((*proj)[0]), lift((*proj)[1]), lift((*proj)[2])};
+    return sub(scale(dot(d, d), v), scale(dot(v, d), d));
+  }
+  Vec3 project(const Vec3& v) const { return proj ? Vec3(proj->squaredNorm() * v - v.dot(*proj) * *proj) : v; }
 
   template <class L>
   V3<Num<L>> qplaced(L lift, int j) const {
@@ -119,11 +132,11 @@ struct Ctx {
     for (int k = 0; k < 3; ++k)
       r[k] = lift(rel.R(k, 0)) * lift(q[0]) + lift(rel.R(k, 1)) * lift(q[1]) + lift(rel.R(k, 2)) * lift(q[2]) +
              (lift(rel.tq[k]) - lift(rel.tp[k]));
-    return r;
+    return project(lift, r);
   }
   template <class L>
   V3<Num<L>> pvec(L lift, int i) const {
-    return {lift(P.v[i][0]), lift(P.v[i][1]), lift(P.v[i][2])};
+    return project(lift, V3<Num<L>>{lift(P.v[i][0]), lift(P.v[i][1]), lift(P.v[i][2])});
   }
   template <class L>
   V3<Num<L>> m(L lift, PairId s) const {
@@ -144,17 +157,18 @@ struct Ctx {
   template <class L>
   V3<Num<L>> dm(L lift, PairId x, PairId y) const {
     V3<Num<L>> r{lift(0.0), lift(0.0), lift(0.0)};
-    if (x.i != y.i) r = sub(pvec(lift, x.i), pvec(lift, y.i));
+    if (x.i != y.i)
+      for (int k = 0; k < 3; ++k) r[k] = lift(P.v[x.i][k]) - lift(P.v[y.i][k]);
     if (x.j != y.j) {
       const Vec3 &qa = Q.v[x.j], &qb = Q.v[y.j];
       const Num<L> d0 = lift(qa[0]) - lift(qb[0]), d1 = lift(qa[1]) - lift(qb[1]), d2 = lift(qa[2]) - lift(qb[2]);
       for (int k = 0; k < 3; ++k) r[k] = r[k] - (lift(rel.R(k, 0)) * d0 + lift(rel.R(k, 1)) * d1 + lift(rel.R(k, 2)) * d2);
     }
-    return r;
+    return project(lift, r);
   }
   Member member(PairId s) const { return {s, m(LiftFl{}, s)}; }
-  Vec3 approx_p(int i) const { return P.v[i]; }
-  Vec3 approx_q(int j) const { return rel.R * Q.v[j] + (rel.tq - rel.tp); }
+  Vec3 approx_p(int i) const { return project(P.v[i]); }
+  Vec3 approx_q(int j) const { return project(Vec3(rel.R * Q.v[j] + (rel.tq - rel.tp))); }
 };
 
 // The search direction of a subset S (size 1–3, S[0] = a): a polynomial positive multiple of
@@ -317,6 +331,8 @@ template <class F>
 double accurate_dd(F&& f) {
   const exact::DD r = f(exact::LiftDD{});
   if (exact::dd_finite(r) && exact::safe_bound(r.e) <= std::abs(r.hi) * 0x1p-54) return r.hi;
+  const exact::FlX x = f(exact::LiftFlX{});  // exact zeros of float-like data (axis-aligned faces)
+  if (x.exact) return x.v;
   return exact::accurate_value(std::forward<F>(f));
 }
 
@@ -392,20 +408,23 @@ Feature3 feature_of(const ConvexPolytope& S, const int* vs, int nv, const Vec3& 
 }  // namespace
 
 // Signed distance in P's frame for Q placed by rel; result in the world frame of (Rp, tp_world).
-Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel,
-                              const Eigen::Matrix3d& Rp, const Vec3& tp_world) {
-  const PolytopeData& PD = data_of(Pp);
-  const PolytopeData& QD = data_of(Qp);
-  const VertexAdjacency& aP = vertex_adjacency(PD);
-  const VertexAdjacency& aQ = vertex_adjacency(QD);
-  const Ctx c{PD, QD, rel};
+// The exact GJK loop (see the file comment) on c's points: the final simplex reduced to S,
+// with contact = 0 ∈ conv(S). U and Ufl: S's direction.
+struct GjkResult {
+  Reduced X;
+  bool contact = false;
+};
+GjkResult gjk_loop(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacency& aQ) {
+  const PolytopeData& PD = c.P;
+  const PolytopeData& QD = c.Q;
+  const RelativePose& rel = c.rel;
   const Johnson johnson(c);
-
   // First direction: from Q' towards P (centroids).
-  Vec3 v = aP.centroid - (rel.R * aQ.centroid + (rel.tq - rel.tp));
+  Vec3 v = c.project(Vec3(aP.centroid - (rel.R * aQ.centroid + (rel.tq - rel.tp))));
   if (!v.allFinite() || v == Vec3::Zero()) v = Vec3::UnitX();
   // Support of M minimising v·m: P minimises v·p, Q' maximises v·q' = (Rᵀ v)·q.
-  auto support = [&](const Vec3& u, int i0, int j0) {
+  auto support = [&](const Vec3& u0, int i0, int j0) {
+    const Vec3 u = c.project(u0);  // u0·π(m) = π(u0)·m
     const Vec3 uq = rel.R.transpose() * u;
     return PairId{climb_rounded(PD, aP, -u, i0 >= 0 ? i0 : seed_vertex(aP, -u)),
                   climb_rounded(QD, aQ, uq, j0 >= 0 ? j0 : seed_vertex(aQ, uq))};
@@ -488,6 +507,25 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
     contact = X.contact;
   }
 
+  return {X, contact};
+}
+
+Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel,
+                              const Eigen::Matrix3d& Rp, const Vec3& tp_world) {
+  const PolytopeData& PD = data_of(Pp);
+  const PolytopeData& QD = data_of(Qp);
+  const VertexAdjacency& aP = vertex_adjacency(PD);
+  const VertexAdjacency& aQ = vertex_adjacency(QD);
+  const Ctx c{PD, QD, rel};
+
+  const GjkResult g = gjk_loop(c, aP, aQ);
+  Reduced X = g.X;
+  const bool contact = g.contact;
+  Dir U{};
+  auto set_dir = [&]() {
+    U = Dir{&c, X.size, {X.s[0], X.size > 1 ? X.s[1] : Member{}, X.size > 2 ? X.s[2] : Member{}}, X.tri_sign};
+  };
+  set_dir();
   Distance3 r;
   // Barycentric weights (rounded) of the closest point (or of 0) on S.
   std::array<double, 4> lam{1, 0, 0, 0};
@@ -550,7 +588,7 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
       for (int k = 0; k < 3; ++k)
         r[k] = exact::dd_finite(v[k]) && exact::safe_bound(v[k].e) <= std::abs(v[k].hi) * 0x1p-54
                    ? v[k].hi
-                   : exact::accurate_value([&](auto L) { return f(L)[k]; });
+                   : accurate_dd([&](auto L) { return f(L)[k]; });
       return r;
     };
     double dist;
@@ -572,7 +610,7 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
       for (int k = 0; k < 3; ++k)
         u[k] = exact::dd_finite(ud[k]) && exact::safe_bound(ud[k].e) <= std::abs(ud[k].hi) * 0x1p-54
                    ? ud[k].hi
-                   : exact::accurate_value([&](auto L) { return U(L)[k]; });
+                   : accurate_dd([&](auto L) { return U(L)[k]; });
     }
     const Vec3 nl = -u.stableNormalized();
     r.normal = Rp * nl;
@@ -699,7 +737,19 @@ std::optional<Cast3> shape_cast_certified(const ConvexPolytope& Pp, const Convex
     // ray beyond h_M(v)/(v·d) (all of it when v·d = 0 and h_M(v) < 0, or when h_M(v) < 0 and no
     // advance happened); the last advance plane n (n·d < 0) excludes s < h_M(n)/(n·d). Miss iff
     // these cover s >= 0: h_M(v)·(n·d) > h_M(n)·(v·d) (both denominators' signs known).
-    if (!v.allFinite() || v == Vec3::Zero() || !nlast.allFinite()) return std::nullopt;
+    // Failing that: the line itself misses M, certified by the exact GJK on the projection
+    // along d (0 ∉ π(M)).
+    auto line_misses = [&]() {
+      Ctx cp{PD, QD, rel};
+      cp.proj = &d;
+      return !gjk_loop(cp, aP, aQ).contact;
+    };
+    auto miss = []() {
+      Cast3 r;
+      r.distance = std::numeric_limits<double>::infinity();
+      return r;
+    };
+    if (!v.allFinite() || v == Vec3::Zero() || !nlast.allFinite()) return line_misses() ? std::optional(miss()) : std::nullopt;
     auto exact_support = [&](const Vec3& u) {  // maximiser of u·m over M, exact
       auto ul = [&](auto L) { return V3<Num<decltype(L)>>{L(u[0]), L(u[1]), L(u[2])}; };
       PairId q = support(u);
@@ -726,16 +776,16 @@ std::optional<Cast3> shape_cast_certified(const ConvexPolytope& Pp, const Convex
     const auto vl = lift(v), nl = lift(nlast);
     const PairId qv = exact_support(v);
     const int vd = exact_sign([&](auto L) { return dot(vl(L), dl(L)); });
-    if (vd < 0) return std::nullopt;
+    if (vd < 0) return line_misses() ? std::optional(miss()) : std::nullopt;
     if (nlast == Vec3::Zero() || vd == 0) {
-      if (exact_sign([&](auto L) { return dot(vl(L), c.m(L, qv)); }) >= 0) return std::nullopt;
+      if (exact_sign([&](auto L) { return dot(vl(L), c.m(L, qv)); }) >= 0) return line_misses() ? std::optional(miss()) : std::nullopt;
     } else {
-      if (exact_sign([&](auto L) { return dot(nl(L), dl(L)); }) >= 0) return std::nullopt;
+      if (exact_sign([&](auto L) { return dot(nl(L), dl(L)); }) >= 0) return line_misses() ? std::optional(miss()) : std::nullopt;
       const PairId qn = exact_support(nlast);
       if (exact_sign([&](auto L) {
             return dot(vl(L), c.m(L, qv)) * dot(nl(L), dl(L)) - dot(nl(L), c.m(L, qn)) * dot(vl(L), dl(L));
           }) <= 0)
-        return std::nullopt;
+        return line_misses() ? std::optional(miss()) : std::nullopt;
     }
     Cast3 r;
     r.distance = std::numeric_limits<double>::infinity();
