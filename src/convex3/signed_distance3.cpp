@@ -49,7 +49,6 @@
 #include <pendepth/depth3.hpp>
 
 #include "convex3/minimum_expand.hpp"
-#include "convex3/outer_hierarchy.hpp"
 #include "convex3/polytope_data.hpp"
 #include "geometry/exact.hpp"
 
@@ -348,14 +347,14 @@ RelativePose relative_pose(const Pose3& pp, const Pose3& pq) {
 }
 
 // The feature of one side spanned by the distinct vertices vs (1–3) of S on that side, all on
-// the side's support plane for U: a vertex; a true edge; else the true face containing them
-// (the support set is then a face of the polytope: combinatorial, through the faces of the
-// triangles around them), reported as its level-0 triangle around vs that best contains `wit`
-// (the side's witness in its own frame; rounded barycentric coordinates).
+// the side's support plane for U: a vertex; a true edge (its two triangles not coplanar); else
+// the true face containing them (the support set is then that face), reported as its level-0
+// triangle around vs — one whose plane holds every vertex of vs (exact orient3d on the
+// polytope's own vertices) — that best contains `wit` (the side's witness in its own frame;
+// rounded barycentric coordinates). O(Σ degrees of vs); no outer hierarchy needed.
 Feature3 feature_of(const ConvexPolytope& S, const int* vs, int nv, const Vec3& wit) {
   const PolytopeData& D = data_of(S);
   if (nv == 1) return {FeatureKind3::Vertex, vs[0]};
-  const std::vector<int>& face_of = outer_hierarchy(D).face_of_tri;
   const DKLevel& L0 = D.levels[0];
   auto around = [&](int v, auto&& f) {
     const int h0 = D.vertex_he[v];
@@ -370,31 +369,23 @@ Feature3 feature_of(const ConvexPolytope& S, const int* vs, int nv, const Vec3& 
     around(vs[0], [&](int h) {
       if (L0.target(h) == vs[1]) edge = h;
     });
-    if (edge >= 0 && face_of.at(edge / 3) != face_of.at(L0.twin[edge] / 3))
-      return {FeatureKind3::Edge, edge};
+    if (edge >= 0) {
+      const auto& T = D.tris[edge / 3];
+      const int tw = L0.twin[edge];
+      const int far = L0.fv[3 * (tw / 3) + (tw % 3 + 2) % 3];
+      if (predicates::orient3d(D.v[T[0]], D.v[T[1]], D.v[T[2]], D.v[far]) != 0) return {FeatureKind3::Edge, edge};
+    }
   }
-  // The true face around vs[0] that every other vertex of vs also touches, then its triangles
-  // around vs scored by how well they contain the witness.
-  auto touches = [&](int v, int f) {
-    bool yes = false;
-    around(v, [&](int h) { yes = yes || face_of.at(h / 3) == f; });
-    return yes;
-  };
-  int face = -1;
-  around(vs[0], [&](int h) {
-    const int f = face_of.at(h / 3);
-    if (face >= 0) return;
-    for (int l = 1; l < nv; ++l)
-      if (!touches(vs[l], f)) return;
-    face = f;
-  });
   int best = -1;
   double best_score = 0;
   for (int k = 0; k < nv; ++k)
     around(vs[k], [&](int h) {
       const int t = h / 3;
-      if (face_of.at(t) != face) return;
       const auto& T = D.tris[t];
+      for (int l = 0; l < nv; ++l)
+        if (vs[l] != T[0] && vs[l] != T[1] && vs[l] != T[2] &&
+            predicates::orient3d(D.v[T[0]], D.v[T[1]], D.v[T[2]], D.v[vs[l]]) != 0)
+          return;
       const Vec3 a = D.v[T[0]], b = D.v[T[1]], c = D.v[T[2]];
       const Vec3 n = (b - a).cross(c - a);
       const double score =
