@@ -61,6 +61,10 @@ struct Depth3 {
 /// > 0 apart (Euclidean distance), 0 touching, −σ overlapping; witness_q − witness_p =
 /// distance·normal, translation = −distance·normal brings Q into touching contact.
 /// lower_bound == upper_bound == distance (exact method: a few ulps from the exact value).
+/// Apart: witness_p ∈ feature_p of P, witness_q ∈ feature_q of Q (up to rounding); when the
+/// closest points are not unique (parallel faces or edges) any closest pair may be reported,
+/// with the vertex / edge / face of each shape that contains it. Touching: normal 0, witnesses
+/// a contact point. Overlapping: σ's answer (witness_q on the unmoved Q).
 struct Distance3 {
   double distance = 0;
   Vec3 translation{0, 0, 0};
