@@ -792,8 +792,9 @@ std::optional<Cast3> shape_cast_certified(const ConvexPolytope& Pp, const Convex
     for (int k = drop; k < 3; ++k) Y[k] = Y[k + 1];
     ny = 3;
   }
-  if (ny != 3) return std::nullopt;  // entry through an edge or vertex of M: the DK path decides
-  const Member A = c.member(Y[0]), B = c.member(Y[1]), C = c.member(Y[2]);
+  // The entry certificate for a triangle of pairs (see the file comment of cast3.cpp).
+  auto certify = [&](PairId ya, PairId yb, PairId yc) -> std::optional<Cast3> {
+  const Member A = c.member(ya), B = c.member(yb), C = c.member(yc);
   auto n = [&](auto L) { return cross(c.dm(L, B.id, A.id), c.dm(L, C.id, A.id)); };
   const int nd = exact_sign([&](auto L) { return dot(n(L), dl(L)); });
   if (nd == 0) return std::nullopt;
@@ -875,6 +876,45 @@ std::optional<Cast3> shape_cast_certified(const ConvexPolytope& Pp, const Convex
   r.feature_p = feature_of(Pp, vp, np, wp);
   r.feature_q = feature_of(Qp, vq, nq, wq);
   return r;
+  };
+  if (ny == 3)
+    if (auto r = certify(Y[0], Y[1], Y[2])) return r;
+  // Entry through an edge of M (the ray cast ends on an edge, or its triangle's plane contains
+  // d): the triangles of the candidate facets of M around each edge of the final simplex — the
+  // faces of P (Q) at a P (Q) edge, the parallelograms with the other side's neighbours.
+  auto third = [](const PolytopeData& D, const VertexAdjacency& A, int u, int w, std::vector<int>& out) {
+    for (int e = A.start[u]; e < A.start[u + 1]; ++e)
+      if (A.nbr[e] == w) {
+        const int h = A.he[e], tw = D.levels[0].twin[h];
+        out.push_back(D.levels[0].fv[3 * (h / 3) + (h % 3 + 2) % 3]);
+        out.push_back(D.levels[0].fv[3 * (tw / 3) + (tw % 3 + 2) % 3]);
+      }
+  };
+  auto complete = [&](PairId ya, PairId yb) -> std::optional<Cast3> {
+    std::vector<PairId> cand;
+    std::vector<int> t;
+    if (ya.j == yb.j) {
+      third(PD, aP, ya.i, yb.i, t);
+      for (int v : t) cand.push_back({v, ya.j});
+      for (int e = aQ.start[ya.j]; e < aQ.start[ya.j + 1]; ++e) cand.push_back({ya.i, aQ.nbr[e]}), cand.push_back({yb.i, aQ.nbr[e]});
+    } else if (ya.i == yb.i) {
+      third(QD, aQ, ya.j, yb.j, t);
+      for (int v : t) cand.push_back({ya.i, v});
+      for (int e = aP.start[ya.i]; e < aP.start[ya.i + 1]; ++e) cand.push_back({aP.nbr[e], ya.j}), cand.push_back({aP.nbr[e], yb.j});
+    } else {
+      cand = {{ya.i, yb.j}, {yb.i, ya.j}};
+    }
+    for (const PairId& yc : cand)
+      if (!(yc == ya) && !(yc == yb))
+        if (auto r = certify(ya, yb, yc)) return r;
+    return std::nullopt;
+  };
+  if (ny == 2)
+    if (auto r = complete(Y[0], Y[1])) return r;
+  if (ny == 3)
+    for (int k = 0; k < 3; ++k)
+      if (auto r = complete(Y[k], Y[(k + 1) % 3])) return r;
+  return std::nullopt;
 }
 
 }  // namespace convex3
