@@ -283,6 +283,7 @@ class Johnson {
         return dot(cross(sub(p[1], p[0]), sub(p[2], p[0])), sub(p[3], p[0]));
       };
       const int v = sgn<kExact>([&](auto L) { return D(L, -1); });
+      if (v == 0) return false;  // never for affinely independent X (guard)
       for (int t = 0; t < 4; ++t)
         if (sgn<kExact>([&](auto L) { return D(L, t); }) * v < 0) return false;
       r.contact = true;
@@ -647,11 +648,12 @@ Closest closest_double(const Vec3* pts, int n) {
         rhs[a - 1] = -pts[idx[0]].dot(pts[idx[a]] - pts[idx[0]]);
         for (int b = 1; b < k; ++b) G(a - 1, b - 1) = (pts[idx[a]] - pts[idx[0]]).dot(pts[idx[b]] - pts[idx[0]]);
       }
-      const Eigen::Block<Eigen::Matrix3d> g = G.topLeftCorner(k - 1, k - 1);
-      const Eigen::MatrixXd gm = g;
+      using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>;  // no heap
+      using SmallV = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1>;
+      const Small gm = G.topLeftCorner(k - 1, k - 1);
       const double det = gm.determinant();
       if (!(std::abs(det) > 0)) continue;
-      const Eigen::VectorXd mu = gm.fullPivLu().solve(rhs.head(k - 1));
+      const SmallV mu = gm.fullPivLu().solve(SmallV(rhs.head(k - 1)));
       lam[0] = 1;
       for (int a = 1; a < k; ++a) lam[a] = mu[a - 1], lam[0] -= mu[a - 1];
     }
