@@ -76,6 +76,11 @@
 #if PENDEPTH_BENCH_BULLET
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpa2.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkConvexCast.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
+#include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
+#include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
 #endif
 
 namespace {
@@ -866,6 +871,295 @@ void register_benchmarks() {
 
 }  // namespace lines
 
+
+// ---- signed distance of disjoint real hulls (issue 16) ----
+//   distance/pendepth       pendepth::signed_distance: exact (exact GJK + certificate)
+//   distance/bullet_gjk     Bullet float64 btGjkPairDetector + btVoronoiSimplexSolver (the path
+//                           of Bullet's collision world), btConvexHullShape with margin 0
+//   distance/bullet_gjk2    Bullet float64 btGjkEpaSolver2::Distance (margin 0)
+//   distance/fcl_ccd        FCL 0.7 fcl::distance, GST_LIBCCD (libccd's GJK), tolerance 1e-6
+//   distance/fcl_indep      FCL 0.7 fcl::distance, GST_INDEP (FCL's own GJK), tolerance 1e-6
+// Inputs: the 60 shared hulls, pairs (i, i + 7), Q rotated at random and placed at P's centroid
+// + (r_P + r_Q)·U(0.6, 1.6) in a random direction, kept when pendepth says apart (16 per pair).
+// The exact value is pendepth's (tests/oracle3/test_distance3.cpp checks it against CGAL);
+// err_max / err_median = |d − exact| over one pass before timing; failures: NaN/inf, exception
+// or relative error > kFailRel. (libccd 2.1 has no distance query: only through FCL.)
+namespace sdist {
+
+struct DistQuery {
+  int pair = 0;
+  Pose3 pose;
+  Mat3 R;
+  double exact = 0;
+  Vec3 d;                  // cast direction: towards P's centroid, perturbed (about half hit)
+  double cast_exact = 0;   // pendepth's exact time of impact (+inf: miss)
+  double cast_length = 0;  // length of the sweep given to the peers (beyond every hit)
+};
+struct DistCase {
+  std::vector<ConvexPolytope> P, Q;
+  std::vector<DistQuery> queries;
+  std::string error;
+};
+
+const DistCase& dist_case() {
+  static std::unique_ptr<DistCase> p;
+  if (p) return *p;
+  p = std::make_unique<DistCase>();
+  DistCase& c = *p;
+  std::vector<std::string> files;
+  for (const auto& e : std::filesystem::directory_iterator(std::string(PENDEPTH_SHARED_DATA) + "/hulls"))
+    if (e.path().extension() == ".obj") files.push_back(e.path().string());
+  std::sort(files.begin(), files.end());
+  std::vector<ConvexPolytope> H;
+  for (const auto& f : files) H.push_back(ConvexPolytope::hull(pendepth::read_obj_vertices(f), f));
+  if (H.size() < 8) {
+    c.error = "shared hulls not found";
+    return c;
+  }
+  auto centroid = [](const ConvexPolytope& S) {
+    Vec3 x = Vec3::Zero();
+    for (const Vec3& v : S.vertices()) x += v / double(S.size());
+    return x;
+  };
+  auto radius = [&](const ConvexPolytope& S) {
+    double r = 0;
+    const Vec3 cs = centroid(S);
+    for (const Vec3& v : S.vertices()) r = std::max(r, (v - cs).norm());
+    return r;
+  };
+  for (std::size_t i = 0; i < H.size(); ++i) c.P.push_back(H[i]), c.Q.push_back(H[(i + 7) % H.size()]);
+  std::mt19937_64 rng(0xd157);
+  std::uniform_real_distribution<double> U(0.6, 1.6);
+  const std::size_t want = 16 * H.size();
+  std::size_t attempts = 0;
+  while (c.queries.size() < want && attempts++ < 100 * want) {
+    DistQuery q;
+    q.pair = int(attempts % H.size());
+    const ConvexPolytope &P = c.P[q.pair], &Q = c.Q[q.pair];
+    const auto rot = random_rotation(rng);
+    Vec3 dir = random_in_ball(rng, 1.0);
+    if (dir.norm() < 1e-3) continue;
+    q.pose = Pose3(rot, centroid(P) - rot.toRotationMatrix() * centroid(Q) +
+                            (radius(P) + radius(Q)) * U(rng) * dir.normalized());
+    q.R = q.pose.matrix();
+    const pendepth::Distance3 d = pendepth::signed_distance(P, Pose3(), Q, q.pose);
+    if (!(d.distance > 0)) continue;
+    q.exact = d.distance;
+    q.d = (centroid(P) - q.pose.translation).normalized() + 0.5 * random_in_ball(rng, 1.0);
+    if (q.d.norm() < 1e-3) continue;
+    q.cast_exact = pendepth::shape_cast(P, Pose3(), Q, q.pose, q.d).distance;
+    q.cast_length = 4 * (radius(P) + radius(Q)) + (q.pose.translation - centroid(P)).norm();
+    c.queries.push_back(q);
+  }
+  if (c.queries.size() < want) c.error = "too few disjoint placements";
+  return c;
+}
+
+using DistFn = std::function<double(std::size_t)>;
+using DistFactory = std::function<DistFn(const DistCase&)>;
+
+DistFactory pendepth_distance() {
+  return [](const DistCase& c) -> DistFn {
+    return [&c](std::size_t i) {
+      const DistQuery& q = c.queries[i];
+      return pendepth::signed_distance(c.P[q.pair], Pose3(), c.Q[q.pair], q.pose).distance;
+    };
+  };
+}
+
+#if PENDEPTH_BENCH_BULLET
+btTransform bt_transform(const Mat3& R, const Vec3& t) {
+  return btTransform(btMatrix3x3(R(0, 0), R(0, 1), R(0, 2), R(1, 0), R(1, 1), R(1, 2), R(2, 0), R(2, 1), R(2, 2)),
+                     btVector3(t.x(), t.y(), t.z()));
+}
+DistFactory bullet_distance(bool pair_detector) {
+  return [pair_detector](const DistCase& c) -> DistFn {
+    auto hulls = std::make_shared<std::vector<std::pair<std::shared_ptr<btConvexHullShape>, std::shared_ptr<btConvexHullShape>>>>();
+    for (std::size_t k = 0; k < c.P.size(); ++k) hulls->emplace_back(bullet_hull(c.P[k]), bullet_hull(c.Q[k]));
+    return [hulls, pair_detector, &c](std::size_t i) {
+      const DistQuery& q = c.queries[i];
+      const auto& [a, b] = (*hulls)[q.pair];
+      btTransform ta;
+      ta.setIdentity();
+      const btTransform tb = bt_transform(q.R, q.pose.translation);
+      if (pair_detector) {
+        btVoronoiSimplexSolver simplex;
+        btGjkEpaPenetrationDepthSolver epa;  // only consulted on penetration (never here)
+        btGjkPairDetector gjk(a.get(), b.get(), &simplex, &epa);
+        btGjkPairDetector::ClosestPointInput in;
+        in.m_transformA = ta;
+        in.m_transformB = tb;
+        btPointCollector out;
+        gjk.getClosestPoints(in, out, nullptr);
+        return out.m_hasResult ? double(out.m_distance) : std::numeric_limits<double>::quiet_NaN();
+      }
+      btGjkEpaSolver2::sResults res;
+      const Vec3& t = q.pose.translation;
+      if (!btGjkEpaSolver2::Distance(a.get(), ta, b.get(), tb, btVector3(t.x(), t.y(), t.z()), res))
+        return std::numeric_limits<double>::quiet_NaN();
+      return double(res.distance);
+    };
+  };
+}
+#endif
+
+#if PENDEPTH_BENCH_FCL
+DistFactory fcl_distance(fcl::GJKSolverType solver) {
+  return [solver](const DistCase& c) -> DistFn {
+    auto hulls = std::make_shared<std::vector<std::pair<std::shared_ptr<fcl::Convexd>, std::shared_ptr<fcl::Convexd>>>>();
+    for (std::size_t k = 0; k < c.P.size(); ++k) hulls->emplace_back(fcl_convex(c.P[k]), fcl_convex(c.Q[k]));
+    return [hulls, solver, &c](std::size_t i) {
+      const DistQuery& q = c.queries[i];
+      const auto& [a, b] = (*hulls)[q.pair];
+      fcl::Transform3d ta = fcl::Transform3d::Identity(), tb = fcl::Transform3d::Identity();
+      tb.linear() = q.R;
+      tb.translation() = q.pose.translation;
+      fcl::DistanceRequestd req(false, false, 0, 0, 1e-6, solver);
+      fcl::DistanceResultd res;
+      fcl::distance(a.get(), ta, b.get(), tb, req, res);
+      return double(res.min_distance);
+    };
+  };
+}
+#endif
+
+void bm_distance(benchmark::State& state, DistFactory make) {
+  const DistCase& c = dist_case();
+  if (!c.error.empty()) {
+    state.SkipWithError(c.error.c_str());
+    return;
+  }
+  DistFn f = make(c);
+  std::vector<double> errs;
+  double rel_max = 0;
+  int failures = 0;
+  for (std::size_t i = 0; i < c.queries.size(); ++i) {
+    double d;
+    try {
+      d = f(i);
+    } catch (const std::exception&) {
+      ++failures;
+      continue;
+    }
+    if (!std::isfinite(d)) {
+      ++failures;
+      continue;
+    }
+    const double e = std::abs(d - c.queries[i].exact);
+    errs.push_back(e);
+    rel_max = std::max(rel_max, e / c.queries[i].exact);
+    failures += e > kFailRel * c.queries[i].exact;
+  }
+  std::sort(errs.begin(), errs.end());
+  std::size_t i = 0;
+  for (auto _ : state) {
+    try {
+      benchmark::DoNotOptimize(f(i));
+    } catch (const std::exception&) {
+    }
+    i = i + 1 == c.queries.size() ? 0 : i + 1;
+  }
+  state.counters["queries"] = double(c.queries.size());
+  state.counters["failures"] = failures;
+  state.counters["err_max"] = errs.empty() ? -1 : errs.back();
+  state.counters["err_median"] = errs.empty() ? -1 : errs[errs.size() / 2];
+  state.counters["rel_err_max"] = rel_max;
+}
+
+// ---- shape cast on the same placements (pendepth exact vs Bullet's GJK convex cast) ----
+//   cast/pendepth/hulls   pendepth::shape_cast (exact; two DK line descents)
+//   cast/bullet_gjk/hulls Bullet float64 btGjkConvexCast (GJK ray cast, van den Bergen) sweeping
+//                         Q over cast_length along d̂, margin 0; time of impact = fraction·length
+// err_max over the queries both call a hit; failures = hit/miss disagreements (Bullet's
+// default tolerances) or relative error > kFailRel.
+using CastFn = std::function<double(std::size_t)>;  // +inf for a miss
+using CastFactory = std::function<CastFn(const DistCase&)>;
+
+CastFactory pendepth_cast() {
+  return [](const DistCase& c) -> CastFn {
+    return [&c](std::size_t i) {
+      const DistQuery& q = c.queries[i];
+      return pendepth::shape_cast(c.P[q.pair], Pose3(), c.Q[q.pair], q.pose, q.d).distance;
+    };
+  };
+}
+
+#if PENDEPTH_BENCH_BULLET
+CastFactory bullet_cast() {
+  return [](const DistCase& c) -> CastFn {
+    auto hulls = std::make_shared<std::vector<std::pair<std::shared_ptr<btConvexHullShape>, std::shared_ptr<btConvexHullShape>>>>();
+    for (std::size_t k = 0; k < c.P.size(); ++k) hulls->emplace_back(bullet_hull(c.P[k]), bullet_hull(c.Q[k]));
+    return [hulls, &c](std::size_t i) {
+      const DistQuery& q = c.queries[i];
+      const auto& [a, b] = (*hulls)[q.pair];
+      btVoronoiSimplexSolver simplex;
+      btGjkConvexCast cast(b.get(), a.get(), &simplex);  // Q moves, P stays
+      btTransform ta;
+      ta.setIdentity();
+      const btTransform from = bt_transform(q.R, q.pose.translation);
+      const btTransform to = bt_transform(q.R, q.pose.translation + q.cast_length * q.d.normalized());
+      btConvexCast::CastResult res;
+      if (!cast.calcTimeOfImpact(from, to, ta, ta, res)) return std::numeric_limits<double>::infinity();
+      return double(res.m_fraction) * q.cast_length;
+    };
+  };
+}
+#endif
+
+void bm_cast(benchmark::State& state, CastFactory make) {
+  const DistCase& c = dist_case();
+  if (!c.error.empty()) {
+    state.SkipWithError(c.error.c_str());
+    return;
+  }
+  CastFn f = make(c);
+  double err_max = 0;
+  int failures = 0, hits = 0;
+  for (std::size_t i = 0; i < c.queries.size(); ++i) {
+    const double x = f(i), e = c.queries[i].cast_exact;
+    hits += std::isfinite(e);
+    if (std::isfinite(x) != std::isfinite(e)) {
+      ++failures;
+      continue;
+    }
+    if (!std::isfinite(e)) continue;
+    err_max = std::max(err_max, std::abs(x - e));
+    failures += std::abs(x - e) > kFailRel * std::max(e, 1e-300);
+  }
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(f(i));
+    i = i + 1 == c.queries.size() ? 0 : i + 1;
+  }
+  state.counters["queries"] = double(c.queries.size());
+  state.counters["hits"] = hits;
+  state.counters["failures"] = failures;
+  state.counters["err_max"] = err_max;
+}
+
+void register_benchmarks() {
+  std::vector<std::pair<std::string, DistFactory>> impls{{"pendepth", pendepth_distance()}};
+#if PENDEPTH_BENCH_BULLET
+  impls.emplace_back("bullet_gjk", bullet_distance(true));
+  impls.emplace_back("bullet_gjk2", bullet_distance(false));
+#endif
+#if PENDEPTH_BENCH_FCL
+  impls.emplace_back("fcl_ccd", fcl_distance(fcl::GST_LIBCCD));
+  impls.emplace_back("fcl_indep", fcl_distance(fcl::GST_INDEP));
+#endif
+  for (const auto& [name, make] : impls)
+    benchmark::RegisterBenchmark(("distance/" + name + "/hulls").c_str(), bm_distance, make)
+        ->Unit(benchmark::kMicrosecond);
+  std::vector<std::pair<std::string, CastFactory>> casts{{"pendepth", pendepth_cast()}};
+#if PENDEPTH_BENCH_BULLET
+  casts.emplace_back("bullet_gjk", bullet_cast());
+#endif
+  for (const auto& [name, make] : casts)
+    benchmark::RegisterBenchmark(("cast/" + name + "/hulls").c_str(), bm_cast, make)->Unit(benchmark::kMicrosecond);
+}
+
+}  // namespace sdist
+
 int main(int argc, char** argv) {
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
@@ -895,6 +1189,7 @@ int main(int argc, char** argv) {
           ->Unit(benchmark::kMicrosecond);
   register_cross();
   lines::register_benchmarks();
+  sdist::register_benchmarks();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
 }

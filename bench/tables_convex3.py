@@ -122,4 +122,21 @@ if rows:
     L.append("Median CPU time per query, the same placements and directions for the three columns. "
              "\\|P\\|, \\|Q\\|: mean hull vertices. expansion / σ < 1: σ_d faster than σ.")
 
+# Signed distance and shape cast of disjoint real hulls (issue 16): distance/<impl>/hulls, cast/<impl>/hulls.
+dist_impls = [("distance", "pendepth", "pendepth (exact)"), ("distance", "bullet_gjk", "Bullet `btGjkPairDetector`"),
+              ("distance", "bullet_gjk2", "Bullet `btGjkEpaSolver2::Distance`"), ("distance", "fcl_ccd", "FCL (libccd GJK)"),
+              ("distance", "fcl_indep", "FCL (own GJK)"), ("cast", "pendepth", "pendepth (exact)"),
+              ("cast", "bullet_gjk", "Bullet `btGjkConvexCast`")]
+if any(n.startswith("distance/") or n.startswith("cast/") for n in runs):
+    L.append("")
+    L.append("| query | implementation | CPU µs / query | time / pendepth | failures | max \\|error\\| | max rel. error |")
+    L.append("|---|---|---:|---:|---:|---:|---:|")
+    for q, k, label in dist_impls:
+        name = f"{q}/{k}/hulls"
+        if not ok(name):
+            continue
+        c = lambda key: counter(name, key)
+        L.append(f"| {q} | {label} | {fmt_t(ns(name))} | {fmt_r(ns(name), ns(f'{q}/pendepth/hulls'))} "
+                 f"| {g2(c('failures'))} | {g2(c('err_max'))} | {g2(c('rel_err_max'))} |")
+
 finish(md_path, L, res.errors(), f"{res.run_line()}, library build {res.library_build()}.")

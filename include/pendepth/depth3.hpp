@@ -61,6 +61,10 @@ struct Depth3 {
 /// > 0 apart (Euclidean distance), 0 touching, −σ overlapping; witness_q − witness_p =
 /// distance·normal, translation = −distance·normal brings Q into touching contact.
 /// lower_bound == upper_bound == distance (exact method: a few ulps from the exact value).
+/// Apart: witness_p ∈ feature_p of P, witness_q ∈ feature_q of Q (up to rounding); when the
+/// closest points are not unique (parallel faces or edges) any closest pair may be reported,
+/// with the vertex / edge / face of each shape that contains it. Touching: normal 0, witnesses
+/// a contact point. Overlapping: σ's answer (witness_q on the unmoved Q).
 struct Distance3 {
   double distance = 0;
   Vec3 translation{0, 0, 0};
@@ -73,7 +77,9 @@ struct Distance3 {
 };
 
 /// Shape cast of posed convex polytopes along d (conventions of Cast2, world frame): the
-/// smallest s >= 0 with Q + s·d̂ touching P; +infinity (hit false) when never.
+/// smallest s >= 0 with Q + s·d̂ touching P; +infinity (hit false) when never. When s = 0 and
+/// the shapes overlap, the vectors are 0 and the features None; when s = 0 and they touch,
+/// normal, witnesses and features are those of the facet of P ⊕ (−Q) through the contact.
 struct Cast3 {
   double distance = 0;
   Vec3 translation{0, 0, 0};
@@ -110,5 +116,22 @@ Depth3 minimum_depth(const ConvexPolytope& P, const Pose3& pose_p, const ConvexP
 /// InvalidInput if d is zero or non-finite (and for bad poses).
 Depth3 directional_depth(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
                          const Pose3& pose_q, const Vec3& d);
+
+/// Signed distance (Distance3): apart → the exact Euclidean distance of P and Q (within ~2 ulps),
+/// its witnesses and the features of each shape defining it (vertex / edge / face); touching →
+/// 0 (normal 0); overlapping → −σ (minimum_depth's answer, witness_q on the unmoved Q). Method:
+/// GJK on the implicit M with every decision an exact sign and an exact certificate of the
+/// final support pair (src/convex3/signed_distance3.cpp); σ when 0 ∈ M. Output-sensitive:
+/// O(k·c) for k GJK iterations and climbs of length c (a few µs on real hulls). Thread-safe.
+/// Throws InvalidInput for bad poses.
+Distance3 signed_distance(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
+                          const Pose3& pose_q);
+
+/// Shape cast (Cast3) along d (world frame): the entry of the ray s·d̂ into M, exactly, by two
+/// line descents of Compute-Depth-3D (src/convex3/cast3.cpp), O(log n · log m). A ray that
+/// only grazes M (touches ∂M without entering its interior) is reported as a miss.
+/// Throws InvalidInput if d is zero or non-finite (and for bad poses).
+Cast3 shape_cast(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q, const Pose3& pose_q,
+                 const Vec3& d);
 
 }  // namespace pendepth

@@ -272,6 +272,7 @@ class Pair3 {
   Shape3 engine_P_, engine_Q_;
   Depth3 min_engine(const Pose3& pose_p, const Pose3& pose_q) const;
   Depth3 along_engine(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const;
+  Distance3 distance_engine(const Pose3& pose_p, const Pose3& pose_q) const;
 };
 
 }  // namespace pendepth

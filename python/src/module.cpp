@@ -365,6 +365,48 @@ Result3 along3(const PyPair3& p, const py::object& translations, const py::objec
   return result3(out, single, kind);
 }
 
+// ---- 3D signed distance and shape cast (issue 16): results as SimpleNamespace of arrays ----
+/// Fields shared by Distance3 and Cast3 into numpy arrays (squeezed for a single query).
+template <class R>
+py::object distance_like(const std::vector<R>& out, bool single) {
+  const std::size_t n = out.size();
+  auto dist = scalars(n);
+  auto tr = vectors(n, 3), nr = vectors(n, 3), wp = vectors(n, 3), wq = vectors(n, 3);
+  auto fp = features(n), fq = features(n);
+  py::array_t<bool> ov(static_cast<py::ssize_t>(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    const R& r = out[i];
+    dist.mutable_data()[i] = r.distance;
+    put(tr.mutable_data(), i, r.translation);
+    put(nr.mutable_data(), i, r.normal);
+    put(wp.mutable_data(), i, r.witness_p);
+    put(wq.mutable_data(), i, r.witness_q);
+    fp.mutable_data()[2 * i] = static_cast<int>(r.feature_p.kind), fp.mutable_data()[2 * i + 1] = r.feature_p.index;
+    fq.mutable_data()[2 * i] = static_cast<int>(r.feature_q.kind), fq.mutable_data()[2 * i + 1] = r.feature_q.index;
+    ov.mutable_data()[i] = r.overlapping;
+  }
+  py::dict d;
+  d["distance"] = squeeze(dist, single);
+  d["translation"] = squeeze(tr, single);
+  d["normal"] = squeeze(nr, single);
+  d["witness_p"] = squeeze(wp, single);
+  d["witness_q"] = squeeze(wq, single);
+  d["feature_p"] = squeeze(fp, single);
+  d["feature_q"] = squeeze(fq, single);
+  d["overlapping"] = squeeze(ov, single);
+  if constexpr (requires { out[0].hit; }) {
+    py::array_t<bool> hit(static_cast<py::ssize_t>(n));
+    for (std::size_t i = 0; i < n; ++i) hit.mutable_data()[i] = out[i].hit;
+    d["hit"] = squeeze(hit, single);
+  } else {
+    auto lo = scalars(n), hi = scalars(n);
+    for (std::size_t i = 0; i < n; ++i) lo.mutable_data()[i] = out[i].lower_bound, hi.mutable_data()[i] = out[i].upper_bound;
+    d["lower_bound"] = squeeze(lo, single);
+    d["upper_bound"] = squeeze(hi, single);
+  }
+  return py::module_::import("types").attr("SimpleNamespace")(**d);
+}
+
 constexpr const char* kShape2Doc = R"(A validated 2D shape: a simple polygon, convex or not, possibly with holes.
 
 Shape2(outer, holes=[], name="shape")
@@ -881,6 +923,45 @@ and points ((p, 2): exact fits). Vertices rounded to the nearest double.)");
            "separation(translations, directions, rotations=None, threads=None, progress=False) -> Depth3Result\n\n"
            "Complete separation along d: for convex shapes the ray leaves M once, so this is sigma_d\n"
            "(along) with kind \"separation\". Raises InvalidInput for zero or non-finite directions.")
+      // ---- signed distance and shape cast (issue 16) ----
+      .def("signed_distance", [pose_batch](const PyPair3& p, const py::object& translations, const py::object& rotations,
+                                           const py::object& threads, bool progress) {
+             bool single = false;
+             std::vector<Pose3> ps = pose_batch(translations, rotations, single);
+             const unsigned th = thread_count(threads);
+             std::vector<Distance3> out(ps.size());
+             if (progress) check_poses(ps);
+             chunked(ps.size(), progress, [&](std::size_t b, std::size_t e) {
+               p.pair.signed_distance(std::span<const Pose3>(ps).subspan(b, e - b), std::span<Distance3>(out).subspan(b, e - b), th);
+             });
+             return distance_like(out, single);
+           }, py::arg("translations"), py::arg("rotations") = py::none(), py::kw_only(), py::arg("threads") = py::none(),
+           py::arg("progress") = false,
+           "signed_distance(translations, rotations=None, threads=None, progress=False) -> namespace\n\n"
+           "Exact signed distance (FCL / Drake convention): > 0 apart (Euclidean distance), 0 touching,\n"
+           "-sigma overlapping. Fields: distance, translation (moves Q into touching contact), normal\n"
+           "(from P towards Q), witness_p, witness_q (on the unmoved Q), feature_p, feature_q (kind: 0 none,\n"
+           "1 vertex, 2 edge, 3 face; index), lower_bound, upper_bound, overlapping.")
+      .def("cast", [pose_batch](const PyPair3& p, const py::object& translations, const py::object& directions,
+                                const py::object& rotations) {
+             bool single = false;
+             std::vector<Pose3> ps = pose_batch(translations, rotations, single);
+             Points<3> ds = points<3>(directions, "directions");
+             if (ds.v.size() != 1 && ds.v.size() != ps.size())
+               throw InvalidInput("cast: " + std::to_string(ds.v.size()) + " directions for " + std::to_string(ps.size()) +
+                                  " poses (give one direction, or one per pose)");
+             std::vector<Cast3> out(ps.size());
+             {
+               py::gil_scoped_release nogil;
+               for (std::size_t i = 0; i < ps.size(); ++i) out[i] = p.pair.cast(Pose3(), ps[i], ds.v[ds.v.size() == 1 ? 0 : i]);
+             }
+             return distance_like(out, single);
+           }, py::arg("translations"), py::arg("directions"), py::arg("rotations") = py::none(),
+           "cast(translations, directions, rotations=None) -> namespace\n\n"
+           "Shape cast (time of impact): the smallest s >= 0 such that Q moved by s*d/|d| touches P; inf\n"
+           "and hit False when it never does, 0 when already touching or overlapping. Fields: distance,\n"
+           "translation, normal (outward normal of P - Q at the contact), witness_p, witness_q (the\n"
+           "contact point), feature_p, feature_q, hit, overlapping.")
       .def("__repr__", [](const PyPair3& p) {
         return "<pendepth.Pair3 P='" + p.pair.P().name() + "' Q='" + p.pair.Q().name() + "'>";
       })

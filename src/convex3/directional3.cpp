@@ -63,6 +63,7 @@
 // vertices unless the DK build stops early) are solved by brute force, O(size²).
 // Most of the cost is the constant×constant subproblems, then the walks (times and profile in
 // docs/benchmarks.md).
+#include "convex3/minimum_expand.hpp"
 #include "convex3/minkowski_facets.hpp"
 #include "convex3/polytope_data.hpp"
 #include "geometry/exact.hpp"
@@ -1333,6 +1334,62 @@ Depth3 directional_depth_dk(const ConvexPolytope& Pp, const Pose3& pose_p, const
   r.normal = Rp * dir;
   r.facet_normal = Rp * u;
   r.witness_p = r.witness_q = Rp * w + pose_p.translation;
+  return r;
+}
+
+
+// The exit of the line {s·d} from M for a shape cast (cast3.cpp): the same descent as
+// directional_depth_dk along +d, without the overlap test. See LineExit (minimum_expand.hpp).
+LineExit line_exit_dk(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& pose,
+                      const Vec3& d_local) {
+  // Scale d by a power of two (exact) so that its products neither overflow nor underflow.
+  int ex = 0;
+  std::frexp(d_local.cwiseAbs().maxCoeff(), &ex);
+  const Vec3 d = Vec3(std::ldexp(d_local.x(), -ex), std::ldexp(d_local.y(), -ex), std::ldexp(d_local.z(), -ex));
+  int big = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::abs(d[i]) > std::abs(d[big])) big = i;
+  Ctx c{convex3::data_of(Pp), convex3::data_of(Qp), pose, {}, 0};
+  if (small_cache().map.size() > SmallCache::kMaxEntries) small_cache().map.clear();
+  const Small& topP = cached_top(c, false);
+  const Small& topQ = cached_top(c, true);
+  Query q{c, topP, topQ, {}, {}, {}};
+  c.dv[0] = d;
+  c.dv[1] = Vec3::Unit((big + 1) % 3);
+  c.dv[2] = Vec3::Unit((big + 2) % 3);
+  const State st = q.descend(Side{true, 0, nullptr}, Side{true, 0, nullptr});
+  LineExit r;
+  if (!st.hit) return r;
+  r.hit = true;
+  const Cand& k = st.cand;
+  r.h_sign = exact_sign([&](auto L) { return cand_n(c, k, L, 0); });
+  // u·d > 0 for the exit facet of a line that meets int M (proof in the header).
+  const double t = r.h_sign == 0 ? 0.0
+                                 : exact::accurate_ratio([&](auto L) { return cand_n(c, k, L, 0); },
+                                                         [&](auto L) { return cand_d(c, k, L, 0); });
+  r.exit = t * d.norm();
+  const Vec3 v = t * d;
+  auto uf = cand_u(c, k, exact::LiftFl{});
+  r.unit = Vec3(uf[0].v, uf[1].v, uf[2].v).normalized();
+  auto U = [&](auto L) { return cand_u(c, k, L); };
+  if (k.kind == Cand::FaceX) {
+    r.feature_p = {FeatureKind3::Face, face_in_plane(c, false, k.x, U)};
+    r.feature_q = {FeatureKind3::Vertex, k.ys};
+  } else if (k.kind == Cand::FaceY) {
+    r.feature_p = {FeatureKind3::Vertex, k.xs};
+    r.feature_q = {FeatureKind3::Face, face_in_plane(c, true, k.y, U)};
+  } else {
+    int hp = edge_he(c.P, k.x[0], k.x[1]), hq = edge_he(c.Q, k.y[0], k.y[1]);
+    r.feature_p = hp >= 0 ? Feature3{FeatureKind3::Edge, hp} : Feature3{FeatureKind3::Face, face_in_plane(c, false, k.x, U)};
+    r.feature_q = hq >= 0 ? Feature3{FeatureKind3::Edge, hq} : Feature3{FeatureKind3::Face, face_in_plane(c, true, k.y, U)};
+  }
+  std::vector<Vec3> fp, fq;
+  const bool fx = k.kind != Cand::FaceY, fy = k.kind != Cand::FaceX;
+  for (int i : plane_face(c, false, k.xs, {fx ? k.x[0] : -1, fx ? k.x[1] : -1, fx ? k.x[2] : -1}, U))
+    fp.push_back(Pp[i]);
+  for (int j : plane_face(c, true, k.ys, {fy ? k.y[0] : -1, fy ? k.y[1] : -1, fy ? k.y[2] : -1}, U))
+    fq.push_back(pose.place(Qp[j]) + v);
+  r.contact = contact_point(fp, fq, r.unit);
   return r;
 }
 

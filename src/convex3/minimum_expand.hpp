@@ -38,6 +38,35 @@ Depth3 directional_depth_expand(const ConvexPolytope& P, const Pose3& pose_p, co
 Depth3 directional_depth_dk(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
                             const Pose3& pose_q, const Vec3& d);
 
+/// The exit of the line {s·d : s real} (P's frame, d finite and non-zero) from M, by the
+/// descent of Compute-Depth-3D (directional3.cpp) on the line made generic by its Simulation of
+/// Simplicity: hit = the perturbed line meets int M; then the exit facet u (u·d > 0, a
+/// supporting plane of M), h_sign = exact sign of h_M(u) (the exit lies at s >= 0 iff h_sign
+/// >= 0), exit = h_M(u)·|d|/(u·d) (few ulps; 0 when h_sign = 0), the features of M's facet and
+/// a contact point of P and Q' + exit·d̂ (P's frame). O(log n · log m).
+struct LineExit {
+  bool hit = false;
+  int h_sign = 0;
+  double exit = 0;
+  Vec3 unit{0, 0, 0};
+  Feature3 feature_p, feature_q;
+  Vec3 contact{0, 0, 0};
+};
+LineExit line_exit_dk(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel, const Vec3& d);
+
+/// Shape cast fast path (signed_distance3.cpp): a GJK ray cast in doubles proposes the entry
+/// triangle of pairs (or a separating plane), then exact certificates (the line crosses the
+/// triangle, its plane supports M with n·d < 0 and the entry at s >= 0; or a plane v with
+/// h_M(v) < 0 <= v·d; or the line misses M, by exact GJK on the projection along d). nullopt when a certificate fails or the entry is at an edge or vertex of
+/// M: the caller then uses line_exit_dk. d in P's frame; result in the world frame.
+std::optional<Cast3> shape_cast_certified(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,
+                                          const Vec3& d, const Eigen::Matrix3d& Rp, const Vec3& tp);
+
+/// Signed distance (signed_distance3.cpp) for Q placed by `rel`, result in the world frame of
+/// P's pose (Rp, tp).
+Distance3 signed_distance_gjk(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,
+                              const Eigen::Matrix3d& Rp, const Vec3& tp);
+
 /// The work budget of the expansion in pendepth::directional_depth, O(log n · log m): beyond it
 /// the query is answered by Compute-Depth-3D (so the bound of DHS Theorem 5.6 holds). The
 /// constants are set from the measured work (docs/benchmarks.md): typical queries use a small

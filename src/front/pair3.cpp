@@ -174,4 +174,64 @@ void Pair3::along(const Pose3& pose_p, std::span<const Pose3> poses_q, std::span
                       [&](std::size_t i) { out[i] = along_engine(pose_p, poses_q[i], ds[one ? 0 : i]); });
 }
 
+// ---- Signed distance and shape cast (issue 16; src/convex3/signed_distance3.cpp, cast3.cpp) ----
+// The same numeric domain as σ and σ_d: the engines see the shapes and translations scaled by
+// 2^-scale_exp_, every length and point of the answer is scaled back.
+namespace {
+
+Distance3 distance_answer(const front::Scale& scale, Distance3 r) {
+  if (scale.identity()) return r;
+  r.distance = scale.length(r.distance);
+  r.lower_bound = scale.length(r.lower_bound);
+  r.upper_bound = scale.length(r.upper_bound);
+  r.translation = scale.vec(r.translation);
+  r.witness_p = scale.vec(r.witness_p);
+  r.witness_q = scale.vec(r.witness_q);
+  return r;
+}
+
+Cast3 cast_answer(const front::Scale& scale, Cast3 r) {
+  if (scale.identity()) return r;
+  r.distance = scale.length(r.distance);  // +infinity stays
+  r.translation = scale.vec(r.translation);
+  r.witness_p = scale.vec(r.witness_p);
+  r.witness_q = scale.vec(r.witness_q);
+  return r;
+}
+
+}  // namespace
+
+Distance3 Pair3::distance_engine(const Pose3& pose_p, const Pose3& pose_q) const {
+  const front::Scale scale{scale_exp_};
+  return distance_answer(scale, pendepth::signed_distance(engine_P_.polytope(), engine_pose(scale, pose_p, "pose of P"),
+                                                          engine_Q_.polytope(), engine_pose(scale, pose_q, "pose of Q")));
+}
+
+Distance3 Pair3::signed_distance(const Pose3& pose_p, const Pose3& pose_q) const {
+  check_pose(pose_p, "pose of P");
+  check_pose(pose_q, "pose of Q");
+  return distance_engine(pose_p, pose_q);
+}
+
+void Pair3::signed_distance(std::span<const Pose3> poses_q, std::span<Distance3> out, unsigned threads) const {
+  signed_distance(Pose3(), poses_q, out, threads);
+}
+
+void Pair3::signed_distance(const Pose3& pose_p, std::span<const Pose3> poses_q, std::span<Distance3> out,
+                            unsigned threads) const {
+  check_pose(pose_p, "pose of P");
+  check_poses(poses_q, out.size(), scale_exp_);
+  engine_pose(front::Scale{scale_exp_}, pose_p, "pose of P");
+  front::parallel_for(poses_q.size(), threads, [&](std::size_t i) { out[i] = distance_engine(pose_p, poses_q[i]); });
+}
+
+Cast3 Pair3::cast(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const {
+  check_pose(pose_p, "pose of P");
+  check_pose(pose_q, "pose of Q");
+  front::check_direction(d);
+  const front::Scale scale{scale_exp_};
+  return cast_answer(scale, shape_cast(engine_P_.polytope(), engine_pose(scale, pose_p, "pose of P"),
+                                       engine_Q_.polytope(), engine_pose(scale, pose_q, "pose of Q"), d));
+}
+
 }  // namespace pendepth

@@ -9,6 +9,7 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_hull_3.h>
+#include <CGAL/squared_distance_3.h>
 #include <gmpxx.h>
 #include <mpfr.h>
 
@@ -108,6 +109,7 @@ struct ExactHull::Impl {
   std::vector<Q3> v;                        // hull vertices, exact
   std::vector<Plane> planes;                // one per triangle
   std::vector<std::pair<int, int>> edges;   // vertex index pairs
+  std::vector<std::array<int, 3>> tris;     // one per plane, CCW from outside
 
   explicit Impl(const std::vector<Q3>& pts) {
     std::vector<Point> cp;
@@ -129,6 +131,7 @@ struct ExactHull::Impl {
         if (k == 3) throw std::logic_error("oracle3: non-triangular hull face");
         t[k++] = id[vi];
       }
+      tris.push_back(t);
       Plane pl;
       pl.u = cross(sub(v[t[1]], v[t[0]]), sub(v[t[2]], v[t[0]]));  // CCW from outside
       pl.h = dot(pl.u, v[t[0]]);
@@ -284,6 +287,53 @@ std::vector<Vec3> ExactDifference::boundary_doubles() const {
     push(m);
   }
   return out;
+}
+
+
+double ExactDifference::signed_distance() const {
+  const auto& I = m_->impl();
+  Answer a;
+  if (locate(I.planes, a)) return -sigma().depth;
+  if (a.on_boundary) return 0;
+  // 0 outside: the exact minimum over M's boundary triangles of the squared distance (CGAL, Epeck).
+  const Point o(0, 0, 0);
+  auto pt = [&](int k) { return Point(FT(to_et(I.v[k][0])), FT(to_et(I.v[k][1])), FT(to_et(I.v[k][2]))); };
+  bool have = false;
+  mpq_class best;
+  for (const auto& t : I.tris) {
+    const FT d2 = CGAL::squared_distance(o, K::Triangle_3(pt(t[0]), pt(t[1]), pt(t[2])));
+    const mpq_class q = to_mpq(CGAL::exact(d2));
+    if (!have || q < best) best = q, have = true;
+  }
+  return sqrt_to_double(best);
+}
+
+CastAnswer ExactDifference::cast(const Vec3& d) const {
+  const auto& planes = m_->impl().planes;
+  const Q3 e = exact(d);
+  // The ray s·d (s >= 0) lies in u·x <= h for s in [lo, hi] per plane; intersect.
+  mpq_class lo = 0, hi;
+  bool bounded = false, strict = true;
+  for (const auto& pl : planes) {
+    const mpq_class ud = dot(pl.u, e);
+    if (sgn(ud) == 0) {
+      if (sgn(pl.h) < 0) return {};
+      if (sgn(pl.h) == 0) strict = false;
+      continue;
+    }
+    const mpq_class s = pl.h / ud;
+    if (sgn(ud) < 0) {
+      if (s > lo) lo = s;
+    } else if (!bounded || s < hi) {
+      hi = s, bounded = true;
+    }
+  }
+  if (!bounded || lo > hi) return {};
+  CastAnswer r;
+  r.hit = true;
+  r.grazing = !strict || lo == hi;
+  r.distance = sqrt_to_double(lo * lo * dot(e, e));
+  return r;
 }
 
 }  // namespace oracle3

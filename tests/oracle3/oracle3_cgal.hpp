@@ -20,6 +20,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <limits>
 #include <memory>
 #include <span>
 #include <vector>
@@ -61,6 +62,13 @@ class ExactHull {
   std::unique_ptr<Impl> impl_;
 };
 
+/// Shape-cast answer: hit ⇔ the ray meets M; distance = entry parameter·|d| (0 when 0 ∈ M),
+/// correctly rounded; grazing ⇔ the ray meets M but not its interior.
+struct CastAnswer {
+  bool hit = false, grazing = false;
+  double distance = std::numeric_limits<double>::infinity();
+};
+
 /// M = hull(P) ⊕ (−hull(Q')) with Q' = R Q + tq − tp exactly.
 class ExactDifference {
  public:
@@ -76,6 +84,11 @@ class ExactDifference {
   /// Vertices of M that are exactly doubles, and midpoints of M's edges that are exactly doubles
   /// (every point returned lies exactly on ∂M).
   std::vector<Vec3> boundary_doubles() const;
+  /// Signed distance of 0 to M, correctly rounded: dist(0, M) > 0 when 0 ∉ M (the exact minimum
+  /// of CGAL::squared_distance over M's boundary triangles), 0 on ∂M, −σ when 0 ∈ int M.
+  double signed_distance() const;
+  /// The ray s·d (s >= 0, d in P's frame): entry into M (exact).
+  CastAnswer cast(const Vec3& d) const;
 
  private:
   std::unique_ptr<ExactHull> m_;

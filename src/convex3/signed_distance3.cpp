@@ -1,0 +1,929 @@
+// Exact signed distance of two posed convex polytopes: GJK (Gilbert–Johnson–Keerthi 1988; van den
+// Bergen 2003; Ericson, Real-Time Collision Detection §9.5) on the implicit M = P ⊕ (−Q') with
+// every decision an exact sign, then σ (minimum_expand.cpp) when 0 ∈ M. The same exact pair
+// machinery also serves the shape cast's fast path (shape_cast_certified, at the end of this
+// file; cast3.cpp): a GJK ray cast in doubles whose answer is certified exactly.
+//
+// Contract (include/pendepth/depth3.hpp, Distance3): dist(0, M) when 0 ∉ M — the Euclidean
+// distance of P and Q' — with witnesses and the features that define it; 0 when 0 ∈ ∂M
+// (touching); −σ when 0 ∈ int M.
+//
+// Notation as in minimum_expand.cpp: P fixed, Q' = R Q + tq − tp (exact semantics for the double
+// R, tq, tp), a point of M kept symbolically as a pair (i, j): m = p_i − q'_j. The simplex X holds
+// at most 4 affinely independent pairs and the closest point w of conv(X) to 0, written
+// w = Σ_{k∈S} λ_k m_k with λ > 0 on the subset S.
+//
+// Why the answer is exact:
+//  * Closest point of conv(X) (Johnson's sub-algorithm, exact): a subset S of X is accepted iff
+//    its barycentric coordinates of the projection of 0 onto aff(S) are all > 0 (exact signs of
+//    dets: λ_a ∝ n·(b × c) for a triangle, λ_b ∝ −a·(b − a) for a segment) and every other point
+//    y of X satisfies w_S·(y − a) ≥ 0. Then w_S ∈ conv(X) and conv(X) lies in the half-space
+//    {w_S·x ≥ |w_S|²}: w_S is the closest point. Exactly one S passes (the face whose relative
+//    interior holds the closest point). If w_S = 0 exactly (0 on aff(S) inside conv(S), or 0
+//    inside the tetrahedron) then 0 ∈ M: σ (minimum_expand.cpp) tells overlap (−σ) from touching
+//    (0). The direction U is a polynomial positive multiple of w_S: m_a (vertex),
+//    |e|² a − (a·e) e (segment, e = b − a), ±n with n = (b − a) × (c − a) (triangle, the sign of
+//    n·a).
+//  * Support: i minimising U·p over P and j maximising U·q' over Q' (so m_ij minimises U·m over
+//    M). Hill climbing in doubles from the previous answer proposes (i, j); if m_ij is strictly
+//    closer than the plane (exact sign of U·(m_ij − a) < 0) it joins X — the distance strictly
+//    decreases, so no simplex repeats and the loop ends. Otherwise (i, j) is certified by an
+//    exact climb: on a convex polytope a vertex with no strictly better neighbour (exact signs
+//    over the level-0 adjacency, flat-facet diagonals included) is a global optimum. If the
+//    certified pair is still not strictly closer, then M ⊂ {U·x ≥ U·w_S}: dist(0, M) ≥ |w_S|,
+//    and w_S ∈ conv(X) ⊂ M gives equality.
+//  * Value: |w_S| = |m_a|, |e × a|/|e| or |n·a|/|n|, every polynomial (coordinates of m_a,
+//    e × a, e, n, and n·a) evaluated to ~1 ulp (double-double, exact tiers when its bound fails),
+//    norms by stableNorm, one division: within ~3 ulps (1 ulp measured against CGAL).
+// Predicates: each sign is first evaluated from the simplex points cached as doubles with a
+// rigorous error bound (exact::Fl), then exact::exact_sign (double-double, expansions, GMP).
+//
+// Result: witnesses = Σ λ_k p_{i_k} and Σ λ_k q'_{j_k} (λ rounded), normal = −U/|U| (from P
+// towards Q), features = the distinct P (Q) vertices of S: one vertex, an edge (a level-0
+// half-edge; a flat-facet diagonal is reported as a face), or a face (a level-0 triangle in
+// the support plane containing the witness, up to rounding).
+// Complexity: O(k·(c + 1)) for k GJK iterations (a handful on real hulls; at most the number of
+// simplices of M in theory) and c the climb lengths (O(1) from warm starts). DEPARTURE from the
+// O(log n · log m) DK separation of DHS §5: GJK is output-sensitive like σ's expansion, and an
+// order of magnitude faster on hulls of up to hundreds of vertices (docs/benchmarks.md).
+#include <pendepth/depth3.hpp>
+
+#include "convex3/minimum_expand.hpp"
+#include "convex3/polytope_data.hpp"
+#include "geometry/exact.hpp"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <limits>
+#include <optional>
+#include <cmath>
+#include <type_traits>
+
+namespace pendepth {
+
+namespace convex3 {
+
+namespace {
+
+using exact::exact_sign;
+using exact::Fl;
+using exact::LiftFl;
+
+template <class T>
+using V3 = std::array<T, 3>;
+template <class L>
+using Num = decltype(std::declval<L>()(0.0));
+
+template <class T>
+V3<T> cross(const V3<T>& a, const V3<T>& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+template <class T>
+T dot(const V3<T>& a, const V3<T>& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+template <class T>
+V3<T> sub(const V3<T>& a, const V3<T>& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+template <class T>
+V3<T> scale(const T& s, const V3<T>& a) {
+  return {s * a[0], s * a[1], s * a[2]};
+}
+
+// Plain doubles: the rounded guess of Johnson's sub-algorithm (verified exactly afterwards).
+struct LiftD {
+  double operator()(double x) const { return x; }
+};
+
+struct PairId {
+  int i = -1, j = -1;
+  friend bool operator==(const PairId&, const PairId&) = default;
+};
+
+// A simplex point: its pair, and its coordinates as Fl (value + rigorous error bound).
+struct Member {
+  PairId id;
+  V3<Fl> fl;
+};
+
+struct Ctx {
+  const PolytopeData& P;
+  const PolytopeData& Q;
+  const RelativePose& rel;
+  /// When set: every point is mapped by the linear projection π(v) = (d·d)v − (v·d)d along d
+  /// (0 ∈ π(M) ⇔ the line s·d meets M; used to certify that a cast's line misses M).
+  const Vec3* proj = nullptr;
+
+  template <class L>
+  V3<Num<L>> project(L lift, const V3<Num<L>>& v) const {
+    if (!proj) return v;
+    const V3<Num<L>> d{lift((*proj)[0]), lift((*proj)[1]), lift((*proj)[2])};
+    return sub(scale(dot(d, d), v), scale(dot(v, d), d));
+  }
+  Vec3 project(const Vec3& v) const { return proj ? Vec3(proj->squaredNorm() * v - v.dot(*proj) * *proj) : v; }
+
+  template <class L>
+  V3<Num<L>> qplaced(L lift, int j) const {
+    const Vec3& q = Q.v[j];
+    V3<Num<L>> r;
+    for (int k = 0; k < 3; ++k)
+      r[k] = lift(rel.R(k, 0)) * lift(q[0]) + lift(rel.R(k, 1)) * lift(q[1]) + lift(rel.R(k, 2)) * lift(q[2]) +
+             (lift(rel.tq[k]) - lift(rel.tp[k]));
+    return project(lift, r);
+  }
+  template <class L>
+  V3<Num<L>> pvec(L lift, int i) const {
+    return project(lift, V3<Num<L>>{lift(P.v[i][0]), lift(P.v[i][1]), lift(P.v[i][2])});
+  }
+  template <class L>
+  V3<Num<L>> m(L lift, PairId s) const {
+    return sub(pvec(lift, s.i), qplaced(lift, s.j));
+  }
+  // A member's point: the cached Fl in the first tier, recomputed in the others.
+  template <class L>
+  V3<Num<L>> pt(L lift, const Member& x) const {
+    if constexpr (std::is_same_v<L, LiftFl>)
+      return x.fl;
+    else if constexpr (std::is_same_v<L, LiftD>)
+      return {x.fl[0].v, x.fl[1].v, x.fl[2].v};
+    else
+      return m(lift, x.id);
+  }
+  // m_x − m_y written structurally: p_x − p_y (same j), −R(q_x − q_y) (same i), or both; the
+  // same exact value with a smaller degree and tighter filter bounds.
+  template <class L>
+  V3<Num<L>> dm(L lift, PairId x, PairId y) const {
+    V3<Num<L>> r{lift(0.0), lift(0.0), lift(0.0)};
+    if (x.i != y.i)
+      for (int k = 0; k < 3; ++k) r[k] = lift(P.v[x.i][k]) - lift(P.v[y.i][k]);
+    if (x.j != y.j) {
+      const Vec3 &qa = Q.v[x.j], &qb = Q.v[y.j];
+      const Num<L> d0 = lift(qa[0]) - lift(qb[0]), d1 = lift(qa[1]) - lift(qb[1]), d2 = lift(qa[2]) - lift(qb[2]);
+      for (int k = 0; k < 3; ++k) r[k] = r[k] - (lift(rel.R(k, 0)) * d0 + lift(rel.R(k, 1)) * d1 + lift(rel.R(k, 2)) * d2);
+    }
+    return project(lift, r);
+  }
+  Member member(PairId s) const { return {s, m(LiftFl{}, s)}; }
+  Vec3 approx_p(int i) const { return project(P.v[i]); }
+  Vec3 approx_q(int j) const { return project(Vec3(rel.R * Q.v[j] + (rel.tq - rel.tp))); }
+};
+
+// The search direction of a subset S (size 1–3, S[0] = a): a polynomial positive multiple of
+// the closest point w_S of aff(S) to 0 (tri_sign = sign of n·a for a triangle).
+struct Dir {
+  const Ctx* c;
+  int size = 1;
+  Member s[3];
+  int tri_sign = 1;
+
+  template <class L>
+  V3<Num<L>> operator()(L lift) const {
+    auto a = c->pt(lift, s[0]);
+    if (size == 1) return a;
+    auto e = c->dm(lift, s[1].id, s[0].id);
+    if (size == 2) return sub(scale(dot(e, e), a), scale(dot(a, e), e));
+    auto n = cross(e, c->dm(lift, s[2].id, s[0].id));
+    return tri_sign > 0 ? n : V3<Num<L>>{-n[0], -n[1], -n[2]};
+  }
+};
+
+// Exact sign of U·(x − y) given lazily: f(lift) returns the vector x − y.
+template <class F>
+int dir_sign(const Dir& U, const V3<Fl>& Ufl, F&& diff) {
+  const int s = exact::certified_sign(dot(Ufl, diff(LiftFl{})));
+  if (s != 2) return s;
+  return exact_sign([&](auto L) { return dot(U(L), diff(L)); });
+}
+
+// Rounded steepest ascent of u·v from v (a proposal; certified later).
+int climb_rounded(const PolytopeData& d, const VertexAdjacency& a, const Vec3& u, int v) {
+  double bv = u.dot(d.v[v]);
+  for (;;) {
+    int next = -1;
+    for (int e = a.start[v]; e < a.start[v + 1]; ++e)
+      if (double s = u.dot(d.v[a.nbr[e]]); s > bv) bv = s, next = a.nbr[e];
+    if (next < 0) return v;
+    v = next;
+  }
+}
+
+// Result of the closest-point step on X ∪ {new}.
+struct Reduced {
+  bool contact = false;  // 0 ∈ conv(S): 0 ∈ M
+  int size = 0;
+  Member s[4];
+  int tri_sign = 1;
+};
+
+// Exact sign of the barycentric numerators and the tests of Johnson's sub-algorithm.
+class Johnson {
+ public:
+  explicit Johnson(const Ctx& c) : c_(c) {}
+
+  // The closest point of conv(X) to 0 for affinely independent X (size 1–4, X[last] newest).
+  Reduced reduce(const Member* X, int n) const {
+    // Subsets as bit masks, those holding the newest point first, smallest first.
+    const int all = (1 << n) - 1, newest = 1 << (n - 1);
+    // A guess in doubles, verified exactly; the exact enumeration only when the guess fails.
+    for (int size = 1; size <= n; ++size)
+      for (int mask = 1; mask <= all; ++mask) {
+        if (std::popcount(static_cast<unsigned>(mask)) != size || !(mask & newest)) continue;
+        Reduced r;
+        if (accept<false>(X, n, mask, r)) {
+          if (accept<true>(X, n, mask, r)) return r;
+          size = n + 1;
+          break;
+        }
+      }
+    for (int pass = 0; pass < 2; ++pass)
+      for (int size = 1; size <= n; ++size)
+        for (int mask = 1; mask <= all; ++mask) {
+          if (std::popcount(static_cast<unsigned>(mask)) != size) continue;
+          if (((mask & newest) != 0) != (pass == 0)) continue;
+          Reduced r;
+          if (accept<true>(X, n, mask, r)) return r;
+        }
+    // Unreachable for affinely independent X (exactly one face holds the closest point).
+    Reduced r;
+    r.size = 1;
+    r.s[0] = X[n - 1];
+    return r;
+  }
+
+ private:
+  const Ctx& c_;
+
+  template <bool kExact, class F>
+  static int sgn(F&& f) {
+    if constexpr (kExact) {
+      return exact_sign(std::forward<F>(f));
+    } else {
+      const double v = f(LiftD{});
+      return (v > 0) - (v < 0);
+    }
+  }
+
+  template <bool kExact>
+  bool accept(const Member* X, int nx, int mask, Reduced& r) const {
+    int idx[4] = {}, k = 0, out[4] = {}, o = 0;
+    for (int b = 0; b < nx; ++b) (mask >> b & 1 ? idx[k++] : out[o++]) = b;
+    const Member* S[4] = {};
+    for (int t = 0; t < k; ++t) S[t] = &X[idx[t]];
+    r.size = k;
+    for (int t = 0; t < k; ++t) r.s[t] = *S[t];
+    auto P = [&](auto L, const Member* x) { return c_.pt(L, *x); };
+    auto D = [&](auto L, const Member* x, const Member* y) { return c_.dm(L, x->id, y->id); };
+    if (k == 4) {  // 0 inside the tetrahedron (closed): contact
+      auto D = [&](auto L, int replace) {
+        V3<Num<decltype(L)>> p[4];
+        for (int t = 0; t < 4; ++t)
+          p[t] = t == replace ? V3<Num<decltype(L)>>{L(0.0), L(0.0), L(0.0)} : P(L, S[t]);
+        return dot(cross(sub(p[1], p[0]), sub(p[2], p[0])), sub(p[3], p[0]));
+      };
+      const int v = sgn<kExact>([&](auto L) { return D(L, -1); });
+      if (v == 0) return false;  // never for affinely independent X (guard)
+      for (int t = 0; t < 4; ++t)
+        if (sgn<kExact>([&](auto L) { return D(L, t); }) * v < 0) return false;
+      r.contact = true;
+      return true;
+    }
+    if (k == 1) {
+      auto a = [&](auto L) { return P(L, S[0]); };
+      bool zero = true;
+      for (int t = 0; t < 3 && zero; ++t) zero = sgn<kExact>([&](auto L) { return a(L)[t]; }) == 0;
+      if (zero) return r.contact = true;
+      for (int t = 0; t < o; ++t)
+        if (sgn<kExact>([&](auto L) { return dot(a(L), D(L, &X[out[t]], S[0])); }) < 0) return false;
+      return true;
+    }
+    if (k == 2) {
+      // λ_a ∝ b·(b − a), λ_b ∝ −a·(b − a).
+      if (sgn<kExact>([&](auto L) { return dot(P(L, S[1]), D(L, S[1], S[0])); }) <= 0) return false;
+      if (sgn<kExact>([&](auto L) { return dot(P(L, S[0]), D(L, S[1], S[0])); }) >= 0) return false;
+      bool zero = true;  // 0 on the segment's line: e × a = 0
+      for (int t = 0; t < 3 && zero; ++t)
+        zero = sgn<kExact>([&](auto L) { return cross(D(L, S[1], S[0]), P(L, S[0]))[t]; }) == 0;
+      if (zero) return r.contact = true;
+      Dir U{&c_, 2, {*S[0], *S[1], {}}, 1};
+      for (int t = 0; t < o; ++t)
+        if (sgn<kExact>([&](auto L) { return dot(U(L), D(L, &X[out[t]], S[0])); }) < 0) return false;
+      return true;
+    }
+    // k == 3: λ_a ∝ n·(b × c), λ_b ∝ n·(c × a), λ_c ∝ n·(a × b).
+    auto n = [&](auto L) { return cross(D(L, S[1], S[0]), D(L, S[2], S[0])); };
+    for (int t = 0; t < 3; ++t)
+      if (sgn<kExact>([&](auto L) { return dot(n(L), cross(P(L, S[(t + 1) % 3]), P(L, S[(t + 2) % 3]))); }) <= 0)
+        return false;
+    const int h = sgn<kExact>([&](auto L) { return dot(n(L), P(L, S[0])); });
+    if (h == 0) return r.contact = true;
+    r.tri_sign = h;
+    for (int t = 0; t < o; ++t)
+      if (h * sgn<kExact>([&](auto L) { return dot(n(L), D(L, &X[out[t]], S[0])); }) < 0) return false;
+    return true;
+  }
+};
+
+// f's value within ~1 ulp: double-double first (the formulas here are of high degree, so the
+// plain floating tier of exact::accurate_value almost never certifies), then exact tiers.
+template <class F>
+double accurate_dd(F&& f) {
+  const exact::DD r = f(exact::LiftDD{});
+  if (exact::dd_finite(r) && exact::safe_bound(r.e) <= std::abs(r.hi) * 0x1p-54) return r.hi;
+  const exact::FlX x = f(exact::LiftFlX{});  // exact zeros of float-like data (axis-aligned faces)
+  if (x.exact) return x.v;
+  return exact::accurate_value(std::forward<F>(f));
+}
+
+RelativePose relative_pose(const Pose3& pp, const Pose3& pq) {
+  if (!pp.translation.allFinite()) throw InvalidInput("pose of P: non-finite translation");
+  if (!pq.translation.allFinite()) throw InvalidInput("pose of Q: non-finite translation");
+  const Eigen::Matrix3d Rp = pp.matrix(), Rq = pq.matrix();
+  RelativePose r;
+  r.R = Rp.transpose() * Rq;
+  r.tq = Rp.transpose() * pq.translation;
+  r.tp = Rp.transpose() * pp.translation;
+  return r;
+}
+
+// The feature of one side spanned by the distinct vertices vs (1–3) of S on that side, all on
+// the side's support plane for U: a vertex; a true edge (its two triangles not coplanar); else
+// the true face containing them (the support set is then that face), reported as its level-0
+// triangle around vs — one whose plane holds every vertex of vs (exact orient3d on the
+// polytope's own vertices) — that best contains `wit` (the side's witness in its own frame;
+// rounded barycentric coordinates). O(Σ degrees of vs); no outer hierarchy needed.
+Feature3 feature_of(const ConvexPolytope& S, const int* vs, int nv, const Vec3& wit) {
+  const PolytopeData& D = data_of(S);
+  if (nv == 1) return {FeatureKind3::Vertex, vs[0]};
+  const DKLevel& L0 = D.levels[0];
+  auto around = [&](int v, auto&& f) {
+    const int h0 = D.vertex_he[v];
+    int h = h0;
+    do {
+      f(h);
+      h = L0.ccw(h);
+    } while (h != h0);
+  };
+  if (nv == 2) {
+    int edge = -1;
+    around(vs[0], [&](int h) {
+      if (L0.target(h) == vs[1]) edge = h;
+    });
+    if (edge >= 0) {
+      const auto& T = D.tris[edge / 3];
+      const int tw = L0.twin[edge];
+      const int far = L0.fv[3 * (tw / 3) + (tw % 3 + 2) % 3];
+      if (predicates::orient3d(D.v[T[0]], D.v[T[1]], D.v[T[2]], D.v[far]) != 0) return {FeatureKind3::Edge, edge};
+    }
+  }
+  int best = -1;
+  double best_score = 0;
+  for (int k = 0; k < nv; ++k)
+    around(vs[k], [&](int h) {
+      const int t = h / 3;
+      const auto& T = D.tris[t];
+      for (int l = 0; l < nv; ++l)
+        if (vs[l] != T[0] && vs[l] != T[1] && vs[l] != T[2] &&
+            predicates::orient3d(D.v[T[0]], D.v[T[1]], D.v[T[2]], D.v[vs[l]]) != 0)
+          return;
+      const Vec3 a = D.v[T[0]], b = D.v[T[1]], c = D.v[T[2]];
+      const Vec3 n = (b - a).cross(c - a);
+      const double score =
+          std::min({n.dot((b - wit).cross(c - wit)), n.dot((c - wit).cross(a - wit)), n.dot((a - wit).cross(b - wit))}) /
+          n.squaredNorm();
+      if (best < 0 || score > best_score) best = t, best_score = score;
+    });
+  return {FeatureKind3::Face, best};
+}
+
+}  // namespace
+
+// Signed distance in P's frame for Q placed by rel; result in the world frame of (Rp, tp_world).
+// The exact GJK loop (see the file comment) on c's points: the final simplex reduced to S,
+// with contact = 0 ∈ conv(S). U and Ufl: S's direction.
+struct GjkResult {
+  Reduced X;
+  bool contact = false;
+};
+GjkResult gjk_loop(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacency& aQ) {
+  const PolytopeData& PD = c.P;
+  const PolytopeData& QD = c.Q;
+  const RelativePose& rel = c.rel;
+  const Johnson johnson(c);
+  // First direction: from Q' towards P (centroids).
+  Vec3 v = c.project(Vec3(aP.centroid - (rel.R * aQ.centroid + (rel.tq - rel.tp))));
+  if (!v.allFinite() || v == Vec3::Zero()) v = Vec3::UnitX();
+  // Support of M minimising v·m: P minimises v·p, Q' maximises v·q' = (Rᵀ v)·q.
+  auto support = [&](const Vec3& u0, int i0, int j0) {
+    const Vec3 u = c.project(u0);  // u0·π(m) = π(u0)·m
+    const Vec3 uq = rel.R.transpose() * u;
+    return PairId{climb_rounded(PD, aP, -u, i0 >= 0 ? i0 : seed_vertex(aP, -u)),
+                  climb_rounded(QD, aQ, uq, j0 >= 0 ? j0 : seed_vertex(aQ, uq))};
+  };
+  PairId s = support(v, -1, -1);
+  Reduced X;
+  X.size = 1;
+  X.s[0] = c.member(s);
+  {
+    Reduced r = johnson.reduce(X.s, 1);
+    X = r;
+  }
+  Dir U{};
+  V3<Fl> Ufl{};
+  auto set_dir = [&]() {
+    U = Dir{&c, X.size, {X.s[0], X.size > 1 ? X.s[1] : Member{}, X.size > 2 ? X.s[2] : Member{}}, X.tri_sign};
+    Ufl = U(LiftFl{});
+  };
+  bool contact = X.contact;
+  while (!contact) {
+    set_dir();
+    const Vec3 u(Ufl[0].v, Ufl[1].v, Ufl[2].v);
+    s = support(u, s.i, s.j);
+    const Member& a = X.s[0];
+    // Pairs on the plane through X by construction: members, and the fourth corner
+    // m_x + m_y − m_z of a parallelogram of members (x.i = s.i, y.j = s.j, z = (y.i, x.j)).
+    auto member = [&](int i, int j) {
+      for (int k = 0; k < X.size; ++k)
+        if (X.s[k].id.i == i && X.s[k].id.j == j) return true;
+      return false;
+    };
+    auto on_plane = [&](PairId x) {
+      for (int u = 0; u < X.size; ++u)
+        for (int v = 0; v < X.size; ++v)
+          if (X.s[u].id.i == x.i && X.s[v].id.j == x.j && member(X.s[v].id.i, X.s[u].id.j)) return true;
+      return false;
+    };
+    // U·(p_k − p_i) = U·(m_(k,j') − m_(i,j')) is 0 when both pairs are on the plane (same for Q).
+    auto p_zero = [&](int k, int i) {
+      for (int u = 0; u < X.size; ++u)
+        if (on_plane({k, X.s[u].id.j}) && on_plane({i, X.s[u].id.j})) return true;
+      return false;
+    };
+    auto q_zero = [&](int k, int j) {
+      for (int u = 0; u < X.size; ++u)
+        if (on_plane({X.s[u].id.i, k}) && on_plane({X.s[u].id.i, j})) return true;
+      return false;
+    };
+    auto improves = [&](PairId x) {
+      for (int k = 0; k < X.size; ++k)
+        if (X.s[k].id == x) return false;
+      if (on_plane(x)) return false;  // structurally on the plane
+      return dir_sign(U, Ufl, [&](auto L) { return c.dm(L, x, a.id); }) < 0;
+    };
+    if (!improves(s)) {
+      // Certify (i, j) exactly: no neighbour strictly better.
+      for (bool moved = true; moved;) {
+        moved = false;
+        for (int e = aP.start[s.i]; e < aP.start[s.i + 1] && !moved; ++e) {
+          const int k = aP.nbr[e], i = s.i;
+          if (p_zero(k, i)) continue;
+          if (dir_sign(U, Ufl, [&](auto L) { return sub(c.pvec(L, k), c.pvec(L, i)); }) < 0) s.i = k, moved = true;
+        }
+      }
+      for (bool moved = true; moved;) {
+        moved = false;
+        for (int e = aQ.start[s.j]; e < aQ.start[s.j + 1] && !moved; ++e) {
+          const int k = aQ.nbr[e], j = s.j;
+          if (q_zero(k, j)) continue;
+          if (dir_sign(U, Ufl, [&](auto L) { return c.dm(L, PairId{0, k}, PairId{0, j}); }) < 0)
+            s.j = k, moved = true;
+        }
+      }
+      if (!improves(s)) break;  // certified: M ⊂ {U·x ≥ U·w}
+    }
+    Member Y[4];
+    for (int k = 0; k < X.size; ++k) Y[k] = X.s[k];
+    Y[X.size] = c.member(s);
+    X = johnson.reduce(Y, X.size + 1);
+    contact = X.contact;
+  }
+
+  return {X, contact};
+}
+
+Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel,
+                              const Eigen::Matrix3d& Rp, const Vec3& tp_world) {
+  const PolytopeData& PD = data_of(Pp);
+  const PolytopeData& QD = data_of(Qp);
+  const VertexAdjacency& aP = vertex_adjacency(PD);
+  const VertexAdjacency& aQ = vertex_adjacency(QD);
+  const Ctx c{PD, QD, rel};
+
+  const GjkResult g = gjk_loop(c, aP, aQ);
+  Reduced X = g.X;
+  const bool contact = g.contact;
+  Dir U{};
+  auto set_dir = [&]() {
+    U = Dir{&c, X.size, {X.s[0], X.size > 1 ? X.s[1] : Member{}, X.size > 2 ? X.s[2] : Member{}}, X.tri_sign};
+  };
+  set_dir();
+  Distance3 r;
+  // Barycentric weights (rounded) of the closest point (or of 0) on S.
+  std::array<double, 4> lam{1, 0, 0, 0};
+  {
+    Vec3 m[4];
+    for (int k = 0; k < X.size; ++k) m[k] = c.approx_p(X.s[k].id.i) - c.approx_q(X.s[k].id.j);
+    if (X.size == 2) {
+      const Vec3 e = m[1] - m[0];
+      double t = e.squaredNorm() > 0 ? std::clamp(-m[0].dot(e) / e.squaredNorm(), 0.0, 1.0) : 0.0;
+      lam = {1 - t, t, 0, 0};
+    } else if (X.size == 3) {
+      const Vec3 n = (m[1] - m[0]).cross(m[2] - m[0]);
+      double l[3], sum = 0;
+      for (int k = 0; k < 3; ++k) sum += l[k] = std::max(0.0, n.dot(m[(k + 1) % 3].cross(m[(k + 2) % 3])));
+      for (int k = 0; k < 3; ++k) lam[k] = sum > 0 ? l[k] / sum : 1.0 / 3;
+    } else if (X.size == 4) {
+      auto det = [](const Vec3& a, const Vec3& b, const Vec3& cc) { return a.dot(b.cross(cc)); };
+      double V = det(m[1] - m[0], m[2] - m[0], m[3] - m[0]), sum = 0;
+      double l[4];
+      const Vec3 z = Vec3::Zero();
+      for (int k = 0; k < 4; ++k) {
+        Vec3 p[4] = {m[0], m[1], m[2], m[3]};
+        p[k] = z;
+        sum += l[k] = std::max(0.0, det(p[1] - p[0], p[2] - p[0], p[3] - p[0]) / V);
+      }
+      for (int k = 0; k < 4; ++k) lam[k] = sum > 0 ? l[k] / sum : 0.25;
+    }
+  }
+  Vec3 wp = Vec3::Zero(), wq = Vec3::Zero();
+  for (int k = 0; k < X.size; ++k) wp += lam[k] * c.approx_p(X.s[k].id.i), wq += lam[k] * c.approx_q(X.s[k].id.j);
+
+  if (contact) {
+    // 0 ∈ M: σ decides overlap (−σ) or touching (0).
+    const Depth3 d = minimum_depth_expand(Pp, Qp, rel, Rp, tp_world);
+    if (d.overlapping) {
+      r.overlapping = true;
+      r.distance = -d.depth;
+      r.lower_bound = -d.upper_bound;
+      r.upper_bound = -d.lower_bound;
+      r.translation = d.translation;
+      r.normal = d.normal;
+      r.witness_p = d.witness_p;
+      r.witness_q = d.witness_q - d.translation;
+      r.feature_p = d.feature_p;
+      r.feature_q = d.feature_q;
+      return r;
+    }
+    r.witness_p = Rp * wp + tp_world;
+    r.witness_q = Rp * wq + tp_world;
+    if (X.size == 4) X.size = 3;  // 0 on a face of the tetrahedron: report its first three pairs
+    set_dir();
+  } else {
+    // Distance |w_S| from accurately evaluated polynomials, one square root.
+    const Member& a = X.s[0];
+    // Each factor from accurately evaluated polynomials of low degree (no squares, so tiny
+    // distances do not underflow), norms by Eigen's stableNorm: within ~3 ulps.
+    auto acc3 = [&](auto&& f) {
+      const auto v = f(exact::LiftDD{});
+      Vec3 r;
+      for (int k = 0; k < 3; ++k)
+        r[k] = exact::dd_finite(v[k]) && exact::safe_bound(v[k].e) <= std::abs(v[k].hi) * 0x1p-54
+                   ? v[k].hi
+                   : accurate_dd([&](auto L) { return f(L)[k]; });
+      return r;
+    };
+    double dist;
+    if (X.size == 1) {
+      dist = acc3([&](auto L) { return c.pt(L, a); }).stableNorm();
+    } else if (X.size == 2) {
+      const Member& b = X.s[1];
+      dist = acc3([&](auto L) { return cross(c.dm(L, b.id, a.id), c.pt(L, a)); }).stableNorm() /
+             acc3([&](auto L) { return c.dm(L, b.id, a.id); }).stableNorm();
+    } else {
+      auto n = [&](auto L) { return cross(c.dm(L, X.s[1].id, a.id), c.dm(L, X.s[2].id, a.id)); };
+      dist = std::abs(accurate_dd([&](auto L) { return dot(n(L), c.pt(L, a)); })) / acc3(n).stableNorm();
+    }
+    r.distance = r.lower_bound = r.upper_bound = dist;
+    // normal = −U/|U|, U evaluated accurately per component.
+    Vec3 u;
+    {
+      const auto ud = U(exact::LiftDD{});
+      for (int k = 0; k < 3; ++k)
+        u[k] = exact::dd_finite(ud[k]) && exact::safe_bound(ud[k].e) <= std::abs(ud[k].hi) * 0x1p-54
+                   ? ud[k].hi
+                   : accurate_dd([&](auto L) { return U(L)[k]; });
+    }
+    const Vec3 nl = -u.stableNormalized();
+    r.normal = Rp * nl;
+    r.translation = -r.distance * r.normal;
+    r.witness_p = Rp * wp + tp_world;
+    r.witness_q = Rp * wq + tp_world;
+  }
+  // Features: the distinct vertices of each side in S.
+  int vp[3], vq[3], np = 0, nq = 0;
+  for (int k = 0; k < X.size; ++k) {
+    if (std::find(vp, vp + np, X.s[k].id.i) == vp + np) vp[np++] = X.s[k].id.i;
+    if (std::find(vq, vq + nq, X.s[k].id.j) == vq + nq) vq[nq++] = X.s[k].id.j;
+  }
+  const Vec3 wq_own = rel.R.transpose() * (wq - (rel.tq - rel.tp));
+  r.feature_p = feature_of(Pp, vp, np, wp);
+  r.feature_q = feature_of(Qp, vq, nq, wq_own);
+  return r;
+}
+
+
+// ---- Shape cast: GJK ray cast in doubles, certified exactly (cast3.cpp's fast path) -----------
+namespace {
+
+// Closest point of conv(pts) to 0 in doubles (brute force over the ≤ 15 faces): the subset mask,
+// its weights and the point. A proposal only.
+struct Closest {
+  int mask = 0;
+  double lam[4] = {0, 0, 0, 0};
+  Vec3 v{0, 0, 0};
+};
+Closest closest_double(const Vec3* pts, int n) {
+  Closest best;
+  double best_d = std::numeric_limits<double>::infinity();
+  for (int mask = 1; mask < (1 << n); ++mask) {
+    int idx[4], k = 0;
+    for (int b = 0; b < n; ++b)
+      if (mask >> b & 1) idx[k++] = b;
+    double lam[4] = {1, 0, 0, 0};
+    if (k > 1) {
+      Eigen::Matrix3d G = Eigen::Matrix3d::Identity();
+      Vec3 rhs = Vec3::Zero();
+      for (int a = 1; a < k; ++a) {
+        rhs[a - 1] = -pts[idx[0]].dot(pts[idx[a]] - pts[idx[0]]);
+        for (int b = 1; b < k; ++b) G(a - 1, b - 1) = (pts[idx[a]] - pts[idx[0]]).dot(pts[idx[b]] - pts[idx[0]]);
+      }
+      using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3>;  // no heap
+      using SmallV = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 3, 1>;
+      const Small gm = G.topLeftCorner(k - 1, k - 1);
+      const double det = gm.determinant();
+      if (!(std::abs(det) > 0)) continue;
+      const SmallV mu = gm.fullPivLu().solve(SmallV(rhs.head(k - 1)));
+      lam[0] = 1;
+      for (int a = 1; a < k; ++a) lam[a] = mu[a - 1], lam[0] -= mu[a - 1];
+    }
+    bool inside = true;
+    for (int a = 0; a < k; ++a) inside = inside && lam[a] >= 0;
+    if (!inside) continue;
+    Vec3 v = Vec3::Zero();
+    for (int a = 0; a < k; ++a) v += lam[a] * pts[idx[a]];
+    const double dv = v.squaredNorm();
+    if (dv < best_d) {
+      best_d = dv, best.mask = mask, best.v = v;
+      for (int a = 0; a < 4; ++a) best.lam[a] = 0;
+      for (int a = 0; a < k; ++a) best.lam[idx[a]] = lam[a];
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+std::optional<Cast3> shape_cast_certified(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel,
+                                          const Vec3& d, const Eigen::Matrix3d& Rp, const Vec3& tp_world) {
+  const PolytopeData& PD = data_of(Pp);
+  const PolytopeData& QD = data_of(Qp);
+  const VertexAdjacency& aP = vertex_adjacency(PD);
+  const VertexAdjacency& aQ = vertex_adjacency(QD);
+  const Ctx c{PD, QD, rel};
+  const Vec3 t = rel.tq - rel.tp;
+  auto approx = [&](PairId x) { return Vec3(PD.v[x.i] - (rel.R * QD.v[x.j] + t)); };
+  // Support of M maximising u·m: P maximises u·p, Q' minimises u·q'.
+  PairId s{seed_vertex(aP, d), seed_vertex(aQ, -(rel.R.transpose() * d))};
+  auto support = [&](const Vec3& u) {
+    s = {climb_rounded(PD, aP, u, s.i), climb_rounded(QD, aQ, -(rel.R.transpose() * u), s.j)};
+    return s;
+  };
+  const double scale = std::max(aP.extent.maxCoeff(), aQ.extent.maxCoeff()) + t.norm();
+  // van den Bergen's GJK ray cast (2004) on the ray λ·d.
+  double lambda = 0;
+  Vec3 v = -approx(support(-d));  // x − (a point of M), x = 0
+  Vec3 nlast = Vec3::Zero();      // the plane of the last advance of λ
+  PairId Y[4];
+  int ny = 0;
+  bool hit = false;
+  for (int iter = 0; iter < 64; ++iter) {
+    if (v.squaredNorm() <= std::pow(0x1p-40 * scale, 2)) {
+      hit = true;
+      break;
+    }
+    const PairId p = support(v);
+    const Vec3 x = lambda * d, w = x - approx(p);
+    if (v.dot(w) > 0) {
+      if (v.dot(d) >= 0) break;  // a proposed miss: certified below
+      lambda -= v.dot(w) / v.dot(d);
+      nlast = v;
+    }
+    bool dup = false;
+    for (int k = 0; k < ny; ++k) dup = dup || Y[k] == p;
+    if (!dup && ny < 4) Y[ny++] = p;
+    Vec3 pts[4];
+    for (int k = 0; k < ny; ++k) pts[k] = lambda * d - approx(Y[k]);
+    const Closest cl = closest_double(pts, ny);
+    if (cl.mask == 0) return std::nullopt;
+    int m = 0;
+    for (int k = 0; k < ny; ++k)
+      if (cl.mask >> k & 1) Y[m++] = Y[k];
+    ny = m;
+    v = cl.v;
+    if (dup && v.squaredNorm() > std::pow(0x1p-40 * scale, 2)) break;  // no progress
+  }
+  // Exact certificates. Lifted d for the predicates.
+  auto dl = [&](auto L) { return V3<Num<decltype(L)>>{L(d[0]), L(d[1]), L(d[2])}; };
+  if (!hit) {
+    // Miss, certified by the double vectors as exact directions: v with v·d >= 0 excludes the
+    // ray beyond h_M(v)/(v·d) (all of it when v·d = 0 and h_M(v) < 0, or when h_M(v) < 0 and no
+    // advance happened); the last advance plane n (n·d < 0) excludes s < h_M(n)/(n·d). Miss iff
+    // these cover s >= 0: h_M(v)·(n·d) > h_M(n)·(v·d) (both denominators' signs known).
+    // Failing that: the line itself misses M, certified by the exact GJK on the projection
+    // along d (0 ∉ π(M)).
+    auto line_misses = [&]() {
+      Ctx cp{PD, QD, rel};
+      cp.proj = &d;
+      return !gjk_loop(cp, aP, aQ).contact;
+    };
+    auto miss = []() {
+      Cast3 r;
+      r.distance = std::numeric_limits<double>::infinity();
+      return r;
+    };
+    if (!v.allFinite() || v == Vec3::Zero() || !nlast.allFinite()) return line_misses() ? std::optional(miss()) : std::nullopt;
+    auto exact_support = [&](const Vec3& u) {  // maximiser of u·m over M, exact
+      auto ul = [&](auto L) { return V3<Num<decltype(L)>>{L(u[0]), L(u[1]), L(u[2])}; };
+      PairId q = support(u);
+      for (bool moved = true; moved;) {
+        moved = false;
+        for (int e = aP.start[q.i]; e < aP.start[q.i + 1] && !moved; ++e) {
+          const int k = aP.nbr[e], i = q.i;
+          if (exact_sign([&](auto L) { return dot(ul(L), sub(c.pvec(L, k), c.pvec(L, i))); }) > 0) q.i = k, moved = true;
+        }
+      }
+      for (bool moved = true; moved;) {
+        moved = false;
+        for (int e = aQ.start[q.j]; e < aQ.start[q.j + 1] && !moved; ++e) {
+          const int k = aQ.nbr[e], j = q.j;
+          if (exact_sign([&](auto L) { return dot(ul(L), c.dm(L, PairId{0, k}, PairId{0, j})); }) > 0)
+            q.j = k, moved = true;
+        }
+      }
+      return q;
+    };
+    auto lift = [](const Vec3& u) {
+      return [u](auto L) { return V3<Num<decltype(L)>>{L(u[0]), L(u[1]), L(u[2])}; };
+    };
+    const auto vl = lift(v), nl = lift(nlast);
+    const PairId qv = exact_support(v);
+    const int vd = exact_sign([&](auto L) { return dot(vl(L), dl(L)); });
+    if (vd < 0) return line_misses() ? std::optional(miss()) : std::nullopt;
+    if (nlast == Vec3::Zero() || vd == 0) {
+      if (exact_sign([&](auto L) { return dot(vl(L), c.m(L, qv)); }) >= 0) return line_misses() ? std::optional(miss()) : std::nullopt;
+    } else {
+      if (exact_sign([&](auto L) { return dot(nl(L), dl(L)); }) >= 0) return line_misses() ? std::optional(miss()) : std::nullopt;
+      const PairId qn = exact_support(nlast);
+      if (exact_sign([&](auto L) {
+            return dot(vl(L), c.m(L, qv)) * dot(nl(L), dl(L)) - dot(nl(L), c.m(L, qn)) * dot(vl(L), dl(L));
+          }) <= 0)
+        return line_misses() ? std::optional(miss()) : std::nullopt;
+    }
+    Cast3 r;
+    r.distance = std::numeric_limits<double>::infinity();
+    return r;
+  }
+  if (ny == 4) {  // x on a facet of the tetrahedron (up to rounding): keep that facet
+    Vec3 pts[4];
+    for (int k = 0; k < 4; ++k) pts[k] = lambda * d - approx(Y[k]);
+    const Closest cl = closest_double(pts, 4);
+    int drop = 0;
+    for (int k = 1; k < 4; ++k)
+      if (cl.lam[k] < cl.lam[drop]) drop = k;
+    for (int k = drop; k < 3; ++k) Y[k] = Y[k + 1];
+    ny = 3;
+  }
+  // The entry certificate for a triangle of pairs (see the file comment of cast3.cpp).
+  auto certify = [&](PairId ya, PairId yb, PairId yc) -> std::optional<Cast3> {
+  const Member A = c.member(ya), B = c.member(yb), C = c.member(yc);
+  auto n = [&](auto L) { return cross(c.dm(L, B.id, A.id), c.dm(L, C.id, A.id)); };
+  const int nd = exact_sign([&](auto L) { return dot(n(L), dl(L)); });
+  if (nd == 0) return std::nullopt;
+  const int sigma = -nd;  // n' = sigma·n faces against d: outward at the entry
+  // The line s·d crosses the closed triangle: [d, a, b], [d, b, c], [d, c, a] of one sign.
+  const Member* T[3] = {&A, &B, &C};
+  int pos = 0, neg = 0;
+  for (int k = 0; k < 3; ++k) {
+    const int sg =
+        exact_sign([&](auto L) { return dot(dl(L), cross(c.pt(L, *T[k]), c.pt(L, *T[(k + 1) % 3]))); });
+    pos += sg > 0, neg += sg < 0;
+  }
+  if (pos && neg) return std::nullopt;
+  // Entry at s >= 0: n'·a <= 0.
+  const int ha = sigma * exact_sign([&](auto L) { return dot(n(L), c.pt(L, A)); });
+  if (ha > 0) return std::nullopt;
+  // n'·m is maximal over M at the triangle: P maximises n'·p at A.i, Q' minimises n'·q' at A.j
+  // (neighbours on the plane by construction skipped).
+  Reduced X;
+  X.size = 3;
+  X.s[0] = A, X.s[1] = B, X.s[2] = C;
+  auto member = [&](int i, int j) {
+    for (int k = 0; k < 3; ++k)
+      if (X.s[k].id.i == i && X.s[k].id.j == j) return true;
+    return false;
+  };
+  auto on_plane = [&](PairId x) {
+    for (int u = 0; u < 3; ++u)
+      for (int w = 0; w < 3; ++w)
+        if (X.s[u].id.i == x.i && X.s[w].id.j == x.j && member(X.s[w].id.i, X.s[u].id.j)) return true;
+    return false;
+  };
+  for (int e = aP.start[A.id.i]; e < aP.start[A.id.i + 1]; ++e) {
+    const int k = aP.nbr[e];
+    bool zero = false;
+    for (int u = 0; u < 3 && !zero; ++u) zero = on_plane({k, X.s[u].id.j}) && on_plane({A.id.i, X.s[u].id.j});
+    if (!zero && sigma * exact_sign([&](auto L) { return dot(n(L), sub(c.pvec(L, k), c.pvec(L, A.id.i))); }) > 0)
+      return std::nullopt;
+  }
+  for (int e = aQ.start[A.id.j]; e < aQ.start[A.id.j + 1]; ++e) {
+    const int k = aQ.nbr[e];
+    bool zero = false;
+    for (int u = 0; u < 3 && !zero; ++u) zero = on_plane({X.s[u].id.i, k}) && on_plane({X.s[u].id.i, A.id.j});
+    // n'·(q'_k − q'_j) < 0 ⇔ n'·dm((·,k), (·,j)) > 0 (dm = −R(q_k − q_j))
+    if (!zero && sigma * exact_sign([&](auto L) { return dot(n(L), c.dm(L, PairId{0, k}, PairId{0, A.id.j})); }) > 0)
+      return std::nullopt;
+  }
+  // Certified: the entry is at s = (n·a)/(n·d) (in units of d), on the triangle.
+  Cast3 r;
+  r.hit = true;
+  const double na = accurate_dd([&](auto L) { return dot(n(L), c.pt(L, A)); });
+  const double ndv = accurate_dd([&](auto L) { return dot(n(L), dl(L)); });
+  const double sp = ha == 0 ? 0.0 : na / ndv;
+  r.distance = sp * d.norm();
+  const Vec3 dir = d.normalized();
+  r.translation = Rp * (r.distance * dir);
+  Vec3 nn;
+  {
+    const auto v3 = n(exact::LiftDD{});
+    for (int k = 0; k < 3; ++k) nn[k] = v3[k].hi;
+  }
+  r.normal = Rp * (sigma * nn).stableNormalized();
+  // Contact: the entry point's weights on the triangle (rounded), its P part.
+  const Vec3 x = sp * d, a = approx(A.id), b = approx(B.id), cc = approx(C.id);
+  const Vec3 nr = (b - a).cross(cc - a);
+  double l[3] = {nr.dot((b - x).cross(cc - x)), nr.dot((cc - x).cross(a - x)), nr.dot((a - x).cross(b - x))};
+  double sum = 0;
+  for (double& z : l) sum += z = std::max(0.0, z);
+  Vec3 wp = Vec3::Zero();
+  for (int k = 0; k < 3; ++k) wp += (sum > 0 ? l[k] / sum : 1.0 / 3) * PD.v[T[k]->id.i];
+  r.witness_p = r.witness_q = Rp * wp + tp_world;
+  int vp[3], vq[3], np = 0, nq = 0;
+  Vec3 wq = Vec3::Zero();
+  for (int k = 0; k < 3; ++k) {
+    wq += (sum > 0 ? l[k] / sum : 1.0 / 3) * QD.v[T[k]->id.j];
+    if (std::find(vp, vp + np, T[k]->id.i) == vp + np) vp[np++] = T[k]->id.i;
+    if (std::find(vq, vq + nq, T[k]->id.j) == vq + nq) vq[nq++] = T[k]->id.j;
+  }
+  r.feature_p = feature_of(Pp, vp, np, wp);
+  r.feature_q = feature_of(Qp, vq, nq, wq);
+  return r;
+  };
+  if (ny == 3)
+    if (auto r = certify(Y[0], Y[1], Y[2])) return r;
+  // Entry through an edge of M (the ray cast ends on an edge, or its triangle's plane contains
+  // d): the triangles of the candidate facets of M around each edge of the final simplex — the
+  // faces of P (Q) at a P (Q) edge, the parallelograms with the other side's neighbours.
+  auto third = [](const PolytopeData& D, const VertexAdjacency& A, int u, int w, std::vector<int>& out) {
+    for (int e = A.start[u]; e < A.start[u + 1]; ++e)
+      if (A.nbr[e] == w) {
+        const int h = A.he[e], tw = D.levels[0].twin[h];
+        out.push_back(D.levels[0].fv[3 * (h / 3) + (h % 3 + 2) % 3]);
+        out.push_back(D.levels[0].fv[3 * (tw / 3) + (tw % 3 + 2) % 3]);
+      }
+  };
+  auto complete = [&](PairId ya, PairId yb) -> std::optional<Cast3> {
+    std::vector<PairId> cand;
+    std::vector<int> t;
+    if (ya.j == yb.j) {
+      third(PD, aP, ya.i, yb.i, t);
+      for (int v : t) cand.push_back({v, ya.j});
+      for (int e = aQ.start[ya.j]; e < aQ.start[ya.j + 1]; ++e) cand.push_back({ya.i, aQ.nbr[e]}), cand.push_back({yb.i, aQ.nbr[e]});
+    } else if (ya.i == yb.i) {
+      third(QD, aQ, ya.j, yb.j, t);
+      for (int v : t) cand.push_back({ya.i, v});
+      for (int e = aP.start[ya.i]; e < aP.start[ya.i + 1]; ++e) cand.push_back({aP.nbr[e], ya.j}), cand.push_back({aP.nbr[e], yb.j});
+    } else {
+      cand = {{ya.i, yb.j}, {yb.i, ya.j}};
+    }
+    for (const PairId& yc : cand)
+      if (!(yc == ya) && !(yc == yb))
+        if (auto r = certify(ya, yb, yc)) return r;
+    return std::nullopt;
+  };
+  if (ny == 2)
+    if (auto r = complete(Y[0], Y[1])) return r;
+  if (ny == 3)
+    for (int k = 0; k < 3; ++k)
+      if (auto r = complete(Y[k], Y[(k + 1) % 3])) return r;
+  return std::nullopt;
+}
+
+}  // namespace convex3
+
+Distance3 signed_distance(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q, const Pose3& pose_q) {
+  const convex3::RelativePose rel = convex3::relative_pose(pose_p, pose_q);
+  return convex3::signed_distance_gjk(P, Q, rel, pose_p.matrix(), pose_p.translation);
+}
+
+}  // namespace pendepth
