@@ -207,6 +207,24 @@ class Shape3 {
   std::shared_ptr<const ConvexPolytope> p_;
 };
 
+/// Per-caller state of Pair3's warm start for coherent motion (survey §3.3): the facet of M the
+/// previous answer ended on. Pair3 is const and shared between threads, so the state lives with
+/// the caller: one WarmStart3 per trajectory (per thread). Small and copyable; a state used with
+/// another pair is ignored (that query starts cold). It never changes an answer, only its cost.
+class WarmStart3 {
+ public:
+  /// Forgets the previous answer: the next query starts cold.
+  void reset() { valid_ = false; }
+  bool valid() const { return valid_; }
+
+ private:
+  friend class Pair3;
+  const void* p_ = nullptr;
+  const void* q_ = nullptr;
+  std::array<int, 6> pairs_{};  // (P vertex, Q vertex) × 3 spanning the previous facet of M
+  bool valid_ = false;
+};
+
 /// A pair of convex polytopes, P and Q each with a pose (only the relative pose matters; results
 /// are in the world frame). Queries are const and thread-safe.
 class Pair3 {
@@ -222,6 +240,17 @@ class Pair3 {
   /// Complete separation along d: for convex shapes the ray leaves M once, so this is σ_d with
   /// kind Separation.
   Depth3 separation(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const;
+
+  /// σ warm-started from the previous answer held in `warm` (updated): equal to
+  /// minimum(pose_p, pose_q) bit for bit in every field but `candidates` (the support queries
+  /// done), because σ's answer is a function of M's nearest facet alone (the least canonical
+  /// features among the facets at distance σ; src/convex3/minimum_expand.cpp). Cheaper when the
+  /// pose moved little since the previous call (docs/benchmarks.md).
+  Depth3 minimum(const Pose3& pose_p, const Pose3& pose_q, WarmStart3& warm) const;
+  /// σ along a trajectory: out[i] = minimum(pose_p, poses_q[i]), each warm-started from the
+  /// previous one (`warm` false: each cold, for comparison), in the calling thread. All poses are
+  /// checked first (InvalidInput naming the index).
+  std::vector<Depth3> trajectory(const Pose3& pose_p, std::span<const Pose3> poses_q, bool warm = true) const;
 
   // Batches (as Pair2's): P at identity, or at pose_p for every query.
   void overlapping(std::span<const Pose3> poses_q, std::span<bool> out, unsigned threads = 0) const;

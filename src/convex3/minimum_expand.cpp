@@ -238,6 +238,7 @@ struct Workspace {
   std::vector<std::pair<int, int>> hor;
   std::vector<int> alive, pos;  // live facets (dense) and each facet's index there (−1: dead)
   std::vector<double> keys;     // Phase B key of alive[k]; +inf: not a candidate
+  std::vector<int> ties, face;  // Phase B: facets exactly as near as the best; a flat face's triangles
 };
 
 // Inlining (a hot path tuned by instruction counts): the named steps are [[gnu::always_inline]],
@@ -254,7 +255,7 @@ class Expander {
   [[gnu::always_inline]] Expander(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel, Workspace& ws)
       : P_(convex3::data_of(Pp)), Q_(convex3::data_of(Qp)), AP_(vertex_adjacency(P_)), AQ_(vertex_adjacency(Q_)), R_(rel.R),
         V_(ws.V), F_(ws.F), mark_(ws.mark), vis_(ws.vis), by_start_(ws.by_start), by_end_(ws.by_end),
-        hor_(ws.hor), alive_(ws.alive), pos_(ws.pos), keys_(ws.keys) {
+        hor_(ws.hor), alive_(ws.alive), pos_(ws.pos), keys_(ws.keys), ties_(ws.ties), face_(ws.face) {
     V_.clear(), F_.clear(), mark_.clear(), alive_.clear(), pos_.clear(), keys_.clear();
     init_coordinate_bounds(rel);
     init_normal_bounds();
@@ -263,15 +264,21 @@ class Expander {
 
   // σ: the minimum depth in the world frame of P's pose (Rp, tp); a Depth3 with only
   // `candidates` set when the shapes do not overlap (touching included).
-  Depth3 run(const Eigen::Matrix3d& Rp, const Vec3& tp) {
-    [[maybe_unused]] const bool built = init_tetrahedron();  // σ has no budget
-    assert(built);
+  // With a seed (warm start): the first K is built on the seed's facet when it is valid, and the
+  // seed receives the answer's facet (invalid when the shapes do not overlap).
+  Depth3 run(const Eigen::Matrix3d& Rp, const Vec3& tp, ExpandSeed* seed) {
+    if (!(seed && seed->valid && warm_tetrahedron(seed->pairs))) {
+      [[maybe_unused]] const bool built = init_tetrahedron();  // σ has no budget
+      assert(built);
+    }
     if (phase_a() != Overlap::Yes) {
+      if (seed) seed->valid = false;
       Depth3 none;
       none.candidates = iters_;
       return none;
     }
-    return result(phase_b(), Rp, tp);
+    const int b = phase_b();
+    return canonical_result(b, Rp, tp, seed);
   }
 
   // σ_d along d (P's frame; nonzero, finite, largest |coordinate| in [1/2, 1) so that no product
@@ -317,6 +324,8 @@ class Expander {
   std::vector<int>& alive_;
   std::vector<int>& pos_;
   std::vector<double>& keys_;
+  std::vector<int>& ties_;
+  std::vector<int>& face_;
   int stamp_ = 0;
   std::size_t iters_ = 0;
   int cone_first_ = 0;  // first facet of the last cone built
@@ -929,45 +938,57 @@ class Expander {
     return kmin;
   }
 
-  // Facet f (alive_[kmin], least key) against the best facet so far: true iff f is exactly
-  // nearer to 0; otherwise its key is settled (coplanar with best or not nearer: +inf; not yet
-  // refined: refined, the key raised to its accurate distance) and false.
-  [[gnu::always_inline]] bool nearer_than_best(int f, std::size_t kmin, int best) {
+  // Facet f (alive_[kmin], least key) against the best facet so far: −1 if f is exactly nearer
+  // to 0, 0 if exactly as near (a tie on another plane), 1 if it is settled: coplanar with best
+  // or farther (key +inf), or not yet refined (refined, the key raised to its accurate distance).
+  [[gnu::always_inline]] int nearer_than_best(int f, std::size_t kmin, int best) {
     if (coplanar(f, best)) {  // same plane, same distance (often a symbolic identity)
       keys_[kmin] = std::numeric_limits<double>::infinity();
-      return false;
+      return 1;
     }
     if (!F_[f].refined) {
       refine(f);
       keys_[kmin] = F_[f].dist * F_[f].dist * (1 - 0x1p-47);  // dist within 2 ulps
-      return false;
+      return 1;
     }
     keys_[kmin] = std::numeric_limits<double>::infinity();
-    return closer(f, best) < 0;  // not nearer than best: false
+    return closer(f, best);
   }
 
   // The nearest facet of M (its index in F_), certified: K is expanded until the facet of K
-  // nearest to 0 has a supporting plane of M and no other facet of K is exactly nearer.
+  // nearest to 0 has a supporting plane of M and no other facet of K is exactly nearer. Facets of
+  // K exactly as near as best on other planes are expanded too, until each is on a plane of M
+  // (ties_: one facet of K per such plane, duplicates possible), so that ties_ and best together
+  // hold every facet of M at distance σ (a facet of M at distance σ contains the point σ·u of
+  // ∂M, which lies on ∂K, on a facet of K at distance σ and on the same plane) and the answer
+  // can be chosen among them by a rule that does not depend on K (canonical_result).
   [[gnu::noinline]] int phase_b() {
     for (std::size_t k = 0; k < alive_.size(); ++k) keys_[k] = lower_key(alive_[k]);
     int best = -1;
     double best_hi = 0;
+    ties_.clear();
     for (;;) {
       double key;
       const std::size_t kmin = least_key(key);
       if (best >= 0 && !(key < best_hi)) break;  // every other facet is at least as far as best
       const int f = alive_[kmin];
-      if (best >= 0 && !nearer_than_best(f, kmin, best)) continue;
+      int c = -1;  // sign(d_f − d_best)
+      if (best >= 0 && (c = nearer_than_best(f, kmin, best)) > 0) continue;
       Dir D = facet_dir(f);
       int s = support_facet(f, D);
       int o = orient(f, s);
       assert(o >= 0 && "a support point below the facet's plane");
       if (o <= 0) {  // f's plane supports M
         V_.pop_back();
+        keys_[pos_[f]] = std::numeric_limits<double>::infinity();
+        if (c == 0) {  // another facet of M at distance σ
+          ties_.push_back(f);
+          continue;
+        }
         if (!F_[f].refined) refine(f);
         best = f;
         best_hi = F_[f].dist * F_[f].dist * (1 + 0x1p-47);
-        keys_[pos_[f]] = std::numeric_limits<double>::infinity();
+        ties_.clear();
         continue;
       }
       expand(f, s, Mode::B);
@@ -1119,25 +1140,6 @@ class Expander {
     return {FeatureKind3::Edge, std::min(h, S.levels[0].twin[h])};
   }
 
-  Depth3 result(int b, const Eigen::Matrix3d& Rp, const Vec3& tp) const {
-    const Facet& B = F_[b];
-    Depth3 r;
-    r.kind = DepthKind::Minimum;
-    r.overlapping = true;
-    r.candidates = iters_;
-    r.depth = r.lower_bound = r.upper_bound = B.dist;
-    const Vec3 u(B.unit[0], B.unit[1], B.unit[2]);
-    const Vec3 move = B.dist * u;
-    Vec3 wp, wq;
-    witnesses(b, move, wp, wq);
-    r.translation = Rp * move;
-    r.normal = r.facet_normal = Rp * u;
-    r.witness_p = Rp * wp + tp;
-    r.witness_q = Rp * wq + tp;
-    features(b, r);
-    return r;
-  }
-
   Depth3 directional_result(int f, const Eigen::Matrix3d& Rp, const Vec3& tp) const {
     Depth3 r;
     r.kind = DepthKind::Directional;
@@ -1184,39 +1186,171 @@ class Expander {
     return r;
   }
 
-  // Witnesses in P's frame: the foot of 0 on facet b's plane (−move) lies in K's facet region
-  // there (b is nearest), so walk over coplanar neighbours to the triangle containing it;
-  // barycentric weights of the pairs give a point wp of P and wq of Q' (moved by `move`).
-  [[gnu::always_inline]] void witnesses(int b, const Vec3& move, Vec3& wp, Vec3& wq) const {
-    int f = b;
-    std::array<double, 3> lam{1, 0, 0}, best_lam = lam;
-    double best_min = -std::numeric_limits<double>::infinity();
-    int best_f = b;
-    for (int step = 0; step < 64; ++step) {
-      const Facet& T = F_[f];
-      Vec3 a = approx(T.v[0]), bb = approx(T.v[1]), c = approx(T.v[2]);
-      Vec3 n = (bb - a).cross(c - a);
-      double den = n.squaredNorm();
-      lam[0] = (bb - move).cross(c - move).dot(n) / den;
-      lam[1] = (c - move).cross(a - move).dot(n) / den;
-      lam[2] = 1 - lam[0] - lam[1];
-      int worst = static_cast<int>(std::min_element(lam.begin(), lam.end()) - lam.begin());
-      if (lam[worst] > best_min) best_min = lam[worst], best_lam = lam, best_f = f;
-      if (lam[worst] >= 0) break;
-      int g = T.nb[(worst + 1) % 3];  // across the edge opposite the most negative weight
-      if (!coplanar(g, b)) break;
-      f = g;
+  // ---- the canonical answer (σ) -------------------------------------------------------------
+  // σ's answer is a function of the facet of M it ends on, never of K (which depends on the
+  // start, e.g. a warm start, and triangulates a polygonal facet of M in many ways): among the
+  // facets of M at distance σ (best and ties_), the one whose canonical features are least;
+  // its distance, normal and witnesses computed from three pairs fixed by those features.
+  using Features = std::array<Feature3, 2>;
+
+  // Whether half-edge h of S's level 0 is a true edge (not a diagonal of a flat face).
+  static bool true_edge(const PolytopeData& S, int h) {
+    const int e = std::min(h, S.levels[0].twin[h]);
+    return std::binary_search(S.edges.begin(), S.edges.end(), e);
+  }
+  // face_: the triangles of S's flat face containing triangle t (flood across diagonals).
+  void flat_face(const PolytopeData& S, int t) {
+    face_.assign(1, t);
+    for (std::size_t q = 0; q < face_.size(); ++q)
+      for (int k = 0; k < 3; ++k) {
+        const int h = 3 * face_[q] + k;
+        if (true_edge(S, h)) continue;
+        const int g = S.levels[0].twin[h] / 3;
+        if (std::find(face_.begin(), face_.end(), g) == face_.end()) face_.push_back(g);
+      }
+  }
+  // A support feature of dimension dim made canonical: a face → its least triangle id
+  // (as_vertex: its least vertex), an edge → (as_vertex) its least endpoint.
+  Feature3 canonical(const PolytopeData& S, const Feature3& f, int dim, bool as_vertex) {
+    if (dim == 0) return f;
+    if (dim == 1) {
+      if (!as_vertex) return f;  // already the half-edge with the smaller id
+      const auto& L = S.levels[0];
+      return {FeatureKind3::Vertex, std::min(L.origin(f.index), L.target(f.index))};
     }
-    double sum = 0;
-    for (double& l : best_lam) sum += (l = std::max(l, 0.0));
-    wp = Vec3::Zero(), wq = Vec3::Zero();
+    flat_face(S, f.index);
+    int t = face_[0], v = S.tris[t][0];
+    for (int g : face_) {
+      t = std::min(t, g);
+      for (int x : S.tris[g]) v = std::min(v, x);
+    }
+    return as_vertex ? Feature3{FeatureKind3::Vertex, v} : Feature3{FeatureKind3::Face, t};
+  }
+  // The canonical features of the facet of M that facet f of K lies on: P's face and Q's least
+  // vertex in the support set, else P's least vertex and Q's face, else the two edges.
+  Features canonical_features(int f) {
+    const Facet& B = F_[f];
+    const Dir D = facet_dir(f);
+    int dp = 0, dq = 0;
+    const Feature3 fp = support_feature(D, true, V_[B.v[0]].i, dp);
+    const Feature3 fq = support_feature(D, false, V_[B.v[0]].j, dq);
+    if (dp == 2) return {canonical(P_, fp, 2, false), canonical(Q_, fq, dq, true)};
+    if (dq == 2) return {canonical(P_, fp, dp, true), canonical(Q_, fq, 2, false)};
+    return {fp, fq};
+  }
+  static bool less(const Features& a, const Features& b) {
+    auto key = [](const Features& f) {
+      return std::array<int, 4>{static_cast<int>(f[0].kind), f[0].index, static_cast<int>(f[1].kind), f[1].index};
+    };
+    return key(a) < key(b);
+  }
+  // Three pairs (i, j) spanning the facet of M named by canonical features, in outward order
+  // (edge–edge: the caller fixes the orientation).
+  std::array<int, 6> canonical_pairs(const Features& c) const {
+    if (c[0].kind == FeatureKind3::Face) {
+      const auto& t = P_.tris[c[0].index];
+      const int j = c[1].index;
+      return {t[0], j, t[1], j, t[2], j};
+    }
+    if (c[1].kind == FeatureKind3::Face) {  // −Q's face: Q's triangle reversed
+      const auto& t = Q_.tris[c[1].index];
+      const int i = c[0].index;
+      return {i, t[0], i, t[2], i, t[1]};
+    }
+    const auto &LP = P_.levels[0], &LQ = Q_.levels[0];
+    const int a = LP.origin(c[0].index), b = LP.target(c[0].index);
+    const int x = LQ.origin(c[1].index), y = LQ.target(c[1].index);
+    return {a, x, b, x, a, y};
+  }
+
+  // σ's answer from phase B's best facet: see above. The seed (if any) receives the pairs.
+  Depth3 canonical_result(int best, const Eigen::Matrix3d& Rp, const Vec3& tp, ExpandSeed* seed) {
+    Features c = canonical_features(best);
+    for (int t : ties_)
+      if (Features ct = canonical_features(t); less(ct, c)) c = ct;
+    std::array<int, 6> pr = canonical_pairs(c);
+    const int a = add_vert(pr[0], pr[1]), b = add_vert(pr[2], pr[3]), x = add_vert(pr[4], pr[5]);
+    int f = add_facet(a, b, x);
+    if (c[0].kind == FeatureKind3::Edge && hsign(f) < 0) {  // 0 strictly inside: h > 0 outward
+      f = add_facet(a, x, b);
+      std::swap(pr[2], pr[4]), std::swap(pr[3], pr[5]);
+    }
+    refine(f);
+    const Facet& B = F_[f];
+    Depth3 r;
+    r.kind = DepthKind::Minimum;
+    r.overlapping = true;
+    r.candidates = iters_;
+    r.depth = r.lower_bound = r.upper_bound = B.dist;
+    const Vec3 u(B.unit[0], B.unit[1], B.unit[2]);
+    const Vec3 move = B.dist * u;
+    // The contact point after the move (P's frame), as in the reference (depth3.cpp): Q's vertex
+    // moved onto P's face plane; P's vertex; or the crossing of the two edges (closest point of
+    // P's edge to the moved Q edge's line).
     const Vec3 t(thi_[0] + tlo_[0], thi_[1] + tlo_[1], thi_[2] + tlo_[2]);
-    for (int k = 0; k < 3; ++k) {
-      const Vert& X = V_[F_[best_f].v[k]];
-      wp += best_lam[k] / sum * P_.v[X.i];
-      wq += best_lam[k] / sum * (R_ * Q_.v[X.j] + t);
+    Vec3 w;
+    if (c[0].kind == FeatureKind3::Face) {
+      w = R_ * Q_.v[c[1].index] + t + move;
+    } else if (c[1].kind == FeatureKind3::Face) {
+      w = P_.v[c[0].index];
+    } else {
+      const auto &LP = P_.levels[0], &LQ = Q_.levels[0];
+      const Vec3 pa = P_.v[LP.origin(c[0].index)], e = P_.v[LP.target(c[0].index)] - pa;
+      const Vec3 qa = R_ * Q_.v[LQ.origin(c[1].index)] + t + move;
+      const Vec3 g = R_ * (Q_.v[LQ.target(c[1].index)] - Q_.v[LQ.origin(c[1].index)]);
+      const Vec3 n = e.cross(g);
+      const double s = (qa - pa).cross(g).dot(n) / n.squaredNorm();
+      w = pa + (std::isfinite(s) ? std::clamp(s, 0.0, 1.0) : 0.0) * e;
     }
-    wq += move;
+    r.translation = Rp * move;
+    r.normal = r.facet_normal = Rp * u;
+    r.witness_p = r.witness_q = Rp * w + tp;
+    r.feature_p = c[0], r.feature_q = c[1];
+    if (seed) seed->pairs = pr, seed->valid = true;
+    return r;
+  }
+
+  // ---- warm start --------------------------------------------------------------------------
+  // The first K from a seed: the three pairs of the previous answer's facet (points of M at any
+  // pose) and the support along the opposite of their normal (or along it), a tetrahedron when
+  // that support is strictly off their plane. False (nothing built) when the seed is not usable
+  // here (indices out of range, repeated pairs, pairs now collinear or the support on their plane).
+  bool warm_tetrahedron(const std::array<int, 6>& sd) {
+    const int n = static_cast<int>(P_.v.size()), m = static_cast<int>(Q_.v.size());
+    for (int k = 0; k < 3; ++k)
+      if (sd[2 * k] < 0 || sd[2 * k] >= n || sd[2 * k + 1] < 0 || sd[2 * k + 1] >= m) return false;
+    for (int k = 0; k < 3; ++k)
+      if (sd[2 * k] == sd[2 * ((k + 1) % 3)] && sd[2 * k + 1] == sd[2 * ((k + 1) % 3) + 1]) return false;
+    int s1 = add_vert(sd[0], sd[1]), s2 = add_vert(sd[2], sd[3]), s3 = add_vert(sd[4], sd[5]);
+    double e[3], e2[3], nr[3];
+    diff_r(V_[s2], V_[s1], e);
+    diff_r(V_[s3], V_[s1], e2);
+    cross_r(e, e2, nr);
+    int s4 = -1, o = 0;
+    for (int sg : {-1, 1}) {
+      Dir D;
+      D.kind = Dir::Normal;
+      D.a = s1, D.b = s2, D.c = s3, D.sgn = sg;
+      D.structural = true;
+      D.t = pairs(s1, s2, s3);
+      D.n = sg * Vec3(nr[0], nr[1], nr[2]);
+      finish_dir(D, ne_);
+      const int x = support_cold(D);
+      if (int side = dir_side(D, x, s1); side != 0) {
+        s4 = x, o = side * sg;
+        break;
+      }
+      V_.pop_back();
+    }
+    if (s4 < 0) {  // the pairs are collinear now (their normal is 0) or M is flat: start cold
+      V_.clear();
+      return false;
+    }
+    if (o > 0) std::swap(s2, s3);  // now s4 lies below the plane of (s1, s2, s3)
+    add_facet(s1, s2, s3), add_facet(s1, s4, s2), add_facet(s2, s4, s3), add_facet(s3, s4, s1);
+    F_[0].nb = {1, 2, 3}, F_[1].nb = {3, 2, 0}, F_[2].nb = {1, 3, 0}, F_[3].nb = {2, 1, 0};  // twins
+    for (int f = 0; f < 4; ++f) F_[f].hsign = hsign(f);
+    return true;
   }
 
   // The defining features of M's facet b: a face of P and a vertex of Q, a vertex of P and a face
@@ -1246,8 +1380,8 @@ Workspace& workspace() {
 }  // namespace
 
 Depth3 minimum_depth_expand(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,
-                            const Eigen::Matrix3d& Rp, const Vec3& tp) {
-  return Expander<false>(P, Q, rel, workspace()).run(Rp, tp);
+                            const Eigen::Matrix3d& Rp, const Vec3& tp, ExpandSeed* seed) {
+  return Expander<false>(P, Q, rel, workspace()).run(Rp, tp, seed);
 }
 
 std::optional<Depth3> directional_depth_expand(const ConvexPolytope& P, const ConvexPolytope& Q,
