@@ -187,6 +187,20 @@ class Pair2 {
   std::shared_ptr<const Impl> impl_;
 };
 
+/// A placement of Q on a 2D trajectory: rotated counter-clockwise by `degrees` about its origin
+/// (Shape2::rotated), then moved by t.
+struct Placement2 {
+  Vec2 t{0, 0};
+  double degrees = 0;
+};
+
+/// σ along a 2D trajectory: out[k] = Pair2(P, Q.rotated(poses[k].degrees), prepare).minimum(
+/// poses[k].t), bit for bit. `warm`: one Pair2 per run of equal angles (the per-pair work is done
+/// once per change of angle); false: a new pair per placement (for comparison). Every placement is
+/// checked first; errors name the placement's index (src/front/trajectory2.cpp).
+std::vector<Depth2> trajectory(const Shape2& P, const Shape2& Q, std::span<const Placement2> poses, bool warm = true,
+                               Prepare prepare = Prepare::Auto);
+
 /// A validated convex polytope (the convex hull of a point set), with its Dobkin–Kirkpatrick
 /// hierarchy built once. Cheap to copy.
 class Shape3 {
@@ -221,7 +235,8 @@ class WarmStart3 {
   friend class Pair3;
   const void* p_ = nullptr;
   const void* q_ = nullptr;
-  std::array<int, 6> pairs_{};  // (P vertex, Q vertex) × 3 spanning the previous facet of M
+  std::array<int, 32> pairs_{};  // (P vertex, Q vertex): the previous facet of M and its neighbours
+  int count_ = 0;
   bool valid_ = false;
 };
 

@@ -87,6 +87,7 @@ namespace pendepth::convex3 {
 namespace {
 
 using exact::certified_sign;
+using predicates::orient3d;
 using exact::exact_sign;
 using exact::safe_bound;
 
@@ -267,7 +268,7 @@ class Expander {
   // With a seed (warm start): the first K is built on the seed's facet when it is valid, and the
   // seed receives the answer's facet (invalid when the shapes do not overlap).
   Depth3 run(const Eigen::Matrix3d& Rp, const Vec3& tp, ExpandSeed* seed) {
-    if (!(seed && seed->valid && warm_tetrahedron(seed->pairs))) {
+    if (!(seed && seed->valid && warm_start(*seed))) {
       [[maybe_unused]] const bool built = init_tetrahedron();  // σ has no budget
       assert(built);
     }
@@ -506,6 +507,18 @@ class Expander {
   }
 
   // ---- exact predicates --------------------------------------------------------------------
+  // Sign of n_abc·(m_x − m_a) when the four pairs share their Q vertex (then it is
+  // orient3d(p_a, p_b, p_c, p_x)) or their P vertex (then −orient3d(q_a, q_b, q_c, q_x): with
+  // u, v, w the differences of the q's, (Ru × Rv)·(−Rw) = −det(R)·(u × v)·w and det(R) > 0 for
+  // the double matrix of a rotation); 2 otherwise. A degree-3 sign of input coordinates instead
+  // of the degree-6 polynomial of pairs: the exact zeros of coplanar pairs (a polygonal facet of
+  // M met again, e.g. by a warm start) cost far less.
+  int shared_orient(int a, int b, int c, const Vert& X) const {
+    const Vert &A = V_[a], &B = V_[b], &C = V_[c];
+    if (A.j == X.j && B.j == X.j && C.j == X.j) return orient3d(P_.v[A.i], P_.v[B.i], P_.v[C.i], P_.v[X.i]);
+    if (A.i == X.i && B.i == X.i && C.i == X.i) return -orient3d(Q_.v[A.j], Q_.v[B.j], Q_.v[C.j], Q_.v[X.j]);
+    return 2;
+  }
   // Sign of n_f·(m_x − m_a): > 0 iff x is strictly beyond facet f's plane.
   int orient(int f, int x) const {
     const Facet& F = F_[f];
@@ -514,6 +527,7 @@ class Expander {
     if (s > F.eo) return 1;
     if (s < -F.eo) return -1;
     if (zero_orient(pairs(F.v[0], F.v[1], F.v[2]), X.i, X.j)) return 0;
+    if (const int o = shared_orient(F.v[0], F.v[1], F.v[2], X); o != 2) return o;
     const Vert& A = V_[F.v[0]];
     return exact_sign([&](auto L) { return dot(normal_l(L, F.v[0], F.v[1], F.v[2]), diff_l(L, X, A)); });
   }
@@ -545,6 +559,28 @@ class Expander {
     if (s < -D.e0) return -1;
     return exact_sign([&](auto L) { return dot(dir_l(L, D), m_l(L, V_[x])); });
   }
+  // cmp_p / cmp_q by orient3d of input points when D is the normal of a triangle of pairs sharing
+  // their Q vertex (cmp_p: n·(p_w − p_v) = O(p_w) − O(p_v), O(x) = orient3d(p_a, p_b, p_c, x)) or
+  // their P vertex (cmp_q: n·R(q_v − q_w) = det(R)·(O(q_v) − O(q_w)), see shared_orient), and the
+  // two signs decide the difference (one is 0, or they differ); 2 otherwise.
+  int shared_difference(const Dir& D, bool of_p, int v, int w) const {
+    if (D.kind != Dir::Normal) return 2;
+    const Vert &A = V_[D.a], &B = V_[D.b], &C = V_[D.c];
+    int ov, ow;
+    if (of_p && A.j == B.j && B.j == C.j) {
+      ov = orient3d(P_.v[A.i], P_.v[B.i], P_.v[C.i], P_.v[v]), ow = orient3d(P_.v[A.i], P_.v[B.i], P_.v[C.i], P_.v[w]);
+      std::swap(ov, ow);  // the sign of O(w) − O(v)
+    } else if (!of_p && A.i == B.i && B.i == C.i) {
+      ov = orient3d(Q_.v[A.j], Q_.v[B.j], Q_.v[C.j], Q_.v[v]), ow = orient3d(Q_.v[A.j], Q_.v[B.j], Q_.v[C.j], Q_.v[w]);
+    } else {
+      return 2;
+    }
+    // Now the sign wanted is D.sgn · sign(O1 − O2) with O1 ~ ov, O2 ~ ow.
+    if (ow == 0) return D.sgn * ov;
+    if (ov == 0) return -D.sgn * ow;
+    if (ov != ow) return D.sgn * ov;
+    return 2;
+  }
   // Sign of D·(p_w − p_v) (> 0: w is a strictly better P support).
   int cmp_p(const Dir& D, int v, int w) const {
     const Vec3 &pv = P_.v[v], &pw = P_.v[w];
@@ -552,6 +588,7 @@ class Expander {
     if (s > D.ep) return 1;
     if (s < -D.ep) return -1;
     if (v == w || (D.structural && zero_pair(D.t, true, v, w))) return 0;
+    if (const int o = shared_difference(D, true, v, w); o != 2) return o;
     return exact_sign([&](auto L) {
       V3<Num<decltype(L)>> e{L(pw[0]) - L(pv[0]), L(pw[1]) - L(pv[1]), L(pw[2]) - L(pv[2])};
       return dot(dir_l(L, D), e);
@@ -564,6 +601,7 @@ class Expander {
     if (s > D.eq) return 1;
     if (s < -D.eq) return -1;
     if (v == w || (D.structural && zero_pair(D.t, false, v, w))) return 0;
+    if (const int o = shared_difference(D, false, v, w); o != 2) return o;
     return exact_sign([&](auto L) {
       auto n = dir_l(L, D);
       V3<Num<decltype(L)>> e{L(qv[0]) - L(qw[0]), L(qv[1]) - L(qw[1]), L(qv[2]) - L(qw[2])};
@@ -897,9 +935,13 @@ class Expander {
     // else exactly (a normal spanned by pairs that differ by far less than the shapes' size can
     // cancel completely in double-double: 1e-44 details on a unit shape gave n̂ = 0, a move of 0);
     // normalised after scaling by a power of two, so that no square underflows.
+    // An exactly zero component (a facet of M parallel to an axis: P's or Q's face normal) is
+    // recognised by its exact sign first (cheap when the inputs' products are exact doubles).
     Vec3 nv;
-    for (int k = 0; k < 3; ++k)
-      nv[k] = ok(n[k]) ? n[k].hi : accurate([&](auto L) { return normal_l(L, v[0], v[1], v[2])[k]; });
+    for (int k = 0; k < 3; ++k) {
+      auto nk = [&](auto L) { return normal_l(L, v[0], v[1], v[2])[k]; };
+      nv[k] = ok(n[k]) ? n[k].hi : exact_sign(nk) == 0 ? 0.0 : accurate(nk);
+    }
     const Vec3 u = unit_vector(nv);
     for (int k = 0; k < 3; ++k) F_[f].unit[k] = u[k];
   }
@@ -1306,11 +1348,101 @@ class Expander {
     r.normal = r.facet_normal = Rp * u;
     r.witness_p = r.witness_q = Rp * w + tp;
     r.feature_p = c[0], r.feature_q = c[1];
-    if (seed) seed->pairs = pr, seed->valid = true;
+    if (seed) save_seed(pr, best, *seed);
     return r;
   }
 
   // ---- warm start --------------------------------------------------------------------------
+  // The seed: the canonical facet's pairs, then the vertices of K's facets up to kSeedDepth steps
+  // from best (breadth first), distinct, at most ExpandSeed::kMaxPairs in all. Measured
+  // (bench_motion_trajectory, docs/benchmarks.md): one step saves the most time on real hulls;
+  // more steps save support queries but cost more to insert.
+  static constexpr std::size_t kSeedDepth = 1;
+  void save_seed(const std::array<int, 6>& pr, int best, ExpandSeed& seed) {
+    std::copy(pr.begin(), pr.end(), seed.pairs.begin());
+    seed.count = 3;
+    seed.valid = true;
+    // Pairs on the facet's plane by the structure of a face of P (or Q) met by one vertex of Q
+    // (of P) are left out: they would only be found coplanar again (exact zeros).
+    const bool face_p = pr[1] == pr[3] && pr[3] == pr[5], face_q = pr[0] == pr[2] && pr[2] == pr[4];
+    face_.clear();
+    if (face_p || face_q) {
+      const PolytopeData& S = face_p ? P_ : Q_;
+      const int a = face_p ? pr[0] : pr[1];
+      for (int t : incident_face(S, a, face_p ? std::array<int, 3>{pr[0], pr[2], pr[4]} : std::array<int, 3>{pr[1], pr[3], pr[5]})) face_.push_back(t);
+    }
+    auto add = [&](int x) {
+      const int i = V_[x].i, j = V_[x].j;
+      if (face_p && j == pr[1] && std::find(face_.begin(), face_.end(), i) != face_.end()) return;
+      if (face_q && i == pr[0] && std::find(face_.begin(), face_.end(), j) != face_.end()) return;
+      for (int k = 0; k < seed.count; ++k)
+        if (seed.pairs[2 * k] == i && seed.pairs[2 * k + 1] == j) return;
+      if (seed.count < ExpandSeed::kMaxPairs) seed.pairs[2 * seed.count] = i, seed.pairs[2 * seed.count + 1] = j, ++seed.count;
+    };
+    ++stamp_;
+    const int seen = 2 * stamp_;
+    vis_.assign(1, best);
+    mark_[best] = seen;
+    std::size_t level_end = 1;
+    for (std::size_t q = 0, depth = 0; q < vis_.size() && depth <= kSeedDepth; ++q) {
+      if (q == level_end) ++depth, level_end = vis_.size();
+      if (depth > kSeedDepth) break;
+      for (int k = 0; k < 3; ++k) {
+        add(F_[vis_[q]].v[k]);
+        const int g = F_[vis_[q]].nb[k];
+        if (mark_[g] != seen) mark_[g] = seen, vis_.push_back(g);
+      }
+    }
+  }
+  // The vertices of S's flat face containing the triangle with vertices t (a triangle of S).
+  std::vector<int> incident_face(const PolytopeData& S, int a, const std::array<int, 3>& t) {
+    const auto& L = S.levels[0];
+    int tri = -1;
+    for (int h = L.fv.size() > 0 ? S.vertex_he[a] : -1, first = h; h >= 0;) {  // triangles around a
+      const int f = h / 3;
+      const auto& v = S.tris[f];
+      if (std::is_permutation(v.begin(), v.end(), t.begin())) {
+        tri = f;
+        break;
+      }
+      h = L.ccw(h);
+      if (h == first) break;
+    }
+    std::vector<int> verts;
+    if (tri < 0) return verts;
+    flat_face(S, tri);
+    for (int g : face_)
+      for (int x : S.tris[g])
+        if (std::find(verts.begin(), verts.end(), x) == verts.end()) verts.push_back(x);
+    return verts;
+  }
+  // The first K from a seed: the tetrahedron on its facet (warm_tetrahedron), then its other
+  // pairs inserted where they lie strictly beyond a facet (K stays a polytope of pairs, convex,
+  // outward). False (nothing built) when the seed is not usable.
+  bool warm_start(const ExpandSeed& sd) {
+    std::array<int, 6> facet;
+    std::copy(sd.pairs.begin(), sd.pairs.begin() + 6, facet.begin());
+    if (sd.count < 3 || sd.count > ExpandSeed::kMaxPairs || !warm_tetrahedron(facet)) return false;
+    const int n = static_cast<int>(P_.v.size()), m = static_cast<int>(Q_.v.size());
+    for (int k = 3; k < sd.count; ++k) {
+      const int i = sd.pairs[2 * k], j = sd.pairs[2 * k + 1];
+      if (i < 0 || i >= n || j < 0 || j >= m) continue;
+      const int x = add_vert(i, j);
+      int f = -1;
+      for (int g : alive_)
+        if (orient(g, x) > 0) {
+          f = g;
+          break;
+        }
+      if (f < 0) {
+        V_.pop_back();
+        continue;
+      }
+      expand(f, x, Mode::A);
+    }
+    return true;
+  }
+
   // The first K from a seed: the three pairs of the previous answer's facet (points of M at any
   // pose) and the support along the opposite of their normal (or along it), a tetrahedron when
   // that support is strictly off their plane. False (nothing built) when the seed is not usable
@@ -1326,22 +1458,19 @@ class Expander {
     diff_r(V_[s2], V_[s1], e);
     diff_r(V_[s3], V_[s1], e2);
     cross_r(e, e2, nr);
+    // The support along ∓ the rounded normal (a plain vector: any direction is correct, and its
+    // exact comparisons are cheap), then its exact side of the pairs' plane.
     int s4 = -1, o = 0;
+    add_facet(s1, s2, s3);
     for (int sg : {-1, 1}) {
-      Dir D;
-      D.kind = Dir::Normal;
-      D.a = s1, D.b = s2, D.c = s3, D.sgn = sg;
-      D.structural = true;
-      D.t = pairs(s1, s2, s3);
-      D.n = sg * Vec3(nr[0], nr[1], nr[2]);
-      finish_dir(D, ne_);
-      const int x = support_cold(D);
-      if (int side = dir_side(D, x, s1); side != 0) {
-        s4 = x, o = side * sg;
+      const int x = support_cold(vec_dir(sg * Vec3(nr[0], nr[1], nr[2])));
+      if (const int side = orient(0, x); side != 0) {
+        s4 = x, o = side;
         break;
       }
       V_.pop_back();
     }
+    F_.clear(), mark_.clear(), alive_.clear(), pos_.clear(), keys_.clear();
     if (s4 < 0) {  // the pairs are collinear now (their normal is 0) or M is flat: start cold
       V_.clear();
       return false;

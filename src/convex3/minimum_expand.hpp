@@ -14,11 +14,15 @@
 
 namespace pendepth::convex3 {
 
-/// Warm start of σ (coherent motion, survey §3.3): the three pairs (i, j) spanning the previous
-/// answer's facet of M. Any seed gives the same answer bit for bit (only `candidates`, the work,
+/// Warm start of σ (coherent motion, survey §3.3): the pairs (i, j) spanning the previous
+/// answer's facet of M and its neighbourhood in the previous K. Any seed gives the same answer bit for bit (only `candidates`, the work,
 /// differs); a seed from the same pair of shapes at a nearby pose saves most support queries.
 struct ExpandSeed {
-  std::array<int, 6> pairs{};
+  static constexpr int kMaxPairs = 16;
+  /// (i, j) × count: the facet's three pairs, then pairs of K's nearby vertices (on the facets
+  /// of K next to the answer's), which the warm start inserts first.
+  std::array<int, 2 * kMaxPairs> pairs{};
+  int count = 0;
   bool valid = false;
 };
 

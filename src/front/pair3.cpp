@@ -188,9 +188,10 @@ Depth3 Pair3::minimum(const Pose3& pose_p, const Pose3& pose_q, WarmStart3& warm
   const Pose3 ep = engine_pose(scale, pose_p, "pose of P"), eq = engine_pose(scale, pose_q, "pose of Q");
   const void *p = &engine_P_.polytope(), *q = &engine_Q_.polytope();
   convex3::ExpandSeed seed;
-  if (warm.valid_ && warm.p_ == p && warm.q_ == q) seed.pairs = warm.pairs_, seed.valid = true;
+  static_assert(sizeof(seed.pairs) == sizeof(warm.pairs_));
+  if (warm.valid_ && warm.p_ == p && warm.q_ == q) seed.pairs = warm.pairs_, seed.count = warm.count_, seed.valid = true;
   const Depth3 r = scale.answer(convex3::minimum_depth_seeded(engine_P_.polytope(), ep, engine_Q_.polytope(), eq, &seed));
-  warm.p_ = p, warm.q_ = q, warm.pairs_ = seed.pairs, warm.valid_ = seed.valid;
+  warm.p_ = p, warm.q_ = q, warm.pairs_ = seed.pairs, warm.count_ = seed.count, warm.valid_ = seed.valid;
   return r;
 }
 
