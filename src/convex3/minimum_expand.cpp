@@ -240,6 +240,7 @@ struct Workspace {
   std::vector<int> alive, pos;  // live facets (dense) and each facet's index there (−1: dead)
   std::vector<double> keys;     // Phase B key of alive[k]; +inf: not a candidate
   std::vector<int> ties, face;  // Phase B: facets exactly as near as the best; a flat face's triangles
+  std::vector<int> face_verts;  // the warm seed: vertices of the answer's flat face
 };
 
 // Inlining (a hot path tuned by instruction counts): the named steps are [[gnu::always_inline]],
@@ -256,7 +257,7 @@ class Expander {
   [[gnu::always_inline]] Expander(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel, Workspace& ws)
       : P_(convex3::data_of(Pp)), Q_(convex3::data_of(Qp)), AP_(vertex_adjacency(P_)), AQ_(vertex_adjacency(Q_)), R_(rel.R),
         V_(ws.V), F_(ws.F), mark_(ws.mark), vis_(ws.vis), by_start_(ws.by_start), by_end_(ws.by_end),
-        hor_(ws.hor), alive_(ws.alive), pos_(ws.pos), keys_(ws.keys), ties_(ws.ties), face_(ws.face) {
+        hor_(ws.hor), alive_(ws.alive), pos_(ws.pos), keys_(ws.keys), ties_(ws.ties), face_(ws.face), face_verts_(ws.face_verts) {
     V_.clear(), F_.clear(), mark_.clear(), alive_.clear(), pos_.clear(), keys_.clear();
     init_coordinate_bounds(rel);
     init_normal_bounds();
@@ -327,6 +328,7 @@ class Expander {
   std::vector<double>& keys_;
   std::vector<int>& ties_;
   std::vector<int>& face_;
+  std::vector<int>& face_verts_;
   int stamp_ = 0;
   std::size_t iters_ = 0;
   int cone_first_ = 0;  // first facet of the last cone built
@@ -1251,66 +1253,100 @@ class Expander {
         if (std::find(face_.begin(), face_.end(), g) == face_.end()) face_.push_back(g);
       }
   }
-  // A support feature of dimension dim made canonical: a face → its least triangle id
-  // (as_vertex: its least vertex), an edge → (as_vertex) its least endpoint.
-  Feature3 canonical(const PolytopeData& S, const Feature3& f, int dim, bool as_vertex) {
-    if (dim == 0) return f;
-    if (dim == 1) {
-      if (!as_vertex) return f;  // already the half-edge with the smaller id
-      const auto& L = S.levels[0];
-      return {FeatureKind3::Vertex, std::min(L.origin(f.index), L.target(f.index))};
-    }
-    flat_face(S, f.index);
-    int t = face_[0], v = S.tris[t][0];
-    for (int g : face_) {
-      t = std::min(t, g);
-      for (int x : S.tris[g]) v = std::min(v, x);
-    }
-    return as_vertex ? Feature3{FeatureKind3::Vertex, v} : Feature3{FeatureKind3::Face, t};
+  // Vertices in the lexicographic order of their coordinates (distinct vertices differ): the
+  // canonical choices below depend on the shapes' geometry, not on their vertex numbering (a
+  // shape rebuilt from its vertices, e.g. unpickled, answers the same bits).
+  static bool lex_less(const PolytopeData& S, int a, int b) {
+    const Vec3 &x = S.v[a], &y = S.v[b];
+    return x[0] != y[0] ? x[0] < y[0] : x[1] != y[1] ? x[1] < y[1] : x[2] < y[2];
   }
-  // The canonical features of the facet of M that facet f of K lies on: P's face and Q's least
-  // vertex in the support set, else P's least vertex and Q's face, else the two edges.
-  Features canonical_features(int f) {
+  // The flat face of S containing triangle t: its least triangle id, its lexicographically least
+  // vertex a, and the canonical triangle (a, next(a), prev(a)) — a and its neighbours on the face's
+  // boundary, counter-clockwise from outside (a is a corner: S has no collinear boundary vertices).
+  struct FaceCanon {
+    int tri, least;
+    std::array<int, 3> t;
+  };
+  FaceCanon face_canon(const PolytopeData& S, int t) {
+    flat_face(S, t);
+    FaceCanon c{face_[0], S.tris[face_[0]][0], {}};
+    for (int g : face_) {
+      c.tri = std::min(c.tri, g);
+      for (int x : S.tris[g])
+        if (lex_less(S, x, c.least)) c.least = x;
+    }
+    const auto& L = S.levels[0];
+    int next = -1, prev = -1;
+    for (int g : face_)
+      for (int k = 0; k < 3; ++k) {
+        const int h = 3 * g + k;
+        if (!true_edge(S, h)) continue;
+        if (L.origin(h) == c.least) next = L.target(h);
+        if (L.target(h) == c.least) prev = L.origin(h);
+      }
+    c.t = {c.least, next, prev};
+    return c;
+  }
+  // The least vertex (lexicographically) of a support set of dimension dim around feature f.
+  int least_vertex(const PolytopeData& S, const Feature3& f, int dim) {
+    if (dim == 0) return f.index;
+    if (dim == 2) return face_canon(S, f.index).least;
+    const auto& L = S.levels[0];
+    const int a = L.origin(f.index), b = L.target(f.index);
+    return lex_less(S, a, b) ? a : b;
+  }
+  // The canonical features of the facet of M that facet f of K lies on (P's face and Q's least
+  // vertex in its support set, else P's least vertex and Q's face, else the two edges) and three
+  // pairs spanning it in outward order (edge–edge: the caller fixes the orientation).
+  struct Canon {
+    Features c;
+    std::array<int, 6> pr;
+  };
+  Canon canonical_of(int f) {
     const Facet& B = F_[f];
     const Dir D = facet_dir(f);
     int dp = 0, dq = 0;
     const Feature3 fp = support_feature(D, true, V_[B.v[0]].i, dp);
     const Feature3 fq = support_feature(D, false, V_[B.v[0]].j, dq);
-    if (dp == 2) return {canonical(P_, fp, 2, false), canonical(Q_, fq, dq, true)};
-    if (dq == 2) return {canonical(P_, fp, dp, true), canonical(Q_, fq, 2, false)};
-    return {fp, fq};
-  }
-  static bool less(const Features& a, const Features& b) {
-    auto key = [](const Features& f) {
-      return std::array<int, 4>{static_cast<int>(f[0].kind), f[0].index, static_cast<int>(f[1].kind), f[1].index};
-    };
-    return key(a) < key(b);
-  }
-  // Three pairs (i, j) spanning the facet of M named by canonical features, in outward order
-  // (edge–edge: the caller fixes the orientation).
-  std::array<int, 6> canonical_pairs(const Features& c) const {
-    if (c[0].kind == FeatureKind3::Face) {
-      const auto& t = P_.tris[c[0].index];
-      const int j = c[1].index;
-      return {t[0], j, t[1], j, t[2], j};
+    Canon k;
+    if (dp == 2) {
+      const int j = least_vertex(Q_, fq, dq);
+      const FaceCanon F = face_canon(P_, fp.index);
+      k.c = {Feature3{FeatureKind3::Face, F.tri}, Feature3{FeatureKind3::Vertex, j}};
+      k.pr = {F.t[0], j, F.t[1], j, F.t[2], j};
+    } else if (dq == 2) {
+      const int i = least_vertex(P_, fp, dp);
+      const FaceCanon F = face_canon(Q_, fq.index);
+      k.c = {Feature3{FeatureKind3::Vertex, i}, Feature3{FeatureKind3::Face, F.tri}};
+      k.pr = {i, F.t[0], i, F.t[2], i, F.t[1]};  // −Q's face: Q's triangle reversed
+    } else {
+      const auto &LP = P_.levels[0], &LQ = Q_.levels[0];
+      int a = LP.origin(fp.index), b = LP.target(fp.index), x = LQ.origin(fq.index), y = LQ.target(fq.index);
+      if (lex_less(P_, b, a)) std::swap(a, b);
+      if (lex_less(Q_, y, x)) std::swap(x, y);
+      k.c = {fp, fq};
+      k.pr = {a, x, b, x, a, y};
     }
-    if (c[1].kind == FeatureKind3::Face) {  // −Q's face: Q's triangle reversed
-      const auto& t = Q_.tris[c[1].index];
-      const int i = c[0].index;
-      return {i, t[0], i, t[2], i, t[1]};
+    return k;
+  }
+  // The order of facets of M at distance σ: kinds, then the coordinates of the spanning pairs.
+  bool less(const Canon& a, const Canon& b) const {
+    for (int k = 0; k < 2; ++k)
+      if (a.c[k].kind != b.c[k].kind) return a.c[k].kind < b.c[k].kind;
+    for (int k = 0; k < 6; ++k) {
+      const PolytopeData& S = k % 2 == 0 ? P_ : Q_;
+      if (a.pr[k] != b.pr[k]) return lex_less(S, a.pr[k], b.pr[k]);
     }
-    const auto &LP = P_.levels[0], &LQ = Q_.levels[0];
-    const int a = LP.origin(c[0].index), b = LP.target(c[0].index);
-    const int x = LQ.origin(c[1].index), y = LQ.target(c[1].index);
-    return {a, x, b, x, a, y};
+    return false;
   }
 
   // σ's answer from phase B's best facet: see above. The seed (if any) receives the pairs.
   Depth3 canonical_result(int best, const Eigen::Matrix3d& Rp, const Vec3& tp, ExpandSeed* seed) {
-    Features c = canonical_features(best);
+    Canon best_c = canonical_of(best);
     for (int t : ties_)
-      if (Features ct = canonical_features(t); less(ct, c)) c = ct;
-    std::array<int, 6> pr = canonical_pairs(c);
+      if (Canon ct = canonical_of(t); less(ct, best_c)) best_c = ct;
+    const Features c = best_c.c;
+    std::array<int, 6> pr = best_c.pr;
     const int a = add_vert(pr[0], pr[1]), b = add_vert(pr[2], pr[3]), x = add_vert(pr[4], pr[5]);
     int f = add_facet(a, b, x);
     if (c[0].kind == FeatureKind3::Edge && hsign(f) < 0) {  // 0 strictly inside: h > 0 outward
@@ -1335,11 +1371,11 @@ class Expander {
       w = R_ * Q_.v[c[1].index] + t + move;
     } else if (c[1].kind == FeatureKind3::Face) {
       w = P_.v[c[0].index];
-    } else {
-      const auto &LP = P_.levels[0], &LQ = Q_.levels[0];
-      const Vec3 pa = P_.v[LP.origin(c[0].index)], e = P_.v[LP.target(c[0].index)] - pa;
-      const Vec3 qa = R_ * Q_.v[LQ.origin(c[1].index)] + t + move;
-      const Vec3 g = R_ * (Q_.v[LQ.target(c[1].index)] - Q_.v[LQ.origin(c[1].index)]);
+    } else {  // pr = (a, x), (b, x), (a, y) or (a, x), (a, y), (b, x)
+      const int a = pr[0], x = pr[1], b = pr[2] == a ? pr[4] : pr[2], y = pr[3] == x ? pr[5] : pr[3];
+      const Vec3 pa = P_.v[a], e = P_.v[b] - pa;
+      const Vec3 qa = R_ * Q_.v[x] + t + move;
+      const Vec3 g = R_ * (Q_.v[y] - Q_.v[x]);
       const Vec3 n = e.cross(g);
       const double s = (qa - pa).cross(g).dot(n) / n.squaredNorm();
       w = pa + (std::isfinite(s) ? std::clamp(s, 0.0, 1.0) : 0.0) * e;
@@ -1348,7 +1384,7 @@ class Expander {
     r.normal = r.facet_normal = Rp * u;
     r.witness_p = r.witness_q = Rp * w + tp;
     r.feature_p = c[0], r.feature_q = c[1];
-    if (seed) save_seed(pr, best, *seed);
+    if (seed) save_seed(pr, best, c, *seed);
     return r;
   }
 
@@ -1358,23 +1394,25 @@ class Expander {
   // (bench_motion_trajectory, docs/benchmarks.md): one step saves the most time on real hulls;
   // more steps save support queries but cost more to insert.
   static constexpr std::size_t kSeedDepth = 1;
-  void save_seed(const std::array<int, 6>& pr, int best, ExpandSeed& seed) {
+  void save_seed(const std::array<int, 6>& pr, int best, const Features& c, ExpandSeed& seed) {
     std::copy(pr.begin(), pr.end(), seed.pairs.begin());
     seed.count = 3;
     seed.valid = true;
     // Pairs on the facet's plane by the structure of a face of P (or Q) met by one vertex of Q
     // (of P) are left out: they would only be found coplanar again (exact zeros).
-    const bool face_p = pr[1] == pr[3] && pr[3] == pr[5], face_q = pr[0] == pr[2] && pr[2] == pr[4];
-    face_.clear();
+    const bool face_p = c[0].kind == FeatureKind3::Face, face_q = c[1].kind == FeatureKind3::Face;
+    std::vector<int>& face_verts = face_verts_;
+    face_verts.clear();
     if (face_p || face_q) {
       const PolytopeData& S = face_p ? P_ : Q_;
-      const int a = face_p ? pr[0] : pr[1];
-      for (int t : incident_face(S, a, face_p ? std::array<int, 3>{pr[0], pr[2], pr[4]} : std::array<int, 3>{pr[1], pr[3], pr[5]})) face_.push_back(t);
+      flat_face(S, c[face_p ? 0 : 1].index);
+      for (int g : face_)
+        for (int x : S.tris[g]) face_verts.push_back(x);
     }
     auto add = [&](int x) {
       const int i = V_[x].i, j = V_[x].j;
-      if (face_p && j == pr[1] && std::find(face_.begin(), face_.end(), i) != face_.end()) return;
-      if (face_q && i == pr[0] && std::find(face_.begin(), face_.end(), j) != face_.end()) return;
+      if (face_p && j == pr[1] && std::find(face_verts.begin(), face_verts.end(), i) != face_verts.end()) return;
+      if (face_q && i == pr[0] && std::find(face_verts.begin(), face_verts.end(), j) != face_verts.end()) return;
       for (int k = 0; k < seed.count; ++k)
         if (seed.pairs[2 * k] == i && seed.pairs[2 * k + 1] == j) return;
       if (seed.count < ExpandSeed::kMaxPairs) seed.pairs[2 * seed.count] = i, seed.pairs[2 * seed.count + 1] = j, ++seed.count;
@@ -1393,28 +1431,6 @@ class Expander {
         if (mark_[g] != seen) mark_[g] = seen, vis_.push_back(g);
       }
     }
-  }
-  // The vertices of S's flat face containing the triangle with vertices t (a triangle of S).
-  std::vector<int> incident_face(const PolytopeData& S, int a, const std::array<int, 3>& t) {
-    const auto& L = S.levels[0];
-    int tri = -1;
-    for (int h = L.fv.size() > 0 ? S.vertex_he[a] : -1, first = h; h >= 0;) {  // triangles around a
-      const int f = h / 3;
-      const auto& v = S.tris[f];
-      if (std::is_permutation(v.begin(), v.end(), t.begin())) {
-        tri = f;
-        break;
-      }
-      h = L.ccw(h);
-      if (h == first) break;
-    }
-    std::vector<int> verts;
-    if (tri < 0) return verts;
-    flat_face(S, tri);
-    for (int g : face_)
-      for (int x : S.tris[g])
-        if (std::find(verts.begin(), verts.end(), x) == verts.end()) verts.push_back(x);
-    return verts;
   }
   // The first K from a seed: the tetrahedron on its facet (warm_tetrahedron), then its other
   // pairs inserted where they lie strictly beyond a facet (K stays a polytope of pairs, convex,
