@@ -171,7 +171,8 @@ std::vector<Path2> make_case2(int angles) {
     for (std::size_t i = 0; i + 1 < pieces.size() && i < 6; ++i) {
       Path2 p{pieces[i], pieces[i + 1], {}};
       double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
-      for (const Vec2& v : p.P.rings()[0])
+      const auto rings = p.P.rings();
+      for (const Vec2& v : rings[0])
         for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], v[k]), hi[k] = std::max(hi[k], v[k]);
       const double r = 0.5 * std::max(hi[0] - lo[0], hi[1] - lo[1]);
       Vec2 c(0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])), t = c;

@@ -1394,6 +1394,7 @@ class Expander {
   // (bench_motion_trajectory, docs/benchmarks.md): one step saves the most time on real hulls;
   // more steps save support queries but cost more to insert.
   static constexpr std::size_t kSeedDepth = 1;
+  static constexpr std::size_t kWarmMaxVertices = 128;
   void save_seed(const std::array<int, 6>& pr, int best, const Features& c, ExpandSeed& seed) {
     std::copy(pr.begin(), pr.end(), seed.pairs.begin());
     seed.count = 3;
@@ -1436,6 +1437,9 @@ class Expander {
   // pairs inserted where they lie strictly beyond a facet (K stays a polytope of pairs, convex,
   // outward). False (nothing built) when the seed is not usable.
   bool warm_start(const ExpandSeed& sd) {
+    // Measured (docs/benchmarks.md): on larger round hulls the seed's small facets make the
+    // filters of the first steps fail and the warm start costs more than it saves: start cold.
+    if (P_.v.size() > kWarmMaxVertices || Q_.v.size() > kWarmMaxVertices) return false;
     std::array<int, 6> facet;
     std::copy(sd.pairs.begin(), sd.pairs.begin() + 6, facet.begin());
     if (sd.count < 3 || sd.count > ExpandSeed::kMaxPairs || !warm_tetrahedron(facet)) return false;
@@ -1474,6 +1478,13 @@ class Expander {
     diff_r(V_[s2], V_[s1], e);
     diff_r(V_[s3], V_[s1], e2);
     cross_r(e, e2, nr);
+    // A heuristic gate (any start is correct): the seed helps only while 0 is still on the inner
+    // side of its facet's plane (rounded); after a jump it would only cost, start cold then.
+    const double* ma = V_[s1].mh;
+    if (!(nr[0] * ma[0] + nr[1] * ma[1] + nr[2] * ma[2] > 0)) {
+      V_.clear();
+      return false;
+    }
     // The support along ∓ the rounded normal (a plain vector: any direction is correct, and its
     // exact comparisons are cheap), then its exact side of the pairs' plane.
     int s4 = -1, o = 0;
