@@ -57,10 +57,26 @@
 // a Q index) are recognised symbolically, so the exact zeros met at every termination never
 // reach the exact fallback.
 //
-// Result (σ): depth = d_F, lower_bound = upper_bound = depth, candidates = number of support queries,
-// features = the defining features of M's facet (a face of P and a vertex of Q, a vertex of P
-// and a face of Q, or two edges; P's face preferred, as in minkowski_facets), witnesses = the
-// point of K's facet nearest to 0 written as a convex combination of pairs (P part, Q' part).
+// Result (σ), canonical: a function of the facets of M at distance σ, never of K — which depends
+// on the start (a warm start, survey §3.3) and triangulates a polygonal facet of M in many ways.
+// Phase B also expands K's facets exactly as near as the best one on other planes until each is
+// on a facet of M, so every facet of M at distance σ is known; the answer ends on the least of
+// them by (feature kinds, coordinates of three spanning pairs). Features: a face of P and the
+// lexicographically least vertex of Q's support set, a vertex of P (least) and a face of Q, or
+// two edges (P's face preferred, as in minkowski_facets); a face is reported by its least
+// triangle id. Depth, normal and witnesses are computed from three pairs the features fix (the
+// face's least vertex and its two boundary neighbours with Q's vertex; P's vertex with Q's
+// triangle; the edges' least endpoints): depth = d_F, lower_bound = upper_bound = depth,
+// witnesses = the contact point after the move as in the reference (depth3.cpp): Q's vertex
+// moved onto P's face, P's vertex, or the crossing of the two edges. candidates = the number of
+// support queries (the only field a start changes). Vertex choices are by coordinates, so a hull
+// rebuilt with another vertex numbering answers the same bits (feature indices aside).
+// Warm start (ExpandSeed): the previous answer's three pairs (points of M at every pose) and the
+// support along the opposite of their normal make the first tetrahedron, then the pairs of the
+// neighbouring facets of the previous K are inserted where they lie strictly beyond a facet; Phase
+// A and B proceed as from a cold start. Measured: half the support queries on small steps, about
+// the same time (docs/benchmarks.md); gated off above 128 vertices per shape and when 0 is no
+// longer inside the seed facet's plane (heuristics: any start gives the same answer).
 // Result (σ_d): kind Directional, depth = lower = upper bound, translation = σ_d·d̂, normal = d̂,
 // facet_normal = n_F/|n_F|, the same features, witnesses = the exit point t·d as a convex
 // combination of F's pairs (weights from the accurate dets above), candidates = support queries.
@@ -917,8 +933,21 @@ class Expander {
     double nu = nn * (1 + 4 * kU) + ne_norm_ * (2 * std::abs(F.n[0]) + 2 * std::abs(F.n[1]) + 2 * std::abs(F.n[2]) + ne_norm_);
     return hl > 0 ? hl * hl / nu * (1 - 0x1p-49) : 0.0;
   }
+  // The facet's vertices rotated so that the least pair (by P's then Q's vertex coordinates)
+  // comes first: the values of refine() are then a function of the three pairs, whichever
+  // facet of K holds them (canonical_result reuses best's values when it is the canonical triple).
+  bool pair_less(int x, int y) const {
+    const Vert &X = V_[x], &Y = V_[y];
+    if (X.i != Y.i) return lex_less(P_, X.i, Y.i);
+    return X.j != Y.j && lex_less(Q_, X.j, Y.j);
+  }
+  std::array<int, 3> rotated_least(int f) const {
+    const auto& v = F_[f].v;
+    const int r = pair_less(v[1], v[0]) ? (pair_less(v[2], v[1]) ? 2 : 1) : (pair_less(v[2], v[0]) ? 2 : 0);
+    return {v[r], v[(r + 1) % 3], v[(r + 2) % 3]};
+  }
   void refine(int f) {
-    const auto v = F_[f].v;
+    const auto v = rotated_least(f);
     auto h_l = [&](auto L) { return dot(normal_l(L, v[0], v[1], v[2]), m_l(L, V_[v[0]])); };
     auto n2_l = [&](auto L) {
       auto n = normal_l(L, v[0], v[1], v[2]);
@@ -1347,13 +1376,29 @@ class Expander {
       if (Canon ct = canonical_of(t); less(ct, best_c)) best_c = ct;
     const Features c = best_c.c;
     std::array<int, 6> pr = best_c.pr;
-    const int a = add_vert(pr[0], pr[1]), b = add_vert(pr[2], pr[3]), x = add_vert(pr[4], pr[5]);
-    int f = add_facet(a, b, x);
-    if (c[0].kind == FeatureKind3::Edge && hsign(f) < 0) {  // 0 strictly inside: h > 0 outward
-      f = add_facet(a, x, b);
-      std::swap(pr[2], pr[4]), std::swap(pr[3], pr[5]);
+    // best's own values when it is spanned by the same pairs (refine() starts at the least pair,
+    // which pr does too), else those of the canonical triple.
+    int f = best;
+    const auto bv = rotated_least(best);
+    bool same = true;
+    for (int k = 0; k < 3 && same; ++k) same = V_[bv[k]].i == pr[2 * k] && V_[bv[k]].j == pr[2 * k + 1];
+    if (c[0].kind == FeatureKind3::Edge && !same) {  // the other orientation of the edge–edge triple
+      same = true;
+      for (int k = 0; k < 3 && same; ++k) {
+        const int m = k == 0 ? 0 : 3 - k;
+        same = V_[bv[k]].i == pr[2 * m] && V_[bv[k]].j == pr[2 * m + 1];
+      }
+      if (same) std::swap(pr[2], pr[4]), std::swap(pr[3], pr[5]);
     }
-    refine(f);
+    if (!same) {
+      const int a = add_vert(pr[0], pr[1]), b = add_vert(pr[2], pr[3]), x = add_vert(pr[4], pr[5]);
+      f = add_facet(a, b, x);
+      if (c[0].kind == FeatureKind3::Edge && hsign(f) < 0) {  // 0 strictly inside: h > 0 outward
+        f = add_facet(a, x, b);
+        std::swap(pr[2], pr[4]), std::swap(pr[3], pr[5]);
+      }
+      refine(f);
+    }
     const Facet& B = F_[f];
     Depth3 r;
     r.kind = DepthKind::Minimum;
