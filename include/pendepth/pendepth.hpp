@@ -259,8 +259,9 @@ class Pair3 {
   /// σ warm-started from the previous answer held in `warm` (updated): equal to
   /// minimum(pose_p, pose_q) bit for bit in every field but `candidates` (the support queries
   /// done), because σ's answer is a function of M's nearest facet alone (the least canonical
-  /// features among the facets at distance σ; src/convex3/minimum_expand.cpp). Cheaper when the
-  /// pose moved little since the previous call (docs/benchmarks.md).
+  /// features among the facets at distance σ; src/convex3/minimum_expand.cpp). About half the
+  /// support queries after a small move; measured time about the same as cold on real hulls
+  /// (docs/benchmarks.md); shapes over 128 vertices always start cold.
   Depth3 minimum(const Pose3& pose_p, const Pose3& pose_q, WarmStart3& warm) const;
   /// σ along a trajectory: out[i] = minimum(pose_p, poses_q[i]), each warm-started from the
   /// previous one (`warm` false: each cold, for comparison), in the calling thread. All poses are
