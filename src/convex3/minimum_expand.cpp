@@ -68,7 +68,8 @@
 // face's least vertex and its two boundary neighbours with Q's vertex; P's vertex with Q's
 // triangle; the edges' least endpoints): depth = d_F, lower_bound = upper_bound = depth,
 // witnesses = the contact point after the move as in the reference (depth3.cpp): Q's vertex
-// moved onto P's face, P's vertex, or the crossing of the two edges. candidates = the number of
+// moved onto P's face, P's vertex, or the crossing of the two edges; for parallel features
+// (face–face, face–edge) a point of the contact region (contact_point). candidates = the number of
 // support queries (the only field a start changes). Vertex choices are by coordinates, so a hull
 // rebuilt with another vertex numbering answers the same bits (feature indices aside).
 // Warm start (ExpandSeed): the previous answer's three pairs (points of M at every pose) and the
@@ -1330,6 +1331,8 @@ class Expander {
   struct Canon {
     Features c;
     std::array<int, 6> pr;
+    Feature3 raw_p, raw_q;  // support features as found, and their dimensions
+    int dp = 0, dq = 0;
   };
   Canon canonical_of(int f) {
     const Facet& B = F_[f];
@@ -1338,6 +1341,7 @@ class Expander {
     const Feature3 fp = support_feature(D, true, V_[B.v[0]].i, dp);
     const Feature3 fq = support_feature(D, false, V_[B.v[0]].j, dq);
     Canon k;
+    k.raw_p = fp, k.raw_q = fq, k.dp = dp, k.dq = dq;
     if (dp == 2) {
       const int j = least_vertex(Q_, fq, dq);
       const FaceCanon F = face_canon(P_, fp.index);
@@ -1367,6 +1371,93 @@ class Expander {
       if (a.pr[k] != b.pr[k]) return lex_less(S, a.pr[k], b.pr[k]);
     }
     return false;
+  }
+
+  // ---- a contact point of parallel features (face–face, face–edge, edge–face) -----------------
+  // The support set of S: vertices (lexicographic order), boundary segments (endpoints and the
+  // segments in lexicographic order) and triangles of a face.
+  struct SupportSet {
+    std::vector<int> verts;
+    std::vector<std::array<int, 2>> edges;
+    std::vector<std::array<int, 3>> tris;
+  };
+  void support_set(const PolytopeData& S, const Feature3& raw, int dim, SupportSet& out) {
+    out.verts.clear(), out.edges.clear(), out.tris.clear();
+    const auto& L = S.levels[0];
+    auto lex = [&](int a, int b) { return lex_less(S, a, b); };
+    if (dim == 1) {
+      out.edges.push_back({L.origin(raw.index), L.target(raw.index)});
+    } else {
+      flat_face(S, raw.index);
+      for (int g : face_) {
+        out.tris.push_back(S.tris[g]);
+        for (int k = 0; k < 3; ++k)
+          if (true_edge(S, 3 * g + k)) out.edges.push_back({L.origin(3 * g + k), L.target(3 * g + k)});
+      }
+    }
+    for (auto& e : out.edges) {
+      if (lex(e[1], e[0])) std::swap(e[0], e[1]);
+      out.verts.push_back(e[0]), out.verts.push_back(e[1]);
+    }
+    std::sort(out.verts.begin(), out.verts.end(), lex);
+    out.verts.erase(std::unique(out.verts.begin(), out.verts.end()), out.verts.end());
+    std::sort(out.edges.begin(), out.edges.end(), [&](const auto& a, const auto& b) {
+      return a[0] != b[0] ? lex(a[0], b[0]) : lex(a[1], b[1]);
+    });
+  }
+  // A point where P's support set touches the moved Q' (P's frame; shift = t + move): a vertex of
+  // Q moved into P's face, a vertex of P in the moved Q's face, or the crossing of two boundary
+  // segments — M's facet is covered by these pieces (a convex polygon plus the other translated,
+  // swept along its edges) — the first in that order (vertices and segments by coordinates, so
+  // the point does not depend on the numbering), in the facet's plane (axes: u without its
+  // largest component). Rounded tests: a point within rounding of a piece's border may pick the
+  // next piece, or the piece it is nearest to if none holds it; always the same one for the same
+  // input.
+  Vec3 contact_point(const Canon& k, const Vec3& shift, const Vec3& u) {
+    SupportSet sp, sq;
+    support_set(P_, k.raw_p, k.dp, sp);
+    support_set(Q_, k.raw_q, k.dq, sq);
+    int ax = 0;
+    for (int a = 1; a < 3; ++a)
+      if (std::abs(u[a]) > std::abs(u[ax])) ax = a;
+    const int a1 = (ax + 1) % 3, a2 = (ax + 2) % 3;
+    auto qm = [&](int j) -> Vec3 { return R_ * Q_.v[j] + shift; };
+    auto cross2 = [&](const Vec3& o, const Vec3& a, const Vec3& b) {
+      return (a[a1] - o[a1]) * (b[a2] - o[a2]) - (a[a2] - o[a2]) * (b[a1] - o[a1]);
+    };
+    // The least normalised barycentric weight of x in triangle (a, b, c).
+    auto weight = [&](const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& c) {
+      const double area = cross2(a, b, c);
+      if (!(area != 0)) return -std::numeric_limits<double>::infinity();
+      return std::min({cross2(x, b, c) / area, cross2(a, x, c) / area, cross2(a, b, x) / area});
+    };
+    Vec3 best = Vec3::Zero();
+    double best_w = -std::numeric_limits<double>::infinity();
+    auto offer = [&](double w, const Vec3& x) {
+      if (w > best_w) best_w = w, best = x;
+      return w >= 0;
+    };
+    for (int j : sq.verts) {
+      const Vec3 x = qm(j);
+      for (const auto& t : sp.tris)
+        if (offer(weight(x, P_.v[t[0]], P_.v[t[1]], P_.v[t[2]]), x)) return x;
+    }
+    for (int i : sp.verts) {
+      const Vec3& x = P_.v[i];
+      for (const auto& t : sq.tris)
+        if (offer(weight(x, qm(t[0]), qm(t[1]), qm(t[2])), x)) return x;
+    }
+    for (const auto& e : sp.edges)
+      for (const auto& f : sq.edges) {
+        const Vec3 &pa = P_.v[e[0]], &pb = P_.v[e[1]];
+        const Vec3 qa = qm(f[0]), qb = qm(f[1]);
+        const double den = cross2(Vec3::Zero(), pb - pa, qb - qa);
+        if (!(den != 0)) continue;
+        const double lam = cross2(Vec3::Zero(), qa - pa, qb - qa) / den, mu = cross2(Vec3::Zero(), qa - pa, pb - pa) / den;
+        const Vec3 x = pa + std::clamp(lam, 0.0, 1.0) * (pb - pa);
+        if (offer(std::min({lam, 1 - lam, mu, 1 - mu}), x)) return x;
+      }
+    return best;
   }
 
   // σ's answer from phase B's best facet: see above. The seed (if any) receives the pairs.
@@ -1412,7 +1503,9 @@ class Expander {
     // P's edge to the moved Q edge's line).
     const Vec3 t(thi_[0] + tlo_[0], thi_[1] + tlo_[1], thi_[2] + tlo_[2]);
     Vec3 w;
-    if (c[0].kind == FeatureKind3::Face) {
+    if ((best_c.dp == 2 && best_c.dq >= 1) || (best_c.dq == 2 && best_c.dp >= 1)) {
+      w = contact_point(best_c, t + move, u);
+    } else if (c[0].kind == FeatureKind3::Face) {
       w = R_ * Q_.v[c[1].index] + t + move;
     } else if (c[1].kind == FeatureKind3::Face) {
       w = P_.v[c[0].index];
