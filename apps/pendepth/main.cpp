@@ -9,6 +9,7 @@
 //   pendepth distance P Q [--offset X,Y[,Z]] [--rotate-q ...] [--rotate-p ...] [--json]
 //   pendepth cast P Q [--offset X,Y[,Z]] --direction X,Y[,Z] [--rotate-q ...] [--rotate-p ...] [--json]
 //   pendepth batch P Q --queries FILE --signed ...   (signed distances: distance,tx,ty[,tz])
+//   pendepth trajectory P Q --poses FILE [--json] [--cold]
 //
 // Exit status: 0 success, 2 bad input (one line on stderr naming file, line and problem),
 // 3 an output that cannot be written (standard output or --svg FILE: full disk, closed pipe,
@@ -35,6 +36,7 @@
 #include <cstring>
 #include <iostream>
 #include <optional>
+#include <vector>
 #include <span>
 #include <string>
 
@@ -663,6 +665,62 @@ int run_nfp(const NfpArgs& a) {
   return 0;
 }
 
+// ---- trajectory: σ at every pose of a path, warm-started from the previous pose ----------------
+struct TrajectoryArgs {
+  std::string p, q, poses;
+  bool json = false, cold = false;
+};
+
+// Answers pose k with `answer(k)`; a bad pose (outside the numeric domain) is named by its line.
+template <class Result, class PoseLine, class Answer>
+std::vector<Result> answer_poses(const std::string& source, const std::vector<PoseLine>& poses, Answer&& answer) {
+  std::vector<Result> out(poses.size());
+  for (std::size_t k = 0; k < poses.size(); ++k) try {
+      out[k] = answer(k);
+    } catch (const InvalidInput& e) {
+      throw InvalidInput(source + ":" + std::to_string(poses[k].line) + ": " + e.what());
+    }
+  return out;
+}
+
+// 2D: Q rotated per pose (Shape2::rotated), one Pair2 per run of equal angles (bitwise), as
+// pendepth::trajectory; --cold builds a pair per pose. 3D: Pair3 with a WarmStart3 (--cold: none).
+// The answers are the same either way, bit for bit.
+int run_trajectory(const TrajectoryArgs& a) {
+  check_one_stdin({&a.p, &a.q, &a.poses});
+  const auto [p, q] = load_pair(a.p, a.q);
+  const std::string source = a.poses == "-" ? kStdin : a.poses;
+  auto text = [&] { return a.poses == "-" ? io::read_stream(std::cin, kStdin) : io::read_text_file(a.poses); };
+  BatchArgs out;
+  out.json = a.json;
+  if (p.dimension() == 3) {
+    const auto poses = io::parse_poses3_csv(text(), source);
+    const Pair3 pair(make_shape3(p, "P"), make_shape3(q, "Q"));
+    pendepth::WarmStart3 warm;
+    const auto results = answer_poses<Depth3>(source, poses, [&](std::size_t k) {
+      const Pose3 pose(poses[k].q, poses[k].t);
+      return a.cold ? pair.minimum(Pose3(), pose) : pair.minimum(Pose3(), pose, warm);
+    });
+    return write_batch(out, results, "depth,tx,ty,tz\n", [&](std::string& o, const Depth3& r) {
+      io::append_json(o, r, pair.P().polytope(), pair.Q().polytope());
+    });
+  }
+  const auto poses = io::parse_poses2_csv(text(), source);
+  const Shape2 P = make_shape2(p, "P"), Q = make_shape2(q, "Q");
+  std::optional<Pair2> pair;
+  double angle = 0;
+  std::vector<Shape2> rotated;  // Q at each pose's angle, for the JSON features
+  const auto results = answer_poses<Depth2>(source, poses, [&](std::size_t k) {
+    const double deg = poses[k].degrees;
+    if (a.cold || !pair || std::memcmp(&deg, &angle, sizeof deg) != 0) pair.emplace(P, Q.rotated(deg)), angle = deg;
+    if (a.json) rotated.push_back(pair->Q());
+    return pair->minimum(poses[k].t);
+  });
+  std::size_t k = 0;
+  return write_batch(out, results, "depth,tx,ty\n",
+                     [&](std::string& o, const Depth2& r) { append_json(o, r, P, rotated[k++]); });
+}
+
 std::string one_line(std::string s) {
   std::replace(s.begin(), s.end(), '\n', ' ');
   return s;
@@ -765,6 +823,19 @@ int main(int argc, char** argv) {
                 "print one JSON object {\"polygons\": [[ring, ...], ...], \"lines\": [[p, q], ...], "
                 "\"points\": [p, ...]} (rings without the closing vertex) instead of WKT");
 
+  TrajectoryArgs ta;
+  CLI::App* traj = app.add_subcommand(
+      "trajectory",
+      "σ at every pose of a path, each warm-started from the previous one (the answers equal cold ones bit for "
+      "bit). Poses: CSV lines x,y,angle_deg (2D: Q rotated counter-clockwise by angle_deg about its origin, then "
+      "placed at x,y) or x,y,z,qw,qx,qy,qz (3D: Q rotated by the quaternion, then translated). Prints CSV "
+      "depth,tx,ty[,tz], one row per pose.");
+  traj->add_option("P", ta.p, "fixed shape file (.wkt, or 3D .obj/.off/.stl; - reads standard input)")->required()->type_name("FILE");
+  traj->add_option("Q", ta.q, "moving shape file (same dimension as P)")->required()->type_name("FILE");
+  traj->add_option("--poses", ta.poses, "CSV file of poses (- reads standard input)")->required()->type_name("FILE");
+  traj->add_flag("--json", ta.json, "print JSON Lines (one object per pose) instead of CSV");
+  traj->add_flag("--cold", ta.cold, "answer every pose from scratch (for comparison; same output)");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -781,6 +852,7 @@ int main(int argc, char** argv) {
                        : nfp->parsed()      ? run_nfp(na)
                        : distance->parsed() ? run_distance(dsa, false)
                        : cast->parsed()     ? run_distance(csa, true)
+                       : traj->parsed()     ? run_trajectory(ta)
                                             : run_batch(ba);
     flush_stdout();
     return status;

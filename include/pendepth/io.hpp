@@ -122,6 +122,27 @@ struct Query3 {
 std::vector<Query3> parse_queries3_csv(std::string_view text, std::string_view source = "<csv>");
 std::vector<Query3> read_queries3_csv(const std::filesystem::path& path);
 
+/// One line of a 2D trajectory file: Q rotated by `degrees` about its origin, then placed at t.
+struct PoseLine2 {
+  Vec2 t{0, 0};
+  double degrees = 0;
+  std::size_t line = 0;
+};
+/// One line of a 3D trajectory file: Q rotated by q (normalised by the library), then moved by t.
+struct PoseLine3 {
+  Vec3 t{0, 0, 0};
+  Eigen::Quaterniond q = Eigen::Quaterniond::Identity();
+  std::size_t line = 0;
+};
+/// Trajectory files (`pendepth trajectory`, src/io/poses_csv.cpp), as parse_queries_csv: lines
+/// `x,y,angle_deg` (2D) or `x,y,z,qw,qx,qy,qz` (3D), header exactly those names, blank and '#'
+/// lines skipped; InvalidInput "SOURCE:LINE: problem" (wrong count, empty, non-numeric or
+/// non-finite field, a zero quaternion).
+std::vector<PoseLine2> parse_poses2_csv(std::string_view text, std::string_view source = "<csv>");
+std::vector<PoseLine2> read_poses2_csv(const std::filesystem::path& path);
+std::vector<PoseLine3> parse_poses3_csv(std::string_view text, std::string_view source = "<csv>");
+std::vector<PoseLine3> read_poses3_csv(const std::filesystem::path& path);
+
 // ---- 3D point sets (docs/design.md §3: convex algorithms take the hull of the vertices) ----
 // The parsers return the vertices in file order (empty if the file holds none); faces, normals,
 // colours and texture coordinates are checked but not kept. Numbers go through std::from_chars:

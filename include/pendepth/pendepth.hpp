@@ -195,6 +195,20 @@ class Pair2 {
   std::shared_ptr<const Impl> impl_;
 };
 
+/// A placement of Q on a 2D trajectory: rotated counter-clockwise by `degrees` about its origin
+/// (Shape2::rotated), then moved by t.
+struct Placement2 {
+  Vec2 t{0, 0};
+  double degrees = 0;
+};
+
+/// σ along a 2D trajectory: out[k] = Pair2(P, Q.rotated(poses[k].degrees), prepare).minimum(
+/// poses[k].t), bit for bit. `warm`: one Pair2 per run of equal angles (the per-pair work is done
+/// once per change of angle); false: a new pair per placement (for comparison). Every placement is
+/// checked first; errors name the placement's index (src/front/trajectory2.cpp).
+std::vector<Depth2> trajectory(const Shape2& P, const Shape2& Q, std::span<const Placement2> poses, bool warm = true,
+                               Prepare prepare = Prepare::Auto);
+
 /// A validated convex polytope (the convex hull of a point set), with its Dobkin–Kirkpatrick
 /// hierarchy built once. Cheap to copy.
 class Shape3 {
@@ -228,6 +242,25 @@ class Shape3 {
   std::shared_ptr<const Mesh3> mesh_;
 };
 
+/// Per-caller state of Pair3's warm start for coherent motion (survey §3.3): the facet of M the
+/// previous answer ended on. Pair3 is const and shared between threads, so the state lives with
+/// the caller: one WarmStart3 per trajectory (per thread). Small and copyable; a state used with
+/// another pair is ignored (that query starts cold). It never changes an answer, only its cost.
+class WarmStart3 {
+ public:
+  /// Forgets the previous answer: the next query starts cold.
+  void reset() { valid_ = false; }
+  bool valid() const { return valid_; }
+
+ private:
+  friend class Pair3;
+  const void* p_ = nullptr;
+  const void* q_ = nullptr;
+  std::array<int, 32> pairs_{};  // (P vertex, Q vertex): the previous facet of M and its neighbours
+  int count_ = 0;
+  bool valid_ = false;
+};
+
 /// A pair of convex polytopes, P and Q each with a pose (only the relative pose matters; results
 /// are in the world frame). Queries are const and thread-safe.
 class Pair3 {
@@ -247,6 +280,18 @@ class Pair3 {
   Distance3 signed_distance(const Pose3& pose_p, const Pose3& pose_q) const;
   /// Shape cast (Cast3) along d (world frame): the smallest s >= 0 with Q + s·d̂ touching P.
   Cast3 cast(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const;
+
+  /// σ warm-started from the previous answer held in `warm` (updated): equal to
+  /// minimum(pose_p, pose_q) bit for bit in every field but `candidates` (the support queries
+  /// done), because σ's answer is a function of M's nearest facet alone (the least canonical
+  /// features among the facets at distance σ; src/convex3/minimum_expand.cpp). About half the
+  /// support queries after a small move; measured time about the same as cold on real hulls
+  /// (docs/benchmarks.md); shapes over 128 vertices always start cold.
+  Depth3 minimum(const Pose3& pose_p, const Pose3& pose_q, WarmStart3& warm) const;
+  /// σ along a trajectory: out[i] = minimum(pose_p, poses_q[i]), each warm-started from the
+  /// previous one (`warm` false: each cold, for comparison), in the calling thread. All poses are
+  /// checked first (InvalidInput naming the index).
+  std::vector<Depth3> trajectory(const Pose3& pose_p, std::span<const Pose3> poses_q, bool warm = true) const;
 
   // Batches (as Pair2's): P at identity, or at pose_p for every query.
   void overlapping(std::span<const Pose3> poses_q, std::span<bool> out, unsigned threads = 0) const;

@@ -667,6 +667,32 @@ overlapping (N,) bool, feature_p / feature_q (N, 2) int64 [kind, index] (kind 0 
                         return make_shape2(rings[0], holes, st[1].cast<std::string>());
                       }));
 
+  m.def("trajectory", [](const Shape2& P, const Shape2& Q, const py::object& offsets, const py::object& angles,
+                         bool warm) {
+        const Points<2> ts = points<2>(offsets, "offsets");
+        const Array a = py::cast<Array>(angles);
+        if (!(a.ndim() == 1 && static_cast<std::size_t>(a.shape(0)) == ts.v.size()) && !(a.ndim() == 0 && ts.single))
+          throw InvalidInput("angles: expected one angle (degrees) per offset, got shape " + shape_text(a));
+        std::vector<Placement2> pl(ts.v.size());
+        for (std::size_t i = 0; i < pl.size(); ++i) pl[i] = {ts.v[i], a.data()[i]};
+        std::vector<Depth2> out;
+        {
+          py::gil_scoped_release nogil;
+          out = trajectory(P, Q, pl, warm);
+        }
+        // The result's pair: P and Q at the first angle (what its picture shows).
+        const py::object first = pl.empty() ? py::none() : py::cast(PyPair2{Pair2(P, Q.rotated(pl[0].degrees)), "auto"});
+        return result2(out, ts.single, first, py::cast<Array>(offsets).attr("copy")(), py::none(), DepthKind::Minimum,
+                       "trajectory");
+      }, py::arg("P"), py::arg("Q"), py::arg("offsets"), py::arg("angles"), py::kw_only(), py::arg("warm") = true,
+      R"(trajectory(P, Q, offsets, angles, warm=True) -> Depth2Result
+
+sigma along a 2D path: Q rotated counter-clockwise by angles[i] degrees about its origin (exact at quarter
+turns, one rounding per coordinate otherwise),
+then placed at offsets[i]. One pair per run of equal angles (warm=False: a pair per placement); the
+answers equal Pair2(P, Q rotated by a).minimum(t) bit for bit. The result's pair is P with Q at the first
+angle; engine is "trajectory".)");
+
   m.def("no_fit_polygon", [](const Shape2& P, const Shape2& Q) {
         NoFitPolygonParts n;
         {
@@ -962,6 +988,20 @@ and points ((p, 2): exact fits). Vertices rounded to the nearest double.)");
            "and hit False when it never does, 0 when already touching or overlapping. Fields: distance,\n"
            "translation, normal (outward normal of P - Q at the contact), witness_p, witness_q (the\n"
            "contact point), feature_p, feature_q, hit, overlapping.")
+      .def("trajectory", [pose_batch](const PyPair3& p, const py::object& translations, const py::object& rotations,
+                                      bool warm) {
+             bool single = false;
+             const std::vector<Pose3> ps = pose_batch(translations, rotations, single);
+             std::vector<Depth3> out;
+             {
+               py::gil_scoped_release nogil;
+               out = p.pair.trajectory(Pose3(), ps, warm);
+             }
+             return result3(out, single, DepthKind::Minimum);
+           }, py::arg("translations"), py::arg("rotations") = py::none(), py::kw_only(), py::arg("warm") = true,
+           "trajectory(translations, rotations=None, warm=True) -> Depth3Result\n\n"
+           "sigma at every pose of a path, in order, each warm-started from the previous one (warm=False:\n"
+           "each from scratch). Equal to minimum() bit for bit but `candidates` (the support queries).")
       .def("__repr__", [](const PyPair3& p) {
         return "<pendepth.Pair3 P='" + p.pair.P().name() + "' Q='" + p.pair.Q().name() + "'>";
       })

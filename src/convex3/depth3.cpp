@@ -98,6 +98,13 @@ Depth3 minimum_depth(const ConvexPolytope& P, const Pose3& pose_p, const ConvexP
 
 namespace convex3 {
 
+// σ warm-started from a seed (minimum_expand.hpp): the same answer as minimum_depth.
+Depth3 minimum_depth_seeded(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
+                            const Pose3& pose_q, ExpandSeed* seed) {
+  RelativePose rel = relative(pose_p, pose_q);
+  return minimum_depth_expand(P, Q, rel, pose_p.matrix(), pose_p.translation, seed);
+}
+
 namespace {
 
 // The validated inputs of the expansion: relative pose, P's rotation, d in P's frame.

@@ -57,10 +57,27 @@
 // a Q index) are recognised symbolically, so the exact zeros met at every termination never
 // reach the exact fallback.
 //
-// Result (σ): depth = d_F, lower_bound = upper_bound = depth, candidates = number of support queries,
-// features = the defining features of M's facet (a face of P and a vertex of Q, a vertex of P
-// and a face of Q, or two edges; P's face preferred, as in minkowski_facets), witnesses = the
-// point of K's facet nearest to 0 written as a convex combination of pairs (P part, Q' part).
+// Result (σ), canonical: a function of the facets of M at distance σ, never of K — which depends
+// on the start (a warm start, survey §3.3) and triangulates a polygonal facet of M in many ways.
+// Phase B also expands K's facets exactly as near as the best one on other planes until each is
+// on a facet of M, so every facet of M at distance σ is known; the answer ends on the least of
+// them by (feature kinds, coordinates of three spanning pairs). Features: a face of P and the
+// lexicographically least vertex of Q's support set, a vertex of P (least) and a face of Q, or
+// two edges (P's face preferred, as in minkowski_facets); a face is reported by its least
+// triangle id. Depth, normal and witnesses are computed from three pairs the features fix (the
+// face's least vertex and its two boundary neighbours with Q's vertex; P's vertex with Q's
+// triangle; the edges' least endpoints): depth = d_F, lower_bound = upper_bound = depth,
+// witnesses = the contact point after the move as in the reference (depth3.cpp): Q's vertex
+// moved onto P's face, P's vertex, or the crossing of the two edges; for parallel features
+// (face–face, face–edge) a point of the contact region (contact_point). candidates = the number of
+// support queries (the only field a start changes). Vertex choices are by coordinates, so a hull
+// rebuilt with another vertex numbering answers the same bits (feature indices aside).
+// Warm start (ExpandSeed): the previous answer's three pairs (points of M at every pose) and the
+// support along the opposite of their normal make the first tetrahedron, then the pairs of the
+// neighbouring facets of the previous K are inserted where they lie strictly beyond a facet; Phase
+// A and B proceed as from a cold start. Measured: half the support queries on small steps, about
+// the same time (docs/benchmarks.md); gated off above 128 vertices per shape and when 0 is no
+// longer inside the seed facet's plane (heuristics: any start gives the same answer).
 // Result (σ_d): kind Directional, depth = lower = upper bound, translation = σ_d·d̂, normal = d̂,
 // facet_normal = n_F/|n_F|, the same features, witnesses = the exit point t·d as a convex
 // combination of F's pairs (weights from the accurate dets above), candidates = support queries.
@@ -87,6 +104,7 @@ namespace pendepth::convex3 {
 namespace {
 
 using exact::certified_sign;
+using predicates::orient3d;
 using exact::exact_sign;
 using exact::safe_bound;
 
@@ -238,6 +256,8 @@ struct Workspace {
   std::vector<std::pair<int, int>> hor;
   std::vector<int> alive, pos;  // live facets (dense) and each facet's index there (−1: dead)
   std::vector<double> keys;     // Phase B key of alive[k]; +inf: not a candidate
+  std::vector<int> ties, face;  // Phase B: facets exactly as near as the best; a flat face's triangles
+  std::vector<int> face_verts;  // the warm seed: vertices of the answer's flat face
 };
 
 // Inlining (a hot path tuned by instruction counts): the named steps are [[gnu::always_inline]],
@@ -254,7 +274,7 @@ class Expander {
   [[gnu::always_inline]] Expander(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel, Workspace& ws)
       : P_(convex3::data_of(Pp)), Q_(convex3::data_of(Qp)), AP_(vertex_adjacency(P_)), AQ_(vertex_adjacency(Q_)), R_(rel.R),
         V_(ws.V), F_(ws.F), mark_(ws.mark), vis_(ws.vis), by_start_(ws.by_start), by_end_(ws.by_end),
-        hor_(ws.hor), alive_(ws.alive), pos_(ws.pos), keys_(ws.keys) {
+        hor_(ws.hor), alive_(ws.alive), pos_(ws.pos), keys_(ws.keys), ties_(ws.ties), face_(ws.face), face_verts_(ws.face_verts) {
     V_.clear(), F_.clear(), mark_.clear(), alive_.clear(), pos_.clear(), keys_.clear();
     init_coordinate_bounds(rel);
     init_normal_bounds();
@@ -263,15 +283,21 @@ class Expander {
 
   // σ: the minimum depth in the world frame of P's pose (Rp, tp); a Depth3 with only
   // `candidates` set when the shapes do not overlap (touching included).
-  Depth3 run(const Eigen::Matrix3d& Rp, const Vec3& tp) {
-    [[maybe_unused]] const bool built = init_tetrahedron();  // σ has no budget
-    assert(built);
+  // With a seed (warm start): the first K is built on the seed's facet when it is valid, and the
+  // seed receives the answer's facet (invalid when the shapes do not overlap).
+  Depth3 run(const Eigen::Matrix3d& Rp, const Vec3& tp, ExpandSeed* seed) {
+    if (!(seed && seed->valid && warm_start(*seed))) {
+      [[maybe_unused]] const bool built = init_tetrahedron();  // σ has no budget
+      assert(built);
+    }
     if (phase_a() != Overlap::Yes) {
+      if (seed) seed->valid = false;
       Depth3 none;
       none.candidates = iters_;
       return none;
     }
-    return result(phase_b(), Rp, tp);
+    const int b = phase_b();
+    return canonical_result(b, Rp, tp, seed);
   }
 
   // σ_d along d (P's frame; nonzero, finite, largest |coordinate| in [1/2, 1) so that no product
@@ -317,6 +343,9 @@ class Expander {
   std::vector<int>& alive_;
   std::vector<int>& pos_;
   std::vector<double>& keys_;
+  std::vector<int>& ties_;
+  std::vector<int>& face_;
+  std::vector<int>& face_verts_;
   int stamp_ = 0;
   std::size_t iters_ = 0;
   int cone_first_ = 0;  // first facet of the last cone built
@@ -497,6 +526,18 @@ class Expander {
   }
 
   // ---- exact predicates --------------------------------------------------------------------
+  // Sign of n_abc·(m_x − m_a) when the four pairs share their Q vertex (then it is
+  // orient3d(p_a, p_b, p_c, p_x)) or their P vertex (then −orient3d(q_a, q_b, q_c, q_x): with
+  // u, v, w the differences of the q's, (Ru × Rv)·(−Rw) = −det(R)·(u × v)·w and det(R) > 0 for
+  // the double matrix of a rotation); 2 otherwise. A degree-3 sign of input coordinates instead
+  // of the degree-6 polynomial of pairs: the exact zeros of coplanar pairs (a polygonal facet of
+  // M met again, e.g. by a warm start) cost far less.
+  int shared_orient(int a, int b, int c, const Vert& X) const {
+    const Vert &A = V_[a], &B = V_[b], &C = V_[c];
+    if (A.j == X.j && B.j == X.j && C.j == X.j) return orient3d(P_.v[A.i], P_.v[B.i], P_.v[C.i], P_.v[X.i]);
+    if (A.i == X.i && B.i == X.i && C.i == X.i) return -orient3d(Q_.v[A.j], Q_.v[B.j], Q_.v[C.j], Q_.v[X.j]);
+    return 2;
+  }
   // Sign of n_f·(m_x − m_a): > 0 iff x is strictly beyond facet f's plane.
   int orient(int f, int x) const {
     const Facet& F = F_[f];
@@ -505,6 +546,7 @@ class Expander {
     if (s > F.eo) return 1;
     if (s < -F.eo) return -1;
     if (zero_orient(pairs(F.v[0], F.v[1], F.v[2]), X.i, X.j)) return 0;
+    if (const int o = shared_orient(F.v[0], F.v[1], F.v[2], X); o != 2) return o;
     const Vert& A = V_[F.v[0]];
     return exact_sign([&](auto L) { return dot(normal_l(L, F.v[0], F.v[1], F.v[2]), diff_l(L, X, A)); });
   }
@@ -536,6 +578,28 @@ class Expander {
     if (s < -D.e0) return -1;
     return exact_sign([&](auto L) { return dot(dir_l(L, D), m_l(L, V_[x])); });
   }
+  // cmp_p / cmp_q by orient3d of input points when D is the normal of a triangle of pairs sharing
+  // their Q vertex (cmp_p: n·(p_w − p_v) = O(p_w) − O(p_v), O(x) = orient3d(p_a, p_b, p_c, x)) or
+  // their P vertex (cmp_q: n·R(q_v − q_w) = det(R)·(O(q_v) − O(q_w)), see shared_orient), and the
+  // two signs decide the difference (one is 0, or they differ); 2 otherwise.
+  int shared_difference(const Dir& D, bool of_p, int v, int w) const {
+    if (D.kind != Dir::Normal) return 2;
+    const Vert &A = V_[D.a], &B = V_[D.b], &C = V_[D.c];
+    int ov, ow;
+    if (of_p && A.j == B.j && B.j == C.j) {
+      ov = orient3d(P_.v[A.i], P_.v[B.i], P_.v[C.i], P_.v[v]), ow = orient3d(P_.v[A.i], P_.v[B.i], P_.v[C.i], P_.v[w]);
+      std::swap(ov, ow);  // the sign of O(w) − O(v)
+    } else if (!of_p && A.i == B.i && B.i == C.i) {
+      ov = orient3d(Q_.v[A.j], Q_.v[B.j], Q_.v[C.j], Q_.v[v]), ow = orient3d(Q_.v[A.j], Q_.v[B.j], Q_.v[C.j], Q_.v[w]);
+    } else {
+      return 2;
+    }
+    // Now the sign wanted is D.sgn · sign(O1 − O2) with O1 ~ ov, O2 ~ ow.
+    if (ow == 0) return D.sgn * ov;
+    if (ov == 0) return -D.sgn * ow;
+    if (ov != ow) return D.sgn * ov;
+    return 2;
+  }
   // Sign of D·(p_w − p_v) (> 0: w is a strictly better P support).
   int cmp_p(const Dir& D, int v, int w) const {
     const Vec3 &pv = P_.v[v], &pw = P_.v[w];
@@ -543,6 +607,7 @@ class Expander {
     if (s > D.ep) return 1;
     if (s < -D.ep) return -1;
     if (v == w || (D.structural && zero_pair(D.t, true, v, w))) return 0;
+    if (const int o = shared_difference(D, true, v, w); o != 2) return o;
     return exact_sign([&](auto L) {
       V3<Num<decltype(L)>> e{L(pw[0]) - L(pv[0]), L(pw[1]) - L(pv[1]), L(pw[2]) - L(pv[2])};
       return dot(dir_l(L, D), e);
@@ -555,6 +620,7 @@ class Expander {
     if (s > D.eq) return 1;
     if (s < -D.eq) return -1;
     if (v == w || (D.structural && zero_pair(D.t, false, v, w))) return 0;
+    if (const int o = shared_difference(D, false, v, w); o != 2) return o;
     return exact_sign([&](auto L) {
       auto n = dir_l(L, D);
       V3<Num<decltype(L)>> e{L(qv[0]) - L(qw[0]), L(qv[1]) - L(qw[1]), L(qv[2]) - L(qw[2])};
@@ -868,8 +934,21 @@ class Expander {
     double nu = nn * (1 + 4 * kU) + ne_norm_ * (2 * std::abs(F.n[0]) + 2 * std::abs(F.n[1]) + 2 * std::abs(F.n[2]) + ne_norm_);
     return hl > 0 ? hl * hl / nu * (1 - 0x1p-49) : 0.0;
   }
+  // The facet's vertices rotated so that the least pair (by P's then Q's vertex coordinates)
+  // comes first: the values of refine() are then a function of the three pairs, whichever
+  // facet of K holds them (canonical_result reuses best's values when it is the canonical triple).
+  bool pair_less(int x, int y) const {
+    const Vert &X = V_[x], &Y = V_[y];
+    if (X.i != Y.i) return lex_less(P_, X.i, Y.i);
+    return X.j != Y.j && lex_less(Q_, X.j, Y.j);
+  }
+  std::array<int, 3> rotated_least(int f) const {
+    const auto& v = F_[f].v;
+    const int r = pair_less(v[1], v[0]) ? (pair_less(v[2], v[1]) ? 2 : 1) : (pair_less(v[2], v[0]) ? 2 : 0);
+    return {v[r], v[(r + 1) % 3], v[(r + 2) % 3]};
+  }
   void refine(int f) {
-    const auto v = F_[f].v;
+    const auto v = rotated_least(f);
     auto h_l = [&](auto L) { return dot(normal_l(L, v[0], v[1], v[2]), m_l(L, V_[v[0]])); };
     auto n2_l = [&](auto L) {
       auto n = normal_l(L, v[0], v[1], v[2]);
@@ -888,9 +967,13 @@ class Expander {
     // else exactly (a normal spanned by pairs that differ by far less than the shapes' size can
     // cancel completely in double-double: 1e-44 details on a unit shape gave n̂ = 0, a move of 0);
     // normalised after scaling by a power of two, so that no square underflows.
+    // An exactly zero component (a facet of M parallel to an axis: P's or Q's face normal) is
+    // recognised by its exact sign first (cheap when the inputs' products are exact doubles).
     Vec3 nv;
-    for (int k = 0; k < 3; ++k)
-      nv[k] = ok(n[k]) ? n[k].hi : accurate([&](auto L) { return normal_l(L, v[0], v[1], v[2])[k]; });
+    for (int k = 0; k < 3; ++k) {
+      auto nk = [&](auto L) { return normal_l(L, v[0], v[1], v[2])[k]; };
+      nv[k] = ok(n[k]) ? n[k].hi : exact_sign(nk) == 0 ? 0.0 : accurate(nk);
+    }
     const Vec3 u = unit_vector(nv);
     for (int k = 0; k < 3; ++k) F_[f].unit[k] = u[k];
   }
@@ -929,45 +1012,57 @@ class Expander {
     return kmin;
   }
 
-  // Facet f (alive_[kmin], least key) against the best facet so far: true iff f is exactly
-  // nearer to 0; otherwise its key is settled (coplanar with best or not nearer: +inf; not yet
-  // refined: refined, the key raised to its accurate distance) and false.
-  [[gnu::always_inline]] bool nearer_than_best(int f, std::size_t kmin, int best) {
+  // Facet f (alive_[kmin], least key) against the best facet so far: −1 if f is exactly nearer
+  // to 0, 0 if exactly as near (a tie on another plane), 1 if it is settled: coplanar with best
+  // or farther (key +inf), or not yet refined (refined, the key raised to its accurate distance).
+  [[gnu::always_inline]] int nearer_than_best(int f, std::size_t kmin, int best) {
     if (coplanar(f, best)) {  // same plane, same distance (often a symbolic identity)
       keys_[kmin] = std::numeric_limits<double>::infinity();
-      return false;
+      return 1;
     }
     if (!F_[f].refined) {
       refine(f);
       keys_[kmin] = F_[f].dist * F_[f].dist * (1 - 0x1p-47);  // dist within 2 ulps
-      return false;
+      return 1;
     }
     keys_[kmin] = std::numeric_limits<double>::infinity();
-    return closer(f, best) < 0;  // not nearer than best: false
+    return closer(f, best);
   }
 
   // The nearest facet of M (its index in F_), certified: K is expanded until the facet of K
-  // nearest to 0 has a supporting plane of M and no other facet of K is exactly nearer.
+  // nearest to 0 has a supporting plane of M and no other facet of K is exactly nearer. Facets of
+  // K exactly as near as best on other planes are expanded too, until each is on a plane of M
+  // (ties_: one facet of K per such plane, duplicates possible), so that ties_ and best together
+  // hold every facet of M at distance σ (a facet of M at distance σ contains the point σ·u of
+  // ∂M, which lies on ∂K, on a facet of K at distance σ and on the same plane) and the answer
+  // can be chosen among them by a rule that does not depend on K (canonical_result).
   [[gnu::noinline]] int phase_b() {
     for (std::size_t k = 0; k < alive_.size(); ++k) keys_[k] = lower_key(alive_[k]);
     int best = -1;
     double best_hi = 0;
+    ties_.clear();
     for (;;) {
       double key;
       const std::size_t kmin = least_key(key);
       if (best >= 0 && !(key < best_hi)) break;  // every other facet is at least as far as best
       const int f = alive_[kmin];
-      if (best >= 0 && !nearer_than_best(f, kmin, best)) continue;
+      int c = -1;  // sign(d_f − d_best)
+      if (best >= 0 && (c = nearer_than_best(f, kmin, best)) > 0) continue;
       Dir D = facet_dir(f);
       int s = support_facet(f, D);
       int o = orient(f, s);
       assert(o >= 0 && "a support point below the facet's plane");
       if (o <= 0) {  // f's plane supports M
         V_.pop_back();
+        keys_[pos_[f]] = std::numeric_limits<double>::infinity();
+        if (c == 0) {  // another facet of M at distance σ
+          ties_.push_back(f);
+          continue;
+        }
         if (!F_[f].refined) refine(f);
         best = f;
         best_hi = F_[f].dist * F_[f].dist * (1 + 0x1p-47);
-        keys_[pos_[f]] = std::numeric_limits<double>::infinity();
+        ties_.clear();
         continue;
       }
       expand(f, s, Mode::B);
@@ -1119,25 +1214,6 @@ class Expander {
     return {FeatureKind3::Edge, std::min(h, S.levels[0].twin[h])};
   }
 
-  Depth3 result(int b, const Eigen::Matrix3d& Rp, const Vec3& tp) const {
-    const Facet& B = F_[b];
-    Depth3 r;
-    r.kind = DepthKind::Minimum;
-    r.overlapping = true;
-    r.candidates = iters_;
-    r.depth = r.lower_bound = r.upper_bound = B.dist;
-    const Vec3 u(B.unit[0], B.unit[1], B.unit[2]);
-    const Vec3 move = B.dist * u;
-    Vec3 wp, wq;
-    witnesses(b, move, wp, wq);
-    r.translation = Rp * move;
-    r.normal = r.facet_normal = Rp * u;
-    r.witness_p = Rp * wp + tp;
-    r.witness_q = Rp * wq + tp;
-    features(b, r);
-    return r;
-  }
-
   Depth3 directional_result(int f, const Eigen::Matrix3d& Rp, const Vec3& tp) const {
     Depth3 r;
     r.kind = DepthKind::Directional;
@@ -1184,39 +1260,391 @@ class Expander {
     return r;
   }
 
-  // Witnesses in P's frame: the foot of 0 on facet b's plane (−move) lies in K's facet region
-  // there (b is nearest), so walk over coplanar neighbours to the triangle containing it;
-  // barycentric weights of the pairs give a point wp of P and wq of Q' (moved by `move`).
-  [[gnu::always_inline]] void witnesses(int b, const Vec3& move, Vec3& wp, Vec3& wq) const {
-    int f = b;
-    std::array<double, 3> lam{1, 0, 0}, best_lam = lam;
-    double best_min = -std::numeric_limits<double>::infinity();
-    int best_f = b;
-    for (int step = 0; step < 64; ++step) {
-      const Facet& T = F_[f];
-      Vec3 a = approx(T.v[0]), bb = approx(T.v[1]), c = approx(T.v[2]);
-      Vec3 n = (bb - a).cross(c - a);
-      double den = n.squaredNorm();
-      lam[0] = (bb - move).cross(c - move).dot(n) / den;
-      lam[1] = (c - move).cross(a - move).dot(n) / den;
-      lam[2] = 1 - lam[0] - lam[1];
-      int worst = static_cast<int>(std::min_element(lam.begin(), lam.end()) - lam.begin());
-      if (lam[worst] > best_min) best_min = lam[worst], best_lam = lam, best_f = f;
-      if (lam[worst] >= 0) break;
-      int g = T.nb[(worst + 1) % 3];  // across the edge opposite the most negative weight
-      if (!coplanar(g, b)) break;
-      f = g;
+  // ---- the canonical answer (σ) -------------------------------------------------------------
+  // σ's answer is a function of the facet of M it ends on, never of K (which depends on the
+  // start, e.g. a warm start, and triangulates a polygonal facet of M in many ways): among the
+  // facets of M at distance σ (best and ties_), the one whose canonical features are least;
+  // its distance, normal and witnesses computed from three pairs fixed by those features.
+  using Features = std::array<Feature3, 2>;
+
+  // Whether half-edge h of S's level 0 is a true edge (not a diagonal of a flat face).
+  static bool true_edge(const PolytopeData& S, int h) {
+    const int e = std::min(h, S.levels[0].twin[h]);
+    return std::binary_search(S.edges.begin(), S.edges.end(), e);
+  }
+  // face_: the triangles of S's flat face containing triangle t (flood across diagonals).
+  void flat_face(const PolytopeData& S, int t) {
+    face_.assign(1, t);
+    for (std::size_t q = 0; q < face_.size(); ++q)
+      for (int k = 0; k < 3; ++k) {
+        const int h = 3 * face_[q] + k;
+        if (true_edge(S, h)) continue;
+        const int g = S.levels[0].twin[h] / 3;
+        if (std::find(face_.begin(), face_.end(), g) == face_.end()) face_.push_back(g);
+      }
+  }
+  // Vertices in the lexicographic order of their coordinates (distinct vertices differ): the
+  // canonical choices below depend on the shapes' geometry, not on their vertex numbering (a
+  // shape rebuilt from its vertices, e.g. unpickled, answers the same bits).
+  static bool lex_less(const PolytopeData& S, int a, int b) {
+    const Vec3 &x = S.v[a], &y = S.v[b];
+    return x[0] != y[0] ? x[0] < y[0] : x[1] != y[1] ? x[1] < y[1] : x[2] < y[2];
+  }
+  // The flat face of S containing triangle t: its least triangle id, its lexicographically least
+  // vertex a, and the canonical triangle (a, next(a), prev(a)) — a and its neighbours on the face's
+  // boundary, counter-clockwise from outside (a is a corner: S has no collinear boundary vertices).
+  struct FaceCanon {
+    int tri, least;
+    std::array<int, 3> t;
+  };
+  FaceCanon face_canon(const PolytopeData& S, int t) {
+    flat_face(S, t);
+    FaceCanon c{face_[0], S.tris[face_[0]][0], {}};
+    for (int g : face_) {
+      c.tri = std::min(c.tri, g);
+      for (int x : S.tris[g])
+        if (lex_less(S, x, c.least)) c.least = x;
     }
-    double sum = 0;
-    for (double& l : best_lam) sum += (l = std::max(l, 0.0));
-    wp = Vec3::Zero(), wq = Vec3::Zero();
+    const auto& L = S.levels[0];
+    int next = -1, prev = -1;
+    for (int g : face_)
+      for (int k = 0; k < 3; ++k) {
+        const int h = 3 * g + k;
+        if (!true_edge(S, h)) continue;
+        if (L.origin(h) == c.least) next = L.target(h);
+        if (L.target(h) == c.least) prev = L.origin(h);
+      }
+    c.t = {c.least, next, prev};
+    return c;
+  }
+  // The least vertex (lexicographically) of a support set of dimension dim around feature f.
+  int least_vertex(const PolytopeData& S, const Feature3& f, int dim) {
+    if (dim == 0) return f.index;
+    if (dim == 2) return face_canon(S, f.index).least;
+    const auto& L = S.levels[0];
+    const int a = L.origin(f.index), b = L.target(f.index);
+    return lex_less(S, a, b) ? a : b;
+  }
+  // The canonical features of the facet of M that facet f of K lies on (P's face and Q's least
+  // vertex in its support set, else P's least vertex and Q's face, else the two edges) and three
+  // pairs spanning it in outward order (edge–edge: the caller fixes the orientation).
+  struct Canon {
+    Features c;
+    std::array<int, 6> pr;
+    Feature3 raw_p, raw_q;  // support features as found, and their dimensions
+    int dp = 0, dq = 0;
+  };
+  Canon canonical_of(int f) {
+    const Facet& B = F_[f];
+    const Dir D = facet_dir(f);
+    int dp = 0, dq = 0;
+    const Feature3 fp = support_feature(D, true, V_[B.v[0]].i, dp);
+    const Feature3 fq = support_feature(D, false, V_[B.v[0]].j, dq);
+    Canon k;
+    k.raw_p = fp, k.raw_q = fq, k.dp = dp, k.dq = dq;
+    if (dp == 2) {
+      const int j = least_vertex(Q_, fq, dq);
+      const FaceCanon F = face_canon(P_, fp.index);
+      k.c = {Feature3{FeatureKind3::Face, F.tri}, Feature3{FeatureKind3::Vertex, j}};
+      k.pr = {F.t[0], j, F.t[1], j, F.t[2], j};
+    } else if (dq == 2) {
+      const int i = least_vertex(P_, fp, dp);
+      const FaceCanon F = face_canon(Q_, fq.index);
+      k.c = {Feature3{FeatureKind3::Vertex, i}, Feature3{FeatureKind3::Face, F.tri}};
+      k.pr = {i, F.t[0], i, F.t[2], i, F.t[1]};  // −Q's face: Q's triangle reversed
+    } else {
+      const auto &LP = P_.levels[0], &LQ = Q_.levels[0];
+      int a = LP.origin(fp.index), b = LP.target(fp.index), x = LQ.origin(fq.index), y = LQ.target(fq.index);
+      if (lex_less(P_, b, a)) std::swap(a, b);
+      if (lex_less(Q_, y, x)) std::swap(x, y);
+      k.c = {fp, fq};
+      k.pr = {a, x, b, x, a, y};
+    }
+    return k;
+  }
+  // The order of facets of M at distance σ: kinds, then the coordinates of the spanning pairs.
+  bool less(const Canon& a, const Canon& b) const {
+    for (int k = 0; k < 2; ++k)
+      if (a.c[k].kind != b.c[k].kind) return a.c[k].kind < b.c[k].kind;
+    for (int k = 0; k < 6; ++k) {
+      const PolytopeData& S = k % 2 == 0 ? P_ : Q_;
+      if (a.pr[k] != b.pr[k]) return lex_less(S, a.pr[k], b.pr[k]);
+    }
+    return false;
+  }
+
+  // ---- a contact point of parallel features (face–face, face–edge, edge–face) -----------------
+  // The support set of S: vertices (lexicographic order), boundary segments (endpoints and the
+  // segments in lexicographic order) and triangles of a face.
+  struct SupportSet {
+    std::vector<int> verts;
+    std::vector<std::array<int, 2>> edges;
+    std::vector<std::array<int, 3>> tris;
+  };
+  void support_set(const PolytopeData& S, const Feature3& raw, int dim, SupportSet& out) {
+    out.verts.clear(), out.edges.clear(), out.tris.clear();
+    const auto& L = S.levels[0];
+    auto lex = [&](int a, int b) { return lex_less(S, a, b); };
+    if (dim == 1) {
+      out.edges.push_back({L.origin(raw.index), L.target(raw.index)});
+    } else {
+      flat_face(S, raw.index);
+      for (int g : face_) {
+        out.tris.push_back(S.tris[g]);
+        for (int k = 0; k < 3; ++k)
+          if (true_edge(S, 3 * g + k)) out.edges.push_back({L.origin(3 * g + k), L.target(3 * g + k)});
+      }
+    }
+    for (auto& e : out.edges) {
+      if (lex(e[1], e[0])) std::swap(e[0], e[1]);
+      out.verts.push_back(e[0]), out.verts.push_back(e[1]);
+    }
+    std::sort(out.verts.begin(), out.verts.end(), lex);
+    out.verts.erase(std::unique(out.verts.begin(), out.verts.end()), out.verts.end());
+    std::sort(out.edges.begin(), out.edges.end(), [&](const auto& a, const auto& b) {
+      return a[0] != b[0] ? lex(a[0], b[0]) : lex(a[1], b[1]);
+    });
+  }
+  // A point where P's support set touches the moved Q' (P's frame; shift = t + move): a vertex of
+  // Q moved into P's face, a vertex of P in the moved Q's face, or the crossing of two boundary
+  // segments — M's facet is covered by these pieces (a convex polygon plus the other translated,
+  // swept along its edges) — the first in that order (vertices and segments by coordinates, so
+  // the point does not depend on the numbering), in the facet's plane (axes: u without its
+  // largest component). Rounded tests: a point within rounding of a piece's border may pick the
+  // next piece, or the piece it is nearest to if none holds it; always the same one for the same
+  // input.
+  Vec3 contact_point(const Canon& k, const Vec3& shift, const Vec3& u) {
+    SupportSet sp, sq;
+    support_set(P_, k.raw_p, k.dp, sp);
+    support_set(Q_, k.raw_q, k.dq, sq);
+    int ax = 0;
+    for (int a = 1; a < 3; ++a)
+      if (std::abs(u[a]) > std::abs(u[ax])) ax = a;
+    const int a1 = (ax + 1) % 3, a2 = (ax + 2) % 3;
+    auto qm = [&](int j) -> Vec3 { return R_ * Q_.v[j] + shift; };
+    auto cross2 = [&](const Vec3& o, const Vec3& a, const Vec3& b) {
+      return (a[a1] - o[a1]) * (b[a2] - o[a2]) - (a[a2] - o[a2]) * (b[a1] - o[a1]);
+    };
+    // The least normalised barycentric weight of x in triangle (a, b, c).
+    auto weight = [&](const Vec3& x, const Vec3& a, const Vec3& b, const Vec3& c) {
+      const double area = cross2(a, b, c);
+      if (!(area != 0)) return -std::numeric_limits<double>::infinity();
+      return std::min({cross2(x, b, c) / area, cross2(a, x, c) / area, cross2(a, b, x) / area});
+    };
+    Vec3 best = Vec3::Zero();
+    double best_w = -std::numeric_limits<double>::infinity();
+    auto offer = [&](double w, const Vec3& x) {
+      if (w > best_w) best_w = w, best = x;
+      return w >= 0;
+    };
+    for (int j : sq.verts) {
+      const Vec3 x = qm(j);
+      for (const auto& t : sp.tris)
+        if (offer(weight(x, P_.v[t[0]], P_.v[t[1]], P_.v[t[2]]), x)) return x;
+    }
+    for (int i : sp.verts) {
+      const Vec3& x = P_.v[i];
+      for (const auto& t : sq.tris)
+        if (offer(weight(x, qm(t[0]), qm(t[1]), qm(t[2])), x)) return x;
+    }
+    for (const auto& e : sp.edges)
+      for (const auto& f : sq.edges) {
+        const Vec3 &pa = P_.v[e[0]], &pb = P_.v[e[1]];
+        const Vec3 qa = qm(f[0]), qb = qm(f[1]);
+        const double den = cross2(Vec3::Zero(), pb - pa, qb - qa);
+        if (!(den != 0)) continue;
+        const double lam = cross2(Vec3::Zero(), qa - pa, qb - qa) / den, mu = cross2(Vec3::Zero(), qa - pa, pb - pa) / den;
+        const Vec3 x = pa + std::clamp(lam, 0.0, 1.0) * (pb - pa);
+        if (offer(std::min({lam, 1 - lam, mu, 1 - mu}), x)) return x;
+      }
+    return best;
+  }
+
+  // σ's answer from phase B's best facet: see above. The seed (if any) receives the pairs.
+  Depth3 canonical_result(int best, const Eigen::Matrix3d& Rp, const Vec3& tp, ExpandSeed* seed) {
+    Canon best_c = canonical_of(best);
+    for (int t : ties_)
+      if (Canon ct = canonical_of(t); less(ct, best_c)) best_c = ct;
+    const Features c = best_c.c;
+    std::array<int, 6> pr = best_c.pr;
+    // best's own values when it is spanned by the same pairs (refine() starts at the least pair,
+    // which pr does too), else those of the canonical triple.
+    int f = best;
+    const auto bv = rotated_least(best);
+    bool same = true;
+    for (int k = 0; k < 3 && same; ++k) same = V_[bv[k]].i == pr[2 * k] && V_[bv[k]].j == pr[2 * k + 1];
+    if (c[0].kind == FeatureKind3::Edge && !same) {  // the other orientation of the edge–edge triple
+      same = true;
+      for (int k = 0; k < 3 && same; ++k) {
+        const int m = k == 0 ? 0 : 3 - k;
+        same = V_[bv[k]].i == pr[2 * m] && V_[bv[k]].j == pr[2 * m + 1];
+      }
+      if (same) std::swap(pr[2], pr[4]), std::swap(pr[3], pr[5]);
+    }
+    if (!same) {
+      const int a = add_vert(pr[0], pr[1]), b = add_vert(pr[2], pr[3]), x = add_vert(pr[4], pr[5]);
+      f = add_facet(a, b, x);
+      if (c[0].kind == FeatureKind3::Edge && hsign(f) < 0) {  // 0 strictly inside: h > 0 outward
+        f = add_facet(a, x, b);
+        std::swap(pr[2], pr[4]), std::swap(pr[3], pr[5]);
+      }
+      refine(f);
+    }
+    const Facet& B = F_[f];
+    Depth3 r;
+    r.kind = DepthKind::Minimum;
+    r.overlapping = true;
+    r.candidates = iters_;
+    r.depth = r.lower_bound = r.upper_bound = B.dist;
+    const Vec3 u(B.unit[0], B.unit[1], B.unit[2]);
+    const Vec3 move = B.dist * u;
+    // The contact point after the move (P's frame), as in the reference (depth3.cpp): Q's vertex
+    // moved onto P's face plane; P's vertex; or the crossing of the two edges (closest point of
+    // P's edge to the moved Q edge's line).
     const Vec3 t(thi_[0] + tlo_[0], thi_[1] + tlo_[1], thi_[2] + tlo_[2]);
-    for (int k = 0; k < 3; ++k) {
-      const Vert& X = V_[F_[best_f].v[k]];
-      wp += best_lam[k] / sum * P_.v[X.i];
-      wq += best_lam[k] / sum * (R_ * Q_.v[X.j] + t);
+    Vec3 w;
+    if ((best_c.dp == 2 && best_c.dq >= 1) || (best_c.dq == 2 && best_c.dp >= 1)) {
+      w = contact_point(best_c, t + move, u);
+    } else if (c[0].kind == FeatureKind3::Face) {
+      w = R_ * Q_.v[c[1].index] + t + move;
+    } else if (c[1].kind == FeatureKind3::Face) {
+      w = P_.v[c[0].index];
+    } else {  // pr = (a, x), (b, x), (a, y) or (a, x), (a, y), (b, x)
+      const int a = pr[0], x = pr[1], b = pr[2] == a ? pr[4] : pr[2], y = pr[3] == x ? pr[5] : pr[3];
+      const Vec3 pa = P_.v[a], e = P_.v[b] - pa;
+      const Vec3 qa = R_ * Q_.v[x] + t + move;
+      const Vec3 g = R_ * (Q_.v[y] - Q_.v[x]);
+      const Vec3 n = e.cross(g);
+      const double s = (qa - pa).cross(g).dot(n) / n.squaredNorm();
+      w = pa + (std::isfinite(s) ? std::clamp(s, 0.0, 1.0) : 0.0) * e;
     }
-    wq += move;
+    r.translation = Rp * move;
+    r.normal = r.facet_normal = Rp * u;
+    r.witness_p = r.witness_q = Rp * w + tp;
+    r.feature_p = c[0], r.feature_q = c[1];
+    if (seed) save_seed(pr, best, c, *seed);
+    return r;
+  }
+
+  // ---- warm start --------------------------------------------------------------------------
+  // The seed: the canonical facet's pairs, then the vertices of K's facets up to kSeedDepth steps
+  // from best (breadth first), distinct, at most ExpandSeed::kMaxPairs in all. Measured
+  // (bench_motion_trajectory, docs/benchmarks.md): one step saves the most time on real hulls;
+  // more steps save support queries but cost more to insert.
+  static constexpr std::size_t kSeedDepth = 1;
+  static constexpr std::size_t kWarmMaxVertices = 128;
+  void save_seed(const std::array<int, 6>& pr, int best, const Features& c, ExpandSeed& seed) {
+    std::copy(pr.begin(), pr.end(), seed.pairs.begin());
+    seed.count = 3;
+    seed.valid = true;
+    // Pairs on the facet's plane by the structure of a face of P (or Q) met by one vertex of Q
+    // (of P) are left out: they would only be found coplanar again (exact zeros).
+    const bool face_p = c[0].kind == FeatureKind3::Face, face_q = c[1].kind == FeatureKind3::Face;
+    std::vector<int>& face_verts = face_verts_;
+    face_verts.clear();
+    if (face_p || face_q) {
+      const PolytopeData& S = face_p ? P_ : Q_;
+      flat_face(S, c[face_p ? 0 : 1].index);
+      for (int g : face_)
+        for (int x : S.tris[g]) face_verts.push_back(x);
+    }
+    auto add = [&](int x) {
+      const int i = V_[x].i, j = V_[x].j;
+      if (face_p && j == pr[1] && std::find(face_verts.begin(), face_verts.end(), i) != face_verts.end()) return;
+      if (face_q && i == pr[0] && std::find(face_verts.begin(), face_verts.end(), j) != face_verts.end()) return;
+      for (int k = 0; k < seed.count; ++k)
+        if (seed.pairs[2 * k] == i && seed.pairs[2 * k + 1] == j) return;
+      if (seed.count < ExpandSeed::kMaxPairs) seed.pairs[2 * seed.count] = i, seed.pairs[2 * seed.count + 1] = j, ++seed.count;
+    };
+    ++stamp_;
+    const int seen = 2 * stamp_;
+    vis_.assign(1, best);
+    mark_[best] = seen;
+    std::size_t level_end = 1;
+    for (std::size_t q = 0, depth = 0; q < vis_.size() && depth <= kSeedDepth; ++q) {
+      if (q == level_end) ++depth, level_end = vis_.size();
+      if (depth > kSeedDepth) break;
+      for (int k = 0; k < 3; ++k) {
+        add(F_[vis_[q]].v[k]);
+        const int g = F_[vis_[q]].nb[k];
+        if (mark_[g] != seen) mark_[g] = seen, vis_.push_back(g);
+      }
+    }
+  }
+  // The first K from a seed: the tetrahedron on its facet (warm_tetrahedron), then its other
+  // pairs inserted where they lie strictly beyond a facet (K stays a polytope of pairs, convex,
+  // outward). False (nothing built) when the seed is not usable.
+  bool warm_start(const ExpandSeed& sd) {
+    // Measured (docs/benchmarks.md): on larger round hulls the seed's small facets make the
+    // filters of the first steps fail and the warm start costs more than it saves: start cold.
+    if (P_.v.size() > kWarmMaxVertices || Q_.v.size() > kWarmMaxVertices) return false;
+    std::array<int, 6> facet;
+    std::copy(sd.pairs.begin(), sd.pairs.begin() + 6, facet.begin());
+    if (sd.count < 3 || sd.count > ExpandSeed::kMaxPairs || !warm_tetrahedron(facet)) return false;
+    const int n = static_cast<int>(P_.v.size()), m = static_cast<int>(Q_.v.size());
+    for (int k = 3; k < sd.count; ++k) {
+      const int i = sd.pairs[2 * k], j = sd.pairs[2 * k + 1];
+      if (i < 0 || i >= n || j < 0 || j >= m) continue;
+      const int x = add_vert(i, j);
+      int f = -1;
+      for (int g : alive_)
+        if (orient(g, x) > 0) {
+          f = g;
+          break;
+        }
+      if (f < 0) {
+        V_.pop_back();
+        continue;
+      }
+      expand(f, x, Mode::A);
+    }
+    return true;
+  }
+
+  // The first K from a seed: the three pairs of the previous answer's facet (points of M at any
+  // pose) and the support along the opposite of their normal (or along it), a tetrahedron when
+  // that support is strictly off their plane. False (nothing built) when the seed is not usable
+  // here (indices out of range, repeated pairs, pairs now collinear or the support on their plane).
+  bool warm_tetrahedron(const std::array<int, 6>& sd) {
+    const int n = static_cast<int>(P_.v.size()), m = static_cast<int>(Q_.v.size());
+    for (int k = 0; k < 3; ++k)
+      if (sd[2 * k] < 0 || sd[2 * k] >= n || sd[2 * k + 1] < 0 || sd[2 * k + 1] >= m) return false;
+    for (int k = 0; k < 3; ++k)
+      if (sd[2 * k] == sd[2 * ((k + 1) % 3)] && sd[2 * k + 1] == sd[2 * ((k + 1) % 3) + 1]) return false;
+    int s1 = add_vert(sd[0], sd[1]), s2 = add_vert(sd[2], sd[3]), s3 = add_vert(sd[4], sd[5]);
+    double e[3], e2[3], nr[3];
+    diff_r(V_[s2], V_[s1], e);
+    diff_r(V_[s3], V_[s1], e2);
+    cross_r(e, e2, nr);
+    // A heuristic gate (any start is correct): the seed helps only while 0 is still on the inner
+    // side of its facet's plane (rounded); after a jump it would only cost, start cold then.
+    const double* ma = V_[s1].mh;
+    if (!(nr[0] * ma[0] + nr[1] * ma[1] + nr[2] * ma[2] > 0)) {
+      V_.clear();
+      return false;
+    }
+    // The support along ∓ the rounded normal (a plain vector: any direction is correct, and its
+    // exact comparisons are cheap), then its exact side of the pairs' plane.
+    int s4 = -1, o = 0;
+    add_facet(s1, s2, s3);
+    for (int sg : {-1, 1}) {
+      const int x = support_cold(vec_dir(sg * Vec3(nr[0], nr[1], nr[2])));
+      if (const int side = orient(0, x); side != 0) {
+        s4 = x, o = side;
+        break;
+      }
+      V_.pop_back();
+    }
+    F_.clear(), mark_.clear(), alive_.clear(), pos_.clear(), keys_.clear();
+    if (s4 < 0) {  // the pairs are collinear now (their normal is 0) or M is flat: start cold
+      V_.clear();
+      return false;
+    }
+    if (o > 0) std::swap(s2, s3);  // now s4 lies below the plane of (s1, s2, s3)
+    add_facet(s1, s2, s3), add_facet(s1, s4, s2), add_facet(s2, s4, s3), add_facet(s3, s4, s1);
+    F_[0].nb = {1, 2, 3}, F_[1].nb = {3, 2, 0}, F_[2].nb = {1, 3, 0}, F_[3].nb = {2, 1, 0};  // twins
+    for (int f = 0; f < 4; ++f) F_[f].hsign = hsign(f);
+    return true;
   }
 
   // The defining features of M's facet b: a face of P and a vertex of Q, a vertex of P and a face
@@ -1246,8 +1674,8 @@ Workspace& workspace() {
 }  // namespace
 
 Depth3 minimum_depth_expand(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,
-                            const Eigen::Matrix3d& Rp, const Vec3& tp) {
-  return Expander<false>(P, Q, rel, workspace()).run(Rp, tp);
+                            const Eigen::Matrix3d& Rp, const Vec3& tp, ExpandSeed* seed) {
+  return Expander<false>(P, Q, rel, workspace()).run(Rp, tp, seed);
 }
 
 std::optional<Depth3> directional_depth_expand(const ConvexPolytope& P, const ConvexPolytope& Q,

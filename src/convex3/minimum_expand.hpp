@@ -6,6 +6,7 @@
 
 #include "convex3/minkowski_facets.hpp"
 
+#include <array>
 #include <bit>
 #include <cstddef>
 #include <limits>
@@ -13,10 +14,29 @@
 
 namespace pendepth::convex3 {
 
+/// Warm start of σ (coherent motion, survey §3.3): the pairs (i, j) spanning the previous
+/// answer's facet of M and its neighbourhood in the previous K. Any seed gives the same answer bit for bit (only `candidates`, the work,
+/// differs); a seed from the same pair of shapes at a nearby pose saves most support queries.
+struct ExpandSeed {
+  static constexpr int kMaxPairs = 16;
+  /// (i, j) × count: the facet's three pairs, then pairs of K's nearby vertices (on the facets
+  /// of K next to the answer's), which the warm start inserts first.
+  std::array<int, 2 * kMaxPairs> pairs{};
+  int count = 0;
+  bool valid = false;
+};
+
 /// σ for Q placed by `rel` in P's frame. The result is expressed in the world frame given by
-/// P's pose (x_world = Rp x + tp). Exact: lower_bound == upper_bound == depth on overlap.
+/// P's pose (x_world = Rp x + tp). Exact: lower_bound == upper_bound == depth on overlap. The
+/// answer is a function of M's facet alone (canonical: the least features among the facets at
+/// distance σ), so with a seed it is the same; the seed then receives this answer's facet
+/// (invalid when the shapes do not overlap).
 Depth3 minimum_depth_expand(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,
-                            const Eigen::Matrix3d& Rp, const Vec3& tp);
+                            const Eigen::Matrix3d& Rp, const Vec3& tp, ExpandSeed* seed = nullptr);
+
+/// The same from poses (validated as minimum_depth), with an optional seed (Pair3's warm start).
+Depth3 minimum_depth_seeded(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
+                            const Pose3& pose_q, ExpandSeed* seed);
 
 /// σ_d along d (P's frame; precondition: finite and nonzero) for Q placed by `rel`: the exit of
 /// the ray s·d̂ from int M by the same expansion (Phase D), result in the world frame of P's pose.

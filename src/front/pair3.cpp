@@ -12,6 +12,7 @@
 #include "front/checks.hpp"
 #include "front/mesh_shapes.hpp"
 #include "front/scale.hpp"
+#include "convex3/minimum_expand.hpp"
 
 namespace pendepth {
 
@@ -232,6 +233,32 @@ Cast3 Pair3::cast(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const
   const front::Scale scale{scale_exp_};
   return cast_answer(scale, shape_cast(engine_P_.polytope(), engine_pose(scale, pose_p, "pose of P"),
                                        engine_Q_.polytope(), engine_pose(scale, pose_q, "pose of Q"), d));
+// ---- warm start and trajectories (coherent motion, survey §3.3) -------------------------------
+// The seed holds vertex indices of the engine shapes (scale-free); it belongs to this pair's
+// engine polytopes (shared by copies of the pair).
+Depth3 Pair3::minimum(const Pose3& pose_p, const Pose3& pose_q, WarmStart3& warm) const {
+  check_pose(pose_p, "pose of P");
+  check_pose(pose_q, "pose of Q");
+  const front::Scale scale{scale_exp_};
+  const Pose3 ep = engine_pose(scale, pose_p, "pose of P"), eq = engine_pose(scale, pose_q, "pose of Q");
+  const void *p = &engine_P_.polytope(), *q = &engine_Q_.polytope();
+  convex3::ExpandSeed seed;
+  static_assert(sizeof(seed.pairs) == sizeof(warm.pairs_));
+  if (warm.valid_ && warm.p_ == p && warm.q_ == q) seed.pairs = warm.pairs_, seed.count = warm.count_, seed.valid = true;
+  const Depth3 r = scale.answer(convex3::minimum_depth_seeded(engine_P_.polytope(), ep, engine_Q_.polytope(), eq, &seed));
+  warm.p_ = p, warm.q_ = q, warm.pairs_ = seed.pairs, warm.count_ = seed.count, warm.valid_ = seed.valid;
+  return r;
+}
+
+std::vector<Depth3> Pair3::trajectory(const Pose3& pose_p, std::span<const Pose3> poses_q, bool warm) const {
+  check_pose(pose_p, "pose of P");
+  check_poses(poses_q, poses_q.size(), scale_exp_);
+  engine_pose(front::Scale{scale_exp_}, pose_p, "pose of P");
+  std::vector<Depth3> out(poses_q.size());
+  WarmStart3 state;
+  for (std::size_t i = 0; i < poses_q.size(); ++i)
+    out[i] = warm ? minimum(pose_p, poses_q[i], state) : min_engine(pose_p, poses_q[i]);
+  return out;
 }
 
 }  // namespace pendepth
