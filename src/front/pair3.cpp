@@ -233,6 +233,8 @@ Cast3 Pair3::cast(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const
   const front::Scale scale{scale_exp_};
   return cast_answer(scale, shape_cast(engine_P_.polytope(), engine_pose(scale, pose_p, "pose of P"),
                                        engine_Q_.polytope(), engine_pose(scale, pose_q, "pose of Q"), d));
+}
+
 // ---- warm start and trajectories (coherent motion, survey §3.3) -------------------------------
 // The seed holds vertex indices of the engine shapes (scale-free); it belongs to this pair's
 // engine polytopes (shared by copies of the pair).
