@@ -710,6 +710,7 @@ struct Workspace {
   };
   std::vector<Edge> edges;
   std::vector<Iv> ivs;
+  std::vector<std::array<int, 2>> cover;  // cut_lines: interval coverage differences per direction
   std::vector<std::array<int, 2>> slits;
   std::vector<std::size_t> chain, outer, holes, owner;
   std::vector<int> table, ghead, vnext;  // interning: hash table of rounding groups, vertex lists
@@ -1102,12 +1103,23 @@ void cut_lines(Workspace& W, int nv) {
       return x != y && compare_coord(ends[rep[x]], ends[rep[y]], axis) < 0;
     });
     for (std::size_t i = 0; i < us.size(); ++i) pos[us[i]] = int(i);
+    // Elementary interval i (between us[i] and us[i + 1]) is covered by iv iff pos[lo] ≤ i <
+    // pos[hi]: counts per direction by a difference array and a running sum, O(|us| + |ivs|)
+    // (a line holding many pieces — the comb's collinear tooth tops — made the scan of every
+    // piece per interval quadratic).
+    std::vector<std::array<int, 2>>& cover = W.cover;
+    cover.assign(us.size() + 1, {0, 0});
+    for (const Iv& iv : ivs) {
+      if (pos[iv.lo] >= pos[iv.hi]) continue;  // covers no interval
+      ++cover[std::size_t(pos[iv.lo])][iv.fwd ? 0 : 1];
+      --cover[std::size_t(pos[iv.hi])][iv.fwd ? 0 : 1];
+    }
     bool slit_open = false;
     int slit_start = -1;
+    int nf = 0, nb = 0;
     for (std::size_t i = 0; i + 1 < us.size(); ++i) {
-      bool f = false, b = false;
-      for (const Iv& iv : ivs)
-        if (pos[iv.lo] <= int(i) && int(i) + 1 <= pos[iv.hi]) (iv.fwd ? f : b) = true;
+      nf += cover[i][0], nb += cover[i][1];
+      const bool f = nf > 0, b = nb > 0;
       const int p0 = us[i], p1 = us[i + 1];
       if (f || b) {
         is_vertex[p0] = 1;
