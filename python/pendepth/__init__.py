@@ -33,6 +33,8 @@ from ._pendepth import (  # noqa: F401
     Shape3,
     __version__,
     no_fit_polygon,
+    no_fit_polygons,
+    read_nesting_instance,
 )
 from ._plot import plot  # noqa: F401
 from . import _svg
@@ -42,7 +44,7 @@ Depth2Result._repr_svg_ = _svg.result_svg
 
 __all__ = [
     "Shape2", "Pair2", "Shape3", "Pair3", "Depth2Result", "Depth3Result", "InvalidInput",
-    "no_fit_polygon", "plot", "FEATURE_NONE", "FEATURE_VERTEX", "FEATURE_EDGE", "FEATURE_FACE", "__version__",
+    "no_fit_polygon", "no_fit_polygons", "read_nesting_instance", "plot", "FEATURE_NONE", "FEATURE_VERTEX", "FEATURE_EDGE", "FEATURE_FACE", "__version__",
 ]
 
 
