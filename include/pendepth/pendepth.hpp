@@ -156,7 +156,8 @@ struct NoFitPolygonEntry {
 /// do not commute, so every combination is built. rotations[i] lists shape i's angles in degrees
 /// (rotations.size() == shapes.size()), or rotations has one list shared by every shape.
 /// Order: i, then a (in list order), then j, then b. Per-shape work is done once: the rotated
-/// copies (validated once each, Shape2::rotated) are shared by every pair; each pair goes through
+/// copies (validated once each, Shape2::rotated) are shared by every pair (the triangulations are
+/// still made per pair inside no_fit_polygon, issue 19 item 2); each pair goes through
 /// no_fit_polygon (the same scaling to the numeric domain). Pairs run in parallel (TBB; threads
 /// as Pair2's batches: 0 every core, 1 the calling thread) and every entry is bit-identical
 /// whatever the thread count. progress(done, total) is called in the calling thread after each
