@@ -29,6 +29,9 @@
 //   <instance>-<kind>   build only: every ordered pair of the instance in which both pieces are
 //                       convex (kind convex), one is (mixed) or neither is (nonconvex).
 //   star/<n>/<m>        random star-shaped P (radii [60, 100]) and Q (radii [6, 10]), n = m.
+//   scale-<family>/<n>/6  build only, one pair, once: P a comb (teeth and gaps 1 wide), a random
+//                       star or a thick 5-turn spiral of about n vertices, Q an L-shape of 6
+//                       (PENDEPTH_BENCH_SCALE_N, default 1000,3000,10000): the growth with n.
 // Queries: kQueries placements t = p − centroid(Q) with p uniform in P (nearly all overlap) and
 // random unit directions, generated outside the timed loops from a fixed seed. Before timing,
 // the scans' and PairDepth2's answers are compared with NoFitPolygon2's; the largest difference
@@ -294,6 +297,50 @@ Case& star_case(std::size_t n) {
   return *slot;
 }
 
+// ---- scaling families (issue 19 item 4): one pair, P of about n vertices, Q a small L ----
+
+// Comb: `teeth` teeth 1 wide and 10 high, gaps 1 wide, on a base 2 high (4·teeth − 2 vertices).
+std::vector<Vec2> comb_ring(std::size_t teeth) {
+  const double W = 2.0 * double(teeth) - 1;
+  std::vector<Vec2> r{{0, 0}, {W, 0}};
+  for (std::size_t k = teeth; k-- > 0;) {
+    const double x0 = 2.0 * double(k);
+    r.push_back({x0 + 1, 12});
+    r.push_back({x0, 12});
+    if (k > 0) r.push_back({x0, 2}), r.push_back({x0 - 1, 2});
+  }
+  return r;
+}
+
+// Thick Archimedean spiral, 5 turns, centre line r = 20 + 30·θ/2π, half-width 1.5 (arms 27
+// apart), `steps` samples per side (2·steps + 2 vertices).
+std::vector<Vec2> spiral_ring(std::size_t steps) {
+  std::vector<Vec2> outer, inner;
+  const double turns = 5, b = 30 / (2 * std::numbers::pi), w = 1.5;
+  for (std::size_t k = 0; k <= steps; ++k) {
+    const double th = turns * 2 * std::numbers::pi * double(k) / double(steps), rad = 20 + b * th;
+    outer.emplace_back((rad + w) * std::cos(th), (rad + w) * std::sin(th));
+    inner.emplace_back((rad - w) * std::cos(th), (rad - w) * std::sin(th));
+  }
+  std::vector<Vec2> ring(inner.begin(), inner.end());
+  ring.insert(ring.end(), outer.rbegin(), outer.rend());
+  return ring;
+}
+
+// family: comb, star (random radii [60, 100]) or spiral; Q an L whose 0.5-wide arm points down
+// (it enters the comb's gaps).
+Case& family_case(const std::string& family, std::size_t n) {
+  auto& slot = cases()["scale/" + family + "/" + std::to_string(n)];
+  if (slot) return *slot;
+  slot = std::make_unique<Case>();
+  slot->name = "scale-" + family;
+  pb::Rng rng(0x2545f491u ^ (n * 1000003u));
+  const std::vector<Vec2> L{{0, 0}, {0.5, 0}, {0.5, 2.5}, {3, 2.5}, {3, 3}, {0, 3}};
+  const std::vector<Vec2> p = family == "comb" ? comb_ring((n + 2) / 4) : family == "spiral" ? spiral_ring(n / 2 - 1) : star_ring(n, 60, 100, rng);
+  slot->add_pair(p, L);
+  return *slot;
+}
+
 void set_counters(benchmark::State& state, const Case& c) {
   state.counters["n"] = double(c.n);
   state.counters["m"] = double(c.m);
@@ -458,6 +505,15 @@ int main(int argc, char** argv) {
     register_case(c, "star/" + std::to_string(c.n) + "/" + std::to_string(c.m), nfp_budget, budget, clipper_budget,
                   pair_sigma_budget);
   }
+  // Scaling of the build with n (issue 19 item 4): comb, star and spiral against an L-shape.
+  for (const std::string family : {"comb", "star", "spiral"})
+    for (std::size_t n : env_sizes("PENDEPTH_BENCH_SCALE_N", {1000, 3000, 10000})) {
+      Case& c = family_case(family, n);
+      benchmark::RegisterBenchmark(("build/pendepth/scale-" + family + "/" + std::to_string(c.n) + "/" + std::to_string(c.m)).c_str(),
+                                   BM_build_pendepth, &c)
+          ->Unit(benchmark::kMillisecond)
+          ->Iterations(1);
+    }
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
   benchmark::RunSpecifiedBenchmarks();

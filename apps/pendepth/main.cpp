@@ -10,6 +10,7 @@
 //   pendepth cast P Q [--offset X,Y[,Z]] --direction X,Y[,Z] [--rotate-q ...] [--rotate-p ...] [--json]
 //   pendepth batch P Q --queries FILE --signed ...   (signed distances: distance,tx,ty[,tz])
 //   pendepth trajectory P Q --poses FILE [--json] [--cold]
+//   pendepth nfp-all INSTANCE.json [--rotations A,B,...] [--threads N] [--progress] [--json]
 //
 // Exit status: 0 success, 2 bad input (one line on stderr naming file, line and problem),
 // 3 an output that cannot be written (standard output or --svg FILE: full disk, closed pipe,
@@ -23,6 +24,7 @@
 // `batch` prepares everything once (Prepare::Full: the depth field, the no-fit polygon) and
 // answers the queries in parallel batches; `--svg` draws the no-fit polygon of non-convex pairs.
 #include <pendepth/io.hpp>
+#include <pendepth/nesting.hpp>
 #include <pendepth/pendepth.hpp>
 
 #include <CLI/CLI.hpp>
@@ -413,11 +415,18 @@ struct BatchArgs {
 
 bool show_progress(const BatchArgs& a) { return a.progress || isatty(fileno(stderr)); }
 
-// A progress line on stderr ("pendepth batch: K / N queries"), redrawn as chunks finish; off
-// unless asked for (--progress) or stderr is a terminal.
+// A progress line on stderr ("pendepth batch: K / N queries"; nfp-all: "pendepth nfp-all: K / N
+// pairs"), redrawn as chunks finish; off unless asked for (--progress) or stderr is a terminal.
 class Progress {
  public:
-  Progress(std::size_t total, bool on) : total_(total), on_(on && total > 0) { draw(); }
+  Progress(std::size_t total, bool on, const char* what = "batch", const char* unit = "queries")
+      : total_(total), on_(on && total > 0), what_(what), unit_(unit) {
+    draw();
+  }
+  void set(std::size_t done) {
+    done_ = done;
+    draw();
+  }
   void add(std::size_t n) {
     done_ += n;
     draw();
@@ -428,10 +437,11 @@ class Progress {
 
  private:
   void draw() const {
-    if (on_) std::fprintf(stderr, "\rpendepth batch: %zu / %zu queries", done_, total_);
+    if (on_) std::fprintf(stderr, "\rpendepth %s: %zu / %zu %s", what_, done_, total_, unit_);
   }
   std::size_t total_, done_ = 0;
   bool on_;
+  const char *what_, *unit_;
 };
 
 // Answers every query in two parallel batches, σ (zero direction) and σ_d, each in file order and
@@ -721,6 +731,83 @@ int run_trajectory(const TrajectoryArgs& a) {
                      [&](std::string& o, const Depth2& r) { append_json(o, r, P, rotated[k++]); });
 }
 
+struct NfpAllArgs {
+  std::string instance, rotations;
+  unsigned threads = 0;
+  bool json = false, progress = false;
+};
+
+// --rotations A,B,...: degrees, finite, at least one.
+std::vector<double> parse_rotation_list(const std::string& text) {
+  std::vector<double> out;
+  std::size_t at = 0;
+  while (true) {
+    const std::size_t comma = std::min(text.find(',', at), text.size());
+    const std::string field = text.substr(at, comma - at);
+    double v = 0;
+    const auto [end, ec] = std::from_chars(field.data(), field.data() + field.size(), v);
+    if (field.empty() || ec != std::errc() || end != field.data() + field.size() || !std::isfinite(v))
+      throw InvalidInput("--rotations: \"" + field + "\" is not a finite angle in degrees (expected A,B,... e.g. 0,90,180,270)");
+    out.push_back(v);
+    if (comma == text.size()) break;
+    at = comma + 1;
+  }
+  return out;
+}
+
+// The no-fit polygon of every ordered pair of items of a nesting instance (i == j included), at
+// every rotation of each (--rotations for all items, else each item's allowed_orientations): CSV
+// rows i,rotation_i,j,rotation_j,"WKT" (i, j the items' indices in "items", P = item i fixed, Q
+// = item j moving; the WKT as `nfp` prints it, quoted), or JSON Lines
+// {"i":…,"rotation_i":…,"j":…,"rotation_j":…,"nfp":{…as nfp --json…}}.
+int run_nfp_all(const NfpAllArgs& a) {
+  const pendepth::NestingInstance inst = a.instance == "-" ? pendepth::parse_nesting_instance(io::read_stream(std::cin, kStdin), kStdin)
+                                                           : pendepth::read_nesting_instance(a.instance);
+  std::vector<Shape2> shapes;
+  std::vector<std::vector<double>> rotations;
+  for (const auto& item : inst.items) {
+    shapes.push_back(item.shape);
+    rotations.push_back(item.allowed_orientations);
+  }
+  if (!a.rotations.empty()) rotations.assign(1, parse_rotation_list(a.rotations));
+  std::optional<Progress> bar;
+  const auto entries = pendepth::no_fit_polygons(shapes, rotations, a.threads, [&](std::size_t done, std::size_t total) {
+    if (!bar) bar.emplace(total, a.progress || isatty(fileno(stderr)), "nfp-all", "pairs");
+    bar->set(done);
+  });
+  bar.reset();
+  constexpr std::size_t kFlushBytes = 1 << 20;
+  std::string out;
+  if (!a.json) out += "i,rotation_i,j,rotation_j,nfp\n";
+  for (const auto& e : entries) {
+    io::Geometry2 g;
+    g.polygons = e.nfp.polygons;
+    for (const auto& s : e.nfp.slits) g.lines.push_back({s[0], s[1]});
+    g.points = e.nfp.points;
+    if (a.json) {
+      out += "{\"i\":" + std::to_string(e.i) + ",\"rotation_i\":";
+      io::append_double(out, e.rotation_i);
+      out += ",\"j\":" + std::to_string(e.j) + ",\"rotation_j\":";
+      io::append_double(out, e.rotation_j);
+      out += ",\"nfp\":";
+      io::append_json(out, g);
+      out += "}\n";
+    } else {
+      out += std::to_string(e.i) + ',';
+      io::append_double(out, e.rotation_i);
+      out += ',' + std::to_string(e.j) + ',';
+      io::append_double(out, e.rotation_j);
+      out += ",\"" + io::to_wkt(g) + "\"\n";
+    }
+    if (out.size() >= kFlushBytes) {
+      write_stdout(out);
+      out.clear();
+    }
+  }
+  write_stdout(out);
+  return 0;
+}
+
 std::string one_line(std::string s) {
   std::replace(s.begin(), s.end(), '\n', ' ');
   return s;
@@ -835,6 +922,23 @@ int main(int argc, char** argv) {
   traj->add_option("--poses", ta.poses, "CSV file of poses (- reads standard input)")->required()->type_name("FILE");
   traj->add_flag("--json", ta.json, "print JSON Lines (one object per pose) instead of CSV");
   traj->add_flag("--cold", ta.cold, "answer every pose from scratch (for comparison; same output)");
+  NfpAllArgs nfa;
+  CLI::App* nfp_all = app.add_subcommand(
+      "nfp-all",
+      "The no-fit polygons of a whole nesting instance (ESICUP / jagua-rs JSON: items[].shape simple_polygon or "
+      "polygon with holes, items[].allowed_orientations): every ordered pair of items (i = j included: two copies) "
+      "at every rotation of each (P = item i fixed, Q = item j moving, both rotated about their own origins; "
+      "quarter turns exact, other angles rounded once). Prints CSV rows i,rotation_i,j,rotation_j,\"WKT\" under that "
+      "header, i and j the items' indices in the file, WKT as nfp prints it; pairs in the order i, rotation_i, j, "
+      "rotation_j. Built in parallel; the output does not depend on --threads.");
+  nfp_all->add_option("INSTANCE", nfa.instance, "nesting instance (.json; - reads standard input)")->required()->type_name("FILE");
+  nfp_all->add_option("--rotations", nfa.rotations,
+                      "rotations in degrees for every item (default: each item's allowed_orientations, or 0)")
+      ->type_name("A,B,...");
+  nfp_all->add_option("--threads", nfa.threads, "threads (default 0: every core)")->type_name("N");
+  nfp_all->add_flag("--progress", nfa.progress, "print progress on stderr (default: only when stderr is a terminal)");
+  nfp_all->add_flag("--json", nfa.json,
+                    "print JSON Lines {\"i\":…,\"rotation_i\":…,\"j\":…,\"rotation_j\":…,\"nfp\":{as nfp --json}} instead");
 
   try {
     app.parse(argc, argv);
@@ -850,6 +954,7 @@ int main(int argc, char** argv) {
   try {
     const int status = depth->parsed()      ? run_depth(da)
                        : nfp->parsed()      ? run_nfp(na)
+                       : nfp_all->parsed()  ? run_nfp_all(nfa)
                        : distance->parsed() ? run_distance(dsa, false)
                        : cast->parsed()     ? run_distance(csa, true)
                        : traj->parsed()     ? run_trajectory(ta)

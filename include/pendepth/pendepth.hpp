@@ -41,6 +41,7 @@
 #include <array>
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -140,6 +141,36 @@ struct NoFitPolygonParts {
 /// Builds the no-fit polygon of any two 2D shapes (reduced convolution, exact; see nfp2.hpp for
 /// the cost). For many queries on the same pair, use Pair2.
 NoFitPolygonParts no_fit_polygon(const Shape2& P, const Shape2& Q);
+
+/// One no-fit polygon of no_fit_polygons: P = shapes[i] rotated by rotation_i (fixed), Q =
+/// shapes[j] rotated by rotation_j (moving), both about their own origins.
+struct NoFitPolygonEntry {
+  std::size_t i = 0, j = 0;
+  double rotation_i = 0, rotation_j = 0;  ///< degrees, counter-clockwise
+  NoFitPolygonParts nfp;
+};
+
+/// The no-fit polygons of a whole nesting instance (src/front/nfp_all.cpp): for every ordered pair
+/// (i, j), i == j included (two copies of one item), and every allowed rotation a of shapes[i] and
+/// b of shapes[j], the entry equal to no_fit_polygon(shapes[i].rotated(a), shapes[j].rotated(b))
+/// (rotation 0: the shape itself). Both shapes rotate, as nesting engines (jagua-rs, SVGnest)
+/// place both pieces at their own allowed orientations; for quarter turns only the difference
+/// b − a matters up to an exact rotation of the answer, but the rounded rotations of other angles
+/// do not commute, so every combination is built. rotations[i] lists shape i's angles in degrees
+/// (rotations.size() == shapes.size()), or rotations has one list shared by every shape.
+/// Order: i, then a (in list order), then j, then b. Per-shape work is done once: the rotated
+/// copies (validated once each, Shape2::rotated) are shared by every pair (the triangulations are
+/// still made per pair inside no_fit_polygon, issue 19 item 2); each pair goes through
+/// no_fit_polygon (the same scaling to the numeric domain). Pairs run in parallel (TBB; threads
+/// as Pair2's batches: 0 every core, 1 the calling thread) and every entry is bit-identical
+/// whatever the thread count. progress(done, total) is called in the calling thread after each
+/// chunk of pairs (about 1/256 of them, at least 64) when given; an exception it throws stops the work and
+/// propagates. Throws InvalidInput for an empty or non-finite rotation list, a wrong number of
+/// lists, a rotation making a shape invalid, or a pair outside the numeric domain (naming the
+/// shapes, first such pair in the order above). Cost: the sum of the pairs' builds (nfp2.hpp).
+std::vector<NoFitPolygonEntry> no_fit_polygons(std::span<const Shape2> shapes, std::span<const std::vector<double>> rotations,
+                                               unsigned threads = 0,
+                                               const std::function<void(std::size_t done, std::size_t total)>& progress = {});
 
 /// A pair of 2D shapes, P fixed and Q moving, with the per-pair work done once. Cheap to copy;
 /// all queries are const and thread-safe.

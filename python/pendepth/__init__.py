@@ -36,6 +36,8 @@ from ._pendepth import (  # noqa: F401
     generalized_depth,
     no_fit_polygon,
     trajectory,
+    no_fit_polygons,
+    read_nesting_instance,
 )
 from ._plot import plot  # noqa: F401
 from . import _svg
@@ -45,7 +47,7 @@ Depth2Result._repr_svg_ = _svg.result_svg
 
 __all__ = [
     "Shape2", "Pair2", "Shape3", "Pair3", "Depth2Result", "Depth3Result", "InvalidInput",
-    "no_fit_polygon", "approximate_minimum_depth", "generalized_depth", "trajectory", "plot", "FEATURE_NONE", "FEATURE_VERTEX", "FEATURE_EDGE", "FEATURE_FACE", "__version__",
+    "no_fit_polygon", "no_fit_polygons", "read_nesting_instance", "approximate_minimum_depth", "generalized_depth", "trajectory", "plot", "FEATURE_NONE", "FEATURE_VERTEX", "FEATURE_EDGE", "FEATURE_FACE", "__version__",
 ]
 
 

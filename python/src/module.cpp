@@ -7,6 +7,7 @@
 // to single calls whatever the thread count; so are these, and a single (2,) / (3,) point is a
 // batch of one. Errors: pendepth::InvalidInput becomes pendepth.InvalidInput (a ValueError) with
 // the C++ message.
+#include <pendepth/nesting.hpp>
 #include <pendepth/pendepth.hpp>
 
 #include <pybind11/numpy.h>
@@ -650,6 +651,9 @@ overlapping (N,) bool, feature_p / feature_q (N, 2) int64 [kind, index] (kind 0 
       .def_property_readonly("is_convex", &Shape2::is_convex)
       .def_property_readonly("hole_count", &Shape2::hole_count)
       .def_property_readonly("name", &Shape2::name)
+      .def("rotated", &Shape2::rotated, py::arg("degrees"),
+           "rotated(degrees) -> Shape2\n\nThe shape turned counter-clockwise about its origin: exact for multiples of 90, "
+           "else each coordinate rotated once with the rounded cos and sin.")
       .def("rings", &rings_of,
            "rings() -> list of (k, 2) arrays\n\nThe rings in normal form: the outer ring counter-clockwise first, then the holes clockwise, as (k, 2) arrays.")
       .def("input_vertex", [](const Shape2& s, std::size_t v) { auto a = s.input_vertex(v); return py::make_tuple(a[0], a[1]); },
@@ -708,6 +712,49 @@ The no-fit polygon of P and Q: the boundary of O = {t : int P and int(Q + t) ove
 Returns a namespace with polygons (a list of polygons, each a list of rings as (k, 2) arrays:
 outer counter-clockwise, then holes clockwise), slits ((s, 2, 2): touching segments inside O)
 and points ((p, 2): exact fits). Vertices rounded to the nearest double.)");
+
+  // Whole nesting instances (pendepth.hpp no_fit_polygons, nesting.hpp).
+  m.def("no_fit_polygons", [](const std::vector<Shape2>& shapes, const py::object& rotations, const py::object& threads) {
+        // One list of angles for every shape, or one list per shape; None: 0 only.
+        std::vector<std::vector<double>> rot;
+        if (rotations.is_none()) rot = {{0.0}};
+        else {
+          const py::sequence seq = rotations;
+          const bool per_shape = seq.size() > 0 && py::isinstance<py::sequence>(seq[0]);
+          if (per_shape) rot = py::cast<std::vector<std::vector<double>>>(rotations);
+          else rot = {py::cast<std::vector<double>>(rotations)};
+        }
+        const unsigned n = thread_count(threads);
+        std::vector<NoFitPolygonEntry> e;
+        {
+          py::gil_scoped_release nogil;
+          e = no_fit_polygons(shapes, rot, n);
+        }
+        py::list out;
+        for (const NoFitPolygonEntry& x : e) out.append(py::make_tuple(x.i, x.rotation_i, x.j, x.rotation_j, nfp_object(x.nfp)));
+        return out;
+      }, py::arg("shapes"), py::arg("rotations") = py::none(), py::arg("threads") = py::none(),
+      R"(no_fit_polygons(shapes, rotations=None, threads=None) -> list of (i, rotation_i, j, rotation_j, nfp)
+
+The no-fit polygons of a whole instance: for every ordered pair (i, j) of shapes (i == j too) and
+every rotation a of shape i and b of shape j (degrees; quarter turns exact, other angles rounded
+once), nfp = no_fit_polygon(shapes[i].rotated(a), shapes[j].rotated(b)), in the order i, a, j, b.
+rotations: one list of angles for every shape, or one list per shape (None: 0 only). Built in
+parallel (threads: None = every core); the result does not depend on the thread count.)");
+  m.def("read_nesting_instance", [](const std::string& path) {
+        const NestingInstance inst = read_nesting_instance(path);
+        py::object ns = py::module_::import("types").attr("SimpleNamespace");
+        py::list items;
+        for (const NestingItem& it : inst.items)
+          items.append(ns(py::arg("id") = it.id, py::arg("demand") = it.demand, py::arg("shape") = it.shape,
+                          py::arg("allowed_orientations") = it.allowed_orientations));
+        return ns(py::arg("name") = inst.name, py::arg("items") = items);
+      }, py::arg("path"),
+      R"(read_nesting_instance(path) -> namespace(name, items)
+
+An ESICUP / jagua-rs JSON nesting instance: items[k] = namespace(id, demand, shape (a Shape2,
+validated once), allowed_orientations (degrees; [0.0] when absent)). Bad input raises InvalidInput
+"PATH: item K (id X): problem".)");
 
   // ---- Pair2 ----
   py::class_<PyPair2>(m, "Pair2", kPair2Doc)

@@ -37,6 +37,8 @@ void convex_parts(const std::vector<Tri>& tris, bool merge, ConvexParts& out) {
   if (merge)
     for (const Tri& t : tris) nv = std::max({nv, t.id[0] + 1, t.id[1] + 1, t.id[2] + 1});
   thread_local std::vector<std::uint32_t> work;
+  thread_local std::vector<std::uint64_t> sorted;  // large: directed edges (start << 32 | end), slots in `order`
+  thread_local std::vector<std::uint32_t> order;
   work.resize(std::size_t(5) * n3 + T + (merge ? nv + n3 : 0));
   std::uint32_t *const id = work.data(), *const to = id + n3, *const next = to + n3, *const prev = next + n3,
                        *const alias = prev + n3, *const part = alias + n3;
@@ -63,11 +65,32 @@ void convex_parts(const std::vector<Tri>& tris, bool merge, ConvexParts& out) {
     std::uint32_t *const head = part + T, *const link = head + nv;
     std::fill(head, head + nv, kNone);
     for (std::uint32_t s = 0; s < n3; ++s) link[s] = head[id[s]], head[id[s]] = s;
+    // A vertex of high degree (a fan: a triangulation joins a long straight run of vertices to a
+    // few far ones) would make the list walks O(T·d) = O(T²): large triangulations look the
+    // reverse edge up in the directed edges sorted by (start, end) instead, O(T log T). The
+    // reverse edge is unique, so both find the same slot.
+    const bool big = T > 1024;
+    if (big) {
+      order.resize(n3);
+      for (std::uint32_t s = 0; s < n3; ++s) order[s] = s;
+      std::sort(order.begin(), order.end(), [&](std::uint32_t x, std::uint32_t y) { return id[x] != id[y] ? id[x] < id[y] : to[x] < to[y]; });
+      sorted.resize(n3);
+      for (std::uint32_t k = 0; k < n3; ++k) sorted[k] = (std::uint64_t(id[order[k]]) << 32) | to[order[k]];
+    }
+    auto reverse_edge = [&](std::uint32_t a, std::uint32_t b) {
+      if (big) {
+        const std::uint64_t key = (std::uint64_t(b) << 32) | a;
+        const auto it = std::lower_bound(sorted.begin(), sorted.end(), key);
+        return it != sorted.end() && *it == key ? order[std::size_t(it - sorted.begin())] : kNone;
+      }
+      std::uint32_t r = head[b];
+      while (r != kNone && to[r] != a) r = link[r];
+      return r;
+    };
     for (std::uint32_t s = 0; s < n3; ++s) {
       const std::uint32_t a = id[s], b = to[s];
       if (a > b) continue;  // each diagonal once
-      std::uint32_t r = head[b];
-      while (r != kNone && to[r] != a) r = link[r];
+      const std::uint32_t r = reverse_edge(a, b);
       if (r == kNone) continue;  // a polygon edge
       const std::uint32_t X = find(s / 3), Y = find(r / 3);
       if (X == Y) continue;
@@ -101,7 +124,7 @@ void convex_parts(const std::vector<Tri>& tris, bool merge, ConvexParts& out) {
   }
   out.start.push_back(std::uint32_t(out.v.size()));
   // Large shapes do not pin their memory in the thread.
-  if (work.size() > (std::size_t(1) << 16)) work = {};
+  if (work.size() > (std::size_t(1) << 16)) work = {}, sorted = {}, order = {};
 }
 
 }  // namespace pendepth::nonconvex2

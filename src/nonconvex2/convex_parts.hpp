@@ -8,7 +8,7 @@
 // triangle adjacency is not a tree) the parts are the triangles themselves. Every diagonal left
 // between two parts is essential: removing it would make a reflex vertex (so the parts are at most
 // 4× the minimum number, Hertel & Mehlhorn 1983).
-// Cost: O(T·d) to pair the diagonals (d the largest vertex degree), O(T) exact turn tests and
+// Cost: O(T·d) to pair the diagonals (d the largest vertex degree; O(T log T) for T > 1024), O(T) exact turn tests and
 // O(1) splices, O(T) output.
 // Used by the no-fit-polygon classification (nfp_classify.cpp): a point test against the open
 // sums of convex parts needs far fewer sums, and meets far fewer sums on their boundary, than one

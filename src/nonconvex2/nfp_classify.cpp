@@ -18,7 +18,11 @@
 //     sums of convex parts A ⊕ (−B) (convex_parts.hpp: Hertel–Mehlhorn on the triangulations; O
 //     is also the union of the open sums of the parts, as both are {t : int P ∩ int(Q + t) ≠ ∅}),
 //     fewer sums than triangle pairs, and far fewer with the point on their boundary (counts:
-//     docs/benchmarks.md); for large shapes the triangle pairs by the dual box descent. No test
+//     docs/benchmarks.md); for large shapes (more than 256 part pairs) the sums of pieces — the
+//     parts without their straight vertices, split by diagonals when they have more than 12
+//     corners — by a dual descent of the pieces' box trees (make_pieces: a triangulation fans long
+//     straight runs from far vertices, and those thin triangles' boxes made the triangle pairs'
+//     descent meet O(n) sums per point on combs). No test
 //     is needed for a part next to a crossing where c enters the left of a strict candidate d
 //     inside both: d is an edge of an open pair sum lying on d's left (nfp_build.cpp step 1), so
 //     c's points just past the crossing, hence the whole part, are in O. Each split point not
@@ -138,14 +142,6 @@ bool origin_on_line(const Ray& a, const Ray& b) {
          }) == 0;
 }
 
-// The six half-planes of T ⊕ B in floating point, ready for the point filter: edge i (0–2: T's,
-// 3–5: B's) holds m iff dx·m.y − dy·m.x − c > 0, with c = cross(d, x0) + min_y cross(d, y) (the
-// filter's error bound covers computing c apart from m); smax bounds every coordinate.
-struct HalfPlanes {
-  double dx[6], dy[6], c[6], e[6];
-  double smax;
-};
-
 struct PartPair {
   Vec2 lo, hi;
   std::uint32_t a, b;
@@ -160,6 +156,12 @@ struct Buffers {
   std::vector<std::uint32_t> prevP, prevQ, edge_part_p, edge_part_q;
   PairDepth2::Impl::DescentStack stack;
   ConvexParts pp, pb;
+  // Large shapes: the pieces (convex parts reduced to their corners, split when many) and their
+  // box trees, per-piece coordinate bounds, undecided piece pairs of a point test.
+  ConvexParts rp, rb;
+  BoxTree tree_p, tree_b;
+  std::vector<double> smax_p, smax_b;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> undecided_pairs;
   std::vector<PartPair> flat;
   std::vector<double> hdx, hdy, hc, he;
   std::vector<signed char> vertex_table;
@@ -170,8 +172,10 @@ struct Buffers {
   std::vector<Split*> grouped, sp;
   void trim() {
     const std::size_t big = std::size_t(1) << 14;
-    if (vertex_table.capacity() > big || found.capacity() > big || hdx.capacity() > big || !vertex_map.empty()) *this = Buffers();
-    pp.trim(), pb.trim();
+    if (vertex_table.capacity() > big || found.capacity() > big || hdx.capacity() > big || !vertex_map.empty() ||
+        tree_p.nodes.capacity() + tree_b.nodes.capacity() > big)
+      *this = Buffers();
+    pp.trim(), pb.trim(), rp.trim(), rb.trim();
   }
 };
 
@@ -242,6 +246,10 @@ struct Classifier {
   // The part holding each boundary edge g → next(g) of P (of −Q: −h → −next(h)); a boundary edge
   // lies in exactly one triangle, hence one part.
   std::vector<std::uint32_t>&edge_part_p = buf.edge_part_p, &edge_part_q = buf.edge_part_q;
+  // Large shapes: the pieces of P and −Q (make_pieces), their box trees and coordinate bounds.
+  ConvexParts &rp = buf.rp, &rb = buf.rb;
+  BoxTree &tree_p = buf.tree_p, &tree_b = buf.tree_b;
+  std::vector<double>&smax_p = buf.smax_p, &smax_b = buf.smax_b;
   // The coverage of sum vertices (vertex_state): a table over all (P, Q) vertex pairs when small.
   std::size_t qn = S.Q.size();
   bool small_table = std::uint64_t(S.P.size()) * S.Q.size() <= (std::uint64_t(1) << 20);
@@ -249,10 +257,15 @@ struct Classifier {
   Classifier(const PairDepth2::Impl& s, const std::vector<NfpCandidate>& c) : S(s), cands(c) {
     prevP.clear(), prevQ.clear(), flat.clear(), vertex_map.clear();
     if (small_table) vertex_table.assign(S.P.size() * qn, -1);
-    if (S.tp.size() * S.tb.size() > 256 * 64) return;  // large shapes: the dual descent
     convex_parts(S.tp, S.P.hole_count() == 0, pp);
     convex_parts(S.tb, S.Q.hole_count() == 0, pb);
-    if (pp.size() * pb.size() > 256) return;
+    if (pp.size() * pb.size() > 256) {  // large shapes: the pieces and their dual descent
+      make_pieces(pp, S.P, rp, edge_part_p, smax_p);
+      make_pieces(pb, S.Q, rb, edge_part_q, smax_b);
+      tree_p.build_boxes(rp.size(), [&](std::size_t k) -> const Vec2& { return rp.lo[k]; }, [&](std::size_t k) -> const Vec2& { return rp.hi[k]; });
+      tree_b.build_boxes(rb.size(), [&](std::size_t k) -> const Vec2& { return rb.lo[k]; }, [&](std::size_t k) -> const Vec2& { return rb.hi[k]; });
+      return;
+    }
     flat.reserve(pp.size() * pb.size());
     std::uint32_t off = 0;
     for (std::uint32_t a = 0; a < pp.size(); ++a)
@@ -273,6 +286,151 @@ struct Classifier {
     };
     edge_parts(pp, S.P, edge_part_p);
     edge_parts(pb, S.Q, edge_part_q);
+  }
+
+  // Large shapes: the pieces of one shape (P's, or −Q's) from its convex parts X. A part's
+  // straight vertices are dropped (the same convex set; its sums with any piece are the same
+  // sets, and the filters and exact tests below run over its corners only), and a part with more
+  // than kMaxCorners corners is split by diagonals between its corners, halving, into convex
+  // pieces of at most that many (strictly convex, non-degenerate: corners in convex position).
+  // Why: a triangulation must fan a long straight run of vertices (the comb's base between its
+  // teeth) from a few far vertices, so thin triangles spanning the shape have boxes holding
+  // O(n) placements each and a point test met O(n) triangle pairs (quadratic builds, issue 19
+  // item 4); the part holding the fan is one piece of 4 corners. O is the union of the open sums
+  // of any decomposition into non-degenerate convex pieces ({t : int P ∩ int(Q + t) ≠ ∅}), and
+  // every decision is exact, so the answers are the same as with triangles.
+  // edge_piece[g]: the piece holding boundary edge g → next(g) (on one of its corner edges);
+  // smax[k] bounds piece k's coordinates. O(parts' size) plus O(log) per split.
+  static constexpr std::size_t kMaxCorners = 12;
+  static void make_pieces(const ConvexParts& X, const Polygon& shape, ConvexParts& out, std::vector<std::uint32_t>& edge_piece,
+                          std::vector<double>& smax) {
+    out.v.clear(), out.id.clear(), out.start.clear(), out.lo.clear(), out.hi.clear(), smax.clear();
+    edge_piece.assign(shape.size(), ~std::uint32_t(0));
+    std::vector<std::uint32_t> corner, at, corner_piece;  // corner positions; per position its corner edge
+    std::vector<std::vector<std::uint32_t>> todo;
+    for (std::uint32_t k = 0; k < X.size(); ++k) {
+      const std::uint32_t s = X.start[k], n = X.start[k + 1] - s;
+      corner.clear();
+      for (std::uint32_t i = 0; i < n; ++i)
+        if (predicates::orient2d(X.v[s + (i + n - 1) % n], X.v[s + i], X.v[s + (i + 1) % n]) != 0) corner.push_back(i);
+      const auto kc = static_cast<std::uint32_t>(corner.size());
+      // at[i]: the corner edge (index of its first corner) holding the part's edge i → i + 1.
+      at.assign(n, kc - 1);
+      for (std::uint32_t c = 0; c < kc; ++c)
+        for (std::uint32_t i = corner[c]; i < (c + 1 < kc ? corner[c + 1] : n); ++i) at[i] = c;
+      corner_piece.assign(kc, 0);
+      std::vector<std::uint32_t> all(kc);
+      for (std::uint32_t c = 0; c < kc; ++c) all[c] = c;
+      todo.assign(1, std::move(all));
+      while (!todo.empty()) {
+        std::vector<std::uint32_t> L = std::move(todo.back());
+        todo.pop_back();
+        if (L.size() > kMaxCorners) {
+          const std::size_t h = L.size() / 2;
+          std::vector<std::uint32_t> R(L.begin() + h, L.end());
+          R.push_back(L[0]);
+          L.resize(h + 1);
+          todo.push_back(std::move(L));
+          todo.push_back(std::move(R));
+          continue;
+        }
+        const auto piece = static_cast<std::uint32_t>(out.lo.size());
+        out.start.push_back(static_cast<std::uint32_t>(out.v.size()));
+        Vec2 lo = X.v[s + corner[L[0]]], hi = lo;
+        double m = 0;
+        for (std::size_t t = 0; t < L.size(); ++t) {
+          const Vec2& x = X.v[s + corner[L[t]]];
+          out.v.push_back(x);
+          out.id.push_back(X.id[s + corner[L[t]]]);
+          lo = lo.cwiseMin(x), hi = hi.cwiseMax(x);
+          m = std::max(m, x.cwiseAbs().maxCoeff());
+          if (L[(t + 1) % L.size()] == (L[t] + 1) % kc) corner_piece[L[t]] = piece;  // a corner edge of the part
+        }
+        out.lo.push_back(lo), out.hi.push_back(hi), smax.push_back(m);
+      }
+      for (std::uint32_t i = 0; i < n; ++i)
+        if (shape.next(X.id[s + i]) == X.id[s + (i + 1) % n]) edge_piece[X.id[s + i]] = corner_piece[at[i]];
+    }
+    out.start.push_back(static_cast<std::uint32_t>(out.v.size()));
+  }
+
+  // m = c(p) in the open sum of pieces a (of P) and b (of −Q): in_part_sum's tests, the
+  // half-planes computed on the fly (the same floating values as prepare()'s).
+  int in_piece_sum(std::uint32_t a, std::uint32_t b, const NfpCandidate& c, const Param& p, const Vec2& m, double tol, bool exact,
+                   int den) const {
+    const double S = std::max({smax_p[a], smax_b[b], m.cwiseAbs().maxCoeff()});
+    const double slack = 2 * (tol + 16 * S * 0x1p-53);
+    bool sure = true;
+    for (int side = 0; side < 2; ++side) {
+      const ConvexParts& X = side == 0 ? rp : rb;
+      const ConvexParts& Y = side == 0 ? rb : rp;
+      const std::uint32_t kx = side == 0 ? a : b, ky = side == 0 ? b : a;
+      const std::uint32_t x0i = X.start[kx], xn = X.start[kx + 1] - x0i;
+      for (std::uint32_t i = 0; i < xn; ++i) {
+        const Vec2& x0 = X.v[x0i + i];
+        const std::uint32_t i1 = x0i + (i + 1) % xn;
+        const Vec2 d = X.v[i1] - x0;
+        double lo = INFINITY;
+        for (std::uint32_t j = Y.start[ky]; j < Y.start[ky + 1]; ++j) lo = std::min(lo, d.x() * Y.v[j].y() - d.y() * Y.v[j].x());
+        const double hc = d.x() * x0.y() - d.y() * x0.x() + lo;
+        const double val = d.x() * m.y() - d.y() * m.x() - hc, err = (std::abs(d.x()) + std::abs(d.y())) * slack;
+        if (val < -err) return -1;
+        if (val > err) continue;
+        if (!exact) {
+          sure = false;
+          continue;
+        }
+        if (!edge_holds(x0, X.v[i1], Y, ky, c, p, m, slack, den)) return -1;
+      }
+    }
+    return sure ? 1 : 0;
+  }
+  // Symbolic: c's line is an edge line of the pieces' sum (own_edge_part; c strict, so its
+  // convex vertex is a corner of every piece holding it).
+  bool own_edge_piece(std::uint32_t a, std::uint32_t b, const Ray& E) const {
+    auto has_vertex = [](const ConvexParts& X, std::uint32_t k, std::uint32_t v) {
+      for (std::uint32_t i = X.start[k]; i < X.start[k + 1]; ++i)
+        if (X.id[i] == v) return true;
+      return false;
+    };
+    if (E.q0 == E.q1) return a == edge_part_p[E.p0] && has_vertex(rb, b, E.q0);
+    return b == edge_part_q[E.q0] && has_vertex(rp, a, E.p0);
+  }
+  // Large shapes: m (within [mlo, mhi]) in O, by a dual descent of the pieces' box trees; the
+  // floating filters first over every piece pair whose sum box holds m (stopping at one that
+  // surely holds it), then the exact test of the undecided pairs.
+  template <class DenSign>
+  bool covered_by_pieces(const NfpCandidate& c, const Param& p, const Vec2& m, double tol, const Vec2& mlo, const Vec2& mhi,
+                         DenSign&& den_sign) {
+    auto& undecided = buf.undecided_pairs;
+    undecided.clear();
+    stack.assign(1, {0, 0});
+    while (!stack.empty()) {
+      const auto [a, b] = stack.back();
+      stack.pop_back();
+      const auto &A = tree_p.nodes[a], &B = tree_b.nodes[b];
+      Vec2 lo, hi;
+      sum_box(A.lo, A.hi, B.lo, B.hi, lo, hi);
+      if (lo.x() > mhi.x() || hi.x() < mlo.x() || lo.y() > mhi.y() || hi.y() < mlo.y()) continue;
+      const bool la = A.left < 0, lb = B.left < 0;
+      if (la && lb) {
+        if (c.strict && own_edge_piece(A.tri, B.tri, c.E)) continue;
+        const int r = in_piece_sum(A.tri, B.tri, c, p, m, tol, false, 0);
+        if (r > 0) return true;
+        if (r == 0) undecided.push_back({A.tri, B.tri});
+        continue;
+      }
+      if (lb || (!la && (A.hi - A.lo).sum() >= (B.hi - B.lo).sum())) {
+        stack.push_back({A.left, b});
+        stack.push_back({A.right, b});
+      } else {
+        stack.push_back({a, B.left});
+        stack.push_back({a, B.right});
+      }
+    }
+    for (const auto& [a, b] : undecided)
+      if (in_piece_sum(a, b, c, p, m, tol, true, den_sign()) > 0) return true;
+    return false;
   }
 
   // Half-planes of A ⊕ B for convex A, B: for each edge d of one part from x0, m is inside iff
@@ -420,106 +578,6 @@ struct Classifier {
     return true;
   }
 
-  // Floating filter for m ∈ int(T ⊕ B), m known to within tol per coordinate: +1 certainly
-  // inside, -1 certainly not, 0 undecided. T ⊕ B is the intersection of the half-planes of its
-  // edges, each parallel to an edge of T or of B: for an edge d of T from t, m is inside iff
-  // cross(d, m − t) > min_b cross(d, b) (the sum's edge is that edge of T translated by B's
-  // extreme vertex), and symmetrically for the edges of B. Error: |d|₁·(tol + 16·S·2⁻⁵³) covers
-  // the point's error and the roundings (S bounds every coordinate).
-  // An edge parallel to c is decided exactly and cheaply whatever the point's parameter: m lies
-  // on c's line, so cross(d, m − x − y) = cross(d, A − x − y) with A = o1 + o2 (degree 2 in the
-  // input doubles); the half-plane holds m iff that is positive for some vertex y of the other
-  // triangle. (On real pieces most undecided edges are parallel: collinear edges of P or Q.)
-  // Edge k of X (the other triangle Y) when the floating test cannot decide: -1 m is outside
-  // its half-plane, +1 inside, 0 undecided (not parallel to c: the exact test decides).
-  static int undecided_edge(const Tri& X, int k, const Tri& Y, const Ray& E) {
-    const Vec2 &x0 = X.v[k], &x1 = X.v[(k + 1) % 3];
-    const Vec2 d = x1 - x0, dirc = E.a1 - E.b1;
-    const double cr = d.x() * dirc.y() - d.y() * dirc.x();
-    if (std::abs(cr) > (std::abs(d.x()) + std::abs(d.y())) * (std::abs(dirc.x()) + std::abs(dirc.y())) * 0x1p-50 ||
-        predicates::cross_edges(x0, x1, E.b1, E.a1) != 0)
-      return 0;
-    for (int j = 0; j < 3; ++j) {
-      const Vec2& y = Y.v[j];
-      if (exact::exact_sign_tie_likely([&](auto L) {
-            auto u = L(E.o1.x()) + L(E.o2.x()) - L(x0.x()) - L(y.x()), v = L(E.o1.y()) + L(E.o2.y()) - L(x0.y()) - L(y.y());
-            return (L(x1.x()) - L(x0.x())) * v - (L(x1.y()) - L(x0.y())) * u;
-          }) > 0)
-        return 1;
-    }
-    return -1;
-  }
-
-  static void half_planes(const Tri& T, const Tri& B, HalfPlanes& h) {
-    h.smax = 0;
-    for (int k = 0; k < 3; ++k) h.smax = std::max({h.smax, T.v[k].cwiseAbs().maxCoeff(), B.v[k].cwiseAbs().maxCoeff()});
-    for (int side = 0; side < 2; ++side) {
-      const Tri& X = side == 0 ? T : B;
-      const Tri& Y = side == 0 ? B : T;
-      for (int k = 0; k < 3; ++k) {
-        const Vec2 &x0 = X.v[k], d = X.v[(k + 1) % 3] - x0;
-        double lo = INFINITY;
-        for (int j = 0; j < 3; ++j) lo = std::min(lo, d.x() * Y.v[j].y() - d.y() * Y.v[j].x());
-        const int i = 3 * side + k;
-        h.dx[i] = d.x(), h.dy[i] = d.y(), h.c[i] = d.x() * x0.y() - d.y() * x0.x() + lo;
-        h.e[i] = std::abs(d.x()) + std::abs(d.y());
-      }
-    }
-  }
-  // Edges parallel to c are decided exactly (undecided_edge).
-  static int sum_filter(const Tri& T, const Tri& B, const HalfPlanes& h, const Vec2& m, double tol, const Ray& E) {
-    const double S = std::max(h.smax, m.cwiseAbs().maxCoeff());
-    const double slack = 2 * (tol + 16 * S * 0x1p-53);
-    bool sure = true;
-    for (int i = 0; i < 6; ++i) {
-      const double val = h.dx[i] * m.y() - h.dy[i] * m.x() - h.c[i], err = h.e[i] * slack;
-      if (val < -err) return -1;
-      if (val > err) continue;
-      const int u = i < 3 ? undecided_edge(T, i, B, E) : undecided_edge(B, i - 3, T, E);
-      if (u < 0) return -1;
-      if (u == 0) sure = false;
-    }
-    return sure ? 1 : 0;
-  }
-
-  // Symbolic: c's line is an edge line of T ⊕ B, so no point of c is inside. For c = e − q (P
-  // edge e = p0 → p1, Q vertex q strictly convex): T has e as an edge (in its CCW order) and
-  // B = −U has −q as a vertex; −q is then extreme in B against e's outward normal (U lies in Q's
-  // angle at q, which the candidate rule puts on the closed outer side of e — for a straight
-  // vertex only its edges are, not necessarily the angle), so e − q is the sum's edge parallel
-  // to e. Symmetrically for c = p − h (Q edge h = q0 → q1): B has the edge −q0 → −q1, T the
-  // strictly convex vertex p.
-  static bool own_edge(const Tri& T, const Tri& B, const Ray& E) {
-    auto has_edge = [](const Tri& X, std::uint32_t a, std::uint32_t b) {
-      for (int k = 0; k < 3; ++k)
-        if (X.id[k] == a && X.id[(k + 1) % 3] == b) return true;
-      return false;
-    };
-    auto has_vertex = [](const Tri& X, std::uint32_t a) { return X.id[0] == a || X.id[1] == a || X.id[2] == a; };
-    if (E.q0 == E.q1) return has_edge(T, E.p0, E.p1) && has_vertex(B, E.q0);
-    return has_edge(B, E.q0, E.q1) && has_vertex(T, E.p0);
-  }
-
-  // Exact: the point at (normalised) parameter p of candidate c lies in the open sum T ⊕ B.
-  bool in_open_sum(const Tri& T, const Tri& B, const NfpCandidate& c, const Param& p, int den_sign) const {
-    const Sum F = make_sum(T, B);
-    const Ray& E = c.E;
-    // Symbolic first: c runs along an edge of F, or the point (a crossing with p's line) lies on
-    // one: on ∂F, not inside.
-    for (const Line& e : F.e)
-      if (same_line(e, c.line) || (p.kind == Param::Cut && same_line(e, p.line))) return false;
-    for (const Line& e : F.e) {
-      const int s = exact::exact_sign_tie_likely([&](auto L) {
-        auto [n, dd] = param_nd(p, E, kO, L);
-        auto x = (L(E.o1.x()) + L(E.o2.x()) - L(e.c1.x()) - L(e.c2.x())) * dd + n * ray_dx(E, L);
-        auto y = (L(E.o1.y()) + L(E.o2.y()) - L(e.c1.y()) - L(e.c2.y())) * dd + n * ray_dy(E, L);
-        return (L(e.e1.x()) - L(e.e0.x())) * y - (L(e.e1.y()) - L(e.e0.y())) * x;
-      });
-      if (s * den_sign <= 0) return false;
-    }
-    return true;
-  }
-
   // Exact: the point at parameter p (value v to a few ulps) of candidate c lies in O. Sum
   // vertices (the ends of most parts) are looked up once: each ends two or more candidates.
   // (A table over all (P, Q) vertex pairs when small, else a hash map.)
@@ -543,8 +601,8 @@ struct Classifier {
   // Few part pairs: two passes, the floating filters over every part sum whose box holds the
   // point, stopping at one that certainly contains it; only then the exact test of the undecided
   // ones (most have the point on their boundary, as the point lies on candidates, and are not
-  // needed when another sum contains it). Large shapes: the triangle pairs by the dual descent,
-  // each decided exactly at once (many sums per point; stops at the first that holds it).
+  // needed when another sum contains it). Large shapes: the same two passes over the piece pairs
+  // the dual descent of their box trees finds (covered_by_pieces).
   std::vector<std::uint32_t>& undecided = buf.undecided;
   bool covered_point(const NfpCandidate& c, const Param& p, const Split& at) {
     // The point to within tol: A and B within a few ulps of the exact ends, v within err of μ.
@@ -571,16 +629,7 @@ struct Classifier {
         if (in_part_sum(flat[k], c, p, m, tol, true, den_sign()) > 0) return true;
       return false;
     }
-    HalfPlanes h;
-    return S.descend(
-        [&](const Vec2& lo, const Vec2& hi) { return !(lo.x() > mhi.x() || hi.x() < mlo.x() || lo.y() > mhi.y() || hi.y() < mlo.y()); },
-        [&](std::uint32_t i, std::uint32_t j) {
-          if (c.strict && own_edge(S.tp[i], S.tb[j], c.E)) return false;
-          half_planes(S.tp[i], S.tb[j], h);
-          const int f = sum_filter(S.tp[i], S.tb[j], h, m, tol, c.E);
-          return f > 0 || (f == 0 && in_open_sum(S.tp[i], S.tb[j], c, p, den_sign()));
-        },
-        nullptr, stack);
+    return covered_by_pieces(c, p, m, tol, mlo, mhi, den_sign);
   }
 
   // The point of c at split s from its value, when the bounds certify it to 8 ulps per coordinate

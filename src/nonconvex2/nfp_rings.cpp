@@ -78,7 +78,9 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <stdexcept>
+#include <unordered_map>
 
 #include "geometry/exact.hpp"
 #include "nonconvex2/nfp_impl.hpp"
@@ -695,7 +697,8 @@ namespace {
 // pieces, so after the first pairs no call allocates except for its output.
 struct Workspace {
   std::vector<End> ends;
-  std::vector<int> id, rep, order, zero_points, stamp, pos, us, first, out, fill, ring_verts, ring_start, cuts;
+  std::vector<int> id, rep, order, zero_points, stamp, pos, us, first, out, fill, ring_verts, ring_start;
+  std::unordered_multimap<std::uint64_t, int> cut_buckets;  // round_ends: rounded crossing ends by coarse position
   std::vector<Vec2> rv;
   std::vector<char> fixed, is_vertex, used;
   std::vector<Seg> segs;
@@ -710,6 +713,7 @@ struct Workspace {
   };
   std::vector<Edge> edges;
   std::vector<Iv> ivs;
+  std::vector<std::array<int, 2>> cover;  // cut_lines: interval coverage differences per direction
   std::vector<std::array<int, 2>> slits;
   std::vector<std::size_t> chain, outer, holes, owner;
   std::vector<int> table, ghead, vnext;  // interning: hash table of rounding groups, vertex lists
@@ -851,8 +855,22 @@ void round_ends(Workspace& W, const NoFitPolygon2::Impl& N) {
   const std::size_t np = N.pieces.size();
   std::vector<End>& ends = W.ends;
   ends.resize(2 * np);
-  std::vector<int>& cuts = W.cuts;  // rounded crossing ends, for reuse
+  // Rounded crossing ends, for reuse, by a coarse key of their position (the rounding with the
+  // last 12 mantissa bits cleared): a crossing's guess is within a few ulps of its rounding, so
+  // the earlier end of the same crossing is nearly always in the guess's bucket. One it misses
+  // costs a rounding (the same value); a scan of every earlier cut was quadratic in the pieces.
+  auto& cuts = W.cut_buckets;
   cuts.clear();
+  auto key = [](const Vec2& p) {
+    std::uint64_t h = 0;
+    for (int a = 0; a < 2; ++a) {
+      const double x = p[a] + 0.0;  // −0 and +0 one key
+      std::uint64_t b;
+      std::memcpy(&b, &x, sizeof b);
+      h = h * 0x9e3779b97f4a7c15ull ^ (b & ~std::uint64_t(0xfff));
+    }
+    return h;
+  };
   for (std::size_t k = 0; k < np; ++k) {
     const NfpPiece& pc = N.pieces[k];
     for (int j = 0; j < 2; ++j) {
@@ -887,8 +905,11 @@ void round_ends(Workspace& W, const NoFitPolygon2::Impl& N) {
       // The crossing of the same two lines was rounded already (the end of one piece and the start
       // of the next): rounding is a function of the exact point, so its rounding is this one's.
       bool reused = false;
+      const Vec2& guess = j == 0 ? pc.a : pc.b;
       if (v.kind == Param::Cut) {
-        for (int c : cuts) {
+        const auto [from, to] = cuts.equal_range(key(guess));
+        for (auto it = from; it != to; ++it) {
+          const int c = it->second;
           const End& u = ends[c];
           const bool uv = nonconvex2::same_line(u.raw->line, *v.edge), vu = nonconvex2::same_line(v.raw->line, *u.edge);
           // Each cut by the other's line: the same crossing symbolically; one way only: same_point
@@ -902,9 +923,8 @@ void round_ends(Workspace& W, const NoFitPolygon2::Impl& N) {
         }
       }
       if (reused) continue;
-      const Vec2& guess = j == 0 ? pc.a : pc.b;
       v.r = Vec2(round_coord(v, 0, guess.x()), round_coord(v, 1, guess.y()));
-      if (v.kind == Param::Cut) cuts.push_back(int(2 * k + j));
+      if (v.kind == Param::Cut) cuts.emplace(key(v.r), int(2 * k + j));
     }
   }
 }
@@ -1102,12 +1122,23 @@ void cut_lines(Workspace& W, int nv) {
       return x != y && compare_coord(ends[rep[x]], ends[rep[y]], axis) < 0;
     });
     for (std::size_t i = 0; i < us.size(); ++i) pos[us[i]] = int(i);
+    // Elementary interval i (between us[i] and us[i + 1]) is covered by iv iff pos[lo] ≤ i <
+    // pos[hi]: counts per direction by a difference array and a running sum, O(|us| + |ivs|)
+    // (a line holding many pieces — the comb's collinear tooth tops — made the scan of every
+    // piece per interval quadratic).
+    std::vector<std::array<int, 2>>& cover = W.cover;
+    cover.assign(us.size() + 1, {0, 0});
+    for (const Iv& iv : ivs) {
+      if (pos[iv.lo] >= pos[iv.hi]) continue;  // covers no interval
+      ++cover[std::size_t(pos[iv.lo])][iv.fwd ? 0 : 1];
+      --cover[std::size_t(pos[iv.hi])][iv.fwd ? 0 : 1];
+    }
     bool slit_open = false;
     int slit_start = -1;
+    int nf = 0, nb = 0;
     for (std::size_t i = 0; i + 1 < us.size(); ++i) {
-      bool f = false, b = false;
-      for (const Iv& iv : ivs)
-        if (pos[iv.lo] <= int(i) && int(i) + 1 <= pos[iv.hi]) (iv.fwd ? f : b) = true;
+      nf += cover[i][0], nb += cover[i][1];
+      const bool f = nf > 0, b = nb > 0;
       const int p0 = us[i], p1 = us[i + 1];
       if (f || b) {
         is_vertex[p0] = 1;

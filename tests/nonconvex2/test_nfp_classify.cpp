@@ -210,6 +210,50 @@ TEST(NfpClassify, LargePairsDescent) {
   }
 }
 
+// The large path's pieces (nfp_classify.cpp make_pieces): convex parts with long straight runs
+// (a comb's base between its teeth, where the triangulation fans across the whole shape), a
+// convex part of many corners split by diagonals (the comb's base bowed into an arc below),
+// collinear vertices in a part (the base's top run: dropped from the pieces), exact fits of a small comb's teeth in the gaps and narrower
+// teeth sliding, holes (no merging: the triangles are the pieces); against the reference cutting.
+TEST(NfpClassify, LargePairsPiecesStraightRunsAndSplits) {
+  std::mt19937_64 rng(9931);
+  auto parts = [](const Polygon& P, const Polygon& Q, std::size_t& most) {
+    const pendepth::PairDepth2::Impl S(P, Q);
+    nc::ConvexParts pp, pb;
+    nc::convex_parts(S.tp, P.hole_count() == 0, pp);
+    nc::convex_parts(S.tb, Q.hole_count() == 0, pb);
+    for (std::size_t k = 0; k < pp.size(); ++k) most = std::max<std::size_t>(most, pp.start[k + 1] - pp.start[k]);
+    return pp.size() * pb.size();
+  };
+  // comb_ring starts (0, 0), (W, 0): the bottom edge becomes an arc of 40 corners below it.
+  std::vector<Vec2> ring = polygon2_test::comb_ring(65, 1, 1, 10, 2);
+  const double W = ring[1].x();
+  std::vector<Vec2> arc{ring[0]};
+  for (int k = 1; k < 40; ++k) {
+    const double x = W * k / 40;
+    arc.emplace_back(x, -x * (W - x) / (W * 8));
+  }
+  ring.insert(ring.begin() + 1, arc.begin() + 1, arc.end());
+  const Polygon comb = Polygon::simple(ring, "bowed comb");
+  auto down = [](const std::vector<Vec2>& r, const char* name) {
+    return nonconvex2_test::mapped(Polygon::simple(r, name), [](const Vec2& p) { return Vec2(-p); });
+  };
+  const Polygon fit = down(polygon2_test::comb_ring(3, 1, 1, 2.5, 0.5), "comb fit");
+  const Polygon thin = down(polygon2_test::comb_ring(3, 0.5, 1.5, 2.5, 0.5), "comb thin");
+  std::size_t most = 0;
+  for (const Polygon* Q : {&fit, &thin}) {
+    ASSERT_GT(parts(comb, *Q, most), 256u) << "not a descent case";
+    same_pieces(comb, *Q, "comb / " + Q->name());
+    if (Q == &fit) same_pieces(*Q, comb, Q->name() + " / comb");
+  }
+  EXPECT_GT(most, 2 * 12u) << "no part to split";
+  for (int it = 0; it < pendepth_test::scaled(4); ++it) {
+    const Polygon W2 = polygon2_test::random_polygon(rng, 80, 2, it % 2), Q = star(rng, 40, 10, 45, it % 2);
+    ASSERT_GT(parts(W2, Q, most), 256u) << "not a descent case";
+    same_pieces(W2, Q, "holes " + std::to_string(it));
+  }
+}
+
 // Rectilinear histograms against each other and against one turned by 180°: antiparallel edge
 // pairs everywhere (many redundant candidates), straight vertices putting a candidate in two
 // collinear groups, exact fits of columns into gaps.
