@@ -606,7 +606,7 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
     }
     const Vec3 nl = -u.stableNormalized();
     r.normal = Rp * nl;
-    r.translation = -r.distance * r.normal;
+    r.translation = Vec3::Zero() - r.distance * r.normal;  // as in 2D: no -0 components
     r.witness_p = Rp * wp + tp_world;
     r.witness_q = Rp * wq + tp_world;
   }

@@ -70,7 +70,7 @@ TEST_F(CliGeneralized, Depth3IsSigma) {
   const Result r = run("depth " + quote(p) + " " + quote(q) + " --generalized --json --offset=0.2,0.3,0.1 --rotate-q 1,0.1,0,0");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  const Shape3 P = Shape3::from_file(p), Q = Shape3::from_file(q);
+  const Shape3 P = Shape3::from_file(p, "P", true), Q = Shape3::from_file(q, "Q", true);  // the CLI takes the hull
   const Depth3 s = Pair3(P, Q).minimum(Pose3(), Pose3(Eigen::Quaterniond(1, 0.1, 0, 0), Vec3(0.2, 0.3, 0.1)));
   ASSERT_TRUE(s.overlapping);
   EXPECT_EQ(j["kind"], "generalized");
