@@ -3,8 +3,9 @@
 //
 //   pendepth depth P Q [--offset X,Y[,Z]] [--direction X,Y[,Z]] [--separate] [--json] [--svg FILE]
 //                      [--html FILE] [--rotate-q QW,QX,QY,QZ | DEG (2D)] [--rotate-p QW,QX,QY,QZ]
-//                      [--generalized] [--approximate DELTA]
+//                      [--generalized] [--approximate DELTA] [--hull]
 //   pendepth batch P Q --queries FILE [--json] [--threads N] [--progress] [--rotate-q ...|DEG] [--rotate-p ...]
+//   (--hull: 3D, on depth, batch, distance, cast, trajectory)
 //   pendepth nfp P Q [--json]
 //   pendepth distance P Q [--offset X,Y[,Z]] [--rotate-q ...] [--rotate-p ...] [--json]
 //   pendepth cast P Q [--offset X,Y[,Z]] --direction X,Y[,Z] [--rotate-q ...] [--rotate-p ...] [--json]
