@@ -80,8 +80,9 @@ echo "   (out/demo3d.html, out/demo3d_directional.html: self-contained pages, op
 
 # 3D: convex hulls of real game objects from the project's shared data, ../shared/data/hulls
 # relative to the repository root (Jolt Physics' convex_hulls.bin, MIT licence; see
-# ../shared/data/README.md). Meshes (.obj, .off, .stl) are read as point sets; the tool takes
-# their convex hull. These lines need that shared directory next to the repository.
+# ../shared/data/README.md). These files hold vertices only (no faces): point sets, whose convex
+# hull the tool takes (a file with faces is read as a closed mesh; --hull forces the hull). These
+# lines need that shared directory next to the repository.
 hulls=../shared/data/hulls
 if [ -d "$hulls" ]; then
   echo "== 3D: hull 7 P fixed (a flat slab), hull 12 Q at t = (-1, 0, -0.5): minimum depth σ"

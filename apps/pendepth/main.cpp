@@ -3,8 +3,9 @@
 //
 //   pendepth depth P Q [--offset X,Y[,Z]] [--direction X,Y[,Z]] [--separate] [--json] [--svg FILE]
 //                      [--html FILE] [--rotate-q QW,QX,QY,QZ | DEG (2D)] [--rotate-p QW,QX,QY,QZ]
-//                      [--generalized] [--approximate DELTA]
+//                      [--generalized] [--approximate DELTA] [--hull]
 //   pendepth batch P Q --queries FILE [--json] [--threads N] [--progress] [--rotate-q ...|DEG] [--rotate-p ...]
+//   (--hull: 3D, on depth, batch, distance, cast, trajectory)
 //   pendepth nfp P Q [--json]
 //   pendepth distance P Q [--offset X,Y[,Z]] [--rotate-q ...] [--rotate-p ...] [--json]
 //   pendepth cast P Q [--offset X,Y[,Z]] --direction X,Y[,Z] [--rotate-q ...] [--rotate-p ...] [--json]
@@ -14,16 +15,18 @@
 //
 // Exit status: 0 success, 2 bad input (one line on stderr naming file, line and problem),
 // 3 an output that cannot be written (standard output or --svg FILE: full disk, closed pipe,
-// a path that cannot be created), 1 internal error. Shapes: .wkt (2D polygons); .obj, .off, .stl
-// (3D: the convex hull of the vertices); `-` (standard input) or a path without an extension (a
-// FIFO, /dev/stdin, a process substitution) is recognised by its content. P and Q must have the
-// same dimension. Rotations: 3D quaternions for P and Q; 2D an angle in degrees for Q only.
+// a path that cannot be created), 1 internal error. Shapes: .wkt (2D polygons); .obj, .off, .stl,
+// .ply (3D, as Shape3::from_file: a file without faces is a point set, its hull; with faces a
+// closed mesh, convex → the convex path, else a mesh shape, which Pair3 does not take yet; --hull
+// forces the hull); `-` (standard input) or a path without an extension (a FIFO, /dev/stdin, a
+// process substitution) is recognised by its content. P and Q must have the same dimension. Rotations: 3D quaternions for P and Q; 2D an angle in degrees for Q only.
 //
 // Engines: Pair2 / Pair3 pick them. `depth` asks one question, so it prepares only what the query
 // needs (Prepare::Queries: two non-convex polygons are answered per query, nothing built);
 // `batch` prepares everything once (Prepare::Full: the depth field, the no-fit polygon) and
 // answers the queries in parallel batches; `--svg` draws the no-fit polygon of non-convex pairs.
 #include <pendepth/io.hpp>
+#include <pendepth/mesh3.hpp>
 #include <pendepth/nesting.hpp>
 #include <pendepth/pendepth.hpp>
 
@@ -66,19 +69,19 @@ std::string lower_extension(const std::string& path) {
 
 constexpr const char* kStdin = "<stdin>";  // the source name of `-` in messages
 
-// The dimension of a shape file by its extension: 2 (.wkt) or 3 (.obj, .off, .stl); 0 for `-`
+// The dimension of a shape file by its extension: 2 (.wkt) or 3 (.obj, .off, .stl, .ply); 0 for `-`
 // and paths without an extension (known once the content is read).
 int shape_dimension(const std::string& path) {
   if (path == "-" || std::filesystem::path(path).extension().empty()) return 0;
   if (const auto f = io::shape_format_of(path)) return *f == io::ShapeFormat::Wkt ? 2 : 3;
   throw InvalidInput(path + ": unknown shape format '" + lower_extension(path) +
-                     "' (expected .wkt, .obj, .off or .stl)");
+                     "' (expected .wkt, .obj, .off, .stl or .ply)");
 }
 
 void check_same_dimension(const std::string& p, int dp, const std::string& q, int dq) {
   if (dp != 0 && dq != 0 && dp != dq)
     throw InvalidInput(q + ": Q is a " + std::to_string(dq) + "D shape but P (" + p + ") is " + std::to_string(dp) +
-                       "D; both must be 2D (.wkt) or both 3D (.obj, .off, .stl)");
+                       "D; both must be 2D (.wkt) or both 3D (.obj, .off, .stl, .ply)");
 }
 
 // Standard input may be read once: at most one of the file arguments is `-`.
@@ -109,7 +112,7 @@ ShapeText load_shape(const std::string& arg) {
   const auto f = io::guess_shape_format(s.text);
   if (!f)
     throw InvalidInput(s.source + ": cannot tell the shape format from the content (expected a WKT POLYGON, OBJ, "
-                                  "OFF or STL; name the file .wkt, .obj, .off or .stl)");
+                                  "OFF, STL or PLY; name the file .wkt, .obj, .off, .stl or .ply)");
   s.format = *f;
   return s;
 }
@@ -127,10 +130,38 @@ Shape2 make_shape2(const ShapeText& s, std::string_view name) {
   return r.convex ? Shape2(std::move(*r.convex)) : Shape2(std::move(*r.polygon));
 }
 
-Shape3 make_shape3(const ShapeText& s, std::string_view name) {
-  return Shape3(
-      io::convex_polytope_from_points(io::parse_mesh_points(s.text, s.format, s.source), s.source, name));
+// A 3D shape as Shape3::from_file reads it (docs/design.md §3): a file without faces is a point
+// set (its hull); a file with faces a validated closed mesh (convex → the convex path, else a mesh
+// shape, which Pair3 rejects: "mesh queries are not implemented yet ... --hull"). `hull` (--hull):
+// the hull of the vertices, faces ignored and not validated.
+Shape3 make_shape3(const ShapeText& s, std::string_view name, bool hull) {
+  if (hull)
+    return Shape3(io::convex_polytope_from_points(io::parse_mesh_points(s.text, s.format, s.source), s.source, name));
+  const io::MeshFile file = io::parse_mesh(s.text, io::mesh_format(s.format, s.source), s.source);
+  if (file.faces() == 0) return Shape3(io::convex_polytope_from_points(file.points, file.source, name));
+  return Shape3::from_mesh(pendepth::Mesh3::validate(file, name));
 }
+
+// The pair of 3D shapes; Pair3's refusal of a non-convex mesh is prefixed with that file's name.
+Pair3 make_pair3(const ShapeText& p, const ShapeText& q, bool hull, pendepth::Prepare prepare = pendepth::Prepare::Auto) {
+  Shape3 P = make_shape3(p, "P", hull), Q = make_shape3(q, "Q", hull);
+  const ShapeText* mesh = !P.is_convex() ? &p : !Q.is_convex() ? &q : nullptr;
+  try {
+    return Pair3(std::move(P), std::move(Q), prepare);
+  } catch (const InvalidInput& e) {
+    if (!mesh) throw;
+    throw InvalidInput(mesh->source + ": " + e.what());
+  }
+}
+
+// --hull is about 3D files' faces: a 2D pair rejects it.
+void reject_hull2(bool hull) {
+  if (hull) throw InvalidInput("--hull: applies to 3D mesh files only (.obj, .off, .stl, .ply)");
+}
+
+constexpr const char* kHullHelp =
+    "3D: take the convex hull of each file's vertices, faces ignored and not checked (without it a file "
+    "with faces must be a closed mesh; a non-convex one is not answered yet)";
 
 
 // N comma-separated numbers from an option value (`names` as in "X,Y"); the option name goes
@@ -225,7 +256,7 @@ void write_svg(const std::string& path, const Pair2& pair, const Vec2& t, const 
 
 struct DepthArgs {
   std::string p, q, offset, direction, svg, html, rotate_p, rotate_q, approximate;
-  bool separate = false, json = false, generalized = false;
+  bool separate = false, json = false, generalized = false, hull = false;
 };
 
 // ---- 2D rotations of Q (issue 19 item 3) and the generalized depth PD_g (issue 18) ----
@@ -356,7 +387,7 @@ int run_depth3(const DepthArgs& a, const ShapeText& p, const ShapeText& q) {
     if (d->isZero(0)) throw InvalidInput("--direction: the direction is zero");
   }
   if (!a.approximate.empty()) return run_approximate3(a, p, q, Pose3(rp, Vec3::Zero()), Pose3(rq, t));
-  const Pair3 pair(make_shape3(p, "P"), make_shape3(q, "Q"));
+  const Pair3 pair = make_pair3(p, q, a.hull);
   const Pose3 pose_p(rp, Vec3::Zero()), pose_q(rq, t);
   if (a.generalized) return run_generalized3(a, pair.P(), pose_p, pair.Q(), pose_q);
   const Depth3 r = !d ? pair.minimum(pose_p, pose_q)
@@ -381,6 +412,7 @@ int run_depth(const DepthArgs& a) {
   check_generalized(a);
   if (p.dimension() == 3) return run_depth3(a, p, q);
   reject_rotations(a.rotate_p, "");
+  reject_hull2(a.hull);
   if (!a.approximate.empty()) throw InvalidInput("--approximate: 3D point sets only");
   if (!a.html.empty()) throw InvalidInput("--html draws 3D shapes only (use --svg for 2D)");
   const Shape2 P = make_shape2(p, "P");
@@ -410,7 +442,7 @@ int run_depth(const DepthArgs& a) {
 struct BatchArgs {
   std::string p, q, queries, rotate_p, rotate_q;
   unsigned threads = 0;
-  bool json = false, progress = false, signed_distance = false;
+  bool json = false, progress = false, signed_distance = false, hull = false;
 };
 
 bool show_progress(const BatchArgs& a) { return a.progress || isatty(fileno(stderr)); }
@@ -512,7 +544,7 @@ io::Features2 features_of(const Shape2& s) {
 
 struct DistanceArgs {
   std::string p, q, offset, direction, rotate_p, rotate_q;
-  bool json = false;
+  bool json = false, hull = false;
 };
 
 // `distance` (cast false) and `cast` (cast true), 2D or 3D by the shapes.
@@ -526,7 +558,7 @@ int run_distance(const DistanceArgs& a, bool cast) {
     const Vec3 t = a.offset.empty() ? Vec3(0, 0, 0) : parse_vec3(a.offset, "--offset");
     const Vec3 d = cast ? parse_vec3(a.direction, "--direction") : Vec3(0, 0, 0);
     if (cast && d.isZero(0)) throw InvalidInput("--direction: the direction is zero");
-    const Pair3 pair(make_shape3(p, "P"), make_shape3(q, "Q"));
+    const Pair3 pair = make_pair3(p, q, a.hull);
     const Pose3 pose_p(rp, Vec3::Zero()), pose_q(rq, t);
     const auto &P = pair.P().polytope(), &Q = pair.Q().polytope();
     if (cast) {
@@ -538,6 +570,7 @@ int run_distance(const DistanceArgs& a, bool cast) {
     }
   } else {
     reject_rotations(a.rotate_p, a.rotate_q);
+    reject_hull2(a.hull);
     const Shape2 P = make_shape2(p, "P"), Q = make_shape2(q, "Q");
     const Vec2 t = a.offset.empty() ? Vec2(0, 0) : parse_vec(a.offset, "--offset");
     const Vec2 d = cast ? parse_vec(a.direction, "--direction") : Vec2(0, 0);
@@ -605,7 +638,7 @@ int run_signed_batch3(const BatchArgs& a, const Pair3& pair, const Pose3& pose_p
 int run_batch3(const BatchArgs& a, const ShapeText& p, const ShapeText& q) {
   const Eigen::Quaterniond rq = parse_rotation(a.rotate_q, "--rotate-q");
   const Eigen::Quaterniond rp = parse_rotation(a.rotate_p, "--rotate-p");
-  const Pair3 pair(make_shape3(p, "P"), make_shape3(q, "Q"), pendepth::Prepare::Full);
+  const Pair3 pair = make_pair3(p, q, a.hull, pendepth::Prepare::Full);
   const std::vector<io::Query3> queries = a.queries == "-" ? io::parse_queries3_csv(io::read_stream(std::cin, kStdin), kStdin)
                                                            : io::read_queries3_csv(a.queries);
   const Pose3 pose_p(rp, Vec3::Zero());
@@ -634,6 +667,7 @@ int run_batch(const BatchArgs& a) {
   const auto [p, q] = load_pair(a.p, a.q);
   if (p.dimension() == 3) return run_batch3(a, p, q);
   reject_rotations(a.rotate_p, "");
+  reject_hull2(a.hull);
   const Pair2 pair(make_shape2(p, "P"), rotate_q2(make_shape2(q, "Q"), a.rotate_q), pendepth::Prepare::Full);
   if (const std::string note = rotation_note(a.rotate_q); !note.empty()) std::fputs(("pendepth: " + note).c_str(), stderr);
   const std::vector<io::Query2> queries = a.queries == "-" ? io::parse_queries_csv(io::read_stream(std::cin, kStdin), kStdin)
@@ -678,7 +712,7 @@ int run_nfp(const NfpArgs& a) {
 // ---- trajectory: σ at every pose of a path, warm-started from the previous pose ----------------
 struct TrajectoryArgs {
   std::string p, q, poses;
-  bool json = false, cold = false;
+  bool json = false, cold = false, hull = false;
 };
 
 // Answers pose k with `answer(k)`; a bad pose (outside the numeric domain) is named by its line.
@@ -705,7 +739,7 @@ int run_trajectory(const TrajectoryArgs& a) {
   out.json = a.json;
   if (p.dimension() == 3) {
     const auto poses = io::parse_poses3_csv(text(), source);
-    const Pair3 pair(make_shape3(p, "P"), make_shape3(q, "Q"));
+    const Pair3 pair = make_pair3(p, q, a.hull);
     pendepth::WarmStart3 warm;
     const auto results = answer_poses<Depth3>(source, poses, [&](std::size_t k) {
       const Pose3 pose(poses[k].q, poses[k].t);
@@ -715,6 +749,7 @@ int run_trajectory(const TrajectoryArgs& a) {
       io::append_json(o, r, pair.P().polytope(), pair.Q().polytope());
     });
   }
+  reject_hull2(a.hull);
   const auto poses = io::parse_poses2_csv(text(), source);
   const Shape2 P = make_shape2(p, "P"), Q = make_shape2(q, "Q");
   std::optional<Pair2> pair;
@@ -819,7 +854,9 @@ int main(int argc, char** argv) {
   CLI::App app{"pendepth: exact intersection (penetration) depth of two shapes.\n"
                "P is fixed, Q moves; Q is placed at the offset t. Shapes: .wkt POLYGON files "
                "(2D: simple polygons, convex or not, with holes); "
-               ".obj, .off, .stl meshes (3D: the convex hull of the vertices)."};
+               ".obj, .off, .stl, .ply files (3D: vertices only → their convex hull; with faces → a closed mesh, "
+               "answered when convex (non-convex meshes: not yet, use --hull); --hull takes the hull of any file's "
+               "vertices)."};
   app.require_subcommand(1);
   app.footer("A shape or query file '-' is standard input (one of them at most).\n"
              "Exit status: 0 success, 2 bad input (one line on stderr: FILE:LINE: problem), "
@@ -828,7 +865,7 @@ int main(int argc, char** argv) {
   DepthArgs da;
   CLI::App* depth = app.add_subcommand(
       "depth", "Depth of one placement: the minimum σ, or σ_d along --direction, or the complete separation.");
-  depth->add_option("P", da.p, "fixed shape file (.wkt, or 3D .obj/.off/.stl; - reads standard input)")->required()->type_name("FILE");
+  depth->add_option("P", da.p, "fixed shape file (.wkt, or 3D .obj/.off/.stl/.ply; - reads standard input)")->required()->type_name("FILE");
   depth->add_option("Q", da.q, "moving shape file (same dimension as P)")->required()->type_name("FILE");
   depth->add_option("--offset", da.offset, "placement t of Q (default 0); negative: --offset=-1,2")
       ->type_name("X,Y[,Z]");
@@ -848,17 +885,19 @@ int main(int argc, char** argv) {
                   "generalized depth PD_g: Q may also rotate (about its reference point); cost = the largest "
                   "displacement of Q's points; prints certified bounds, the rotation and the translation");
   depth->add_option("--approximate", da.approximate,
-                    "3D: certified (1+DELTA)-approximate σ of huge point sets, no hull built (DELTA in [1e-9, 1))")
+                    "3D: certified (1+DELTA)-approximate σ of huge point sets, no hull built (DELTA in [1e-9, 1); the "
+                    "files' vertices are used, faces ignored)")
       ->type_name("DELTA");
   depth->add_option("--rotate-p", da.rotate_p, "3D: rotation of P about its origin (quaternion, normalised)")
       ->type_name("QW,QX,QY,QZ");
+  depth->add_flag("--hull", da.hull, kHullHelp);
 
   BatchArgs ba;
   CLI::App* batch = app.add_subcommand(
       "batch", "Many placements: CSV lines x,y,dx,dy or x,y,z,dx,dy,dz (zero direction asks for σ). "
                "Prints CSV depth,tx,ty[,tz]. Shapes are preprocessed once (two non-convex polygons: "
                "their no-fit polygon, see nfp).");
-  batch->add_option("P", ba.p, "fixed shape file (.wkt, or 3D .obj/.off/.stl; - reads standard input)")->required()->type_name("FILE");
+  batch->add_option("P", ba.p, "fixed shape file (.wkt, or 3D .obj/.off/.stl/.ply; - reads standard input)")->required()->type_name("FILE");
   batch->add_option("Q", ba.q, "moving shape file (same dimension as P)")->required()->type_name("FILE");
   batch->add_option("--queries", ba.queries, "CSV file of queries x,y[,z],dx,dy[,dz] (- reads standard input)")->required()->type_name("FILE");
   batch->add_flag("--json", ba.json, "print JSON Lines (one object per query) instead of CSV");
@@ -870,6 +909,7 @@ int main(int argc, char** argv) {
                     "on stderr when it is not a multiple of 90: Q's coordinates are rounded)")
       ->type_name("QW,QX,QY,QZ|DEG");
   batch->add_option("--rotate-p", ba.rotate_p, "3D: rotation of P (quaternion, normalised)")->type_name("QW,QX,QY,QZ");
+  batch->add_flag("--hull", ba.hull, kHullHelp);
   batch->add_flag("--signed", ba.signed_distance,
                   "signed distances instead of depths: CSV distance,tx,ty[,tz] (translation to touching); "
                   "the queries' direction columns must be 0");
@@ -883,13 +923,14 @@ int main(int argc, char** argv) {
       "cast", "Shape cast (time of impact): the smallest s >= 0 with Q moved by s along --direction touching P "
               "(0 when touching or overlapping, 1e999 in JSON / inf when it never does).");
   for (auto [cmd, args] : {std::pair{distance, &dsa}, std::pair{cast, &csa}}) {
-    cmd->add_option("P", args->p, "fixed shape file (.wkt, or 3D .obj/.off/.stl; - reads standard input)")->required()->type_name("FILE");
+    cmd->add_option("P", args->p, "fixed shape file (.wkt, or 3D .obj/.off/.stl/.ply; - reads standard input)")->required()->type_name("FILE");
     cmd->add_option("Q", args->q, "moving shape file (same dimension as P)")->required()->type_name("FILE");
     cmd->add_option("--offset", args->offset, "placement t of Q (default 0); negative: --offset=-1,2")->type_name("X,Y[,Z]");
     cmd->add_flag("--json", args->json, "print one JSON object instead of a summary");
     cmd->add_option("--rotate-q", args->rotate_q, "3D: rotation of Q about its origin, before the offset (quaternion)")
         ->type_name("QW,QX,QY,QZ");
     cmd->add_option("--rotate-p", args->rotate_p, "3D: rotation of P about its origin (quaternion)")->type_name("QW,QX,QY,QZ");
+    cmd->add_flag("--hull", args->hull, kHullHelp);
   }
   cast->add_option("--direction", csa.direction, "direction d of the motion (any non-zero length)")->required()->type_name("X,Y[,Z]");
 
@@ -917,11 +958,12 @@ int main(int argc, char** argv) {
       "bit). Poses: CSV lines x,y,angle_deg (2D: Q rotated counter-clockwise by angle_deg about its origin, then "
       "placed at x,y) or x,y,z,qw,qx,qy,qz (3D: Q rotated by the quaternion, then translated). Prints CSV "
       "depth,tx,ty[,tz], one row per pose.");
-  traj->add_option("P", ta.p, "fixed shape file (.wkt, or 3D .obj/.off/.stl; - reads standard input)")->required()->type_name("FILE");
+  traj->add_option("P", ta.p, "fixed shape file (.wkt, or 3D .obj/.off/.stl/.ply; - reads standard input)")->required()->type_name("FILE");
   traj->add_option("Q", ta.q, "moving shape file (same dimension as P)")->required()->type_name("FILE");
   traj->add_option("--poses", ta.poses, "CSV file of poses (- reads standard input)")->required()->type_name("FILE");
   traj->add_flag("--json", ta.json, "print JSON Lines (one object per pose) instead of CSV");
   traj->add_flag("--cold", ta.cold, "answer every pose from scratch (for comparison; same output)");
+  traj->add_flag("--hull", ta.hull, kHullHelp);
   NfpAllArgs nfa;
   CLI::App* nfp_all = app.add_subcommand(
       "nfp-all",

@@ -85,12 +85,13 @@ std::string read_text_file(const std::filesystem::path& path);
 /// Throws InvalidInput "SOURCE: cannot read file (read error)" if the stream fails before its end.
 std::string read_stream(std::istream& in, std::string_view source, std::size_t size_hint = 0);
 
-/// The shape file formats: 2D WKT, 3D OBJ, OFF and STL.
-enum class ShapeFormat { Wkt, Obj, Off, Stl };
-/// The format of a path by its extension (.wkt, .obj, .off, .stl, any case), else nullopt.
+/// The shape file formats: 2D WKT, 3D OBJ, OFF, STL and PLY.
+enum class ShapeFormat { Wkt, Obj, Off, Stl, Ply };
+/// The format of a path by its extension (.wkt, .obj, .off, .stl, .ply, any case), else nullopt.
 std::optional<ShapeFormat> shape_format_of(const std::filesystem::path& path);
-/// The format of a file's content, for standard input and paths without an extension: binary
-/// STL by its size (84 + 50·count bytes); otherwise the first word past blank and '#' lines —
+/// The format of a file's content, for standard input and paths without an extension: PLY by its
+/// first line `ply` (the format's magic); binary STL by its size (84 + 50·count bytes); otherwise
+/// the first word past blank and '#' lines —
 /// a WKT geometry type (POLYGON, ...), `solid` (ASCII STL), an OFF keyword or a bare count (OFF),
 /// an OBJ statement (v, f, o, g, mtllib, ...). Nullopt when none fits. O(size) at worst.
 std::optional<ShapeFormat> guess_shape_format(std::string_view bytes);
@@ -185,13 +186,13 @@ std::vector<Vec3> parse_off_points(std::string_view text, std::string_view sourc
 /// problem (byte offset K)" (size not 84 + 50·count, non-finite coordinate). O(size) expected.
 std::vector<Vec3> parse_stl_points(std::string_view bytes, std::string_view source = "<stl>");
 
-/// The vertices of a 3D shape file's content with the parser of `format` (Obj, Off or Stl; Wkt
-/// throws InvalidInput).
+/// The vertices of a 3D shape file's content with the parser of `format` (Obj, Off, Stl or Ply:
+/// parse_ply's vertices; Wkt throws InvalidInput).
 std::vector<Vec3> parse_mesh_points(std::string_view bytes, ShapeFormat format, std::string_view source);
 
-/// Reads a .obj, .off or .stl file (extension case-insensitive) with the parser above. Throws
-/// "PATH: cannot read file (reason)" or "PATH: unknown 3D shape format '.ext' (expected .obj,
-/// .off or .stl)".
+/// Reads a .obj, .off, .stl or .ply file (extension case-insensitive) with the parser above.
+/// Throws "PATH: cannot read file (reason)" or "PATH: unknown 3D shape format '.ext' (expected
+/// .obj, .off, .stl or .ply)".
 std::vector<Vec3> read_mesh_points(const std::filesystem::path& path);
 
 /// A 3D mesh file as read: every vertex and every face (a polygon of vertex indices), with where
@@ -219,6 +220,9 @@ struct MeshFile {
 
 /// The 3D mesh formats parse_mesh reads.
 enum class MeshFormat { Obj, Off, Stl, Ply };
+/// The mesh format of a 3D shape format (Wkt throws InvalidInput "SOURCE: a 2D shape (WKT) where
+/// a 3D shape is expected").
+MeshFormat mesh_format(ShapeFormat format, std::string_view source);
 
 /// PLY (ASCII, binary_little_endian or binary_big_endian 1.0): the `vertex` element's x, y, z
 /// (float or double; other properties of any type are skipped) and the `face` element's

@@ -627,28 +627,34 @@ MeshFile parse_mesh(std::string_view bytes, MeshFormat format, std::string_view 
   return m;
 }
 
+MeshFormat mesh_format(ShapeFormat format, std::string_view source) {
+  switch (format) {
+    case ShapeFormat::Obj: return MeshFormat::Obj;
+    case ShapeFormat::Off: return MeshFormat::Off;
+    case ShapeFormat::Stl: return MeshFormat::Stl;
+    case ShapeFormat::Ply: return MeshFormat::Ply;
+    case ShapeFormat::Wkt: break;
+  }
+  throw InvalidInput(std::string(source) + ": a 2D shape (WKT) where a 3D shape (.obj, .off, .stl, .ply) is expected");
+}
+
 MeshFile read_mesh(const std::filesystem::path& path) {
   const std::string src = path.string();
-  std::string ext = path.extension().string();
-  for (char& c : ext) c = lower(c);
-  std::optional<MeshFormat> format;
-  if (ext == ".ply") format = MeshFormat::Ply;
-  else if (const auto f = shape_format_of(path); f && *f != ShapeFormat::Wkt)
-    format = *f == ShapeFormat::Obj ? MeshFormat::Obj : *f == ShapeFormat::Off ? MeshFormat::Off : MeshFormat::Stl;
-  if (!format)
+  const std::optional<ShapeFormat> format = shape_format_of(path);
+  if (!format || *format == ShapeFormat::Wkt)
     throw InvalidInput(src + ": unknown 3D shape format '" + path.extension().string() +
                        "' (expected .obj, .off, .stl or .ply)");
-  return parse_mesh(read_text_file(path), *format, src);
+  return parse_mesh(read_text_file(path), mesh_format(*format, src), src);
 }
 
 std::vector<Vec3> parse_mesh_points(std::string_view bytes, ShapeFormat format, std::string_view source) {
-  switch (format) {
-    case ShapeFormat::Obj: return parse_obj_points(bytes, source);
-    case ShapeFormat::Off: return parse_off_points(bytes, source);
-    case ShapeFormat::Stl: return parse_stl_points(bytes, source);
-    case ShapeFormat::Wkt: break;
+  switch (mesh_format(format, source)) {  // Wkt throws
+    case MeshFormat::Obj: return parse_obj_points(bytes, source);
+    case MeshFormat::Off: return parse_off_points(bytes, source);
+    case MeshFormat::Stl: return parse_stl_points(bytes, source);
+    case MeshFormat::Ply: return parse_ply(bytes, source).points;
   }
-  throw InvalidInput(std::string(source) + ": a 2D shape (WKT) where a 3D shape (.obj, .off, .stl) is expected");
+  return {};
 }
 
 std::vector<Vec3> read_mesh_points(const std::filesystem::path& path) {
@@ -656,7 +662,7 @@ std::vector<Vec3> read_mesh_points(const std::filesystem::path& path) {
   const std::optional<ShapeFormat> format = shape_format_of(path);
   if (!format || *format == ShapeFormat::Wkt)
     throw InvalidInput(src + ": unknown 3D shape format '" + path.extension().string() +
-                       "' (expected .obj, .off or .stl)");
+                       "' (expected .obj, .off, .stl or .ply)");
   return parse_mesh_points(read_text_file(path), *format, src);
 }
 

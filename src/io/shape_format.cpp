@@ -53,10 +53,14 @@ std::optional<ShapeFormat> shape_format_of(const std::filesystem::path& path) {
   if (ext == ".obj") return ShapeFormat::Obj;
   if (ext == ".off") return ShapeFormat::Off;
   if (ext == ".stl") return ShapeFormat::Stl;
+  if (ext == ".ply") return ShapeFormat::Ply;
   return std::nullopt;
 }
 
 std::optional<ShapeFormat> guess_shape_format(std::string_view bytes) {
+  // PLY: the header's first line is exactly `ply` (binary bodies follow the header, so this comes
+  // before the STL size test).
+  if (bytes.starts_with("ply\n") || bytes.starts_with("ply\r\n")) return ShapeFormat::Ply;
   // Binary STL: exactly 84 + 50·count bytes, count the little-endian uint32 at byte 80.
   if (bytes.size() >= 84) {
     const auto* u = reinterpret_cast<const unsigned char*>(bytes.data() + 80);

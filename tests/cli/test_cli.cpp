@@ -171,9 +171,9 @@ TEST_F(Cli, BadInputExitsWithOneLine) {
   expect_error("depth " + quote(P) + " " + quote(missing), missing + ": cannot read file (No such file or directory)");
   const std::string obj = write("hull.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n");
   expect_error("depth " + quote(obj) + " " + quote(Q),  // mixing dimensions (3D: tests/cli/test_cli3.cpp)
-               Q + ": Q is a 2D shape but P (" + obj + ") is 3D; both must be 2D (.wkt) or both 3D (.obj, .off, .stl)");
+               Q + ": Q is a 2D shape but P (" + obj + ") is 3D; both must be 2D (.wkt) or both 3D (.obj, .off, .stl, .ply)");
   const std::string txt = write("shape.txt", "POLYGON ((0 0, 1 0, 0 1))");
-  expect_error("depth " + quote(P) + " " + quote(txt), txt + ": unknown shape format '.txt' (expected .wkt, .obj, .off or .stl)");
+  expect_error("depth " + quote(P) + " " + quote(txt), txt + ": unknown shape format '.txt' (expected .wkt, .obj, .off, .stl or .ply)");
 
   const std::string pq = quote(P) + " " + quote(Q);
   expect_error("depth " + pq + " --direction 0,0", "--direction: the direction is zero");

@@ -295,10 +295,10 @@ TEST_F(Cli3, SharedHulls) {
 TEST_F(Cli3, BadInputExitsWithOneLine) {
   const std::string P = cube_p(), Q = cube_q(), pq = quote(P) + " " + quote(Q);
   const std::string wkt = write("sq.wkt", "POLYGON ((0 0, 1 0, 1 1, 0 1))\n");
-  expect_error("depth " + quote(P) + " " + quote(wkt), wkt + ": Q is a 2D shape but P (" + P + ") is 3D; both must be 2D (.wkt) or both 3D (.obj, .off, .stl)");
-  expect_error("depth " + quote(wkt) + " " + quote(Q), Q + ": Q is a 3D shape but P (" + wkt + ") is 2D; both must be 2D (.wkt) or both 3D (.obj, .off, .stl)");
+  expect_error("depth " + quote(P) + " " + quote(wkt), wkt + ": Q is a 2D shape but P (" + P + ") is 3D; both must be 2D (.wkt) or both 3D (.obj, .off, .stl, .ply)");
+  expect_error("depth " + quote(wkt) + " " + quote(Q), Q + ": Q is a 3D shape but P (" + wkt + ") is 2D; both must be 2D (.wkt) or both 3D (.obj, .off, .stl, .ply)");
   expect_error("batch " + quote(P) + " " + quote(wkt) + " --queries " + quote(wkt),
-               wkt + ": Q is a 2D shape but P (" + P + ") is 3D; both must be 2D (.wkt) or both 3D (.obj, .off, .stl)");
+               wkt + ": Q is a 2D shape but P (" + P + ") is 3D; both must be 2D (.wkt) or both 3D (.obj, .off, .stl, .ply)");
 
   const std::string svg = (dir_ / "x.svg").string();
   expect_error("depth " + pq + " --svg " + quote(svg), "--svg draws 2D shapes only");
@@ -315,7 +315,9 @@ TEST_F(Cli3, BadInputExitsWithOneLine) {
   const std::string bad = write("bad.obj", "v 0 0 0\nv 1 0 0\n# c\nv 0 1 zero\n");
   expect_error("depth " + quote(bad) + " " + quote(Q), bad + ":4: malformed vertex line: z is not a number: 'zero'");
   const std::string flat = write("flat.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n4 0 1 3 2\n");
-  expect_error("depth " + quote(P) + " " + quote(flat),
+  // One face: not a closed mesh; as a point set (--hull), flat.
+  expect_error("depth " + quote(P) + " " + quote(flat), flat + ":7: face 0: Q: the mesh is not closed: edge 0-1 belongs to this face only");
+  expect_error("depth " + quote(P) + " " + quote(flat) + " --hull",
                flat + ": Q: all points are coplanar (flat input; need 4 affinely independent points)");
   const std::string few = write("few.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
   expect_error("depth " + quote(few) + " " + quote(Q), few + ": P: only 3 points (a polytope needs 4 affinely independent points)");

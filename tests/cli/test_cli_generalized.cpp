@@ -65,12 +65,13 @@ TEST_F(CliGeneralized, Depth2MatchesLibrary) {
 }
 
 TEST_F(CliGeneralized, Depth3IsSigma) {
-  const std::string p = write("p.off", "OFF\n4 4 0\n0 0 0\n2 0 0\n0 2 0\n0 0 2\n3 0 1 2\n3 0 1 3\n3 0 2 3\n3 1 2 3\n");
-  const std::string q = write("q.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 1 3\n3 0 2 3\n3 1 2 3\n");
+  // Tetrahedra as closed meshes (faces outward), so convex: the CLI answers their hulls.
+  const std::string p = write("p.off", "OFF\n4 4 0\n0 0 0\n2 0 0\n0 2 0\n0 0 2\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
+  const std::string q = write("q.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
   const Result r = run("depth " + quote(p) + " " + quote(q) + " --generalized --json --offset=0.2,0.3,0.1 --rotate-q 1,0.1,0,0");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  const Shape3 P = Shape3::from_file(p, "P", true), Q = Shape3::from_file(q, "Q", true);  // the CLI takes the hull
+  const Shape3 P = Shape3::from_file(p, "P", true), Q = Shape3::from_file(q, "Q", true);  // the hulls: the same solids
   const Depth3 s = Pair3(P, Q).minimum(Pose3(), Pose3(Eigen::Quaterniond(1, 0.1, 0, 0), Vec3(0.2, 0.3, 0.1)));
   ASSERT_TRUE(s.overlapping);
   EXPECT_EQ(j["kind"], "generalized");

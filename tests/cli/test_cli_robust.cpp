@@ -133,11 +133,11 @@ TEST_F(CliRobust, DashReadsStandardInput) {
   r = shell("printf 'hello' | PENDEPTH depth - " + quote(P));
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err,
-            "<stdin>: cannot tell the shape format from the content (expected a WKT POLYGON, OBJ, OFF or STL; name the "
-            "file .wkt, .obj, .off or .stl)\n");
+            "<stdin>: cannot tell the shape format from the content (expected a WKT POLYGON, OBJ, OFF, STL or PLY; "
+            "name the file .wkt, .obj, .off, .stl or .ply)\n");
   r = shell("PENDEPTH depth - " + quote(P) + " < " + quote(C));
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(r.err, P + ": Q is a 2D shape but P (<stdin>) is 3D; both must be 2D (.wkt) or both 3D (.obj, .off, .stl)\n");
+  EXPECT_EQ(r.err, P + ": Q is a 2D shape but P (<stdin>) is 3D; both must be 2D (.wkt) or both 3D (.obj, .off, .stl, .ply)\n");
   r = shell("PENDEPTH nfp - " + quote(P) + " < " + quote(C));
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.err, "<stdin>: nfp takes 2D shapes (.wkt) only\n");

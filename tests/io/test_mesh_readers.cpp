@@ -336,9 +336,12 @@ TEST_F(MeshFiles, ReadByExtensionAndFileErrors) {
   const std::string sub = (dir_ / "sub.stl").string();
   fs::create_directories(sub);
   EXPECT_EQ(error_of([&] { io::read_mesh_points(sub); }), sub + ": cannot read file (is a directory)");
-  const std::string ply = write("a.ply", "ply\n");
-  EXPECT_EQ(error_of([&] { io::read_mesh_points(ply); }),
-            ply + ": unknown 3D shape format '.ply' (expected .obj, .off or .stl)");
+  const std::string ply = write("a.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+                                         "property float z\nend_header\n1 2 3\n");
+  EXPECT_EQ(io::read_mesh_points(ply), std::vector<Vec3>{Vec3(1, 2, 3)});  // PLY: parse_ply's vertices
+  const std::string txt = write("a.txt", "v 0 0 0\n");
+  EXPECT_EQ(error_of([&] { io::read_mesh_points(txt); }),
+            txt + ": unknown 3D shape format '.txt' (expected .obj, .off, .stl or .ply)");
   const std::string bad = write("bad.off", "OFF\n1 0 0\n1 2 three\n");
   EXPECT_EQ(error_of([&] { io::read_convex_polytope(bad, "Q"); }),
             bad + ":3: malformed vertex line: z is not a number: 'three'");

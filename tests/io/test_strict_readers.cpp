@@ -252,13 +252,15 @@ TEST(StrictFormat, GuessedFromTheContent) {
   EXPECT_EQ(io::guess_shape_format(""), std::nullopt);
   EXPECT_EQ(io::guess_shape_format("# only a comment\n"), std::nullopt);
   EXPECT_EQ(io::guess_shape_format("hello world"), std::nullopt);
-  EXPECT_EQ(io::guess_shape_format("ply\nformat ascii 1.0\n"), std::nullopt);
+  EXPECT_EQ(io::guess_shape_format("ply\nformat ascii 1.0\n"), F::Ply);
+  EXPECT_EQ(io::guess_shape_format("ply\r\nformat ascii 1.0\r\n"), F::Ply);
+  EXPECT_EQ(io::guess_shape_format("plyx\n"), std::nullopt);
   EXPECT_EQ(io::shape_format_of("a/b.WKT"), F::Wkt);
   EXPECT_EQ(io::shape_format_of("b.Stl"), F::Stl);
-  EXPECT_EQ(io::shape_format_of("b.ply"), std::nullopt);
+  EXPECT_EQ(io::shape_format_of("b.PLY"), F::Ply);
   EXPECT_EQ(io::shape_format_of("/dev/stdin"), std::nullopt);
   EXPECT_EQ(error_of([] { io::parse_mesh_points("POLYGON ((0 0, 1 0, 0 1))", io::ShapeFormat::Wkt, "<stdin>"); }),
-            "<stdin>: a 2D shape (WKT) where a 3D shape (.obj, .off, .stl) is expected");
+            "<stdin>: a 2D shape (WKT) where a 3D shape (.obj, .off, .stl, .ply) is expected");
   EXPECT_EQ(error_of([] {
               io::convex_polytope_from_points(io::parse_mesh_points("v 0 0 0\n", io::ShapeFormat::Obj, "<stdin>"),
                                               "<stdin>", "P");
