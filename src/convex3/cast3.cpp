@@ -52,13 +52,7 @@ Cast3 shape_cast(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolyt
   if (auto fast = convex3::shape_cast_certified(P, Q, rel, dl, Rp, pose_p.translation)) return *fast;
   Cast3 r;
   r.distance = std::numeric_limits<double>::infinity();
-  // The reversed descent perturbs the same line as the forward one (orient −1), so that both
-  // exits with h > 0 mean 0 ∈ int M (two differently perturbed lines could lie on either side
-  // of a face plane through 0 and report a touching contact as an overlap).
-  const convex3::LineExit in = convex3::line_exit_dk(P, Q, rel, -dl, -1);
-  // A perturbed line that misses int M: the line does not meet int M (an open set), so the ray
-  // misses M or only grazes it — decided exactly by cast_graze.
-  if (!in.hit) return convex3::cast_graze(P, Q, rel, dl, Rp, pose_p.translation);
+  const convex3::LineExit in = convex3::line_exit_dk(P, Q, rel, -dl);
   auto fill = [&](const convex3::LineExit& e, double s) {
     r.hit = true;
     r.distance = s;
@@ -69,11 +63,17 @@ Cast3 shape_cast(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolyt
     r.feature_p = e.feature_p;
     r.feature_q = e.feature_q;
   };
+  // A perturbed line that misses int M: the line does not meet int M (an open set), so the ray
+  // misses M or only grazes it — decided exactly by cast_graze.
+  if (!in.hit) return convex3::cast_graze(P, Q, rel, dl, Rp, pose_p.translation);
   if (in.h_sign < 0) {
     fill(in, -in.exit);  // in.exit = h_M(u)·|d|/(u·(−d)) < 0
     return r;
   }
-  const convex3::LineExit out = convex3::line_exit_dk(P, Q, rel, dl);
+  // The forward descent perturbs the same line as the reversed one (orient −1), so that both
+  // exits with h > 0 mean 0 ∈ int M (two differently perturbed lines could lie on either side
+  // of a face plane through 0 and report a touching contact as an overlap).
+  const convex3::LineExit out = convex3::line_exit_dk(P, Q, rel, dl, -1);
   if (!out.hit) return convex3::cast_graze(P, Q, rel, dl, Rp, pose_p.translation);
   if (out.h_sign < 0) return r;  // the chord lies behind the start
   if (in.h_sign > 0 && out.h_sign > 0) {     // 0 ∈ int M

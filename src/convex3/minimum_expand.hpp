@@ -72,8 +72,8 @@ struct LineExit {
   Feature3 feature_p, feature_q;
   Vec3 contact{0, 0, 0};
 };
-/// `orient` = ±1 multiplies the direction perturbation: line_exit_dk(−d, −1) descends the same
-/// perturbed line as line_exit_dk(d, +1), reversed (as directional_depth_dk's two descents), so
+/// `orient` = ±1 multiplies the direction perturbation: line_exit_dk(d, −1) descends the same
+/// perturbed line as line_exit_dk(−d, +1), reversed (as directional_depth_dk's two descents), so
 /// that 0 ∈ int M iff both exits have h_sign > 0.
 LineExit line_exit_dk(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel, const Vec3& d,
                       int orient = 1);
