@@ -79,7 +79,11 @@ struct Distance3 {
 /// Shape cast of posed convex polytopes along d (conventions of Cast2, world frame): the
 /// smallest s >= 0 with Q + s·d̂ touching P; +infinity (hit false) when never. When s = 0 and
 /// the shapes overlap, the vectors are 0 and the features None; when s = 0 and they touch,
-/// normal, witnesses and features are those of the facet of P ⊕ (−Q) through the contact.
+/// normal, witnesses and features are those of a facet of P ⊕ (−Q) through the contact (whose
+/// normal faces along d when Q moves away at once). A ray that only grazes P ⊕ (−Q) is a hit;
+/// its normal is an outward normal of P ⊕ (−Q) at the contact: a facet's facing the motion, or,
+/// when the graze is decided by the exact graze routine, that of the supporting plane containing
+/// the ray (normal·d = 0), with the support features of P and Q in that plane.
 struct Cast3 {
   double distance = 0;
   Vec3 translation{0, 0, 0};
@@ -127,9 +131,12 @@ Depth3 directional_depth(const ConvexPolytope& P, const Pose3& pose_p, const Con
 Distance3 signed_distance(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
                           const Pose3& pose_q);
 
-/// Shape cast (Cast3) along d (world frame): the entry of the ray s·d̂ into M, exactly, by two
-/// line descents of Compute-Depth-3D (src/convex3/cast3.cpp), O(log n · log m). A ray that
-/// only grazes M (touches ∂M without entering its interior) is reported as a miss.
+/// Shape cast (Cast3) along d (world frame): the entry of the ray s·d̂ into the closed M,
+/// exactly: a GJK ray cast with exact certificates, else two line descents of Compute-Depth-3D
+/// (src/convex3/cast3.cpp), O(log n · log m). A ray that only grazes M (touches ∂M without
+/// entering its interior: a face sliding in a face's plane, an edge grazing an edge) is a hit at
+/// its first contact, decided exactly (cast_graze: exact GJK on the projection along d and the
+/// support faces of the plane through the ray; then the normal is that plane's, ⊥ d).
 /// Throws InvalidInput if d is zero or non-finite (and for bad poses).
 Cast3 shape_cast(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q, const Pose3& pose_q,
                  const Vec3& d);

@@ -17,10 +17,16 @@
 //   * else s_in <= 0: h_M(u_out) < 0 means the whole chord lies behind 0 (no hit); otherwise
 //     0 ∈ M: distance 0 (overlapping iff both h > 0, i.e. 0 ∈ int M; touching otherwise, with
 //     the facet through 0 as normal and contact).
-// Known limitation: the descent decides on ℓ perturbed by Simulation of Simplicity, so a ray
-// that only grazes M (meets ∂M but never int M: a face or edge of Q sliding along one of P)
-// is reported as a miss. Cost: fast path O(k·c) (GJK iterations × climbs, ≤ 64 iterations);
-// fallback O(log n · log m) per descent, two descents at most.
+// Grazes: the descent decides on ℓ perturbed by Simulation of Simplicity. When a perturbed line
+// misses int M (in or out), ℓ misses int M too (int M is open: a line crossing it keeps crossing
+// it under small perturbations), so the ray misses M or only grazes it (meets ∂M, never int M:
+// a face or edge of Q sliding along one of P, a vertex touching); cast_graze (directional3.cpp)
+// then decides exactly whether it meets M and where first. When both perturbed lines hit, their
+// chords tend to sub-chords of ℓ ∩ M whose ends are either ends of ℓ ∩ M (an exit facet crossed
+// transversally) or 0 (a facet parallel to d, crossed at the perturbation's origin, h = 0), so
+// the decisions above are those of the closed M. Cost: fast path O(k·c) (GJK iterations ×
+// climbs, ≤ 64 iterations); fallback O(log n · log m) per descent, two descents at most; a
+// graze adds cast_graze's O(k·c + f·(f + g)) (support faces of f and g vertices).
 #include <pendepth/depth3.hpp>
 
 #include "convex3/minimum_expand.hpp"
@@ -47,7 +53,6 @@ Cast3 shape_cast(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolyt
   Cast3 r;
   r.distance = std::numeric_limits<double>::infinity();
   const convex3::LineExit in = convex3::line_exit_dk(P, Q, rel, -dl);
-  if (!in.hit) return r;
   auto fill = [&](const convex3::LineExit& e, double s) {
     r.hit = true;
     r.distance = s;
@@ -58,12 +63,19 @@ Cast3 shape_cast(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolyt
     r.feature_p = e.feature_p;
     r.feature_q = e.feature_q;
   };
+  // A perturbed line that misses int M: the line does not meet int M (an open set), so the ray
+  // misses M or only grazes it — decided exactly by cast_graze.
+  if (!in.hit) return convex3::cast_graze(P, Q, rel, dl, Rp, pose_p.translation);
   if (in.h_sign < 0) {
     fill(in, -in.exit);  // in.exit = h_M(u)·|d|/(u·(−d)) < 0
     return r;
   }
-  const convex3::LineExit out = convex3::line_exit_dk(P, Q, rel, dl);
-  if (!out.hit || out.h_sign < 0) return r;  // the chord lies behind the start
+  // The forward descent perturbs the same line as the reversed one (orient −1), so that both
+  // exits with h > 0 mean 0 ∈ int M (two differently perturbed lines could lie on either side
+  // of a face plane through 0 and report a touching contact as an overlap).
+  const convex3::LineExit out = convex3::line_exit_dk(P, Q, rel, dl, -1);
+  if (!out.hit) return convex3::cast_graze(P, Q, rel, dl, Rp, pose_p.translation);
+  if (out.h_sign < 0) return r;  // the chord lies behind the start
   if (in.h_sign > 0 && out.h_sign > 0) {     // 0 ∈ int M
     r.hit = r.overlapping = true;
     r.distance = 0;

@@ -1341,7 +1341,7 @@ Depth3 directional_depth_dk(const ConvexPolytope& Pp, const Pose3& pose_p, const
 // The exit of the line {s·d} from M for a shape cast (cast3.cpp): the same descent as
 // directional_depth_dk along +d, without the overlap test. See LineExit (minimum_expand.hpp).
 LineExit line_exit_dk(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& pose,
-                      const Vec3& d_local) {
+                      const Vec3& d_local, int orient) {
   // Scale d by a power of two (exact) so that its products neither overflow nor underflow.
   int ex = 0;
   std::frexp(d_local.cwiseAbs().maxCoeff(), &ex);
@@ -1355,8 +1355,8 @@ LineExit line_exit_dk(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const 
   const Small& topQ = cached_top(c, true);
   Query q{c, topP, topQ, {}, {}, {}};
   c.dv[0] = d;
-  c.dv[1] = Vec3::Unit((big + 1) % 3);
-  c.dv[2] = Vec3::Unit((big + 2) % 3);
+  c.dv[1] = orient * Vec3::Unit((big + 1) % 3);
+  c.dv[2] = orient * Vec3::Unit((big + 2) % 3);
   const State st = q.descend(Side{true, 0, nullptr}, Side{true, 0, nullptr});
   LineExit r;
   if (!st.hit) return r;
@@ -1390,6 +1390,189 @@ LineExit line_exit_dk(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const 
   for (int j : plane_face(c, true, k.ys, {fy ? k.y[0] : -1, fy ? k.y[1] : -1, fy ? k.y[2] : -1}, U))
     fq.push_back(pose.place(Qp[j]) + v);
   r.contact = contact_point(fp, fq, r.unit);
+  return r;
+}
+
+
+// The cast of a line ℓ = {s·d} that does not meet int M (cast3.cpp calls it when a perturbed
+// descent misses): ℓ ∩ M is empty, or a point or segment [a, b] of ∂M, and every decision is
+// the exact sign of a polynomial in the input doubles.
+//  1. ℓ meets M iff 0 ∈ π(M), π the projection along d: exact GJK (line_touch_gjk). Since ℓ
+//     misses int M, 0 ∈ ∂π(M), so the final simplex is a pair (i, j) with m_ij ∈ ℓ or two pairs
+//     whose segment crosses ℓ inside the boundary line of π(M).
+//  2. A supporting plane H ⊃ ℓ of M, normal u ⊥ d: for two pairs, u = ±(m_b − m_a) × d; for one
+//     pair, u = g* × d with g* an extreme generator of the tangent cone of M at m_ij (generators
+//     p_k − p_i, q'_j − q'_l over the neighbours; [d, g*, g] >= 0 for all g). The sign is the one
+//     for which the pair is a local, hence global, maximum of u·m (exact climb test).
+//  3. ℓ ∩ M = ℓ ∩ F with F = M ∩ H = F_P(u) ⊕ (−F_Q'(u)), the support faces flooded exactly
+//     (plane_face). In H, F is the intersection of the half-planes w·x <= h_F(w) for w among
+//     ±d, ±e and ±u × e over the level-0 edges e of F_P and F_Q' (the edge normals of the sum,
+//     and what bounds a segment or a point), so [a, b] = [max h/(w·d) over w·d < 0,
+//     min h/(w·d) over w·d > 0], compared by exact cross-multiplied signs.
+//  4. b < 0: miss; a > 0: first contact at a; else touching at 0 (never overlapping). The normal
+//     is u/|u| (the supporting plane through the ray, ⊥ d), the features those of F_P and F_Q'.
+// Cost: O(k·c) for step 1, O(degree²) for step 2, O(f·(f + g)) for faces of f and g vertices.
+Cast3 cast_graze(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& pose, const Vec3& d_local,
+                 const Eigen::Matrix3d& Rp, const Vec3& tp_world) {
+  Cast3 r;
+  r.distance = std::numeric_limits<double>::infinity();
+  int ex = 0;
+  std::frexp(d_local.cwiseAbs().maxCoeff(), &ex);
+  const Vec3 d = Vec3(std::ldexp(d_local.x(), -ex), std::ldexp(d_local.y(), -ex), std::ldexp(d_local.z(), -ex));
+  const LineTouch t = line_touch_gjk(Pp, Qp, pose, d);
+  if (!t.touch || t.size < 1 || t.size > 2) return r;  // sizes 3, 4 would mean ℓ meets int M
+  Ctx c{convex3::data_of(Pp), convex3::data_of(Qp), pose, {}, 0};
+  auto around = [](const PolytopeData& D, int v, auto&& f) {
+    const DKLevel& L = D.levels[0];
+    const int h0 = D.vertex_he[v];
+    int h = h0;
+    do {
+      f(L.target(h));
+      h = L.ccw(h);
+    } while (h != h0);
+  };
+  auto dl = [&](auto L) { return c.lift(L, d); };
+  // A vector g of M's tangent cone: P side p_a − p_b, Q side q'_a − q'_b; or m_(a, ja) − m_(b, jb).
+  struct Vec {
+    int kind = 0;  // 0: P difference, 1: Q' difference, 2: pair difference
+    int a = 0, b = 0, ja = 0, jb = 0;
+  };
+  auto vec = [&](auto L, const Vec& g) {
+    if (g.kind == 0) return c.pdiff(L, g.a, g.b);
+    auto q = c.qdiff(L, g.kind == 1 ? g.a : g.ja, g.kind == 1 ? g.b : g.jb);
+    if (g.kind == 1) return q;
+    auto p = c.pdiff(L, g.a, g.b);
+    return decltype(q){p[0] - q[0], p[1] - q[1], p[2] - q[2]};
+  };
+  Vec gs;
+  const int i0 = t.i[0], j0 = t.j[0];
+  if (t.size == 2) {
+    gs = Vec{2, t.i[1], t.i[0], t.j[1], t.j[0]};
+  } else {
+    std::vector<Vec> gens;
+    around(c.P, i0, [&](int k) { gens.push_back(Vec{0, k, i0}); });
+    around(c.Q, j0, [&](int l) { gens.push_back(Vec{1, j0, l}); });
+    auto tri = [&](const Vec& x, const Vec& y) {
+      return exact_sign([&](auto L) { return dot(dl(L), cross(vec(L, x), vec(L, y))); });
+    };
+    bool found = false;
+    for (const Vec& g : gens) {
+      bool par = true;  // g ∥ d: in every supporting plane through ℓ
+      for (int k = 0; k < 3 && par; ++k)
+        par = exact_sign([&](auto L) { return cross(vec(L, g), dl(L))[k]; }) == 0;
+      if (par) continue;
+      bool ok = true;
+      for (const Vec& h : gens)
+        if (tri(g, h) < 0) {
+          ok = false;
+          break;
+        }
+      if (ok) {
+        gs = g, found = true;
+        break;
+      }
+    }
+    if (!found) return r;  // the cone is the whole plane: ℓ would meet int M (unreachable)
+  }
+  int sign = 1;
+  auto U = [&](auto L) {
+    auto u = cross(vec(L, gs), dl(L));
+    if (sign < 0)
+      for (auto& x : u) x = L(0.0) - x;
+    return u;
+  };
+  auto supporting = [&]() {  // (i0, j0) maximises u·m: local test over the neighbours
+    bool ok = true;
+    around(c.P, i0, [&](int k) { ok = ok && exact_sign([&](auto L) { return dot(U(L), c.pdiff(L, k, i0)); }) <= 0; });
+    around(c.Q, j0, [&](int l) { ok = ok && exact_sign([&](auto L) { return dot(U(L), c.qdiff(L, l, j0)); }) >= 0; });
+    return ok;
+  };
+  if (!supporting()) {
+    sign = -1;
+    if (!supporting()) return r;  // unreachable: one side of the line through 0 supports π(M)
+  }
+  const std::vector<int> fp = plane_face(c, false, i0, {}, U);
+  const std::vector<int> fq = plane_face(c, true, j0, {}, U);
+  // Half-plane normals w: ±d, and ±e, ±u × e over the edges e of F_P and F_Q'.
+  struct W {
+    int kind = 0;  // 0: d, 1: e, 2: u × e
+    int sg = 1;
+    Vec e;
+  };
+  std::vector<W> ws{{0, 1, {}}, {0, -1, {}}};
+  auto add_edges = [&](const PolytopeData& D, const std::vector<int>& f, int side) {
+    for (int x : f)
+      around(D, x, [&](int y) {
+        if (y > x && std::find(f.begin(), f.end(), y) != f.end())
+          for (int kind = 1; kind <= 2; ++kind)
+            for (int sg : {1, -1}) ws.push_back(W{kind, sg, Vec{side, y, x}});
+      });
+  };
+  add_edges(c.P, fp, 0);
+  add_edges(c.Q, fq, 1);
+  auto wvec = [&](auto L, const W& w) {
+    auto v = w.kind == 0 ? dl(L) : w.kind == 1 ? vec(L, w.e) : cross(U(L), vec(L, w.e));
+    if (w.sg < 0)
+      for (auto& x : v) x = L(0.0) - x;
+    return v;
+  };
+  // h_F(w) attained at the pair (x*, y*).
+  struct Bound {
+    W w;
+    int x = -1, y = -1;
+  };
+  auto bound = [&](const W& w) {
+    Bound b{w, fp[0], fq[0]};
+    for (int x : fp)
+      if (x != b.x && exact_sign([&](auto L) { return dot(wvec(L, w), c.pdiff(L, x, b.x)); }) > 0) b.x = x;
+    for (int y : fq)
+      if (y != b.y && exact_sign([&](auto L) { return dot(wvec(L, w), c.qdiff(L, y, b.y)); }) < 0) b.y = y;
+    return b;
+  };
+  auto hval = [&](auto L, const Bound& b) { return dot(wvec(L, b.w), c.mpoint(L, b.x, b.y)); };
+  auto dval = [&](auto L, const Bound& b) { return dot(wvec(L, b.w), dl(L)); };
+  std::optional<Bound> lo, hi;
+  for (const W& w : ws) {
+    const int wd = exact_sign([&](auto L) { return dot(wvec(L, w), dl(L)); });
+    if (wd == 0) continue;
+    const Bound b = bound(w);
+    std::optional<Bound>& best = wd < 0 ? lo : hi;
+    if (!best) {
+      best = b;
+      continue;
+    }
+    // h_b/D_b vs h_best/D_best, both denominators of sign wd: h_b·D_best − h_best·D_b.
+    const int cmp =
+        exact_sign([&](auto L) { return hval(L, b) * dval(L, *best) - hval(L, *best) * dval(L, b); });
+    if (wd < 0 ? cmp > 0 : cmp < 0) best = b;
+  }
+  // ±d always bound both ends. b < 0 ⇔ h_hi < 0; a > 0 ⇔ h_lo < 0.
+  if (exact_sign([&](auto L) { return hval(L, *hi); }) < 0) return r;
+  const bool ahead = exact_sign([&](auto L) { return hval(L, *lo); }) < 0;
+  const double s = ahead ? exact::accurate_ratio([&](auto L) { return hval(L, *lo); },
+                                                 [&](auto L) { return dval(L, *lo); })
+                         : 0.0;
+  r.hit = true;
+  r.distance = s * d.norm();
+  const Vec3 dir = d.normalized();
+  r.translation = Rp * (r.distance * dir);
+  const auto uf = U(exact::LiftFl{});
+  const Vec3 unit = Vec3(uf[0].v, uf[1].v, uf[2].v).normalized();
+  r.normal = Rp * unit;
+  auto feature = [&](bool isq, const std::vector<int>& f) -> Feature3 {
+    if (f.size() == 1) return {FeatureKind3::Vertex, f[0]};
+    if (f.size() == 2)
+      if (const int h = edge_he(c.data(isq), f[0], f[1]); h >= 0) return {FeatureKind3::Edge, h};
+    const int ids[3] = {f[0], f[1], f.size() > 2 ? f[2] : -1};
+    return {FeatureKind3::Face, face_in_plane(c, isq, ids, U)};
+  };
+  r.feature_p = feature(false, fp);
+  r.feature_q = feature(true, fq);
+  std::vector<Vec3> ap, aq;
+  const Vec3 v = s * d;
+  for (int i : fp) ap.push_back(Pp[i]);
+  for (int j : fq) aq.push_back(pose.place(Qp[j]) + v);
+  r.witness_p = r.witness_q = Rp * contact_point(ap, aq, unit) + tp_world;
   return r;
 }
 

@@ -72,7 +72,28 @@ struct LineExit {
   Feature3 feature_p, feature_q;
   Vec3 contact{0, 0, 0};
 };
-LineExit line_exit_dk(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel, const Vec3& d);
+/// `orient` = ±1 multiplies the direction perturbation: line_exit_dk(d, −1) descends the same
+/// perturbed line as line_exit_dk(−d, +1), reversed (as directional_depth_dk's two descents), so
+/// that 0 ∈ int M iff both exits have h_sign > 0.
+LineExit line_exit_dk(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel, const Vec3& d,
+                      int orient = 1);
+
+/// Whether the line {s·d : s real} (P's frame) meets the closed M, by the exact GJK of
+/// signed_distance3.cpp on the projection along d (0 ∈ π(M)); if so, the 1–3 pairs (i, j) of
+/// the final simplex, whose projections' hull holds 0 (size 1: m_ij lies on the line; size 2:
+/// the segment of the two points of M crosses the line). O(k·c) as signed_distance.
+struct LineTouch {
+  bool touch = false;
+  int size = 0;
+  int i[4] = {-1, -1, -1, -1}, j[4] = {-1, -1, -1, -1};
+};
+LineTouch line_touch_gjk(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel, const Vec3& d);
+
+/// The shape cast of a line that does not meet int M (directional3.cpp): hit iff the ray
+/// {s·d : s >= 0} meets the closed M, then the first contact (exact decisions; see cast3.cpp).
+/// d in P's frame; result in the world frame of (Rp, tp).
+Cast3 cast_graze(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel, const Vec3& d,
+                 const Eigen::Matrix3d& Rp, const Vec3& tp);
 
 /// Shape cast fast path (signed_distance3.cpp): a GJK ray cast in doubles proposes the entry
 /// triangle of pairs (or a separating plane), then exact certificates (the line crosses the

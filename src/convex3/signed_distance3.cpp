@@ -502,6 +502,20 @@ GjkResult gjk_loop(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacenc
   return {X, contact};
 }
 
+LineTouch line_touch_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel, const Vec3& d) {
+  const PolytopeData& PD = data_of(Pp);
+  const PolytopeData& QD = data_of(Qp);
+  Ctx cp{PD, QD, rel};
+  cp.proj = &d;
+  const GjkResult g = gjk_loop(cp, vertex_adjacency(PD), vertex_adjacency(QD));
+  LineTouch r;
+  r.touch = g.contact;
+  if (!r.touch) return r;
+  r.size = g.X.size;
+  for (int k = 0; k < g.X.size; ++k) r.i[k] = g.X.s[k].id.i, r.j[k] = g.X.s[k].id.j;
+  return r;
+}
+
 Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel,
                               const Eigen::Matrix3d& Rp, const Vec3& tp_world) {
   const PolytopeData& PD = data_of(Pp);
