@@ -32,6 +32,11 @@ struct GeneralizedOptions2 {
   std::size_t max_probes = 512;
   /// Stop when upper_bound − lower_bound ≤ tolerance · upper_bound.
   double tolerance = 1e-6;
+  /// Budget of the branch and bound over angle intervals: lower-bound evaluations at most (each: Q's
+  /// convex parts rotated and eroded, their sums with P's parts, one free-space minimisation; and
+  /// the exact best motion at the interval's middle angle). When it runs out the gap is reported
+  /// (converged false).
+  std::size_t max_intervals = 4000;
   /// How each probe's Pair2 prepares (Auto: the no-fit polygon for small non-convex pairs, whose
   /// build costs less than a few per-query σ answers; docs/benchmarks.md "Generalized depth").
   Prepare prepare = Prepare::Auto;
@@ -52,7 +57,8 @@ struct GeneralizedDepth2 {
   bool overlapping = false;
   bool rotation_exact = true;  ///< angle is a multiple of 90 (Shape2::rotation_is_exact)
   bool converged = true;       ///< upper − lower ≤ tolerance·upper (else the gap is reported as is)
-  std::size_t probes = 0;      ///< angles probed
+  std::size_t probes = 0;      ///< angles probed by σ about three centres
+  std::size_t intervals = 0;   ///< angle intervals bounded by the branch and bound
 };
 
 /// PD_g of P and Q + t (2D). Both convex: σ, lower = upper (the theorem). Otherwise:
