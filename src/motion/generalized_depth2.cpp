@@ -157,12 +157,11 @@ struct Search {
       const Vec2 shift = centres[k] - turn(centres[k]);
       const Depth2 d = pair.minimum(t + shift);
       const Vec2 move = shift + d.translation;
-      // The placement actually tested is fl(t + move·(1 + ε)); nudge outwards while rounding
-      // leaves it inside O.
+      // The placement the caller gets is t + fl(t + move·(1 + ε) − t); nudge outwards while
+      // rounding leaves it inside O.
       for (double eps : {0.0, 0x1p-50, 0x1p-44, 0x1p-36}) {
-        const Vec2 T = t + move * (1 + eps);
-        if (pair.overlapping(T)) continue;
-        const Vec2 v = T - t;  // rounded once: displacement_upper accounts for it
+        const Vec2 v = (t + move * (1 + eps)) - t;  // rounded: displacement_upper accounts for it
+        if (pair.overlapping(t + v)) continue;  // the placement the caller gets
         const double cost = displacement_upper(hull.data(), rq.data(), hull.size(), v);
         here = std::min(here, cost);
         if (cost < best) {
@@ -418,9 +417,8 @@ struct Bnb {
     for (const auto& [T0, n] : cand) {
       const double scale = T0.cwiseAbs().maxCoeff() + enc.rc + enc.centre.cwiseAbs().maxCoeff();
       for (double eps : {0.0, 0x1p-50, 0x1p-46, 0x1p-42, 0x1p-36}) {
-        const Vec2 T = T0 + n * (eps * scale);
-        if (pair.overlapping(T)) continue;
-        const Vec2 v = T - t;
+        const Vec2 v = (T0 + n * (eps * scale)) - t;
+        if (pair.overlapping(t + v)) continue;  // the placement the caller gets
         const double cost = displacement_upper(S.hull.data(), rq.data(), S.hull.size(), v);
         if (cost < S.best) {
           S.best = cost;
