@@ -592,9 +592,11 @@ GeneralizedDepth2 generalized_depth(const Shape2& P_in, const Shape2& Q_in, cons
     std::priority_queue<Node, std::vector<Node>, std::greater<Node>> heap;
     double settled = std::numeric_limits<double>::infinity();  // min lower bound of closed intervals
     auto closes = [&](double lb) { return S.best - lb <= o.tolerance * S.best; };
+    // An interval that stays open gets its middle angle's exact best motion (the upper bound
+    // that closes it and its neighbours).
     auto visit = [&](double a, double b, double parent) {
-      B.upper(0.5 * (a + b) / kDeg);
       const double lb = std::max(parent, B.lower(a, b));
+      if (!closes(lb)) B.upper(0.5 * (a + b) / kDeg);
       if (closes(lb)) settled = std::min(settled, lb);
       else heap.push({lb, a, b});
     };
