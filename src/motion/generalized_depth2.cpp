@@ -7,29 +7,52 @@
 //
 // Method.
 //   Both convex: PD_g = σ (theorem, motion.hpp); no probing.
-//   Lower bound: max over pairs of convex parts (P_i, Q_j) overlapping at t of σ(P_i, Q_j). Any
+//   Parts bound: max over pairs of convex parts (P_i, Q_j) overlapping at t of σ(P_i, Q_j). Any
 //     motion separating P and Q separates P_i from the moved Q_j ⊆ moved Q, and the displacement of
 //     Q's points bounds that of Q_j's, which is ≥ σ(P_i, Q_j) by the theorem for convex pairs.
 //     σ of two convex polygons is within a few ulps (minimum_depth); it is lowered by 16 ulps.
-//   Upper bound: probed angles θ. For each, Q.rotated(θ) (the coordinates a user of the rotation
-//     gets), a Pair2 (options.prepare; Auto builds the no-fit polygon of a
-//     small non-convex pair: on combs its build costs ~12 σ queries of PairDepth2), and for three rotation centres c (Q's reference point,
-//     the centre of its hull's box, the mean of its hull vertices): the exact σ translation u of
-//     the rotated Q placed at t + c − R_θ c, i.e. v = c − R_θ c + u. The placement t + v is checked
-//     with the exact overlap test (nudged outwards by a few ulps if rounding put it inside) and its
-//     cost taken by displacement_upper (rounded up past every rounding of the evaluation).
-//     Angles: only where a motion can beat the best so far — every motion with angle θ moves two
-//     hull vertices q, q' apart by |R_θ − I||q − q'| = 2|sin(θ/2)||q − q'|, so DISP ≥ |sin(θ/2)|·D
-//     with D the hull's diameter. In that window of the range: the alignment angles (an edge of Q
-//     turned parallel to an edge of P near it, smallest turns first, a quarter of the probes), the
-//     exact quarter turns, a uniform grid, then a refinement that bisects the gaps next to the
-//     best angle.
-//   Why no lower bound between probed angles: σ is not continuous in θ for non-convex pairs (a
-//   peg aligned in a tight slot has σ = 0; turned by any ε it overlaps both walls and must be
-//   pulled out), and neither is the best cost at a fixed angle, so no Lipschitz argument on
-//   probes bounds PD_g below; the parts bound is what is proven.
-// Cost: O(k·(n log n + m log m) + k·c·q) for k probes, c = 3 centres, q the cost of a σ query of
-// PairDepth2 (docs/benchmarks.md); capped by options.max_probes.
+//   Probes (upper bounds): for an angle θ, Q.rotated(θ) (the coordinates a user of the rotation
+//     gets), a Pair2 (options.prepare), and for three rotation centres c (Q's reference point, the
+//     centre of its hull's box, the mean of its hull vertices) the exact σ translation u of the
+//     rotated Q placed at t + c − R_θ c, i.e. v = c − R_θ c + u. Angles: 0, the quarter turns and
+//     the edge alignments near Q (an edge of Q turned parallel to an edge of P: where slots and
+//     exact fits are), smallest turn first, only where |sin(θ/2)|·D < best (D hull diameter).
+//   Branch and bound over angle intervals I = [a, b] (radians, m the middle, h ≥ the half-width):
+//     rotate about ζ, the centre of the smallest enclosing circle of Q's hull (R_c ≥ max |q − ζ|).
+//     Lower bound of every separating motion with angle θ ∈ I:
+//       - rotation: the motion has a fixed point z and moves the hull vertex farthest from it by
+//         2|sin(θ/2)|·|q − z| ≥ 2|sin(θ/2)|·R_mec (a lower bound of the enclosing radius);
+//       - eroded parts: E_j = R_m(Q_j − ζ) ⊖ disk(ρ), ρ ≥ 2 sin(h/2)·R_c + the rounding of the
+//         rotated vertices (32u·R_c), computed by clipping the hull of the rotated vertices by its
+//         edges moved in, every vertex then certified ≥ ρ inside every edge line by a floating value
+//         with a proven error bound (exact::Fl; else clip deeper, or drop the part). A point y of E_j
+//         turned by θ − m moves ≤ 2 sin(h/2)|y| ≤ ρ, so E_j ⊆ R_θ(Q_j − ζ): the position u of ζ of a
+//         separating motion is outside U = ∪ int(P_i ⊕ (−E_j));
+//       - cost: DISP ≥ max_k (|u − z_k| − r_k), z_k = q_k + t − R_m(q_k − ζ), r_k ≥ 2 sin(h/2)|q_k − ζ|
+//         plus the rounding of z_k; its minimum over the free set ℝ² \ U by motion::FreeSpace
+//         (free_space2.hpp: the sums' edges cut by the other open sums, exact signs, covered
+//         intervals shrunk; golden section per kept piece with a Lipschitz bound, rounded down).
+//         That minimum is over the boundary unless the unconstrained minimiser is free: the
+//         sublevel set {f < bound} is convex and misses the boundary, so it lies in U when one of
+//         its points does — the pure rotation about ζ (u = ζ + t), tested exactly. Otherwise the
+//         interval keeps only the rotation bound.
+//     Upper bound at the middle angle of every interval left open: the same free-space minimum of
+//     the unweighted cost on Q.rotated(m)'s parts (h = 0), and the pure rotation about ζ; each
+//     candidate checked by the exact overlap test at the placement t + v the caller gets (nudged
+//     along the edge's outward normal by ulps if rounding put it inside) and costed by
+//     displacement_upper.
+//     Search: intervals of at most π/8 cut at 0 and at the quarter turns, best-first by lower
+//     bound, bisected; an interval closes when its bound is within the tolerance of the best upper
+//     bound. Stops when every open interval's bound is within the tolerance (converged) or after
+//     max_intervals evaluations. Where the best cost is flat in θ (Q pinned by one vertex: turning
+//     about it changes nothing) the bound's O(h·R_c) slack needs tiny intervals all along the
+//     plateau and the budget may run out first (the gap is then reported).
+//   Exact fits at non-quarter angles are lost to the rounding of Q.rotated's coordinates (the
+//   rotated copy is a hair larger than the hole): the lower bound sees them, the upper bound
+//   cannot reach them, so such pairs do not converge.
+// Cost: probes O(k·(n log n + m log m) + k·c·q) (c = 3 centres, q a σ query of Pair2); per interval
+// O(Σ n_i m_j) exact turn signs to build the sums, then per visited edge O(S·ℓ) line tests; on
+// nesting pieces 50–80 intervals per query (docs/benchmarks.md).
 // Numeric domain: the pair is scaled by the front door's power of two (src/front/scale.hpp) before
 // the search and every length scaled back.
 #include <pendepth/motion.hpp>
