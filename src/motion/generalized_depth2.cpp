@@ -239,7 +239,8 @@ Enclosing enclosing(const std::vector<Vec2>& h) {
         if (x.r > best.r) best = x;
       return best;
     }
-    const Vec2 o(ac.y() * ab.squaredNorm() - ab.y() * ac.squaredNorm(), ab.x() * ac.squaredNorm() - ac.x() * ab.squaredNorm());
+    const Vec2 o(ac.y() * ab.squaredNorm() - ab.y() * ac.squaredNorm(),
+                 ab.x() * ac.squaredNorm() - ac.x() * ab.squaredNorm());
     const Vec2 cen = a + o / d;
     return C{cen, std::max({(a - cen).norm(), (b - cen).norm(), (c - cen).norm()}), {a, b, c}};
   };
@@ -307,9 +308,11 @@ std::optional<std::vector<Vec2>> erode(std::span<const Vec2> H, double rho) {
     for (const Vec2& w : poly)
       for (std::size_t i = 0; i < n && ok; ++i) {
         const Vec2 &v0 = H[i], &v1 = H[i + 1 == n ? 0 : i + 1];
-        const exact::Fl ex = exact::Fl{v1.x(), 0} - exact::Fl{v0.x(), 0}, ey = exact::Fl{v1.y(), 0} - exact::Fl{v0.y(), 0};
-        const exact::Fl c = ex * (exact::Fl{w.y(), 0} - exact::Fl{v0.y(), 0}) - ey * (exact::Fl{w.x(), 0} - exact::Fl{v0.x(), 0});
-        const double len = std::hypot(std::abs(ex.v) + exact::safe_bound(ex.e), std::abs(ey.v) + exact::safe_bound(ey.e)) * (1 + 4 * kU);
+        using exact::Fl;
+        const Fl ex = Fl{v1.x(), 0} - Fl{v0.x(), 0}, ey = Fl{v1.y(), 0} - Fl{v0.y(), 0};
+        const Fl c = ex * (Fl{w.y(), 0} - Fl{v0.y(), 0}) - ey * (Fl{w.x(), 0} - Fl{v0.x(), 0});
+        const double len =
+            std::hypot(std::abs(ex.v) + exact::safe_bound(ex.e), std::abs(ey.v) + exact::safe_bound(ey.e)) * (1 + 4 * kU);
         ok = c.v - exact::safe_bound(c.e) >= round_up(rho * len);
       }
     if (!ok) continue;
@@ -648,7 +651,8 @@ GeneralizedDepth2 generalized_depth(const Shape2& P_in, const Shape2& Q_in, cons
       visit(n.a, m, n.lb);
       visit(m, n.b, n.lb);
     }
-    global_lower = std::max(lower, std::min(settled, heap.empty() ? std::numeric_limits<double>::infinity() : heap.top().lb));
+    const double open = heap.empty() ? std::numeric_limits<double>::infinity() : heap.top().lb;
+    global_lower = std::max(lower, std::min(settled, open));
   }
   r = S.r;
   r.intervals = B.evaluations;
