@@ -193,11 +193,18 @@ FreeMinimum FreeSpace::minimum(const FarthestCost& f, double cap) const {
     if (q >= F) break;
     const Seg& s = segs_[i];
     cov.clear();
+    bool whole = false;  // one open sum holds the whole edge (the usual case deep inside U)
     for (std::size_t k : near) {
       if (k == owner[i] || !meets(s.lo, s.hi, sums_[k].lo, sums_[k].hi)) continue;
       double lo, hi;
-      if (covered(s, sums_[k], lo, hi)) cov.emplace_back(lo, hi);
+      if (!covered(s, sums_[k], lo, hi)) continue;
+      if (lo < 0 && hi > 1) {
+        whole = true;
+        break;
+      }
+      cov.emplace_back(lo, hi);
     }
+    if (whole) continue;
     std::sort(cov.begin(), cov.end());
     const Vec2 a = s.x0 + s.y, d = s.x1 - s.x0;
     const double L = d.norm() * (1 + 8 * kU);  // Lipschitz constant of f(a + λd) in λ
