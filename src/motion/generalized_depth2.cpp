@@ -563,6 +563,7 @@ GeneralizedDepth2 generalized_depth(const Shape2& P_in, const Shape2& Q_in, cons
     S.probe(deg);
   };
   Bnb B{P, Q, t, parts_p, parts_q, S, enclosing(S.hull), lower, o.min_degrees, o.max_degrees, 0};
+  B.enc.rmec_low = std::max(B.enc.rmec_low, 0.5 * S.diameter * (1 - 1e-9));  // R_mec ≥ D/2
   // Angle 0 first (the range holds it): σ's own motion, often already optimal; then the exact best
   // motion there.
   try_angle(0.0);
