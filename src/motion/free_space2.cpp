@@ -193,17 +193,23 @@ FreeMinimum FreeSpace::minimum(const FarthestCost& f, double cap) const {
     if (q >= F) break;
     const Seg& s = segs_[i];
     cov.clear();
-    bool whole = false;  // one open sum holds the whole edge (the usual case deep inside U)
-    for (std::size_t k : near) {
-      if (k == owner[i] || !meets(s.lo, s.hi, sums_[k].lo, sums_[k].hi)) continue;
-      double lo, hi;
-      if (!covered(s, sums_[k], lo, hi)) continue;
-      if (lo < 0 && hi > 1) {
-        whole = true;
-        break;
+    // One open sum holds the whole edge (the usual case deep inside U): the sums whose box holds
+    // the edge's are tried first, and the edge is dropped at the first that holds it.
+    bool whole = false;
+    for (int pass = 0; pass < 2 && !whole; ++pass)
+      for (std::size_t k : near) {
+        if (k == owner[i] || !meets(s.lo, s.hi, sums_[k].lo, sums_[k].hi)) continue;
+        const bool holds_box =
+            (sums_[k].lo.array() <= s.lo.array()).all() && (s.hi.array() <= sums_[k].hi.array()).all();
+        if (holds_box != (pass == 0)) continue;
+        double lo, hi;
+        if (!covered(s, sums_[k], lo, hi)) continue;
+        if (lo < 0 && hi > 1) {
+          whole = true;
+          break;
+        }
+        cov.emplace_back(lo, hi);
       }
-      cov.emplace_back(lo, hi);
-    }
     if (whole) continue;
     std::sort(cov.begin(), cov.end());
     const Vec2 a = s.x0 + s.y, d = s.x1 - s.x0;
