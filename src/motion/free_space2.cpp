@@ -105,14 +105,9 @@ bool FreeSpace::covered(const Seg& s, const Sum& k, double& lo, double& hi) cons
       return (L(l.x1.x()) - L(l.x0.x())) * (L(s.x1.y()) - L(s.x0.y())) -
              (L(l.x1.y()) - L(l.x0.y())) * (L(s.x1.x()) - L(s.x0.x()));
     };
-    // The same edge of a part (in either direction) in two sums: parallel symbolically, and α is
-    // cross(D, y − y').
+    // The same edge of a part (in either direction) in two sums: parallel symbolically.
     if ((s.x0 == l.x0 && s.x1 == l.x1) || (s.x0 == l.x1 && s.x1 == l.x0)) {
-      if (exact::exact_sign([&](auto L) {
-            return (L(l.x1.x()) - L(l.x0.x())) * (L(s.x0.y()) + L(s.y.y()) - L(l.x0.y()) - L(l.y.y())) -
-                   (L(l.x1.y()) - L(l.x0.y())) * (L(s.x0.x()) + L(s.y.x()) - L(l.x0.x()) - L(l.y.x()));
-          }) <= 0)
-        return false;
+      if (exact::exact_sign(alpha) <= 0) return false;
       continue;
     }
     const exact::Fl a = alpha(exact::LiftFl{}), b = beta(exact::LiftFl{});
