@@ -10,7 +10,8 @@
 // smallest value on ∂O (ternary search per boundary segment, every isolated point). Its minimum
 // over the grid is (to rounding) the cost of a real motion, so lower ≤ it; when converged the
 // upper bound is within the tolerance of it. Inputs: L-shapes, combs, a bar in a slot of its own
-// width (exact fit at a quarter turn: PD_g known in closed form), nesting pieces. Pinned seeds.
+// width (exact fit at a quarter turn: PD_g known in closed form), a frame with a hole, random
+// stars, nesting pieces. Pinned seeds.
 #include <pendepth/nfp2.hpp>
 #include <pendepth/pendepth.hpp>
 
@@ -203,6 +204,27 @@ TEST(GeneralizedBnb, LShapesAndCombsConverge) {
   }
   EXPECT_GE(n, 6);
   RecordProperty("converged", converged);
+}
+
+TEST(GeneralizedBnb, HolesConverge) {
+  // P a frame (its convex parts are the triangles of a polygon with a hole), Q an L across the
+  // hole's rim at random placements.
+  const Shape2 P({Vec2(-1.5, -1.5), Vec2(1.5, -1.5), Vec2(1.5, 1.5), Vec2(-1.5, 1.5)},
+                 {{Vec2(-0.6, -0.5), Vec2(-0.6, 0.5), Vec2(0.6, 0.5), Vec2(0.6, -0.5)}}, "frame");
+  const Shape2 Q = l_shape(0.25, Vec2(-0.3, -0.3), "l");
+  std::mt19937_64 rng(99);
+  std::uniform_real_distribution<double> u(-0.9, 0.9);
+  int n = 0;
+  for (int k = 0; k < 6; ++k) {
+    const Vec2 t(u(rng), u(rng));
+    if (!Pair2(P, Q).overlapping(t)) continue;
+    ++n;
+    const GeneralizedDepth2 r = generalized_depth(P, Q, t);
+    SCOPED_TRACE("placement " + std::to_string(k));
+    check(P, Q, t, r, 180);
+    EXPECT_TRUE(r.converged) << r.lower_bound << " " << r.upper_bound << " after " << r.intervals;
+  }
+  EXPECT_GE(n, 4);
 }
 
 TEST(GeneralizedBnb, RotationHelpsAndTheBoundsMeet) {
