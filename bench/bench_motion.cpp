@@ -3,7 +3,9 @@
 // first 5 pieces of an instance, Q placed with its box centre on P's plus an offset of 10 % of
 // P's box (pinned seed), overlapping placements only. One "query" answers one pair from scratch,
 // as a single question would: σ = Pair2(P, Q, prepare) + minimum (second argument: 0 Auto, 1
-// Queries); PD_g = generalized_depth (its probes build one Pair2 per angle). Counters: probes per PD_g query, the mean relative gap
+// Queries); PD_g = generalized_depth (its probes build one Pair2 per angle; the branch and bound
+// bounds angle intervals until the gap closes or max_intervals runs out). Counters: probes (σ about three centres at an angle) and angle
+// intervals of the branch and bound per PD_g query, the mean relative gap
 // (upper − lower)/upper, the fraction of queries whose gap closed (≤ 1e-6), the mean PD_g / σ.
 //
 //   bench_motion --benchmark_filter=...   (arguments: the instance index 0 albano, 1 shirts,
@@ -69,17 +71,18 @@ void BM_Generalized(benchmark::State& state) {
   const auto cs = cases(static_cast<int>(state.range(0)));
   GeneralizedOptions2 o;
   o.prepare = state.range(1) == 0 ? Prepare::Auto : Prepare::Queries;
-  std::size_t i = 0, n = 0, probes = 0, closed = 0;
+  std::size_t i = 0, n = 0, probes = 0, intervals = 0, closed = 0;
   double gap = 0, ratio = 0;
   for (auto _ : state) {
     const Case& c = cs[i++ % cs.size()];
     const GeneralizedDepth2 r = generalized_depth(c.P, c.Q, c.t, o);
-    ++n, probes += r.probes, closed += r.converged;
+    ++n, probes += r.probes, intervals += r.intervals, closed += r.converged;
     gap += (r.upper_bound - r.lower_bound) / r.upper_bound;
     ratio += r.depth / r.sigma;
   }
   state.counters["pairs"] = double(cs.size());
   state.counters["probes"] = double(probes) / double(n);
+  state.counters["intervals"] = double(intervals) / double(n);
   state.counters["gap"] = gap / double(n);
   state.counters["closed"] = double(closed) / double(n);
   state.counters["pdg/sigma"] = ratio / double(n);

@@ -301,7 +301,7 @@ int run_generalized2(const DepthArgs& a, const Shape2& P, const Shape2& Q, const
           num(r.lower_bound) + ",\"upper_bound\":" + num(r.upper_bound) + ",\"angle\":" + num(r.angle) +
           ",\"translation\":[" + num(r.translation.x()) + "," + num(r.translation.y()) + "],\"sigma\":" + num(r.sigma) +
           ",\"sigma_at_angle\":" + num(r.sigma_at_angle) + ",\"converged\":" + (r.converged ? "true" : "false") +
-          ",\"probes\":" + std::to_string(r.probes) + ",\"angle_exact\":" + (r.rotation_exact ? "true" : "false") + "}";
+          ",\"probes\":" + std::to_string(r.probes) + ",\"intervals\":" + std::to_string(r.intervals) + ",\"angle_exact\":" + (r.rotation_exact ? "true" : "false") + "}";
     add_rotation_field(out, a.rotate_q);
     out += '\n';
   } else {
@@ -310,7 +310,8 @@ int run_generalized2(const DepthArgs& a, const Shape2& P, const Shape2& Q, const
           (r.converged ? "" : " (not converged: the gap is above the tolerance)") + "\n  motion: rotate Q by " +
           num(r.angle) + " degrees about its reference point" + (r.rotation_exact ? "" : " (coordinates rounded)") +
           ", then translate by (" + num(r.translation.x()) + ", " + num(r.translation.y()) + ")\n  translational depth: " +
-          num(r.sigma) + " (at that angle: " + num(r.sigma_at_angle) + "); angles probed: " + std::to_string(r.probes) + "\n";
+          num(r.sigma) + " (at that angle: " + num(r.sigma_at_angle) + "); angles probed: " + std::to_string(r.probes) +
+          ", angle intervals bounded: " + std::to_string(r.intervals) + "\n";
   }
   write_stdout(out);
   return 0;

@@ -32,6 +32,11 @@ struct GeneralizedOptions2 {
   std::size_t max_probes = 512;
   /// Stop when upper_bound − lower_bound ≤ tolerance · upper_bound.
   double tolerance = 1e-6;
+  /// Budget of the branch and bound over angle intervals: lower-bound evaluations at most (each: Q's
+  /// convex parts rotated and eroded, their sums with P's parts, one free-space minimisation; and
+  /// the exact best motion at the interval's middle angle). When it runs out the gap is reported
+  /// (converged false).
+  std::size_t max_intervals = 4000;
   /// How each probe's Pair2 prepares (Auto: the no-fit polygon for small non-convex pairs, whose
   /// build costs less than a few per-query σ answers; docs/benchmarks.md "Generalized depth").
   Prepare prepare = Prepare::Auto;
@@ -52,19 +57,27 @@ struct GeneralizedDepth2 {
   bool overlapping = false;
   bool rotation_exact = true;  ///< angle is a multiple of 90 (Shape2::rotation_is_exact)
   bool converged = true;       ///< upper − lower ≤ tolerance·upper (else the gap is reported as is)
-  std::size_t probes = 0;      ///< angles probed
+  std::size_t probes = 0;      ///< angles probed by σ about three centres
+  std::size_t intervals = 0;   ///< angle intervals bounded by the branch and bound
 };
 
-/// PD_g of P and Q + t (2D). Both convex: σ, lower = upper (the theorem). Otherwise:
-///   lower bound: the largest σ(P_i, Q_j) over pairs of convex parts (Hertel–Mehlhorn parts of the
-///     triangulations) — every separating motion separates each pair of parts, and for a convex
-///     pair the theorem gives DISP ≥ σ(P_i, Q_j);
-///   upper bound: the best verified motion over probed angles (a grid over the range, refined
-///     around the best angle), each answered by exact σ queries on P and Q.rotated(θ) with
-///     Q rotated about its reference point and about two more centres of Q.
-/// The bounds meet (gap 0) when one pair of convex parts is as deep as the whole pair; otherwise
-/// the gap is reported (converged false). Throws InvalidInput for a non-finite t, a non-finite
-/// angle range or one without 0, a negative tolerance.
+/// PD_g of P and Q + t (2D). Both convex: σ, lower = upper (the theorem). Otherwise a branch and
+/// bound over angle intervals I = [m − h, m + h] (docs/algorithms.md "Generalized depth"):
+///   lower bound per interval: Q's convex parts rotated by m about the centre ζ of Q's smallest
+///     enclosing circle and eroded by a disk of radius ≥ 2 sin(h/2)·max|q − ζ| (rounded inwards and
+///     certified) stay inside Q turned by any θ ∈ I, so a separating motion puts ζ outside the open
+///     union of their sums with P's parts; its DISP is ≥ max_k |u − z_k| − 2 sin(h/2)|q_k − ζ|
+///     (z_k: where ζ goes when q_k stays), minimised over that free set (its boundary's pieces,
+///     exact signs, rounded down); also ≥ 2|sin(θ/2)|·(enclosing radius) and ≥ the largest
+///     σ(P_i, Q_j) of overlapping convex parts;
+///   upper bound: verified motions — σ of the rotated Q about three centres at angle 0, the quarter
+///     turns and the edge-alignment angles, and the exact best motion at those angles and at the
+///     middle of every interval left open (the same free-space minimum on Q.rotated's
+///     coordinates, checked by the exact overlap test, nudged out by ulps if rounding put it in);
+///   best-first on the intervals' lower bounds until upper − lower ≤ tolerance·upper (converged)
+///     or max_intervals runs out (converged false, the gap reported as is).
+/// Throws InvalidInput for a non-finite t, a non-finite angle range or one without 0, a negative
+/// tolerance.
 GeneralizedDepth2 generalized_depth(const Shape2& P, const Shape2& Q, const Vec2& t,
                                     const GeneralizedOptions2& options = {});
 

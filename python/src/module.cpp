@@ -1060,11 +1060,12 @@ validated once), allowed_orientations (degrees; [0.0] when absent)). Bad input r
 
   // ---- generalized depth PD_g (issue 18; include/pendepth/motion.hpp) ----
   m.def("generalized_depth", [](const Shape2& P, const Shape2& Q, const py::object& offset, double min_degrees,
-                                double max_degrees, std::size_t max_probes, double tolerance) {
+                                double max_degrees, std::size_t max_probes, double tolerance, std::size_t max_intervals) {
         Points<2> t = points<2>(offset, "offset");
         if (!t.single) throw InvalidInput("offset: expected one (2,) point");
         GeneralizedOptions2 o;
         o.min_degrees = min_degrees, o.max_degrees = max_degrees, o.max_probes = max_probes, o.tolerance = tolerance;
+        o.max_intervals = max_intervals;
         GeneralizedDepth2 r;
         {
           py::gil_scoped_release nogil;
@@ -1075,17 +1076,20 @@ validated once), allowed_orientations (degrees; [0.0] when absent)). Bad input r
             py::arg("upper_bound") = r.upper_bound, py::arg("angle") = r.angle,
             py::arg("translation") = to_array<2>(std::vector<Vec2>{r.translation}).attr("reshape")(2),
             py::arg("sigma") = r.sigma, py::arg("sigma_at_angle") = r.sigma_at_angle, py::arg("overlapping") = r.overlapping,
-            py::arg("rotation_exact") = r.rotation_exact, py::arg("converged") = r.converged, py::arg("probes") = r.probes);
+            py::arg("rotation_exact") = r.rotation_exact, py::arg("converged") = r.converged, py::arg("probes") = r.probes,
+            py::arg("intervals") = r.intervals);
       }, py::arg("P"), py::arg("Q"), py::arg("offset"), py::kw_only(), py::arg("min_degrees") = -180.0,
       py::arg("max_degrees") = 180.0, py::arg("max_probes") = 512, py::arg("tolerance") = 1e-6,
-      R"(generalized_depth(P, Q, offset, *, min_degrees=-180, max_degrees=180, max_probes=512, tolerance=1e-6)
+      py::arg("max_intervals") = 4000,
+      R"(generalized_depth(P, Q, offset, *, min_degrees=-180, max_degrees=180, max_probes=512, tolerance=1e-6, max_intervals=4000)
 
 2D generalized depth PD_g: Q (placed at offset) may rotate about its reference point by an angle in
 [min_degrees, max_degrees] (the range must contain 0) and translate; the cost of a motion is the
 largest displacement of Q's points. Returns a namespace: depth (= upper_bound, the cost of the
 motion found), lower_bound (certified), angle (degrees; Q's coordinates as Shape2 rotated by it),
 translation (2,), sigma (translational depth, >= depth), sigma_at_angle, overlapping,
-rotation_exact, converged (gap <= tolerance * depth), probes. Convex pairs: PD_g = sigma.)");
+rotation_exact, converged (gap <= tolerance * depth), probes, intervals (angle intervals bounded by the
+branch and bound, at most max_intervals). Convex pairs: PD_g = sigma.)");
   m.def("generalized_depth", [](const Shape3& P, const Shape3& Q, const py::object& translation, const py::object& rotation) {
         Points<3> t = points<3>(translation, "translation");
         if (!t.single) throw InvalidInput("translation: expected one (3,) point");

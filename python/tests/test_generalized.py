@@ -49,6 +49,11 @@ def test_peg_in_slot_turns_back():
     # Its cost: the largest displacement of Q's vertices.
     cost = max(np.hypot(*(turned(bar, g.angle)[i] + g.translation - bar[i])) for i in range(4))
     assert cost <= g.depth * (1 + 1e-12)
+    # The branch and bound over angle intervals closes the gap; a budget of one interval reports it.
+    assert g.converged and g.upper_bound - g.lower_bound <= 1e-6 * g.upper_bound and g.intervals > 0
+    small = pendepth.generalized_depth(slot, Q, (0.0, 0.0), max_intervals=1)
+    assert small.lower_bound <= g.upper_bound and g.lower_bound <= small.upper_bound
+    assert small.converged == (small.upper_bound - small.lower_bound <= 1e-6 * small.upper_bound)
 
 
 def test_convex_3d_is_sigma():

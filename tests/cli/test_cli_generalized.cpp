@@ -1,7 +1,7 @@
 // End-to-end tests of `pendepth depth --generalized` (issue 18 item 5) and the 2D `--rotate-q DEG`
 // (issue 19 item 3):
 //   - 2D --generalized --json equals generalized_depth run in-process on the same files, bit for
-//     bit (every field: depth, bounds, angle, translation, σ, kind "generalized");
+//     bit (every field: depth, bounds, angle, translation, σ, intervals, kind "generalized");
 //   - 3D --generalized --json equals σ of Pair3 (the theorem for convex polytopes), identity
 //     rotation quaternion;
 //   - --rotate-q DEG in 2D equals Pair2 on Q.rotated(DEG); a quarter turn reports
@@ -51,9 +51,11 @@ TEST_F(CliGeneralized, Depth2MatchesLibrary) {
     EXPECT_EQ(j["translation"][1].get<double>(), g.translation.y());
     EXPECT_EQ(j["sigma"].get<double>(), g.sigma);
     EXPECT_EQ(j["converged"].get<bool>(), g.converged);
+    EXPECT_EQ(j["intervals"].get<std::size_t>(), g.intervals);
     if (t == Vec2(0, 0)) {
       EXPECT_TRUE(g.overlapping);
       EXPECT_LT(g.depth, 0.1 * g.sigma);  // turning back beats pulling out
+      EXPECT_TRUE(g.converged);           // the branch and bound over angles closes the gap
     }
   }
   // The human summary names the bounds, the rotation and the translation.

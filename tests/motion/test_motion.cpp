@@ -210,7 +210,8 @@ TEST(Generalized2, PegInSlotRotationHelps) {
   EXPECT_LT(r.depth, 0.25 * r.sigma) << "sigma " << r.sigma << " depth " << r.depth;
   EXPECT_LT(r.angle, 0);
   EXPECT_GT(r.angle, -4);
-  // The brute force over a much finer angle window near the optimum never beats the parts bound.
+  // The brute force over a much finer angle window near the optimum never beats the certified
+  // lower bound.
   const Brute fine = brute_force(P, Q, t, grid(-4, 0, 400));
   EXPECT_LE(r.lower_bound, fine.best);
 }
