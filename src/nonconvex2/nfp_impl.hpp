@@ -4,6 +4,8 @@
 
 #include <pendepth/nfp2.hpp>
 
+#include <array>
+#include <cstdint>
 #include <vector>
 
 #include "nonconvex2/edge_cut.hpp"
@@ -61,6 +63,34 @@ NfpPiece make_piece(const NfpCandidate& c, const Param& lo, const Param& hi, con
 
 }  // namespace nonconvex2
 
+namespace nonconvex2 {
+
+/// The floating fast path of the queries (nfp_fast.cpp): a flat structure-of-arrays copy of ∂O in
+/// doubles whose decisions are certified by static error bounds, or reported undecided so the
+/// caller runs the exact path. Ring edges: the export's rings (each vertex the exact vertex rounded
+/// to nearest); piece ends: NfpPiece::a, b (each coordinate within a few ulps of the exact end).
+struct NfpFlat {
+  std::vector<double> rx0, ry0, rx1, ry1;  // ring edges of cl(O), O on their left
+  std::vector<double> px0, py0, px1, py1;  // pieces (same indices as Impl::pieces)
+  std::vector<std::array<Vec2, 2>> slits;   // copies of the export's, next to the edges
+  std::vector<Vec2> points;
+  double rmax = 0;                         // largest |coordinate| stored here
+  bool usable = false;                     // sizes and magnitudes inside the filters' range
+
+  void build(const NoFitPolygon2::Impl& nfp);
+  /// t ∈ O: 1 or 0 when certified, -1 when a decision is too close to call (t on or ulps from a
+  /// ring edge, a slit, an isolated point, or level with a ring vertex).
+  int overlapping(const Vec2& t) const;
+  /// Appends to `out`, in increasing order, the indices of every piece whose exact distance to t
+  /// can be the minimum (a superset of the exact nearest pieces; usually one).
+  void nearest_candidates(const Vec2& t, std::vector<std::uint32_t>& out) const;
+  /// Appends, in increasing order, every piece the ray t + λ·d (λ > 0) can hit first (a superset
+  /// of the exact first pieces).
+  void first_hit_candidates(const Vec2& t, const Vec2& d, std::vector<std::uint32_t>& out) const;
+};
+
+}  // namespace nonconvex2
+
 struct NoFitPolygon2::Impl {
   PairDepth2::Impl S;  // triangulations, box hierarchies, the exact overlap test and contact()
   std::vector<nonconvex2::NfpPiece> pieces;
@@ -69,8 +99,18 @@ struct NoFitPolygon2::Impl {
   std::vector<std::array<Vec2, 2>> slits;
   std::vector<Vec2> points;
   NfpSize sz;
+  nonconvex2::NfpFlat flat;  // the fast path (built last, from pieces and rings)
   Impl(const Polygon& P, const Polygon& Q);
+
+  // Queries on validated input (nfp_query.cpp). The plain ones take the certified floating fast
+  // path and run the exact decisions only where it is undecided; the `_exact` ones (kept for the
+  // tests, which compare the two bit for bit) skip it: the pair-sum overlap test and the best-first
+  // traversal of the piece hierarchy. Among pieces exactly equally near (a shared vertex), both
+  // report the lowest piece index.
   bool overlapping(const Vec2& t) const;
+  bool overlapping_exact(const Vec2& t) const;
+  Depth2 minimum(const Vec2& t, bool exact_path = false) const;
+  Depth2 along(const Vec2& t, const Vec2& d, bool exact_path = false) const;  // d from check_and_scale
 };
 
 /// Links the pieces into rings, slits and isolated points (nfp_rings.cpp).

@@ -107,11 +107,165 @@ double box_distance(const Vec2& t, const Vec2& lo, const Vec2& hi) {
 
 }  // namespace
 
-bool NoFitPolygon2::Impl::overlapping(const Vec2& t) const {
+bool NoFitPolygon2::Impl::overlapping_exact(const Vec2& t) const {
   return S.descend(
       [&](const Vec2& lo, const Vec2& hi) { return lo.x() <= t.x() && t.x() <= hi.x() && lo.y() <= t.y() && t.y() <= hi.y(); },
       [&](std::uint32_t i, std::uint32_t j) { return nonconvex2::sum_contains(nonconvex2::make_sum(S.tp[i], S.tb[j]), t); },
       nullptr);
+}
+
+bool NoFitPolygon2::Impl::overlapping(const Vec2& t) const {
+  if (flat.usable) {
+    const int f = flat.overlapping(t);
+    if (f >= 0) return f == 1;
+  }
+  return overlapping_exact(t);
+}
+
+namespace {
+
+// Scratch for the fast path's candidate lists (no allocation per query).
+std::vector<std::uint32_t>& scratch() {
+  thread_local std::vector<std::uint32_t> v;
+  v.clear();
+  return v;
+}
+
+// σ_d's running best: the exact first hit, ties to the lowest piece index.
+struct AlongBest {
+  Hit hit;
+  std::uint32_t index = 0;
+  bool found = false;
+  double value = std::numeric_limits<double>::infinity();
+  void consider(const NoFitPolygon2::Impl& N, std::uint32_t k, const Ray& ray, const Vec2& t, const Vec2& d) {
+    Hit h;
+    if (!first_hit(N.pieces[k], ray, t, d, h)) return;
+    if (found) {
+      const int c = compare_hits(h, hit, ray, t);
+      if (c > 0 || (c == 0 && k > index)) return;
+    }
+    hit = h;
+    index = k;
+    found = true;
+    value = exact::accurate_ratio([&](auto L) { return hit_nd(h, ray, t, L).first; },
+                                  [&](auto L) { return hit_nd(h, ray, t, L).second; });
+  }
+};
+
+// σ's running best: the exact nearest point, ties to the lowest piece index.
+struct MinBest {
+  Cand cand;
+  std::uint32_t index = 0;
+  bool found = false;
+  double value = std::numeric_limits<double>::infinity();
+  void consider(const NoFitPolygon2::Impl& N, std::uint32_t k, const Vec2& t) {
+    const NfpPiece& pc = N.pieces[k];
+    const Param proj{Param::Proj, {}};
+    Cand c{pc.E, proj, pc.edge};
+    if (nonconvex2::compare_params(proj, pc.lo, pc.E, t) <= 0) c.at = pc.lo;
+    else if (nonconvex2::compare_params(proj, pc.hi, pc.E, t) >= 0) c.at = pc.hi;
+    if (found) {
+      // A shared vertex of two pieces is recognised symbolically.
+      const int s = nonconvex2::same_point(c, cand) ? 0 : exact_sign([&](auto L) {
+        auto [n1, d1] = nonconvex2::sq_dist(c, t, L);
+        auto [n2, d2] = nonconvex2::sq_dist(cand, t, L);
+        return n1 * d2 - n2 * d1;
+      });
+      if (s > 0 || (s == 0 && k > index)) return;
+    }
+    cand = c;
+    index = k;
+    found = true;
+    value = std::sqrt(exact::accurate_ratio([&](auto L) { return nonconvex2::sq_dist(c, t, L).first; },
+                                            [&](auto L) { return nonconvex2::sq_dist(c, t, L).second; }));
+  }
+};
+
+struct Job {
+  double key;
+  std::int32_t node;
+  bool operator>(const Job& o) const { return key > o.key; }
+};
+
+}  // namespace
+
+Depth2 NoFitPolygon2::Impl::along(const Vec2& t, const Vec2& d, bool exact_path) const {
+  Depth2 r;
+  r.kind = DepthKind::Directional;
+  if (pieces.empty() || !(exact_path ? overlapping_exact(t) : overlapping(t))) return r;
+  const Ray ray = Ray::query(t, d);
+  AlongBest best;
+  if (flat.usable && !exact_path) {
+    std::vector<std::uint32_t>& cand = scratch();
+    flat.first_hit_candidates(t, d, cand);
+    for (std::uint32_t k : cand) best.consider(*this, k, ray, t, d);
+  } else {
+    // Best-first traversal of the piece hierarchy by conservative box entry λ.
+    std::priority_queue<Job, std::vector<Job>, std::greater<Job>> jobs;
+    auto push = [&](std::int32_t node) {
+      double l0, l1;
+      if (!nonconvex2::ray_box(t, d, tree.nodes[node].lo, tree.nodes[node].hi, l0, l1) || l1 < 0) return;
+      jobs.push({l0, node});
+    };
+    push(0);
+    while (!jobs.empty()) {
+      const Job J = jobs.top();
+      jobs.pop();
+      if (best.found && J.key > best.value + std::abs(best.value) * 0x1p-40) break;
+      const auto& node = tree.nodes[J.node];
+      if (node.left >= 0) {
+        push(node.left);
+        push(node.right);
+        continue;
+      }
+      best.consider(*this, node.tri, ray, t, d);
+    }
+  }
+  if (!best.found) return r;  // unreachable for t ∈ O (O is bounded)
+  const double dn = nonconvex2::norm_accurate(d);
+  const double depth = std::max(0.0, best.value * dn);
+  const Line& E = best.hit.piece->edge;
+  r = S.contact(E, t, depth * (d / dn), nonconvex2::end_on_ray(E, t, d));
+  r.depth = depth;
+  r.normal = d / dn;
+  r.kind = DepthKind::Directional;
+  r.overlapping = true;
+  return r;
+}
+
+Depth2 NoFitPolygon2::Impl::minimum(const Vec2& t, bool exact_path) const {
+  Depth2 r;
+  r.kind = DepthKind::Minimum;
+  if (pieces.empty() || !(exact_path ? overlapping_exact(t) : overlapping(t))) return r;
+  MinBest best;
+  if (flat.usable && !exact_path) {
+    std::vector<std::uint32_t>& cand = scratch();
+    flat.nearest_candidates(t, cand);
+    for (std::uint32_t k : cand) best.consider(*this, k, t);
+  } else {
+    // Branch and bound on the hierarchy with conservative box distances; every piece as near as
+    // the best is visited (its box key is below its distance), so ties resolve by index.
+    std::priority_queue<Job, std::vector<Job>, std::greater<Job>> jobs;
+    jobs.push({0, 0});
+    while (!jobs.empty()) {
+      const Job J = jobs.top();
+      jobs.pop();
+      if (best.found && J.key > best.value * (1 + 0x1p-40)) break;
+      const auto& node = tree.nodes[J.node];
+      if (node.left >= 0) {
+        for (std::int32_t c : {node.left, node.right}) jobs.push({box_distance(t, tree.nodes[c].lo, tree.nodes[c].hi), c});
+        continue;
+      }
+      best.consider(*this, node.tri, t);
+    }
+  }
+  if (!best.found) return r;  // unreachable for t ∈ O
+  const Cand& c = best.cand;
+  r = S.contact(c.edge, t, nonconvex2::cand_translation(c, t), nonconvex2::cand_end(c, t));
+  r.depth = best.value;
+  r.kind = DepthKind::Minimum;
+  r.overlapping = true;
+  return r;
 }
 
 bool NoFitPolygon2::overlapping(const Vec2& t) const {
@@ -121,105 +275,12 @@ bool NoFitPolygon2::overlapping(const Vec2& t) const {
 
 Depth2 NoFitPolygon2::along(const Vec2& t, const Vec2& d_in) const {
   const Vec2 d = nonconvex2::check_and_scale(t, d_in);
-  Depth2 r;
-  r.kind = DepthKind::Directional;
-  const Impl& N = *impl_;
-  if (N.pieces.empty() || !N.overlapping(t)) return r;
-  const Ray ray = Ray::query(t, d);
-
-  Hit best;
-  bool found = false;
-  double best_value = std::numeric_limits<double>::infinity();
-  struct Job {
-    double key;
-    std::int32_t node;
-    bool operator>(const Job& o) const { return key > o.key; }
-  };
-  std::priority_queue<Job, std::vector<Job>, std::greater<Job>> jobs;
-  auto push = [&](std::int32_t node) {
-    double l0, l1;
-    if (!nonconvex2::ray_box(t, d, N.tree.nodes[node].lo, N.tree.nodes[node].hi, l0, l1) || l1 < 0) return;
-    jobs.push({l0, node});
-  };
-  push(0);
-  while (!jobs.empty()) {
-    const Job J = jobs.top();
-    jobs.pop();
-    if (found && J.key > best_value + std::abs(best_value) * 0x1p-40) break;
-    const auto& node = N.tree.nodes[J.node];
-    if (node.left >= 0) {
-      push(node.left);
-      push(node.right);
-      continue;
-    }
-    Hit h;
-    if (!first_hit(N.pieces[node.tri], ray, t, d, h)) continue;
-    if (found && compare_hits(h, best, ray, t) >= 0) continue;
-    best = h;
-    found = true;
-    best_value = exact::accurate_ratio([&](auto L) { return hit_nd(h, ray, t, L).first; },
-                                       [&](auto L) { return hit_nd(h, ray, t, L).second; });
-  }
-  if (!found) return r;  // unreachable for t ∈ O (O is bounded)
-  const double dn = nonconvex2::norm_accurate(d);
-  const double depth = std::max(0.0, best_value * dn);
-  const Line& E = best.piece->edge;
-  r = N.S.contact(E, t, depth * (d / dn), nonconvex2::end_on_ray(E, t, d));
-  r.depth = depth;
-  r.normal = d / dn;
-  r.kind = DepthKind::Directional;
-  r.overlapping = true;
-  return r;
+  return impl_->along(t, d);
 }
 
 Depth2 NoFitPolygon2::minimum(const Vec2& t) const {
   nonconvex2::check_point(t);
-  Depth2 r;
-  r.kind = DepthKind::Minimum;
-  const Impl& N = *impl_;
-  if (N.pieces.empty() || !N.overlapping(t)) return r;
-
-  Cand best;
-  bool found = false;
-  double best_value = std::numeric_limits<double>::infinity();
-  const Param proj{Param::Proj, {}};
-  struct Job {
-    double key;
-    std::int32_t node;
-    bool operator>(const Job& o) const { return key > o.key; }
-  };
-  std::priority_queue<Job, std::vector<Job>, std::greater<Job>> jobs;
-  jobs.push({0, 0});
-  while (!jobs.empty()) {
-    const Job J = jobs.top();
-    jobs.pop();
-    if (found && J.key > best_value * (1 + 0x1p-40)) break;
-    const auto& node = N.tree.nodes[J.node];
-    if (node.left >= 0) {
-      for (std::int32_t c : {node.left, node.right}) jobs.push({box_distance(t, N.tree.nodes[c].lo, N.tree.nodes[c].hi), c});
-      continue;
-    }
-    const NfpPiece& pc = N.pieces[node.tri];
-    Cand c{pc.E, proj, pc.edge};
-    if (nonconvex2::compare_params(proj, pc.lo, pc.E, t) <= 0) c.at = pc.lo;
-    else if (nonconvex2::compare_params(proj, pc.hi, pc.E, t) >= 0) c.at = pc.hi;
-    if (found && (nonconvex2::same_point(c, best) || exact_sign([&](auto L) {
-          auto [n1, d1] = nonconvex2::sq_dist(c, t, L);
-          auto [n2, d2] = nonconvex2::sq_dist(best, t, L);
-          return n1 * d2 - n2 * d1;
-        }) >= 0))
-      continue;  // not nearer (a shared vertex of two pieces is recognised symbolically)
-    best = c;
-    found = true;
-    best_value = std::sqrt(exact::accurate_ratio([&](auto L) { return nonconvex2::sq_dist(c, t, L).first; },
-                                                 [&](auto L) { return nonconvex2::sq_dist(c, t, L).second; }));
-  }
-  if (!found) return r;  // unreachable for t ∈ O
-  r = N.S.contact(best.edge, t, nonconvex2::cand_translation(best, t), nonconvex2::cand_end(best, t));
-  r.depth = best_value;
-  r.kind = DepthKind::Minimum;
-  r.overlapping = true;
-  return r;
+  return impl_->minimum(t);
 }
 
 }  // namespace pendepth

@@ -1,0 +1,152 @@
+// The per-pair no-fit polygon, floating fast path of the queries (issue 19 item 1): a flat
+// structure-of-arrays copy of ∂O in doubles, scanned linearly, whose every decision is certified
+// by a static error bound or reported undecided (the caller then decides exactly). Nothing here
+// produces an answer value: it only decides membership when that is certain and narrows σ's and
+// σ_d's exact search to the pieces that can win (nfp_query.cpp evaluates those exactly, as before).
+//
+// Data: ring edges of cl(O) from the export (nfp_rings.cpp: every vertex is the exact vertex
+// rounded to nearest), slits and isolated points likewise, and the pieces' ends NfpPiece::a, b
+// (each coordinate within a few ulps of the exact end). M = max(|t|∞, rmax) bounds every
+// coordinate involved; ε = 2⁻⁵³.
+//
+// overlapping(t) — t ∈ O iff t lies inside the rings by parity (O on the left of every ring: the
+//   winding number of t is 1 in O and 0 outside cl(O)) and on no ring edge, slit or isolated point
+//   (cl(O) \ O = ∂O). Crossing number with the rightward horizontal ray, half-open rule:
+//   * y of a vertex against t.y: rounding to nearest is monotone, so v.y > t.y ⇒ v*.y > t.y and
+//     v.y < t.y ⇒ v*.y < t.y for the exact v*; v.y = t.y is undecided;
+//   * side of t for a straddling edge: the determinant in double differs from the exact one (exact
+//     ends, ≤ ε·M away per coordinate) by ≤ 12·ε·M² (endpoint moves) + 24·ε·M² (rounding,
+//     Shewchuk's ccwerrboundA on terms ≤ 8M²) < 2⁻⁴⁷·M²; the filter uses 2⁻⁴⁴·M²;
+//   * slits: t outside a slit's box (strict, monotone as above), or off its line by the bound;
+//     points: t differs from the rounded point in a coordinate (then from the exact one).
+// nearest_candidates(t) — the distance from t to a rounded piece differs from the distance to the
+//   exact piece by the ends' displacement (≤ 2⁻⁵⁰·M·√2) and from its double evaluation by a few
+//   ulps of M: |d̂ − d*| < e = 2⁻⁴⁰·M. A piece can be nearest only if d̂ − e ≤ min d̂ + e.
+// first_hit_candidates(t, d) — for X on a piece, cross(d, X − t) and dot(d, X − t) are linear in
+//   X, so over the exact piece they lie between their values at the exact ends, each within
+//   e_d = 2⁻⁴⁰·M·(|dx| + |dy|) of the double values at the rounded ends. A piece both of whose ends
+//   are beyond e_d on one side of the line misses it; a hit at λ has dot = λ·|d|² within
+//   [min − e_d, max + e_d] of the end values; a piece with ends certified on opposite sides and
+//   min − e_d > 0 is hit at some λ ≤ (max + e_d)/|d|²: U is the least such bound, and only pieces
+//   with min − e_d ≤ U (and max + e_d > 0) can be hit first.
+// Range: used only when rmax ∈ [2⁻³⁰⁰, 2³⁰⁰] (no overflow or underflow of M², far below the
+// front door's own band, src/front/scale.hpp) and for at most kFlatMax pieces (beyond, the
+// hierarchy's O(log N) traversal wins over a linear scan); queries with |t| beyond 2³⁰⁰ are
+// undecided. Cost: one pass over the ring edges (overlap), one or two over the pieces (σ, σ_d).
+#include <algorithm>
+#include <cmath>
+
+#include "nonconvex2/nfp_impl.hpp"
+
+namespace pendepth::nonconvex2 {
+
+namespace {
+
+// Largest piece count scanned linearly (measured: docs/benchmarks.md, star/100 has ~600 pieces).
+constexpr std::size_t kFlatMax = 1024;
+constexpr double kLow = 0x1p-300, kHigh = 0x1p300;
+
+double bound_m(const Vec2& t, double rmax) { return std::max({std::abs(t.x()), std::abs(t.y()), rmax}); }
+
+}  // namespace
+
+void NfpFlat::build(const NoFitPolygon2::Impl& N) {
+  double r = 0;
+  auto see = [&](const Vec2& v) { r = std::max({r, std::abs(v.x()), std::abs(v.y())}); };
+  for (const auto& poly : N.polys)
+    for (const auto& ring : poly)
+      for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+        rx0.push_back(ring[j].x()), ry0.push_back(ring[j].y());
+        rx1.push_back(ring[i].x()), ry1.push_back(ring[i].y());
+        see(ring[i]);
+      }
+  slits = N.slits;
+  points = N.points;
+  for (const auto& s : slits) see(s[0]), see(s[1]);
+  for (const Vec2& p : points) see(p);
+  for (const NfpPiece& pc : N.pieces) {
+    px0.push_back(pc.a.x()), py0.push_back(pc.a.y());
+    px1.push_back(pc.b.x()), py1.push_back(pc.b.y());
+    see(pc.a), see(pc.b);
+  }
+  rmax = r;
+  usable = !N.pieces.empty() && N.pieces.size() <= kFlatMax && r >= kLow && r <= kHigh;
+}
+
+int NfpFlat::overlapping(const Vec2& t) const {
+  const double tx = t.x(), ty = t.y(), M = bound_m(t, rmax);
+  if (!(M <= kHigh)) return -1;
+  const double B = 0x1p-44 * M * M;
+  // Branch-free over the edges: `close` collects the undecided cases.
+  bool close = false, in = false;
+  const std::size_t n = rx0.size();
+  const double *x0 = rx0.data(), *y0 = ry0.data(), *x1 = rx1.data(), *y1 = ry1.data();
+  for (std::size_t k = 0; k < n; ++k) {
+    const bool above0 = y0[k] > ty, above1 = y1[k] > ty;
+    close |= (y0[k] == ty) | (y1[k] == ty);
+    if (above0 == above1) continue;
+    const double det = (x1[k] - x0[k]) * (ty - y0[k]) - (y1[k] - y0[k]) * (tx - x0[k]);
+    close |= std::abs(det) <= B;
+    in ^= (det > 0) == above1;
+  }
+  if (close) return -1;
+  if (!in) return 0;
+  for (const Vec2& p : points)
+    if (p.x() == tx && p.y() == ty) return -1;
+  for (const auto& s : slits) {
+    const Vec2 &a = s[0], &b = s[1];
+    if (tx < std::min(a.x(), b.x()) || tx > std::max(a.x(), b.x()) || ty < std::min(a.y(), b.y()) || ty > std::max(a.y(), b.y()))
+      continue;
+    const double det = (b.x() - a.x()) * (ty - a.y()) - (b.y() - a.y()) * (tx - a.x());
+    if (std::abs(det) <= B) return -1;
+  }
+  return 1;
+}
+
+void NfpFlat::nearest_candidates(const Vec2& t, std::vector<std::uint32_t>& out) const {
+  const double tx = t.x(), ty = t.y(), e = 0x1p-40 * bound_m(t, rmax);
+  const std::size_t n = px0.size();
+  const double *x0 = px0.data(), *y0 = py0.data(), *x1 = px1.data(), *y1 = py1.data();
+  auto sq = [&](std::size_t k) {
+    const double wx = tx - x0[k], wy = ty - y0[k], ex = x1[k] - x0[k], ey = y1[k] - y0[k];
+    const double dot = wx * ex + wy * ey, l2 = ex * ex + ey * ey;
+    const double s = dot > 0 ? (dot < l2 ? dot / l2 : 1.0) : 0.0;
+    const double dx = wx - s * ex, dy = wy - s * ey;
+    return dx * dx + dy * dy;
+  };
+  double best = INFINITY;
+  for (std::size_t k = 0; k < n; ++k) best = std::min(best, sq(k));
+  const double r = std::sqrt(best) + 2 * e;
+  const double thr = r * r * (1 + 0x1p-40);
+  for (std::size_t k = 0; k < n; ++k)
+    if (sq(k) <= thr) out.push_back(std::uint32_t(k));
+}
+
+void NfpFlat::first_hit_candidates(const Vec2& t, const Vec2& d, std::vector<std::uint32_t>& out) const {
+  const double tx = t.x(), ty = t.y(), dx = d.x(), dy = d.y();
+  const double e = 0x1p-40 * bound_m(t, rmax) * (std::abs(dx) + std::abs(dy));
+  const std::size_t n = px0.size();
+  const double *x0 = px0.data(), *y0 = py0.data(), *x1 = px1.data(), *y1 = py1.data();
+  double U = INFINITY;
+  const std::size_t first = out.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const double ax = x0[k] - tx, ay = y0[k] - ty, bx = x1[k] - tx, by = y1[k] - ty;
+    const double ca = dx * ay - dy * ax, cb = dx * by - dy * bx;
+    if ((ca > e && cb > e) || (ca < -e && cb < -e)) continue;  // misses the line
+    const double pa = dx * ax + dy * ay, pb = dx * bx + dy * by;
+    const double lo = std::min(pa, pb) - e, hi = std::max(pa, pb) + e;
+    if (hi <= 0) continue;  // behind t
+    if (lo > 0 && ((ca > e && cb < -e) || (ca < -e && cb > e))) U = std::min(U, hi);
+    if (lo <= U) out.push_back(std::uint32_t(k));
+  }
+  // Keep those still within the final U (in increasing index order).
+  std::size_t w = first;
+  for (std::size_t i = first; i < out.size(); ++i) {
+    const std::size_t k = out[i];
+    const double pa = dx * (x0[k] - tx) + dy * (y0[k] - ty), pb = dx * (x1[k] - tx) + dy * (y1[k] - ty);
+    if (std::min(pa, pb) - e <= U) out[w++] = out[i];
+  }
+  out.resize(w);
+}
+
+}  // namespace pendepth::nonconvex2
