@@ -104,22 +104,33 @@ int NfpFlat::overlapping(const Vec2& t) const {
 }
 
 void NfpFlat::nearest_candidates(const Vec2& t, std::vector<std::uint32_t>& out) const {
-  const double tx = t.x(), ty = t.y(), e = 0x1p-40 * bound_m(t, rmax);
+  const double tx = t.x(), ty = t.y(), M = bound_m(t, rmax), e = 0x1p-40 * M, B = 0x1p-40 * M * M;
   const std::size_t n = px0.size();
   const double *x0 = px0.data(), *y0 = py0.data(), *x1 = px1.data(), *y1 = py1.data();
-  auto sq = [&](std::size_t k) {
+  thread_local std::vector<double> sq, dots, lens;
+  sq.resize(n), dots.resize(n), lens.resize(n);
+  double* q = sq.data();
+  double* dt = dots.data();
+  double* ln = lens.data();
+  for (std::size_t k = 0; k < n; ++k) {
     const double wx = tx - x0[k], wy = ty - y0[k], ex = x1[k] - x0[k], ey = y1[k] - y0[k];
     const double dot = wx * ex + wy * ey, l2 = ex * ex + ey * ey;
     const double s = dot > 0 ? (dot < l2 ? dot / l2 : 1.0) : 0.0;
     const double dx = wx - s * ex, dy = wy - s * ey;
-    return dx * dx + dy * dy;
-  };
+    q[k] = dx * dx + dy * dy;
+    dt[k] = dot, ln[k] = l2;
+  }
   double best = INFINITY;
-  for (std::size_t k = 0; k < n; ++k) best = std::min(best, sq(k));
+  for (std::size_t k = 0; k < n; ++k) best = std::min(best, q[k]);
   const double r = std::sqrt(best) + 2 * e;
   const double thr = r * r * (1 + 0x1p-40);
   for (std::size_t k = 0; k < n; ++k)
-    if (sq(k) <= thr) out.push_back(std::uint32_t(k));
+    if (q[k] <= thr) {
+      // dot(t − a, b − a) and dot(t − b, a − b) beyond B: the projection of t falls strictly
+      // inside the exact piece (the same error reasoning as for the determinant).
+      const bool inside = dt[k] > B && ln[k] - dt[k] > B;
+      out.push_back(std::uint32_t(k) | (inside ? kInside : 0u));
+    }
 }
 
 void NfpFlat::first_hit_candidates(const Vec2& t, const Vec2& d, std::vector<std::uint32_t>& out) const {
@@ -128,6 +139,8 @@ void NfpFlat::first_hit_candidates(const Vec2& t, const Vec2& d, std::vector<std
   const std::size_t n = px0.size();
   const double *x0 = px0.data(), *y0 = py0.data(), *x1 = px1.data(), *y1 = py1.data();
   double U = INFINITY;
+  thread_local std::vector<double> los;
+  los.clear();
   const std::size_t first = out.size();
   for (std::size_t k = 0; k < n; ++k) {
     const double ax = x0[k] - tx, ay = y0[k] - ty, bx = x1[k] - tx, by = y1[k] - ty;
@@ -136,16 +149,14 @@ void NfpFlat::first_hit_candidates(const Vec2& t, const Vec2& d, std::vector<std
     const double pa = dx * ax + dy * ay, pb = dx * bx + dy * by;
     const double lo = std::min(pa, pb) - e, hi = std::max(pa, pb) + e;
     if (hi <= 0) continue;  // behind t
-    if (lo > 0 && ((ca > e && cb < -e) || (ca < -e && cb > e))) U = std::min(U, hi);
-    if (lo <= U) out.push_back(std::uint32_t(k));
+    const bool crosses = lo > 0 && ((ca > e && cb < -e) || (ca < -e && cb > e));
+    if (crosses) U = std::min(U, hi);
+    if (lo <= U) out.push_back(std::uint32_t(k) | (crosses ? kInside : 0u)), los.push_back(lo);
   }
   // Keep those still within the final U (in increasing index order).
   std::size_t w = first;
-  for (std::size_t i = first; i < out.size(); ++i) {
-    const std::size_t k = out[i];
-    const double pa = dx * (x0[k] - tx) + dy * (y0[k] - ty), pb = dx * (x1[k] - tx) + dy * (y1[k] - ty);
-    if (std::min(pa, pb) - e <= U) out[w++] = out[i];
-  }
+  for (std::size_t i = first; i < out.size(); ++i)
+    if (los[i - first] <= U) out[w++] = out[i];
   out.resize(w);
 }
 

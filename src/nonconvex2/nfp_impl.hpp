@@ -81,11 +81,15 @@ struct NfpFlat {
   /// t ∈ O: 1 or 0 when certified, -1 when a decision is too close to call (t on or ulps from a
   /// ring edge, a slit, an isolated point, or level with a ring vertex).
   int overlapping(const Vec2& t) const;
+  /// Flag on a candidate index (indices stay below it): certified interior case (below).
+  static constexpr std::uint32_t kInside = 1u << 31;
   /// Appends to `out`, in increasing order, the indices of every piece whose exact distance to t
-  /// can be the minimum (a superset of the exact nearest pieces; usually one).
+  /// can be the minimum (a superset of the exact nearest pieces; usually one), flagged kInside when
+  /// t's projection on the piece's line falls certainly strictly inside the piece.
   void nearest_candidates(const Vec2& t, std::vector<std::uint32_t>& out) const;
   /// Appends, in increasing order, every piece the ray t + λ·d (λ > 0) can hit first (a superset
-  /// of the exact first pieces).
+  /// of the exact first pieces), flagged kInside when the ray certainly crosses the piece's
+  /// interior at some λ > 0 (the piece's ends strictly on either side of the ray's line).
   void first_hit_candidates(const Vec2& t, const Vec2& d, std::vector<std::uint32_t>& out) const;
 };
 

@@ -29,6 +29,7 @@ namespace pendepth {
 using exact::exact_sign;
 using nonconvex2::Cand;
 using nonconvex2::Line;
+using nonconvex2::NfpFlat;
 using nonconvex2::NfpPiece;
 using nonconvex2::Param;
 using nonconvex2::Ray;
@@ -136,10 +137,11 @@ struct AlongBest {
   Hit hit;
   std::uint32_t index = 0;
   bool found = false;
-  double value = std::numeric_limits<double>::infinity();
-  void consider(const NoFitPolygon2::Impl& N, std::uint32_t k, const Ray& ray, const Vec2& t, const Vec2& d) {
+  // `crosses`: certified by the fast path (NfpFlat::kInside), so first_hit's answer is known.
+  void consider(const NoFitPolygon2::Impl& N, std::uint32_t k, const Ray& ray, const Vec2& t, const Vec2& d, bool crosses = false) {
     Hit h;
-    if (!first_hit(N.pieces[k], ray, t, d, h)) return;
+    if (crosses) h = Hit{&N.pieces[k], false, {}};
+    else if (!first_hit(N.pieces[k], ray, t, d, h)) return;
     if (found) {
       const int c = compare_hits(h, hit, ray, t);
       if (c > 0 || (c == 0 && k > index)) return;
@@ -147,8 +149,11 @@ struct AlongBest {
     hit = h;
     index = k;
     found = true;
-    value = exact::accurate_ratio([&](auto L) { return hit_nd(h, ray, t, L).first; },
-                                  [&](auto L) { return hit_nd(h, ray, t, L).second; });
+  }
+  // λ of the best hit (a function of the hit alone, evaluated once).
+  double value(const Ray& ray, const Vec2& t) const {
+    return exact::accurate_ratio([&](auto L) { return hit_nd(hit, ray, t, L).first; },
+                                 [&](auto L) { return hit_nd(hit, ray, t, L).second; });
   }
 };
 
@@ -157,12 +162,14 @@ struct MinBest {
   Cand cand;
   std::uint32_t index = 0;
   bool found = false;
-  double value = std::numeric_limits<double>::infinity();
-  void consider(const NoFitPolygon2::Impl& N, std::uint32_t k, const Vec2& t) {
+  bool inside = false;  // cand is t's projection, strictly inside its piece (so at no end of its edge)
+  // `inside`: t's projection certified strictly inside the piece by the fast path (kInside).
+  void consider(const NoFitPolygon2::Impl& N, std::uint32_t k, const Vec2& t, bool proj_inside = false) {
     const NfpPiece& pc = N.pieces[k];
     const Param proj{Param::Proj, {}};
     Cand c{pc.E, proj, pc.edge};
-    if (nonconvex2::compare_params(proj, pc.lo, pc.E, t) <= 0) c.at = pc.lo;
+    if (proj_inside) {
+    } else if (nonconvex2::compare_params(proj, pc.lo, pc.E, t) <= 0) c.at = pc.lo;
     else if (nonconvex2::compare_params(proj, pc.hi, pc.E, t) >= 0) c.at = pc.hi;
     if (found) {
       // A shared vertex of two pieces is recognised symbolically.
@@ -176,8 +183,12 @@ struct MinBest {
     cand = c;
     index = k;
     found = true;
-    value = std::sqrt(exact::accurate_ratio([&](auto L) { return nonconvex2::sq_dist(c, t, L).first; },
-                                            [&](auto L) { return nonconvex2::sq_dist(c, t, L).second; }));
+    inside = proj_inside;
+  }
+  // σ of the best candidate (a function of the candidate alone, evaluated once).
+  double value(const Vec2& t) const {
+    return std::sqrt(exact::accurate_ratio([&](auto L) { return nonconvex2::sq_dist(cand, t, L).first; },
+                                           [&](auto L) { return nonconvex2::sq_dist(cand, t, L).second; }));
   }
 };
 
@@ -195,10 +206,11 @@ Depth2 NoFitPolygon2::Impl::along(const Vec2& t, const Vec2& d, bool exact_path)
   if (pieces.empty() || !(exact_path ? overlapping_exact(t) : overlapping(t))) return r;
   const Ray ray = Ray::query(t, d);
   AlongBest best;
+  double value = std::numeric_limits<double>::infinity();
   if (flat.usable && !exact_path) {
     std::vector<std::uint32_t>& cand = scratch();
     flat.first_hit_candidates(t, d, cand);
-    for (std::uint32_t k : cand) best.consider(*this, k, ray, t, d);
+    for (std::uint32_t k : cand) best.consider(*this, k & ~NfpFlat::kInside, ray, t, d, (k & NfpFlat::kInside) != 0);
   } else {
     // Best-first traversal of the piece hierarchy by conservative box entry λ.
     std::priority_queue<Job, std::vector<Job>, std::greater<Job>> jobs;
@@ -211,19 +223,23 @@ Depth2 NoFitPolygon2::Impl::along(const Vec2& t, const Vec2& d, bool exact_path)
     while (!jobs.empty()) {
       const Job J = jobs.top();
       jobs.pop();
-      if (best.found && J.key > best.value + std::abs(best.value) * 0x1p-40) break;
+      if (best.found && J.key > value + std::abs(value) * 0x1p-40) break;
       const auto& node = tree.nodes[J.node];
       if (node.left >= 0) {
         push(node.left);
         push(node.right);
         continue;
       }
+      const std::uint32_t before = best.index;
+      const bool had = best.found;
       best.consider(*this, node.tri, ray, t, d);
+      if (best.found && (!had || best.index != before)) value = best.value(ray, t);
     }
   }
   if (!best.found) return r;  // unreachable for t ∈ O (O is bounded)
+  if (!exact_path && flat.usable) value = best.value(ray, t);
   const double dn = nonconvex2::norm_accurate(d);
-  const double depth = std::max(0.0, best.value * dn);
+  const double depth = std::max(0.0, value * dn);
   const Line& E = best.hit.piece->edge;
   r = S.contact(E, t, depth * (d / dn), nonconvex2::end_on_ray(E, t, d));
   r.depth = depth;
@@ -238,10 +254,11 @@ Depth2 NoFitPolygon2::Impl::minimum(const Vec2& t, bool exact_path) const {
   r.kind = DepthKind::Minimum;
   if (pieces.empty() || !(exact_path ? overlapping_exact(t) : overlapping(t))) return r;
   MinBest best;
+  double value = std::numeric_limits<double>::infinity();
   if (flat.usable && !exact_path) {
     std::vector<std::uint32_t>& cand = scratch();
     flat.nearest_candidates(t, cand);
-    for (std::uint32_t k : cand) best.consider(*this, k, t);
+    for (std::uint32_t k : cand) best.consider(*this, k & ~NfpFlat::kInside, t, (k & NfpFlat::kInside) != 0);
   } else {
     // Branch and bound on the hierarchy with conservative box distances; every piece as near as
     // the best is visited (its box key is below its distance), so ties resolve by index.
@@ -250,19 +267,24 @@ Depth2 NoFitPolygon2::Impl::minimum(const Vec2& t, bool exact_path) const {
     while (!jobs.empty()) {
       const Job J = jobs.top();
       jobs.pop();
-      if (best.found && J.key > best.value * (1 + 0x1p-40)) break;
+      if (best.found && J.key > value * (1 + 0x1p-40)) break;
       const auto& node = tree.nodes[J.node];
       if (node.left >= 0) {
         for (std::int32_t c : {node.left, node.right}) jobs.push({box_distance(t, tree.nodes[c].lo, tree.nodes[c].hi), c});
         continue;
       }
+      const std::uint32_t before = best.index;
+      const bool had = best.found;
       best.consider(*this, node.tri, t);
+      if (best.found && (!had || best.index != before)) value = best.value(t);
     }
   }
   if (!best.found) return r;  // unreachable for t ∈ O
+  if (!exact_path && flat.usable) value = best.value(t);
   const Cand& c = best.cand;
-  r = S.contact(c.edge, t, nonconvex2::cand_translation(c, t), nonconvex2::cand_end(c, t));
-  r.depth = best.value;
+  // A projection strictly inside its piece is at no end of the edge (the piece lies in it).
+  r = S.contact(c.edge, t, nonconvex2::cand_translation(c, t), best.inside ? -1 : nonconvex2::cand_end(c, t));
+  r.depth = value;
   r.kind = DepthKind::Minimum;
   r.overlapping = true;
   return r;
