@@ -152,8 +152,7 @@ struct AlongBest {
   }
   // λ of the best hit (a function of the hit alone, evaluated once).
   double value(const Ray& ray, const Vec2& t) const {
-    return exact::accurate_ratio([&](auto L) { return hit_nd(hit, ray, t, L).first; },
-                                 [&](auto L) { return hit_nd(hit, ray, t, L).second; });
+    return exact::accurate_ratio_of([&](auto L) { return hit_nd(hit, ray, t, L); });
   }
 };
 
@@ -187,8 +186,7 @@ struct MinBest {
   }
   // σ of the best candidate (a function of the candidate alone, evaluated once).
   double value(const Vec2& t) const {
-    return std::sqrt(exact::accurate_ratio([&](auto L) { return nonconvex2::sq_dist(cand, t, L).first; },
-                                           [&](auto L) { return nonconvex2::sq_dist(cand, t, L).second; }));
+    return std::sqrt(exact::accurate_ratio_of([&](auto L) { return nonconvex2::sq_dist(cand, t, L); }));
   }
 };
 
