@@ -30,9 +30,12 @@
 //   min − e_d > 0 is hit at some λ ≤ (max + e_d)/|d|²: U is the least such bound, and only pieces
 //   with min − e_d ≤ U (and max + e_d > 0) can be hit first.
 // Range: used only when rmax ∈ [2⁻³⁰⁰, 2³⁰⁰] (no overflow or underflow of M², far below the
-// front door's own band, src/front/scale.hpp) and for at most kFlatMax pieces (beyond, the
+// front door's own band, src/front/scale.hpp); σ and σ_d for at most kFlatMax pieces (beyond, the
 // hierarchy's O(log N) traversal wins over a linear scan); queries with |t| beyond 2³⁰⁰ are
-// undecided. Cost: one pass over the ring edges (overlap), one or two over the pieces (σ, σ_d).
+// undecided. Cost: one pass over the ring edges (overlap) — above kSlabMin edges only over those
+// of t's horizontal slab (about 4 edges per slab, at most 8 copies per edge; when tall edges leave
+// a slab with more than a sixteenth of the edges, the overlap test stays the exact pair-sum test)
+// — and one or two passes over the pieces (σ, σ_d).
 #include <algorithm>
 #include <cmath>
 
@@ -45,6 +48,8 @@ namespace {
 // Largest piece count scanned linearly (measured: docs/benchmarks.md, star/100 has ~600 pieces).
 constexpr std::size_t kFlatMax = 1024;
 constexpr double kLow = 0x1p-300, kHigh = 0x1p300;
+// Ring edges scanned whole up to this count; beyond, only those of t's horizontal slab.
+constexpr std::size_t kSlabMin = 64;
 
 double bound_m(const Vec2& t, double rmax) { return std::max({std::abs(t.x()), std::abs(t.y()), rmax}); }
 
@@ -71,17 +76,73 @@ void NfpFlat::build(const NoFitPolygon2::Impl& N) {
   }
   rmax = r;
   usable = !N.pieces.empty() && N.pieces.size() <= kFlatMax && r >= kLow && r <= kHigh;
+  overlap_usable = !N.pieces.empty() && !rx0.empty() && r >= kLow && r <= kHigh;
+  if (rx0.size() <= kSlabMin) return;
+  // Slabs: about 4 edges per slab; an edge goes to every slab from slab_of(its lowest y) to
+  // slab_of(its highest y). slab_of is monotone (a subtraction and a product by positive
+  // constants, then floor), so an edge whose y range holds t.y is in slab_of(t.y).
+  // Tall edges (a comb's teeth) span many slabs: the copies are capped at 8 per edge (fewer,
+  // taller slabs), and when a slab still holds more than a sixteenth of the edges the slabs do not
+  // pay and the exact pair-sum test stays in charge (overlap_usable false).
+  const std::size_t E = rx0.size();
+  ylo = *std::min_element(ry0.begin(), ry0.end()), yhi = *std::max_element(ry0.begin(), ry0.end());
+  std::size_t count = std::max<std::size_t>(1, E / 4);
+  std::vector<std::uint32_t> first;
+  auto range = [&](std::size_t k, std::size_t& a, std::size_t& b) {
+    a = slab_of(std::min(ry0[k], ry1[k]), count), b = slab_of(std::max(ry0[k], ry1[k]), count);
+  };
+  for (;; count = std::max<std::size_t>(1, count / 2)) {
+    yscale = yhi > ylo ? double(count) / (yhi - ylo) : 0;
+    first.assign(count + 1, 0);
+    std::size_t total = 0;
+    for (std::size_t k = 0; k < E; ++k) {
+      std::size_t a, b;
+      range(k, a, b);
+      for (std::size_t s = a; s <= b; ++s) ++first[s + 1];
+      total += b - a + 1;
+    }
+    if (total <= 8 * E || count == 1) break;
+  }
+  std::size_t widest = 0;
+  for (std::size_t s = 0; s < count; ++s) widest = std::max<std::size_t>(widest, first[s + 1]);
+  if (widest > std::max<std::size_t>(kSlabMin, E / 16)) {
+    overlap_usable = false;
+    return;
+  }
+  for (std::size_t s = 0; s < count; ++s) first[s + 1] += first[s];
+  std::vector<double> x0(first[count]), y0(first[count]), x1(first[count]), y1(first[count]);
+  std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+  for (std::size_t k = 0; k < E; ++k) {
+    std::size_t a, b;
+    range(k, a, b);
+    for (std::size_t s = a; s <= b; ++s) {
+      const std::uint32_t i = fill[s]++;
+      x0[i] = rx0[k], y0[i] = ry0[k], x1[i] = rx1[k], y1[i] = ry1[k];
+    }
+  }
+  rx0.swap(x0), ry0.swap(y0), rx1.swap(x1), ry1.swap(y1);
+  slab.swap(first);
+}
+
+std::size_t NfpFlat::slab_of(double y, std::size_t count) const {
+  const double s = std::floor((y - ylo) * yscale);
+  return s <= 0 ? 0 : s >= double(count - 1) ? count - 1 : std::size_t(s);
 }
 
 int NfpFlat::overlapping(const Vec2& t) const {
   const double tx = t.x(), ty = t.y(), M = bound_m(t, rmax);
   if (!(M <= kHigh)) return -1;
   const double B = 0x1p-44 * M * M;
-  // Branch-free over the edges: `close` collects the undecided cases.
+  // Branch-free over the edges (of t's slab): `close` collects the undecided cases.
   bool close = false, in = false;
-  const std::size_t n = rx0.size();
+  std::size_t k0 = 0, n = rx0.size();
+  if (!slab.empty()) {
+    if (ty < ylo || ty > yhi) return 0;  // below or above every ring vertex (monotone rounding)
+    const std::size_t s = slab_of(ty, slab.size() - 1);
+    k0 = slab[s], n = slab[s + 1];
+  }
   const double *x0 = rx0.data(), *y0 = ry0.data(), *x1 = rx1.data(), *y1 = ry1.data();
-  for (std::size_t k = 0; k < n; ++k) {
+  for (std::size_t k = k0; k < n; ++k) {
     const bool above0 = y0[k] > ty, above1 = y1[k] > ty;
     close |= (y0[k] == ty) | (y1[k] == ty);
     if (above0 == above1) continue;

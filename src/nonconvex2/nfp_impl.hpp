@@ -71,6 +71,11 @@ namespace nonconvex2 {
 /// to nearest); piece ends: NfpPiece::a, b (each coordinate within a few ulps of the exact end).
 struct NfpFlat {
   std::vector<double> rx0, ry0, rx1, ry1;  // ring edges of cl(O), O on their left
+  // Above kSlabMin ring edges: horizontal slabs of equal height over the rings' y range, slab s
+  // holding (copies of) every edge whose y range meets it, edges of slab s at [slab[s], slab[s+1]).
+  std::vector<std::uint32_t> slab;
+  double ylo = 0, yhi = 0, yscale = 0;
+  bool overlap_usable = false;  // the overlap filter applies (magnitudes in range), any size
   std::vector<double> px0, py0, px1, py1;  // pieces (same indices as Impl::pieces)
   std::vector<std::array<Vec2, 2>> slits;   // copies of the export's, next to the edges
   std::vector<Vec2> points;
@@ -78,6 +83,7 @@ struct NfpFlat {
   bool usable = false;                     // sizes and magnitudes inside the filters' range
 
   void build(const NoFitPolygon2::Impl& nfp);
+  std::size_t slab_of(double y, std::size_t count) const;
   /// t ∈ O: 1 or 0 when certified, -1 when a decision is too close to call (t on or ulps from a
   /// ring edge, a slit, an isolated point, or level with a ring vertex).
   int overlapping(const Vec2& t) const;

@@ -116,7 +116,7 @@ bool NoFitPolygon2::Impl::overlapping_exact(const Vec2& t) const {
 }
 
 bool NoFitPolygon2::Impl::overlapping(const Vec2& t) const {
-  if (flat.usable) {
+  if (flat.overlap_usable) {
     const int f = flat.overlapping(t);
     if (f >= 0) return f == 1;
   }

@@ -207,3 +207,21 @@ TEST(NfpFastPath, RandomStars) {
 }
 
 }  // namespace
+
+namespace {
+
+// Larger no-fit polygons: the overlap filter scans only t's horizontal slab of ring edges.
+TEST(NfpFastPath, LargeRingsUseSlabs) {
+  std::mt19937_64 rng(19004);
+  for (int k = 0; k < 3; ++k) {
+    const Polygon P = nonconvex2_test::star(rng, 60, 50, 100, k == 1);
+    const Polygon Q = nonconvex2_test::star(rng, 24, 5, 12, k == 1);
+    const NoFitPolygon2 nfp(P, Q);
+    const auto& F = nfp_impl(nfp).flat;
+    ASSERT_FALSE(F.slab.empty()) << k;
+    ASSERT_TRUE(F.overlap_usable) << k;
+    check_pair(P, Q, rng, 300, "large stars " + std::to_string(k));
+  }
+}
+
+}  // namespace
