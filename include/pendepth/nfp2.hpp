@@ -37,14 +37,15 @@
 // part and split point (a few sums on real pieces, worst O(nm)); a candidate met by more than 256
 // others is cut instead (O(nm)), so the worst case stays O(n²m²) exact tests, the bound of the
 // explicit convolution (DHS §6); export O(N log N) filtered exact predicates. Queries (issue 19
-// item 1, src/nonconvex2/nfp_fast.cpp): up to 1024 pieces, a floating fast path over flat arrays
-// of ∂O — overlapping(t) by parity over the ring edges, σ / σ_d by a scan for the pieces that can
-// win — whose decisions are certified by static error bounds; only the winning piece(s) are then
-// evaluated exactly, and undecided overlap tests (t on or ulps from ∂O, level with a vertex) fall
-// back to PairDepth2's exact pair-sum test: O(N) flops plus O(1) exact work per query on real
-// pieces. Beyond 1024 pieces along/minimum visit O(log N + k) hierarchy nodes for k boxes near the
-// answer (worst O(N)) and overlapping(t) is the pair-sum test. Pieces exactly equally near (or hit
-// at the same λ) report the lowest piece index's features.
+// item 1, src/nonconvex2/nfp_fast.cpp): a floating fast path over flat arrays of ∂O whose every
+// decision is certified by a static error bound, exact predicates only where it is too close to
+// call. overlapping(t): parity over the ring edges (above 64 edges only those of t's horizontal
+// slab, O(√N)-ish on round shapes), the exact pair-sum test when undecided (t on or ulps from
+// ∂O, level with a vertex) or when slabs do not pay (tall edges). σ / σ_d up to 256 pieces: a
+// scan for the pieces that can win, then only those evaluated exactly (O(N) flops plus O(1)
+// exact work on real pieces); beyond, a best-first traversal of the piece hierarchy, O(log N + k)
+// node visits for k boxes near the answer (worst O(N)). Pieces exactly equally near (or hit at
+// the same λ) report the lowest piece index's features.
 // Build and query times, and the comparison with CGAL's minkowski_sum_2: docs/benchmarks.md.
 // Internal inconsistencies of the pieces (a chain that does not close, a hole outside every outer
 // ring) throw std::logic_error rather than export a wrong polygon; no test input has produced one.

@@ -45,8 +45,9 @@ namespace pendepth::nonconvex2 {
 
 namespace {
 
-// Largest piece count scanned linearly (measured: docs/benchmarks.md, star/100 has ~600 pieces).
-constexpr std::size_t kFlatMax = 1024;
+// Largest piece count scanned linearly for σ and σ_d: at 776 pieces (100 × 100 stars) the
+// hierarchy was faster (σ 2.5 against 3.1 µs, σ_d 0.8 against 1.4 µs), at 117 the scan.
+constexpr std::size_t kFlatMax = 256;
 constexpr double kLow = 0x1p-300, kHigh = 0x1p300;
 // Ring edges scanned whole up to this count; beyond, only those of t's horizontal slab.
 constexpr std::size_t kSlabMin = 64;

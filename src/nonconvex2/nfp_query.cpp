@@ -1,21 +1,26 @@
-// The per-pair no-fit polygon, queries (issue 5 item 4): σ_d and σ on the stored pieces of ∂O
-// (nfp_build.cpp), the overlap test on the pair sums.
+// The per-pair no-fit polygon, queries (issue 5 item 4; fast path issue 19 item 1): σ_d and σ on
+// the stored pieces of ∂O (nfp_build.cpp), the overlap test on the rings and the pair sums.
 //
-// overlapping(t): the exact pair-sum test of PairDepth2 (dual descent to the sums whose box holds
-//   t; a handful on real pieces). Departure from a ray-parity test on ∂O: parity is ambiguous
-//   exactly where it matters (slits, isolated points, rays through vertices) while the sum test is
-//   exact, symbolic and already O(log)-ish on real pieces.
+// overlapping(t): the certified floating parity test on the rings, slits and points
+//   (nfp_fast.cpp); where it cannot decide (t on or ulps from ∂O, level with a ring vertex), the
+//   exact pair-sum test of PairDepth2 (dual descent to the sums whose box holds t), which is
+//   symbolic exactly where parity is ambiguous (slits, isolated points, rays through vertices).
 // along(t, d), t ∈ O: the component of the line inside O containing t ends at the first point of
 //   ∂O hit by the ray (pieces are closed subsets of ℝ² \ O and every exit point lies on one), so
-//   σ_d = min over pieces of the first λ > 0 where the ray meets the closed piece. Best-first
-//   traversal of the piece hierarchy by conservative box entry λ; the hits are compared exactly
-//   (the crossing with the piece's line, or its nearer end when the ray runs along it).
-// minimum(t), t ∈ O: σ = min over pieces of the exact distance from t to the closed piece; branch
-//   and bound on the hierarchy with conservative box distances, exact comparisons of squared
-//   distances (edge_cut.hpp, the same candidates as PairDepth2::minimum).
-// Results go through PairDepth2::Impl::contact, so kinds, features and witnesses follow
-// depth2_polygon_polygon.hpp. Cost per query: O(log N + k) node visits for N pieces and k boxes near the
-// answer (worst case O(N)), plus the overlap test.
+//   σ_d = min over pieces of the first λ > 0 where the ray meets the closed piece. Up to 256
+//   pieces, the floating scan names the pieces that can be hit first (nfp_fast.cpp) and only those
+//   are tested exactly; beyond, best-first traversal of the piece hierarchy by conservative box
+//   entry λ. Hits are compared exactly (the crossing with the piece's line, or its nearer end
+//   when the ray runs along it); equal hits go to the lowest piece index.
+// minimum(t), t ∈ O: σ = min over pieces of the exact distance from t to the closed piece; the
+//   floating scan's candidates (up to 256 pieces) or branch and bound on the hierarchy with
+//   conservative box distances; exact comparisons of squared distances (edge_cut.hpp, the same
+//   candidates as PairDepth2::minimum); equally near pieces go to the lowest index.
+// Both ways every piece that can win is compared exactly, so the fast and the exact path (the
+// `exact_path` flag, kept for the tests) give the same answer bit for bit. Results go through
+// PairDepth2::Impl::contact, so kinds, features and witnesses follow depth2_polygon_polygon.hpp.
+// Cost per query: O(N) flops and O(1) exact evaluations on real pieces, O(log N + k) node visits
+// for N > 256 pieces and k boxes near the answer (worst case O(N)), plus the overlap test.
 #include <cmath>
 #include <limits>
 #include <queue>
