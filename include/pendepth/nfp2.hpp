@@ -39,7 +39,7 @@
 // explicit convolution (DHS §6); export O(N log N) filtered exact predicates. Queries (issue 19
 // item 1, src/nonconvex2/nfp_fast.cpp): a floating fast path over flat arrays of ∂O whose every
 // decision is certified by a static error bound, exact predicates only where it is too close to
-// call. overlapping(t): parity over the ring edges (above 64 edges only those of t's horizontal
+// call. overlapping(t): parity over the ring edges (above 16 edges only those of t's horizontal
 // slab, O(√N)-ish on round shapes), the exact pair-sum test when undecided (t on or ulps from
 // ∂O, level with a vertex) or when slabs do not pay (tall edges). σ / σ_d up to 256 pieces: a
 // scan for the pieces that can win, then only those evaluated exactly (O(N) flops plus O(1)

@@ -34,7 +34,7 @@
 // hierarchy's O(log N) traversal wins over a linear scan); queries with |t| beyond 2³⁰⁰ are
 // undecided. Cost: one pass over the ring edges (overlap) — above kSlabMin edges only over those
 // of t's horizontal slab (about 4 edges per slab, at most 8 copies per edge; when tall edges leave
-// a slab with more than a sixteenth of the edges, the overlap test stays the exact pair-sum test)
+// a slab with more than a sixteenth of the edges, all edges up to 256, else the exact pair-sum test)
 // — and one or two passes over the pieces (σ, σ_d).
 #include <algorithm>
 #include <cmath>
@@ -50,7 +50,7 @@ namespace {
 constexpr std::size_t kFlatMax = 256;
 constexpr double kLow = 0x1p-300, kHigh = 0x1p300;
 // Ring edges scanned whole up to this count; beyond, only those of t's horizontal slab.
-constexpr std::size_t kSlabMin = 64;
+constexpr std::size_t kSlabMin = 16;
 
 double bound_m(const Vec2& t, double rmax) { return std::max({std::abs(t.x()), std::abs(t.y()), rmax}); }
 
@@ -83,8 +83,9 @@ void NfpFlat::build(const NoFitPolygon2::Impl& N) {
   // slab_of(its highest y). slab_of is monotone (a subtraction and a product by positive
   // constants, then floor), so an edge whose y range holds t.y is in slab_of(t.y).
   // Tall edges (a comb's teeth) span many slabs: the copies are capped at 8 per edge (fewer,
-  // taller slabs), and when a slab still holds more than a sixteenth of the edges the slabs do not
-  // pay and the exact pair-sum test stays in charge (overlap_usable false).
+  // taller slabs), and when a slab still holds more than max(64, a sixteenth of the) edges
+  // the slabs do not pay: up to kFlatMax edges all are scanned, beyond the exact pair-sum test
+  // stays in charge (overlap_usable false).
   const std::size_t E = rx0.size();
   ylo = *std::min_element(ry0.begin(), ry0.end()), yhi = *std::max_element(ry0.begin(), ry0.end());
   std::size_t count = std::max<std::size_t>(1, E / 4);
@@ -106,8 +107,8 @@ void NfpFlat::build(const NoFitPolygon2::Impl& N) {
   }
   std::size_t widest = 0;
   for (std::size_t s = 0; s < count; ++s) widest = std::max<std::size_t>(widest, first[s + 1]);
-  if (widest > std::max<std::size_t>(kSlabMin, E / 16)) {
-    overlap_usable = false;
+  if (widest > std::max<std::size_t>(64, E / 16)) {
+    overlap_usable = E <= kFlatMax;  // a linear scan still pays for a few edges
     return;
   }
   for (std::size_t s = 0; s < count; ++s) first[s + 1] += first[s];

@@ -14,9 +14,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <iostream>
 #include <random>
 #include <string>
 #include <vector>
@@ -87,9 +89,10 @@ void check_at(const NoFitPolygon2& nfp, const Vec2& t, const std::vector<Vec2>& 
 }
 
 // Degenerate and random placements of one pair.
-void check_pair(const Polygon& P, const Polygon& Q, std::mt19937_64& rng, int random, const std::string& what) {
+void check_pair(const Polygon& P, const Polygon& Q, std::mt19937_64& rng, int random, const std::string& what,
+                bool require_flat = true) {
   const NoFitPolygon2 nfp(P, Q);
-  ASSERT_TRUE(nfp_impl(nfp).flat.usable) << what;
+  if (require_flat) ASSERT_TRUE(nfp_impl(nfp).flat.usable) << what;
   std::vector<Vec2> verts;
   for (const auto& poly : nfp.polygons())
     for (const auto& ring : poly) verts.insert(verts.end(), ring.begin(), ring.end());
@@ -220,8 +223,28 @@ TEST(NfpFastPath, LargeRingsUseSlabs) {
     const auto& F = nfp_impl(nfp).flat;
     ASSERT_FALSE(F.slab.empty()) << k;
     ASSERT_TRUE(F.overlap_usable) << k;
-    check_pair(P, Q, rng, 300, "large stars " + std::to_string(k));
+    check_pair(P, Q, rng, 300, "large stars " + std::to_string(k), false);
   }
+  // A comb against an L: tall edges (the teeth) span many slabs; slabs are kept only while each
+  // holds at most max(64, a sixteenth of the) ring edges; the answers stay the exact path's.
+  std::vector<Vec2> comb{{0, 0}, {79, 0}};
+  for (int k = 39; k >= 0; --k) {
+    comb.emplace_back(2 * k + 1, 12), comb.emplace_back(2 * k, 12);
+    if (k > 0) comb.emplace_back(2 * k, 2), comb.emplace_back(2 * k - 1, 2);
+  }
+  const Polygon P = Polygon::simple(comb, "comb"), L = Polygon::simple(std::vector<Vec2>{{0, 0}, {0.5, 0}, {0.5, 2.5}, {3, 2.5}, {3, 3}, {0, 3}}, "L");
+  const NoFitPolygon2 nfp(P, L);
+  const auto& F = nfp_impl(nfp).flat;
+  std::size_t edges = 0;
+  for (const auto& poly : nfp.polygons())
+    for (const auto& ring : poly) edges += ring.size();
+  std::size_t widest = 0;
+  for (std::size_t k = 0; k + 1 < F.slab.size(); ++k) widest = std::max<std::size_t>(widest, F.slab[k + 1] - F.slab[k]);
+  EXPECT_LE(widest, std::max<std::size_t>(64, edges / 16));
+  EXPECT_LE(F.rx0.size(), 8 * edges);
+  std::cout << "[comb] " << edges << " ring edges, " << (F.slab.empty() ? 0 : F.slab.size() - 1) << " slabs, widest " << widest
+            << ", overlap filter " << (F.overlap_usable ? "on" : "off") << "\n";
+  check_pair(P, L, rng, 300, "comb", false);
 }
 
 }  // namespace
