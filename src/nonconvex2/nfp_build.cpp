@@ -317,7 +317,7 @@ NfpSize NoFitPolygon2::size() const {
   }
   b += impl_->slits.capacity() * sizeof(impl_->slits[0]) + impl_->points.capacity() * sizeof(Vec2);
   const nonconvex2::NfpFlat& f = impl_->flat;
-  b += (f.rx0.capacity() + f.ry0.capacity() + f.rx1.capacity() + f.ry1.capacity() + f.px0.capacity() + f.py0.capacity() +
+  b += (f.rx0.capacity() + f.ry0.capacity() + f.rx1.capacity() + f.ry1.capacity() + f.px0.capacity() + f.py0.capacity() + f.pinv.capacity() +
         f.px1.capacity() + f.py1.capacity()) * sizeof(double) +
        f.slits.capacity() * sizeof(f.slits[0]) + f.points.capacity() * sizeof(Vec2);
   s.bytes = b;

@@ -20,8 +20,10 @@
 //   * slits: t outside a slit's box (strict, monotone as above), or off its line by the bound;
 //     points: t differs from the rounded point in a coordinate (then from the exact one).
 // nearest_candidates(t) — the distance from t to a rounded piece differs from the distance to the
-//   exact piece by the ends' displacement (≤ 2⁻⁵⁰·M·√2) and from its double evaluation by a few
-//   ulps of M: |d̂ − d*| < e = 2⁻⁴⁰·M. A piece can be nearest only if d̂ − e ≤ min d̂ + e.
+//   exact piece by the ends' displacement (≤ 2⁻⁵⁰·M·√2) and from its double evaluation (the
+//   projection parameter by a stored 1/|b − a|², clamped to [0, 1]: any clamped parameter gives a
+//   point of the segment, whose distance is off by a few ulps of M) by a few ulps of M:
+//   |d̂ − d*| < e = 2⁻⁴⁰·M. A piece can be nearest only if d̂ − e ≤ min d̂ + e.
 // first_hit_candidates(t, d) — for X on a piece, cross(d, X − t) and dot(d, X − t) are linear in
 //   X, so over the exact piece they lie between their values at the exact ends, each within
 //   e_d = 2⁻⁴⁰·M·(|dx| + |dy|) of the double values at the rounded ends. A piece both of whose ends
@@ -73,6 +75,8 @@ void NfpFlat::build(const NoFitPolygon2::Impl& N) {
   for (const NfpPiece& pc : N.pieces) {
     px0.push_back(pc.a.x()), py0.push_back(pc.a.y());
     px1.push_back(pc.b.x()), py1.push_back(pc.b.y());
+    const double ex = pc.b.x() - pc.a.x(), ey = pc.b.y() - pc.a.y(), l2 = ex * ex + ey * ey;
+    pinv.push_back(l2 > 0 ? 1 / l2 : 0.0);
     see(pc.a), see(pc.b);
   }
   rmax = r;
@@ -168,30 +172,26 @@ int NfpFlat::overlapping(const Vec2& t) const {
 
 void NfpFlat::nearest_candidates(const Vec2& t, std::vector<std::uint32_t>& out) const {
   const double tx = t.x(), ty = t.y(), M = bound_m(t, rmax), e = 0x1p-40 * M, B = 0x1p-40 * M * M;
-  const std::size_t n = px0.size();
-  const double *x0 = px0.data(), *y0 = py0.data(), *x1 = px1.data(), *y1 = py1.data();
-  thread_local std::vector<double> sq, dots, lens;
-  sq.resize(n), dots.resize(n), lens.resize(n);
-  double* q = sq.data();
-  double* dt = dots.data();
-  double* ln = lens.data();
+  const std::size_t n = px0.size();  // ≤ kFlatMax (usable)
+  const double *x0 = px0.data(), *y0 = py0.data(), *x1 = px1.data(), *y1 = py1.data(), *il = pinv.data();
+  double q[kFlatMax];
+  double best = INFINITY;
   for (std::size_t k = 0; k < n; ++k) {
     const double wx = tx - x0[k], wy = ty - y0[k], ex = x1[k] - x0[k], ey = y1[k] - y0[k];
-    const double dot = wx * ex + wy * ey, l2 = ex * ex + ey * ey;
-    const double s = dot > 0 ? (dot < l2 ? dot / l2 : 1.0) : 0.0;
+    const double s = std::clamp((wx * ex + wy * ey) * il[k], 0.0, 1.0);
     const double dx = wx - s * ex, dy = wy - s * ey;
     q[k] = dx * dx + dy * dy;
-    dt[k] = dot, ln[k] = l2;
+    best = q[k] < best ? q[k] : best;
   }
-  double best = INFINITY;
-  for (std::size_t k = 0; k < n; ++k) best = std::min(best, q[k]);
   const double r = std::sqrt(best) + 2 * e;
   const double thr = r * r * (1 + 0x1p-40);
   for (std::size_t k = 0; k < n; ++k)
     if (q[k] <= thr) {
       // dot(t − a, b − a) and dot(t − b, a − b) beyond B: the projection of t falls strictly
       // inside the exact piece (the same error reasoning as for the determinant).
-      const bool inside = dt[k] > B && ln[k] - dt[k] > B;
+      const double wx = tx - x0[k], wy = ty - y0[k], ex = x1[k] - x0[k], ey = y1[k] - y0[k];
+      const double dot = wx * ex + wy * ey, l2 = ex * ex + ey * ey;
+      const bool inside = dot > B && l2 - dot > B;
       out.push_back(std::uint32_t(k) | (inside ? kInside : 0u));
     }
 }

@@ -77,6 +77,7 @@ struct NfpFlat {
   double ylo = 0, yhi = 0, yscale = 0;
   bool overlap_usable = false;  // the overlap filter applies (magnitudes in range), any size
   std::vector<double> px0, py0, px1, py1;  // pieces (same indices as Impl::pieces)
+  std::vector<double> pinv;                // 1 / |b − a|² per piece (0 for a point)
   std::vector<std::array<Vec2, 2>> slits;   // copies of the export's, next to the edges
   std::vector<Vec2> points;
   double rmax = 0;                         // largest |coordinate| stored here
