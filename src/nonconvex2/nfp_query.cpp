@@ -137,6 +137,21 @@ std::vector<std::uint32_t>& scratch() {
   return v;
 }
 
+// One geometric line: symbolically, or parallel with a point of one on the other (exact, degree 2;
+// collinear pieces from parallel edges of P and Q are common on real pieces, and the degree-4 λ
+// comparison of two crossings of one line is an exact zero the floating tiers cannot certify).
+bool collinear(const Line& l, const Line& m) {
+  if (nonconvex2::same_line(l, m)) return true;
+  if (exact_sign([&](auto L) {
+        return (L(l.e1.x()) - L(l.e0.x())) * (L(m.e1.y()) - L(m.e0.y())) - (L(l.e1.y()) - L(l.e0.y())) * (L(m.e1.x()) - L(m.e0.x()));
+      }) != 0)
+    return false;
+  return exact_sign([&](auto L) {
+           auto x = L(m.c1.x()) + L(m.c2.x()) - L(l.c1.x()) - L(l.c2.x()), y = L(m.c1.y()) + L(m.c2.y()) - L(l.c1.y()) - L(l.c2.y());
+           return (L(l.e1.x()) - L(l.e0.x())) * y - (L(l.e1.y()) - L(l.e0.y())) * x;
+         }) == 0;
+}
+
 // σ_d's running best: the exact first hit, ties to the lowest piece index.
 struct AlongBest {
   Hit hit;
@@ -148,7 +163,8 @@ struct AlongBest {
     if (crosses) h = Hit{&N.pieces[k], false, {}};
     else if (!first_hit(N.pieces[k], ray, t, d, h)) return;
     if (found) {
-      const int c = compare_hits(h, hit, ray, t);
+      // Two crossings of one geometric line are the same point (λ equal).
+      const int c = !h.end && !hit.end && collinear(h.piece->edge, hit.piece->edge) ? 0 : compare_hits(h, hit, ray, t);
       if (c > 0 || (c == 0 && k > index)) return;
     }
     hit = h;
