@@ -15,6 +15,12 @@
 //                       suggests for filled results
 //   sigma/pendepth_nfp, sigma_d/pendepth_nfp    NoFitPolygon2::minimum / ::along
 //   sigma/pendepth_pair, sigma_d/pendepth_pair  PairDepth2::minimum / ::along (no NFP)
+//   sigma/pendepth_pair2, sigma_d/pendepth_pair2  the front door: Pair2(P, Q, Prepare::Full)
+//                       ::minimum / ::along (its engine: the no-fit polygon when neither piece is
+//                       convex, the polygon × convex structure otherwise)
+//   overlap/<impl>      the overlap test alone (NoFitPolygon2 / Pair2 / PairDepth2 ::overlapping,
+//                       the scan's even-odd location) on placements uniform in the no-fit
+//                       polygon's box grown by 10%; items/s = overlap tests per second
 //   sigma/cgal_scan, sigma_d/cgal_scan, sigma/clipper_scan, sigma_d/clipper_scan
 //                       scans of an explicit sum: point in polygon (crossing number with the
 //                       exact orientation predicate on the doubles), then the nearest edge (σ)
@@ -47,6 +53,7 @@
 #include <benchmark/benchmark.h>
 #include <pendepth/depth2_polygon_polygon.hpp>
 #include <pendepth/nfp2.hpp>
+#include <pendepth/pendepth.hpp>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_2.h>
@@ -177,6 +184,7 @@ struct Pair {
   std::unique_ptr<NoFitPolygon2> nfp;
   std::unique_ptr<PairDepth2> pair;
   std::unique_ptr<ExplicitSum> cgal, clipper;
+  std::unique_ptr<pendepth::Pair2> front;  // the front door, Prepare::Full
   double scale = 1;  // largest |coordinate| of P and Q
 };
 
@@ -190,6 +198,7 @@ struct Case {
   std::size_t n = 0, m = 0;
   std::vector<Pair> pairs;
   std::vector<Query> queries;
+  std::vector<Query> overlap_queries;  // t uniform in the no-fit polygon's box grown by 10% (made on first use)
   bool with_nfp = true;  // NoFitPolygon2 within its budget: the reference of the answer checks
 
   void add_pair(const std::vector<Vec2>& p, const std::vector<Vec2>& q) {
@@ -199,7 +208,7 @@ struct Case {
     double s = 1;
     for (const Vec2& v : P.vertices()) s = std::max({s, std::abs(v.x()), std::abs(v.y())});
     for (const Vec2& v : Q.vertices()) s = std::max({s, std::abs(v.x()), std::abs(v.y())});
-    pairs.push_back(Pair{std::move(P), std::move(Q), nullptr, nullptr, nullptr, nullptr, s});
+    pairs.push_back(Pair{std::move(P), std::move(Q), nullptr, nullptr, nullptr, nullptr, nullptr, s});
   }
 
   void make_queries(pb::Rng& rng) {
@@ -222,6 +231,26 @@ struct Case {
   const NoFitPolygon2& nfp(std::size_t i) {
     if (!pairs[i].nfp) pairs[i].nfp = std::make_unique<NoFitPolygon2>(pairs[i].P, pairs[i].Q);
     return *pairs[i].nfp;
+  }
+  const pendepth::Pair2& front(std::size_t i) {
+    if (!pairs[i].front)
+      pairs[i].front = std::make_unique<pendepth::Pair2>(pendepth::Shape2(pairs[i].P), pendepth::Shape2(pairs[i].Q),
+                                                         pendepth::Prepare::Full);
+    return *pairs[i].front;
+  }
+  void make_overlap_queries() {
+    if (!overlap_queries.empty()) return;
+    pb::Rng rng(0x0ddba11u ^ pairs.size());
+    for (std::size_t k = 0; overlap_queries.size() < pb::kQueries; ++k) {
+      const std::size_t i = k % pairs.size();
+      Vec2 lo(INFINITY, INFINITY), hi(-INFINITY, -INFINITY);
+      for (const auto& poly : nfp(i).polygons())
+        for (const auto& ring : poly)
+          for (const Vec2& v : ring) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+      const Vec2 pad = 0.05 * (hi - lo);
+      lo -= pad, hi += pad;
+      overlap_queries.push_back(Query{i, Vec2(rng.uniform(lo.x(), hi.x()), rng.uniform(lo.y(), hi.y())), Vec2(1, 0)});
+    }
   }
   const PairDepth2& pair(std::size_t i) {
     if (!pairs[i].pair) pairs[i].pair = std::make_unique<PairDepth2>(pairs[i].P, pairs[i].Q);
@@ -396,12 +425,13 @@ void BM_build_peer(benchmark::State& state, Case* c, bool cgal) {
   state.counters["sum_rings"] = double(rings) / double(c->pairs.size());
 }
 
-enum class Impl { Nfp, Pair, CgalScan, ClipperScan };
+enum class Impl { Nfp, Pair, CgalScan, ClipperScan, Front };
 
 double answer(Case& c, const Query& q, Impl impl, bool minimum) {
   switch (impl) {
     case Impl::Nfp: return minimum ? c.nfp(q.pair).minimum(q.t).depth : c.nfp(q.pair).along(q.t, q.d).depth;
     case Impl::Pair: return minimum ? c.pair(q.pair).minimum(q.t).depth : c.pair(q.pair).along(q.t, q.d).depth;
+    case Impl::Front: return minimum ? c.front(q.pair).minimum(q.t).depth : c.front(q.pair).along(q.t, q.d).depth;
     case Impl::CgalScan:
     case Impl::ClipperScan: {
       const ExplicitSum& s = c.sum(q.pair, impl == Impl::CgalScan);
@@ -443,6 +473,40 @@ void BM_query(benchmark::State& state, Case* c, Impl impl, bool minimum) {
   state.counters["overlapping"] = overlapping;
 }
 
+bool overlaps(Case& c, const Query& q, Impl impl) {
+  switch (impl) {
+    case Impl::Nfp: return c.nfp(q.pair).overlapping(q.t);
+    case Impl::Pair: return c.pair(q.pair).overlapping(q.t);
+    case Impl::Front: return c.front(q.pair).overlapping(q.t);
+    case Impl::CgalScan:
+    case Impl::ClipperScan: return c.sum(q.pair, impl == Impl::CgalScan).inside(q.t);
+  }
+  return false;
+}
+
+// The overlap test alone (issue 19 item 1): placements uniform in the no-fit polygon's box grown
+// by 10% (about half overlap); `differ` counts answers unlike NoFitPolygon2's (the scans' even-odd
+// on rounded vertices may differ on the boundary).
+void BM_overlap(benchmark::State& state, Case* c, Impl impl) {
+  c->make_overlap_queries();
+  double differ = 0, overlapping = 0;
+  for (const Query& q : c->overlap_queries) {
+    const bool want = overlaps(*c, q, Impl::Nfp);
+    differ += overlaps(*c, q, impl) != want;
+    overlapping += want;
+  }
+  std::size_t i = 0, sum = 0;
+  for (auto _ : state) {
+    sum += overlaps(*c, c->overlap_queries[i], impl);
+    i = pb::next_query(i);
+  }
+  benchmark::DoNotOptimize(sum);
+  set_counters(state, *c);
+  state.SetItemsProcessed(state.iterations());
+  state.counters["differ"] = differ;
+  state.counters["overlapping"] = overlapping / double(c->overlap_queries.size());
+}
+
 double env_number(const char* name, double fallback) {
   const char* v = std::getenv(name);
   return v && *v ? std::atof(v) : fallback;
@@ -465,9 +529,16 @@ void register_case(Case& c, const std::string& tag, double nfp_budget, double bu
     benchmark::RegisterBenchmark(("build/clipper/" + tag).c_str(), BM_build_peer, &c, false)
         ->Unit(benchmark::kMicrosecond);
 #endif
+  if (c.with_nfp) {
+    benchmark::RegisterBenchmark(("overlap/pendepth_nfp/" + tag).c_str(), BM_overlap, &c, Impl::Nfp);
+    benchmark::RegisterBenchmark(("overlap/pendepth_pair2/" + tag).c_str(), BM_overlap, &c, Impl::Front);
+    benchmark::RegisterBenchmark(("overlap/pendepth_pair/" + tag).c_str(), BM_overlap, &c, Impl::Pair);
+    if (cgal) benchmark::RegisterBenchmark(("overlap/cgal_scan/" + tag).c_str(), BM_overlap, &c, Impl::CgalScan);
+  }
   for (bool minimum : {true, false}) {
     const std::string q = minimum ? "sigma" : "sigma_d";
     if (c.with_nfp) benchmark::RegisterBenchmark((q + "/pendepth_nfp/" + tag).c_str(), BM_query, &c, Impl::Nfp, minimum);
+    if (c.with_nfp) benchmark::RegisterBenchmark((q + "/pendepth_pair2/" + tag).c_str(), BM_query, &c, Impl::Front, minimum);
     if (!minimum || nm <= pair_sigma_budget)
       benchmark::RegisterBenchmark((q + "/pendepth_pair/" + tag).c_str(), BM_query, &c, Impl::Pair, minimum);
     if (cgal) benchmark::RegisterBenchmark((q + "/cgal_scan/" + tag).c_str(), BM_query, &c, Impl::CgalScan, minimum);

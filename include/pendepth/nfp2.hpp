@@ -36,9 +36,16 @@
 // pieces of ∂O): build O(nm) candidate tests, O(K log K + X) meeting tests and one point test per
 // part and split point (a few sums on real pieces, worst O(nm)); a candidate met by more than 256
 // others is cut instead (O(nm)), so the worst case stays O(n²m²) exact tests, the bound of the
-// explicit convolution (DHS §6); export O(N log N) filtered exact predicates. Queries:
-// overlapping(t) is PairDepth2's pair-sum test (worst O(nm), a few sums on real pieces);
-// along/minimum visit O(log N + k) hierarchy nodes for k boxes near the answer (worst O(N)).
+// explicit convolution (DHS §6); export O(N log N) filtered exact predicates. Queries (issue 19
+// item 1, src/nonconvex2/nfp_fast.cpp): a floating fast path over flat arrays of ∂O whose every
+// decision is certified by a static error bound, exact predicates only where it is too close to
+// call. overlapping(t): parity over the ring edges (above 16 edges only those of t's horizontal
+// slab, O(√N)-ish on round shapes), the exact pair-sum test when undecided (t on or ulps from
+// ∂O, level with a vertex) or when slabs do not pay (tall edges). σ / σ_d up to 256 pieces: a
+// scan for the pieces that can win, then only those evaluated exactly (O(N) flops plus O(1)
+// exact work on real pieces); beyond, a best-first traversal of the piece hierarchy, O(log N + k)
+// node visits for k boxes near the answer (worst O(N)). Pieces exactly equally near (or hit at
+// the same λ) report the lowest piece index's features.
 // Build and query times, and the comparison with CGAL's minkowski_sum_2: docs/benchmarks.md.
 // Internal inconsistencies of the pieces (a chain that does not close, a hole outside every outer
 // ring) throw std::logic_error rather than export a wrong polygon; no test input has produced one.

@@ -16,6 +16,7 @@
 #include "front/scale.hpp"
 #include "nonconvex2/boundary_distance.hpp"
 
+#include <cmath>
 #include <mutex>
 #include <optional>
 
@@ -309,21 +310,35 @@ void check_batch_scale(const front::Scale& scale, std::span<const Vec2> ts) {
 
 }  // namespace
 
+// The hot path of the three queries (issue 19 item 1): an ordinary pair (identity scale) and a
+// finite placement go straight to the engine; everything else takes the checked path, which
+// throws the boundary's messages.
+namespace {
+bool plain(const front::Scale& scale, const Vec2& t) { return scale.identity() && std::isfinite(t.x()) && std::isfinite(t.y()); }
+}  // namespace
+
 bool Pair2::overlapping(const Vec2& t) const {
+  const Impl& I = *impl_;
+  if (plain(I.scale, t)) [[likely]]
+    return I.overlapping(t);
   front::check_placement(t);
-  return impl_->overlapping(engine_placement(impl_->scale, t));
+  return I.overlapping(engine_placement(I.scale, t));
 }
 
 Depth2 Pair2::minimum(const Vec2& t) const {
-  front::check_placement(t);
   const Impl& I = *impl_;
+  if (plain(I.scale, t)) [[likely]]
+    return I.minimum(t);
+  front::check_placement(t);
   return I.scale.answer(I.minimum(engine_placement(I.scale, t)));
 }
 
 Depth2 Pair2::along(const Vec2& t, const Vec2& d) const {
+  const Impl& I = *impl_;
+  if (plain(I.scale, t) && std::isfinite(d.x()) && std::isfinite(d.y()) && (d.x() != 0 || d.y() != 0)) [[likely]]
+    return I.along(t, d);
   front::check_placement(t);
   front::check_direction(d);
-  const Impl& I = *impl_;
   return I.scale.answer(I.along(engine_placement(I.scale, t), d));
 }
 

@@ -406,4 +406,47 @@ double accurate_ratio(N&& num, D&& den) {
   return q.get_d();
 }
 
+/// accurate_ratio for a formula computing numerator and denominator together, f(lift) returning
+/// {num, den}: each tier evaluates the pair once instead of once per component. The same result,
+/// bit for bit, as accurate_ratio([&](auto L) { return f(L).first; }, [&](auto L) { return
+/// f(L).second; }): each component goes through floating_value's tiers with the same acceptance
+/// tests, and a component's value does not depend on its companion being computed.
+template <class F>
+double accurate_ratio_of(F&& f) {
+  double v[2];
+  int got[2] = {0, 0};  // 1: accepted, -1: no floating tier can certify it
+  {
+    const auto r = f(LiftFl{});
+    const Fl c[2] = {r.first, r.second};
+    for (int k = 0; k < 2; ++k)
+      if (std::isfinite(c[k].v) && safe_bound(c[k].e) <= std::abs(c[k].v) * 0x1p-53) v[k] = c[k].v, got[k] = 1;
+  }
+  if (got[0] != 1 || got[1] != 1) {
+    const auto r = f(LiftDD{});
+    const DD c[2] = {r.first, r.second};
+    for (int k = 0; k < 2; ++k)
+      if (got[k] != 1 && dd_finite(c[k]) && safe_bound(c[k].e) <= std::abs(c[k].hi) * 0x1p-54) v[k] = c[k].hi, got[k] = 1;
+  }
+  if (got[0] != 1 || got[1] != 1) {
+    const auto r = f(LiftEx{});
+    const Ex* c[2] = {&r.first, &r.second};
+    for (int k = 0; k < 2; ++k)
+      if (got[k] != 1) {
+        if (c[k]->ok) {
+          v[k] = ex_value(*c[k]);
+          got[k] = std::isfinite(v[k]) ? 1 : -1;
+        } else {
+          got[k] = -1;
+        }
+      }
+  }
+  if (got[0] == 1 && got[1] == 1 && v[1] != 0) {
+    const double q = v[0] / v[1];
+    if (std::isfinite(q) && (q != 0 || v[0] == 0)) return q;
+  }
+  const auto r = f(LiftQ{});
+  mpq_class q = r.first.v / r.second.v;
+  return q.get_d();
+}
+
 }  // namespace pendepth::exact

@@ -121,14 +121,12 @@ inline bool surely_outside(const Sum& S, const Vec2& c0, const Vec2& c1, double 
 /// One coordinate (axis 0: x, 1: y) of the vector from t to the candidate point, to a few ulps.
 inline double cand_coord(const Cand& c, const Vec2& t, int axis) {
   const Ray& E = c.E;
-  return exact::accurate_ratio(
-      [&](auto L) {
-        auto [n, dd] = param_nd(c.at, E, t, L);
-        auto o = axis == 0 ? L(E.o1.x()) + L(E.o2.x()) - L(t.x()) : L(E.o1.y()) + L(E.o2.y()) - L(t.y());
-        auto dv = axis == 0 ? ray_dx(E, L) : ray_dy(E, L);
-        return o * dd + n * dv;
-      },
-      [&](auto L) { return param_nd(c.at, E, t, L).second; });
+  return exact::accurate_ratio_of([&](auto L) {
+    auto [n, dd] = param_nd(c.at, E, t, L);
+    auto o = axis == 0 ? L(E.o1.x()) + L(E.o2.x()) - L(t.x()) : L(E.o1.y()) + L(E.o2.y()) - L(t.y());
+    auto dv = axis == 0 ? ray_dx(E, L) : ray_dy(E, L);
+    return std::pair{o * dd + n * dv, dd};
+  });
 }
 
 /// The vector from t to the candidate point, each coordinate to a few ulps.

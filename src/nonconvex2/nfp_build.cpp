@@ -292,6 +292,7 @@ NoFitPolygon2::Impl::Impl(const Polygon& P, const Polygon& Q) : S(P, Q) {
   if (pieces.size() <= kInOrderTreeMax) tree.build_in_order(pieces.size(), lo, hi);
   else tree.build_boxes(pieces.size(), lo, hi);
   nfp_export(*this);
+  flat.build(*this);
 }
 
 NoFitPolygon2::NoFitPolygon2(const Polygon& P, const Polygon& Q) : impl_(std::make_unique<Impl>(P, Q)) {}
@@ -315,6 +316,10 @@ NfpSize NoFitPolygon2::size() const {
     for (const auto& ring : poly) b += ring.capacity() * sizeof(Vec2);
   }
   b += impl_->slits.capacity() * sizeof(impl_->slits[0]) + impl_->points.capacity() * sizeof(Vec2);
+  const nonconvex2::NfpFlat& f = impl_->flat;
+  b += (f.rx0.capacity() + f.ry0.capacity() + f.rx1.capacity() + f.ry1.capacity() + f.px0.capacity() + f.py0.capacity() + f.pinv.capacity() +
+        f.px1.capacity() + f.py1.capacity()) * sizeof(double) +
+       f.slits.capacity() * sizeof(f.slits[0]) + f.points.capacity() * sizeof(Vec2);
   s.bytes = b;
   return s;
 }

@@ -4,6 +4,8 @@
 
 #include <pendepth/nfp2.hpp>
 
+#include <array>
+#include <cstdint>
 #include <vector>
 
 #include "nonconvex2/edge_cut.hpp"
@@ -61,6 +63,45 @@ NfpPiece make_piece(const NfpCandidate& c, const Param& lo, const Param& hi, con
 
 }  // namespace nonconvex2
 
+namespace nonconvex2 {
+
+/// The floating fast path of the queries (nfp_fast.cpp): a flat structure-of-arrays copy of ∂O in
+/// doubles whose decisions are certified by static error bounds, or reported undecided so the
+/// caller runs the exact path. Ring edges: the export's rings (each vertex the exact vertex rounded
+/// to nearest); piece ends: NfpPiece::a, b (each coordinate within a few ulps of the exact end).
+struct NfpFlat {
+  std::vector<double> rx0, ry0, rx1, ry1;  // ring edges of cl(O), O on their left
+  // Above kSlabMin ring edges: horizontal slabs of equal height over the rings' y range, slab s
+  // holding (copies of) every edge whose y range meets it, edges of slab s at [slab[s], slab[s+1]).
+  std::vector<std::uint32_t> slab;
+  double ylo = 0, yhi = 0, yscale = 0;
+  bool overlap_usable = false;  // the overlap filter applies (magnitudes in range), any size
+  std::vector<double> px0, py0, px1, py1;  // pieces (same indices as Impl::pieces)
+  std::vector<double> pinv;                // 1 / |b − a|² per piece (0 for a point)
+  std::vector<std::array<Vec2, 2>> slits;   // copies of the export's, next to the edges
+  std::vector<Vec2> points;
+  double rmax = 0;                         // largest |coordinate| stored here
+  bool usable = false;                     // sizes and magnitudes inside the filters' range
+
+  void build(const NoFitPolygon2::Impl& nfp);
+  std::size_t slab_of(double y, std::size_t count) const;
+  /// t ∈ O: 1 or 0 when certified, -1 when a decision is too close to call (t on or ulps from a
+  /// ring edge, a slit, an isolated point, or level with a ring vertex).
+  int overlapping(const Vec2& t) const;
+  /// Flag on a candidate index (indices stay below it): certified interior case (below).
+  static constexpr std::uint32_t kInside = 1u << 31;
+  /// Appends to `out`, in increasing order, the indices of every piece whose exact distance to t
+  /// can be the minimum (a superset of the exact nearest pieces; usually one), flagged kInside when
+  /// t's projection on the piece's line falls certainly strictly inside the piece.
+  void nearest_candidates(const Vec2& t, std::vector<std::uint32_t>& out) const;
+  /// Appends, in increasing order, every piece the ray t + λ·d (λ > 0) can hit first (a superset
+  /// of the exact first pieces), flagged kInside when the ray certainly crosses the piece's
+  /// interior at some λ > 0 (the piece's ends strictly on either side of the ray's line).
+  void first_hit_candidates(const Vec2& t, const Vec2& d, std::vector<std::uint32_t>& out) const;
+};
+
+}  // namespace nonconvex2
+
 struct NoFitPolygon2::Impl {
   PairDepth2::Impl S;  // triangulations, box hierarchies, the exact overlap test and contact()
   std::vector<nonconvex2::NfpPiece> pieces;
@@ -69,8 +110,18 @@ struct NoFitPolygon2::Impl {
   std::vector<std::array<Vec2, 2>> slits;
   std::vector<Vec2> points;
   NfpSize sz;
+  nonconvex2::NfpFlat flat;  // the fast path (built last, from pieces and rings)
   Impl(const Polygon& P, const Polygon& Q);
+
+  // Queries on validated input (nfp_query.cpp). The plain ones take the certified floating fast
+  // path and run the exact decisions only where it is undecided; the `_exact` ones (kept for the
+  // tests, which compare the two bit for bit) skip it: the pair-sum overlap test and the best-first
+  // traversal of the piece hierarchy. Among pieces exactly equally near (a shared vertex), both
+  // report the lowest piece index.
   bool overlapping(const Vec2& t) const;
+  bool overlapping_exact(const Vec2& t) const;
+  Depth2 minimum(const Vec2& t, bool exact_path = false) const;
+  Depth2 along(const Vec2& t, const Vec2& d, bool exact_path = false) const;  // d from check_and_scale
 };
 
 /// Links the pieces into rings, slits and isolated points (nfp_rings.cpp).

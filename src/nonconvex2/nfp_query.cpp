@@ -1,21 +1,26 @@
-// The per-pair no-fit polygon, queries (issue 5 item 4): σ_d and σ on the stored pieces of ∂O
-// (nfp_build.cpp), the overlap test on the pair sums.
+// The per-pair no-fit polygon, queries (issue 5 item 4; fast path issue 19 item 1): σ_d and σ on
+// the stored pieces of ∂O (nfp_build.cpp), the overlap test on the rings and the pair sums.
 //
-// overlapping(t): the exact pair-sum test of PairDepth2 (dual descent to the sums whose box holds
-//   t; a handful on real pieces). Departure from a ray-parity test on ∂O: parity is ambiguous
-//   exactly where it matters (slits, isolated points, rays through vertices) while the sum test is
-//   exact, symbolic and already O(log)-ish on real pieces.
+// overlapping(t): the certified floating parity test on the rings, slits and points
+//   (nfp_fast.cpp); where it cannot decide (t on or ulps from ∂O, level with a ring vertex), the
+//   exact pair-sum test of PairDepth2 (dual descent to the sums whose box holds t), which is
+//   symbolic exactly where parity is ambiguous (slits, isolated points, rays through vertices).
 // along(t, d), t ∈ O: the component of the line inside O containing t ends at the first point of
 //   ∂O hit by the ray (pieces are closed subsets of ℝ² \ O and every exit point lies on one), so
-//   σ_d = min over pieces of the first λ > 0 where the ray meets the closed piece. Best-first
-//   traversal of the piece hierarchy by conservative box entry λ; the hits are compared exactly
-//   (the crossing with the piece's line, or its nearer end when the ray runs along it).
-// minimum(t), t ∈ O: σ = min over pieces of the exact distance from t to the closed piece; branch
-//   and bound on the hierarchy with conservative box distances, exact comparisons of squared
-//   distances (edge_cut.hpp, the same candidates as PairDepth2::minimum).
-// Results go through PairDepth2::Impl::contact, so kinds, features and witnesses follow
-// depth2_polygon_polygon.hpp. Cost per query: O(log N + k) node visits for N pieces and k boxes near the
-// answer (worst case O(N)), plus the overlap test.
+//   σ_d = min over pieces of the first λ > 0 where the ray meets the closed piece. Up to 256
+//   pieces, the floating scan names the pieces that can be hit first (nfp_fast.cpp) and only those
+//   are tested exactly; beyond, best-first traversal of the piece hierarchy by conservative box
+//   entry λ. Hits are compared exactly (the crossing with the piece's line, or its nearer end
+//   when the ray runs along it); equal hits go to the lowest piece index.
+// minimum(t), t ∈ O: σ = min over pieces of the exact distance from t to the closed piece; the
+//   floating scan's candidates (up to 256 pieces) or branch and bound on the hierarchy with
+//   conservative box distances; exact comparisons of squared distances (edge_cut.hpp, the same
+//   candidates as PairDepth2::minimum); equally near pieces go to the lowest index.
+// Both ways every piece that can win is compared exactly, so the fast and the exact path (the
+// `exact_path` flag, kept for the tests) give the same answer bit for bit. Results go through
+// PairDepth2::Impl::contact, so kinds, features and witnesses follow depth2_polygon_polygon.hpp.
+// Cost per query: O(N) flops and O(1) exact evaluations on real pieces, O(log N + k) node visits
+// for N > 256 pieces and k boxes near the answer (worst case O(N)), plus the overlap test.
 #include <cmath>
 #include <limits>
 #include <queue>
@@ -29,6 +34,7 @@ namespace pendepth {
 using exact::exact_sign;
 using nonconvex2::Cand;
 using nonconvex2::Line;
+using nonconvex2::NfpFlat;
 using nonconvex2::NfpPiece;
 using nonconvex2::Param;
 using nonconvex2::Ray;
@@ -107,11 +113,200 @@ double box_distance(const Vec2& t, const Vec2& lo, const Vec2& hi) {
 
 }  // namespace
 
-bool NoFitPolygon2::Impl::overlapping(const Vec2& t) const {
+bool NoFitPolygon2::Impl::overlapping_exact(const Vec2& t) const {
   return S.descend(
       [&](const Vec2& lo, const Vec2& hi) { return lo.x() <= t.x() && t.x() <= hi.x() && lo.y() <= t.y() && t.y() <= hi.y(); },
       [&](std::uint32_t i, std::uint32_t j) { return nonconvex2::sum_contains(nonconvex2::make_sum(S.tp[i], S.tb[j]), t); },
       nullptr);
+}
+
+bool NoFitPolygon2::Impl::overlapping(const Vec2& t) const {
+  if (flat.overlap_usable) {
+    const int f = flat.overlapping(t);
+    if (f >= 0) return f == 1;
+  }
+  return overlapping_exact(t);
+}
+
+namespace {
+
+// Scratch for the fast path's candidate lists (no allocation per query).
+std::vector<std::uint32_t>& scratch() {
+  thread_local std::vector<std::uint32_t> v;
+  v.clear();
+  return v;
+}
+
+// One geometric line: symbolically, or parallel with a point of one on the other (exact, degree 2;
+// collinear pieces from parallel edges of P and Q are common on real pieces, and the degree-4 λ
+// comparison of two crossings of one line is an exact zero the floating tiers cannot certify).
+bool collinear(const Line& l, const Line& m) {
+  if (nonconvex2::same_line(l, m)) return true;
+  if (exact_sign([&](auto L) {
+        return (L(l.e1.x()) - L(l.e0.x())) * (L(m.e1.y()) - L(m.e0.y())) - (L(l.e1.y()) - L(l.e0.y())) * (L(m.e1.x()) - L(m.e0.x()));
+      }) != 0)
+    return false;
+  return exact_sign([&](auto L) {
+           auto x = L(m.c1.x()) + L(m.c2.x()) - L(l.c1.x()) - L(l.c2.x()), y = L(m.c1.y()) + L(m.c2.y()) - L(l.c1.y()) - L(l.c2.y());
+           return (L(l.e1.x()) - L(l.e0.x())) * y - (L(l.e1.y()) - L(l.e0.y())) * x;
+         }) == 0;
+}
+
+// σ_d's running best: the exact first hit, ties to the lowest piece index.
+struct AlongBest {
+  Hit hit;
+  std::uint32_t index = 0;
+  bool found = false;
+  // `crosses`: certified by the fast path (NfpFlat::kInside), so first_hit's answer is known.
+  void consider(const NoFitPolygon2::Impl& N, std::uint32_t k, const Ray& ray, const Vec2& t, const Vec2& d, bool crosses = false) {
+    Hit h;
+    if (crosses) h = Hit{&N.pieces[k], false, {}};
+    else if (!first_hit(N.pieces[k], ray, t, d, h)) return;
+    if (found) {
+      // Two crossings of one geometric line are the same point (λ equal).
+      const int c = !h.end && !hit.end && collinear(h.piece->edge, hit.piece->edge) ? 0 : compare_hits(h, hit, ray, t);
+      if (c > 0 || (c == 0 && k > index)) return;
+    }
+    hit = h;
+    index = k;
+    found = true;
+  }
+  // λ of the best hit (a function of the hit alone, evaluated once).
+  double value(const Ray& ray, const Vec2& t) const {
+    return exact::accurate_ratio_of([&](auto L) { return hit_nd(hit, ray, t, L); });
+  }
+};
+
+// σ's running best: the exact nearest point, ties to the lowest piece index.
+struct MinBest {
+  Cand cand;
+  std::uint32_t index = 0;
+  bool found = false;
+  bool inside = false;  // cand is t's projection, strictly inside its piece (so at no end of its edge)
+  // `inside`: t's projection certified strictly inside the piece by the fast path (kInside).
+  void consider(const NoFitPolygon2::Impl& N, std::uint32_t k, const Vec2& t, bool proj_inside = false) {
+    const NfpPiece& pc = N.pieces[k];
+    const Param proj{Param::Proj, {}};
+    Cand c{pc.E, proj, pc.edge};
+    if (proj_inside) {
+    } else if (nonconvex2::compare_params(proj, pc.lo, pc.E, t) <= 0) c.at = pc.lo;
+    else if (nonconvex2::compare_params(proj, pc.hi, pc.E, t) >= 0) c.at = pc.hi;
+    if (found) {
+      // A shared vertex of two pieces is recognised symbolically.
+      const int s = nonconvex2::same_point(c, cand) ? 0 : exact_sign([&](auto L) {
+        auto [n1, d1] = nonconvex2::sq_dist(c, t, L);
+        auto [n2, d2] = nonconvex2::sq_dist(cand, t, L);
+        return n1 * d2 - n2 * d1;
+      });
+      if (s > 0 || (s == 0 && k > index)) return;
+    }
+    cand = c;
+    index = k;
+    found = true;
+    inside = proj_inside;
+  }
+  // σ of the best candidate (a function of the candidate alone, evaluated once).
+  double value(const Vec2& t) const {
+    return std::sqrt(exact::accurate_ratio_of([&](auto L) { return nonconvex2::sq_dist(cand, t, L); }));
+  }
+};
+
+struct Job {
+  double key;
+  std::int32_t node;
+  bool operator>(const Job& o) const { return key > o.key; }
+};
+
+}  // namespace
+
+Depth2 NoFitPolygon2::Impl::along(const Vec2& t, const Vec2& d, bool exact_path) const {
+  Depth2 r;
+  r.kind = DepthKind::Directional;
+  if (pieces.empty() || !(exact_path ? overlapping_exact(t) : overlapping(t))) return r;
+  const Ray ray = Ray::query(t, d);
+  AlongBest best;
+  double value = std::numeric_limits<double>::infinity();
+  if (flat.usable && !exact_path) {
+    std::vector<std::uint32_t>& cand = scratch();
+    flat.first_hit_candidates(t, d, cand);
+    for (std::uint32_t k : cand) best.consider(*this, k & ~NfpFlat::kInside, ray, t, d, (k & NfpFlat::kInside) != 0);
+  } else {
+    // Best-first traversal of the piece hierarchy by conservative box entry λ.
+    std::priority_queue<Job, std::vector<Job>, std::greater<Job>> jobs;
+    auto push = [&](std::int32_t node) {
+      double l0, l1;
+      if (!nonconvex2::ray_box(t, d, tree.nodes[node].lo, tree.nodes[node].hi, l0, l1) || l1 < 0) return;
+      jobs.push({l0, node});
+    };
+    push(0);
+    while (!jobs.empty()) {
+      const Job J = jobs.top();
+      jobs.pop();
+      if (best.found && J.key > value + std::abs(value) * 0x1p-40) break;
+      const auto& node = tree.nodes[J.node];
+      if (node.left >= 0) {
+        push(node.left);
+        push(node.right);
+        continue;
+      }
+      const std::uint32_t before = best.index;
+      const bool had = best.found;
+      best.consider(*this, node.tri, ray, t, d);
+      if (best.found && (!had || best.index != before)) value = best.value(ray, t);
+    }
+  }
+  if (!best.found) return r;  // unreachable for t ∈ O (O is bounded)
+  if (!exact_path && flat.usable) value = best.value(ray, t);
+  const double dn = nonconvex2::norm_accurate(d);
+  const double depth = std::max(0.0, value * dn);
+  const Line& E = best.hit.piece->edge;
+  r = S.contact(E, t, depth * (d / dn), nonconvex2::end_on_ray(E, t, d));
+  r.depth = depth;
+  r.normal = d / dn;
+  r.kind = DepthKind::Directional;
+  r.overlapping = true;
+  return r;
+}
+
+Depth2 NoFitPolygon2::Impl::minimum(const Vec2& t, bool exact_path) const {
+  Depth2 r;
+  r.kind = DepthKind::Minimum;
+  if (pieces.empty() || !(exact_path ? overlapping_exact(t) : overlapping(t))) return r;
+  MinBest best;
+  double value = std::numeric_limits<double>::infinity();
+  if (flat.usable && !exact_path) {
+    std::vector<std::uint32_t>& cand = scratch();
+    flat.nearest_candidates(t, cand);
+    for (std::uint32_t k : cand) best.consider(*this, k & ~NfpFlat::kInside, t, (k & NfpFlat::kInside) != 0);
+  } else {
+    // Branch and bound on the hierarchy with conservative box distances; every piece as near as
+    // the best is visited (its box key is below its distance), so ties resolve by index.
+    std::priority_queue<Job, std::vector<Job>, std::greater<Job>> jobs;
+    jobs.push({0, 0});
+    while (!jobs.empty()) {
+      const Job J = jobs.top();
+      jobs.pop();
+      if (best.found && J.key > value * (1 + 0x1p-40)) break;
+      const auto& node = tree.nodes[J.node];
+      if (node.left >= 0) {
+        for (std::int32_t c : {node.left, node.right}) jobs.push({box_distance(t, tree.nodes[c].lo, tree.nodes[c].hi), c});
+        continue;
+      }
+      const std::uint32_t before = best.index;
+      const bool had = best.found;
+      best.consider(*this, node.tri, t);
+      if (best.found && (!had || best.index != before)) value = best.value(t);
+    }
+  }
+  if (!best.found) return r;  // unreachable for t ∈ O
+  if (!exact_path && flat.usable) value = best.value(t);
+  const Cand& c = best.cand;
+  // A projection strictly inside its piece is at no end of the edge (the piece lies in it).
+  r = S.contact(c.edge, t, nonconvex2::cand_translation(c, t), best.inside ? -1 : nonconvex2::cand_end(c, t));
+  r.depth = value;
+  r.kind = DepthKind::Minimum;
+  r.overlapping = true;
+  return r;
 }
 
 bool NoFitPolygon2::overlapping(const Vec2& t) const {
@@ -121,105 +316,12 @@ bool NoFitPolygon2::overlapping(const Vec2& t) const {
 
 Depth2 NoFitPolygon2::along(const Vec2& t, const Vec2& d_in) const {
   const Vec2 d = nonconvex2::check_and_scale(t, d_in);
-  Depth2 r;
-  r.kind = DepthKind::Directional;
-  const Impl& N = *impl_;
-  if (N.pieces.empty() || !N.overlapping(t)) return r;
-  const Ray ray = Ray::query(t, d);
-
-  Hit best;
-  bool found = false;
-  double best_value = std::numeric_limits<double>::infinity();
-  struct Job {
-    double key;
-    std::int32_t node;
-    bool operator>(const Job& o) const { return key > o.key; }
-  };
-  std::priority_queue<Job, std::vector<Job>, std::greater<Job>> jobs;
-  auto push = [&](std::int32_t node) {
-    double l0, l1;
-    if (!nonconvex2::ray_box(t, d, N.tree.nodes[node].lo, N.tree.nodes[node].hi, l0, l1) || l1 < 0) return;
-    jobs.push({l0, node});
-  };
-  push(0);
-  while (!jobs.empty()) {
-    const Job J = jobs.top();
-    jobs.pop();
-    if (found && J.key > best_value + std::abs(best_value) * 0x1p-40) break;
-    const auto& node = N.tree.nodes[J.node];
-    if (node.left >= 0) {
-      push(node.left);
-      push(node.right);
-      continue;
-    }
-    Hit h;
-    if (!first_hit(N.pieces[node.tri], ray, t, d, h)) continue;
-    if (found && compare_hits(h, best, ray, t) >= 0) continue;
-    best = h;
-    found = true;
-    best_value = exact::accurate_ratio([&](auto L) { return hit_nd(h, ray, t, L).first; },
-                                       [&](auto L) { return hit_nd(h, ray, t, L).second; });
-  }
-  if (!found) return r;  // unreachable for t ∈ O (O is bounded)
-  const double dn = nonconvex2::norm_accurate(d);
-  const double depth = std::max(0.0, best_value * dn);
-  const Line& E = best.piece->edge;
-  r = N.S.contact(E, t, depth * (d / dn), nonconvex2::end_on_ray(E, t, d));
-  r.depth = depth;
-  r.normal = d / dn;
-  r.kind = DepthKind::Directional;
-  r.overlapping = true;
-  return r;
+  return impl_->along(t, d);
 }
 
 Depth2 NoFitPolygon2::minimum(const Vec2& t) const {
   nonconvex2::check_point(t);
-  Depth2 r;
-  r.kind = DepthKind::Minimum;
-  const Impl& N = *impl_;
-  if (N.pieces.empty() || !N.overlapping(t)) return r;
-
-  Cand best;
-  bool found = false;
-  double best_value = std::numeric_limits<double>::infinity();
-  const Param proj{Param::Proj, {}};
-  struct Job {
-    double key;
-    std::int32_t node;
-    bool operator>(const Job& o) const { return key > o.key; }
-  };
-  std::priority_queue<Job, std::vector<Job>, std::greater<Job>> jobs;
-  jobs.push({0, 0});
-  while (!jobs.empty()) {
-    const Job J = jobs.top();
-    jobs.pop();
-    if (found && J.key > best_value * (1 + 0x1p-40)) break;
-    const auto& node = N.tree.nodes[J.node];
-    if (node.left >= 0) {
-      for (std::int32_t c : {node.left, node.right}) jobs.push({box_distance(t, N.tree.nodes[c].lo, N.tree.nodes[c].hi), c});
-      continue;
-    }
-    const NfpPiece& pc = N.pieces[node.tri];
-    Cand c{pc.E, proj, pc.edge};
-    if (nonconvex2::compare_params(proj, pc.lo, pc.E, t) <= 0) c.at = pc.lo;
-    else if (nonconvex2::compare_params(proj, pc.hi, pc.E, t) >= 0) c.at = pc.hi;
-    if (found && (nonconvex2::same_point(c, best) || exact_sign([&](auto L) {
-          auto [n1, d1] = nonconvex2::sq_dist(c, t, L);
-          auto [n2, d2] = nonconvex2::sq_dist(best, t, L);
-          return n1 * d2 - n2 * d1;
-        }) >= 0))
-      continue;  // not nearer (a shared vertex of two pieces is recognised symbolically)
-    best = c;
-    found = true;
-    best_value = std::sqrt(exact::accurate_ratio([&](auto L) { return nonconvex2::sq_dist(c, t, L).first; },
-                                                 [&](auto L) { return nonconvex2::sq_dist(c, t, L).second; }));
-  }
-  if (!found) return r;  // unreachable for t ∈ O
-  r = N.S.contact(best.edge, t, nonconvex2::cand_translation(best, t), nonconvex2::cand_end(best, t));
-  r.depth = best_value;
-  r.kind = DepthKind::Minimum;
-  r.overlapping = true;
-  return r;
+  return impl_->minimum(t);
 }
 
 }  // namespace pendepth

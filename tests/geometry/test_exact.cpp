@@ -5,7 +5,9 @@
 // takes over. Pinned seeds.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <random>
 #include <vector>
 
@@ -211,4 +213,43 @@ TEST(Exact, TieLikelySignMatchesRationals) {
     ASSERT_EQ(ex::exact_sign(f), truth) << it;
   }
   EXPECT_GT(zeros, 10000);
+}
+
+// accurate_ratio_of (numerator and denominator from one formula) gives accurate_ratio's double bit
+// for bit, through every tier: generic values (double-double tier), exact zeros of the numerator
+// and heavy cancellation (expansions), overflowing products (rationals), on a degree-3-over-2
+// formula like the queries' (a point on a line through a sum of doubles, over a squared norm).
+TEST(Exact, AccurateRatioOfMatchesAccurateRatio) {
+  std::mt19937_64 rng(19019);
+  std::uniform_real_distribution<double> u(-100, 100);
+  auto f = [](const double* x) {
+    return [x](auto L) {
+      auto dx = L(x[0]) + L(x[1]) - L(x[2]), dy = L(x[3]) - L(x[4]);
+      auto num = (L(x[5]) - L(x[6])) * dx * dy + L(x[7]) * dy * dy - L(x[8]) * dx;
+      auto den = dx * dx + dy * dy;
+      return std::pair{num, den};
+    };
+  };
+  int tested = 0;
+  for (int it = 0; it < 20000; ++it) {
+    double x[9];
+    for (double& v : x) v = u(rng);
+    const int kind = it % 5;
+    if (kind == 1) x[8] = 0, x[6] = x[5], x[7] = 0;                 // numerator exactly 0
+    if (kind == 2) x[5] = 0.1, x[6] = 0.1 + 0x1p-40, x[8] = 1e-300;  // cancellation, a tiny term
+    if (kind == 3) x[0] *= 0x1p500, x[1] *= 0x1p500;                // products beyond the double range
+    if (kind == 4) x[1] = -x[0] + 0x1p-30, x[2] = 0x1p-30, x[4] = x[3] + 1e-3;  // dx exactly 0
+    const auto g = f(x);
+    bool zero_den = false;
+    try {
+      zero_den = ex::exact_sign([&](auto L) { return g(L).second; }) == 0;
+    } catch (...) {
+    }
+    if (zero_den) continue;
+    const double want = ex::accurate_ratio([&](auto L) { return g(L).first; }, [&](auto L) { return g(L).second; });
+    const double got = ex::accurate_ratio_of(g);
+    ASSERT_EQ(std::bit_cast<std::uint64_t>(got), std::bit_cast<std::uint64_t>(want)) << "case " << it << " kind " << kind;
+    ++tested;
+  }
+  EXPECT_GT(tested, 15000);
 }

@@ -1,0 +1,226 @@
+// The per-pair no-fit polygon, floating fast path of the queries (issue 19 item 1): a flat
+// structure-of-arrays copy of ∂O in doubles, scanned linearly, whose every decision is certified
+// by a static error bound or reported undecided (the caller then decides exactly). Nothing here
+// produces an answer value: it only decides membership when that is certain and narrows σ's and
+// σ_d's exact search to the pieces that can win (nfp_query.cpp evaluates those exactly, as before).
+//
+// Data: ring edges of cl(O) from the export (nfp_rings.cpp: every vertex is the exact vertex
+// rounded to nearest), slits and isolated points likewise, and the pieces' ends NfpPiece::a, b
+// (each coordinate within a few ulps of the exact end). M = max(|t|∞, rmax) bounds every
+// coordinate involved; ε = 2⁻⁵³.
+//
+// overlapping(t) — t ∈ O iff t lies inside the rings by parity (O on the left of every ring: the
+//   winding number of t is 1 in O and 0 outside cl(O)) and on no ring edge, slit or isolated point
+//   (cl(O) \ O = ∂O). Crossing number with the rightward horizontal ray, half-open rule:
+//   * y of a vertex against t.y: rounding to nearest is monotone, so v.y > t.y ⇒ v*.y > t.y and
+//     v.y < t.y ⇒ v*.y < t.y for the exact v*; v.y = t.y is undecided;
+//   * side of t for a straddling edge: the determinant in double differs from the exact one (exact
+//     ends, ≤ ε·M away per coordinate) by ≤ 12·ε·M² (endpoint moves) + 24·ε·M² (rounding,
+//     Shewchuk's ccwerrboundA on terms ≤ 8M²) < 2⁻⁴⁷·M²; the filter uses 2⁻⁴⁴·M²;
+//   * slits: t outside a slit's box (strict, monotone as above), or off its line by the bound;
+//     points: t differs from the rounded point in a coordinate (then from the exact one).
+// nearest_candidates(t) — the distance from t to a rounded piece differs from the distance to the
+//   exact piece by the ends' displacement (≤ 2⁻⁵⁰·M·√2) and from its double evaluation (the
+//   projection parameter by a stored 1/|b − a|², clamped to [0, 1]: any clamped parameter gives a
+//   point of the segment, whose distance is off by a few ulps of M) by a few ulps of M:
+//   |d̂ − d*| < e = 2⁻⁴⁰·M. A piece can be nearest only if d̂ − e ≤ min d̂ + e.
+// first_hit_candidates(t, d) — for X on a piece, cross(d, X − t) and dot(d, X − t) are linear in
+//   X, so over the exact piece they lie between their values at the exact ends, each within
+//   e_d = 2⁻⁴⁰·M·(|dx| + |dy|) of the double values at the rounded ends. A piece both of whose ends
+//   are beyond e_d on one side of the line misses it; a hit at λ has dot = λ·|d|² within
+//   [min − e_d, max + e_d] of the end values; a piece with ends certified on opposite sides and
+//   min − e_d > 0 is hit at some λ ≤ (max + e_d)/|d|²: U is the least such bound, and only pieces
+//   with min − e_d ≤ U (and max + e_d > 0) can be hit first.
+// Range: used only when rmax ∈ [2⁻³⁰⁰, 2³⁰⁰] (no overflow or underflow of M², far below the
+// front door's own band, src/front/scale.hpp); σ and σ_d for at most kFlatMax pieces (beyond, the
+// hierarchy's O(log N) traversal wins over a linear scan); queries with |t| beyond 2³⁰⁰ are
+// undecided. Cost: one pass over the ring edges (overlap) — above kSlabMin edges only over those
+// of t's horizontal slab (about 4 edges per slab, at most 8 copies per edge; when tall edges leave
+// a slab with more than a sixteenth of the edges, all edges up to 256, else the exact pair-sum test)
+// — and one or two passes over the pieces (σ, σ_d).
+#include <algorithm>
+#include <cmath>
+
+#include "nonconvex2/nfp_impl.hpp"
+
+namespace pendepth::nonconvex2 {
+
+namespace {
+
+// Largest piece count scanned linearly for σ and σ_d: at 776 pieces (100 × 100 stars) the
+// hierarchy was faster (σ 2.5 against 3.1 µs, σ_d 0.8 against 1.4 µs), at 117 the scan.
+constexpr std::size_t kFlatMax = 256;
+constexpr double kLow = 0x1p-300, kHigh = 0x1p300;
+// Ring edges scanned whole up to this count; beyond, only those of t's horizontal slab.
+constexpr std::size_t kSlabMin = 16;
+
+double bound_m(const Vec2& t, double rmax) { return std::max({std::abs(t.x()), std::abs(t.y()), rmax}); }
+
+}  // namespace
+
+void NfpFlat::build(const NoFitPolygon2::Impl& N) {
+  double r = 0;
+  auto see = [&](const Vec2& v) { r = std::max({r, std::abs(v.x()), std::abs(v.y())}); };
+  for (const auto& poly : N.polys)
+    for (const auto& ring : poly)
+      for (std::size_t i = 0, j = ring.size() - 1; i < ring.size(); j = i++) {
+        rx0.push_back(ring[j].x()), ry0.push_back(ring[j].y());
+        rx1.push_back(ring[i].x()), ry1.push_back(ring[i].y());
+        see(ring[i]);
+      }
+  slits = N.slits;
+  points = N.points;
+  for (const auto& s : slits) see(s[0]), see(s[1]);
+  for (const Vec2& p : points) see(p);
+  for (const NfpPiece& pc : N.pieces) {
+    px0.push_back(pc.a.x()), py0.push_back(pc.a.y());
+    px1.push_back(pc.b.x()), py1.push_back(pc.b.y());
+    const double ex = pc.b.x() - pc.a.x(), ey = pc.b.y() - pc.a.y(), l2 = ex * ex + ey * ey;
+    pinv.push_back(l2 > 0 ? 1 / l2 : 0.0);
+    see(pc.a), see(pc.b);
+  }
+  rmax = r;
+  usable = !N.pieces.empty() && N.pieces.size() <= kFlatMax && r >= kLow && r <= kHigh;
+  overlap_usable = !N.pieces.empty() && !rx0.empty() && r >= kLow && r <= kHigh;
+  if (rx0.size() <= kSlabMin) return;
+  // Slabs: about 4 edges per slab; an edge goes to every slab from slab_of(its lowest y) to
+  // slab_of(its highest y). slab_of is monotone (a subtraction and a product by positive
+  // constants, then floor), so an edge whose y range holds t.y is in slab_of(t.y).
+  // Tall edges (a comb's teeth) span many slabs: the copies are capped at 8 per edge (fewer,
+  // taller slabs), and when a slab still holds more than max(64, a sixteenth of the) edges
+  // the slabs do not pay: up to kFlatMax edges all are scanned, beyond the exact pair-sum test
+  // stays in charge (overlap_usable false).
+  const std::size_t E = rx0.size();
+  ylo = *std::min_element(ry0.begin(), ry0.end()), yhi = *std::max_element(ry0.begin(), ry0.end());
+  std::size_t count = std::max<std::size_t>(1, E / 4);
+  std::vector<std::uint32_t> first;
+  auto range = [&](std::size_t k, std::size_t& a, std::size_t& b) {
+    a = slab_of(std::min(ry0[k], ry1[k]), count), b = slab_of(std::max(ry0[k], ry1[k]), count);
+  };
+  for (;; count = std::max<std::size_t>(1, count / 2)) {
+    yscale = yhi > ylo ? double(count) / (yhi - ylo) : 0;
+    first.assign(count + 1, 0);
+    std::size_t total = 0;
+    for (std::size_t k = 0; k < E; ++k) {
+      std::size_t a, b;
+      range(k, a, b);
+      for (std::size_t s = a; s <= b; ++s) ++first[s + 1];
+      total += b - a + 1;
+    }
+    if (total <= 8 * E || count == 1) break;
+  }
+  std::size_t widest = 0;
+  for (std::size_t s = 0; s < count; ++s) widest = std::max<std::size_t>(widest, first[s + 1]);
+  if (widest > std::max<std::size_t>(64, E / 16)) {
+    overlap_usable = E <= kFlatMax;  // a linear scan still pays for a few edges
+    return;
+  }
+  for (std::size_t s = 0; s < count; ++s) first[s + 1] += first[s];
+  std::vector<double> x0(first[count]), y0(first[count]), x1(first[count]), y1(first[count]);
+  std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+  for (std::size_t k = 0; k < E; ++k) {
+    std::size_t a, b;
+    range(k, a, b);
+    for (std::size_t s = a; s <= b; ++s) {
+      const std::uint32_t i = fill[s]++;
+      x0[i] = rx0[k], y0[i] = ry0[k], x1[i] = rx1[k], y1[i] = ry1[k];
+    }
+  }
+  rx0.swap(x0), ry0.swap(y0), rx1.swap(x1), ry1.swap(y1);
+  slab.swap(first);
+}
+
+std::size_t NfpFlat::slab_of(double y, std::size_t count) const {
+  const double s = std::floor((y - ylo) * yscale);
+  return s <= 0 ? 0 : s >= double(count - 1) ? count - 1 : std::size_t(s);
+}
+
+int NfpFlat::overlapping(const Vec2& t) const {
+  const double tx = t.x(), ty = t.y(), M = bound_m(t, rmax);
+  if (!(M <= kHigh)) return -1;
+  const double B = 0x1p-44 * M * M;
+  // Branch-free over the edges (of t's slab): `close` collects the undecided cases.
+  bool close = false, in = false;
+  std::size_t k0 = 0, n = rx0.size();
+  if (!slab.empty()) {
+    if (ty < ylo || ty > yhi) return 0;  // below or above every ring vertex (monotone rounding)
+    const std::size_t s = slab_of(ty, slab.size() - 1);
+    k0 = slab[s], n = slab[s + 1];
+  }
+  const double *x0 = rx0.data(), *y0 = ry0.data(), *x1 = rx1.data(), *y1 = ry1.data();
+  for (std::size_t k = k0; k < n; ++k) {
+    const bool above0 = y0[k] > ty, above1 = y1[k] > ty;
+    close |= (y0[k] == ty) | (y1[k] == ty);
+    if (above0 == above1) continue;
+    const double det = (x1[k] - x0[k]) * (ty - y0[k]) - (y1[k] - y0[k]) * (tx - x0[k]);
+    close |= std::abs(det) <= B;
+    in ^= (det > 0) == above1;
+  }
+  if (close) return -1;
+  if (!in) return 0;
+  for (const Vec2& p : points)
+    if (p.x() == tx && p.y() == ty) return -1;
+  for (const auto& s : slits) {
+    const Vec2 &a = s[0], &b = s[1];
+    if (tx < std::min(a.x(), b.x()) || tx > std::max(a.x(), b.x()) || ty < std::min(a.y(), b.y()) || ty > std::max(a.y(), b.y()))
+      continue;
+    const double det = (b.x() - a.x()) * (ty - a.y()) - (b.y() - a.y()) * (tx - a.x());
+    if (std::abs(det) <= B) return -1;
+  }
+  return 1;
+}
+
+void NfpFlat::nearest_candidates(const Vec2& t, std::vector<std::uint32_t>& out) const {
+  const double tx = t.x(), ty = t.y(), M = bound_m(t, rmax), e = 0x1p-40 * M, B = 0x1p-40 * M * M;
+  const std::size_t n = px0.size();  // ≤ kFlatMax (usable)
+  const double *x0 = px0.data(), *y0 = py0.data(), *x1 = px1.data(), *y1 = py1.data(), *il = pinv.data();
+  double q[kFlatMax];
+  double best = INFINITY;
+  for (std::size_t k = 0; k < n; ++k) {
+    const double wx = tx - x0[k], wy = ty - y0[k], ex = x1[k] - x0[k], ey = y1[k] - y0[k];
+    const double s = std::clamp((wx * ex + wy * ey) * il[k], 0.0, 1.0);
+    const double dx = wx - s * ex, dy = wy - s * ey;
+    q[k] = dx * dx + dy * dy;
+    best = q[k] < best ? q[k] : best;
+  }
+  const double r = std::sqrt(best) + 2 * e;
+  const double thr = r * r * (1 + 0x1p-40);
+  for (std::size_t k = 0; k < n; ++k)
+    if (q[k] <= thr) {
+      // dot(t − a, b − a) and dot(t − b, a − b) beyond B: the projection of t falls strictly
+      // inside the exact piece (the same error reasoning as for the determinant).
+      const double wx = tx - x0[k], wy = ty - y0[k], ex = x1[k] - x0[k], ey = y1[k] - y0[k];
+      const double dot = wx * ex + wy * ey, l2 = ex * ex + ey * ey;
+      const bool inside = dot > B && l2 - dot > B;
+      out.push_back(std::uint32_t(k) | (inside ? kInside : 0u));
+    }
+}
+
+void NfpFlat::first_hit_candidates(const Vec2& t, const Vec2& d, std::vector<std::uint32_t>& out) const {
+  const double tx = t.x(), ty = t.y(), dx = d.x(), dy = d.y();
+  const double e = 0x1p-40 * bound_m(t, rmax) * (std::abs(dx) + std::abs(dy));
+  const std::size_t n = px0.size();
+  const double *x0 = px0.data(), *y0 = py0.data(), *x1 = px1.data(), *y1 = py1.data();
+  double U = INFINITY;
+  thread_local std::vector<double> los;
+  los.clear();
+  const std::size_t first = out.size();
+  for (std::size_t k = 0; k < n; ++k) {
+    const double ax = x0[k] - tx, ay = y0[k] - ty, bx = x1[k] - tx, by = y1[k] - ty;
+    const double ca = dx * ay - dy * ax, cb = dx * by - dy * bx;
+    if ((ca > e && cb > e) || (ca < -e && cb < -e)) continue;  // misses the line
+    const double pa = dx * ax + dy * ay, pb = dx * bx + dy * by;
+    const double lo = std::min(pa, pb) - e, hi = std::max(pa, pb) + e;
+    if (hi <= 0) continue;  // behind t
+    const bool crosses = lo > 0 && ((ca > e && cb < -e) || (ca < -e && cb > e));
+    if (crosses) U = std::min(U, hi);
+    if (lo <= U) out.push_back(std::uint32_t(k) | (crosses ? kInside : 0u)), los.push_back(lo);
+  }
+  // Keep those still within the final U (in increasing index order).
+  std::size_t w = first;
+  for (std::size_t i = first; i < out.size(); ++i)
+    if (los[i - first] <= U) out[w++] = out[i];
+  out.resize(w);
+}
+
+}  // namespace pendepth::nonconvex2

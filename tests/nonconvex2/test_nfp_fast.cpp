@@ -1,0 +1,250 @@
+// NoFitPolygon2's floating fast path (nfp_fast.cpp, issue 19 item 1) against its exact path
+// (NoFitPolygon2::Impl::overlapping_exact / minimum(t, true) / along(t, d, true): the pair-sum
+// overlap test and the best-first hierarchy traversals with every decision exact): every answer
+// bit for bit equal — overlap decisions, depth, translation, normal, witnesses, features — on
+// placements where the floating decisions must defer: ring vertices and points on ring edges, each
+// moved by ±1 and ±2 ulps, slits (ends, middles, beside them), isolated points, integer grid points
+// of integer-coordinate pairs (rays through vertices, placements level with vertices), plus random
+// placements; directions along the axes, the diagonals, towards ring vertices (rays through them)
+// and random ones. Inputs: nesting pieces (albano every ordered pair, shirts, trousers), exact fits
+// (combs, a slot, a hole fit, a bottle neck, a closed slot) and the same pairs with Q, or both,
+// turned by quarter turns (exact). The test also checks that both outcomes of the overlap filter
+// occur (certified and deferred), so the deferral is exercised. Pinned seeds.
+#include <pendepth/nfp2.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <iostream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "nfp_shapes.hpp"
+#include "nonconvex2/nfp_impl.hpp"
+#include "nonconvex2/query.hpp"
+#include "polygon2/shapes.hpp"
+
+namespace {
+
+using nonconvex2_test::instance;
+using nonconvex2_test::mapped;
+using pendepth::Depth2;
+using pendepth::NoFitPolygon2;
+using pendepth::Polygon;
+using pendepth::Vec2;
+
+bool same(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+bool same(const Vec2& a, const Vec2& b) { return same(a.x(), b.x()) && same(a.y(), b.y()); }
+
+::testing::AssertionResult same(const Depth2& a, const Depth2& b) {
+  if (same(a.depth, b.depth) && same(a.translation, b.translation) && same(a.normal, b.normal) &&
+      same(a.witness_p, b.witness_p) && same(a.witness_q, b.witness_q) && a.feature_p == b.feature_p &&
+      a.feature_q == b.feature_q && a.overlapping == b.overlapping && a.kind == b.kind)
+    return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "fast depth " << a.depth << " (" << a.translation.transpose() << ", features "
+                                       << a.feature_p.index << "/" << a.feature_q.index << ") vs exact " << b.depth
+                                       << " (" << b.translation.transpose() << ", features " << b.feature_p.index << "/"
+                                       << b.feature_q.index << ")";
+}
+
+struct Counts {
+  std::size_t queries = 0, certified = 0, deferred = 0, overlapping = 0;
+};
+Counts& counts() {
+  static Counts c;
+  return c;
+}
+
+Vec2 ulp_step(const Vec2& v, int dx, int dy) {
+  auto step = [](double x, int k) {
+    for (; k > 0; --k) x = std::nextafter(x, INFINITY);
+    for (; k < 0; ++k) x = std::nextafter(x, -INFINITY);
+    return x;
+  };
+  return Vec2(step(v.x(), dx), step(v.y(), dy));
+}
+
+// Every query at t with every direction: fast path against exact path, bit for bit.
+void check_at(const NoFitPolygon2& nfp, const Vec2& t, const std::vector<Vec2>& dirs, const std::string& what) {
+  const NoFitPolygon2::Impl& N = nfp_impl(nfp);
+  Counts& c = counts();
+  ++c.queries;
+  if (N.flat.usable) {
+    const int f = N.flat.overlapping(t);
+    (f < 0 ? c.deferred : c.certified) += 1;
+  }
+  const bool exact = N.overlapping_exact(t);
+  c.overlapping += exact;
+  ASSERT_EQ(nfp.overlapping(t), exact) << what << " t = " << t.transpose();
+  ASSERT_TRUE(same(nfp.minimum(t), N.minimum(t, true))) << what << " σ at t = " << t.transpose();
+  for (const Vec2& d_in : dirs) {
+    if (d_in.x() == 0 && d_in.y() == 0) continue;
+    const Vec2 d = pendepth::nonconvex2::check_and_scale(t, d_in);
+    ASSERT_TRUE(same(nfp.along(t, d_in), N.along(t, d, true))) << what << " σ_d at t = " << t.transpose() << " d = " << d_in.transpose();
+  }
+}
+
+// Degenerate and random placements of one pair.
+void check_pair(const Polygon& P, const Polygon& Q, std::mt19937_64& rng, int random, const std::string& what,
+                bool require_flat = true) {
+  const NoFitPolygon2 nfp(P, Q);
+  if (require_flat) ASSERT_TRUE(nfp_impl(nfp).flat.usable) << what;
+  std::vector<Vec2> verts;
+  for (const auto& poly : nfp.polygons())
+    for (const auto& ring : poly) verts.insert(verts.end(), ring.begin(), ring.end());
+  Vec2 lo = verts[0], hi = verts[0];
+  for (const Vec2& v : verts) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  std::uniform_real_distribution<double> ux(lo.x(), hi.x()), uy(lo.y(), hi.y()), ua(0, 2 * M_PI);
+  const std::vector<Vec2> axes{{1, 0}, {0, 1}, {-1, 0}, {0, -1}, {1, 1}, {-1, 1}};
+  auto dirs_for = [&](const Vec2& t) {
+    std::vector<Vec2> d = axes;
+    for (int k = 0; k < 2; ++k) d.push_back(verts[rng() % verts.size()] - t);  // rays through vertices
+    const double a = ua(rng);
+    d.emplace_back(std::cos(a), std::sin(a));
+    return d;
+  };
+  auto near = [&](const Vec2& p) {
+    for (int dx = -2; dx <= 2; ++dx)
+      for (int dy = -2; dy <= 2; ++dy)
+        if ((dx + dy) % 2 == 0 || dx == 0 || dy == 0) check_at(nfp, ulp_step(p, dx, dy), dirs_for(p), what);
+  };
+  // Ring vertices and points on ring edges (a quarter and a half along), with ulp moves.
+  std::size_t step = std::max<std::size_t>(1, verts.size() / 24);
+  for (const auto& poly : nfp.polygons())
+    for (const auto& ring : poly)
+      for (std::size_t i = 0; i < ring.size(); i += step) {
+        const Vec2 &a = ring[i], &b = ring[(i + 1) % ring.size()];
+        near(a);
+        near(0.5 * (a + b));
+        check_at(nfp, a + 0.25 * (b - a), dirs_for(a), what);
+      }
+  for (const auto& s : nfp.slits()) {
+    near(s[0]), near(s[1]), near(0.5 * (s[0] + s[1]));
+    const Vec2 n = Vec2(s[1].y() - s[0].y(), s[0].x() - s[1].x()) * 0x1p-20;
+    check_at(nfp, 0.5 * (s[0] + s[1]) + n, dirs_for(s[0]), what);
+  }
+  for (const Vec2& p : nfp.points()) near(p);
+  // Integer grid points in the box (integer pairs: placements level with vertices, on edges).
+  if (hi.x() - lo.x() <= 64 && hi.y() - lo.y() <= 64)
+    for (double x = std::floor(lo.x()); x <= hi.x(); x += 1)
+      for (double y = std::floor(lo.y()); y <= hi.y(); y += 1) check_at(nfp, Vec2(x, y), axes, what);
+  for (int k = 0; k < random; ++k) {
+    const Vec2 t(ux(rng), uy(rng));
+    check_at(nfp, t, dirs_for(t), what);
+  }
+}
+
+Polygon quarter_turns(const Polygon& S, int k) {
+  return mapped(S, [&](const Vec2& p) {
+    Vec2 v = p;
+    for (int i = 0; i < k; ++i) v = Vec2(-v.y(), v.x());
+    return v;
+  });
+}
+
+// The pair, Q turned by 1–3 quarter turns, and both turned by one.
+void check_turned(const Polygon& P, const Polygon& Q, std::mt19937_64& rng, int random, const std::string& what) {
+  check_pair(P, Q, rng, random, what);
+  for (int k = 1; k < 4; ++k) check_pair(P, quarter_turns(Q, k), rng, random, what + " Q turned " + std::to_string(k));
+  check_pair(quarter_turns(P, 1), quarter_turns(Q, 1), rng, random, what + " both turned");
+}
+
+TEST(NfpFastPath, ExactFits) {
+  std::mt19937_64 rng(19001);
+  const Polygon unit = Polygon::simple(std::vector<Vec2>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, "unit");
+  const Polygon square = Polygon::simple(std::vector<Vec2>{{0, 0}, {2, 0}, {2, 2}, {0, 2}}, "square");
+  {
+    const Polygon P = Polygon::simple(polygon2_test::comb_ring(4, 3, 2, 5, 2), "comb P");
+    auto r = polygon2_test::comb_ring(3, 2, 3, 5, 2);
+    for (auto& p : r) p = Vec2(p.x(), -p.y());
+    check_turned(P, Polygon::simple(r, "comb Q"), rng, 40, "combs");
+  }
+  check_turned(Polygon::simple(std::vector<Vec2>{{0, 0}, {7, 0}, {7, 8}, {5, 8}, {5, 2}, {2, 2}, {2, 8}, {0, 8}}, "U"),
+               Polygon::simple(std::vector<Vec2>{{0, 0}, {3, 0}, {3, 1}, {0, 1}}, "block"), rng, 40, "slot");
+  check_turned(Polygon({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{4, 4}, {6, 4}, {6, 6}, {4, 6}}}, "plate"), square, rng, 40,
+               "hole fit");
+  check_turned(Polygon::simple(std::vector<Vec2>{{0, 0}, {10, 0}, {10, 10}, {6, 10}, {6, 7}, {7, 7}, {7, 3}, {3, 3}, {3, 7}, {4, 7}, {4, 10}, {0, 10}},
+                               "bottle"),
+               square, rng, 40, "bottle");
+  check_turned(Polygon({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{3, 4}, {7, 4}, {7, 5}, {3, 5}}}, "plate with a slot"), unit, rng, 40,
+               "closed slot");
+  // Non-integer exact fit: a slot of width 0.1 (not a dyadic) and a block of the same width.
+  check_turned(Polygon::simple(std::vector<Vec2>{{0, 0}, {0.7, 0}, {0.7, 0.8}, {0.5, 0.8}, {0.5, 0.2}, {0.4, 0.2}, {0.4, 0.8}, {0, 0.8}}, "thin U"),
+               Polygon::simple(std::vector<Vec2>{{0, 0}, {0.1, 0}, {0.1, 0.3}, {0, 0.3}}, "thin block"), rng, 60, "thin slot");
+  const Counts& c = counts();
+  EXPECT_GT(c.certified, c.queries / 4);  // the filter decides most placements ...
+  EXPECT_GT(c.deferred, c.queries / 50);  // ... and defers on the degenerate ones
+  EXPECT_GT(c.overlapping, c.queries / 10);
+  std::cout << "[fast path] " << c.queries << " placements, " << c.certified << " certified, " << c.deferred
+            << " deferred, " << c.overlapping << " overlapping\n";
+}
+
+TEST(NfpFastPath, NestingPieces) {
+  std::mt19937_64 rng(19002);
+  const auto albano = instance("albano.json");
+  for (std::size_t i = 0; i < albano.size(); ++i)
+    for (std::size_t j = 0; j < albano.size(); ++j)
+      check_pair(albano[i], albano[j], rng, 20, "albano " + std::to_string(i) + " " + std::to_string(j));
+  for (const std::string file : {"shirts", "trousers"}) {
+    const auto pieces = instance(file + ".json");
+    for (std::size_t k = 0; k < 6; ++k) {
+      const std::size_t i = rng() % pieces.size(), j = rng() % pieces.size();
+      check_turned(pieces[i], pieces[j], rng, 10, file + " " + std::to_string(i) + " " + std::to_string(j));
+    }
+  }
+}
+
+// Random star pairs with real and integer coordinates, holes included via the shared shapes.
+TEST(NfpFastPath, RandomStars) {
+  std::mt19937_64 rng(19003);
+  for (int k = 0; k < 12; ++k) {
+    const bool grid = k % 2 == 0;
+    const Polygon P = nonconvex2_test::star(rng, 6 + int(rng() % 10), 5, 10, grid);
+    const Polygon Q = nonconvex2_test::star(rng, 4 + int(rng() % 6), 1, 4, grid);
+    check_turned(P, Q, rng, 30, "stars " + std::to_string(k));
+  }
+}
+
+}  // namespace
+
+namespace {
+
+// Larger no-fit polygons: the overlap filter scans only t's horizontal slab of ring edges.
+TEST(NfpFastPath, LargeRingsUseSlabs) {
+  std::mt19937_64 rng(19004);
+  for (int k = 0; k < 3; ++k) {
+    const Polygon P = nonconvex2_test::star(rng, 60, 50, 100, k == 1);
+    const Polygon Q = nonconvex2_test::star(rng, 24, 5, 12, k == 1);
+    const NoFitPolygon2 nfp(P, Q);
+    const auto& F = nfp_impl(nfp).flat;
+    ASSERT_FALSE(F.slab.empty()) << k;
+    ASSERT_TRUE(F.overlap_usable) << k;
+    check_pair(P, Q, rng, 300, "large stars " + std::to_string(k), false);
+  }
+  // A comb against an L: tall edges (the teeth) span many slabs; slabs are kept only while each
+  // holds at most max(64, a sixteenth of the) ring edges; the answers stay the exact path's.
+  std::vector<Vec2> comb{{0, 0}, {79, 0}};
+  for (int k = 39; k >= 0; --k) {
+    comb.emplace_back(2 * k + 1, 12), comb.emplace_back(2 * k, 12);
+    if (k > 0) comb.emplace_back(2 * k, 2), comb.emplace_back(2 * k - 1, 2);
+  }
+  const Polygon P = Polygon::simple(comb, "comb"), L = Polygon::simple(std::vector<Vec2>{{0, 0}, {0.5, 0}, {0.5, 2.5}, {3, 2.5}, {3, 3}, {0, 3}}, "L");
+  const NoFitPolygon2 nfp(P, L);
+  const auto& F = nfp_impl(nfp).flat;
+  std::size_t edges = 0;
+  for (const auto& poly : nfp.polygons())
+    for (const auto& ring : poly) edges += ring.size();
+  std::size_t widest = 0;
+  for (std::size_t k = 0; k + 1 < F.slab.size(); ++k) widest = std::max<std::size_t>(widest, F.slab[k + 1] - F.slab[k]);
+  EXPECT_LE(widest, std::max<std::size_t>(64, edges / 16));
+  EXPECT_LE(F.rx0.size(), 8 * edges);
+  std::cout << "[comb] " << edges << " ring edges, " << (F.slab.empty() ? 0 : F.slab.size() - 1) << " slabs, widest " << widest
+            << ", overlap filter " << (F.overlap_usable ? "on" : "off") << "\n";
+  check_pair(P, L, rng, 300, "comb", false);
+}
+
+}  // namespace
