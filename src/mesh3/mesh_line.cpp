@@ -29,6 +29,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <utility>
 
@@ -211,9 +212,10 @@ bool meets_interior(const ConvexPolytope& Pi, const ConvexPolytope& Qj, const Fr
   return true;
 }
 
-// Slab test of the ray {s·d : s >= 0} against a (widened) box.
-bool ray_meets(const Box3& b, const Vec3& d) {
-  double lo = 0, hi = INFINITY;
+// The parameters (length units, s·|d|) where the ray {s·d̂ : s >= 0} is in a (widened) box,
+// widened again for rounding; false when it misses the box.
+bool ray_box(const Box3& b, const Vec3& d, double dn, double& lo, double& hi) {
+  lo = 0, hi = INFINITY;
   for (int k = 0; k < 3; ++k) {
     if (d[k] == 0) {
       if (b.lo[k] > 0 || b.hi[k] < 0) return false;
@@ -223,7 +225,9 @@ bool ray_meets(const Box3& b, const Vec3& d) {
     if (t0 > t1) std::swap(t0, t1);
     lo = std::max(lo, t0), hi = std::min(hi, t1);
   }
-  return lo <= hi * (1 + 0x1p-30) + 0x1p-1000;
+  if (!(lo <= hi * (1 + 0x1p-30) + 0x1p-1000)) return false;
+  lo = lo * dn * (1 - 0x1p-30) - 0x1p-1000, hi = hi * dn * (1 + 0x1p-30) + 0x1p-1000;
+  return true;
 }
 
 }  // namespace
@@ -236,50 +240,81 @@ Depth3 along(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, const 
   convex3::RelativePose rel;
   rel.R = pl.R, rel.tq = pl.tq, rel.tp = pl.tp;
 
-  std::vector<Interval> iv;
-  std::size_t examined = 0;
+  // Candidate pairs: those whose box sum the ray meets, with the box's parameter range [A, B]
+  // (length units) ⊇ the pair's interval; each pair's descents run on first need.
+  struct Cand {
+    std::size_t i, j;
+    double A, B;
+    int state = -1;  // -1 not evaluated, 0 no interval at s > 0, 1 interval iv[index]
+    std::size_t index = 0;
+  };
+  std::vector<Cand> cand;
+  const double dn = dl.norm();
   for (std::size_t i = 0; i < m.P.size(); ++i)
     for (std::size_t j = 0; j < m.Q.size(); ++j) {
-      if (!ray_meets(sum_box(m, pl, i, j), dl)) continue;
+      double A, B;
+      if (ray_box(sum_box(m, pl, i, j), dl, dn, A, B)) cand.push_back({i, j, A, B});
+    }
+  std::vector<Interval> iv;
+  iv.reserve(cand.size());
+  std::size_t examined = 0;
+  auto eval = [&](Cand& c) -> Interval* {
+    if (c.state < 0) {
+      c.state = 0;
       ++examined;
-      const convex3::LineExit in = convex3::line_exit_dk(m.P[i], m.Q[j], rel, -dl);
-      if (!in.hit) continue;
-      const convex3::LineExit out = convex3::line_exit_dk(m.P[i], m.Q[j], rel, dl, -1);
-      if (!out.hit || out.h_sign <= 0) continue;  // misses int M_ij, or exits at s <= 0
+      const convex3::LineExit in = convex3::line_exit_dk(m.P[c.i], m.Q[c.j], rel, -dl);
+      if (!in.hit) return nullptr;
+      const convex3::LineExit out = convex3::line_exit_dk(m.P[c.i], m.Q[c.j], rel, dl, -1);
+      if (!out.hit || out.h_sign <= 0) return nullptr;  // misses int M_ij, or exits at s <= 0
       Interval x;
-      x.i = i, x.j = j, x.out = out;
-      x.a = {-in.exit, -in.h_sign, facet_of(m.P[i], m.Q[j], in, f)};
-      x.b = {out.exit, out.h_sign, facet_of(m.P[i], m.Q[j], out, f)};
+      x.i = c.i, x.j = c.j, x.out = out;
+      x.a = {-in.exit, -in.h_sign, facet_of(m.P[c.i], m.Q[c.j], in, f)};
+      x.b = {out.exit, out.h_sign, facet_of(m.P[c.i], m.Q[c.j], out, f)};
       // A facet parallel to ℓ crossed by the perturbed line: ℓ lies in that supporting plane
       // (its h is 0, else the perturbed chord would be unbounded), so it misses int M_ij.
-      if (x.a.f.den_sign == 0 || x.b.f.den_sign == 0) continue;
+      if (x.a.f.den_sign == 0 || x.b.f.den_sign == 0) return nullptr;
       x.overlap0 = in.h_sign > 0;  // and out.h_sign > 0: 0 ∈ int M_ij
       if (x.overlap0) x.genuine = 1;
+      c.state = 1, c.index = iv.size();
       iv.push_back(std::move(x));
     }
+    return c.state == 1 ? &iv[c.index] : nullptr;
+  };
   auto genuine = [&](Interval& x) {
     if (x.genuine < 0) x.genuine = meets_interior(m.P[x.i], m.Q[x.j], f) ? 1 : 0;
     return x.genuine == 1;
   };
 
-  const Interval* last = nullptr;  // the interval whose exit is the answer
+  std::size_t last = SIZE_MAX;  // the interval whose exit is the answer
   bool overlapping = false;
-  for (const Interval& x : iv)
-    if (x.overlap0) overlapping = true;
+  for (Cand& c : cand)  // the intervals holding 0: boxes with A <= 0 <= B
+    if (c.A <= 0 && c.B >= 0)
+      if (Interval* x = eval(c); x && x->overlap0) {
+        overlapping = true;
+        if (!separation && (last == SIZE_MAX || compare(x->b, iv[last].b, f) > 0)) last = c.index;
+      }
   if (separation) {
-    for (Interval& x : iv)
-      if ((!last || compare(x.b, last->b, f) > 0) && genuine(x)) last = &x;
+    // The largest genuine exit: boxes in decreasing B until B is below the best exit.
+    std::sort(cand.begin(), cand.end(), [](const Cand& a, const Cand& b) { return a.B > b.B; });
+    for (Cand& c : cand) {
+      if (last != SIZE_MAX && c.B < iv[last].b.v) break;
+      Interval* x = eval(c);
+      if (x && (last == SIZE_MAX || compare(x->b, iv[last].b, f) > 0) && genuine(*x)) last = c.index;
+    }
   } else {
-    // Walk: cur = 0, then the exit of the interval that last held cur strictly.
-    for (Interval& x : iv)
-      if (x.overlap0 && (!last || compare(x.b, last->b, f) > 0)) last = &x;
-    bool moved = last != nullptr;
-    while (moved) {
+    // Walk: cur = 0, then the exit of the interval that last held cur strictly (a box holding
+    // an interval around cur has A < cur < B).
+    for (bool moved = last != SIZE_MAX; moved;) {
       moved = false;
-      for (Interval& x : iv) {
-        if (&x == last || compare(x.b, last->b, f) <= 0 || compare(x.a, last->b, f) >= 0) continue;
-        if (!genuine(x)) continue;
-        last = &x, moved = true;
+      const double cur = iv[last].b.v;
+      for (Cand& c : cand) {
+        if (!(c.A < cur && cur < c.B)) continue;
+        Interval* x = eval(c);
+        if (!x || c.index == last) continue;
+        const End& b = iv[last].b;
+        if (compare(x->b, b, f) <= 0 || compare(x->a, b, f) >= 0 || !genuine(*x)) continue;
+        last = c.index, moved = true;
+        break;
       }
     }
   }
@@ -288,18 +323,19 @@ Depth3 along(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, const 
   r.kind = separation ? DepthKind::Separation : DepthKind::Directional;
   r.candidates = examined;
   r.overlapping = overlapping;
-  if (!last) return r;
-  const double s = last->b.v;
+  if (last == SIZE_MAX) return r;
+  const Interval* x = &iv[last];
+  const double s = x->b.v;
   const Vec3 dir = dl.normalized();
   r.depth = r.lower_bound = r.upper_bound = s;
   r.translation = pl.Rp * (s * dir);
   r.normal = pl.Rp * dir;
-  r.facet_normal = pl.Rp * last->out.unit;
-  r.witness_p = r.witness_q = pl.Rp * last->out.contact + pl.tp_world;
-  r.feature_p = last->out.feature_p;
-  r.feature_q = last->out.feature_q;
-  r.piece_p = static_cast<int>(last->i);
-  r.piece_q = static_cast<int>(last->j);
+  r.facet_normal = pl.Rp * x->out.unit;
+  r.witness_p = r.witness_q = pl.Rp * x->out.contact + pl.tp_world;
+  r.feature_p = x->out.feature_p;
+  r.feature_q = x->out.feature_q;
+  r.piece_p = static_cast<int>(x->i);
+  r.piece_q = static_cast<int>(x->j);
   return r;
 }
 
