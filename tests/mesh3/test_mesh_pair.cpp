@@ -266,16 +266,16 @@ TEST(MeshPair, BatchesEqualSingles) {
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> U(-2, 4);
   std::vector<Pose3> poses;
-  for (int k = 0; k < 40; ++k) poses.emplace_back(Vec3(U(rng), U(rng), U(rng) / 3));
+  for (int k = 0; k < 12; ++k) poses.emplace_back(Vec3(U(rng), U(rng), U(rng) / 3));
   const Pose3 pp(Eigen::Quaterniond(1, 0.1, 0, 0), Vec3(0.1, 0, 0));
   std::vector<Vec3> ds{Vec3(1, 0.5, 0)};
   std::vector<Depth3> mins(poses.size()), alongs(poses.size());
   std::vector<Distance3> dists(poses.size());
-  bool over_b[40];
+  bool over_b[12];
   pair.minimum(pp, poses, mins, 2);
   pair.along(pp, poses, ds, alongs, 2);
   pair.signed_distance(pp, poses, dists, 2);
-  pair.overlapping(poses, std::span<bool>(over_b, 40), 2);
+  pair.overlapping(poses, std::span<bool>(over_b, 12), 2);
   for (std::size_t k = 0; k < poses.size(); ++k) {
     const Depth3 m = pair.minimum(pp, poses[k]), a = pair.along(pp, poses[k], ds[0]);
     EXPECT_EQ(mins[k].depth, m.depth);
@@ -309,5 +309,37 @@ TEST(MeshPair, ErrorsAndScale) {
   // A translation with no exact value at the scale of the huge pair is refused.
   EXPECT_THROW(scaled.along(Pose3(), Pose3(Vec3(1e-300, 0, 0)), Vec3(1, 0, 0)), InvalidInput);
 }
+
+#ifdef PENDEPTH_CGAL_MESHES
+// Real meshes nobody here drew (libcgal-demo): moving Q by σ_d's translation leaves the interiors
+// disjoint (exact test), 1e-9 less does not; σ's lower <= upper <= σ_d; separation >= σ_d.
+TEST(MeshPair, CgalSampleMeshProperties) {
+  const std::string dir = PENDEPTH_CGAL_MESHES;
+  const Shape3 cross = Shape3::from_file(dir + "/cross.off", "cross"), star = Shape3::from_file(dir + "/star.off", "star");
+  ASSERT_FALSE(cross.is_convex());
+  ASSERT_FALSE(star.is_convex());
+  const Pair3 pair(cross, star);
+  Vec3 lo = cross.polytope()[0], hi = lo;
+  for (const Vec3& v : cross.polytope().vertices()) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> U(0, 1);
+  int checked = 0;
+  for (int k = 0; k < 16; ++k) {
+    const Pose3 pq(Eigen::Quaterniond(U(rng), U(rng), U(rng), U(rng)), lo + (hi - lo).cwiseProduct(Vec3(U(rng), U(rng), U(rng))));
+    const Vec3 d(U(rng) - 0.5, U(rng) - 0.5, U(rng) - 0.5);
+    const Depth3 a = pair.along(Pose3(), pq, d);
+    ASSERT_EQ(a.overlapping, pair.overlapping(Pose3(), pq));
+    if (a.depth == 0) continue;
+    ++checked;
+    EXPECT_FALSE(pair.overlapping(Pose3(), Pose3(pq.rotation, pq.translation + a.translation * (1 + 1e-9)))) << k;
+    EXPECT_TRUE(pair.overlapping(Pose3(), Pose3(pq.rotation, pq.translation + a.translation * (1 - 1e-9)))) << k;
+    EXPECT_GE(pair.separation(Pose3(), pq, d).depth, a.depth);
+    const Depth3 s = pair.minimum(Pose3(), pq);
+    EXPECT_LE(s.lower_bound, s.upper_bound);
+    EXPECT_LE(s.lower_bound, a.depth * (1 + 1e-12));
+  }
+  EXPECT_GT(checked, 5);
+}
+#endif
 
 }  // namespace
