@@ -14,7 +14,8 @@
 // int M_ij while ℓ only grazes it (ℓ inside a supporting plane: a face of Q sliding along a face
 // of P — every slot); so an interval is used only after the exact test that ℓ meets int M_ij:
 // no plane parallel to d separates P_i and Q'_j (2D separating axes of the projections along d:
-// the planes spanned by d and an edge of either piece; weak separation = touching = miss). Then
+// the planes spanned by d and an edge of either piece; weak separation = touching = miss); it runs
+// before the descents (cheaper, and it rejects most pairs the boxes let through). Then
 // the exits are exact: an endpoint is λ = u·(p − q')/(u·d) (point λ·d) for the facet's defining
 // features (P face, Q face, or the cross product of an edge of each), compared between pairs by
 // the rounded values when they differ by more than 2^-40 relative, else by the exact sign of the
@@ -262,6 +263,8 @@ Depth3 along(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, const 
     if (c.state < 0) {
       c.state = 0;
       ++examined;
+      // The exact test first: it is cheap against the descents and rejects most box candidates.
+      if (!meets_interior(m.P[c.i], m.Q[c.j], f)) return nullptr;
       const convex3::LineExit in = convex3::line_exit_dk(m.P[c.i], m.Q[c.j], rel, -dl);
       if (!in.hit) return nullptr;
       const convex3::LineExit out = convex3::line_exit_dk(m.P[c.i], m.Q[c.j], rel, dl, -1);
@@ -274,7 +277,7 @@ Depth3 along(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, const 
       // (its h is 0, else the perturbed chord would be unbounded), so it misses int M_ij.
       if (x.a.f.den_sign == 0 || x.b.f.den_sign == 0) return nullptr;
       x.overlap0 = in.h_sign > 0;  // and out.h_sign > 0: 0 ∈ int M_ij
-      if (x.overlap0) x.genuine = 1;
+      x.genuine = 1;               // ℓ meets int M_ij (tested above)
       c.state = 1, c.index = iv.size();
       iv.push_back(std::move(x));
     }
