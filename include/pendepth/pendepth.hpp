@@ -306,8 +306,9 @@ class WarmStart3 {
 /// upper_bound = −lower. Results name the pieces (piece_p, piece_q) whose vertices / half-edges
 /// / triangles feature_p, feature_q index. When a decomposition has rounded pieces
 /// (ConvexDecomposition3::rounded_pieces > 0) the answers are exact for the rounded pieces, which
-/// may differ from the mesh by slivers of ½ ulp. cast, and the warm start (ignored), are for
-/// convex pairs: cast on a mesh pair throws InvalidInput.
+/// may differ from the mesh by slivers of ½ ulp. `candidates` counts the piece pairs descended
+/// (σ_d, separation) or sums the convex work (σ). cast, and the warm start (ignored), are for
+/// convex pairs: cast on a mesh pair throws InvalidInput. Costs: docs/benchmarks.md.
 class Pair3 {
  public:
   Pair3(Shape3 P, Shape3 Q, Prepare prepare = Prepare::Auto);
