@@ -124,8 +124,12 @@ Depth3 minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q) {
   for (int a = 0; a < 3; ++a) dirs.push_back(Vec3::Unit(a)), dirs.push_back(-Vec3::Unit(a));
   bool have = false;
   auto meets = [&](double upper) { return upper - lower <= 16 * std::numeric_limits<double>::epsilon() * upper; };
+  std::vector<Vec3> tried;  // unit directions already asked (deep normals are often axes)
   for (const Vec3& d : dirs) {
     if (!(d.allFinite() && d != Vec3::Zero())) continue;
+    const Vec3 u = d.normalized();
+    if (std::find(tried.begin(), tried.end(), u) != tried.end()) continue;
+    tried.push_back(u);
     const Depth3 r = along(m, pose_p, pose_q, d, false);
     work += r.candidates;
     if (!have || r.depth < best.depth) best = r, have = true;
