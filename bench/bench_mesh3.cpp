@@ -3,8 +3,13 @@
 // same properties (is_closed, does_self_intersect, is_outward_oriented on a Surface_mesh, Epick),
 // and the exact convex decomposition (CGAL Nef convex_decomposition_3) with its piece counts.
 // Inputs: tori of n × n/2 quads (2·n²/2 triangles), combs of k teeth (polycubes).
+// Pair3 on meshes (issue 17 items 3–5): µs per query (overlap, σ_d, signed distance, σ bounds) by
+// mesh size — a comb of k teeth against an L block, a torus against a smaller torus, CGAL sample
+// meshes (libcgal-demo: cross, star, tripod, against themselves) — at random translations where
+// the boxes overlap, and the error of "the hulls of both meshes" against the exact σ_d.
 #include <pendepth/io.hpp>
 #include <pendepth/mesh3.hpp>
+#include <pendepth/pendepth.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
@@ -13,7 +18,9 @@
 #include <benchmark/benchmark.h>
 
 #include <cmath>
+#include <filesystem>
 #include <map>
+#include <random>
 
 namespace {
 
@@ -43,12 +50,9 @@ io::MeshFile torus(int n, int m) {
 
 // A comb of k teeth: a bar of 2k − 1 unit voxels with a tooth of 2 voxels on every other one, as
 // outward quads.
-io::MeshFile comb(int k) {
-  std::map<std::array<int, 3>, bool> vox;
-  for (int x = 0; x < 2 * k - 1; ++x) vox[{x, 0, 0}] = true;
-  for (int x = 0; x < 2 * k - 1; x += 2) vox[{x, 1, 0}] = vox[{x, 2, 0}] = true;
+io::MeshFile voxels(const std::map<std::array<int, 3>, bool>& vox, const char* source) {
   io::MeshFile f;
-  f.source = "comb";
+  f.source = source;
   std::map<std::array<int, 3>, std::size_t> id;
   auto vid = [&](std::array<int, 3> p) {
     auto [it, fresh] = id.emplace(p, f.points.size());
@@ -74,6 +78,13 @@ io::MeshFile comb(int k) {
       }
   f.face_start.push_back(f.indices.size());
   return f;
+}
+
+io::MeshFile comb(int k) {
+  std::map<std::array<int, 3>, bool> vox;
+  for (int x = 0; x < 2 * k - 1; ++x) vox[{x, 0, 0}] = true;
+  for (int x = 0; x < 2 * k - 1; x += 2) vox[{x, 1, 0}] = vox[{x, 2, 0}] = true;
+  return voxels(vox, "comb");
 }
 
 void BM_Validate_pendepth(benchmark::State& st) {
@@ -121,7 +132,145 @@ void BM_Decompose_torus(benchmark::State& st) {
 }
 void BM_Decompose_comb(benchmark::State& st) { decomposition(st, comb(static_cast<int>(st.range(0)))); }
 
+// ---- Pair3 on meshes ----
+io::MeshFile l_block() { return voxels({{{0, 0, 0}, true}, {{1, 0, 0}, true}, {{0, 1, 0}, true}}, "L"); }
+
+struct MeshCase {
+  std::string name;
+  io::MeshFile p, q;
+};
+
+std::vector<MeshCase> mesh_cases() {
+  std::vector<MeshCase> c;
+  for (int k : {2, 8, 32}) c.push_back({"comb" + std::to_string(k) + "_L", comb(k), l_block()});
+  for (int n : {8, 16}) c.push_back({"torus" + std::to_string(n) + "_torus8", torus(n, n / 2), torus(8, 4)});
+#ifdef PENDEPTH_CGAL_MESHES
+  for (const char* name : {"cross.off", "star.off", "tripod.off"}) {
+    const io::MeshFile f = io::read_mesh(std::string(PENDEPTH_CGAL_MESHES) + "/" + name);
+    c.push_back({std::string(name) + "_self", f, f});
+  }
+#endif
+  return c;
+}
+
+struct Prepared {
+  pendepth::Pair3 pair, hulls;
+  std::vector<pendepth::Pose3> poses;
+  std::vector<Vec3> dirs;
+  std::size_t triangles = 0, pieces = 0;
+};
+
+const Prepared& prepared(std::size_t index) {
+  static std::map<std::size_t, std::unique_ptr<Prepared>> cache;
+  auto& e = cache[index];
+  if (!e) {
+    const MeshCase mc = mesh_cases()[index];
+    const pendepth::Mesh3 mp = pendepth::Mesh3::validate(mc.p, "P"), mq = pendepth::Mesh3::validate(mc.q, "Q");
+    const pendepth::Shape3 sp = pendepth::Shape3::from_mesh(mp), sq = pendepth::Shape3::from_mesh(mq);
+    e.reset(new Prepared{pendepth::Pair3(sp, sq), pendepth::Pair3(pendepth::Shape3(sp.polytope()), pendepth::Shape3(sq.polytope())),
+                         {}, {}, mp.triangles().size() + mq.triangles().size(),
+                         mp.decomposition().pieces.size() + mq.decomposition().pieces.size()});
+    // Translations of Q (its box centre onto a random point of P's box, every other one pushed
+// out by half P's box diagonal in a random direction: some apart), random directions.
+    Vec3 lo = mp.points()[0], hi = lo, qlo = mq.points()[0], qhi = qlo;
+    for (const Vec3& v : mp.points()) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+    for (const Vec3& v : mq.points()) qlo = qlo.cwiseMin(v), qhi = qhi.cwiseMax(v);
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> U(0, 1);
+    for (int k = 0; k < 64; ++k) {
+      Vec3 x = lo + (hi - lo).cwiseProduct(Vec3(U(rng), U(rng), U(rng)));
+      if (k % 2) x += 0.5 * (hi - lo).norm() * Vec3(U(rng) - 0.5, U(rng) - 0.5, U(rng) - 0.5).normalized();
+      e->poses.emplace_back(x - (qlo + qhi) / 2);
+      e->dirs.emplace_back(U(rng) - 0.5, U(rng) - 0.5, U(rng) - 0.5);
+    }
+  }
+  return *e;
+}
+
+template <class Run>
+void mesh_query(benchmark::State& st, Run run) {
+  const Prepared& p = prepared(static_cast<std::size_t>(st.range(0)));
+  std::size_t i = 0;
+  for (auto _ : st) {
+    run(p, i % p.poses.size());
+    ++i;
+  }
+  st.SetLabel(mesh_cases()[static_cast<std::size_t>(st.range(0))].name);
+  st.counters["triangles"] = static_cast<double>(p.triangles);
+  st.counters["pieces"] = static_cast<double>(p.pieces);
+}
+
+void BM_MeshOverlap(benchmark::State& st) {
+  mesh_query(st, [](const Prepared& p, std::size_t i) { benchmark::DoNotOptimize(p.pair.overlapping(pendepth::Pose3(), p.poses[i])); });
+}
+void BM_MeshAlong(benchmark::State& st) {
+  mesh_query(st, [](const Prepared& p, std::size_t i) { benchmark::DoNotOptimize(p.pair.along(pendepth::Pose3(), p.poses[i], p.dirs[i])); });
+}
+void BM_MeshDistance(benchmark::State& st) {
+  mesh_query(st, [](const Prepared& p, std::size_t i) { benchmark::DoNotOptimize(p.pair.signed_distance(pendepth::Pose3(), p.poses[i])); });
+}
+void BM_MeshMinimumBounds(benchmark::State& st) {
+  mesh_query(st, [](const Prepared& p, std::size_t i) { benchmark::DoNotOptimize(p.pair.minimum(pendepth::Pose3(), p.poses[i])); });
+  // How often the certified bounds meet, and their mean relative gap, over the first 16 poses.
+  const Prepared& p = prepared(static_cast<std::size_t>(st.range(0)));
+  int over = 0, met = 0;
+  double gap = 0;
+  for (std::size_t k = 0; k < 16; ++k) {
+    const auto& pose = p.poses[k];
+    const pendepth::Depth3 r = p.pair.minimum(pendepth::Pose3(), pose);
+    if (!r.overlapping) continue;
+    ++over;
+    met += r.lower_bound == r.upper_bound;
+    gap += (r.upper_bound - r.lower_bound) / r.upper_bound;
+  }
+  st.counters["overlapping"] = over;
+  st.counters["bounds_met"] = met;
+  st.counters["mean_rel_gap"] = over ? gap / over : 0;
+}
+// The hulls of both meshes (what users do today) against the exact σ_d.
+void BM_MeshHullError(benchmark::State& st) {
+  mesh_query(st, [](const Prepared& p, std::size_t i) { benchmark::DoNotOptimize(p.hulls.along(pendepth::Pose3(), p.poses[i], p.dirs[i])); });
+  const Prepared& p = prepared(static_cast<std::size_t>(st.range(0)));
+  double worst = 0, sum = 0;
+  int n = 0, false_hits = 0;
+  // 128 translations: Q's box centre uniform in P's box grown by Q's box; random directions.
+  const auto bp = p.pair.P().polytope().vertices(), bq = p.pair.Q().polytope().vertices();
+  Vec3 lo = bp[0], hi = lo, qlo = bq[0], qhi = qlo;
+  for (const Vec3& v : bp) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+  for (const Vec3& v : bq) qlo = qlo.cwiseMin(v), qhi = qhi.cwiseMax(v);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> U(0, 1);
+  for (int i = 0; i < 128; ++i) {
+    const Vec3 c = lo - (qhi - qlo) / 2 + (hi - lo + qhi - qlo).cwiseProduct(Vec3(U(rng), U(rng), U(rng)));
+    const pendepth::Pose3 pose(c - (qlo + qhi) / 2);
+    const Vec3 d(U(rng) - 0.5, U(rng) - 0.5, U(rng) - 0.5);
+    const double exact = p.pair.along(pendepth::Pose3(), pose, d).depth;
+    const double hull = p.hulls.along(pendepth::Pose3(), pose, d).depth;
+    if (exact == 0) {
+      false_hits += hull > 0;
+      continue;
+    }
+    const double e = std::abs(hull - exact) / exact;
+    worst = std::max(worst, e), sum += e, ++n;
+  }
+  st.counters["exact_nonzero"] = n;
+  st.counters["hull_rel_err_mean"] = n ? sum / n : 0;
+  st.counters["hull_rel_err_max"] = worst;
+  st.counters["hull_says_overlap_when_apart"] = false_hits;
+}
+
+void mesh_args(benchmark::internal::Benchmark* b) {
+  for (std::size_t i = 0; i < mesh_cases().size(); ++i) b->Arg(static_cast<int>(i));
+  b->Unit(benchmark::kMicrosecond);
+}
+
 }  // namespace
+
+BENCHMARK(BM_MeshOverlap)->Apply(mesh_args);
+BENCHMARK(BM_MeshAlong)->Apply(mesh_args);
+BENCHMARK(BM_MeshDistance)->Apply(mesh_args);
+BENCHMARK(BM_MeshMinimumBounds)->Apply(mesh_args);
+BENCHMARK(BM_MeshHullError)->Apply(mesh_args);
 
 BENCHMARK(BM_Validate_pendepth)->RangeMultiplier(4)->Range(8, 512)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Validate_CGAL_PMP)->RangeMultiplier(4)->Range(8, 512)->Unit(benchmark::kMillisecond);

@@ -17,7 +17,7 @@
 // 3 an output that cannot be written (standard output or --svg FILE: full disk, closed pipe,
 // a path that cannot be created), 1 internal error. Shapes: .wkt (2D polygons); .obj, .off, .stl,
 // .ply (3D, as Shape3::from_file: a file without faces is a point set, its hull; with faces a
-// closed mesh, convex → the convex path, else a mesh shape, which Pair3 does not take yet; --hull
+// closed mesh, convex → the convex path, else a mesh shape, answered on its convex pieces; --hull
 // forces the hull); `-` (standard input) or a path without an extension (a FIFO, /dev/stdin, a
 // process substitution) is recognised by its content. P and Q must have the same dimension. Rotations: 3D quaternions for P and Q; 2D an angle in degrees for Q only.
 //
@@ -132,7 +132,7 @@ Shape2 make_shape2(const ShapeText& s, std::string_view name) {
 
 // A 3D shape as Shape3::from_file reads it (docs/design.md §3): a file without faces is a point
 // set (its hull); a file with faces a validated closed mesh (convex → the convex path, else a mesh
-// shape, which Pair3 rejects: "mesh queries are not implemented yet ... --hull"). `hull` (--hull):
+// shape, answered on its convex decomposition; cast, --generalized, --html refuse it). `hull` (--hull):
 // the hull of the vertices, faces ignored and not validated.
 Shape3 make_shape3(const ShapeText& s, std::string_view name, bool hull) {
   if (hull)
@@ -142,7 +142,7 @@ Shape3 make_shape3(const ShapeText& s, std::string_view name, bool hull) {
   return Shape3::from_mesh(pendepth::Mesh3::validate(file, name));
 }
 
-// The pair of 3D shapes; Pair3's refusal of a non-convex mesh is prefixed with that file's name.
+// The pair of 3D shapes; an error about a mesh shape (its pieces' scale) is prefixed with its file's name.
 Pair3 make_pair3(const ShapeText& p, const ShapeText& q, bool hull, pendepth::Prepare prepare = pendepth::Prepare::Auto) {
   Shape3 P = make_shape3(p, "P", hull), Q = make_shape3(q, "Q", hull);
   const ShapeText* mesh = !P.is_convex() ? &p : !Q.is_convex() ? &q : nullptr;
@@ -152,6 +152,12 @@ Pair3 make_pair3(const ShapeText& p, const ShapeText& q, bool hull, pendepth::Pr
     if (!mesh) throw;
     throw InvalidInput(mesh->source + ": " + e.what());
   }
+}
+
+// The polytopes a 3D result's features index: for a mesh pair's answer the pieces named by
+// piece_p / piece_q (Mesh3::decomposition().pieces; a convex shape is piece 0), else the shapes'.
+const pendepth::ConvexPolytope& feature_poly(const Shape3& s, int piece) {
+  return piece < 0 || s.is_convex() ? s.polytope() : s.mesh()->decomposition().pieces[static_cast<std::size_t>(piece)];
 }
 
 // --hull is about 3D files' faces: a 2D pair rejects it.
@@ -390,6 +396,8 @@ int run_depth3(const DepthArgs& a, const ShapeText& p, const ShapeText& q) {
   if (!a.approximate.empty()) return run_approximate3(a, p, q, Pose3(rp, Vec3::Zero()), Pose3(rq, t));
   const Pair3 pair = make_pair3(p, q, a.hull);
   const Pose3 pose_p(rp, Vec3::Zero()), pose_q(rq, t);
+  if ((a.generalized || !a.html.empty()) && (!pair.P().is_convex() || !pair.Q().is_convex()))
+    throw InvalidInput("--generalized, --html: convex shapes only (a non-convex mesh: add --hull)");
   if (a.generalized) return run_generalized3(a, pair.P(), pose_p, pair.Q(), pose_q);
   const Depth3 r = !d ? pair.minimum(pose_p, pose_q)
                       : a.separate ? pair.separation(pose_p, pose_q, *d) : pair.along(pose_p, pose_q, *d);
@@ -398,10 +406,10 @@ int run_depth3(const DepthArgs& a, const ShapeText& p, const ShapeText& q) {
                                             io::Html3Options{d, a.p, a.q}));
   std::string out;
   if (a.json) {
-    io::append_json(out, r, pair.P().polytope(), pair.Q().polytope());
+    io::append_json(out, r, feature_poly(pair.P(), r.piece_p), feature_poly(pair.Q(), r.piece_q));
     out += '\n';
   } else {
-    out = io::summary(r, pair.P().polytope(), pair.Q().polytope());
+    out = io::summary(r, feature_poly(pair.P(), r.piece_p), feature_poly(pair.Q(), r.piece_q));
   }
   write_stdout(out);
   return 0;
@@ -567,7 +575,8 @@ int run_distance(const DistanceArgs& a, bool cast) {
       a.json ? io::append_json(out, r, P, Q) : void(out = io::summary(r, P, Q));
     } else {
       const pendepth::Distance3 r = pair.signed_distance(pose_p, pose_q);
-      a.json ? io::append_json(out, r, P, Q) : void(out = io::summary(r, P, Q));
+      const auto &FP = feature_poly(pair.P(), r.piece_p), &FQ = feature_poly(pair.Q(), r.piece_q);
+      a.json ? io::append_json(out, r, FP, FQ) : void(out = io::summary(r, FP, FQ));
     }
   } else {
     reject_rotations(a.rotate_p, a.rotate_q);
@@ -632,7 +641,7 @@ int run_signed_batch3(const BatchArgs& a, const Pair3& pair, const Pose3& pose_p
         pair.signed_distance(pose_p, poses, out, a.threads);
       });
   return write_batch(a, results, "distance,tx,ty,tz\n", [&](std::string& out, const pendepth::Distance3& r) {
-    io::append_json(out, r, pair.P().polytope(), pair.Q().polytope());
+    io::append_json(out, r, feature_poly(pair.P(), r.piece_p), feature_poly(pair.Q(), r.piece_q));
   });
 }
 
@@ -657,7 +666,7 @@ int run_batch3(const BatchArgs& a, const ShapeText& p, const ShapeText& q) {
         pair.along(pose_p, poses(ts), ds, out, a.threads);
       });
   return write_batch(a, results, "depth,tx,ty,tz\n", [&](std::string& out, const Depth3& r) {
-    io::append_json(out, r, pair.P().polytope(), pair.Q().polytope());
+    io::append_json(out, r, feature_poly(pair.P(), r.piece_p), feature_poly(pair.Q(), r.piece_q));
   });
 }
 
@@ -747,7 +756,7 @@ int run_trajectory(const TrajectoryArgs& a) {
       return a.cold ? pair.minimum(Pose3(), pose) : pair.minimum(Pose3(), pose, warm);
     });
     return write_batch(out, results, "depth,tx,ty,tz\n", [&](std::string& o, const Depth3& r) {
-      io::append_json(o, r, pair.P().polytope(), pair.Q().polytope());
+      io::append_json(o, r, feature_poly(pair.P(), r.piece_p), feature_poly(pair.Q(), r.piece_q));
     });
   }
   reject_hull2(a.hull);
@@ -856,7 +865,7 @@ int main(int argc, char** argv) {
                "P is fixed, Q moves; Q is placed at the offset t. Shapes: .wkt POLYGON files "
                "(2D: simple polygons, convex or not, with holes); "
                ".obj, .off, .stl, .ply files (3D: vertices only → their convex hull; with faces → a closed mesh, "
-               "answered when convex (non-convex meshes: not yet, use --hull); --hull takes the hull of any file's "
+               "non-convex meshes answered on their convex pieces (σ as certified bounds; cast needs --hull); --hull takes the hull of any file's "
                "vertices)."};
   app.require_subcommand(1);
   app.footer("A shape or query file '-' is standard input (one of them at most).\n"

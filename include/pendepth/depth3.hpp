@@ -54,6 +54,9 @@ struct Depth3 {
   double lower_bound = 0, upper_bound = 0;  ///< certified bounds; equal (exact method)
   std::size_t candidates = 0;  ///< candidate facet normals of M examined
   bool overlapping = false;
+  /// Pair3 on meshes: the convex pieces (Mesh3::decomposition().pieces; a convex shape is piece
+  /// 0) whose features feature_p / feature_q index; -1 for a pair of convex shapes.
+  int piece_p = -1, piece_q = -1;
   DepthKind kind = DepthKind::Minimum;
 };
 
@@ -74,6 +77,7 @@ struct Distance3 {
   Feature3 feature_p, feature_q;
   double lower_bound = 0, upper_bound = 0;
   bool overlapping = false;
+  int piece_p = -1, piece_q = -1;  ///< Pair3 on meshes: the pieces the features index (as Depth3)
 };
 
 /// Shape cast of posed convex polytopes along d (conventions of Cast2, world frame): the

@@ -51,6 +51,9 @@
 namespace pendepth {
 
 class Mesh3;  // include/pendepth/mesh3.hpp
+namespace mesh3 {
+struct MeshPair;  // src/mesh3/mesh_pair.hpp
+}
 
 /// How much a pair prepares before its queries.
 ///   Queries: only what every query needs (triangulations, hierarchies); σ of two convex
@@ -262,8 +265,7 @@ class Shape3 {
   const ConvexPolytope& polytope() const;
   std::size_t size() const;
   const std::string& name() const;
-  /// False only for a non-convex mesh shape. Pair3 takes convex shapes only for now: with a
-  /// non-convex one it throws InvalidInput "mesh queries are not implemented yet: ...".
+  /// False only for a non-convex mesh shape (Pair3 answers on its convex decomposition).
   bool is_convex() const;
   /// The mesh of a shape made from a mesh (from_file with faces, from_mesh), else null.
   const Mesh3* mesh() const;
@@ -292,20 +294,33 @@ class WarmStart3 {
   bool valid_ = false;
 };
 
-/// A pair of convex polytopes, P and Q each with a pose (only the relative pose matters; results
-/// are in the world frame). Queries are const and thread-safe.
+/// A pair of 3D shapes, P and Q each with a pose (only the relative pose matters; results are in
+/// the world frame). Queries are const and thread-safe.
+///
+/// Meshes (either shape non-convex; docs/design.md "Meshes", src/mesh3/mesh_pair.hpp): answered
+/// on the pieces of Mesh3::decomposition() (a convex shape is one piece), built at construction.
+/// overlapping, along, separation and signed_distance when apart or touching are exact; minimum
+/// gives certified bounds (lower = the deepest overlapping piece pair's σ, upper = the least σ_d
+/// over a few directions, depth = upper with its translation; lower_bound == upper_bound when
+/// they meet within 16 ulps); signed_distance when overlapping: distance = lower_bound = −upper,
+/// upper_bound = −lower. Results name the pieces (piece_p, piece_q) whose vertices / half-edges
+/// / triangles feature_p, feature_q index. When a decomposition has rounded pieces
+/// (ConvexDecomposition3::rounded_pieces > 0) the answers are exact for the rounded pieces, which
+/// may differ from the mesh by slivers of ½ ulp. `candidates` counts the piece pairs descended
+/// (σ_d, separation) or sums the convex work (σ). cast, and the warm start (ignored), are for
+/// convex pairs: cast on a mesh pair throws InvalidInput. Costs: docs/benchmarks.md.
 class Pair3 {
  public:
   Pair3(Shape3 P, Shape3 Q, Prepare prepare = Prepare::Auto);
 
   /// Exact: do the interiors of the posed P and Q overlap?
   bool overlapping(const Pose3& pose_p, const Pose3& pose_q) const;
-  /// σ, exact (lower_bound == upper_bound == depth).
+  /// σ, exact (lower_bound == upper_bound == depth); meshes: certified bounds (class comment).
   Depth3 minimum(const Pose3& pose_p, const Pose3& pose_q) const;
   /// σ_d along d (world frame), exact.
   Depth3 along(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const;
   /// Complete separation along d: for convex shapes the ray leaves M once, so this is σ_d with
-  /// kind Separation.
+  /// kind Separation; for meshes the last exit of the ray from O (0 when it never meets O).
   Depth3 separation(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const;
   /// Signed distance (Distance3): > 0 apart, 0 touching, −σ overlapping; exact.
   Distance3 signed_distance(const Pose3& pose_p, const Pose3& pose_q) const;
@@ -346,6 +361,7 @@ class Pair3 {
   // (the same objects unless the pair lies outside the comfort band).
   int scale_exp_ = 0;
   Shape3 engine_P_, engine_Q_;
+  std::shared_ptr<const mesh3::MeshPair> mesh_;  // either shape non-convex (pair3_mesh.cpp)
   Depth3 min_engine(const Pose3& pose_p, const Pose3& pose_q) const;
   Depth3 along_engine(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const;
   Distance3 distance_engine(const Pose3& pose_p, const Pose3& pose_q) const;

@@ -358,6 +358,14 @@ Result3 along3(const PyPair3& p, const py::object& translations, const py::objec
                          " poses (give one direction, or one per pose)");
     for (std::size_t i = 0; i < ds.v.size(); ++i) front::check_direction(ds.v[i], "batch: direction " + std::to_string(i));
   }
+  if (kind == DepthKind::Separation && !(p.pair.P().is_convex() && p.pair.Q().is_convex())) {
+    // Meshes: complete separation is not σ_d (the ray may meet O again); Pair3::separation per pose.
+    if (!one && ds.v.size() != ps.size())
+      throw InvalidInput("batch: " + std::to_string(ds.v.size()) + " directions for " + std::to_string(ps.size()) +
+                         " poses (give one direction, or one per pose)");
+    for (std::size_t i = 0; i < ps.size(); ++i) out[i] = p.pair.separation(Pose3(), ps[i], ds.v[one ? 0 : i]);
+    return result3(out, single, kind);
+  }
   chunked(ps.size(), progress, [&](std::size_t b, std::size_t e) {
     std::span<const Vec3> d = one || ds.v.size() != ps.size() ? std::span<const Vec3>(ds.v)
                                                               : std::span<const Vec3>(ds.v).subspan(b, e - b);
@@ -473,7 +481,10 @@ or .stl (ASCII or binary), the hull of the file's vertices. Raise pendepth.Inval
 non-finite or flat input (fewer than 4 affinely independent points) and unreadable files.
 Picklable (by its vertices).)";
 
-constexpr const char* kPair3Doc = R"(A pair of convex polytopes: P at the identity pose, Q posed per query.
+constexpr const char* kPair3Doc = R"(A pair of 3D shapes: P at the identity pose, Q posed per query.
+Non-convex meshes (Shape3.from_file of a closed non-convex mesh) are answered on their convex
+pieces: overlapping, along, separation, signed_distance (apart) exact; minimum as certified
+bounds (lower_bound <= sigma <= upper_bound = depth); cast is for convex shapes.
 
 Pair3(P, Q, prepare="auto")
 Queries take translations of Q as an (N, 3) array or one (3,) point, and rotations=None
@@ -877,6 +888,8 @@ validated once), allowed_orientations (degrees; [0.0] when absent)). Bad input r
       .def("__len__", &Shape3::size)
       .def("__repr__", [](const Shape3& s) { return "<pendepth.Shape3 '" + s.name() + "': " + std::to_string(s.size()) + " vertices>"; })
       .def(py::pickle([](const Shape3& s) {
+                        if (!s.is_convex())  // its hull would come back: refuse rather than change the shape
+                          throw InvalidInput("pickle: " + s.name() + " is a non-convex mesh; pickling meshes is not supported yet");
                         auto v = s.polytope().vertices();
                         return py::make_tuple(to_array<3>(std::vector<Vec3>(v.begin(), v.end())), s.name());
                       },
@@ -995,7 +1008,8 @@ validated once), allowed_orientations (degrees; [0.0] when absent)). Bad input r
            py::arg("threads") = py::none(), py::arg("progress") = false,
            "separation(translations, directions, rotations=None, threads=None, progress=False) -> Depth3Result\n\n"
            "Complete separation along d: for convex shapes the ray leaves M once, so this is sigma_d\n"
-           "(along) with kind \"separation\". Raises InvalidInput for zero or non-finite directions.")
+           "(along) with kind \"separation\"; for meshes the last exit of the ray from the overlap set.\n"
+           "Raises InvalidInput for zero or non-finite directions.")
       // ---- signed distance and shape cast (issue 16) ----
       .def("signed_distance", [pose_batch](const PyPair3& p, const py::object& translations, const py::object& rotations,
                                            const py::object& threads, bool progress) {

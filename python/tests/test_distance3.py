@@ -50,3 +50,63 @@ def test_cast():
     assert np.array_equal(b.distance, [3.0, 3.0]) and b.hit.all()
     with pytest.raises(pendepth.InvalidInput, match="direction"):
         p.cast([5.0, 0.0, 0.0], [0.0, 0.0, 0.0])
+
+
+def _polycube_off(voxels):
+    """The boundary of a union of unit voxels as an OFF text (outward quads)."""
+    pts, ids, faces = [], {}, []
+
+    def vid(p):
+        if p not in ids:
+            ids[p] = len(pts)
+            pts.append(p)
+        return ids[p]
+
+    vox = set(voxels)
+    for v in vox:
+        for a in range(3):
+            for s in (-1, 1):
+                n = list(v)
+                n[a] += s
+                if tuple(n) in vox:
+                    continue
+                b, c = (a + 1) % 3, (a + 2) % 3
+                quad = []
+                for k in range(4):
+                    j = k if s > 0 else 3 - k
+                    p = list(v)
+                    p[a] += 1 if s > 0 else 0
+                    p[b] += (0, 1, 1, 0)[j]
+                    p[c] += (0, 0, 1, 1)[j]
+                    quad.append(vid(tuple(p)))
+                faces.append(quad)
+    lines = ["OFF", f"{len(pts)} {len(faces)} 0"] + [" ".join(map(str, p)) for p in pts]
+    lines += ["4 " + " ".join(map(str, f)) for f in faces]
+    return "\n".join(lines) + "\n"
+
+
+def test_pair3_on_meshes(tmp_path):
+    # A non-convex L of three voxels and a unit cube: answered on the L's convex pieces.
+    (tmp_path / "l.off").write_text(_polycube_off([(0, 0, 0), (1, 0, 0), (0, 1, 0)]))
+    (tmp_path / "c.off").write_text(_polycube_off([(0, 0, 0)]))
+    L = pendepth.Shape3.from_file(str(tmp_path / "l.off"), name="L")
+    C = pendepth.Shape3.from_file(str(tmp_path / "c.off"), name="C")
+    assert not L.is_convex and C.is_convex
+    pair = pendepth.Pair3(L, C)
+    assert not pair.overlapping([1.0, 1.0, 0.0])  # in the notch: touching
+    assert pair.overlapping([0.5, 0.0, 0.0])
+    t = [0.5, 0.0, 0.0]
+    assert pair.along(t, [0, 1, 0]).depth == 2.0  # out past the L's upright arm
+    assert pair.along(t, [1, 0, 0]).depth == 1.5
+    assert pair.separation([-3.0, 0.5, 0.0], [1, 0, 0]).depth == 5.0
+    s = pair.minimum(t)
+    assert s.lower_bound <= s.upper_bound == s.depth == 1.0
+    assert pair.signed_distance([3.0, 0.0, 0.0]).distance == 1.0
+    assert pair.signed_distance(t).distance == -s.upper_bound
+    ts = np.array([[0.5, 0.0, 0.0], [1.0, 1.0, 0.0], [0.25, 0.5, 0.5]])
+    batch = pair.along(ts, [0, 1, 0], threads=2)
+    assert list(batch.depth) == [pair.along(x, [0, 1, 0]).depth for x in ts]
+    with pytest.raises(pendepth.InvalidInput, match="not implemented yet"):
+        pair.cast(t, [1, 0, 0])
+    with pytest.raises(pendepth.InvalidInput):
+        pair.along(t, [0, 0, 0])

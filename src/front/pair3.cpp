@@ -13,6 +13,7 @@
 #include "front/mesh_shapes.hpp"
 #include "front/scale.hpp"
 #include "convex3/minimum_expand.hpp"
+#include "mesh3/mesh_pair.hpp"
 
 namespace pendepth {
 
@@ -97,27 +98,42 @@ Pose3 engine_pose(const front::Scale& scale, const Pose3& pose, const std::strin
 }  // namespace
 
 Pair3::Pair3(Shape3 P, Shape3 Q, Prepare)
-    : P_(front::convex_only(std::move(P), "P")),
-      Q_(front::convex_only(std::move(Q), "Q")),
-      scale_exp_(pair_scale(P_, Q_).e),
-      engine_P_(engine_shape(P_, front::Scale{scale_exp_}, "P")),
-      engine_Q_(engine_shape(Q_, front::Scale{scale_exp_}, "Q")) {}
+    : P_(std::move(P)),
+      Q_(std::move(Q)),
+      scale_exp_(P_.is_convex() && Q_.is_convex() ? pair_scale(P_, Q_).e : 0),
+      engine_P_(P_),
+      engine_Q_(Q_) {
+  if (!P_.is_convex() || !Q_.is_convex()) {
+    mesh_ = front::mesh_pair(P_, Q_, scale_exp_);  // pieces in engine coordinates (pair3_mesh.cpp)
+    return;
+  }
+  engine_P_ = engine_shape(P_, front::Scale{scale_exp_}, "P");
+  engine_Q_ = engine_shape(Q_, front::Scale{scale_exp_}, "Q");
+}
 
 // One query in engine coordinates: poses converted in (checked), the answer scaled back.
 Depth3 Pair3::min_engine(const Pose3& pose_p, const Pose3& pose_q) const {
   const front::Scale scale{scale_exp_};
+  if (mesh_)
+    return scale.answer(mesh3::minimum(*mesh_, engine_pose(scale, pose_p, "pose of P"), engine_pose(scale, pose_q, "pose of Q")));
   return scale.answer(minimum_depth(engine_P_.polytope(), engine_pose(scale, pose_p, "pose of P"),
                                     engine_Q_.polytope(), engine_pose(scale, pose_q, "pose of Q")));
 }
 
 Depth3 Pair3::along_engine(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const {
   const front::Scale scale{scale_exp_};
+  if (mesh_)
+    return scale.answer(mesh3::along(*mesh_, engine_pose(scale, pose_p, "pose of P"), engine_pose(scale, pose_q, "pose of Q"), d, false));
   return scale.answer(directional_depth(engine_P_.polytope(), engine_pose(scale, pose_p, "pose of P"),
                                         engine_Q_.polytope(), engine_pose(scale, pose_q, "pose of Q"), d));
 }
 
 bool Pair3::overlapping(const Pose3& pose_p, const Pose3& pose_q) const {
-  return minimum(pose_p, pose_q).overlapping;
+  if (!mesh_) return minimum(pose_p, pose_q).overlapping;
+  check_pose(pose_p, "pose of P");
+  check_pose(pose_q, "pose of Q");
+  const front::Scale scale{scale_exp_};
+  return mesh3::overlapping(*mesh_, engine_pose(scale, pose_p, "pose of P"), engine_pose(scale, pose_q, "pose of Q"));
 }
 
 Depth3 Pair3::minimum(const Pose3& pose_p, const Pose3& pose_q) const {
@@ -134,6 +150,13 @@ Depth3 Pair3::along(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) con
 }
 
 Depth3 Pair3::separation(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const {
+  if (mesh_) {
+    check_pose(pose_p, "pose of P");
+    check_pose(pose_q, "pose of Q");
+    front::check_direction(d);
+    const front::Scale scale{scale_exp_};
+    return scale.answer(mesh3::along(*mesh_, engine_pose(scale, pose_p, "pose of P"), engine_pose(scale, pose_q, "pose of Q"), d, true));
+  }
   Depth3 r = along(pose_p, pose_q, d);
   r.kind = DepthKind::Separation;
   return r;
@@ -142,8 +165,9 @@ Depth3 Pair3::separation(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d
 void Pair3::overlapping(std::span<const Pose3> poses_q, std::span<bool> out, unsigned threads) const {
   check_poses(poses_q, out.size(), scale_exp_);
   const Pose3 pose_p;
-  front::parallel_for(poses_q.size(), threads,
-                      [&](std::size_t i) { out[i] = min_engine(pose_p, poses_q[i]).overlapping; });
+  front::parallel_for(poses_q.size(), threads, [&](std::size_t i) {
+    out[i] = mesh_ ? overlapping(pose_p, poses_q[i]) : min_engine(pose_p, poses_q[i]).overlapping;
+  });
 }
 
 void Pair3::minimum(std::span<const Pose3> poses_q, std::span<Depth3> out, unsigned threads) const {
@@ -204,6 +228,9 @@ Cast3 cast_answer(const front::Scale& scale, Cast3 r) {
 
 Distance3 Pair3::distance_engine(const Pose3& pose_p, const Pose3& pose_q) const {
   const front::Scale scale{scale_exp_};
+  if (mesh_)
+    return distance_answer(scale, mesh3::signed_distance(*mesh_, engine_pose(scale, pose_p, "pose of P"),
+                                                         engine_pose(scale, pose_q, "pose of Q")));
   return distance_answer(scale, pendepth::signed_distance(engine_P_.polytope(), engine_pose(scale, pose_p, "pose of P"),
                                                           engine_Q_.polytope(), engine_pose(scale, pose_q, "pose of Q")));
 }
@@ -230,6 +257,7 @@ Cast3 Pair3::cast(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const
   check_pose(pose_p, "pose of P");
   check_pose(pose_q, "pose of Q");
   front::check_direction(d);
+  if (mesh_) throw InvalidInput("cast: shape casts between meshes are not implemented yet (use convex shapes or --hull)");
   const front::Scale scale{scale_exp_};
   return cast_answer(scale, shape_cast(engine_P_.polytope(), engine_pose(scale, pose_p, "pose of P"),
                                        engine_Q_.polytope(), engine_pose(scale, pose_q, "pose of Q"), d));
@@ -241,6 +269,7 @@ Cast3 Pair3::cast(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const
 Depth3 Pair3::minimum(const Pose3& pose_p, const Pose3& pose_q, WarmStart3& warm) const {
   check_pose(pose_p, "pose of P");
   check_pose(pose_q, "pose of Q");
+  if (mesh_) return min_engine(pose_p, pose_q);  // no warm start on meshes
   const front::Scale scale{scale_exp_};
   const Pose3 ep = engine_pose(scale, pose_p, "pose of P"), eq = engine_pose(scale, pose_q, "pose of Q");
   const void *p = &engine_P_.polytope(), *q = &engine_Q_.polytope();

@@ -4,8 +4,6 @@
 #include <pendepth/mesh3.hpp>
 #include <pendepth/pendepth.hpp>
 
-#include "front/mesh_shapes.hpp"
-
 namespace pendepth {
 
 Shape3 Shape3::from_file(const std::filesystem::path& path, std::string_view name, bool hull) {
@@ -23,14 +21,4 @@ Shape3 Shape3::from_mesh(const Mesh3& mesh) {
 bool Shape3::is_convex() const { return !mesh_ || mesh_->convex(); }
 const Mesh3* Shape3::mesh() const { return mesh_.get(); }
 
-namespace front {
-
-Shape3 convex_only(Shape3 s, const char* which) {
-  if (!s.is_convex())
-    throw InvalidInput(std::string("mesh queries are not implemented yet: ") + which + " (" + s.name() +
-                       ") is not convex (use its hull: Shape3::from_file(path, name, true), or --hull)");
-  return s;
-}
-
-}  // namespace front
 }  // namespace pendepth

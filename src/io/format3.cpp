@@ -122,6 +122,12 @@ void append_json(std::string& out, const Depth3& r, const ConvexPolytope& P, con
   append_double(out, r.lower_bound);
   out += ",\"upper_bound\":";
   append_double(out, r.upper_bound);
+  if (r.piece_p >= 0) {  // a mesh pair: the pieces the features index (Pair3, meshes)
+    out += ",\"piece_p\":";
+    append_uint(out, static_cast<std::size_t>(r.piece_p));
+    out += ",\"piece_q\":";
+    append_uint(out, static_cast<std::size_t>(r.piece_q));
+  }
   out += '}';
 }
 
@@ -155,6 +161,9 @@ std::string summary(const Depth3& r, const ConvexPolytope& P, const ConvexPolyto
     // The features span the facet of M where the move ends; in a face-face or edge-face contact
     // the witness is one point of the contact region, not necessarily on a named vertex.
     s += "  features:    " + feature_text(r.feature_p, P) + " of P, " + feature_text(r.feature_q, Q) + " of Q\n";
+    if (r.piece_p >= 0)
+      s += "  pieces:      P piece " + std::to_string(r.piece_p) + ", Q piece " + std::to_string(r.piece_q) +
+           " (the features' vertices are those pieces')\n";
     if (r.lower_bound != r.upper_bound) {
       s += "  bounds:      [";
       append_double(s, r.lower_bound);

@@ -58,6 +58,9 @@ void append_distance(std::string& out, const R& r, const SP& P, const SQ& Q) {
     out += ",\"upper_bound\":";
     append_double(out, r.upper_bound);
   }
+  if constexpr (requires { r.piece_p; })
+    if (r.piece_p >= 0)  // a mesh pair: the pieces the features index (Pair3, meshes)
+      out += ",\"piece_p\":" + std::to_string(r.piece_p) + ",\"piece_q\":" + std::to_string(r.piece_q);
   out += '}';
 }
 

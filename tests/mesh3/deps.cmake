@@ -1,9 +1,11 @@
 # test_mesh3: CGAL (Epick) is the oracle for self-intersections (Polygon_mesh_processing) and for
-# point-in-mesh (Side_of_triangle_mesh); GMP rationals for exact volumes. CGAL's sample meshes
+# point-in-mesh (Side_of_triangle_mesh); GMP rationals for exact volumes; CGAL's exact Nef
+# minkowski_sum_3 for the mesh pairs' σ_d (test_mesh_pair_nef.cpp). CGAL's sample meshes
 # (libcgal-demo's data.tar.gz) are unpacked at configure time when the package is installed.
 find_package(CGAL REQUIRED)
 target_link_libraries(${target} PRIVATE CGAL::CGAL PkgConfig::GMPXX)
-set_source_files_properties(${CMAKE_CURRENT_LIST_DIR}/oracle_cgal.cpp PROPERTIES COMPILE_OPTIONS -frounding-math)
+set_source_files_properties(${CMAKE_CURRENT_LIST_DIR}/oracle_cgal.cpp ${CMAKE_CURRENT_LIST_DIR}/test_mesh_pair_nef.cpp
+                            PROPERTIES COMPILE_OPTIONS -frounding-math)
 set(PENDEPTH_CGAL_DATA_TGZ /usr/share/doc/libcgal-demo/data.tar.gz)
 if(EXISTS ${PENDEPTH_CGAL_DATA_TGZ})
   set(PENDEPTH_CGAL_DATA_DIR ${PROJECT_BINARY_DIR}/cgal_data)

@@ -1,0 +1,76 @@
+// Private: the queries of Pair3 on meshes (issue 17 items 3–5): a pair of shapes, each a list of
+// convex pieces with disjoint interiors covering the solid (Mesh3::decomposition(); a convex
+// shape is one piece), answered from the exact convex engines on pairs of pieces.
+//
+// Let P = ∪ P_i, Q = ∪ Q_j (pieces), M_ij = P_i ⊕ (−Q'_j), O = ∪ int M_ij the open overlap set
+// (pieces have disjoint interiors and cover the solids, so int P ∩ int(Q' + x) ≠ ∅ iff x lies in
+// some int M_ij). Files: mesh_pair.cpp (pieces, boxes, overlap, signed distance, σ bounds),
+// mesh_line.cpp (σ_d and separation: the open intervals of the line in the int M_ij).
+//
+// Features of a mesh answer: feature_p / feature_q index the vertices, half-edges and triangles
+// of the pieces piece_p / piece_q (pieces() of the pair: Mesh3::decomposition().pieces, or the
+// shape's polytope for a convex shape, piece 0).
+//
+// Exactness: every decision is an exact sign of a polynomial in the doubles of the pieces, the
+// poses' R, t and d (as the convex engines). When a decomposition has rounded pieces
+// (ConvexDecomposition3::rounded_pieces > 0) the pieces are the rounded ones: the answers are
+// exact for that union of pieces, which may differ from the mesh by slivers of ½ ulp.
+#pragma once
+
+#include <pendepth/depth3.hpp>
+#include <pendepth/pendepth.hpp>
+
+#include <array>
+#include <vector>
+
+namespace pendepth::mesh3 {
+
+struct Box3 {
+  Vec3 lo, hi;
+};
+
+/// The pieces of both shapes in engine coordinates (scaled as Pair3's numeric domain says).
+struct MeshPair {
+  std::vector<ConvexPolytope> P, Q;
+  std::vector<Box3> boxP, boxQ;  ///< each piece's box (exact: min / max of its vertices)
+  bool exact = true;             ///< no rounded pieces in either decomposition
+  static MeshPair make(std::vector<ConvexPolytope> P, std::vector<ConvexPolytope> Q, bool exact);
+};
+
+/// The pieces of a shape: its decomposition's (a mesh shape), else the polytope itself.
+std::vector<ConvexPolytope> pieces_of(const Shape3& s, bool& exact);
+
+/// Exact: do the interiors overlap? Pairs of pieces whose box sum holds 0, in order, until one
+/// overlaps (convex minimum_depth's exact test). O(n·m) box tests + the candidates' tests.
+bool overlapping(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q);
+
+/// σ_d (kind Directional) or complete separation (kind Separation) along d (world frame; checked
+/// by the caller): see mesh_line.cpp. Exact (lower == upper == depth).
+Depth3 along(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3& d, bool separation);
+
+/// σ with certified bounds: lower = max over overlapping piece pairs of the exact σ_ij, upper =
+/// the least σ_d over a set of directions (mesh_pair.cpp); depth = upper with its translation.
+Depth3 minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q);
+
+/// Signed distance: apart / touching → min over piece pairs of the exact convex signed distance
+/// (pruned by box distances; exact); overlapping → −σ from minimum()'s bounds (distance =
+/// −upper, lower_bound = −upper, upper_bound = −lower).
+Distance3 signed_distance(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q);
+
+// ---- shared by mesh_pair.cpp and mesh_line.cpp ----
+
+/// The pose of Q in P's frame and the boxes of Q's pieces there (rounded, then widened so that
+/// they hold the exact placed pieces).
+struct Placed {
+  Eigen::Matrix3d Rp;
+  Vec3 tp_world;
+  Eigen::Matrix3d R;  ///< R = Rpᵀ Rq
+  Vec3 tq, tp;        ///< Rpᵀ translations (q' = R q + tq − tp, exact semantics for these doubles)
+  std::vector<Box3> boxQ;
+};
+Placed place(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q);
+
+/// Box of M_ij = box(P_i) ⊕ −box(Q'_j), widened by a relative margin.
+Box3 sum_box(const MeshPair& m, const Placed& pl, std::size_t i, std::size_t j);
+
+}  // namespace pendepth::mesh3
