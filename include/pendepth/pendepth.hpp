@@ -51,6 +51,9 @@
 namespace pendepth {
 
 class Mesh3;  // include/pendepth/mesh3.hpp
+namespace convex3 {
+struct FlatShape3;  // src/convex3/flat3.hpp
+}
 
 /// How much a pair prepares before its queries.
 ///   Queries: only what every query needs (triangulations, hierarchies); σ of two convex
@@ -258,7 +261,27 @@ class Shape3 {
   /// A validated mesh: convex → the convex path, else a mesh shape.
   static Shape3 from_mesh(const Mesh3& mesh);
 
-  /// The convex polytope; for a non-convex mesh shape, the hull of its vertices.
+  /// Lower-dimensional shapes (docs/design.md "Lower-dimensional shapes"; src/front/shape3_flat.cpp):
+  /// a point, a segment, or the flat convex polygon spanned by coplanar points (`flat` takes any
+  /// point set of dimension 0, 1 or 2 and keeps its extreme points). Pair3 takes one of them
+  /// against a solid shape (overlap ⇔ the placement is interior to M = P ⊕ (−Q), M being
+  /// full-dimensional); two lower-dimensional shapes are InvalidInput. Throws InvalidInput
+  /// naming `name` for non-finite or empty input, or (flat) points spanning a solid.
+  static Shape3 point(const Vec3& p, std::string_view name = "point");
+  static Shape3 segment(const Vec3& a, const Vec3& b, std::string_view name = "segment");
+  static Shape3 flat(std::span<const Vec3> points, std::string_view name = "points");
+  /// 3 for a solid; 0, 1, 2 for a point, a segment, a flat polygon.
+  int dimension() const;
+  /// The vertices of a lower-dimensional shape (one point; the two ends; the polygon's extreme
+  /// points in cyclic order): result features of such a shape index these (vertex j, edge j from
+  /// vertex j to j + 1, face 0). Empty for a solid.
+  std::span<const Vec3> flat_vertices() const;
+  /// Internal (the engines): a lower-dimensional shape's normal form, null for a solid.
+  explicit Shape3(convex3::FlatShape3 flat);
+  const convex3::FlatShape3* flat_shape() const;
+
+  /// The convex polytope; for a non-convex mesh shape, the hull of its vertices. A
+  /// lower-dimensional shape has none: throws InvalidInput.
   const ConvexPolytope& polytope() const;
   std::size_t size() const;
   const std::string& name() const;
@@ -269,8 +292,10 @@ class Shape3 {
   const Mesh3* mesh() const;
 
  private:
+  Shape3() = default;
   std::shared_ptr<const ConvexPolytope> p_;
   std::shared_ptr<const Mesh3> mesh_;
+  std::shared_ptr<const convex3::FlatShape3> flat_;  // a lower-dimensional shape (p_ null)
 };
 
 /// Per-caller state of Pair3's warm start for coherent motion (survey §3.3): the facet of M the

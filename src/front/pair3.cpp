@@ -12,6 +12,7 @@
 #include "front/checks.hpp"
 #include "front/mesh_shapes.hpp"
 #include "front/scale.hpp"
+#include "convex3/flat3.hpp"
 #include "convex3/minimum_expand.hpp"
 
 namespace pendepth {
@@ -22,9 +23,7 @@ Shape3 Shape3::hull(std::span<const Vec3> points, std::string_view name) {
   return Shape3(ConvexPolytope::hull(points, name));
 }
 
-const ConvexPolytope& Shape3::polytope() const { return *p_; }
-std::size_t Shape3::size() const { return p_->size(); }
-const std::string& Shape3::name() const { return p_->name(); }
+// (Lower-dimensional shapes: src/front/shape3_flat.cpp defines polytope, size and name.)
 
 namespace {
 
@@ -64,6 +63,13 @@ namespace {
 
 // The sizes of a polytope: its largest coordinate and its smallest edge.
 void add_extent(front::Extent& x, const Shape3& s) {
+  if (const auto* f = s.flat_shape()) {
+    for (std::size_t i = 0; i < f->v.size(); ++i) {
+      x.add_point(f->v[i].cwiseAbs().maxCoeff());
+      if (f->v.size() > 1) x.add_edge(f->v[i], f->v[(i + 1) % f->v.size()]);
+    }
+    return;
+  }
   const ConvexPolytope& P = s.polytope();
   for (const Vec3& v : P.vertices()) x.add_point(v.cwiseAbs().maxCoeff());
   for (const auto& tri : P.triangles())
@@ -81,6 +87,12 @@ front::Scale pair_scale(const Shape3& P, const Shape3& Q) {
 // names the vertex and the range), with the same numbering, so features need no mapping.
 Shape3 engine_shape(const Shape3& s, const front::Scale& scale, const char* which) {
   if (scale.identity()) return s;
+  if (const auto* f = s.flat_shape()) {  // the same normal form, every vertex scaled exactly
+    convex3::FlatShape3 g = *f;
+    for (std::size_t i = 0; i < g.v.size(); ++i)
+      g.v[i] = scale.vec_to_engine(g.v[i], std::string(which) + " (" + s.name() + ") vertex " + std::to_string(i) + ":");
+    return Shape3(std::move(g));
+  }
   const auto v = s.polytope().vertices();
   for (std::size_t i = 0; i < v.size(); ++i)
     scale.vec_to_engine(v[i], std::string(which) + " (" + s.name() + ") vertex " + std::to_string(i) + ":");
@@ -96,22 +108,86 @@ Pose3 engine_pose(const front::Scale& scale, const Pose3& pose, const std::strin
 
 }  // namespace
 
+namespace {
+Shape3 not_both_flat(Shape3 P, const Shape3& Q) {
+  if (P.dimension() < 3 && Q.dimension() < 3)
+    throw InvalidInput("pair: both shapes are lower-dimensional (P " + P.name() + " of dimension " +
+                       std::to_string(P.dimension()) + ", Q " + Q.name() + " of dimension " +
+                       std::to_string(Q.dimension()) + "): M = P ⊕ (−Q) has no interior; one shape must be solid");
+  return P;
+}
+}  // namespace
+
 Pair3::Pair3(Shape3 P, Shape3 Q, Prepare)
-    : P_(front::convex_only(std::move(P), "P")),
+    : P_(front::convex_only(not_both_flat(std::move(P), Q), "P")),
       Q_(front::convex_only(std::move(Q), "Q")),
       scale_exp_(pair_scale(P_, Q_).e),
       engine_P_(engine_shape(P_, front::Scale{scale_exp_}, "P")),
       engine_Q_(engine_shape(Q_, front::Scale{scale_exp_}, "Q")) {}
 
+// ---- lower-dimensional shapes (src/convex3/flat3.cpp) -----------------------------------------
+// The engine takes the solid shape as S (P's role). When P is the lower-dimensional one, the pair
+// is answered swapped — P moving by −v instead of Q by v, along −d for σ_d and casts — and the
+// answer mapped back: vectors negated, witnesses and features exchanged, a contact point found
+// with P moved by v is, with Q moved by −v instead, that point − v.
+namespace {
+
+bool is_flat(const Shape3& s) { return s.dimension() < 3; }
+
+Depth3 unswap(Depth3 r) {
+  const Vec3 v = r.translation;
+  r.translation = -r.translation, r.normal = -r.normal, r.facet_normal = -r.facet_normal;
+  r.witness_p = r.witness_q = r.witness_p - v;
+  std::swap(r.feature_p, r.feature_q);
+  return r;
+}
+
+Depth3 flat_depth(const Shape3& P, const Pose3& pp, const Shape3& Q, const Pose3& pq, const Vec3* d) {
+  if (is_flat(Q))
+    return d ? convex3::flat_directional(P.polytope(), pp, *Q.flat_shape(), pq, *d)
+             : convex3::flat_minimum(P.polytope(), pp, *Q.flat_shape(), pq);
+  return unswap(d ? convex3::flat_directional(Q.polytope(), pq, *P.flat_shape(), pp, -*d)
+                  : convex3::flat_minimum(Q.polytope(), pq, *P.flat_shape(), pp));
+}
+
+Distance3 flat_distance(const Shape3& P, const Pose3& pp, const Shape3& Q, const Pose3& pq) {
+  if (is_flat(Q)) return convex3::flat_signed_distance(P.polytope(), pp, *Q.flat_shape(), pq);
+  Distance3 r = convex3::flat_signed_distance(Q.polytope(), pq, *P.flat_shape(), pp);
+  // Apart / touching: the closest pair, seen from the other side. Overlapping: σ's move of P by v
+  // is Q's move by −v; witness_q stays on the unmoved Q (= the engine's witness_p).
+  r.normal = -r.normal, r.translation = -r.translation;
+  std::swap(r.witness_p, r.witness_q);
+  std::swap(r.feature_p, r.feature_q);
+  return r;
+}
+
+Cast3 flat_cast(const Shape3& P, const Pose3& pp, const Shape3& Q, const Pose3& pq, const Vec3& d) {
+  if (is_flat(Q)) return convex3::flat_cast(P.polytope(), pp, *Q.flat_shape(), pq, d);
+  Cast3 r = convex3::flat_cast(Q.polytope(), pq, *P.flat_shape(), pp, -d);
+  const Vec3 v = r.translation;
+  r.translation = -r.translation, r.normal = -r.normal;
+  r.witness_p = r.witness_q = r.witness_p - v;
+  std::swap(r.feature_p, r.feature_q);
+  return r;
+}
+
+}  // namespace
+
 // One query in engine coordinates: poses converted in (checked), the answer scaled back.
 Depth3 Pair3::min_engine(const Pose3& pose_p, const Pose3& pose_q) const {
   const front::Scale scale{scale_exp_};
+  if (is_flat(engine_P_) || is_flat(engine_Q_))
+    return scale.answer(flat_depth(engine_P_, engine_pose(scale, pose_p, "pose of P"), engine_Q_,
+                                   engine_pose(scale, pose_q, "pose of Q"), nullptr));
   return scale.answer(minimum_depth(engine_P_.polytope(), engine_pose(scale, pose_p, "pose of P"),
                                     engine_Q_.polytope(), engine_pose(scale, pose_q, "pose of Q")));
 }
 
 Depth3 Pair3::along_engine(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const {
   const front::Scale scale{scale_exp_};
+  if (is_flat(engine_P_) || is_flat(engine_Q_))
+    return scale.answer(flat_depth(engine_P_, engine_pose(scale, pose_p, "pose of P"), engine_Q_,
+                                   engine_pose(scale, pose_q, "pose of Q"), &d));
   return scale.answer(directional_depth(engine_P_.polytope(), engine_pose(scale, pose_p, "pose of P"),
                                         engine_Q_.polytope(), engine_pose(scale, pose_q, "pose of Q"), d));
 }
@@ -204,6 +280,9 @@ Cast3 cast_answer(const front::Scale& scale, Cast3 r) {
 
 Distance3 Pair3::distance_engine(const Pose3& pose_p, const Pose3& pose_q) const {
   const front::Scale scale{scale_exp_};
+  if (is_flat(engine_P_) || is_flat(engine_Q_))
+    return distance_answer(scale, flat_distance(engine_P_, engine_pose(scale, pose_p, "pose of P"), engine_Q_,
+                                                engine_pose(scale, pose_q, "pose of Q")));
   return distance_answer(scale, pendepth::signed_distance(engine_P_.polytope(), engine_pose(scale, pose_p, "pose of P"),
                                                           engine_Q_.polytope(), engine_pose(scale, pose_q, "pose of Q")));
 }
@@ -231,6 +310,9 @@ Cast3 Pair3::cast(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const
   check_pose(pose_q, "pose of Q");
   front::check_direction(d);
   const front::Scale scale{scale_exp_};
+  if (is_flat(engine_P_) || is_flat(engine_Q_))
+    return cast_answer(scale, flat_cast(engine_P_, engine_pose(scale, pose_p, "pose of P"), engine_Q_,
+                                        engine_pose(scale, pose_q, "pose of Q"), d));
   return cast_answer(scale, shape_cast(engine_P_.polytope(), engine_pose(scale, pose_p, "pose of P"),
                                        engine_Q_.polytope(), engine_pose(scale, pose_q, "pose of Q"), d));
 }
@@ -241,6 +323,7 @@ Cast3 Pair3::cast(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const
 Depth3 Pair3::minimum(const Pose3& pose_p, const Pose3& pose_q, WarmStart3& warm) const {
   check_pose(pose_p, "pose of P");
   check_pose(pose_q, "pose of Q");
+  if (is_flat(engine_P_) || is_flat(engine_Q_)) return min_engine(pose_p, pose_q);  // no warm start
   const front::Scale scale{scale_exp_};
   const Pose3 ep = engine_pose(scale, pose_p, "pose of P"), eq = engine_pose(scale, pose_q, "pose of Q");
   const void *p = &engine_P_.polytope(), *q = &engine_Q_.polytope();
