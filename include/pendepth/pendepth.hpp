@@ -270,12 +270,24 @@ class Shape3 {
   static Shape3 point(const Vec3& p, std::string_view name = "point");
   static Shape3 segment(const Vec3& a, const Vec3& b, std::string_view name = "segment");
   static Shape3 flat(std::span<const Vec3> points, std::string_view name = "points");
-  /// 3 for a solid; 0, 1, 2 for a point, a segment, a flat polygon.
+  /// 3 for a solid (a rounded shape included); 0, 1, 2 for a point, a segment, a flat polygon.
   int dimension() const;
   /// The vertices of a lower-dimensional shape (one point; the two ends; the polygon's extreme
   /// points in cyclic order): result features of such a shape index these (vertex j, edge j from
   /// vertex j to j + 1, face 0). Empty for a solid.
   std::span<const Vec3> flat_vertices() const;
+  /// Primitives (docs/design.md "Primitives"; src/front/shape3_primitives.cpp), centred at the
+  /// origin: box(X, Y, Z) the polytope of half extents X, Y, Z; sphere(R) a point ⊕ ball;
+  /// capsule(R, H) the segment (0,0,−H)–(0,0,H) ⊕ ball; rounded(core, R) any convex shape (solid,
+  /// point, segment, flat polygon) ⊕ ball of radius R, R >= 0. Throws InvalidInput naming `name`
+  /// for a non-finite or non-positive size (R = 0 allowed for rounded: the core itself).
+  static Shape3 box(double hx, double hy, double hz, std::string_view name = "box");
+  static Shape3 sphere(double r, std::string_view name = "sphere");
+  static Shape3 capsule(double r, double h, std::string_view name = "capsule");
+  static Shape3 rounded(const Shape3& core, double r, std::string_view name = "rounded");
+  /// The rounding radius (0 for a shape without rounding) and the core (the shape without it).
+  double radius() const { return radius_; }
+  Shape3 core() const;
   /// Internal (the engines): a lower-dimensional shape's normal form, null for a solid.
   explicit Shape3(convex3::FlatShape3 flat);
   const convex3::FlatShape3* flat_shape() const;
@@ -296,6 +308,8 @@ class Shape3 {
   std::shared_ptr<const ConvexPolytope> p_;
   std::shared_ptr<const Mesh3> mesh_;
   std::shared_ptr<const convex3::FlatShape3> flat_;  // a lower-dimensional shape (p_ null)
+  double radius_ = 0;  // a rounded shape: this shape's core (p_ or flat_) ⊕ ball of radius_
+  std::string rounded_name_;
 };
 
 /// Per-caller state of Pair3's warm start for coherent motion (survey §3.3): the facet of M the

@@ -151,12 +151,19 @@ struct Eval {
   Vec3 u{0, 0, 0};     // u, each component ~1 ulp
 };
 
+// S is a solid polytope (SD, aS set) or, for the distance of two lower-dimensional shapes whose
+// dimensions sum to at most 2, a lower-dimensional shape too (fs set): its faces are then ±its
+// normal (triangle (0, 1, 2)), its edges j = (j, j + 1), its support an exact scan.
 struct Ctx {
-  const ConvexPolytope& S;
-  const PolytopeData& SD;
-  const VertexAdjacency& aS;
+  const ConvexPolytope* S;
+  const PolytopeData* SD;
+  const VertexAdjacency* aS;
+  const FlatShape3* fs;
   const FlatShape3& L;
   RelativePose rel;
+
+  const Vec3& sv(int i) const { return fs ? fs->v[i] : SD->v[i]; }
+  int s_count() const { return static_cast<int>(fs ? fs->v.size() : SD->v.size()); }
 
   template <class F>
   auto lift(F f, const Vec3& a) const {
@@ -164,7 +171,7 @@ struct Ctx {
     return V<N>{f(a.x()), f(a.y()), f(a.z())};
   }
   template <class F>
-  auto s(F f, int i) const { return lift(f, SD.v[i]); }
+  auto s(F f, int i) const { return lift(f, sv(i)); }
   // R·(b − a) for L vertices a, b (a < 0: R·l_b)
   template <class F>
   auto rvec(F f, int a, int b) const {
@@ -186,8 +193,8 @@ struct Ctx {
   int ledge_end(int j) const { return (j + 1) % static_cast<int>(L.v.size()); }
   template <class F>
   auto ledge(F f, int j) const { return rvec(f, j, ledge_end(j)); }
-  int s_origin(int h) const { return SD.levels[0].origin(h); }
-  int s_target(int h) const { return SD.levels[0].target(h); }
+  int s_origin(int h) const { return fs ? h : SD->levels[0].origin(h); }
+  int s_target(int h) const { return fs ? (h + 1) % static_cast<int>(fs->v.size()) : SD->levels[0].target(h); }
   template <class F>
   auto sedge(F f, int h) const { return sub(s(f, s_target(h)), s(f, s_origin(h))); }
 
@@ -197,7 +204,7 @@ struct Ctx {
     V<N> u;
     switch (c.kind) {
       case Kind::FaceS: {
-        const auto& t = SD.tris[c.s];
+        const std::array<int, 3> t = fs ? std::array<int, 3>{0, 1, 2} : SD->tris[c.s];
         u = cross(sub(s(f, t[1]), s(f, t[0])), sub(s(f, t[2]), s(f, t[0])));
         break;
       }
@@ -237,11 +244,15 @@ struct Ctx {
       return false;
     }();
     if (!surely_nonzero && zero(c)) return r;
-    int i = (u.allFinite() && u != Vec3::Zero()) ? S.support(u) : 0;
-    for (bool moved = true; moved;) {  // exact climb: a local maximum is the global one
+    int i = (!fs && u.allFinite() && u != Vec3::Zero()) ? S->support(u) : 0;
+    if (fs) {
+      for (int x = 1; x < s_count(); ++x)
+        if (exact::exact_sign([&](auto f) { return dot(dir(c, f), sub(s(f, x), s(f, i))); }) > 0) i = x;
+    }
+    for (bool moved = !fs; moved;) {  // exact climb: a local maximum is the global one
       moved = false;
-      for (int e = aS.start[i]; e < aS.start[i + 1]; ++e) {
-        const int nb = aS.nbr[e];
+      for (int e = aS->start[i]; e < aS->start[i + 1]; ++e) {
+        const int nb = aS->nbr[e];
         if (exact::exact_sign([&](auto f) { return dot(dir(c, f), sub(s(f, nb), s(f, i))); }) > 0) {
           i = nb, moved = true;
           break;
@@ -263,33 +274,40 @@ struct Ctx {
   }
 
   static Vec3 unit(const Eval& e) { return e.u / e.norm; }
-  Vec3 svert(int i) const { return SD.v[i]; }
+  Vec3 svert(int i) const { return sv(i); }
+  std::vector<int> s_edges() const {
+    if (!fs) return SD->edges;
+    std::vector<int> e(fs->dim == 0 ? 0 : fs->dim == 1 ? 1 : fs->v.size());
+    for (std::size_t j = 0; j < e.size(); ++j) e[j] = static_cast<int>(j);
+    return e;
+  }
   Vec3 lvert(int j) const { return rel.place(L.v[j]); }
 
   // The facet candidates (σ, σ_d, overlap, cast): S's faces, L's normal, edge × edge.
   std::vector<Cand> facets() const {
     std::vector<Cand> out;
-    std::vector<char> seen(S.face_count(), 0);
-    for (std::size_t t = 0; t < SD.tris.size(); ++t) {
-      const int fc = S.face_of_triangle(t);
+    if (fs && fs->dim == 2) out.push_back({Kind::FaceS, 0, -1, 1}), out.push_back({Kind::FaceS, 0, -1, -1});
+    std::vector<char> seen(fs ? 0 : S->face_count(), 0);
+    for (std::size_t t = 0; !fs && t < SD->tris.size(); ++t) {
+      const int fc = S->face_of_triangle(t);
       if (!seen[fc]) seen[fc] = 1, out.push_back({Kind::FaceS, static_cast<int>(t), -1, 1});
     }
     if (L.dim == 2) out.push_back({Kind::FaceL, -1, 0, 1}), out.push_back({Kind::FaceL, -1, 0, -1});
     const int le = L.dim == 0 ? 0 : L.dim == 1 ? 1 : static_cast<int>(L.v.size());
-    for (int h : SD.edges)
+    for (int h : s_edges())
       for (int j = 0; j < le; ++j) out.push_back({Kind::EdgeEdge, h, j, 1}), out.push_back({Kind::EdgeEdge, h, j, -1});
     return out;
   }
   // The extra directions of the closest pairs (distance).
   std::vector<Cand> closest_pairs() const {
     std::vector<Cand> out;
-    const int n = static_cast<int>(SD.v.size()), k = static_cast<int>(L.v.size());
+    const int n = s_count(), k = static_cast<int>(L.v.size());
     const int le = L.dim == 0 ? 0 : L.dim == 1 ? 1 : k;
     for (int i = 0; i < n; ++i) {
       for (int j = 0; j < k; ++j) out.push_back({Kind::VertexVertex, i, j, 1});
       for (int j = 0; j < le; ++j) out.push_back({Kind::VertexEdge, i, j, 1});
     }
-    for (int h : SD.edges)
+    for (int h : s_edges())
       for (int j = 0; j < k; ++j) out.push_back({Kind::EdgeVertex, h, j, 1});
     return out;
   }
@@ -341,7 +359,7 @@ RelativePose relative(const Pose3& ps, const Pose3& pl) {
 
 Ctx make_ctx(const ConvexPolytope& S, const FlatShape3& L, const Pose3& ps, const Pose3& pl) {
   const PolytopeData& d = data_of(S);
-  return Ctx{S, d, vertex_adjacency(d), L, relative(ps, pl)};
+  return Ctx{&S, &d, &vertex_adjacency(d), nullptr, L, relative(ps, pl)};
 }
 
 // Exact sign of u·d for the candidate (d in S's frame).
@@ -395,6 +413,41 @@ Depth3 world(Depth3 r, const Pose3& ps, const Vec3& v, const Vec3& normal, const
   r.normal = Rp * normal;
   r.facet_normal = Rp * facet;
   r.witness_p = r.witness_q = Rp * w + ps.translation;
+  return r;
+}
+
+// Apart (or touching when no h < 0): the largest −h_M(u)/|u| over `cands`, which hold the facet
+// normals and the closest-pair directions; the witnesses from the best candidate's features.
+Distance3 apart(const Ctx& x, const std::vector<Cand>& cands, const std::vector<Eval>& evals, const Pose3& ps) {
+  Distance3 r;
+  const Eigen::Matrix3d Rp = ps.matrix();
+  int best = -1;
+  double bv = -std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < cands.size(); ++k) {
+    const Eval& e = evals[k];
+    if (e.norm == 0 || e.hsign >= 0) continue;
+    const double v = -e.h / e.norm;
+    if (v > bv) bv = v, best = static_cast<int>(k);
+  }
+  if (best < 0) return r;
+  const Cand& c = cands[best];
+  const Eval& e = evals[best];
+  const Vec3 u = x.unit(e);  // from S towards L
+  Vec3 wp = Vec3::Zero(), wq = Vec3::Zero();
+  switch (c.kind) {
+    case Kind::FaceS:
+    case Kind::EdgeVertex:
+    case Kind::VertexVertex: wq = x.lvert(e.j), wp = wq - bv * u; break;
+    case Kind::FaceL:
+    case Kind::VertexEdge: wp = x.svert(e.i), wq = wp + bv * u; break;
+    case Kind::EdgeEdge: wp = x.contact(c, e, -bv * u), wq = wp + bv * u; break;
+  }
+  r.distance = r.lower_bound = r.upper_bound = bv;
+  r.normal = Rp * u;
+  r.translation = -bv * r.normal;
+  r.witness_p = Rp * wp + ps.translation;
+  r.witness_q = Rp * wq + ps.translation;
+  r.feature_p = x.feature_s(c, e), r.feature_q = x.feature_l(c, e);
   return r;
 }
 
@@ -473,36 +526,66 @@ Distance3 flat_signed_distance(const ConvexPolytope& S, const Pose3& ps, const F
     r.feature_p = x.feature_s(c, e), r.feature_q = x.feature_l(c, e);
     return r;
   }
-  // Apart: the largest −h_M(u)/|u| over the facet normals and the closest-pair directions.
   std::vector<Cand> cands = sc.cands;
   std::vector<Eval> evals = sc.evals;
   for (const Cand& c : x.closest_pairs()) cands.push_back(c), evals.push_back(x.eval(c));
-  int best = -1;
-  double bv = -std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < cands.size(); ++k) {
-    const Eval& e = evals[k];
-    if (e.norm == 0 || e.hsign >= 0) continue;
-    const double v = -e.h / e.norm;
-    if (v > bv) bv = v, best = static_cast<int>(k);
+  return apart(x, cands, evals, ps);
+}
+
+Distance3 flat_flat_distance(const FlatShape3& A, const Pose3& pa, const FlatShape3& B, const Pose3& pb,
+                             Vec3* touch_normal) {
+  if (A.dim + B.dim > 2)
+    throw InvalidInput("pair: the cores " + A.name + " (dimension " + std::to_string(A.dim) + ") and " + B.name +
+                       " (dimension " + std::to_string(B.dim) +
+                       ") are both lower-dimensional with dimensions summing to 3 or more: not implemented");
+  const Ctx x{nullptr, nullptr, nullptr, &A, B, relative(pa, pb)};
+  std::vector<Cand> cands = x.facets();
+  for (const Cand& c : x.closest_pairs()) cands.push_back(c);
+  std::vector<Eval> evals;
+  for (const Cand& c : cands) evals.push_back(x.eval(c));
+  Distance3 r = apart(x, cands, evals, pa);
+  if (r.distance > 0) return r;
+  // Touching (M has no interior): a candidate plane through 0 gives the contact and a supporting
+  // normal; without one (points on points or on collinear segments) a vertex of one shape in the
+  // other, and any normal ⊥ to the cores' span.
+  const Eigen::Matrix3d Ra = pa.matrix();
+  Vec3 c = Vec3::Zero(), n = Vec3::Zero();
+  bool found = false;
+  for (std::size_t k = 0; k < cands.size() && !found; ++k)
+    if (evals[k].norm > 0 && evals[k].hsign == 0) {
+      c = x.contact(cands[k], evals[k], Vec3::Zero()), n = Ctx::unit(evals[k]), found = true;
+      r.feature_p = x.feature_s(cands[k], evals[k]), r.feature_q = x.feature_l(cands[k], evals[k]);
+    }
+  if (!found) {
+    double best = std::numeric_limits<double>::infinity();
+    auto seg = [](const Vec3& p, const Vec3& a, const Vec3& b) {
+      const Vec3 e = b - a;
+      const double t = e.squaredNorm() > 0 ? std::clamp((p - a).dot(e) / e.squaredNorm(), 0.0, 1.0) : 0.0;
+      return (p - (a + t * e)).norm();
+    };
+    auto consider = [&](const Vec3& p, const std::vector<Vec3>& other) {
+      const double g = other.size() == 1 ? (p - other[0]).norm() : seg(p, other[0], other[1]);
+      if (g < best) best = g, c = p;
+    };
+    std::vector<Vec3> a(A.v.size()), b(B.v.size());
+    for (std::size_t i = 0; i < a.size(); ++i) a[i] = x.svert(static_cast<int>(i));
+    for (std::size_t j = 0; j < b.size(); ++j) b[j] = x.lvert(static_cast<int>(j));
+    for (const Vec3& p : a) consider(p, b);
+    for (const Vec3& p : b) consider(p, a);
+    const Vec3 e = a.size() > 1 ? Vec3(a[1] - a[0]) : b.size() > 1 ? Vec3(b[1] - b[0]) : Vec3(1, 0, 0);
+    int ax = 0;
+    for (int k = 1; k < 3; ++k)
+      if (std::abs(e[k]) < std::abs(e[ax])) ax = k;
+    n = e.cross(Vec3::Unit(ax)).normalized();
   }
-  const Cand& c = cands[best];
-  const Eval& e = evals[best];
-  const Vec3 u = x.unit(e);  // from S towards L
-  Vec3 wp, wq;
-  switch (c.kind) {
-    case Kind::FaceS:
-    case Kind::EdgeVertex:
-    case Kind::VertexVertex: wq = x.lvert(e.j), wp = wq - bv * u; break;
-    case Kind::FaceL:
-    case Kind::VertexEdge: wp = x.svert(e.i), wq = wp + bv * u; break;
-    case Kind::EdgeEdge: wp = x.contact(c, e, -bv * u), wq = wp + bv * u; break;
-  }
-  r.distance = r.lower_bound = r.upper_bound = bv;
-  r.normal = Rp * u;
-  r.translation = -bv * r.normal;
-  r.witness_p = Rp * wp + ps.translation;
-  r.witness_q = Rp * wq + ps.translation;
-  r.feature_p = x.feature_s(c, e), r.feature_q = x.feature_l(c, e);
+  r.witness_p = r.witness_q = Ra * c + pa.translation;
+  if (touch_normal) *touch_normal = Ra * n;
+  return r;
+}
+
+Cast3 miss() {
+  Cast3 r;
+  r.distance = std::numeric_limits<double>::infinity();
   return r;
 }
 
@@ -527,12 +610,12 @@ Cast3 flat_cast(const ConvexPolytope& S, const Pose3& ps, const FlatShape3& L, c
     if (e.norm == 0) continue;
     const int s = ds[k] = dir_sign(x, c, d);
     if (s == 0) {
-      if (e.hsign < 0) return Cast3{.distance = std::numeric_limits<double>::infinity()};
+      if (e.hsign < 0) return miss();
     } else if (s < 0) {  // entry bound h/(u·d): positive iff h < 0
       if (e.hsign < 0 && (in < 0 || compare_ratio(x, c, e, sc.cands[in], sc.evals[in], d) > 0))
         in = static_cast<int>(k);
     } else {
-      if (e.hsign < 0) return Cast3{.distance = std::numeric_limits<double>::infinity()};  // exit < 0
+      if (e.hsign < 0) return miss();  // exit < 0
       if (out < 0 || compare_ratio(x, c, e, sc.cands[out], sc.evals[out], d) < 0) out = static_cast<int>(k);
     }
   }
@@ -547,7 +630,7 @@ Cast3 flat_cast(const ConvexPolytope& S, const Pose3& ps, const FlatShape3& L, c
       return h1 * dot(x.dir(c2, f), dd) - h2 * dot(x.dir(c1, f), dd);
     });
     // h1/a1 − h2/a2 = (h1·a2 − h2·a1)/(a1·a2) with a1 < 0 < a2: sign = −diff.
-    if (-diff > 0) return Cast3{.distance = std::numeric_limits<double>::infinity()};
+    if (-diff > 0) return miss();
   }
   r.hit = true;
   const Vec3 dh = d.normalized();

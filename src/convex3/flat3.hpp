@@ -41,6 +41,13 @@ Depth3 flat_directional(const ConvexPolytope& S, const Pose3& pose_s, const Flat
                         const Vec3& d);
 Distance3 flat_signed_distance(const ConvexPolytope& S, const Pose3& pose_s, const FlatShape3& L,
                                const Pose3& pose_l);
+/// The distance of two lower-dimensional shapes whose dimensions sum to at most 2 (points and
+/// segments; a point and a polygon): M = A ⊕ (−B') has no interior, so the answer is >= 0
+/// (apart: as flat_signed_distance; touching: 0, witnesses a common point, and `touch_normal`, if
+/// given, receives a unit normal of a plane through 0 supporting M, world frame). Throws
+/// InvalidInput for dimensions summing to 3 or more. Used for the cores of rounded shapes.
+Distance3 flat_flat_distance(const FlatShape3& A, const Pose3& pose_a, const FlatShape3& B, const Pose3& pose_b,
+                             Vec3* touch_normal = nullptr);
 /// Shape cast of L along d (world frame) towards S: the entry of the ray s·d̂ into M = S ⊕ (−L),
 /// exactly (ratios compared by exact signs): +inf (hit false) when the ray misses M.
 Cast3 flat_cast(const ConvexPolytope& S, const Pose3& pose_s, const FlatShape3& L, const Pose3& pose_l,

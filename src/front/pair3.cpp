@@ -14,6 +14,7 @@
 #include "front/scale.hpp"
 #include "convex3/flat3.hpp"
 #include "convex3/minimum_expand.hpp"
+#include "primitives/rounded3.hpp"
 
 namespace pendepth {
 
@@ -63,6 +64,7 @@ namespace {
 
 // The sizes of a polytope: its largest coordinate and its smallest edge.
 void add_extent(front::Extent& x, const Shape3& s) {
+  if (s.radius() > 0) x.add_point(s.radius()), x.add_edge(Vec3(0, 0, 0), Vec3(s.radius(), 0, 0));
   if (const auto* f = s.flat_shape()) {
     for (std::size_t i = 0; i < f->v.size(); ++i) {
       x.add_point(f->v[i].cwiseAbs().maxCoeff());
@@ -87,6 +89,12 @@ front::Scale pair_scale(const Shape3& P, const Shape3& Q) {
 // names the vertex and the range), with the same numbering, so features need no mapping.
 Shape3 engine_shape(const Shape3& s, const front::Scale& scale, const char* which) {
   if (scale.identity()) return s;
+  if (s.radius() > 0) {  // the scaled core, rounded by the scaled radius (exact)
+    double r = 0;
+    if (!scale.to_engine(s.radius(), r))
+      throw InvalidInput(std::string(which) + " (" + s.name() + ") radius: " + scale.describe(s.radius()));
+    return Shape3::rounded(engine_shape(s.core(), scale, which), r, s.name());
+  }
   if (const auto* f = s.flat_shape()) {  // the same normal form, every vertex scaled exactly
     convex3::FlatShape3 g = *f;
     for (std::size_t i = 0; i < g.v.size(); ++i)
@@ -110,6 +118,11 @@ Pose3 engine_pose(const front::Scale& scale, const Pose3& pose, const std::strin
 
 namespace {
 Shape3 not_both_flat(Shape3 P, const Shape3& Q) {
+  const int cp = P.core().dimension(), cq = Q.core().dimension();
+  if (P.radius() + Q.radius() > 0 && cp < 3 && cq < 3 && cp + cq > 2)
+    throw InvalidInput("pair: rounded shapes whose cores are both lower-dimensional with dimensions summing to 3 or "
+                       "more (P " + P.name() + " of core dimension " + std::to_string(cp) + ", Q " + Q.name() +
+                       " of core dimension " + std::to_string(cq) + ") are not implemented");
   if (P.dimension() < 3 && Q.dimension() < 3)
     throw InvalidInput("pair: both shapes are lower-dimensional (P " + P.name() + " of dimension " +
                        std::to_string(P.dimension()) + ", Q " + Q.name() + " of dimension " +
@@ -133,6 +146,7 @@ Pair3::Pair3(Shape3 P, Shape3 Q, Prepare)
 namespace {
 
 bool is_flat(const Shape3& s) { return s.dimension() < 3; }
+bool is_rounded(const Shape3& P, const Shape3& Q) { return P.radius() + Q.radius() > 0; }
 
 Depth3 unswap(Depth3 r) {
   const Vec3 v = r.translation;
@@ -171,11 +185,32 @@ Cast3 flat_cast(const Shape3& P, const Pose3& pp, const Shape3& Q, const Pose3& 
   return r;
 }
 
+// ---- rounded shapes (src/primitives/rounded3.cpp): the cores' signed distance ----------------
+// With Q's pose translated by `offset`; when the cores touch, a supporting normal of M_core at 0
+// from the cast's facet through the contact (or flat_flat_distance's).
+primitives::CoreDistance core_distance(const Shape3& P0, const Pose3& pp, const Shape3& Q0, const Pose3& pq) {
+  return [P = P0.core(), Q = Q0.core(), pp, pq](const Vec3& offset, Vec3* touch) {
+    Pose3 q = pq;
+    q.translation += offset;
+    if (is_flat(P) && is_flat(Q)) return convex3::flat_flat_distance(*P.flat_shape(), pp, *Q.flat_shape(), q, touch);
+    const bool flat = is_flat(P) || is_flat(Q);
+    const Distance3 r = flat ? flat_distance(P, pp, Q, q) : signed_distance(P.polytope(), pp, Q.polytope(), q);
+    if (touch && r.distance == 0 && !r.overlapping)
+      *touch = (flat ? flat_cast(P, pp, Q, q, Vec3(1, 0, 0)) : shape_cast(P.polytope(), pp, Q.polytope(), q, Vec3(1, 0, 0)))
+                   .normal;
+    return r;
+  };
+}
+
 }  // namespace
 
 // One query in engine coordinates: poses converted in (checked), the answer scaled back.
 Depth3 Pair3::min_engine(const Pose3& pose_p, const Pose3& pose_q) const {
   const front::Scale scale{scale_exp_};
+  if (is_rounded(engine_P_, engine_Q_))
+    return scale.answer(primitives::rounded_minimum(core_distance(engine_P_, engine_pose(scale, pose_p, "pose of P"),
+                                                                  engine_Q_, engine_pose(scale, pose_q, "pose of Q")),
+                                                    engine_P_.radius(), engine_Q_.radius()));
   if (is_flat(engine_P_) || is_flat(engine_Q_))
     return scale.answer(flat_depth(engine_P_, engine_pose(scale, pose_p, "pose of P"), engine_Q_,
                                    engine_pose(scale, pose_q, "pose of Q"), nullptr));
@@ -185,6 +220,10 @@ Depth3 Pair3::min_engine(const Pose3& pose_p, const Pose3& pose_q) const {
 
 Depth3 Pair3::along_engine(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const {
   const front::Scale scale{scale_exp_};
+  if (is_rounded(engine_P_, engine_Q_))
+    return scale.answer(primitives::rounded_along(core_distance(engine_P_, engine_pose(scale, pose_p, "pose of P"),
+                                                                engine_Q_, engine_pose(scale, pose_q, "pose of Q")),
+                                                  engine_P_.radius(), engine_Q_.radius(), d));
   if (is_flat(engine_P_) || is_flat(engine_Q_))
     return scale.answer(flat_depth(engine_P_, engine_pose(scale, pose_p, "pose of P"), engine_Q_,
                                    engine_pose(scale, pose_q, "pose of Q"), &d));
@@ -280,6 +319,11 @@ Cast3 cast_answer(const front::Scale& scale, Cast3 r) {
 
 Distance3 Pair3::distance_engine(const Pose3& pose_p, const Pose3& pose_q) const {
   const front::Scale scale{scale_exp_};
+  if (is_rounded(engine_P_, engine_Q_))
+    return distance_answer(scale, primitives::rounded_distance(
+                                      core_distance(engine_P_, engine_pose(scale, pose_p, "pose of P"), engine_Q_,
+                                                    engine_pose(scale, pose_q, "pose of Q")),
+                                      engine_P_.radius(), engine_Q_.radius()));
   if (is_flat(engine_P_) || is_flat(engine_Q_))
     return distance_answer(scale, flat_distance(engine_P_, engine_pose(scale, pose_p, "pose of P"), engine_Q_,
                                                 engine_pose(scale, pose_q, "pose of Q")));
@@ -310,6 +354,10 @@ Cast3 Pair3::cast(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const
   check_pose(pose_q, "pose of Q");
   front::check_direction(d);
   const front::Scale scale{scale_exp_};
+  if (is_rounded(engine_P_, engine_Q_))
+    return cast_answer(scale, primitives::rounded_cast(core_distance(engine_P_, engine_pose(scale, pose_p, "pose of P"),
+                                                                     engine_Q_, engine_pose(scale, pose_q, "pose of Q")),
+                                                       engine_P_.radius(), engine_Q_.radius(), d));
   if (is_flat(engine_P_) || is_flat(engine_Q_))
     return cast_answer(scale, flat_cast(engine_P_, engine_pose(scale, pose_p, "pose of P"), engine_Q_,
                                         engine_pose(scale, pose_q, "pose of Q"), d));
@@ -323,7 +371,8 @@ Cast3 Pair3::cast(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const
 Depth3 Pair3::minimum(const Pose3& pose_p, const Pose3& pose_q, WarmStart3& warm) const {
   check_pose(pose_p, "pose of P");
   check_pose(pose_q, "pose of Q");
-  if (is_flat(engine_P_) || is_flat(engine_Q_)) return min_engine(pose_p, pose_q);  // no warm start
+  if (is_flat(engine_P_) || is_flat(engine_Q_) || is_rounded(engine_P_, engine_Q_))
+    return min_engine(pose_p, pose_q);  // no warm start
   const front::Scale scale{scale_exp_};
   const Pose3 ep = engine_pose(scale, pose_p, "pose of P"), eq = engine_pose(scale, pose_q, "pose of Q");
   const void *p = &engine_P_.polytope(), *q = &engine_Q_.polytope();

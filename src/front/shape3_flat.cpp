@@ -24,7 +24,7 @@ Shape3 Shape3::flat(std::span<const Vec3> points, std::string_view name) {
   return Shape3(convex3::flat_shape(points, name));
 }
 
-int Shape3::dimension() const { return flat_ ? flat_->dim : 3; }
+int Shape3::dimension() const { return flat_ && radius_ == 0 ? flat_->dim : 3; }
 std::span<const Vec3> Shape3::flat_vertices() const {
   return flat_ ? std::span<const Vec3>(flat_->v) : std::span<const Vec3>();
 }
@@ -37,6 +37,8 @@ const ConvexPolytope& Shape3::polytope() const {
   return *p_;
 }
 std::size_t Shape3::size() const { return flat_ ? flat_->v.size() : p_->size(); }
-const std::string& Shape3::name() const { return flat_ ? flat_->name : p_->name(); }
+const std::string& Shape3::name() const {
+  return radius_ > 0 ? rounded_name_ : flat_ ? flat_->name : p_->name();
+}
 
 }  // namespace pendepth
