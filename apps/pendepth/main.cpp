@@ -29,6 +29,7 @@
 #include <pendepth/mesh3.hpp>
 #include <pendepth/nesting.hpp>
 #include <pendepth/pendepth.hpp>
+#include <pendepth/shape_spec.hpp>
 
 #include <CLI/CLI.hpp>
 
@@ -72,6 +73,7 @@ constexpr const char* kStdin = "<stdin>";  // the source name of `-` in messages
 // The dimension of a shape file by its extension: 2 (.wkt) or 3 (.obj, .off, .stl, .ply); 0 for `-`
 // and paths without an extension (known once the content is read).
 int shape_dimension(const std::string& path) {
+  if (io::parse_shape_spec(path)) return 3;  // a primitive spec (sphere:R, ...; 3D only for now)
   if (path == "-" || std::filesystem::path(path).extension().empty()) return 0;
   if (const auto f = io::shape_format_of(path)) return *f == io::ShapeFormat::Wkt ? 2 : 3;
   throw InvalidInput(path + ": unknown shape format '" + lower_extension(path) +
@@ -97,12 +99,17 @@ struct ShapeText {
   std::string source;  // the path as given, or <stdin>
   io::ShapeFormat format = io::ShapeFormat::Wkt;
   std::string text;
-  int dimension() const { return format == io::ShapeFormat::Wkt ? 2 : 3; }
+  std::optional<io::ShapeSpec> spec;  // a primitive spec instead of a file (text empty)
+  int dimension() const { return spec || format != io::ShapeFormat::Wkt ? 3 : 2; }
 };
 
 ShapeText load_shape(const std::string& arg) {
   ShapeText s;
   s.source = arg == "-" ? kStdin : arg;
+  if ((s.spec = io::parse_shape_spec(arg))) {
+    s.format = io::ShapeFormat::Obj;
+    return s;
+  }
   if (arg != "-" && shape_dimension(arg) != 0) {
     s.format = *io::shape_format_of(arg);
     s.text = io::read_text_file(arg);
@@ -135,6 +142,7 @@ Shape2 make_shape2(const ShapeText& s, std::string_view name) {
 // shape, which Pair3 rejects: "mesh queries are not implemented yet ... --hull"). `hull` (--hull):
 // the hull of the vertices, faces ignored and not validated.
 Shape3 make_shape3(const ShapeText& s, std::string_view name, bool hull) {
+  if (s.spec) return io::shape3_from_spec(*s.spec, name, hull);
   if (hull)
     return Shape3(io::convex_polytope_from_points(io::parse_mesh_points(s.text, s.format, s.source), s.source, name));
   const io::MeshFile file = io::parse_mesh(s.text, io::mesh_format(s.format, s.source), s.source);
@@ -152,6 +160,30 @@ Pair3 make_pair3(const ShapeText& p, const ShapeText& q, bool hull, pendepth::Pr
     if (!mesh) throw;
     throw InvalidInput(mesh->source + ": " + e.what());
   }
+}
+
+// Shapes without a polytope (points, segments, flat polygons and the primitives built on them:
+// spheres, capsules; Shape3::flat_shape) are formatted against a stand-in polytope with their
+// features printed as "none" (the formatters index a polytope's vertices), and the summary names
+// them instead of counting hull vertices.
+const pendepth::ConvexPolytope& shown(const Shape3& s) {
+  static const pendepth::ConvexPolytope stand_in = pendepth::ConvexPolytope::hull(
+      std::vector<Vec3>{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)}, "primitive");
+  return s.flat_shape() ? stand_in : s.polytope();
+}
+template <class R>
+R shown(R r, const Pair3& pair) {
+  if (pair.P().flat_shape()) r.feature_p = {};
+  if (pair.Q().flat_shape()) r.feature_q = {};
+  return r;
+}
+std::string shown_summary(std::string s, const Pair3& pair) {
+  for (const auto& [tag, shape] : {std::pair{"P ", &pair.P()}, std::pair{"Q ", &pair.Q()}}) {
+    if (!shape->flat_shape()) continue;
+    const std::string from = std::string(tag) + "4 hull vertices", to = std::string(tag) + shape->name() + " (a primitive)";
+    if (const auto k = s.find(from, s.find("shapes:")); k != std::string::npos) s.replace(k, from.size(), to);
+  }
+  return s;
 }
 
 // --hull is about 3D files' faces: a 2D pair rejects it.
@@ -397,10 +429,10 @@ int run_depth3(const DepthArgs& a, const ShapeText& p, const ShapeText& q) {
                                             io::Html3Options{d, a.p, a.q}));
   std::string out;
   if (a.json) {
-    io::append_json(out, r, pair.P().polytope(), pair.Q().polytope());
+    io::append_json(out, shown(r, pair), shown(pair.P()), shown(pair.Q()));
     out += '\n';
   } else {
-    out = io::summary(r, pair.P().polytope(), pair.Q().polytope());
+    out = shown_summary(io::summary(shown(r, pair), shown(pair.P()), shown(pair.Q())), pair);
   }
   write_stdout(out);
   return 0;
@@ -560,12 +592,12 @@ int run_distance(const DistanceArgs& a, bool cast) {
     if (cast && d.isZero(0)) throw InvalidInput("--direction: the direction is zero");
     const Pair3 pair = make_pair3(p, q, a.hull);
     const Pose3 pose_p(rp, Vec3::Zero()), pose_q(rq, t);
-    const auto &P = pair.P().polytope(), &Q = pair.Q().polytope();
+    const auto &P = shown(pair.P()), &Q = shown(pair.Q());
     if (cast) {
-      const pendepth::Cast3 r = pair.cast(pose_p, pose_q, d);
+      const pendepth::Cast3 r = shown(pair.cast(pose_p, pose_q, d), pair);
       a.json ? io::append_json(out, r, P, Q) : void(out = io::summary(r, P, Q));
     } else {
-      const pendepth::Distance3 r = pair.signed_distance(pose_p, pose_q);
+      const pendepth::Distance3 r = shown(pair.signed_distance(pose_p, pose_q), pair);
       a.json ? io::append_json(out, r, P, Q) : void(out = io::summary(r, P, Q));
     }
   } else {
@@ -631,7 +663,7 @@ int run_signed_batch3(const BatchArgs& a, const Pair3& pair, const Pose3& pose_p
         pair.signed_distance(pose_p, poses, out, a.threads);
       });
   return write_batch(a, results, "distance,tx,ty,tz\n", [&](std::string& out, const pendepth::Distance3& r) {
-    io::append_json(out, r, pair.P().polytope(), pair.Q().polytope());
+    io::append_json(out, shown(r, pair), shown(pair.P()), shown(pair.Q()));
   });
 }
 
@@ -656,7 +688,7 @@ int run_batch3(const BatchArgs& a, const ShapeText& p, const ShapeText& q) {
         pair.along(pose_p, poses(ts), ds, out, a.threads);
       });
   return write_batch(a, results, "depth,tx,ty,tz\n", [&](std::string& out, const Depth3& r) {
-    io::append_json(out, r, pair.P().polytope(), pair.Q().polytope());
+    io::append_json(out, shown(r, pair), shown(pair.P()), shown(pair.Q()));
   });
 }
 
@@ -746,7 +778,7 @@ int run_trajectory(const TrajectoryArgs& a) {
       return a.cold ? pair.minimum(Pose3(), pose) : pair.minimum(Pose3(), pose, warm);
     });
     return write_batch(out, results, "depth,tx,ty,tz\n", [&](std::string& o, const Depth3& r) {
-      io::append_json(o, r, pair.P().polytope(), pair.Q().polytope());
+      io::append_json(o, shown(r, pair), shown(pair.P()), shown(pair.Q()));
     });
   }
   reject_hull2(a.hull);

@@ -409,9 +409,9 @@ Scan scan(const Ctx& x) {
 
 Depth3 world(Depth3 r, const Pose3& ps, const Vec3& v, const Vec3& normal, const Vec3& facet, const Vec3& w) {
   const Eigen::Matrix3d Rp = ps.matrix();
-  r.translation = Rp * v;
-  r.normal = Rp * normal;
-  r.facet_normal = Rp * facet;
+  r.translation = Rp * v + Vec3::Zero();  // + 0: no −0 components from the rotation
+  r.normal = Rp * normal + Vec3::Zero();
+  r.facet_normal = Rp * facet + Vec3::Zero();
   r.witness_p = r.witness_q = Rp * w + ps.translation;
   return r;
 }
@@ -443,8 +443,8 @@ Distance3 apart(const Ctx& x, const std::vector<Cand>& cands, const std::vector<
     case Kind::EdgeEdge: wp = x.contact(c, e, -bv * u), wq = wp + bv * u; break;
   }
   r.distance = r.lower_bound = r.upper_bound = bv;
-  r.normal = Rp * u;
-  r.translation = -bv * r.normal;
+  r.normal = Rp * u + Vec3::Zero();
+  r.translation = -bv * r.normal + Vec3::Zero();
   r.witness_p = Rp * wp + ps.translation;
   r.witness_q = Rp * wq + ps.translation;
   r.feature_p = x.feature_s(c, e), r.feature_q = x.feature_l(c, e);

@@ -36,7 +36,8 @@ Distance3 rounded_distance(const CoreDistance& core, double rp, double rq) {
   Vec3 touch = Vec3::Zero();
   const Distance3 c = core(Vec3::Zero(), &touch);
   const double r = rp + rq;
-  const Vec3 n = (c.distance == 0 && !c.overlapping) ? touch : c.normal;
+  // (+ 0: a −0 component, from rotating an axis vector, prints as 0)
+  const Vec3 n = ((c.distance == 0 && !c.overlapping) ? touch : c.normal) + Vec3::Zero();
   Distance3 out;
   out.distance = out.lower_bound = out.upper_bound = c.distance - r;
   out.overlapping = out.distance < 0;
@@ -47,7 +48,7 @@ Distance3 rounded_distance(const CoreDistance& core, double rp, double rq) {
     return out;
   }
   out.normal = n;
-  out.translation = -out.distance * n;
+  out.translation = -out.distance * n + Vec3::Zero();
   out.witness_q = out.witness_p + out.distance * n;
   return out;
 }
@@ -88,7 +89,7 @@ Depth3 rounded_along(const CoreDistance& core, double rp, double rq, const Vec3&
   out.overlapping = true;
   out.depth = out.lower_bound = out.upper_bound = s;
   out.normal = dh;
-  out.translation = s * dh;
+  out.translation = s * dh + Vec3::Zero();
   out.facet_normal = c.normal;
   // The contact after the move: P's surface point over the core witness.
   out.witness_p = out.witness_q = c.witness_p + rp * c.normal;
@@ -132,7 +133,7 @@ Cast3 rounded_cast(const CoreDistance& core, double rp, double rq, const Vec3& d
   }
   out.hit = true;
   out.distance = s;
-  out.translation = s * dh;
+  out.translation = s * dh + Vec3::Zero();
   out.normal = c.normal;
   out.witness_p = out.witness_q = c.witness_p + rp * c.normal;
   out.feature_p = c.feature_p, out.feature_q = c.feature_q;
