@@ -146,10 +146,26 @@ struct Cand {
 struct Eval {
   int i = -1, j = -1;  // exact support of S along u, exact minimiser of u·l' over L
   int hsign = 0;       // exact sign of h_M(u)
-  double h = 0;        // h_M(u), ~1 ulp
-  double norm = 0;     // |u|, ~1 ulp
-  Vec3 u{0, 0, 0};     // u, each component ~1 ulp
+  bool valid = false;  // u ≠ 0 and the candidate relevant (see Ctx::eval)
+  // Floating values with rigorous error bounds (the Fl tier): h ∈ hv ± he, u ∈ uv ± (componentwise,
+  // norm ue); enough to discard most candidates without the accurate (double-double) values.
+  double hv = 0, he = 0, ue = 0;
+  Vec3 uv{0, 0, 0};
+  // Filled by Ctx::refine: h_M(u) ~1 ulp, |u| ~1 ulp, u each component ~1 ulp.
+  bool refined = false;
+  double h = 0, norm = 0;
+  Vec3 u{0, 0, 0};
 };
+
+constexpr double kInflate = 0x1p-50;  // covers the rounding of the few operations on the bounds
+// Encloses |h_M(u)|/|u| from the floating bounds.
+void ratio_bounds(const Eval& e, double& lo, double& hi) {
+  const double n = e.uv.norm(), a = std::abs(e.hv);
+  const double nlo = (n - e.ue) * (1 - kInflate), nhi = (n + e.ue) * (1 + kInflate);
+  const double alo = std::max(0.0, a - e.he) * (1 - kInflate), ahi = (a + e.he) * (1 + kInflate);
+  lo = nhi > 0 ? alo / nhi * (1 - kInflate) : 0;
+  hi = nlo > 0 ? ahi / nlo * (1 + kInflate) : std::numeric_limits<double>::infinity();
+}
 
 // S is a solid polytope (SD, aS set) or, for the distance of two lower-dimensional shapes whose
 // dimensions sum to at most 2, a lower-dimensional shape too (fs set): its faces are then ±its
@@ -244,36 +260,80 @@ struct Ctx {
       return false;
     }();
     if (!surely_nonzero && zero(c)) return r;
-    int i = (!fs && u.allFinite() && u != Vec3::Zero()) ? S->support(u) : 0;
-    if (fs) {
-      for (int x = 1; x < s_count(); ++x)
-        if (exact::exact_sign([&](auto f) { return dot(dir(c, f), sub(s(f, x), s(f, i))); }) > 0) i = x;
-    }
-    for (bool moved = !fs; moved;) {  // exact climb: a local maximum is the global one
-      moved = false;
+    // Ties known from the construction are skipped (exact zeros cost the slow exact tiers): S's
+    // face along its own normal (any of its vertices is a maximiser), the two ends of the edge
+    // of S or of L that u is orthogonal to, every vertex of L along L's normal.
+    const bool s_edge = c.kind == Kind::EdgeEdge || c.kind == Kind::EdgeVertex;
+    const bool l_edge = c.kind == Kind::EdgeEdge || c.kind == Kind::VertexEdge;
+    auto s_tie = [&](int a, int b) {
+      return s_edge && ((a == s_origin(c.s) && b == s_target(c.s)) || (b == s_origin(c.s) && a == s_target(c.s)));
+    };
+    auto l_tie = [&](int a, int b) {
+      return c.kind == Kind::FaceL ||
+             (l_edge && ((a == c.l && b == ledge_end(c.l)) || (b == c.l && a == ledge_end(c.l))));
+    };
+    int i = 0;
+    if (c.kind == Kind::FaceS) {
+      i = fs ? 0 : SD->tris[c.s][0];
+    } else if (!fs && c.kind != Kind::FaceL) {
+      // u is relevant only where S's support along u holds the candidate's own vertex or edge (a
+      // facet of M, or the direction of a closest pair): check that vertex is a local — hence
+      // global — maximum, else drop the candidate (the superset of facet normals stays one).
+      i = c.kind == Kind::EdgeEdge || c.kind == Kind::EdgeVertex ? s_origin(c.s) : c.s;
       for (int e = aS->start[i]; e < aS->start[i + 1]; ++e) {
         const int nb = aS->nbr[e];
-        if (exact::exact_sign([&](auto f) { return dot(dir(c, f), sub(s(f, nb), s(f, i))); }) > 0) {
-          i = nb, moved = true;
-          break;
+        if (!s_tie(nb, i) && exact::exact_sign([&](auto f) { return dot(dir(c, f), sub(s(f, nb), s(f, i))); }) > 0)
+          return r;  // not relevant: valid stays false
+      }
+    } else if (fs) {
+      for (int x = 1; x < s_count(); ++x)
+        if (!s_tie(x, i) && exact::exact_sign([&](auto f) { return dot(dir(c, f), sub(s(f, x), s(f, i))); }) > 0) i = x;
+    } else {
+      i = (u.allFinite() && u != Vec3::Zero()) ? S->support(u) : 0;
+      for (bool moved = true; moved;) {  // exact climb: a local maximum is the global one
+        moved = false;
+        for (int e = aS->start[i]; e < aS->start[i + 1]; ++e) {
+          const int nb = aS->nbr[e];
+          if (!s_tie(nb, i) && exact::exact_sign([&](auto f) { return dot(dir(c, f), sub(s(f, nb), s(f, i))); }) > 0) {
+            i = nb, moved = true;
+            break;
+          }
         }
       }
     }
     int j = 0;
     for (int x = 1; x < static_cast<int>(L.v.size()); ++x)
-      if (exact::exact_sign([&](auto f) { return dot(dir(c, f), rvec(f, j, x)); }) < 0) j = x;
+      if (!l_tie(x, j) && exact::exact_sign([&](auto f) { return dot(dir(c, f), rvec(f, j, x)); }) < 0) j = x;
     r.i = i, r.j = j;
     auto hf = [&](auto f) { return dot(dir(c, f), sub(s(f, i), lp(f, j))); };
     r.hsign = exact::exact_sign(hf);
-    r.h = r.hsign == 0 ? 0.0 : exact::accurate_value(hf);
-    Vec3 uc;  // each component accurately (no squares: no over- or underflow of |u|²)
-    for (int k = 0; k < 3; ++k) uc[k] = exact::accurate_value([&](auto f) { return dir(c, f)[k]; });
-    r.norm = uc.stableNorm();
-    r.u = uc;
+    const exact::Fl hfl = hf(exact::LiftFl{});
+    r.hv = hfl.v, r.he = exact::safe_bound(hfl.e);
+    Vec3 ue;
+    for (int k = 0; k < 3; ++k) r.uv[k] = ua[k].v, ue[k] = exact::safe_bound(ua[k].e);
+    r.ue = ue.norm() * (1 + kInflate);
+    r.valid = std::isfinite(r.hv) && r.uv.allFinite() && std::isfinite(r.ue);
+    if (!r.valid) refine(c, r), r.valid = true;  // over- or underflow of the floating tier: accurate
     return r;
   }
 
-  static Vec3 unit(const Eval& e) { return e.u / e.norm; }
+  // The accurate values of a candidate (each component of u accurately: no squares, so no over-
+  // or underflow of |u|²).
+  void refine(const Cand& c, Eval& r) const {
+    if (r.refined) return;
+    const int i = r.i, j = r.j;
+    auto hf = [&](auto f) { return dot(dir(c, f), sub(s(f, i), lp(f, j))); };
+    r.h = r.hsign == 0 ? 0.0 : exact::accurate_value(hf);
+    Vec3 uc;
+    for (int k = 0; k < 3; ++k) uc[k] = exact::accurate_value([&](auto f) { return dir(c, f)[k]; });
+    r.norm = uc.stableNorm();
+    r.u = uc;
+    r.refined = true;
+    // Keep the bounds consistent for callers that read them after refining.
+    r.hv = r.h, r.he = std::abs(r.h) * 0x1p-50, r.uv = uc, r.ue = r.norm * 0x1p-50;
+  }
+
+  static Vec3 unit(const Eval& e) { return e.u / e.norm; }  // precondition: refined
   Vec3 svert(int i) const { return sv(i); }
   std::vector<int> s_edges() const {
     if (!fs) return SD->edges;
@@ -390,6 +450,28 @@ struct Scan {
   bool touching = false;    // every h >= 0, some h = 0
   int zero_at = -1;
 };
+// The candidate among those with ok(k) minimising (sense > 0) or maximising (sense < 0) the
+// accurate |h_M(u)|/|u|: the floating bounds select the few whose enclosures reach the best
+// bound, only those are refined. Returns −1 when none; `value` the accurate optimum.
+template <class Ok>
+int select(const Ctx& x, const std::vector<Cand>& cands, std::vector<Eval>& evals, int sense, Ok ok, double& value) {
+  double threshold = sense > 0 ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
+  std::vector<std::array<double, 2>> b(cands.size());
+  for (std::size_t k = 0; k < cands.size(); ++k) {
+    if (!evals[k].valid || !ok(k)) continue;
+    ratio_bounds(evals[k], b[k][0], b[k][1]);
+    threshold = sense > 0 ? std::min(threshold, b[k][1]) : std::max(threshold, b[k][0]);
+  }
+  int best = -1;
+  for (std::size_t k = 0; k < cands.size(); ++k) {
+    if (!evals[k].valid || !ok(k) || (sense > 0 ? b[k][0] > threshold : b[k][1] < threshold)) continue;
+    x.refine(cands[k], evals[k]);
+    const double v = std::abs(evals[k].h) / evals[k].norm;
+    if (best < 0 || (sense > 0 ? v < value : v > value)) value = v, best = static_cast<int>(k);
+  }
+  return best;
+}
+
 Scan scan(const Ctx& x) {
   Scan s;
   s.cands = x.facets();
@@ -398,7 +480,7 @@ Scan scan(const Ctx& x) {
   for (std::size_t k = 0; k < s.cands.size(); ++k) {
     s.evals.push_back(x.eval(s.cands[k]));
     const Eval& e = s.evals.back();
-    if (e.norm == 0) continue;
+    if (!e.valid) continue;
     if (e.hsign <= 0) s.overlapping = false;
     if (e.hsign < 0) nonneg = false;
     if (e.hsign == 0 && s.zero_at < 0) s.zero_at = static_cast<int>(k);
@@ -418,17 +500,11 @@ Depth3 world(Depth3 r, const Pose3& ps, const Vec3& v, const Vec3& normal, const
 
 // Apart (or touching when no h < 0): the largest −h_M(u)/|u| over `cands`, which hold the facet
 // normals and the closest-pair directions; the witnesses from the best candidate's features.
-Distance3 apart(const Ctx& x, const std::vector<Cand>& cands, const std::vector<Eval>& evals, const Pose3& ps) {
+Distance3 apart(const Ctx& x, const std::vector<Cand>& cands, std::vector<Eval>& evals, const Pose3& ps) {
   Distance3 r;
   const Eigen::Matrix3d Rp = ps.matrix();
-  int best = -1;
-  double bv = -std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < cands.size(); ++k) {
-    const Eval& e = evals[k];
-    if (e.norm == 0 || e.hsign >= 0) continue;
-    const double v = -e.h / e.norm;
-    if (v > bv) bv = v, best = static_cast<int>(k);
-  }
+  double bv = 0;
+  const int best = select(x, cands, evals, -1, [&](std::size_t k) { return evals[k].hsign < 0; }, bv);
   if (best < 0) return r;
   const Cand& c = cands[best];
   const Eval& e = evals[best];
@@ -455,19 +531,13 @@ Distance3 apart(const Ctx& x, const std::vector<Cand>& cands, const std::vector<
 
 Depth3 flat_minimum(const ConvexPolytope& S, const Pose3& ps, const FlatShape3& L, const Pose3& pl) {
   const Ctx x = make_ctx(S, L, ps, pl);
-  const Scan sc = scan(x);
+  Scan sc = scan(x);
   Depth3 r;
   r.kind = DepthKind::Minimum;
   r.candidates = sc.cands.size();
   if (!sc.overlapping) return r;
-  int best = -1;
-  double bv = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < sc.cands.size(); ++k) {
-    const Eval& e = sc.evals[k];
-    if (e.norm == 0) continue;
-    const double v = e.h / e.norm;
-    if (v < bv) bv = v, best = static_cast<int>(k);
-  }
+  double bv = 0;
+  const int best = select(x, sc.cands, sc.evals, 1, [](std::size_t) { return true; }, bv);
   const Cand& c = sc.cands[best];
   const Eval& e = sc.evals[best];
   const Vec3 u = x.unit(e), v = bv * u;
@@ -482,21 +552,38 @@ Depth3 flat_directional(const ConvexPolytope& S, const Pose3& ps, const FlatShap
   const Ctx x = make_ctx(S, L, ps, pl);
   const Vec3 d = ps.matrix().transpose() * d_world;
   if (!d.allFinite() || d == Vec3::Zero()) throw InvalidInput("direction: zero or non-finite in P's frame");
-  const Scan sc = scan(x);
+  Scan sc = scan(x);
   Depth3 r;
   r.kind = DepthKind::Directional;
   r.candidates = sc.cands.size();
   if (!sc.overlapping) return r;
+  // h/(u·d) over the candidates facing d: floating enclosures first, accurate ratios for the few
+  // that can be the least (h > 0 on every candidate here).
+  const std::size_t C = sc.cands.size();
+  std::vector<double> lo(C, 0), hi(C, 0);
+  std::vector<char> facing(C, 0);
+  double threshold = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < C; ++k) {
+    if (!sc.evals[k].valid || dir_sign(x, sc.cands[k], d) <= 0) continue;
+    facing[k] = 1;
+    const exact::Fl a = dot(x.dir(sc.cands[k], exact::LiftFl{}), x.lift(exact::LiftFl{}, d));
+    const Eval& e = sc.evals[k];
+    const double ae = exact::safe_bound(a.e), alo = (a.v - ae) * (1 - kInflate), ahi = (a.v + ae) * (1 + kInflate);
+    const double hlo = std::max(0.0, e.hv - e.he) * (1 - kInflate), hhi = (e.hv + e.he) * (1 + kInflate);
+    lo[k] = ahi > 0 ? hlo / ahi * (1 - kInflate) : 0;
+    hi[k] = alo > 0 && std::isfinite(ahi) ? hhi / alo * (1 + kInflate) : std::numeric_limits<double>::infinity();
+    threshold = std::min(threshold, hi[k]);
+  }
   int best = -1;
   double bv = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < sc.cands.size(); ++k) {
-    const Eval& e = sc.evals[k];
-    if (e.norm == 0 || dir_sign(x, sc.cands[k], d) <= 0) continue;
-    const double v = ratio(x, sc.cands[k], e, d);
+  for (std::size_t k = 0; k < C; ++k) {
+    if (!facing[k] || lo[k] > threshold) continue;
+    const double v = ratio(x, sc.cands[k], sc.evals[k], d);
     if (v < bv) bv = v, best = static_cast<int>(k);
   }
   const Cand& c = sc.cands[best];  // M bounded and 0 ∈ int M: some facet faces d
-  const Eval& e = sc.evals[best];
+  Eval& e = sc.evals[best];
+  x.refine(c, e);
   const Vec3 dh = d.normalized(), v = bv * dh;
   r.overlapping = true;
   r.depth = r.lower_bound = r.upper_bound = bv;
@@ -553,6 +640,7 @@ Distance3 flat_flat_distance(const FlatShape3& A, const Pose3& pa, const FlatSha
   bool found = false;
   for (std::size_t k = 0; k < cands.size() && !found; ++k)
     if (evals[k].norm > 0 && evals[k].hsign == 0) {
+      x.refine(cands[k], evals[k]);
       c = x.contact(cands[k], evals[k], Vec3::Zero()), n = Ctx::unit(evals[k]), found = true;
       r.feature_p = x.feature_s(cands[k], evals[k]), r.feature_q = x.feature_l(cands[k], evals[k]);
     }
@@ -594,7 +682,7 @@ Cast3 flat_cast(const ConvexPolytope& S, const Pose3& ps, const FlatShape3& L, c
   const Eigen::Matrix3d Rp = ps.matrix();
   const Vec3 d = Rp.transpose() * d_world;
   if (!d.allFinite() || d == Vec3::Zero()) throw InvalidInput("direction: zero or non-finite in P's frame");
-  const Scan sc = scan(x);
+  Scan sc = scan(x);
   Cast3 r;
   if (sc.overlapping) {
     r.hit = r.overlapping = true;
@@ -607,7 +695,7 @@ Cast3 flat_cast(const ConvexPolytope& S, const Pose3& ps, const FlatShape3& L, c
   for (std::size_t k = 0; k < sc.cands.size(); ++k) {
     const Cand& c = sc.cands[k];
     const Eval& e = sc.evals[k];
-    if (e.norm == 0) continue;
+    if (!e.valid) continue;
     const int s = ds[k] = dir_sign(x, c, d);
     if (s == 0) {
       if (e.hsign < 0) return miss();
@@ -636,14 +724,16 @@ Cast3 flat_cast(const ConvexPolytope& S, const Pose3& ps, const FlatShape3& L, c
   const Vec3 dh = d.normalized();
   if (in < 0) {  // touching at s = 0 (0 ∈ ∂M): the facet through 0
     const Cand& c = sc.cands[sc.zero_at];
-    const Eval& e = sc.evals[sc.zero_at];
+    Eval& e = sc.evals[sc.zero_at];
+    x.refine(c, e);
     r.normal = Rp * x.unit(e);
     r.witness_p = r.witness_q = Rp * x.contact(c, e, Vec3::Zero()) + ps.translation;
     r.feature_p = x.feature_s(c, e), r.feature_q = x.feature_l(c, e);
     return r;
   }
   const Cand& c = sc.cands[in];
-  const Eval& e = sc.evals[in];
+  Eval& e = sc.evals[in];
+  x.refine(c, e);
   const double s = ratio(x, c, e, d);
   const Vec3 v = s * dh;
   r.distance = s;
