@@ -32,8 +32,9 @@ const convex3::FlatShape3* Shape3::flat_shape() const { return flat_.get(); }
 
 const ConvexPolytope& Shape3::polytope() const {
   if (!p_)
-    throw InvalidInput(name() + " is a lower-dimensional shape (dimension " + std::to_string(dimension()) +
-                       "): it has no polytope");
+    throw InvalidInput(name() + (radius_ > 0 ? " is a rounded shape with a lower-dimensional core (a sphere, a capsule)"
+                                             : " is a lower-dimensional shape (a point, a segment, a flat polygon)") +
+                       ": it has no polytope");
   return *p_;
 }
 std::size_t Shape3::size() const { return flat_ ? flat_->v.size() : p_->size(); }
