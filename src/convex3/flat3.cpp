@@ -134,6 +134,59 @@ V<N> scl(const N& s, const V<N>& a) { return {s * a[0], s * a[1], s * a[2]}; }
 template <class N>
 V<N> neg(const V<N>& a) { return {-a[0], -a[1], -a[2]}; }
 
+// Closest points in doubles (Ericson, Real-Time Collision Detection §5.1.5, §5.1.9): only for
+// the witnesses and contact points, whose contract is "up to rounding"; every decision and
+// every length of the answers is exact / accurate elsewhere.
+Vec3 closest_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0 && d2 <= 0) return a;
+  const Vec3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0 && d4 <= d3) return b;
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + d1 / (d1 - d3) * ab;
+  const Vec3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0 && d5 <= d6) return c;
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + d2 / (d2 - d6) * ac;
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b);
+  const double den = 1 / (va + vb + vc);
+  const double v = vb * den, w = vc * den;
+  if (!std::isfinite(v) || !std::isfinite(w)) return a;  // a degenerate triangle (not used so)
+  return a + ab * v + ac * w;
+}
+Vec3 closest_on_segment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 e = b - a;
+  const double n = e.squaredNorm();
+  const double t = n > 0 ? std::clamp((p - a).dot(e) / n, 0.0, 1.0) : 0.0;
+  return a + t * e;
+}
+// The closest points of segments [p1, q1] and [p2, q2].
+std::pair<Vec3, Vec3> closest_segments(const Vec3& p1, const Vec3& q1, const Vec3& p2, const Vec3& q2) {
+  const Vec3 d1 = q1 - p1, d2 = q2 - p2, r = p1 - p2;
+  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
+  double s = 0, t = 0;
+  if (a <= 0 && e <= 0) return {p1, p2};
+  if (a <= 0) {
+    t = std::clamp(f / e, 0.0, 1.0);
+  } else {
+    const double c = d1.dot(r);
+    if (e <= 0) {
+      s = std::clamp(-c / a, 0.0, 1.0);
+    } else {
+      const double b = d1.dot(d2), den = a * e - b * b;
+      s = den > 0 ? std::clamp((b * f - c * e) / den, 0.0, 1.0) : 0.0;
+      t = (b * s + f) / e;
+      if (t < 0) t = 0, s = std::clamp(-c / a, 0.0, 1.0);
+      else if (t > 1) t = 1, s = std::clamp((b - c) / a, 0.0, 1.0);
+    }
+  }
+  return {p1 + s * d1, p2 + t * d2};
+}
+
 // Candidate directions of M (see the header comment); `sg` = ±1 for the two-sided kinds.
 enum class Kind { FaceS, FaceL, EdgeEdge, VertexVertex, VertexEdge, EdgeVertex };
 struct Cand {
@@ -388,23 +441,48 @@ struct Ctx {
       default: return {FeatureKind3::Vertex, e.j};
     }
   }
-  // A contact point (S's frame) of S and L' + v on the plane of candidate c (c's features).
-  Vec3 contact(const Cand& c, const Eval& e, const Vec3& v) const {
-    switch (c.kind) {
-      case Kind::FaceS:
-      case Kind::EdgeVertex:
-      case Kind::VertexVertex: return lvert(e.j) + v;
-      case Kind::FaceL:
-      case Kind::VertexEdge: return svert(e.i);
-      case Kind::EdgeEdge: {  // the closest point of the two edge lines after the move
-        const Vec3 a = svert(s_origin(c.s)), ee = svert(s_target(c.s)) - a;
-        const Vec3 b = lvert(c.l) + v, ff = lvert(ledge_end(c.l)) - lvert(c.l);
-        const Vec3 nn = ee.cross(ff);
-        const double t = (b - a).cross(ff).dot(nn) / nn.squaredNorm();
-        return a + std::clamp(std::isfinite(t) ? t : 0.0, 0.0, 1.0) * ee;
+  // The closest points (S's frame, doubles) of S and L' + v: the witnesses and contact points.
+  // S's triangles (or fan) against L's vertices, S's vertices against L's triangles (fan),
+  // segment or point, S's edges against L's edges. O(f·k + n·k + e·k).
+  std::pair<Vec3, Vec3> closest(const Vec3& v) const {
+    const int k = static_cast<int>(L.v.size()), n = s_count();
+    std::vector<Vec3> l(k);
+    for (int j = 0; j < k; ++j) l[j] = lvert(j) + v;
+    double best = std::numeric_limits<double>::infinity();
+    std::pair<Vec3, Vec3> out{svert(0), l[0]};
+    auto take = [&](const Vec3& a, const Vec3& b) {
+      const double d = (a - b).squaredNorm();
+      if (d < best) best = d, out = {a, b};
+    };
+    auto point_vs = [&](const Vec3& p, const std::vector<Vec3>& poly, bool p_on_s) {  // p against a flat shape
+      Vec3 c = poly[0];
+      if (poly.size() == 2) c = closest_on_segment(p, poly[0], poly[1]);
+      double bd = (c - p).squaredNorm();
+      for (std::size_t t = 1; t + 1 < poly.size() && poly.size() >= 3; ++t) {
+        const Vec3 x = closest_on_triangle(p, poly[0], poly[t], poly[t + 1]);
+        if ((x - p).squaredNorm() < bd || t == 1) bd = (x - p).squaredNorm(), c = x;
       }
+      p_on_s ? take(p, c) : take(c, p);
+    };
+    if (fs) {
+      std::vector<Vec3> sv(fs->v.begin(), fs->v.end());
+      for (const Vec3& q : l) point_vs(q, sv, false);
+    } else {
+      for (const auto& t : SD->tris)
+        for (const Vec3& q : l) take(closest_on_triangle(q, SD->v[t[0]], SD->v[t[1]], SD->v[t[2]]), q);
     }
-    return svert(e.i);
+    for (int i = 0; i < n; ++i) point_vs(svert(i), l, true);
+    const int le = L.dim == 0 ? 0 : L.dim == 1 ? 1 : k;
+    for (int h : s_edges())
+      for (int j = 0; j < le; ++j) {
+        const auto [a, b] = closest_segments(svert(s_origin(h)), svert(s_target(h)), l[j], l[(j + 1) % k]);
+        take(a, b);
+      }
+    return out;
+  }
+  Vec3 contact(const Cand&, const Eval&, const Vec3& v) const {
+    const auto [a, b] = closest(v);
+    return 0.5 * (a + b);
   }
 };
 
@@ -509,15 +587,10 @@ Distance3 apart(const Ctx& x, const std::vector<Cand>& cands, std::vector<Eval>&
   const Cand& c = cands[best];
   const Eval& e = evals[best];
   const Vec3 u = x.unit(e);  // from S towards L
-  Vec3 wp = Vec3::Zero(), wq = Vec3::Zero();
-  switch (c.kind) {
-    case Kind::FaceS:
-    case Kind::EdgeVertex:
-    case Kind::VertexVertex: wq = x.lvert(e.j), wp = wq - bv * u; break;
-    case Kind::FaceL:
-    case Kind::VertexEdge: wp = x.svert(e.i), wq = wp + bv * u; break;
-    case Kind::EdgeEdge: wp = x.contact(c, e, -bv * u), wq = wp + bv * u; break;
-  }
+  // The closest pair on S and L' (doubles); witness_q − witness_p = distance·normal up to rounding.
+  const auto [wp, wq0] = x.closest(Vec3::Zero());
+  const Vec3 wq = wp + bv * u;
+  (void)wq0;
   r.distance = r.lower_bound = r.upper_bound = bv;
   r.normal = Rp * u + Vec3::Zero();
   r.translation = -bv * r.normal + Vec3::Zero();
@@ -645,21 +718,10 @@ Distance3 flat_flat_distance(const FlatShape3& A, const Pose3& pa, const FlatSha
       r.feature_p = x.feature_s(cands[k], evals[k]), r.feature_q = x.feature_l(cands[k], evals[k]);
     }
   if (!found) {
-    double best = std::numeric_limits<double>::infinity();
-    auto seg = [](const Vec3& p, const Vec3& a, const Vec3& b) {
-      const Vec3 e = b - a;
-      const double t = e.squaredNorm() > 0 ? std::clamp((p - a).dot(e) / e.squaredNorm(), 0.0, 1.0) : 0.0;
-      return (p - (a + t * e)).norm();
-    };
-    auto consider = [&](const Vec3& p, const std::vector<Vec3>& other) {
-      const double g = other.size() == 1 ? (p - other[0]).norm() : seg(p, other[0], other[1]);
-      if (g < best) best = g, c = p;
-    };
+    c = x.contact(Cand{}, Eval{}, Vec3::Zero());
     std::vector<Vec3> a(A.v.size()), b(B.v.size());
     for (std::size_t i = 0; i < a.size(); ++i) a[i] = x.svert(static_cast<int>(i));
     for (std::size_t j = 0; j < b.size(); ++j) b[j] = x.lvert(static_cast<int>(j));
-    for (const Vec3& p : a) consider(p, b);
-    for (const Vec3& p : b) consider(p, a);
     const Vec3 e = a.size() > 1 ? Vec3(a[1] - a[0]) : b.size() > 1 ? Vec3(b[1] - b[0]) : Vec3(1, 0, 0);
     int ax = 0;
     for (int k = 1; k < 3; ++k)

@@ -53,6 +53,9 @@ struct Stats {
 void check(const std::vector<Vec3>& solid, const std::vector<Vec3>& low, const Pose3& ps, const Pose3& pl,
            const std::vector<Vec3>& dirs, Stats& st, const std::string& what) {
   const Shape3 S = Shape3::hull(solid, "S"), L = Shape3::flat(low, "L");
+  const oracle3::ExactHull hs(solid);
+  // The exact gap of a world point to ∂S (S's frame).
+  auto gap_s = [&](const Vec3& w) { return std::abs(hs.gap(ps.matrix().transpose() * (w - ps.translation))); };
   const Eigen::Matrix3d Rs = ps.matrix(), Rl = pl.matrix();
   const oracle3::ExactDifference M(solid, low, Rs.transpose() * Rl, Rs.transpose() * pl.translation,
                                    Rs.transpose() * ps.translation, true);
@@ -82,6 +85,7 @@ void check(const std::vector<Vec3>& solid, const std::vector<Vec3>& low, const P
       Pose3 moved = pq;
       moved.translation += m.translation;
       EXPECT_LE(std::abs(pair.signed_distance(pp, moved).distance), 1e-12 * scale) << w << ": not touching after σ";
+      if (!swap) EXPECT_LE(gap_s(m.witness_p), 1e-12 * scale) << w << ": σ's contact off ∂S";
     } else {
       EXPECT_EQ(m.depth, 0) << w;
     }
@@ -99,6 +103,7 @@ void check(const std::vector<Vec3>& solid, const std::vector<Vec3>& low, const P
       EXPECT_LE(e, 4) << w << ": σ_d " << a.depth << " exact " << o.depth;
       EXPECT_LE(m.depth, a.depth * (1 + 8 * kEps)) << w << ": σ > σ_d";
       EXPECT_LE((a.translation - a.depth * d.normalized()).norm(), 8 * kEps * a.depth) << w;
+      if (!swap) EXPECT_LE(gap_s(a.witness_p), 1e-12 * scale) << w << ": σ_d's contact off ∂S";
     }
     // signed distance
     const Distance3 sd = pair.signed_distance(pp, pq);
@@ -113,6 +118,8 @@ void check(const std::vector<Vec3>& solid, const std::vector<Vec3>& low, const P
       EXPECT_NEAR(sd.normal.norm(), 1, 8 * kEps) << w;
       EXPECT_LE((sd.translation + sd.distance * sd.normal).norm(), 8 * kEps * std::abs(sd.distance)) << w;
       EXPECT_LE((sd.witness_q - sd.witness_p - sd.distance * sd.normal).norm(), 1e-12 * scale) << w;
+      // The witness on the solid lies on its boundary (unmoved for the signed distance).
+      EXPECT_LE(gap_s(swap ? sd.witness_q : sd.witness_p), 1e-12 * scale) << w << ": witness off ∂S";
     }
     // cast
     for (const Vec3& d : dirs) {
@@ -134,6 +141,7 @@ void check(const std::vector<Vec3>& solid, const std::vector<Vec3>& low, const P
         Pose3 moved = pq;
         moved.translation += c.translation;
         EXPECT_LE(std::abs(pair.signed_distance(pp, moved).distance), 1e-12 * scale) << w << ": not touching after cast";
+        if (!swap) EXPECT_LE(gap_s(c.witness_p), 1e-12 * scale) << w << ": the cast's contact off ∂S";
       }
     }
   }
