@@ -18,14 +18,22 @@
 //   * apart: dist(0, M) = max_u −h_M(u)/|u| over any family containing the direction of the
 //     closest pair; the family adds, besides the facet normals (face–vertex, edge–edge pairs),
 //     the exact directions of the vertex–vertex, vertex–edge and edge–vertex closest pairs.
-// h_M(u) = max_i u·s_i − min_j u·l'_j with both extremes found exactly (S: its support query on
-// the rounded u, then an exact climb over S's adjacency, a local maximum of a linear function on
-// a convex polytope being global; L: an exact scan of its k vertices). Values: h_M(u) and the
-// components of u accurate to ~1 ulp (exact::accurate_value), |u| by a stable norm, so every length is within a few ulps; the minimum
-// (maximum) of values each a few ulps off is a few ulps off the exact one.
-// Complexity per query: O(C·(log n + c)) for C = f_S + 2·e_S·e_L (+2) candidates (σ, σ_d, cast)
-// and C + n·k + n·e_L + e_S·k (distance), c the climb length. Meant for points, segments and
-// small polygons (k small); nothing is built per pair.
+// h_M(u) = max_i u·s_i − min_j u·l'_j with both extremes found exactly. S: every candidate
+// names a vertex or edge of S (a face's corner; the edge; the vertex of a closest pair) and is
+// kept only if that vertex passes the exact local-maximum test over S's adjacency (a local
+// maximum of a linear function on a convex polytope is global; the edge's other end is a known
+// tie) — a relevant u (a facet of M, a closest pair's direction) always passes, so the set stays
+// a superset; ±L's normal climbs from S's support query. L: an exact scan of its k vertices.
+// Ties known from the construction are never evaluated (exact zeros cost the slow tiers).
+// Values: floating enclosures (the Fl tier's rigorous error bounds) select the candidates that
+// can be optimal; only those get h_M(u) and the components of u accurate to ~1 ulp
+// (exact::accurate_value) and |u| by a stable norm, so every length is within a few ulps (the
+// minimum or maximum of values each a few ulps off is a few ulps off the exact one). Witnesses and
+// contact points: the closest points of S and L' (after the move) in doubles, up to rounding.
+// Complexity per query: O(C·c) for C = f_S + 2·e_S·e_L (+2) candidates (σ, σ_d, cast) and
+// C + n·k + n·e_L + e_S·k (distance), c the vertex degree (a climb for L's normal), plus
+// O(f_S·k + n·k + e_S·k) for the witnesses. Meant for points, segments and small polygons (k
+// small); nothing is built per pair. Measured: docs/benchmarks.md (bench_primitives3).
 #include "convex3/flat3.hpp"
 
 #include "convex3/polytope_data.hpp"
