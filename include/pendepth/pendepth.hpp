@@ -331,8 +331,11 @@ class WarmStart3 {
   bool valid_ = false;
 };
 
-/// A pair of convex polytopes, P and Q each with a pose (only the relative pose matters; results
-/// are in the world frame). Queries are const and thread-safe.
+/// A pair of convex 3D shapes, P and Q each with a pose (only the relative pose matters; results
+/// are in the world frame): polytopes (src/convex3/), a lower-dimensional shape against a solid
+/// one (src/convex3/flat3.cpp: exact), rounded shapes — spheres, capsules, core ⊕ ball — through
+/// their cores' signed distance (src/primitives/rounded3.cpp: sd one rounding from the exact core
+/// value; σ_d and casts by Newton on it). Queries are const and thread-safe.
 class Pair3 {
  public:
   Pair3(Shape3 P, Shape3 Q, Prepare prepare = Prepare::Auto);

@@ -34,8 +34,9 @@ FlatShape3 flat_shape(std::span<const Vec3> points, std::string_view name);
 /// solid S (posed by pose_s, the role of P) and the lower-dimensional L (pose_l, the role of Q).
 /// Exact in the sense of the other 3D engines: every decision an exact sign of a polynomial in
 /// the input doubles (the placed vertices R·l + t are never rounded), lengths within a few ulps.
-/// Features of L: vertex j, edge j (v[j]–v[j+1]), face 0. Cost O(C·(log n + c)) for the
-/// C = O(f_S + e_S·k) candidate normals (σ, σ_d) or O(n·k + e_S·k) more (distance), c a climb.
+/// Features of L: vertex j, edge j (v[j]–v[j+1]), face 0. Cost O(C·c) for the
+/// C = O(f_S + e_S·k) candidate normals (σ, σ_d) or O(n·k + e_S·k) more (distance), c a vertex
+/// degree; witnesses in doubles, up to rounding (flat3.cpp).
 Depth3 flat_minimum(const ConvexPolytope& S, const Pose3& pose_s, const FlatShape3& L, const Pose3& pose_l);
 Depth3 flat_directional(const ConvexPolytope& S, const Pose3& pose_s, const FlatShape3& L, const Pose3& pose_l,
                         const Vec3& d);
