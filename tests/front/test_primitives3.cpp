@@ -223,5 +223,39 @@ TEST(Primitives3, BatchScaleAndErrors) {
   EXPECT_EQ(Shape3::sphere(2).core().dimension(), 0);
 }
 
+// Awkward inputs stay finite: coincident sphere centres, capsules on one axis (touching cores,
+// collinear segments), a tiny sphere on a large box, far placements, grazing casts.
+TEST(Primitives3, AwkwardInputsStayFinite) {
+  std::mt19937_64 rng(8);
+  std::uniform_real_distribution<double> U(-1, 1);
+  auto finite = [](const Vec3& v) { return v.allFinite(); };
+  const Pair3 spheres(Shape3::sphere(1), Shape3::sphere(0.5));
+  const Distance3 same = spheres.signed_distance(Pose3(), Pose3());
+  EXPECT_EQ(same.distance, -1.5);
+  EXPECT_NEAR(same.normal.norm(), 1, 8 * kEps);  // any direction: the centres coincide
+  const Pair3 caps(Shape3::capsule(0.5, 1), Shape3::capsule(0.5, 1));
+  const Depth3 axis = caps.minimum(Pose3(), Pose3(Vec3(0, 0, 1)));  // collinear cores overlapping
+  EXPECT_TRUE(axis.overlapping);
+  EXPECT_NEAR(axis.depth, 1, 4 * kEps);  // sideways: the radii (1); along z it would be 3
+  const Pair3 tiny(Shape3::box(1024, 1024, 1024), Shape3::sphere(0x1p-30));
+  EXPECT_EQ(tiny.signed_distance(Pose3(), Pose3(Vec3(0, 0, 1024 + 0x1p-29))).distance, 0x1p-30);  // exact inputs
+  // A ray grazing a sphere (tangent): a hit or a miss, never NaN.
+  const Cast3 graze = spheres.cast(Pose3(), Pose3(Vec3(5, 1.5, 0)), Vec3(-1, 0, 0));
+  EXPECT_FALSE(std::isnan(graze.distance));
+  for (const Pair3& pair : {spheres, caps, tiny, Pair3(Shape3::capsule(0.2, 0.3), Shape3::box(0.5, 0.5, 0.5))})
+    for (int k = 0; k < 40; ++k) {
+      const double far = k % 4 == 3 ? 1e7 : 2;
+      const Pose3 pq(random_rotation(rng), far * Vec3(U(rng), U(rng), U(rng)));
+      const Vec3 d(U(rng), U(rng), U(rng));
+      const Depth3 m = pair.minimum(Pose3(), pq), a = pair.along(Pose3(), pq, d);
+      const Distance3 sd = pair.signed_distance(Pose3(), pq);
+      const Cast3 c = pair.cast(Pose3(), pq, d);
+      ASSERT_TRUE(std::isfinite(m.depth) && finite(m.translation) && finite(m.witness_p));
+      ASSERT_TRUE(std::isfinite(a.depth) && finite(a.translation) && finite(a.witness_p));
+      ASSERT_TRUE(std::isfinite(sd.distance) && finite(sd.normal) && finite(sd.witness_q));
+      ASSERT_TRUE(!std::isnan(c.distance) && finite(c.normal) && finite(c.witness_p));
+    }
+}
+
 }  // namespace
 }  // namespace pendepth

@@ -298,3 +298,45 @@ TEST(Flat3, BatchAndScale) {
 
 }  // namespace
 }  // namespace pendepth
+
+namespace pendepth {
+namespace {
+
+// Awkward inputs never crash, hang or return NaN: tiny segments next to large solids, points
+// exactly on vertices and edges, nearly collinear polygons, far-away placements, both roles.
+TEST(Flat3, AwkwardInputsStayFinite) {
+  std::mt19937_64 rng(99);
+  std::uniform_real_distribution<double> U(-1, 1);
+  const std::vector<Vec3> cube = {Vec3(-1, -1, -1), Vec3(1, -1, -1), Vec3(-1, 1, -1), Vec3(1, 1, -1),
+                                  Vec3(-1, -1, 1),  Vec3(1, -1, 1),  Vec3(-1, 1, 1),  Vec3(1, 1, 1)};
+  const Shape3 S = Shape3::hull(cube, "cube");
+  std::vector<Shape3> lows = {
+      Shape3::point(Vec3(1, 1, 1)),
+      Shape3::segment(Vec3(0, 0, 0), Vec3(1e-12, 0, 0)),
+      Shape3::segment(Vec3(-1, -1, -1), Vec3(1, 1, 1)),
+      Shape3::flat(std::vector<Vec3>{Vec3(0, 0, 0), Vec3(1, 1e-15, 0), Vec3(2, 0, 0)}),
+      Shape3::flat(std::vector<Vec3>{Vec3(0, 0, 0), Vec3(1e6, 0, 0), Vec3(0, 1e6, 0), Vec3(1e6, 1e6, 0)}),
+  };
+  auto finite = [](const Vec3& v) { return v.allFinite(); };
+  for (const Shape3& L : lows)
+    for (int swap = 0; swap < 2; ++swap) {
+      const Pair3 pair = swap ? Pair3(L, S) : Pair3(S, L);
+      for (int k = 0; k < 40; ++k) {
+        const double far = k % 4 == 3 ? 1e8 : 1.5;
+        const Pose3 pq(Eigen::Quaterniond(U(rng), U(rng), U(rng), U(rng)), far * Vec3(U(rng), U(rng), U(rng)));
+        const Vec3 d(U(rng), U(rng), U(rng));
+        const Depth3 m = pair.minimum(Pose3(), pq), a = pair.along(Pose3(), pq, d);
+        const Distance3 s = pair.signed_distance(Pose3(), pq);
+        const Cast3 c = pair.cast(Pose3(), pq, d);
+        ASSERT_TRUE(std::isfinite(m.depth) && finite(m.translation) && finite(m.witness_p)) << L.name();
+        ASSERT_TRUE(std::isfinite(a.depth) && finite(a.translation) && finite(a.witness_p)) << L.name();
+        ASSERT_TRUE(std::isfinite(s.distance) && finite(s.normal) && finite(s.witness_p) && finite(s.witness_q)) << L.name();
+        ASSERT_TRUE(!std::isnan(c.distance) && finite(c.normal) && finite(c.witness_p)) << L.name();
+        EXPECT_EQ(m.overlapping, s.distance < 0) << L.name();
+        EXPECT_LE(m.depth, a.depth * (1 + 1e-15) + 1e-300) << L.name();
+      }
+    }
+}
+
+}  // namespace
+}  // namespace pendepth
