@@ -380,6 +380,8 @@ int run_approximate3(const DepthArgs& a, const ShapeText& p, const ShapeText& q,
                      const Pose3& pose_q) {
   if (!a.direction.empty() || !a.html.empty() || a.generalized)
     throw InvalidInput("--approximate: answers σ only (no --direction, --html, --generalized)");
+  if (p.spec || q.spec)
+    throw InvalidInput("--approximate: reads point files; '" + (p.spec ? p.source : q.source) + "' is a primitive spec");
   double delta = 0;
   const char* end = a.approximate.data() + a.approximate.size();
   if (auto [ptr, ec] = std::from_chars(a.approximate.data(), end, delta); ec != std::errc() || ptr != end)

@@ -55,6 +55,8 @@ TEST_F(CliPrimitives, Errors) {
   expect_error("distance cylinder:1,2 box:1,1,1",
                "shape spec 'cylinder:1,2': cylinder primitives are not implemented yet (expected cylinder:R,H)");
   expect_error("depth box:1,1,1 sphere:0", "shape spec 'sphere:0': Q: radius 0 must be finite and positive");
+  expect_error("depth sphere:1 box:1,1,1 --approximate 0.01",
+               "--approximate: reads point files; 'sphere:1' is a primitive spec");
   const Result both = run("depth point:0,0,0 segment:0,0,0,1,1,1");
   EXPECT_EQ(both.status, 2);
   EXPECT_NE(both.err.find("both shapes are lower-dimensional"), std::string::npos) << both.err;
