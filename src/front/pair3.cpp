@@ -14,6 +14,7 @@
 #include "front/scale.hpp"
 #include "convex3/flat3.hpp"
 #include "convex3/minimum_expand.hpp"
+#include "convex3/distance_compare.hpp"
 #include "primitives/rounded3.hpp"
 
 namespace pendepth {
@@ -202,15 +203,35 @@ primitives::CoreDistance core_distance(const Shape3& P0, const Pose3& pp, const 
   };
 }
 
+// The exact comparisons of the cores with a radius (convex3/distance_compare.hpp).
+primitives::CoreCompare core_compare(const Shape3& P0, const Pose3& pp, const Shape3& Q0, const Pose3& pq) {
+  // The core shapes are kept alive with their points (a polytope's data is referenced).
+  auto P = std::make_shared<const Shape3>(P0.core()), Q = std::make_shared<const Shape3>(Q0.core());
+  auto cp = is_flat(*P) ? std::make_shared<const convex3::CorePoints>(*P->flat_shape())
+                        : std::make_shared<const convex3::CorePoints>(P->polytope());
+  auto cq = is_flat(*Q) ? std::make_shared<const convex3::CorePoints>(*Q->flat_shape())
+                        : std::make_shared<const convex3::CorePoints>(Q->polytope());
+  primitives::CoreCompare c;
+  c.at = [P, Q, cp, cq, pp, pq](const Vec3& d, double lam, double rp, double rq, int* slope) {
+    return convex3::distance_compare(*cp, pp, *cq, pq, d, lam, rp, rq, slope);
+  };
+  c.line = [P, Q, cp, cq, pp, pq](const Vec3& d, double rp, double rq) {
+    return convex3::line_distance_compare(*cp, pp, *cq, pq, d, rp, rq);
+  };
+  return c;
+}
+
 }  // namespace
 
 // One query in engine coordinates: poses converted in (checked), the answer scaled back.
 Depth3 Pair3::min_engine(const Pose3& pose_p, const Pose3& pose_q) const {
   const front::Scale scale{scale_exp_};
-  if (is_rounded(engine_P_, engine_Q_))
-    return scale.answer(primitives::rounded_minimum(core_distance(engine_P_, engine_pose(scale, pose_p, "pose of P"),
-                                                                  engine_Q_, engine_pose(scale, pose_q, "pose of Q")),
-                                                    engine_P_.radius(), engine_Q_.radius()));
+  if (is_rounded(engine_P_, engine_Q_)) {
+    const Pose3 ep = engine_pose(scale, pose_p, "pose of P"), eq = engine_pose(scale, pose_q, "pose of Q");
+    return scale.answer(primitives::rounded_minimum(core_distance(engine_P_, ep, engine_Q_, eq),
+                                                    core_compare(engine_P_, ep, engine_Q_, eq), engine_P_.radius(),
+                                                    engine_Q_.radius()));
+  }
   if (is_flat(engine_P_) || is_flat(engine_Q_))
     return scale.answer(flat_depth(engine_P_, engine_pose(scale, pose_p, "pose of P"), engine_Q_,
                                    engine_pose(scale, pose_q, "pose of Q"), nullptr));
@@ -220,10 +241,12 @@ Depth3 Pair3::min_engine(const Pose3& pose_p, const Pose3& pose_q) const {
 
 Depth3 Pair3::along_engine(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const {
   const front::Scale scale{scale_exp_};
-  if (is_rounded(engine_P_, engine_Q_))
-    return scale.answer(primitives::rounded_along(core_distance(engine_P_, engine_pose(scale, pose_p, "pose of P"),
-                                                                engine_Q_, engine_pose(scale, pose_q, "pose of Q")),
-                                                  engine_P_.radius(), engine_Q_.radius(), d));
+  if (is_rounded(engine_P_, engine_Q_)) {
+    const Pose3 ep = engine_pose(scale, pose_p, "pose of P"), eq = engine_pose(scale, pose_q, "pose of Q");
+    return scale.answer(primitives::rounded_along(core_distance(engine_P_, ep, engine_Q_, eq),
+                                                  core_compare(engine_P_, ep, engine_Q_, eq), engine_P_.radius(),
+                                                  engine_Q_.radius(), d));
+  }
   if (is_flat(engine_P_) || is_flat(engine_Q_))
     return scale.answer(flat_depth(engine_P_, engine_pose(scale, pose_p, "pose of P"), engine_Q_,
                                    engine_pose(scale, pose_q, "pose of Q"), &d));
@@ -319,11 +342,12 @@ Cast3 cast_answer(const front::Scale& scale, Cast3 r) {
 
 Distance3 Pair3::distance_engine(const Pose3& pose_p, const Pose3& pose_q) const {
   const front::Scale scale{scale_exp_};
-  if (is_rounded(engine_P_, engine_Q_))
-    return distance_answer(scale, primitives::rounded_distance(
-                                      core_distance(engine_P_, engine_pose(scale, pose_p, "pose of P"), engine_Q_,
-                                                    engine_pose(scale, pose_q, "pose of Q")),
-                                      engine_P_.radius(), engine_Q_.radius()));
+  if (is_rounded(engine_P_, engine_Q_)) {
+    const Pose3 ep = engine_pose(scale, pose_p, "pose of P"), eq = engine_pose(scale, pose_q, "pose of Q");
+    return distance_answer(scale, primitives::rounded_distance(core_distance(engine_P_, ep, engine_Q_, eq),
+                                                               core_compare(engine_P_, ep, engine_Q_, eq),
+                                                               engine_P_.radius(), engine_Q_.radius()));
+  }
   if (is_flat(engine_P_) || is_flat(engine_Q_))
     return distance_answer(scale, flat_distance(engine_P_, engine_pose(scale, pose_p, "pose of P"), engine_Q_,
                                                 engine_pose(scale, pose_q, "pose of Q")));
@@ -354,10 +378,12 @@ Cast3 Pair3::cast(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const
   check_pose(pose_q, "pose of Q");
   front::check_direction(d);
   const front::Scale scale{scale_exp_};
-  if (is_rounded(engine_P_, engine_Q_))
-    return cast_answer(scale, primitives::rounded_cast(core_distance(engine_P_, engine_pose(scale, pose_p, "pose of P"),
-                                                                     engine_Q_, engine_pose(scale, pose_q, "pose of Q")),
-                                                       engine_P_.radius(), engine_Q_.radius(), d));
+  if (is_rounded(engine_P_, engine_Q_)) {
+    const Pose3 ep = engine_pose(scale, pose_p, "pose of P"), eq = engine_pose(scale, pose_q, "pose of Q");
+    return cast_answer(scale, primitives::rounded_cast(core_distance(engine_P_, ep, engine_Q_, eq),
+                                                       core_compare(engine_P_, ep, engine_Q_, eq), engine_P_.radius(),
+                                                       engine_Q_.radius(), d));
+  }
   if (is_flat(engine_P_) || is_flat(engine_Q_))
     return cast_answer(scale, flat_cast(engine_P_, engine_pose(scale, pose_p, "pose of P"), engine_Q_,
                                         engine_pose(scale, pose_q, "pose of Q"), d));
