@@ -335,7 +335,9 @@ class WarmStart3 {
 /// are in the world frame): polytopes (src/convex3/), a lower-dimensional shape against a solid
 /// one (src/convex3/flat3.cpp: exact), rounded shapes — spheres, capsules, core ⊕ ball — through
 /// their cores' signed distance (src/primitives/rounded3.cpp: sd one rounding from the exact core
-/// value; σ_d and casts by Newton on it). Queries are const and thread-safe.
+/// value, overlap and touching exact; σ_d and casts certified brackets: lower_bound <= exit <=
+/// upper_bound = depth, a cast's distance the upper end of its bracket, its hit exact). Queries
+/// are const and thread-safe.
 class Pair3 {
  public:
   Pair3(Shape3 P, Shape3 Q, Prepare prepare = Prepare::Auto);
