@@ -29,6 +29,7 @@
 #include <pendepth/mesh3.hpp>
 #include <pendepth/nesting.hpp>
 #include <pendepth/pendepth.hpp>
+#include <pendepth/shape_spec.hpp>
 
 #include <CLI/CLI.hpp>
 
@@ -72,6 +73,7 @@ constexpr const char* kStdin = "<stdin>";  // the source name of `-` in messages
 // The dimension of a shape file by its extension: 2 (.wkt) or 3 (.obj, .off, .stl, .ply); 0 for `-`
 // and paths without an extension (known once the content is read).
 int shape_dimension(const std::string& path) {
+  if (io::parse_shape_spec(path)) return 3;  // a primitive spec (sphere:R, ...; 3D only for now)
   if (path == "-" || std::filesystem::path(path).extension().empty()) return 0;
   if (const auto f = io::shape_format_of(path)) return *f == io::ShapeFormat::Wkt ? 2 : 3;
   throw InvalidInput(path + ": unknown shape format '" + lower_extension(path) +
@@ -97,12 +99,17 @@ struct ShapeText {
   std::string source;  // the path as given, or <stdin>
   io::ShapeFormat format = io::ShapeFormat::Wkt;
   std::string text;
-  int dimension() const { return format == io::ShapeFormat::Wkt ? 2 : 3; }
+  std::optional<io::ShapeSpec> spec;  // a primitive spec instead of a file (text empty)
+  int dimension() const { return spec || format != io::ShapeFormat::Wkt ? 3 : 2; }
 };
 
 ShapeText load_shape(const std::string& arg) {
   ShapeText s;
   s.source = arg == "-" ? kStdin : arg;
+  if ((s.spec = io::parse_shape_spec(arg))) {
+    s.format = io::ShapeFormat::Obj;
+    return s;
+  }
   if (arg != "-" && shape_dimension(arg) != 0) {
     s.format = *io::shape_format_of(arg);
     s.text = io::read_text_file(arg);
@@ -135,6 +142,7 @@ Shape2 make_shape2(const ShapeText& s, std::string_view name) {
 // shape, answered on its convex decomposition; cast, --generalized, --html refuse it). `hull` (--hull):
 // the hull of the vertices, faces ignored and not validated.
 Shape3 make_shape3(const ShapeText& s, std::string_view name, bool hull) {
+  if (s.spec) return io::shape3_from_spec(*s.spec, name, hull);
   if (hull)
     return Shape3(io::convex_polytope_from_points(io::parse_mesh_points(s.text, s.format, s.source), s.source, name));
   const io::MeshFile file = io::parse_mesh(s.text, io::mesh_format(s.format, s.source), s.source);
@@ -154,10 +162,31 @@ Pair3 make_pair3(const ShapeText& p, const ShapeText& q, bool hull, pendepth::Pr
   }
 }
 
-// The polytopes a 3D result's features index: for a mesh pair's answer the pieces named by
-// piece_p / piece_q (Mesh3::decomposition().pieces; a convex shape is piece 0), else the shapes'.
-const pendepth::ConvexPolytope& feature_poly(const Shape3& s, int piece) {
+// The polytope a 3D result's features index. A mesh pair's answer: the piece named by piece_p /
+// piece_q (Mesh3::decomposition().pieces; a convex shape is piece 0). Shapes without a polytope
+// (points, segments, flat polygons and the primitives built on them: spheres, capsules;
+// Shape3::flat_shape) are formatted against a stand-in polytope with their features printed as
+// "none" (the formatters index a polytope's vertices), and the summary names them instead of
+// counting hull vertices. Else the shape's polytope.
+const pendepth::ConvexPolytope& shown(const Shape3& s, int piece = -1) {
+  static const pendepth::ConvexPolytope stand_in = pendepth::ConvexPolytope::hull(
+      std::vector<Vec3>{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)}, "primitive");
+  if (s.flat_shape()) return stand_in;
   return piece < 0 || s.is_convex() ? s.polytope() : s.mesh()->decomposition().pieces[static_cast<std::size_t>(piece)];
+}
+template <class R>
+R shown(R r, const Pair3& pair) {
+  if (pair.P().flat_shape()) r.feature_p = {};
+  if (pair.Q().flat_shape()) r.feature_q = {};
+  return r;
+}
+std::string shown_summary(std::string s, const Pair3& pair) {
+  for (const auto& [tag, shape] : {std::pair{"P ", &pair.P()}, std::pair{"Q ", &pair.Q()}}) {
+    if (!shape->flat_shape()) continue;
+    const std::string from = std::string(tag) + "4 hull vertices", to = std::string(tag) + shape->name() + " (a primitive)";
+    if (const auto k = s.find(from, s.find("shapes:")); k != std::string::npos) s.replace(k, from.size(), to);
+  }
+  return s;
 }
 
 // --hull is about 3D files' faces: a 2D pair rejects it.
@@ -355,6 +384,8 @@ int run_approximate3(const DepthArgs& a, const ShapeText& p, const ShapeText& q,
                      const Pose3& pose_q) {
   if (!a.direction.empty() || !a.html.empty() || a.generalized)
     throw InvalidInput("--approximate: answers σ only (no --direction, --html, --generalized)");
+  if (p.spec || q.spec)
+    throw InvalidInput("--approximate: reads point files; '" + (p.spec ? p.source : q.source) + "' is a primitive spec");
   double delta = 0;
   const char* end = a.approximate.data() + a.approximate.size();
   if (auto [ptr, ec] = std::from_chars(a.approximate.data(), end, delta); ec != std::errc() || ptr != end)
@@ -406,10 +437,10 @@ int run_depth3(const DepthArgs& a, const ShapeText& p, const ShapeText& q) {
                                             io::Html3Options{d, a.p, a.q}));
   std::string out;
   if (a.json) {
-    io::append_json(out, r, feature_poly(pair.P(), r.piece_p), feature_poly(pair.Q(), r.piece_q));
+    io::append_json(out, shown(r, pair), shown(pair.P(), r.piece_p), shown(pair.Q(), r.piece_q));
     out += '\n';
   } else {
-    out = io::summary(r, feature_poly(pair.P(), r.piece_p), feature_poly(pair.Q(), r.piece_q));
+    out = shown_summary(io::summary(shown(r, pair), shown(pair.P(), r.piece_p), shown(pair.Q(), r.piece_q)), pair);
   }
   write_stdout(out);
   return 0;
@@ -569,13 +600,13 @@ int run_distance(const DistanceArgs& a, bool cast) {
     if (cast && d.isZero(0)) throw InvalidInput("--direction: the direction is zero");
     const Pair3 pair = make_pair3(p, q, a.hull);
     const Pose3 pose_p(rp, Vec3::Zero()), pose_q(rq, t);
-    const auto &P = pair.P().polytope(), &Q = pair.Q().polytope();
+    const auto &P = shown(pair.P()), &Q = shown(pair.Q());
     if (cast) {
-      const pendepth::Cast3 r = pair.cast(pose_p, pose_q, d);
+      const pendepth::Cast3 r = shown(pair.cast(pose_p, pose_q, d), pair);
       a.json ? io::append_json(out, r, P, Q) : void(out = io::summary(r, P, Q));
     } else {
-      const pendepth::Distance3 r = pair.signed_distance(pose_p, pose_q);
-      const auto &FP = feature_poly(pair.P(), r.piece_p), &FQ = feature_poly(pair.Q(), r.piece_q);
+      const pendepth::Distance3 r = shown(pair.signed_distance(pose_p, pose_q), pair);
+      const auto &FP = shown(pair.P(), r.piece_p), &FQ = shown(pair.Q(), r.piece_q);
       a.json ? io::append_json(out, r, FP, FQ) : void(out = io::summary(r, FP, FQ));
     }
   } else {
@@ -641,7 +672,7 @@ int run_signed_batch3(const BatchArgs& a, const Pair3& pair, const Pose3& pose_p
         pair.signed_distance(pose_p, poses, out, a.threads);
       });
   return write_batch(a, results, "distance,tx,ty,tz\n", [&](std::string& out, const pendepth::Distance3& r) {
-    io::append_json(out, r, feature_poly(pair.P(), r.piece_p), feature_poly(pair.Q(), r.piece_q));
+    io::append_json(out, shown(r, pair), shown(pair.P(), r.piece_p), shown(pair.Q(), r.piece_q));
   });
 }
 
@@ -666,7 +697,7 @@ int run_batch3(const BatchArgs& a, const ShapeText& p, const ShapeText& q) {
         pair.along(pose_p, poses(ts), ds, out, a.threads);
       });
   return write_batch(a, results, "depth,tx,ty,tz\n", [&](std::string& out, const Depth3& r) {
-    io::append_json(out, r, feature_poly(pair.P(), r.piece_p), feature_poly(pair.Q(), r.piece_q));
+    io::append_json(out, shown(r, pair), shown(pair.P(), r.piece_p), shown(pair.Q(), r.piece_q));
   });
 }
 
@@ -756,7 +787,7 @@ int run_trajectory(const TrajectoryArgs& a) {
       return a.cold ? pair.minimum(Pose3(), pose) : pair.minimum(Pose3(), pose, warm);
     });
     return write_batch(out, results, "depth,tx,ty,tz\n", [&](std::string& o, const Depth3& r) {
-      io::append_json(o, r, feature_poly(pair.P(), r.piece_p), feature_poly(pair.Q(), r.piece_q));
+      io::append_json(o, shown(r, pair), shown(pair.P(), r.piece_p), shown(pair.Q(), r.piece_q));
     });
   }
   reject_hull2(a.hull);

@@ -54,6 +54,9 @@ class Mesh3;  // include/pendepth/mesh3.hpp
 namespace mesh3 {
 struct MeshPair;  // src/mesh3/mesh_pair.hpp
 }
+namespace convex3 {
+struct FlatShape3;  // src/convex3/flat3.hpp
+}
 
 /// How much a pair prepares before its queries.
 ///   Queries: only what every query needs (triangulations, hierarchies); σ of two convex
@@ -261,7 +264,39 @@ class Shape3 {
   /// A validated mesh: convex → the convex path, else a mesh shape.
   static Shape3 from_mesh(const Mesh3& mesh);
 
-  /// The convex polytope; for a non-convex mesh shape, the hull of its vertices.
+  /// Lower-dimensional shapes (docs/design.md "Lower-dimensional shapes"; src/front/shape3_flat.cpp):
+  /// a point, a segment, or the flat convex polygon spanned by coplanar points (`flat` takes any
+  /// point set of dimension 0, 1 or 2 and keeps its extreme points). Pair3 takes one of them
+  /// against a solid shape (overlap ⇔ the placement is interior to M = P ⊕ (−Q), M being
+  /// full-dimensional); two lower-dimensional shapes are InvalidInput. Throws InvalidInput
+  /// naming `name` for non-finite or empty input, or (flat) points spanning a solid.
+  static Shape3 point(const Vec3& p, std::string_view name = "point");
+  static Shape3 segment(const Vec3& a, const Vec3& b, std::string_view name = "segment");
+  static Shape3 flat(std::span<const Vec3> points, std::string_view name = "points");
+  /// 3 for a solid (a rounded shape included); 0, 1, 2 for a point, a segment, a flat polygon.
+  int dimension() const;
+  /// The vertices of a lower-dimensional shape (one point; the two ends; the polygon's extreme
+  /// points in cyclic order): result features of such a shape index these (vertex j, edge j from
+  /// vertex j to j + 1, face 0). Empty for a solid.
+  std::span<const Vec3> flat_vertices() const;
+  /// Primitives (docs/design.md "Primitives"; src/front/shape3_primitives.cpp), centred at the
+  /// origin: box(X, Y, Z) the polytope of half extents X, Y, Z; sphere(R) a point ⊕ ball;
+  /// capsule(R, H) the segment (0,0,−H)–(0,0,H) ⊕ ball; rounded(core, R) any convex shape (solid,
+  /// point, segment, flat polygon) ⊕ ball of radius R, R >= 0. Throws InvalidInput naming `name`
+  /// for a non-finite or non-positive size (R = 0 allowed for rounded: the core itself).
+  static Shape3 box(double hx, double hy, double hz, std::string_view name = "box");
+  static Shape3 sphere(double r, std::string_view name = "sphere");
+  static Shape3 capsule(double r, double h, std::string_view name = "capsule");
+  static Shape3 rounded(const Shape3& core, double r, std::string_view name = "rounded");
+  /// The rounding radius (0 for a shape without rounding) and the core (the shape without it).
+  double radius() const { return radius_; }
+  Shape3 core() const;
+  /// Internal (the engines): a lower-dimensional shape's normal form, null for a solid.
+  explicit Shape3(convex3::FlatShape3 flat);
+  const convex3::FlatShape3* flat_shape() const;
+
+  /// The convex polytope; for a non-convex mesh shape, the hull of its vertices. A
+  /// lower-dimensional shape has none: throws InvalidInput.
   const ConvexPolytope& polytope() const;
   std::size_t size() const;
   const std::string& name() const;
@@ -271,8 +306,12 @@ class Shape3 {
   const Mesh3* mesh() const;
 
  private:
+  Shape3() = default;
   std::shared_ptr<const ConvexPolytope> p_;
   std::shared_ptr<const Mesh3> mesh_;
+  std::shared_ptr<const convex3::FlatShape3> flat_;  // a lower-dimensional shape (p_ null)
+  double radius_ = 0;  // a rounded shape: this shape's core (p_ or flat_) ⊕ ball of radius_
+  std::string rounded_name_;
 };
 
 /// Per-caller state of Pair3's warm start for coherent motion (survey §3.3): the facet of M the
@@ -294,8 +333,13 @@ class WarmStart3 {
   bool valid_ = false;
 };
 
-/// A pair of 3D shapes, P and Q each with a pose (only the relative pose matters; results are in
-/// the world frame). Queries are const and thread-safe.
+/// A pair of 3D shapes, P and Q each with a pose (only the relative pose matters; results
+/// are in the world frame): polytopes (src/convex3/), a lower-dimensional shape against a solid
+/// one (src/convex3/flat3.cpp: exact), rounded shapes — spheres, capsules, core ⊕ ball — through
+/// their cores' signed distance (src/primitives/rounded3.cpp: sd one rounding from the exact core
+/// value, overlap and touching exact; σ_d and casts certified brackets: lower_bound <= exit <=
+/// upper_bound = depth, a cast's distance the upper end of its bracket, its hit exact). Queries
+/// are const and thread-safe.
 ///
 /// Meshes (either shape non-convex; docs/design.md "Meshes", src/mesh3/mesh_pair.hpp): answered
 /// on the pieces of Mesh3::decomposition() (a convex shape is one piece), built at construction.

@@ -61,6 +61,13 @@ Points<D> points(const py::object& obj, const char* what) {
   return r;
 }
 
+/// One (3,) point (Shape3.point, Shape3.segment).
+Vec3 vec3_of(const py::object& obj, const std::string& what) {
+  const Points<3> p = points<3>(obj, what.c_str());
+  if (!p.single) throw InvalidInput(what + ": expected one (3,) point");
+  return p.v[0];
+}
+
 std::vector<Vec2> ring(const py::object& obj, const std::string& what) {
   Array a = py::cast<Array>(obj);
   if (a.ndim() != 2 || a.shape(1) != 2)
@@ -872,12 +879,42 @@ validated once), allowed_orientations (degrees; [0.0] when absent)). Bad input r
       .def_static("from_file", [](const std::string& path, const std::string& name, bool hull) { return Shape3::from_file(path, name, hull); },
                   py::arg("path"), py::arg("name") = "shape", py::arg("hull") = false,
                   "from_file(path, name=\"shape\", hull=False) -> Shape3\n\nA .obj, .off, .stl or .ply file: without faces the hull of its vertices; with faces a closed mesh\n(validated; a convex one takes the convex path, a non-convex one cannot be paired yet); hull=True: the\nhull of the vertices, faces ignored. Raises InvalidInput \"PATH:LINE: problem\".")
+      // Lower-dimensional shapes and primitives (docs/python.md "Primitives").
+      .def_static("point", [](const py::object& p, const std::string& name) { return Shape3::point(vec3_of(p, name), name); },
+                  py::arg("p"), py::arg("name") = "point", "point(p, name=\"point\") -> Shape3: a point (dimension 0).")
+      .def_static("segment", [](const py::object& a, const py::object& b, const std::string& name) {
+                    return Shape3::segment(vec3_of(a, name), vec3_of(b, name), name);
+                  }, py::arg("a"), py::arg("b"), py::arg("name") = "segment", "segment(a, b, name=\"segment\") -> Shape3: a segment (dimension 1).")
+      .def_static("flat", [](const py::object& pts, const std::string& name) {
+                    Array a = py::cast<Array>(pts);
+                    if (a.ndim() != 2 || a.shape(1) != 3)
+                      throw InvalidInput(name + ": expected an (n, 3) array of points, got shape " + shape_text(a));
+                    std::vector<Vec3> v(static_cast<std::size_t>(a.shape(0)));
+                    for (std::size_t i = 0; i < v.size(); ++i) v[i] = Vec3(a.data()[3 * i], a.data()[3 * i + 1], a.data()[3 * i + 2]);
+                    return Shape3::flat(v, name);
+                  }, py::arg("points"), py::arg("name") = "points",
+                  "flat(points, name=\"points\") -> Shape3\n\nThe convex hull of a point set of dimension 0, 1 or 2 (a point, a segment, a flat polygon).\nPaired with a solid shape only.")
+      .def_static("box", &Shape3::box, py::arg("hx"), py::arg("hy"), py::arg("hz"), py::arg("name") = "box",
+                  "box(hx, hy, hz, name=\"box\") -> Shape3: the box of half extents hx, hy, hz centred at the origin.")
+      .def_static("sphere", &Shape3::sphere, py::arg("r"), py::arg("name") = "sphere",
+                  "sphere(r, name=\"sphere\") -> Shape3: the ball of radius r at the origin (a point ⊕ ball).")
+      .def_static("capsule", &Shape3::capsule, py::arg("r"), py::arg("h"), py::arg("name") = "capsule",
+                  "capsule(r, h, name=\"capsule\") -> Shape3: the segment (0,0,-h)-(0,0,h) ⊕ ball of radius r.")
+      .def_static("rounded", &Shape3::rounded, py::arg("core"), py::arg("r"), py::arg("name") = "rounded",
+                  "rounded(core, r, name=\"rounded\") -> Shape3: core ⊕ ball of radius r (r >= 0).")
+      .def_property_readonly("dimension", &Shape3::dimension, "3 for a solid (rounded shapes included); 0, 1, 2 for a point, segment, flat polygon.")
+      .def_property_readonly("radius", &Shape3::radius, "The rounding radius (0 without rounding).")
+      .def_property_readonly("core", &Shape3::core, "The shape without its rounding.")
       .def_property_readonly("is_convex", &Shape3::is_convex)
       .def_property_readonly("name", &Shape3::name)
       .def_property_readonly("vertices", [](const Shape3& s) {
+             if (s.flat_shape()) {
+               auto v = s.flat_vertices();
+               return to_array<3>(std::vector<Vec3>(v.begin(), v.end()));
+             }
              auto v = s.polytope().vertices();
              return to_array<3>(std::vector<Vec3>(v.begin(), v.end()));
-           }, "The hull's vertices, (n, 3).")
+           }, "The hull's vertices, (n, 3) (of the core for a rounded shape; a lower-dimensional core's vertices).")
       .def_property_readonly("triangles", [](const Shape3& s) {
              auto t = s.polytope().triangles();
              py::array_t<std::int64_t> a(std::vector<py::ssize_t>{static_cast<py::ssize_t>(t.size()), 3});
@@ -890,14 +927,21 @@ validated once), allowed_orientations (degrees; [0.0] when absent)). Bad input r
       .def(py::pickle([](const Shape3& s) {
                         if (!s.is_convex())  // its hull would come back: refuse rather than change the shape
                           throw InvalidInput("pickle: " + s.name() + " is a non-convex mesh; pickling meshes is not supported yet");
-                        auto v = s.polytope().vertices();
-                        return py::make_tuple(to_array<3>(std::vector<Vec3>(v.begin(), v.end())), s.name());
+                        const Shape3 c = s.core();
+                        std::vector<Vec3> v;
+                        if (c.flat_shape()) v.assign(c.flat_vertices().begin(), c.flat_vertices().end());
+                        else v.assign(c.polytope().vertices().begin(), c.polytope().vertices().end());
+                        return py::make_tuple(to_array<3>(v), c.name(), s.radius(), s.name(), c.dimension());
                       },
                       [](const py::tuple& st) {
                         Array a = py::cast<Array>(st[0]);
                         std::vector<Vec3> v(static_cast<std::size_t>(a.shape(0)));
                         for (std::size_t i = 0; i < v.size(); ++i) v[i] = Vec3(a.data()[3 * i], a.data()[3 * i + 1], a.data()[3 * i + 2]);
-                        return Shape3::hull(v, st[1].cast<std::string>());
+                        const std::string name = st[1].cast<std::string>();
+                        if (st.size() < 5) return Shape3::hull(v, name);
+                        const Shape3 core = st[4].cast<int>() < 3 ? Shape3::flat(v, name) : Shape3::hull(v, name);
+                        const double r = st[2].cast<double>();
+                        return r > 0 ? Shape3::rounded(core, r, st[3].cast<std::string>()) : core;
                       }));
 
   // ---- (1+δ)-approximate σ of huge 3D point sets (include/pendepth/approximate.hpp) ----

@@ -48,6 +48,7 @@
 // order of magnitude faster on hulls of up to hundreds of vertices (docs/benchmarks.md).
 #include <pendepth/depth3.hpp>
 
+#include "convex3/distance_compare.hpp"
 #include "convex3/minimum_expand.hpp"
 #include "convex3/polytope_data.hpp"
 #include "geometry/exact.hpp"
@@ -115,6 +116,12 @@ struct Ctx {
   /// When set: every point is mapped by the linear projection π(v) = (d·d)v − (v·d)d along d
   /// (0 ∈ π(M) ⇔ the line s·d meets M; used to certify that a cast's line misses M).
   const Vec3* proj = nullptr;
+  /// When set: Q is moved further by lam·od (world frame), kept exact in P's frame as
+  /// Σ_l RpT(k, l)·od_l·lam (distance_compare: the points of a ray, never rounded).
+  const Eigen::Matrix3d* RpT = nullptr;
+  Vec3 od{0, 0, 0};
+  double lam = 0;
+  Vec3 off_approx{0, 0, 0};  ///< the same offset rounded (proposals only)
 
   template <class L>
   V3<Num<L>> project(L lift, const V3<Num<L>>& v) const {
@@ -131,6 +138,10 @@ struct Ctx {
     for (int k = 0; k < 3; ++k)
       r[k] = lift(rel.R(k, 0)) * lift(q[0]) + lift(rel.R(k, 1)) * lift(q[1]) + lift(rel.R(k, 2)) * lift(q[2]) +
              (lift(rel.tq[k]) - lift(rel.tp[k]));
+    if (RpT)
+      for (int k = 0; k < 3; ++k)
+        r[k] = r[k] + lift(lam) * (lift((*RpT)(k, 0)) * lift(od[0]) + lift((*RpT)(k, 1)) * lift(od[1]) +
+                                   lift((*RpT)(k, 2)) * lift(od[2]));
     return project(lift, r);
   }
   template <class L>
@@ -167,7 +178,7 @@ struct Ctx {
   }
   Member member(PairId s) const { return {s, m(LiftFl{}, s)}; }
   Vec3 approx_p(int i) const { return project(P.v[i]); }
-  Vec3 approx_q(int j) const { return project(Vec3(rel.R * Q.v[j] + (rel.tq - rel.tp))); }
+  Vec3 approx_q(int j) const { return project(Vec3(rel.R * Q.v[j] + (rel.tq - rel.tp) + off_approx)); }
 };
 
 // The search direction of a subset S (size 1–3, S[0] = a): a polynomial positive multiple of
@@ -412,7 +423,7 @@ GjkResult gjk_loop(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacenc
   const RelativePose& rel = c.rel;
   const Johnson johnson(c);
   // First direction: from Q' towards P (centroids).
-  Vec3 v = c.project(Vec3(aP.centroid - (rel.R * aQ.centroid + (rel.tq - rel.tp))));
+  Vec3 v = c.project(Vec3(aP.centroid - (rel.R * aQ.centroid + (rel.tq - rel.tp) + c.off_approx)));
   if (!v.allFinite() || v == Vec3::Zero()) v = Vec3::UnitX();
   // Support of M minimising v·m: P minimises v·p, Q' maximises v·q' = (Rᵀ v)·q.
   auto support = [&](const Vec3& u0, int i0, int j0) {
@@ -931,6 +942,104 @@ std::optional<Cast3> shape_cast_certified(const ConvexPolytope& Pp, const Convex
     for (int k = 0; k < 3; ++k)
       if (auto r = complete(Y[k], Y[(k + 1) % 3])) return r;
   return std::nullopt;
+}
+
+// ---- Exact comparison of a distance with a radius (rounded shapes; distance_compare.hpp) -------
+
+CorePoints::CorePoints(const ConvexPolytope& S) : data_(&data_of(S)), adj_(&vertex_adjacency(*data_)) {}
+
+CorePoints::CorePoints(const FlatShape3& F) {
+  auto d = std::make_shared<PolytopeData>();
+  d->v = F.v;
+  auto a = std::make_shared<VertexAdjacency>();
+  const int k = static_cast<int>(F.v.size());
+  a->start.assign(1, 0);
+  for (int v = 0; v < k; ++v) {
+    if (k == 2) a->nbr.push_back(1 - v);
+    if (k >= 3) a->nbr.push_back((v + k - 1) % k), a->nbr.push_back((v + 1) % k);
+    a->start.push_back(static_cast<int>(a->nbr.size()));
+  }
+  Vec3 lo = F.v[0], hi = F.v[0], sum = Vec3::Zero();
+  for (const Vec3& p : F.v) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p), sum += p;
+  a->extent = hi - lo;
+  a->centroid = sum / k;
+  a->cube_k = 1;
+  a->cube.assign(6, 0);
+  own_data_ = d, own_adj_ = a;
+  data_ = d.get(), adj_ = a.get();
+}
+
+namespace {
+
+// sign(dist(0, conv of c's points)² − T) for T = thr(L) (a polynomial), on the exact GJK's final
+// simplex; −1 on contact (T > 0 by the callers). `slope` (if non-null, no contact): −sign(U·dir(L)).
+template <class Thr, class DirF>
+int compare_on(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacency& aQ, Thr&& thr, DirF&& dir,
+               int* slope) {
+  const GjkResult g = gjk_loop(c, aP, aQ);
+  if (g.contact) return -1;
+  const Reduced& X = g.X;
+  const Member& a = X.s[0];
+  int s;
+  if (X.size == 1) {
+    s = exact_sign([&](auto L) {
+      const auto v = c.pt(L, a);
+      return dot(v, v) - thr(L);
+    });
+  } else if (X.size == 2) {
+    s = exact_sign([&](auto L) {
+      const auto e = c.dm(L, X.s[1].id, a.id);
+      const auto x = cross(e, c.pt(L, a));
+      return dot(x, x) - thr(L) * dot(e, e);
+    });
+  } else {
+    s = exact_sign([&](auto L) {
+      const auto n = cross(c.dm(L, X.s[1].id, a.id), c.dm(L, X.s[2].id, a.id));
+      const auto h = dot(n, c.pt(L, a));
+      return h * h - thr(L) * dot(n, n);
+    });
+  }
+  if (slope) {
+    const Dir U{&c, X.size, {X.s[0], X.size > 1 ? X.s[1] : Member{}, X.size > 2 ? X.s[2] : Member{}}, X.tri_sign};
+    *slope = -exact_sign([&](auto L) { return dot(U(L), dir(L)); });
+  }
+  return s;
+}
+
+}  // namespace
+
+int distance_compare(const CorePoints& P, const Pose3& pp, const CorePoints& Q, const Pose3& pq, const Vec3& d,
+                     double lambda, double rp, double rq, int* slope) {
+  const RelativePose rel = relative_pose(pp, pq);
+  const Eigen::Matrix3d RpT = pp.matrix().transpose();
+  Ctx c{P.data(), Q.data(), rel};
+  c.RpT = &RpT, c.od = d, c.lam = lambda;
+  c.off_approx = RpT * (lambda * d);
+  // g(λ) = dist(λd, M) has g'(λ) = (λd − c)/|λd − c|·d, and w = c − λd ∝ U (P's frame): the sign
+  // is −U·(Rpᵀ d), Rpᵀ d kept exact as a polynomial.
+  return compare_on(
+      c, P.adjacency(), Q.adjacency(), [&](auto L) { return (L(rp) + L(rq)) * (L(rp) + L(rq)); },
+      [&](auto L) {
+        V3<Num<decltype(L)>> v;
+        for (int k = 0; k < 3; ++k) v[k] = L(RpT(k, 0)) * L(d[0]) + L(RpT(k, 1)) * L(d[1]) + L(RpT(k, 2)) * L(d[2]);
+        return v;
+      },
+      slope);
+}
+
+int line_distance_compare(const CorePoints& P, const Pose3& pp, const CorePoints& Q, const Pose3& pq, const Vec3& d,
+                          double rp, double rq) {
+  const RelativePose rel = relative_pose(pp, pq);
+  const Vec3 dp = pp.matrix().transpose() * d;
+  Ctx c{P.data(), Q.data(), rel};
+  c.proj = &dp;
+  // π(v) = |d|²·(v's component across d): compare with ((rp + rq)·|d|²)².
+  return compare_on(c, P.adjacency(), Q.adjacency(),
+                    [&](auto L) {
+                      const auto dd = L(dp[0]) * L(dp[0]) + L(dp[1]) * L(dp[1]) + L(dp[2]) * L(dp[2]);
+                      return (L(rp) + L(rq)) * (L(rp) + L(rq)) * dd * dd;
+                    },
+                    [](auto L) { return V3<Num<decltype(L)>>{L(0.0), L(0.0), L(0.0)}; }, nullptr);
 }
 
 }  // namespace convex3

@@ -12,8 +12,11 @@
 #include "front/checks.hpp"
 #include "front/mesh_shapes.hpp"
 #include "front/scale.hpp"
+#include "convex3/flat3.hpp"
 #include "convex3/minimum_expand.hpp"
 #include "mesh3/mesh_pair.hpp"
+#include "convex3/distance_compare.hpp"
+#include "primitives/rounded3.hpp"
 
 namespace pendepth {
 
@@ -23,9 +26,7 @@ Shape3 Shape3::hull(std::span<const Vec3> points, std::string_view name) {
   return Shape3(ConvexPolytope::hull(points, name));
 }
 
-const ConvexPolytope& Shape3::polytope() const { return *p_; }
-std::size_t Shape3::size() const { return p_->size(); }
-const std::string& Shape3::name() const { return p_->name(); }
+// (Lower-dimensional shapes: src/front/shape3_flat.cpp defines polytope, size and name.)
 
 namespace {
 
@@ -65,6 +66,14 @@ namespace {
 
 // The sizes of a polytope: its largest coordinate and its smallest edge.
 void add_extent(front::Extent& x, const Shape3& s) {
+  if (s.radius() > 0) x.add_point(s.radius()), x.add_edge(Vec3(0, 0, 0), Vec3(s.radius(), 0, 0));
+  if (const auto* f = s.flat_shape()) {
+    for (std::size_t i = 0; i < f->v.size(); ++i) {
+      x.add_point(f->v[i].cwiseAbs().maxCoeff());
+      if (f->v.size() > 1) x.add_edge(f->v[i], f->v[(i + 1) % f->v.size()]);
+    }
+    return;
+  }
   const ConvexPolytope& P = s.polytope();
   for (const Vec3& v : P.vertices()) x.add_point(v.cwiseAbs().maxCoeff());
   for (const auto& tri : P.triangles())
@@ -82,6 +91,18 @@ front::Scale pair_scale(const Shape3& P, const Shape3& Q) {
 // names the vertex and the range), with the same numbering, so features need no mapping.
 Shape3 engine_shape(const Shape3& s, const front::Scale& scale, const char* which) {
   if (scale.identity()) return s;
+  if (s.radius() > 0) {  // the scaled core, rounded by the scaled radius (exact)
+    double r = 0;
+    if (!scale.to_engine(s.radius(), r))
+      throw InvalidInput(std::string(which) + " (" + s.name() + ") radius: " + scale.describe(s.radius()));
+    return Shape3::rounded(engine_shape(s.core(), scale, which), r, s.name());
+  }
+  if (const auto* f = s.flat_shape()) {  // the same normal form, every vertex scaled exactly
+    convex3::FlatShape3 g = *f;
+    for (std::size_t i = 0; i < g.v.size(); ++i)
+      g.v[i] = scale.vec_to_engine(g.v[i], std::string(which) + " (" + s.name() + ") vertex " + std::to_string(i) + ":");
+    return Shape3(std::move(g));
+  }
   const auto v = s.polytope().vertices();
   for (std::size_t i = 0; i < v.size(); ++i)
     scale.vec_to_engine(v[i], std::string(which) + " (" + s.name() + ") vertex " + std::to_string(i) + ":");
@@ -97,8 +118,27 @@ Pose3 engine_pose(const front::Scale& scale, const Pose3& pose, const std::strin
 
 }  // namespace
 
+namespace {
+// The shape combinations Pair3 answers; any other is an InvalidInput naming both shapes.
+Shape3 supported_pair(Shape3 P, const Shape3& Q) {
+  if ((!P.is_convex() || !Q.is_convex()) && (P.dimension() < 3 || Q.dimension() < 3 || P.radius() + Q.radius() > 0))
+    throw InvalidInput("pair: a non-convex mesh against a lower-dimensional or rounded shape (P " + P.name() + ", Q " +
+                       Q.name() + ") is not implemented (use the mesh's hull: Shape3::from_file(path, name, true) / --hull)");
+  const int cp = P.core().dimension(), cq = Q.core().dimension();
+  if (P.radius() + Q.radius() > 0 && cp < 3 && cq < 3 && cp + cq > 2)
+    throw InvalidInput("pair: rounded shapes whose cores are both lower-dimensional with dimensions summing to 3 or "
+                       "more (P " + P.name() + " of core dimension " + std::to_string(cp) + ", Q " + Q.name() +
+                       " of core dimension " + std::to_string(cq) + ") are not implemented");
+  if (P.dimension() < 3 && Q.dimension() < 3)
+    throw InvalidInput("pair: both shapes are lower-dimensional (P " + P.name() + " of dimension " +
+                       std::to_string(P.dimension()) + ", Q " + Q.name() + " of dimension " +
+                       std::to_string(Q.dimension()) + "): M = P ⊕ (−Q) has no interior; one shape must be solid");
+  return P;
+}
+}  // namespace
+
 Pair3::Pair3(Shape3 P, Shape3 Q, Prepare)
-    : P_(std::move(P)),
+    : P_(supported_pair(std::move(P), Q)),
       Q_(std::move(Q)),
       scale_exp_(P_.is_convex() && Q_.is_convex() ? pair_scale(P_, Q_).e : 0),
       engine_P_(P_),
@@ -111,11 +151,104 @@ Pair3::Pair3(Shape3 P, Shape3 Q, Prepare)
   engine_Q_ = engine_shape(Q_, front::Scale{scale_exp_}, "Q");
 }
 
+// ---- lower-dimensional shapes (src/convex3/flat3.cpp) -----------------------------------------
+// The engine takes the solid shape as S (P's role). When P is the lower-dimensional one, the pair
+// is answered swapped — P moving by −v instead of Q by v, along −d for σ_d and casts — and the
+// answer mapped back: vectors negated, witnesses and features exchanged, a contact point found
+// with P moved by v is, with Q moved by −v instead, that point − v.
+namespace {
+
+bool is_flat(const Shape3& s) { return s.dimension() < 3; }
+bool is_rounded(const Shape3& P, const Shape3& Q) { return P.radius() + Q.radius() > 0; }
+
+Depth3 unswap(Depth3 r) {
+  const Vec3 v = r.translation;
+  r.translation = -r.translation, r.normal = -r.normal, r.facet_normal = -r.facet_normal;
+  r.witness_p = r.witness_q = r.witness_p - v;
+  std::swap(r.feature_p, r.feature_q);
+  return r;
+}
+
+Depth3 flat_depth(const Shape3& P, const Pose3& pp, const Shape3& Q, const Pose3& pq, const Vec3* d) {
+  if (is_flat(Q))
+    return d ? convex3::flat_directional(P.polytope(), pp, *Q.flat_shape(), pq, *d)
+             : convex3::flat_minimum(P.polytope(), pp, *Q.flat_shape(), pq);
+  return unswap(d ? convex3::flat_directional(Q.polytope(), pq, *P.flat_shape(), pp, -*d)
+                  : convex3::flat_minimum(Q.polytope(), pq, *P.flat_shape(), pp));
+}
+
+Distance3 flat_distance(const Shape3& P, const Pose3& pp, const Shape3& Q, const Pose3& pq) {
+  if (is_flat(Q)) return convex3::flat_signed_distance(P.polytope(), pp, *Q.flat_shape(), pq);
+  Distance3 r = convex3::flat_signed_distance(Q.polytope(), pq, *P.flat_shape(), pp);
+  // Apart / touching: the closest pair, seen from the other side. Overlapping: σ's move of P by v
+  // is Q's move by −v; witness_q stays on the unmoved Q (= the engine's witness_p).
+  r.normal = -r.normal, r.translation = -r.translation;
+  std::swap(r.witness_p, r.witness_q);
+  std::swap(r.feature_p, r.feature_q);
+  return r;
+}
+
+Cast3 flat_cast(const Shape3& P, const Pose3& pp, const Shape3& Q, const Pose3& pq, const Vec3& d) {
+  if (is_flat(Q)) return convex3::flat_cast(P.polytope(), pp, *Q.flat_shape(), pq, d);
+  Cast3 r = convex3::flat_cast(Q.polytope(), pq, *P.flat_shape(), pp, -d);
+  const Vec3 v = r.translation;
+  r.translation = -r.translation, r.normal = -r.normal;
+  r.witness_p = r.witness_q = r.witness_p - v;
+  std::swap(r.feature_p, r.feature_q);
+  return r;
+}
+
+// ---- rounded shapes (src/primitives/rounded3.cpp): the cores' signed distance ----------------
+// With Q's pose translated by `offset`; when the cores touch, a supporting normal of M_core at 0
+// from the cast's facet through the contact (or flat_flat_distance's).
+primitives::CoreDistance core_distance(const Shape3& P0, const Pose3& pp, const Shape3& Q0, const Pose3& pq) {
+  return [P = P0.core(), Q = Q0.core(), pp, pq](const Vec3& offset, Vec3* touch) {
+    Pose3 q = pq;
+    q.translation += offset;
+    if (is_flat(P) && is_flat(Q)) return convex3::flat_flat_distance(*P.flat_shape(), pp, *Q.flat_shape(), q, touch);
+    const bool flat = is_flat(P) || is_flat(Q);
+    const Distance3 r = flat ? flat_distance(P, pp, Q, q) : signed_distance(P.polytope(), pp, Q.polytope(), q);
+    if (touch && r.distance == 0 && !r.overlapping)
+      *touch = (flat ? flat_cast(P, pp, Q, q, Vec3(1, 0, 0)) : shape_cast(P.polytope(), pp, Q.polytope(), q, Vec3(1, 0, 0)))
+                   .normal;
+    return r;
+  };
+}
+
+// The exact comparisons of the cores with a radius (convex3/distance_compare.hpp).
+primitives::CoreCompare core_compare(const Shape3& P0, const Pose3& pp, const Shape3& Q0, const Pose3& pq) {
+  // The core shapes are kept alive with their points (a polytope's data is referenced).
+  auto P = std::make_shared<const Shape3>(P0.core()), Q = std::make_shared<const Shape3>(Q0.core());
+  auto cp = is_flat(*P) ? std::make_shared<const convex3::CorePoints>(*P->flat_shape())
+                        : std::make_shared<const convex3::CorePoints>(P->polytope());
+  auto cq = is_flat(*Q) ? std::make_shared<const convex3::CorePoints>(*Q->flat_shape())
+                        : std::make_shared<const convex3::CorePoints>(Q->polytope());
+  primitives::CoreCompare c;
+  c.at = [P, Q, cp, cq, pp, pq](const Vec3& d, double lam, double rp, double rq, int* slope) {
+    return convex3::distance_compare(*cp, pp, *cq, pq, d, lam, rp, rq, slope);
+  };
+  c.line = [P, Q, cp, cq, pp, pq](const Vec3& d, double rp, double rq) {
+    return convex3::line_distance_compare(*cp, pp, *cq, pq, d, rp, rq);
+  };
+  return c;
+}
+
+}  // namespace
+
 // One query in engine coordinates: poses converted in (checked), the answer scaled back.
 Depth3 Pair3::min_engine(const Pose3& pose_p, const Pose3& pose_q) const {
   const front::Scale scale{scale_exp_};
   if (mesh_)
     return scale.answer(mesh3::minimum(*mesh_, engine_pose(scale, pose_p, "pose of P"), engine_pose(scale, pose_q, "pose of Q")));
+  if (is_rounded(engine_P_, engine_Q_)) {
+    const Pose3 ep = engine_pose(scale, pose_p, "pose of P"), eq = engine_pose(scale, pose_q, "pose of Q");
+    return scale.answer(primitives::rounded_minimum(core_distance(engine_P_, ep, engine_Q_, eq),
+                                                    core_compare(engine_P_, ep, engine_Q_, eq), engine_P_.radius(),
+                                                    engine_Q_.radius()));
+  }
+  if (is_flat(engine_P_) || is_flat(engine_Q_))
+    return scale.answer(flat_depth(engine_P_, engine_pose(scale, pose_p, "pose of P"), engine_Q_,
+                                   engine_pose(scale, pose_q, "pose of Q"), nullptr));
   return scale.answer(minimum_depth(engine_P_.polytope(), engine_pose(scale, pose_p, "pose of P"),
                                     engine_Q_.polytope(), engine_pose(scale, pose_q, "pose of Q")));
 }
@@ -124,6 +257,15 @@ Depth3 Pair3::along_engine(const Pose3& pose_p, const Pose3& pose_q, const Vec3&
   const front::Scale scale{scale_exp_};
   if (mesh_)
     return scale.answer(mesh3::along(*mesh_, engine_pose(scale, pose_p, "pose of P"), engine_pose(scale, pose_q, "pose of Q"), d, false));
+  if (is_rounded(engine_P_, engine_Q_)) {
+    const Pose3 ep = engine_pose(scale, pose_p, "pose of P"), eq = engine_pose(scale, pose_q, "pose of Q");
+    return scale.answer(primitives::rounded_along(core_distance(engine_P_, ep, engine_Q_, eq),
+                                                  core_compare(engine_P_, ep, engine_Q_, eq), engine_P_.radius(),
+                                                  engine_Q_.radius(), d));
+  }
+  if (is_flat(engine_P_) || is_flat(engine_Q_))
+    return scale.answer(flat_depth(engine_P_, engine_pose(scale, pose_p, "pose of P"), engine_Q_,
+                                   engine_pose(scale, pose_q, "pose of Q"), &d));
   return scale.answer(directional_depth(engine_P_.polytope(), engine_pose(scale, pose_p, "pose of P"),
                                         engine_Q_.polytope(), engine_pose(scale, pose_q, "pose of Q"), d));
 }
@@ -231,6 +373,15 @@ Distance3 Pair3::distance_engine(const Pose3& pose_p, const Pose3& pose_q) const
   if (mesh_)
     return distance_answer(scale, mesh3::signed_distance(*mesh_, engine_pose(scale, pose_p, "pose of P"),
                                                          engine_pose(scale, pose_q, "pose of Q")));
+  if (is_rounded(engine_P_, engine_Q_)) {
+    const Pose3 ep = engine_pose(scale, pose_p, "pose of P"), eq = engine_pose(scale, pose_q, "pose of Q");
+    return distance_answer(scale, primitives::rounded_distance(core_distance(engine_P_, ep, engine_Q_, eq),
+                                                               core_compare(engine_P_, ep, engine_Q_, eq),
+                                                               engine_P_.radius(), engine_Q_.radius()));
+  }
+  if (is_flat(engine_P_) || is_flat(engine_Q_))
+    return distance_answer(scale, flat_distance(engine_P_, engine_pose(scale, pose_p, "pose of P"), engine_Q_,
+                                                engine_pose(scale, pose_q, "pose of Q")));
   return distance_answer(scale, pendepth::signed_distance(engine_P_.polytope(), engine_pose(scale, pose_p, "pose of P"),
                                                           engine_Q_.polytope(), engine_pose(scale, pose_q, "pose of Q")));
 }
@@ -259,6 +410,15 @@ Cast3 Pair3::cast(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const
   front::check_direction(d);
   if (mesh_) throw InvalidInput("cast: shape casts between meshes are not implemented yet (use convex shapes or --hull)");
   const front::Scale scale{scale_exp_};
+  if (is_rounded(engine_P_, engine_Q_)) {
+    const Pose3 ep = engine_pose(scale, pose_p, "pose of P"), eq = engine_pose(scale, pose_q, "pose of Q");
+    return cast_answer(scale, primitives::rounded_cast(core_distance(engine_P_, ep, engine_Q_, eq),
+                                                       core_compare(engine_P_, ep, engine_Q_, eq), engine_P_.radius(),
+                                                       engine_Q_.radius(), d));
+  }
+  if (is_flat(engine_P_) || is_flat(engine_Q_))
+    return cast_answer(scale, flat_cast(engine_P_, engine_pose(scale, pose_p, "pose of P"), engine_Q_,
+                                        engine_pose(scale, pose_q, "pose of Q"), d));
   return cast_answer(scale, shape_cast(engine_P_.polytope(), engine_pose(scale, pose_p, "pose of P"),
                                        engine_Q_.polytope(), engine_pose(scale, pose_q, "pose of Q"), d));
 }
@@ -270,6 +430,8 @@ Depth3 Pair3::minimum(const Pose3& pose_p, const Pose3& pose_q, WarmStart3& warm
   check_pose(pose_p, "pose of P");
   check_pose(pose_q, "pose of Q");
   if (mesh_) return min_engine(pose_p, pose_q);  // no warm start on meshes
+  if (is_flat(engine_P_) || is_flat(engine_Q_) || is_rounded(engine_P_, engine_Q_))
+    return min_engine(pose_p, pose_q);  // no warm start
   const front::Scale scale{scale_exp_};
   const Pose3 ep = engine_pose(scale, pose_p, "pose of P"), eq = engine_pose(scale, pose_q, "pose of Q");
   const void *p = &engine_P_.polytope(), *q = &engine_Q_.polytope();

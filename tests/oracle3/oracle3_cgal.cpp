@@ -4,7 +4,7 @@
 
 // The oracle runs on one thread. Without this, CGAL's lazy numbers guard each exact evaluation
 // with std::call_once (a futex system call per evaluated node).
-#define CGAL_HAS_NO_THREADS 1
+// CGAL configured as in the library (src/mesh3 uses CGAL too: its thread-local defaults must match).
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -214,6 +214,16 @@ ExactDifference::ExactDifference(std::span<const Vec3> p_points, std::span<const
   diff.reserve(hp.vertices() * hq.vertices());
   for (const auto& p : hp.impl().v)
     for (const auto& q : hq.impl().v) diff.push_back(sub(p, q));
+  m_ = std::make_unique<ExactHull>(std::make_unique<ExactHull::Impl>(diff));
+}
+
+ExactDifference::ExactDifference(std::span<const Vec3> p_points, std::span<const Vec3> q_points,
+                                 const Eigen::Matrix3d& R, const Vec3& tq, const Vec3& tp, bool raw_q) {
+  ExactHull hp(p_points);
+  const std::vector<Q3> qs = raw_q ? exact_points(q_points, R, tq, tp) : ExactHull(q_points, R, tq, tp).impl().v;
+  std::vector<Q3> diff;
+  for (const auto& p : hp.impl().v)
+    for (const auto& q : qs) diff.push_back(sub(p, q));
   m_ = std::make_unique<ExactHull>(std::make_unique<ExactHull::Impl>(diff));
 }
 

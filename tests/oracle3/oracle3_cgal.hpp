@@ -74,6 +74,10 @@ class ExactDifference {
  public:
   ExactDifference(std::span<const Vec3> p_points, std::span<const Vec3> q_points, const Eigen::Matrix3d& R,
                   const Vec3& tq, const Vec3& tp);
+  /// The same for a Q of any dimension (a point, a segment, a flat polygon: `raw_q` true uses
+  /// every q' without first taking Q's hull, which needs a solid Q). P must be solid.
+  ExactDifference(std::span<const Vec3> p_points, std::span<const Vec3> q_points, const Eigen::Matrix3d& R,
+                  const Vec3& tq, const Vec3& tp, bool raw_q);
   ~ExactDifference();
 
   const ExactHull& hull() const { return *m_; }

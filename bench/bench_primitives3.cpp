@@ -1,0 +1,63 @@
+// Lower-dimensional shapes and primitives in Pair3 (issue 16 items 4, 5), peers in one run: the
+// signed distance and σ of a solid hull against a point, a segment, a triangle, a sphere, a
+// capsule and another hull of the same size (the existing solid–solid engine), random poses
+// (half overlapping). Counters: µs per query.
+#include <pendepth/pendepth.hpp>
+
+#include <benchmark/benchmark.h>
+
+#include <random>
+#include <vector>
+
+using namespace pendepth;
+
+namespace {
+
+std::vector<Vec3> sphere_points(std::mt19937_64& rng, int n) {
+  std::normal_distribution<double> g;
+  std::vector<Vec3> p;
+  while (static_cast<int>(p.size()) < n) p.push_back(Vec3(g(rng), g(rng), g(rng)).normalized());
+  return p;
+}
+
+Shape3 other(int kind, std::mt19937_64& rng, int n) {
+  switch (kind) {
+    case 0: return Shape3::point(Vec3(0, 0, 0));
+    case 1: return Shape3::segment(Vec3(0, 0, -0.5), Vec3(0, 0, 0.5));
+    case 2: return Shape3::flat(std::vector<Vec3>{Vec3(-0.5, -0.3, 0), Vec3(0.5, -0.3, 0), Vec3(0, 0.6, 0)});
+    case 3: return Shape3::sphere(0.5);
+    case 4: return Shape3::capsule(0.3, 0.5);
+    default: return Shape3::hull(sphere_points(rng, n));
+  }
+}
+const char* kNames[] = {"point", "segment", "triangle", "sphere", "capsule", "hull"};
+
+void run(benchmark::State& state, bool distance) {
+  const int kind = static_cast<int>(state.range(0)), n = static_cast<int>(state.range(1));
+  std::mt19937_64 rng(42);
+  const Pair3 pair(Shape3::hull(sphere_points(rng, n)), other(kind, rng, n));
+  std::uniform_real_distribution<double> U(-1.6, 1.6);
+  std::normal_distribution<double> g;
+  std::vector<Pose3> poses;
+  for (int i = 0; i < 256; ++i)
+    poses.emplace_back(Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)), Vec3(U(rng), U(rng), U(rng)));
+  std::size_t i = 0;
+  double sink = 0;
+  for (auto _ : state) {
+    const Pose3& q = poses[i++ % poses.size()];
+    sink += distance ? pair.signed_distance(Pose3(), q).distance : pair.minimum(Pose3(), q).depth;
+  }
+  benchmark::DoNotOptimize(sink);
+  state.SetLabel(std::string(kNames[kind]) + " vs hull " + std::to_string(n));
+  state.counters["us_per_query"] = benchmark::Counter(static_cast<double>(state.iterations()) * 1e-6,
+                                                      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+void BM_SignedDistance(benchmark::State& s) { run(s, true); }
+void BM_Minimum(benchmark::State& s) { run(s, false); }
+
+}  // namespace
+
+BENCHMARK(BM_SignedDistance)->ArgsProduct({{0, 1, 2, 3, 4, 5}, {16, 64}});
+BENCHMARK(BM_Minimum)->ArgsProduct({{0, 1, 2, 3, 4, 5}, {16, 64}});
+BENCHMARK_MAIN();

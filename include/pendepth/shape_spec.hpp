@@ -1,0 +1,35 @@
+// pendepth — primitive shape specs: a shape argument of the CLI (and of any program) may name a
+// primitive instead of a file (issue 16 item 7; docs/cli.md "Primitive specs"; src/io/shape_spec.cpp).
+//
+//   sphere:R  capsule:R,H  box:X,Y,Z  rounded:R:FILE  point:X,Y,Z  segment:X1,Y1,Z1,X2,Y2,Z2
+//   (3D; capsule: the segment (0,0,−H)–(0,0,H) ⊕ ball R; box: half extents; rounded: FILE's shape
+//   ⊕ ball R). cylinder:R,H, cone:R,H, ellipsoid:A,B,C and the 2D point:X,Y / segment:X1,Y1,X2,Y2
+//   are recognised and rejected as not implemented yet.
+#pragma once
+
+#include <pendepth/pendepth.hpp>
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace pendepth::io {
+
+struct ShapeSpec {
+  std::string kind;             ///< sphere, capsule, box, rounded, point, segment, ...
+  std::vector<double> numbers;  ///< the numbers, in order
+  std::string file;             ///< rounded: the core's file
+  std::string text;             ///< the spec as given (for messages)
+};
+
+/// nullopt when `arg` is not a spec (no known `KIND:` prefix: a file path); else the parsed spec.
+/// Throws InvalidInput naming the spec for a malformed one (wrong count, not a number, not
+/// finite, an empty file) and for a known kind that is not implemented.
+std::optional<ShapeSpec> parse_shape_spec(std::string_view arg);
+
+/// The shape of a parsed spec (Shape3 primitives; `rounded` reads its file as Shape3::from_file,
+/// `hull` as there). Throws InvalidInput naming the spec for invalid sizes.
+Shape3 shape3_from_spec(const ShapeSpec& spec, std::string_view name = "shape", bool hull = false);
+
+}  // namespace pendepth::io

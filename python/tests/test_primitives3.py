@@ -1,0 +1,51 @@
+"""Shape3 lower-dimensional shapes and primitives (issue 16 items 4, 5): constructors, closed forms
+through Pair3, pickling, errors."""
+import math
+import pickle
+
+import numpy as np
+import pytest
+
+import pendepth
+
+
+def test_lower_dimensional_shapes():
+    cube = pendepth.Shape3.box(1.0, 1.0, 1.0)
+    p = pendepth.Shape3.point([0.0, 0.0, 0.0])
+    s = pendepth.Shape3.segment([0.0, 0.0, 0.0], [1.0, 0.0, 0.0])
+    f = pendepth.Shape3.flat(np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0.25, 0.25, 0]], float))
+    assert (p.dimension, s.dimension, f.dimension, cube.dimension) == (0, 1, 2, 3)
+    assert len(f) == 3 and f.vertices.shape == (3, 3)
+    field = pendepth.Pair3(cube, p)  # a point Q: the signed distance field of the cube
+    assert field.signed_distance([0.25, 0.0, 0.0]).distance == -0.75
+    assert field.signed_distance([4.0, 0.0, 0.0]).distance == 3.0
+    assert field.minimum([0.25, 0.5, 0.0]).depth == 0.5
+    assert pendepth.Pair3(cube, s).along([0.0, 0.0, 0.0], [1.0, 0.0, 0.0]).depth == 1.0
+    assert pendepth.Pair3(f, cube).minimum([0.0, 0.0, 0.5]).depth == 0.5
+    with pytest.raises(pendepth.InvalidInput, match="lower-dimensional"):
+        pendepth.Pair3(p, s)
+    with pytest.raises(pendepth.InvalidInput, match="not flat"):
+        pendepth.Shape3.flat(cube.vertices)
+
+
+def test_primitives_closed_forms():
+    a, b = pendepth.Shape3.sphere(0.5), pendepth.Shape3.sphere(0.25)
+    assert (a.dimension, a.radius, a.core.dimension) == (3, 0.5, 0)
+    pair = pendepth.Pair3(a, b)
+    assert pair.signed_distance([2.0, 0.0, 0.0]).distance == 1.25
+    assert pair.minimum([0.5, 0.0, 0.0]).depth == 0.25
+    assert pair.cast([3.0, 0.0, 0.0], [-1.0, 0.0, 0.0]).distance == 2.25
+    d = pair.signed_distance([1.0, 1.0, 1.0]).distance
+    assert d == pytest.approx(math.sqrt(3.0) - 0.75, rel=1e-15)
+    caps = pendepth.Pair3(pendepth.Shape3.capsule(0.5, 1.0), pendepth.Shape3.box(1.0, 1.0, 1.0))
+    assert caps.signed_distance([3.0, 0.0, 0.0]).distance == 1.5
+    r = pendepth.Shape3.rounded(pendepth.Shape3.box(1.0, 1.0, 1.0), 0.25)
+    assert pendepth.Pair3(r, b).signed_distance([3.0, 0.0, 0.0]).distance == 1.5
+    for s in (a, pendepth.Shape3.capsule(0.5, 1.0), r, pendepth.Shape3.point([1.0, 2.0, 3.0])):
+        t = pickle.loads(pickle.dumps(s))
+        assert (t.dimension, t.radius, t.name) == (s.dimension, s.radius, s.name)
+        assert np.array_equal(t.vertices, s.vertices)
+    with pytest.raises(pendepth.InvalidInput, match="radius"):
+        pendepth.Shape3.sphere(0.0)
+    with pytest.raises(pendepth.InvalidInput):
+        pendepth.Shape3.point([0.0, 1.0])

@@ -1,0 +1,94 @@
+// Primitive shape specs (include/pendepth/shape_spec.hpp): KIND:NUMBERS[:FILE], parsed strictly
+// (every number as the readers read numbers, src/io/number.hpp; no trailing text).
+#include <pendepth/shape_spec.hpp>
+
+#include "io/number.hpp"
+
+#include <array>
+
+namespace pendepth::io {
+
+namespace {
+
+struct Kind {
+  const char* name;
+  int count;           // numbers expected (3D)
+  int count2;          // numbers of the 2D form, or -1
+  bool implemented;
+  bool file;           // KIND:NUMBERS:FILE
+  const char* form;
+};
+constexpr std::array<Kind, 9> kKinds{{
+    {"sphere", 1, -1, true, false, "sphere:R"},
+    {"capsule", 2, -1, true, false, "capsule:R,H"},
+    {"box", 3, -1, true, false, "box:X,Y,Z"},
+    {"rounded", 1, -1, true, true, "rounded:R:FILE"},
+    {"point", 3, 2, true, false, "point:X,Y,Z"},
+    {"segment", 6, 4, true, false, "segment:X1,Y1,Z1,X2,Y2,Z2"},
+    {"cylinder", 2, -1, false, false, "cylinder:R,H"},
+    {"cone", 2, -1, false, false, "cone:R,H"},
+    {"ellipsoid", 3, -1, false, false, "ellipsoid:A,B,C"},
+}};
+
+}  // namespace
+
+std::optional<ShapeSpec> parse_shape_spec(std::string_view arg) {
+  const std::size_t colon = arg.find(':');
+  if (colon == std::string_view::npos) return std::nullopt;
+  const std::string_view name = arg.substr(0, colon);
+  const Kind* kind = nullptr;
+  for (const Kind& k : kKinds)
+    if (name == k.name) kind = &k;
+  if (!kind) return std::nullopt;  // a path that happens to hold a colon
+  ShapeSpec s;
+  s.kind = kind->name;
+  s.text = std::string(arg);
+  auto fail = [&](const std::string& why) -> InvalidInput {
+    return InvalidInput("shape spec '" + s.text + "': " + why + " (expected " + kind->form + ")");
+  };
+  std::string_view rest = arg.substr(colon + 1);
+  if (kind->file) {
+    const std::size_t c2 = rest.find(':');
+    if (c2 == std::string_view::npos || c2 + 1 == rest.size()) throw fail("no file");
+    s.file = std::string(rest.substr(c2 + 1));
+    rest = rest.substr(0, c2);
+  }
+  const char* p = rest.data();
+  const char* const end = rest.data() + rest.size();
+  while (true) {
+    double x = 0;
+    const char* after = p;
+    const detail::Decimal r = detail::read_decimal(p, end, x, after);
+    if (r == detail::Decimal::NotNumber) throw fail("'" + std::string(p, end) + "' is not a number");
+    if (r != detail::Decimal::Ok) throw fail("'" + std::string(p, after) + "' is not finite");
+    s.numbers.push_back(x);
+    p = after;
+    if (p == end) break;
+    if (*p != ',') throw fail("unexpected '" + std::string(p, end) + "'");
+    ++p;
+  }
+  const int n = static_cast<int>(s.numbers.size());
+  if (n != kind->count && n != kind->count2)
+    throw fail(std::to_string(n) + " number" + (n == 1 ? "" : "s") + " given");
+  if (!kind->implemented) throw fail(std::string(kind->name) + " primitives are not implemented yet");
+  if (n == kind->count2)
+    throw fail(std::string("2D ") + kind->name + "s are not implemented yet (give 3D coordinates)");
+  return s;
+}
+
+Shape3 shape3_from_spec(const ShapeSpec& s, std::string_view name, bool hull) {
+  const auto& v = s.numbers;
+  try {
+    if (s.kind == "sphere") return Shape3::sphere(v[0], name);
+    if (s.kind == "capsule") return Shape3::capsule(v[0], v[1], name);
+    if (s.kind == "box") return Shape3::box(v[0], v[1], v[2], name);
+    if (s.kind == "point") return Shape3::point(Vec3(v[0], v[1], v[2]), name);
+    if (s.kind == "segment") return Shape3::segment(Vec3(v[0], v[1], v[2]), Vec3(v[3], v[4], v[5]), name);
+    if (s.kind == "rounded") return Shape3::rounded(Shape3::from_file(s.file, name, hull), v[0], name);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput("shape spec '" + s.text + "': " + e.what());
+  }
+  throw InvalidInput("shape spec '" + s.text + "': unknown kind");
+}
+
+}  // namespace pendepth::io
