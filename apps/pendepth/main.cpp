@@ -138,15 +138,16 @@ Shape2 make_shape2(const ShapeText& s, std::string_view name) {
 }
 
 // A 3D shape as Shape3::from_file reads it (docs/design.md §3): a file without faces is a point
-// set (its hull); a file with faces a validated closed mesh (convex → the convex path, else a mesh
+// set (its hull, or Shape3::flat when its points are coplanar, as a file with faces whose points
+// are); a file with faces a validated closed mesh (convex → the convex path, else a mesh
 // shape, answered on its convex decomposition; cast, --generalized, --html refuse it). `hull` (--hull):
 // the hull of the vertices, faces ignored and not validated.
 Shape3 make_shape3(const ShapeText& s, std::string_view name, bool hull) {
   if (s.spec) return io::shape3_from_spec(*s.spec, name, hull);
-  if (hull)
-    return Shape3(io::convex_polytope_from_points(io::parse_mesh_points(s.text, s.format, s.source), s.source, name));
+  if (hull) return io::shape3_from_points(io::parse_mesh_points(s.text, s.format, s.source), s.source, name);
   const io::MeshFile file = io::parse_mesh(s.text, io::mesh_format(s.format, s.source), s.source);
-  if (file.faces() == 0) return Shape3(io::convex_polytope_from_points(file.points, file.source, name));
+  if (file.faces() == 0 || io::affine_dimension(file.points) < 3)  // a point set, or flat: Shape3::flat
+    return io::shape3_from_points(file.points, file.source, name);
   return Shape3::from_mesh(pendepth::Mesh3::validate(file, name));
 }
 
@@ -183,7 +184,12 @@ R shown(R r, const Pair3& pair) {
 std::string shown_summary(std::string s, const Pair3& pair) {
   for (const auto& [tag, shape] : {std::pair{"P ", &pair.P()}, std::pair{"Q ", &pair.Q()}}) {
     if (!shape->flat_shape()) continue;
-    const std::string from = std::string(tag) + "4 hull vertices", to = std::string(tag) + shape->name() + " (a primitive)";
+    const int dim = shape->dimension();
+    const std::string what = dim == 0   ? "a point"
+                             : dim == 1 ? "a segment"
+                             : dim == 2 ? "a flat polygon of " + std::to_string(shape->flat_vertices().size()) + " vertices"
+                                        : "a primitive";
+    const std::string from = std::string(tag) + "4 hull vertices", to = std::string(tag) + shape->name() + " (" + what + ")";
     if (const auto k = s.find(from, s.find("shapes:")); k != std::string::npos) s.replace(k, from.size(), to);
   }
   return s;

@@ -259,7 +259,8 @@ class Shape3 {
   /// convex → the convex path (the hull of its vertices: the same solid); not convex → a mesh
   /// shape (is_convex() false); input_index() of a mesh's polytope counts the vertices some face
   /// uses, in file order. `hull` = true: the hull of the vertices, faces ignored. Throws
-  /// InvalidInput "PATH:LINE: problem" / "PATH:LINE: face F: NAME: problem".
+  /// InvalidInput "PATH:LINE: problem" / "PATH:LINE: face F: NAME: problem". Points of affine
+  /// dimension < 3 (coplanar: faces or not, or with `hull`) give Shape3::flat (io::shape3_from_points).
   static Shape3 from_file(const std::filesystem::path& path, std::string_view name = "shape", bool hull = false);
   /// A validated mesh: convex → the convex path, else a mesh shape.
   static Shape3 from_mesh(const Mesh3& mesh);

@@ -10,6 +10,7 @@
 #include <pendepth/pendepth.hpp>
 
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -31,5 +32,14 @@ std::optional<ShapeSpec> parse_shape_spec(std::string_view arg);
 /// The shape of a parsed spec (Shape3 primitives; `rounded` reads its file as Shape3::from_file,
 /// `hull` as there). Throws InvalidInput naming the spec for invalid sizes.
 Shape3 shape3_from_spec(const ShapeSpec& spec, std::string_view name = "shape", bool hull = false);
+
+/// A point set read from `source` (a file without faces, a file whose points are coplanar, or
+/// --hull's vertices) as a shape: its hull when the points span 3D, else the lower-dimensional
+/// Shape3::flat (a point, a segment, a flat polygon; exact dimension test). Errors are prefixed
+/// with `source` and name `name`; an empty or non-finite set gives the hull's errors.
+Shape3 shape3_from_points(std::span<const Vec3> points, std::string_view source, std::string_view name);
+
+/// The exact affine dimension of the points (−1 when empty; 3 when some point is not finite).
+int affine_dimension(std::span<const Vec3> points);
 
 }  // namespace pendepth::io

@@ -49,3 +49,28 @@ def test_primitives_closed_forms():
         pendepth.Shape3.sphere(0.0)
     with pytest.raises(pendepth.InvalidInput):
         pendepth.Shape3.point([0.0, 1.0])
+
+
+def test_flat_files_and_exact_rounded_contact(tmp_path):
+    # A file of coplanar points (or a lone face) is a flat shape, as Shape3.flat of its points.
+    tri = tmp_path / "tri.obj"
+    tri.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\n")
+    face = tmp_path / "face.off"
+    face.write_text("OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n4 0 1 3 2\n")
+    cube = pendepth.Shape3.box(1.0, 1.0, 1.0)
+    t = pendepth.Shape3.from_file(str(tri), "Q")
+    assert t.dimension == 2 and len(t) == 3
+    assert pendepth.Shape3.from_file(str(face), "Q", True).dimension == 2
+    direct = pendepth.Shape3.flat(np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0]], float))
+    for off in ([0.0, 0.0, 0.5], [2.0, 0.5, 1.5]):
+        assert (pendepth.Pair3(cube, t).signed_distance(off).distance
+                == pendepth.Pair3(cube, direct).signed_distance(off).distance)
+    # Spheres at distance 5 with radii summing to 5 (touching) or one ulp more (overlapping).
+    for r2, overlap in ((3.0, False), (math.nextafter(3.0, 4.0), True), (math.nextafter(3.0, 2.0), False)):
+        pair = pendepth.Pair3(pendepth.Shape3.sphere(2.0), pendepth.Shape3.sphere(r2))
+        assert pair.overlapping([3.0, 4.0, 0.0]) == overlap
+        sd = pair.signed_distance([3.0, 4.0, 0.0]).distance
+        assert (sd < 0) == overlap and (sd == 0) == (r2 == 3.0)
+        if overlap:
+            a = pair.along([3.0, 4.0, 0.0], [3.0, 4.0, 0.0])
+            assert a.lower_bound <= r2 - 3.0 <= a.upper_bound == a.depth  # the exit r − 5, exact

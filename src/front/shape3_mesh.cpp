@@ -3,12 +3,15 @@
 #include <pendepth/io.hpp>
 #include <pendepth/mesh3.hpp>
 #include <pendepth/pendepth.hpp>
+#include <pendepth/shape_spec.hpp>
 
 namespace pendepth {
 
 Shape3 Shape3::from_file(const std::filesystem::path& path, std::string_view name, bool hull) {
   io::MeshFile file = io::read_mesh(path);
-  if (hull || file.faces() == 0) return Shape3(io::convex_polytope_from_points(file.points, file.source, name));
+  // A point set — or a file whose points are coplanar: a flat shape (io::shape3_from_points).
+  if (hull || file.faces() == 0 || io::affine_dimension(file.points) < 3)
+    return io::shape3_from_points(file.points, file.source, name);
   return from_mesh(Mesh3::validate(file, name));
 }
 

@@ -2,6 +2,9 @@
 // (every number as the readers read numbers, src/io/number.hpp; no trailing text).
 #include <pendepth/shape_spec.hpp>
 
+#include <pendepth/io.hpp>
+#include <pendepth/polytope.hpp>
+
 #include "io/number.hpp"
 
 #include <array>
@@ -89,6 +92,30 @@ Shape3 shape3_from_spec(const ShapeSpec& s, std::string_view name, bool hull) {
     throw InvalidInput("shape spec '" + s.text + "': " + e.what());
   }
   throw InvalidInput("shape spec '" + s.text + "': unknown kind");
+}
+
+int affine_dimension(std::span<const Vec3> p) {
+  if (p.empty()) return -1;
+  for (const Vec3& x : p)
+    if (!x.allFinite()) return 3;
+  std::size_t b = 0, c = 0;
+  for (b = 1; b < p.size() && p[b] == p[0]; ++b) {}
+  if (b == p.size()) return 0;
+  for (c = 1; c < p.size() && predicates::collinear3(p[0], p[b], p[c]); ++c) {}
+  if (c == p.size()) return 1;
+  for (std::size_t d = 1; d < p.size(); ++d)
+    if (predicates::orient3d(p[0], p[b], p[c], p[d]) != 0) return 3;
+  return 2;
+}
+
+Shape3 shape3_from_points(std::span<const Vec3> points, std::string_view source, std::string_view name) {
+  const int dim = affine_dimension(points);
+  if (dim < 0 || dim == 3) return Shape3(convex_polytope_from_points(points, source, name));
+  try {
+    return Shape3::flat(points, name);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput(std::string(source) + ": " + e.what());
+  }
 }
 
 }  // namespace pendepth::io

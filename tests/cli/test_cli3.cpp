@@ -314,13 +314,27 @@ TEST_F(Cli3, BadInputExitsWithOneLine) {
 
   const std::string bad = write("bad.obj", "v 0 0 0\nv 1 0 0\n# c\nv 0 1 zero\n");
   expect_error("depth " + quote(bad) + " " + quote(Q), bad + ":4: malformed vertex line: z is not a number: 'zero'");
+  // A lone face (coplanar points), the same points without the face, and three points: flat shapes
+  // (Shape3::flat), with or without --hull, answered against a solid; two flat shapes are refused.
   const std::string flat = write("flat.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n4 0 1 3 2\n");
-  // One face: not a closed mesh; as a point set (--hull), flat.
-  expect_error("depth " + quote(P) + " " + quote(flat), flat + ":7: face 0: Q: the mesh is not closed: edge 0-1 belongs to this face only");
-  expect_error("depth " + quote(P) + " " + quote(flat) + " --hull",
-               flat + ": Q: all points are coplanar (flat input; need 4 affinely independent points)");
+  const std::string flat_pts = write("flat_pts.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0.5 0.5 0\n");
   const std::string few = write("few.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
-  expect_error("depth " + quote(few) + " " + quote(Q), few + ": P: only 3 points (a polytope needs 4 affinely independent points)");
+  for (const std::string& cmd : {"depth", "distance", "depth --direction 0.3,-0.2,1", "cast --direction -1,-0.5,-0.25"}) {
+    const std::string args = " --offset 0.25,0.5,0.125";
+    const Result a = run(cmd + " " + quote(P) + " " + quote(flat) + args);
+    EXPECT_EQ(a.status, 0) << cmd << ": " << a.err;
+    if (cmd.starts_with("depth"))  // (the summary line of depth)
+      EXPECT_NE(a.out.find("Q Q (a flat polygon of 4 vertices)"), std::string::npos) << cmd << ": " << a.out;
+    EXPECT_EQ(run(cmd + " " + quote(P) + " " + quote(flat) + args + " --hull").out, a.out) << cmd;
+    EXPECT_EQ(run(cmd + " " + quote(P) + " " + quote(flat_pts) + args).out, a.out) << cmd;
+    const Result t = run(cmd + " " + quote(few) + " " + quote(Q) + args);
+    EXPECT_EQ(t.status, 0) << cmd << ": " << t.err;
+    if (cmd.starts_with("depth"))
+      EXPECT_NE(t.out.find("P P (a flat polygon of 3 vertices)"), std::string::npos) << cmd << ": " << t.out;
+  }
+  expect_error("depth " + quote(flat) + " " + quote(few),
+               "pair: both shapes are lower-dimensional (P P of dimension 2, Q Q of dimension 2): M = P ⊕ (−Q) has no "
+               "interior; one shape must be solid");
   const std::string stl = write("trunc.stl", std::string(80, 'x') + std::string("\x02\0\0\0", 4) + std::string(99, '\0'));
   expect_error("depth " + quote(P) + " " + quote(stl),
                stl + ": binary STL of 2 triangles must have 184 bytes, the file has 183 (byte offset 80)");

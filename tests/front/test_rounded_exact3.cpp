@@ -84,7 +84,8 @@ TEST(RoundedExact3, SpheresAtUlpsOfTouching) {
 }
 
 // A box [−1, 1]³ and a sphere of radius 0.5 at x = 1.5 ± k ulps: the core distance x − 1 is exact
-// (Sterbenz), so overlap ⇔ x < 1.5; also with the sphere as P (swapped roles).
+// (Sterbenz), so overlap ⇔ x < 1.5; also with the sphere as P (swapped roles), a capsule and a
+// rounded box.
 TEST(RoundedExact3, BoxSphereAtUlpsOfTouching) {
   const Pair3 pair(Shape3::box(1, 1, 1), Shape3::sphere(0.5));
   const Pair3 swapped(Shape3::sphere(0.5), Shape3::box(1, 1, 1));
@@ -99,6 +100,14 @@ TEST(RoundedExact3, BoxSphereAtUlpsOfTouching) {
       EXPECT_EQ(sd.distance < 0, k < 0) << what;
       EXPECT_EQ(swapped.signed_distance(Pose3(), Pose3(-c)).distance == 0, k == 0) << what;
     }
+    // A capsule (segment core, axis z) beside the face x = 1, and a rounded box (a box core
+    // ⊕ 0.25: polytope cores on both sides) at x: core gaps x − 1 and x − 1.25, both exact.
+    const Pair3 capsule(Shape3::box(1, 1, 1), Shape3::capsule(0.5, 0.25));
+    EXPECT_EQ(capsule.overlapping(Pose3(), Pose3(Vec3(x, 0.3, -0.2))), k < 0) << what;
+    EXPECT_EQ(capsule.signed_distance(Pose3(), Pose3(Vec3(x, 0.3, -0.2))).distance == 0, k == 0) << what;
+    const Pair3 rounded(Shape3::box(1, 1, 1), Shape3::rounded(Shape3::box(0.25, 0.25, 0.25), 0.25));
+    EXPECT_EQ(rounded.overlapping(Pose3(), Pose3(Vec3(x, 0.5, -0.5))), k < 0) << what;
+    EXPECT_EQ(rounded.signed_distance(Pose3(), Pose3(Vec3(x, 0.5, -0.5))).distance == 0, k == 0) << what;
   }
 }
 
