@@ -70,8 +70,8 @@ GeneralizedDepth2 generalized_depth(const Shape2& P, const Shape2& Q, const Vec2
 
 /// Options of generalized_depth (3D). Used only when either shape is non-convex (a mesh).
 struct GeneralizedOptions3 {
-  /// Rotations probed at most by the local search (each probe: one σ query of the mesh pair at
-  /// a rotated pose of Q about two centres, one σ_d, overlap tests). 0: the translational answer.
+  /// Rotations probed at most by the local search (each probe: one σ_d of the mesh pair at a
+  /// rotated pose of Q and a few exact overlap tests). 0: the translational answer.
   std::size_t max_probes = 64;
   /// Stop when upper_bound − lower_bound ≤ tolerance · upper_bound (the bounds stay as found).
   double tolerance = 1e-9;
@@ -105,10 +105,12 @@ struct GeneralizedDepth3 {
 ///       most Q's and at least σ(P_i, Q_j) by the theorem;
 ///     upper bound: local search over rotations from the translational answer (identity, the
 ///       mesh σ upper bound's translation): pattern search on the rotation vector (world axes,
-///       steps halving), each probe answered by the mesh σ upper bound of Q rotated about its
-///       reference point and about its hull box centre, plus σ_d along the best direction so far;
+///       steps halving); at each probed rotation (about the reference point and the hull box
+///       centre) the turn alone, the turn plus the best translation so far, and the exact σ_d of
+///       the turned pose along that translation's direction;
 ///       every accepted motion verified by the exact overlap test at `pose`. Rotation can only
-///       help: depth ≤ σ's upper bound. The bounds generally do not meet (converged false).
+///       help: depth ≤ σ's upper bound (up to the few ulps the certified cost is rounded up by).
+///       The bounds generally do not meet (converged false).
 /// Throws InvalidInput for a non-finite or zero pose (as Pair3), a negative or NaN tolerance.
 GeneralizedDepth3 generalized_depth(const Shape3& P, const Pose3& pose_p, const Shape3& Q, const Pose3& pose_q,
                                     const GeneralizedOptions3& options = {});

@@ -15,18 +15,23 @@
 //     rotation vector ω (world axes x, y, z, ± step; a success keeps the step, a round without
 //     one halves it), starting at the angle that turns Q's farthest hull vertex by the current
 //     best cost. A probe at ω: Q's pose rotated by R_w = exp(ω) about its reference point and
-//     about its hull box centre c (shift R_q c − R_w R_q c of the reference point); at each, the
-//     mesh σ upper bound's translation u and the exact σ_d along the best translation's
-//     direction so far give candidates v = shift + u. Each candidate is placed at
-//     T = pose_q.translation + v (nudged outwards along u by a few ulps while rounding leaves it
-//     inside), verified by the exact overlap test at that pose, and costed by disp_upper (the
-//     pose matrices as the engines use them, rounded up past every rounding). Rotations that
-//     cannot beat the best are skipped without a query: for any v, two hull vertices x_k, x_0
-//     (placed, about the reference point) part by |(R_w − I)(x_k − x_0)| ≤ 2·DISP.
-//   The bounds generally do not meet (converged: upper − lower ≤ tolerance·upper): σ is not continuous in the
-//   rotation for non-convex pairs (a peg turned in its slot), so no Lipschitz argument bounds PD_g
-//   below between probes; the piece bound is what is proven (docs/algorithms.md).
-// Cost: k probes × (2 mesh σ upper bounds + 2 σ_d + overlap tests) after the start's σ;
+//     about its hull box centre c (shift R_q c − R_w R_q c of the reference point). Candidates:
+//     the turn alone (when it separates), the turn plus the best motion's translation so far, and
+//     (about the reference point) the exact σ_d of the turned pose along that translation's
+//     direction (the start's σ direction turned with Q at first). Not the full mesh σ upper bound
+//     per probe: on polycubes it costs ~80 ms (the exact σ of every overlapping piece pair plus up
+//     to 10 σ_d) against ~15 ms for one σ_d and 0.08 ms for an overlap test (measured,
+//     docs/benchmarks.md). Each candidate is placed at T = pose_q.translation + v (nudged
+//     outwards along its σ part by a few ulps while rounding leaves it inside), verified by the
+//     exact overlap test at that pose, and costed by disp_upper (the pose matrices as the engines
+//     use them, rounded up past every rounding). Rotations that cannot beat the best are skipped
+//     without a query: for any v, two hull vertices x_k, x_0 (placed, about the reference point)
+//     part by |(R_w − I)(x_k − x_0)| ≤ 2·DISP.
+//   The bounds generally do not meet (converged: upper − lower ≤ tolerance·upper): σ is not
+//   continuous in the rotation for non-convex pairs (a peg turned in its slot), so no Lipschitz
+//   argument bounds PD_g below between probes; the piece bound is what is proven
+//   (docs/algorithms.md).
+// Cost: k probes × (one σ_d + up to 6 overlap tests) after the start's mesh σ;
 //   capped by options.max_probes (64).
 // Numeric domain: every query goes through Pair3 (its power-of-two scaling, src/front/scale.hpp);
 //   DISP is evaluated on operands scaled by a power of two (exact) so that it neither overflows
