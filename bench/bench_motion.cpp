@@ -10,7 +10,17 @@
 //
 //   bench_motion --benchmark_filter=...   (arguments: the instance index 0 albano, 1 shirts,
 //   2 trousers; the Prepare of σ's pair or of PD_g's probes: 0 Auto, 1 Queries)
+//
+// 3D meshes (issue 18 item 2): BM_Sigma3Mesh (Pair3 built + σ with certified bounds) against
+// BM_Generalized3Mesh (generalized_depth: the same σ, then the rotation search, default 64 probes)
+// on the same posed pairs; argument 0: a bar stuck diagonally between two blocks of a wall
+// (tests/motion/test_generalized3_mesh.cpp; φ = −0.05, −0.1, −0.2), 1: random polycube pairs
+// (6 and 4 voxels, pinned seed, random poses, overlapping only). Decompositions are built once,
+// outside the timing (Mesh3 keeps them). Counters as in 2D.
+#include <pendepth/mesh3.hpp>
 #include <pendepth/pendepth.hpp>
+
+#include "mesh3/mesh_gen.hpp"  // polycube meshes (tests/mesh3)
 
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp>
@@ -88,8 +98,82 @@ void BM_Generalized(benchmark::State& state) {
   state.counters["pdg/sigma"] = ratio / double(n);
 }
 
+// ---- 3D mesh pairs ----
+
+struct Case3 {
+  Shape3 P, Q;
+  Pose3 pose_q;
+};
+
+Shape3 mesh_of(const mesh3_test::Gen& g, const char* name) {
+  return Shape3::from_mesh(Mesh3::validate(mesh3_test::to_file(g, name), name));
+}
+
+std::vector<Case3> cases3(int kind) {
+  std::vector<Case3> out;
+  if (kind == 0) {
+    std::set<mesh3_test::Voxel> v;
+    for (int x = 0; x < 3; ++x)
+      for (int y = 0; y < 3; ++y) v.insert({x, y, 0});
+    v.insert({0, 2, 1}), v.insert({2, 0, 1});
+    auto map = [](mesh3_test::Gen g, const std::array<std::vector<double>, 3>& grid) {
+      for (Vec3& p : g.points)
+        for (int a = 0; a < 3; ++a) p[a] = grid[a][static_cast<std::size_t>(p[a])];
+      return g;
+    };
+    const Shape3 P = mesh_of(map(mesh3_test::polycube(v), {{{-7, -2, 2, 7}, {-3, -1, 1, 3}, {-2, -1, 3}}}), "P");
+    const Shape3 Q = mesh_of(map(mesh3_test::cube(), {{{-6, 6}, {-1, 1}, {0, 2}}}), "Q");
+    for (double phi : {-0.05, -0.1, -0.2})
+      out.push_back({P, Q, Pose3(Eigen::Quaterniond(Eigen::AngleAxisd(phi, Vec3::UnitZ())), Vec3::Zero())});
+    return out;
+  }
+  std::mt19937_64 rng(18);
+  std::normal_distribution<double> g;
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int attempt = 0; out.size() < 4 && attempt < 200; ++attempt) {
+    try {
+      const Shape3 P = mesh_of(mesh3_test::polycube(mesh3_test::random_polycube(rng, 6)), "P");
+      const Shape3 Q = mesh_of(mesh3_test::polycube(mesh3_test::random_polycube(rng, 4)), "Q");
+      const Pose3 pq(Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)), Vec3(0.5 + u(rng), 0.5 + u(rng), 0.5 * u(rng)));
+      if (!P.is_convex() && Pair3(P, Q).overlapping(Pose3(), pq)) out.push_back({P, Q, pq});
+    } catch (const InvalidInput&) {  // a non-manifold union
+    }
+  }
+  return out;
+}
+
+void BM_Sigma3Mesh(benchmark::State& state) {
+  const auto cs = cases3(static_cast<int>(state.range(0)));
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const Case3& c = cs[i++ % cs.size()];
+    benchmark::DoNotOptimize(Pair3(c.P, c.Q).minimum(Pose3(), c.pose_q));
+  }
+  state.counters["pairs"] = double(cs.size());
+}
+
+void BM_Generalized3Mesh(benchmark::State& state) {
+  const auto cs = cases3(static_cast<int>(state.range(0)));
+  std::size_t i = 0, n = 0, probes = 0, closed = 0;
+  double gap = 0, ratio = 0;
+  for (auto _ : state) {
+    const Case3& c = cs[i++ % cs.size()];
+    const GeneralizedDepth3 r = generalized_depth(c.P, Pose3(), c.Q, c.pose_q);
+    ++n, probes += r.probes, closed += r.converged;
+    gap += (r.upper_bound - r.lower_bound) / r.upper_bound;
+    ratio += r.depth / r.sigma;
+  }
+  state.counters["pairs"] = double(cs.size());
+  state.counters["probes"] = double(probes) / double(n);
+  state.counters["gap"] = gap / double(n);
+  state.counters["closed"] = double(closed) / double(n);
+  state.counters["pdg/sigma"] = ratio / double(n);
+}
+
 }  // namespace
 
+BENCHMARK(BM_Sigma3Mesh)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->MinTime(1.0);
+BENCHMARK(BM_Generalized3Mesh)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_Sigma)->ArgsProduct({{0, 1, 2}, {0, 1}})->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Generalized)->ArgsProduct({{0, 1, 2}, {0}})->Unit(benchmark::kMillisecond)->MinTime(2.0);
 BENCHMARK(BM_Generalized)->ArgsProduct({{0}, {1}})->Unit(benchmark::kMillisecond)->Iterations(16);

@@ -140,7 +140,7 @@ Shape2 make_shape2(const ShapeText& s, std::string_view name) {
 // A 3D shape as Shape3::from_file reads it (docs/design.md §3): a file without faces is a point
 // set (its hull, or Shape3::flat when its points are coplanar, as a file with faces whose points
 // are); a file with faces a validated closed mesh (convex → the convex path, else a mesh
-// shape, answered on its convex decomposition; cast, --generalized, --html refuse it). `hull` (--hull):
+// shape, answered on its convex decomposition; cast and --html refuse it). `hull` (--hull):
 // the hull of the vertices, faces ignored and not validated.
 Shape3 make_shape3(const ShapeText& s, std::string_view name, bool hull) {
   if (s.spec) return io::shape3_from_spec(*s.spec, name, hull);
@@ -367,10 +367,14 @@ int run_generalized3(const DepthArgs& a, const Shape3& P, const Pose3& pose_p, c
           std::string(r.overlapping ? "true" : "false") + ",\"depth\":" + num(r.depth) + ",\"lower_bound\":" +
           num(r.lower_bound) + ",\"upper_bound\":" + num(r.upper_bound) + ",\"rotation\":[" + num(w.w()) + "," +
           num(w.x()) + "," + num(w.y()) + "," + num(w.z()) + "],\"translation\":[" + num(r.translation.x()) + "," +
-          num(r.translation.y()) + "," + num(r.translation.z()) + "],\"sigma\":" + num(r.sigma) + "}\n";
+          num(r.translation.y()) + "," + num(r.translation.z()) + "],\"sigma\":" + num(r.sigma) +
+          ",\"converged\":" + (r.converged ? "true" : "false") + ",\"probes\":" + std::to_string(r.probes) + "}\n";
   } else {
-    out = "generalized depth PD_g (largest displacement of Q's points): " + num(r.depth) + " = σ (convex polytopes)" +
-          "\n  certified bounds: [" + num(r.lower_bound) + ", " + num(r.upper_bound) + "]\n  motion: rotation (w,x,y,z) (" +
+    const bool convex = P.is_convex() && Q.is_convex();
+    out = "generalized depth PD_g (largest displacement of Q's points): " + num(r.depth) +
+          (convex ? " = σ (convex polytopes)" : " (meshes: the best motion found; translational σ " + num(r.sigma) + ")") +
+          "\n  certified bounds: [" + num(r.lower_bound) + ", " + num(r.upper_bound) + "]" +
+          (r.converged ? "" : " (not converged: the gap is reported)") + "\n  motion: rotation (w,x,y,z) (" +
           num(w.w()) + ", " + num(w.x()) + ", " + num(w.y()) + ", " + num(w.z()) + "), then translate by (" +
           num(r.translation.x()) + ", " + num(r.translation.y()) + ", " + num(r.translation.z()) + ")\n";
   }
@@ -433,8 +437,8 @@ int run_depth3(const DepthArgs& a, const ShapeText& p, const ShapeText& q) {
   if (!a.approximate.empty()) return run_approximate3(a, p, q, Pose3(rp, Vec3::Zero()), Pose3(rq, t));
   const Pair3 pair = make_pair3(p, q, a.hull);
   const Pose3 pose_p(rp, Vec3::Zero()), pose_q(rq, t);
-  if ((a.generalized || !a.html.empty()) && (!pair.P().is_convex() || !pair.Q().is_convex()))
-    throw InvalidInput("--generalized, --html: convex shapes only (a non-convex mesh: add --hull)");
+  if (!a.html.empty() && (!pair.P().is_convex() || !pair.Q().is_convex()))
+    throw InvalidInput("--html: convex shapes only (a non-convex mesh: add --hull)");
   if (a.generalized) return run_generalized3(a, pair.P(), pose_p, pair.Q(), pose_q);
   const Depth3 r = !d ? pair.minimum(pose_p, pose_q)
                       : a.separate ? pair.separation(pose_p, pose_q, *d) : pair.along(pose_p, pose_q, *d);

@@ -81,20 +81,52 @@ struct GeneralizedDepth2 {
 GeneralizedDepth2 generalized_depth(const Shape2& P, const Shape2& Q, const Vec2& t,
                                     const GeneralizedOptions2& options = {});
 
-/// 3D generalized depth of convex polytopes: Q, at pose_q, rotates by `rotation` (world frame,
-/// about its placed reference point pose_q.translation) then moves by `translation`.
+/// Options of generalized_depth (3D). Used only when either shape is non-convex (a mesh).
+struct GeneralizedOptions3 {
+  /// Rotations probed at most by the local search (each probe: one σ_d of the mesh pair at a
+  /// rotated pose of Q and a few exact overlap tests). 0: the translational answer.
+  std::size_t max_probes = 64;
+  /// Stop when upper_bound − lower_bound ≤ tolerance · upper_bound (the bounds stay as found).
+  double tolerance = 1e-9;
+  /// Both shapes convex: answer σ by the theorem without probing (false: search anyway; tests).
+  bool convex_theorem = true;
+};
+
+/// 3D generalized depth: Q, at pose_q, rotates by `rotation` (world frame, about its placed
+/// reference point pose_q.translation) then moves by `translation`. `pose` is Q's pose after the
+/// motion, the one verified not to overlap P (exact overlap test): its rotation is
+/// rotation · pose_q.rotation (normalised; pose_q.rotation itself when `rotation` is the
+/// identity) and its translation pose_q.translation + translation (these doubles: recomposing
+/// gives the same bits). `depth` = upper_bound, a certified upper bound of that motion's DISP
+/// (rounded up past every rounding of its evaluation, with the rotation matrices of the poses).
 struct GeneralizedDepth3 {
   double depth = 0, lower_bound = 0, upper_bound = 0;
   Eigen::Quaterniond rotation = Eigen::Quaterniond::Identity();
   Vec3 translation{0, 0, 0};
-  double sigma = 0;
+  Pose3 pose;                ///< Q's pose after the motion (verified separating)
+  double sigma = 0;          ///< translational σ at pose_q (meshes: its upper bound, ≥ depth)
   bool overlapping = false;
+  bool converged = true;     ///< upper − lower ≤ tolerance·upper (convex: lower == upper); meshes: often false, the gap is reported
+  std::size_t probes = 0;    ///< rotations probed (0 for convex pairs)
 };
 
-/// PD_g of two convex polytopes = σ (the theorem): identity rotation, σ's translation, σ's
-/// certified bounds. Meshes (non-convex 3D shapes) are not supported by pendepth yet.
-GeneralizedDepth3 generalized_depth(const Shape3& P, const Pose3& pose_p, const Shape3& Q,
-                                    const Pose3& pose_q);
+/// PD_g of P at pose_p and Q at pose_q (3D).
+///   Both convex: σ (the theorem): identity rotation, σ's translation, σ's certified bounds.
+///   Either a mesh (non-convex; docs/algorithms.md "Depth under rigid motion"):
+///     lower bound: the mesh σ lower bound, max σ(P_i, Q_j) over overlapping pairs of convex
+///       pieces — a motion separating P and Q separates P_i from the moved Q_j, whose DISP is at
+///       most Q's and at least σ(P_i, Q_j) by the theorem;
+///     upper bound: local search over rotations from the translational answer (identity, the
+///       mesh σ upper bound's translation): pattern search on the rotation vector (world axes,
+///       steps halving); at each probed rotation (about the reference point and the hull box
+///       centre) the turn alone, the turn plus the best translation so far, and the exact σ_d of
+///       the turned pose along that translation's direction;
+///       every accepted motion verified by the exact overlap test at `pose`. Rotation can only
+///       help: depth ≤ σ's upper bound (up to the few ulps the certified cost is rounded up by).
+///       The bounds generally do not meet (converged false).
+/// Throws InvalidInput for a non-finite or zero pose (as Pair3), a negative or NaN tolerance.
+GeneralizedDepth3 generalized_depth(const Shape3& P, const Pose3& pose_p, const Shape3& Q, const Pose3& pose_q,
+                                    const GeneralizedOptions3& options = {});
 
 /// DISP of a 2D motion for Q's vertices `q` (own frame) rotated to `rq` (same order) and
 /// translated by v: max |rq − q + v|, rounded up past the evaluation's rounding (a certified

@@ -93,7 +93,8 @@ def approximate_minimum_depth(P: ArrayLike, Q: ArrayLike, delta: float, translat
 def generalized_depth(P: Shape2, Q: Shape2, offset: ArrayLike, *, min_degrees: float = ..., max_degrees: float = ...,
                       max_probes: int = ..., tolerance: float = ..., max_intervals: int = ...) -> SimpleNamespace: ...
 @overload
-def generalized_depth(P: Shape3, Q: Shape3, translation: ArrayLike, rotation: Optional[ArrayLike] = ...) -> SimpleNamespace: ...
+def generalized_depth(P: Shape3, Q: Shape3, translation: ArrayLike, rotation: Optional[ArrayLike] = ..., *,
+                      max_probes: int = ..., tolerance: float = ...) -> SimpleNamespace: ...
 
 class Shape3:
     """A validated convex polytope (the convex hull of a point set)."""

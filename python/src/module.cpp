@@ -1148,29 +1148,41 @@ motion found), lower_bound (certified), angle (degrees; Q's coordinates as Shape
 translation (2,), sigma (translational depth, >= depth), sigma_at_angle, overlapping,
 rotation_exact, converged (gap <= tolerance * depth), probes, intervals (angle intervals bounded by the
 branch and bound, at most max_intervals). Convex pairs: PD_g = sigma.)");
-  m.def("generalized_depth", [](const Shape3& P, const Shape3& Q, const py::object& translation, const py::object& rotation) {
+  m.def("generalized_depth", [](const Shape3& P, const Shape3& Q, const py::object& translation, const py::object& rotation,
+                                std::size_t max_probes, double tolerance) {
         Points<3> t = points<3>(translation, "translation");
         if (!t.single) throw InvalidInput("translation: expected one (3,) point");
         bool single = true;
         std::vector<Pose3> pose = poses(t, rotation, single);
+        GeneralizedOptions3 o;
+        o.max_probes = max_probes, o.tolerance = tolerance;
         GeneralizedDepth3 r;
         {
           py::gil_scoped_release nogil;
-          r = generalized_depth(P, Pose3(), Q, pose.at(0));
+          r = generalized_depth(P, Pose3(), Q, pose.at(0), o);
         }
-        const auto& w = r.rotation;
-        py::array_t<double> q(4);
-        q.mutable_data()[0] = w.w(), q.mutable_data()[1] = w.x(), q.mutable_data()[2] = w.y(), q.mutable_data()[3] = w.z();
+        auto quat = [](const Eigen::Quaterniond& w) {
+          py::array_t<double> q(4);
+          q.mutable_data()[0] = w.w(), q.mutable_data()[1] = w.x(), q.mutable_data()[2] = w.y(), q.mutable_data()[3] = w.z();
+          return q;
+        };
+        auto vec = [](const Vec3& v) { return to_array<3>(std::vector<Vec3>{v}).attr("reshape")(3); };
         return py::module_::import("types").attr("SimpleNamespace")(
             py::arg("kind") = "generalized", py::arg("depth") = r.depth, py::arg("lower_bound") = r.lower_bound,
-            py::arg("upper_bound") = r.upper_bound, py::arg("rotation") = q,
-            py::arg("translation") = to_array<3>(std::vector<Vec3>{r.translation}).attr("reshape")(3),
-            py::arg("sigma") = r.sigma, py::arg("overlapping") = r.overlapping);
-      }, py::arg("P"), py::arg("Q"), py::arg("translation"), py::arg("rotation") = py::none(),
-      R"(generalized_depth(P, Q, translation, rotation=None)
+            py::arg("upper_bound") = r.upper_bound, py::arg("rotation") = quat(r.rotation),
+            py::arg("translation") = vec(r.translation), py::arg("pose_rotation") = quat(r.pose.rotation),
+            py::arg("pose_translation") = vec(r.pose.translation), py::arg("sigma") = r.sigma,
+            py::arg("overlapping") = r.overlapping, py::arg("converged") = r.converged, py::arg("probes") = r.probes);
+      }, py::arg("P"), py::arg("Q"), py::arg("translation"), py::arg("rotation") = py::none(), py::kw_only(),
+      py::arg("max_probes") = 64, py::arg("tolerance") = 1e-9,
+      R"(generalized_depth(P, Q, translation, rotation=None, *, max_probes=64, tolerance=1e-9)
 
-3D generalized depth of two convex polytopes (P at the identity, Q posed by translation (3,) and
-rotation (4,) w, x, y, z): PD_g = sigma by the theorem for convex shapes. Returns a namespace:
-depth, lower_bound, upper_bound, rotation (identity quaternion), translation (3,), sigma,
-overlapping.)");
+3D generalized depth PD_g (P at the identity, Q posed by translation (3,) and rotation (4,) w, x, y,
+z). Convex polytopes: PD_g = sigma by the theorem. Meshes (either shape non-convex): certified
+lower bound (the convex pieces' bound) and the cheapest verified motion found by a local search over
+rotations from the translational answer (at most max_probes rotations). Returns a namespace: depth
+(= upper_bound), lower_bound, upper_bound, rotation (4,) and translation (3,) of the motion (Q turned
+about its placed reference point, then moved), pose_rotation (4,) and pose_translation (3,) (Q's pose
+after the motion, verified not to overlap P), sigma (translational, >= depth), overlapping,
+converged (upper - lower <= tolerance * upper), probes.)");
 }
