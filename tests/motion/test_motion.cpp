@@ -19,9 +19,12 @@
 #include <numbers>
 #include <random>
 
+#include "motion_shapes.hpp"
+
 namespace {
 
 using namespace pendepth;
+using namespace pendepth::motion_test;
 
 constexpr double kPi = std::numbers::pi;
 
@@ -31,27 +34,11 @@ std::vector<Vec2> hull_vertices(const Shape2& Q) {
 }
 
 // Q's vertices rotated exactly as Shape2::rotated does (same formula, same bits).
-Vec2 turn(const Vec2& p, double deg) {
-  double r = std::fmod(deg, 360.0);
-  if (r < 0) r += 360.0;
-  if (r == 360.0) r = 0;
-  if (std::fmod(r, 90.0) == 0) {
-    switch (static_cast<int>(r / 90)) {
-      case 0: return p;
-      case 1: return Vec2(-p.y(), p.x());
-      case 2: return Vec2(-p.x(), -p.y());
-      default: return Vec2(p.y(), -p.x());
-    }
-  }
-  const double a = r * (kPi / 180.0), c = std::cos(a), s = std::sin(a);
-  return Vec2(c * p.x() - s * p.y(), s * p.x() + c * p.y());
-}
-
 // The cost of the motion (deg, v) on Q's coordinates as Shape2::rotated gives them.
 double motion_cost(const Shape2& Q, double deg, const Vec2& v) {
   const auto h = hull_vertices(Q);
   std::vector<Vec2> rh(h.size());
-  for (std::size_t i = 0; i < h.size(); ++i) rh[i] = turn(h[i], deg);
+  for (std::size_t i = 0; i < h.size(); ++i) rh[i] = turned(h[i], deg);
   return displacement_upper(h.data(), rh.data(), h.size(), v);
 }
 
@@ -73,7 +60,7 @@ Brute brute_force(const Shape2& P, const Shape2& Q, const Vec2& t, const std::ve
     for (int i = 0; i < 5; ++i)
       for (int j = 0; j < 5; ++j) {
         const Vec2 c(lo.x() + (hi.x() - lo.x()) * i / 4, lo.y() + (hi.y() - lo.y()) * j / 4);
-        const Vec2 shift = c - turn(c, deg);
+        const Vec2 shift = c - turned(c, deg);
         const Depth2 d = pair.minimum(t + shift);
         for (double eps : {0.0, 0x1p-50, 0x1p-44, 0x1p-36}) {
           const Vec2 T = t + (shift + d.translation) * (1 + eps);
@@ -161,25 +148,6 @@ TEST(Generalized2, ConvexPairsEqualSigmaAndNoMotionBeatsIt) {
 
 // ---- non-convex pairs ---------------------------------------------------------------------------
 
-Shape2 l_shape(double s, const Vec2& o, std::string_view name) {
-  return Shape2({o + Vec2(0, 0), o + Vec2(3 * s, 0), o + Vec2(3 * s, s), o + Vec2(s, s), o + Vec2(s, 3 * s),
-                 o + Vec2(0, 3 * s)},
-                {}, name);
-}
-
-Shape2 comb(int teeth, double w, double h, const Vec2& o, std::string_view name) {
-  std::vector<Vec2> r;
-  for (int i = 0; i < teeth; ++i) {
-    r.push_back(o + Vec2((2 * i) * w, -h));
-    r.push_back(o + Vec2((2 * i + 1) * w, -h));
-    r.push_back(o + Vec2((2 * i + 1) * w, 0));
-    if (i + 1 < teeth) r.push_back(o + Vec2((2 * i + 2) * w, 0));
-  }
-  r.push_back(o + Vec2((2 * teeth - 1) * w, 1));
-  r.push_back(o + Vec2(0, 1));
-  return Shape2(r, {}, name);
-}
-
 // A block with a slot [−w/2, w/2] × [−L, L] open at the top, and a bar of width b < w and length
 // 2·len centred on Q's origin, turned by `deg` so that it pokes into both walls.
 Shape2 slot_block(double w, double L) {
@@ -189,7 +157,7 @@ Shape2 slot_block(double w, double L) {
 }
 Shape2 bar(double b, double len, double deg) {
   std::vector<Vec2> r{Vec2(-b / 2, -len), Vec2(b / 2, -len), Vec2(b / 2, len), Vec2(-b / 2, len)};
-  for (Vec2& p : r) p = turn(p, deg);
+  for (Vec2& p : r) p = turned(p, deg);
   return Shape2(r, {}, "bar");
 }
 
@@ -235,19 +203,6 @@ TEST(Generalized2, LShapesCombsHoles) {
     check_against_brute(P, Q, t, r, 180);
   }
   EXPECT_GE(n, 6);
-}
-
-std::vector<Shape2> nesting(const std::string& file) {
-  std::ifstream in(std::string(PENDEPTH_SHARED_DATA) + "/nesting/" + file);
-  nlohmann::json j;
-  in >> j;
-  std::vector<Shape2> out;
-  for (const auto& item : j["items"]) {
-    std::vector<Vec2> r;
-    for (const auto& p : item["shape"]["data"]) r.push_back({p[0].get<double>(), p[1].get<double>()});
-    out.emplace_back(r, std::vector<std::vector<Vec2>>{}, file);
-  }
-  return out;
 }
 
 TEST(Generalized2, NestingPieces) {
