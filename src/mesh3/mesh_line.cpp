@@ -20,8 +20,13 @@
 // features (P face, Q face, or the cross product of an edge of each), compared between pairs by
 // the rounded values when they differ by more than 2^-40 relative, else by the exact sign of the
 // cross-multiplied polynomials (src/geometry/exact.hpp tiers, rationals last).
+// Small pairs (n_i·m_j <= kFacetPathMax vertices) skip the descents: the interval is (max entry,
+// min exit) over the implicit facet normals of M_ij (convex3::minkowski_facets, each a supporting
+// plane with its exact support pair; the facets attain M, and once ℓ is known to meet int M_ij a
+// facet parallel to ℓ holds it strictly inside), compared exactly as below — the same exact
+// endpoints; only the winning pair's exit facet, contact and features come from one descent.
 // Boxes prune: only pairs whose box sum box(P_i) ⊕ −box(Q'_j) meets the ray s >= 0 are examined.
-// Cost: O(n·m) box tests, two O(log n_i · log m_j) descents per candidate pair, O(e·(n_i + m_j))
+// Cost: O(n·m) box tests, O(n_i·m_j) facet candidates or two O(log n_i · log m_j) descents per candidate pair, O(e·(n_i + m_j))
 // for a graze test (e edges), O(k²) exact comparisons for k intervals at worst.
 #include "mesh3/mesh_pair.hpp"
 
