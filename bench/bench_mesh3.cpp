@@ -11,6 +11,8 @@
 #include <pendepth/mesh3.hpp>
 #include <pendepth/pendepth.hpp>
 
+#include "mesh3/mesh_pair.hpp"
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
@@ -206,6 +208,20 @@ void BM_MeshOverlap(benchmark::State& st) {
 void BM_MeshAlong(benchmark::State& st) {
   mesh_query(st, [](const Prepared& p, std::size_t i) { benchmark::DoNotOptimize(p.pair.along(pendepth::Pose3(), p.poses[i], p.dirs[i])); });
 }
+// The same σ_d and σ-bounds queries with every pair's interval forced onto the DK descents
+// (mesh3::LinePath::Descent; Auto uses the implicit facets of small pairs): before/after.
+struct ForceDescent {
+  ForceDescent() { pendepth::mesh3::line_path = pendepth::mesh3::LinePath::Descent; }
+  ~ForceDescent() { pendepth::mesh3::line_path = pendepth::mesh3::LinePath::Auto; }
+};
+void BM_MeshAlongDescent(benchmark::State& st) {
+  ForceDescent f;
+  mesh_query(st, [](const Prepared& p, std::size_t i) { benchmark::DoNotOptimize(p.pair.along(pendepth::Pose3(), p.poses[i], p.dirs[i])); });
+}
+void BM_MeshMinimumBoundsDescent(benchmark::State& st) {
+  ForceDescent f;
+  mesh_query(st, [](const Prepared& p, std::size_t i) { benchmark::DoNotOptimize(p.pair.minimum(pendepth::Pose3(), p.poses[i])); });
+}
 void BM_MeshDistance(benchmark::State& st) {
   mesh_query(st, [](const Prepared& p, std::size_t i) { benchmark::DoNotOptimize(p.pair.signed_distance(pendepth::Pose3(), p.poses[i])); });
 }
@@ -270,6 +286,8 @@ BENCHMARK(BM_MeshOverlap)->Apply(mesh_args);
 BENCHMARK(BM_MeshAlong)->Apply(mesh_args);
 BENCHMARK(BM_MeshDistance)->Apply(mesh_args);
 BENCHMARK(BM_MeshMinimumBounds)->Apply(mesh_args);
+BENCHMARK(BM_MeshAlongDescent)->Apply(mesh_args);
+BENCHMARK(BM_MeshMinimumBoundsDescent)->Apply(mesh_args);
 BENCHMARK(BM_MeshHullError)->Apply(mesh_args);
 
 BENCHMARK(BM_Validate_pendepth)->RangeMultiplier(4)->Range(8, 512)->Unit(benchmark::kMillisecond);

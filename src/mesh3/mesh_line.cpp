@@ -20,12 +20,19 @@
 // features (P face, Q face, or the cross product of an edge of each), compared between pairs by
 // the rounded values when they differ by more than 2^-40 relative, else by the exact sign of the
 // cross-multiplied polynomials (src/geometry/exact.hpp tiers, rationals last).
+// Small pairs (n_i·m_j <= kFacetPathMax vertices) skip the descents: the interval is (max entry,
+// min exit) over the implicit facet normals of M_ij (convex3::minkowski_facets, each a supporting
+// plane with its exact support pair; the facets attain M, and once ℓ is known to meet int M_ij a
+// facet parallel to ℓ holds it strictly inside), compared exactly as below — the same exact
+// endpoints; only the winning pair's exit facet, contact and features come from one descent.
 // Boxes prune: only pairs whose box sum box(P_i) ⊕ −box(Q'_j) meets the ray s >= 0 are examined.
-// Cost: O(n·m) box tests, two O(log n_i · log m_j) descents per candidate pair, O(e·(n_i + m_j))
+// Cost: O(n·m) box tests, O(n_i·m_j) facet candidates or two O(log n_i · log m_j) descents per candidate pair, O(e·(n_i + m_j))
 // for a graze test (e edges), O(k²) exact comparisons for k intervals at worst.
 #include "mesh3/mesh_pair.hpp"
 
 #include "convex3/minimum_expand.hpp"
+#include "convex3/minkowski_facets.hpp"
+#include "convex3/polytope_data.hpp"
 #include "geometry/exact.hpp"
 
 #include <algorithm>
@@ -87,7 +94,8 @@ struct FacetDef {
   template <class L>
   auto normal(const Frame& f, L lift) const {
     if (kind == 0) return cross(sub(lv(lift, a[1]), lv(lift, a[0])), sub(lv(lift, a[2]), lv(lift, a[0])));
-    if (kind == 1) return rot(lift, f.R, cross(sub(lv(lift, b[1]), lv(lift, b[0])), sub(lv(lift, b[2]), lv(lift, b[0]))));
+    // The plane through the three placed points (R is rounded, so R(e1 × e2) may tilt it).
+    if (kind == 1) return cross(rot(lift, f.R, sub(lv(lift, b[1]), lv(lift, b[0]))), rot(lift, f.R, sub(lv(lift, b[2]), lv(lift, b[0]))));
     return cross(sub(lv(lift, a[1]), lv(lift, a[0])), rot(lift, f.R, sub(lv(lift, b[1]), lv(lift, b[0]))));
   }
   template <class L>
@@ -131,6 +139,7 @@ struct Interval {
   End a, b;
   std::size_t i = 0, j = 0;
   convex3::LineExit out;
+  bool has_out = false;   // `out` computed (the facet path leaves it to the winner)
   bool overlap0 = false;  // 0 ∈ int M_ij (exact: both exits have h > 0)
   int genuine = -1;       // ℓ meets int M_ij: -1 unknown, 0 no, 1 yes
 };
@@ -156,6 +165,54 @@ int compare(const End& x, const End& y, const Frame& f) {
   // λx − λy = (nx·dy − ny·dx)/(dx·dy)
   const int s = exact::exact_sign([&](auto L) { return x.f.num(f, L) * y.f.den(f, L) - y.f.num(f, L) * x.f.den(f, L); });
   return s * x.f.den_sign * y.f.den_sign;
+}
+
+// The interval of ℓ in int M_ij from the implicit facets of M_ij (small pieces), for a line
+// known to meet int M_ij (meets_interior): every candidate facet normal u is a supporting plane,
+// the facets attain M, and a facet with u·d = 0 holds ℓ strictly inside its open half-space; so
+// the interval is (max entry, min exit) over u·d < 0 and u·d > 0, compared exactly (compare).
+// The same exact endpoints as the descents' (any facet attaining the extreme gives the same λ).
+// False when the exit is at s <= 0.
+bool facet_interval(const ConvexPolytope& Pi, const ConvexPolytope& Qj, const convex3::RelativePose& rel,
+                    const Frame& f, Interval& x) {
+  const convex3::PolytopeData& P = convex3::data_of(Pi);
+  const convex3::PolytopeData& Q = convex3::data_of(Qj);
+  const convex3::DKLevel &LP = P.levels[0], &LQ = Q.levels[0];
+  const double dn = f.d.norm();
+  bool have_a = false, have_b = false;
+  for (const convex3::FacetCandidate& k : convex3::minkowski_facets(Pi, Qj, rel, f.d)) {
+    if (k.dir_sign == 0) continue;
+    End e;
+    switch (k.source) {
+      case convex3::FacetSource::FaceP:
+        e.f.kind = 0;
+        for (int t = 0; t < 3; ++t) e.f.a[t] = P.v[P.tris[k.p_feature][t]];
+        e.f.b[0] = Q.v[k.q_vertex];
+        break;
+      case convex3::FacetSource::FaceQ:
+        e.f.kind = 1;
+        for (int t = 0; t < 3; ++t) e.f.b[t] = Q.v[Q.tris[k.q_feature][t]];
+        e.f.a[0] = P.v[k.p_vertex];
+        break;
+      case convex3::FacetSource::EdgeEdge:
+        e.f.kind = 2;
+        e.f.a[0] = P.v[LP.origin(k.p_feature)], e.f.a[1] = P.v[LP.target(k.p_feature)];
+        e.f.b[0] = Q.v[LQ.origin(k.q_feature)], e.f.b[1] = Q.v[LQ.target(k.q_feature)];
+        break;
+    }
+    e.f.den_sign = exact::exact_sign([&](auto L) { return e.f.den(f, L); });
+    if (e.f.den_sign == 0) throw std::logic_error("mesh σ_d: a facet's exact u·d disagrees with its definition");
+    e.sign = k.sign * k.dir_sign;  // sign of λ = h_M(u)/(u·d)
+    if (k.dir_sign > 0) {
+      e.v = e.sign == 0 ? 0.0 : k.exit;
+      if (!have_b || compare(e, x.b, f) < 0) x.b = e, have_b = true;
+    } else {
+      e.v = e.sign == 0 ? 0.0 : exact::accurate_ratio([&](auto L) { return e.f.num(f, L); }, [&](auto L) { return e.f.den(f, L); }) * dn;
+      if (!have_a || compare(e, x.a, f) > 0) x.a = e, have_a = true;
+    }
+  }
+  if (!have_a || !have_b) throw std::logic_error("mesh σ_d: a bounded sum without entry or exit facets");
+  return x.b.sign > 0;
 }
 
 // Exactly: does the line {s·d} meet int(P_i ⊕ −Q'_j), i.e. does no plane parallel to d separate
@@ -258,6 +315,10 @@ Depth3 along(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, const 
     }
   std::vector<Interval> iv;
   iv.reserve(cand.size());
+  auto use_facets = [](const ConvexPolytope& Pi, const ConvexPolytope& Qj) {
+    if (line_path != LinePath::Auto) return line_path == LinePath::Facets;
+    return Pi.size() * Qj.size() <= kFacetPathMax;
+  };
   std::size_t examined = 0;
   auto eval = [&](Cand& c) -> Interval* {
     if (c.state < 0) {
@@ -265,18 +326,23 @@ Depth3 along(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, const 
       ++examined;
       // The exact test first: it is cheap against the descents and rejects most box candidates.
       if (!meets_interior(m.P[c.i], m.Q[c.j], f)) return nullptr;
-      const convex3::LineExit in = convex3::line_exit_dk(m.P[c.i], m.Q[c.j], rel, -dl);
-      if (!in.hit) return nullptr;
-      const convex3::LineExit out = convex3::line_exit_dk(m.P[c.i], m.Q[c.j], rel, dl, -1);
-      if (!out.hit || out.h_sign <= 0) return nullptr;  // misses int M_ij, or exits at s <= 0
       Interval x;
-      x.i = c.i, x.j = c.j, x.out = out;
-      x.a = {-in.exit, -in.h_sign, facet_of(m.P[c.i], m.Q[c.j], in, f)};
-      x.b = {out.exit, out.h_sign, facet_of(m.P[c.i], m.Q[c.j], out, f)};
-      // A facet parallel to ℓ crossed by the perturbed line: ℓ lies in that supporting plane
-      // (its h is 0, else the perturbed chord would be unbounded), so it misses int M_ij.
-      if (x.a.f.den_sign == 0 || x.b.f.den_sign == 0) return nullptr;
-      x.overlap0 = in.h_sign > 0;  // and out.h_sign > 0: 0 ∈ int M_ij
+      x.i = c.i, x.j = c.j;
+      if (use_facets(m.P[c.i], m.Q[c.j])) {
+        if (!facet_interval(m.P[c.i], m.Q[c.j], rel, f, x)) return nullptr;  // exits at s <= 0
+      } else {
+        const convex3::LineExit in = convex3::line_exit_dk(m.P[c.i], m.Q[c.j], rel, -dl);
+        if (!in.hit) return nullptr;
+        const convex3::LineExit out = convex3::line_exit_dk(m.P[c.i], m.Q[c.j], rel, dl, -1);
+        if (!out.hit || out.h_sign <= 0) return nullptr;  // misses int M_ij, or exits at s <= 0
+        x.out = out, x.has_out = true;
+        x.a = {-in.exit, -in.h_sign, facet_of(m.P[c.i], m.Q[c.j], in, f)};
+        x.b = {out.exit, out.h_sign, facet_of(m.P[c.i], m.Q[c.j], out, f)};
+        // A facet parallel to ℓ crossed by the perturbed line: ℓ lies in that supporting plane
+        // (its h is 0, else the perturbed chord would be unbounded), so it misses int M_ij.
+        if (x.a.f.den_sign == 0 || x.b.f.den_sign == 0) return nullptr;
+      }
+      x.overlap0 = x.a.sign < 0;  // and x.b.sign > 0: 0 ∈ int M_ij
       x.genuine = 1;               // ℓ meets int M_ij (tested above)
       c.state = 1, c.index = iv.size();
       iv.push_back(std::move(x));
@@ -327,7 +393,12 @@ Depth3 along(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, const 
   r.candidates = examined;
   r.overlapping = overlapping;
   if (last == SIZE_MAX) return r;
-  const Interval* x = &iv[last];
+  Interval* x = &iv[last];
+  if (!x->has_out) {  // the facet path: the winner's exit facet, contact and features by the descent
+    x->out = convex3::line_exit_dk(m.P[x->i], m.Q[x->j], rel, dl, -1);
+    if (!x->out.hit || x->out.h_sign <= 0) throw std::logic_error("mesh σ_d: the descent misses the facet path's interval");
+    x->has_out = true;
+  }
   const double s = x->b.v;
   const Vec3 dir = dl.normalized();
   r.depth = r.lower_bound = r.upper_bound = s;

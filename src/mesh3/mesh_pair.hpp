@@ -48,6 +48,14 @@ bool overlapping(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q);
 /// by the caller): see mesh_line.cpp. Exact (lower == upper == depth).
 Depth3 along(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3& d, bool separation);
 
+/// Private (tests, bench): how along() finds a candidate pair's interval on the line. Auto: the
+/// implicit facets of M_ij (convex3::minkowski_facets) when n_i·m_j <= kFacetPathMax (vertex
+/// counts), else the two DK descents; Descent / Facets force one path. Set only while no query
+/// runs (not synchronised).
+enum class LinePath { Auto, Descent, Facets };
+inline LinePath line_path = LinePath::Auto;
+inline constexpr std::size_t kFacetPathMax = 400;
+
 /// σ with certified bounds: lower = max over overlapping piece pairs of the exact σ_ij, upper =
 /// the least σ_d over a set of directions (mesh_pair.cpp); depth = upper with its translation.
 Depth3 minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q);
