@@ -27,8 +27,11 @@
 //    bound of the squared plane distance), get the support s along n_F. If s lies exactly on
 //    F's plane, that plane supports M: σ ≤ d_F. Since K ⊆ M, σ ≥ dist(0, ∂K) = min over K's
 //    facets of the plane distance. So σ = d_F once no facet of K is exactly nearer: facets whose
-//    lower bound is below d_F's accurate upper bound are discarded if coplanar with F, else
+//    lower bound is below an upper bound of d_F are discarded if coplanar with F, else
 //    refined, and remaining near ties are decided exactly (sign of h_F²|n_G|² − h_G²|n_F|²).
+//    The upper bound is rigorous from F's rounded values (upper_key: h̃ + he over |ñ| − |ne|),
+//    so F itself is refined only if it is the answer's facet (canonical_result) — once per
+//    query instead of once per new best facet, the same decisions and answers bit for bit.
 //    Otherwise s is strictly beyond F: expand. Every step adds a new pair, so the loop ends.
 //  * Values: d_F = h_F/|n_F| from h_F and |n_F|² in double-double with a rigorous error bound
 //    (exact rationals when that bound is not within half an ulp): within ~2 ulps.
@@ -254,23 +257,26 @@ struct Dir {
 template <class T>
 class Stack {
  public:
+  Stack() = default;
+  Stack(const Stack&) = delete;
+  Stack& operator=(const Stack&) = delete;
   std::size_t size() const { return n_; }
   void clear() { n_ = 0; }
-  T& operator[](std::size_t k) { return b_[k]; }
-  const T& operator[](std::size_t k) const { return b_[k]; }
-  T* begin() { return b_.data(); }
-  T* end() { return b_.data() + n_; }
-  const T* begin() const { return b_.data(); }
-  const T* end() const { return b_.data() + n_; }
-  T& back() { return b_[n_ - 1]; }
+  T& operator[](std::size_t k) { return p_[k]; }
+  const T& operator[](std::size_t k) const { return p_[k]; }
+  T* begin() { return p_; }
+  T* end() { return p_ + n_; }
+  const T* begin() const { return p_; }
+  const T* end() const { return p_ + n_; }
+  T& back() { return p_[n_ - 1]; }
   void pop_back() { --n_; }
   [[gnu::always_inline]] void push_back(const T& x) {
-    if (n_ == b_.size()) grow();
-    b_[n_++] = x;
+    if (n_ == cap_) grow();
+    p_[n_++] = x;
   }
   [[gnu::always_inline]] T& emplace_back() {
-    if (n_ == b_.size()) grow();
-    return b_[n_++];
+    if (n_ == cap_) grow();
+    return p_[n_++];
   }
   void assign(std::size_t k, const T& x) {
     clear();
@@ -278,13 +284,26 @@ class Stack {
   }
 
  private:
-  [[gnu::noinline]] void grow() { b_.resize(std::max<std::size_t>(64, 2 * b_.size())); }
-  std::vector<T> b_;
-  std::size_t n_ = 0;
+  [[gnu::noinline]] void grow() {
+    b_.resize(std::max<std::size_t>(64, 2 * b_.size()));
+    p_ = b_.data(), cap_ = b_.size();
+  }
+  std::vector<T> b_;  // owns the storage; p_, cap_ mirror it
+  T* p_ = nullptr;
+  std::size_t n_ = 0, cap_ = 0;
+};
+
+// The support set of a shape on a facet of M (canonical answer: contact_point): vertices,
+// boundary segments and triangles of a face.
+struct SupportSet {
+  std::vector<int> verts;
+  std::vector<std::array<int, 2>> edges;
+  std::vector<std::array<int, 3>> tris;
 };
 
 // Scratch arrays reused across queries of one thread (no allocation in steady state).
 struct Workspace {
+  SupportSet sp, sq;  // contact_point
   Stack<Vert> V;
   Stack<Facet> F;
   Stack<int> mark, vis;
@@ -310,7 +329,7 @@ class Expander {
   [[gnu::always_inline]] Expander(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel, Workspace& ws)
       : P_(convex3::data_of(Pp)), Q_(convex3::data_of(Qp)), AP_(vertex_adjacency(P_)), AQ_(vertex_adjacency(Q_)), R_(rel.R),
         V_(ws.V), F_(ws.F), mark_(ws.mark), vis_(ws.vis), by_start_(ws.by_start), by_end_(ws.by_end),
-        hor_(ws.hor), alive_(ws.alive), pos_(ws.pos), keys_(ws.keys), ties_(ws.ties), face_(ws.face), face_verts_(ws.face_verts) {
+        hor_(ws.hor), alive_(ws.alive), pos_(ws.pos), keys_(ws.keys), ties_(ws.ties), face_(ws.face), face_verts_(ws.face_verts), sp_(ws.sp), sq_(ws.sq) {
     V_.clear(), F_.clear(), mark_.clear(), alive_.clear(), pos_.clear(), keys_.clear();
     init_coordinate_bounds(rel);
     init_normal_bounds();
@@ -419,6 +438,8 @@ class Expander {
   std::vector<int>& ties_;
   std::vector<int>& face_;
   std::vector<int>& face_verts_;
+  SupportSet& sp_;
+  SupportSet& sq_;
   int stamp_ = 0;
   std::size_t iters_ = 0;
   int cone_first_ = 0;  // first facet of the last cone built
@@ -663,11 +684,16 @@ class Expander {
     if (D.kind != Dir::Normal) return 2;
     const Vert &A = V_[D.a], &B = V_[D.b], &C = V_[D.c];
     int ov, ow;
+    // O(x) = 0 by construction when x is one of the triangle's own vertices (the climbs and the
+    // support features start there): no orient3d, whose exact zeros are its slowest case.
+    auto o = [](const PolytopeData& S, int a, int b, int c, int x) {
+      return x == a || x == b || x == c ? 0 : orient3d(S.v[a], S.v[b], S.v[c], S.v[x]);
+    };
     if (of_p && A.j == B.j && B.j == C.j) {
-      ov = orient3d(P_.v[A.i], P_.v[B.i], P_.v[C.i], P_.v[v]), ow = orient3d(P_.v[A.i], P_.v[B.i], P_.v[C.i], P_.v[w]);
+      ov = o(P_, A.i, B.i, C.i, v), ow = o(P_, A.i, B.i, C.i, w);
       std::swap(ov, ow);  // the sign of O(w) − O(v)
     } else if (!of_p && A.i == B.i && B.i == C.i) {
-      ov = orient3d(Q_.v[A.j], Q_.v[B.j], Q_.v[C.j], Q_.v[v]), ow = orient3d(Q_.v[A.j], Q_.v[B.j], Q_.v[C.j], Q_.v[w]);
+      ov = o(Q_, A.j, B.j, C.j, v), ow = o(Q_, A.j, B.j, C.j, w);
     } else {
       return 2;
     }
@@ -1476,11 +1502,6 @@ class Expander {
   // ---- a contact point of parallel features (face–face, face–edge, edge–face) -----------------
   // The support set of S: vertices (lexicographic order), boundary segments (endpoints and the
   // segments in lexicographic order) and triangles of a face.
-  struct SupportSet {
-    std::vector<int> verts;
-    std::vector<std::array<int, 2>> edges;
-    std::vector<std::array<int, 3>> tris;
-  };
   void support_set(const PolytopeData& S, const Feature3& raw, int dim, SupportSet& out) {
     out.verts.clear(), out.edges.clear(), out.tris.clear();
     const auto& L = S.levels[0];
@@ -1514,7 +1535,7 @@ class Expander {
   // next piece, or the piece it is nearest to if none holds it; always the same one for the same
   // input.
   Vec3 contact_point(const Canon& k, const Vec3& shift, const Vec3& u) {
-    SupportSet sp, sq;
+    SupportSet &sp = sp_, &sq = sq_;
     support_set(P_, k.raw_p, k.dp, sp);
     support_set(Q_, k.raw_q, k.dq, sq);
     int ax = 0;
