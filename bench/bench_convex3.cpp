@@ -15,6 +15,9 @@
 //                         the magnitude is compared
 //   sigma/bullet          Bullet 3.24 float64 btGjkEpaSolver2::Penetration, btConvexHullShape
 //                         with margin 0
+//   sigma_hulls/<impl>/all  the σ peers above on the shared real hulls: the pairs and placements
+//                         of hulls/<q>/all below (960 queries, each checked against the O(n·m)
+//                         reference)
 //   sigma_d/pendepth      directional_depth (the public query: expansion or DK by size)
 //   sigma_d/dk, /expand   its two exact methods: Compute-Depth-3D on the DK hierarchies
 //                         (convex3::directional_depth_dk), the certified expansion
@@ -149,14 +152,15 @@ Ref sigma_reference(const ConvexPolytope& P, const ConvexPolytope& Q, const Mat3
 }
 
 struct Query {
-  Pose3 pose;  // of Q (P at the identity)
+  int pair = 0;  // index into SigmaCase::P / Q
+  Pose3 pose;    // of Q (P at the identity)
   Mat3 R;      // pose.matrix(): the same doubles for every implementation
   double exact = 0;
 };
 
 struct SigmaCase {
-  std::size_t n = 0;
-  ConvexPolytope P, Q;
+  std::size_t n = 0;                 // 0: the shared real hulls
+  std::vector<ConvexPolytope> P, Q;  // pairs (one for n > 0)
   std::vector<Query> queries;
   double hull_ms = 0;        // both hulls
   std::size_t verified = 0;  // queries checked against the O(n·m) reference
@@ -168,19 +172,21 @@ SigmaCase build_sigma_case(std::size_t n) {
   std::mt19937_64 rng(0x5eed3000 + n);
   auto pp = ellipsoid_points(n, rng), qp = ellipsoid_points(n, rng);
   auto t0 = Clock::now();
-  SigmaCase c{n, ConvexPolytope::hull(pp, "P"), ConvexPolytope::hull(qp, "Q"), {}, 0, 0, 0, {}};
+  SigmaCase c;
+  c.n = n;
+  c.P.push_back(ConvexPolytope::hull(pp, "P")), c.Q.push_back(ConvexPolytope::hull(qp, "Q"));
   c.hull_ms = ms_since(t0);
   std::size_t attempts = 0;
   while (c.queries.size() < kQueries && attempts++ < 100 * kQueries) {
     Query q;
     q.pose = Pose3(random_rotation(rng), random_in_ball(rng, 1.0));
     q.R = q.pose.matrix();
-    Depth3 d = pendepth::minimum_depth(c.P, Pose3(), c.Q, q.pose);
+    Depth3 d = pendepth::minimum_depth(c.P[0], Pose3(), c.Q[0], q.pose);
     if (!d.overlapping) continue;
     if (d.lower_bound != d.upper_bound) c.error = "pendepth result not certified";
     q.exact = d.depth;
     if (n <= kVerifyMax) {
-      Ref ref = sigma_reference(c.P, c.Q, q.R, q.pose.translation);
+      Ref ref = sigma_reference(c.P[0], c.Q[0], q.R, q.pose.translation);
       double ulps = ref.overlapping ? std::abs(ref.sigma - d.depth) / (ref.sigma * 0x1p-52) : 1e300;
       c.ref_max_ulps = std::max(c.ref_max_ulps, ulps);
       if (ulps > 8) c.error = "pendepth σ disagrees with the O(n·m) reference";
@@ -192,10 +198,12 @@ SigmaCase build_sigma_case(std::size_t n) {
   return c;
 }
 
+SigmaCase build_hulls_sigma_case();  // below: the shared real hulls (n = 0)
+
 const SigmaCase& sigma_case(std::size_t n) {
   static std::map<std::size_t, std::unique_ptr<SigmaCase>> cache;
   auto& p = cache[n];
-  if (!p) p = std::make_unique<SigmaCase>(build_sigma_case(n));
+  if (!p) p = std::make_unique<SigmaCase>(n == 0 ? build_hulls_sigma_case() : build_sigma_case(n));
   return *p;
 }
 
@@ -235,11 +243,15 @@ void ccd_center(const void* obj, ccd_vec3_t* out) {
 
 Factory ccd_factory(bool mpr, bool tight) {
   return [mpr, tight](const SigmaCase& c) -> DepthFn {
-    auto pv = std::make_shared<std::vector<Vec3>>(c.P.vertices().begin(), c.P.vertices().end());
-    auto qv = std::make_shared<std::vector<Vec3>>(c.Q.vertices().begin(), c.Q.vertices().end());
+    using Verts = std::vector<std::vector<Vec3>>;
+    auto pv = std::make_shared<Verts>(), qv = std::make_shared<Verts>();
+    for (std::size_t k = 0; k < c.P.size(); ++k) {
+      pv->emplace_back(c.P[k].vertices().begin(), c.P[k].vertices().end());
+      qv->emplace_back(c.Q[k].vertices().begin(), c.Q[k].vertices().end());
+    }
     return [pv, qv, mpr, tight, &c](std::size_t i) {
       const Query& q = c.queries[i];
-      CcdHull a{pv.get()}, b{qv.get(), q.R, q.pose.translation};
+      CcdHull a{&(*pv)[q.pair]}, b{&(*qv)[q.pair], q.R, q.pose.translation};
       ccd_t ccd;
       CCD_INIT(&ccd);
       ccd.support1 = ccd.support2 = ccd_support;
@@ -266,9 +278,11 @@ std::shared_ptr<fcl::Convexd> fcl_convex(const ConvexPolytope& S) {
 
 Factory fcl_factory(bool signed_distance) {
   return [signed_distance](const SigmaCase& c) -> DepthFn {
-    std::shared_ptr<fcl::Convexd> a = fcl_convex(c.P), b = fcl_convex(c.Q);
-    return [a, b, signed_distance, &c](std::size_t i) {
+    auto shapes = std::make_shared<std::vector<std::pair<std::shared_ptr<fcl::Convexd>, std::shared_ptr<fcl::Convexd>>>>();
+    for (std::size_t k = 0; k < c.P.size(); ++k) shapes->emplace_back(fcl_convex(c.P[k]), fcl_convex(c.Q[k]));
+    return [shapes, signed_distance, &c](std::size_t i) {
       const Query& q = c.queries[i];
+      const auto& [a, b] = (*shapes)[q.pair];
       fcl::Transform3d ta = fcl::Transform3d::Identity(), tb = fcl::Transform3d::Identity();
       tb.linear() = q.R;
       tb.translation() = q.pose.translation;
@@ -300,9 +314,11 @@ std::shared_ptr<btConvexHullShape> bullet_hull(const ConvexPolytope& S) {
 
 Factory bullet_factory() {
   return [](const SigmaCase& c) -> DepthFn {
-    std::shared_ptr<btConvexHullShape> a = bullet_hull(c.P), b = bullet_hull(c.Q);
-    return [a, b, &c](std::size_t i) {
+    auto shapes = std::make_shared<std::vector<std::pair<std::shared_ptr<btConvexHullShape>, std::shared_ptr<btConvexHullShape>>>>();
+    for (std::size_t k = 0; k < c.P.size(); ++k) shapes->emplace_back(bullet_hull(c.P[k]), bullet_hull(c.Q[k]));
+    return [shapes, &c](std::size_t i) {
       const Query& q = c.queries[i];
+      const auto& [a, b] = (*shapes)[q.pair];
       const Mat3& R = q.R;
       const Vec3& t = q.pose.translation;
       btTransform ta;
@@ -322,7 +338,10 @@ Factory bullet_factory() {
 
 Factory pendepth_factory() {
   return [](const SigmaCase& c) -> DepthFn {
-    return [&c](std::size_t i) { return pendepth::minimum_depth(c.P, Pose3(), c.Q, c.queries[i].pose).depth; };
+    return [&c](std::size_t i) {
+      const Query& q = c.queries[i];
+      return pendepth::minimum_depth(c.P[q.pair], Pose3(), c.Q[q.pair], q.pose).depth;
+    };
   };
 }
 
@@ -696,6 +715,29 @@ const CrossCase& hard_case(std::size_t which) {
     add_cross_query(c, cq);
   }
   finish_cross_case(c, kQueries);
+  return c;
+}
+
+// σ against the peers on the shared real hulls (sigma_hulls/<impl>): hulls_case()'s pairs and
+// placements; each exact σ is also checked against the O(n·m) facet reference (≤ 8 ulps).
+SigmaCase build_hulls_sigma_case() {
+  const CrossCase& h = hulls_case();
+  SigmaCase c;
+  c.error = h.error;
+  c.P = h.P, c.Q = h.Q;
+  for (const CrossQuery& x : h.queries) {
+    Query q;
+    q.pair = x.pair, q.pose = x.pose, q.R = x.pose.matrix();
+    const Depth3 d = pendepth::minimum_depth(c.P[q.pair], Pose3(), c.Q[q.pair], q.pose);
+    if (d.lower_bound != d.upper_bound) c.error = "pendepth result not certified";
+    q.exact = d.depth;
+    const Ref ref = sigma_reference(c.P[q.pair], c.Q[q.pair], q.R, q.pose.translation);
+    const double ulps = ref.overlapping ? std::abs(ref.sigma - d.depth) / (ref.sigma * 0x1p-52) : 1e300;
+    c.ref_max_ulps = std::max(c.ref_max_ulps, ulps);
+    if (ulps > 8) c.error = "pendepth σ disagrees with the O(n·m) reference";
+    ++c.verified;
+    c.queries.push_back(q);
+  }
   return c;
 }
 
@@ -1176,6 +1218,9 @@ int main(int argc, char** argv) {
 #if PENDEPTH_BENCH_BULLET
   impls.emplace_back("bullet", bullet_factory());
 #endif
+  for (const auto& [name, make] : impls)  // the shared real hulls (n = 0)
+    benchmark::RegisterBenchmark(("sigma_hulls/" + name + "/all").c_str(), bm_sigma, make, 0)
+        ->Unit(benchmark::kMicrosecond);
   for (std::size_t n : {8, 64, 512, 4096, 32768})
     for (const auto& [name, make] : impls)
       benchmark::RegisterBenchmark(("sigma/" + name + "/" + std::to_string(n)).c_str(), bm_sigma, make, n)

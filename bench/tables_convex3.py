@@ -66,6 +66,21 @@ for n in sizes("sigma/"):
 L.append("")
 L.append("Cells: failures/queries · max / median |depth − exact|.")
 L.append("")
+hp = [(k, h) for k, h in impls if f"sigma_hulls/{k}/all" in runs]
+if hp:  # σ on the shared real hulls (sigma_hulls/<impl>/all)
+    t = {k: ns(f"sigma_hulls/{k}/all") for k, _ in hp}
+    L.append("| shared real hulls | " + " | ".join(h for _, h in hp) + " | pendepth / Bullet |")
+    L.append("|---|" + "---:|" * (len(hp) + 1))
+    L.append("| time | " + " | ".join(fmt_t(t[k]) for k, _ in hp)
+             + f" | {fmt_r(t.get('pendepth'), t.get('bullet'))} |")
+    cells = []
+    for k, _ in hp:
+        name = f"sigma_hulls/{k}/all"
+        c = lambda key: counter(name, key)
+        cells.append("—" if not ok(name) else
+                     f"{int(c('failures'))}/{int(c('queries'))} · {g2(c('err_max'))} / {g2(c('err_median'))}")
+    L.append("| failures · max / median error | " + " | ".join(cells) + " | |")
+    L.append("")
 L.append("| n = m | hulls build (P + Q) | queries verified by O(n·m) reference | max error vs reference (ulp) | mean exact σ |")
 L.append("|---:|---:|---:|---:|---:|")
 for n in sizes("sigma/"):

@@ -27,8 +27,11 @@
 //    bound of the squared plane distance), get the support s along n_F. If s lies exactly on
 //    F's plane, that plane supports M: σ ≤ d_F. Since K ⊆ M, σ ≥ dist(0, ∂K) = min over K's
 //    facets of the plane distance. So σ = d_F once no facet of K is exactly nearer: facets whose
-//    lower bound is below d_F's accurate upper bound are discarded if coplanar with F, else
+//    lower bound is below an upper bound of d_F are discarded if coplanar with F, else
 //    refined, and remaining near ties are decided exactly (sign of h_F²|n_G|² − h_G²|n_F|²).
+//    The upper bound is rigorous from F's rounded values (upper_key: h̃ + he over |ñ| − |ne|),
+//    so F itself is refined only if it is the answer's facet (canonical_result) — once per
+//    query instead of once per new best facet, the same decisions and answers bit for bit.
 //    Otherwise s is strictly beyond F: expand. Every step adds a new pair, so the loop ends.
 //  * Values: d_F = h_F/|n_F| from h_F and |n_F|² in double-double with a rigorous error bound
 //    (exact rationals when that bound is not within half an ulp): within ~2 ulps.
@@ -248,14 +251,66 @@ struct Dir {
   Pairs t;
 };
 
+// A stack of trivially copyable T whose storage only grows (clear() keeps it): push_back is a
+// compare and a store, emplace_back() hands out a slot without initialising it (the caller sets
+// every field). References are invalidated by growth, as with std::vector.
+template <class T>
+class Stack {
+ public:
+  Stack() = default;
+  Stack(const Stack&) = delete;
+  Stack& operator=(const Stack&) = delete;
+  std::size_t size() const { return n_; }
+  void clear() { n_ = 0; }
+  T& operator[](std::size_t k) { return p_[k]; }
+  const T& operator[](std::size_t k) const { return p_[k]; }
+  T* begin() { return p_; }
+  T* end() { return p_ + n_; }
+  const T* begin() const { return p_; }
+  const T* end() const { return p_ + n_; }
+  T& back() { return p_[n_ - 1]; }
+  void pop_back() { --n_; }
+  [[gnu::always_inline]] void push_back(const T& x) {
+    if (n_ == cap_) grow();
+    p_[n_++] = x;
+  }
+  [[gnu::always_inline]] T& emplace_back() {
+    if (n_ == cap_) grow();
+    return p_[n_++];
+  }
+  void assign(std::size_t k, const T& x) {
+    clear();
+    for (std::size_t i = 0; i < k; ++i) push_back(x);
+  }
+
+ private:
+  [[gnu::noinline]] void grow() {
+    b_.resize(std::max<std::size_t>(64, 2 * b_.size()));
+    p_ = b_.data(), cap_ = b_.size();
+  }
+  std::vector<T> b_;  // owns the storage; p_, cap_ mirror it
+  T* p_ = nullptr;
+  std::size_t n_ = 0, cap_ = 0;
+};
+
+// The support set of a shape on a facet of M (canonical answer: contact_point): vertices,
+// boundary segments and triangles of a face.
+struct SupportSet {
+  std::vector<int> verts;
+  std::vector<std::array<int, 2>> edges;
+  std::vector<std::array<int, 3>> tris;
+};
+
 // Scratch arrays reused across queries of one thread (no allocation in steady state).
 struct Workspace {
-  std::vector<Vert> V;
-  std::vector<Facet> F;
-  std::vector<int> mark, vis, by_start, by_end;
-  std::vector<std::pair<int, int>> hor;
-  std::vector<int> alive, pos;  // live facets (dense) and each facet's index there (−1: dead)
-  std::vector<double> keys;     // Phase B key of alive[k]; +inf: not a candidate
+  SupportSet sp, sq;  // contact_point
+  Stack<Vert> V;
+  Stack<Facet> F;
+  Stack<int> mark, vis;
+  std::vector<int> by_start, by_end;
+  Stack<std::pair<int, int>> hor;
+  Stack<int> alive, pos;  // live facets (dense) and each facet's index there (−1: dead)
+  Stack<double> keys;     // Phase B key of alive[k]; +inf: not a candidate
   std::vector<int> ties, face;  // Phase B: facets exactly as near as the best; a flat face's triangles
   std::vector<int> face_verts;  // the warm seed: vertices of the answer's flat face
 };
@@ -274,7 +329,7 @@ class Expander {
   [[gnu::always_inline]] Expander(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel, Workspace& ws)
       : P_(convex3::data_of(Pp)), Q_(convex3::data_of(Qp)), AP_(vertex_adjacency(P_)), AQ_(vertex_adjacency(Q_)), R_(rel.R),
         V_(ws.V), F_(ws.F), mark_(ws.mark), vis_(ws.vis), by_start_(ws.by_start), by_end_(ws.by_end),
-        hor_(ws.hor), alive_(ws.alive), pos_(ws.pos), keys_(ws.keys), ties_(ws.ties), face_(ws.face), face_verts_(ws.face_verts) {
+        hor_(ws.hor), alive_(ws.alive), pos_(ws.pos), keys_(ws.keys), ties_(ws.ties), face_(ws.face), face_verts_(ws.face_verts), sp_(ws.sp), sq_(ws.sq) {
     V_.clear(), F_.clear(), mark_.clear(), alive_.clear(), pos_.clear(), keys_.clear();
     init_coordinate_bounds(rel);
     init_normal_bounds();
@@ -323,6 +378,43 @@ class Expander {
   }
   std::size_t work() const { return work_; }
 
+  // Tests: Phase B refines each new best facet at once (the path before upper_key).
+  void set_eager_refine(bool on) { eager_refine_ = on; }
+  // Tests: over K's live facets after run(), the number of failed links in the chain of bounds
+  // behind upper_key() and lower_key(), each checked exactly (rationals): |h̃ − h| <= he,
+  // |ñ − n| <= |ne|, hu >= h̃ + he, (nl + |ne|)² <= ñ·ñ, upper_key >= hu²/nl², and finally
+  // lower_key <= (h/|n|)² <= upper_key. Each margin of upper_key() is needed by one link, so
+  // dropping any of them fails here on some facets. `checked` receives the facets compared.
+  int key_violations(int& checked) const {
+    int bad = 0;
+    checked = 0;
+    using Q = mpq_class;
+    for (int f : alive_) {
+      const Facet& F = F_[f];
+      const auto& v = F.v;
+      const exact::LiftQ L;
+      const auto n = normal_l(L, v[0], v[1], v[2]);
+      const Q h = dot(n, m_l(L, V_[v[0]])).v, n2 = dot(n, n).v;
+      if (h <= 0 || n2 == 0) continue;
+      ++checked;
+      const Q d2 = h * h / n2;
+      const Q ht(F.h), he(F.he), ne(ne_norm_);
+      bad += abs(Q(ht - h)) > he;
+      Q diff2 = 0, nt2 = 0;
+      for (int k = 0; k < 3; ++k) diff2 += (Q(F.n[k]) - n[k].v) * (Q(F.n[k]) - n[k].v), nt2 += Q(F.n[k]) * Q(F.n[k]);
+      bad += diff2 > ne * ne;
+      double hu, nl;
+      if (upper_parts(f, hu, nl)) {
+        bad += Q(hu) < ht + he;
+        bad += (Q(nl) + ne) * (Q(nl) + ne) > nt2;
+        bad += Q(upper_key(f)) < Q(hu) * Q(hu) / (Q(nl) * Q(nl));
+        bad += Q(upper_key(f)) < d2;
+      }
+      bad += Q(lower_key(f)) > d2;
+    }
+    return bad;
+  }
+
  private:
   const PolytopeData& P_;
   const PolytopeData& Q_;
@@ -333,19 +425,21 @@ class Expander {
   double thi_[3], tlo_[3], tau_[3];
   double ext_p_[3], bd_[3], ed_[3], B_[3], mb_[3], em_[3], ne_[3], ne_norm_, ed_max_;
   double co_, bo_[3], ch_, bh_[3], cep_, bp_[3], ceq_, bqn_[3], bqw_[3];
-  std::vector<Vert>& V_;
-  std::vector<Facet>& F_;
-  std::vector<int>& mark_;
-  std::vector<int>& vis_;
+  Stack<Vert>& V_;
+  Stack<Facet>& F_;
+  Stack<int>& mark_;
+  Stack<int>& vis_;
   std::vector<int>& by_start_;
   std::vector<int>& by_end_;
-  std::vector<std::pair<int, int>>& hor_;
-  std::vector<int>& alive_;
-  std::vector<int>& pos_;
-  std::vector<double>& keys_;
+  Stack<std::pair<int, int>>& hor_;
+  Stack<int>& alive_;
+  Stack<int>& pos_;
+  Stack<double>& keys_;
   std::vector<int>& ties_;
   std::vector<int>& face_;
   std::vector<int>& face_verts_;
+  SupportSet& sp_;
+  SupportSet& sq_;
   int stamp_ = 0;
   std::size_t iters_ = 0;
   int cone_first_ = 0;  // first facet of the last cone built
@@ -353,6 +447,7 @@ class Expander {
   // and the limit above which Phases A and D give up (σ: none).
   mutable std::size_t work_ = 0;
   std::size_t budget_ = std::numeric_limits<std::size_t>::max();
+  bool eager_refine_ = false;
   enum class Overlap { No, Yes, Exhausted };
   // Phase D: the query direction (P's frame, scaled by a power of two) and the bound of the
   // rounded det(m̂_a, m̂_b, d).
@@ -500,9 +595,12 @@ class Expander {
 
   int add_facet(int a, int b, int c) {
     const int id = static_cast<int>(F_.size());
-    Facet& f = F_.emplace_back();
+    Facet& f = F_.emplace_back();  // a recycled slot: every field is set here
     f.v = {a, b, c};
     f.nb = {-1, -1, -1};
+    f.dist = 0;
+    f.hsign = 1;
+    f.refined = false;
     double d1[3], d2[3];
     diff_r(V_[b], V_[a], d1);
     diff_r(V_[c], V_[a], d2);
@@ -586,11 +684,16 @@ class Expander {
     if (D.kind != Dir::Normal) return 2;
     const Vert &A = V_[D.a], &B = V_[D.b], &C = V_[D.c];
     int ov, ow;
+    // O(x) = 0 by construction when x is one of the triangle's own vertices (the climbs and the
+    // support features start there): no orient3d, whose exact zeros are its slowest case.
+    auto o = [](const PolytopeData& S, int a, int b, int c, int x) {
+      return x == a || x == b || x == c ? 0 : orient3d(S.v[a], S.v[b], S.v[c], S.v[x]);
+    };
     if (of_p && A.j == B.j && B.j == C.j) {
-      ov = orient3d(P_.v[A.i], P_.v[B.i], P_.v[C.i], P_.v[v]), ow = orient3d(P_.v[A.i], P_.v[B.i], P_.v[C.i], P_.v[w]);
+      ov = o(P_, A.i, B.i, C.i, v), ow = o(P_, A.i, B.i, C.i, w);
       std::swap(ov, ow);  // the sign of O(w) − O(v)
     } else if (!of_p && A.i == B.i && B.i == C.i) {
-      ov = orient3d(Q_.v[A.j], Q_.v[B.j], Q_.v[C.j], Q_.v[v]), ow = orient3d(Q_.v[A.j], Q_.v[B.j], Q_.v[C.j], Q_.v[w]);
+      ov = o(Q_, A.j, B.j, C.j, v), ow = o(Q_, A.j, B.j, C.j, w);
     } else {
       return 2;
     }
@@ -934,6 +1037,22 @@ class Expander {
     double nu = nn * (1 + 4 * kU) + ne_norm_ * (2 * std::abs(F.n[0]) + 2 * std::abs(F.n[1]) + 2 * std::abs(F.n[2]) + ne_norm_);
     return hl > 0 ? hl * hl / nu * (1 - 0x1p-49) : 0.0;
   }
+  // An upper bound of the same (h/|n|)² from the rounded values, without refine(): h <= h̃ + he,
+  // |n| >= |ñ| − |ne| with |ñ| >= sqrt(ñ·ñ)(1 − 3u); each of the few roundings below is within u,
+  // which the factors cover. +inf when |ñ| is not well above its error bound (then refine).
+  double upper_key(int f) const {
+    double hu, nl;
+    if (!upper_parts(f, hu, nl)) return std::numeric_limits<double>::infinity();
+    return hu * hu / (nl * nl) * (1 + 0x1p-48);
+  }
+  // hu >= h̃ + he >= h and 0 < nl <= |ñ| − |ne| <= |n|; false when unusable.
+  bool upper_parts(int f, double& hu, double& nl) const {
+    const Facet& F = F_[f];
+    hu = (F.h + F.he) * (1 + 0x1p-50);
+    const double len = std::sqrt(F.n[0] * F.n[0] + F.n[1] * F.n[1] + F.n[2] * F.n[2]);
+    nl = len * (1 - 0x1p-50) - ne_norm_ * (1 + 0x1p-50);
+    return nl > 0.5 * len && hu > 0;
+  }
   // The facet's vertices rotated so that the least pair (by P's then Q's vertex coordinates)
   // comes first: the values of refine() are then a function of the three pairs, whichever
   // facet of K holds them (canonical_result reuses best's values when it is the canonical triple).
@@ -1059,9 +1178,16 @@ class Expander {
           ties_.push_back(f);
           continue;
         }
-        if (!F_[f].refined) refine(f);
+        // The cutoff: best's accurate distance when known, else the rounded upper bound (refine()
+        // then runs once, in canonical_result, on the answer's facet only).
         best = f;
-        best_hi = F_[f].dist * F_[f].dist * (1 + 0x1p-47);
+        best_hi = F_[f].refined ? F_[f].dist * F_[f].dist * (1 + 0x1p-47)
+                  : eager_refine_ ? std::numeric_limits<double>::infinity()
+                                  : upper_key(f);
+        if (!(best_hi < std::numeric_limits<double>::infinity())) {
+          refine(f);
+          best_hi = F_[f].dist * F_[f].dist * (1 + 0x1p-47);
+        }
         ties_.clear();
         continue;
       }
@@ -1376,11 +1502,6 @@ class Expander {
   // ---- a contact point of parallel features (face–face, face–edge, edge–face) -----------------
   // The support set of S: vertices (lexicographic order), boundary segments (endpoints and the
   // segments in lexicographic order) and triangles of a face.
-  struct SupportSet {
-    std::vector<int> verts;
-    std::vector<std::array<int, 2>> edges;
-    std::vector<std::array<int, 3>> tris;
-  };
   void support_set(const PolytopeData& S, const Feature3& raw, int dim, SupportSet& out) {
     out.verts.clear(), out.edges.clear(), out.tris.clear();
     const auto& L = S.levels[0];
@@ -1414,7 +1535,7 @@ class Expander {
   // next piece, or the piece it is nearest to if none holds it; always the same one for the same
   // input.
   Vec3 contact_point(const Canon& k, const Vec3& shift, const Vec3& u) {
-    SupportSet sp, sq;
+    SupportSet &sp = sp_, &sq = sq_;
     support_set(P_, k.raw_p, k.dp, sp);
     support_set(Q_, k.raw_q, k.dq, sq);
     int ax = 0;
@@ -1488,6 +1609,8 @@ class Expander {
         f = add_facet(a, x, b);
         std::swap(pr[2], pr[4]), std::swap(pr[3], pr[5]);
       }
+      refine(f);
+    } else if (!F_[f].refined) {
       refine(f);
     }
     const Facet& B = F_[f];
@@ -1676,6 +1799,20 @@ Workspace& workspace() {
 Depth3 minimum_depth_expand(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,
                             const Eigen::Matrix3d& Rp, const Vec3& tp, ExpandSeed* seed) {
   return Expander<false>(P, Q, rel, workspace()).run(Rp, tp, seed);
+}
+
+Depth3 minimum_depth_expand_eager(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,
+                                  const Eigen::Matrix3d& Rp, const Vec3& tp, ExpandSeed* seed) {
+  Expander<false> e(P, Q, rel, workspace());
+  e.set_eager_refine(true);
+  return e.run(Rp, tp, seed);
+}
+
+int minimum_expand_key_violations(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,
+                                  int& checked) {
+  Expander<false> e(P, Q, rel, workspace());
+  (void)e.run(Eigen::Matrix3d::Identity(), Vec3::Zero(), nullptr);
+  return e.key_violations(checked);
 }
 
 std::optional<Depth3> directional_depth_expand(const ConvexPolytope& P, const ConvexPolytope& Q,

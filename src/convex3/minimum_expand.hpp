@@ -34,6 +34,16 @@ struct ExpandSeed {
 Depth3 minimum_depth_expand(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,
                             const Eigen::Matrix3d& Rp, const Vec3& tp, ExpandSeed* seed = nullptr);
 
+/// Tests: the same by the path before the lazy refinement of Phase B (each new best facet of K
+/// refined at once, its accurate distance the cutoff): the same answer bit for bit.
+Depth3 minimum_depth_expand_eager(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,
+                                  const Eigen::Matrix3d& Rp, const Vec3& tp, ExpandSeed* seed = nullptr);
+
+/// Tests: runs σ's expansion, then counts K's live facets whose rounded Phase B keys fail to
+/// bracket the exact squared plane distance (h/|n|)² (rationals); `checked` = facets compared.
+int minimum_expand_key_violations(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,
+                                  int& checked);
+
 /// The same from poses (validated as minimum_depth), with an optional seed (Pair3's warm start).
 Depth3 minimum_depth_seeded(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
                             const Pose3& pose_q, ExpandSeed* seed);
