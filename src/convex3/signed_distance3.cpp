@@ -263,6 +263,18 @@ class Johnson {
     return r;
   }
 
+  // The first subset (holding the newest point, smallest first) accepted by the tests in plain
+  // doubles: the floating GJK's step (gjk_fast), never trusted without its final certificate.
+  bool guess(const Member* X, int n, Reduced& r) const {
+    const int all = (1 << n) - 1, newest = 1 << (n - 1);
+    for (int size = 1; size <= n; ++size)
+      for (int mask = 1; mask <= all; ++mask) {
+        if (std::popcount(static_cast<unsigned>(mask)) != size || !(mask & newest)) continue;
+        if (accept<false>(X, n, mask, r)) return true;
+      }
+    return false;
+  }
+
  private:
   const Ctx& c_;
 
@@ -513,6 +525,131 @@ GjkResult gjk_loop(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacenc
   return {X, contact};
 }
 
+// ---- Fast path: GJK in doubles, its final simplex certified once ---------------------------------
+// The loop of gjk_loop with every decision in plain doubles (supports by rounded climbs, Johnson's
+// subset by its double tests, improvement by the double sign): no error bounds until the end.
+// Its final simplex S is then accepted only by one certificate whose every sign is a filtered
+// one (exact::Fl: value and a rigorous bound of its error; `margin` scales the bound, 1 in the
+// library, 0 only in the test showing that the tests catch an unsound certificate):
+//  (a) S is non-degenerate: its distinct P vertices S_P and Q vertices S_Q have sizes
+//      (1,1), (2,1), (1,2) with |S| = |S_P| + |S_Q| − 1, or (3,1), (1,3), (2,2) with |S| = 3
+//      (so the members form a connected pattern: all S_P at one level of U·p, all S_Q at one
+//      level of U·q');
+//  (b) the projection w of 0 onto aff(S) lies in conv(S)'s relative interior (every barycentric
+//      numerator certified > 0), w ≠ 0 (a component of m_a, e × a, or n·a certified ≠ 0: 0 ∉ M),
+//      and for (2,2) not on the other diagonal of the parallelogram (n·(m_D × m_O) ≠ 0, D the
+//      fourth corner, O its opposite);
+//  (c) every neighbour k ∉ S_P of every s ∈ S_P has U·(p_k − p_s) certified > 0, and every
+//      neighbour k ∉ S_Q of every t ∈ S_Q has U·(q'_t − q'_k) certified > 0.
+// (c) makes each s a local, hence global (convexity, level-0 adjacency), minimiser of U·p and
+// S_P exactly the minimising face P_U (a larger face would have a boundary edge leaving S_P at
+// the same level); the same for Q'. So M ⊂ {U·x ≥ U·w}, w ∈ conv(S) ⊂ M: w is the closest point,
+// and the face of M it lies on is F = P_U ⊕ (−Q'_U) with vertex sets S_P, S_Q. With (a), (b) the
+// exact loop can only end on the same set S (a segment or triangle F holds w in its relative
+// interior only as itself; a parallelogram F holds it in the interior of triangles only, all with
+// normal ±(e_P × e_Q), the value's canonical form in finish_distance), so both paths give the
+// same bits. Any failed test (a sign the filter cannot certify, a coplanar or parallel feature,
+// contact, no convergence in 48 steps) returns nullopt: the exact loop answers.
+std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacency& aQ, double margin) {
+  const PolytopeData& PD = c.P;
+  const PolytopeData& QD = c.Q;
+  const RelativePose& rel = c.rel;
+  if (c.proj || c.RpT) return std::nullopt;  // plain signed distance only
+  const Johnson johnson(c);
+  auto fsign = [margin](Fl x) {
+    const double b = exact::safe_bound(x.e) * margin;
+    return x.v > b ? 1 : x.v < -b ? -1 : 0;  // 0: not certified (or NaN)
+  };
+  auto approx_member = [&](PairId s) {
+    const Vec3 m = c.approx_p(s.i) - c.approx_q(s.j);
+    return Member{s, {Fl{m[0], 0}, Fl{m[1], 0}, Fl{m[2], 0}}};
+  };
+  Vec3 v = aP.centroid - (rel.R * aQ.centroid + (rel.tq - rel.tp));
+  if (!v.allFinite() || v == Vec3::Zero()) v = Vec3::UnitX();
+  auto support = [&](const Vec3& u, int i0, int j0) {
+    const Vec3 uq = rel.R.transpose() * u;
+    return PairId{climb_rounded(PD, aP, -u, i0 >= 0 ? i0 : seed_vertex(aP, -u)),
+                  climb_rounded(QD, aQ, uq, j0 >= 0 ? j0 : seed_vertex(aQ, uq))};
+  };
+  PairId s = support(v, -1, -1);
+  Reduced X;
+  X.size = 1;
+  X.s[0] = approx_member(s);
+  for (int iter = 0;; ++iter) {
+    if (iter == 48) return std::nullopt;
+    const Dir U{&c, X.size, {X.s[0], X.size > 1 ? X.s[1] : Member{}, X.size > 2 ? X.s[2] : Member{}}, X.tri_sign};
+    const V3<double> ud = U(LiftD{});
+    const Vec3 u(ud[0], ud[1], ud[2]);
+    if (!u.allFinite() || u == Vec3::Zero()) return std::nullopt;
+    s = support(u, s.i, s.j);
+    bool dup = false;
+    for (int k = 0; k < X.size; ++k) dup = dup || X.s[k].id == s;
+    if (dup || !(dot(ud, c.dm(LiftD{}, s, X.s[0].id)) < 0)) break;
+    Member Y[4];
+    for (int k = 0; k < X.size; ++k) Y[k] = X.s[k];
+    Y[X.size] = approx_member(s);
+    Reduced r;
+    if (!johnson.guess(Y, X.size + 1, r) || r.contact || r.size < 1 || r.size > 3) return std::nullopt;
+    X = r;
+  }
+  // (a) the pattern of S.
+  int sp[3], sq[3], np = 0, nq = 0;
+  for (int k = 0; k < X.size; ++k) {
+    if (std::find(sp, sp + np, X.s[k].id.i) == sp + np) sp[np++] = X.s[k].id.i;
+    if (std::find(sq, sq + nq, X.s[k].id.j) == sq + nq) sq[nq++] = X.s[k].id.j;
+  }
+  const bool ok_pattern = X.size == 3 ? (np == 3 && nq == 1) || (np == 1 && nq == 3) || (np == 2 && nq == 2)
+                                      : np + nq - 1 == X.size;
+  if (!ok_pattern) return std::nullopt;
+  // (b) with the members' filtered coordinates.
+  Reduced R;
+  R.size = X.size;
+  for (int k = 0; k < X.size; ++k) R.s[k] = c.member(X.s[k].id);
+  const LiftFl F;
+  const V3<Fl> a = R.s[0].fl;
+  auto nonzero3 = [&](const V3<Fl>& x) { return fsign(x[0]) != 0 || fsign(x[1]) != 0 || fsign(x[2]) != 0; };
+  if (R.size == 1) {
+    if (!nonzero3(a)) return std::nullopt;
+  } else if (R.size == 2) {
+    const V3<Fl> e = c.dm(F, R.s[1].id, R.s[0].id);
+    if (fsign(dot(R.s[1].fl, e)) != 1 || fsign(dot(a, e)) != -1 || !nonzero3(cross(e, a))) return std::nullopt;
+  } else {
+    const V3<Fl> n = cross(c.dm(F, R.s[1].id, R.s[0].id), c.dm(F, R.s[2].id, R.s[0].id));
+    for (int t = 0; t < 3; ++t)
+      if (fsign(dot(n, cross(R.s[(t + 1) % 3].fl, R.s[(t + 2) % 3].fl))) != 1) return std::nullopt;
+    const int h = fsign(dot(n, a));
+    if (h == 0) return std::nullopt;
+    R.tri_sign = h;
+    if (np == 2) {  // the other diagonal: from the missing corner D to its opposite O
+      PairId D{-1, -1};
+      for (int x = 0; x < 2; ++x)
+        for (int y = 0; y < 2; ++y) {
+          bool in = false;
+          for (int k = 0; k < 3; ++k) in = in || R.s[k].id == PairId{sp[x], sq[y]};
+          if (!in) D = {sp[x], sq[y]};
+        }
+      const PairId O{D.i == sp[0] ? sp[1] : sp[0], D.j == sq[0] ? sq[1] : sq[0]};
+      if (fsign(dot(n, cross(c.m(F, D), c.m(F, O)))) == 0) return std::nullopt;
+    }
+  }
+  // (c) the supporting plane, strictly, at every vertex of S_P and S_Q.
+  const Dir U{&c, R.size, {R.s[0], R.size > 1 ? R.s[1] : Member{}, R.size > 2 ? R.s[2] : Member{}}, R.tri_sign};
+  const V3<Fl> Ufl = U(F);
+  for (int x = 0; x < np; ++x)
+    for (int e = aP.start[sp[x]]; e < aP.start[sp[x] + 1]; ++e) {
+      const int k = aP.nbr[e];
+      if (std::find(sp, sp + np, k) != sp + np) continue;
+      if (fsign(dot(Ufl, sub(c.pvec(F, k), c.pvec(F, sp[x])))) != 1) return std::nullopt;
+    }
+  for (int y = 0; y < nq; ++y)
+    for (int e = aQ.start[sq[y]]; e < aQ.start[sq[y] + 1]; ++e) {
+      const int k = aQ.nbr[e];
+      if (std::find(sq, sq + nq, k) != sq + nq) continue;
+      if (fsign(dot(Ufl, c.dm(F, PairId{0, k}, PairId{0, sq[y]}))) != 1) return std::nullopt;
+    }
+  return R;
+}
+
 LineTouch line_touch_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel, const Vec3& d) {
   const PolytopeData& PD = data_of(Pp);
   const PolytopeData& QD = data_of(Qp);
@@ -529,15 +666,58 @@ LineTouch line_touch_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp, con
 
 Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel,
                               const Eigen::Matrix3d& Rp, const Vec3& tp_world) {
+  return signed_distance_gjk(Pp, Qp, rel, Rp, tp_world, SignedDistancePath{}, nullptr);
+}
+
+Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel,
+                              const Eigen::Matrix3d& Rp, const Vec3& tp_world, const SignedDistancePath& path,
+                              bool* fast_used) {
   const PolytopeData& PD = data_of(Pp);
   const PolytopeData& QD = data_of(Qp);
   const VertexAdjacency& aP = vertex_adjacency(PD);
   const VertexAdjacency& aQ = vertex_adjacency(QD);
   const Ctx c{PD, QD, rel};
 
-  const GjkResult g = gjk_loop(c, aP, aQ);
+  GjkResult g;
+  std::optional<Reduced> fast;
+  if (path.fast) fast = gjk_fast(c, aP, aQ, path.margin);
+  if (fast_used) *fast_used = fast.has_value();
+  if (fast)
+    g.X = *fast;
+  else
+    g = gjk_loop(c, aP, aQ);
   Reduced X = g.X;
   const bool contact = g.contact;
+  // Apart: S in a canonical order (by (i, j)), so that every path ending on the same set S gives
+  // the same bits; V: the simplex the value and normal are computed on — S itself, except on a
+  // parallelogram face of M (two P and two Q vertices: an edge–edge closest pair) where any
+  // triangle of three corners may hold w, all with the normal ±(e_P × e_Q): the corners
+  // (i1, j1), (i1, j2), (i2, j1) (i1 < i2, j1 < j2) are used (the triangle need not hold w).
+  bool edge_edge = false;
+  Reduced V = X;
+  if (!contact) {
+    for (int k = 1; k < X.size; ++k)  // insertion sort by (i, j)
+      for (int l = k; l > 0 && std::pair(X.s[l].id.i, X.s[l].id.j) < std::pair(X.s[l - 1].id.i, X.s[l - 1].id.j); --l)
+        std::swap(X.s[l], X.s[l - 1]);
+    V = X;
+    if (X.size == 3) {
+      const int i1 = X.s[0].id.i, i2 = X.s[2].id.i;
+      int j1 = X.s[0].id.j, j2 = j1;
+      for (int k = 0; k < 3; ++k) j1 = std::min(j1, X.s[k].id.j), j2 = std::max(j2, X.s[k].id.j);
+      const int ni = 1 + (X.s[1].id.i != i1) + (i2 != X.s[1].id.i);
+      const int nj = 1 + (X.s[0].id.j != X.s[1].id.j && X.s[1].id.j != X.s[2].id.j && X.s[0].id.j != X.s[2].id.j
+                              ? 2
+                              : X.s[0].id.j != X.s[1].id.j || X.s[1].id.j != X.s[2].id.j);
+      edge_edge = ni == 2 && nj == 2;
+      if (edge_edge) V.s[0] = c.member({i1, j1}), V.s[1] = c.member({i1, j2}), V.s[2] = c.member({i2, j1});
+      V.tri_sign = exact_sign([&](auto L) {
+        return dot(cross(c.dm(L, V.s[1].id, V.s[0].id), c.dm(L, V.s[2].id, V.s[0].id)), c.pt(L, V.s[0]));
+      });
+      X.tri_sign = exact_sign([&](auto L) {
+        return dot(cross(c.dm(L, X.s[1].id, X.s[0].id), c.dm(L, X.s[2].id, X.s[0].id)), c.pt(L, X.s[0]));
+      });
+    }
+  }
   Dir U{};
   auto set_dir = [&]() {
     U = Dir{&c, X.size, {X.s[0], X.size > 1 ? X.s[1] : Member{}, X.size > 2 ? X.s[2] : Member{}}, X.tri_sign};
@@ -573,6 +753,17 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
   }
   Vec3 wp = Vec3::Zero(), wq = Vec3::Zero();
   for (int k = 0; k < X.size; ++k) wp += lam[k] * c.approx_p(X.s[k].id.i), wq += lam[k] * c.approx_q(X.s[k].id.j);
+  if (edge_edge) {  // the closest points of the two edges (rounded), whichever triangle S is
+    const Vec3 p1 = c.approx_p(V.s[0].id.i), ep = c.approx_p(V.s[2].id.i) - p1;
+    const Vec3 q1 = c.approx_q(V.s[0].id.j), eq = c.approx_q(V.s[1].id.j) - q1;
+    const Vec3 w0 = p1 - q1;
+    const double A = ep.dot(ep), B = ep.dot(eq), C = eq.dot(eq), D = ep.dot(w0), E = eq.dot(w0);
+    const double den = A * C - B * B;
+    double sp = den > 0 ? std::clamp((B * E - C * D) / den, 0.0, 1.0) : 0.0;
+    const double tq = C > 0 ? std::clamp((B * sp + E) / C, 0.0, 1.0) : 0.0;
+    sp = A > 0 ? std::clamp((B * tq - D) / A, 0.0, 1.0) : 0.0;
+    wp = p1 + sp * ep, wq = q1 + tq * eq;
+  }
 
   if (contact) {
     // 0 ∈ M: σ decides overlap (−σ) or touching (0).
@@ -595,8 +786,9 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
     if (X.size == 4) X.size = 3;  // 0 on a face of the tetrahedron: report its first three pairs
     set_dir();
   } else {
-    // Distance |w_S| from accurately evaluated polynomials, one square root.
-    const Member& a = X.s[0];
+    // Distance |w_S| from accurately evaluated polynomials, one square root (on V: S, or the
+    // canonical triangle of an edge–edge parallelogram).
+    const Member& a = V.s[0];
     // Each factor from accurately evaluated polynomials of low degree (no squares, so tiny
     // distances do not underflow), norms by Eigen's stableNorm: within ~3 ulps.
     auto acc3 = [&](auto&& f) {
@@ -612,17 +804,18 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
     if (X.size == 1) {
       dist = acc3([&](auto L) { return c.pt(L, a); }).stableNorm();
     } else if (X.size == 2) {
-      const Member& b = X.s[1];
+      const Member& b = V.s[1];
       dist = acc3([&](auto L) { return cross(c.dm(L, b.id, a.id), c.pt(L, a)); }).stableNorm() /
              acc3([&](auto L) { return c.dm(L, b.id, a.id); }).stableNorm();
     } else {
-      auto n = [&](auto L) { return cross(c.dm(L, X.s[1].id, a.id), c.dm(L, X.s[2].id, a.id)); };
+      auto n = [&](auto L) { return cross(c.dm(L, V.s[1].id, a.id), c.dm(L, V.s[2].id, a.id)); };
       dist = std::abs(accurate_dd([&](auto L) { return dot(n(L), c.pt(L, a)); })) / acc3(n).stableNorm();
     }
     r.distance = r.lower_bound = r.upper_bound = dist;
     // normal = −U/|U|, U evaluated accurately per component.
     Vec3 u;
     {
+      U = Dir{&c, V.size, {V.s[0], V.size > 1 ? V.s[1] : Member{}, V.size > 2 ? V.s[2] : Member{}}, V.tri_sign};
       const auto ud = U(exact::LiftDD{});
       for (int k = 0; k < 3; ++k)
         u[k] = exact::dd_finite(ud[k]) && exact::safe_bound(ud[k].e) <= std::abs(ud[k].hi) * 0x1p-54
@@ -635,12 +828,13 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
     r.witness_p = Rp * wp + tp_world;
     r.witness_q = Rp * wq + tp_world;
   }
-  // Features: the distinct vertices of each side in S.
+  // Features: the distinct vertices of each side in S (ascending when apart).
   int vp[3], vq[3], np = 0, nq = 0;
   for (int k = 0; k < X.size; ++k) {
     if (std::find(vp, vp + np, X.s[k].id.i) == vp + np) vp[np++] = X.s[k].id.i;
     if (std::find(vq, vq + nq, X.s[k].id.j) == vq + nq) vq[nq++] = X.s[k].id.j;
   }
+  if (!contact) std::sort(vp, vp + np), std::sort(vq, vq + nq);
   const Vec3 wq_own = rel.R.transpose() * (wq - (rel.tq - rel.tp));
   r.feature_p = feature_of(Pp, vp, np, wp);
   r.feature_q = feature_of(Qp, vq, nq, wq_own);
@@ -1040,6 +1234,11 @@ int line_distance_compare(const CorePoints& P, const Pose3& pp, const CorePoints
                       return (L(rp) + L(rq)) * (L(rp) + L(rq)) * dd * dd;
                     },
                     [](auto L) { return V3<Num<decltype(L)>>{L(0.0), L(0.0), L(0.0)}; }, nullptr);
+}
+
+Distance3 signed_distance_path(const ConvexPolytope& P, const Pose3& pp, const ConvexPolytope& Q, const Pose3& pq,
+                               const SignedDistancePath& path, bool* fast_used) {
+  return signed_distance_gjk(P, Q, relative_pose(pp, pq), pp.matrix(), pp.translation, path, fast_used);
 }
 
 }  // namespace convex3
