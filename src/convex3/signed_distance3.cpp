@@ -263,18 +263,6 @@ class Johnson {
     return r;
   }
 
-  // The first subset (holding the newest point, smallest first) accepted by the tests in plain
-  // doubles: the floating GJK's step (gjk_fast), never trusted without its final certificate.
-  bool guess(const Member* X, int n, Reduced& r) const {
-    const int all = (1 << n) - 1, newest = 1 << (n - 1);
-    for (int size = 1; size <= n; ++size)
-      for (int mask = 1; mask <= all; ++mask) {
-        if (std::popcount(static_cast<unsigned>(mask)) != size || !(mask & newest)) continue;
-        if (accept<false>(X, n, mask, r)) return true;
-      }
-    return false;
-  }
-
  private:
   const Ctx& c_;
 
@@ -376,7 +364,10 @@ RelativePose relative_pose(const Pose3& pp, const Pose3& pq) {
 // triangle around vs — one whose plane holds every vertex of vs (exact orient3d on the
 // polytope's own vertices) — that best contains `wit` (the side's witness in its own frame;
 // rounded barycentric coordinates). O(Σ degrees of vs); no outer hierarchy needed.
-Feature3 feature_of(const ConvexPolytope& S, const int* vs, int nv, const Vec3& wit) {
+// `simple`: vs is known to be the whole support set (the fast path's certificate (c)), so two
+// vertices are a true edge and three a level-0 triangle — the answers of the general search,
+// without its orientation tests.
+Feature3 feature_of(const ConvexPolytope& S, const int* vs, int nv, const Vec3& wit, bool simple = false) {
   const PolytopeData& D = data_of(S);
   if (nv == 1) return {FeatureKind3::Vertex, vs[0]};
   const DKLevel& L0 = D.levels[0];
@@ -388,6 +379,18 @@ Feature3 feature_of(const ConvexPolytope& S, const int* vs, int nv, const Vec3& 
       h = L0.ccw(h);
     } while (h != h0);
   };
+  if (simple) {
+    int found = -1;
+    around(vs[0], [&](int h) {
+      if (nv == 2 && L0.target(h) == vs[1]) found = h;
+      if (nv == 3) {
+        const auto& T = D.tris[h / 3];
+        auto has = [&](int x) { return T[0] == x || T[1] == x || T[2] == x; };
+        if (has(vs[1]) && has(vs[2])) found = h / 3;
+      }
+    });
+    if (found >= 0) return {nv == 2 ? FeatureKind3::Edge : FeatureKind3::Face, found};
+  }
   if (nv == 2) {
     int edge = -1;
     around(vs[0], [&](int h) {
@@ -550,21 +553,87 @@ GjkResult gjk_loop(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacenc
 // normal ±(e_P × e_Q), the value's canonical form in finish_distance), so both paths give the
 // same bits. Any failed test (a sign the filter cannot certify, a coplanar or parallel feature,
 // contact, no convergence in 48 steps) returns nullopt: the exact loop answers.
+// Closest point v of conv(m[0..n)) to 0 in doubles (n ≤ 4; Ericson, Real-Time Collision
+// Detection §5.1.5–5.1.6), the simplex reduced to the vertices of the face holding it. False
+// when 0 seems inside a tetrahedron or the tetrahedron is flat (the exact loop then answers).
+bool closest_simplex_double(PairId* id, Vec3* m, int& n, Vec3& v) {
+  auto keep = [&](std::initializer_list<int> ks) {
+    PairId i2[4];
+    Vec3 m2[4];
+    int k = 0;
+    for (int x : ks) i2[k] = id[x], m2[k] = m[x], ++k;
+    for (int x = 0; x < k; ++x) id[x] = i2[x], m[x] = m2[x];
+    n = k;
+  };
+  if (n == 1) {
+    v = m[0];
+    return true;
+  }
+  if (n == 2) {
+    const Vec3 ab = m[1] - m[0];
+    const double t = -m[0].dot(ab), l = ab.squaredNorm();
+    if (t <= 0) return keep({0}), v = m[0], true;
+    if (t >= l) return keep({1}), v = m[1], true;
+    v = m[0] + (t / l) * ab;
+    return true;
+  }
+  // Closest point of triangle (x, y, z) to 0: the point and the kept subset (indices into m).
+  auto tri = [&](int x, int y, int z, Vec3& out, int* ks, int& nk) {
+    const Vec3 &a = m[x], &b = m[y], &c = m[z];
+    const Vec3 ab = b - a, ac = c - a;
+    const double d1 = -ab.dot(a), d2 = -ac.dot(a);
+    if (d1 <= 0 && d2 <= 0) return out = a, ks[0] = x, nk = 1, void();
+    const double d3 = -ab.dot(b), d4 = -ac.dot(b);
+    if (d3 >= 0 && d4 <= d3) return out = b, ks[0] = y, nk = 1, void();
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) return out = a + (d1 / (d1 - d3)) * ab, ks[0] = x, ks[1] = y, nk = 2, void();
+    const double d5 = -ab.dot(c), d6 = -ac.dot(c);
+    if (d6 >= 0 && d5 <= d6) return out = c, ks[0] = z, nk = 1, void();
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) return out = a + (d2 / (d2 - d6)) * ac, ks[0] = x, ks[1] = z, nk = 2, void();
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
+      return out = b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b), ks[0] = y, ks[1] = z, nk = 2, void();
+    const double den = 1 / (va + vb + vc);
+    out = a + (vb * den) * ab + (vc * den) * ac;
+    ks[0] = x, ks[1] = y, ks[2] = z, nk = 3;
+  };
+  int ks[3], nk = 0;
+  if (n == 3) {
+    tri(0, 1, 2, v, ks, nk);
+  } else {
+    const int F[4][4] = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {1, 3, 2, 0}};  // face, opposite vertex
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& f : F) {
+      const Vec3 nf = (m[f[1]] - m[f[0]]).cross(m[f[2]] - m[f[0]]);
+      const double so = -nf.dot(m[f[0]]), sd = nf.dot(m[f[3]] - m[f[0]]);
+      if (!(sd != 0)) return false;  // flat (or NaN)
+      if (!(so * sd < 0)) continue;   // 0 on the tetrahedron's side of this face
+      Vec3 x;
+      int k2[3], n2;
+      tri(f[0], f[1], f[2], x, k2, n2);
+      if (x.squaredNorm() < best) best = x.squaredNorm(), v = x, nk = n2, std::copy(k2, k2 + 3, ks);
+    }
+    if (nk == 0) return false;  // 0 inside: contact
+  }
+  if (nk == 1) keep({ks[0]});
+  if (nk == 2) keep({ks[0], ks[1]});
+  if (nk == 3) keep({ks[0], ks[1], ks[2]});
+  return true;
+}
+
 std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacency& aQ, double margin) {
+  if (c.proj || c.RpT) return std::nullopt;  // plain signed distance only
   const PolytopeData& PD = c.P;
   const PolytopeData& QD = c.Q;
   const RelativePose& rel = c.rel;
-  if (c.proj || c.RpT) return std::nullopt;  // plain signed distance only
-  const Johnson johnson(c);
   auto fsign = [margin](Fl x) {
     const double b = exact::safe_bound(x.e) * margin;
     return x.v > b ? 1 : x.v < -b ? -1 : 0;  // 0: not certified (or NaN)
   };
-  auto approx_member = [&](PairId s) {
-    const Vec3 m = c.approx_p(s.i) - c.approx_q(s.j);
-    return Member{s, {Fl{m[0], 0}, Fl{m[1], 0}, Fl{m[2], 0}}};
-  };
-  Vec3 v = aP.centroid - (rel.R * aQ.centroid + (rel.tq - rel.tp));
+  const Vec3 tqp = rel.tq - rel.tp;
+  auto approx = [&](PairId s) { return Vec3(PD.v[s.i] - (rel.R * QD.v[s.j] + tqp)); };
+  Vec3 v = aP.centroid - (rel.R * aQ.centroid + tqp);
   if (!v.allFinite() || v == Vec3::Zero()) v = Vec3::UnitX();
   auto support = [&](const Vec3& u, int i0, int j0) {
     const Vec3 uq = rel.R.transpose() * u;
@@ -572,26 +641,24 @@ std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const V
                   climb_rounded(QD, aQ, uq, j0 >= 0 ? j0 : seed_vertex(aQ, uq))};
   };
   PairId s = support(v, -1, -1);
-  Reduced X;
-  X.size = 1;
-  X.s[0] = approx_member(s);
+  PairId ids[4] = {s};
+  Vec3 ms[4] = {approx(s)};
+  int n = 1;
+  v = ms[0];
   for (int iter = 0;; ++iter) {
-    if (iter == 48) return std::nullopt;
-    const Dir U{&c, X.size, {X.s[0], X.size > 1 ? X.s[1] : Member{}, X.size > 2 ? X.s[2] : Member{}}, X.tri_sign};
-    const V3<double> ud = U(LiftD{});
-    const Vec3 u(ud[0], ud[1], ud[2]);
-    if (!u.allFinite() || u == Vec3::Zero()) return std::nullopt;
-    s = support(u, s.i, s.j);
+    if (iter == 48 || !v.allFinite() || v == Vec3::Zero()) return std::nullopt;
+    s = support(v, s.i, s.j);
     bool dup = false;
-    for (int k = 0; k < X.size; ++k) dup = dup || X.s[k].id == s;
-    if (dup || !(dot(ud, c.dm(LiftD{}, s, X.s[0].id)) < 0)) break;
-    Member Y[4];
-    for (int k = 0; k < X.size; ++k) Y[k] = X.s[k];
-    Y[X.size] = approx_member(s);
-    Reduced r;
-    if (!johnson.guess(Y, X.size + 1, r) || r.contact || r.size < 1 || r.size > 3) return std::nullopt;
-    X = r;
+    for (int k = 0; k < n; ++k) dup = dup || ids[k] == s;
+    if (dup) break;
+    const Vec3 x = approx(s);
+    if (!(x.dot(v) < v.squaredNorm())) break;  // not strictly closer than the plane through v
+    ids[n] = s, ms[n] = x, ++n;
+    if (!closest_simplex_double(ids, ms, n, v)) return std::nullopt;
   }
+  Reduced X;
+  X.size = n;
+  for (int k = 0; k < n; ++k) X.s[k].id = ids[k];
   // (a) the pattern of S.
   int sp[3], sq[3], np = 0, nq = 0;
   for (int k = 0; k < X.size; ++k) {
@@ -632,20 +699,34 @@ std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const V
       if (fsign(dot(n, cross(c.m(F, D), c.m(F, O)))) == 0) return std::nullopt;
     }
   }
-  // (c) the supporting plane, strictly, at every vertex of S_P and S_Q.
+  // (c) the supporting plane, strictly, at every vertex of S_P and S_Q. U enclosed by Fl once; in
+  // Q's frame W = Rᵀ U (R as the doubles it holds: exact semantics). Each sign is then
+  // w·d for d = x − y the rounded edge vector of the adjacency (d_c = (x_c − y_c)(1 + θ),
+  // |θ| ≤ u): |w·(x − y) − fl(w_v·d)| ≤ γ₃ S + 1.01u S + (1 + 1.01u) E with S = Σ|w_v,c d_c| and
+  // E = Σ e_c |d_c| (e: the Fl bound of w); bounded by 8u·S + (1 + 4u)·E, inflated by (1 + 16u)
+  // for its own rounding plus an underflow term (exact::kTiny).
   const Dir U{&c, R.size, {R.s[0], R.size > 1 ? R.s[1] : Member{}, R.size > 2 ? R.s[2] : Member{}}, R.tri_sign};
   const V3<Fl> Ufl = U(F);
-  for (int x = 0; x < np; ++x)
+  V3<Fl> Wfl;
+  for (int k = 0; k < 3; ++k)
+    Wfl[k] = F(rel.R(0, k)) * Ufl[0] + F(rel.R(1, k)) * Ufl[1] + F(rel.R(2, k)) * Ufl[2];
+  auto edge_sign = [margin](const V3<Fl>& w, double dx, double dy, double dz) {
+    const double val = w[0].v * dx + w[1].v * dy + w[2].v * dz;
+    const double S = std::abs(w[0].v * dx) + std::abs(w[1].v * dy) + std::abs(w[2].v * dz);
+    const double E = w[0].e * std::abs(dx) + w[1].e * std::abs(dy) + w[2].e * std::abs(dz);
+    const double b = ((8 * exact::kUnit) * S + (1 + 4 * exact::kUnit) * E) * (1 + 16 * exact::kUnit) * margin +
+                     exact::kTiny * margin;
+    return val > b ? 1 : val < -b ? -1 : 0;
+  };
+  for (int x = 0; x < np; ++x)  // U·(p_k − p_s) > 0
     for (int e = aP.start[sp[x]]; e < aP.start[sp[x] + 1]; ++e) {
-      const int k = aP.nbr[e];
-      if (std::find(sp, sp + np, k) != sp + np) continue;
-      if (fsign(dot(Ufl, sub(c.pvec(F, k), c.pvec(F, sp[x])))) != 1) return std::nullopt;
+      if (std::find(sp, sp + np, aP.nbr[e]) != sp + np) continue;
+      if (edge_sign(Ufl, aP.dx[e], aP.dy[e], aP.dz[e]) != 1) return std::nullopt;
     }
-  for (int y = 0; y < nq; ++y)
+  for (int y = 0; y < nq; ++y)  // U·(q'_t − q'_k) = W·(q_t − q_k) > 0
     for (int e = aQ.start[sq[y]]; e < aQ.start[sq[y] + 1]; ++e) {
-      const int k = aQ.nbr[e];
-      if (std::find(sq, sq + nq, k) != sq + nq) continue;
-      if (fsign(dot(Ufl, c.dm(F, PairId{0, k}, PairId{0, sq[y]}))) != 1) return std::nullopt;
+      if (std::find(sq, sq + nq, aQ.nbr[e]) != sq + nq) continue;
+      if (edge_sign(Wfl, aQ.dx[e], aQ.dy[e], aQ.dz[e]) != -1) return std::nullopt;
     }
   return R;
 }
@@ -836,8 +917,8 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
   }
   if (!contact) std::sort(vp, vp + np), std::sort(vq, vq + nq);
   const Vec3 wq_own = rel.R.transpose() * (wq - (rel.tq - rel.tp));
-  r.feature_p = feature_of(Pp, vp, np, wp);
-  r.feature_q = feature_of(Qp, vq, nq, wq_own);
+  r.feature_p = feature_of(Pp, vp, np, wp, fast.has_value());
+  r.feature_q = feature_of(Qp, vq, nq, wq_own, fast.has_value());
   return r;
 }
 
