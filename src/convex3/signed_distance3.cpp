@@ -1004,10 +1004,12 @@ std::optional<Cast3> shape_cast_certified(const ConvexPolytope& Pp, const Convex
     }
     const PairId p = support(v);
     const Vec3 x = lambda * d, w = x - approx(p);
+    bool advanced = false;
     if (v.dot(w) > 0) {
       if (v.dot(d) >= 0) break;  // a proposed miss: certified below
       lambda -= v.dot(w) / v.dot(d);
       nlast = v;
+      advanced = true;
     }
     bool dup = false;
     for (int k = 0; k < ny; ++k) dup = dup || Y[k] == p;
@@ -1021,7 +1023,10 @@ std::optional<Cast3> shape_cast_certified(const ConvexPolytope& Pp, const Convex
       if (cl.mask >> k & 1) Y[m++] = Y[k];
     ny = m;
     v = cl.v;
-    if (dup && v.squaredNorm() > std::pow(0x1p-40 * scale, 2)) break;  // no progress
+    if (dup && !advanced && v.squaredNorm() > std::pow(0x1p-40 * scale, 2)) {  // no progress
+      hit = v.squaredNorm() <= std::pow(0x1p-26 * scale, 2);  // converged up to rounding: propose Y
+      break;
+    }
   }
   // Exact certificates. Lifted d for the predicates.
   auto dl = [&](auto L) { return V3<Num<decltype(L)>>{L(d[0]), L(d[1]), L(d[2])}; };
