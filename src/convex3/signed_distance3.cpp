@@ -881,21 +881,54 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
                    : accurate_dd([&](auto L) { return f(L)[k]; });
       return r;
     };
-    double dist;
-    if (X.size == 1) {
-      dist = acc3([&](auto L) { return c.pt(L, a); }).stableNorm();
-    } else if (X.size == 2) {
-      const Member& b = V.s[1];
-      dist = acc3([&](auto L) { return cross(c.dm(L, b.id, a.id), c.pt(L, a)); }).stableNorm() /
-             acc3([&](auto L) { return c.dm(L, b.id, a.id); }).stableNorm();
-    } else {
-      auto n = [&](auto L) { return cross(c.dm(L, V.s[1].id, a.id), c.dm(L, V.s[2].id, a.id)); };
-      dist = std::abs(accurate_dd([&](auto L) { return dot(n(L), c.pt(L, a)); })) / acc3(n).stableNorm();
-    }
-    r.distance = r.lower_bound = r.upper_bound = dist;
-    // normal = −U/|U|, U evaluated accurately per component.
+    // First the double-double values each used once (the same operations as below, so the same
+    // bits when every bound holds); the general evaluation (exact tiers) otherwise.
+    double dist = 0;
     Vec3 u;
+    bool done = false;
     {
+      const exact::LiftDD D;
+      auto ok = [](const exact::DD& x) {
+        return exact::dd_finite(x) && exact::safe_bound(x.e) <= std::abs(x.hi) * 0x1p-54;
+      };
+      auto hi3 = [&](const V3<exact::DD>& x, Vec3& out) {
+        for (int k = 0; k < 3; ++k) {
+          if (!ok(x[k])) return false;
+          out[k] = x[k].hi;
+        }
+        return true;
+      };
+      const V3<exact::DD> aD = c.pt(D, a);
+      if (V.size == 1) {
+        done = hi3(aD, u);
+        dist = u.stableNorm();
+      } else if (V.size == 2) {
+        const V3<exact::DD> eD = c.dm(D, V.s[1].id, a.id);
+        const V3<exact::DD> UD = sub(scale(dot(eD, eD), aD), scale(dot(aD, eD), eD));
+        Vec3 x, e;
+        done = hi3(cross(eD, aD), x) && hi3(eD, e) && hi3(UD, u);
+        dist = x.stableNorm() / e.stableNorm();
+      } else {
+        const V3<exact::DD> nD = cross(c.dm(D, V.s[1].id, a.id), c.dm(D, V.s[2].id, a.id));
+        const exact::DD naD = dot(nD, aD);
+        Vec3 nv;
+        done = ok(naD) && hi3(nD, nv);
+        dist = std::abs(naD.hi) / nv.stableNorm();
+        u = V.tri_sign > 0 ? nv : Vec3(-nv);
+      }
+    }
+    if (!done) {
+      if (X.size == 1) {
+        dist = acc3([&](auto L) { return c.pt(L, a); }).stableNorm();
+      } else if (X.size == 2) {
+        const Member& b = V.s[1];
+        dist = acc3([&](auto L) { return cross(c.dm(L, b.id, a.id), c.pt(L, a)); }).stableNorm() /
+               acc3([&](auto L) { return c.dm(L, b.id, a.id); }).stableNorm();
+      } else {
+        auto n = [&](auto L) { return cross(c.dm(L, V.s[1].id, a.id), c.dm(L, V.s[2].id, a.id)); };
+        dist = std::abs(accurate_dd([&](auto L) { return dot(n(L), c.pt(L, a)); })) / acc3(n).stableNorm();
+      }
+      // normal = −U/|U|, U evaluated accurately per component.
       U = Dir{&c, V.size, {V.s[0], V.size > 1 ? V.s[1] : Member{}, V.size > 2 ? V.s[2] : Member{}}, V.tri_sign};
       const auto ud = U(exact::LiftDD{});
       for (int k = 0; k < 3; ++k)
@@ -903,6 +936,7 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
                    ? ud[k].hi
                    : accurate_dd([&](auto L) { return U(L)[k]; });
     }
+    r.distance = r.lower_bound = r.upper_bound = dist;
     const Vec3 nl = -u.stableNormalized();
     r.normal = Rp * nl;
     r.translation = Vec3::Zero() - r.distance * r.normal;  // as in 2D: no -0 components
