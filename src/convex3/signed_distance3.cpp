@@ -553,10 +553,33 @@ GjkResult gjk_loop(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacenc
 // normal ±(e_P × e_Q), the value's canonical form in finish_distance), so both paths give the
 // same bits. Any failed test (a sign the filter cannot certify, a coplanar or parallel feature,
 // contact, no convergence in 48 steps) returns nullopt: the exact loop answers.
+// Closest point of the triangle (m[x], m[y], m[z]) to 0 in doubles (Ericson §5.1.5): the point
+// and the vertices of the face holding it (indices into m).
+static void closest_tri_double(const Vec3* m, int x, int y, int z, Vec3& out, int* ks, int& nk) {
+  const Vec3 &a = m[x], &b = m[y], &c = m[z];
+  const Vec3 ab = b - a, ac = c - a;
+  const double d1 = -ab.dot(a), d2 = -ac.dot(a);
+  if (d1 <= 0 && d2 <= 0) return out = a, ks[0] = x, nk = 1, void();
+  const double d3 = -ab.dot(b), d4 = -ac.dot(b);
+  if (d3 >= 0 && d4 <= d3) return out = b, ks[0] = y, nk = 1, void();
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return out = a + (d1 / (d1 - d3)) * ab, ks[0] = x, ks[1] = y, nk = 2, void();
+  const double d5 = -ab.dot(c), d6 = -ac.dot(c);
+  if (d6 >= 0 && d5 <= d6) return out = c, ks[0] = z, nk = 1, void();
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return out = a + (d2 / (d2 - d6)) * ac, ks[0] = x, ks[1] = z, nk = 2, void();
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
+    return out = b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b), ks[0] = y, ks[1] = z, nk = 2, void();
+  const double den = 1 / (va + vb + vc);
+  out = a + (vb * den) * ab + (vc * den) * ac;
+  ks[0] = x, ks[1] = y, ks[2] = z, nk = 3;
+}
+
 // Closest point v of conv(m[0..n)) to 0 in doubles (n ≤ 4; Ericson, Real-Time Collision
 // Detection §5.1.5–5.1.6), the simplex reduced to the vertices of the face holding it. False
 // when 0 seems inside a tetrahedron or the tetrahedron is flat (the exact loop then answers).
-bool closest_simplex_double(PairId* id, Vec3* m, int& n, Vec3& v) {
+static bool closest_simplex_double(PairId* id, Vec3* m, int& n, Vec3& v) {
   auto keep = [&](std::initializer_list<int> ks) {
     PairId i2[4];
     Vec3 m2[4];
@@ -577,30 +600,9 @@ bool closest_simplex_double(PairId* id, Vec3* m, int& n, Vec3& v) {
     v = m[0] + (t / l) * ab;
     return true;
   }
-  // Closest point of triangle (x, y, z) to 0: the point and the kept subset (indices into m).
-  auto tri = [&](int x, int y, int z, Vec3& out, int* ks, int& nk) {
-    const Vec3 &a = m[x], &b = m[y], &c = m[z];
-    const Vec3 ab = b - a, ac = c - a;
-    const double d1 = -ab.dot(a), d2 = -ac.dot(a);
-    if (d1 <= 0 && d2 <= 0) return out = a, ks[0] = x, nk = 1, void();
-    const double d3 = -ab.dot(b), d4 = -ac.dot(b);
-    if (d3 >= 0 && d4 <= d3) return out = b, ks[0] = y, nk = 1, void();
-    const double vc = d1 * d4 - d3 * d2;
-    if (vc <= 0 && d1 >= 0 && d3 <= 0) return out = a + (d1 / (d1 - d3)) * ab, ks[0] = x, ks[1] = y, nk = 2, void();
-    const double d5 = -ab.dot(c), d6 = -ac.dot(c);
-    if (d6 >= 0 && d5 <= d6) return out = c, ks[0] = z, nk = 1, void();
-    const double vb = d5 * d2 - d1 * d6;
-    if (vb <= 0 && d2 >= 0 && d6 <= 0) return out = a + (d2 / (d2 - d6)) * ac, ks[0] = x, ks[1] = z, nk = 2, void();
-    const double va = d3 * d6 - d5 * d4;
-    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
-      return out = b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b), ks[0] = y, ks[1] = z, nk = 2, void();
-    const double den = 1 / (va + vb + vc);
-    out = a + (vb * den) * ab + (vc * den) * ac;
-    ks[0] = x, ks[1] = y, ks[2] = z, nk = 3;
-  };
   int ks[3], nk = 0;
   if (n == 3) {
-    tri(0, 1, 2, v, ks, nk);
+    closest_tri_double(m, 0, 1, 2, v, ks, nk);
   } else {
     const int F[4][4] = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {1, 3, 2, 0}};  // face, opposite vertex
     double best = std::numeric_limits<double>::infinity();
@@ -611,7 +613,7 @@ bool closest_simplex_double(PairId* id, Vec3* m, int& n, Vec3& v) {
       if (!(so * sd < 0)) continue;   // 0 on the tetrahedron's side of this face
       Vec3 x;
       int k2[3], n2;
-      tri(f[0], f[1], f[2], x, k2, n2);
+      closest_tri_double(m, f[0], f[1], f[2], x, k2, n2);
       if (x.squaredNorm() < best) best = x.squaredNorm(), v = x, nk = n2, std::copy(k2, k2 + 3, ks);
     }
     if (nk == 0) return false;  // 0 inside: contact
@@ -967,7 +969,7 @@ struct Closest {
   double lam[4] = {0, 0, 0, 0};
   Vec3 v{0, 0, 0};
 };
-Closest closest_double(const Vec3* pts, int n) {
+Closest closest_double_lu(const Vec3* pts, int n) {
   Closest best;
   double best_d = std::numeric_limits<double>::infinity();
   for (int mask = 1; mask < (1 << n); ++mask) {
@@ -1004,6 +1006,54 @@ Closest closest_double(const Vec3* pts, int n) {
     }
   }
   return best;
+}
+
+// The same by Ericson's region tests (§5.1.5–5.1.6; closest_tri_double): a few dozen flops
+// instead of up to 15 small LU solves; a flat tetrahedron goes to closest_double_lu.
+Closest closest_double(const Vec3* pts, int n) {
+  Closest r;
+  if (n == 1) {
+    r.mask = 1, r.lam[0] = 1, r.v = pts[0];
+    return r;
+  }
+  if (n == 2) {
+    const Vec3 ab = pts[1] - pts[0];
+    const double t = -pts[0].dot(ab), l = ab.squaredNorm();
+    if (t <= 0) return r.mask = 1, r.lam[0] = 1, r.v = pts[0], r;
+    if (t >= l) return r.mask = 2, r.lam[1] = 1, r.v = pts[1], r;
+    r.mask = 3, r.lam[1] = t / l, r.lam[0] = 1 - r.lam[1], r.v = pts[0] + r.lam[1] * ab;
+    return r;
+  }
+  int ks[3], nk = 0;
+  if (n == 3) {
+    closest_tri_double(pts, 0, 1, 2, r.v, ks, nk);
+  } else {
+    const int F[4][4] = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {1, 3, 2, 0}};  // face, opposite vertex
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& f : F) {
+      const Vec3 nf = (pts[f[1]] - pts[f[0]]).cross(pts[f[2]] - pts[f[0]]);
+      const double so = -nf.dot(pts[f[0]]), sd = nf.dot(pts[f[3]] - pts[f[0]]);
+      if (!(sd != 0)) return closest_double_lu(pts, n);  // flat (or NaN)
+      if (!(so * sd < 0)) continue;
+      Vec3 x;
+      int k2[3], n2;
+      closest_tri_double(pts, f[0], f[1], f[2], x, k2, n2);
+      if (x.squaredNorm() < best) best = x.squaredNorm(), r.v = x, nk = n2, std::copy(k2, k2 + 3, ks);
+    }
+    if (nk == 0) {  // 0 inside: the whole tetrahedron, weights by signed volumes
+      auto det = [](const Vec3& a, const Vec3& b, const Vec3& c) { return a.dot(b.cross(c)); };
+      const double V = det(pts[1] - pts[0], pts[2] - pts[0], pts[3] - pts[0]);
+      for (int k = 0; k < 4; ++k) {
+        Vec3 p[4] = {pts[0], pts[1], pts[2], pts[3]};
+        p[k] = Vec3::Zero();
+        r.lam[k] = det(p[1] - p[0], p[2] - p[0], p[3] - p[0]) / V;
+      }
+      r.mask = 15, r.v = Vec3::Zero();
+      return r;
+    }
+  }
+  for (int k = 0; k < nk; ++k) r.mask |= 1 << ks[k];
+  return r;
 }
 
 }  // namespace
