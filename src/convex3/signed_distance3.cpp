@@ -38,6 +38,11 @@
 // Predicates: each sign is first evaluated from the simplex points cached as doubles with a
 // rigorous error bound (exact::Fl), then exact::exact_sign (double-double, expansions, GMP).
 //
+// Fast path (gjk_fast, tried first): the loop in plain doubles, then one filtered certificate
+// of its final simplex that also proves it non-degenerate (support faces exactly S's vertices),
+// so the exact loop could only have ended on the same S; the value is computed by the same code
+// on S in canonical order: the same bits (see gjk_fast). Uncertified → the exact loop.
+//
 // Result: witnesses = Σ λ_k p_{i_k} and Σ λ_k q'_{j_k} (λ rounded), normal = −U/|U| (from P
 // towards Q), features = the distinct P (Q) vertices of S: one vertex, an edge (a level-0
 // half-edge; a flat-facet diagonal is reported as a face), or a face (a level-0 triangle in
@@ -347,10 +352,11 @@ double accurate_dd(F&& f) {
   return exact::accurate_value(std::forward<F>(f));
 }
 
-RelativePose relative_pose(const Pose3& pp, const Pose3& pq) {
+RelativePose relative_pose(const Pose3& pp, const Pose3& pq, Eigen::Matrix3d* Rp_out = nullptr) {
   if (!pp.translation.allFinite()) throw InvalidInput("pose of P: non-finite translation");
   if (!pq.translation.allFinite()) throw InvalidInput("pose of Q: non-finite translation");
   const Eigen::Matrix3d Rp = pp.matrix(), Rq = pq.matrix();
+  if (Rp_out) *Rp_out = Rp;
   RelativePose r;
   r.R = Rp.transpose() * Rq;
   r.tq = Rp.transpose() * pq.translation;
@@ -1408,14 +1414,17 @@ int line_distance_compare(const CorePoints& P, const Pose3& pp, const CorePoints
 
 Distance3 signed_distance_path(const ConvexPolytope& P, const Pose3& pp, const ConvexPolytope& Q, const Pose3& pq,
                                const SignedDistancePath& path, bool* fast_used) {
-  return signed_distance_gjk(P, Q, relative_pose(pp, pq), pp.matrix(), pp.translation, path, fast_used);
+  Eigen::Matrix3d Rp;
+  const RelativePose rel = relative_pose(pp, pq, &Rp);
+  return signed_distance_gjk(P, Q, rel, Rp, pp.translation, path, fast_used);
 }
 
 }  // namespace convex3
 
 Distance3 signed_distance(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q, const Pose3& pose_q) {
-  const convex3::RelativePose rel = convex3::relative_pose(pose_p, pose_q);
-  return convex3::signed_distance_gjk(P, Q, rel, pose_p.matrix(), pose_p.translation);
+  Eigen::Matrix3d Rp;
+  const convex3::RelativePose rel = convex3::relative_pose(pose_p, pose_q, &Rp);
+  return convex3::signed_distance_gjk(P, Q, rel, Rp, pose_p.translation);
 }
 
 }  // namespace pendepth
