@@ -535,30 +535,7 @@ GjkResult gjk_loop(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacenc
 }
 
 // ---- Fast path: GJK in doubles, its final simplex certified once ---------------------------------
-// The loop of gjk_loop with every decision in plain doubles (supports by rounded climbs, Johnson's
-// subset by its double tests, improvement by the double sign): no error bounds until the end.
-// Its final simplex S is then accepted only by one certificate whose every sign is a filtered
-// one (exact::Fl: value and a rigorous bound of its error; `margin` scales the bound, 1 in the
-// library, 0 only in the test showing that the tests catch an unsound certificate):
-//  (a) S is non-degenerate: its distinct P vertices S_P and Q vertices S_Q have sizes
-//      (1,1), (2,1), (1,2) with |S| = |S_P| + |S_Q| − 1, or (3,1), (1,3), (2,2) with |S| = 3
-//      (so the members form a connected pattern: all S_P at one level of U·p, all S_Q at one
-//      level of U·q');
-//  (b) the projection w of 0 onto aff(S) lies in conv(S)'s relative interior (every barycentric
-//      numerator certified > 0), w ≠ 0 (a component of m_a, e × a, or n·a certified ≠ 0: 0 ∉ M),
-//      and for (2,2) not on the other diagonal of the parallelogram (n·(m_D × m_O) ≠ 0, D the
-//      fourth corner, O its opposite);
-//  (c) every neighbour k ∉ S_P of every s ∈ S_P has U·(p_k − p_s) certified > 0, and every
-//      neighbour k ∉ S_Q of every t ∈ S_Q has U·(q'_t − q'_k) certified > 0.
-// (c) makes each s a local, hence global (convexity, level-0 adjacency), minimiser of U·p and
-// S_P exactly the minimising face P_U (a larger face would have a boundary edge leaving S_P at
-// the same level); the same for Q'. So M ⊂ {U·x ≥ U·w}, w ∈ conv(S) ⊂ M: w is the closest point,
-// and the face of M it lies on is F = P_U ⊕ (−Q'_U) with vertex sets S_P, S_Q. With (a), (b) the
-// exact loop can only end on the same set S (a segment or triangle F holds w in its relative
-// interior only as itself; a parallelogram F holds it in the interior of triangles only, all with
-// normal ±(e_P × e_Q), the value's canonical form in finish_distance), so both paths give the
-// same bits. Any failed test (a sign the filter cannot certify, a coplanar or parallel feature,
-// contact, no convergence in 48 steps) returns nullopt: the exact loop answers.
+
 // Closest point of the triangle (m[x], m[y], m[z]) to 0 in doubles (Ericson §5.1.5): the point
 // and the vertices of the face holding it (indices into m).
 static void closest_tri_double(const Vec3* m, int x, int y, int z, Vec3& out, int* ks, int& nk) {
@@ -630,6 +607,31 @@ static bool closest_simplex_double(PairId* id, Vec3* m, int& n, Vec3& v) {
   return true;
 }
 
+// The loop of gjk_loop with every decision in plain doubles (supports by rounded climbs, the
+// closest point of the simplex by Ericson's region tests, improvement by the double sign): no
+// error bounds until the end. Its final simplex S is then accepted only by one certificate whose
+// every sign is a filtered one (exact::Fl: value and a rigorous bound of its error, or for the
+// edge signs of (c) a bound derived for that formula; `margin` scales the bounds: 1 in the
+// library, 0 only in the test showing that the tests catch an unsound certificate):
+//  (a) S is non-degenerate: its distinct P vertices S_P and Q vertices S_Q have sizes
+//      (1,1), (2,1), (1,2) with |S| = |S_P| + |S_Q| − 1, or (3,1), (1,3), (2,2) with |S| = 3
+//      (so the members form a connected pattern: all S_P at one level of U·p, all S_Q at one
+//      level of U·q');
+//  (b) the projection w of 0 onto aff(S) lies in conv(S)'s relative interior (every barycentric
+//      numerator certified > 0), w ≠ 0 (a component of m_a, e × a, or n·a certified ≠ 0: 0 ∉ M),
+//      and for (2,2) not on the other diagonal of the parallelogram (n·(m_D × m_O) ≠ 0, D the
+//      fourth corner, O its opposite);
+//  (c) every neighbour k ∉ S_P of every s ∈ S_P has U·(p_k − p_s) certified > 0, and every
+//      neighbour k ∉ S_Q of every t ∈ S_Q has U·(q'_t − q'_k) certified > 0.
+// (c) makes each s a local, hence global (convexity, level-0 adjacency), minimiser of U·p and
+// S_P exactly the minimising face P_U (a larger face would have a boundary edge leaving S_P at
+// the same level); the same for Q'. So M ⊂ {U·x ≥ U·w}, w ∈ conv(S) ⊂ M: w is the closest point,
+// and the face of M it lies on is F = P_U ⊕ (−Q'_U) with vertex sets S_P, S_Q. With (a), (b) the
+// exact loop can only end on the same set S (a segment or triangle F holds w in its relative
+// interior only as itself; a parallelogram F holds it in the interior of triangles only, all with
+// normal ±(e_P × e_Q), the value's canonical form in signed_distance_gjk), so both paths give the
+// same bits. Any failed test (a sign the filter cannot certify, a coplanar or parallel feature,
+// contact, no convergence in 48 steps) returns nullopt: the exact loop answers.
 std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacency& aQ, double margin) {
   if (c.proj || c.RpT) return std::nullopt;  // plain signed distance only
   const PolytopeData& PD = c.P;
