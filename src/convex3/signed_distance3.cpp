@@ -685,11 +685,14 @@ std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const V
   const LiftFl F;
   const V3<Fl> a = R.s[0].fl;
   auto nonzero3 = [&](const V3<Fl>& x) { return fsign(x[0]) != 0 || fsign(x[1]) != 0 || fsign(x[2]) != 0; };
+  V3<Fl> Ufl;  // S's direction U (Dir's polynomials, from the values at hand)
   if (R.size == 1) {
     if (!nonzero3(a)) return std::nullopt;
+    Ufl = a;
   } else if (R.size == 2) {
     const V3<Fl> e = c.dm(F, R.s[1].id, R.s[0].id);
     if (fsign(dot(R.s[1].fl, e)) != 1 || fsign(dot(a, e)) != -1 || !nonzero3(cross(e, a))) return std::nullopt;
+    Ufl = sub(scale(dot(e, e), a), scale(dot(a, e), e));
   } else {
     const V3<Fl> n = cross(c.dm(F, R.s[1].id, R.s[0].id), c.dm(F, R.s[2].id, R.s[0].id));
     for (int t = 0; t < 3; ++t)
@@ -697,6 +700,7 @@ std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const V
     const int h = fsign(dot(n, a));
     if (h == 0) return std::nullopt;
     R.tri_sign = h;
+    Ufl = h > 0 ? n : V3<Fl>{-n[0], -n[1], -n[2]};
     if (np == 2) {  // the other diagonal: from the missing corner D to its opposite O
       PairId D{-1, -1};
       for (int x = 0; x < 2; ++x)
@@ -715,8 +719,6 @@ std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const V
   // |θ| ≤ u): |w·(x − y) − fl(w_v·d)| ≤ γ₃ S + 1.01u S + (1 + 1.01u) E with S = Σ|w_v,c d_c| and
   // E = Σ e_c |d_c| (e: the Fl bound of w); bounded by 8u·S + (1 + 4u)·E, inflated by (1 + 16u)
   // for its own rounding plus an underflow term (exact::kTiny).
-  const Dir U{&c, R.size, {R.s[0], R.size > 1 ? R.s[1] : Member{}, R.size > 2 ? R.s[2] : Member{}}, R.tri_sign};
-  const V3<Fl> Ufl = U(F);
   V3<Fl> Wfl;
   for (int k = 0; k < 3; ++k)
     Wfl[k] = F(rel.R(0, k)) * Ufl[0] + F(rel.R(1, k)) * Ufl[1] + F(rel.R(2, k)) * Ufl[2];
