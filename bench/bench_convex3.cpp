@@ -51,6 +51,7 @@
 #include <pendepth/io.hpp>
 #include <pendepth/polytope.hpp>
 
+#include "convex3/distance_compare.hpp"
 #include "convex3/minimum_expand.hpp"
 #include "convex3/minkowski_facets.hpp"
 
@@ -1009,6 +1010,19 @@ DistFactory pendepth_distance() {
   };
 }
 
+// The exact GJK loop alone (the signed distance before its certified floating fast path; the
+// same answers bit for bit: tests/convex3/test_distance_fast.cpp).
+DistFactory pendepth_distance_exact() {
+  return [](const DistCase& c) -> DistFn {
+    return [&c](std::size_t i) {
+      const DistQuery& q = c.queries[i];
+      return pendepth::convex3::signed_distance_path(c.P[q.pair], Pose3(), c.Q[q.pair], q.pose,
+                                                     pendepth::convex3::SignedDistancePath{false, 1.0})
+          .distance;
+    };
+  };
+}
+
 #if PENDEPTH_BENCH_BULLET
 btTransform bt_transform(const Mat3& R, const Vec3& t) {
   return btTransform(btMatrix3x3(R(0, 0), R(0, 1), R(0, 2), R(1, 0), R(1, 1), R(1, 2), R(2, 0), R(2, 1), R(2, 2)),
@@ -1180,7 +1194,8 @@ void bm_cast(benchmark::State& state, CastFactory make) {
 }
 
 void register_benchmarks() {
-  std::vector<std::pair<std::string, DistFactory>> impls{{"pendepth", pendepth_distance()}};
+  std::vector<std::pair<std::string, DistFactory>> impls{{"pendepth", pendepth_distance()},
+                                                         {"pendepth_exact", pendepth_distance_exact()}};
 #if PENDEPTH_BENCH_BULLET
   impls.emplace_back("bullet_gjk", bullet_distance(true));
   impls.emplace_back("bullet_gjk2", bullet_distance(false));

@@ -138,7 +138,9 @@ if rows:
              "\\|P\\|, \\|Q\\|: mean hull vertices. expansion / σ < 1: σ_d faster than σ.")
 
 # Signed distance and shape cast of disjoint real hulls (issue 16): distance/<impl>/hulls, cast/<impl>/hulls.
-dist_impls = [("distance", "pendepth", "pendepth (exact)"), ("distance", "bullet_gjk", "Bullet `btGjkPairDetector`"),
+dist_impls = [("distance", "pendepth", "pendepth (exact)"),
+              ("distance", "pendepth_exact", "pendepth, exact GJK loop only (before the fast path)"),
+              ("distance", "bullet_gjk", "Bullet `btGjkPairDetector`"),
               ("distance", "bullet_gjk2", "Bullet `btGjkEpaSolver2::Distance`"), ("distance", "fcl_ccd", "FCL (libccd GJK)"),
               ("distance", "fcl_indep", "FCL (own GJK)"), ("cast", "pendepth", "pendepth (exact)"),
               ("cast", "bullet_gjk", "Bullet `btGjkConvexCast`")]

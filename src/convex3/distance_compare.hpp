@@ -5,6 +5,7 @@
 #include <pendepth/depth3.hpp>
 
 #include "convex3/flat3.hpp"
+#include "convex3/minkowski_facets.hpp"
 #include "convex3/polytope_data.hpp"
 
 #include <memory>
@@ -46,5 +47,24 @@ int distance_compare(const CorePoints& P, const Pose3& pp, const CorePoints& Q, 
 /// that direction) compared with r·|d_P|².
 int line_distance_compare(const CorePoints& P, const Pose3& pp, const CorePoints& Q, const Pose3& pq, const Vec3& d,
                           double rp, double rq);
+
+/// Which path answers signed_distance_gjk (signed_distance3.cpp), for tests and benchmarks: the
+/// floating GJK with its one certificate (`fast`, falling back to the exact loop when the
+/// certificate fails) or the exact loop alone; `margin` scales the certificate's error bounds
+/// (1: the proven bounds, as in the library; 0: plain floating signs — unsound, used only to
+/// show that the tests detect a certificate without its margin).
+struct SignedDistancePath {
+  bool fast = true;
+  double margin = 1.0;
+};
+
+/// signed_distance_gjk along `path`; `fast_used` (if non-null) tells whether the certified fast
+/// path answered.
+Distance3 signed_distance_gjk(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,
+                              const Eigen::Matrix3d& Rp, const Vec3& tp, const SignedDistancePath& path,
+                              bool* fast_used);
+/// The same from the poses (as pendepth::signed_distance).
+Distance3 signed_distance_path(const ConvexPolytope& P, const Pose3& pp, const ConvexPolytope& Q, const Pose3& pq,
+                               const SignedDistancePath& path, bool* fast_used = nullptr);
 
 }  // namespace pendepth::convex3

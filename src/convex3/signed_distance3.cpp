@@ -38,6 +38,11 @@
 // Predicates: each sign is first evaluated from the simplex points cached as doubles with a
 // rigorous error bound (exact::Fl), then exact::exact_sign (double-double, expansions, GMP).
 //
+// Fast path (gjk_fast, tried first): the loop in plain doubles, then one filtered certificate
+// of its final simplex that also proves it non-degenerate (support faces exactly S's vertices),
+// so the exact loop could only have ended on the same S; the value is computed by the same code
+// on S in canonical order: the same bits (see gjk_fast). Uncertified → the exact loop.
+//
 // Result: witnesses = Σ λ_k p_{i_k} and Σ λ_k q'_{j_k} (λ rounded), normal = −U/|U| (from P
 // towards Q), features = the distinct P (Q) vertices of S: one vertex, an edge (a level-0
 // half-edge; a flat-facet diagonal is reported as a face), or a face (a level-0 triangle in
@@ -347,10 +352,11 @@ double accurate_dd(F&& f) {
   return exact::accurate_value(std::forward<F>(f));
 }
 
-RelativePose relative_pose(const Pose3& pp, const Pose3& pq) {
+RelativePose relative_pose(const Pose3& pp, const Pose3& pq, Eigen::Matrix3d* Rp_out = nullptr) {
   if (!pp.translation.allFinite()) throw InvalidInput("pose of P: non-finite translation");
   if (!pq.translation.allFinite()) throw InvalidInput("pose of Q: non-finite translation");
   const Eigen::Matrix3d Rp = pp.matrix(), Rq = pq.matrix();
+  if (Rp_out) *Rp_out = Rp;
   RelativePose r;
   r.R = Rp.transpose() * Rq;
   r.tq = Rp.transpose() * pq.translation;
@@ -364,7 +370,10 @@ RelativePose relative_pose(const Pose3& pp, const Pose3& pq) {
 // triangle around vs — one whose plane holds every vertex of vs (exact orient3d on the
 // polytope's own vertices) — that best contains `wit` (the side's witness in its own frame;
 // rounded barycentric coordinates). O(Σ degrees of vs); no outer hierarchy needed.
-Feature3 feature_of(const ConvexPolytope& S, const int* vs, int nv, const Vec3& wit) {
+// `simple`: vs is known to be the whole support set (the fast path's certificate (c)), so two
+// vertices are a true edge and three a level-0 triangle — the answers of the general search,
+// without its orientation tests.
+Feature3 feature_of(const ConvexPolytope& S, const int* vs, int nv, const Vec3& wit, bool simple = false) {
   const PolytopeData& D = data_of(S);
   if (nv == 1) return {FeatureKind3::Vertex, vs[0]};
   const DKLevel& L0 = D.levels[0];
@@ -376,6 +385,18 @@ Feature3 feature_of(const ConvexPolytope& S, const int* vs, int nv, const Vec3& 
       h = L0.ccw(h);
     } while (h != h0);
   };
+  if (simple) {
+    int found = -1;
+    around(vs[0], [&](int h) {
+      if (nv == 2 && L0.target(h) == vs[1]) found = h;
+      if (nv == 3) {
+        const auto& T = D.tris[h / 3];
+        auto has = [&](int x) { return T[0] == x || T[1] == x || T[2] == x; };
+        if (has(vs[1]) && has(vs[2])) found = h / 3;
+      }
+    });
+    if (found >= 0) return {nv == 2 ? FeatureKind3::Edge : FeatureKind3::Face, found};
+  }
   if (nv == 2) {
     int edge = -1;
     around(vs[0], [&](int h) {
@@ -513,6 +534,215 @@ GjkResult gjk_loop(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacenc
   return {X, contact};
 }
 
+// ---- Fast path: GJK in doubles, its final simplex certified once ---------------------------------
+
+// Closest point of the triangle (m[x], m[y], m[z]) to 0 in doubles (Ericson §5.1.5): the point
+// and the vertices of the face holding it (indices into m).
+static void closest_tri_double(const Vec3* m, int x, int y, int z, Vec3& out, int* ks, int& nk) {
+  const Vec3 &a = m[x], &b = m[y], &c = m[z];
+  const Vec3 ab = b - a, ac = c - a;
+  const double d1 = -ab.dot(a), d2 = -ac.dot(a);
+  if (d1 <= 0 && d2 <= 0) return out = a, ks[0] = x, nk = 1, void();
+  const double d3 = -ab.dot(b), d4 = -ac.dot(b);
+  if (d3 >= 0 && d4 <= d3) return out = b, ks[0] = y, nk = 1, void();
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return out = a + (d1 / (d1 - d3)) * ab, ks[0] = x, ks[1] = y, nk = 2, void();
+  const double d5 = -ab.dot(c), d6 = -ac.dot(c);
+  if (d6 >= 0 && d5 <= d6) return out = c, ks[0] = z, nk = 1, void();
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return out = a + (d2 / (d2 - d6)) * ac, ks[0] = x, ks[1] = z, nk = 2, void();
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0)
+    return out = b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b), ks[0] = y, ks[1] = z, nk = 2, void();
+  const double den = 1 / (va + vb + vc);
+  out = a + (vb * den) * ab + (vc * den) * ac;
+  ks[0] = x, ks[1] = y, ks[2] = z, nk = 3;
+}
+
+// Closest point v of conv(m[0..n)) to 0 in doubles (n ≤ 4; Ericson, Real-Time Collision
+// Detection §5.1.5–5.1.6), the simplex reduced to the vertices of the face holding it. False
+// when 0 seems inside a tetrahedron or the tetrahedron is flat (the exact loop then answers).
+static bool closest_simplex_double(PairId* id, Vec3* m, int& n, Vec3& v) {
+  auto keep = [&](std::initializer_list<int> ks) {
+    PairId i2[4];
+    Vec3 m2[4];
+    int k = 0;
+    for (int x : ks) i2[k] = id[x], m2[k] = m[x], ++k;
+    for (int x = 0; x < k; ++x) id[x] = i2[x], m[x] = m2[x];
+    n = k;
+  };
+  if (n == 1) {
+    v = m[0];
+    return true;
+  }
+  if (n == 2) {
+    const Vec3 ab = m[1] - m[0];
+    const double t = -m[0].dot(ab), l = ab.squaredNorm();
+    if (t <= 0) return keep({0}), v = m[0], true;
+    if (t >= l) return keep({1}), v = m[1], true;
+    v = m[0] + (t / l) * ab;
+    return true;
+  }
+  int ks[3], nk = 0;
+  if (n == 3) {
+    closest_tri_double(m, 0, 1, 2, v, ks, nk);
+  } else {
+    const int F[4][4] = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {1, 3, 2, 0}};  // face, opposite vertex
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& f : F) {
+      const Vec3 nf = (m[f[1]] - m[f[0]]).cross(m[f[2]] - m[f[0]]);
+      const double so = -nf.dot(m[f[0]]), sd = nf.dot(m[f[3]] - m[f[0]]);
+      if (!(sd != 0)) return false;  // flat (or NaN)
+      if (!(so * sd < 0)) continue;   // 0 on the tetrahedron's side of this face
+      Vec3 x;
+      int k2[3], n2;
+      closest_tri_double(m, f[0], f[1], f[2], x, k2, n2);
+      if (x.squaredNorm() < best) best = x.squaredNorm(), v = x, nk = n2, std::copy(k2, k2 + 3, ks);
+    }
+    if (nk == 0) return false;  // 0 inside: contact
+  }
+  if (nk == 1) keep({ks[0]});
+  if (nk == 2) keep({ks[0], ks[1]});
+  if (nk == 3) keep({ks[0], ks[1], ks[2]});
+  return true;
+}
+
+// The loop of gjk_loop with every decision in plain doubles (supports by rounded climbs, the
+// closest point of the simplex by Ericson's region tests, improvement by the double sign): no
+// error bounds until the end. Its final simplex S is then accepted only by one certificate whose
+// every sign is a filtered one (exact::Fl: value and a rigorous bound of its error, or for the
+// edge signs of (c) a bound derived for that formula; `margin` scales the bounds: 1 in the
+// library, 0 only in the test showing that the tests catch an unsound certificate):
+//  (a) S is non-degenerate: its distinct P vertices S_P and Q vertices S_Q have sizes
+//      (1,1), (2,1), (1,2) with |S| = |S_P| + |S_Q| − 1, or (3,1), (1,3), (2,2) with |S| = 3
+//      (so the members form a connected pattern: all S_P at one level of U·p, all S_Q at one
+//      level of U·q');
+//  (b) the projection w of 0 onto aff(S) lies in conv(S)'s relative interior (every barycentric
+//      numerator certified > 0), w ≠ 0 (a component of m_a, e × a, or n·a certified ≠ 0: 0 ∉ M),
+//      and for (2,2) not on the other diagonal of the parallelogram (n·(m_D × m_O) ≠ 0, D the
+//      fourth corner, O its opposite);
+//  (c) every neighbour k ∉ S_P of every s ∈ S_P has U·(p_k − p_s) certified > 0, and every
+//      neighbour k ∉ S_Q of every t ∈ S_Q has U·(q'_t − q'_k) certified > 0.
+// (c) makes each s a local, hence global (convexity, level-0 adjacency), minimiser of U·p and
+// S_P exactly the minimising face P_U (a larger face would have a boundary edge leaving S_P at
+// the same level); the same for Q'. So M ⊂ {U·x ≥ U·w}, w ∈ conv(S) ⊂ M: w is the closest point,
+// and the face of M it lies on is F = P_U ⊕ (−Q'_U) with vertex sets S_P, S_Q. With (a), (b) the
+// exact loop can only end on the same set S (a segment or triangle F holds w in its relative
+// interior only as itself; a parallelogram F holds it in the interior of triangles only, all with
+// normal ±(e_P × e_Q), the value's canonical form in signed_distance_gjk), so both paths give the
+// same bits. Any failed test (a sign the filter cannot certify, a coplanar or parallel feature,
+// contact, no convergence in 48 steps) returns nullopt: the exact loop answers.
+std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacency& aQ, double margin) {
+  if (c.proj || c.RpT) return std::nullopt;  // plain signed distance only
+  const PolytopeData& PD = c.P;
+  const PolytopeData& QD = c.Q;
+  const RelativePose& rel = c.rel;
+  auto fsign = [margin](Fl x) {
+    const double b = exact::safe_bound(x.e) * margin;
+    return x.v > b ? 1 : x.v < -b ? -1 : 0;  // 0: not certified (or NaN)
+  };
+  const Vec3 tqp = rel.tq - rel.tp;
+  auto approx = [&](PairId s) { return Vec3(PD.v[s.i] - (rel.R * QD.v[s.j] + tqp)); };
+  Vec3 v = aP.centroid - (rel.R * aQ.centroid + tqp);
+  if (!v.allFinite() || v == Vec3::Zero()) v = Vec3::UnitX();
+  auto support = [&](const Vec3& u, int i0, int j0) {
+    const Vec3 uq = rel.R.transpose() * u;
+    return PairId{climb_rounded(PD, aP, -u, i0 >= 0 ? i0 : seed_vertex(aP, -u)),
+                  climb_rounded(QD, aQ, uq, j0 >= 0 ? j0 : seed_vertex(aQ, uq))};
+  };
+  PairId s = support(v, -1, -1);
+  PairId ids[4] = {s};
+  Vec3 ms[4] = {approx(s)};
+  int n = 1;
+  v = ms[0];
+  for (int iter = 0;; ++iter) {
+    if (iter == 48 || !v.allFinite() || v == Vec3::Zero()) return std::nullopt;
+    s = support(v, s.i, s.j);
+    bool dup = false;
+    for (int k = 0; k < n; ++k) dup = dup || ids[k] == s;
+    if (dup) break;
+    const Vec3 x = approx(s);
+    if (!(x.dot(v) < v.squaredNorm())) break;  // not strictly closer than the plane through v
+    ids[n] = s, ms[n] = x, ++n;
+    if (!closest_simplex_double(ids, ms, n, v)) return std::nullopt;
+  }
+  Reduced X;
+  X.size = n;
+  for (int k = 0; k < n; ++k) X.s[k].id = ids[k];
+  // (a) the pattern of S.
+  int sp[3], sq[3], np = 0, nq = 0;
+  for (int k = 0; k < X.size; ++k) {
+    if (std::find(sp, sp + np, X.s[k].id.i) == sp + np) sp[np++] = X.s[k].id.i;
+    if (std::find(sq, sq + nq, X.s[k].id.j) == sq + nq) sq[nq++] = X.s[k].id.j;
+  }
+  const bool ok_pattern = X.size == 3 ? (np == 3 && nq == 1) || (np == 1 && nq == 3) || (np == 2 && nq == 2)
+                                      : np + nq - 1 == X.size;
+  if (!ok_pattern) return std::nullopt;
+  // (b) with the members' filtered coordinates.
+  Reduced R;
+  R.size = X.size;
+  for (int k = 0; k < X.size; ++k) R.s[k] = c.member(X.s[k].id);
+  const LiftFl F;
+  const V3<Fl> a = R.s[0].fl;
+  auto nonzero3 = [&](const V3<Fl>& x) { return fsign(x[0]) != 0 || fsign(x[1]) != 0 || fsign(x[2]) != 0; };
+  V3<Fl> Ufl;  // S's direction U (Dir's polynomials, from the values at hand)
+  if (R.size == 1) {
+    if (!nonzero3(a)) return std::nullopt;
+    Ufl = a;
+  } else if (R.size == 2) {
+    const V3<Fl> e = c.dm(F, R.s[1].id, R.s[0].id);
+    if (fsign(dot(R.s[1].fl, e)) != 1 || fsign(dot(a, e)) != -1 || !nonzero3(cross(e, a))) return std::nullopt;
+    Ufl = sub(scale(dot(e, e), a), scale(dot(a, e), e));
+  } else {
+    const V3<Fl> n = cross(c.dm(F, R.s[1].id, R.s[0].id), c.dm(F, R.s[2].id, R.s[0].id));
+    for (int t = 0; t < 3; ++t)
+      if (fsign(dot(n, cross(R.s[(t + 1) % 3].fl, R.s[(t + 2) % 3].fl))) != 1) return std::nullopt;
+    const int h = fsign(dot(n, a));
+    if (h == 0) return std::nullopt;
+    R.tri_sign = h;
+    Ufl = h > 0 ? n : V3<Fl>{-n[0], -n[1], -n[2]};
+    if (np == 2) {  // the other diagonal: from the missing corner D to its opposite O
+      PairId D{-1, -1};
+      for (int x = 0; x < 2; ++x)
+        for (int y = 0; y < 2; ++y) {
+          bool in = false;
+          for (int k = 0; k < 3; ++k) in = in || R.s[k].id == PairId{sp[x], sq[y]};
+          if (!in) D = {sp[x], sq[y]};
+        }
+      const PairId O{D.i == sp[0] ? sp[1] : sp[0], D.j == sq[0] ? sq[1] : sq[0]};
+      if (fsign(dot(n, cross(c.m(F, D), c.m(F, O)))) == 0) return std::nullopt;
+    }
+  }
+  // (c) the supporting plane, strictly, at every vertex of S_P and S_Q. U enclosed by Fl once; in
+  // Q's frame W = Rᵀ U (R as the doubles it holds: exact semantics). Each sign is then
+  // w·d for d = x − y the rounded edge vector of the adjacency (d_c = (x_c − y_c)(1 + θ),
+  // |θ| ≤ u): |w·(x − y) − fl(w_v·d)| ≤ γ₃ S + 1.01u S + (1 + 1.01u) E with S = Σ|w_v,c d_c| and
+  // E = Σ e_c |d_c| (e: the Fl bound of w); bounded by 8u·S + (1 + 4u)·E, inflated by (1 + 16u)
+  // for its own rounding plus an underflow term (exact::kTiny).
+  V3<Fl> Wfl;
+  for (int k = 0; k < 3; ++k)
+    Wfl[k] = F(rel.R(0, k)) * Ufl[0] + F(rel.R(1, k)) * Ufl[1] + F(rel.R(2, k)) * Ufl[2];
+  auto edge_sign = [margin](const V3<Fl>& w, double dx, double dy, double dz) {
+    const double val = w[0].v * dx + w[1].v * dy + w[2].v * dz;
+    const double S = std::abs(w[0].v * dx) + std::abs(w[1].v * dy) + std::abs(w[2].v * dz);
+    const double E = w[0].e * std::abs(dx) + w[1].e * std::abs(dy) + w[2].e * std::abs(dz);
+    const double b = ((8 * exact::kUnit) * S + (1 + 4 * exact::kUnit) * E) * (1 + 16 * exact::kUnit) * margin +
+                     exact::kTiny * margin;
+    return val > b ? 1 : val < -b ? -1 : 0;
+  };
+  for (int x = 0; x < np; ++x)  // U·(p_k − p_s) > 0
+    for (int e = aP.start[sp[x]]; e < aP.start[sp[x] + 1]; ++e) {
+      if (std::find(sp, sp + np, aP.nbr[e]) != sp + np) continue;
+      if (edge_sign(Ufl, aP.dx[e], aP.dy[e], aP.dz[e]) != 1) return std::nullopt;
+    }
+  for (int y = 0; y < nq; ++y)  // U·(q'_t − q'_k) = W·(q_t − q_k) > 0
+    for (int e = aQ.start[sq[y]]; e < aQ.start[sq[y] + 1]; ++e) {
+      if (std::find(sq, sq + nq, aQ.nbr[e]) != sq + nq) continue;
+      if (edge_sign(Wfl, aQ.dx[e], aQ.dy[e], aQ.dz[e]) != -1) return std::nullopt;
+    }
+  return R;
+}
+
 LineTouch line_touch_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel, const Vec3& d) {
   const PolytopeData& PD = data_of(Pp);
   const PolytopeData& QD = data_of(Qp);
@@ -529,15 +759,58 @@ LineTouch line_touch_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp, con
 
 Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel,
                               const Eigen::Matrix3d& Rp, const Vec3& tp_world) {
+  return signed_distance_gjk(Pp, Qp, rel, Rp, tp_world, SignedDistancePath{}, nullptr);
+}
+
+Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel,
+                              const Eigen::Matrix3d& Rp, const Vec3& tp_world, const SignedDistancePath& path,
+                              bool* fast_used) {
   const PolytopeData& PD = data_of(Pp);
   const PolytopeData& QD = data_of(Qp);
   const VertexAdjacency& aP = vertex_adjacency(PD);
   const VertexAdjacency& aQ = vertex_adjacency(QD);
   const Ctx c{PD, QD, rel};
 
-  const GjkResult g = gjk_loop(c, aP, aQ);
+  GjkResult g;
+  std::optional<Reduced> fast;
+  if (path.fast) fast = gjk_fast(c, aP, aQ, path.margin);
+  if (fast_used) *fast_used = fast.has_value();
+  if (fast)
+    g.X = *fast;
+  else
+    g = gjk_loop(c, aP, aQ);
   Reduced X = g.X;
   const bool contact = g.contact;
+  // Apart: S in a canonical order (by (i, j)), so that every path ending on the same set S gives
+  // the same bits; V: the simplex the value and normal are computed on — S itself, except on a
+  // parallelogram face of M (two P and two Q vertices: an edge–edge closest pair) where any
+  // triangle of three corners may hold w, all with the normal ±(e_P × e_Q): the corners
+  // (i1, j1), (i1, j2), (i2, j1) (i1 < i2, j1 < j2) are used (the triangle need not hold w).
+  bool edge_edge = false;
+  Reduced V = X;
+  if (!contact) {
+    for (int k = 1; k < X.size; ++k)  // insertion sort by (i, j)
+      for (int l = k; l > 0 && std::pair(X.s[l].id.i, X.s[l].id.j) < std::pair(X.s[l - 1].id.i, X.s[l - 1].id.j); --l)
+        std::swap(X.s[l], X.s[l - 1]);
+    V = X;
+    if (X.size == 3) {
+      const int i1 = X.s[0].id.i, i2 = X.s[2].id.i;
+      int j1 = X.s[0].id.j, j2 = j1;
+      for (int k = 0; k < 3; ++k) j1 = std::min(j1, X.s[k].id.j), j2 = std::max(j2, X.s[k].id.j);
+      const int ni = 1 + (X.s[1].id.i != i1) + (i2 != X.s[1].id.i);
+      const int nj = 1 + (X.s[0].id.j != X.s[1].id.j && X.s[1].id.j != X.s[2].id.j && X.s[0].id.j != X.s[2].id.j
+                              ? 2
+                              : X.s[0].id.j != X.s[1].id.j || X.s[1].id.j != X.s[2].id.j);
+      edge_edge = ni == 2 && nj == 2;
+      if (edge_edge) V.s[0] = c.member({i1, j1}), V.s[1] = c.member({i1, j2}), V.s[2] = c.member({i2, j1});
+      V.tri_sign = exact_sign([&](auto L) {
+        return dot(cross(c.dm(L, V.s[1].id, V.s[0].id), c.dm(L, V.s[2].id, V.s[0].id)), c.pt(L, V.s[0]));
+      });
+      X.tri_sign = exact_sign([&](auto L) {
+        return dot(cross(c.dm(L, X.s[1].id, X.s[0].id), c.dm(L, X.s[2].id, X.s[0].id)), c.pt(L, X.s[0]));
+      });
+    }
+  }
   Dir U{};
   auto set_dir = [&]() {
     U = Dir{&c, X.size, {X.s[0], X.size > 1 ? X.s[1] : Member{}, X.size > 2 ? X.s[2] : Member{}}, X.tri_sign};
@@ -573,6 +846,17 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
   }
   Vec3 wp = Vec3::Zero(), wq = Vec3::Zero();
   for (int k = 0; k < X.size; ++k) wp += lam[k] * c.approx_p(X.s[k].id.i), wq += lam[k] * c.approx_q(X.s[k].id.j);
+  if (edge_edge) {  // the closest points of the two edges (rounded), whichever triangle S is
+    const Vec3 p1 = c.approx_p(V.s[0].id.i), ep = c.approx_p(V.s[2].id.i) - p1;
+    const Vec3 q1 = c.approx_q(V.s[0].id.j), eq = c.approx_q(V.s[1].id.j) - q1;
+    const Vec3 w0 = p1 - q1;
+    const double A = ep.dot(ep), B = ep.dot(eq), C = eq.dot(eq), D = ep.dot(w0), E = eq.dot(w0);
+    const double den = A * C - B * B;
+    double sp = den > 0 ? std::clamp((B * E - C * D) / den, 0.0, 1.0) : 0.0;
+    const double tq = C > 0 ? std::clamp((B * sp + E) / C, 0.0, 1.0) : 0.0;
+    sp = A > 0 ? std::clamp((B * tq - D) / A, 0.0, 1.0) : 0.0;
+    wp = p1 + sp * ep, wq = q1 + tq * eq;
+  }
 
   if (contact) {
     // 0 ∈ M: σ decides overlap (−σ) or touching (0).
@@ -595,8 +879,9 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
     if (X.size == 4) X.size = 3;  // 0 on a face of the tetrahedron: report its first three pairs
     set_dir();
   } else {
-    // Distance |w_S| from accurately evaluated polynomials, one square root.
-    const Member& a = X.s[0];
+    // Distance |w_S| from accurately evaluated polynomials, one square root (on V: S, or the
+    // canonical triangle of an edge–edge parallelogram).
+    const Member& a = V.s[0];
     // Each factor from accurately evaluated polynomials of low degree (no squares, so tiny
     // distances do not underflow), norms by Eigen's stableNorm: within ~3 ulps.
     auto acc3 = [&](auto&& f) {
@@ -608,42 +893,78 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
                    : accurate_dd([&](auto L) { return f(L)[k]; });
       return r;
     };
-    double dist;
-    if (X.size == 1) {
-      dist = acc3([&](auto L) { return c.pt(L, a); }).stableNorm();
-    } else if (X.size == 2) {
-      const Member& b = X.s[1];
-      dist = acc3([&](auto L) { return cross(c.dm(L, b.id, a.id), c.pt(L, a)); }).stableNorm() /
-             acc3([&](auto L) { return c.dm(L, b.id, a.id); }).stableNorm();
-    } else {
-      auto n = [&](auto L) { return cross(c.dm(L, X.s[1].id, a.id), c.dm(L, X.s[2].id, a.id)); };
-      dist = std::abs(accurate_dd([&](auto L) { return dot(n(L), c.pt(L, a)); })) / acc3(n).stableNorm();
-    }
-    r.distance = r.lower_bound = r.upper_bound = dist;
-    // normal = −U/|U|, U evaluated accurately per component.
+    // First the double-double values each used once (the same operations as below, so the same
+    // bits when every bound holds); the general evaluation (exact tiers) otherwise.
+    double dist = 0;
     Vec3 u;
+    bool done = false;
     {
+      const exact::LiftDD D;
+      auto ok = [](const exact::DD& x) {
+        return exact::dd_finite(x) && exact::safe_bound(x.e) <= std::abs(x.hi) * 0x1p-54;
+      };
+      auto hi3 = [&](const V3<exact::DD>& x, Vec3& out) {
+        for (int k = 0; k < 3; ++k) {
+          if (!ok(x[k])) return false;
+          out[k] = x[k].hi;
+        }
+        return true;
+      };
+      const V3<exact::DD> aD = c.pt(D, a);
+      if (V.size == 1) {
+        done = hi3(aD, u);
+        dist = u.stableNorm();
+      } else if (V.size == 2) {
+        const V3<exact::DD> eD = c.dm(D, V.s[1].id, a.id);
+        const V3<exact::DD> UD = sub(scale(dot(eD, eD), aD), scale(dot(aD, eD), eD));
+        Vec3 x, e;
+        done = hi3(cross(eD, aD), x) && hi3(eD, e) && hi3(UD, u);
+        dist = x.stableNorm() / e.stableNorm();
+      } else {
+        const V3<exact::DD> nD = cross(c.dm(D, V.s[1].id, a.id), c.dm(D, V.s[2].id, a.id));
+        const exact::DD naD = dot(nD, aD);
+        Vec3 nv;
+        done = ok(naD) && hi3(nD, nv);
+        dist = std::abs(naD.hi) / nv.stableNorm();
+        u = V.tri_sign > 0 ? nv : Vec3(-nv);
+      }
+    }
+    if (!done) {
+      if (X.size == 1) {
+        dist = acc3([&](auto L) { return c.pt(L, a); }).stableNorm();
+      } else if (X.size == 2) {
+        const Member& b = V.s[1];
+        dist = acc3([&](auto L) { return cross(c.dm(L, b.id, a.id), c.pt(L, a)); }).stableNorm() /
+               acc3([&](auto L) { return c.dm(L, b.id, a.id); }).stableNorm();
+      } else {
+        auto n = [&](auto L) { return cross(c.dm(L, V.s[1].id, a.id), c.dm(L, V.s[2].id, a.id)); };
+        dist = std::abs(accurate_dd([&](auto L) { return dot(n(L), c.pt(L, a)); })) / acc3(n).stableNorm();
+      }
+      // normal = −U/|U|, U evaluated accurately per component.
+      U = Dir{&c, V.size, {V.s[0], V.size > 1 ? V.s[1] : Member{}, V.size > 2 ? V.s[2] : Member{}}, V.tri_sign};
       const auto ud = U(exact::LiftDD{});
       for (int k = 0; k < 3; ++k)
         u[k] = exact::dd_finite(ud[k]) && exact::safe_bound(ud[k].e) <= std::abs(ud[k].hi) * 0x1p-54
                    ? ud[k].hi
                    : accurate_dd([&](auto L) { return U(L)[k]; });
     }
+    r.distance = r.lower_bound = r.upper_bound = dist;
     const Vec3 nl = -u.stableNormalized();
     r.normal = Rp * nl;
     r.translation = Vec3::Zero() - r.distance * r.normal;  // as in 2D: no -0 components
     r.witness_p = Rp * wp + tp_world;
     r.witness_q = Rp * wq + tp_world;
   }
-  // Features: the distinct vertices of each side in S.
+  // Features: the distinct vertices of each side in S (ascending when apart).
   int vp[3], vq[3], np = 0, nq = 0;
   for (int k = 0; k < X.size; ++k) {
     if (std::find(vp, vp + np, X.s[k].id.i) == vp + np) vp[np++] = X.s[k].id.i;
     if (std::find(vq, vq + nq, X.s[k].id.j) == vq + nq) vq[nq++] = X.s[k].id.j;
   }
+  if (!contact) std::sort(vp, vp + np), std::sort(vq, vq + nq);
   const Vec3 wq_own = rel.R.transpose() * (wq - (rel.tq - rel.tp));
-  r.feature_p = feature_of(Pp, vp, np, wp);
-  r.feature_q = feature_of(Qp, vq, nq, wq_own);
+  r.feature_p = feature_of(Pp, vp, np, wp, fast.has_value());
+  r.feature_q = feature_of(Qp, vq, nq, wq_own, fast.has_value());
   return r;
 }
 
@@ -658,7 +979,7 @@ struct Closest {
   double lam[4] = {0, 0, 0, 0};
   Vec3 v{0, 0, 0};
 };
-Closest closest_double(const Vec3* pts, int n) {
+Closest closest_double_lu(const Vec3* pts, int n) {
   Closest best;
   double best_d = std::numeric_limits<double>::infinity();
   for (int mask = 1; mask < (1 << n); ++mask) {
@@ -697,6 +1018,54 @@ Closest closest_double(const Vec3* pts, int n) {
   return best;
 }
 
+// The same by Ericson's region tests (§5.1.5–5.1.6; closest_tri_double): a few dozen flops
+// instead of up to 15 small LU solves; a flat tetrahedron goes to closest_double_lu.
+Closest closest_double(const Vec3* pts, int n) {
+  Closest r;
+  if (n == 1) {
+    r.mask = 1, r.lam[0] = 1, r.v = pts[0];
+    return r;
+  }
+  if (n == 2) {
+    const Vec3 ab = pts[1] - pts[0];
+    const double t = -pts[0].dot(ab), l = ab.squaredNorm();
+    if (t <= 0) return r.mask = 1, r.lam[0] = 1, r.v = pts[0], r;
+    if (t >= l) return r.mask = 2, r.lam[1] = 1, r.v = pts[1], r;
+    r.mask = 3, r.lam[1] = t / l, r.lam[0] = 1 - r.lam[1], r.v = pts[0] + r.lam[1] * ab;
+    return r;
+  }
+  int ks[3], nk = 0;
+  if (n == 3) {
+    closest_tri_double(pts, 0, 1, 2, r.v, ks, nk);
+  } else {
+    const int F[4][4] = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {1, 3, 2, 0}};  // face, opposite vertex
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& f : F) {
+      const Vec3 nf = (pts[f[1]] - pts[f[0]]).cross(pts[f[2]] - pts[f[0]]);
+      const double so = -nf.dot(pts[f[0]]), sd = nf.dot(pts[f[3]] - pts[f[0]]);
+      if (!(sd != 0)) return closest_double_lu(pts, n);  // flat (or NaN)
+      if (!(so * sd < 0)) continue;
+      Vec3 x;
+      int k2[3], n2;
+      closest_tri_double(pts, f[0], f[1], f[2], x, k2, n2);
+      if (x.squaredNorm() < best) best = x.squaredNorm(), r.v = x, nk = n2, std::copy(k2, k2 + 3, ks);
+    }
+    if (nk == 0) {  // 0 inside: the whole tetrahedron, weights by signed volumes
+      auto det = [](const Vec3& a, const Vec3& b, const Vec3& c) { return a.dot(b.cross(c)); };
+      const double V = det(pts[1] - pts[0], pts[2] - pts[0], pts[3] - pts[0]);
+      for (int k = 0; k < 4; ++k) {
+        Vec3 p[4] = {pts[0], pts[1], pts[2], pts[3]};
+        p[k] = Vec3::Zero();
+        r.lam[k] = det(p[1] - p[0], p[2] - p[0], p[3] - p[0]) / V;
+      }
+      r.mask = 15, r.v = Vec3::Zero();
+      return r;
+    }
+  }
+  for (int k = 0; k < nk; ++k) r.mask |= 1 << ks[k];
+  return r;
+}
+
 }  // namespace
 
 std::optional<Cast3> shape_cast_certified(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel,
@@ -729,10 +1098,12 @@ std::optional<Cast3> shape_cast_certified(const ConvexPolytope& Pp, const Convex
     }
     const PairId p = support(v);
     const Vec3 x = lambda * d, w = x - approx(p);
+    bool advanced = false;
     if (v.dot(w) > 0) {
       if (v.dot(d) >= 0) break;  // a proposed miss: certified below
       lambda -= v.dot(w) / v.dot(d);
       nlast = v;
+      advanced = true;
     }
     bool dup = false;
     for (int k = 0; k < ny; ++k) dup = dup || Y[k] == p;
@@ -746,7 +1117,10 @@ std::optional<Cast3> shape_cast_certified(const ConvexPolytope& Pp, const Convex
       if (cl.mask >> k & 1) Y[m++] = Y[k];
     ny = m;
     v = cl.v;
-    if (dup && v.squaredNorm() > std::pow(0x1p-40 * scale, 2)) break;  // no progress
+    if (dup && !advanced && v.squaredNorm() > std::pow(0x1p-40 * scale, 2)) {  // no progress
+      hit = v.squaredNorm() <= std::pow(0x1p-26 * scale, 2);  // converged up to rounding: propose Y
+      break;
+    }
   }
   // Exact certificates. Lifted d for the predicates.
   auto dl = [&](auto L) { return V3<Num<decltype(L)>>{L(d[0]), L(d[1]), L(d[2])}; };
@@ -1042,11 +1416,19 @@ int line_distance_compare(const CorePoints& P, const Pose3& pp, const CorePoints
                     [](auto L) { return V3<Num<decltype(L)>>{L(0.0), L(0.0), L(0.0)}; }, nullptr);
 }
 
+Distance3 signed_distance_path(const ConvexPolytope& P, const Pose3& pp, const ConvexPolytope& Q, const Pose3& pq,
+                               const SignedDistancePath& path, bool* fast_used) {
+  Eigen::Matrix3d Rp;
+  const RelativePose rel = relative_pose(pp, pq, &Rp);
+  return signed_distance_gjk(P, Q, rel, Rp, pp.translation, path, fast_used);
+}
+
 }  // namespace convex3
 
 Distance3 signed_distance(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q, const Pose3& pose_q) {
-  const convex3::RelativePose rel = convex3::relative_pose(pose_p, pose_q);
-  return convex3::signed_distance_gjk(P, Q, rel, pose_p.matrix(), pose_p.translation);
+  Eigen::Matrix3d Rp;
+  const convex3::RelativePose rel = convex3::relative_pose(pose_p, pose_q, &Rp);
+  return convex3::signed_distance_gjk(P, Q, rel, Rp, pose_p.translation);
 }
 
 }  // namespace pendepth
