@@ -356,8 +356,10 @@ class WarmStart3 {
 /// one (src/convex3/flat3.cpp: exact), rounded shapes — spheres, capsules, core ⊕ ball — through
 /// their cores' signed distance (src/primitives/rounded3.cpp: sd one rounding from the exact core
 /// value, overlap and touching exact; σ_d and casts certified brackets: lower_bound <= exit <=
-/// upper_bound = depth, a cast's distance the upper end of its bracket, its hit exact). Queries
-/// are const and thread-safe.
+/// upper_bound = depth, a cast's distance the upper end of its bracket, its hit exact); curved
+/// primitives — cylinders, cones, ellipsoids — by the certified support-function engine
+/// (src/primitives/support3.cpp: every answer a bracket, docs/robustness.md "Curved primitives").
+/// Queries are const and thread-safe.
 ///
 /// Meshes (either shape non-convex; docs/design.md "Meshes", src/mesh3/mesh_pair.hpp): answered
 /// on the pieces of Mesh3::decomposition() (a convex shape is one piece), built at construction.

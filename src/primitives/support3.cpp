@@ -544,6 +544,10 @@ class Epa {
   // The support along facet fi's normal: bounds, then expansion (or the facet is final).
   void step(int fi, const Vec3* d = nullptr) {
     Face& f = f_[fi];
+    if (!(f.nn > 0) || !std::isfinite(f.nn)) {  // (an underflowed normal: nothing to expand)
+      f.final = true;
+      return;
+    }
     const Vec3 u = f.n / f.nn;
     const Vert v = E_.support(u);
     {
