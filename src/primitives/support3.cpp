@@ -436,7 +436,7 @@ class Epa {
   }
 
   // σ: expand until the bracket [lower, U] is within the target (or mode `certify`: until the
-  // lower bound is positive). Returns false when no facet can be expanded further.
+  // lower bound is positive), or until the facet with the least lower bound cannot be expanded.
   void minimum(bool certify) {
     for (int it = 0; it < kMaxEpa; ++it) {
       int fi = -1;
@@ -782,7 +782,6 @@ Cast3 curved_cast(const Support3& P, const Pose3& pose_p, const Support3& Q, con
   // Conservative advancement: from λ (before the entry, certified), the plane M − λd ⊂
   // {⟨x, w⟩ <= h} with h < 0 is reached along d only when ⟨d, w⟩ < 0, after −h/−⟨d, w⟩.
   double lam = 0;
-  const double dl1 = l1(d);
   auto miss = [&] {
     out.distance = kInf;
     return out;
@@ -792,7 +791,7 @@ Cast3 curved_cast(const Support3& P, const Pose3& pose_p, const Support3& Q, con
   for (int k = 0; k < kMaxCast; ++k) {
     const Vec3 w = s.g.sep_w;
     const double h = s.g.sep_h;
-    const double dw_up = upw(w.dot(d) + 4 * kU * abs_dot(w, d) + 0 * dl1);
+    const double dw_up = upw(w.dot(d) + 4 * kU * abs_dot(w, d));
     if (!(h < 0)) break;  // (state > 0 guarantees a plane with h < 0)
     if (!(dw_up < 0)) return miss();
     const double step = down(down(-h) / -dw_up);
