@@ -263,8 +263,10 @@ Vec3 nearest(Simplex& s, bool& inside) {
       for (int j = 1; j < k; ++j) E.col(j - 1) = s.v[idx[j]].x - a;
       const Eigen::MatrixXd G = E.transpose() * E;
       const Eigen::VectorXd rhs = -(E.transpose() * a);
-      const auto lu = G.fullPivLu();
-      if (!lu.isInvertible()) continue;
+      // Any solution will do (the weights are clamped and y recomputed below, so a poorly
+      // conditioned sliver still gives a true convex combination); only non-finite ones are skipped.
+      Eigen::FullPivLU<Eigen::MatrixXd> lu(G);
+      lu.setThreshold(std::numeric_limits<double>::denorm_min());
       const Eigen::VectorXd mu = lu.solve(rhs);
       if (!mu.allFinite()) continue;
       // Weights clamped to >= 0 and renormalised: y below is then a true convex combination
