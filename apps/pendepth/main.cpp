@@ -172,18 +172,18 @@ Pair3 make_pair3(const ShapeText& p, const ShapeText& q, bool hull, pendepth::Pr
 const pendepth::ConvexPolytope& shown(const Shape3& s, int piece = -1) {
   static const pendepth::ConvexPolytope stand_in = pendepth::ConvexPolytope::hull(
       std::vector<Vec3>{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)}, "primitive");
-  if (s.flat_shape()) return stand_in;
+  if (s.flat_shape() || s.curved()) return stand_in;  // (curved primitives: no polytope either)
   return piece < 0 || s.is_convex() ? s.polytope() : s.mesh()->decomposition().pieces[static_cast<std::size_t>(piece)];
 }
 template <class R>
 R shown(R r, const Pair3& pair) {
-  if (pair.P().flat_shape()) r.feature_p = {};
-  if (pair.Q().flat_shape()) r.feature_q = {};
+  if (pair.P().flat_shape() || pair.P().curved()) r.feature_p = {};
+  if (pair.Q().flat_shape() || pair.Q().curved()) r.feature_q = {};
   return r;
 }
 std::string shown_summary(std::string s, const Pair3& pair) {
   for (const auto& [tag, shape] : {std::pair{"P ", &pair.P()}, std::pair{"Q ", &pair.Q()}}) {
-    if (!shape->flat_shape()) continue;
+    if (!shape->flat_shape() && !shape->curved()) continue;
     const int dim = shape->dimension();
     const std::string what = dim == 0   ? "a point"
                              : dim == 1 ? "a segment"

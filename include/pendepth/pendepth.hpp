@@ -57,6 +57,9 @@ struct MeshPair;  // src/mesh3/mesh_pair.hpp
 namespace convex3 {
 struct FlatShape3;  // src/convex3/flat3.hpp
 }
+namespace primitives {
+struct Curved3;  // src/primitives/support3.hpp
+}
 
 /// How much a pair prepares before its queries.
 ///   Queries: only what every query needs (triangulations, hierarchies); σ of two convex
@@ -289,6 +292,19 @@ class Shape3 {
   static Shape3 sphere(double r, std::string_view name = "sphere");
   static Shape3 capsule(double r, double h, std::string_view name = "capsule");
   static Shape3 rounded(const Shape3& core, double r, std::string_view name = "rounded");
+  /// Curved primitives (src/front/shape3_curved.cpp), centred at the origin: cylinder(R, H) of
+  /// radius R about the z axis, z in [−H, H]; cone(R, H) with base radius R at z = −H and apex
+  /// (0, 0, H); ellipsoid(A, B, C) of semi-axes A, B, C along x, y, z. Pair3 answers any pair
+  /// involving one of them (also rounded(curved, r)) by the certified support-function engine
+  /// (src/primitives/support3.cpp): lower_bound <= the true value <= upper_bound, relative gap
+  /// about 1e-12 or the rounding floor (docs/robustness.md "Curved primitives"). Throws
+  /// InvalidInput naming `name` for a non-finite or non-positive size.
+  static Shape3 cylinder(double r, double h, std::string_view name = "cylinder");
+  static Shape3 cone(double r, double h, std::string_view name = "cone");
+  static Shape3 ellipsoid(double a, double b, double c, std::string_view name = "ellipsoid");
+  /// Internal (the engines): a curved primitive's parameters (also under rounding), else null.
+  const primitives::Curved3* curved() const { return curved_.get(); }
+  static Shape3 from_curved(std::shared_ptr<const primitives::Curved3> c);
   /// The rounding radius (0 for a shape without rounding) and the core (the shape without it).
   double radius() const { return radius_; }
   Shape3 core() const;
@@ -311,6 +327,7 @@ class Shape3 {
   std::shared_ptr<const ConvexPolytope> p_;
   std::shared_ptr<const Mesh3> mesh_;
   std::shared_ptr<const convex3::FlatShape3> flat_;  // a lower-dimensional shape (p_ null)
+  std::shared_ptr<const primitives::Curved3> curved_;  // a curved primitive (p_, flat_ null)
   double radius_ = 0;  // a rounded shape: this shape's core (p_ or flat_) ⊕ ball of radius_
   std::string rounded_name_;
 };
@@ -339,8 +356,10 @@ class WarmStart3 {
 /// one (src/convex3/flat3.cpp: exact), rounded shapes — spheres, capsules, core ⊕ ball — through
 /// their cores' signed distance (src/primitives/rounded3.cpp: sd one rounding from the exact core
 /// value, overlap and touching exact; σ_d and casts certified brackets: lower_bound <= exit <=
-/// upper_bound = depth, a cast's distance the upper end of its bracket, its hit exact). Queries
-/// are const and thread-safe.
+/// upper_bound = depth, a cast's distance the upper end of its bracket, its hit exact); curved
+/// primitives — cylinders, cones, ellipsoids — by the certified support-function engine
+/// (src/primitives/support3.cpp: every answer a bracket, docs/robustness.md "Curved primitives").
+/// Queries are const and thread-safe.
 ///
 /// Meshes (either shape non-convex; docs/design.md "Meshes", src/mesh3/mesh_pair.hpp): answered
 /// on the pieces of Mesh3::decomposition() (a convex shape is one piece), built at construction.

@@ -3,8 +3,9 @@
 //
 //   sphere:R  capsule:R,H  box:X,Y,Z  rounded:R:FILE  point:X,Y,Z  segment:X1,Y1,Z1,X2,Y2,Z2
 //   (3D; capsule: the segment (0,0,−H)–(0,0,H) ⊕ ball R; box: half extents; rounded: FILE's shape
-//   ⊕ ball R). cylinder:R,H, cone:R,H, ellipsoid:A,B,C and the 2D point:X,Y / segment:X1,Y1,X2,Y2
-//   are recognised and rejected as not implemented yet.
+//   ⊕ ball R); cylinder:R,H (axis z, half height H), cone:R,H (base radius R at z = −H, apex at
+//   z = H), ellipsoid:A,B,C (semi-axes). The 2D point:X,Y / segment:X1,Y1,X2,Y2 are recognised
+//   and rejected as not implemented yet.
 #pragma once
 
 #include <pendepth/pendepth.hpp>

@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "primitives/support3.hpp"
 #include "front/checks.hpp"
 
 namespace py = pybind11;
@@ -900,6 +901,12 @@ validated once), allowed_orientations (degrees; [0.0] when absent)). Bad input r
                   "sphere(r, name=\"sphere\") -> Shape3: the ball of radius r at the origin (a point ⊕ ball).")
       .def_static("capsule", &Shape3::capsule, py::arg("r"), py::arg("h"), py::arg("name") = "capsule",
                   "capsule(r, h, name=\"capsule\") -> Shape3: the segment (0,0,-h)-(0,0,h) ⊕ ball of radius r.")
+      .def_static("cylinder", &Shape3::cylinder, py::arg("r"), py::arg("h"), py::arg("name") = "cylinder",
+                  "cylinder(r, h, name=\"cylinder\") -> Shape3: radius r about the z axis, z in [-h, h] (curved: certified brackets).")
+      .def_static("cone", &Shape3::cone, py::arg("r"), py::arg("h"), py::arg("name") = "cone",
+                  "cone(r, h, name=\"cone\") -> Shape3: base radius r at z = -h, apex (0, 0, h) (curved: certified brackets).")
+      .def_static("ellipsoid", &Shape3::ellipsoid, py::arg("a"), py::arg("b"), py::arg("c"), py::arg("name") = "ellipsoid",
+                  "ellipsoid(a, b, c, name=\"ellipsoid\") -> Shape3: semi-axes a, b, c along x, y, z (curved: certified brackets).")
       .def_static("rounded", &Shape3::rounded, py::arg("core"), py::arg("r"), py::arg("name") = "rounded",
                   "rounded(core, r, name=\"rounded\") -> Shape3: core ⊕ ball of radius r (r >= 0).")
       .def_property_readonly("dimension", &Shape3::dimension, "3 for a solid (rounded shapes included); 0, 1, 2 for a point, segment, flat polygon.")
@@ -928,12 +935,24 @@ validated once), allowed_orientations (degrees; [0.0] when absent)). Bad input r
                         if (!s.is_convex())  // its hull would come back: refuse rather than change the shape
                           throw InvalidInput("pickle: " + s.name() + " is a non-convex mesh; pickling meshes is not supported yet");
                         const Shape3 c = s.core();
+                        if (const auto* k = c.curved())  // curved primitives: their parameters
+                          return py::make_tuple("curved", static_cast<int>(k->kind), k->a, k->b, k->c, c.name(), s.radius(), s.name());
                         std::vector<Vec3> v;
                         if (c.flat_shape()) v.assign(c.flat_vertices().begin(), c.flat_vertices().end());
                         else v.assign(c.polytope().vertices().begin(), c.polytope().vertices().end());
                         return py::make_tuple(to_array<3>(v), c.name(), s.radius(), s.name(), c.dimension());
                       },
                       [](const py::tuple& st) {
+                        if (py::isinstance<py::str>(st[0])) {  // a curved primitive (see above)
+                          const int kind = st[1].cast<int>();
+                          const double a = st[2].cast<double>(), b = st[3].cast<double>(), c = st[4].cast<double>();
+                          const std::string name = st[5].cast<std::string>();
+                          const Shape3 core = kind == static_cast<int>(primitives::Curved3::Kind::Cylinder) ? Shape3::cylinder(a, b, name)
+                                              : kind == static_cast<int>(primitives::Curved3::Kind::Cone)   ? Shape3::cone(a, b, name)
+                                                                                                               : Shape3::ellipsoid(a, b, c, name);
+                          const double r = st[6].cast<double>();
+                          return r > 0 ? Shape3::rounded(core, r, st[7].cast<std::string>()) : core;
+                        }
                         Array a = py::cast<Array>(st[0]);
                         std::vector<Vec3> v(static_cast<std::size_t>(a.shape(0)));
                         for (std::size_t i = 0; i < v.size(); ++i) v[i] = Vec3(a.data()[3 * i], a.data()[3 * i + 1], a.data()[3 * i + 2]);

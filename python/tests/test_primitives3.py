@@ -74,3 +74,27 @@ def test_flat_files_and_exact_rounded_contact(tmp_path):
         if overlap:
             a = pair.along([3.0, 4.0, 0.0], [3.0, 4.0, 0.0])
             assert a.lower_bound <= r2 - 3.0 <= a.upper_bound == a.depth  # the exit r − 5, exact
+
+
+def test_curved_primitives_brackets_and_pickling():
+    # Curved primitives (issue 16 item 5): certified brackets around closed forms.
+    cyl = pendepth.Shape3.cylinder(0.1, 0.2)
+    box = pendepth.Shape3.box(0.15, 0.05, 0.1)
+    pair = pendepth.Pair3(cyl, box)
+    m = pair.minimum([0.03, 0.0, 0.0])  # sigma = min(X + R - ox, Y + R, H + Z) = 0.15
+    assert m.overlapping
+    assert m.lower_bound <= 0.15 * (1 + 1e-15) and m.upper_bound >= 0.15 * (1 - 1e-15)
+    assert m.upper_bound - m.lower_bound <= 1e-12 * 0.15
+    s = pendepth.Pair3(pendepth.Shape3.ellipsoid(0.1, 0.1, 0.1), box).signed_distance([0.5, 0.0, 0.0])
+    exact = pendepth.Pair3(pendepth.Shape3.sphere(0.1), box).signed_distance([0.5, 0.0, 0.0]).distance
+    assert s.lower_bound <= exact <= s.upper_bound
+    c = pendepth.Pair3(pendepth.Shape3.cone(0.1, 0.2), box).cast([1.0, 0.0, 0.0], [-1.0, 0.0, 0.0])
+    assert c.hit and 0.7 < c.distance < 0.8
+    for shape in (cyl, pendepth.Shape3.cone(0.1, 0.2, "tip"), pendepth.Shape3.ellipsoid(0.1, 0.2, 0.3),
+                  pendepth.Shape3.rounded(cyl, 0.01, "soft")):
+        t = pickle.loads(pickle.dumps(shape))
+        assert (t.name, t.radius, t.dimension) == (shape.name, shape.radius, shape.dimension)
+        q = pendepth.Pair3(t, box).minimum([0.03, 0.01, 0.0])
+        assert q.depth == pendepth.Pair3(shape, box).minimum([0.03, 0.01, 0.0]).depth
+    with pytest.raises(pendepth.InvalidInput, match="half height 0"):
+        pendepth.Shape3.cone(1.0, 0.0)

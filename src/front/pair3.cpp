@@ -17,6 +17,7 @@
 #include "mesh3/mesh_pair.hpp"
 #include "convex3/distance_compare.hpp"
 #include "primitives/rounded3.hpp"
+#include "primitives/support3.hpp"
 
 namespace pendepth {
 
@@ -67,6 +68,11 @@ namespace {
 // The sizes of a polytope: its largest coordinate and its smallest edge.
 void add_extent(front::Extent& x, const Shape3& s) {
   if (s.radius() > 0) x.add_point(s.radius()), x.add_edge(Vec3(0, 0, 0), Vec3(s.radius(), 0, 0));
+  if (const auto* c = s.curved()) {  // curved primitives: the largest and the smallest parameter
+    for (double v : {c->a, c->b, c->c})
+      if (v > 0) x.add_point(v), x.add_edge(Vec3(0, 0, 0), Vec3(v, 0, 0));
+    return;
+  }
   if (const auto* f = s.flat_shape()) {
     for (std::size_t i = 0; i < f->v.size(); ++i) {
       x.add_point(f->v[i].cwiseAbs().maxCoeff());
@@ -97,6 +103,13 @@ Shape3 engine_shape(const Shape3& s, const front::Scale& scale, const char* whic
       throw InvalidInput(std::string(which) + " (" + s.name() + ") radius: " + scale.describe(s.radius()));
     return Shape3::rounded(engine_shape(s.core(), scale, which), r, s.name());
   }
+  if (const auto* c = s.curved()) {  // the parameters scaled exactly
+    primitives::Curved3 g = *c;
+    for (double* v : {&g.a, &g.b, &g.c})
+      if (*v != 0 && !scale.to_engine(*v, *v))
+        throw InvalidInput(std::string(which) + " (" + s.name() + ") size: " + scale.describe(*v));
+    return Shape3::from_curved(std::make_shared<const primitives::Curved3>(std::move(g)));
+  }
   if (const auto* f = s.flat_shape()) {  // the same normal form, every vertex scaled exactly
     convex3::FlatShape3 g = *f;
     for (std::size_t i = 0; i < g.v.size(); ++i)
@@ -121,6 +134,9 @@ Pose3 engine_pose(const front::Scale& scale, const Pose3& pose, const std::strin
 namespace {
 // The shape combinations Pair3 answers; any other is an InvalidInput naming both shapes.
 Shape3 supported_pair(Shape3 P, const Shape3& Q) {
+  if ((!P.is_convex() || !Q.is_convex()) && (P.curved() || Q.curved()))
+    throw InvalidInput("pair: a non-convex mesh against a curved primitive (P " + P.name() + ", Q " + Q.name() +
+                       ") is not implemented (use the mesh's hull: Shape3::from_file(path, name, true) / --hull)");
   if ((!P.is_convex() || !Q.is_convex()) && (P.dimension() < 3 || Q.dimension() < 3 || P.radius() + Q.radius() > 0))
     throw InvalidInput("pair: a non-convex mesh against a lower-dimensional or rounded shape (P " + P.name() + ", Q " +
                        Q.name() + ") is not implemented (use the mesh's hull: Shape3::from_file(path, name, true) / --hull)");
@@ -235,9 +251,25 @@ primitives::CoreCompare core_compare(const Shape3& P0, const Pose3& pp, const Sh
 
 }  // namespace
 
+// ---- curved primitives (src/primitives/support3.cpp): the certified support-function engine ----
+namespace {
+bool is_curved(const Shape3& P, const Shape3& Q) { return P.curved() || Q.curved(); }
+// The query `f` on the pair's support functions in engine coordinates.
+template <class F>
+auto curved_query(const front::Scale& scale, const Shape3& P, const Pose3& pose_p, const Shape3& Q,
+                  const Pose3& pose_q, F&& f) {
+  return f(primitives::support_of(P), engine_pose(scale, pose_p, "pose of P"), primitives::support_of(Q),
+           engine_pose(scale, pose_q, "pose of Q"));
+}
+}  // namespace
+
 // One query in engine coordinates: poses converted in (checked), the answer scaled back.
 Depth3 Pair3::min_engine(const Pose3& pose_p, const Pose3& pose_q) const {
   const front::Scale scale{scale_exp_};
+  if (is_curved(engine_P_, engine_Q_))
+    return scale.answer(curved_query(scale, engine_P_, pose_p, engine_Q_, pose_q, [](auto&&... a) {
+      return primitives::curved_minimum(a...);
+    }));
   if (mesh_)
     return scale.answer(mesh3::minimum(*mesh_, engine_pose(scale, pose_p, "pose of P"), engine_pose(scale, pose_q, "pose of Q")));
   if (is_rounded(engine_P_, engine_Q_)) {
@@ -255,6 +287,10 @@ Depth3 Pair3::min_engine(const Pose3& pose_p, const Pose3& pose_q) const {
 
 Depth3 Pair3::along_engine(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const {
   const front::Scale scale{scale_exp_};
+  if (is_curved(engine_P_, engine_Q_))
+    return scale.answer(curved_query(scale, engine_P_, pose_p, engine_Q_, pose_q, [&](auto&&... a) {
+      return primitives::curved_along(a..., d);
+    }));
   if (mesh_)
     return scale.answer(mesh3::along(*mesh_, engine_pose(scale, pose_p, "pose of P"), engine_pose(scale, pose_q, "pose of Q"), d, false));
   if (is_rounded(engine_P_, engine_Q_)) {
@@ -370,6 +406,10 @@ Cast3 cast_answer(const front::Scale& scale, Cast3 r) {
 
 Distance3 Pair3::distance_engine(const Pose3& pose_p, const Pose3& pose_q) const {
   const front::Scale scale{scale_exp_};
+  if (is_curved(engine_P_, engine_Q_))
+    return distance_answer(scale, curved_query(scale, engine_P_, pose_p, engine_Q_, pose_q, [](auto&&... a) {
+                             return primitives::curved_distance(a...);
+                           }));
   if (mesh_)
     return distance_answer(scale, mesh3::signed_distance(*mesh_, engine_pose(scale, pose_p, "pose of P"),
                                                          engine_pose(scale, pose_q, "pose of Q")));
@@ -410,6 +450,10 @@ Cast3 Pair3::cast(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const
   front::check_direction(d);
   if (mesh_) throw InvalidInput("cast: shape casts between meshes are not implemented yet (use convex shapes or --hull)");
   const front::Scale scale{scale_exp_};
+  if (is_curved(engine_P_, engine_Q_))
+    return cast_answer(scale, curved_query(scale, engine_P_, pose_p, engine_Q_, pose_q, [&](auto&&... a) {
+                         return primitives::curved_cast(a..., d);
+                       }));
   if (is_rounded(engine_P_, engine_Q_)) {
     const Pose3 ep = engine_pose(scale, pose_p, "pose of P"), eq = engine_pose(scale, pose_q, "pose of Q");
     return cast_answer(scale, primitives::rounded_cast(core_distance(engine_P_, ep, engine_Q_, eq),
@@ -430,7 +474,7 @@ Depth3 Pair3::minimum(const Pose3& pose_p, const Pose3& pose_q, WarmStart3& warm
   check_pose(pose_p, "pose of P");
   check_pose(pose_q, "pose of Q");
   if (mesh_) return min_engine(pose_p, pose_q);  // no warm start on meshes
-  if (is_flat(engine_P_) || is_flat(engine_Q_) || is_rounded(engine_P_, engine_Q_))
+  if (is_flat(engine_P_) || is_flat(engine_Q_) || is_rounded(engine_P_, engine_Q_) || is_curved(engine_P_, engine_Q_))
     return min_engine(pose_p, pose_q);  // no warm start
   const front::Scale scale{scale_exp_};
   const Pose3 ep = engine_pose(scale, pose_p, "pose of P"), eq = engine_pose(scale, pose_q, "pose of Q");

@@ -3,6 +3,7 @@
 #include <pendepth/pendepth.hpp>
 
 #include "convex3/flat3.hpp"
+#include "primitives/support3.hpp"
 
 namespace pendepth {
 
@@ -31,15 +32,16 @@ std::span<const Vec3> Shape3::flat_vertices() const {
 const convex3::FlatShape3* Shape3::flat_shape() const { return flat_.get(); }
 
 const ConvexPolytope& Shape3::polytope() const {
+  if (!p_ && curved_) throw InvalidInput(name() + " is a curved primitive (a cylinder, a cone, an ellipsoid): it has no polytope");
   if (!p_)
     throw InvalidInput(name() + (radius_ > 0 ? " is a rounded shape with a lower-dimensional core (a sphere, a capsule)"
                                              : " is a lower-dimensional shape (a point, a segment, a flat polygon)") +
                        ": it has no polytope");
   return *p_;
 }
-std::size_t Shape3::size() const { return flat_ ? flat_->v.size() : p_->size(); }
+std::size_t Shape3::size() const { return flat_ ? flat_->v.size() : p_ ? p_->size() : 0; }
 const std::string& Shape3::name() const {
-  return radius_ > 0 ? rounded_name_ : flat_ ? flat_->name : p_->name();
+  return radius_ > 0 ? rounded_name_ : flat_ ? flat_->name : curved_ ? curved_->name : p_->name();
 }
 
 }  // namespace pendepth

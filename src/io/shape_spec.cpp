@@ -28,9 +28,9 @@ constexpr std::array<Kind, 9> kKinds{{
     {"rounded", 1, -1, true, true, "rounded:R:FILE"},
     {"point", 3, 2, true, false, "point:X,Y,Z"},
     {"segment", 6, 4, true, false, "segment:X1,Y1,Z1,X2,Y2,Z2"},
-    {"cylinder", 2, -1, false, false, "cylinder:R,H"},
-    {"cone", 2, -1, false, false, "cone:R,H"},
-    {"ellipsoid", 3, -1, false, false, "ellipsoid:A,B,C"},
+    {"cylinder", 2, -1, true, false, "cylinder:R,H"},
+    {"cone", 2, -1, true, false, "cone:R,H"},
+    {"ellipsoid", 3, -1, true, false, "ellipsoid:A,B,C"},
 }};
 
 }  // namespace
@@ -87,6 +87,9 @@ Shape3 shape3_from_spec(const ShapeSpec& s, std::string_view name, bool hull) {
     if (s.kind == "box") return Shape3::box(v[0], v[1], v[2], name);
     if (s.kind == "point") return Shape3::point(Vec3(v[0], v[1], v[2]), name);
     if (s.kind == "segment") return Shape3::segment(Vec3(v[0], v[1], v[2]), Vec3(v[3], v[4], v[5]), name);
+    if (s.kind == "cylinder") return Shape3::cylinder(v[0], v[1], name);
+    if (s.kind == "cone") return Shape3::cone(v[0], v[1], name);
+    if (s.kind == "ellipsoid") return Shape3::ellipsoid(v[0], v[1], v[2], name);
     if (s.kind == "rounded") return Shape3::rounded(Shape3::from_file(s.file, name, hull), v[0], name);
   } catch (const InvalidInput& e) {
     throw InvalidInput("shape spec '" + s.text + "': " + e.what());

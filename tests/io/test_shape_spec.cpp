@@ -60,11 +60,19 @@ TEST(ShapeSpec, ErrorsNameTheSpec) {
   EXPECT_EQ(error_of("box:1,2,inf"), "shape spec 'box:1,2,inf': 'inf' is not finite (expected box:X,Y,Z)");
   EXPECT_EQ(error_of("box:1,2,3;"), "shape spec 'box:1,2,3;': unexpected ';' (expected box:X,Y,Z)");
   EXPECT_EQ(error_of("rounded:1"), "shape spec 'rounded:1': no file (expected rounded:R:FILE)");
-  EXPECT_EQ(error_of("cylinder:1,2"),
-            "shape spec 'cylinder:1,2': cylinder primitives are not implemented yet (expected cylinder:R,H)");
-  EXPECT_EQ(error_of("cone:1,2"), "shape spec 'cone:1,2': cone primitives are not implemented yet (expected cone:R,H)");
-  EXPECT_EQ(error_of("ellipsoid:1,2,3"),
-            "shape spec 'ellipsoid:1,2,3': ellipsoid primitives are not implemented yet (expected ellipsoid:A,B,C)");
+  EXPECT_EQ(error_of("cylinder:1"), "shape spec 'cylinder:1': 1 number given (expected cylinder:R,H)");
+  EXPECT_EQ(error_of("ellipsoid:1,2"), "shape spec 'ellipsoid:1,2': 2 numbers given (expected ellipsoid:A,B,C)");
+  for (const char* ok : {"cylinder:1,2", "cone:1,2", "ellipsoid:1,2,3"}) {
+    const Shape3 c = io::shape3_from_spec(*io::parse_shape_spec(ok), "C");
+    EXPECT_NE(c.curved(), nullptr) << ok;
+    EXPECT_EQ(c.name(), "C");
+  }
+  try {
+    io::shape3_from_spec(*io::parse_shape_spec("cone:1,0"));
+    FAIL();
+  } catch (const InvalidInput& e) {
+    EXPECT_EQ(std::string(e.what()), "shape spec 'cone:1,0': shape: half height 0 must be finite and positive");
+  }
   EXPECT_EQ(error_of("point:1,2"),
             "shape spec 'point:1,2': 2D points are not implemented yet (give 3D coordinates) (expected point:X,Y,Z)");
   try {
