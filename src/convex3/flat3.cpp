@@ -610,9 +610,9 @@ Distance3 apart(const Ctx& x, const std::vector<Cand>& cands, std::vector<Eval>&
 
 }  // namespace
 
-Depth3 flat_minimum(const ConvexPolytope& S, const Pose3& ps, const FlatShape3& L, const Pose3& pl) {
-  const Ctx x = make_ctx(S, L, ps, pl);
-  Scan sc = scan(x);
+namespace {
+// σ of the context's M from its scan of the facet candidates (0 when not overlapping).
+Depth3 minimum_of(const Ctx& x, Scan& sc, const Pose3& ps) {
   Depth3 r;
   r.kind = DepthKind::Minimum;
   r.candidates = sc.cands.size();
@@ -626,6 +626,26 @@ Depth3 flat_minimum(const ConvexPolytope& S, const Pose3& ps, const FlatShape3& 
   r.depth = r.lower_bound = r.upper_bound = bv;
   r.feature_p = x.feature_s(c, e), r.feature_q = x.feature_l(c, e);
   return world(r, ps, v, u, u, x.contact(c, e, v));
+}
+
+// The signed distance of an overlapping pair from σ: the move of Q by σ's translation; witness_q
+// on the unmoved Q.
+Distance3 overlap_distance(const Depth3& m) {
+  Distance3 r;
+  r.distance = r.lower_bound = r.upper_bound = -m.depth;
+  r.overlapping = true;
+  r.normal = m.normal;
+  r.translation = m.translation;
+  r.witness_p = m.witness_p, r.witness_q = m.witness_q - m.translation;
+  r.feature_p = m.feature_p, r.feature_q = m.feature_q;
+  return r;
+}
+}  // namespace
+
+Depth3 flat_minimum(const ConvexPolytope& S, const Pose3& ps, const FlatShape3& L, const Pose3& pl) {
+  const Ctx x = make_ctx(S, L, ps, pl);
+  Scan sc = scan(x);
+  return minimum_of(x, sc, ps);
 }
 
 Depth3 flat_directional(const ConvexPolytope& S, const Pose3& ps, const FlatShape3& L, const Pose3& pl,
@@ -676,17 +696,8 @@ Distance3 flat_signed_distance(const ConvexPolytope& S, const Pose3& ps, const F
   const Ctx x = make_ctx(S, L, ps, pl);
   const Eigen::Matrix3d Rp = ps.matrix();
   Distance3 r;
-  const Scan sc = scan(x);
-  if (sc.overlapping) {
-    const Depth3 m = flat_minimum(S, ps, L, pl);
-    r.distance = r.lower_bound = r.upper_bound = -m.depth;
-    r.overlapping = true;
-    r.normal = m.normal;
-    r.translation = m.translation;
-    r.witness_p = m.witness_p, r.witness_q = m.witness_q - m.translation;  // on the unmoved Q
-    r.feature_p = m.feature_p, r.feature_q = m.feature_q;
-    return r;
-  }
+  Scan sc = scan(x);
+  if (sc.overlapping) return overlap_distance(minimum_of(x, sc, ps));
   if (sc.touching) {
     const Cand& c = sc.cands[sc.zero_at];
     const Eval& e = sc.evals[sc.zero_at];
@@ -702,25 +713,30 @@ Distance3 flat_signed_distance(const ConvexPolytope& S, const Pose3& ps, const F
 
 Distance3 flat_flat_distance(const FlatShape3& A, const Pose3& pa, const FlatShape3& B, const Pose3& pb,
                              Vec3* touch_normal) {
-  if (A.dim + B.dim > 2)
-    throw InvalidInput("pair: the cores " + A.name + " (dimension " + std::to_string(A.dim) + ") and " + B.name +
-                       " (dimension " + std::to_string(B.dim) +
-                       ") are both lower-dimensional with dimensions summing to 3 or more: not implemented");
   const Ctx x{nullptr, nullptr, nullptr, &A, B, relative(pa, pb)};
-  std::vector<Cand> cands = x.facets();
-  for (const Cand& c : x.closest_pairs()) cands.push_back(c);
-  std::vector<Eval> evals;
-  for (const Cand& c : cands) evals.push_back(x.eval(c));
+  Scan sc;
+  sc.cands = x.facets();
+  for (const Cand& c : sc.cands) {
+    sc.evals.push_back(x.eval(c));
+    if (sc.evals.back().valid && sc.evals.back().hsign <= 0) sc.overlapping = false;
+  }
+  // Dimensions summing to 3 or more: M may be solid. Its facet normals are among the candidates
+  // (±A's and ±B's normals, edge × edge), so 0 ∈ int M iff every one has h > 0 (a flat M has a
+  // normal n with h(n) = −h(−n) among them), and then σ is the least h/|u| as for a solid S.
+  if (A.dim + B.dim > 2 && sc.overlapping) return overlap_distance(minimum_of(x, sc, pa));
+  std::vector<Cand>& cands = sc.cands;
+  std::vector<Eval>& evals = sc.evals;
+  for (const Cand& c : x.closest_pairs()) cands.push_back(c), evals.push_back(x.eval(c));
   Distance3 r = apart(x, cands, evals, pa);
   if (r.distance > 0) return r;
-  // Touching (M has no interior): a candidate plane through 0 gives the contact and a supporting
-  // normal; without one (points on points or on collinear segments) a vertex of one shape in the
-  // other, and any normal ⊥ to the cores' span.
+  // Touching (0 ∈ ∂M, or M has no interior): a candidate plane through 0 (h = 0, every h >= 0)
+  // supports M and gives the contact; without one (points on points or on collinear segments)
+  // a vertex of one shape in the other, and any normal ⊥ to the cores' span.
   const Eigen::Matrix3d Ra = pa.matrix();
   Vec3 c = Vec3::Zero(), n = Vec3::Zero();
   bool found = false;
   for (std::size_t k = 0; k < cands.size() && !found; ++k)
-    if (evals[k].norm > 0 && evals[k].hsign == 0) {
+    if (evals[k].valid && evals[k].hsign == 0) {
       x.refine(cands[k], evals[k]);
       c = x.contact(cands[k], evals[k], Vec3::Zero()), n = Ctx::unit(evals[k]), found = true;
       r.feature_p = x.feature_s(cands[k], evals[k]), r.feature_q = x.feature_l(cands[k], evals[k]);
@@ -747,7 +763,9 @@ Cast3 miss() {
   return r;
 }
 
-Cast3 flat_cast(const ConvexPolytope& S, const Pose3& ps, const FlatShape3& L, const Pose3& pl, const Vec3& d_world) {
+namespace {
+Cast3 flat_cast_exact(const ConvexPolytope& S, const Pose3& ps, const FlatShape3& L, const Pose3& pl,
+                      const Vec3& d_world) {
   const Ctx x = make_ctx(S, L, ps, pl);
   const Eigen::Matrix3d Rp = ps.matrix();
   const Vec3 d = Rp.transpose() * d_world;
@@ -811,6 +829,14 @@ Cast3 flat_cast(const ConvexPolytope& S, const Pose3& ps, const FlatShape3& L, c
   r.normal = Rp * x.unit(e);
   r.witness_p = r.witness_q = Rp * x.contact(c, e, v) + ps.translation;
   r.feature_p = x.feature_s(c, e), r.feature_q = x.feature_l(c, e);
+  return r;
+}
+
+}  // namespace
+
+Cast3 flat_cast(const ConvexPolytope& S, const Pose3& ps, const FlatShape3& L, const Pose3& pl, const Vec3& d) {
+  Cast3 r = flat_cast_exact(S, ps, L, pl, d);
+  r.lower_bound = r.upper_bound = r.distance;  // exact: the bracket is the answer
   return r;
 }
 

@@ -65,7 +65,13 @@ Depth3 minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q);
 /// −upper, lower_bound = −upper, upper_bound = −lower).
 Distance3 signed_distance(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q);
 
-// ---- shared by mesh_pair.cpp and mesh_line.cpp ----
+/// Shape cast along d (world frame, checked by the caller): the least exact convex cast over the
+/// piece pairs whose box sum the ray meets (mesh_cast.cpp); 0 and overlapping when the interiors
+/// overlap (exact), +∞ and hit false when no pair is ever touched. Exact (bounds equal distance);
+/// piece_p / piece_q name the pair of the contact.
+Cast3 cast(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3& d);
+
+// ---- shared by mesh_pair.cpp, mesh_line.cpp and mesh_cast.cpp ----
 
 /// The pose of Q in P's frame and the boxes of Q's pieces there (rounded, then widened so that
 /// they hold the exact placed pieces).
