@@ -48,6 +48,10 @@ namespace pendepth::convex3 {
 
 // ---- the normal form of a lower-dimensional point set ----------------------------------------
 
+namespace {
+void parallel_classes(FlatShape3& f);  // FlatShape3::edge_dir, chord_dir (below)
+}  // namespace
+
 FlatShape3 flat_shape(std::span<const Vec3> pts, std::string_view name) {
   FlatShape3 f;
   f.name = std::string(name);
@@ -122,6 +126,7 @@ FlatShape3 flat_shape(std::span<const Vec3> pts, std::string_view name) {
   h.resize(k - 1);
   for (std::size_t i : h) f.v.push_back(pts[i]), f.input.push_back(i);
   f.dim = 2;
+  parallel_classes(f);
   return f;
 }
 
@@ -139,6 +144,35 @@ V<N> cross(const V<N>& a, const V<N>& b) {
 }
 template <class N>
 V<N> scl(const N& s, const V<N>& a) { return {s * a[0], s * a[1], s * a[2]}; }
+
+// Exact: is v[b] − v[a] parallel to v[d] − v[c] (the input doubles; the differences never rounded)?
+bool parallel(const std::vector<Vec3>& v, int a, int b, int c, int d) {
+  for (int k = 0; k < 3; ++k)
+    if (exact::exact_sign([&](auto f) {
+          const V<decltype(f(0.0))> x{f(v[b].x()) - f(v[a].x()), f(v[b].y()) - f(v[a].y()), f(v[b].z()) - f(v[a].z())};
+          const V<decltype(f(0.0))> y{f(v[d].x()) - f(v[c].x()), f(v[d].y()) - f(v[c].y()), f(v[d].z()) - f(v[c].z())};
+          return cross(x, y)[k];
+        }) != 0)
+      return false;
+  return true;
+}
+
+void parallel_classes(FlatShape3& f) {
+  const int k = static_cast<int>(f.v.size());
+  if (f.dim != 2 || k > 64) return;
+  f.edge_dir.assign(k, -1);
+  for (int j = 0; j < k; ++j)
+    for (int i = 0; i <= j && f.edge_dir[j] < 0; ++i)
+      if (i == j || parallel(f.v, i, (i + 1) % k, j, (j + 1) % k)) f.edge_dir[j] = i;
+  f.chord_dir.assign(static_cast<std::size_t>(k * k), -1);
+  for (int a = 0; a < k; ++a)
+    for (int b = a + 1; b < k; ++b)
+      for (int j = 0; j < k; ++j)
+        if (f.edge_dir[j] == j && parallel(f.v, a, b, j, (j + 1) % k)) {
+          f.chord_dir[a * k + b] = f.chord_dir[b * k + a] = j;
+          break;
+        }
+}
 template <class N>
 V<N> neg(const V<N>& a) { return {-a[0], -a[1], -a[2]}; }
 
@@ -326,12 +360,18 @@ struct Ctx {
     // of S or of L that u is orthogonal to, every vertex of L along L's normal.
     const bool s_edge = c.kind == Kind::EdgeEdge || c.kind == Kind::EdgeVertex;
     const bool l_edge = c.kind == Kind::EdgeEdge || c.kind == Kind::VertexEdge;
+    // A flat shape's chords parallel to the candidate's own edge tie too (FlatShape3::chord_dir).
+    auto chord_tie = [](const FlatShape3* F, int e, int a, int b) {
+      const int k = static_cast<int>(F->v.size());
+      return !F->chord_dir.empty() && F->chord_dir[a * k + b] >= 0 && F->chord_dir[a * k + b] == F->edge_dir[e];
+    };
     auto s_tie = [&](int a, int b) {
-      return s_edge && ((a == s_origin(c.s) && b == s_target(c.s)) || (b == s_origin(c.s) && a == s_target(c.s)));
+      return s_edge && ((a == s_origin(c.s) && b == s_target(c.s)) || (b == s_origin(c.s) && a == s_target(c.s)) ||
+                        (fs && chord_tie(fs, c.s, a, b)));
     };
     auto l_tie = [&](int a, int b) {
       return c.kind == Kind::FaceL ||
-             (l_edge && ((a == c.l && b == ledge_end(c.l)) || (b == c.l && a == ledge_end(c.l))));
+             (l_edge && ((a == c.l && b == ledge_end(c.l)) || (b == c.l && a == ledge_end(c.l)) || chord_tie(&L, c.l, a, b)));
     };
     int i = 0;
     if (c.kind == Kind::FaceS) {

@@ -22,6 +22,11 @@ struct FlatShape3 {
   std::vector<std::size_t> input;  ///< index of v[j] in the input point list
   int dim = 0;
   std::string name;
+  /// Exact parallel classes of a polygon with at most 64 vertices (else empty): edge_dir[j] the
+  /// least edge parallel to edge j; chord_dir[a·k + b] that of the chord v[a]–v[b], −1 when no
+  /// edge is parallel to it. A direction orthogonal to edge j is orthogonal to every chord of
+  /// its class, so the engines skip those known ties (exact zeros cost the slowest tier).
+  std::vector<int> edge_dir, chord_dir;
 };
 
 /// The normal form of a point set of dimension at most 2, decided exactly (collinear3, orient3d,

@@ -146,6 +146,34 @@ TEST(FlatFlatOracle, DegenerateGrids) {
   EXPECT_GT(n.apart, 40);
 }
 
+// Polygons with exactly parallel edges and chords (a hexagon whose long diagonals are parallel to
+// edges, a rectangle): the scans skip those known ties (FlatShape3::chord_dir); random poses.
+TEST(FlatFlatOracle, ParallelEdgesAndChords) {
+  const std::vector<Vec3> hexagon = {Vec3(0.5, 0, 0),     Vec3(0.25, 0.5, 0),  Vec3(-0.25, 0.5, 0),
+                                     Vec3(-0.5, 0, 0),    Vec3(-0.25, -0.5, 0), Vec3(0.25, -0.5, 0)};
+  const std::vector<Vec3> rect = {Vec3(-0.75, -0.25, 0.125), Vec3(0.75, -0.25, 0.125), Vec3(0.75, 0.25, 0.125),
+                                  Vec3(-0.75, 0.25, 0.125)};
+  const convex3::FlatShape3 h = convex3::flat_shape(hexagon, "hexagon");
+  ASSERT_EQ(h.edge_dir, (std::vector<int>{0, 1, 2, 0, 1, 2}));
+  EXPECT_EQ(h.chord_dir[0 * 6 + 3], 1);   // the long diagonal v0–v3 ∥ edges 1 and 4
+  EXPECT_EQ(h.chord_dir[4 * 6 + 1], 2);   // v1–v4 ∥ edges 2 and 5
+  EXPECT_EQ(h.chord_dir[1 * 6 + 5], -1);  // v1–v5 is vertical: no edge
+  std::mt19937_64 rng(4242);
+  std::uniform_real_distribution<double> U(-1, 1);
+  Count n;
+  for (int trial = 0; trial < 120; ++trial) {
+    const std::vector<Vec3>& a = trial % 2 ? hexagon : rect;
+    const std::vector<Vec3> b = trial % 3 == 0 ? random_segment(rng) : trial % 3 == 1 ? rect : hexagon;
+    const Pose3 pa = trial % 4 ? Pose3() : Pose3(random_rotation(rng), 0.2 * Vec3(U(rng), U(rng), U(rng)));
+    const Pose3 pb(random_rotation(rng), (0.1 + 0.3 * (trial % 3)) * Vec3(U(rng), U(rng), U(rng)));
+    check(a, pa, b, pb, n, "parallel trial " + std::to_string(trial));
+  }
+  std::printf("parallel: %d overlapping, %d touching, %d apart, worst %.2f ulps\n", n.overlapping, n.touching, n.apart,
+              n.worst);
+  EXPECT_GT(n.overlapping, 15);
+  EXPECT_GT(n.apart, 30);
+}
+
 // Coplanar or parallel lower-dimensional sets: M is flat (no interior), so never overlapping;
 // 0 when they meet, else the distance.
 TEST(FlatFlat, FlatDifferencesNeverOverlap) {
