@@ -34,6 +34,12 @@
 // C + n·k + n·e_L + e_S·k (distance), c the vertex degree (a climb for L's normal), plus
 // O(f_S·k + n·k + e_S·k) for the witnesses. Meant for points, segments and small polygons (k
 // small); nothing is built per pair. Measured: docs/benchmarks.md (bench_primitives3).
+// Two lower-dimensional shapes (flat_flat_distance, the cores of rounded shapes): the same family
+// with S flat (±its normal, its edges); when the dimensions sum to 3 or more M may be solid, and
+// 0 ∈ int M ⇔ every facet candidate has h > 0, then −σ as above. A polygon's exact parallel
+// classes of edges and chords (FlatShape3::edge_dir / chord_dir, built once by flat_shape) mark
+// more known ties: a candidate orthogonal to its own edge is orthogonal to every chord parallel
+// to that edge (squares, rectangles, hexagons).
 #include "convex3/flat3.hpp"
 
 #include "convex3/polytope_data.hpp"

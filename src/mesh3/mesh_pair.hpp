@@ -5,7 +5,8 @@
 // Let P = ∪ P_i, Q = ∪ Q_j (pieces), M_ij = P_i ⊕ (−Q'_j), O = ∪ int M_ij the open overlap set
 // (pieces have disjoint interiors and cover the solids, so int P ∩ int(Q' + x) ≠ ∅ iff x lies in
 // some int M_ij). Files: mesh_pair.cpp (pieces, boxes, overlap, signed distance, σ bounds),
-// mesh_line.cpp (σ_d and separation: the open intervals of the line in the int M_ij).
+// mesh_line.cpp (σ_d and separation: the open intervals of the line in the int M_ij),
+// mesh_cast.cpp (the shape cast: the least convex cast over the piece pairs).
 //
 // Features of a mesh answer: feature_p / feature_q index the vertices, half-edges and triangles
 // of the pieces piece_p / piece_q (pieces() of the pair: Mesh3::decomposition().pieces, or the
