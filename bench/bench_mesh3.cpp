@@ -225,6 +225,11 @@ void BM_MeshMinimumBoundsDescent(benchmark::State& st) {
 void BM_MeshDistance(benchmark::State& st) {
   mesh_query(st, [](const Prepared& p, std::size_t i) { benchmark::DoNotOptimize(p.pair.signed_distance(pendepth::Pose3(), p.poses[i])); });
 }
+// The shape cast (src/mesh3/mesh_cast.cpp): half the poses overlap (answered by the overlap
+// test alone), the others cast along a random direction.
+void BM_MeshCast(benchmark::State& st) {
+  mesh_query(st, [](const Prepared& p, std::size_t i) { benchmark::DoNotOptimize(p.pair.cast(pendepth::Pose3(), p.poses[i], p.dirs[i])); });
+}
 void BM_MeshMinimumBounds(benchmark::State& st) {
   mesh_query(st, [](const Prepared& p, std::size_t i) { benchmark::DoNotOptimize(p.pair.minimum(pendepth::Pose3(), p.poses[i])); });
   // How often the certified bounds meet, and their mean relative gap, over the first 16 poses.
@@ -285,6 +290,7 @@ void mesh_args(benchmark::internal::Benchmark* b) {
 BENCHMARK(BM_MeshOverlap)->Apply(mesh_args);
 BENCHMARK(BM_MeshAlong)->Apply(mesh_args);
 BENCHMARK(BM_MeshDistance)->Apply(mesh_args);
+BENCHMARK(BM_MeshCast)->Apply(mesh_args);
 BENCHMARK(BM_MeshMinimumBounds)->Apply(mesh_args);
 BENCHMARK(BM_MeshAlongDescent)->Apply(mesh_args);
 BENCHMARK(BM_MeshMinimumBoundsDescent)->Apply(mesh_args);

@@ -1,7 +1,8 @@
 // Lower-dimensional shapes and primitives in Pair3 (issue 16 items 4, 5), peers in one run: the
 // signed distance and σ of a solid hull against a point, a segment, a triangle, a sphere, a
 // capsule and another hull of the same size (the existing solid–solid engine), random poses
-// (half overlapping). Counters: µs per query.
+// (half overlapping). Counters: µs per query. BM_RoundedFlatCores: rounded shapes on two
+// lower-dimensional cores.
 #include <pendepth/pendepth.hpp>
 
 #include <benchmark/benchmark.h>
@@ -104,10 +105,52 @@ void run_curved(benchmark::State& state, bool distance) {
 void BM_CurvedSignedDistance(benchmark::State& s) { run_curved(s, true); }
 void BM_CurvedMinimum(benchmark::State& s) { run_curved(s, false); }
 
+// Rounded shapes on two lower-dimensional cores (src/convex3/flat3.cpp flat_flat_distance): cores
+// summing to dimension 2 (capsule–capsule, sphere–rounded triangle: the existing path) against
+// 3 and 4 (rounded triangle–capsule, two rounded squares), signed distance and cast, random poses
+// (about half overlapping).
+Shape3 rounded_kind(int k) {
+  const std::vector<Vec3> tri{Vec3(-0.5, -0.3, 0), Vec3(0.5, -0.3, 0), Vec3(0, 0.6, 0)};
+  const std::vector<Vec3> sq{Vec3(-0.5, -0.5, 0), Vec3(0.5, -0.5, 0), Vec3(0.5, 0.5, 0), Vec3(-0.5, 0.5, 0)};
+  switch (k) {
+    case 0: return Shape3::capsule(0.2, 0.5);
+    case 1: return Shape3::sphere(0.3);
+    case 2: return Shape3::rounded(Shape3::flat(tri), 0.1);
+    default: return Shape3::rounded(Shape3::flat(sq), 0.1);
+  }
+}
+void BM_RoundedFlatCores(benchmark::State& state) {
+  const int a = static_cast<int>(state.range(0)), b = static_cast<int>(state.range(1));
+  const bool cast = state.range(2) != 0;
+  const Pair3 pair(rounded_kind(a), rounded_kind(b));
+  std::mt19937_64 rng(43);
+  std::uniform_real_distribution<double> U(-0.8, 0.8);
+  std::normal_distribution<double> g;
+  std::vector<Pose3> poses;
+  std::vector<Vec3> dirs;
+  for (int i = 0; i < 256; ++i) {
+    poses.emplace_back(Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)), Vec3(U(rng), U(rng), U(rng)));
+    dirs.push_back(-poses.back().translation + 0.3 * Vec3(g(rng), g(rng), g(rng)));
+  }
+  std::size_t i = 0;
+  double sink = 0;
+  for (auto _ : state) {
+    const std::size_t k = i++ % poses.size();
+    sink += cast ? pair.cast(Pose3(), poses[k], dirs[k]).lower_bound : pair.signed_distance(Pose3(), poses[k]).distance;
+  }
+  benchmark::DoNotOptimize(sink);
+  const char* names[] = {"capsule", "sphere", "rounded triangle", "rounded square"};
+  state.SetLabel(std::string(names[a]) + " vs " + names[b] + (cast ? " cast" : " distance"));
+  state.counters["us_per_query"] = benchmark::Counter(static_cast<double>(state.iterations()) * 1e-6,
+                                                      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
 }  // namespace
 
 BENCHMARK(BM_CurvedSignedDistance)->DenseRange(0, 5);
 BENCHMARK(BM_CurvedMinimum)->DenseRange(0, 5);
 BENCHMARK(BM_SignedDistance)->ArgsProduct({{0, 1, 2, 3, 4, 5}, {16, 64}});
 BENCHMARK(BM_Minimum)->ArgsProduct({{0, 1, 2, 3, 4, 5}, {16, 64}});
+BENCHMARK(BM_RoundedFlatCores)->Args({0, 0, 0})->Args({1, 2, 0})->Args({2, 0, 0})->Args({3, 3, 0})
+    ->Args({0, 0, 1})->Args({1, 2, 1})->Args({2, 0, 1})->Args({3, 3, 1});
 BENCHMARK_MAIN();

@@ -140,7 +140,7 @@ Shape2 make_shape2(const ShapeText& s, std::string_view name) {
 // A 3D shape as Shape3::from_file reads it (docs/design.md §3): a file without faces is a point
 // set (its hull, or Shape3::flat when its points are coplanar, as a file with faces whose points
 // are); a file with faces a validated closed mesh (convex → the convex path, else a mesh
-// shape, answered on its convex decomposition; cast and --html refuse it). `hull` (--hull):
+// shape, answered on its convex decomposition; --html refuses it). `hull` (--hull):
 // the hull of the vertices, faces ignored and not validated.
 Shape3 make_shape3(const ShapeText& s, std::string_view name, bool hull) {
   if (s.spec) return io::shape3_from_spec(*s.spec, name, hull);
@@ -610,10 +610,10 @@ int run_distance(const DistanceArgs& a, bool cast) {
     if (cast && d.isZero(0)) throw InvalidInput("--direction: the direction is zero");
     const Pair3 pair = make_pair3(p, q, a.hull);
     const Pose3 pose_p(rp, Vec3::Zero()), pose_q(rq, t);
-    const auto &P = shown(pair.P()), &Q = shown(pair.Q());
-    if (cast) {
+    if (cast) {  // a mesh pair's features index the pieces piece_p / piece_q
       const pendepth::Cast3 r = shown(pair.cast(pose_p, pose_q, d), pair);
-      a.json ? io::append_json(out, r, P, Q) : void(out = io::summary(r, P, Q));
+      const auto &FP = shown(pair.P(), r.piece_p), &FQ = shown(pair.Q(), r.piece_q);
+      a.json ? io::append_json(out, r, FP, FQ) : void(out = io::summary(r, FP, FQ));
     } else {
       const pendepth::Distance3 r = shown(pair.signed_distance(pose_p, pose_q), pair);
       const auto &FP = shown(pair.P(), r.piece_p), &FQ = shown(pair.Q(), r.piece_q);
@@ -906,7 +906,7 @@ int main(int argc, char** argv) {
                "P is fixed, Q moves; Q is placed at the offset t. Shapes: .wkt POLYGON files "
                "(2D: simple polygons, convex or not, with holes); "
                ".obj, .off, .stl, .ply files (3D: vertices only → their convex hull; with faces → a closed mesh, "
-               "non-convex meshes answered on their convex pieces (σ as certified bounds; cast needs --hull); --hull takes the hull of any file's "
+               "non-convex meshes answered on their convex pieces (σ as certified bounds); --hull takes the hull of any file's "
                "vertices)."};
   app.require_subcommand(1);
   app.footer("A shape or query file '-' is standard input (one of them at most).\n"

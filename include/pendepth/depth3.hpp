@@ -88,6 +88,10 @@ struct Distance3 {
 /// its normal is an outward normal of P ⊕ (−Q) at the contact: a facet's facing the motion, or,
 /// when the graze is decided by the exact graze routine, that of the supporting plane containing
 /// the ray (normal·d = 0), with the support features of P and Q in that plane.
+/// lower_bound <= the exact entry <= upper_bound: equal to `distance` for the exact engines
+/// (convex and flat shapes: within a few ulps), a certified bracket for rounded shapes (spheres,
+/// capsules, rounded hulls: `distance` is its upper end); +infinity both on a miss.
+/// Pair3 on meshes: piece_p / piece_q name the convex pieces the features index (as Depth3).
 struct Cast3 {
   double distance = 0;
   Vec3 translation{0, 0, 0};
@@ -95,8 +99,10 @@ struct Cast3 {
   Vec3 witness_p{0, 0, 0};
   Vec3 witness_q{0, 0, 0};
   Feature3 feature_p, feature_q;
+  double lower_bound = 0, upper_bound = 0;
   bool hit = false;
   bool overlapping = false;
+  int piece_p = -1, piece_q = -1;
 };
 
 /// σ: exact minimum depth = distance from 0 to the nearest facet plane of M (0 when touching or

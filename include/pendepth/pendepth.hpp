@@ -356,10 +356,10 @@ class WarmStart3 {
 /// one (src/convex3/flat3.cpp: exact), rounded shapes — spheres, capsules, core ⊕ ball — through
 /// their cores' signed distance (src/primitives/rounded3.cpp: sd one rounding from the exact core
 /// value, overlap and touching exact; σ_d and casts certified brackets: lower_bound <= exit <=
-/// upper_bound = depth, a cast's distance the upper end of its bracket, its hit exact); curved
-/// primitives — cylinders, cones, ellipsoids — by the certified support-function engine
-/// (src/primitives/support3.cpp: every answer a bracket, docs/robustness.md "Curved primitives").
-/// Queries are const and thread-safe.
+/// upper_bound = depth, a cast's distance the upper end of its bracket [lower_bound, upper_bound],
+/// its hit exact); curved primitives — cylinders, cones, ellipsoids — by the certified
+/// support-function engine (src/primitives/support3.cpp: every answer a bracket,
+/// docs/robustness.md "Curved primitives"). Queries are const and thread-safe.
 ///
 /// Meshes (either shape non-convex; docs/design.md "Meshes", src/mesh3/mesh_pair.hpp): answered
 /// on the pieces of Mesh3::decomposition() (a convex shape is one piece), built at construction.
@@ -371,8 +371,9 @@ class WarmStart3 {
 /// / triangles feature_p, feature_q index. When a decomposition has rounded pieces
 /// (ConvexDecomposition3::rounded_pieces > 0) the answers are exact for the rounded pieces, which
 /// may differ from the mesh by slivers of ½ ulp. `candidates` counts the piece pairs descended
-/// (σ_d, separation) or sums the convex work (σ). cast, and the warm start (ignored), are for
-/// convex pairs: cast on a mesh pair throws InvalidInput. Costs: docs/benchmarks.md.
+/// (σ_d, separation) or sums the convex work (σ). cast is exact: the least convex cast over the
+/// box-pruned piece pairs (src/mesh3/mesh_cast.cpp). The warm start is ignored on meshes.
+/// Costs: docs/benchmarks.md.
 class Pair3 {
  public:
   Pair3(Shape3 P, Shape3 Q, Prepare prepare = Prepare::Auto);

@@ -152,6 +152,8 @@ class Depth3Result:
     upper_bound: Any
     candidates: Any
     overlapping: Any
+    piece_p: Any  # meshes: the convex piece feature_p indexes (-1: a convex pair)
+    piece_q: Any
     kind: str
     def __len__(self) -> int: ...
 

@@ -167,7 +167,7 @@ struct Result2 {
 
 struct Result3 {
   py::object depth, translation, normal, facet_normal, witness_p, witness_q, feature_p, feature_q,
-      lower_bound, upper_bound, candidates, overlapping;
+      lower_bound, upper_bound, candidates, overlapping, piece_p, piece_q;
   std::string kind;
   std::size_t size = 0;
   bool single = false;
@@ -230,10 +230,11 @@ Result3 result3(const std::vector<Depth3>& out, bool single, DepthKind kind) {
   auto depth = scalars(n), lo = scalars(n), hi = scalars(n);
   auto tr = vectors(n, 3), nr = vectors(n, 3), fn = vectors(n, 3), wp = vectors(n, 3), wq = vectors(n, 3);
   auto fp = features(n), fq = features(n);
-  py::array_t<std::int64_t> cand(static_cast<py::ssize_t>(n));
+  py::array_t<std::int64_t> cand(static_cast<py::ssize_t>(n)), pp(static_cast<py::ssize_t>(n)), pq(static_cast<py::ssize_t>(n));
   py::array_t<bool> ov(static_cast<py::ssize_t>(n));
   for (std::size_t i = 0; i < n; ++i) {
     const Depth3& r = out[i];
+    pp.mutable_data()[i] = r.piece_p, pq.mutable_data()[i] = r.piece_q;
     depth.mutable_data()[i] = r.depth;
     lo.mutable_data()[i] = r.lower_bound;
     hi.mutable_data()[i] = r.upper_bound;
@@ -262,6 +263,8 @@ Result3 result3(const std::vector<Depth3>& out, bool single, DepthKind kind) {
   r.feature_q = squeeze(fq, single);
   r.candidates = squeeze(cand, single);
   r.overlapping = squeeze(ov, single);
+  r.piece_p = squeeze(pp, single);
+  r.piece_q = squeeze(pq, single);
   r.kind = kind_name(kind);
   r.size = n;
   r.single = single;
@@ -415,12 +418,19 @@ py::object distance_like(const std::vector<R>& out, bool single) {
     py::array_t<bool> hit(static_cast<py::ssize_t>(n));
     for (std::size_t i = 0; i < n; ++i) hit.mutable_data()[i] = out[i].hit;
     d["hit"] = squeeze(hit, single);
-  } else {
-    auto lo = scalars(n), hi = scalars(n);
-    for (std::size_t i = 0; i < n; ++i) lo.mutable_data()[i] = out[i].lower_bound, hi.mutable_data()[i] = out[i].upper_bound;
-    d["lower_bound"] = squeeze(lo, single);
-    d["upper_bound"] = squeeze(hi, single);
   }
+  // The certified bracket (a rounded cast's [lower, upper]; equal to distance when exact) and the
+  // mesh pieces the features index (-1 for convex pairs).
+  auto lo = scalars(n), hi = scalars(n);
+  py::array_t<std::int64_t> pp(static_cast<py::ssize_t>(n)), pq(static_cast<py::ssize_t>(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    lo.mutable_data()[i] = out[i].lower_bound, hi.mutable_data()[i] = out[i].upper_bound;
+    pp.mutable_data()[i] = out[i].piece_p, pq.mutable_data()[i] = out[i].piece_q;
+  }
+  d["lower_bound"] = squeeze(lo, single);
+  d["upper_bound"] = squeeze(hi, single);
+  d["piece_p"] = squeeze(pp, single);
+  d["piece_q"] = squeeze(pq, single);
   return py::module_::import("types").attr("SimpleNamespace")(**d);
 }
 
@@ -638,8 +648,10 @@ A query given as one (2,) point has scalars and (2,) vectors instead.)")
 depth (N,), translation, normal, facet_normal, witness_p, witness_q (N, 3), lower_bound,
 upper_bound (N,) (equal to depth: exact methods), candidates (N,) int64 (work counter),
 overlapping (N,) bool, feature_p / feature_q (N, 2) int64 [kind, index] (kind 0 none,
-1 vertex, 2 edge = level-0 half-edge id, 3 face = triangle id), kind. A query given as one
-(3,) point has scalars and (3,) vectors instead.)")
+1 vertex, 2 edge = level-0 half-edge id, 3 face = triangle id), piece_p / piece_q (N,) int64
+(a mesh pair: the convex pieces, Shape3 decomposition order, whose features feature_p /
+feature_q index; -1 for convex pairs), kind. A query given as one (3,) point has scalars and
+(3,) vectors instead.)")
       .def_readonly("depth", &Result3::depth)
       .def_readonly("translation", &Result3::translation)
       .def_readonly("normal", &Result3::normal)
@@ -652,6 +664,8 @@ overlapping (N,) bool, feature_p / feature_q (N, 2) int64 [kind, index] (kind 0 
       .def_readonly("upper_bound", &Result3::upper_bound)
       .def_readonly("candidates", &Result3::candidates)
       .def_readonly("overlapping", &Result3::overlapping)
+      .def_readonly("piece_p", &Result3::piece_p)
+      .def_readonly("piece_q", &Result3::piece_q)
       .def_readonly("kind", &Result3::kind)
       .def("__len__", [](const Result3& r) { return r.size; })
       .def("__repr__", [](const Result3& r) {
@@ -1091,7 +1105,8 @@ validated once), allowed_orientations (degrees; [0.0] when absent)). Bad input r
            "Exact signed distance (FCL / Drake convention): > 0 apart (Euclidean distance), 0 touching,\n"
            "-sigma overlapping. Fields: distance, translation (moves Q into touching contact), normal\n"
            "(from P towards Q), witness_p, witness_q (on the unmoved Q), feature_p, feature_q (kind: 0 none,\n"
-           "1 vertex, 2 edge, 3 face; index), lower_bound, upper_bound, overlapping.")
+           "1 vertex, 2 edge, 3 face; index), lower_bound, upper_bound, overlapping, piece_p, piece_q (meshes:\n"
+           "the convex pieces the features index; -1 for convex pairs).")
       .def("cast", [pose_batch](const PyPair3& p, const py::object& translations, const py::object& directions,
                                 const py::object& rotations) {
              bool single = false;
@@ -1111,7 +1126,9 @@ validated once), allowed_orientations (degrees; [0.0] when absent)). Bad input r
            "Shape cast (time of impact): the smallest s >= 0 such that Q moved by s*d/|d| touches P; inf\n"
            "and hit False when it never does, 0 when already touching or overlapping. Fields: distance,\n"
            "translation, normal (outward normal of P - Q at the contact), witness_p, witness_q (the\n"
-           "contact point), feature_p, feature_q, hit, overlapping.")
+           "contact point), feature_p, feature_q, hit, overlapping, lower_bound <= the exact entry <=\n"
+           "upper_bound (equal to distance for polytopes and flat shapes; a certified bracket for rounded\n"
+           "shapes, distance its upper end; inf on a miss), piece_p, piece_q (meshes, as signed_distance).")
       .def("trajectory", [pose_batch](const PyPair3& p, const py::object& translations, const py::object& rotations,
                                       bool warm) {
              bool single = false;

@@ -106,7 +106,48 @@ def test_pair3_on_meshes(tmp_path):
     ts = np.array([[0.5, 0.0, 0.0], [1.0, 1.0, 0.0], [0.25, 0.5, 0.5]])
     batch = pair.along(ts, [0, 1, 0], threads=2)
     assert list(batch.depth) == [pair.along(x, [0, 1, 0]).depth for x in ts]
-    with pytest.raises(pendepth.InvalidInput, match="not implemented yet"):
-        pair.cast(t, [1, 0, 0])
     with pytest.raises(pendepth.InvalidInput):
         pair.along(t, [0, 0, 0])
+
+
+def test_pair3_mesh_cast_and_pieces(tmp_path):
+    # The shape cast on a mesh pair (exact) and the pieces every 3D result names.
+    (tmp_path / "l.off").write_text(_polycube_off([(0, 0, 0), (1, 0, 0), (0, 1, 0)]))
+    (tmp_path / "c.off").write_text(_polycube_off([(0, 0, 0)]))
+    L = pendepth.Shape3.from_file(str(tmp_path / "l.off"), name="L")
+    C = pendepth.Shape3.from_file(str(tmp_path / "c.off"), name="C")
+    pair = pendepth.Pair3(L, C)
+    c = pair.cast([3.0, 0.0, 0.0], [-1, 0, 0])  # onto the L's foot (x = 2)
+    assert c.hit and not c.overlapping and c.distance == 1.0
+    assert c.lower_bound == c.upper_bound == 1.0
+    assert c.piece_p >= 0 and c.piece_q == 0  # the cube is one piece
+    assert pair.cast([3.0, 1.0, 0.0], [-2, 0, 0]).distance == 1.0  # grazes the foot's top at its edge
+    assert pair.cast([3.0, 1.5, 0.0], [-2, 0, 0]).distance == 2.0  # over the foot onto the upright arm
+    n = pair.cast([1.0, 1.0, 0.0], [1, 1, 0])  # in the notch: touching at the start
+    assert n.hit and n.distance == 0.0 and not n.overlapping
+    o = pair.cast([0.5, 0.0, 0.0], [1, 0, 0])
+    assert o.hit and o.overlapping and o.distance == 0.0
+    m = pair.cast([3.0, 0.0, 0.0], [1, 0, 0])
+    assert not m.hit and m.distance == math.inf and m.lower_bound == m.upper_bound == math.inf
+    # Pieces in every result; batches carry them per row.
+    s = pair.minimum([0.5, 0.0, 0.0])
+    assert s.piece_p >= 0 and s.piece_q == 0
+    d = pair.signed_distance([3.0, 0.0, 0.0])
+    assert d.piece_p >= 0 and d.piece_q == 0
+    a = pair.along(np.array([[0.5, 0.0, 0.0], [0.25, 1.5, 0.0], [5.0, 5.0, 5.0]]), [0, 1, 0])
+    assert a.piece_p.dtype == np.int64 and a.piece_p.shape == (3,)
+    assert list(a.piece_q[:2]) == [0, 0] and a.piece_p[2] == -1  # not overlapping: no pieces
+    # A convex pair names no pieces.
+    assert pendepth.Pair3(cube(), cube()).minimum([0.5, 0.0, 0.0]).piece_p == -1
+
+
+def test_rounded_cast_bracket():
+    # Two spheres: the entry s solves |c + s d| = r; the bracket holds it, distance its upper end.
+    pair = pendepth.Pair3(pendepth.Shape3.sphere(0.3), pendepth.Shape3.sphere(0.4))
+    c = pair.cast([3.0, 0.25, 0.0], [-1, 0, 0])
+    exact = 3.0 - math.sqrt(0.7 ** 2 - 0.25 ** 2)
+    assert c.hit and c.lower_bound <= c.upper_bound == c.distance
+    assert c.lower_bound <= exact * (1 + 1e-15) and c.upper_bound >= exact * (1 - 1e-15)
+    assert c.upper_bound - c.lower_bound <= 8 * 2.0 ** -52 * c.upper_bound
+    b = pair.cast(np.array([[3.0, 0.25, 0.0], [3.0, 2.0, 0.0]]), [-1, 0, 0])
+    assert list(b.hit) == [True, False] and b.lower_bound[1] == math.inf

@@ -36,7 +36,8 @@
 
 namespace pendepth {
 
-Cast3 shape_cast(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q, const Pose3& pose_q,
+namespace {
+Cast3 cast_exact(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q, const Pose3& pose_q,
                  const Vec3& d) {
   if (!d.allFinite() || d == Vec3::Zero()) throw InvalidInput("direction: zero or non-finite");
   if (!pose_p.translation.allFinite()) throw InvalidInput("pose of P: non-finite translation");
@@ -83,6 +84,16 @@ Cast3 shape_cast(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolyt
   }
   // Touching at s = 0: the facet through 0 (the entry one if 0 lies on it).
   fill(in.h_sign == 0 ? in : out, 0.0);
+  return r;
+}
+
+}  // namespace
+
+// The exact engine: the bracket is the answer itself (+infinity on a miss).
+Cast3 shape_cast(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q, const Pose3& pose_q,
+                 const Vec3& d) {
+  Cast3 r = cast_exact(P, pose_p, Q, pose_q, d);
+  r.lower_bound = r.upper_bound = r.distance;
   return r;
 }
 

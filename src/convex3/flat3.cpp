@@ -34,6 +34,12 @@
 // C + n·k + n·e_L + e_S·k (distance), c the vertex degree (a climb for L's normal), plus
 // O(f_S·k + n·k + e_S·k) for the witnesses. Meant for points, segments and small polygons (k
 // small); nothing is built per pair. Measured: docs/benchmarks.md (bench_primitives3).
+// Two lower-dimensional shapes (flat_flat_distance, the cores of rounded shapes): the same family
+// with S flat (±its normal, its edges); when the dimensions sum to 3 or more M may be solid, and
+// 0 ∈ int M ⇔ every facet candidate has h > 0, then −σ as above. A polygon's exact parallel
+// classes of edges and chords (FlatShape3::edge_dir / chord_dir, built once by flat_shape) mark
+// more known ties: a candidate orthogonal to its own edge is orthogonal to every chord parallel
+// to that edge (squares, rectangles, hexagons).
 #include "convex3/flat3.hpp"
 
 #include "convex3/polytope_data.hpp"
@@ -47,6 +53,10 @@
 namespace pendepth::convex3 {
 
 // ---- the normal form of a lower-dimensional point set ----------------------------------------
+
+namespace {
+void parallel_classes(FlatShape3& f);  // FlatShape3::edge_dir, chord_dir (below)
+}  // namespace
 
 FlatShape3 flat_shape(std::span<const Vec3> pts, std::string_view name) {
   FlatShape3 f;
@@ -122,6 +132,7 @@ FlatShape3 flat_shape(std::span<const Vec3> pts, std::string_view name) {
   h.resize(k - 1);
   for (std::size_t i : h) f.v.push_back(pts[i]), f.input.push_back(i);
   f.dim = 2;
+  parallel_classes(f);
   return f;
 }
 
@@ -139,6 +150,35 @@ V<N> cross(const V<N>& a, const V<N>& b) {
 }
 template <class N>
 V<N> scl(const N& s, const V<N>& a) { return {s * a[0], s * a[1], s * a[2]}; }
+
+// Exact: is v[b] − v[a] parallel to v[d] − v[c] (the input doubles; the differences never rounded)?
+bool parallel(const std::vector<Vec3>& v, int a, int b, int c, int d) {
+  for (int k = 0; k < 3; ++k)
+    if (exact::exact_sign([&](auto f) {
+          const V<decltype(f(0.0))> x{f(v[b].x()) - f(v[a].x()), f(v[b].y()) - f(v[a].y()), f(v[b].z()) - f(v[a].z())};
+          const V<decltype(f(0.0))> y{f(v[d].x()) - f(v[c].x()), f(v[d].y()) - f(v[c].y()), f(v[d].z()) - f(v[c].z())};
+          return cross(x, y)[k];
+        }) != 0)
+      return false;
+  return true;
+}
+
+void parallel_classes(FlatShape3& f) {
+  const int k = static_cast<int>(f.v.size());
+  if (f.dim != 2 || k > 64) return;
+  f.edge_dir.assign(k, -1);
+  for (int j = 0; j < k; ++j)
+    for (int i = 0; i <= j && f.edge_dir[j] < 0; ++i)
+      if (i == j || parallel(f.v, i, (i + 1) % k, j, (j + 1) % k)) f.edge_dir[j] = i;
+  f.chord_dir.assign(static_cast<std::size_t>(k * k), -1);
+  for (int a = 0; a < k; ++a)
+    for (int b = a + 1; b < k; ++b)
+      for (int j = 0; j < k; ++j)
+        if (f.edge_dir[j] == j && parallel(f.v, a, b, j, (j + 1) % k)) {
+          f.chord_dir[a * k + b] = f.chord_dir[b * k + a] = j;
+          break;
+        }
+}
 template <class N>
 V<N> neg(const V<N>& a) { return {-a[0], -a[1], -a[2]}; }
 
@@ -326,12 +366,18 @@ struct Ctx {
     // of S or of L that u is orthogonal to, every vertex of L along L's normal.
     const bool s_edge = c.kind == Kind::EdgeEdge || c.kind == Kind::EdgeVertex;
     const bool l_edge = c.kind == Kind::EdgeEdge || c.kind == Kind::VertexEdge;
+    // A flat shape's chords parallel to the candidate's own edge tie too (FlatShape3::chord_dir).
+    auto chord_tie = [](const FlatShape3* F, int e, int a, int b) {
+      const int k = static_cast<int>(F->v.size());
+      return !F->chord_dir.empty() && F->chord_dir[a * k + b] >= 0 && F->chord_dir[a * k + b] == F->edge_dir[e];
+    };
     auto s_tie = [&](int a, int b) {
-      return s_edge && ((a == s_origin(c.s) && b == s_target(c.s)) || (b == s_origin(c.s) && a == s_target(c.s)));
+      return s_edge && ((a == s_origin(c.s) && b == s_target(c.s)) || (b == s_origin(c.s) && a == s_target(c.s)) ||
+                        (fs && chord_tie(fs, c.s, a, b)));
     };
     auto l_tie = [&](int a, int b) {
       return c.kind == Kind::FaceL ||
-             (l_edge && ((a == c.l && b == ledge_end(c.l)) || (b == c.l && a == ledge_end(c.l))));
+             (l_edge && ((a == c.l && b == ledge_end(c.l)) || (b == c.l && a == ledge_end(c.l)) || chord_tie(&L, c.l, a, b)));
     };
     int i = 0;
     if (c.kind == Kind::FaceS) {
@@ -610,9 +656,9 @@ Distance3 apart(const Ctx& x, const std::vector<Cand>& cands, std::vector<Eval>&
 
 }  // namespace
 
-Depth3 flat_minimum(const ConvexPolytope& S, const Pose3& ps, const FlatShape3& L, const Pose3& pl) {
-  const Ctx x = make_ctx(S, L, ps, pl);
-  Scan sc = scan(x);
+namespace {
+// σ of the context's M from its scan of the facet candidates (0 when not overlapping).
+Depth3 minimum_of(const Ctx& x, Scan& sc, const Pose3& ps) {
   Depth3 r;
   r.kind = DepthKind::Minimum;
   r.candidates = sc.cands.size();
@@ -626,6 +672,26 @@ Depth3 flat_minimum(const ConvexPolytope& S, const Pose3& ps, const FlatShape3& 
   r.depth = r.lower_bound = r.upper_bound = bv;
   r.feature_p = x.feature_s(c, e), r.feature_q = x.feature_l(c, e);
   return world(r, ps, v, u, u, x.contact(c, e, v));
+}
+
+// The signed distance of an overlapping pair from σ: the move of Q by σ's translation; witness_q
+// on the unmoved Q.
+Distance3 overlap_distance(const Depth3& m) {
+  Distance3 r;
+  r.distance = r.lower_bound = r.upper_bound = -m.depth;
+  r.overlapping = true;
+  r.normal = m.normal;
+  r.translation = m.translation;
+  r.witness_p = m.witness_p, r.witness_q = m.witness_q - m.translation;
+  r.feature_p = m.feature_p, r.feature_q = m.feature_q;
+  return r;
+}
+}  // namespace
+
+Depth3 flat_minimum(const ConvexPolytope& S, const Pose3& ps, const FlatShape3& L, const Pose3& pl) {
+  const Ctx x = make_ctx(S, L, ps, pl);
+  Scan sc = scan(x);
+  return minimum_of(x, sc, ps);
 }
 
 Depth3 flat_directional(const ConvexPolytope& S, const Pose3& ps, const FlatShape3& L, const Pose3& pl,
@@ -676,17 +742,8 @@ Distance3 flat_signed_distance(const ConvexPolytope& S, const Pose3& ps, const F
   const Ctx x = make_ctx(S, L, ps, pl);
   const Eigen::Matrix3d Rp = ps.matrix();
   Distance3 r;
-  const Scan sc = scan(x);
-  if (sc.overlapping) {
-    const Depth3 m = flat_minimum(S, ps, L, pl);
-    r.distance = r.lower_bound = r.upper_bound = -m.depth;
-    r.overlapping = true;
-    r.normal = m.normal;
-    r.translation = m.translation;
-    r.witness_p = m.witness_p, r.witness_q = m.witness_q - m.translation;  // on the unmoved Q
-    r.feature_p = m.feature_p, r.feature_q = m.feature_q;
-    return r;
-  }
+  Scan sc = scan(x);
+  if (sc.overlapping) return overlap_distance(minimum_of(x, sc, ps));
   if (sc.touching) {
     const Cand& c = sc.cands[sc.zero_at];
     const Eval& e = sc.evals[sc.zero_at];
@@ -702,25 +759,30 @@ Distance3 flat_signed_distance(const ConvexPolytope& S, const Pose3& ps, const F
 
 Distance3 flat_flat_distance(const FlatShape3& A, const Pose3& pa, const FlatShape3& B, const Pose3& pb,
                              Vec3* touch_normal) {
-  if (A.dim + B.dim > 2)
-    throw InvalidInput("pair: the cores " + A.name + " (dimension " + std::to_string(A.dim) + ") and " + B.name +
-                       " (dimension " + std::to_string(B.dim) +
-                       ") are both lower-dimensional with dimensions summing to 3 or more: not implemented");
   const Ctx x{nullptr, nullptr, nullptr, &A, B, relative(pa, pb)};
-  std::vector<Cand> cands = x.facets();
-  for (const Cand& c : x.closest_pairs()) cands.push_back(c);
-  std::vector<Eval> evals;
-  for (const Cand& c : cands) evals.push_back(x.eval(c));
+  Scan sc;
+  sc.cands = x.facets();
+  for (const Cand& c : sc.cands) {
+    sc.evals.push_back(x.eval(c));
+    if (sc.evals.back().valid && sc.evals.back().hsign <= 0) sc.overlapping = false;
+  }
+  // Dimensions summing to 3 or more: M may be solid. Its facet normals are among the candidates
+  // (±A's and ±B's normals, edge × edge), so 0 ∈ int M iff every one has h > 0 (a flat M has a
+  // normal n with h(n) = −h(−n) among them), and then σ is the least h/|u| as for a solid S.
+  if (A.dim + B.dim > 2 && sc.overlapping) return overlap_distance(minimum_of(x, sc, pa));
+  std::vector<Cand>& cands = sc.cands;
+  std::vector<Eval>& evals = sc.evals;
+  for (const Cand& c : x.closest_pairs()) cands.push_back(c), evals.push_back(x.eval(c));
   Distance3 r = apart(x, cands, evals, pa);
   if (r.distance > 0) return r;
-  // Touching (M has no interior): a candidate plane through 0 gives the contact and a supporting
-  // normal; without one (points on points or on collinear segments) a vertex of one shape in the
-  // other, and any normal ⊥ to the cores' span.
+  // Touching (0 ∈ ∂M, or M has no interior): a candidate plane through 0 (h = 0, every h >= 0)
+  // supports M and gives the contact; without one (points on points or on collinear segments)
+  // a vertex of one shape in the other, and any normal ⊥ to the cores' span.
   const Eigen::Matrix3d Ra = pa.matrix();
   Vec3 c = Vec3::Zero(), n = Vec3::Zero();
   bool found = false;
   for (std::size_t k = 0; k < cands.size() && !found; ++k)
-    if (evals[k].norm > 0 && evals[k].hsign == 0) {
+    if (evals[k].valid && evals[k].hsign == 0) {
       x.refine(cands[k], evals[k]);
       c = x.contact(cands[k], evals[k], Vec3::Zero()), n = Ctx::unit(evals[k]), found = true;
       r.feature_p = x.feature_s(cands[k], evals[k]), r.feature_q = x.feature_l(cands[k], evals[k]);
@@ -747,7 +809,9 @@ Cast3 miss() {
   return r;
 }
 
-Cast3 flat_cast(const ConvexPolytope& S, const Pose3& ps, const FlatShape3& L, const Pose3& pl, const Vec3& d_world) {
+namespace {
+Cast3 flat_cast_exact(const ConvexPolytope& S, const Pose3& ps, const FlatShape3& L, const Pose3& pl,
+                      const Vec3& d_world) {
   const Ctx x = make_ctx(S, L, ps, pl);
   const Eigen::Matrix3d Rp = ps.matrix();
   const Vec3 d = Rp.transpose() * d_world;
@@ -811,6 +875,14 @@ Cast3 flat_cast(const ConvexPolytope& S, const Pose3& ps, const FlatShape3& L, c
   r.normal = Rp * x.unit(e);
   r.witness_p = r.witness_q = Rp * x.contact(c, e, v) + ps.translation;
   r.feature_p = x.feature_s(c, e), r.feature_q = x.feature_l(c, e);
+  return r;
+}
+
+}  // namespace
+
+Cast3 flat_cast(const ConvexPolytope& S, const Pose3& ps, const FlatShape3& L, const Pose3& pl, const Vec3& d) {
+  Cast3 r = flat_cast_exact(S, ps, L, pl, d);
+  r.lower_bound = r.upper_bound = r.distance;  // exact: the bracket is the answer
   return r;
 }
 

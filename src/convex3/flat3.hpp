@@ -22,6 +22,11 @@ struct FlatShape3 {
   std::vector<std::size_t> input;  ///< index of v[j] in the input point list
   int dim = 0;
   std::string name;
+  /// Exact parallel classes of a polygon with at most 64 vertices (else empty): edge_dir[j] the
+  /// least edge parallel to edge j; chord_dir[a·k + b] that of the chord v[a]–v[b], −1 when no
+  /// edge is parallel to it. A direction orthogonal to edge j is orthogonal to every chord of
+  /// its class, so the engines skip those known ties (exact zeros cost the slowest tier).
+  std::vector<int> edge_dir, chord_dir;
 };
 
 /// The normal form of a point set of dimension at most 2, decided exactly (collinear3, orient3d,
@@ -42,11 +47,13 @@ Depth3 flat_directional(const ConvexPolytope& S, const Pose3& pose_s, const Flat
                         const Vec3& d);
 Distance3 flat_signed_distance(const ConvexPolytope& S, const Pose3& pose_s, const FlatShape3& L,
                                const Pose3& pose_l);
-/// The distance of two lower-dimensional shapes whose dimensions sum to at most 2 (points and
-/// segments; a point and a polygon): M = A ⊕ (−B') has no interior, so the answer is >= 0
-/// (apart: as flat_signed_distance; touching: 0, witnesses a common point, and `touch_normal`, if
-/// given, receives a unit normal of a plane through 0 supporting M, world frame). Throws
-/// InvalidInput for dimensions summing to 3 or more. Used for the cores of rounded shapes.
+/// The signed distance of two lower-dimensional shapes (the cores of rounded shapes), exact as
+/// flat_signed_distance: apart → the distance; touching → 0, witnesses a common point, and
+/// `touch_normal`, if given, receives a unit normal of a plane through 0 supporting
+/// M = A ⊕ (−B'), world frame; overlapping (only when the dimensions sum to 3 or more — a
+/// segment and a polygon, two polygons — and M is solid with 0 inside) → −σ of M, as
+/// flat_signed_distance. Method: the same candidate directions with A in S's role (A's normal,
+/// edge × edge, the closest pairs). Cost O((k_A·k_B)·(k_A + k_B)).
 Distance3 flat_flat_distance(const FlatShape3& A, const Pose3& pose_a, const FlatShape3& B, const Pose3& pose_b,
                              Vec3* touch_normal = nullptr);
 /// Shape cast of L along d (world frame) towards S: the entry of the ray s·d̂ into M = S ⊕ (−L),

@@ -140,11 +140,6 @@ Shape3 supported_pair(Shape3 P, const Shape3& Q) {
   if ((!P.is_convex() || !Q.is_convex()) && (P.dimension() < 3 || Q.dimension() < 3 || P.radius() + Q.radius() > 0))
     throw InvalidInput("pair: a non-convex mesh against a lower-dimensional or rounded shape (P " + P.name() + ", Q " +
                        Q.name() + ") is not implemented (use the mesh's hull: Shape3::from_file(path, name, true) / --hull)");
-  const int cp = P.core().dimension(), cq = Q.core().dimension();
-  if (P.radius() + Q.radius() > 0 && cp < 3 && cq < 3 && cp + cq > 2)
-    throw InvalidInput("pair: rounded shapes whose cores are both lower-dimensional with dimensions summing to 3 or "
-                       "more (P " + P.name() + " of core dimension " + std::to_string(cp) + ", Q " + Q.name() +
-                       " of core dimension " + std::to_string(cq) + ") are not implemented");
   if (P.dimension() < 3 && Q.dimension() < 3)
     throw InvalidInput("pair: both shapes are lower-dimensional (P " + P.name() + " of dimension " +
                        std::to_string(P.dimension()) + ", Q " + Q.name() + " of dimension " +
@@ -396,6 +391,8 @@ Distance3 distance_answer(const front::Scale& scale, Distance3 r) {
 Cast3 cast_answer(const front::Scale& scale, Cast3 r) {
   if (scale.identity()) return r;
   r.distance = scale.length(r.distance);  // +infinity stays
+  r.lower_bound = scale.length(r.lower_bound);
+  r.upper_bound = scale.length(r.upper_bound);
   r.translation = scale.vec(r.translation);
   r.witness_p = scale.vec(r.witness_p);
   r.witness_q = scale.vec(r.witness_q);
@@ -448,8 +445,9 @@ Cast3 Pair3::cast(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const
   check_pose(pose_p, "pose of P");
   check_pose(pose_q, "pose of Q");
   front::check_direction(d);
-  if (mesh_) throw InvalidInput("cast: shape casts between meshes are not implemented yet (use convex shapes or --hull)");
   const front::Scale scale{scale_exp_};
+  if (mesh_)
+    return cast_answer(scale, mesh3::cast(*mesh_, engine_pose(scale, pose_p, "pose of P"), engine_pose(scale, pose_q, "pose of Q"), d));
   if (is_curved(engine_P_, engine_Q_))
     return cast_answer(scale, curved_query(scale, engine_P_, pose_p, engine_Q_, pose_q, [&](auto&&... a) {
                          return primitives::curved_cast(a..., d);

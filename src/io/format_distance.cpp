@@ -47,11 +47,9 @@ void append_common(std::string& out, const R& r, const SP& P, const SQ& Q) {
   append_feature(out, r.feature_q, Q);
 }
 
-template <class R, class SP, class SQ>
-void append_distance(std::string& out, const R& r, const SP& P, const SQ& Q) {
-  out += "{\"distance\":";
-  append_double(out, r.distance);
-  append_common(out, r, P, Q);
+// The certified bracket and the mesh pieces (3D results; a cast's bounds are +inf on a miss).
+template <class R>
+void append_bounds_pieces(std::string& out, const R& r) {
   if constexpr (requires { r.lower_bound; }) {
     out += ",\"lower_bound\":";
     append_double(out, r.lower_bound);
@@ -61,6 +59,14 @@ void append_distance(std::string& out, const R& r, const SP& P, const SQ& Q) {
   if constexpr (requires { r.piece_p; })
     if (r.piece_p >= 0)  // a mesh pair: the pieces the features index (Pair3, meshes)
       out += ",\"piece_p\":" + std::to_string(r.piece_p) + ",\"piece_q\":" + std::to_string(r.piece_q);
+}
+
+template <class R, class SP, class SQ>
+void append_distance(std::string& out, const R& r, const SP& P, const SQ& Q) {
+  out += "{\"distance\":";
+  append_double(out, r.distance);
+  append_common(out, r, P, Q);
+  append_bounds_pieces(out, r);
   out += '}';
 }
 
@@ -71,6 +77,7 @@ void append_cast(std::string& out, const R& r, const SP& P, const SQ& Q) {
   out += ",\"hit\":";
   out += r.hit ? "true" : "false";
   append_common(out, r, P, Q);
+  append_bounds_pieces(out, r);
   out += '}';
 }
 

@@ -5,7 +5,8 @@
 // Let P = ∪ P_i, Q = ∪ Q_j (pieces), M_ij = P_i ⊕ (−Q'_j), O = ∪ int M_ij the open overlap set
 // (pieces have disjoint interiors and cover the solids, so int P ∩ int(Q' + x) ≠ ∅ iff x lies in
 // some int M_ij). Files: mesh_pair.cpp (pieces, boxes, overlap, signed distance, σ bounds),
-// mesh_line.cpp (σ_d and separation: the open intervals of the line in the int M_ij).
+// mesh_line.cpp (σ_d and separation: the open intervals of the line in the int M_ij),
+// mesh_cast.cpp (the shape cast: the least convex cast over the piece pairs).
 //
 // Features of a mesh answer: feature_p / feature_q index the vertices, half-edges and triangles
 // of the pieces piece_p / piece_q (pieces() of the pair: Mesh3::decomposition().pieces, or the
@@ -65,7 +66,13 @@ Depth3 minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q);
 /// −upper, lower_bound = −upper, upper_bound = −lower).
 Distance3 signed_distance(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q);
 
-// ---- shared by mesh_pair.cpp and mesh_line.cpp ----
+/// Shape cast along d (world frame, checked by the caller): the least exact convex cast over the
+/// piece pairs whose box sum the ray meets (mesh_cast.cpp); 0 and overlapping when the interiors
+/// overlap (exact), +∞ and hit false when no pair is ever touched. Exact (bounds equal distance);
+/// piece_p / piece_q name the pair of the contact.
+Cast3 cast(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3& d);
+
+// ---- shared by mesh_pair.cpp, mesh_line.cpp and mesh_cast.cpp ----
 
 /// The pose of Q in P's frame and the boxes of Q's pieces there (rounded, then widened so that
 /// they hold the exact placed pieces).

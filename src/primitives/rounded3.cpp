@@ -24,7 +24,7 @@
 // and shrunk by bisection to 2 ulps (at most 200 steps; a proposal that falls short is walked
 // forward by doubling steps first). The lengths λ·|d| are rounded outward (|d| as a double-double;
 // the product's residual by FMA), so lower_bound <= the exit <= upper_bound = depth, and the cast
-// distance is the upper end of its bracket: the move by λ_hi·d certainly ends overlap (σ_d) /
+// distance is the upper end of its bracket [lower_bound, upper_bound] (Cast3's bounds): the move by λ_hi·d certainly ends overlap (σ_d) /
 // certainly touches (cast), except on a ray that only grazes M (below). The translation vector
 // λ_hi·d is rounded per component (exact when d is an axis or λ_hi·d_k is a double).
 // The cast's hit is exact: it misses when g does not decrease at 0 (convex g) or when the line
@@ -239,7 +239,7 @@ Cast3 rounded_cast(const CoreDistance& core, const CoreCompare& cmp, double rp, 
     return out;
   }
   auto miss = [&]() {
-    out.distance = std::numeric_limits<double>::infinity();
+    out.distance = out.lower_bound = out.upper_bound = std::numeric_limits<double>::infinity();
     return out;
   };
   // g(0) > r: the ray meets M only where g decreases (convex g), and only if the line does.
@@ -278,7 +278,8 @@ Cast3 rounded_cast(const CoreDistance& core, const CoreCompare& cmp, double rp, 
   bisect(lo, hi, [&](double t) { return !before(t); });
   // hi: Q moved by hi·d touches or overlaps P, except on a ray that only grazes M, where hi may
   // lie a few ulps past the touching point (the entry is still in (lo, hi]).
-  out.distance = length_up(hi, nd);
+  out.distance = out.upper_bound = length_up(hi, nd);
+  out.lower_bound = length_down(lo, nd);
   out.translation = hi * d + Vec3::Zero();
   Distance3 c;
   out.hit = true;

@@ -785,7 +785,7 @@ Cast3 curved_cast(const Support3& P, const Pose3& pose_p, const Support3& Q, con
   // {⟨x, w⟩ <= h} with h < 0 is reached along d only when ⟨d, w⟩ < 0, after −h/−⟨d, w⟩.
   double lam = 0;
   auto miss = [&] {
-    out.distance = kInf;
+    out.distance = out.lower_bound = out.upper_bound = kInf;
     return out;
   };
   Vec3 normal = Vec3::Zero();
@@ -830,7 +830,8 @@ Cast3 curved_cast(const Support3& P, const Pose3& pose_p, const Support3& Q, con
     else break;
   }
   out.hit = true;
-  out.distance = upw(hi * norm_up(d));
+  out.distance = out.upper_bound = upw(hi * norm_up(d));
+  out.lower_bound = down(lam * norm_down(d));  // lam is certified before the entry
   out.translation = F.vec(hi * d);
   if (normal.squaredNorm() > 0) out.normal = F.vec(normal.normalized());
   out.witness_p = out.witness_q = F.point(touch.p);

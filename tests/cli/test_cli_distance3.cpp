@@ -62,9 +62,12 @@ TEST_F(CliDistance3, DistanceAndCastOfCubes) {
   const json hit = run_json("cast " + pq + " --offset 5,0.5,0.5 --direction -1,0,0");
   EXPECT_TRUE(hit.at("hit").get<bool>());
   EXPECT_EQ(hit.at("distance").get<double>(), 3);
+  EXPECT_EQ(hit.at("lower_bound").get<double>(), 3);  // exact: the bracket is the answer
+  EXPECT_EQ(hit.at("upper_bound").get<double>(), 3);
   const Result miss = run("cast " + pq + " --offset 5,0.5,0.5 --direction 1,0,0 --json");
   EXPECT_EQ(miss.status, 0);
   EXPECT_NE(miss.out.find("\"distance\":1e999,\"hit\":false"), std::string::npos) << miss.out;
+  EXPECT_NE(miss.out.find("\"lower_bound\":1e999,\"upper_bound\":1e999"), std::string::npos) << miss.out;
   // The library's bits, with a rotation of Q.
   const Pair3 pair(Shape3::from_file(P), Shape3::from_file(Q));
   const Eigen::Quaterniond rq = Eigen::Quaterniond(0.9, 0.1, 0.3, -0.2).normalized();

@@ -34,6 +34,12 @@ TEST_F(CliPrimitives, AnswersAsTheLibrary) {
   const json c = run_json("cast capsule:0.5,1 sphere:0.5 --offset 5,0,0 --direction -1,0,0");
   EXPECT_TRUE(c.at("hit").get<bool>());
   EXPECT_EQ(c.at("distance").get<double>(), 4);
+  // A rounded pair's cast: its certified bracket, distance its upper end (the library's bits).
+  const Cast3 lc = Pair3(Shape3::capsule(0.5, 1), Shape3::sphere(0.5)).cast(Pose3(), Pose3(Vec3(5, 0, 0)), Vec3(-1, 0, 0));
+  EXPECT_EQ(c.at("lower_bound").get<double>(), lc.lower_bound);
+  EXPECT_EQ(c.at("upper_bound").get<double>(), lc.upper_bound);
+  EXPECT_LE(c.at("lower_bound").get<double>(), 4);
+  EXPECT_EQ(c.at("upper_bound").get<double>(), 4);
   const std::string P = write("tet.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n");
   const Pair3 pair(Shape3::rounded(Shape3::from_file(P), 0.125), Shape3::capsule(0.25, 0.5));
   const Eigen::Quaterniond rq = Eigen::Quaterniond(0.9, 0.1, 0.3, -0.2).normalized();

@@ -43,7 +43,8 @@ using front_test::same_bits_v;
   if (same_bits(a.distance, b.distance) && same_bits_v(a.translation, b.translation) &&
       same_bits_v(a.normal, b.normal) && same_bits_v(a.witness_p, b.witness_p) &&
       same_bits_v(a.witness_q, b.witness_q) && a.feature_p == b.feature_p && a.feature_q == b.feature_q &&
-      a.hit == b.hit && a.overlapping == b.overlapping)
+      a.hit == b.hit && a.overlapping == b.overlapping && same_bits(a.lower_bound, b.lower_bound) &&
+      same_bits(a.upper_bound, b.upper_bound))
     return ::testing::AssertionSuccess();
   return ::testing::AssertionFailure() << "cast " << a.distance << " vs " << b.distance;
 }
@@ -142,13 +143,18 @@ TEST(Pair3Distance, Properties) {
         moved.translation += r.translation;
         EXPECT_LE(std::abs(pair.signed_distance(Pose3(), moved).distance), 1e-13 * sc) << a << "/" << b;
         if (r.distance > 0) {
-          // Moving away along the normal never touches.
-          EXPECT_FALSE(pair.cast(Pose3(), pq, r.normal).hit);
+          // Moving away along the normal never touches (+inf, and so are the exact engine's bounds).
+          const Cast3 away = pair.cast(Pose3(), pq, r.normal);
+          EXPECT_FALSE(away.hit);
+          EXPECT_EQ(away.lower_bound, away.distance);
+          EXPECT_EQ(away.upper_bound, away.distance);
           // Towards P: a hit no nearer than the distance; sd ≈ 0 at the contact, > 0 halfway.
           const Vec3 d = -r.normal + 0.3 * Vec3(g(rng), g(rng), g(rng));
           const Cast3 c = pair.cast(Pose3(), pq, d);
           if (c.hit) {
             ++hits;
+            EXPECT_EQ(c.lower_bound, c.distance);  // an exact engine: the bracket is the answer
+            EXPECT_EQ(c.upper_bound, c.distance);
             EXPECT_GE(c.distance, r.distance * (1 - 1e-14));
             Pose3 at = pq, half = pq;
             at.translation += c.translation;

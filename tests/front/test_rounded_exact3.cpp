@@ -162,6 +162,11 @@ TEST(RoundedExact3, SphereRayBracketsContainTheQuadraticRoot) {
       ASSERT_TRUE(cast.hit) << what;
       EXPECT_GE(static_cast<LD>(cast.distance), s * (1 - 0x1p-60L)) << what;
       EXPECT_LE(cast.distance, static_cast<double>(s) * (1 + 8 * kEps)) << what;
+      // The certified bracket (Cast3's bounds): lower <= the entry <= upper = distance, a few ulps wide.
+      EXPECT_LE(static_cast<LD>(cast.lower_bound), s * (1 + 0x1p-60L)) << what;
+      EXPECT_EQ(cast.upper_bound, cast.distance) << what;
+      EXPECT_LE(cast.lower_bound, cast.upper_bound) << what;
+      EXPECT_LE(cast.upper_bound - cast.lower_bound, 8 * kEps * cast.upper_bound) << what;
       Vec3 moved = c + cast.translation;
       bool exact = k % 4 == 0;
       for (int i = 0; i < 3; ++i)
@@ -171,7 +176,10 @@ TEST(RoundedExact3, SphereRayBracketsContainTheQuadraticRoot) {
         EXPECT_LE(pair.signed_distance(Pose3(), Pose3(moved)).distance, 0) << what;  // touching or overlapping
       }
     } else if (disc < -1e-6L || b > 0) {
-      EXPECT_FALSE(pair.cast(Pose3(), pq, d).hit) << what;
+      const Cast3 miss = pair.cast(Pose3(), pq, d);
+      EXPECT_FALSE(miss.hit) << what;
+      EXPECT_EQ(miss.lower_bound, kInf) << what;
+      EXPECT_EQ(miss.upper_bound, kInf) << what;
     }
   }
   EXPECT_GT(exits, 50);

@@ -294,7 +294,6 @@ TEST(MeshPair, ErrorsAndScale) {
   const Pair3 pair(comb3, cube1);
   EXPECT_THROW(pair.along(Pose3(), Pose3(), Vec3::Zero()), InvalidInput);
   EXPECT_THROW(pair.separation(Pose3(), Pose3(), Vec3(NAN, 0, 0)), InvalidInput);
-  EXPECT_THROW(pair.cast(Pose3(), Pose3(), Vec3(1, 0, 0)), InvalidInput);
   EXPECT_THROW(pair.minimum(Pose3(), Pose3(Vec3(INFINITY, 0, 0))), InvalidInput);
   // The numeric domain: the same pair scaled by 2^200 answers the same, scaled (front/scale.hpp).
   Gen big = polycube(comb(3)), bigq = polycube({{0, 0, 0}});

@@ -144,7 +144,11 @@ struct ExactHull::Impl {
     // Orientation sanity: every vertex on or below every plane (exact; cheap enough for tests).
     for (const auto& pl : planes)
       if (dot(pl.u, v[0]) > pl.h) throw std::logic_error("oracle3: hull facet oriented inwards");
+    // Solid iff some vertex lies strictly below some facet plane (a flat hull lies in all of them).
+    for (const auto& pl : planes)
+      for (const auto& x : v) solid = solid || dot(pl.u, x) < pl.h;
   }
+  bool solid = false;
 };
 
 namespace {
@@ -177,6 +181,7 @@ ExactHull::ExactHull(ExactHull&&) noexcept = default;
 ExactHull& ExactHull::operator=(ExactHull&&) noexcept = default;
 std::size_t ExactHull::vertices() const { return impl_->v.size(); }
 std::size_t ExactHull::facets() const { return impl_->planes.size(); }
+bool ExactHull::solid() const { return impl_->solid; }
 
 double ExactHull::gap(const Vec3& x) const {
   Q3 e = exact(x);
@@ -219,10 +224,12 @@ ExactDifference::ExactDifference(std::span<const Vec3> p_points, std::span<const
 
 ExactDifference::ExactDifference(std::span<const Vec3> p_points, std::span<const Vec3> q_points,
                                  const Eigen::Matrix3d& R, const Vec3& tq, const Vec3& tp, bool raw_q) {
-  ExactHull hp(p_points);
+  // raw_q: P's raw points too (the hull of every difference is M all the same), so that P may be
+  // lower-dimensional as well when the differences span a solid.
+  const std::vector<Q3> ps = raw_q ? exact_points(p_points) : ExactHull(p_points).impl().v;
   const std::vector<Q3> qs = raw_q ? exact_points(q_points, R, tq, tp) : ExactHull(q_points, R, tq, tp).impl().v;
   std::vector<Q3> diff;
-  for (const auto& p : hp.impl().v)
+  for (const auto& p : ps)
     for (const auto& q : qs) diff.push_back(sub(p, q));
   m_ = std::make_unique<ExactHull>(std::make_unique<ExactHull::Impl>(diff));
 }

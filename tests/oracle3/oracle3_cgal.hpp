@@ -50,6 +50,7 @@ class ExactHull {
 
   std::size_t vertices() const;
   std::size_t facets() const;  ///< triangles of CGAL's triangulated boundary
+  bool solid() const;          ///< full-dimensional (exact); the queries below assume it
   /// max over facets of (u·x − h)/|u| for the double point x, evaluated exactly then rounded:
   /// ≈ the signed distance to the boundary near ∂ (0 exactly on it, < 0 inside, > 0 outside).
   double gap(const Vec3& x) const;
@@ -75,7 +76,8 @@ class ExactDifference {
   ExactDifference(std::span<const Vec3> p_points, std::span<const Vec3> q_points, const Eigen::Matrix3d& R,
                   const Vec3& tq, const Vec3& tp);
   /// The same for a Q of any dimension (a point, a segment, a flat polygon: `raw_q` true uses
-  /// every q' without first taking Q's hull, which needs a solid Q). P must be solid.
+  /// every q' and every p without first taking hulls, which need solids): P and Q may both be
+  /// lower-dimensional when their differences span a solid.
   ExactDifference(std::span<const Vec3> p_points, std::span<const Vec3> q_points, const Eigen::Matrix3d& R,
                   const Vec3& tq, const Vec3& tp, bool raw_q);
   ~ExactDifference();

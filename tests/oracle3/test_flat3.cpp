@@ -125,6 +125,8 @@ void check(const std::vector<Vec3>& solid, const std::vector<Vec3>& low, const P
     for (const Vec3& d : dirs) {
       const Cast3 c = pair.cast(pp, pq, d);
       const oracle3::CastAnswer o = M.cast(sgn * (Rs.transpose() * d));
+      EXPECT_EQ(c.lower_bound, c.distance) << w;  // exact: the bracket is the answer (+inf on a miss)
+      EXPECT_EQ(c.upper_bound, c.distance) << w;
       ++st.casts;
       st.hits += o.hit;
       ASSERT_EQ(c.hit, o.hit) << w << " cast exact " << o.distance;
