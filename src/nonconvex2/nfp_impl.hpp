@@ -82,6 +82,14 @@ struct NfpFlat {
   std::vector<Vec2> points;
   double rmax = 0;                         // largest |coordinate| stored here
   bool usable = false;                     // sizes and magnitudes inside the filters' range
+  // Per piece: its edge ray's origin o = o1 + o2 and direction (a1 + a2) − (b1 + b2) as exact
+  // double-doubles (hi, lo), |dir|² as a double-double to 2⁻⁹⁹ relative; ok false when dir is not
+  // exactly two doubles or magnitudes are out of the fast value's range (nfp_value.cpp).
+  struct PieceDD {
+    double ox, oxl, oy, oyl, dx, dxl, dy, dyl, dd, ddl;
+    bool ok = false;
+  };
+  std::vector<PieceDD> pdd;
 
   void build(const NoFitPolygon2::Impl& nfp);
   std::size_t slab_of(double y, std::size_t count) const;
@@ -98,8 +106,18 @@ struct NfpFlat {
   /// of the exact first pieces), flagged kInside when the ray certainly crosses the piece's
   /// interior at some λ > 0 (the piece's ends strictly on either side of the ray's line).
   void first_hit_candidates(const Vec2& t, const Vec2& d, std::vector<std::uint32_t>& out) const;
+  /// σ² and the translation from t to its projection on piece k's edge line, each RN(exact)
+  /// (geometry/rounded.hpp), from the piece's double-doubles with a static error bound
+  /// (nfp_value.cpp); false (nothing certified) when a value is too close to a rounding midpoint
+  /// or out of range: the caller then takes the generic rounded evaluation.
+  bool projection_values(std::uint32_t k, const Vec2& t, double& sigma2, Vec2& translation) const;
 };
 
+}  // namespace nonconvex2
+
+namespace nonconvex2 {
+/// NfpFlat::pdd for every piece (nfp_value.cpp).
+void build_values(const NoFitPolygon2::Impl& nfp, std::vector<NfpFlat::PieceDD>& out);
 }  // namespace nonconvex2
 
 struct NoFitPolygon2::Impl {
