@@ -46,7 +46,9 @@ inline DD dd_div(const DD& a, const DD& b) {
 inline bool rounds_to(double hi, double lo, double R) {
   const double a = std::abs(hi);
   if (!(a >= 0x1p-800 && a <= 0x1p800)) return false;
-  const double gap = a - std::nextafter(a, 0.0);  // exact (Sterbenz); ≤ the gap above
+  // The gap to the next double towards zero (a is normal: one less in the last bit), exact
+  // (Sterbenz); ≤ the gap above.
+  const double gap = a - std::bit_cast<double>(std::bit_cast<std::uint64_t>(a) - 1);
   return (std::abs(lo) + R) * (1 + 0x1p-50) < 0.5 * gap;
 }
 
@@ -118,8 +120,10 @@ double rounded_ratio_of(F&& f, bool exact_only = false) {
   if (!exact_only) {
     double hi, lo, b, v;
     int sd;
-    if (dd_ratio(f, hi, lo, b, &sd) && (rounds_to(hi, lo, b) || round_near_midpoint(f, hi, lo, b, sd, v)))
-      return rounds_to(hi, lo, b) ? hi : v;
+    if (dd_ratio(f, hi, lo, b, &sd)) {
+      if (rounds_to(hi, lo, b)) return hi;
+      if (round_near_midpoint(f, hi, lo, b, sd, v)) return v;
+    }
   }
   const auto r = f(LiftQ{});
   return round_nearest(mpq_class(r.first.v / r.second.v));

@@ -110,14 +110,21 @@ struct NfpFlat {
   /// (geometry/rounded.hpp), from the piece's double-doubles with a static error bound
   /// (nfp_value.cpp); false (nothing certified) when a value is too close to a rounding midpoint
   /// or out of range: the caller then takes the generic rounded evaluation.
-  bool projection_values(std::uint32_t k, const Vec2& t, double& sigma2, Vec2& translation) const;
+  /// `diag` (tests): the double-double values σ², X − t (x, y) and their error bounds, before the
+  /// rounding check (set when the bounds were computed, i.e. when the range checks passed).
+  struct ProjectionDiag {
+    double hi[3], lo[3], bound[3];
+    bool set = false;
+  };
+  bool projection_values(std::uint32_t k, const Vec2& t, double& sigma2, Vec2& translation, ProjectionDiag* diag = nullptr) const;
 };
 
 }  // namespace nonconvex2
 
 namespace nonconvex2 {
-/// NfpFlat::pdd for every piece (nfp_value.cpp).
+/// NfpFlat::pdd for every piece (nfp_value.cpp), one piece's from its edge ray.
 void build_values(const NoFitPolygon2::Impl& nfp, std::vector<NfpFlat::PieceDD>& out);
+NfpFlat::PieceDD piece_dd(const Ray& E);
 }  // namespace nonconvex2
 
 struct NoFitPolygon2::Impl {

@@ -63,31 +63,34 @@ inline bool in_range(double x) {
 
 }  // namespace
 
-void build_values(const NoFitPolygon2::Impl& N, std::vector<NfpFlat::PieceDD>& out) {
-  out.assign(N.pieces.size(), {});
-  for (std::size_t k = 0; k < N.pieces.size(); ++k) {
-    const Ray& E = N.pieces[k].E;
-    NfpFlat::PieceDD& v = out[k];
-    two_sum(E.o1.x(), E.o2.x(), v.ox, v.oxl);
-    two_sum(E.o1.y(), E.o2.y(), v.oy, v.oyl);
-    bool ok = true;
-    auto dir = [&](double a1, double a2, double b1, double b2, double& hi, double& lo) {
-      const exact::Ex e = exact::LiftEx{}(a1) + exact::LiftEx{}(a2) - exact::LiftEx{}(b1) - exact::LiftEx{}(b2);
-      if (!e.ok || e.n > 2) return void(ok = false);
-      if (e.n == 0) return void(hi = lo = 0);
-      if (e.n == 1) return void((hi = e.c[0], lo = 0));
-      two_sum(e.c[1], e.c[0], hi, lo);
-    };
-    dir(E.a1.x(), E.a2.x(), E.b1.x(), E.b2.x(), v.dx, v.dxl);
-    dir(E.a1.y(), E.a2.y(), E.b1.y(), E.b2.y(), v.dy, v.dyl);
-    if (!ok || !in_range(v.ox) || !in_range(v.oy) || !in_range(v.dx) || !in_range(v.dy)) continue;
-    const D2 dd = add(mul({v.dx, v.dxl}, {v.dx, v.dxl}), mul({v.dy, v.dyl}, {v.dy, v.dyl}));
-    v.dd = dd.hi, v.ddl = dd.lo;
-    v.ok = dd.hi >= 0x1p-800;
-  }
+NfpFlat::PieceDD piece_dd(const Ray& E) {
+  NfpFlat::PieceDD v;
+  two_sum(E.o1.x(), E.o2.x(), v.ox, v.oxl);
+  two_sum(E.o1.y(), E.o2.y(), v.oy, v.oyl);
+  bool ok = true;
+  auto dir = [&](double a1, double a2, double b1, double b2, double& hi, double& lo) {
+    const exact::Ex e = exact::LiftEx{}(a1) + exact::LiftEx{}(a2) - exact::LiftEx{}(b1) - exact::LiftEx{}(b2);
+    if (!e.ok || e.n > 2) return void(ok = false);
+    if (e.n == 0) return void(hi = lo = 0);
+    if (e.n == 1) return void((hi = e.c[0], lo = 0));
+    two_sum(e.c[1], e.c[0], hi, lo);
+  };
+  dir(E.a1.x(), E.a2.x(), E.b1.x(), E.b2.x(), v.dx, v.dxl);
+  dir(E.a1.y(), E.a2.y(), E.b1.y(), E.b2.y(), v.dy, v.dyl);
+  if (!ok || !in_range(v.ox) || !in_range(v.oy) || !in_range(v.dx) || !in_range(v.dy)) return v;
+  const D2 dd = add(mul({v.dx, v.dxl}, {v.dx, v.dxl}), mul({v.dy, v.dyl}, {v.dy, v.dyl}));
+  v.dd = dd.hi, v.ddl = dd.lo;
+  v.ok = dd.hi >= 0x1p-800;
+  return v;
 }
 
-bool NfpFlat::projection_values(std::uint32_t k, const Vec2& t, double& sigma2, Vec2& translation) const {
+void build_values(const NoFitPolygon2::Impl& N, std::vector<NfpFlat::PieceDD>& out) {
+  out.clear();
+  out.reserve(N.pieces.size());
+  for (const NfpPiece& pc : N.pieces) out.push_back(piece_dd(pc.E));
+}
+
+bool NfpFlat::projection_values(std::uint32_t k, const Vec2& t, double& sigma2, Vec2& translation, ProjectionDiag* diag) const {
   const PieceDD& v = pdd[k];
   if (!v.ok || !in_range(t.x()) || !in_range(t.y())) return false;
   auto diff = [](double t, double o, double ol, D2& w, double& err) {
@@ -111,6 +114,8 @@ bool NfpFlat::projection_values(std::uint32_t k, const Vec2& t, double& sigma2, 
     const D2 w = horizontal ? wy : wx;
     if ((horizontal ? ewy : ewx) != 0 || w.hi == 0) return false;
     const D2 w2 = mul(w, w);
+    if (diag) *diag = {{w2.hi, horizontal ? 0.0 : -w.hi, horizontal ? -w.hi : 0.0}, {w2.lo, horizontal ? 0.0 : -w.lo, horizontal ? -w.lo : 0.0},
+                       {0x1p-102 * std::abs(w2.hi), 0, 0}, true};
     if (!exact::rounds_to(w2.hi, w2.lo, 0x1p-102 * std::abs(w2.hi))) return false;
     sigma2 = w2.hi;
     translation = horizontal ? Vec2(0, -w.hi) : Vec2(-w.hi, 0);
@@ -128,16 +133,22 @@ bool NfpFlat::projection_values(std::uint32_t k, const Vec2& t, double& sigma2, 
   const double rq = (rc + 0x1p-99) * (1 + 0x1p-40) + exact::kDivBound;
   const D2 s2 = mul(c, q);
   const double rs = (rc + rq) * (1 + 0x1p-40) + 0x1p-102;
-  if (!exact::rounds_to(s2.hi, s2.lo, rs * std::abs(s2.hi) * (1 + 0x1p-40))) return false;
+  const double bs = rs * std::abs(s2.hi) * (1 + 0x1p-40);
+  if (diag) diag->hi[0] = s2.hi, diag->lo[0] = s2.lo, diag->bound[0] = bs, diag->set = false;
+  const bool ok_s = exact::rounds_to(s2.hi, s2.lo, bs);
+  if (!ok_s && !diag) return false;
   // A component: q·f for f = −Dy or Dx; exactly 0 when f is.
-  auto comp = [&](D2 f, double& out) {
-    if (f.hi == 0) return (out = 0, true);
-    const D2 x = mul(q, f);
+  auto comp = [&](D2 f, double& out, int i) {
+    const D2 x = f.hi == 0 ? D2{0, 0} : mul(q, f);
+    const double b = (rq + 0x1p-102) * (1 + 0x1p-40) * std::abs(x.hi) * (1 + 0x1p-40);
+    if (diag) diag->hi[i] = x.hi, diag->lo[i] = x.lo, diag->bound[i] = b;
     out = x.hi;
-    return exact::rounds_to(x.hi, x.lo, (rq + 0x1p-102) * (1 + 0x1p-40) * std::abs(x.hi) * (1 + 0x1p-40));
+    return f.hi == 0 || exact::rounds_to(x.hi, x.lo, b);
   };
   double tx, ty;
-  if (!comp({-v.dy, -v.dyl}, tx) || !comp(Dx, ty)) return false;
+  const bool cx = comp({-v.dy, -v.dyl}, tx, 1), cy = comp(Dx, ty, 2);
+  if (diag) diag->set = true;
+  if (!cx || !cy || !ok_s) return false;
   sigma2 = s2.hi;
   translation = Vec2(tx, ty);
   return true;
