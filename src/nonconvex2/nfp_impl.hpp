@@ -88,6 +88,9 @@ struct NfpFlat {
   struct PieceDD {
     double ox, oxl, oy, oyl, dx, dxl, dy, dyl, dd, ddl;
     bool ok = false;
+    // The edge line's point c1 + c2 and direction e1 − e0, exact double-doubles (σ_d's crossing).
+    double cx, cxl, cy, cyl, ex, exl, ey, eyl;
+    bool line_ok = false;
   };
   std::vector<PieceDD> pdd;
 
@@ -117,6 +120,10 @@ struct NfpFlat {
     bool set = false;
   };
   bool projection_values(std::uint32_t k, const Vec2& t, double& sigma2, Vec2& translation, ProjectionDiag* diag = nullptr) const;
+  /// RN(λ) of the crossing of the ray t + λ·d with piece k's edge line (line_num / line_den),
+  /// from the piece's double-doubles with a static error bound; false when not certified. `diag`
+  /// (tests): hi, lo and bound of λ in slot 0.
+  bool crossing_value(std::uint32_t k, const Vec2& t, const Vec2& d, double& lambda, ProjectionDiag* diag = nullptr) const;
 };
 
 }  // namespace nonconvex2
@@ -124,7 +131,7 @@ struct NfpFlat {
 namespace nonconvex2 {
 /// NfpFlat::pdd for every piece (nfp_value.cpp), one piece's from its edge ray.
 void build_values(const NoFitPolygon2::Impl& nfp, std::vector<NfpFlat::PieceDD>& out);
-NfpFlat::PieceDD piece_dd(const Ray& E);
+NfpFlat::PieceDD piece_dd(const Ray& E, const Line* edge = nullptr);
 }  // namespace nonconvex2
 
 struct NoFitPolygon2::Impl {

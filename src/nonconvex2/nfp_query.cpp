@@ -280,7 +280,9 @@ Depth2 NoFitPolygon2::Impl::along(const Vec2& t, const Vec2& d, bool exact_path)
     }
   }
   if (!best.found) return r;  // unreachable for t ∈ O (O is bounded)
-  if (!exact_path && flat.usable) value = best.value(ray, t, false);
+  // RN(λ): a crossing from the piece's double-doubles (nfp_value.cpp) when certified, else the
+  // generic rounded evaluation.
+  if (!exact_path && !(!best.hit.end && flat.crossing_value(best.index, t, d, value)) && flat.usable) value = best.value(ray, t, false);
   const double dn = nonconvex2::norm_accurate(d);
   const double depth = std::max(0.0, value * dn);
   const Line& E = best.hit.piece->edge;

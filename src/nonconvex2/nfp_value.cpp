@@ -61,10 +61,26 @@ inline bool in_range(double x) {
   return a == 0 || (a >= 0x1p-400 && a <= 0x1p400);
 }
 
+// W = t − (o + ol) as a double-double with its error bound (0 when exact).
+inline void diff(double t, double o, double ol, D2& w, double& err) {
+  double s, e, r, r2;
+  two_sum(t, -o, s, e);
+  two_sum(e, -ol, r, r2);
+  two_sum(s, r, w.hi, w.lo);
+  err = r2 == 0 ? 0.0 : 0x1p-52 * std::abs(r);  // 0: W = s + r exactly
+}
+
 }  // namespace
 
-NfpFlat::PieceDD piece_dd(const Ray& E) {
+NfpFlat::PieceDD piece_dd(const Ray& E, const Line* edge) {
   NfpFlat::PieceDD v;
+  if (edge) {
+    two_sum(edge->c1.x(), edge->c2.x(), v.cx, v.cxl);
+    two_sum(edge->c1.y(), edge->c2.y(), v.cy, v.cyl);
+    two_sum(edge->e1.x(), -edge->e0.x(), v.ex, v.exl);
+    two_sum(edge->e1.y(), -edge->e0.y(), v.ey, v.eyl);
+    v.line_ok = in_range(v.cx) && in_range(v.cy) && in_range(v.ex) && in_range(v.ey) && (v.ex != 0 || v.ey != 0);
+  }
   two_sum(E.o1.x(), E.o2.x(), v.ox, v.oxl);
   two_sum(E.o1.y(), E.o2.y(), v.oy, v.oyl);
   bool ok = true;
@@ -87,19 +103,12 @@ NfpFlat::PieceDD piece_dd(const Ray& E) {
 void build_values(const NoFitPolygon2::Impl& N, std::vector<NfpFlat::PieceDD>& out) {
   out.clear();
   out.reserve(N.pieces.size());
-  for (const NfpPiece& pc : N.pieces) out.push_back(piece_dd(pc.E));
+  for (const NfpPiece& pc : N.pieces) out.push_back(piece_dd(pc.E, &pc.edge));
 }
 
 bool NfpFlat::projection_values(std::uint32_t k, const Vec2& t, double& sigma2, Vec2& translation, ProjectionDiag* diag) const {
   const PieceDD& v = pdd[k];
   if (!v.ok || !in_range(t.x()) || !in_range(t.y())) return false;
-  auto diff = [](double t, double o, double ol, D2& w, double& err) {
-    double s, e, r, r2;
-    two_sum(t, -o, s, e);
-    two_sum(e, -ol, r, r2);
-    two_sum(s, r, w.hi, w.lo);
-    err = r2 == 0 ? 0.0 : 0x1p-52 * std::abs(r);  // 0: W = s + r exactly
-  };
   D2 wx, wy;
   double ewx, ewy;
   diff(t.x(), v.ox, v.oxl, wx, ewx);
@@ -151,6 +160,34 @@ bool NfpFlat::projection_values(std::uint32_t k, const Vec2& t, double& sigma2, 
   if (!cx || !cy || !ok_s) return false;
   sigma2 = s2.hi;
   translation = Vec2(tx, ty);
+  return true;
+}
+
+bool NfpFlat::crossing_value(std::uint32_t k, const Vec2& t, const Vec2& d, double& lambda, ProjectionDiag* diag) const {
+  const PieceDD& v = pdd[k];
+  if (!v.line_ok || !in_range(t.x()) || !in_range(t.y()) || !in_range(d.x()) || !in_range(d.y())) return false;
+  // λ = ((C − t) × E) / (d × E), C = c1 + c2, E = e1 − e0 (exact double-doubles).
+  D2 wx, wy;
+  double ewx, ewy;
+  diff(v.cx, t.x(), -v.cxl, wx, ewx);  // C − t: (cx − t) + cxl
+  diff(v.cy, t.y(), -v.cyl, wy, ewy);
+  if (!in_range(wx.hi) || !in_range(wy.hi)) return false;
+  const D2 Ex{v.ex, v.exl}, Ey{v.ey, v.eyl};
+  const D2 n1 = mul(wx, Ey), n2 = mul(wy, Ex);
+  const D2 num = add(n1, {-n2.hi, -n2.lo});
+  const D2 m1 = mul({d.x(), 0}, Ey), m2 = mul({d.y(), 0}, Ex);
+  const D2 den = add(m1, {-m2.hi, -m2.lo});
+  const double an = std::abs(num.hi), ad = std::abs(den.hi);
+  if (!(an >= 0x1p-800 && an <= 0x1p800 && ad >= 0x1p-800 && ad <= 0x1p800)) return false;
+  const double en = (std::abs(v.ey) * ewx + std::abs(v.ex) * ewy) * (1 + 0x1p-50) + 0x1p-99 * (std::abs(n1.hi) + std::abs(n2.hi));
+  const double ed = 0x1p-99 * (std::abs(m1.hi) + std::abs(m2.hi));
+  const double rn = en / an * (1 + 0x1p-50), rd = ed / ad * (1 + 0x1p-50);
+  if (!(rn <= 0x1p-60 && rd <= 0x1p-60)) return false;
+  const exact::DD q = exact::dd_div(exact::DD{num.hi, num.lo, 0}, exact::DD{den.hi, den.lo, 0});
+  const double b = ((rn + rd) * (1 + 0x1p-40) + exact::kDivBound) * std::abs(q.hi) * (1 + 0x1p-40);
+  if (diag) *diag = {{q.hi, 0, 0}, {q.lo, 0, 0}, {b, 0, 0}, true};
+  if (!exact::rounds_to(q.hi, q.lo, b)) return false;
+  lambda = q.hi;
   return true;
 }
 

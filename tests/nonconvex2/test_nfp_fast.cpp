@@ -362,6 +362,42 @@ TEST(NfpFastPath, ProjectionValuesAgainstRationals) {
   // Direction (1, 2), |D|² = 5: translation y = c/5 = 1 + 2⁻⁵³, a tie (exact: must not be certified
   // as 1 + 2⁻⁵² nor mis-rounded).
   check_projection(edge_ray(Vec2(0, 0), Vec2(0, 0), Vec2(1, 2), Vec2(0, 0), Vec2(0, 0), Vec2(0, 0)), Vec2(5 * 0x1p-54, -5), st, "tie (1, 2)");
+  // σ_d's crossing value λ = line_num / line_den on the same pieces, random rays.
+  std::size_t crossings = 0, crossed = 0;
+  double worst_cross = 0;
+  for (std::size_t i = 0; i < albano.size(); i += 3)
+    for (std::size_t j = 1; j < albano.size(); j += 2) {
+      const NoFitPolygon2 nfp(albano[i], albano[j]);
+      const auto& N = nfp_impl(nfp);
+      std::uniform_real_distribution<double> f(0, 1), a(0, 2 * M_PI);
+      for (std::size_t k = 0; k < N.pieces.size(); ++k) {
+        const auto& pc = N.pieces[k];
+        const Vec2 t = pc.a + f(rng) * (pc.b - pc.a) + Vec2(f(rng) - 0.5, f(rng) - 0.5) * 50;
+        const double an = a(rng);
+        const Vec2 d = pendepth::nonconvex2::check_and_scale(t, Vec2(std::cos(an), std::sin(an)));
+        const Ray ray = Ray::query(t, d);
+        using pendepth::exact::LiftQ;
+        const auto den = pendepth::nonconvex2::line_den(pc.edge, ray, LiftQ{});
+        if (sgn(den.v) == 0) continue;
+        const mpq_class lam = pendepth::nonconvex2::line_num(pc.edge, ray, LiftQ{}).v / den.v;
+        if (sgn(lam) == 0) continue;
+        ++crossings;
+        double l;
+        NfpFlat::ProjectionDiag diag;
+        const bool ok = N.flat.crossing_value(std::uint32_t(k), t, d, l, &diag);
+        if (diag.set) {
+          const mpq_class err = abs(lam - mpq_class(diag.hi[0]) - mpq_class(diag.lo[0]));
+          ASSERT_LE(err, mpq_class(diag.bound[0])) << "crossing " << k;
+          worst_cross = std::max(worst_cross, mpq_class(err / mpq_class(diag.bound[0])).get_d());
+        }
+        if (!ok) continue;
+        ++crossed;
+        ASSERT_TRUE(same(l, pendepth::exact::round_nearest(lam))) << "crossing " << k << " t = " << t.transpose();
+      }
+    }
+  std::cout << "[crossing values] " << crossings << " rays, " << crossed << " certified; worst error / bound " << worst_cross << "\n";
+  EXPECT_GT(crossed, crossings * 9 / 10);
+  EXPECT_GT(worst_cross, 0x1p-12);
   std::cout << "[projection values] " << st.pieces << " edges, " << st.tried << " tried, " << st.bounded << " bounded, " << st.certified
             << " certified; worst error / bound " << st.worst << "\n";
   EXPECT_GT(st.certified, st.tried * 9 / 10);
