@@ -17,7 +17,11 @@
 //   conservative box distances; exact comparisons of squared distances (edge_cut.hpp, the same
 //   candidates as PairDepth2::minimum); equally near pieces go to the lowest index.
 // Both ways every piece that can win is compared exactly, so the fast and the exact path (the
-// `exact_path` flag, kept for the tests) give the same answer bit for bit. Results go through
+// `exact_path` flag, kept for the tests) pick the same piece. The winner's values are RN of the
+// exact reals (geometry/rounded.hpp): σ² and the translation at a projection, λ at a crossing from
+// the piece's double-doubles (nfp_value.cpp), other kinds from the generic double-double tier,
+// each only when certified inside one rounding cell, else rationals — the exact path uses the
+// rationals alone, so the two agree bit for bit exactly when the certificates are right. Results go through
 // PairDepth2::Impl::contact, so kinds, features and witnesses follow depth2_polygon_polygon.hpp.
 // Cost per query: O(N) flops and O(1) exact evaluations on real pieces, O(log N + k) node visits
 // for N > 256 pieces and k boxes near the answer (worst case O(N)), plus the overlap test.
