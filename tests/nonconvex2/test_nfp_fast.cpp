@@ -198,6 +198,22 @@ TEST(NfpFastPath, NestingPieces) {
   }
 }
 
+// Pieces turned by angles that are not quarter turns (coordinates rounded once): edge directions
+// of full 53-bit mantissas, whose four-term sums are often not two doubles (the generic rounded
+// tier) and whose projections and crossings are never exact.
+TEST(NfpFastPath, RotatedPieces) {
+  std::mt19937_64 rng(19006);
+  for (const std::string file : {"shirts", "trousers", "albano"}) {
+    const auto pieces = instance(file + ".json");
+    for (double deg : {30.0, 45.0, 117.0}) {
+      const double a = deg * M_PI / 180, c = std::cos(a), s = std::sin(a);
+      const std::size_t i = rng() % pieces.size(), j = rng() % pieces.size();
+      const Polygon Q = mapped(pieces[j], [&](const Vec2& p) { return Vec2(c * p.x() - s * p.y(), s * p.x() + c * p.y()); });
+      check_pair(pieces[i], Q, rng, 15, file + " " + std::to_string(i) + " " + std::to_string(j) + " Q turned " + std::to_string(deg));
+    }
+  }
+}
+
 // Random star pairs with real and integer coordinates, holes included via the shared shapes.
 TEST(NfpFastPath, RandomStars) {
   std::mt19937_64 rng(19003);
