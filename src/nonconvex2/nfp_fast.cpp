@@ -2,7 +2,8 @@
 // structure-of-arrays copy of ∂O in doubles, scanned linearly, whose every decision is certified
 // by a static error bound or reported undecided (the caller then decides exactly). Nothing here
 // produces an answer value: it only decides membership when that is certain and narrows σ's and
-// σ_d's exact search to the pieces that can win (nfp_query.cpp evaluates those exactly, as before).
+// σ_d's exact search to the pieces that can win (nfp_query.cpp evaluates those exactly, as before;
+// the winner's value from double-doubles: nfp_value.cpp).
 //
 // Data: ring edges of cl(O) from the export (nfp_rings.cpp: every vertex is the exact vertex
 // rounded to nearest), slits and isolated points likewise, and the pieces' ends NfpPiece::a, b

@@ -9,7 +9,11 @@
 // and random ones. Inputs: nesting pieces (albano every ordered pair, shirts, trousers), exact fits
 // (combs, a slot, a hole fit, a bottle neck, a closed slot) and the same pairs with Q, or both,
 // turned by quarter turns (exact). The test also checks that both outcomes of the overlap filter
-// occur (certified and deferred), so the deferral is exercised. Pinned seeds.
+// occur (certified and deferred), so the deferral is exercised. The exact path evaluates the
+// winner's values (RN of the exact reals, geometry/rounded.hpp) with rationals alone, so equal
+// bits also check the fast double-double values; ProjectionValuesAgainstRationals checks those
+// directly, and that every error bound holds (rationals) and is tight enough that shrinking it
+// by 2¹² fails. Pinned seeds.
 #include <pendepth/nfp2.hpp>
 
 #include <gtest/gtest.h>
