@@ -45,7 +45,11 @@
 // scan for the pieces that can win, then only those evaluated exactly (O(N) flops plus O(1)
 // exact work on real pieces); beyond, a best-first traversal of the piece hierarchy, O(log N + k)
 // node visits for k boxes near the answer (worst O(N)). Pieces exactly equally near (or hit at
-// the same λ) report the lowest piece index's features.
+// the same λ) report the lowest piece index's features. Values: σ = √RN(σ²), σ_d = RN(λ) times
+// ‖d‖ (λ on the scaled d; ‖d‖ to ~1 ulp, the product rounded) and σ's translation coordinates
+// RN(exact), RN the exact real rounded to nearest — a function of the exact value only
+// (src/geometry/rounded.hpp): double-double with a static error bound where that certifies it
+// (src/nonconvex2/nfp_value.cpp), rationals otherwise.
 // Build and query times, and the comparison with CGAL's minkowski_sum_2: docs/benchmarks.md.
 // Internal inconsistencies of the pieces (a chain that does not close, a hole outside every outer
 // ring) throw std::logic_error rather than export a wrong polygon; no test input has produced one.

@@ -2,7 +2,8 @@
 // structure-of-arrays copy of ∂O in doubles, scanned linearly, whose every decision is certified
 // by a static error bound or reported undecided (the caller then decides exactly). Nothing here
 // produces an answer value: it only decides membership when that is certain and narrows σ's and
-// σ_d's exact search to the pieces that can win (nfp_query.cpp evaluates those exactly, as before).
+// σ_d's exact search to the pieces that can win (nfp_query.cpp evaluates those exactly, as before;
+// the winner's value from double-doubles: nfp_value.cpp).
 //
 // Data: ring edges of cl(O) from the export (nfp_rings.cpp: every vertex is the exact vertex
 // rounded to nearest), slits and isolated points likewise, and the pieces' ends NfpPiece::a, b
@@ -79,6 +80,7 @@ void NfpFlat::build(const NoFitPolygon2::Impl& N) {
     pinv.push_back(l2 > 0 ? 1 / l2 : 0.0);
     see(pc.a), see(pc.b);
   }
+  build_values(N, pdd);
   rmax = r;
   usable = !N.pieces.empty() && N.pieces.size() <= kFlatMax && r >= kLow && r <= kHigh;
   overlap_usable = !N.pieces.empty() && !rx0.empty() && r >= kLow && r <= kHigh;
@@ -202,8 +204,8 @@ void NfpFlat::first_hit_candidates(const Vec2& t, const Vec2& d, std::vector<std
   const std::size_t n = px0.size();
   const double *x0 = px0.data(), *y0 = py0.data(), *x1 = px1.data(), *y1 = py1.data();
   double U = INFINITY;
-  thread_local std::vector<double> los;
-  los.clear();
+  double los[kFlatMax];  // lower bounds of the kept pieces (n ≤ kFlatMax: usable)
+  std::size_t kept = 0;
   const std::size_t first = out.size();
   for (std::size_t k = 0; k < n; ++k) {
     const double ax = x0[k] - tx, ay = y0[k] - ty, bx = x1[k] - tx, by = y1[k] - ty;
@@ -214,7 +216,7 @@ void NfpFlat::first_hit_candidates(const Vec2& t, const Vec2& d, std::vector<std
     if (hi <= 0) continue;  // behind t
     const bool crosses = lo > 0 && ((ca > e && cb < -e) || (ca < -e && cb > e));
     if (crosses) U = std::min(U, hi);
-    if (lo <= U) out.push_back(std::uint32_t(k) | (crosses ? kInside : 0u)), los.push_back(lo);
+    if (lo <= U) out.push_back(std::uint32_t(k) | (crosses ? kInside : 0u)), los[kept++] = lo;
   }
   // Keep those still within the final U (in increasing index order).
   std::size_t w = first;

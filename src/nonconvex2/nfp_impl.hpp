@@ -82,6 +82,17 @@ struct NfpFlat {
   std::vector<Vec2> points;
   double rmax = 0;                         // largest |coordinate| stored here
   bool usable = false;                     // sizes and magnitudes inside the filters' range
+  // Per piece: its edge ray's origin o = o1 + o2 and direction (a1 + a2) − (b1 + b2) as exact
+  // double-doubles (hi, lo), |dir|² as a double-double to 2⁻⁹⁹ relative; ok false when dir is not
+  // exactly two doubles or magnitudes are out of the fast value's range (nfp_value.cpp).
+  struct PieceDD {
+    double ox, oxl, oy, oyl, dx, dxl, dy, dyl, dd, ddl;
+    bool ok = false;
+    // The edge line's point c1 + c2 and direction e1 − e0, exact double-doubles (σ_d's crossing).
+    double cx, cxl, cy, cyl, ex, exl, ey, eyl;
+    bool line_ok = false;
+  };
+  std::vector<PieceDD> pdd;
 
   void build(const NoFitPolygon2::Impl& nfp);
   std::size_t slab_of(double y, std::size_t count) const;
@@ -98,8 +109,29 @@ struct NfpFlat {
   /// of the exact first pieces), flagged kInside when the ray certainly crosses the piece's
   /// interior at some λ > 0 (the piece's ends strictly on either side of the ray's line).
   void first_hit_candidates(const Vec2& t, const Vec2& d, std::vector<std::uint32_t>& out) const;
+  /// σ² and the translation from t to its projection on piece k's edge line, each RN(exact)
+  /// (geometry/rounded.hpp), from the piece's double-doubles with a static error bound
+  /// (nfp_value.cpp); false (nothing certified) when a value is too close to a rounding midpoint
+  /// or out of range: the caller then takes the generic rounded evaluation.
+  /// `diag` (tests): the double-double values σ², X − t (x, y) and their error bounds, before the
+  /// rounding check (set when the bounds were computed, i.e. when the range checks passed).
+  struct ProjectionDiag {
+    double hi[3], lo[3], bound[3];
+    bool set = false;
+  };
+  bool projection_values(std::uint32_t k, const Vec2& t, double& sigma2, Vec2& translation, ProjectionDiag* diag = nullptr) const;
+  /// RN(λ) of the crossing of the ray t + λ·d with piece k's edge line (line_num / line_den),
+  /// from the piece's double-doubles with a static error bound; false when not certified. `diag`
+  /// (tests): hi, lo and bound of λ in slot 0.
+  bool crossing_value(std::uint32_t k, const Vec2& t, const Vec2& d, double& lambda, ProjectionDiag* diag = nullptr) const;
 };
 
+}  // namespace nonconvex2
+
+namespace nonconvex2 {
+/// NfpFlat::pdd for every piece (nfp_value.cpp), one piece's from its edge ray.
+void build_values(const NoFitPolygon2::Impl& nfp, std::vector<NfpFlat::PieceDD>& out);
+NfpFlat::PieceDD piece_dd(const Ray& E, const Line* edge = nullptr);
 }  // namespace nonconvex2
 
 struct NoFitPolygon2::Impl {

@@ -17,7 +17,11 @@
 //   conservative box distances; exact comparisons of squared distances (edge_cut.hpp, the same
 //   candidates as PairDepth2::minimum); equally near pieces go to the lowest index.
 // Both ways every piece that can win is compared exactly, so the fast and the exact path (the
-// `exact_path` flag, kept for the tests) give the same answer bit for bit. Results go through
+// `exact_path` flag, kept for the tests) pick the same piece. The winner's values are RN of the
+// exact reals (geometry/rounded.hpp): σ² and the translation at a projection, λ at a crossing from
+// the piece's double-doubles (nfp_value.cpp), other kinds from the generic double-double tier,
+// each only when certified inside one rounding cell, else rationals — the exact path uses the
+// rationals alone, so the two agree bit for bit exactly when the certificates are right. Results go through
 // PairDepth2::Impl::contact, so kinds, features and witnesses follow depth2_polygon_polygon.hpp.
 // Cost per query: O(N) flops and O(1) exact evaluations on real pieces, O(log N + k) node visits
 // for N > 256 pieces and k boxes near the answer (worst case O(N)), plus the overlap test.
@@ -26,6 +30,7 @@
 #include <queue>
 
 #include "geometry/exact.hpp"
+#include "geometry/rounded.hpp"
 #include "nonconvex2/nfp_impl.hpp"
 #include "nonconvex2/query.hpp"
 
@@ -171,9 +176,9 @@ struct AlongBest {
     index = k;
     found = true;
   }
-  // λ of the best hit (a function of the hit alone, evaluated once).
-  double value(const Ray& ray, const Vec2& t) const {
-    return exact::accurate_ratio_of([&](auto L) { return hit_nd(hit, ray, t, L); });
+  // RN(λ) of the best hit (a function of the hit alone, evaluated once; `exact`: rationals only).
+  double value(const Ray& ray, const Vec2& t, bool exact) const {
+    return exact::rounded_ratio_of([&](auto L) { return hit_nd(hit, ray, t, L); }, exact);
   }
 };
 
@@ -205,11 +210,34 @@ struct MinBest {
     found = true;
     inside = proj_inside;
   }
-  // σ of the best candidate (a function of the candidate alone, evaluated once).
-  double value(const Vec2& t) const {
-    return std::sqrt(exact::accurate_ratio_of([&](auto L) { return nonconvex2::sq_dist(cand, t, L); }));
+  // σ = √RN(σ²) of the best candidate (a function of the candidate alone, evaluated once;
+  // `exact`: rationals only).
+  double value(const Vec2& t, bool exact) const {
+    return std::sqrt(exact::rounded_ratio_of([&](auto L) { return nonconvex2::sq_dist(cand, t, L); }, exact));
   }
 };
+
+// The vector from t to the candidate point, each coordinate RN(exact) (geometry/rounded.hpp):
+// the same double on the fast and the exact path. The projection on an axis-parallel edge has one
+// coordinate exactly 0 (decided exactly: a zero numerator always needs the rationals).
+Vec2 rounded_translation(const Cand& c, const Vec2& t, bool exact) {
+  const Ray& E = c.E;
+  auto coord = [&](int axis) {
+    return exact::rounded_ratio_of(
+        [&](auto L) {
+          auto [n, dd] = nonconvex2::param_nd(c.at, E, t, L);
+          auto o = axis == 0 ? L(E.o1.x()) + L(E.o2.x()) - L(t.x()) : L(E.o1.y()) + L(E.o2.y()) - L(t.y());
+          auto dv = axis == 0 ? nonconvex2::ray_dx(E, L) : nonconvex2::ray_dy(E, L);
+          return std::pair{o * dd + n * dv, dd};
+        },
+        exact);
+  };
+  if (c.at.kind == Param::Proj) {
+    if (exact_sign([&](auto L) { return nonconvex2::ray_dx(E, L); }) == 0) return Vec2(coord(0), 0);
+    if (exact_sign([&](auto L) { return nonconvex2::ray_dy(E, L); }) == 0) return Vec2(0, coord(1));
+  }
+  return Vec2(coord(0), coord(1));
+}
 
 struct Job {
   double key;
@@ -252,11 +280,13 @@ Depth2 NoFitPolygon2::Impl::along(const Vec2& t, const Vec2& d, bool exact_path)
       const std::uint32_t before = best.index;
       const bool had = best.found;
       best.consider(*this, node.tri, ray, t, d);
-      if (best.found && (!had || best.index != before)) value = best.value(ray, t);
+      if (best.found && (!had || best.index != before)) value = best.value(ray, t, exact_path);
     }
   }
   if (!best.found) return r;  // unreachable for t ∈ O (O is bounded)
-  if (!exact_path && flat.usable) value = best.value(ray, t);
+  // RN(λ): a crossing from the piece's double-doubles (nfp_value.cpp) when certified, else the
+  // generic rounded evaluation.
+  if (!exact_path && !(!best.hit.end && flat.crossing_value(best.index, t, d, value)) && flat.usable) value = best.value(ray, t, false);
   const double dn = nonconvex2::norm_accurate(d);
   const double depth = std::max(0.0, value * dn);
   const Line& E = best.hit.piece->edge;
@@ -295,14 +325,23 @@ Depth2 NoFitPolygon2::Impl::minimum(const Vec2& t, bool exact_path) const {
       const std::uint32_t before = best.index;
       const bool had = best.found;
       best.consider(*this, node.tri, t);
-      if (best.found && (!had || best.index != before)) value = best.value(t);
+      if (best.found && (!had || best.index != before)) value = best.value(t, exact_path);
     }
   }
   if (!best.found) return r;  // unreachable for t ∈ O
-  if (!exact_path && flat.usable) value = best.value(t);
   const Cand& c = best.cand;
+  // σ = √RN(σ²) and the translation RN per coordinate: at a projection from the piece's
+  // double-doubles (nfp_value.cpp) when certified, else the generic rounded evaluation.
+  Vec2 translation;
+  double s2;
+  if (!exact_path && c.at.kind == Param::Proj && flat.projection_values(best.index, t, s2, translation)) {
+    value = std::sqrt(s2);
+  } else {
+    if (!exact_path && flat.usable) value = best.value(t, false);
+    translation = rounded_translation(c, t, exact_path);
+  }
   // A projection strictly inside its piece is at no end of the edge (the piece lies in it).
-  r = S.contact(c.edge, t, nonconvex2::cand_translation(c, t), best.inside ? -1 : nonconvex2::cand_end(c, t));
+  r = S.contact(c.edge, t, translation, best.inside ? -1 : nonconvex2::cand_end(c, t));
   r.depth = value;
   r.kind = DepthKind::Minimum;
   r.overlapping = true;

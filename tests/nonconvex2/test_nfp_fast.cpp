@@ -9,7 +9,11 @@
 // and random ones. Inputs: nesting pieces (albano every ordered pair, shirts, trousers), exact fits
 // (combs, a slot, a hole fit, a bottle neck, a closed slot) and the same pairs with Q, or both,
 // turned by quarter turns (exact). The test also checks that both outcomes of the overlap filter
-// occur (certified and deferred), so the deferral is exercised. Pinned seeds.
+// occur (certified and deferred), so the deferral is exercised. The exact path evaluates the
+// winner's values (RN of the exact reals, geometry/rounded.hpp) with rationals alone, so equal
+// bits also check the fast double-double values; ProjectionValuesAgainstRationals checks those
+// directly, and that every error bound holds (rationals) and is tight enough that shrinking it
+// by 2¹² fails. Pinned seeds.
 #include <pendepth/nfp2.hpp>
 
 #include <gtest/gtest.h>
@@ -198,6 +202,22 @@ TEST(NfpFastPath, NestingPieces) {
   }
 }
 
+// Pieces turned by angles that are not quarter turns (coordinates rounded once): edge directions
+// of full 53-bit mantissas, whose four-term sums are often not two doubles (the generic rounded
+// tier) and whose projections and crossings are never exact.
+TEST(NfpFastPath, RotatedPieces) {
+  std::mt19937_64 rng(19006);
+  for (const std::string file : {"shirts", "trousers", "albano"}) {
+    const auto pieces = instance(file + ".json");
+    for (double deg : {30.0, 45.0, 117.0}) {
+      const double a = deg * M_PI / 180, c = std::cos(a), s = std::sin(a);
+      const std::size_t i = rng() % pieces.size(), j = rng() % pieces.size();
+      const Polygon Q = mapped(pieces[j], [&](const Vec2& p) { return Vec2(c * p.x() - s * p.y(), s * p.x() + c * p.y()); });
+      check_pair(pieces[i], Q, rng, 15, file + " " + std::to_string(i) + " " + std::to_string(j) + " Q turned " + std::to_string(deg));
+    }
+  }
+}
+
 // Random star pairs with real and integer coordinates, holes included via the shared shapes.
 TEST(NfpFastPath, RandomStars) {
   std::mt19937_64 rng(19003);
@@ -245,6 +265,163 @@ TEST(NfpFastPath, LargeRingsUseSlabs) {
   std::cout << "[comb] " << edges << " ring edges, " << (F.slab.empty() ? 0 : F.slab.size() - 1) << " slabs, widest " << widest
             << ", overlap filter " << (F.overlap_usable ? "on" : "off") << "\n";
   check_pair(P, L, rng, 300, "comb", false);
+}
+
+}  // namespace
+
+#include "geometry/rounded.hpp"
+
+namespace {
+
+using pendepth::nonconvex2::NfpFlat;
+using pendepth::nonconvex2::Ray;
+
+// The exact σ² and X − t (X the projection of t on E's line) as rationals, from the generic
+// formulas of edge_cut.hpp (sq_dist and the translation numerators, an independent derivation).
+struct ExactProjection {
+  mpq_class v[3];
+};
+ExactProjection exact_projection(const Ray& E, const Vec2& t) {
+  using pendepth::exact::LiftQ;
+  using namespace pendepth::nonconvex2;
+  const Cand c{E, Param{Param::Proj, {}}, Line{}};
+  ExactProjection r;
+  const auto s = sq_dist(c, t, LiftQ{});
+  r.v[0] = s.first.v / s.second.v;
+  for (int axis = 0; axis < 2; ++axis) {
+    auto [n, dd] = param_nd(c.at, E, t, LiftQ{});
+    auto o = axis == 0 ? LiftQ{}(E.o1.x()) + LiftQ{}(E.o2.x()) - LiftQ{}(t.x()) : LiftQ{}(E.o1.y()) + LiftQ{}(E.o2.y()) - LiftQ{}(t.y());
+    auto dv = axis == 0 ? ray_dx(E, LiftQ{}) : ray_dy(E, LiftQ{});
+    r.v[1 + axis] = (o * dd + n * dv).v / dd.v;
+  }
+  return r;
+}
+
+struct ValueStats {
+  std::size_t pieces = 0, tried = 0, certified = 0, bounded = 0;
+  double worst = 0;  // largest |exact − (hi + lo)| / bound seen
+};
+
+// One (E, t): when certified, σ² and X − t are RN of the exact values; whenever the bounds were
+// computed, they hold (rationals): |exact − (hi + lo)| ≤ bound.
+void check_projection(const Ray& E, const Vec2& t, ValueStats& st, const std::string& what) {
+  NfpFlat F;
+  F.pdd = {pendepth::nonconvex2::piece_dd(E)};
+  ++st.pieces;
+  if (!F.pdd[0].ok) return;
+  ++st.tried;
+  const ExactProjection X = exact_projection(E, t);
+  if (sgn(X.v[0]) == 0) return;  // t on the line: never a query (t ∈ O is on no piece)
+  double s2;
+  Vec2 tr;
+  NfpFlat::ProjectionDiag diag;
+  const bool ok = F.projection_values(0, t, s2, tr, &diag);
+  if (diag.set) {
+    ++st.bounded;
+    for (int i = 0; i < 3; ++i) {
+      const mpq_class err = abs(X.v[i] - mpq_class(diag.hi[i]) - mpq_class(diag.lo[i]));
+      ASSERT_LE(err, mpq_class(diag.bound[i])) << what << " value " << i << " t = " << t.transpose();
+      if (diag.bound[i] > 0) st.worst = std::max(st.worst, mpq_class(err / mpq_class(diag.bound[i])).get_d());
+    }
+  }
+  if (!ok) return;
+  ++st.certified;
+  ASSERT_TRUE(same(s2, pendepth::exact::round_nearest(X.v[0]))) << what << " σ² at t = " << t.transpose();
+  ASSERT_TRUE(same(tr.x(), pendepth::exact::round_nearest(X.v[1]))) << what << " x at t = " << t.transpose();
+  ASSERT_TRUE(same(tr.y(), pendepth::exact::round_nearest(X.v[2]))) << what << " y at t = " << t.transpose();
+}
+
+Ray edge_ray(const Vec2& o1, const Vec2& o2, const Vec2& a1, const Vec2& a2, const Vec2& b1, const Vec2& b2) {
+  Ray E;
+  E.o1 = o1, E.o2 = o2, E.a1 = a1, E.a2 = a2, E.b1 = b1, E.b2 = b2;
+  return E;
+}
+
+// nfp_value.cpp's double-double σ² and translation at a projection against exact rationals: every
+// certified value is RN(exact) bit for bit, and every error bound holds; the bounds are not loose
+// by more than 2¹² on these inputs (shrinking them that much, or dropping them, fails the
+// ASSERT_LE above). Inputs: the pieces of real no-fit polygons with random placements and
+// placements ulps from the edge lines, random edges over 2^±200 magnitudes, axis-parallel edges
+// with placements whose exact offset is a rounding tie, and dyadic ties at direction (1, 2).
+TEST(NfpFastPath, ProjectionValuesAgainstRationals) {
+  std::mt19937_64 rng(19005);
+  ValueStats st;
+  const auto albano = instance("albano.json");
+  for (std::size_t i = 0; i < albano.size(); i += 3)
+    for (std::size_t j = 0; j < albano.size(); j += 2) {
+      const NoFitPolygon2 nfp(albano[i], albano[j]);
+      const auto& N = nfp_impl(nfp);
+      for (std::size_t k = 0; k < N.pieces.size(); k += 3) {
+        const auto& pc = N.pieces[k];
+        std::uniform_real_distribution<double> u(-1, 1), f(0, 1);
+        const Vec2 span = pc.b - pc.a;
+        for (int r = 0; r < 6; ++r) {
+          Vec2 t = pc.a + f(rng) * span + Vec2(span.y(), -span.x()) * u(rng) * (r < 3 ? 1.0 : 0x1p-30);
+          if (r == 5) t = ulp_step(pc.a + 0.5 * span, 1, -1);
+          check_projection(pc.E, t, st, "albano " + std::to_string(i) + " " + std::to_string(j));
+        }
+      }
+    }
+  std::uniform_real_distribution<double> m(-1, 1);
+  std::uniform_int_distribution<int> ex(-200, 200);
+  for (int k = 0; k < 3000; ++k) {
+    const double s = std::ldexp(1.0, ex(rng));
+    auto v = [&]() -> Vec2 { return Vec2(m(rng), m(rng)) * s; };
+    // Directions of two doubles (a sum edge's four-term direction is usually two doubles).
+    const Ray E = edge_ray(v(), v() * 0x1p-20, v(), k % 2 ? v() * 0x1p-30 : Vec2(0, 0), Vec2(0, 0), Vec2(0, 0));
+    check_projection(E, v(), st, "random " + std::to_string(k));
+  }
+  // Axis-parallel edges, offsets o − t = 1 + 2⁻⁵³ (a tie: RN = 1) and 1 + 3·2⁻⁵³ (RN = 1 + 2⁻⁵¹).
+  for (double tail : {0x1p-53, 3 * 0x1p-53, -0x1p-53})
+    for (int axis = 0; axis < 2; ++axis) {
+      const Vec2 o2 = axis == 0 ? Vec2(0, tail) : Vec2(tail, 0);
+      const Vec2 dir = axis == 0 ? Vec2(3, 0) : Vec2(0, -5);
+      const Ray E = edge_ray(Vec2(0.5, 0.5), o2, dir, Vec2(0, 0), Vec2(0, 0), Vec2(0, 0));
+      check_projection(E, Vec2(-0.5, -0.5), st, "axis tie");
+    }
+  // Direction (1, 2), |D|² = 5: translation y = c/5 = 1 + 2⁻⁵³, a tie (exact: must not be certified
+  // as 1 + 2⁻⁵² nor mis-rounded).
+  check_projection(edge_ray(Vec2(0, 0), Vec2(0, 0), Vec2(1, 2), Vec2(0, 0), Vec2(0, 0), Vec2(0, 0)), Vec2(5 * 0x1p-54, -5), st, "tie (1, 2)");
+  // σ_d's crossing value λ = line_num / line_den on the same pieces, random rays.
+  std::size_t crossings = 0, crossed = 0;
+  double worst_cross = 0;
+  for (std::size_t i = 0; i < albano.size(); i += 3)
+    for (std::size_t j = 1; j < albano.size(); j += 2) {
+      const NoFitPolygon2 nfp(albano[i], albano[j]);
+      const auto& N = nfp_impl(nfp);
+      std::uniform_real_distribution<double> f(0, 1), a(0, 2 * M_PI);
+      for (std::size_t k = 0; k < N.pieces.size(); ++k) {
+        const auto& pc = N.pieces[k];
+        const Vec2 t = pc.a + f(rng) * (pc.b - pc.a) + Vec2(f(rng) - 0.5, f(rng) - 0.5) * 50;
+        const double an = a(rng);
+        const Vec2 d = pendepth::nonconvex2::check_and_scale(t, Vec2(std::cos(an), std::sin(an)));
+        const Ray ray = Ray::query(t, d);
+        using pendepth::exact::LiftQ;
+        const auto den = pendepth::nonconvex2::line_den(pc.edge, ray, LiftQ{});
+        if (sgn(den.v) == 0) continue;
+        const mpq_class lam = pendepth::nonconvex2::line_num(pc.edge, ray, LiftQ{}).v / den.v;
+        if (sgn(lam) == 0) continue;
+        ++crossings;
+        double l;
+        NfpFlat::ProjectionDiag diag;
+        const bool ok = N.flat.crossing_value(std::uint32_t(k), t, d, l, &diag);
+        if (diag.set) {
+          const mpq_class err = abs(lam - mpq_class(diag.hi[0]) - mpq_class(diag.lo[0]));
+          ASSERT_LE(err, mpq_class(diag.bound[0])) << "crossing " << k;
+          worst_cross = std::max(worst_cross, mpq_class(err / mpq_class(diag.bound[0])).get_d());
+        }
+        if (!ok) continue;
+        ++crossed;
+        ASSERT_TRUE(same(l, pendepth::exact::round_nearest(lam))) << "crossing " << k << " t = " << t.transpose();
+      }
+    }
+  std::cout << "[crossing values] " << crossings << " rays, " << crossed << " certified; worst error / bound " << worst_cross << "\n";
+  EXPECT_GT(crossed, crossings * 9 / 10);
+  EXPECT_GT(worst_cross, 0x1p-12);
+  std::cout << "[projection values] " << st.pieces << " edges, " << st.tried << " tried, " << st.bounded << " bounded, " << st.certified
+            << " certified; worst error / bound " << st.worst << "\n";
+  EXPECT_GT(st.certified, st.tried * 9 / 10);
+  EXPECT_GT(st.worst, 0x1p-12);
 }
 
 }  // namespace

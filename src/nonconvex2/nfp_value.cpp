@@ -1,0 +1,194 @@
+// The per-pair no-fit polygon, fast value of σ at a projection (issue 19 item 1): σ² and the
+// translation from t to its orthogonal projection X on a piece's edge line, each the exact value
+// rounded to nearest (RN, geometry/rounded.hpp) — the same doubles as the rationals give, found in
+// double-double arithmetic with a static error bound.
+//
+// Formulas (exact reals): o = o1 + o2 and D = (a1 + a2) − (b1 + b2) the edge ray's origin and
+// direction, W = t − o, c = W × D = Wx·Dy − Wy·Dx, |D|² = Dx² + Dy². The projection is
+// X = o + (W·D/|D|²)·D, and W = ((W·D)·D + c·(Dy, −Dx))/|D|², so
+//   X − t = (c/|D|²)·(−Dy, Dx),   σ² = |X − t|² = c²/|D|² = c·q with q = c/|D|².
+// Precomputed per piece (build_values): o exactly as a double-double (two-sum); D exactly when its
+// four-term sum is two doubles (else the piece has no fast value); |D|² to ρ_D = 2⁻⁹⁹ relative.
+// Error bounds (u = 2⁻⁵³; double-double (dd) operands normalised, |lo| ≤ u·|hi|):
+//   W: two-sum(t, −o_hi) = s + e exactly; r = RN(e − o_lo) is off by ≤ u·|r|; two-sum(s, r) is
+//     exact: |W̃ − W| ≤ e_W = 2⁻⁵²·|r|.
+//   dd product a·b (p = RN(ah·bh), the FMA residual, plus RN(ah·bl + al·bh), fast two-sum): the
+//     dropped al·bl (≤ u²), the two products' rounding (≤ 2u²) and the two sums' (≤ 5u²) stay
+//     below 9u²·|ah·bh|(1 + 2u).
+//   dd sum (two two-sums, exact.hpp's operator+): ≤ 2⁻¹⁰⁰·(|a| + |b|) (exact.hpp's kUnitDD).
+//   c̃ = W̃x·Dy − W̃y·Dx: |c̃ − c| ≤ e_c = (|Dy|·e_Wx + |Dx|·e_Wy)(1 + 2⁻⁵⁰) + 2⁻⁹⁹·(|P1| + |P2|)
+//     (9u² + 2⁻¹⁰⁰ < 2⁻⁹⁹ per product's magnitude); ρ_c = e_c/|c̃| (required ≤ 2⁻⁶⁰).
+//   q̃ = c̃ / |D|² (exact::dd_div, 2⁻⁹⁷ for exact operands): ρ_q = (ρ_c + ρ_D)(1 + 2⁻⁴⁰) + 2⁻⁹⁷.
+//   σ̃² = c̃·q̃: ρ_σ = (ρ_c + ρ_q)(1 + 2⁻⁴⁰) + 2⁻¹⁰²; translation q̃·(−Dy), q̃·Dx: ρ_q + 2⁻¹⁰²
+//     (a zero component of D gives an exact zero).
+// Axis-parallel edges (Dx or Dy exactly 0): X − t = −W on the other axis, σ² = W² (below).
+// Each value is returned only when rounds_to certifies the whole interval inside one rounding
+// cell; magnitudes are kept inside [2⁻⁸⁰⁰, 2⁸⁰⁰] (products' residuals representable) or zero.
+// Cost: ~80 flops per query, no branch on data beyond the range checks.
+#include <cmath>
+
+#include "geometry/exact.hpp"
+#include "geometry/rounded.hpp"
+#include "nonconvex2/nfp_impl.hpp"
+
+namespace pendepth::nonconvex2 {
+
+namespace {
+
+using exact::quick_two_sum;
+using exact::two_sum;
+
+struct D2 {
+  double hi, lo;
+};
+
+inline D2 mul(D2 a, D2 b) {
+  const double p = a.hi * b.hi;
+  const double e = std::fma(a.hi, b.hi, -p) + (a.hi * b.lo + a.lo * b.hi);
+  D2 r;
+  quick_two_sum(p, e, r.hi, r.lo);
+  return r;
+}
+
+inline D2 add(D2 a, D2 b) {
+  const exact::DD r = exact::DD{a.hi, a.lo, 0} + exact::DD{b.hi, b.lo, 0};
+  return {r.hi, r.lo};
+}
+
+// 0 or within [2⁻⁴⁰⁰, 2⁴⁰⁰]: products of two such are 0 or in [2⁻⁸⁰⁰, 2⁸⁰⁰].
+inline bool in_range(double x) {
+  const double a = std::abs(x);
+  return a == 0 || (a >= 0x1p-400 && a <= 0x1p400);
+}
+
+// W = t − (o + ol) as a double-double with its error bound (0 when exact).
+inline void diff(double t, double o, double ol, D2& w, double& err) {
+  double s, e, r, r2;
+  two_sum(t, -o, s, e);
+  two_sum(e, -ol, r, r2);
+  two_sum(s, r, w.hi, w.lo);
+  err = r2 == 0 ? 0.0 : 0x1p-52 * std::abs(r);  // 0: W = s + r exactly
+}
+
+}  // namespace
+
+NfpFlat::PieceDD piece_dd(const Ray& E, const Line* edge) {
+  NfpFlat::PieceDD v;
+  if (edge) {
+    two_sum(edge->c1.x(), edge->c2.x(), v.cx, v.cxl);
+    two_sum(edge->c1.y(), edge->c2.y(), v.cy, v.cyl);
+    two_sum(edge->e1.x(), -edge->e0.x(), v.ex, v.exl);
+    two_sum(edge->e1.y(), -edge->e0.y(), v.ey, v.eyl);
+    v.line_ok = in_range(v.cx) && in_range(v.cy) && in_range(v.ex) && in_range(v.ey) && (v.ex != 0 || v.ey != 0);
+  }
+  two_sum(E.o1.x(), E.o2.x(), v.ox, v.oxl);
+  two_sum(E.o1.y(), E.o2.y(), v.oy, v.oyl);
+  bool ok = true;
+  auto dir = [&](double a1, double a2, double b1, double b2, double& hi, double& lo) {
+    const exact::Ex e = exact::LiftEx{}(a1) + exact::LiftEx{}(a2) - exact::LiftEx{}(b1) - exact::LiftEx{}(b2);
+    if (!e.ok || e.n > 2) return void(ok = false);
+    if (e.n == 0) return void(hi = lo = 0);
+    if (e.n == 1) return void((hi = e.c[0], lo = 0));
+    two_sum(e.c[1], e.c[0], hi, lo);
+  };
+  dir(E.a1.x(), E.a2.x(), E.b1.x(), E.b2.x(), v.dx, v.dxl);
+  dir(E.a1.y(), E.a2.y(), E.b1.y(), E.b2.y(), v.dy, v.dyl);
+  if (!ok || !in_range(v.ox) || !in_range(v.oy) || !in_range(v.dx) || !in_range(v.dy)) return v;
+  const D2 dd = add(mul({v.dx, v.dxl}, {v.dx, v.dxl}), mul({v.dy, v.dyl}, {v.dy, v.dyl}));
+  v.dd = dd.hi, v.ddl = dd.lo;
+  v.ok = dd.hi >= 0x1p-800;
+  return v;
+}
+
+void build_values(const NoFitPolygon2::Impl& N, std::vector<NfpFlat::PieceDD>& out) {
+  out.clear();
+  out.reserve(N.pieces.size());
+  for (const NfpPiece& pc : N.pieces) out.push_back(piece_dd(pc.E, &pc.edge));
+}
+
+bool NfpFlat::projection_values(std::uint32_t k, const Vec2& t, double& sigma2, Vec2& translation, ProjectionDiag* diag) const {
+  const PieceDD& v = pdd[k];
+  if (!v.ok || !in_range(t.x()) || !in_range(t.y())) return false;
+  D2 wx, wy;
+  double ewx, ewy;
+  diff(t.x(), v.ox, v.oxl, wx, ewx);
+  diff(t.y(), v.oy, v.oyl, wy, ewy);
+  if (!in_range(wx.hi) || !in_range(wy.hi)) return false;
+  const D2 Dx{v.dx, v.dxl}, Dy{v.dy, v.dyl};
+  // An axis-parallel edge (frequent on real pieces): X − t = −W along the other axis and σ² = W²
+  // on it. When W = s + r exactly (e_W = 0), RN(W) is two-sum's hi (the hardware's rounding of
+  // s + r: RN of the exact sum, ties to even), so no tie can defeat the certificate.
+  if (v.dx == 0 || v.dy == 0) {
+    const bool horizontal = v.dy == 0;
+    const D2 w = horizontal ? wy : wx;
+    if ((horizontal ? ewy : ewx) != 0 || w.hi == 0) return false;
+    const D2 w2 = mul(w, w);
+    if (diag) *diag = {{w2.hi, horizontal ? 0.0 : -w.hi, horizontal ? -w.hi : 0.0}, {w2.lo, horizontal ? 0.0 : -w.lo, horizontal ? -w.lo : 0.0},
+                       {0x1p-102 * std::abs(w2.hi), 0, 0}, true};
+    if (!exact::rounds_to(w2.hi, w2.lo, 0x1p-102 * std::abs(w2.hi))) return false;
+    sigma2 = w2.hi;
+    translation = horizontal ? Vec2(0, -w.hi) : Vec2(-w.hi, 0);
+    return true;
+  }
+  const D2 p1 = mul(wx, Dy), p2 = mul(wy, Dx);
+  const D2 c = add(p1, {-p2.hi, -p2.lo});
+  const double ac = std::abs(c.hi);
+  if (!(ac >= 0x1p-800 && ac <= 0x1p800)) return false;
+  const double ec = (std::abs(v.dy) * ewx + std::abs(v.dx) * ewy) * (1 + 0x1p-50) + 0x1p-99 * (std::abs(p1.hi) + std::abs(p2.hi));
+  const double rc = ec / ac * (1 + 0x1p-50);
+  if (!(rc <= 0x1p-60)) return false;
+  const exact::DD qd = exact::dd_div(exact::DD{c.hi, c.lo, 0}, exact::DD{v.dd, v.ddl, 0});
+  const D2 q{qd.hi, qd.lo};
+  const double rq = (rc + 0x1p-99) * (1 + 0x1p-40) + exact::kDivBound;
+  const D2 s2 = mul(c, q);
+  const double rs = (rc + rq) * (1 + 0x1p-40) + 0x1p-102;
+  const double bs = rs * std::abs(s2.hi) * (1 + 0x1p-40);
+  if (diag) diag->hi[0] = s2.hi, diag->lo[0] = s2.lo, diag->bound[0] = bs, diag->set = false;
+  const bool ok_s = exact::rounds_to(s2.hi, s2.lo, bs);
+  if (!ok_s && !diag) return false;
+  // A component: q·f for f = −Dy or Dx; exactly 0 when f is.
+  auto comp = [&](D2 f, double& out, int i) {
+    const D2 x = f.hi == 0 ? D2{0, 0} : mul(q, f);
+    const double b = (rq + 0x1p-102) * (1 + 0x1p-40) * std::abs(x.hi) * (1 + 0x1p-40);
+    if (diag) diag->hi[i] = x.hi, diag->lo[i] = x.lo, diag->bound[i] = b;
+    out = x.hi;
+    return f.hi == 0 || exact::rounds_to(x.hi, x.lo, b);
+  };
+  double tx, ty;
+  const bool cx = comp({-v.dy, -v.dyl}, tx, 1), cy = comp(Dx, ty, 2);
+  if (diag) diag->set = true;
+  if (!cx || !cy || !ok_s) return false;
+  sigma2 = s2.hi;
+  translation = Vec2(tx, ty);
+  return true;
+}
+
+bool NfpFlat::crossing_value(std::uint32_t k, const Vec2& t, const Vec2& d, double& lambda, ProjectionDiag* diag) const {
+  const PieceDD& v = pdd[k];
+  if (!v.line_ok || !in_range(t.x()) || !in_range(t.y()) || !in_range(d.x()) || !in_range(d.y())) return false;
+  // λ = ((C − t) × E) / (d × E), C = c1 + c2, E = e1 − e0 (exact double-doubles).
+  D2 wx, wy;
+  double ewx, ewy;
+  diff(v.cx, t.x(), -v.cxl, wx, ewx);  // C − t: (cx − t) + cxl
+  diff(v.cy, t.y(), -v.cyl, wy, ewy);
+  if (!in_range(wx.hi) || !in_range(wy.hi)) return false;
+  const D2 Ex{v.ex, v.exl}, Ey{v.ey, v.eyl};
+  const D2 n1 = mul(wx, Ey), n2 = mul(wy, Ex);
+  const D2 num = add(n1, {-n2.hi, -n2.lo});
+  const D2 m1 = mul({d.x(), 0}, Ey), m2 = mul({d.y(), 0}, Ex);
+  const D2 den = add(m1, {-m2.hi, -m2.lo});
+  const double an = std::abs(num.hi), ad = std::abs(den.hi);
+  if (!(an >= 0x1p-800 && an <= 0x1p800 && ad >= 0x1p-800 && ad <= 0x1p800)) return false;
+  const double en = (std::abs(v.ey) * ewx + std::abs(v.ex) * ewy) * (1 + 0x1p-50) + 0x1p-99 * (std::abs(n1.hi) + std::abs(n2.hi));
+  const double ed = 0x1p-99 * (std::abs(m1.hi) + std::abs(m2.hi));
+  const double rn = en / an * (1 + 0x1p-50), rd = ed / ad * (1 + 0x1p-50);
+  if (!(rn <= 0x1p-60 && rd <= 0x1p-60)) return false;
+  const exact::DD q = exact::dd_div(exact::DD{num.hi, num.lo, 0}, exact::DD{den.hi, den.lo, 0});
+  const double b = ((rn + rd) * (1 + 0x1p-40) + exact::kDivBound) * std::abs(q.hi) * (1 + 0x1p-40);
+  if (diag) *diag = {{q.hi, 0, 0}, {q.lo, 0, 0}, {b, 0, 0}, true};
+  if (!exact::rounds_to(q.hi, q.lo, b)) return false;
+  lambda = q.hi;
+  return true;
+}
+
+}  // namespace pendepth::nonconvex2
