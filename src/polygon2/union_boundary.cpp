@@ -38,8 +38,8 @@
 //   far simpler to make exact. Worst case: a candidate can meet Θ(N) sausages (Q much larger than
 //   P's edges) and an arc Θ(m) B edges near one sausage, so the build is O(N²·m log m) in the worst
 //   case. Output-sensitive first pass (Build::subtract_overlap, issue 19 item 4): a candidate with
-//   more than 64 sausage boxes in reach is first tried against only the 32, then 256, sausages
-//   nearest to its contact (best-first in a hierarchy over the edge midpoints, O(k log N)); if they
+//   more than 64 sausage boxes in reach is first tried against only the 32 sausages nearest to
+//   its contact (best-first in a hierarchy over the edge midpoints, O(k log N)); if they
 //   cover it entirely it has no piece (a subset of the covers proves it), else it is redone by the
 //   full gathering above (the same pieces bit for bit: tests/polygon2/test_union_nearest.cpp).
 //   The full gathering then costs O(reach) only for candidates that keep a piece of ∂O, so the
@@ -794,16 +794,14 @@ void Build::subtract_overlap(std::uint32_t ci) {
   if (nearest_first)
     X.sausages.overlap_until(box_lo(cb[ci]), box_hi(cb[ci]), [&](std::uint32_t g) { return boxes_meet(sbox[g], cb[ci]) && ++reach > 64; });
   if (reach > 64) {
-    for (const std::size_t count : {std::size_t{32}, std::size_t{256}}) {
-      ivs.clear();
-      Cover first(*this, ci);
-      if (!first.gather_nearest(count)) break;  // that was all of them: the full pass below
-      first.cover_ends_by_fans();
-      first.cover_by_sausages();
-      if (!first.sweep(ivs, false)) {
-        ++covered_early;
-        return;
-      }
+    ivs.clear();
+    Cover first(*this, ci);
+    first.gather_nearest(32);
+    first.cover_ends_by_fans();
+    first.cover_by_sausages();
+    if (!first.sweep(ivs, false)) {
+      ++covered_early;
+      return;
     }
   }
   ivs.clear();
