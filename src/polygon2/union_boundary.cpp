@@ -676,9 +676,8 @@ struct Cover {
   void gather_sausages();
   // S.near := up to `count` sausages whose boxes meet the candidate's, except its own, nearest to
   // its contact first (by the distance gather_sausages orders by), found best-first in the
-  // sausage hierarchy without visiting the others. Returns false when S.near holds all of them.
-  // O(count log N) typical.
-  bool gather_nearest(std::size_t count);
+  // hierarchy over the edge midpoints (S.keys) without visiting the others. O(count log N).
+  void gather_nearest(std::size_t count);
   // The candidate's natural ends inside int R_T of a fan triangle T at its P vertices.
   void cover_ends_by_fans();
   // Element ranges inside sausages: a range whose box lies in one is covered at once; a single
@@ -962,16 +961,15 @@ void Cover::gather_sausages() {
   for (const auto& o : order) near.push_back(o.second);
 }
 
-bool Cover::gather_nearest(std::size_t count) {
+void Cover::gather_nearest(std::size_t count) {
   // Best-first search in S.keys (the points key[g] = V[g] + V[next(g)]) by their L1 distance to f,
   // gather_sausages' order; a node's distance bounds its keys' from below. Sausages whose boxes
-  // miss the candidate's are skipped; the search gives up (returns true: maybe more) after
-  // visiting 8·count keys.
+  // miss the candidate's are skipped; the search stops after visiting 8·count keys.
   const auto& V = S.V;
   auto& near = S.near;
   near.clear();
   const auto& T = S.keys;
-  if (T.nodes.empty()) return false;
+  if (T.nodes.empty()) return;
   const Vec2 f = C.arc ? Vec2(2 * V[C.p]) : Vec2(V[C.p] + V[S.P.next(C.p)]);
   const double cx = f.x(), cy = f.y();
   const Box& cbox = S.cb[ci];
@@ -998,7 +996,7 @@ bool Cover::gather_nearest(std::size_t count) {
   push({node_dist(T.nodes[0]), false, 0});
   std::size_t visited = 0;
   while (!heap.empty() && near.size() < count) {
-    if (visited > 8 * count) return true;
+    if (visited > 8 * count) return;
     std::pop_heap(heap.begin(), heap.end(), std::greater<>());
     const Entry e = heap.back();
     heap.pop_back();
@@ -1021,7 +1019,6 @@ bool Cover::gather_nearest(std::size_t count) {
       return false;
     });
   }
-  return !heap.empty();
 }
 
 void Cover::cover_ends_by_fans() {
