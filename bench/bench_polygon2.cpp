@@ -19,8 +19,10 @@
 //                         scans of an explicit sum: point in polygon (crossing number with the
 //                         exact orientation predicate on the doubles), then the nearest edge
 //                         (σ) or the first edge the ray leaves through (σ_d), in double
-// Shapes: `star` (regular-ish star-shaped ring, radii in [60, 100], Q of diameter ≈ 10) and `comb`
-// (n/4 teeth of width 1 and height 20 with gaps of 3, Q of diameter ≈ 2 that fits the gaps).
+// Shapes: `star` (regular-ish star-shaped ring, radii in [60, 100], Q of diameter ≈ 10), `comb`
+// (n/4 teeth of width 1 and height 20 with gaps of 3, Q of diameter ≈ 2 that fits the gaps) and
+// `spiral` (thick Archimedean spiral of 5 turns, arms 3 wide and 27 apart, Q of diameter ≈ 10;
+// build/pendepth only, for bench/plot_scaling.py).
 // CGAL's reduced convolution crashes on polygons with holes in Debian's CGAL 5.5.1 (in the hole
 // filter), so all shapes here are hole-free; pendepth handles holes (tests/polygon2).
 // Queries: kQueries placements t = p − centroid(Q) with p uniform in P (so nearly all overlap) and
@@ -106,6 +108,22 @@ std::vector<Vec2> comb_ring(std::size_t n) {
   return r;
 }
 
+// Thick Archimedean spiral (as bench_nonconvex2's): 5 turns, centre line r = 20 + 30·θ/2π,
+// half-width 1.5 (arms 27 apart), about n vertices.
+std::vector<Vec2> spiral_ring(std::size_t n) {
+  const std::size_t steps = std::max<std::size_t>(2, n / 2 - 1);
+  std::vector<Vec2> outer, inner;
+  const double turns = 5, b = 30 / (2 * std::numbers::pi), w = 1.5;
+  for (std::size_t k = 0; k <= steps; ++k) {
+    const double th = turns * 2 * std::numbers::pi * double(k) / double(steps), rad = 20 + b * th;
+    outer.emplace_back((rad + w) * std::cos(th), (rad + w) * std::sin(th));
+    inner.emplace_back((rad - w) * std::cos(th), (rad - w) * std::sin(th));
+  }
+  std::vector<Vec2> ring(inner.begin(), inner.end());
+  ring.insert(ring.end(), outer.rbegin(), outer.rend());
+  return ring;
+}
+
 ConvexPolygon scaled_q(std::size_t m, double scale, pb::Rng& rng) {
   const ConvexPolygon Q0 = pb::random_ellipse_polygon(m, rng, "Q");
   std::vector<Vec2> v;
@@ -176,7 +194,7 @@ struct Case {
 
   Case(std::string s, std::size_t n_, std::size_t m_) : shape(std::move(s)), n(n_), m(m_) {
     pb::Rng rng(0x9e3779b9u ^ (n * 1000003u) ^ (m * 7919u) ^ (shape == "comb" ? 0x5bd1e995u : 0u));
-    const std::vector<Vec2> ring = shape == "comb" ? comb_ring(n) : star_ring(n, rng);
+    const std::vector<Vec2> ring = shape == "comb" ? comb_ring(n) : shape == "spiral" ? spiral_ring(n) : star_ring(n, rng);
     P.emplace(Polygon::simple(ring, "P"));
     this->n = P->size();
     Q.emplace(scaled_q(m, shape == "comb" ? 0.7 : 5.0, rng));
@@ -352,7 +370,7 @@ int main(int argc, char** argv) {
   const double budget = budget_env && *budget_env ? std::atof(budget_env) : 1e5;
   const char* clipper_env = std::getenv("PENDEPTH_BENCH_CLIPPER_BUDGET");
   const double clipper_budget = clipper_env && *clipper_env ? std::atof(clipper_env) : 1e4;
-  for (const std::string shape : {"star", "comb"}) {
+  for (const std::string shape : {"star", "comb", "spiral"}) {
     for (std::size_t n : ns) {
       for (std::size_t m : ms) {
         const std::string tag = shape + "/" + std::to_string(n) + "/" + std::to_string(m);
@@ -361,6 +379,7 @@ int main(int argc, char** argv) {
         (void)clipper;
         benchmark::RegisterBenchmark(("build/pendepth/" + tag).c_str(), BM_build_pendepth, shape, n, m)
             ->Unit(benchmark::kMicrosecond);
+        if (shape == "spiral") continue;  // the scaling plot's third family: the build only
         if (peers) {
           benchmark::RegisterBenchmark(("build/cgal/" + tag).c_str(), BM_build_cgal, shape, n, m)
               ->Unit(benchmark::kMicrosecond);

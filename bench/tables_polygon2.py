@@ -16,7 +16,7 @@ runs = res.runs
 ns, counter = res.ns, res.counter
 
 # name = what/impl/shape/n/m
-cases = sorted({tuple(n.split("/")[2:5]) for n in runs}, key=lambda c: (c[0] != "star", int(c[1]), int(c[2])))
+cases = sorted({tuple(n.split("/")[2:5]) for n in runs}, key=lambda c: ({"star": 0, "comb": 1}.get(c[0], 2), c[0], int(c[1]), int(c[2])))
 
 with open(csv_path, "w", newline="") as f:
     w = csv.writer(f)

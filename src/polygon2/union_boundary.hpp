@@ -128,7 +128,10 @@ class UnionBoundary {
   /// Builds ∂O for the convolved triangles of P (see the file header). Throws nothing beyond
   /// allocation failures (inputs are validated by Polygon / ConvexPolygon). Keeps pointers to P
   /// and R: both must outlive the structure and stay in place (PolygonDepth2::Impl holds all three).
-  UnionBoundary(const Polygon& P, const ConvolvedTriangles& R);
+  /// `nearest_first` = false disables the output-sensitive first pass of step 2 (every candidate
+  /// gathers every sausage in reach, the method before it, O(N²) on a star): the same pieces bit
+  /// for bit, slower; kept as the reference of tests/polygon2/test_union_nearest.cpp.
+  UnionBoundary(const Polygon& P, const ConvolvedTriangles& R, bool nearest_first = true);
   ~UnionBoundary();
   UnionBoundary(UnionBoundary&&) noexcept;
   UnionBoundary& operator=(UnionBoundary&&) noexcept;
@@ -180,6 +183,8 @@ class UnionBoundary {
   std::size_t arc_count() const;
   /// Distinct explicit vertices (piece ends; a ring's shared ends counted once).
   std::size_t vertex_count() const;
+  /// Candidates the nearest-first pass found entirely inside O (construction statistics).
+  std::size_t covered_early() const { return covered_early_; }
 
   struct Index;  ///< bounding-volume hierarchies (private)
 
@@ -205,6 +210,7 @@ class UnionBoundary {
   std::vector<Piece> pieces_;
   std::vector<Ring> rings_;
   std::unique_ptr<Index> index_;
+  std::size_t covered_early_ = 0;
 };
 
 }  // namespace pendepth::polygon2

@@ -1,0 +1,158 @@
+// The union boundary's output-sensitive first pass (UnionBoundary, nearest_first; issue 19 item
+// 4) against the previous method (nearest_first = false: every candidate gathers every sausage in
+// reach) on the same P and R: the pieces must be the same bit for bit (kind, P / B indices,
+// candidate, symbolic ends, ring links), the rings the same, and every piece end the same exact
+// rational point. Inputs: dense random stars under a large Q (where the pass decides most
+// candidates: the test asserts it ran), random polygons with holes, grid-rounded stars (exact
+// collinearities), spirals, combs whose pockets Q fits exactly (slits), hole grids with holes of
+// Q's exact size (isolated points), a frame of collinear vertices, and a 1e6 offset.
+// The exact correctness of the pieces themselves is test_union.cpp's (CGAL's exact union).
+#include <gtest/gtest.h>
+
+#include <random>
+#include <string>
+
+#include "../test_scale.hpp"
+#include "polygon2/convolved_triangles.hpp"
+#include "polygon2/union_boundary.hpp"
+#include "shapes.hpp"
+
+namespace {
+
+using pendepth::ConvexPolygon;
+using pendepth::Polygon;
+using pendepth::Vec2;
+using pendepth::polygon2::ConvolvedTriangles;
+using pendepth::polygon2::EndPoint;
+using pendepth::polygon2::Piece;
+using pendepth::polygon2::UnionBoundary;
+
+bool same_end(const EndPoint& a, const EndPoint& b) {
+  if (a.kind != b.kind) return false;
+  switch (a.kind) {
+    case EndPoint::Kind::Crossing:
+      return a.other.pt == b.other.pt && a.other.pb == b.other.pb && a.other.e0 == b.other.e0 &&
+             a.other.e1 == b.other.e1;
+    case EndPoint::Kind::Point:
+      return a.p == b.p && a.b == b.b && a.p_index == b.p_index && a.b_index == b.b_index;
+    default:
+      return true;
+  }
+}
+
+struct Totals {
+  std::size_t cases = 0, candidates_early = 0, pieces = 0;
+};
+
+// Builds ∂O both ways and compares; returns the number of candidates the first pass decided.
+void compare(const std::string& what, const Polygon& P, const ConvexPolygon& Q, Totals& tot) {
+  SCOPED_TRACE(what);
+  const ConvolvedTriangles R(P, Q);
+  const UnionBoundary fast(P, R), ref(P, R, false);
+  EXPECT_EQ(ref.covered_early(), 0u);
+  ++tot.cases;
+  tot.candidates_early += fast.covered_early();
+  ASSERT_EQ(fast.pieces().size(), ref.pieces().size());
+  ASSERT_EQ(fast.rings().size(), ref.rings().size());
+  tot.pieces += ref.pieces().size();
+  for (std::size_t k = 0; k < ref.pieces().size(); ++k) {
+    const Piece &a = fast.pieces()[k], &b = ref.pieces()[k];
+    ASSERT_EQ(a.kind, b.kind) << k;
+    ASSERT_EQ(a.p, b.p) << k;
+    ASSERT_EQ(a.b0, b.b0) << k;
+    ASSERT_EQ(a.b1, b.b1) << k;
+    ASSERT_EQ(a.candidate, b.candidate) << k;
+    ASSERT_TRUE(same_end(a.start, b.start)) << k;
+    ASSERT_TRUE(same_end(a.end, b.end)) << k;
+    ASSERT_EQ(a.ring, b.ring) << k;
+    ASSERT_EQ(a.next, b.next) << k;
+    ASSERT_EQ(a.prev, b.prev) << k;
+    ASSERT_EQ(fast.exact_start(k), ref.exact_start(k)) << k;
+    ASSERT_EQ(fast.exact_end(k), ref.exact_end(k)) << k;
+  }
+  for (std::size_t r = 0; r < ref.rings().size(); ++r) {
+    EXPECT_EQ(fast.rings()[r].first, ref.rings()[r].first);
+    EXPECT_EQ(fast.rings()[r].count, ref.rings()[r].count);
+    EXPECT_EQ(fast.rings()[r].area_sign, ref.rings()[r].area_sign);
+  }
+  EXPECT_EQ(fast.vertex_count(), ref.vertex_count());
+}
+
+// Dense stars under a Q much larger than the spikes: most candidates lie inside O and have more
+// than 64 sausages in reach, so the first pass decides them.
+TEST(UnionNearestFirst, DenseStarsMatchPreviousMethod) {
+  std::mt19937_64 rng(1919);
+  Totals tot;
+  for (int it = 0; it < pendepth_test::scaled(8); ++it) {
+    const int n = 400 + 200 * it;
+    // Odd cases: integer coordinates (exact collinearities), the star scaled by 16 so that the
+    // rounding keeps it simple.
+    const bool grid = it % 2 == 1;
+    const double s = grid ? 16 : 1;
+    Polygon P = [&] {
+      for (;;) {
+        try {
+          return Polygon::simple(polygon2_test::star_ring(rng, n, Vec2(0, 0), 60 * s, 100 * s, grid), "star");
+        } catch (const pendepth::InvalidInput&) {
+        }
+      }
+    }();
+    const ConvexPolygon Q = polygon2_test::random_convex(rng, 3 + 13 * (it % 4), (4 + it) * s, grid);
+    compare("star " + std::to_string(it), P, Q, tot);
+  }
+  std::printf("dense stars: %zu cases, %zu pieces, %zu candidates decided by the first pass\n", tot.cases, tot.pieces,
+              tot.candidates_early);
+  EXPECT_GT(tot.candidates_early, 1000u);  // the pass ran (the comparison is not vacuous)
+}
+
+TEST(UnionNearestFirst, RandomPolygonsWithHolesMatchPreviousMethod) {
+  std::mt19937_64 rng(2026);
+  Totals tot;
+  for (int it = 0; it < pendepth_test::scaled(24); ++it) {
+    // Integer coordinates only while the rounded star stays simple (small n).
+    const Polygon P = polygon2_test::random_polygon(rng, 40 + 30 * it, it % 5, it % 3 == 0 && it < 6);
+    const ConvexPolygon Q = polygon2_test::random_convex(rng, 3 + it % 11, 2 + it, it % 4 == 0);
+    compare("random " + std::to_string(it), P, Q, tot);
+  }
+  std::printf("random: %zu cases, %zu pieces, %zu candidates decided by the first pass\n", tot.cases, tot.pieces,
+              tot.candidates_early);
+  EXPECT_GT(tot.candidates_early, 0u);
+}
+
+TEST(UnionNearestFirst, DegenerateInputsMatchPreviousMethod) {
+  std::mt19937_64 rng(7);
+  Totals tot;
+  // Combs: Q fits the pockets exactly (slits), and a Q spanning many teeth (> 64 in reach).
+  const Polygon comb = Polygon::simple(polygon2_test::comb_ring(120, 2, 3, 10, 2));
+  compare("comb/exact fit", comb, ConvexPolygon{{0, 0}, {3, 0}, {3, 3}, {0, 3}}, tot);
+  compare("comb/wide square", comb, ConvexPolygon{{0, 0}, {40, 0}, {40, 40}, {0, 40}}, tot);
+  compare("comb/wide triangle", comb, ConvexPolygon{{0, 0}, {60, 0}, {30, 9}}, tot);
+  // Hole grids: Q exactly the size of a hole (isolated points) and Q spanning several holes.
+  const Polygon grid(polygon2_test::holes_grid(12, 4, 2, {0, 0}));
+  compare("hole grid/exact fit", grid, ConvexPolygon{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, tot);
+  compare("hole grid/wide", grid, ConvexPolygon{{0, 0}, {20, 0}, {20, 13}, {0, 13}}, tot);
+  const Polygon far(polygon2_test::holes_grid(10, 4, 2, {1e6, 1e6}));
+  compare("hole grid/offset 1e6", far, ConvexPolygon{{0, 0}, {16, 0}, {8, 20}}, tot);
+  // A frame of 4·60 collinear vertices with a collinear hole, Q from hole-sized to large.
+  std::vector<Vec2> outer, hole;
+  for (int i = 0; i < 60; ++i) outer.push_back({double(i), 0});
+  for (int i = 0; i < 60; ++i) outer.push_back({60, double(i)});
+  for (int i = 60; i > 0; --i) outer.push_back({double(i), 60});
+  for (int i = 60; i > 0; --i) outer.push_back({0, double(i)});
+  for (int i = 10; i < 50; ++i) hole.push_back({double(i), 10});
+  for (int i = 10; i < 50; ++i) hole.push_back({50, double(i)});
+  for (int i = 50; i > 10; --i) hole.push_back({double(i), 50});
+  for (int i = 50; i > 10; --i) hole.push_back({10, double(i)});
+  const Polygon framed({outer, hole});
+  for (double s : {40.0, 25.0, 7.0})
+    compare("collinear frame/square " + std::to_string(s), framed, ConvexPolygon{{0, 0}, {s, 0}, {s, s}, {0, s}}, tot);
+  // Spirals: Q much smaller than the arms' gap, and larger than the arms.
+  const Polygon spiral = Polygon::simple(polygon2_test::spiral_ring(3, 2, 2.5, 4, 600));
+  compare("spiral/small", spiral, polygon2_test::random_convex(rng, 7, 1.0, false), tot);
+  compare("spiral/wide", spiral, polygon2_test::random_convex(rng, 9, 12.0, false), tot);
+  std::printf("degenerate: %zu cases, %zu pieces, %zu candidates decided by the first pass\n", tot.cases, tot.pieces,
+              tot.candidates_early);
+  EXPECT_GT(tot.candidates_early, 100u);
+}
+
+}  // namespace
