@@ -79,6 +79,10 @@ TEST_F(CliFlat2, PointAndSegmentSpecsAnswerAsTheLibrary) {
     EXPECT_EQ(d.out, rows);
     EXPECT_EQ(rows, "depth,tx,ty\n0.5,0,-0.5\n0,0,0\n0,0,0\n");
   }
+  // The picture shows a point as a dot.
+  const std::string svg = (dir_ / "p.svg").string();
+  ASSERT_EQ(run("depth " + l + " point:0.25,0.5 --offset 0.25,1 --svg " + svg).status, 0);
+  EXPECT_NE(cli_test::slurp(svg).find("<circle"), std::string::npos);
   const Result s = run("depth " + l + " segment:0,0,1,1");
   EXPECT_EQ(s.status, 2);
   EXPECT_NE(s.err.find("not supported yet"), std::string::npos) << s.err;
