@@ -67,3 +67,9 @@ def test_pickling_and_errors():
         pendepth.Pair2(pendepth.Shape2.point([0, 0]), pendepth.Shape2.segment([0, 0], [1, 0]))
     with pytest.raises(pendepth.InvalidInput, match="not supported yet"):
         pendepth.Pair2(pendepth.Shape2(L_SHAPE), pendepth.Shape2.segment([0, 0], [1, 0]))
+
+
+def test_pictures_of_points_and_segments():
+    for s in (pendepth.Shape2.point([1, 2]), pendepth.Shape2.segment([0, 0], [1, 1])):
+        svg = s._repr_svg_()
+        assert svg.startswith("<svg") and "e-30" not in svg and 'stroke-linecap="round"' in svg
