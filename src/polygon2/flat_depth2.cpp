@@ -77,9 +77,10 @@ FlatDepth2::FlatDepth2(const std::vector<std::vector<Vec2>>& rings, bool convex,
     }
     return;
   }
-  if (!convex)
-    throw InvalidInput("pair: a segment against a non-convex polygon or a polygon with holes is not supported yet "
-                       "(a point is; so is a segment against a convex polygon)");
+  if (!convex) {
+    general_ = flat_general::build(rings, F);
+    return;
+  }
   // M = hull{p − a, p − b}: Andrew's monotone chain on the exact differences.
   std::vector<V> pts;
   int g = 0;
@@ -153,7 +154,10 @@ FlatDepth2::Where FlatDepth2::locate(const Vec2& t) const {
   return odd ? Where::Inside : Where::Outside;
 }
 
-bool FlatDepth2::overlapping(const Vec2& t) const { return locate(t) == Where::Inside; }
+bool FlatDepth2::overlapping(const Vec2& t) const {
+  if (general_) return flat_general::overlapping(*general_, t);
+  return locate(t) == Where::Inside;
+}
 
 // The nearest point of ∂M to t: a vertex, or the foot on an edge strictly between its ends.
 FlatDepth2::Near FlatDepth2::nearest(const Vec2& t) const {
@@ -243,6 +247,7 @@ Vec2 edge_normal(const V& u, const V& w) {
 }  // namespace
 
 Depth2 FlatDepth2::minimum(const Vec2& t) const {
+  if (general_) return flat_general::minimum(*general_, t);
   Depth2 r;
   r.kind = DepthKind::Minimum;
   if (locate(t) != Where::Inside) return r;
@@ -273,6 +278,7 @@ Depth2 FlatDepth2::minimum(const Vec2& t) const {
 }
 
 Distance2 FlatDepth2::signed_distance(const Vec2& t) const {
+  if (general_) return flat_general::signed_distance(*general_, t);
   const Where where = locate(t);
   Distance2 r;
   if (where == Where::Inside) {
@@ -433,6 +439,7 @@ Depth2 FlatDepth2::hit_result(const Hit& h, const Vec2& t, const Vec2& d) const 
 }
 
 Depth2 FlatDepth2::along(const Vec2& t, const Vec2& d0) const {
+  if (general_) return flat_general::along(*general_, t, scaled(d0));
   Depth2 r;
   r.kind = DepthKind::Directional;
   if (locate(t) != Where::Inside) return r;
@@ -446,6 +453,7 @@ Depth2 FlatDepth2::along(const Vec2& t, const Vec2& d0) const {
 }
 
 Depth2 FlatDepth2::separation(const Vec2& t, const Vec2& d0) const {
+  if (general_) return flat_general::separation(*general_, t, scaled(d0));
   const bool inside = locate(t) == Where::Inside;
   const Vec2 d = scaled(d0);
   Depth2 r;
@@ -457,6 +465,7 @@ Depth2 FlatDepth2::separation(const Vec2& t, const Vec2& d0) const {
 }
 
 Cast2 FlatDepth2::cast(const Vec2& t, const Vec2& d0) const {
+  if (general_) return flat_general::cast(*general_, t, scaled(d0));
   Cast2 r;
   const Where where = locate(t);
   if (where == Where::Inside) {
@@ -493,6 +502,9 @@ Cast2 FlatDepth2::cast(const Vec2& t, const Vec2& d0) const {
 }
 
 NoFitPolygonParts FlatDepth2::parts() const {
+  if (general_)
+    throw InvalidInput("pair: the no-fit polygon of a segment and a non-convex polygon is not built (queries are answered "
+                       "without it)");
   NoFitPolygonParts out;
   std::vector<std::vector<Vec2>> poly;
   for (std::size_t k = 0; k + 1 < ring_.size(); ++k) {

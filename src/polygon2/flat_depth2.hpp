@@ -18,6 +18,7 @@
 #include <pendepth/depth2.hpp>
 #include <pendepth/pendepth.hpp>
 
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -26,8 +27,8 @@ namespace pendepth::polygon2 {
 class FlatDepth2 {
  public:
   /// P's rings in normal form (outer counter-clockwise, holes clockwise; feature numbering: the
-  /// position in the concatenated rings), F one point or two distinct points. Throws
-  /// InvalidInput when F is a segment and P is not convex (`convex` false).
+  /// position in the concatenated rings), F one point or two distinct points. A segment against a
+  /// non-convex P takes the general path (flat_segment2.cpp, below).
   FlatDepth2(const std::vector<std::vector<Vec2>>& rings, bool convex, std::span<const Vec2> F);
 
   // Queries on validated input (t finite, d finite and non-zero), results as Pair2's.
@@ -46,7 +47,16 @@ class FlatDepth2 {
     int pi = 0, qi = 0;
   };
 
+  /// The general path, a segment F = [a, b] against a non-convex P (flat_segment2.cpp): O =
+  /// int P ⊕ (−F) is not int M at slits, so M is not built. ∂O and ∂M lie on 3n candidate
+  /// segments (P's edges − a, − b; p − [a, b] for each vertex p). σ, σ_d and the separation are the
+  /// nearest / first / last point outside O among the candidates' vertices, feet, pairwise
+  /// crossings and ray crossings, each tested exactly (does the placed segment meet int P: O(n));
+  /// the distance and the cast are the nearest / first point of the candidates (M closed).
+  struct General;
+
  private:
+  std::shared_ptr<const General> general_;
   std::vector<V> v_;
   std::vector<std::size_t> ring_;  // ring k is v_[ring_[k], ring_[k + 1])
   int nf_ = 1;                     // vertices of F
@@ -71,5 +81,16 @@ class FlatDepth2 {
   Feature feature_q(bool edge, std::size_t k) const;
   Vec2 contact(bool edge, std::size_t k, const Vec2& x) const;
 };
+
+// The general path's queries (flat_segment2.cpp), same contracts as FlatDepth2's.
+namespace flat_general {
+std::shared_ptr<const FlatDepth2::General> build(const std::vector<std::vector<Vec2>>& rings, std::span<const Vec2> F);
+bool overlapping(const FlatDepth2::General& G, const Vec2& t);
+Depth2 minimum(const FlatDepth2::General& G, const Vec2& t);
+Depth2 along(const FlatDepth2::General& G, const Vec2& t, const Vec2& d);
+Depth2 separation(const FlatDepth2::General& G, const Vec2& t, const Vec2& d);
+Distance2 signed_distance(const FlatDepth2::General& G, const Vec2& t);
+Cast2 cast(const FlatDepth2::General& G, const Vec2& t, const Vec2& d);
+}  // namespace flat_general
 
 }  // namespace pendepth::polygon2

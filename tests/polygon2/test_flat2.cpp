@@ -23,6 +23,8 @@
 #include <optional>
 #include <random>
 
+#include "oracle.hpp"
+#include "polygon2/triangulation.hpp"
 #include "shapes.hpp"
 
 namespace {
@@ -294,13 +296,59 @@ TEST(Flat2, SegmentAgainstConvexMatchesExactOracle) {
   }
 }
 
+// A segment against non-convex polygons with holes: the CGAL union oracle of the convolved
+// triangles T_i ⊕ (−F) (oracle.hpp). For a segment parallel to no diagonal of the triangulation
+// (random segments) their open union is O exactly, and its regularised boundary is ∂O.
+TEST(Flat2, SegmentAgainstPolygonsMatchesUnionOracle) {
+  std::mt19937_64 rng(2026);
+  int inside = 0, apart = 0, hits = 0;
+  std::uniform_real_distribution<double> u(-110, 110);
+  for (int iter = 0; iter < 16; ++iter) {
+    const pendepth::Polygon poly = polygon2_test::random_polygon(rng, 6 + iter, iter % 3, false);
+    std::vector<std::array<Vec2, 3>> tris;
+    for (const auto& t : pendepth::polygon2::triangulate(poly))
+      tris.push_back({poly.vertices()[t[0]], poly.vertices()[t[1]], poly.vertices()[t[2]]});
+    const Vec2 a(u(rng) / 6, u(rng) / 6), b(u(rng) / 6, u(rng) / 6);
+    const polygon2_test::UnionOracle o(tris, {a, b});
+    const Pair2 pair(Shape2(poly), Shape2::segment(a, b));
+    for (int k = 0; k < 40; ++k) {
+      const Vec2 t(u(rng), u(rng)), d = nonzero(random_dir(rng));
+      SCOPED_TRACE("iter " + std::to_string(iter) + " k " + std::to_string(k));
+      const bool in = o.inside(t);
+      ASSERT_EQ(pair.overlapping(t), in);
+      const Depth2 s = pair.minimum(t);
+      const Distance2 sd = pair.signed_distance(t);
+      if (in) {
+        expect_close(s.depth, o.boundary_distance(t), "sigma");
+        expect_close(pair.along(t, d).depth, o.along(t, d), "sigma_d");
+        EXPECT_EQ(sd.distance, -s.depth);
+      } else if (!o.inside_union(t)) {
+        expect_close(sd.distance, o.boundary_distance(t), "distance");
+        ++apart;
+        // The cast: at its distance the shapes touch (distance 0 up to rounding), before they do not.
+        const Cast2 c = pair.cast(t, d);
+        if (c.hit && c.distance > 1e-6) {
+          EXPECT_NEAR(pair.signed_distance(t + c.translation).distance, 0, 1e-9 * c.distance);
+          EXPECT_GT(pair.signed_distance(t + c.translation * (1 - 1e-6)).distance, 0);
+          ++hits;
+        }
+      }
+      inside += in;
+      expect_close(pair.separation(t, d).depth, o.separation(t, d), "separation");
+    }
+  }
+  EXPECT_GT(inside, 100);
+  EXPECT_GT(apart, 100);
+  EXPECT_GT(hits, 20);
+}
+
 TEST(Flat2, SwappedRolesMirrorTheAnswers) {
   std::mt19937_64 rng(99);
   std::uniform_real_distribution<double> u(-50, 50);
   const Shape2 P(polygon2_test::random_polygon(rng, 12, 2, false));
   const Shape2 C(polygon2_test::random_convex(rng, 9, 30, false));
   const Shape2 pt = Shape2::point(Vec2(1.5, -2.25)), sg = Shape2::segment(Vec2(-3, 1), Vec2(4, 2.5));
-  const std::vector<std::pair<Shape2, Shape2>> cases{{P, pt}, {C, pt}, {C, sg}};
+  const std::vector<std::pair<Shape2, Shape2>> cases{{P, pt}, {C, pt}, {C, sg}, {P, sg}};
   for (const auto& [solid, flat] : cases) {
     const Pair2 a(solid, flat), b(flat, solid);
     for (int k = 0; k < 40; ++k) {
@@ -367,8 +415,26 @@ TEST(Flat2, DegenerateContactsAndFits) {
   const Distance2 e = ss.signed_distance(Vec2(-2, 6));  // end (2, 6) above the top edge: distance 2
   EXPECT_EQ(e.distance, 2);
   EXPECT_EQ(e.normal, Vec2(0, 1));
-  // The segment against a non-convex shape is not supported yet; two flat shapes are invalid.
-  EXPECT_THROW(Pair2(comb, Shape2::segment(Vec2(0, 0), Vec2(1, 0))), InvalidInput);
+  // A unit segment fits a unit gap of the comb exactly: spanning it at the gap's floor level it
+  // touches both teeth (not overlapping); half a unit higher it touches both sides too (a slit of
+  // O's complement inside M), lifted out of the gap it is free.
+  const Pair2 cs(comb, Shape2::segment(Vec2(0, 0), Vec2(1, 0)));
+  EXPECT_FALSE(cs.overlapping(Vec2(2, 2)));   // spans the gap [2, 3] at y = 2
+  EXPECT_EQ(cs.minimum(Vec2(2, 2)).depth, 0);
+  EXPECT_EQ(cs.signed_distance(Vec2(2, 2)).distance, 0);
+  EXPECT_TRUE(cs.overlapping(Vec2(2.5, 2)));  // shifted right: into the tooth
+  EXPECT_EQ(cs.minimum(Vec2(2.5, 2)).depth, 0.5);
+  EXPECT_EQ(cs.minimum(Vec2(1.75, 2)).depth, 0.25);
+  EXPECT_EQ(cs.along(Vec2(2.5, 2), Vec2(0, 1)).depth, 2);  // up and out of the comb
+  // From inside the base straight up: out at the gap's floor (y = 1), and then it slides up the
+  // gap touching both sides, never overlapping again: complete separation 0.5, not 3.5.
+  EXPECT_EQ(cs.separation(Vec2(2, 0.5), Vec2(0, 1)).depth, 0.5);
+  EXPECT_EQ(cs.separation(Vec2(2.25, 0.5), Vec2(0, 1)).depth, 3.5);  // off the gap: out at the top
+  // Falling onto the gap: its ends touch the teeth's top corners first (y = 4).
+  EXPECT_EQ(cs.cast(Vec2(2, 9), Vec2(0, -1)).distance, 5);
+  const Vec2 w = cs.cast(Vec2(2, 9), Vec2(0, -1)).witness_p;  // either corner
+  EXPECT_TRUE(w == Vec2(2, 4) || w == Vec2(3, 4));
+  // Two flat shapes are invalid.
   EXPECT_THROW(Pair2(p, Shape2::segment(Vec2(0, 0), Vec2(1, 0))), InvalidInput);
   EXPECT_THROW(Pair2(p, p), InvalidInput);
   EXPECT_THROW(Shape2::segment(Vec2(1, 1), Vec2(1, 1)), InvalidInput);
