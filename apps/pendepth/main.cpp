@@ -292,13 +292,15 @@ void write_svg(const std::string& path, const Pair2& pair, const Vec2& t, const 
     io::write_svg(path, P.convex(), Q.convex(), t, r, io::SvgOptions{d, true});
     return;
   }
-  const pendepth::NoFitPolygonParts& nfp = pair.no_fit_polygon();
   io::SvgScene scene;
   scene.P = P.rings();
   scene.Q = Q.rings();
-  for (const auto& poly : nfp.polygons) scene.config.insert(scene.config.end(), poly.begin(), poly.end());
-  scene.config_segments = nfp.slits;
-  scene.config_points = nfp.points;
+  if (pair.engine() != pendepth::Engine2::Flat || P.is_convex() || Q.is_convex() || P.dimension() + Q.dimension() == 2) {
+    const pendepth::NoFitPolygonParts& nfp = pair.no_fit_polygon();  // a segment and a non-convex shape: none
+    for (const auto& poly : nfp.polygons) scene.config.insert(scene.config.end(), poly.begin(), poly.end());
+    scene.config_segments = nfp.slits;
+    scene.config_points = nfp.points;
+  }
   scene.config_label = "no-fit polygon: cl O, slits, exact fits";
   scene.config_target = "t + v on ∂O";
   io::write_svg(path, scene, t, r, io::SvgOptions{d, true});

@@ -65,8 +65,10 @@ def test_pickling_and_errors():
         pendepth.Shape2.point([math.nan, 0])
     with pytest.raises(pendepth.InvalidInput, match="both lower-dimensional"):
         pendepth.Pair2(pendepth.Shape2.point([0, 0]), pendepth.Shape2.segment([0, 0], [1, 0]))
-    with pytest.raises(pendepth.InvalidInput, match="not supported yet"):
-        pendepth.Pair2(pendepth.Shape2(L_SHAPE), pendepth.Shape2.segment([0, 0], [1, 0]))
+    # A unit segment in the L's corner: spanning [0.5, 1.5] × {2} it overlaps the upright by 0.5.
+    pair = pendepth.Pair2(pendepth.Shape2(L_SHAPE), pendepth.Shape2.segment([0, 0], [1, 0]))
+    assert pair.minimum([0.5, 2.0]).depth == 0.5
+    assert not pair.overlapping([1.0, 2.0])  # touches the upright's right side
 
 
 def test_pictures_of_points_and_segments():

@@ -83,9 +83,12 @@ TEST_F(CliFlat2, PointAndSegmentSpecsAnswerAsTheLibrary) {
   const std::string svg = (dir_ / "p.svg").string();
   ASSERT_EQ(run("depth " + l + " point:0.25,0.5 --offset 0.25,1 --svg " + svg).status, 0);
   EXPECT_NE(cli_test::slurp(svg).find("<circle"), std::string::npos);
-  const Result s = run("depth " + l + " segment:0,0,1,1");
-  EXPECT_EQ(s.status, 2);
-  EXPECT_NE(s.err.find("not supported yet"), std::string::npos) << s.err;
+  // A segment against the non-convex L (the general path), with a picture (no no-fit polygon panel).
+  const Result s = run("depth " + l + " segment:0,0,1,1 --offset 0.25,0.25 --json --svg " + (dir_ / "s.svg").string());
+  ASSERT_EQ(s.status, 0) << s.err;
+  EXPECT_EQ(json::parse(s.out).at("depth").get<double>(),
+            Pair2(L, Shape2::segment(Vec2(0, 0), Vec2(1, 1))).minimum(Vec2(0.25, 0.25)).depth);
+  EXPECT_EQ(run("nfp " + l + " segment:0,0,1,1").status, 2);  // not built for this pair
   expect_error("depth point:0,0 segment:0,0,1,1",
                "pair: P (P) and Q (Q) are both lower-dimensional (a point or a segment); one of them must be a solid polygon");
   const Result m = run("depth point:0,0 cube.obj");
