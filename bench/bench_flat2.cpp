@@ -1,6 +1,6 @@
 // Points and segments against solid 2D shapes through Pair2 (issue 16 item 4; src/polygon2/
 // flat_depth2.cpp): µs per query of σ, σ_d and the signed distance for a point Q against convex
-// polygons and star-shaped non-convex polygons, and a segment Q against convex polygons, at
+// polygons and star-shaped non-convex polygons, and a segment Q against both, at
 // n = 16 … 1024; in the same run, the same queries with Q a small triangle (the solid engines:
 // convex × convex, polygon × convex) as the reference. Pairs prepared once outside the loop;
 // 4096 pre-generated placements over M's box (a mix of overlapping and apart), cycled.
@@ -87,6 +87,9 @@ FLAT_BENCH(triangle_convex_sigma_d, true, Triangle, Along)
 FLAT_BENCH(segment_convex_sigma, true, Segment, Minimum)
 FLAT_BENCH(segment_convex_distance, true, Segment, Distance)
 FLAT_BENCH(segment_convex_sigma_d, true, Segment, Along)
+FLAT_BENCH(segment_star_sigma, false, Segment, Minimum)
+FLAT_BENCH(segment_star_distance, false, Segment, Distance)
+FLAT_BENCH(segment_star_sigma_d, false, Segment, Along)
 FLAT_BENCH(point_star_sigma, false, Point, Minimum)
 FLAT_BENCH(triangle_star_sigma, false, Triangle, Minimum)
 FLAT_BENCH(point_star_distance, false, Point, Distance)

@@ -417,6 +417,7 @@ Depth2 minimum(const G& g, const Vec2& t) {
   // Crossings of two candidates that may lie nearer: both candidates within best_hi (a rigorous
   // box test on the rounded ends, padded).
   std::vector<std::size_t> near;
+  std::vector<std::array<double, 4>> box;  // padded boxes of the near candidates: x0, x1, y0, y1
   for (std::size_t k = 0; k < g.cands.size(); ++k) {
     const auto& c = g.cands[k];
     const Vec2 a = g.p[c.g0] - g.f[c.j0], b = g.p[c.g1] - g.f[c.j1];
@@ -424,7 +425,11 @@ Depth2 minimum(const G& g, const Vec2& t) {
                                   g.f[0].cwiseAbs().maxCoeff() + g.f[1].cwiseAbs().maxCoeff() + t.cwiseAbs().maxCoeff());
     const double dx = std::max({0.0, std::min(a.x(), b.x()) - pad - t.x(), t.x() - std::max(a.x(), b.x()) - pad});
     const double dy = std::max({0.0, std::min(a.y(), b.y()) - pad - t.y(), t.y() - std::max(a.y(), b.y()) - pad});
-    if ((dx * dx + dy * dy) * (1 - 0x1p-50) <= best_hi) near.push_back(k);
+    if ((dx * dx + dy * dy) * (1 - 0x1p-50) <= best_hi) {
+      near.push_back(k);
+      box.push_back({std::min(a.x(), b.x()) - pad, std::max(a.x(), b.x()) + pad, std::min(a.y(), b.y()) - pad,
+                     std::max(a.y(), b.y()) + pad});
+    }
   }
   std::vector<Pt> cross;
   auto orient = [&](std::size_t k, std::size_t l, int which) {
@@ -436,6 +441,7 @@ Depth2 minimum(const G& g, const Vec2& t) {
   for (std::size_t i = 0; i < near.size(); ++i)
     for (std::size_t j = i + 1; j < near.size(); ++j) {
       const std::size_t k = near[i], l = near[j];
+      if (box[i][1] < box[j][0] || box[j][1] < box[i][0] || box[i][3] < box[j][2] || box[j][3] < box[i][2]) continue;
       const int o1 = orient(k, l, 0), o2 = orient(k, l, 1);
       if (o1 * o2 > 0 || (o1 == 0 && o2 == 0)) continue;
       const int o3 = orient(l, k, 0), o4 = orient(l, k, 1);
