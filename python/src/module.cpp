@@ -678,8 +678,7 @@ overlapping (N,) bool, feature_p / feature_q (N, 2) int64 [kind, index] (kind 0 
       .def_static("segment", [](const py::object& a, const py::object& b, const std::string& name) {
                     return Shape2::segment(vec2_of(a, name), vec2_of(b, name), name);
                   }, py::arg("a"), py::arg("b"), py::arg("name") = "segment",
-                  "segment(a, b, name=\"segment\") -> Shape2: a segment (dimension 1). Pairs with any solid Shape2 (a\n"
-                  "non-convex one: not supported yet, InvalidInput).")
+                  "segment(a, b, name=\"segment\") -> Shape2: a segment (dimension 1). Pairs with any solid Shape2.")
       .def_property_readonly("dimension", &Shape2::dimension, "2 for a polygon, 0 for a point, 1 for a segment.")
       .def_property_readonly("is_convex", &Shape2::is_convex)
       .def_property_readonly("hole_count", &Shape2::hole_count)

@@ -12,7 +12,7 @@ namespace pendepth::front {
 
 struct FlatPair2 {
   /// P, Q in engine coordinates, at least one of them lower-dimensional. Throws InvalidInput when
-  /// both are, or for a segment against a non-convex shape.
+  /// both are.
   FlatPair2(const Shape2& P, const Shape2& Q);
 
   bool overlapping(const Vec2& t) const;

@@ -5,14 +5,16 @@
 // M = P ⊕ (−F) is built once as explicit rings whose vertices are exact differences p − q
 // (p a vertex of P, q an end of F), never rounded:
 //   F a point:        M = P − q, P's rings shifted (any P);
-//   F a segment [a,b]: M = hull{p − a, p − b} (P convex only: then M is a convex polygon).
+//   F a segment [a,b], P convex: M = hull{p − a, p − b}, a convex polygon;
+//   F a segment, P not convex: the general path (struct General below, flat_segment2.cpp).
 // The overlap set is O = int P ⊕ (−F) = int M (a point: always; a segment: P convex), so every
-// query is a question about one explicit polygon with holes: t ∈ int M, dist(t, ∂M), the first
+// such query is a question about one explicit polygon with holes: t ∈ int M, dist(t, ∂M), the first
 // and last exits of a ray from int M, its first entry into M. Each is one pass over M's edges
 // with exact predicates (src/geometry/exact.hpp: polynomials in the input doubles), candidates
 // kept by floating filters with rigorous error bounds and compared exactly; the answers' lengths
 // are one exactly-rounded ratio or square root from the exact value (a few ulps).
-// Cost: build O(n) (a point) or O(n log n) (a segment: the exact hull); every query O(n).
+// Cost: build O(n) (a point) or O(n log n) (a segment: the exact hull); every query O(n). The
+// general path: see General.
 #pragma once
 
 #include <pendepth/depth2.hpp>
