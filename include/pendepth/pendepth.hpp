@@ -234,7 +234,8 @@ class Pair2 {
   void signed_distance(std::span<const Vec2> ts, std::span<Distance2> out, unsigned threads = 0) const;
 
   /// The no-fit polygon of the pair (see NoFitPolygonParts), built on first use unless the
-  /// engine holds it (thread-safe).
+  /// engine holds it (thread-safe). A point or a segment against a convex shape: M itself; a
+  /// segment against a non-convex shape: not built (InvalidInput).
   using NoFitPolygon = NoFitPolygonParts;
   const NoFitPolygon& no_fit_polygon() const;
 

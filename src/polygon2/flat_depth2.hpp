@@ -41,6 +41,7 @@ class FlatDepth2 {
   Distance2 signed_distance(const Vec2& t) const;
   Cast2 cast(const Vec2& t, const Vec2& d) const;
   /// M's rings, vertices rounded to nearest (outer ring counter-clockwise first, holes clockwise).
+  /// The general path builds none: throws InvalidInput.
   NoFitPolygonParts parts() const;
 
   /// A vertex of M: p − q, with the vertex index of p in P and of q in F.
