@@ -434,6 +434,20 @@ TEST(Flat2, DegenerateContactsAndFits) {
   EXPECT_EQ(cs.cast(Vec2(2, 9), Vec2(0, -1)).distance, 5);
   const Vec2 w = cs.cast(Vec2(2, 9), Vec2(0, -1)).witness_p;  // either corner
   EXPECT_TRUE(w == Vec2(2, 4) || w == Vec2(3, 4));
+  // A square frame [0, 4]² with the hole [1, 3]²: a segment of length 2 spans the hole exactly.
+  const Shape2 frame(std::vector<Vec2>{{0, 0}, {4, 0}, {4, 4}, {0, 4}},
+                     std::vector<std::vector<Vec2>>{{{1, 1}, {1, 3}, {3, 3}, {3, 1}}});
+  const Pair2 fs(frame, Shape2::segment(Vec2(0, 0), Vec2(2, 0)));
+  EXPECT_FALSE(fs.overlapping(Vec2(1, 2)));  // from (1, 2) to (3, 2): touches both sides of the hole
+  EXPECT_EQ(fs.signed_distance(Vec2(1, 2)).distance, 0);
+  EXPECT_TRUE(fs.overlapping(Vec2(1.25, 2)));
+  EXPECT_EQ(fs.minimum(Vec2(1.25, 2)).depth, 0.25);    // back left by 0.25 (up: 1.0 out of the hole's top)
+  EXPECT_EQ(fs.along(Vec2(1.25, 2), Vec2(0, 1)).depth, 2);  // up: the right end leaves the frame's top wall at y = 4
+  EXPECT_EQ(fs.signed_distance(Vec2(1.5, 2.5)).distance, -0.5);  // overlaps the right wall by 0.5
+  const Pair2 fp(frame, Shape2::point(Vec2(0, 0)));
+  EXPECT_FALSE(fp.overlapping(Vec2(2, 2)));             // in the hole
+  EXPECT_EQ(fp.signed_distance(Vec2(2, 2)).distance, 1);
+  EXPECT_EQ(fp.minimum(Vec2(0.5, 2)).depth, 0.5);
   // Two flat shapes are invalid.
   EXPECT_THROW(Pair2(p, Shape2::segment(Vec2(0, 0), Vec2(1, 0))), InvalidInput);
   EXPECT_THROW(Pair2(p, p), InvalidInput);
