@@ -73,7 +73,7 @@ constexpr const char* kStdin = "<stdin>";  // the source name of `-` in messages
 // The dimension of a shape file by its extension: 2 (.wkt) or 3 (.obj, .off, .stl, .ply); 0 for `-`
 // and paths without an extension (known once the content is read).
 int shape_dimension(const std::string& path) {
-  if (io::parse_shape_spec(path)) return 3;  // a primitive spec (sphere:R, ...; 3D only for now)
+  if (const auto spec = io::parse_shape_spec(path)) return spec->dimension;  // sphere:R, point:X,Y, ...
   if (path == "-" || std::filesystem::path(path).extension().empty()) return 0;
   if (const auto f = io::shape_format_of(path)) return *f == io::ShapeFormat::Wkt ? 2 : 3;
   throw InvalidInput(path + ": unknown shape format '" + lower_extension(path) +
@@ -100,7 +100,7 @@ struct ShapeText {
   io::ShapeFormat format = io::ShapeFormat::Wkt;
   std::string text;
   std::optional<io::ShapeSpec> spec;  // a primitive spec instead of a file (text empty)
-  int dimension() const { return spec || format != io::ShapeFormat::Wkt ? 3 : 2; }
+  int dimension() const { return spec ? spec->dimension : format != io::ShapeFormat::Wkt ? 3 : 2; }
 };
 
 ShapeText load_shape(const std::string& arg) {
@@ -133,6 +133,7 @@ std::pair<ShapeText, ShapeText> load_pair(const std::string& p, const std::strin
 }
 
 Shape2 make_shape2(const ShapeText& s, std::string_view name) {
+  if (s.spec) return io::shape2_from_spec(*s.spec, name);  // point:X,Y, segment:X1,Y1,X2,Y2
   io::Shape2 r = io::shape2_from_wkt(io::parse_wkt_polygon(s.text, s.source), s.source, name);
   return r.convex ? Shape2(std::move(*r.convex)) : Shape2(std::move(*r.polygon));
 }
@@ -261,7 +262,14 @@ void flush_stdout() {
 
 // ---- output of 2D results: the io writers take the shapes' own classes ----
 
+// A point or a segment (Shape2::point, segment) has neither a ConvexPolygon nor a Polygon.
+io::Features2 features_of(const Shape2& s) {
+  if (s.dimension() < 2) return io::Features2{nullptr, nullptr, s.size()};
+  return s.is_convex() ? io::Features2{&s.convex(), nullptr} : io::Features2{nullptr, &s.polygon()};
+}
+
 void append_json(std::string& out, const Depth2& r, const Shape2& P, const Shape2& Q) {
+  if (P.dimension() < 2 || Q.dimension() < 2) return io::append_json(out, r, features_of(P), features_of(Q));
   if (P.is_convex() && Q.is_convex()) io::append_json(out, r, P.convex(), Q.convex());
   else if (Q.is_convex()) io::append_json(out, r, P.polygon(), Q.convex());
   else if (P.is_convex()) io::append_json(out, r, P.convex(), Q.polygon());
@@ -269,6 +277,7 @@ void append_json(std::string& out, const Depth2& r, const Shape2& P, const Shape
 }
 
 std::string summary(const Depth2& r, const Shape2& P, const Shape2& Q) {
+  if (P.dimension() < 2 || Q.dimension() < 2) return io::summary(r, features_of(P), features_of(Q));
   if (P.is_convex() && Q.is_convex()) return io::summary(r, P.convex(), Q.convex());
   if (Q.is_convex()) return io::summary(r, P.polygon(), Q.convex());
   if (P.is_convex()) return io::summary(r, P.convex(), Q.polygon());
@@ -283,13 +292,15 @@ void write_svg(const std::string& path, const Pair2& pair, const Vec2& t, const 
     io::write_svg(path, P.convex(), Q.convex(), t, r, io::SvgOptions{d, true});
     return;
   }
-  const pendepth::NoFitPolygonParts& nfp = pair.no_fit_polygon();
   io::SvgScene scene;
   scene.P = P.rings();
   scene.Q = Q.rings();
-  for (const auto& poly : nfp.polygons) scene.config.insert(scene.config.end(), poly.begin(), poly.end());
-  scene.config_segments = nfp.slits;
-  scene.config_points = nfp.points;
+  if (pair.engine() != pendepth::Engine2::Flat || P.is_convex() || Q.is_convex() || P.dimension() + Q.dimension() == 2) {
+    const pendepth::NoFitPolygonParts& nfp = pair.no_fit_polygon();  // a segment and a non-convex shape: none
+    for (const auto& poly : nfp.polygons) scene.config.insert(scene.config.end(), poly.begin(), poly.end());
+    scene.config_segments = nfp.slits;
+    scene.config_points = nfp.points;
+  }
   scene.config_label = "no-fit polygon: cl O, slits, exact fits";
   scene.config_target = "t + v on ∂O";
   io::write_svg(path, scene, t, r, io::SvgOptions{d, true});
@@ -587,10 +598,6 @@ int write_batch(const BatchArgs& a, const std::vector<Result>& results, const ch
 }
 
 // ---- signed distance and shape cast (issue 16 item 7) ----
-
-io::Features2 features_of(const Shape2& s) {
-  return s.is_convex() ? io::Features2{&s.convex(), nullptr} : io::Features2{nullptr, &s.polygon()};
-}
 
 struct DistanceArgs {
   std::string p, q, offset, direction, rotate_p, rotate_q;

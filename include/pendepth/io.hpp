@@ -339,11 +339,17 @@ std::string summary(const Depth3& r, const ConvexPolytope& P, const ConvexPolyto
 /// "lower_bound", "upper_bound"; a missed cast's distance is 1e999), a CSV row
 /// "distance,tx,ty[,tz]\n", or a summary. Features are formatted as for Depth2/Depth3 against the
 /// shape whose numbering they use: Features2 holds a convex shape's ConvexPolygon or another
-/// shape's Polygon (exactly one of the two).
+/// shape's Polygon (exactly one of the two), or for a point or segment (Shape2::point, segment)
+/// neither and `flat` = its vertex count: {"kind":"vertex","index":j}, {"kind":"edge","index":0,"end":1}.
 struct Features2 {
   const ConvexPolygon* convex = nullptr;
   const Polygon* polygon = nullptr;
+  std::size_t flat = 0;
 };
+/// A 2D depth result (as the overloads above) with either shape given as Features2 (points and
+/// segments included).
+void append_json(std::string& out, const Depth2& r, Features2 P, Features2 Q);
+std::string summary(const Depth2& r, Features2 P, Features2 Q);
 void append_json(std::string& out, const Distance2& r, Features2 P, Features2 Q);
 void append_json(std::string& out, const Cast2& r, Features2 P, Features2 Q);
 void append_csv_row(std::string& out, const Distance2& r);

@@ -81,6 +81,7 @@ enum class Engine2 {
   PolygonConvexSwapped,  ///< P convex, Q a polygon (PolygonDepth2 on the swapped pair)
   PairPerQuery,   ///< both non-convex or with holes, per query (PairDepth2)
   NoFitPolygon,   ///< both non-convex or with holes, on the built no-fit polygon (NoFitPolygon2)
+  Flat,           ///< a point or segment against a solid shape, either way round (FlatDepth2)
 };
 const char* to_string(Engine2 e);
 
@@ -105,6 +106,21 @@ class Shape2 {
   /// A .wkt file. Throws InvalidInput "PATH:LINE: problem" (named `name` in the message).
   static Shape2 from_file(const std::filesystem::path& path, std::string_view name = "shape");
 
+  /// Lower-dimensional shapes (docs/design.md "Lower-dimensional shapes"; src/front/shape2.cpp):
+  /// a point, a segment. Pair2 takes one of them against any solid Shape2, in either role
+  /// (overlap ⇔ the placement is interior to M = P ⊕ (−Q); src/polygon2/flat_depth2.hpp); two
+  /// lower-dimensional shapes are InvalidInput. Result features of such a shape index its
+  /// vertices (vertex 0, 1) and its one edge 0. Neither is convex(): is_convex() is false and
+  /// polygon() throws InvalidInput; rings() is the one "ring" of its vertices. Throws
+  /// InvalidInput naming `name` for a non-finite point or a segment whose ends coincide.
+  static Shape2 point(const Vec2& p, std::string_view name = "point");
+  static Shape2 segment(const Vec2& a, const Vec2& b, std::string_view name = "segment");
+  /// 2 for a solid; 0 for a point, 1 for a segment.
+  int dimension() const;
+  /// The vertices of a point or segment (empty for a solid).
+  std::span<const Vec2> flat_vertices() const;
+
+  /// A solid convex polygon (kept in the convex normal form).
   bool is_convex() const;
   std::size_t hole_count() const;
   /// The convex normal form. Precondition: is_convex() (else throws std::logic_error).
@@ -221,7 +237,8 @@ class Pair2 {
   void signed_distance(std::span<const Vec2> ts, std::span<Distance2> out, unsigned threads = 0) const;
 
   /// The no-fit polygon of the pair (see NoFitPolygonParts), built on first use unless the
-  /// engine holds it (thread-safe).
+  /// engine holds it (thread-safe). A point or a segment against a convex shape: M itself; a
+  /// segment against a non-convex shape: not built (InvalidInput).
   using NoFitPolygon = NoFitPolygonParts;
   const NoFitPolygon& no_fit_polygon() const;
 

@@ -4,8 +4,8 @@
 //   sphere:R  capsule:R,H  box:X,Y,Z  rounded:R:FILE  point:X,Y,Z  segment:X1,Y1,Z1,X2,Y2,Z2
 //   (3D; capsule: the segment (0,0,−H)–(0,0,H) ⊕ ball R; box: half extents; rounded: FILE's shape
 //   ⊕ ball R); cylinder:R,H (axis z, half height H), cone:R,H (base radius R at z = −H, apex at
-//   z = H), ellipsoid:A,B,C (semi-axes). The 2D point:X,Y / segment:X1,Y1,X2,Y2 are recognised
-//   and rejected as not implemented yet.
+//   z = H), ellipsoid:A,B,C (semi-axes); 2D: point:X,Y and segment:X1,Y1,X2,Y2 (Shape2::point /
+//   segment).
 #pragma once
 
 #include <pendepth/pendepth.hpp>
@@ -23,6 +23,7 @@ struct ShapeSpec {
   std::vector<double> numbers;  ///< the numbers, in order
   std::string file;             ///< rounded: the core's file
   std::string text;             ///< the spec as given (for messages)
+  int dimension = 3;            ///< 2 for point:X,Y and segment:X1,Y1,X2,Y2
 };
 
 /// nullopt when `arg` is not a spec (no known `KIND:` prefix: a file path); else the parsed spec.
@@ -30,7 +31,11 @@ struct ShapeSpec {
 /// finite, an empty file) and for a known kind that is not implemented.
 std::optional<ShapeSpec> parse_shape_spec(std::string_view arg);
 
-/// The shape of a parsed spec (Shape3 primitives; `rounded` reads its file as Shape3::from_file,
+/// The 2D shape of a parsed spec of dimension 2 (Shape2::point, Shape2::segment). Throws
+/// InvalidInput naming the spec for a 3D spec or invalid values (a segment's ends coincide).
+pendepth::Shape2 shape2_from_spec(const ShapeSpec& spec, std::string_view name = "shape");
+
+/// The shape of a parsed spec of dimension 3 (Shape3 primitives; `rounded` reads its file as Shape3::from_file,
 /// `hull` as there). Throws InvalidInput naming the spec for invalid sizes.
 Shape3 shape3_from_spec(const ShapeSpec& spec, std::string_view name = "shape", bool hull = false);
 

@@ -25,13 +25,14 @@ def _svg(items, size=240):
     if not xs:
         xs, ys = [0.0, 1.0], [0.0, 1.0]
     x0, x1, y0, y1 = min(xs), max(xs), min(ys), max(ys)
-    span = max(x1 - x0, y1 - y0, 1e-300)
+    span = max(x1 - x0, y1 - y0) or 1.0  # a lone point: a unit view around it
     pad = 0.05 * span
     w, h = x1 - x0 + 2 * pad, y1 - y0 + 2 * pad
     stroke = span / 200
+    # A point or a segment (one "ring" of 1 or 2 vertices) is drawn as a thick round stroke.
     body = "".join(
         f'<path d="{_path(rings, dx, dy)}" fill="{fill}" fill-rule="evenodd" fill-opacity="{op}" '
-        f'stroke="{line}" stroke-width="{stroke:.6g}"/>'
+        f'stroke="{line}" stroke-width="{(stroke if len(rings[0]) > 2 else 6 * stroke):.6g}" stroke-linecap="round"/>'
         for rings, dx, dy, fill, line, op in items)
     return (f'<svg xmlns="http://www.w3.org/2000/svg" width="{size}" height="{size * h / w:.0f}" '
             f'viewBox="{x0 - pad:.9g} {-(y1 + pad):.9g} {w:.9g} {h:.9g}">{body}</svg>')

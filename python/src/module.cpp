@@ -63,6 +63,12 @@ Points<D> points(const py::object& obj, const char* what) {
 }
 
 /// One (3,) point (Shape3.point, Shape3.segment).
+Vec2 vec2_of(const py::object& obj, const std::string& what) {
+  const Points<2> p = points<2>(obj, what.c_str());
+  if (!p.single) throw InvalidInput(what + ": expected one (2,) point");
+  return p.v[0];
+}
+
 Vec3 vec3_of(const py::object& obj, const std::string& what) {
   const Points<3> p = points<3>(obj, what.c_str());
   if (!p.single) throw InvalidInput(what + ": expected one (3,) point");
@@ -681,6 +687,14 @@ feature_q index; -1 for convex pairs), kind. A query given as one (3,) point has
       .def_static("from_file", [](const std::string& path, const std::string& name) { return Shape2::from_file(path, name); },
                   py::arg("path"), py::arg("name") = "shape",
                   "from_file(path, name=\"shape\") -> Shape2\n\nA .wkt file. Raises InvalidInput \"PATH:LINE: problem\".")
+      // Points and segments (issue 16 item 4; docs/design.md "Lower-dimensional shapes").
+      .def_static("point", [](const py::object& p, const std::string& name) { return Shape2::point(vec2_of(p, name), name); },
+                  py::arg("p"), py::arg("name") = "point", "point(p, name=\"point\") -> Shape2: a point (dimension 0).")
+      .def_static("segment", [](const py::object& a, const py::object& b, const std::string& name) {
+                    return Shape2::segment(vec2_of(a, name), vec2_of(b, name), name);
+                  }, py::arg("a"), py::arg("b"), py::arg("name") = "segment",
+                  "segment(a, b, name=\"segment\") -> Shape2: a segment (dimension 1). Pairs with any solid Shape2.")
+      .def_property_readonly("dimension", &Shape2::dimension, "2 for a polygon, 0 for a point, 1 for a segment.")
       .def_property_readonly("is_convex", &Shape2::is_convex)
       .def_property_readonly("hole_count", &Shape2::hole_count)
       .def_property_readonly("name", &Shape2::name)
@@ -693,12 +707,21 @@ feature_q index; -1 for convex pairs), kind. A query given as one (3,) point has
            py::arg("vertex"), "input_vertex(vertex) -> (ring, index)\n\n(ring, index) as given on input of the vertex a result feature names.")
       .def("__len__", &Shape2::size)
       .def("__repr__", [](const Shape2& s) {
+        if (s.dimension() < 2) return "<pendepth.Shape2 '" + s.name() + "': " + (s.dimension() == 0 ? "point" : "segment") + ">";
         return "<pendepth.Shape2 '" + s.name() + "': " + std::to_string(s.size()) + " vertices, " +
                (s.is_convex() ? "convex" : std::to_string(s.hole_count()) + " holes") + ">";
       })
-      .def(py::pickle([](const Shape2& s) { return py::make_tuple(rings_of(s), s.name()); },
+      .def(py::pickle([](const Shape2& s) {
+                        if (s.dimension() < 2) return py::make_tuple(rings_of(s), s.name(), s.dimension());
+                        return py::make_tuple(rings_of(s), s.name());
+                      },
                       [](const py::tuple& st) {
                         py::list rings = st[0];
+                        if (st.size() > 2) {  // a point or a segment: its vertices
+                          const auto v = ring(rings[0], "state");
+                          const std::string name = st[1].cast<std::string>();
+                          return v.size() == 1 ? Shape2::point(v[0], name) : Shape2::segment(v.at(0), v.at(1), name);
+                        }
                         py::list holes;
                         for (std::size_t k = 1; k < rings.size(); ++k) holes.append(rings[k]);
                         return make_shape2(rings[0], holes, st[1].cast<std::string>());

@@ -12,6 +12,7 @@
 
 #include "front/batch.hpp"
 #include "front/checks.hpp"
+#include "front/pair2_flat.hpp"
 #include "convex2/convex_cast.hpp"
 #include "front/scale.hpp"
 #include "nonconvex2/boundary_distance.hpp"
@@ -29,6 +30,7 @@ const char* to_string(Engine2 e) {
     case Engine2::PolygonConvexSwapped: return "convex-polygon";
     case Engine2::PairPerQuery: return "pair-per-query";
     case Engine2::NoFitPolygon: return "no-fit-polygon";
+    case Engine2::Flat: return "flat";
   }
   return "?";
 }
@@ -62,6 +64,10 @@ front::Scale pair_scale(const Shape2& P, const Shape2& Q) {
 Shape2 engine_shape(const Shape2& s, const front::Scale& scale, const char* which) {
   if (scale.identity()) return s;
   auto rings = s.rings();
+  if (s.dimension() < 2) {  // a point or a segment
+    for (Vec2& p : rings[0]) p = scale.vec_to_engine(p, std::string(which) + " (" + s.name() + "):");
+    return rings[0].size() == 1 ? Shape2::point(rings[0][0], s.name()) : Shape2::segment(rings[0][0], rings[0][1], s.name());
+  }
   for (std::size_t k = 0; k < rings.size(); ++k)
     for (std::size_t i = 0; i < rings[k].size(); ++i)
       rings[k][i] = scale.vec_to_engine(rings[k][i], std::string(which) + " (" + s.name() + ") ring " +
@@ -84,6 +90,7 @@ NoFitPolygonParts scaled_back(NoFitPolygonParts parts, const front::Scale& scale
 }  // namespace
 
 NoFitPolygonParts no_fit_polygon(const Shape2& P, const Shape2& Q) {
+  if (P.dimension() < 2 || Q.dimension() < 2) return Pair2(P, Q, Prepare::Queries).no_fit_polygon();
   const front::Scale scale = pair_scale(P, Q);
   const Shape2 Pe = engine_shape(P, scale, "P"), Qe = engine_shape(Q, scale, "Q");
   return scaled_back(parts_of(NoFitPolygon2(Pe.polygon(), Qe.polygon())), scale);
@@ -115,6 +122,9 @@ struct Pair2::Impl {
   mutable std::optional<nonconvex2::BoundaryPair2> boundary;
   mutable std::once_flag boundary_once;
 
+  // A point or a segment against a solid (issue 16 item 4): the one engine of every query.
+  std::optional<front::FlatPair2> flat;
+
   // The exported no-fit polygon (no_fit_polygon()).
   mutable std::optional<NoFitPolygonParts> exported;
   mutable std::once_flag export_once;
@@ -131,7 +141,10 @@ struct Pair2::Impl {
   }
 
   void choose_engine() {
-    if (P.is_convex() && Q.is_convex()) {
+    if (P.dimension() < 2 || Q.dimension() < 2) {
+      engine = Engine2::Flat;
+      flat.emplace(P, Q);
+    } else if (P.is_convex() && Q.is_convex()) {
       engine = Engine2::Convex;
       use_field = prepare == Prepare::Full ||
                   (prepare == Prepare::Auto && P.size() + Q.size() > Pair2::kFieldAutoSize);
@@ -149,6 +162,7 @@ struct Pair2::Impl {
 
   void build() {
     switch (engine) {
+      case Engine2::Flat: break;
       case Engine2::Convex:
         if (prepare == Prepare::Full) depth_field();
         break;
@@ -194,6 +208,7 @@ struct Pair2::Impl {
 
   bool overlapping(const Vec2& t) const {
     switch (engine) {
+      case Engine2::Flat: return flat->overlapping(t);
       case Engine2::Convex: return directional_depth(P.convex(), Q.convex(), t, Vec2(1, 0)).overlapping;
       case Engine2::PolygonConvex: return polygon->overlapping(t);
       case Engine2::PolygonConvexSwapped: return polygon->overlapping(-t);
@@ -205,6 +220,7 @@ struct Pair2::Impl {
 
   Depth2 minimum(const Vec2& t) const {
     switch (engine) {
+      case Engine2::Flat: return flat->minimum(t);
       case Engine2::Convex:
         return use_field ? depth_field().minimum(t) : minimum_depth(P.convex(), Q.convex(), t);
       case Engine2::PolygonConvex: return polygon->minimum(t);
@@ -217,6 +233,7 @@ struct Pair2::Impl {
 
   Depth2 along(const Vec2& t, const Vec2& d) const {
     switch (engine) {
+      case Engine2::Flat: return flat->along(t, d);
       case Engine2::Convex: return directional_depth(P.convex(), Q.convex(), t, d);
       case Engine2::PolygonConvex: return polygon->along(t, d);
       case Engine2::PolygonConvexSwapped: return back(polygon->along(-t, -d), t);
@@ -228,6 +245,7 @@ struct Pair2::Impl {
 
   Depth2 separation(const Vec2& t, const Vec2& d) const {
     switch (engine) {
+      case Engine2::Flat: return flat->separation(t, d);
       case Engine2::Convex: return separation_depth(P.convex(), Q.convex(), t, d);
       case Engine2::PolygonConvex: return polygon->separation(t, d);
       case Engine2::PolygonConvexSwapped:
@@ -246,6 +264,7 @@ struct Pair2::Impl {
   }
 
   Distance2 signed_distance(const Vec2& t) const {
+    if (flat) return flat->signed_distance(t);
     if (!overlapping(t)) {
       // Two convex shapes with n + m > 64: the nearest vertex of M located by binary searches,
       // then measured exactly on its few segments (src/convex2/convex_cast.hpp); smaller pairs
@@ -273,6 +292,7 @@ struct Pair2::Impl {
   // into M in O(log) for two convex shapes (the boundaries when the line is tangent to M), the
   // first boundary contact for the others.
   Cast2 cast(const Vec2& t, const Vec2& d) const {
+    if (flat) return flat->cast(t, d);
     if (!overlapping(t)) {
       if (engine == Engine2::Convex)
         if (auto r = convex2::convex_cast(P.convex(), Q.convex(), t, d)) return *r;
@@ -285,6 +305,10 @@ struct Pair2::Impl {
 
   const NoFitPolygonParts& no_fit_polygon() const {
     std::call_once(export_once, [&] {
+      if (flat) {
+        exported.emplace(scaled_back(flat->parts(), scale));
+        return;
+      }
       exported.emplace(scaled_back(nfp ? parts_of(*nfp) : parts_of(NoFitPolygon2(P.polygon(), Q.polygon())), scale));
     });
     return *exported;

@@ -20,6 +20,7 @@ struct Shape2::Data {
   mutable std::optional<Polygon> polygon;  // for a convex shape: built on first use
   mutable std::once_flag polygon_once;
   std::string name;
+  std::vector<Vec2> flat;  // a point (one vertex) or a segment (two): no convex, no polygon
 };
 
 namespace {
@@ -78,7 +79,7 @@ Shape2 Shape2::from_file(const std::filesystem::path& path, std::string_view nam
 
 bool Shape2::is_convex() const { return d_->convex.has_value(); }
 
-std::size_t Shape2::hole_count() const { return d_->convex ? 0 : d_->polygon->hole_count(); }
+std::size_t Shape2::hole_count() const { return d_->convex || !d_->flat.empty() ? 0 : d_->polygon->hole_count(); }
 
 const ConvexPolygon& Shape2::convex() const {
   if (!d_->convex) throw std::logic_error("Shape2::convex(): " + d_->name + " is not convex");
@@ -86,6 +87,8 @@ const ConvexPolygon& Shape2::convex() const {
 }
 
 const Polygon& Shape2::polygon() const {
+  if (!d_->flat.empty())
+    throw InvalidInput(d_->name + " is a " + (d_->flat.size() == 1 ? "point" : "segment") + ": it has no polygon");
   if (d_->convex)
     std::call_once(d_->polygon_once, [&] { d_->polygon.emplace(Polygon::simple(d_->convex->vertices(), d_->name)); });
   return *d_->polygon;
@@ -93,7 +96,9 @@ const Polygon& Shape2::polygon() const {
 
 std::vector<std::vector<Vec2>> Shape2::rings() const {
   std::vector<std::vector<Vec2>> out;
-  if (d_->convex) {
+  if (!d_->flat.empty()) {
+    out.push_back(d_->flat);
+  } else if (d_->convex) {
     out.emplace_back(d_->convex->vertices().begin(), d_->convex->vertices().end());
   } else {
     for (std::size_t k = 0; k < d_->polygon->ring_count(); ++k)
@@ -102,7 +107,9 @@ std::vector<std::vector<Vec2>> Shape2::rings() const {
   return out;
 }
 
-std::size_t Shape2::size() const { return d_->convex ? d_->convex->size() : d_->polygon->size(); }
+std::size_t Shape2::size() const {
+  return !d_->flat.empty() ? d_->flat.size() : d_->convex ? d_->convex->size() : d_->polygon->size();
+}
 
 const std::string& Shape2::name() const { return d_->name; }
 
@@ -110,6 +117,7 @@ std::array<std::size_t, 2> Shape2::input_vertex(std::size_t vertex) const {
   if (vertex >= size())
     throw InvalidInput(d_->name + ": vertex " + std::to_string(vertex) + " out of range (" +
                        std::to_string(size()) + " vertices)");
+  if (!d_->flat.empty()) return {0, vertex};
   if (d_->convex) return {0, d_->convex->input_index(vertex)};
   return {d_->polygon->ring_of(vertex), d_->polygon->input_index(vertex)};
 }
@@ -152,9 +160,45 @@ Shape2 Shape2::rotated(double degrees) const {
   std::vector<std::vector<Vec2>> rings = this->rings();
   for (auto& ring : rings)
     for (auto& p : ring) p = turn(p);
+  if (!d_->flat.empty()) return rings[0].size() == 1 ? point(rings[0][0], name) : segment(rings[0][0], rings[0][1], name);
   std::vector<Vec2> outer = std::move(rings.front());
   rings.erase(rings.begin());
   return Shape2(std::move(outer), std::move(rings), name);
 }
+
+// ---- points and segments (issue 16 item 4; docs/design.md "Lower-dimensional shapes") ----
+
+namespace {
+
+void check_finite(const Vec2& p, std::string_view name, const char* what) {
+  if (!std::isfinite(p.x()) || !std::isfinite(p.y()))
+    throw InvalidInput(std::string(name) + ": " + what + " (" + std::to_string(p.x()) + ", " + std::to_string(p.y()) +
+                       ") is not finite");
+}
+
+}  // namespace
+
+Shape2 Shape2::point(const Vec2& p, std::string_view name) {
+  check_finite(p, name, "the point");
+  Shape2 s;
+  auto d = std::make_shared<Data>();
+  d->flat = {p};
+  d->name = std::string(name);
+  s.d_ = std::move(d);
+  return s;
+}
+
+Shape2 Shape2::segment(const Vec2& a, const Vec2& b, std::string_view name) {
+  check_finite(a, name, "the segment's first end");
+  check_finite(b, name, "the segment's second end");
+  if (a == b) throw InvalidInput(std::string(name) + ": the segment's two ends coincide (use a point)");
+  Shape2 s = point(a, name);
+  std::const_pointer_cast<Data>(s.d_)->flat.push_back(b);
+  return s;
+}
+
+int Shape2::dimension() const { return d_->flat.empty() ? 2 : static_cast<int>(d_->flat.size()) - 1; }
+
+std::span<const Vec2> Shape2::flat_vertices() const { return d_->flat; }
 
 }  // namespace pendepth

@@ -104,6 +104,28 @@ std::string feature_text(const Feature& f, const Polygon& poly) {
          std::to_string(poly.input_index(poly.next(g))) + " of " + ring_text(poly, g);
 }
 
+// A point or a segment (Features2::flat vertices): vertex j, the segment's edge 0 from 0 to 1.
+void append_feature(std::string& out, const Feature& f, const Features2& s) {
+  if (s.convex) return append_feature(out, f, *s.convex);
+  if (s.polygon) return append_feature(out, f, *s.polygon);
+  if (f.kind == FeatureKind::None || f.index < 0 || std::size_t(f.index) >= s.flat) {
+    out += "{\"kind\":\"none\",\"index\":null}";
+    return;
+  }
+  out += f.kind == FeatureKind::Vertex ? "{\"kind\":\"vertex\",\"index\":" : "{\"kind\":\"edge\",\"index\":";
+  append_uint(out, static_cast<std::size_t>(f.index));
+  if (f.kind == FeatureKind::Edge) out += ",\"end\":1";
+  out += '}';
+}
+
+std::string feature_text(const Feature& f, const Features2& s) {
+  if (s.convex) return feature_text(f, *s.convex);
+  if (s.polygon) return feature_text(f, *s.polygon);
+  if (f.kind == FeatureKind::None || f.index < 0 || std::size_t(f.index) >= s.flat) return "none";
+  if (f.kind == FeatureKind::Vertex) return s.flat == 1 ? "the point" : "end " + std::to_string(f.index);
+  return "the segment";
+}
+
 std::string vec_text(const Vec2& v) {
   std::string s = "(";
   append_double(s, v.x());
@@ -118,6 +140,8 @@ void detail::append_feature2(std::string& out, const Feature& f, const ConvexPol
 void detail::append_feature2(std::string& out, const Feature& f, const Polygon& poly) { append_feature(out, f, poly); }
 std::string detail::feature2_text(const Feature& f, const ConvexPolygon& poly) { return feature_text(f, poly); }
 std::string detail::feature2_text(const Feature& f, const Polygon& poly) { return feature_text(f, poly); }
+void detail::append_feature2(std::string& out, const Feature& f, const Features2& s) { append_feature(out, f, s); }
+std::string detail::feature2_text(const Feature& f, const Features2& s) { return feature_text(f, s); }
 std::string detail::vec2_text(const Vec2& v) { return vec_text(v); }
 void detail::append_vec2(std::string& out, const Vec2& v) { append_vec(out, v); }
 
@@ -143,6 +167,8 @@ void append_json(std::string& out, const Depth2& r, const ConvexPolygon& P, cons
 void append_json(std::string& out, const Depth2& r, const Polygon& P, const Polygon& Q) {
   append_json_any(out, r, P, Q);
 }
+
+void append_json(std::string& out, const Depth2& r, Features2 P, Features2 Q) { append_json_any(out, r, P, Q); }
 
 void append_json(std::string& out, const Geometry2& g) {
   auto ring = [&](const std::vector<Vec2>& pts) {
@@ -208,5 +234,6 @@ std::string summary(const Depth2& r, const ConvexPolygon& P, const ConvexPolygon
 std::string summary(const Depth2& r, const Polygon& P, const ConvexPolygon& Q) { return summary_any(r, P, Q); }
 std::string summary(const Depth2& r, const ConvexPolygon& P, const Polygon& Q) { return summary_any(r, P, Q); }
 std::string summary(const Depth2& r, const Polygon& P, const Polygon& Q) { return summary_any(r, P, Q); }
+std::string summary(const Depth2& r, Features2 P, Features2 Q) { return summary_any(r, P, Q); }
 
 }  // namespace pendepth::io

@@ -14,14 +14,9 @@ namespace {
 using detail::append_vec2;
 using detail::append_vec3;
 
-void append_feature(std::string& out, const Feature& f, Features2 s) {
-  if (s.convex) detail::append_feature2(out, f, *s.convex);
-  else detail::append_feature2(out, f, *s.polygon);
-}
+void append_feature(std::string& out, const Feature& f, Features2 s) { detail::append_feature2(out, f, s); }
 void append_feature(std::string& out, const Feature3& f, const ConvexPolytope& s) { detail::append_feature3(out, f, s); }
-std::string feature_text(const Feature& f, Features2 s) {
-  return s.convex ? detail::feature2_text(f, *s.convex) : detail::feature2_text(f, *s.polygon);
-}
+std::string feature_text(const Feature& f, Features2 s) { return detail::feature2_text(f, s); }
 std::string feature_text(const Feature3& f, const ConvexPolytope& s) { return detail::feature3_text(f, s); }
 void append_vec(std::string& out, const Vec2& v) { append_vec2(out, v); }
 void append_vec(std::string& out, const Vec3& v) { append_vec3(out, v); }

@@ -56,6 +56,8 @@ void append_feature2(std::string& out, const Feature& f, const ConvexPolygon& po
 void append_feature2(std::string& out, const Feature& f, const Polygon& poly);
 std::string feature2_text(const Feature& f, const ConvexPolygon& poly);
 std::string feature2_text(const Feature& f, const Polygon& poly);
+void append_feature2(std::string& out, const Feature& f, const Features2& s);
+std::string feature2_text(const Feature& f, const Features2& s);
 std::string vec2_text(const Vec2& v);
 void append_vec2(std::string& out, const Vec2& v);
 void append_feature3(std::string& out, const Feature3& f, const ConvexPolytope& poly);

@@ -17,20 +17,19 @@ struct Kind {
   const char* name;
   int count;           // numbers expected (3D)
   int count2;          // numbers of the 2D form, or -1
-  bool implemented;
   bool file;           // KIND:NUMBERS:FILE
   const char* form;
 };
 constexpr std::array<Kind, 9> kKinds{{
-    {"sphere", 1, -1, true, false, "sphere:R"},
-    {"capsule", 2, -1, true, false, "capsule:R,H"},
-    {"box", 3, -1, true, false, "box:X,Y,Z"},
-    {"rounded", 1, -1, true, true, "rounded:R:FILE"},
-    {"point", 3, 2, true, false, "point:X,Y,Z"},
-    {"segment", 6, 4, true, false, "segment:X1,Y1,Z1,X2,Y2,Z2"},
-    {"cylinder", 2, -1, true, false, "cylinder:R,H"},
-    {"cone", 2, -1, true, false, "cone:R,H"},
-    {"ellipsoid", 3, -1, true, false, "ellipsoid:A,B,C"},
+    {"sphere", 1, -1, false, "sphere:R"},
+    {"capsule", 2, -1, false, "capsule:R,H"},
+    {"box", 3, -1, false, "box:X,Y,Z"},
+    {"rounded", 1, -1, true, "rounded:R:FILE"},
+    {"point", 3, 2, false, "point:X,Y,Z"},
+    {"segment", 6, 4, false, "segment:X1,Y1,Z1,X2,Y2,Z2"},
+    {"cylinder", 2, -1, false, "cylinder:R,H"},
+    {"cone", 2, -1, false, "cone:R,H"},
+    {"ellipsoid", 3, -1, false, "ellipsoid:A,B,C"},
 }};
 
 }  // namespace
@@ -73,14 +72,13 @@ std::optional<ShapeSpec> parse_shape_spec(std::string_view arg) {
   const int n = static_cast<int>(s.numbers.size());
   if (n != kind->count && n != kind->count2)
     throw fail(std::to_string(n) + " number" + (n == 1 ? "" : "s") + " given");
-  if (!kind->implemented) throw fail(std::string(kind->name) + " primitives are not implemented yet");
-  if (n == kind->count2)
-    throw fail(std::string("2D ") + kind->name + "s are not implemented yet (give 3D coordinates)");
+  if (n == kind->count2) s.dimension = 2;
   return s;
 }
 
 Shape3 shape3_from_spec(const ShapeSpec& s, std::string_view name, bool hull) {
   const auto& v = s.numbers;
+  if (s.dimension != 3) throw InvalidInput("shape spec '" + s.text + "': a 2D shape where a 3D one is needed");
   try {
     if (s.kind == "sphere") return Shape3::sphere(v[0], name);
     if (s.kind == "capsule") return Shape3::capsule(v[0], v[1], name);
@@ -91,6 +89,19 @@ Shape3 shape3_from_spec(const ShapeSpec& s, std::string_view name, bool hull) {
     if (s.kind == "cone") return Shape3::cone(v[0], v[1], name);
     if (s.kind == "ellipsoid") return Shape3::ellipsoid(v[0], v[1], v[2], name);
     if (s.kind == "rounded") return Shape3::rounded(Shape3::from_file(s.file, name, hull), v[0], name);
+  } catch (const InvalidInput& e) {
+    throw InvalidInput("shape spec '" + s.text + "': " + e.what());
+  }
+  throw InvalidInput("shape spec '" + s.text + "': unknown kind");
+}
+
+pendepth::Shape2 shape2_from_spec(const ShapeSpec& s, std::string_view name) {
+  const auto& v = s.numbers;
+  if (s.dimension != 2)
+    throw InvalidInput("shape spec '" + s.text + "': not a 2D shape (2D specs: point:X,Y and segment:X1,Y1,X2,Y2)");
+  try {
+    if (s.kind == "point") return pendepth::Shape2::point(Vec2(v[0], v[1]), name);
+    if (s.kind == "segment") return pendepth::Shape2::segment(Vec2(v[0], v[1]), Vec2(v[2], v[3]), name);
   } catch (const InvalidInput& e) {
     throw InvalidInput("shape spec '" + s.text + "': " + e.what());
   }

@@ -15,6 +15,8 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <string>
+#include <tuple>
 
 namespace pendepth::io {
 namespace {
@@ -148,7 +150,7 @@ std::string shortest(double x) {
 void write_svg(const std::filesystem::path& path, const SvgScene& scene, const Vec2& t, const Depth2& r,
                const SvgOptions& options) {
   for (const auto* rings : {&scene.P, &scene.Q})
-    if (rings->empty() || rings->front().size() < 3) throw InvalidInput("write_svg: P and Q need an outer ring");
+    if (rings->empty() || rings->front().empty()) throw InvalidInput("write_svg: P and Q need an outer ring");
   const Vec2 v = r.translation;
   const bool moved = r.overlapping && r.depth > 0;
 
@@ -238,6 +240,10 @@ void write_svg(const std::filesystem::path& path, const SvgScene& scene, const V
   shape(w, A, scene.P, Vec2(0, 0), "fill=\"#a6cee3\" stroke=\"#1f78b4\" stroke-width=\"1.5\"");
   shape(w, A, scene.Q, t,
           "fill=\"#fb9a99\" fill-opacity=\"0.6\" stroke=\"#e31a1c\" stroke-width=\"1.5\"");
+  // A point or a segment (fewer than 3 vertices): its vertices as dots, so a point shows.
+  for (const auto& [rings, at, color] : {std::tuple{&scene.P, Vec2(0, 0), "#1f78b4"}, std::tuple{&scene.Q, t, "#e31a1c"}})
+    if (rings->front().size() < 3)
+      for (const Vec2& p : rings->front()) dot(w, A, p + at, 3, std::string("fill=\"") + color + "\"");
   if (moved) {
     shape(w, A, scene.Q, t + v,
             "fill=\"none\" stroke=\"#e31a1c\" stroke-width=\"1.5\" stroke-dasharray=\"6 4\"");

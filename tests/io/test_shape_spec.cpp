@@ -73,8 +73,16 @@ TEST(ShapeSpec, ErrorsNameTheSpec) {
   } catch (const InvalidInput& e) {
     EXPECT_EQ(std::string(e.what()), "shape spec 'cone:1,0': shape: half height 0 must be finite and positive");
   }
-  EXPECT_EQ(error_of("point:1,2"),
-            "shape spec 'point:1,2': 2D points are not implemented yet (give 3D coordinates) (expected point:X,Y,Z)");
+  // 2D specs: point:X,Y and segment:X1,Y1,X2,Y2 (Shape2::point, Shape2::segment).
+  const auto p2 = io::parse_shape_spec("point:1,2");
+  ASSERT_TRUE(p2);
+  EXPECT_EQ(p2->dimension, 2);
+  EXPECT_EQ(io::shape2_from_spec(*p2).flat_vertices()[0], Vec2(1, 2));
+  EXPECT_EQ(io::shape2_from_spec(*io::parse_shape_spec("segment:0,0,1,-1")).dimension(), 1);
+  EXPECT_THROW(io::shape3_from_spec(*p2), InvalidInput);
+  EXPECT_THROW(io::shape2_from_spec(*io::parse_shape_spec("point:1,2,3")), InvalidInput);
+  EXPECT_THROW(io::shape2_from_spec(*io::parse_shape_spec("segment:1,1,1,1")), InvalidInput);
+  EXPECT_EQ(error_of("point:1"), "shape spec 'point:1': 1 number given (expected point:X,Y,Z)");
   try {
     io::shape3_from_spec(*io::parse_shape_spec("sphere:-1"));
     FAIL();
