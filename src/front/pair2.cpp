@@ -275,17 +275,7 @@ struct Pair2::Impl {
           return boundary_engine().distance_near(t, (*v)[0], (*v)[1]);
       return boundary_engine().distance(t);
     }
-    const Depth2 s = minimum(t);
-    Distance2 r;
-    r.distance = -s.depth;
-    r.translation = s.translation;
-    r.normal = s.normal;
-    r.witness_p = s.witness_p;
-    r.witness_q = s.witness_q - s.translation;
-    r.feature_p = s.feature_p;
-    r.feature_q = s.feature_q;
-    r.overlapping = true;
-    return r;
+    return polygon2::overlap_distance(minimum(t));
   }
 
   // Shape cast (issue 16 item 3): 0 when overlapping, else the first contact: the ray's entry

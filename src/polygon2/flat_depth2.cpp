@@ -277,22 +277,24 @@ Depth2 FlatDepth2::minimum(const Vec2& t) const {
   return r;
 }
 
+Distance2 overlap_distance(const Depth2& s) {
+  Distance2 r;
+  r.distance = -s.depth;
+  r.translation = s.translation;
+  r.normal = s.normal;
+  r.witness_p = s.witness_p;
+  r.witness_q = s.witness_q - s.translation;
+  r.feature_p = s.feature_p;
+  r.feature_q = s.feature_q;
+  r.overlapping = true;
+  return r;
+}
+
 Distance2 FlatDepth2::signed_distance(const Vec2& t) const {
   if (general_) return flat_general::signed_distance(*general_, t);
   const Where where = locate(t);
+  if (where == Where::Inside) return overlap_distance(minimum(t));
   Distance2 r;
-  if (where == Where::Inside) {
-    const Depth2 s = minimum(t);
-    r.distance = -s.depth;
-    r.translation = s.translation;
-    r.normal = s.normal;
-    r.witness_p = s.witness_p;
-    r.witness_q = s.witness_q - s.translation;
-    r.feature_p = s.feature_p;
-    r.feature_q = s.feature_q;
-    r.overlapping = true;
-    return r;
-  }
   const Near n = nearest(t);
   r.feature_p = feature_p(n.edge, n.k);
   r.feature_q = feature_q(n.edge, n.k);
@@ -341,9 +343,10 @@ auto hit_lambda(L c, const V& u, const V* w, int s, const Vec2& t, const Vec2& d
 
 }  // namespace
 
-// The hits with λ > 0; `keep(hit, side)` selects them (side: the sign of cross(d, w − t) for an
-// edge), `better(a, b)` orders two kept hits by their exact λ. Returns the best kept one.
-bool FlatDepth2::first_hit(const Vec2& t, const Vec2& d, Hit& out) const {
+// The hits of the ray t + λd with λ > 0: `first` = the least λ among every vertex on the line and
+// every edge crossing it (the entry or exit of the ray), else the greatest λ among the places
+// where the ray leaves M (the last exit). Every decision exact.
+bool FlatDepth2::extreme_hit(const Vec2& t, const Vec2& d, bool first, Hit& out) const {
   const std::size_t n = v_.size();
   std::vector<signed char> side(n);
   for (std::size_t k = 0; k < n; ++k)
@@ -353,42 +356,13 @@ bool FlatDepth2::first_hit(const Vec2& t, const Vec2& d, Hit& out) const {
   bool found = false;
   Hit best;
   int best_s = 0;
+  const int order = first ? -1 : 1;  // the sign of compare(new, best) that replaces best
   auto lam = [&](const Hit& h, int s, auto c) {
     return hit_lambda(c, v_[h.k], h.edge ? &v_[next(h.k)] : nullptr, s, t, d);
   };
   auto consider = [&](const Hit& h, int s) {
     if (exact_sign([&](auto c) { return lam(h, s, c).first; }) <= 0) return;
-    if (!found || compare_ratios([&](auto c) { return lam(h, s, c); }, [&](auto c) { return lam(best, best_s, c); }) < 0) {
-      best = h;
-      best_s = s;
-      found = true;
-    }
-  };
-  for (std::size_t k = 0; k < n; ++k) {
-    if (side[k] == 0) consider(Hit{false, k}, 0);
-    const int su = side[k], sw = side[next(k)];
-    if (su * sw < 0) consider(Hit{true, k}, sw);
-  }
-  out = best;
-  return found;
-}
-
-bool FlatDepth2::last_exit(const Vec2& t, const Vec2& d, Hit& out) const {
-  const std::size_t n = v_.size();
-  std::vector<signed char> side(n);
-  for (std::size_t k = 0; k < n; ++k)
-    side[k] = static_cast<signed char>(exact_sign([&](auto c) {
-      return c(d.x()) * (my(c, v_[k]) - c(t.y())) - c(d.y()) * (mx(c, v_[k]) - c(t.x()));
-    }));
-  bool found = false;
-  Hit best;
-  int best_s = 0;
-  auto lam = [&](const Hit& h, int s, auto c) {
-    return hit_lambda(c, v_[h.k], h.edge ? &v_[next(h.k)] : nullptr, s, t, d);
-  };
-  auto consider = [&](const Hit& h, int s) {
-    if (exact_sign([&](auto c) { return lam(h, s, c).first; }) <= 0) return;
-    if (!found || compare_ratios([&](auto c) { return lam(h, s, c); }, [&](auto c) { return lam(best, best_s, c); }) > 0) {
+    if (!found || compare_ratios([&](auto c) { return lam(h, s, c); }, [&](auto c) { return lam(best, best_s, c); }) == order) {
       best = h;
       best_s = s;
       found = true;
@@ -412,9 +386,9 @@ bool FlatDepth2::last_exit(const Vec2& t, const Vec2& d, Hit& out) const {
     return c1 > 0;
   };
   for (std::size_t k = 0; k < n; ++k) {
-    if (side[k] == 0 && inside_before(k)) consider(Hit{false, k}, 0);
+    if (side[k] == 0 && (first || inside_before(k))) consider(Hit{false, k}, 0);
     const int su = side[k], sw = side[next(k)];
-    if (su * sw < 0 && sw > 0) consider(Hit{true, k}, sw);  // crossing from M's inner side out
+    if (su * sw < 0 && (first || sw > 0)) consider(Hit{true, k}, sw);  // last exit: from M's inner side out
   }
   out = best;
   return found;
@@ -445,7 +419,7 @@ Depth2 FlatDepth2::along(const Vec2& t, const Vec2& d0) const {
   if (locate(t) != Where::Inside) return r;
   const Vec2 d = scaled(d0);
   Hit h;
-  first_hit(t, d, h);  // t inside the bounded M: the ray leaves it
+  extreme_hit(t, d, true, h);  // t inside the bounded M: the ray leaves it
   r = hit_result(h, t, d);
   r.overlapping = true;
   r.kind = DepthKind::Directional;
@@ -458,7 +432,7 @@ Depth2 FlatDepth2::separation(const Vec2& t, const Vec2& d0) const {
   const Vec2 d = scaled(d0);
   Depth2 r;
   Hit h;
-  if (last_exit(t, d, h)) r = hit_result(h, t, d);
+  if (extreme_hit(t, d, false, h)) r = hit_result(h, t, d);
   r.overlapping = inside;
   r.kind = DepthKind::Separation;
   return r;
@@ -486,7 +460,7 @@ Cast2 FlatDepth2::cast(const Vec2& t, const Vec2& d0) const {
   }
   const Vec2 d = scaled(d0);
   Hit h;
-  if (!first_hit(t, d, h)) {
+  if (!extreme_hit(t, d, true, h)) {
     r.distance = kInf;
     return r;
   }

@@ -77,8 +77,8 @@ class FlatDepth2 {
     std::size_t k = 0;
   };
   // The hits of the ray t + λ·d (λ > 0): the first one, or the last exit from int M.
-  bool first_hit(const Vec2& t, const Vec2& d, Hit& out) const;
-  bool last_exit(const Vec2& t, const Vec2& d, Hit& out) const;
+  /// The first hit (`first`) or the last exit of the ray t + λd, λ > 0 (flat_depth2.cpp).
+  bool extreme_hit(const Vec2& t, const Vec2& d, bool first, Hit& out) const;
   Depth2 hit_result(const Hit& h, const Vec2& t, const Vec2& d) const;
   Feature feature_p(bool edge, std::size_t k) const;
   Feature feature_q(bool edge, std::size_t k) const;
@@ -86,6 +86,10 @@ class FlatDepth2 {
 };
 
 // The general path's queries (flat_segment2.cpp), same contracts as FlatDepth2's.
+/// The signed distance of an overlapping placement from its σ answer: −σ, the same translation
+/// (out of P), Q's witness where Q is now (before the move).
+Distance2 overlap_distance(const Depth2& sigma);
+
 namespace flat_general {
 std::shared_ptr<const FlatDepth2::General> build(const std::vector<std::vector<Vec2>>& rings, std::span<const Vec2> F);
 bool overlapping(const FlatDepth2::General& G, const Vec2& t);
