@@ -2,7 +2,8 @@
 // signed distance and σ of a solid hull against a point, a segment, a triangle, a sphere, a
 // capsule and another hull of the same size (the existing solid–solid engine), random poses
 // (half overlapping). Counters: µs per query. BM_RoundedFlatCores: rounded shapes on two
-// lower-dimensional cores.
+// lower-dimensional cores. BM_CurvedBullet: Bullet float64 (optional peer, as in bench_convex3) on
+// the curved pairs' shapes and poses, checked against pendepth's certified brackets.
 #include <pendepth/pendepth.hpp>
 
 #include <benchmark/benchmark.h>
@@ -149,7 +150,7 @@ void BM_CurvedMinimum(benchmark::State& s) { run_curved(s, false); }
 // btGjkEpaSolver2::SignedDistance does); σ: btGjkEpaSolver2::Penetration (0 when separated).
 // Before timing, every pose is checked against pendepth's certified bracket [lower, upper]:
 // err = distance outside the bracket (0 inside); a failure is err > 1e-6·max(|value|, 1e-3) or a
-// Bullet failure status. Counters err_max (absolute), failures (of 256 poses).
+// Bullet failure status. Counters err_max (absolute), failures and overlapping (of the 256 poses).
 class BulletEllipsoid : public btConvexInternalShape {
  public:
   explicit BulletEllipsoid(const btVector3& axes) : axes_(axes) {
@@ -233,15 +234,15 @@ void BM_CurvedBullet(benchmark::State& state) {
   std::vector<btTransform> tb;
   for (const Pose3& q : c.poses) tb.push_back(bullet_pose(q));
   double err_max = 0;
-  int failures = 0;
+  int failures = 0, overlapping = 0;
   for (std::size_t k = 0; k < c.poses.size(); ++k) {
     double lo, hi;
     if (distance) {
       const Distance3 r = pair.signed_distance(Pose3(), c.poses[k]);
-      lo = r.lower_bound, hi = r.upper_bound;
+      lo = r.lower_bound, hi = r.upper_bound, overlapping += r.overlapping;
     } else {
       const Depth3 r = pair.minimum(Pose3(), c.poses[k]);
-      lo = r.lower_bound, hi = r.upper_bound;
+      lo = r.lower_bound, hi = r.upper_bound, overlapping += r.overlapping;
     }
     const double v = bullet_query(a.get(), b.get(), tb[k], distance);
     const double err = std::isnan(v) ? std::numeric_limits<double>::infinity() : std::max({lo - v, v - hi, 0.0});
@@ -261,6 +262,7 @@ void BM_CurvedBullet(benchmark::State& state) {
                                                       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
   state.counters["err_max"] = err_max;
   state.counters["failures"] = failures;
+  state.counters["overlapping"] = overlapping;
 }
 #endif
 
