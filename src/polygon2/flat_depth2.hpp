@@ -87,7 +87,10 @@ class FlatDepth2 {
 
 // The general path's queries (flat_segment2.cpp), same contracts as FlatDepth2's.
 namespace flat_general {
-std::shared_ptr<const FlatDepth2::General> build(const std::vector<std::vector<Vec2>>& rings, std::span<const Vec2> F);
+/// brute: every "segment meets int P" test scans all n edges (the reference the tests compare the
+/// box-tree path with; same answers).
+std::shared_ptr<const FlatDepth2::General> build(const std::vector<std::vector<Vec2>>& rings, std::span<const Vec2> F,
+                                                 bool brute = false);
 bool overlapping(const FlatDepth2::General& G, const Vec2& t);
 Depth2 minimum(const FlatDepth2::General& G, const Vec2& t);
 Depth2 along(const FlatDepth2::General& G, const Vec2& t, const Vec2& d);
