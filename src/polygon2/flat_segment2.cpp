@@ -26,6 +26,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <utility>
 
 namespace pendepth::polygon2 {
@@ -188,8 +189,27 @@ struct FlatDepth2::General {
     return odd ? 1 : -1;
   }
 
+  // The point functor with its floating evaluation (exact_sign's first tier) computed once: the
+  // same values the functor returns, so every sign is the one it gives.
   template <class X>
-  bool meets(const X& x) const {
+  struct Cached {
+    const X& x;
+    std::array<exact::Fl, 3> fl;
+    template <class L>
+    auto operator()(L c) const {
+      if constexpr (std::is_same_v<L, exact::LiftFl>) return fl;
+      else return x(c);
+    }
+  };
+
+  template <class X>
+  bool meets(const X& x0) const {
+    if (brute) return meets_point(x0);
+    return meets_point(Cached<X>{x0, x0(exact::LiftFl{})});
+  }
+
+  template <class X>
+  bool meets_point(const X& x) const {
     std::array<Vec2, 2> lo{Vec2(0, 0), Vec2(0, 0)}, hi = lo;
     const bool all = !end_box(x, 0, lo[0], hi[0]) || !end_box(x, 1, lo[1], hi[1]);
     for (int j = 0; j < 2; ++j) {
