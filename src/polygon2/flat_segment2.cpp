@@ -26,6 +26,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <type_traits>
 #include <utility>
 
@@ -189,23 +190,39 @@ struct FlatDepth2::General {
     return odd ? 1 : -1;
   }
 
-  // The point functor with its floating evaluation (exact_sign's first tier) computed once: the
-  // same values the functor returns, so every sign is the one it gives.
+  // The point functor with its evaluations in exact_sign's tiers computed once each (the floating
+  // one up front, the others when first asked for): the same values the functor returns, so every
+  // sign is the one it gives.
   template <class X>
   struct Cached {
     const X& x;
     std::array<exact::Fl, 3> fl;
+    mutable std::optional<decltype(std::declval<const X&>()(exact::LiftFlX{}))> flx;
+    mutable std::optional<decltype(std::declval<const X&>()(exact::LiftDD{}))> dd;
+    mutable std::optional<decltype(std::declval<const X&>()(exact::LiftEx{}))> ex;
     template <class L>
     auto operator()(L c) const {
-      if constexpr (std::is_same_v<L, exact::LiftFl>) return fl;
-      else return x(c);
+      if constexpr (std::is_same_v<L, exact::LiftFl>) {
+        return fl;
+      } else if constexpr (std::is_same_v<L, exact::LiftFlX>) {
+        if (!flx) flx = x(c);
+        return *flx;
+      } else if constexpr (std::is_same_v<L, exact::LiftDD>) {
+        if (!dd) dd = x(c);
+        return *dd;
+      } else if constexpr (std::is_same_v<L, exact::LiftEx>) {
+        if (!ex) ex = x(c);
+        return *ex;
+      } else {
+        return x(c);
+      }
     }
   };
 
   template <class X>
   bool meets(const X& x0) const {
     if (brute) return meets_point(x0);
-    return meets_point(Cached<X>{x0, x0(exact::LiftFl{})});
+    return meets_point(Cached<X>{x0, x0(exact::LiftFl{}), {}, {}, {}});
   }
 
   template <class X>
