@@ -16,6 +16,13 @@
 // Completeness: the nearest point of C to t ∈ O is on ∂O, so it is a foot of t on a candidate,
 // an end of one, or a crossing of two; the first point of C on a ray from t is a crossing of the
 // ray with a candidate; the last exit likewise. Each is tested with meets().
+// Cost: meets() visits only P's edges whose boxes (a bucket box tree built once per pair) meet a
+// rigorous floating box around the tested segment, or the horizontal half-line from an end for
+// its parity; signs that box already fixes (an edge end above or below the box, an edge wholly
+// right of it) are read off it, the others are exact. So a test costs O(log n + the edges near
+// the segment or met by the end's half-line) instead of O(n); every answer is the one the full
+// scan gives (`brute`, kept as the tests' reference). σ also pairs its near candidates for
+// crossings by a sweep on their boxes (O(k log k + pairs) instead of O(k²)), in the all-pairs order.
 #include "polygon2/flat_depth2.hpp"
 
 #include "geometry/box_tree.hpp"
