@@ -149,7 +149,7 @@ struct FlatDepth2::General {
 
   // Where the end q_j + x lies: 1 inside, -1 outside, 0 on ∂P (onv: the vertex or -1; one: the edge).
   // Edges that miss the box [lo.x, +∞] × [lo.y, hi.y] around the end neither contain it nor
-  // cross the rightward ray from it, so only the others are visited.
+  // cross the rightward ray from it, so only the others are visited (mirrored for the leftward).
   template <class X>
   int locate_end(const X& x, int j, long& onv, long& one, bool all, const Vec2& lo, const Vec2& hi) const {
     bool odd = false;
@@ -158,9 +158,12 @@ struct FlatDepth2::General {
       const auto r = x(c);
       return std::array{c(f[j].x()) * r[2] + r[0], c(f[j].y()) * r[2] + r[1], r[2]};
     };
-    const Vec2 qhi(kInf, hi.y());
     const bool fast = !all && !brute;
-    const bool on = edges_until(all, lo, qhi, [&](std::uint32_t gi) {
+    // The half-line runs towards the nearer side of P's box (+x unless the fast path chose −x):
+    // both parities are exact, so they agree.
+    const bool left = fast && tree.nodes[0].hi.x() - hi.x() > lo.x() - tree.nodes[0].lo.x();
+    const Vec2 qlo(left ? -kInf : lo.x(), lo.y()), qhi(left ? hi.x() : kInf, hi.y());
+    const bool on = edges_until(all, qlo, qhi, [&](std::uint32_t gi) {
       const std::size_t g = gi;
       const Vec2 &s = p[g], &e = p[next(g)];
       // Signs the end's box already fixes are read off it (the box is rigorous).
@@ -171,7 +174,7 @@ struct FlatDepth2::General {
                      : fast && e.y() < lo.y() ? -1
                                               : exact_sign([&](auto c) { const auto A = ax(c); return c(e.y()) * A[2] - A[1]; });
       if (ys * ye > 0) return false;
-      if (fast && ys * ye < 0 && elo[g].x() > hi.x()) {  // the edge crosses the ray's line right of the end
+      if (fast && ys * ye < 0 && (left ? ehi[g].x() < lo.x() : elo[g].x() > hi.x())) {  // wholly on the ray's side
         odd = !odd;
         return false;
       }
@@ -190,7 +193,7 @@ struct FlatDepth2::General {
         }
         return false;
       }
-      if ((ys > 0) != (ye > 0) && (ye > 0 ? o > 0 : o < 0)) odd = !odd;
+      if ((ys > 0) != (ye > 0) && (ye > 0) == (left ? o < 0 : o > 0)) odd = !odd;
       return false;
     });
     if (on) return 0;
