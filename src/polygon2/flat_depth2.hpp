@@ -54,7 +54,8 @@ class FlatDepth2 {
   /// int P ⊕ (−F) is not int M at slits, so M is not built. ∂O and ∂M lie on 3n candidate
   /// segments (P's edges − a, − b; p − [a, b] for each vertex p). σ, σ_d and the separation are the
   /// nearest / first / last point outside O among the candidates' vertices, feet, pairwise
-  /// crossings and ray crossings, each tested exactly (does the placed segment meet int P: O(n));
+  /// crossings and ray crossings, each tested exactly (does the placed segment meet int P: a box
+  /// tree over P's edges visits those near the segment);
   /// the distance and the cast are the nearest / first point of the candidates (M closed).
   struct General;
 
@@ -91,7 +92,10 @@ class FlatDepth2 {
 Distance2 overlap_distance(const Depth2& sigma);
 
 namespace flat_general {
-std::shared_ptr<const FlatDepth2::General> build(const std::vector<std::vector<Vec2>>& rings, std::span<const Vec2> F);
+/// brute: every "segment meets int P" test scans all n edges (the reference the tests compare the
+/// box-tree path with; same answers).
+std::shared_ptr<const FlatDepth2::General> build(const std::vector<std::vector<Vec2>>& rings, std::span<const Vec2> F,
+                                                 bool brute = false);
 bool overlapping(const FlatDepth2::General& G, const Vec2& t);
 Depth2 minimum(const FlatDepth2::General& G, const Vec2& t);
 Depth2 along(const FlatDepth2::General& G, const Vec2& t, const Vec2& d);

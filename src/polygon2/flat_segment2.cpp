@@ -16,14 +16,26 @@
 // Completeness: the nearest point of C to t ∈ O is on ∂O, so it is a foot of t on a candidate,
 // an end of one, or a crossing of two; the first point of C on a ray from t is a crossing of the
 // ray with a candidate; the last exit likewise. Each is tested with meets().
+// Cost: meets() visits only P's edges whose boxes (a bucket box tree built once per pair) meet a
+// rigorous floating box around the tested segment, or the horizontal half-line from an end for
+// its parity; signs that box already fixes (an edge end above or below the box, an edge wholly
+// right of it) are read off it, the others are exact. So a test costs O(log n + the edges near
+// the segment or met by the end's half-line) instead of O(n); every answer is the one the full
+// scan gives (`brute`, kept as the tests' reference). σ also pairs its near candidates for
+// crossings by a sweep on their boxes (O(k log k + pairs) instead of O(k²)), in the all-pairs order.
 #include "polygon2/flat_depth2.hpp"
 
+#include "geometry/box_tree.hpp"
 #include "geometry/exact.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <optional>
+#include <type_traits>
+#include <utility>
 
 namespace pendepth::polygon2 {
 
@@ -44,6 +56,13 @@ struct FlatDepth2::General {
   std::vector<Cand> cands;
   std::vector<signed char> cone_u, cone_mu;  // u / −u strictly inside P's interior cone at g
   std::vector<signed char> edge_u;           // sign cross(e_g, u)
+  // Boxes of P's edges g → next(g) (exact: their corners are input doubles) in a bucket tree:
+  // meets() visits only the edges whose boxes meet a rigorous box around the tested point or
+  // segment. `brute` (tests only) takes the full O(n) scans instead; both decide the same exact
+  // predicates, so they answer alike.
+  std::vector<Vec2> elo, ehi;
+  geometry::BoxTree tree;
+  bool brute = false;
 
   std::size_t next(std::size_t g) const {
     const auto r = std::upper_bound(ring.begin(), ring.end(), g);
@@ -88,24 +107,77 @@ struct FlatDepth2::General {
       }
       edge_u[g] = static_cast<signed char>(cross_w(m, b, 1.0));
     }
+    elo.resize(n);
+    ehi.resize(n);
+    for (std::size_t g = 0; g < n; ++g) {
+      elo[g] = p[g].cwiseMin(p[next(g)]);
+      ehi[g] = p[g].cwiseMax(p[next(g)]);
+    }
+    tree.build_buckets<4>(n, [&](std::size_t g) -> const Vec2& { return elo[g]; },
+                          [&](std::size_t g) -> const Vec2& { return ehi[g]; });
+  }
+
+  // A rigorous box around the end q_j + x (false if the floating enclosure fails: callers scan).
+  template <class X>
+  bool end_box(const X& x, int j, Vec2& lo, Vec2& hi) const {
+    const auto r = x(exact::LiftFl{});
+    const exact::Fl W = r[2];
+    const double ew = exact::safe_bound(W.e), wlo = W.v - ew, whi = W.v + ew;
+    if (!(wlo > 0) || !std::isfinite(whi)) return false;
+    for (int k = 0; k < 2; ++k) {
+      const exact::Fl N = exact::Fl{f[j][k], 0} * W + r[k];
+      const double en = exact::safe_bound(N.e), nlo = N.v - en, nhi = N.v + en;
+      if (!std::isfinite(nlo) || !std::isfinite(nhi)) return false;
+      lo[k] = geometry::widen_down(nlo >= 0 ? nlo / whi : nlo / wlo);
+      hi[k] = geometry::widen_up(nhi >= 0 ? nhi / wlo : nhi / whi);
+    }
+    return true;
+  }
+  // Visits edges g (until f returns true) whose boxes meet [qlo, qhi] — all of them when
+  // `all` (the boxes failed) or in brute mode.
+  template <class F>
+  bool edges_until(bool all, const Vec2& qlo, const Vec2& qhi, F&& f) const {
+    if (all || brute) {
+      for (std::size_t g = 0; g < p.size(); ++g)
+        if (f(static_cast<std::uint32_t>(g))) return true;
+      return false;
+    }
+    return tree.overlap_until(qlo, qhi, f);
   }
 
   // ---- meets(x) for a point functor x(c) -> {X, Y, W}, W > 0 ----
 
   // Where the end q_j + x lies: 1 inside, -1 outside, 0 on ∂P (onv: the vertex or -1; one: the edge).
+  // Edges that miss the box [lo.x, +∞] × [lo.y, hi.y] around the end neither contain it nor
+  // cross the rightward ray from it, so only the others are visited (mirrored for the leftward).
   template <class X>
-  int locate_end(const X& x, int j, long& onv, long& one) const {
+  int locate_end(const X& x, int j, long& onv, long& one, bool all, const Vec2& lo, const Vec2& hi) const {
     bool odd = false;
     onv = one = -1;
     auto ax = [&](auto c) {
       const auto r = x(c);
       return std::array{c(f[j].x()) * r[2] + r[0], c(f[j].y()) * r[2] + r[1], r[2]};
     };
-    for (std::size_t g = 0; g < p.size(); ++g) {
+    const bool fast = !all && !brute;
+    // The half-line runs towards the nearer side of P's box (+x unless the fast path chose −x):
+    // both parities are exact, so they agree.
+    const bool left = fast && tree.nodes[0].hi.x() - hi.x() > lo.x() - tree.nodes[0].lo.x();
+    const Vec2 qlo(left ? -kInf : lo.x(), lo.y()), qhi(left ? hi.x() : kInf, hi.y());
+    const bool on = edges_until(all, qlo, qhi, [&](std::uint32_t gi) {
+      const std::size_t g = gi;
       const Vec2 &s = p[g], &e = p[next(g)];
-      const int ys = exact_sign([&](auto c) { const auto A = ax(c); return c(s.y()) * A[2] - A[1]; });
-      const int ye = exact_sign([&](auto c) { const auto A = ax(c); return c(e.y()) * A[2] - A[1]; });
-      if (ys * ye > 0) continue;
+      // Signs the end's box already fixes are read off it (the box is rigorous).
+      const int ys = fast && s.y() > hi.y()   ? 1
+                     : fast && s.y() < lo.y() ? -1
+                                              : exact_sign([&](auto c) { const auto A = ax(c); return c(s.y()) * A[2] - A[1]; });
+      const int ye = fast && e.y() > hi.y()   ? 1
+                     : fast && e.y() < lo.y() ? -1
+                                              : exact_sign([&](auto c) { const auto A = ax(c); return c(e.y()) * A[2] - A[1]; });
+      if (ys * ye > 0) return false;
+      if (fast && ys * ye < 0 && (left ? ehi[g].x() < lo.x() : elo[g].x() > hi.x())) {  // wholly on the ray's side
+        odd = !odd;
+        return false;
+      }
       const int o = exact_sign([&](auto c) {
         const auto A = ax(c);
         return (c(e.x()) - c(s.x())) * (A[1] - c(s.y()) * A[2]) - (c(e.y()) - c(s.y())) * (A[0] - c(s.x()) * A[2]);
@@ -117,20 +189,59 @@ struct FlatDepth2::General {
           if (xs == 0 && ys == 0) onv = static_cast<long>(g);
           else if (xe == 0 && ye == 0) onv = static_cast<long>(next(g));
           one = static_cast<long>(g);
-          return 0;
+          return true;
         }
-        continue;
+        return false;
       }
-      if ((ys > 0) != (ye > 0) && (ye > 0 ? o > 0 : o < 0)) odd = !odd;
-    }
+      if ((ys > 0) != (ye > 0) && (ye > 0) == (left ? o < 0 : o > 0)) odd = !odd;
+      return false;
+    });
+    if (on) return 0;
     return odd ? 1 : -1;
   }
 
+  // The point functor with its evaluations in exact_sign's tiers computed once each (the floating
+  // one up front, the others when first asked for): the same values the functor returns, so every
+  // sign is the one it gives.
   template <class X>
-  bool meets(const X& x) const {
+  struct Cached {
+    const X& x;
+    std::array<exact::Fl, 3> fl;
+    mutable std::optional<decltype(std::declval<const X&>()(exact::LiftFlX{}))> flx;
+    mutable std::optional<decltype(std::declval<const X&>()(exact::LiftDD{}))> dd;
+    mutable std::optional<decltype(std::declval<const X&>()(exact::LiftEx{}))> ex;
+    template <class L>
+    auto operator()(L c) const {
+      if constexpr (std::is_same_v<L, exact::LiftFl>) {
+        return fl;
+      } else if constexpr (std::is_same_v<L, exact::LiftFlX>) {
+        if (!flx) flx = x(c);
+        return *flx;
+      } else if constexpr (std::is_same_v<L, exact::LiftDD>) {
+        if (!dd) dd = x(c);
+        return *dd;
+      } else if constexpr (std::is_same_v<L, exact::LiftEx>) {
+        if (!ex) ex = x(c);
+        return *ex;
+      } else {
+        return x(c);
+      }
+    }
+  };
+
+  template <class X>
+  bool meets(const X& x0) const {
+    if (brute) return meets_point(x0);
+    return meets_point(Cached<X>{x0, x0(exact::LiftFl{}), {}, {}, {}});
+  }
+
+  template <class X>
+  bool meets_point(const X& x) const {
+    std::array<Vec2, 2> lo{Vec2(0, 0), Vec2(0, 0)}, hi = lo;
+    const bool all = !end_box(x, 0, lo[0], hi[0]) || !end_box(x, 1, lo[1], hi[1]);
     for (int j = 0; j < 2; ++j) {
       long v, e;
-      const int w = locate_end(x, j, v, e);
+      const int w = locate_end(x, j, v, e, all, lo[j], hi[j]);
       if (w > 0) return true;
       if (w == 0) {
         const bool into = v >= 0 ? (j == 0 ? cone_u : cone_mu)[static_cast<std::size_t>(v)] != 0
@@ -142,16 +253,20 @@ struct FlatDepth2::General {
       const auto r = x(c);
       return std::array{c(f[j].x()) * r[2] + r[0], c(f[j].y()) * r[2] + r[1], r[2]};
     };
-    std::vector<signed char> sd(p.size());
-    for (std::size_t g = 0; g < p.size(); ++g)
-      sd[g] = static_cast<signed char>(exact_sign([&](auto c) {
+    auto sd = [&](std::size_t g) {
+      return exact_sign([&](auto c) {
         const auto a = A(c, 0);
         const auto ux = c(f[1].x()) - c(f[0].x()), uy = c(f[1].y()) - c(f[0].y());
         return ux * (c(p[g].y()) * a[2] - a[1]) - uy * (c(p[g].x()) * a[2] - a[0]);
-      }));
-    for (std::size_t g = 0; g < p.size(); ++g) {
+      });
+    };
+    // A proper crossing or a vertex inside the segment: only edges whose boxes meet the segment's
+    // (every vertex g starts edge g, whose box holds it).
+    return edges_until(all, lo[0].cwiseMin(lo[1]), hi[0].cwiseMax(hi[1]), [&](std::uint32_t gi) {
+      const std::size_t g = gi;
       const Vec2 &s = p[g], &e = p[next(g)];
-      if (sd[g] * sd[next(g)] < 0) {
+      const int sg = sd(g);
+      if (sg != 0 && sg * sd(next(g)) < 0) {
         auto o = [&](int j) {
           return exact_sign([&](auto c) {
             const auto a = A(c, j);
@@ -160,7 +275,7 @@ struct FlatDepth2::General {
         };
         if (o(0) * o(1) < 0) return true;
       }
-      if (sd[g] == 0 && (cone_u[g] || cone_mu[g])) {
+      if (sg == 0 && (cone_u[g] || cone_mu[g])) {
         auto along = [&](int j) {  // (p_g − end j)·u
           return exact_sign([&](auto c) {
             const auto a = A(c, j);
@@ -170,8 +285,8 @@ struct FlatDepth2::General {
         };
         if (along(0) > 0 && along(1) < 0) return true;
       }
-    }
-    return false;
+      return false;
+    });
   }
 
   // ---- candidates ----
@@ -396,8 +511,11 @@ Depth2 ray_result(const G& g, const Pt& x, const Vec2& t, const Vec2& d) {
 
 }  // namespace
 
-std::shared_ptr<const FlatDepth2::General> build(const std::vector<std::vector<Vec2>>& rings, std::span<const Vec2> F) {
-  return std::make_shared<const G>(rings, F);
+std::shared_ptr<const FlatDepth2::General> build(const std::vector<std::vector<Vec2>>& rings, std::span<const Vec2> F,
+                                                 bool brute) {
+  auto g = std::make_shared<G>(rings, F);
+  g->brute = brute;
+  return g;
 }
 
 bool overlapping(const G& g, const Vec2& t) {
@@ -438,25 +556,41 @@ Depth2 minimum(const G& g, const Vec2& t) {
       return (u1[0] - u0[0]) * (w[1] - u0[1]) - (u1[1] - u0[1]) * (w[0] - u0[0]);
     });
   };
-  for (std::size_t i = 0; i < near.size(); ++i)
-    for (std::size_t j = i + 1; j < near.size(); ++j) {
-      const std::size_t k = near[i], l = near[j];
-      if (box[i][1] < box[j][0] || box[j][1] < box[i][0] || box[i][3] < box[j][2] || box[j][3] < box[i][2]) continue;
-      const int o1 = orient(k, l, 0), o2 = orient(k, l, 1);
-      if (o1 * o2 > 0 || (o1 == 0 && o2 == 0)) continue;
-      const int o3 = orient(l, k, 0), o4 = orient(l, k, 1);
-      if (o3 * o4 > 0) continue;
-      const int s = exact_sign([&](auto c) {
-        const auto u0 = g.end(c, g.cands[k], 0), u1 = g.end(c, g.cands[k], 1);
-        const auto v0 = g.end(c, g.cands[l], 0), v1 = g.end(c, g.cands[l], 1);
-        return (u1[0] - u0[0]) * (v1[1] - v0[1]) - (u1[1] - u0[1]) * (v1[0] - v0[0]);
-      });
-      if (s == 0) continue;
-      Pt x{Pt::Cross, k, l, s};
-      const auto r = dist2(exact::LiftFl{}, g, x, t);
-      enclose(r[0], r[1], x.lo, x.hi);
-      if (x.lo <= best_hi) cross.push_back(x);
+  // The pairs i < j of near candidates whose boxes meet, found by a sweep over x and then taken in
+  // (i, j) order: the order of `cross` (and so of its sort, and the tie-breaking) is the one the
+  // all-pairs loop makes.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  {
+    std::vector<std::uint32_t> by_x(near.size());
+    for (std::size_t i = 0; i < near.size(); ++i) by_x[i] = static_cast<std::uint32_t>(i);
+    std::sort(by_x.begin(), by_x.end(), [&](std::uint32_t a, std::uint32_t b) { return box[a][0] < box[b][0]; });
+    for (std::size_t a = 0; a < by_x.size(); ++a) {
+      const auto& A = box[by_x[a]];
+      for (std::size_t b = a + 1; b < by_x.size() && !(A[1] < box[by_x[b]][0]); ++b) {
+        const auto& B = box[by_x[b]];
+        if (A[3] < B[2] || B[3] < A[2]) continue;
+        pairs.emplace_back(std::min(by_x[a], by_x[b]), std::max(by_x[a], by_x[b]));
+      }
     }
+    std::sort(pairs.begin(), pairs.end());
+  }
+  for (const auto& [i, j] : pairs) {
+    const std::size_t k = near[i], l = near[j];
+    const int o1 = orient(k, l, 0), o2 = orient(k, l, 1);
+    if (o1 * o2 > 0 || (o1 == 0 && o2 == 0)) continue;
+    const int o3 = orient(l, k, 0), o4 = orient(l, k, 1);
+    if (o3 * o4 > 0) continue;
+    const int s = exact_sign([&](auto c) {
+      const auto u0 = g.end(c, g.cands[k], 0), u1 = g.end(c, g.cands[k], 1);
+      const auto v0 = g.end(c, g.cands[l], 0), v1 = g.end(c, g.cands[l], 1);
+      return (u1[0] - u0[0]) * (v1[1] - v0[1]) - (u1[1] - u0[1]) * (v1[0] - v0[0]);
+    });
+    if (s == 0) continue;
+    Pt x{Pt::Cross, k, l, s};
+    const auto r = dist2(exact::LiftFl{}, g, x, t);
+    enclose(r[0], r[1], x.lo, x.hi);
+    if (x.lo <= best_hi) cross.push_back(x);
+  }
   Pt best2;
   if (nearest_valid(g, cross, t, valid, best2, best_hi) && (!found || nearer(g, best2, best, t))) best = best2, found = true;
   if (!found) return r;  // unreachable: a bounded O has a boundary

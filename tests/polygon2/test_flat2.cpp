@@ -24,6 +24,7 @@
 #include <random>
 
 #include "oracle.hpp"
+#include "polygon2/flat_depth2.hpp"
 #include "polygon2/triangulation.hpp"
 #include "shapes.hpp"
 
@@ -532,6 +533,81 @@ TEST(Flat2, NoFitPolygonIsM) {
   const auto seg = Pair2(sq, Shape2::segment(Vec2(0, 0), Vec2(1, 0))).no_fit_polygon();
   ASSERT_EQ(seg.polygons.size(), 1u);
   EXPECT_EQ(seg.polygons[0][0].size(), 4u);  // [-1, 4] × [0, 4]: the sweep is collinear with the edges
+}
+
+// The general path's box tree (flat_segment2.cpp: "segment meets int P" visits only the edges near
+// the tested segment, signs read off rigorous boxes) against the same path scanning all n edges
+// with exact signs only: every answer bit for bit, on random stars with holes (grid ones with
+// many collinear and touching cases) and combs up to a few hundred vertices, placements over M's
+// box and on grid points.
+void expect_same(const Depth2& a, const Depth2& b) {
+  EXPECT_EQ(a.depth, b.depth);
+  EXPECT_EQ(a.translation, b.translation);
+  EXPECT_EQ(a.normal, b.normal);
+  EXPECT_EQ(a.witness_p, b.witness_p);
+  EXPECT_EQ(a.witness_q, b.witness_q);
+  EXPECT_EQ(a.feature_p, b.feature_p);
+  EXPECT_EQ(a.feature_q, b.feature_q);
+  EXPECT_EQ(a.overlapping, b.overlapping);
+  EXPECT_EQ(a.kind, b.kind);
+}
+
+TEST(Flat2, SegmentGeneralPathBoxTreeEqualsFullScan) {
+  namespace fg = pendepth::polygon2::flat_general;
+  std::mt19937_64 rng(1616);
+  std::uniform_real_distribution<double> u(-1, 1);
+  int overlapping = 0, apart = 0;
+  for (int iter = 0; iter < 14; ++iter) {
+    std::vector<std::vector<Vec2>> rings;
+    const bool grid = iter % 3 == 1;
+    if (iter % 5 == 4) {
+      const Shape2 comb(polygon2_test::comb_ring(4 + 5 * iter, 2, 1, 3, 1));
+      rings = {std::vector<Vec2>(comb.polygon().ring(0).begin(), comb.polygon().ring(0).end())};
+    } else {
+      const int n = std::vector<int>{8, 24, 60, 150, 300}[iter % 5];
+      const pendepth::Polygon poly = polygon2_test::random_polygon(rng, n, iter % 3, grid);
+      for (std::size_t k = 0; k < poly.ring_count(); ++k) rings.emplace_back(poly.ring(k).begin(), poly.ring(k).end());
+    }
+    Vec2 lo = rings[0][0], hi = lo;
+    for (const auto& r : rings)
+      for (const Vec2& p : r) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    const double span = (hi - lo).maxCoeff();
+    std::array<Vec2, 2> F{Vec2(u(rng), u(rng)) * span / 8, Vec2(u(rng), u(rng)) * span / 8};
+    if (grid || iter % 5 == 4) F = {Vec2(std::round(F[0].x()), std::round(F[0].y())), Vec2(std::round(F[0].x()) + 1 + rng() % 2, std::round(F[0].y()))};
+    const auto fast = fg::build(rings, F), slow = fg::build(rings, F, true);
+    for (int k = 0; k < 24; ++k) {
+      SCOPED_TRACE("iter " + std::to_string(iter) + " k " + std::to_string(k));
+      Vec2 t((lo.x() + hi.x()) / 2 + u(rng) * span * 0.6, (lo.y() + hi.y()) / 2 + u(rng) * span * 0.6);
+      if (grid || k % 4 == 0) t = Vec2(std::round(t.x()), std::round(t.y()));
+      const Vec2 d = nonzero(random_dir(rng));
+      const bool in = fg::overlapping(*fast, t);
+      ASSERT_EQ(in, fg::overlapping(*slow, t));
+      (in ? overlapping : apart) += 1;
+      expect_same(fg::minimum(*fast, t), fg::minimum(*slow, t));
+      expect_same(fg::along(*fast, t, d), fg::along(*slow, t, d));
+      expect_same(fg::separation(*fast, t, d), fg::separation(*slow, t, d));
+      const Distance2 a = fg::signed_distance(*fast, t), b = fg::signed_distance(*slow, t);
+      EXPECT_EQ(a.distance, b.distance);
+      EXPECT_EQ(a.translation, b.translation);
+      EXPECT_EQ(a.normal, b.normal);
+      EXPECT_EQ(a.witness_p, b.witness_p);
+      EXPECT_EQ(a.witness_q, b.witness_q);
+      EXPECT_EQ(a.feature_p, b.feature_p);
+      EXPECT_EQ(a.feature_q, b.feature_q);
+      EXPECT_EQ(a.overlapping, b.overlapping);
+      const Cast2 c = fg::cast(*fast, t, d), e = fg::cast(*slow, t, d);
+      EXPECT_EQ(c.distance, e.distance);
+      EXPECT_EQ(c.translation, e.translation);
+      EXPECT_EQ(c.normal, e.normal);
+      EXPECT_EQ(c.witness_p, e.witness_p);
+      EXPECT_EQ(c.feature_p, e.feature_p);
+      EXPECT_EQ(c.feature_q, e.feature_q);
+      EXPECT_EQ(c.hit, e.hit);
+      EXPECT_EQ(c.overlapping, e.overlapping);
+    }
+  }
+  EXPECT_GT(overlapping, 80);
+  EXPECT_GT(apart, 80);
 }
 
 }  // namespace
