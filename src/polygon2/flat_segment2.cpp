@@ -647,19 +647,8 @@ Depth2 separation(const G& g, const Vec2& t, const Vec2& d) {
 }
 
 Distance2 signed_distance(const G& g, const Vec2& t) {
+  if (overlapping(g, t)) return overlap_distance(minimum(g, t));
   Distance2 r;
-  if (overlapping(g, t)) {
-    const Depth2 s = minimum(g, t);
-    r.distance = -s.depth;
-    r.translation = s.translation;
-    r.normal = s.normal;
-    r.witness_p = s.witness_p;
-    r.witness_q = s.witness_q - s.translation;
-    r.feature_p = s.feature_p;
-    r.feature_q = s.feature_q;
-    r.overlapping = true;
-    return r;
-  }
   // Apart or touching: the nearest point of the closed M, on the candidates.
   std::vector<Pt> pts = ends_and_feet(g, t);
   Pt best;
