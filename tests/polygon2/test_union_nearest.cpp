@@ -83,7 +83,10 @@ void compare(const std::string& what, const Polygon& P, const ConvexPolygon& Q, 
 TEST(UnionNearestFirst, DenseStarsMatchPreviousMethod) {
   std::mt19937_64 rng(1919);
   Totals tot;
-  for (int it = 0; it < pendepth_test::scaled(8); ++it) {
+  // Every shape is generated (the same shapes in every build); a scaled build (Debug, sanitizers)
+  // compares only the last, largest ones, where the first pass decides candidates.
+  const int first = 8 - pendepth_test::scaled(8);
+  for (int it = 0; it < 8; ++it) {
     const int n = 400 + 200 * it;
     // Odd cases: integer coordinates (exact collinearities), the star scaled by 16 so that the
     // rounding keeps it simple.
@@ -98,21 +101,23 @@ TEST(UnionNearestFirst, DenseStarsMatchPreviousMethod) {
       }
     }();
     const ConvexPolygon Q = polygon2_test::random_convex(rng, 3 + 13 * (it % 4), (4 + it) * s, grid);
-    compare("star " + std::to_string(it), P, Q, tot);
+    if (it >= first) compare("star " + std::to_string(it), P, Q, tot);
   }
   std::printf("dense stars: %zu cases, %zu pieces, %zu candidates decided by the first pass\n", tot.cases, tot.pieces,
               tot.candidates_early);
-  EXPECT_GT(tot.candidates_early, 1000u);  // the pass ran (the comparison is not vacuous)
+  // The pass ran (the comparison is not vacuous): 4,701 candidates over all 8 stars in Release.
+  EXPECT_GT(tot.candidates_early, pendepth_test::kDivisor == 1 ? 1000u : 100u);
 }
 
 TEST(UnionNearestFirst, RandomPolygonsWithHolesMatchPreviousMethod) {
   std::mt19937_64 rng(2026);
   Totals tot;
-  for (int it = 0; it < pendepth_test::scaled(24); ++it) {
+  const int first = 24 - pendepth_test::scaled(24);  // a scaled build: the last, largest cases
+  for (int it = 0; it < 24; ++it) {
     // Integer coordinates only while the rounded star stays simple (small n).
     const Polygon P = polygon2_test::random_polygon(rng, 40 + 30 * it, it % 5, it % 3 == 0 && it < 6);
     const ConvexPolygon Q = polygon2_test::random_convex(rng, 3 + it % 11, 2 + it, it % 4 == 0);
-    compare("random " + std::to_string(it), P, Q, tot);
+    if (it >= first) compare("random " + std::to_string(it), P, Q, tot);
   }
   std::printf("random: %zu cases, %zu pieces, %zu candidates decided by the first pass\n", tot.cases, tot.pieces,
               tot.candidates_early);
