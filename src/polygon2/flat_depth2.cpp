@@ -244,6 +244,33 @@ Vec2 edge_normal(const V& u, const V& w) {
   return Vec2(ey / len, (0 - ex) / len);
 }
 
+// The offset from t to the nearest feature of ∂M, each value rounded once from its exact expression:
+// a vertex m → the vector m − t; an edge u → w → cross(w − u, t − u) / |w − u| (> 0 when t is on
+// the interior's side) and the edge's outward unit normal. Shared by σ and the signed distance.
+struct NearOffset {
+  Vec2 to_vertex = Vec2(0, 0);
+  double edge_value = 0;
+  Vec2 normal = Vec2(0, 0);
+};
+
+NearOffset near_offset(const V& u, const V* w, const Vec2& t) {
+  NearOffset o;
+  if (!w) {
+    o.to_vertex = Vec2(exact::accurate_value([&](auto c) { return mx(c, u) - c(t.x()); }),
+                       exact::accurate_value([&](auto c) { return my(c, u) - c(t.y()); }));
+    return o;
+  }
+  const double cr = exact::accurate_value([&](auto c) {
+    return (mx(c, *w) - mx(c, u)) * (c(t.y()) - my(c, u)) - (my(c, *w) - my(c, u)) * (c(t.x()) - mx(c, u));
+  });
+  const double ex = exact::accurate_value([&](auto c) { return mx(c, *w) - mx(c, u); });
+  const double ey = exact::accurate_value([&](auto c) { return my(c, *w) - my(c, u); });
+  const double len = norm_of(ex, ey);
+  o.edge_value = cr / len;
+  o.normal = Vec2(ey / len, (0 - ex) / len);
+  return o;
+}
+
 }  // namespace
 
 Depth2 FlatDepth2::minimum(const Vec2& t) const {
@@ -253,22 +280,14 @@ Depth2 FlatDepth2::minimum(const Vec2& t) const {
   if (locate(t) != Where::Inside) return r;
   r.overlapping = true;
   const Near n = nearest(t);
+  const NearOffset o = near_offset(v_[n.k], n.edge ? &v_[next(n.k)] : nullptr, t);
   if (!n.edge) {
-    const V& m = v_[n.k];
-    r.translation = Vec2(exact::accurate_value([&](auto c) { return mx(c, m) - c(t.x()); }),
-                         exact::accurate_value([&](auto c) { return my(c, m) - c(t.y()); }));
+    r.translation = o.to_vertex;
     r.depth = norm_of(r.translation.x(), r.translation.y());
     r.normal = r.translation / r.depth;
   } else {
-    const V &u = v_[n.k], &w = v_[next(n.k)];
-    const double cr = exact::accurate_value([&](auto c) {
-      return (mx(c, w) - mx(c, u)) * (c(t.y()) - my(c, u)) - (my(c, w) - my(c, u)) * (c(t.x()) - mx(c, u));
-    });
-    const double ex = exact::accurate_value([&](auto c) { return mx(c, w) - mx(c, u); });
-    const double ey = exact::accurate_value([&](auto c) { return my(c, w) - my(c, u); });
-    const double len = norm_of(ex, ey);
-    r.depth = cr / len;
-    r.normal = Vec2(ey / len, (0 - ex) / len);
+    r.depth = o.edge_value;
+    r.normal = o.normal;
     r.translation = r.depth * r.normal;
   }
   r.witness_p = r.witness_q = contact(n.edge, n.k, t + r.translation);
@@ -302,22 +321,14 @@ Distance2 FlatDepth2::signed_distance(const Vec2& t) const {
     r.witness_p = r.witness_q = contact(n.edge, n.k, t);
     return r;
   }
+  const NearOffset o = near_offset(v_[n.k], n.edge ? &v_[next(n.k)] : nullptr, t);
   if (!n.edge) {
-    const V& m = v_[n.k];
-    r.translation = Vec2(exact::accurate_value([&](auto c) { return mx(c, m) - c(t.x()); }),
-                         exact::accurate_value([&](auto c) { return my(c, m) - c(t.y()); }));
+    r.translation = o.to_vertex;
     r.distance = norm_of(r.translation.x(), r.translation.y());
     r.normal = (Vec2(0, 0) - r.translation) / r.distance;
   } else {
-    const V &u = v_[n.k], &w = v_[next(n.k)];
-    const double cr = exact::accurate_value([&](auto c) {
-      return (mx(c, w) - mx(c, u)) * (c(t.y()) - my(c, u)) - (my(c, w) - my(c, u)) * (c(t.x()) - mx(c, u));
-    });
-    const double ex = exact::accurate_value([&](auto c) { return mx(c, w) - mx(c, u); });
-    const double ey = exact::accurate_value([&](auto c) { return my(c, w) - my(c, u); });
-    const double len = norm_of(ex, ey);
-    r.distance = (0 - cr) / len;
-    r.normal = Vec2(ey / len, (0 - ex) / len);
+    r.distance = 0 - o.edge_value;  // (−cr) / len = −(cr / len): rounding is symmetric
+    r.normal = o.normal;
     r.translation = Vec2(0, 0) - r.distance * r.normal;
   }
   r.witness_p = contact(n.edge, n.k, t + r.translation);
