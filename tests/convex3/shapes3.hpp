@@ -11,6 +11,7 @@
 #include <random>
 #include <string>
 #include <vector>
+#include "test_ulps.hpp"
 
 namespace pendepth::test3 {
 
@@ -79,11 +80,7 @@ inline std::vector<Vec3> random_ball(std::mt19937_64& rng, int n, double r = 1) 
 }
 
 /// |a − b| in ulps of the larger magnitude (0 when both are 0).
-inline double ulps(double a, double b) {
-  double scale = std::max(std::abs(a), std::abs(b));
-  if (scale == 0) return 0;
-  return std::abs(a - b) / (std::ldexp(1.0, std::ilogb(scale)) * 0x1p-52);
-}
+inline double ulps(double a, double b) { return pendepth_test::ulps_in_binade(a, b); }
 
 inline std::vector<std::string> shared_hull_files() {
   std::vector<std::string> f;

@@ -17,23 +17,19 @@
 #include <random>
 #include <string>
 #include <vector>
+#include "test_ulps.hpp"
+#include "test_rotations.hpp"
 
 namespace pendepth {
 namespace {
 
-Eigen::Quaterniond random_rotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> N(0, 1);
-  return Eigen::Quaterniond(N(rng), N(rng), N(rng), N(rng)).normalized();
-}
+Eigen::Quaterniond random_rotation(std::mt19937_64& rng) { return pendepth_test::random_unit_quaternion(rng); }
 Vec3 random_in_ball(std::mt19937_64& rng) {
   std::uniform_real_distribution<double> U(-1, 1);
   for (;;)
     if (Vec3 v(U(rng), U(rng), U(rng)); v.norm() <= 1) return v;
 }
-double ulps(double a, double b) {
-  const double s = std::max(std::abs(a), std::abs(b));
-  return s == 0 ? 0 : std::abs(a - b) / (std::ldexp(1.0, std::ilogb(s)) * 0x1p-52);
-}
+double ulps(double a, double b) { return pendepth_test::ulps_in_binade(a, b); }
 
 TEST(CastFast, SharedHullsFastPathAgreesWithDescent) {
   std::vector<std::string> files;

@@ -8,6 +8,7 @@
 #include "shapes3.hpp"
 
 #include <limits>
+#include "test_rotations.hpp"
 
 namespace pendepth {
 namespace {
@@ -44,10 +45,7 @@ Ref reference(const ConvexPolytope& P, const std::vector<Vec3>& Qw, const Vec3* 
   return r;
 }
 
-Eigen::Quaterniond random_rotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  return Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)).normalized();
-}
+Eigen::Quaterniond random_rotation(std::mt19937_64& rng) { return pendepth_test::random_unit_quaternion(rng); }
 
 std::vector<Vec3> random_dirs(std::mt19937_64& rng, int k) {
   std::normal_distribution<double> g;

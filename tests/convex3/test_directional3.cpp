@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <limits>
+#include "test_rotations.hpp"
 
 namespace pendepth::convex3 {
 Depth3 directional_depth_dk(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
@@ -110,10 +111,7 @@ void check_one(const Depth3& a, const Depth3& r, const ConvexPolytope& P, const 
   }
 }
 
-Eigen::Quaterniond random_rotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  return Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)).normalized();
-}
+Eigen::Quaterniond random_rotation(std::mt19937_64& rng) { return pendepth_test::random_unit_quaternion(rng); }
 
 std::vector<Vec3> directions(std::mt19937_64& rng, int k) {
   std::normal_distribution<double> g;

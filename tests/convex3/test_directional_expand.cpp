@@ -20,6 +20,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include "test_rotations.hpp"
 
 namespace pendepth::convex3 {
 Depth3 directional_depth_facets(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
@@ -104,10 +105,7 @@ void check(const ConvexPolytope& P, const Pose3& pp, const ConvexPolytope& Q, co
   if (failed_parts() != failures) ++st.failures;
 }
 
-Eigen::Quaterniond random_rotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  return Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)).normalized();
-}
+Eigen::Quaterniond random_rotation(std::mt19937_64& rng) { return pendepth_test::random_unit_quaternion(rng); }
 
 std::vector<Vec3> directions(std::mt19937_64& rng, int k) {
   std::normal_distribution<double> g;

@@ -19,14 +19,13 @@
 #include <limits>
 #include <random>
 #include <vector>
+#include "test_ulps.hpp"
+#include "test_rotations.hpp"
 
 namespace pendepth {
 namespace {
 
-double ulps(double a, double b) {
-  const double s = std::max(std::abs(a), std::abs(b));
-  return s == 0 ? 0 : std::abs(a - b) / (std::ldexp(1.0, std::ilogb(s)) * 0x1p-52);
-}
+double ulps(double a, double b) { return pendepth_test::ulps_in_binade(a, b); }
 
 Vec3 closest_on_segment(const Vec3& x, const Vec3& a, const Vec3& b) {
   const Vec3 e = b - a;
@@ -78,10 +77,7 @@ double brute_distance(const ConvexPolytope& P, const Pose3& pp, const ConvexPoly
   return best;
 }
 
-Eigen::Quaterniond random_rotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  return Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng));
-}
+Eigen::Quaterniond random_rotation(std::mt19937_64& rng) { return pendepth_test::random_quaternion(rng); }
 
 TEST(Distance3, BruteForceFeaturePairsAgree) {
   std::mt19937_64 rng(31);

@@ -24,6 +24,7 @@
 #include <random>
 #include <string>
 #include <vector>
+#include "test_rotations.hpp"
 
 namespace pendepth {
 namespace {
@@ -42,11 +43,7 @@ bool same(const Distance3& a, const Distance3& b) {
          a.overlapping == b.overlapping;
 }
 
-Eigen::Quaterniond random_rotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> N(0, 1);
-  Eigen::Quaterniond q(N(rng), N(rng), N(rng), N(rng));
-  return q.normalized();
-}
+Eigen::Quaterniond random_rotation(std::mt19937_64& rng) { return pendepth_test::random_unit_quaternion(rng); }
 
 struct Tally {
   int queries = 0, fast = 0, mismatches = 0, mismatches_margin0 = 0;

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include "test_rotations.hpp"
 
 namespace pendepth {
 namespace {
@@ -131,10 +132,7 @@ void check(const ConvexPolytope& P, const Pose3& pp, const ConvexPolytope& Q, co
   }
 }
 
-Eigen::Quaterniond random_rotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  return Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)).normalized();
-}
+Eigen::Quaterniond random_rotation(std::mt19937_64& rng) { return pendepth_test::random_unit_quaternion(rng); }
 
 Vec3 centroid(const ConvexPolytope& S) {
   Vec3 c = Vec3::Zero();

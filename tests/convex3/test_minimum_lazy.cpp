@@ -17,6 +17,7 @@
 #include <random>
 #include <string>
 #include <vector>
+#include "test_rotations.hpp"
 
 namespace pendepth {
 namespace {
@@ -82,10 +83,7 @@ void compare(const ConvexPolytope& P, const ConvexPolytope& Q, const Pose3& pq, 
   }
 }
 
-Eigen::Quaterniond random_rotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  return Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)).normalized();
-}
+Eigen::Quaterniond random_rotation(std::mt19937_64& rng) { return pendepth_test::random_unit_quaternion(rng); }
 
 Vec3 centroid(const ConvexPolytope& S) {
   Vec3 c = Vec3::Zero();

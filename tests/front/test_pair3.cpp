@@ -15,6 +15,7 @@
 
 #include "convex3/shapes3.hpp"
 #include "front/common.hpp"
+#include "test_rotations.hpp"
 
 namespace {
 
@@ -24,11 +25,7 @@ using front_test::same;
 using front_test::same_bits;
 bool same_bits(const Vec3& a, const Vec3& b) { return front_test::same_bits_v(a, b); }
 
-Eigen::Quaterniond random_rotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  Eigen::Quaterniond q(g(rng), g(rng), g(rng), g(rng));
-  return q;  // not normalised: the library normalises
-}
+Eigen::Quaterniond random_rotation(std::mt19937_64& rng) { return pendepth_test::random_quaternion(rng); }
 
 std::vector<Pose3> random_poses(std::mt19937_64& rng, std::size_t n, double spread) {
   std::uniform_real_distribution<double> u(-spread, spread);

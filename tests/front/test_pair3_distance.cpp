@@ -21,6 +21,7 @@
 
 #include "convex3/shapes3.hpp"
 #include "front/common.hpp"
+#include "test_rotations.hpp"
 
 namespace {
 
@@ -49,10 +50,7 @@ using front_test::same_bits_v;
   return ::testing::AssertionFailure() << "cast " << a.distance << " vs " << b.distance;
 }
 
-Eigen::Quaterniond random_rotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  return Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng));
-}
+Eigen::Quaterniond random_rotation(std::mt19937_64& rng) { return pendepth_test::random_quaternion(rng); }
 
 std::vector<Pose3> random_poses(std::mt19937_64& rng, std::size_t n, double spread) {
   std::uniform_real_distribution<double> u(-spread, spread);

@@ -13,16 +13,14 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include "test_rotations.hpp"
 
 namespace pendepth {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-Eigen::Quaterniond random_rotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  return Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)).normalized();
-}
+Eigen::Quaterniond random_rotation(std::mt19937_64& rng) { return pendepth_test::random_unit_quaternion(rng); }
 
 // |a − b| within `ulps` ulps of the larger magnitude `scale` (absolute: closed forms are evaluated
 // in doubles too, so both sides carry rounding of the coordinates' size).

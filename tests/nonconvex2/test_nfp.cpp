@@ -20,6 +20,7 @@
 #include "oracle.hpp"
 #include "polygon2/shapes.hpp"
 #include "test_scale.hpp"
+#include "test_ulps.hpp"
 
 namespace {
 
@@ -35,10 +36,7 @@ using pendepth::Vec2;
 
 constexpr double kMaxUlps = 8;
 
-double ulps(double got, double want) {
-  if (want == 0) return got == 0 ? 0 : INFINITY;
-  return std::abs(got - want) / (std::abs(want) * 0x1p-52);
-}
+double ulps(double a, double b) { return pendepth_test::ulps_of_want(a, b); }
 
 struct Stats {
   std::size_t pairs = 0, placements = 0, overlapping = 0, along = 0, minimum = 0, vertices = 0, rings = 0, slits = 0, points = 0;

@@ -15,6 +15,7 @@
 #include "oracle.hpp"
 #include "polygon2/shapes.hpp"
 #include "test_scale.hpp"
+#include "test_ulps.hpp"
 
 namespace {
 
@@ -28,10 +29,7 @@ using pendepth::Vec2;
 constexpr double kMaxUlps = 8;
 
 // Relative error in units of 2^-52; an exact zero must be reproduced exactly.
-double ulps(double got, double want) {
-  if (want == 0) return got == 0 ? 0 : INFINITY;
-  return std::abs(got - want) / (std::abs(want) * 0x1p-52);
-}
+double ulps(double a, double b) { return pendepth_test::ulps_of_want(a, b); }
 
 struct Stats {
   std::size_t queries = 0, overlapping = 0, minimum_queries = 0, pair_total = 0, pairs_examined = 0, along_queries = 0;

@@ -33,17 +33,15 @@
 #include <limits>
 #include <random>
 #include <string>
+#include "test_ulps.hpp"
+#include "test_rotations.hpp"
 
 namespace pendepth {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-double ulps(double a, double b) {
-  double scale = std::max(std::abs(a), std::abs(b));
-  if (scale == 0) return 0;
-  return std::abs(a - b) / (std::ldexp(1.0, std::ilogb(scale)) * 0x1p-52);
-}
+double ulps(double a, double b) { return pendepth_test::ulps_in_binade(a, b); }
 
 struct Stats {
   int apart = 0, touching = 0, overlapping = 0, casts = 0, hits = 0, grazing = 0, grazing_hits = 0, graze_direct = 0;
@@ -56,10 +54,7 @@ struct Stats {
   }
 };
 
-Eigen::Quaterniond random_rotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  return Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng));
-}
+Eigen::Quaterniond random_rotation(std::mt19937_64& rng) { return pendepth_test::random_quaternion(rng); }
 
 Eigen::Quaterniond exact_rotation(int k) {
   static const double Q[6][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {.5, .5, .5, .5}, {.5, -.5, .5, -.5}, {0, 0, 0, 1}};

@@ -20,22 +20,17 @@
 #include <limits>
 #include <random>
 #include <string>
+#include "test_ulps.hpp"
+#include "test_rotations.hpp"
 
 namespace pendepth {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-double ulps(double a, double b) {
-  const double scale = std::max(std::abs(a), std::abs(b));
-  if (scale == 0) return 0;
-  return std::abs(a - b) / (std::ldexp(1.0, std::ilogb(scale)) * 0x1p-52);
-}
+double ulps(double a, double b) { return pendepth_test::ulps_in_binade(a, b); }
 
-Eigen::Quaterniond random_rotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  return Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng));
-}
+Eigen::Quaterniond random_rotation(std::mt19937_64& rng) { return pendepth_test::random_quaternion(rng); }
 
 // The core distance of A (pose pa) and B (pose pb) by the CGAL oracle; NaN when the differences
 // do not span a solid (the oracle's hull is flat: checked by the closed forms below instead).

@@ -32,17 +32,15 @@
 #include <limits>
 #include <random>
 #include <string>
+#include "test_ulps.hpp"
+#include "test_rotations.hpp"
 
 namespace pendepth {
 namespace {
 
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-double ulps(double a, double b) {
-  double scale = std::max(std::abs(a), std::abs(b));
-  if (scale == 0) return 0;
-  return std::abs(a - b) / (std::ldexp(1.0, std::ilogb(scale)) * 0x1p-52);
-}
+double ulps(double a, double b) { return pendepth_test::ulps_in_binade(a, b); }
 
 struct Stats {
   int sigma = 0, sigma_over = 0, sigma_d = 0, sigma_d_over = 0, touching = 0;
@@ -77,10 +75,7 @@ class Summary : public ::testing::Environment {
 };
 [[maybe_unused]] auto* const kSummary = ::testing::AddGlobalTestEnvironment(new Summary);
 
-Eigen::Quaterniond random_rotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  return Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng));
-}
+Eigen::Quaterniond random_rotation(std::mt19937_64& rng) { return pendepth_test::random_quaternion(rng); }
 
 // Rotations whose double matrix is exact: the 12 of the tetrahedral group.
 Eigen::Quaterniond exact_rotation(int k) {

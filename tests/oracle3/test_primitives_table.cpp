@@ -21,16 +21,14 @@
 #include <random>
 #include <string>
 #include <vector>
+#include "test_rotations.hpp"
 
 namespace pendepth {
 namespace {
 
 using LV = Eigen::Matrix<long double, 3, 1>;
 
-Eigen::Quaterniond random_rotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  return Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng));
-}
+Eigen::Quaterniond random_rotation(std::mt19937_64& rng) { return pendepth_test::random_quaternion(rng); }
 
 // A primitive: the Shape3 and what the oracle needs (core points in its own frame, radius, kind).
 struct Prim {

@@ -15,6 +15,7 @@
 #include "oracle.hpp"
 #include "polygon2/convolved_triangles.hpp"
 #include "shapes.hpp"
+#include "test_ulps.hpp"
 
 namespace {
 
@@ -37,10 +38,7 @@ struct Stats {
 
 // Relative error in units of 2^-52 of `got` against the correctly rounded-ish `want`; an exact
 // zero must be reproduced exactly.
-double ulps(double got, double want) {
-  if (want == 0) return got == 0 ? 0 : INFINITY;
-  return std::abs(got - want) / (std::abs(want) * 0x1p-52);
-}
+double ulps(double a, double b) { return pendepth_test::ulps_of_want(a, b); }
 
 void check_pair(const Polygon& P, const ConvexPolygon& Q, std::mt19937_64& rng, int random_queries, Stats& st,
                 const std::string& what) {

@@ -22,6 +22,7 @@
 #include "polygon2/query_impl.hpp"
 #include "polygon2/triangulation.hpp"
 #include "shapes.hpp"
+#include "test_ulps.hpp"
 
 namespace {
 
@@ -38,10 +39,7 @@ std::vector<std::array<Vec2, 3>> triangles_of(const Polygon& P) {
   return out;
 }
 
-double ulps(double got, double want) {
-  if (want == 0) return got == 0 ? 0 : INFINITY;
-  return std::abs(got - want) / (std::abs(want) * 0x1p-52);
-}
+double ulps(double a, double b) { return pendepth_test::ulps_of_want(a, b); }
 
 struct Stats {
   std::size_t cases = 0, pieces = 0, vertices_checked = 0, slit_vertices = 0, rays = 0, rays_overlapping = 0,
