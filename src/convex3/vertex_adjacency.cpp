@@ -34,6 +34,52 @@ Vec3 cell_direction(int face, int i, int j, int k) {
   return u;
 }
 
+// The flat faces of level 0 (see VertexAdjacency::face_of): triangles in increasing id, each
+// unassigned one floods its face across diagonals (level-0 edges that are not true edges). O(n log n).
+void build_flat_faces(const PolytopeData& d, VertexAdjacency& a) {
+  const DKLevel& L = d.levels[0];
+  const int nt = static_cast<int>(d.tris.size());
+  auto true_edge = [&](int h) {
+    const int e = std::min(h, L.twin[h]);
+    return std::binary_search(d.edges.begin(), d.edges.end(), e);
+  };
+  auto lex_less = [&](int x, int y) {
+    const Vec3 &p = d.v[x], &q = d.v[y];
+    return p[0] != q[0] ? p[0] < q[0] : p[1] != q[1] ? p[1] < q[1] : p[2] < q[2];
+  };
+  a.face_of.assign(nt, -1);
+  a.face_start.assign(1, 0);
+  a.face_tris.clear();
+  a.face_canon.clear();
+  for (int t = 0; t < nt; ++t) {
+    if (a.face_of[t] >= 0) continue;
+    const int f = static_cast<int>(a.face_canon.size()), first = static_cast<int>(a.face_tris.size());
+    a.face_of[t] = f;
+    a.face_tris.push_back(t);
+    for (std::size_t q = first; q < a.face_tris.size(); ++q)
+      for (int k = 0; k < 3; ++k) {
+        const int h = 3 * a.face_tris[q] + k;
+        if (true_edge(h)) continue;
+        const int g = L.twin[h] / 3;
+        if (a.face_of[g] < 0) a.face_of[g] = f, a.face_tris.push_back(g);
+      }
+    int least = d.tris[t][0];
+    for (std::size_t q = first; q < a.face_tris.size(); ++q)
+      for (int x : d.tris[a.face_tris[q]])
+        if (lex_less(x, least)) least = x;
+    int next = -1, prev = -1;
+    for (std::size_t q = first; q < a.face_tris.size(); ++q)
+      for (int k = 0; k < 3; ++k) {
+        const int h = 3 * a.face_tris[q] + k;
+        if (!true_edge(h)) continue;
+        if (L.origin(h) == least) next = L.target(h);
+        if (L.target(h) == least) prev = L.origin(h);
+      }
+    a.face_canon.push_back({t, least, next, prev});
+    a.face_start.push_back(static_cast<int>(a.face_tris.size()));
+  }
+}
+
 }  // namespace
 
 const VertexAdjacency& vertex_adjacency(const PolytopeData& d) {
@@ -78,6 +124,7 @@ const VertexAdjacency& vertex_adjacency(const PolytopeData& d) {
           v = climb_rounded(d, a, cell_direction(face, i, j, k), v);
           a.cube[(face * k + i) * k + j] = v;
         }
+    build_flat_faces(d, a);
   });
   return d.adjacency_cache.value;
 }
