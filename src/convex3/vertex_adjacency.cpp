@@ -35,14 +35,13 @@ Vec3 cell_direction(int face, int i, int j, int k) {
 }
 
 // The flat faces of level 0 (see VertexAdjacency::face_of): triangles in increasing id, each
-// unassigned one floods its face across diagonals (level-0 edges that are not true edges). O(n log n).
+// unassigned one floods its face across diagonals (level-0 edges that are not true edges). O(n).
 void build_flat_faces(const PolytopeData& d, VertexAdjacency& a) {
   const DKLevel& L = d.levels[0];
   const int nt = static_cast<int>(d.tris.size());
-  auto true_edge = [&](int h) {
-    const int e = std::min(h, L.twin[h]);
-    return std::binary_search(d.edges.begin(), d.edges.end(), e);
-  };
+  std::vector<char> is_true(L.fv.size(), 0);  // half-edge h lies on a true edge (not a diagonal)
+  for (int e : d.edges) is_true[e] = is_true[L.twin[e]] = 1;
+  auto true_edge = [&](int h) { return is_true[h] != 0; };
   auto lex_less = [&](int x, int y) {
     const Vec3 &p = d.v[x], &q = d.v[y];
     return p[0] != q[0] ? p[0] < q[0] : p[1] != q[1] ? p[1] < q[1] : p[2] < q[2];
