@@ -67,7 +67,8 @@
 // them by (feature kinds, coordinates of three spanning pairs). Features: a face of P and the
 // lexicographically least vertex of Q's support set, a vertex of P (least) and a face of Q, or
 // two edges (P's face preferred, as in minkowski_facets); a face is reported by its least
-// triangle id. Depth, normal and witnesses are computed from three pairs the features fix (the
+// triangle id (flat faces, their least vertex and boundary neighbours: per-shape tables of
+// vertex_adjacency.cpp, O(1) per query). Depth, normal and witnesses are computed from three pairs the features fix (the
 // face's least vertex and its two boundary neighbours with Q's vertex; P's vertex with Q's
 // triangle; the edges' least endpoints): depth = d_F, lower_bound = upper_bound = depth,
 // witnesses = the contact point after the move as in the reference (depth3.cpp): Q's vertex

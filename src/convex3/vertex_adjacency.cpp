@@ -1,7 +1,8 @@
 // Vertex adjacency of a ConvexPolytope in flat arrays (CSR), built once per shape on first use:
 // the neighbours of v in counter-clockwise order (seen from outside) with their half-edge ids
-// and the rounded edge vectors, coordinate extents, and a cube map of seed
-// vertices for support queries. Hill-climbing support queries (minimum_expand.cpp) scan these
+// and the rounded edge vectors, coordinate extents, a cube map of seed
+// vertices for support queries, and the flat faces of level 0 with their canonical corner (σ's
+// canonical answer). Hill-climbing support queries (minimum_expand.cpp) scan these
 // arrays instead of chasing half-edge twins, and start from the cube map when they have no
 // better warm start. O(n) time and memory (the cube map has about n cells).
 #include "convex3/polytope_data.hpp"
