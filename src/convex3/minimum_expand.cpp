@@ -67,7 +67,8 @@
 // them by (feature kinds, coordinates of three spanning pairs). Features: a face of P and the
 // lexicographically least vertex of Q's support set, a vertex of P (least) and a face of Q, or
 // two edges (P's face preferred, as in minkowski_facets); a face is reported by its least
-// triangle id. Depth, normal and witnesses are computed from three pairs the features fix (the
+// triangle id (flat faces, their least vertex and boundary neighbours: per-shape tables of
+// vertex_adjacency.cpp, O(1) per query). Depth, normal and witnesses are computed from three pairs the features fix (the
 // face's least vertex and its two boundary neighbours with Q's vertex; P's vertex with Q's
 // triangle; the edges' least endpoints): depth = d_F, lower_bound = upper_bound = depth,
 // witnesses = the contact point after the move as in the reference (depth3.cpp): Q's vertex
@@ -1398,16 +1399,12 @@ class Expander {
     const int e = std::min(h, S.levels[0].twin[h]);
     return std::binary_search(S.edges.begin(), S.edges.end(), e);
   }
-  // face_: the triangles of S's flat face containing triangle t (flood across diagonals).
+  // face_: the triangles of S's flat face containing triangle t (precomputed per shape:
+  // VertexAdjacency::face_of).
   void flat_face(const PolytopeData& S, int t) {
-    face_.assign(1, t);
-    for (std::size_t q = 0; q < face_.size(); ++q)
-      for (int k = 0; k < 3; ++k) {
-        const int h = 3 * face_[q] + k;
-        if (true_edge(S, h)) continue;
-        const int g = S.levels[0].twin[h] / 3;
-        if (std::find(face_.begin(), face_.end(), g) == face_.end()) face_.push_back(g);
-      }
+    const VertexAdjacency& A = &S == &P_ ? AP_ : AQ_;
+    const int f = A.face_of[t];
+    face_.assign(A.face_tris.begin() + A.face_start[f], A.face_tris.begin() + A.face_start[f + 1]);
   }
   // Vertices in the lexicographic order of their coordinates (distinct vertices differ): the
   // canonical choices below depend on the shapes' geometry, not on their vertex numbering (a
@@ -1423,25 +1420,10 @@ class Expander {
     int tri, least;
     std::array<int, 3> t;
   };
-  FaceCanon face_canon(const PolytopeData& S, int t) {
-    flat_face(S, t);
-    FaceCanon c{face_[0], S.tris[face_[0]][0], {}};
-    for (int g : face_) {
-      c.tri = std::min(c.tri, g);
-      for (int x : S.tris[g])
-        if (lex_less(S, x, c.least)) c.least = x;
-    }
-    const auto& L = S.levels[0];
-    int next = -1, prev = -1;
-    for (int g : face_)
-      for (int k = 0; k < 3; ++k) {
-        const int h = 3 * g + k;
-        if (!true_edge(S, h)) continue;
-        if (L.origin(h) == c.least) next = L.target(h);
-        if (L.target(h) == c.least) prev = L.origin(h);
-      }
-    c.t = {c.least, next, prev};
-    return c;
+  FaceCanon face_canon(const PolytopeData& S, int t) const {  // precomputed per shape
+    const VertexAdjacency& A = &S == &P_ ? AP_ : AQ_;
+    const auto& c = A.face_canon[A.face_of[t]];
+    return {c[0], c[1], {c[1], c[2], c[3]}};
   }
   // The least vertex (lexicographically) of a support set of dimension dim around feature f.
   int least_vertex(const PolytopeData& S, const Feature3& f, int dim) {

@@ -49,6 +49,14 @@ struct VertexAdjacency {
   /// rounded u·v at the cell's centre direction (approximate: a starting point for exact climbs).
   int cube_k = 1;
   std::vector<int> cube;
+  /// Flat faces of level 0 (a face of the polytope with its diagonals): face_of[t] = the face of
+  /// triangle t; face_tris[face_start[f] .. face_start[f+1]) = its triangles (breadth first
+  /// across diagonals from its least triangle); face_canon[f] = {least triangle id, the
+  /// lexicographically least vertex a (by coordinates), a's successor and predecessor on the
+  /// face's boundary, counter-clockwise from outside}. σ's canonical answer reads these instead
+  /// of flooding the face on every query (minimum_expand.cpp).
+  std::vector<int> face_of, face_start, face_tris;
+  std::vector<std::array<int, 4>> face_canon;
 };
 
 struct PolytopeData {

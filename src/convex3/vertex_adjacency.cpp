@@ -1,7 +1,8 @@
 // Vertex adjacency of a ConvexPolytope in flat arrays (CSR), built once per shape on first use:
 // the neighbours of v in counter-clockwise order (seen from outside) with their half-edge ids
-// and the rounded edge vectors, coordinate extents, and a cube map of seed
-// vertices for support queries. Hill-climbing support queries (minimum_expand.cpp) scan these
+// and the rounded edge vectors, coordinate extents, a cube map of seed
+// vertices for support queries, and the flat faces of level 0 with their canonical corner (σ's
+// canonical answer). Hill-climbing support queries (minimum_expand.cpp) scan these
 // arrays instead of chasing half-edge twins, and start from the cube map when they have no
 // better warm start. O(n) time and memory (the cube map has about n cells).
 #include "convex3/polytope_data.hpp"
@@ -32,6 +33,51 @@ Vec3 cell_direction(int face, int i, int j, int k) {
   u[(ax + 1) % 3] = -1 + (2 * i + 1) / double(k);
   u[(ax + 2) % 3] = -1 + (2 * j + 1) / double(k);
   return u;
+}
+
+// The flat faces of level 0 (see VertexAdjacency::face_of): triangles in increasing id, each
+// unassigned one floods its face across diagonals (level-0 edges that are not true edges). O(n).
+void build_flat_faces(const PolytopeData& d, VertexAdjacency& a) {
+  const DKLevel& L = d.levels[0];
+  const int nt = static_cast<int>(d.tris.size());
+  std::vector<char> is_true(L.fv.size(), 0);  // half-edge h lies on a true edge (not a diagonal)
+  for (int e : d.edges) is_true[e] = is_true[L.twin[e]] = 1;
+  auto true_edge = [&](int h) { return is_true[h] != 0; };
+  auto lex_less = [&](int x, int y) {
+    const Vec3 &p = d.v[x], &q = d.v[y];
+    return p[0] != q[0] ? p[0] < q[0] : p[1] != q[1] ? p[1] < q[1] : p[2] < q[2];
+  };
+  a.face_of.assign(nt, -1);
+  a.face_start.assign(1, 0);
+  a.face_tris.clear();
+  a.face_canon.clear();
+  for (int t = 0; t < nt; ++t) {
+    if (a.face_of[t] >= 0) continue;
+    const int f = static_cast<int>(a.face_canon.size()), first = static_cast<int>(a.face_tris.size());
+    a.face_of[t] = f;
+    a.face_tris.push_back(t);
+    for (std::size_t q = first; q < a.face_tris.size(); ++q)
+      for (int k = 0; k < 3; ++k) {
+        const int h = 3 * a.face_tris[q] + k;
+        if (true_edge(h)) continue;
+        const int g = L.twin[h] / 3;
+        if (a.face_of[g] < 0) a.face_of[g] = f, a.face_tris.push_back(g);
+      }
+    int least = d.tris[t][0];
+    for (std::size_t q = first; q < a.face_tris.size(); ++q)
+      for (int x : d.tris[a.face_tris[q]])
+        if (lex_less(x, least)) least = x;
+    int next = -1, prev = -1;
+    for (std::size_t q = first; q < a.face_tris.size(); ++q)
+      for (int k = 0; k < 3; ++k) {
+        const int h = 3 * a.face_tris[q] + k;
+        if (!true_edge(h)) continue;
+        if (L.origin(h) == least) next = L.target(h);
+        if (L.target(h) == least) prev = L.origin(h);
+      }
+    a.face_canon.push_back({t, least, next, prev});
+    a.face_start.push_back(static_cast<int>(a.face_tris.size()));
+  }
 }
 
 }  // namespace
@@ -78,6 +124,7 @@ const VertexAdjacency& vertex_adjacency(const PolytopeData& d) {
           v = climb_rounded(d, a, cell_direction(face, i, j, k), v);
           a.cube[(face * k + i) * k + j] = v;
         }
+    build_flat_faces(d, a);
   });
   return d.adjacency_cache.value;
 }
