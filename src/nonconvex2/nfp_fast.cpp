@@ -41,6 +41,10 @@
 // — and one or two passes over the pieces (σ, σ_d).
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#ifdef __SSE2__
+#include <emmintrin.h>
+#endif
 
 #include "nonconvex2/nfp_impl.hpp"
 
@@ -77,6 +81,7 @@ void NfpFlat::build(const NoFitPolygon2::Impl& N) {
     px0.push_back(pc.a.x()), py0.push_back(pc.a.y());
     px1.push_back(pc.b.x()), py1.push_back(pc.b.y());
     const double ex = pc.b.x() - pc.a.x(), ey = pc.b.y() - pc.a.y(), l2 = ex * ex + ey * ey;
+    pex.push_back(ex), pey.push_back(ey);
     pinv.push_back(l2 > 0 ? 1 / l2 : 0.0);
     see(pc.a), see(pc.b);
   }
@@ -175,54 +180,102 @@ int NfpFlat::overlapping(const Vec2& t) const {
 void NfpFlat::nearest_candidates(const Vec2& t, std::vector<std::uint32_t>& out) const {
   const double tx = t.x(), ty = t.y(), M = bound_m(t, rmax), e = 0x1p-40 * M, B = 0x1p-40 * M * M;
   const std::size_t n = px0.size();  // ≤ kFlatMax (usable)
-  const double *x0 = px0.data(), *y0 = py0.data(), *x1 = px1.data(), *y1 = py1.data(), *il = pinv.data();
+  const double *x0 = px0.data(), *y0 = py0.data(), *ex = pex.data(), *ey = pey.data(), *il = pinv.data();
+  // Pass 1, branch-free (the clamps are selects): the squared distance to every rounded piece.
   double q[kFlatMax];
   double best = INFINITY;
-  for (std::size_t k = 0; k < n; ++k) {
-    const double wx = tx - x0[k], wy = ty - y0[k], ex = x1[k] - x0[k], ey = y1[k] - y0[k];
-    const double s = std::clamp((wx * ex + wy * ey) * il[k], 0.0, 1.0);
-    const double dx = wx - s * ex, dy = wy - s * ey;
+  std::size_t k = 0;
+#ifdef __SSE2__
+  // Two pieces per step (the same operations per lane as the scalar loop below).
+  const __m128d Tx = _mm_set1_pd(tx), Ty = _mm_set1_pd(ty), zero = _mm_setzero_pd(), one = _mm_set1_pd(1);
+  __m128d lo2 = _mm_set1_pd(INFINITY);
+  for (; k + 2 <= n; k += 2) {
+    const __m128d Ex = _mm_loadu_pd(ex + k), Ey = _mm_loadu_pd(ey + k);
+    const __m128d wx = _mm_sub_pd(Tx, _mm_loadu_pd(x0 + k)), wy = _mm_sub_pd(Ty, _mm_loadu_pd(y0 + k));
+    __m128d s = _mm_mul_pd(_mm_add_pd(_mm_mul_pd(wx, Ex), _mm_mul_pd(wy, Ey)), _mm_loadu_pd(il + k));
+    s = _mm_min_pd(_mm_max_pd(s, zero), one);
+    const __m128d dx = _mm_sub_pd(wx, _mm_mul_pd(s, Ex)), dy = _mm_sub_pd(wy, _mm_mul_pd(s, Ey));
+    const __m128d d2 = _mm_add_pd(_mm_mul_pd(dx, dx), _mm_mul_pd(dy, dy));
+    _mm_storeu_pd(q + k, d2);
+    lo2 = _mm_min_pd(lo2, d2);
+  }
+  double l[2];
+  _mm_storeu_pd(l, lo2);
+  best = std::min(l[0], l[1]);
+#endif
+  for (; k < n; ++k) {
+    const double wx = tx - x0[k], wy = ty - y0[k];
+    const double s = std::clamp((wx * ex[k] + wy * ey[k]) * il[k], 0.0, 1.0);
+    const double dx = wx - s * ex[k], dy = wy - s * ey[k];
     q[k] = dx * dx + dy * dy;
-    best = q[k] < best ? q[k] : best;
+    best = std::min(best, q[k]);
   }
   const double r = std::sqrt(best) + 2 * e;
   const double thr = r * r * (1 + 0x1p-40);
   for (std::size_t k = 0; k < n; ++k)
     if (q[k] <= thr) {
-      // dot(t − a, b − a) and dot(t − b, a − b) beyond B: the projection of t falls strictly
-      // inside the exact piece (the same error reasoning as for the determinant).
-      const double wx = tx - x0[k], wy = ty - y0[k], ex = x1[k] - x0[k], ey = y1[k] - y0[k];
-      const double dot = wx * ex + wy * ey, l2 = ex * ex + ey * ey;
-      const bool inside = dot > B && l2 - dot > B;
-      out.push_back(std::uint32_t(k) | (inside ? kInside : 0u));
+      // dot(t − a, b − a) and dot(t − b, a − b) = |b − a|² − dot(t − a, b − a) against B: the
+      // projection of t falls strictly inside the exact piece, strictly before its lo end or
+      // strictly beyond its hi end (the same error reasoning as for the determinant; a point piece
+      // gets no flag).
+      const double wx = tx - x0[k], wy = ty - y0[k];
+      const double dot = wx * ex[k] + wy * ey[k], l2 = ex[k] * ex[k] + ey[k] * ey[k];
+      const std::uint32_t flag = dot > B && l2 - dot > B ? kInside : dot < -B ? kBeforeLo : l2 - dot < -B ? kBeyondHi : 0u;
+      out.push_back(std::uint32_t(k) | flag);
     }
 }
 
 void NfpFlat::first_hit_candidates(const Vec2& t, const Vec2& d, std::vector<std::uint32_t>& out) const {
   const double tx = t.x(), ty = t.y(), dx = d.x(), dy = d.y();
   const double e = 0x1p-40 * bound_m(t, rmax) * (std::abs(dx) + std::abs(dy));
-  const std::size_t n = px0.size();
+  const std::size_t n = px0.size();  // ≤ kFlatMax (usable)
   const double *x0 = px0.data(), *y0 = py0.data(), *x1 = px1.data(), *y1 = py1.data();
+  // Pass 1, branch-free: per piece the lower bound `lo` of its hit's dot (NaN, never ≤ U, when it
+  // certainly misses the line or lies behind t) and whether the ray certainly crosses it (then U, the least
+  // certain hit's upper bound, takes its `hi`).
+  double los[kFlatMax];
+  std::uint8_t crosses[kFlatMax];
   double U = INFINITY;
-  double los[kFlatMax];  // lower bounds of the kept pieces (n ≤ kFlatMax: usable)
-  std::size_t kept = 0;
-  const std::size_t first = out.size();
-  for (std::size_t k = 0; k < n; ++k) {
+  std::size_t k = 0;
+#ifdef __SSE2__
+  {
+    const __m128d Tx = _mm_set1_pd(tx), Ty = _mm_set1_pd(ty), Dx = _mm_set1_pd(dx), Dy = _mm_set1_pd(dy);
+    const __m128d E = _mm_set1_pd(e), mE = _mm_set1_pd(-e), inf = _mm_set1_pd(INFINITY), nan = _mm_set1_pd(NAN), zero = _mm_setzero_pd();
+    __m128d U2 = inf;
+    for (; k + 2 <= n; k += 2) {
+      const __m128d ax = _mm_sub_pd(_mm_loadu_pd(x0 + k), Tx), ay = _mm_sub_pd(_mm_loadu_pd(y0 + k), Ty);
+      const __m128d bx = _mm_sub_pd(_mm_loadu_pd(x1 + k), Tx), by = _mm_sub_pd(_mm_loadu_pd(y1 + k), Ty);
+      const __m128d ca = _mm_sub_pd(_mm_mul_pd(Dx, ay), _mm_mul_pd(Dy, ax)), cb = _mm_sub_pd(_mm_mul_pd(Dx, by), _mm_mul_pd(Dy, bx));
+      const __m128d pa = _mm_add_pd(_mm_mul_pd(Dx, ax), _mm_mul_pd(Dy, ay)), pb = _mm_add_pd(_mm_mul_pd(Dx, bx), _mm_mul_pd(Dy, by));
+      const __m128d lo = _mm_sub_pd(_mm_min_pd(pa, pb), E), hi = _mm_add_pd(_mm_max_pd(pa, pb), E);
+      const __m128d a_left = _mm_cmpgt_pd(ca, E), b_left = _mm_cmpgt_pd(cb, E);
+      const __m128d a_right = _mm_cmplt_pd(ca, mE), b_right = _mm_cmplt_pd(cb, mE);
+      const __m128d out_mask = _mm_or_pd(_mm_or_pd(_mm_and_pd(a_left, b_left), _mm_and_pd(a_right, b_right)), _mm_cmple_pd(hi, zero));
+      const __m128d cross = _mm_and_pd(_mm_cmpgt_pd(lo, zero), _mm_or_pd(_mm_and_pd(a_left, b_right), _mm_and_pd(a_right, b_left)));
+      _mm_storeu_pd(los + k, _mm_or_pd(_mm_and_pd(out_mask, nan), _mm_andnot_pd(out_mask, lo)));
+      const int c = _mm_movemask_pd(cross);
+      crosses[k] = std::uint8_t(c & 1), crosses[k + 1] = std::uint8_t(c >> 1);
+      U2 = _mm_min_pd(U2, _mm_or_pd(_mm_and_pd(cross, hi), _mm_andnot_pd(cross, inf)));
+    }
+    double u[2];
+    _mm_storeu_pd(u, U2);
+    U = std::min(u[0], u[1]);
+  }
+#endif
+  for (; k < n; ++k) {
     const double ax = x0[k] - tx, ay = y0[k] - ty, bx = x1[k] - tx, by = y1[k] - ty;
     const double ca = dx * ay - dy * ax, cb = dx * by - dy * bx;
-    if ((ca > e && cb > e) || (ca < -e && cb < -e)) continue;  // misses the line
     const double pa = dx * ax + dy * ay, pb = dx * bx + dy * by;
     const double lo = std::min(pa, pb) - e, hi = std::max(pa, pb) + e;
-    if (hi <= 0) continue;  // behind t
-    const bool crosses = lo > 0 && ((ca > e && cb < -e) || (ca < -e && cb > e));
-    if (crosses) U = std::min(U, hi);
-    if (lo <= U) out.push_back(std::uint32_t(k) | (crosses ? kInside : 0u)), los[kept++] = lo;
+    const bool miss = (ca > e && cb > e) || (ca < -e && cb < -e) || hi <= 0;  // misses the line, or behind t
+    const bool c = lo > 0 && ((ca > e && cb < -e) || (ca < -e && cb > e));
+    los[k] = miss ? NAN : lo;
+    crosses[k] = c;
+    if (c) U = std::min(U, hi);
   }
-  // Keep those still within the final U (in increasing index order).
-  std::size_t w = first;
-  for (std::size_t i = first; i < out.size(); ++i)
-    if (los[i - first] <= U) out[w++] = out[i];
-  out.resize(w);
+  // Pass 2: the pieces whose hit can come before U (in increasing index order).
+  for (k = 0; k < n; ++k)
+    if (los[k] <= U) out.push_back(std::uint32_t(k) | (crosses[k] ? kInside : 0u));
 }
 
 }  // namespace pendepth::nonconvex2

@@ -42,9 +42,27 @@ struct D2 {
   double hi, lo;
 };
 
+// The exact residual a·b − RN(a·b) by Veltkamp splitting and Dekker's product: the same double as
+// std::fma(a, b, −RN(a·b)) whenever that residual is exact, i.e. when |a|, |b| < 2⁹⁹⁶ (no overflow
+// in the split) and the exponents of a and b sum to at least −969 (no underflow) — every use below
+// has |a·b| ≥ 2⁻⁸⁰⁰ or refuses the result (rounds_to: [2⁻⁸⁰⁰, 2⁸⁰⁰]; an overflowed split gives
+// NaN, refused too). Inline arithmetic instead of a call to libm's fma (no FMA instruction in the
+// baseline target): the callers keep their registers.
+inline void split(double a, double& h, double& l) {
+  const double c = 134217729.0 * a;  // (2²⁷ + 1)·a
+  h = c - (c - a);
+  l = a - h;
+}
+inline double residual(double a, double b, double p) {
+  double ah, al, bh, bl;
+  split(a, ah, al);
+  split(b, bh, bl);
+  return ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+}
+
 inline D2 mul(D2 a, D2 b) {
   const double p = a.hi * b.hi;
-  const double e = std::fma(a.hi, b.hi, -p) + (a.hi * b.lo + a.lo * b.hi);
+  const double e = residual(a.hi, b.hi, p) + (a.hi * b.lo + a.lo * b.hi);
   D2 r;
   quick_two_sum(p, e, r.hi, r.lo);
   return r;
@@ -53,6 +71,17 @@ inline D2 mul(D2 a, D2 b) {
 inline D2 add(D2 a, D2 b) {
   const exact::DD r = exact::DD{a.hi, a.lo, 0} + exact::DD{b.hi, b.lo, 0};
   return {r.hi, r.lo};
+}
+
+// exact::dd_div(a, b) with the residual above (the same steps, so the same double-double when every
+// product's residual is exact: |a|, |b.hi| and |q1| below 2⁹⁹⁶, |q1·b.hi| ≈ |a.hi| ≥ 2⁻⁸⁰⁰).
+inline D2 div(D2 a, D2 b) {
+  const double q1 = a.hi / b.hi;
+  const D2 p = mul({q1, 0}, b);
+  const D2 r = add(a, {-p.hi, -p.lo});
+  D2 q;
+  quick_two_sum(q1, r.hi / b.hi, q.hi, q.lo);
+  return q;
 }
 
 // 0 or within [2⁻⁴⁰⁰, 2⁴⁰⁰]: products of two such are 0 or in [2⁻⁸⁰⁰, 2⁸⁰⁰].
@@ -137,8 +166,7 @@ bool NfpFlat::projection_values(std::uint32_t k, const Vec2& t, double& sigma2, 
   const double ec = (std::abs(v.dy) * ewx + std::abs(v.dx) * ewy) * (1 + 0x1p-50) + 0x1p-99 * (std::abs(p1.hi) + std::abs(p2.hi));
   const double rc = ec / ac * (1 + 0x1p-50);
   if (!(rc <= 0x1p-60)) return false;
-  const exact::DD qd = exact::dd_div(exact::DD{c.hi, c.lo, 0}, exact::DD{v.dd, v.ddl, 0});
-  const D2 q{qd.hi, qd.lo};
+  const D2 q = div(c, {v.dd, v.ddl});
   const double rq = (rc + 0x1p-99) * (1 + 0x1p-40) + exact::kDivBound;
   const D2 s2 = mul(c, q);
   const double rs = (rc + rq) * (1 + 0x1p-40) + 0x1p-102;
@@ -183,7 +211,7 @@ bool NfpFlat::crossing_value(std::uint32_t k, const Vec2& t, const Vec2& d, doub
   const double ed = 0x1p-99 * (std::abs(m1.hi) + std::abs(m2.hi));
   const double rn = en / an * (1 + 0x1p-50), rd = ed / ad * (1 + 0x1p-50);
   if (!(rn <= 0x1p-60 && rd <= 0x1p-60)) return false;
-  const exact::DD q = exact::dd_div(exact::DD{num.hi, num.lo, 0}, exact::DD{den.hi, den.lo, 0});
+  const D2 q = div(num, den);
   const double b = ((rn + rd) * (1 + 0x1p-40) + exact::kDivBound) * std::abs(q.hi) * (1 + 0x1p-40);
   if (diag) *diag = {{q.hi, 0, 0}, {q.lo, 0, 0}, {b, 0, 0}, true};
   if (!exact::rounds_to(q.hi, q.lo, b)) return false;
