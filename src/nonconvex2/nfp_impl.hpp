@@ -126,6 +126,10 @@ struct NfpFlat {
     bool set = false;
   };
   bool projection_values(std::uint32_t k, const Vec2& t, double& sigma2, Vec2& translation, ProjectionDiag* diag = nullptr) const;
+  /// σ² and the translation from t to the end μ = `end` (0 or 1) of piece k's edge ray (a vertex
+  /// of a pair sum: o, or o + D), each RN(exact), from the piece's double-doubles with a static
+  /// error bound (nfp_value.cpp); false when not certified. `diag` as for projection_values.
+  bool vertex_values(std::uint32_t k, int end, const Vec2& t, double& sigma2, Vec2& translation, ProjectionDiag* diag = nullptr) const;
   /// RN(λ) of the crossing of the ray t + λ·d with piece k's edge line (line_num / line_den),
   /// from the piece's double-doubles with a static error bound; false when not certified. `diag`
   /// (tests): hi, lo and bound of λ in slot 0.

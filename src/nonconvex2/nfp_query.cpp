@@ -298,7 +298,7 @@ Depth2 NoFitPolygon2::Impl::along(const Vec2& t, const Vec2& d, bool exact_path)
   const double depth = std::max(0.0, value * dn);
   const Line& E = best.hit.piece->edge;
   // A certified crossing of the piece's interior is at no end of the edge (the piece lies in it).
-  r = S.contact(E, t, depth * (d / dn), best.crossing ? -1 : nonconvex2::end_on_ray(E, t, d));
+  r = S.contact_features(E, t, depth * (d / dn), best.crossing ? -1 : nonconvex2::end_on_ray(E, t, d));
   r.depth = depth;
   r.normal = d / dn;
   r.kind = DepthKind::Directional;
@@ -342,8 +342,11 @@ Depth2 NoFitPolygon2::Impl::minimum(const Vec2& t, bool exact_path) const {
   // double-doubles (nfp_value.cpp) when certified, else the generic rounded evaluation.
   Vec2 translation;
   double s2;
+  const bool vertex = c.at.kind == Param::Zero || c.at.kind == Param::One;
   if (!exact_path && c.at.kind == Param::Proj && flat.projection_values(best.index, t, s2, translation)) {
     value = std::sqrt(s2);
+  } else if (!exact_path && vertex && flat.vertex_values(best.index, c.at.kind == Param::One, t, s2, translation)) {
+    value = std::sqrt(s2);  // at a sum vertex (nfp_value.cpp)
   } else {
     if (!exact_path && flat.usable) value = best.value(t, false);
     translation = rounded_translation(c, t, exact_path);

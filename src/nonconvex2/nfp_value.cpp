@@ -191,6 +191,44 @@ bool NfpFlat::projection_values(std::uint32_t k, const Vec2& t, double& sigma2, 
   return true;
 }
 
+// At a vertex of the sum (μ = 0: X = o; μ = 1: X = o + D), V = X − t: at μ = 0, V = −W with W̃
+// from diff (|W̃ − W| ≤ e_W); at μ = 1, V = D − W̃ in double-double (dd sum: ≤ 2⁻¹⁰⁰·(|D| + |W̃|)),
+// e_V = e_W + 2⁻¹⁰⁰·(|D_hi| + |W̃_hi|)(1 + 2⁻⁵⁰). σ² = Vx² + Vy²: |Ṽ² − V²| ≤ e_V·(2|Ṽ| + e_V) per
+// axis, each dd square ≤ 9u²·|Ṽ_hi²|(1 + 2u), the sum ≤ 2⁻¹⁰⁰ of the squares' magnitudes: in all
+// e_σ = Σ e_V(2|Ṽ_hi|(1 + 2⁻⁵⁰) + e_V) + 2⁻⁹⁹·(Ṽx_hi² + Ṽy_hi²), inflated by 2⁻⁴⁰ relative.
+bool NfpFlat::vertex_values(std::uint32_t k, int end, const Vec2& t, double& sigma2, Vec2& translation, ProjectionDiag* diag) const {
+  const PieceDD& v = pdd[k];
+  if (!v.ok || !in_range(t.x()) || !in_range(t.y())) return false;
+  D2 w[2];
+  double e[2];
+  diff(t.x(), v.ox, v.oxl, w[0], e[0]);
+  diff(t.y(), v.oy, v.oyl, w[1], e[1]);
+  const D2 D[2] = {{v.dx, v.dxl}, {v.dy, v.dyl}};
+  D2 V[2];
+  for (int i = 0; i < 2; ++i) {
+    if (!in_range(w[i].hi)) return false;
+    if (end == 0) {
+      V[i] = {-w[i].hi, -w[i].lo};
+    } else {
+      V[i] = add(D[i], {-w[i].hi, -w[i].lo});
+      e[i] += 0x1p-100 * (std::abs(D[i].hi) + std::abs(w[i].hi)) * (1 + 0x1p-50);
+      if (!in_range(V[i].hi)) return false;
+    }
+  }
+  const D2 s0 = mul(V[0], V[0]), s1 = mul(V[1], V[1]);
+  const D2 s2 = add(s0, s1);
+  double bs = 0x1p-99 * (std::abs(s0.hi) + std::abs(s1.hi));
+  for (int i = 0; i < 2; ++i) bs += e[i] * (2 * std::abs(V[i].hi) * (1 + 0x1p-50) + e[i]);
+  bs *= 1 + 0x1p-40;
+  if (diag) *diag = {{s2.hi, V[0].hi, V[1].hi}, {s2.lo, V[0].lo, V[1].lo}, {bs, e[0], e[1]}, true};
+  // A zero coordinate (|V| = 0 exactly only when e = 0) is exact; else the interval must round to hi.
+  auto coord_ok = [&](int i) { return (V[i].hi == 0 && V[i].lo == 0 && e[i] == 0) || exact::rounds_to(V[i].hi, V[i].lo, e[i]); };
+  if (!coord_ok(0) || !coord_ok(1) || !exact::rounds_to(s2.hi, s2.lo, bs)) return false;
+  sigma2 = s2.hi;
+  translation = Vec2(V[0].hi + 0.0, V[1].hi + 0.0);  // + 0: an exact zero is +0, as RN(0) is
+  return true;
+}
+
 bool NfpFlat::crossing_value(std::uint32_t k, const Vec2& t, const Vec2& d, double& lambda, ProjectionDiag* diag) const {
   const PieceDD& v = pdd[k];
   if (!v.line_ok || !in_range(t.x()) || !in_range(t.y()) || !in_range(d.x()) || !in_range(d.y())) return false;
