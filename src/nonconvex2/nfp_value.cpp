@@ -12,16 +12,17 @@
 // Error bounds (u = 2⁻⁵³; double-double (dd) operands normalised, |lo| ≤ u·|hi|):
 //   W: two-sum(t, −o_hi) = s + e exactly; r = RN(e − o_lo) is off by ≤ u·|r|; two-sum(s, r) is
 //     exact: |W̃ − W| ≤ e_W = 2⁻⁵²·|r|.
-//   dd product a·b (p = RN(ah·bh), the FMA residual, plus RN(ah·bl + al·bh), fast two-sum): the
-//     dropped al·bl (≤ u²), the two products' rounding (≤ 2u²) and the two sums' (≤ 5u²) stay
-//     below 9u²·|ah·bh|(1 + 2u).
+//   dd product a·b (p = RN(ah·bh), its exact residual (Veltkamp–Dekker, below), plus RN(ah·bl +
+//     al·bh), fast two-sum): the dropped al·bl (≤ u²), the two products' rounding (≤ 2u²) and the
+//     two sums' (≤ 5u²) stay below 9u²·|ah·bh|(1 + 2u).
 //   dd sum (two two-sums, exact.hpp's operator+): ≤ 2⁻¹⁰⁰·(|a| + |b|) (exact.hpp's kUnitDD).
 //   c̃ = W̃x·Dy − W̃y·Dx: |c̃ − c| ≤ e_c = (|Dy|·e_Wx + |Dx|·e_Wy)(1 + 2⁻⁵⁰) + 2⁻⁹⁹·(|P1| + |P2|)
 //     (9u² + 2⁻¹⁰⁰ < 2⁻⁹⁹ per product's magnitude); ρ_c = e_c/|c̃| (required ≤ 2⁻⁶⁰).
 //   q̃ = c̃ / |D|² (exact::dd_div, 2⁻⁹⁷ for exact operands): ρ_q = (ρ_c + ρ_D)(1 + 2⁻⁴⁰) + 2⁻⁹⁷.
 //   σ̃² = c̃·q̃: ρ_σ = (ρ_c + ρ_q)(1 + 2⁻⁴⁰) + 2⁻¹⁰²; translation q̃·(−Dy), q̃·Dx: ρ_q + 2⁻¹⁰²
 //     (a zero component of D gives an exact zero).
-// Axis-parallel edges (Dx or Dy exactly 0): X − t = −W on the other axis, σ² = W² (below).
+// Axis-parallel edges (Dx or Dy exactly 0): X − t = −W on the other axis, σ² = W² (below). At a
+// sum vertex (μ = 0 or 1): vertex_values (below).
 // Each value is returned only when rounds_to certifies the whole interval inside one rounding
 // cell; magnitudes are kept inside [2⁻⁸⁰⁰, 2⁸⁰⁰] (products' residuals representable) or zero.
 // Cost: ~80 flops per query, no branch on data beyond the range checks.

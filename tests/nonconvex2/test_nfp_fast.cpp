@@ -13,7 +13,10 @@
 // winner's values (RN of the exact reals, geometry/rounded.hpp) with rationals alone, so equal
 // bits also check the fast double-double values; ProjectionValuesAgainstRationals checks those
 // directly, and that every error bound holds (rationals) and is tight enough that shrinking it
-// by 2¹² fails. Pinned seeds.
+// by 2¹² fails; VertexValuesAgainstRationals the same for σ at a sum vertex;
+// NearestCandidateFlagsAgainstExact checks σ's candidate set and its certified flags (projection
+// inside / before lo / beyond hi) against exact arithmetic, and the flags' error bound against
+// rationals (removing it, or shrinking it by 2¹³, fails). Pinned seeds.
 #include <pendepth/nfp2.hpp>
 
 #include <gtest/gtest.h>
