@@ -77,6 +77,7 @@ struct NfpFlat {
   double ylo = 0, yhi = 0, yscale = 0;
   bool overlap_usable = false;  // the overlap filter applies (magnitudes in range), any size
   std::vector<double> px0, py0, px1, py1;  // pieces (same indices as Impl::pieces)
+  std::vector<double> pex, pey;            // b − a per piece (rounded)
   std::vector<double> pinv;                // 1 / |b − a|² per piece (0 for a point)
   std::vector<std::array<Vec2, 2>> slits;   // copies of the export's, next to the edges
   std::vector<Vec2> points;
@@ -101,9 +102,14 @@ struct NfpFlat {
   int overlapping(const Vec2& t) const;
   /// Flag on a candidate index (indices stay below it): certified interior case (below).
   static constexpr std::uint32_t kInside = 1u << 31;
+  /// Flags of nearest_candidates: t's projection on the piece's line falls certainly strictly
+  /// before its lo end (kBeforeLo) or beyond its hi end (kBeyondHi), so its nearest point is that end.
+  static constexpr std::uint32_t kBeforeLo = 1u << 30, kBeyondHi = 1u << 29;
+  static constexpr std::uint32_t kFlags = kInside | kBeforeLo | kBeyondHi;
   /// Appends to `out`, in increasing order, the indices of every piece whose exact distance to t
   /// can be the minimum (a superset of the exact nearest pieces; usually one), flagged kInside when
-  /// t's projection on the piece's line falls certainly strictly inside the piece.
+  /// t's projection on the piece's line falls certainly strictly inside the piece, kBeforeLo or
+  /// kBeyondHi when certainly outside it.
   void nearest_candidates(const Vec2& t, std::vector<std::uint32_t>& out) const;
   /// Appends, in increasing order, every piece the ray t + λ·d (λ > 0) can hit first (a superset
   /// of the exact first pieces), flagged kInside when the ray certainly crosses the piece's
@@ -120,6 +126,10 @@ struct NfpFlat {
     bool set = false;
   };
   bool projection_values(std::uint32_t k, const Vec2& t, double& sigma2, Vec2& translation, ProjectionDiag* diag = nullptr) const;
+  /// σ² and the translation from t to the end μ = `end` (0 or 1) of piece k's edge ray (a vertex
+  /// of a pair sum: o, or o + D), each RN(exact), from the piece's double-doubles with a static
+  /// error bound (nfp_value.cpp); false when not certified. `diag` as for projection_values.
+  bool vertex_values(std::uint32_t k, int end, const Vec2& t, double& sigma2, Vec2& translation, ProjectionDiag* diag = nullptr) const;
   /// RN(λ) of the crossing of the ray t + λ·d with piece k's edge line (line_num / line_den),
   /// from the piece's double-doubles with a static error bound; false when not certified. `diag`
   /// (tests): hi, lo and bound of λ in slot 0.

@@ -175,7 +175,10 @@ struct AlongBest {
     hit = h;
     index = k;
     found = true;
+    crossing = crosses;
   }
+  // The best hit certified as the crossing of the piece's interior (so at no end of its edge).
+  bool crossing = false;
   // RN(λ) of the best hit (a function of the hit alone, evaluated once; `exact`: rationals only).
   double value(const Ray& ray, const Vec2& t, bool exact) const {
     return exact::rounded_ratio_of([&](auto L) { return hit_nd(hit, ray, t, L); }, exact);
@@ -188,13 +191,17 @@ struct MinBest {
   std::uint32_t index = 0;
   bool found = false;
   bool inside = false;  // cand is t's projection, strictly inside its piece (so at no end of its edge)
-  // `inside`: t's projection certified strictly inside the piece by the fast path (kInside).
-  void consider(const NoFitPolygon2::Impl& N, std::uint32_t k, const Vec2& t, bool proj_inside = false) {
+  // `flags`: t's projection certified strictly inside the piece (NfpFlat::kInside), before its lo
+  // end (kBeforeLo) or beyond its hi end (kBeyondHi) by the fast path; else decided exactly.
+  void consider(const NoFitPolygon2::Impl& N, std::uint32_t k, const Vec2& t, std::uint32_t flags = 0) {
     const NfpPiece& pc = N.pieces[k];
     const Param proj{Param::Proj, {}};
     Cand c{pc.E, proj, pc.edge};
+    const bool proj_inside = (flags & NfpFlat::kInside) != 0;
     if (proj_inside) {
-    } else if (nonconvex2::compare_params(proj, pc.lo, pc.E, t) <= 0) c.at = pc.lo;
+    } else if (flags & NfpFlat::kBeforeLo) c.at = pc.lo;
+    else if (flags & NfpFlat::kBeyondHi) c.at = pc.hi;
+    else if (nonconvex2::compare_params(proj, pc.lo, pc.E, t) <= 0) c.at = pc.lo;
     else if (nonconvex2::compare_params(proj, pc.hi, pc.E, t) >= 0) c.at = pc.hi;
     if (found) {
       // A shared vertex of two pieces is recognised symbolically.
@@ -290,7 +297,8 @@ Depth2 NoFitPolygon2::Impl::along(const Vec2& t, const Vec2& d, bool exact_path)
   const double dn = nonconvex2::norm_accurate(d);
   const double depth = std::max(0.0, value * dn);
   const Line& E = best.hit.piece->edge;
-  r = S.contact(E, t, depth * (d / dn), nonconvex2::end_on_ray(E, t, d));
+  // A certified crossing of the piece's interior is at no end of the edge (the piece lies in it).
+  r = S.contact_features(E, t, depth * (d / dn), best.crossing ? -1 : nonconvex2::end_on_ray(E, t, d));
   r.depth = depth;
   r.normal = d / dn;
   r.kind = DepthKind::Directional;
@@ -307,7 +315,7 @@ Depth2 NoFitPolygon2::Impl::minimum(const Vec2& t, bool exact_path) const {
   if (flat.usable && !exact_path) {
     std::vector<std::uint32_t>& cand = scratch();
     flat.nearest_candidates(t, cand);
-    for (std::uint32_t k : cand) best.consider(*this, k & ~NfpFlat::kInside, t, (k & NfpFlat::kInside) != 0);
+    for (std::uint32_t k : cand) best.consider(*this, k & ~NfpFlat::kFlags, t, k & NfpFlat::kFlags);
   } else {
     // Branch and bound on the hierarchy with conservative box distances; every piece as near as
     // the best is visited (its box key is below its distance), so ties resolve by index.
@@ -334,8 +342,11 @@ Depth2 NoFitPolygon2::Impl::minimum(const Vec2& t, bool exact_path) const {
   // double-doubles (nfp_value.cpp) when certified, else the generic rounded evaluation.
   Vec2 translation;
   double s2;
+  const bool vertex = c.at.kind == Param::Zero || c.at.kind == Param::One;
   if (!exact_path && c.at.kind == Param::Proj && flat.projection_values(best.index, t, s2, translation)) {
     value = std::sqrt(s2);
+  } else if (!exact_path && vertex && flat.vertex_values(best.index, c.at.kind == Param::One, t, s2, translation)) {
+    value = std::sqrt(s2);  // at a sum vertex (nfp_value.cpp)
   } else {
     if (!exact_path && flat.usable) value = best.value(t, false);
     translation = rounded_translation(c, t, exact_path);

@@ -12,16 +12,17 @@
 // Error bounds (u = 2⁻⁵³; double-double (dd) operands normalised, |lo| ≤ u·|hi|):
 //   W: two-sum(t, −o_hi) = s + e exactly; r = RN(e − o_lo) is off by ≤ u·|r|; two-sum(s, r) is
 //     exact: |W̃ − W| ≤ e_W = 2⁻⁵²·|r|.
-//   dd product a·b (p = RN(ah·bh), the FMA residual, plus RN(ah·bl + al·bh), fast two-sum): the
-//     dropped al·bl (≤ u²), the two products' rounding (≤ 2u²) and the two sums' (≤ 5u²) stay
-//     below 9u²·|ah·bh|(1 + 2u).
+//   dd product a·b (p = RN(ah·bh), its exact residual (Veltkamp–Dekker, below), plus RN(ah·bl +
+//     al·bh), fast two-sum): the dropped al·bl (≤ u²), the two products' rounding (≤ 2u²) and the
+//     two sums' (≤ 5u²) stay below 9u²·|ah·bh|(1 + 2u).
 //   dd sum (two two-sums, exact.hpp's operator+): ≤ 2⁻¹⁰⁰·(|a| + |b|) (exact.hpp's kUnitDD).
 //   c̃ = W̃x·Dy − W̃y·Dx: |c̃ − c| ≤ e_c = (|Dy|·e_Wx + |Dx|·e_Wy)(1 + 2⁻⁵⁰) + 2⁻⁹⁹·(|P1| + |P2|)
 //     (9u² + 2⁻¹⁰⁰ < 2⁻⁹⁹ per product's magnitude); ρ_c = e_c/|c̃| (required ≤ 2⁻⁶⁰).
 //   q̃ = c̃ / |D|² (exact::dd_div, 2⁻⁹⁷ for exact operands): ρ_q = (ρ_c + ρ_D)(1 + 2⁻⁴⁰) + 2⁻⁹⁷.
 //   σ̃² = c̃·q̃: ρ_σ = (ρ_c + ρ_q)(1 + 2⁻⁴⁰) + 2⁻¹⁰²; translation q̃·(−Dy), q̃·Dx: ρ_q + 2⁻¹⁰²
 //     (a zero component of D gives an exact zero).
-// Axis-parallel edges (Dx or Dy exactly 0): X − t = −W on the other axis, σ² = W² (below).
+// Axis-parallel edges (Dx or Dy exactly 0): X − t = −W on the other axis, σ² = W² (below). At a
+// sum vertex (μ = 0 or 1): vertex_values (below).
 // Each value is returned only when rounds_to certifies the whole interval inside one rounding
 // cell; magnitudes are kept inside [2⁻⁸⁰⁰, 2⁸⁰⁰] (products' residuals representable) or zero.
 // Cost: ~80 flops per query, no branch on data beyond the range checks.
@@ -42,9 +43,27 @@ struct D2 {
   double hi, lo;
 };
 
+// The exact residual a·b − RN(a·b) by Veltkamp splitting and Dekker's product: the same double as
+// std::fma(a, b, −RN(a·b)) whenever that residual is exact, i.e. when |a|, |b| < 2⁹⁹⁶ (no overflow
+// in the split) and the exponents of a and b sum to at least −969 (no underflow) — every use below
+// has |a·b| ≥ 2⁻⁸⁰⁰ or refuses the result (rounds_to: [2⁻⁸⁰⁰, 2⁸⁰⁰]; an overflowed split gives
+// NaN, refused too). Inline arithmetic instead of a call to libm's fma (no FMA instruction in the
+// baseline target): the callers keep their registers.
+inline void split(double a, double& h, double& l) {
+  const double c = 134217729.0 * a;  // (2²⁷ + 1)·a
+  h = c - (c - a);
+  l = a - h;
+}
+inline double residual(double a, double b, double p) {
+  double ah, al, bh, bl;
+  split(a, ah, al);
+  split(b, bh, bl);
+  return ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+}
+
 inline D2 mul(D2 a, D2 b) {
   const double p = a.hi * b.hi;
-  const double e = std::fma(a.hi, b.hi, -p) + (a.hi * b.lo + a.lo * b.hi);
+  const double e = residual(a.hi, b.hi, p) + (a.hi * b.lo + a.lo * b.hi);
   D2 r;
   quick_two_sum(p, e, r.hi, r.lo);
   return r;
@@ -53,6 +72,17 @@ inline D2 mul(D2 a, D2 b) {
 inline D2 add(D2 a, D2 b) {
   const exact::DD r = exact::DD{a.hi, a.lo, 0} + exact::DD{b.hi, b.lo, 0};
   return {r.hi, r.lo};
+}
+
+// exact::dd_div(a, b) with the residual above (the same steps, so the same double-double when every
+// product's residual is exact: |a|, |b.hi| and |q1| below 2⁹⁹⁶, |q1·b.hi| ≈ |a.hi| ≥ 2⁻⁸⁰⁰).
+inline D2 div(D2 a, D2 b) {
+  const double q1 = a.hi / b.hi;
+  const D2 p = mul({q1, 0}, b);
+  const D2 r = add(a, {-p.hi, -p.lo});
+  D2 q;
+  quick_two_sum(q1, r.hi / b.hi, q.hi, q.lo);
+  return q;
 }
 
 // 0 or within [2⁻⁴⁰⁰, 2⁴⁰⁰]: products of two such are 0 or in [2⁻⁸⁰⁰, 2⁸⁰⁰].
@@ -137,8 +167,7 @@ bool NfpFlat::projection_values(std::uint32_t k, const Vec2& t, double& sigma2, 
   const double ec = (std::abs(v.dy) * ewx + std::abs(v.dx) * ewy) * (1 + 0x1p-50) + 0x1p-99 * (std::abs(p1.hi) + std::abs(p2.hi));
   const double rc = ec / ac * (1 + 0x1p-50);
   if (!(rc <= 0x1p-60)) return false;
-  const exact::DD qd = exact::dd_div(exact::DD{c.hi, c.lo, 0}, exact::DD{v.dd, v.ddl, 0});
-  const D2 q{qd.hi, qd.lo};
+  const D2 q = div(c, {v.dd, v.ddl});
   const double rq = (rc + 0x1p-99) * (1 + 0x1p-40) + exact::kDivBound;
   const D2 s2 = mul(c, q);
   const double rs = (rc + rq) * (1 + 0x1p-40) + 0x1p-102;
@@ -163,6 +192,44 @@ bool NfpFlat::projection_values(std::uint32_t k, const Vec2& t, double& sigma2, 
   return true;
 }
 
+// At a vertex of the sum (μ = 0: X = o; μ = 1: X = o + D), V = X − t: at μ = 0, V = −W with W̃
+// from diff (|W̃ − W| ≤ e_W); at μ = 1, V = D − W̃ in double-double (dd sum: ≤ 2⁻¹⁰⁰·(|D| + |W̃|)),
+// e_V = e_W + 2⁻¹⁰⁰·(|D_hi| + |W̃_hi|)(1 + 2⁻⁵⁰). σ² = Vx² + Vy²: |Ṽ² − V²| ≤ e_V·(2|Ṽ| + e_V) per
+// axis, each dd square ≤ 9u²·|Ṽ_hi²|(1 + 2u), the sum ≤ 2⁻¹⁰⁰ of the squares' magnitudes: in all
+// e_σ = Σ e_V(2|Ṽ_hi|(1 + 2⁻⁵⁰) + e_V) + 2⁻⁹⁹·(Ṽx_hi² + Ṽy_hi²), inflated by 2⁻⁴⁰ relative.
+bool NfpFlat::vertex_values(std::uint32_t k, int end, const Vec2& t, double& sigma2, Vec2& translation, ProjectionDiag* diag) const {
+  const PieceDD& v = pdd[k];
+  if (!v.ok || !in_range(t.x()) || !in_range(t.y())) return false;
+  D2 w[2];
+  double e[2];
+  diff(t.x(), v.ox, v.oxl, w[0], e[0]);
+  diff(t.y(), v.oy, v.oyl, w[1], e[1]);
+  const D2 D[2] = {{v.dx, v.dxl}, {v.dy, v.dyl}};
+  D2 V[2];
+  for (int i = 0; i < 2; ++i) {
+    if (!in_range(w[i].hi)) return false;
+    if (end == 0) {
+      V[i] = {-w[i].hi, -w[i].lo};
+    } else {
+      V[i] = add(D[i], {-w[i].hi, -w[i].lo});
+      e[i] += 0x1p-100 * (std::abs(D[i].hi) + std::abs(w[i].hi)) * (1 + 0x1p-50);
+      if (!in_range(V[i].hi)) return false;
+    }
+  }
+  const D2 s0 = mul(V[0], V[0]), s1 = mul(V[1], V[1]);
+  const D2 s2 = add(s0, s1);
+  double bs = 0x1p-99 * (std::abs(s0.hi) + std::abs(s1.hi));
+  for (int i = 0; i < 2; ++i) bs += e[i] * (2 * std::abs(V[i].hi) * (1 + 0x1p-50) + e[i]);
+  bs *= 1 + 0x1p-40;
+  if (diag) *diag = {{s2.hi, V[0].hi, V[1].hi}, {s2.lo, V[0].lo, V[1].lo}, {bs, e[0], e[1]}, true};
+  // A zero coordinate (|V| = 0 exactly only when e = 0) is exact; else the interval must round to hi.
+  auto coord_ok = [&](int i) { return (V[i].hi == 0 && V[i].lo == 0 && e[i] == 0) || exact::rounds_to(V[i].hi, V[i].lo, e[i]); };
+  if (!coord_ok(0) || !coord_ok(1) || !exact::rounds_to(s2.hi, s2.lo, bs)) return false;
+  sigma2 = s2.hi;
+  translation = Vec2(V[0].hi + 0.0, V[1].hi + 0.0);  // + 0: an exact zero is +0, as RN(0) is
+  return true;
+}
+
 bool NfpFlat::crossing_value(std::uint32_t k, const Vec2& t, const Vec2& d, double& lambda, ProjectionDiag* diag) const {
   const PieceDD& v = pdd[k];
   if (!v.line_ok || !in_range(t.x()) || !in_range(t.y()) || !in_range(d.x()) || !in_range(d.y())) return false;
@@ -183,7 +250,7 @@ bool NfpFlat::crossing_value(std::uint32_t k, const Vec2& t, const Vec2& d, doub
   const double ed = 0x1p-99 * (std::abs(m1.hi) + std::abs(m2.hi));
   const double rn = en / an * (1 + 0x1p-50), rd = ed / ad * (1 + 0x1p-50);
   if (!(rn <= 0x1p-60 && rd <= 0x1p-60)) return false;
-  const exact::DD q = exact::dd_div(exact::DD{num.hi, num.lo, 0}, exact::DD{den.hi, den.lo, 0});
+  const D2 q = div(num, den);
   const double b = ((rn + rd) * (1 + 0x1p-40) + exact::kDivBound) * std::abs(q.hi) * (1 + 0x1p-40);
   if (diag) *diag = {{q.hi, 0, 0}, {q.lo, 0, 0}, {b, 0, 0}, true};
   if (!exact::rounds_to(q.hi, q.lo, b)) return false;

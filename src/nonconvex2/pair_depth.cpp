@@ -70,10 +70,15 @@ bool PairDepth2::overlapping(const Vec2& t, PairQueryStats* stats) const {
 }
 
 Depth2 PairDepth2::Impl::contact(const nonconvex2::Line& E, const Vec2& t, const Vec2& translation, int end) const {
-  Depth2 r;
-  r.translation = translation;
+  Depth2 r = contact_features(E, t, translation, end);
   r.depth = std::hypot(translation.x(), translation.y());
   if (r.depth > 0) r.normal = translation / r.depth;
+  return r;
+}
+
+Depth2 PairDepth2::Impl::contact_features(const nonconvex2::Line& E, const Vec2& t, const Vec2& translation, int end) const {
+  Depth2 r;
+  r.translation = translation;
   if (!E.q_edge) {
     // Vertex q0 of Q against the triangle edge p0 → p1 of P: an edge of P, or (a diagonal) the
     // contact is at one of its ends — an interior point of a diagonal is interior to P.

@@ -148,6 +148,8 @@ struct PairDepth2::Impl {
   /// names the touching end when E comes from a triangulation diagonal, whose interior points are
   /// interior to the shape and so can never be the contact.
   Depth2 contact(const nonconvex2::Line& E, const Vec2& t, const Vec2& translation, int end) const;
+  /// The same with depth and normal left for the caller (σ_d sets them from d: no hypot).
+  Depth2 contact_features(const nonconvex2::Line& E, const Vec2& t, const Vec2& translation, int end) const;
 };
 
 template <class Accept, class Leaf>

@@ -13,7 +13,10 @@
 // winner's values (RN of the exact reals, geometry/rounded.hpp) with rationals alone, so equal
 // bits also check the fast double-double values; ProjectionValuesAgainstRationals checks those
 // directly, and that every error bound holds (rationals) and is tight enough that shrinking it
-// by 2¹² fails. Pinned seeds.
+// by 2¹² fails; VertexValuesAgainstRationals the same for σ at a sum vertex;
+// NearestCandidateFlagsAgainstExact checks σ's candidate set and its certified flags (projection
+// inside / before lo / beyond hi) against exact arithmetic, and the flags' error bound against
+// rationals (removing it, or shrinking it by 2¹³, fails). Pinned seeds.
 #include <pendepth/nfp2.hpp>
 
 #include <gtest/gtest.h>
@@ -422,6 +425,218 @@ TEST(NfpFastPath, ProjectionValuesAgainstRationals) {
             << " certified; worst error / bound " << st.worst << "\n";
   EXPECT_GT(st.certified, st.tried * 9 / 10);
   EXPECT_GT(st.worst, 0x1p-12);
+}
+
+}  // namespace
+
+namespace {
+
+// nfp_fast.cpp's nearest_candidates against exact arithmetic: (1) every piece exactly nearest to t
+// is a candidate (brute force over all pieces, exact comparisons of squared distances); (2) every
+// flag is right — kInside: t's projection strictly inside the exact piece, kBeforeLo / kBeyondHi:
+// strictly before its lo end / beyond its hi end (exact compare_params), the decisions MinBest
+// takes from them instead of comparing exactly; (3) the error bound B = 2⁻⁴⁰·M² of the floating
+// dot(t − a, b − a) and |b − a|² − dot holds against the exact ends (rationals) on every piece, so
+// removing it (B = 0) fails (2), and shrinking it by more than the reported margin fails (3).
+// Placements: random, at piece ends and their perpendiculars with ±1–2 ulp moves (projections on
+// or next to an end), on albano pairs, rotated pieces (ends not representable) and an exact fit.
+struct FlagStats {
+  std::size_t queries = 0, candidates = 0, inside = 0, before = 0, beyond = 0, unflagged = 0, wrong_unguarded = 0;
+  double worst = 0;  // largest |exact − floating| / B over the dot values checked
+};
+
+void check_flags(const NoFitPolygon2& nfp, const Vec2& t, FlagStats& st, const std::string& what) {
+  using namespace pendepth::nonconvex2;
+  using pendepth::exact::LiftQ;
+  const auto& N = nfp_impl(nfp);
+  const NfpFlat& F = N.flat;
+  if (!F.usable) return;
+  ++st.queries;
+  std::vector<std::uint32_t> cand;
+  F.nearest_candidates(t, cand);
+  const double M = std::max({std::abs(t.x()), std::abs(t.y()), F.rmax}), B = 0x1p-40 * M * M;
+  const Param proj{Param::Proj, {}};
+  // Exact nearest point of each piece (as MinBest: the projection, clamped exactly).
+  auto cand_of = [&](std::size_t k) {
+    const NfpPiece& pc = N.pieces[k];
+    Cand c{pc.E, proj, pc.edge};
+    if (compare_params(proj, pc.lo, pc.E, t) <= 0) c.at = pc.lo;
+    else if (compare_params(proj, pc.hi, pc.E, t) >= 0) c.at = pc.hi;
+    return c;
+  };
+  auto sq = [&](const Cand& c) {
+    const auto s = sq_dist(c, t, LiftQ{});
+    return mpq_class(s.first.v / s.second.v);
+  };
+  std::vector<mpq_class> d(N.pieces.size());
+  mpq_class best;
+  for (std::size_t k = 0; k < N.pieces.size(); ++k) {
+    d[k] = sq(cand_of(k));
+    if (k == 0 || d[k] < best) best = d[k];
+  }
+  std::vector<bool> is_cand(N.pieces.size(), false);
+  for (std::uint32_t c : cand) is_cand[c & ~NfpFlat::kFlags] = true;
+  for (std::size_t k = 0; k < N.pieces.size(); ++k)
+    if (d[k] == best) ASSERT_TRUE(is_cand[k]) << what << " nearest piece " << k << " not a candidate, t = " << t.transpose();
+  // The floating dot values against the exact ends A, B (rationals), on every piece.
+  for (std::size_t k = 0; k < N.pieces.size(); ++k) {
+    const NfpPiece& pc = N.pieces[k];
+    auto rel = [&](const Param& p, int axis) {  // (end − t) on one axis
+      auto [n, dd] = param_nd(p, pc.E, t, LiftQ{});
+      auto o = axis == 0 ? LiftQ{}(pc.E.o1.x()) + LiftQ{}(pc.E.o2.x()) - LiftQ{}(t.x()) : LiftQ{}(pc.E.o1.y()) + LiftQ{}(pc.E.o2.y()) - LiftQ{}(t.y());
+      auto dv = axis == 0 ? ray_dx(pc.E, LiftQ{}) : ray_dy(pc.E, LiftQ{});
+      return mpq_class((o * dd + n * dv).v / dd.v);
+    };
+    const mpq_class ax = rel(pc.lo, 0), ay = rel(pc.lo, 1), bx = rel(pc.hi, 0), by = rel(pc.hi, 1);
+    const mpq_class dot_exact = -(ax * (bx - ax) + ay * (by - ay));       // (t − A)·(B − A)
+    const mpq_class rest_exact = bx * (bx - ax) + by * (by - ay);         // (B − t)·(B − A)
+    const double wx = t.x() - F.px0[k], wy = t.y() - F.py0[k], ex = F.pex[k], ey = F.pey[k];
+    const double dot = wx * ex + wy * ey, rest = ex * ex + ey * ey - dot;
+    for (const auto& [f, x] : {std::pair{dot, dot_exact}, std::pair{rest, rest_exact}}) {
+      const mpq_class err = abs(x - mpq_class(f));
+      ASSERT_LE(err, mpq_class(B)) << what << " piece " << k << " t = " << t.transpose();
+      st.worst = std::max(st.worst, mpq_class(err / mpq_class(B)).get_d());
+      if ((f < 0) != (sgn(x) < 0) || (f > 0) != (sgn(x) > 0)) ++st.wrong_unguarded;  // the sign without B
+    }
+  }
+  for (std::uint32_t c : cand) {
+    ++st.candidates;
+    const std::uint32_t k = c & ~NfpFlat::kFlags;
+    const NfpPiece& pc = N.pieces[k];
+    if (c & NfpFlat::kInside) {
+      ++st.inside;
+      ASSERT_GT(compare_params(proj, pc.lo, pc.E, t), 0) << what << " piece " << k << " t = " << t.transpose();
+      ASSERT_LT(compare_params(proj, pc.hi, pc.E, t), 0) << what << " piece " << k << " t = " << t.transpose();
+    } else if (c & NfpFlat::kBeforeLo) {
+      ++st.before;
+      ASSERT_LT(compare_params(proj, pc.lo, pc.E, t), 0) << what << " piece " << k << " t = " << t.transpose();
+    } else if (c & NfpFlat::kBeyondHi) {
+      ++st.beyond;
+      ASSERT_GT(compare_params(proj, pc.hi, pc.E, t), 0) << what << " piece " << k << " t = " << t.transpose();
+    } else {
+      ++st.unflagged;
+    }
+  }
+}
+
+void check_flags_pair(const NoFitPolygon2& nfp, std::mt19937_64& rng, int random, FlagStats& st, const std::string& what) {
+  const auto& N = nfp_impl(nfp);
+  if (N.pieces.empty()) return;
+  Vec2 lo = N.pieces[0].a, hi = lo;
+  for (const auto& pc : N.pieces) lo = lo.cwiseMin(pc.a).cwiseMin(pc.b), hi = hi.cwiseMax(pc.a).cwiseMax(pc.b);
+  std::uniform_real_distribution<double> ux(lo.x(), hi.x()), uy(lo.y(), hi.y()), u(0.01, 1);
+  for (int k = 0; k < random; ++k) check_flags(nfp, Vec2(ux(rng), uy(rng)), st, what);
+  // Perpendiculars at the ends of a few pieces: the projection falls on the end, or ulps beside.
+  for (std::size_t k = 0; k < N.pieces.size(); k += std::max<std::size_t>(1, N.pieces.size() / 6)) {
+    const auto& pc = N.pieces[k];
+    const Vec2 n = Vec2(pc.a.y() - pc.b.y(), pc.b.x() - pc.a.x()) * u(rng);
+    for (const Vec2& end : {pc.a, pc.b})
+      for (int s = -2; s <= 2; ++s) check_flags(nfp, ulp_step(end + n, s, -s), st, what), check_flags(nfp, ulp_step(end, s, s), st, what);
+  }
+}
+
+TEST(NfpFastPath, NearestCandidateFlagsAgainstExact) {
+  std::mt19937_64 rng(19007);
+  FlagStats st;
+  const auto albano = instance("albano.json");
+  for (std::size_t i = 0; i < albano.size(); i += 3)
+    for (std::size_t j = 1; j < albano.size(); j += 4)
+      check_flags_pair(NoFitPolygon2(albano[i], albano[j]), rng, 10, st, "albano " + std::to_string(i) + " " + std::to_string(j));
+  for (const std::string file : {"shirts", "trousers"}) {
+    const auto pieces = instance(file + ".json");
+    for (double deg : {30.0, 117.0}) {
+      const double a = deg * M_PI / 180, c = std::cos(a), s = std::sin(a);
+      const std::size_t i = rng() % pieces.size(), j = rng() % pieces.size();
+      const Polygon Q = mapped(pieces[j], [&](const Vec2& p) { return Vec2(c * p.x() - s * p.y(), s * p.x() + c * p.y()); });
+      check_flags_pair(NoFitPolygon2(pieces[i], Q), rng, 10, st, file + " rotated " + std::to_string(deg));
+    }
+  }
+  check_flags_pair(NoFitPolygon2(Polygon::simple(std::vector<Vec2>{{0, 0}, {0.7, 0}, {0.7, 0.8}, {0.5, 0.8}, {0.5, 0.2}, {0.4, 0.2}, {0.4, 0.8}, {0, 0.8}}, "thin U"),
+                                 Polygon::simple(std::vector<Vec2>{{0, 0}, {0.1, 0}, {0.1, 0.3}, {0, 0.3}}, "thin block")),
+                   rng, 40, st, "thin slot");
+  std::cout << "[nearest flags] " << st.queries << " placements, " << st.candidates << " candidates: " << st.inside << " inside, "
+            << st.before << " before lo, " << st.beyond << " beyond hi, " << st.unflagged << " decided exactly; floating sign wrong "
+            << "without the bound " << st.wrong_unguarded << " times; worst error / bound " << st.worst << "\n";
+  EXPECT_GT(st.inside, st.queries / 4);
+  EXPECT_GT(st.before + st.beyond, st.queries / 20);
+  EXPECT_GT(st.unflagged, 0u);
+  EXPECT_GT(st.wrong_unguarded, 0u);  // the bound is needed: B = 0 would mis-flag these
+  EXPECT_GT(st.worst, 0x1p-13);       // and B shrunk by 2¹³ fails the ASSERT_LE above
+}
+
+}  // namespace
+
+namespace {
+
+// nfp_value.cpp's σ² and translation at a sum vertex (μ = 0: X = o, μ = 1: X = o + D) against
+// exact rationals: every certified value is RN(exact) bit for bit and every error bound holds;
+// the σ² bound is not loose by more than 2¹² on these inputs (shrinking it that much, or dropping
+// it, fails). Inputs: the ends of real no-fit polygon edges with placements at random distances,
+// ulps away and on an axis through the vertex (an exact zero coordinate), random rays over 2^±200.
+TEST(NfpFastPath, VertexValuesAgainstRationals) {
+  using pendepth::exact::LiftQ;
+  using namespace pendepth::nonconvex2;
+  std::mt19937_64 rng(19008);
+  std::size_t tried = 0, certified = 0;
+  double worst = 0;
+  auto check = [&](const Ray& E, int end, const Vec2& t, const std::string& what) {
+    NfpFlat F;
+    F.pdd = {piece_dd(E)};
+    if (!F.pdd[0].ok) return;
+    mpq_class V[2];
+    for (int axis = 0; axis < 2; ++axis) {
+      auto o = axis == 0 ? LiftQ{}(E.o1.x()) + LiftQ{}(E.o2.x()) - LiftQ{}(t.x()) : LiftQ{}(E.o1.y()) + LiftQ{}(E.o2.y()) - LiftQ{}(t.y());
+      V[axis] = end == 0 ? o.v : mpq_class(o.v + (axis == 0 ? ray_dx(E, LiftQ{}) : ray_dy(E, LiftQ{})).v);
+    }
+    const mpq_class s2x = V[0] * V[0] + V[1] * V[1];
+    if (sgn(s2x) == 0) return;
+    ++tried;
+    double s2;
+    Vec2 tr;
+    NfpFlat::ProjectionDiag diag;
+    const bool ok = F.vertex_values(0, end, t, s2, tr, &diag);
+    if (diag.set) {
+      const mpq_class ex[3] = {s2x, V[0], V[1]};
+      for (int i = 0; i < 3; ++i) {
+        const mpq_class err = abs(ex[i] - mpq_class(diag.hi[i]) - mpq_class(diag.lo[i]));
+        ASSERT_LE(err, mpq_class(diag.bound[i])) << what << " value " << i << " t = " << t.transpose();
+        if (i == 0) worst = std::max(worst, mpq_class(err / mpq_class(diag.bound[0])).get_d());
+      }
+    }
+    if (!ok) return;
+    ++certified;
+    ASSERT_TRUE(same(s2, pendepth::exact::round_nearest(s2x))) << what << " σ² at t = " << t.transpose();
+    ASSERT_TRUE(same(tr.x(), pendepth::exact::round_nearest(V[0]))) << what << " x at t = " << t.transpose();
+    ASSERT_TRUE(same(tr.y(), pendepth::exact::round_nearest(V[1]))) << what << " y at t = " << t.transpose();
+  };
+  const auto albano = instance("albano.json");
+  std::uniform_real_distribution<double> u(-1, 1);
+  for (std::size_t i = 0; i < albano.size(); i += 3)
+    for (std::size_t j = 0; j < albano.size(); j += 2) {
+      const NoFitPolygon2 nfp(albano[i], albano[j]);
+      const auto& N = nfp_impl(nfp);
+      for (std::size_t k = 0; k < N.pieces.size(); k += 2) {
+        const auto& pc = N.pieces[k];
+        for (int end = 0; end < 2; ++end) {
+          const Vec2 X = end == 0 ? Vec2(pc.E.o1 + pc.E.o2) : Vec2(pc.E.o1 + pc.E.o2 + pc.E.a1 + pc.E.a2 - pc.E.b1 - pc.E.b2);
+          check(pc.E, end, X + Vec2(u(rng), u(rng)) * 30, "albano far");
+          check(pc.E, end, X + Vec2(u(rng), u(rng)) * 0x1p-30, "albano near");
+          check(pc.E, end, ulp_step(X, 1, -2), "albano ulps");
+          check(pc.E, end, Vec2(X.x(), X.y() + 7 * u(rng)), "albano axis");
+        }
+      }
+    }
+  std::uniform_real_distribution<double> m(-1, 1);
+  std::uniform_int_distribution<int> ex(-200, 200);
+  for (int k = 0; k < 3000; ++k) {
+    const double s = std::ldexp(1.0, ex(rng));
+    auto v = [&]() -> Vec2 { return Vec2(m(rng), m(rng)) * s; };
+    const Ray E = edge_ray(v(), v() * 0x1p-20, v(), k % 2 ? v() * 0x1p-30 : Vec2(0, 0), Vec2(0, 0), Vec2(0, 0));
+    check(E, k % 2, k % 3 ? v() : Vec2(E.o1 + E.o2) + v() * 0x1p-40, "random " + std::to_string(k));
+  }
+  std::cout << "[vertex values] " << tried << " tried, " << certified << " certified; worst error / bound " << worst << "\n";
+  EXPECT_GT(certified, tried * 9 / 10);
+  EXPECT_GT(worst, 0x1p-12);
 }
 
 }  // namespace
