@@ -148,7 +148,8 @@ std::vector<TriangleIds> cdt_triangulate(const Polygon& P) {
   // Vertices in CGAL's spatial order (a deterministic shuffle, then Hilbert-sorted rounds: the
   // biased randomized insertion order), each located from the previous one. In ring order the
   // Delaunay insertions of a finely sampled curve (a spiral's arms) flip Θ(N) edges each: the
-  // spiral of 10⁵ vertices spent ~3.5 s here, ~60 ms in this order (docs/benchmarks.md).
+  // spiral of 10⁵ vertices spent about half of its 7 s build here, a few percent in this order
+  // (perf; docs/benchmarks.md). It costs combs (long collinear runs) some time instead.
   std::vector<K::Point_2> pts;
   pts.reserve(P.size());
   for (const Vec2& p : P.vertices()) pts.emplace_back(p.x(), p.y());
