@@ -40,6 +40,9 @@
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
@@ -142,11 +145,25 @@ bool ear_clip(const Polygon& P, std::vector<TriangleIds>& out) {
 
 std::vector<TriangleIds> cdt_triangulate(const Polygon& P) {
   Cdt cdt;
+  // Vertices in CGAL's spatial order (a deterministic shuffle, then Hilbert-sorted rounds: the
+  // biased randomized insertion order), each located from the previous one. In ring order the
+  // Delaunay insertions of a finely sampled curve (a spiral's arms) flip Θ(N) edges each: the
+  // spiral of 10⁵ vertices spent about half of its 7 s build here, a few percent in this order
+  // (perf; docs/benchmarks.md). It costs combs (long collinear runs) some time instead.
+  std::vector<K::Point_2> pts;
+  pts.reserve(P.size());
+  for (const Vec2& p : P.vertices()) pts.emplace_back(p.x(), p.y());
+  std::vector<std::size_t> order(P.size());  // the property map's key type
+  for (std::size_t g = 0; g < order.size(); ++g) order[g] = g;
+  CGAL::spatial_sort(order.begin(), order.end(),
+                     CGAL::Spatial_sort_traits_adapter_2<K, CGAL::Pointer_property_map<K::Point_2>::type>(
+                         CGAL::make_property_map(pts)));
   std::vector<Cdt::Vertex_handle> vh(P.size());
-  for (std::size_t g = 0; g < P.size(); ++g) {
-    const Vec2& p = P.vertices()[g];
-    vh[g] = cdt.insert(K::Point_2(p.x(), p.y()));
+  Cdt::Face_handle hint;
+  for (const std::size_t g : order) {
+    vh[g] = cdt.insert(pts[g], hint);
     vh[g]->info() = static_cast<std::uint32_t>(g);
+    hint = vh[g]->face();
   }
   for (std::size_t g = 0; g < P.size(); ++g) cdt.insert_constraint(vh[g], vh[P.next(g)]);
 

@@ -128,9 +128,10 @@ class UnionBoundary {
   /// Builds ∂O for the convolved triangles of P (see the file header). Throws nothing beyond
   /// allocation failures (inputs are validated by Polygon / ConvexPolygon). Keeps pointers to P
   /// and R: both must outlive the structure and stay in place (PolygonDepth2::Impl holds all three).
-  /// `nearest_first` = false disables the output-sensitive first pass of step 2 (every candidate
-  /// gathers every sausage in reach, the method before it, O(N²) on a star): the same pieces bit
-  /// for bit, slower; kept as the reference of tests/polygon2/test_union_nearest.cpp.
+  /// `nearest_first` = false disables the output-sensitive parts of step 2 — the first pass and
+  /// the chain hierarchy's pruning (every candidate gathers every sausage in reach, the method
+  /// before them, O(N²) on a star or a finely sampled spiral): the same pieces bit for bit,
+  /// slower; kept as the reference of tests/polygon2/test_union_nearest.cpp.
   UnionBoundary(const Polygon& P, const ConvolvedTriangles& R, bool nearest_first = true);
   ~UnionBoundary();
   UnionBoundary(UnionBoundary&&) noexcept;
@@ -185,6 +186,9 @@ class UnionBoundary {
   std::size_t vertex_count() const;
   /// Candidates the nearest-first pass found entirely inside O (construction statistics).
   std::size_t covered_early() const { return covered_early_; }
+  /// Chain-hierarchy nodes and P edges whose sausages the separation tests proved to miss a
+  /// segment candidate (construction statistics; 0 with nearest_first = false).
+  std::size_t chain_pruned() const { return chain_pruned_; }
 
   struct Index;  ///< bounding-volume hierarchies (private)
 
@@ -211,6 +215,7 @@ class UnionBoundary {
   std::vector<Ring> rings_;
   std::unique_ptr<Index> index_;
   std::size_t covered_early_ = 0;
+  std::size_t chain_pruned_ = 0;
 };
 
 }  // namespace pendepth::polygon2

@@ -9,8 +9,10 @@
 // The exact correctness of the pieces themselves is test_union.cpp's (CGAL's exact union).
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "../test_scale.hpp"
 #include "polygon2/convolved_triangles.hpp"
@@ -41,7 +43,7 @@ bool same_end(const EndPoint& a, const EndPoint& b) {
 }
 
 struct Totals {
-  std::size_t cases = 0, candidates_early = 0, pieces = 0;
+  std::size_t cases = 0, candidates_early = 0, pieces = 0, chain_pruned = 0;
 };
 
 // Builds ∂O both ways and compares; returns the number of candidates the first pass decided.
@@ -50,8 +52,10 @@ void compare(const std::string& what, const Polygon& P, const ConvexPolygon& Q, 
   const ConvolvedTriangles R(P, Q);
   const UnionBoundary fast(P, R), ref(P, R, false);
   EXPECT_EQ(ref.covered_early(), 0u);
+  EXPECT_EQ(ref.chain_pruned(), 0u);
   ++tot.cases;
   tot.candidates_early += fast.covered_early();
+  tot.chain_pruned += fast.chain_pruned();
   ASSERT_EQ(fast.pieces().size(), ref.pieces().size());
   ASSERT_EQ(fast.rings().size(), ref.rings().size());
   tot.pieces += ref.pieces().size();
@@ -105,7 +109,9 @@ TEST(UnionNearestFirst, DenseStarsMatchPreviousMethod) {
   }
   std::printf("dense stars: %zu cases, %zu pieces, %zu candidates decided by the first pass\n", tot.cases, tot.pieces,
               tot.candidates_early);
-  // The pass ran (the comparison is not vacuous): 4,701 candidates over all 8 stars in Release.
+  // The pass ran (the comparison is not vacuous): 2,823 candidates over all 8 stars in Release,
+  // 1,803 in the last (a scaled build's only case; segment candidates with at most 64 sausages left
+  // by the chain hierarchy skip the pass).
   EXPECT_GT(tot.candidates_early, pendepth_test::kDivisor == 1 ? 1000u : 100u);
 }
 
@@ -158,6 +164,50 @@ TEST(UnionNearestFirst, DegenerateInputsMatchPreviousMethod) {
   std::printf("degenerate: %zu cases, %zu pieces, %zu candidates decided by the first pass\n", tot.cases, tot.pieces,
               tot.candidates_early);
   EXPECT_GT(tot.candidates_early, 100u);
+}
+
+// Finely sampled spirals (the chain hierarchy's case, issue 19 item 4): every candidate on the
+// arms keeps a piece while Q spans hundreds of edges, so the full gathering runs for each and the
+// hierarchy's separation tests skip most sausages in box reach. Q from a few edges wide to wider
+// than the gap between the arms (sausages of two arms meet), arms far from the origin (large
+// coordinates: the tests' rounding margins) and grid-rounded spirals (exact collinear and
+// parallel edges). The test asserts the pruning ran.
+TEST(UnionNearestFirst, FineSpiralsMatchPreviousMethod) {
+  std::mt19937_64 rng(4242);
+  Totals tot;
+  struct Spec {
+    int steps;
+    double q;      // Q's scale
+    int m;         // Q's vertex count
+    double scale;  // the spiral's scale (integer-rounded when grid)
+    bool grid;
+    Vec2 offset;
+  };
+  const std::vector<Spec> specs = {
+      {1500, 2.0, 12, 1, false, {0, 0}},    {1500, 9.0, 40, 1, false, {0, 0}},
+      {2500, 5.0, 7, 1, false, {0, 0}},     {1200, 30.0, 16, 1, false, {0, 0}},
+      {1500, 4.0, 9, 1, false, {3e5, -2e5}}, {800, 400.0, 10, 64, true, {0, 0}},
+  };
+  const int count = static_cast<int>(specs.size());
+  const int first = count - pendepth_test::scaled(count);  // a scaled build: the last cases
+  for (int it = 0; it < count; ++it) {
+    const Spec& sp = specs[static_cast<std::size_t>(it)];
+    std::vector<Vec2> ring = polygon2_test::spiral_ring(20, 4, 1.5, 4, sp.steps);
+    for (Vec2& v : ring) {
+      v = sp.scale * v;
+      if (sp.grid) v = Vec2(std::round(v.x()), std::round(v.y()));
+      v += sp.offset;
+    }
+    const ConvexPolygon Q = polygon2_test::random_convex(rng, sp.m, sp.q, sp.grid);
+    if (it < first) continue;
+    const Polygon P = Polygon::simple(ring, "spiral");
+    compare("spiral " + std::to_string(it), P, Q, tot);
+  }
+  std::printf("fine spirals: %zu cases, %zu pieces, %zu chain nodes / edges pruned\n", tot.cases, tot.pieces,
+              tot.chain_pruned);
+  // The pruning ran (the comparison is not vacuous): 137 k nodes / edges in Release, 9.9 k in the
+  // last case (a scaled build's only one).
+  EXPECT_GT(tot.chain_pruned, pendepth_test::kDivisor == 1 ? 20000u : 1000u);
 }
 
 }  // namespace
