@@ -956,13 +956,15 @@ void nfp_classify(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& ca
   // the edge: the vertex is extreme against its outer normal), so nothing covers it and its piece
   // is [0, 1], as the reference cutting finds. At a straight vertex the candidate rule checks only
   // the two collinear edges, not the side of the angle: the edges there are parallel to the
-  // candidate (both cross signs are 0), and when the vertex's outgoing edge u (in its own shape,
-  // interior on u's left) points against the candidate's direction d, that shape lies in the
-  // closed outer half-plane of the candidate's line while the other lies in the closed inner one:
-  // no placement on the candidate overlaps, the piece is [0, 1] again (what the cutting finds:
-  // no open sum meets the line). u against d is read off one non-zero coordinate of d (exactly
-  // parallel vectors, exact comparisons of input doubles). Otherwise (same direction: the
-  // candidate's inside lies in O) the candidate is cut exactly.
+  // candidate's direction d (both cross signs are 0). Let u be the straight vertex's outgoing edge
+  // in its own shape (interior on u's left). P's edge with Q's straight vertex q: P lies in the
+  // closed left half-plane of d's line, and Q + x (x on the candidate) in its closed right one
+  // when u runs against d. −Q's edge (d = −(q1 − q0)) with P's straight vertex p: Q + x lies in
+  // the closed left half-plane of d's line through p, and P in its closed right one when u runs
+  // along d. Then no placement on the candidate overlaps: the piece is [0, 1] again (what the
+  // cutting finds: no open sum meets the candidate). The direction of u against d is read off one
+  // non-zero coordinate of d (exactly parallel vectors: exact comparisons of input doubles).
+  // Otherwise the candidate's inside lies in O, and it is cut exactly.
   if (convex_shape(S.P) && convex_shape(S.Q)) {
     const auto VP = S.P.vertices(), VQ = S.Q.vertices();
     auto outer_straight = [&](const NfpCandidate& c) {
@@ -970,7 +972,8 @@ void nfp_classify(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& ca
       const bool q_edge = c.line.q_edge;  // −Q's edge with P's straight vertex p, else P's edge with Q's q
       const Vec2& u0 = q_edge ? VP[E.p0] : VQ[E.q0];
       const Vec2& u1 = q_edge ? VP[S.P.next(E.p0)] : VQ[S.Q.next(E.q0)];
-      return E.a1.x() != E.b1.x() ? (E.a1.x() > E.b1.x()) != (u1.x() > u0.x()) : (E.a1.y() > E.b1.y()) != (u1.y() > u0.y());
+      const bool same = E.a1.x() != E.b1.x() ? (E.a1.x() > E.b1.x()) == (u1.x() > u0.x()) : (E.a1.y() > E.b1.y()) == (u1.y() > u0.y());
+      return q_edge ? same : !same;
     };
     for (const NfpCandidate& c : cands) {
       if (c.redundant) continue;
