@@ -48,7 +48,9 @@
 // most of those have the point on their boundary, as candidates are edges of sums. The pieces'
 // rounded ends come from the split values when their error bounds certify 8 ulps.
 // Two convex shapes: every candidate at a strictly convex vertex is a whole edge of the convex
-// sum and is kept whole without a test (nfp_classify below).
+// sum and is kept whole without a test, and so is one at a straight vertex whose shape lies on
+// the candidate's outer side (two exact comparisons of input coordinates); the other straight
+// candidates are cut by the reference (nfp_classify below).
 // Cost: candidate pairs by boxes (all pairs for K ≤ 64, else a box hierarchy), O(1) exact tests per
 // meeting pair; per part or point the pair sums whose boxes hold the point, O(1) tests each. For
 // X box-overlapping pairs: O(K log K + X + (K + X)·v), v sums per point (worst O(nm)); a
