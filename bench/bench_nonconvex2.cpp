@@ -115,7 +115,9 @@ std::vector<std::vector<Vec2>> nesting_pieces(const std::string& instance) {
   std::vector<std::vector<Vec2>> out;
   for (const auto& item : j["items"]) {
     std::vector<Vec2> r;
-    for (const auto& p : item["shape"]["data"]) r.emplace_back(p[0].get<double>(), p[1].get<double>());
+    // Consecutive repeated vertices dropped (gardeyn6 has some; a polygon rejects them).
+    for (const auto& p : item["shape"]["data"])
+      if (const Vec2 v(p[0].get<double>(), p[1].get<double>()); r.empty() || r.back() != v) r.push_back(v);
     if (r.size() > 1 && r.front() == r.back()) r.pop_back();
     out.push_back(std::move(r));
   }
@@ -311,6 +313,20 @@ Case& nesting_split_case(const std::string& instance, int convex) {
   for (std::size_t i = 0; i < pieces.size(); ++i)
     for (std::size_t j = 0; j < pieces.size(); ++j)
       if (cv[i] + cv[j] == convex) slot->add_pair(pieces[i], pieces[j]);
+  return *slot;
+}
+
+// Every ordered pair of the first `cap` pieces of an instance (all of them when cap is 0), for
+// the build over whole instances (issue 19 item 2); no queries.
+Case& nesting_all_case(const std::string& instance, std::size_t cap) {
+  auto& slot = cases()["nesting-all/" + instance];
+  if (slot) return *slot;
+  slot = std::make_unique<Case>();
+  slot->name = "nesting-all/" + instance;
+  auto pieces = nesting_pieces(instance);
+  if (cap > 0 && pieces.size() > cap) pieces.resize(cap);
+  for (std::size_t i = 0; i < pieces.size(); ++i)
+    for (std::size_t j = 0; j < pieces.size(); ++j) slot->add_pair(pieces[i], pieces[j]);
   return *slot;
 }
 
@@ -571,6 +587,23 @@ int main(int argc, char** argv) {
       benchmark::RegisterBenchmark(("build/pendepth/" + tag).c_str(), BM_build_pendepth, &c)->Unit(benchmark::kMicrosecond);
       benchmark::RegisterBenchmark(("build/cgal/" + tag).c_str(), BM_build_peer, &c, true)->Unit(benchmark::kMicrosecond);
     }
+  // The build over every ordered pair of each ESICUP instance (issue 19 item 2): all pieces, or
+  // the first PENDEPTH_BENCH_ALL_CAP (default 12) of the large instances gardeyn2 (50 pieces of
+  // up to 241 vertices) and gardeyn6 (85); gardeyn4 has 5 pieces of up to 1044 vertices.
+  // Builds only; CGAL and Clipper (pieces within its budget) in the same run.
+  {
+    const auto cap = std::size_t(env_number("PENDEPTH_BENCH_ALL_CAP", 12));
+    for (const std::string instance : {"albano", "shirts", "trousers", "baldacci4", "gardeyn2", "gardeyn4", "gardeyn6"}) {
+      Case& c = nesting_all_case(instance, instance == "gardeyn2" || instance == "gardeyn6" ? cap : 0);
+      const std::string tag = instance + "-all/" + std::to_string(c.n) + "/" + std::to_string(c.m);
+      benchmark::RegisterBenchmark(("build/pendepth/" + tag).c_str(), BM_build_pendepth, &c)->Unit(benchmark::kMicrosecond);
+      benchmark::RegisterBenchmark(("build/cgal/" + tag).c_str(), BM_build_peer, &c, true)->Unit(benchmark::kMicrosecond);
+#ifdef PENDEPTH_BENCH_CLIPPER
+      if (double(c.n) * double(c.m) <= clipper_budget)
+        benchmark::RegisterBenchmark(("build/clipper/" + tag).c_str(), BM_build_peer, &c, false)->Unit(benchmark::kMicrosecond);
+#endif
+    }
+  }
   for (std::size_t n : env_sizes("PENDEPTH_BENCH_N", {10, 30, 100, 300})) {
     Case& c = star_case(n);
     register_case(c, "star/" + std::to_string(c.n) + "/" + std::to_string(c.m), nfp_budget, budget, clipper_budget,

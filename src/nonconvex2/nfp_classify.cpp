@@ -48,7 +48,9 @@
 // most of those have the point on their boundary, as candidates are edges of sums. The pieces'
 // rounded ends come from the split values when their error bounds certify 8 ulps.
 // Two convex shapes: every candidate at a strictly convex vertex is a whole edge of the convex
-// sum and is kept whole without a test (nfp_classify below).
+// sum and is kept whole without a test, and so is one at a straight vertex whose shape lies on
+// the candidate's outer side (two exact comparisons of input coordinates); the other straight
+// candidates are cut by the reference (nfp_classify below).
 // Cost: candidate pairs by boxes (all pairs for K ≤ 64, else a box hierarchy), O(1) exact tests per
 // meeting pair; per part or point the pair sums whose boxes hold the point, O(1) tests each. For
 // X box-overlapping pairs: O(K log K + X + (K + X)·v), v sums per point (worst O(nm)); a
@@ -955,11 +957,29 @@ void nfp_classify(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& ca
   // P ⊕ (−Q) (the vertex's angle, hence the whole convex shape, lies on the closed outer side of
   // the edge: the vertex is extreme against its outer normal), so nothing covers it and its piece
   // is [0, 1], as the reference cutting finds. At a straight vertex the candidate rule checks only
-  // the two collinear edges, not the side of the angle: those few candidates are cut exactly.
+  // the two collinear edges, not the side of the angle: the edges there are parallel to the
+  // candidate's direction d (both cross signs are 0). Let u be the straight vertex's outgoing edge
+  // in its own shape (interior on u's left). P's edge with Q's straight vertex q: P lies in the
+  // closed left half-plane of d's line, and Q + x (x on the candidate) in its closed right one
+  // when u runs against d. −Q's edge (d = −(q1 − q0)) with P's straight vertex p: Q + x lies in
+  // the closed left half-plane of d's line through p, and P in its closed right one when u runs
+  // along d. Then no placement on the candidate overlaps: the piece is [0, 1] again (what the
+  // cutting finds: no open sum meets the candidate). The direction of u against d is read off one
+  // non-zero coordinate of d (exactly parallel vectors: exact comparisons of input doubles).
+  // Otherwise the candidate's inside lies in O, and it is cut exactly.
   if (convex_shape(S.P) && convex_shape(S.Q)) {
+    const auto VP = S.P.vertices(), VQ = S.Q.vertices();
+    auto outer_straight = [&](const NfpCandidate& c) {
+      const Ray& E = c.E;
+      const bool q_edge = c.line.q_edge;  // −Q's edge with P's straight vertex p, else P's edge with Q's q
+      const Vec2& u0 = q_edge ? VP[E.p0] : VQ[E.q0];
+      const Vec2& u1 = q_edge ? VP[S.P.next(E.p0)] : VQ[S.Q.next(E.q0)];
+      const bool same = E.a1.x() != E.b1.x() ? (E.a1.x() > E.b1.x()) == (u1.x() > u0.x()) : (E.a1.y() > E.b1.y()) == (u1.y() > u0.y());
+      return q_edge ? same : !same;
+    };
     for (const NfpCandidate& c : cands) {
       if (c.redundant) continue;
-      if (c.strict) out.push_back(make_piece(c, kZero, kOne));
+      if (c.strict || outer_straight(c)) out.push_back(make_piece(c, kZero, kOne));
       else nfp_cut(S, c, out);
     }
     return;

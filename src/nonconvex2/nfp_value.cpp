@@ -115,6 +115,17 @@ NfpFlat::PieceDD piece_dd(const Ray& E, const Line* edge) {
   two_sum(E.o1.y(), E.o2.y(), v.oy, v.oyl);
   bool ok = true;
   auto dir = [&](double a1, double a2, double b1, double b2, double& hi, double& lo) {
+    // The common case (every candidate's ray: a2 = b2 = 0): D = a1 − b1, whose two-sum is the
+    // same normalised pair as the general expansion below (RN of the exact value and the exact
+    // remainder; zeros as +0), without building expansions. Overflow takes the general path.
+    if (a2 == 0 && b2 == 0) {
+      two_sum(a1, -b1, hi, lo);
+      if (std::isfinite(hi) && std::isfinite(lo)) {
+        if (hi == 0) hi = 0;
+        if (lo == 0) lo = 0;
+        return;
+      }
+    }
     const exact::Ex e = exact::LiftEx{}(a1) + exact::LiftEx{}(a2) - exact::LiftEx{}(b1) - exact::LiftEx{}(b2);
     if (!e.ok || e.n > 2) return void(ok = false);
     if (e.n == 0) return void(hi = lo = 0);
