@@ -98,6 +98,28 @@ V3<T> scale(const T& s, const V3<T>& a) {
   return {s * a[0], s * a[1], s * a[2]};
 }
 
+// FlX (exact doubles) that also knows a product with an exact zero factor is exactly 0: proves
+// the structural zeros of the value's polynomials (axis-aligned edges) without the exact tiers.
+// `exact` means: the formula's real value is exactly v.
+struct FlZ {
+  double v = 0;
+  bool exact = true;
+};
+inline FlZ operator+(FlZ a, FlZ b) {
+  const exact::FlX r = exact::FlX{a.v, a.exact} + exact::FlX{b.v, b.exact};
+  return {r.v, r.exact};
+}
+inline FlZ operator-(FlZ a) { return {-a.v, a.exact}; }
+inline FlZ operator-(FlZ a, FlZ b) { return a + (-b); }
+inline FlZ operator*(FlZ a, FlZ b) {
+  if ((a.exact && a.v == 0) || (b.exact && b.v == 0)) return {0.0, true};
+  const exact::FlX r = exact::FlX{a.v, a.exact} * exact::FlX{b.v, b.exact};
+  return {r.v, r.exact};
+}
+struct LiftFlZ {
+  FlZ operator()(double x) const { return {x, true}; }
+};
+
 // Plain doubles: the rounded guess of Johnson's sub-algorithm (verified exactly afterwards).
 struct LiftD {
   double operator()(double x) const { return x; }
@@ -497,10 +519,29 @@ GjkResult gjk_loop(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacenc
         if (on_plane({X.s[u].id.i, k}) && on_plane({X.s[u].id.i, j})) return true;
       return false;
     };
+    // A triangle of one side's vertices (all members share j, or all share i; plain points, no
+    // projection or ray offset): U = ±(e₁ × e₂) with e the P edge vectors, or U = ±(R e₁ × R e₂)
+    // with e the Q edge vectors, and (R a × R b)·(R d) = det(R)·(a × b)·d for any matrix R
+    // (adjugate identity). So U·(x − y) on that side is 0 exactly when x and y are both coplanar
+    // with the triangle (orient3d of the shape's own vertices: a flat facet of the hull) — exact
+    // zeros known without the expansion tiers (other signs as before).
+    const bool plain = !c.proj && !c.RpT && X.size == 3;
+    const int side = !plain ? 0
+                     : X.s[0].id.j == X.s[1].id.j && X.s[1].id.j == X.s[2].id.j ? 1
+                     : X.s[0].id.i == X.s[1].id.i && X.s[1].id.i == X.s[2].id.i ? 2
+                                                                                 : 0;
+    auto coplanar = [&](const std::vector<Vec3>& pts, int x, bool p_side) {
+      const int v0 = p_side ? X.s[0].id.i : X.s[0].id.j, v1 = p_side ? X.s[1].id.i : X.s[1].id.j,
+                v2 = p_side ? X.s[2].id.i : X.s[2].id.j;
+      return x == v0 || x == v1 || x == v2 || predicates::orient3d(pts[v0], pts[v1], pts[v2], pts[x]) == 0;
+    };
+    auto flat_zero_p = [&](int k, int i) { return side == 1 && coplanar(PD.v, k, true) && coplanar(PD.v, i, true); };
+    auto flat_zero_q = [&](int k, int j) { return side == 2 && coplanar(QD.v, k, false) && coplanar(QD.v, j, false); };
     auto improves = [&](PairId x) {
       for (int k = 0; k < X.size; ++k)
         if (X.s[k].id == x) return false;
       if (on_plane(x)) return false;  // structurally on the plane
+      if ((x.j == a.id.j && flat_zero_p(x.i, a.id.i)) || (x.i == a.id.i && flat_zero_q(x.j, a.id.j))) return false;
       return dir_sign(U, Ufl, [&](auto L) { return c.dm(L, x, a.id); }) < 0;
     };
     if (!improves(s)) {
@@ -509,7 +550,7 @@ GjkResult gjk_loop(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacenc
         moved = false;
         for (int e = aP.start[s.i]; e < aP.start[s.i + 1] && !moved; ++e) {
           const int k = aP.nbr[e], i = s.i;
-          if (p_zero(k, i)) continue;
+          if (p_zero(k, i) || flat_zero_p(k, i)) continue;
           if (dir_sign(U, Ufl, [&](auto L) { return sub(c.pvec(L, k), c.pvec(L, i)); }) < 0) s.i = k, moved = true;
         }
       }
@@ -517,7 +558,7 @@ GjkResult gjk_loop(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacenc
         moved = false;
         for (int e = aQ.start[s.j]; e < aQ.start[s.j + 1] && !moved; ++e) {
           const int k = aQ.nbr[e], j = s.j;
-          if (q_zero(k, j)) continue;
+          if (q_zero(k, j) || flat_zero_q(k, j)) continue;
           if (dir_sign(U, Ufl, [&](auto L) { return c.dm(L, PairId{0, k}, PairId{0, j}); }) < 0)
             s.j = k, moved = true;
         }
@@ -645,10 +686,21 @@ std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const V
   auto approx = [&](PairId s) { return Vec3(PD.v[s.i] - (rel.R * QD.v[s.j] + tqp)); };
   Vec3 v = aP.centroid - (rel.R * aQ.centroid + tqp);
   if (!v.allFinite() || v == Vec3::Zero()) v = Vec3::UnitX();
+  auto scan = [](const PolytopeData& d, const Vec3& u) {
+    const std::size_t n = d.v.size();
+    const Vec3* x = d.v.data();
+    double best = -std::numeric_limits<double>::infinity();
+    int bi = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const double s = u[0] * x[k][0] + u[1] * x[k][1] + u[2] * x[k][2];
+      if (s > best) best = s, bi = int(k);
+    }
+    return bi;
+  };
   auto support = [&](const Vec3& u, int i0, int j0) {
     const Vec3 uq = rel.R.transpose() * u;
-    return PairId{climb_rounded(PD, aP, -u, i0 >= 0 ? i0 : seed_vertex(aP, -u)),
-                  climb_rounded(QD, aQ, uq, j0 >= 0 ? j0 : seed_vertex(aQ, uq))};
+    return PairId{PD.v.size() <= 64 ? scan(PD, -u) : climb_rounded(PD, aP, -u, i0 >= 0 ? i0 : seed_vertex(aP, -u)),
+                  QD.v.size() <= 64 ? scan(QD, uq) : climb_rounded(QD, aQ, uq, j0 >= 0 ? j0 : seed_vertex(aQ, uq))};
   };
   PairId s = support(v, -1, -1);
   PairId ids[4] = {s};
@@ -664,7 +716,13 @@ std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const V
     const Vec3 x = approx(s);
     if (!(x.dot(v) < v.squaredNorm())) break;  // not strictly closer than the plane through v
     ids[n] = s, ms[n] = x, ++n;
-    if (!closest_simplex_double(ids, ms, n, v)) return std::nullopt;
+    if (!closest_simplex_double(ids, ms, n, v)) {
+      // A flat tetrahedron (the new point on the triangle's plane: a parallelogram or polygon
+      // face of M, no progress) or a seeming contact; the simplex is untouched: propose the
+      // previous triangle (the certificate below rejects it unless it is the answer).
+      n = 3;
+      break;
+    }
   }
   Reduced X;
   X.size = n;
@@ -903,30 +961,51 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
       auto ok = [](const exact::DD& x) {
         return exact::dd_finite(x) && exact::safe_bound(x.e) <= std::abs(x.hi) * 0x1p-54;
       };
-      auto hi3 = [&](const V3<exact::DD>& x, Vec3& out) {
+      // Each component as the general evaluation below (acc3, accurate_dd) would give it: the
+      // double-double's hi when its bound holds; else the exact-double value (FlX) when exact;
+      // else +0 when FlZ proves the value exactly 0 (a zero factor: axis-aligned edges of the
+      // identity-posed shape), which is what the exact tiers return for an exact zero; else the
+      // general evaluation runs (done = false).
+      auto pick = [&](const V3<exact::DD>& x, auto&& f, Vec3& out) {
+        std::optional<V3<exact::FlX>> fx;
+        std::optional<V3<FlZ>> fz;
         for (int k = 0; k < 3; ++k) {
-          if (!ok(x[k])) return false;
-          out[k] = x[k].hi;
+          if (ok(x[k])) {
+            out[k] = x[k].hi;
+            continue;
+          }
+          if (!fx) fx = f(exact::LiftFlX{});
+          if ((*fx)[k].exact) {
+            out[k] = (*fx)[k].v;
+            continue;
+          }
+          if (!fz) fz = f(LiftFlZ{});
+          if (!(*fz)[k].exact || (*fz)[k].v != 0) return false;
+          out[k] = 0.0;
         }
         return true;
       };
+      const Dir UV{&c, V.size, {V.s[0], V.size > 1 ? V.s[1] : Member{}, V.size > 2 ? V.s[2] : Member{}}, V.tri_sign};
+      auto fU = [&](auto L) { return UV(L); };
       const V3<exact::DD> aD = c.pt(D, a);
       if (V.size == 1) {
-        done = hi3(aD, u);
+        done = pick(aD, fU, u);
         dist = u.stableNorm();
       } else if (V.size == 2) {
         const V3<exact::DD> eD = c.dm(D, V.s[1].id, a.id);
         const V3<exact::DD> UD = sub(scale(dot(eD, eD), aD), scale(dot(aD, eD), eD));
         Vec3 x, e;
-        done = hi3(cross(eD, aD), x) && hi3(eD, e) && hi3(UD, u);
+        done = pick(cross(eD, aD), [&](auto L) { return cross(c.dm(L, V.s[1].id, a.id), c.pt(L, a)); }, x) &&
+               pick(eD, [&](auto L) { return c.dm(L, V.s[1].id, a.id); }, e) && pick(UD, fU, u);
         dist = x.stableNorm() / e.stableNorm();
       } else {
-        const V3<exact::DD> nD = cross(c.dm(D, V.s[1].id, a.id), c.dm(D, V.s[2].id, a.id));
+        auto fn = [&](auto L) { return cross(c.dm(L, V.s[1].id, a.id), c.dm(L, V.s[2].id, a.id)); };
+        const V3<exact::DD> nD = fn(D);
         const exact::DD naD = dot(nD, aD);
+        const V3<exact::DD> UD = V.tri_sign > 0 ? nD : V3<exact::DD>{-nD[0], -nD[1], -nD[2]};
         Vec3 nv;
-        done = ok(naD) && hi3(nD, nv);
+        done = ok(naD) && pick(nD, fn, nv) && pick(UD, fU, u);
         dist = std::abs(naD.hi) / nv.stableNorm();
-        u = V.tri_sign > 0 ? nv : Vec3(-nv);
       }
     }
     if (!done) {
