@@ -686,14 +686,16 @@ std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const V
   auto approx = [&](PairId s) { return Vec3(PD.v[s.i] - (rel.R * QD.v[s.j] + tqp)); };
   Vec3 v = aP.centroid - (rel.R * aQ.centroid + tqp);
   if (!v.allFinite() || v == Vec3::Zero()) v = Vec3::UnitX();
+  // Supports: a linear scan for up to 64 vertices (as Bullet; measured faster than climbing on
+  // such hulls), else rounded hill climbing from the previous answer. Proposals only: the
+  // certificate decides.
   auto scan = [](const PolytopeData& d, const Vec3& u) {
-    const std::size_t n = d.v.size();
     const Vec3* x = d.v.data();
     double best = -std::numeric_limits<double>::infinity();
     int bi = 0;
-    for (std::size_t k = 0; k < n; ++k) {
+    for (int k = 0, n = static_cast<int>(d.v.size()); k < n; ++k) {
       const double s = u[0] * x[k][0] + u[1] * x[k][1] + u[2] * x[k][2];
-      if (s > best) best = s, bi = int(k);
+      if (s > best) best = s, bi = k;
     }
     return bi;
   };
@@ -788,14 +790,15 @@ std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const V
                      exact::kTiny * margin;
     return val > b ? 1 : val < -b ? -1 : 0;
   };
+  auto in = [](const int* vs, int nv, int x) { return vs[0] == x || (nv > 1 && vs[1] == x) || (nv > 2 && vs[2] == x); };
   for (int x = 0; x < np; ++x)  // U·(p_k − p_s) > 0
     for (int e = aP.start[sp[x]]; e < aP.start[sp[x] + 1]; ++e) {
-      if (std::find(sp, sp + np, aP.nbr[e]) != sp + np) continue;
+      if (in(sp, np, aP.nbr[e])) continue;
       if (edge_sign(Ufl, aP.dx[e], aP.dy[e], aP.dz[e]) != 1) return std::nullopt;
     }
   for (int y = 0; y < nq; ++y)  // U·(q'_t − q'_k) = W·(q_t − q_k) > 0
     for (int e = aQ.start[sq[y]]; e < aQ.start[sq[y] + 1]; ++e) {
-      if (std::find(sq, sq + nq, aQ.nbr[e]) != sq + nq) continue;
+      if (in(sq, nq, aQ.nbr[e])) continue;
       if (edge_sign(Wfl, aQ.dx[e], aQ.dy[e], aQ.dz[e]) != -1) return std::nullopt;
     }
   return R;
