@@ -716,7 +716,9 @@ std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const V
     for (int k = 0; k < n; ++k) dup = dup || ids[k] == s;
     if (dup) break;
     const Vec3 x = approx(s);
-    if (!(x.dot(v) < v.squaredNorm())) break;  // not strictly closer than the plane through v
+    // Not closer than the plane through v by more than rounding (2⁻⁴⁰ relative): converged; a
+    // rounding-level cycle would otherwise run to the cap.
+    if (!(x.dot(v) < v.squaredNorm() * (1 - 0x1p-40))) break;
     ids[n] = s, ms[n] = x, ++n;
     if (!closest_simplex_double(ids, ms, n, v)) {
       // A flat tetrahedron (the new point on the triangle's plane: a parallelogram or polygon
