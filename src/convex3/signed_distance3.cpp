@@ -866,11 +866,11 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
                               : X.s[0].id.j != X.s[1].id.j || X.s[1].id.j != X.s[2].id.j);
       edge_edge = ni == 2 && nj == 2;
       if (edge_edge) V.s[0] = c.member({i1, j1}), V.s[1] = c.member({i1, j2}), V.s[2] = c.member({i2, j1});
-      V.tri_sign = exact_sign([&](auto L) {
-        return dot(cross(c.dm(L, V.s[1].id, V.s[0].id), c.dm(L, V.s[2].id, V.s[0].id)), c.pt(L, V.s[0]));
-      });
       X.tri_sign = exact_sign([&](auto L) {
         return dot(cross(c.dm(L, X.s[1].id, X.s[0].id), c.dm(L, X.s[2].id, X.s[0].id)), c.pt(L, X.s[0]));
+      });
+      V.tri_sign = !edge_edge ? X.tri_sign : exact_sign([&](auto L) {
+        return dot(cross(c.dm(L, V.s[1].id, V.s[0].id), c.dm(L, V.s[2].id, V.s[0].id)), c.pt(L, V.s[0]));
       });
     }
   }
@@ -961,7 +961,7 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
     double dist = 0;
     Vec3 u;
     bool done = false;
-    {
+    if (path.quick_value) {
       const exact::LiftDD D;
       auto ok = [](const exact::DD& x) {
         return exact::dd_finite(x) && exact::safe_bound(x.e) <= std::abs(x.hi) * 0x1p-54;
