@@ -38,10 +38,13 @@
 // Predicates: each sign is first evaluated from the simplex points cached as doubles with a
 // rigorous error bound (exact::Fl), then exact::exact_sign (double-double, expansions, GMP).
 //
-// Fast path (gjk_fast, tried first): the loop in plain doubles, then one filtered certificate
-// of its final simplex that also proves it non-degenerate (support faces exactly S's vertices),
-// so the exact loop could only have ended on the same S; the value is computed by the same code
-// on S in canonical order: the same bits (see gjk_fast). Uncertified → the exact loop.
+// Fast path (gjk_fast, tried first): the loop in plain doubles (supports by a linear scan of
+// shapes of ≤ 64 vertices), then one filtered certificate of its final simplex that also proves
+// it non-degenerate (support faces exactly S's vertices), so the exact loop could only have
+// ended on the same S; the value is computed by the same code on S in canonical order: the same
+// bits (see gjk_fast). Uncertified → the exact loop. The value's double-double evaluation
+// resolves the structural zeros of its components (FlX / FlZ) as the general per-component
+// evaluation would, without its exact tiers (SignedDistancePath::quick_value; tests compare).
 //
 // Result: witnesses = Σ λ_k p_{i_k} and Σ λ_k q'_{j_k} (λ rounded), normal = −U/|U| (from P
 // towards Q), features = the distinct P (Q) vertices of S: one vertex, an edge (a level-0
@@ -601,8 +604,8 @@ static void closest_tri_double(const Vec3* m, int x, int y, int z, Vec3& out, in
 }
 
 // Closest point v of conv(m[0..n)) to 0 in doubles (n ≤ 4; Ericson, Real-Time Collision
-// Detection §5.1.5–5.1.6), the simplex reduced to the vertices of the face holding it. False
-// when 0 seems inside a tetrahedron or the tetrahedron is flat (the exact loop then answers).
+// Detection §5.1.5–5.1.6), the simplex reduced to the vertices of the face holding it. False,
+// with the simplex untouched, when 0 seems inside a tetrahedron or the tetrahedron is flat.
 static bool closest_simplex_double(PairId* id, Vec3* m, int& n, Vec3& v) {
   auto keep = [&](std::initializer_list<int> ks) {
     PairId i2[4];
@@ -648,9 +651,10 @@ static bool closest_simplex_double(PairId* id, Vec3* m, int& n, Vec3& v) {
   return true;
 }
 
-// The loop of gjk_loop with every decision in plain doubles (supports by rounded climbs, the
-// closest point of the simplex by Ericson's region tests, improvement by the double sign): no
-// error bounds until the end. Its final simplex S is then accepted only by one certificate whose
+// The loop of gjk_loop with every decision in plain doubles (supports by scans or rounded
+// climbs, the closest point of the simplex by Ericson's region tests, improvement by the double
+// sign with a 2⁻⁴⁰ relative margin; a flat tetrahedron proposes its triangle): no error bounds
+// until the end — its proposals need not be right, only certified. Its final simplex S is then accepted only by one certificate whose
 // every sign is a filtered one (exact::Fl: value and a rigorous bound of its error, or for the
 // edge signs of (c) a bound derived for that formula; `margin` scales the bounds: 1 in the
 // library, 0 only in the test showing that the tests catch an unsound certificate):
