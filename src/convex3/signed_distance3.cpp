@@ -714,7 +714,7 @@ std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const V
   int n = 1;
   v = ms[0];
   for (int iter = 0;; ++iter) {
-    if (iter == 48 || !v.allFinite() || v == Vec3::Zero()) return std::nullopt;
+    if (iter == 48 || !v.allFinite() || (v[0] == 0 && v[1] == 0 && v[2] == 0)) return std::nullopt;
     s = support(v, s.i, s.j);
     bool dup = false;
     for (int k = 0; k < n; ++k) dup = dup || ids[k] == s;
@@ -856,9 +856,10 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
   bool edge_edge = false;
   Reduced V = X;
   if (!contact) {
+    int swaps = 0;
     for (int k = 1; k < X.size; ++k)  // insertion sort by (i, j)
       for (int l = k; l > 0 && std::pair(X.s[l].id.i, X.s[l].id.j) < std::pair(X.s[l - 1].id.i, X.s[l - 1].id.j); --l)
-        std::swap(X.s[l], X.s[l - 1]);
+        std::swap(X.s[l], X.s[l - 1]), ++swaps;
     V = X;
     if (X.size == 3) {
       const int i1 = X.s[0].id.i, i2 = X.s[2].id.i;
@@ -870,7 +871,9 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
                               : X.s[0].id.j != X.s[1].id.j || X.s[1].id.j != X.s[2].id.j);
       edge_edge = ni == 2 && nj == 2;
       if (edge_edge) V.s[0] = c.member({i1, j1}), V.s[1] = c.member({i1, j2}), V.s[2] = c.member({i2, j1});
-      X.tri_sign = exact_sign([&](auto L) {
+      // n·a = ((b − a) × (c − a))·a = det(a, b, c): alternating, so the fast path's certified
+      // sign carries over with the parity of the sort.
+      X.tri_sign = fast ? (swaps % 2 ? -fast->tri_sign : fast->tri_sign) : exact_sign([&](auto L) {
         return dot(cross(c.dm(L, X.s[1].id, X.s[0].id), c.dm(L, X.s[2].id, X.s[0].id)), c.pt(L, X.s[0]));
       });
       V.tri_sign = !edge_edge ? X.tri_sign : exact_sign([&](auto L) {
