@@ -230,12 +230,18 @@ struct Dir {
   }
 };
 
-// Exact sign of U·(x − y) given lazily: f(lift) returns the vector x − y.
-template <class F>
-int dir_sign(const Dir& U, const V3<Fl>& Ufl, F&& diff) {
+// Exact sign of U·(x − y) given lazily: f(lift) returns the vector x − y. `zero`, asked only
+// when the floating filter fails, may prove the value exactly 0 (else the exact tiers decide).
+template <class F, class Z>
+int dir_sign(const Dir& U, const V3<Fl>& Ufl, F&& diff, Z&& zero) {
   const int s = exact::certified_sign(dot(Ufl, diff(LiftFl{})));
   if (s != 2) return s;
+  if (zero()) return 0;
   return exact_sign([&](auto L) { return dot(U(L), diff(L)); });
+}
+template <class F>
+int dir_sign(const Dir& U, const V3<Fl>& Ufl, F&& diff) {
+  return dir_sign(U, Ufl, std::forward<F>(diff), [] { return false; });
 }
 
 // Rounded steepest ascent of u·v from v (a proposal; certified later).
@@ -258,6 +264,10 @@ struct Reduced {
   int tri_sign = 1;
 };
 
+// Number of set bits of a 4-bit mask (a nibble table: std::popcount is a library call without
+// -mpopcnt).
+inline int bits4(int mask) { return static_cast<int>((0x4332322132212110ull >> (4 * mask)) & 0xF); }
+
 // Exact sign of the barycentric numerators and the tests of Johnson's sub-algorithm.
 class Johnson {
  public:
@@ -270,7 +280,7 @@ class Johnson {
     // A guess in doubles, verified exactly; the exact enumeration only when the guess fails.
     for (int size = 1; size <= n; ++size)
       for (int mask = 1; mask <= all; ++mask) {
-        if (std::popcount(static_cast<unsigned>(mask)) != size || !(mask & newest)) continue;
+        if (bits4(mask) != size || !(mask & newest)) continue;
         Reduced r;
         if (accept<false>(X, n, mask, r)) {
           if (accept<true>(X, n, mask, r)) return r;
@@ -281,7 +291,7 @@ class Johnson {
     for (int pass = 0; pass < 2; ++pass)
       for (int size = 1; size <= n; ++size)
         for (int mask = 1; mask <= all; ++mask) {
-          if (std::popcount(static_cast<unsigned>(mask)) != size) continue;
+          if (bits4(mask) != size) continue;
           if (((mask & newest) != 0) != (pass == 0)) continue;
           Reduced r;
           if (accept<true>(X, n, mask, r)) return r;
@@ -544,8 +554,9 @@ GjkResult gjk_loop(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacenc
       for (int k = 0; k < X.size; ++k)
         if (X.s[k].id == x) return false;
       if (on_plane(x)) return false;  // structurally on the plane
-      if ((x.j == a.id.j && flat_zero_p(x.i, a.id.i)) || (x.i == a.id.i && flat_zero_q(x.j, a.id.j))) return false;
-      return dir_sign(U, Ufl, [&](auto L) { return c.dm(L, x, a.id); }) < 0;
+      return dir_sign(U, Ufl, [&](auto L) { return c.dm(L, x, a.id); }, [&] {
+               return (x.j == a.id.j && flat_zero_p(x.i, a.id.i)) || (x.i == a.id.i && flat_zero_q(x.j, a.id.j));
+             }) < 0;
     };
     if (!improves(s)) {
       // Certify (i, j) exactly: no neighbour strictly better.
@@ -553,16 +564,19 @@ GjkResult gjk_loop(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacenc
         moved = false;
         for (int e = aP.start[s.i]; e < aP.start[s.i + 1] && !moved; ++e) {
           const int k = aP.nbr[e], i = s.i;
-          if (p_zero(k, i) || flat_zero_p(k, i)) continue;
-          if (dir_sign(U, Ufl, [&](auto L) { return sub(c.pvec(L, k), c.pvec(L, i)); }) < 0) s.i = k, moved = true;
+          if (p_zero(k, i)) continue;
+          if (dir_sign(U, Ufl, [&](auto L) { return sub(c.pvec(L, k), c.pvec(L, i)); },
+                       [&] { return flat_zero_p(k, i); }) < 0)
+            s.i = k, moved = true;
         }
       }
       for (bool moved = true; moved;) {
         moved = false;
         for (int e = aQ.start[s.j]; e < aQ.start[s.j + 1] && !moved; ++e) {
           const int k = aQ.nbr[e], j = s.j;
-          if (q_zero(k, j) || flat_zero_q(k, j)) continue;
-          if (dir_sign(U, Ufl, [&](auto L) { return c.dm(L, PairId{0, k}, PairId{0, j}); }) < 0)
+          if (q_zero(k, j)) continue;
+          if (dir_sign(U, Ufl, [&](auto L) { return c.dm(L, PairId{0, k}, PairId{0, j}); },
+                       [&] { return flat_zero_q(k, j); }) < 0)
             s.j = k, moved = true;
         }
       }
