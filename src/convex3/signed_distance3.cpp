@@ -535,9 +535,10 @@ GjkResult gjk_loop(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacenc
     // A triangle of one side's vertices (all members share j, or all share i; plain points, no
     // projection or ray offset): U = ±(e₁ × e₂) with e the P edge vectors, or U = ±(R e₁ × R e₂)
     // with e the Q edge vectors, and (R a × R b)·(R d) = det(R)·(a × b)·d for any matrix R
-    // (adjugate identity). So U·(x − y) on that side is 0 exactly when x and y are both coplanar
-    // with the triangle (orient3d of the shape's own vertices: a flat facet of the hull) — exact
-    // zeros known without the expansion tiers (other signs as before).
+    // (adjugate identity). So U·(x − y) on that side is exactly 0 whenever x and y both lie in
+    // the triangle's plane (orient3d of the shape's own vertices: a flat facet of the hull) —
+    // exact zeros known without the expansion tiers, asked only when the floating filter fails
+    // (every other sign as before).
     const bool plain = !c.proj && !c.RpT && X.size == 3;
     const int side = !plain ? 0
                      : X.s[0].id.j == X.s[1].id.j && X.s[1].id.j == X.s[2].id.j ? 1
