@@ -38,10 +38,13 @@
 // Predicates: each sign is first evaluated from the simplex points cached as doubles with a
 // rigorous error bound (exact::Fl), then exact::exact_sign (double-double, expansions, GMP).
 //
-// Fast path (gjk_fast, tried first): the loop in plain doubles, then one filtered certificate
-// of its final simplex that also proves it non-degenerate (support faces exactly S's vertices),
-// so the exact loop could only have ended on the same S; the value is computed by the same code
-// on S in canonical order: the same bits (see gjk_fast). Uncertified → the exact loop.
+// Fast path (gjk_fast, tried first): the loop in plain doubles (supports by a linear scan of
+// shapes of ≤ 64 vertices), then one filtered certificate of its final simplex that also proves
+// it non-degenerate (support faces exactly S's vertices), so the exact loop could only have
+// ended on the same S; the value is computed by the same code on S in canonical order: the same
+// bits (see gjk_fast). Uncertified → the exact loop. The value's double-double evaluation
+// resolves the structural zeros of its components (FlX / FlZ) as the general per-component
+// evaluation would, without its exact tiers (SignedDistancePath::quick_value; tests compare).
 //
 // Result: witnesses = Σ λ_k p_{i_k} and Σ λ_k q'_{j_k} (λ rounded), normal = −U/|U| (from P
 // towards Q), features = the distinct P (Q) vertices of S: one vertex, an edge (a level-0
@@ -97,6 +100,28 @@ template <class T>
 V3<T> scale(const T& s, const V3<T>& a) {
   return {s * a[0], s * a[1], s * a[2]};
 }
+
+// FlX (exact doubles) that also knows a product with an exact zero factor is exactly 0: proves
+// the structural zeros of the value's polynomials (axis-aligned edges) without the exact tiers.
+// `exact` means: the formula's real value is exactly v.
+struct FlZ {
+  double v = 0;
+  bool exact = true;
+};
+inline FlZ operator+(FlZ a, FlZ b) {
+  const exact::FlX r = exact::FlX{a.v, a.exact} + exact::FlX{b.v, b.exact};
+  return {r.v, r.exact};
+}
+inline FlZ operator-(FlZ a) { return {-a.v, a.exact}; }
+inline FlZ operator-(FlZ a, FlZ b) { return a + (-b); }
+inline FlZ operator*(FlZ a, FlZ b) {
+  if ((a.exact && a.v == 0) || (b.exact && b.v == 0)) return {0.0, true};
+  const exact::FlX r = exact::FlX{a.v, a.exact} * exact::FlX{b.v, b.exact};
+  return {r.v, r.exact};
+}
+struct LiftFlZ {
+  FlZ operator()(double x) const { return {x, true}; }
+};
 
 // Plain doubles: the rounded guess of Johnson's sub-algorithm (verified exactly afterwards).
 struct LiftD {
@@ -205,12 +230,18 @@ struct Dir {
   }
 };
 
-// Exact sign of U·(x − y) given lazily: f(lift) returns the vector x − y.
-template <class F>
-int dir_sign(const Dir& U, const V3<Fl>& Ufl, F&& diff) {
+// Exact sign of U·(x − y) given lazily: f(lift) returns the vector x − y. `zero`, asked only
+// when the floating filter fails, may prove the value exactly 0 (else the exact tiers decide).
+template <class F, class Z>
+int dir_sign(const Dir& U, const V3<Fl>& Ufl, F&& diff, Z&& zero) {
   const int s = exact::certified_sign(dot(Ufl, diff(LiftFl{})));
   if (s != 2) return s;
+  if (zero()) return 0;
   return exact_sign([&](auto L) { return dot(U(L), diff(L)); });
+}
+template <class F>
+int dir_sign(const Dir& U, const V3<Fl>& Ufl, F&& diff) {
+  return dir_sign(U, Ufl, std::forward<F>(diff), [] { return false; });
 }
 
 // Rounded steepest ascent of u·v from v (a proposal; certified later).
@@ -233,6 +264,10 @@ struct Reduced {
   int tri_sign = 1;
 };
 
+// Number of set bits of a 4-bit mask (a nibble table: std::popcount is a library call without
+// -mpopcnt).
+inline int bits4(int mask) { return static_cast<int>((0x4332322132212110ull >> (4 * mask)) & 0xF); }
+
 // Exact sign of the barycentric numerators and the tests of Johnson's sub-algorithm.
 class Johnson {
  public:
@@ -245,7 +280,7 @@ class Johnson {
     // A guess in doubles, verified exactly; the exact enumeration only when the guess fails.
     for (int size = 1; size <= n; ++size)
       for (int mask = 1; mask <= all; ++mask) {
-        if (std::popcount(static_cast<unsigned>(mask)) != size || !(mask & newest)) continue;
+        if (bits4(mask) != size || !(mask & newest)) continue;
         Reduced r;
         if (accept<false>(X, n, mask, r)) {
           if (accept<true>(X, n, mask, r)) return r;
@@ -256,7 +291,7 @@ class Johnson {
     for (int pass = 0; pass < 2; ++pass)
       for (int size = 1; size <= n; ++size)
         for (int mask = 1; mask <= all; ++mask) {
-          if (std::popcount(static_cast<unsigned>(mask)) != size) continue;
+          if (bits4(mask) != size) continue;
           if (((mask & newest) != 0) != (pass == 0)) continue;
           Reduced r;
           if (accept<true>(X, n, mask, r)) return r;
@@ -497,11 +532,32 @@ GjkResult gjk_loop(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacenc
         if (on_plane({X.s[u].id.i, k}) && on_plane({X.s[u].id.i, j})) return true;
       return false;
     };
+    // A triangle of one side's vertices (all members share j, or all share i; plain points, no
+    // projection or ray offset): U = ±(e₁ × e₂) with e the P edge vectors, or U = ±(R e₁ × R e₂)
+    // with e the Q edge vectors, and (R a × R b)·(R d) = det(R)·(a × b)·d for any matrix R
+    // (adjugate identity). So U·(x − y) on that side is exactly 0 whenever x and y both lie in
+    // the triangle's plane (orient3d of the shape's own vertices: a flat facet of the hull) —
+    // exact zeros known without the expansion tiers, asked only when the floating filter fails
+    // (every other sign as before).
+    const bool plain = !c.proj && !c.RpT && X.size == 3;
+    const int side = !plain ? 0
+                     : X.s[0].id.j == X.s[1].id.j && X.s[1].id.j == X.s[2].id.j ? 1
+                     : X.s[0].id.i == X.s[1].id.i && X.s[1].id.i == X.s[2].id.i ? 2
+                                                                                 : 0;
+    auto coplanar = [&](const std::vector<Vec3>& pts, int x, bool p_side) {
+      const int v0 = p_side ? X.s[0].id.i : X.s[0].id.j, v1 = p_side ? X.s[1].id.i : X.s[1].id.j,
+                v2 = p_side ? X.s[2].id.i : X.s[2].id.j;
+      return x == v0 || x == v1 || x == v2 || predicates::orient3d(pts[v0], pts[v1], pts[v2], pts[x]) == 0;
+    };
+    auto flat_zero_p = [&](int k, int i) { return side == 1 && coplanar(PD.v, k, true) && coplanar(PD.v, i, true); };
+    auto flat_zero_q = [&](int k, int j) { return side == 2 && coplanar(QD.v, k, false) && coplanar(QD.v, j, false); };
     auto improves = [&](PairId x) {
       for (int k = 0; k < X.size; ++k)
         if (X.s[k].id == x) return false;
       if (on_plane(x)) return false;  // structurally on the plane
-      return dir_sign(U, Ufl, [&](auto L) { return c.dm(L, x, a.id); }) < 0;
+      return dir_sign(U, Ufl, [&](auto L) { return c.dm(L, x, a.id); }, [&] {
+               return (x.j == a.id.j && flat_zero_p(x.i, a.id.i)) || (x.i == a.id.i && flat_zero_q(x.j, a.id.j));
+             }) < 0;
     };
     if (!improves(s)) {
       // Certify (i, j) exactly: no neighbour strictly better.
@@ -510,7 +566,9 @@ GjkResult gjk_loop(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacenc
         for (int e = aP.start[s.i]; e < aP.start[s.i + 1] && !moved; ++e) {
           const int k = aP.nbr[e], i = s.i;
           if (p_zero(k, i)) continue;
-          if (dir_sign(U, Ufl, [&](auto L) { return sub(c.pvec(L, k), c.pvec(L, i)); }) < 0) s.i = k, moved = true;
+          if (dir_sign(U, Ufl, [&](auto L) { return sub(c.pvec(L, k), c.pvec(L, i)); },
+                       [&] { return flat_zero_p(k, i); }) < 0)
+            s.i = k, moved = true;
         }
       }
       for (bool moved = true; moved;) {
@@ -518,7 +576,8 @@ GjkResult gjk_loop(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacenc
         for (int e = aQ.start[s.j]; e < aQ.start[s.j + 1] && !moved; ++e) {
           const int k = aQ.nbr[e], j = s.j;
           if (q_zero(k, j)) continue;
-          if (dir_sign(U, Ufl, [&](auto L) { return c.dm(L, PairId{0, k}, PairId{0, j}); }) < 0)
+          if (dir_sign(U, Ufl, [&](auto L) { return c.dm(L, PairId{0, k}, PairId{0, j}); },
+                       [&] { return flat_zero_q(k, j); }) < 0)
             s.j = k, moved = true;
         }
       }
@@ -560,8 +619,8 @@ static void closest_tri_double(const Vec3* m, int x, int y, int z, Vec3& out, in
 }
 
 // Closest point v of conv(m[0..n)) to 0 in doubles (n ≤ 4; Ericson, Real-Time Collision
-// Detection §5.1.5–5.1.6), the simplex reduced to the vertices of the face holding it. False
-// when 0 seems inside a tetrahedron or the tetrahedron is flat (the exact loop then answers).
+// Detection §5.1.5–5.1.6), the simplex reduced to the vertices of the face holding it. False,
+// with the simplex untouched, when 0 seems inside a tetrahedron or the tetrahedron is flat.
 static bool closest_simplex_double(PairId* id, Vec3* m, int& n, Vec3& v) {
   auto keep = [&](std::initializer_list<int> ks) {
     PairId i2[4];
@@ -607,9 +666,10 @@ static bool closest_simplex_double(PairId* id, Vec3* m, int& n, Vec3& v) {
   return true;
 }
 
-// The loop of gjk_loop with every decision in plain doubles (supports by rounded climbs, the
-// closest point of the simplex by Ericson's region tests, improvement by the double sign): no
-// error bounds until the end. Its final simplex S is then accepted only by one certificate whose
+// The loop of gjk_loop with every decision in plain doubles (supports by scans or rounded
+// climbs, the closest point of the simplex by Ericson's region tests, improvement by the double
+// sign with a 2⁻⁴⁰ relative margin; a flat tetrahedron proposes its triangle): no error bounds
+// until the end — its proposals need not be right, only certified. Its final simplex S is then accepted only by one certificate whose
 // every sign is a filtered one (exact::Fl: value and a rigorous bound of its error, or for the
 // edge signs of (c) a bound derived for that formula; `margin` scales the bounds: 1 in the
 // library, 0 only in the test showing that the tests catch an unsound certificate):
@@ -645,10 +705,23 @@ std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const V
   auto approx = [&](PairId s) { return Vec3(PD.v[s.i] - (rel.R * QD.v[s.j] + tqp)); };
   Vec3 v = aP.centroid - (rel.R * aQ.centroid + tqp);
   if (!v.allFinite() || v == Vec3::Zero()) v = Vec3::UnitX();
+  // Supports: a linear scan for up to 64 vertices (as Bullet; measured faster than climbing on
+  // such hulls), else rounded hill climbing from the previous answer. Proposals only: the
+  // certificate decides.
+  auto scan = [](const PolytopeData& d, const Vec3& u) {
+    const Vec3* x = d.v.data();
+    double best = -std::numeric_limits<double>::infinity();
+    int bi = 0;
+    for (int k = 0, n = static_cast<int>(d.v.size()); k < n; ++k) {
+      const double s = u[0] * x[k][0] + u[1] * x[k][1] + u[2] * x[k][2];
+      if (s > best) best = s, bi = k;
+    }
+    return bi;
+  };
   auto support = [&](const Vec3& u, int i0, int j0) {
     const Vec3 uq = rel.R.transpose() * u;
-    return PairId{climb_rounded(PD, aP, -u, i0 >= 0 ? i0 : seed_vertex(aP, -u)),
-                  climb_rounded(QD, aQ, uq, j0 >= 0 ? j0 : seed_vertex(aQ, uq))};
+    return PairId{PD.v.size() <= 64 ? scan(PD, -u) : climb_rounded(PD, aP, -u, i0 >= 0 ? i0 : seed_vertex(aP, -u)),
+                  QD.v.size() <= 64 ? scan(QD, uq) : climb_rounded(QD, aQ, uq, j0 >= 0 ? j0 : seed_vertex(aQ, uq))};
   };
   PairId s = support(v, -1, -1);
   PairId ids[4] = {s};
@@ -656,15 +729,23 @@ std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const V
   int n = 1;
   v = ms[0];
   for (int iter = 0;; ++iter) {
-    if (iter == 48 || !v.allFinite() || v == Vec3::Zero()) return std::nullopt;
+    if (iter == 48 || !v.allFinite() || (v[0] == 0 && v[1] == 0 && v[2] == 0)) return std::nullopt;
     s = support(v, s.i, s.j);
     bool dup = false;
     for (int k = 0; k < n; ++k) dup = dup || ids[k] == s;
     if (dup) break;
     const Vec3 x = approx(s);
-    if (!(x.dot(v) < v.squaredNorm())) break;  // not strictly closer than the plane through v
+    // Not closer than the plane through v by more than rounding (2⁻⁴⁰ relative): converged; a
+    // rounding-level cycle would otherwise run to the cap.
+    if (!(x.dot(v) < v.squaredNorm() * (1 - 0x1p-40))) break;
     ids[n] = s, ms[n] = x, ++n;
-    if (!closest_simplex_double(ids, ms, n, v)) return std::nullopt;
+    if (!closest_simplex_double(ids, ms, n, v)) {
+      // A flat tetrahedron (the new point on the triangle's plane: a parallelogram or polygon
+      // face of M, no progress) or a seeming contact; the simplex is untouched: propose the
+      // previous triangle (the certificate below rejects it unless it is the answer).
+      n = 3;
+      break;
+    }
   }
   Reduced X;
   X.size = n;
@@ -730,14 +811,15 @@ std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const V
                      exact::kTiny * margin;
     return val > b ? 1 : val < -b ? -1 : 0;
   };
+  auto in = [](const int* vs, int nv, int x) { return vs[0] == x || (nv > 1 && vs[1] == x) || (nv > 2 && vs[2] == x); };
   for (int x = 0; x < np; ++x)  // U·(p_k − p_s) > 0
     for (int e = aP.start[sp[x]]; e < aP.start[sp[x] + 1]; ++e) {
-      if (std::find(sp, sp + np, aP.nbr[e]) != sp + np) continue;
+      if (in(sp, np, aP.nbr[e])) continue;
       if (edge_sign(Ufl, aP.dx[e], aP.dy[e], aP.dz[e]) != 1) return std::nullopt;
     }
   for (int y = 0; y < nq; ++y)  // U·(q'_t − q'_k) = W·(q_t − q_k) > 0
     for (int e = aQ.start[sq[y]]; e < aQ.start[sq[y] + 1]; ++e) {
-      if (std::find(sq, sq + nq, aQ.nbr[e]) != sq + nq) continue;
+      if (in(sq, nq, aQ.nbr[e])) continue;
       if (edge_sign(Wfl, aQ.dx[e], aQ.dy[e], aQ.dz[e]) != -1) return std::nullopt;
     }
   return R;
@@ -789,9 +871,10 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
   bool edge_edge = false;
   Reduced V = X;
   if (!contact) {
+    int swaps = 0;
     for (int k = 1; k < X.size; ++k)  // insertion sort by (i, j)
       for (int l = k; l > 0 && std::pair(X.s[l].id.i, X.s[l].id.j) < std::pair(X.s[l - 1].id.i, X.s[l - 1].id.j); --l)
-        std::swap(X.s[l], X.s[l - 1]);
+        std::swap(X.s[l], X.s[l - 1]), ++swaps;
     V = X;
     if (X.size == 3) {
       const int i1 = X.s[0].id.i, i2 = X.s[2].id.i;
@@ -803,11 +886,13 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
                               : X.s[0].id.j != X.s[1].id.j || X.s[1].id.j != X.s[2].id.j);
       edge_edge = ni == 2 && nj == 2;
       if (edge_edge) V.s[0] = c.member({i1, j1}), V.s[1] = c.member({i1, j2}), V.s[2] = c.member({i2, j1});
-      V.tri_sign = exact_sign([&](auto L) {
-        return dot(cross(c.dm(L, V.s[1].id, V.s[0].id), c.dm(L, V.s[2].id, V.s[0].id)), c.pt(L, V.s[0]));
-      });
-      X.tri_sign = exact_sign([&](auto L) {
+      // n·a = ((b − a) × (c − a))·a = det(a, b, c): alternating, so the fast path's certified
+      // sign carries over with the parity of the sort.
+      X.tri_sign = fast ? (swaps % 2 ? -fast->tri_sign : fast->tri_sign) : exact_sign([&](auto L) {
         return dot(cross(c.dm(L, X.s[1].id, X.s[0].id), c.dm(L, X.s[2].id, X.s[0].id)), c.pt(L, X.s[0]));
+      });
+      V.tri_sign = !edge_edge ? X.tri_sign : exact_sign([&](auto L) {
+        return dot(cross(c.dm(L, V.s[1].id, V.s[0].id), c.dm(L, V.s[2].id, V.s[0].id)), c.pt(L, V.s[0]));
       });
     }
   }
@@ -898,35 +983,56 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
     double dist = 0;
     Vec3 u;
     bool done = false;
-    {
+    if (path.quick_value) {
       const exact::LiftDD D;
       auto ok = [](const exact::DD& x) {
         return exact::dd_finite(x) && exact::safe_bound(x.e) <= std::abs(x.hi) * 0x1p-54;
       };
-      auto hi3 = [&](const V3<exact::DD>& x, Vec3& out) {
+      // Each component as the general evaluation below (acc3, accurate_dd) would give it: the
+      // double-double's hi when its bound holds; else the exact-double value (FlX) when exact;
+      // else +0 when FlZ proves the value exactly 0 (a zero factor: axis-aligned edges of the
+      // identity-posed shape), which is what the exact tiers return for an exact zero; else the
+      // general evaluation runs (done = false).
+      auto pick = [&](const V3<exact::DD>& x, auto&& f, Vec3& out) {
+        std::optional<V3<exact::FlX>> fx;
+        std::optional<V3<FlZ>> fz;
         for (int k = 0; k < 3; ++k) {
-          if (!ok(x[k])) return false;
-          out[k] = x[k].hi;
+          if (ok(x[k])) {
+            out[k] = x[k].hi;
+            continue;
+          }
+          if (!fx) fx = f(exact::LiftFlX{});
+          if ((*fx)[k].exact) {
+            out[k] = (*fx)[k].v;
+            continue;
+          }
+          if (!fz) fz = f(LiftFlZ{});
+          if (!(*fz)[k].exact || (*fz)[k].v != 0) return false;
+          out[k] = 0.0;
         }
         return true;
       };
+      const Dir UV{&c, V.size, {V.s[0], V.size > 1 ? V.s[1] : Member{}, V.size > 2 ? V.s[2] : Member{}}, V.tri_sign};
+      auto fU = [&](auto L) { return UV(L); };
       const V3<exact::DD> aD = c.pt(D, a);
       if (V.size == 1) {
-        done = hi3(aD, u);
+        done = pick(aD, fU, u);
         dist = u.stableNorm();
       } else if (V.size == 2) {
         const V3<exact::DD> eD = c.dm(D, V.s[1].id, a.id);
         const V3<exact::DD> UD = sub(scale(dot(eD, eD), aD), scale(dot(aD, eD), eD));
         Vec3 x, e;
-        done = hi3(cross(eD, aD), x) && hi3(eD, e) && hi3(UD, u);
+        done = pick(cross(eD, aD), [&](auto L) { return cross(c.dm(L, V.s[1].id, a.id), c.pt(L, a)); }, x) &&
+               pick(eD, [&](auto L) { return c.dm(L, V.s[1].id, a.id); }, e) && pick(UD, fU, u);
         dist = x.stableNorm() / e.stableNorm();
       } else {
-        const V3<exact::DD> nD = cross(c.dm(D, V.s[1].id, a.id), c.dm(D, V.s[2].id, a.id));
+        auto fn = [&](auto L) { return cross(c.dm(L, V.s[1].id, a.id), c.dm(L, V.s[2].id, a.id)); };
+        const V3<exact::DD> nD = fn(D);
         const exact::DD naD = dot(nD, aD);
+        const V3<exact::DD> UD = V.tri_sign > 0 ? nD : V3<exact::DD>{-nD[0], -nD[1], -nD[2]};
         Vec3 nv;
-        done = ok(naD) && hi3(nD, nv);
+        done = ok(naD) && pick(nD, fn, nv) && pick(UD, fU, u);
         dist = std::abs(naD.hi) / nv.stableNorm();
-        u = V.tri_sign > 0 ? nv : Vec3(-nv);
       }
     }
     if (!done) {

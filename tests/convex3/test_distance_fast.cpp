@@ -4,6 +4,8 @@
 //     the shared game hulls at random poses, on random hulls, and on degenerate placements —
 //     boxes and prisms touching, apart by ±1–2 ulps, face on face (coplanar supports), parallel
 //     edges, a vertex over the edge and face regions' boundary of a rotated box;
+//   * the value's quick double-double evaluation (exact zeros proven by FlX / FlZ) equals the
+//     general per-component evaluation bit for bit, on both paths;
 //   * the fast path answers most apart pairs (it is not a path that never runs);
 //   * the certificate's margin matters: with the error bounds removed (margin 0, plain floating
 //     signs) the same placements give results that differ from the exact path's — so a
@@ -57,8 +59,17 @@ void check(const ConvexPolytope& P, const Pose3& pp, const ConvexPolytope& Q, co
   const Distance3 fast = convex3::signed_distance_path(P, pp, Q, pq, SignedDistancePath{true, 1.0}, &used);
   const Distance3 fast0 = convex3::signed_distance_path(P, pp, Q, pq, SignedDistancePath{true, 0.0}, &used0);
   const Distance3 front = signed_distance(P, pp, Q, pq);
+  // The value's quick double-double evaluation (exact zeros by FlX / FlZ) against the general
+  // per-component one, on both paths.
+  const Distance3 exact_general = convex3::signed_distance_path(P, pp, Q, pq, SignedDistancePath{false, 1.0, false});
+  const Distance3 fast_general = convex3::signed_distance_path(P, pp, Q, pq, SignedDistancePath{true, 1.0, false});
   ++t.queries;
   t.fast += used;
+  if (!same(exact, exact_general) || !same(fast, fast_general)) {
+    ++t.mismatches;
+    ADD_FAILURE() << what << ": quick value " << exact.distance << " vs general " << exact_general.distance
+                  << " (normal " << exact.normal.transpose() << " vs " << exact_general.normal.transpose() << ")";
+  }
   if (!same(exact, fast) || !same(exact, front)) {
     ++t.mismatches;
     ADD_FAILURE() << what << ": fast path (used " << used << ") " << fast.distance << " vs exact " << exact.distance
