@@ -53,6 +53,7 @@ namespace pendepth {
 class Mesh3;  // include/pendepth/mesh3.hpp
 namespace mesh3 {
 struct MeshPair;  // src/mesh3/mesh_pair.hpp
+struct MixedPair;  // src/mesh3/mesh_mixed.hpp
 }
 namespace convex3 {
 struct FlatShape3;  // src/convex3/flat3.hpp
@@ -444,6 +445,7 @@ class Pair3 {
   int scale_exp_ = 0;
   Shape3 engine_P_, engine_Q_;
   std::shared_ptr<const mesh3::MeshPair> mesh_;  // either shape non-convex (pair3_mesh.cpp)
+  std::shared_ptr<const mesh3::MixedPair> mixed_;  // a mesh against a flat / rounded / curved shape
   Depth3 min_engine(const Pose3& pose_p, const Pose3& pose_q) const;
   Depth3 along_engine(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const;
   Distance3 distance_engine(const Pose3& pose_p, const Pose3& pose_q) const;
