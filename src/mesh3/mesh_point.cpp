@@ -160,11 +160,12 @@ Vec3 tri_normal(const Frame& f, const MixedPair& m, std::size_t t) {
   return (f.Rm * (T[1] - T[0]).cross(T[2] - T[0])).normalized();
 }
 
+// Features: the point's vertex 0; on the mesh's side none (the triangle t is no piece's feature:
+// piece_p / piece_q stay −1, and formatters index pieces or the hull).
 template <class R>
-void set_features(const MixedPair& m, R& r, std::size_t t) {
-  const Feature3 tri{FeatureKind3::Face, static_cast<int>(t)}, pt{FeatureKind3::Vertex, 0};
-  r.feature_p = m.mesh_is_p ? tri : pt;
-  r.feature_q = m.mesh_is_p ? pt : tri;
+void set_features(const MixedPair& m, R& r, std::size_t) {
+  const Feature3 pt{FeatureKind3::Vertex, 0};
+  (m.mesh_is_p ? r.feature_q : r.feature_p) = pt;
 }
 
 // The nearest triangle: its exact distance (best), and its index; triangles by box distance.
