@@ -149,6 +149,11 @@ MixedPair MixedPair::make(const Shape3& P, const Shape3& Q) {
     for (const Vec3& v : k.vertices()) r = std::max(r, (v - c).norm());
     m.center.push_back(c);
     m.radius.push_back(r * (1 + 0x1p-40) + 0x1p-1000);
+    if (m.point) {  // the point path needs no piece pairs (mesh_point.cpp)
+      auto& tris = m.piece_tri.emplace_back();
+      for (const auto& t : k.triangles()) tris.push_back({k[t[0]], k[t[1]], k[t[2]]});
+      continue;
+    }
     const Shape3 piece(k);
     m.pieces.push_back(m.mesh_is_p ? Pair3(piece, other) : Pair3(other, piece));
   }

@@ -32,6 +32,7 @@ struct MixedPair {
   std::vector<std::array<Vec3, 3>> tri;
   std::vector<convex3::FlatShape3> tri_flat;
   std::vector<std::array<Vec3, 2>> tri_box;
+  std::vector<std::vector<std::array<Vec3, 3>>> piece_tri;  ///< each piece's outward triangles
   /// P or Q a non-convex mesh, the other a point, segment, flat polygon, rounded or curved shape.
   static MixedPair make(const Shape3& P, const Shape3& Q);
 };

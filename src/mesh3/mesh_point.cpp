@@ -4,8 +4,8 @@
 // O = int P − q (overlap ⇔ the placed point is interior to the mesh). The union of the open
 // pieces misses the faces the decomposition's pieces share (a point moving through a polycube
 // crosses them), so the point pairs are answered on the mesh's own triangles (closed, outward):
-//   overlap   x ∈ int P ⇔ x lies in some closed piece (the point pair's exact signed distance
-//             <= 0) and on no triangle (flat_flat_distance of triangle and point > 0, exact;
+//   overlap   x ∈ int P ⇔ x lies in some closed piece (exact orient3d against its outward
+//             triangles; pieces pruned by their balls) and on no triangle (flat_flat_distance of triangle and point > 0, exact;
 //             only triangles whose box holds x, with a margin).
 //   σ, sd     dist(x, ∂P) = the least distance to a triangle (each flat_flat_distance: exact
 //             decisions, a few ulps), triangles in increasing box distance, stopping when the box
@@ -189,14 +189,21 @@ Distance3 nearest(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, 
 }  // namespace
 
 bool point_overlapping(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
-  bool inside = false;
-  for (std::size_t i = 0; i < m.pieces.size() && !inside; ++i) {
-    const Distance3 r = m.pieces[i].signed_distance(pose_p, pose_q);
-    inside = !(r.distance > 0);
-  }
-  if (!inside) return false;
   const Frame f = frame(m, pose_p, pose_q, nullptr);
   const double e = margin(f, m);
+  bool inside = false;
+  for (std::size_t i = 0; i < m.piece_tri.size() && !inside; ++i) {
+    if ((f.x - m.center[i]).norm() > m.radius[i] + e) continue;
+    inside = true;  // x in the closed piece: on the inner side of every outward triangle's plane
+    for (const auto& T : m.piece_tri[i])
+      if (exact::exact_sign([&](auto L) {
+            return dot(cross(sub(lv(L, T[1]), lv(L, T[0])), sub(lv(L, T[2]), lv(L, T[0]))), sub(f.placed(L), lv(L, T[0])));
+          }) > 0) {
+        inside = false;
+        break;
+      }
+  }
+  if (!inside) return false;
   for (std::size_t t = 0; t < m.tri.size(); ++t)
     if (box_distance(m.tri_box[t], f.x) <= e && tri_distance(m, t, pose_p, pose_q).distance == 0) return false;
   return true;
