@@ -154,6 +154,14 @@ MixedPair MixedPair::make(const Shape3& P, const Shape3& Q) {
       for (const auto& t : k.triangles()) tris.push_back({k[t[0]], k[t[1]], k[t[2]]});
       continue;
     }
+    if (!other.curved()) {  // the flat and rounded engines need the piece's outer hierarchy
+      try {
+        (void)k.face_count();
+      } catch (const InvalidInput& e) {
+        throw InvalidInput("pair: " + mesh.name() + " against " + other.name() + ": a piece of the mesh's decomposition is " +
+                           "too thin for the rounded-shape engine (" + e.what() + "); use the mesh's hull (--hull)");
+      }
+    }
     const Shape3 piece(k);
     m.pieces.push_back(m.mesh_is_p ? Pair3(piece, other) : Pair3(other, piece));
   }
