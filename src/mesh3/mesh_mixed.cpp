@@ -40,6 +40,7 @@
 // src/convex3/flat3.cpp; rounded: a few exact GJKs; curved: the certified engine).
 #include "mesh3/mesh_mixed.hpp"
 
+#include "front/scale.hpp"
 #include "mesh3/mesh_pair.hpp"
 #include "primitives/support3.hpp"
 
@@ -108,6 +109,21 @@ bool ray_ball(const Offsets& x, std::size_t i, const Vec3& u, double& lo, double
   return hi >= 0;
 }
 
+// The point path's numeric domain: a pose in engine coordinates, a distance or cast answer back.
+Pose3 ep(const MixedPair& m, const Pose3& pose, const char* which) {
+  const front::Scale s{m.scale_exp};
+  if (s.identity()) return pose;
+  return Pose3(pose.rotation, s.vec_to_engine(pose.translation, std::string("pose of ") + which + " translation:"));
+}
+template <class R>
+R back(const MixedPair& m, R r) {
+  const front::Scale s{m.scale_exp};
+  if (s.identity()) return r;
+  r.distance = s.length(r.distance), r.lower_bound = s.length(r.lower_bound), r.upper_bound = s.length(r.upper_bound);
+  r.translation = s.vec(r.translation), r.witness_p = s.vec(r.witness_p), r.witness_q = s.vec(r.witness_q);
+  return r;
+}
+
 template <class R>
 R& name_piece(const MixedPair& m, R& r, std::size_t i) {
   if (m.mesh_is_p) r.piece_p = static_cast<int>(i), r.piece_q = 0;
@@ -128,13 +144,25 @@ MixedPair MixedPair::make(const Shape3& P, const Shape3& Q) {
                        "Shape3::from_file(path, name, true) / --hull, or the segment ⊕ a small ball)");
   bool exact = true;
   const std::vector<ConvexPolytope> pieces = pieces_of(mesh, exact);
-  if (other.dimension() == 0) {  // a point: the mesh's triangles (mesh_point.cpp)
+  front::Scale scale;
+  if (other.dimension() == 0) {  // a point: the mesh's triangles (mesh_point.cpp), scaled
     m.point = true;
     m.pt = *other.flat_shape();
     const Mesh3& mm = *mesh.mesh();
     const auto pts = mm.points();
+    front::Extent x;
+    x.add_point(m.pt.v[0].cwiseAbs().maxCoeff());
+    for (const ConvexPolytope& k : pieces)
+      for (const Vec3& v : k.vertices()) x.add_point(v.cwiseAbs().maxCoeff());
+    for (const auto& t : mm.triangles())
+      for (int e = 0; e < 3; ++e) x.add_point(pts[t[e]].cwiseAbs().maxCoeff()), x.add_edge(pts[t[e]], pts[t[(e + 1) % 3]]);
+    scale = front::Scale::for_pair(x, front::kBand3);
+    m.scale_exp = scale.e;
+    auto in = [&](const Vec3& v, const std::string& what) { return scale.vec_to_engine(v, what); };
+    m.pt.v[0] = in(m.pt.v[0], other.name() + " point:");
     for (const auto& t : mm.triangles()) {
-      const std::array<Vec3, 3> T{pts[t[0]], pts[t[1]], pts[t[2]]};
+      const std::array<Vec3, 3> T{in(pts[t[0]], mesh.name() + " vertex:"), in(pts[t[1]], mesh.name() + " vertex:"),
+                                  in(pts[t[2]], mesh.name() + " vertex:")};
       m.tri.push_back(T);
       m.tri_flat.push_back(convex3::flat_shape(T, "triangle"));
       m.tri_box.push_back({T[0].cwiseMin(T[1]).cwiseMin(T[2]), T[0].cwiseMax(T[1]).cwiseMax(T[2])});
@@ -142,16 +170,18 @@ MixedPair MixedPair::make(const Shape3& P, const Shape3& Q) {
   }
   m.radius_other = primitives::support_of(other).rho;
   for (const ConvexPolytope& k : pieces) {
-    Vec3 lo = k[0], hi = k[0];
-    for (const Vec3& v : k.vertices()) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+    std::vector<Vec3> kv(k.vertices().begin(), k.vertices().end());
+    for (Vec3& v : kv) v = scale.vec_to_engine(v, mesh.name() + " piece vertex:");
+    Vec3 lo = kv[0], hi = kv[0];
+    for (const Vec3& v : kv) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
     const Vec3 c = 0.5 * (lo + hi);
     double r = 0;
-    for (const Vec3& v : k.vertices()) r = std::max(r, (v - c).norm());
+    for (const Vec3& v : kv) r = std::max(r, (v - c).norm());
     m.center.push_back(c);
     m.radius.push_back(r * (1 + 0x1p-40) + 0x1p-1000);
     if (m.point) {  // the point path needs no piece pairs (mesh_point.cpp)
       auto& tris = m.piece_tri.emplace_back();
-      for (const auto& t : k.triangles()) tris.push_back({k[t[0]], k[t[1]], k[t[2]]});
+      for (const auto& t : k.triangles()) tris.push_back({kv[t[0]], kv[t[1]], kv[t[2]]});
       continue;
     }
     if (!other.curved()) {  // the flat and rounded engines need the piece's outer hierarchy
@@ -169,7 +199,7 @@ MixedPair MixedPair::make(const Shape3& P, const Shape3& Q) {
 }
 
 bool overlapping(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
-  if (m.point) return point_overlapping(m, pose_p, pose_q);
+  if (m.point) return point_overlapping(m, ep(m, pose_p, "P"), ep(m, pose_q, "Q"));
   const Offsets x = offsets(m, pose_p, pose_q);
   for (std::size_t i = 0; i < m.pieces.size(); ++i)
     if (near(x, i, Vec3::Zero()) && m.pieces[i].overlapping(pose_p, pose_q)) return true;
@@ -177,7 +207,7 @@ bool overlapping(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
 }
 
 Depth3 along(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3& d, bool separation) {
-  if (m.point) return point_along(m, pose_p, pose_q, d, separation);
+  if (m.point) return front::Scale{m.scale_exp}.answer(point_along(m, ep(m, pose_p, "P"), ep(m, pose_q, "Q"), d, separation));
   const Vec3 u = d.normalized();
   const Offsets x = offsets(m, pose_p, pose_q);
   Depth3 r;
@@ -257,7 +287,7 @@ Depth3 along(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const
 }
 
 Depth3 minimum(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
-  if (m.point) return point_minimum(m, pose_p, pose_q);
+  if (m.point) return front::Scale{m.scale_exp}.answer(point_minimum(m, ep(m, pose_p, "P"), ep(m, pose_q, "Q")));
   const Offsets x = offsets(m, pose_p, pose_q);
   struct Deep {
     double s;
@@ -284,7 +314,7 @@ Depth3 minimum(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
 }
 
 Distance3 signed_distance(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
-  if (m.point) return point_distance(m, pose_p, pose_q);
+  if (m.point) return back(m, point_distance(m, ep(m, pose_p, "P"), ep(m, pose_q, "Q")));
   const Offsets x = offsets(m, pose_p, pose_q);
   struct Cand {
     double lb;
@@ -326,7 +356,7 @@ Distance3 signed_distance(const MixedPair& m, const Pose3& pose_p, const Pose3& 
 }
 
 Cast3 cast(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) {
-  if (m.point) return point_cast(m, pose_p, pose_q, d);
+  if (m.point) return back(m, point_cast(m, ep(m, pose_p, "P"), ep(m, pose_q, "Q"), d));
   Cast3 best;
   best.distance = best.lower_bound = best.upper_bound = kInf;
   if (overlapping(m, pose_p, pose_q)) {

@@ -33,6 +33,9 @@ struct MixedPair {
   std::vector<convex3::FlatShape3> tri_flat;
   std::vector<std::array<Vec3, 2>> tri_box;
   std::vector<std::vector<std::array<Vec3, 3>>> piece_tri;  ///< each piece's outward triangles
+  /// The point path's numeric domain (src/front/scale.hpp): its data above are the input × 2^-e,
+  /// poses are converted in and answers scaled back (the piece pairs scale themselves).
+  int scale_exp = 0;
   /// P or Q a non-convex mesh, the other a point, segment, flat polygon, rounded or curved shape.
   static MixedPair make(const Shape3& P, const Shape3& Q);
 };

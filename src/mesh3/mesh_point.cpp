@@ -166,6 +166,7 @@ template <class R>
 void set_features(const MixedPair& m, R& r, std::size_t) {
   const Feature3 pt{FeatureKind3::Vertex, 0};
   (m.mesh_is_p ? r.feature_q : r.feature_p) = pt;
+  (m.mesh_is_p ? r.feature_p : r.feature_q) = Feature3{};
 }
 
 // The nearest triangle: its exact distance (best), and its index; triangles by box distance.

@@ -332,6 +332,33 @@ TEST(MeshMixed, RotatedPropertiesBothRoles) {
   EXPECT_GT(checked, 30);
 }
 
+// The numeric domain (front/scale.hpp): the same comb scaled by 2^500 and 2^-520 answers the
+// same, scaled, for a point (the point path scales itself) and a sphere (its piece pairs do).
+TEST(MeshMixed, HugeAndTinyScale) {
+  const Gen g = polycube(comb(3));
+  const Shape3 unit = mesh_of(g, "comb");
+  for (int e : {500, -520}) {
+    Gen h = g;
+    for (Vec3& v : h.points) v = v * std::ldexp(1.0, e);
+    const Shape3 big = mesh_of(h, "comb scaled");
+    auto S = [&](const Vec3& v) { return Vec3(v * std::ldexp(1.0, e)); };
+    const double s = std::ldexp(1.0, e);
+    for (int shape = 0; shape < 2; ++shape) {
+      const Pair3 a(unit, shape ? Shape3::sphere(0.5) : Shape3::point(Vec3(0.25, 0, 0))),
+          b(big, shape ? Shape3::sphere(0.5 * s) : Shape3::point(S(Vec3(0.25, 0, 0))));
+      for (const Vec3& t : {Vec3(1.25, 2, 0.5), Vec3(0.25, 0.5, 0.5), Vec3(-1, 2, 0.5), Vec3(3, 0.5, 0.25)}) {
+        const std::string what = "e " + std::to_string(e) + " shape " + std::to_string(shape) + " t " + show(t);
+        EXPECT_EQ(b.overlapping(Pose3(), Pose3(S(t))), a.overlapping(Pose3(), Pose3(t))) << what;
+        EXPECT_EQ(b.along(Pose3(), Pose3(S(t)), Vec3(1, 0, 0)).depth, s * a.along(Pose3(), Pose3(t), Vec3(1, 0, 0)).depth) << what;
+        EXPECT_EQ(b.minimum(Pose3(), Pose3(S(t))).depth, s * a.minimum(Pose3(), Pose3(t)).depth) << what;
+        EXPECT_EQ(b.signed_distance(Pose3(), Pose3(S(t))).distance, s * a.signed_distance(Pose3(), Pose3(t)).distance) << what;
+        EXPECT_EQ(b.cast(Pose3(), Pose3(S(t)), Vec3(1, 0, 0)).distance, s * a.cast(Pose3(), Pose3(t), Vec3(1, 0, 0)).distance) << what;
+        EXPECT_TRUE(b.minimum(Pose3(), Pose3(S(t))).translation.allFinite()) << what;
+      }
+    }
+  }
+}
+
 TEST(MeshMixed, BatchesEqualSinglesAndErrors) {
   const Shape3 mesh = mesh_of(polycube(comb(3)), "comb");
   for (const Shape3& s : {Shape3::sphere(0.4), Shape3::point(Vec3(0, 0, 0))}) {
