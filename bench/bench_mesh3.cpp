@@ -6,7 +6,8 @@
 // Pair3 on meshes (issue 17 items 3–5): µs per query (overlap, σ_d, signed distance, σ bounds) by
 // mesh size — a comb of k teeth against an L block, a torus against a smaller torus, CGAL sample
 // meshes (libcgal-demo: cross, star, tripod, against themselves) — at random translations where
-// the boxes overlap, and the error of "the hulls of both meshes" against the exact σ_d.
+// the boxes overlap, and the error of "the hulls of both meshes" against the exact σ_d; a mesh
+// against a point and a sphere (BM_MeshMixed).
 #include <pendepth/io.hpp>
 #include <pendepth/mesh3.hpp>
 #include <pendepth/pendepth.hpp>
@@ -280,6 +281,54 @@ void BM_MeshHullError(benchmark::State& st) {
   st.counters["hull_says_overlap_when_apart"] = false_hits;
 }
 
+// A mesh against a point (its signed distance field: src/mesh3/mesh_point.cpp) or a sphere of
+// radius 0.4 (the piece walk: src/mesh3/mesh_mixed.cpp): µs per query. Args: mesh case (1 comb of
+// 8 teeth, 2 comb of 32, 4 torus 16 × 8 — points only: its rounded decomposition has pieces too
+// thin for the rounded-shape engine), shape (0 point, 1 sphere), query (0 signed distance, 1 σ_d,
+// 2 σ, 3 cast). Translations uniform in the mesh's box (about half inside), random directions.
+struct Mixed {
+  pendepth::Pair3 pair;
+  std::vector<pendepth::Pose3> poses;
+  std::vector<Vec3> dirs;
+};
+const Mixed& mixed(std::size_t mesh, int shape) {
+  static std::map<std::pair<std::size_t, int>, std::unique_ptr<Mixed>> cache;
+  auto& e = cache[{mesh, shape}];
+  if (!e) {
+    const pendepth::Mesh3 m = pendepth::Mesh3::validate(mesh_cases()[mesh].p, "P");
+    const pendepth::Shape3 s = shape == 0 ? pendepth::Shape3::point(Vec3::Zero()) : pendepth::Shape3::sphere(0.4);
+    e.reset(new Mixed{pendepth::Pair3(pendepth::Shape3::from_mesh(m), s), {}, {}});
+    Vec3 lo = m.points()[0], hi = lo;
+    for (const Vec3& v : m.points()) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> U(0, 1);
+    for (int k = 0; k < 64; ++k) {
+      e->poses.emplace_back(lo + (hi - lo).cwiseProduct(Vec3(U(rng), U(rng), U(rng))));
+      e->dirs.emplace_back(U(rng) - 0.5, U(rng) - 0.5, U(rng) - 0.5);
+    }
+  }
+  return *e;
+}
+void BM_MeshMixed(benchmark::State& st) {
+  const std::size_t mesh = static_cast<std::size_t>(st.range(0));
+  const int shape = static_cast<int>(st.range(1)), query = static_cast<int>(st.range(2));
+  const Mixed& x = mixed(mesh, shape);
+  const pendepth::Pose3 id;
+  std::size_t i = 0;
+  for (auto _ : st) {
+    const std::size_t k = i++ % x.poses.size();
+    if (query == 0) benchmark::DoNotOptimize(x.pair.signed_distance(id, x.poses[k]));
+    else if (query == 1) benchmark::DoNotOptimize(x.pair.along(id, x.poses[k], x.dirs[k]));
+    else if (query == 2) benchmark::DoNotOptimize(x.pair.minimum(id, x.poses[k]));
+    else benchmark::DoNotOptimize(x.pair.cast(id, x.poses[k], x.dirs[k]));
+  }
+  static const char* q[] = {"distance", "along", "minimum", "cast"};
+  st.SetLabel(mesh_cases()[mesh].name.substr(0, mesh_cases()[mesh].name.find('_')) + (shape ? "_sphere_" : "_point_") + q[query]);
+  int over = 0;
+  for (const auto& pose : x.poses) over += x.pair.overlapping(id, pose);
+  st.counters["overlapping"] = over;
+}
+
 void mesh_args(benchmark::internal::Benchmark* b) {
   for (std::size_t i = 0; i < mesh_cases().size(); ++i) b->Arg(static_cast<int>(i));
   b->Unit(benchmark::kMicrosecond);
@@ -295,6 +344,12 @@ BENCHMARK(BM_MeshMinimumBounds)->Apply(mesh_args);
 BENCHMARK(BM_MeshAlongDescent)->Apply(mesh_args);
 BENCHMARK(BM_MeshMinimumBoundsDescent)->Apply(mesh_args);
 BENCHMARK(BM_MeshHullError)->Apply(mesh_args);
+BENCHMARK(BM_MeshMixed)
+    ->Apply([](benchmark::internal::Benchmark* b) {
+      for (const auto& [mesh, shape] : {std::pair{1, 0}, {4, 0}, {1, 1}, {2, 1}})
+        for (int q = 0; q < 4; ++q) b->Args({mesh, shape, q});
+    })
+    ->Unit(benchmark::kMicrosecond);
 
 BENCHMARK(BM_Validate_pendepth)->RangeMultiplier(4)->Range(8, 512)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Validate_CGAL_PMP)->RangeMultiplier(4)->Range(8, 512)->Unit(benchmark::kMillisecond);

@@ -53,6 +53,7 @@ namespace pendepth {
 class Mesh3;  // include/pendepth/mesh3.hpp
 namespace mesh3 {
 struct MeshPair;  // src/mesh3/mesh_pair.hpp
+struct MixedPair;  // src/mesh3/mesh_mixed.hpp
 }
 namespace convex3 {
 struct FlatShape3;  // src/convex3/flat3.hpp
@@ -390,6 +391,12 @@ class WarmStart3 {
 /// may differ from the mesh by slivers of ½ ulp. `candidates` counts the piece pairs descended
 /// (σ_d, separation) or sums the convex work (σ). cast is exact: the least convex cast over the
 /// box-pruned piece pairs (src/mesh3/mesh_cast.cpp). The warm start is ignored on meshes.
+/// A non-convex mesh against a point, rounded shape or curved primitive, either role
+/// (src/mesh3/mesh_mixed.hpp, docs/design.md): a point is answered exactly on the mesh's triangles
+/// (its signed distance field; features of the mesh none, pieces −1); the other shapes by one
+/// convex pair per piece — σ_d by a walk over overlap tests (moving by the answer separates),
+/// brackets as their convex pairs', σ as bounds. A segment or flat polygon against a non-convex
+/// mesh is InvalidInput (not implemented).
 /// Costs: docs/benchmarks.md.
 class Pair3 {
  public:
@@ -444,6 +451,7 @@ class Pair3 {
   int scale_exp_ = 0;
   Shape3 engine_P_, engine_Q_;
   std::shared_ptr<const mesh3::MeshPair> mesh_;  // either shape non-convex (pair3_mesh.cpp)
+  std::shared_ptr<const mesh3::MixedPair> mixed_;  // a mesh against a point / rounded / curved shape
   Depth3 min_engine(const Pose3& pose_p, const Pose3& pose_q) const;
   Depth3 along_engine(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const;
   Distance3 distance_engine(const Pose3& pose_p, const Pose3& pose_q) const;

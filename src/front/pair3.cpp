@@ -14,6 +14,7 @@
 #include "front/scale.hpp"
 #include "convex3/flat3.hpp"
 #include "convex3/minimum_expand.hpp"
+#include "mesh3/mesh_mixed.hpp"
 #include "mesh3/mesh_pair.hpp"
 #include "convex3/distance_compare.hpp"
 #include "primitives/rounded3.hpp"
@@ -134,17 +135,16 @@ Pose3 engine_pose(const front::Scale& scale, const Pose3& pose, const std::strin
 namespace {
 // The shape combinations Pair3 answers; any other is an InvalidInput naming both shapes.
 Shape3 supported_pair(Shape3 P, const Shape3& Q) {
-  if ((!P.is_convex() || !Q.is_convex()) && (P.curved() || Q.curved()))
-    throw InvalidInput("pair: a non-convex mesh against a curved primitive (P " + P.name() + ", Q " + Q.name() +
-                       ") is not implemented (use the mesh's hull: Shape3::from_file(path, name, true) / --hull)");
-  if ((!P.is_convex() || !Q.is_convex()) && (P.dimension() < 3 || Q.dimension() < 3 || P.radius() + Q.radius() > 0))
-    throw InvalidInput("pair: a non-convex mesh against a lower-dimensional or rounded shape (P " + P.name() + ", Q " +
-                       Q.name() + ") is not implemented (use the mesh's hull: Shape3::from_file(path, name, true) / --hull)");
   if (P.dimension() < 3 && Q.dimension() < 3)
     throw InvalidInput("pair: both shapes are lower-dimensional (P " + P.name() + " of dimension " +
                        std::to_string(P.dimension()) + ", Q " + Q.name() + " of dimension " +
                        std::to_string(Q.dimension()) + "): M = P ⊕ (−Q) has no interior; one shape must be solid");
   return P;
+}
+// A non-convex mesh against a point, segment, flat polygon, rounded or curved shape (mesh_mixed.hpp).
+bool mixed_pair(const Shape3& P, const Shape3& Q) {
+  auto other = [](const Shape3& s) { return s.dimension() < 3 || s.radius() > 0 || s.curved(); };
+  return (!P.is_convex() && other(Q)) || (!Q.is_convex() && other(P));
 }
 }  // namespace
 
@@ -154,6 +154,10 @@ Pair3::Pair3(Shape3 P, Shape3 Q, Prepare)
       scale_exp_(P_.is_convex() && Q_.is_convex() ? pair_scale(P_, Q_).e : 0),
       engine_P_(P_),
       engine_Q_(Q_) {
+  if (mixed_pair(P_, Q_)) {  // each piece pair a convex Pair3 with its own numeric domain
+    mixed_ = std::make_shared<const mesh3::MixedPair>(mesh3::MixedPair::make(P_, Q_));
+    return;
+  }
   if (!P_.is_convex() || !Q_.is_convex()) {
     mesh_ = front::mesh_pair(P_, Q_, scale_exp_);  // pieces in engine coordinates (pair3_mesh.cpp)
     return;
@@ -260,6 +264,7 @@ auto curved_query(const front::Scale& scale, const Shape3& P, const Pose3& pose_
 
 // One query in engine coordinates: poses converted in (checked), the answer scaled back.
 Depth3 Pair3::min_engine(const Pose3& pose_p, const Pose3& pose_q) const {
+  if (mixed_) return mesh3::minimum(*mixed_, pose_p, pose_q);
   const front::Scale scale{scale_exp_};
   if (is_curved(engine_P_, engine_Q_))
     return scale.answer(curved_query(scale, engine_P_, pose_p, engine_Q_, pose_q, [](auto&&... a) {
@@ -281,6 +286,7 @@ Depth3 Pair3::min_engine(const Pose3& pose_p, const Pose3& pose_q) const {
 }
 
 Depth3 Pair3::along_engine(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const {
+  if (mixed_) return mesh3::along(*mixed_, pose_p, pose_q, d, false);
   const front::Scale scale{scale_exp_};
   if (is_curved(engine_P_, engine_Q_))
     return scale.answer(curved_query(scale, engine_P_, pose_p, engine_Q_, pose_q, [&](auto&&... a) {
@@ -302,9 +308,10 @@ Depth3 Pair3::along_engine(const Pose3& pose_p, const Pose3& pose_q, const Vec3&
 }
 
 bool Pair3::overlapping(const Pose3& pose_p, const Pose3& pose_q) const {
-  if (!mesh_) return minimum(pose_p, pose_q).overlapping;
+  if (!mesh_ && !mixed_) return minimum(pose_p, pose_q).overlapping;
   check_pose(pose_p, "pose of P");
   check_pose(pose_q, "pose of Q");
+  if (mixed_) return mesh3::overlapping(*mixed_, pose_p, pose_q);
   const front::Scale scale{scale_exp_};
   return mesh3::overlapping(*mesh_, engine_pose(scale, pose_p, "pose of P"), engine_pose(scale, pose_q, "pose of Q"));
 }
@@ -323,6 +330,12 @@ Depth3 Pair3::along(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) con
 }
 
 Depth3 Pair3::separation(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const {
+  if (mixed_) {
+    check_pose(pose_p, "pose of P");
+    check_pose(pose_q, "pose of Q");
+    front::check_direction(d);
+    return mesh3::along(*mixed_, pose_p, pose_q, d, true);
+  }
   if (mesh_) {
     check_pose(pose_p, "pose of P");
     check_pose(pose_q, "pose of Q");
@@ -339,7 +352,7 @@ void Pair3::overlapping(std::span<const Pose3> poses_q, std::span<bool> out, uns
   check_poses(poses_q, out.size(), scale_exp_);
   const Pose3 pose_p;
   front::parallel_for(poses_q.size(), threads, [&](std::size_t i) {
-    out[i] = mesh_ ? overlapping(pose_p, poses_q[i]) : min_engine(pose_p, poses_q[i]).overlapping;
+    out[i] = mesh_ || mixed_ ? overlapping(pose_p, poses_q[i]) : min_engine(pose_p, poses_q[i]).overlapping;
   });
 }
 
@@ -402,6 +415,7 @@ Cast3 cast_answer(const front::Scale& scale, Cast3 r) {
 }  // namespace
 
 Distance3 Pair3::distance_engine(const Pose3& pose_p, const Pose3& pose_q) const {
+  if (mixed_) return mesh3::signed_distance(*mixed_, pose_p, pose_q);
   const front::Scale scale{scale_exp_};
   if (is_curved(engine_P_, engine_Q_))
     return distance_answer(scale, curved_query(scale, engine_P_, pose_p, engine_Q_, pose_q, [](auto&&... a) {
@@ -445,6 +459,7 @@ Cast3 Pair3::cast(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const
   check_pose(pose_p, "pose of P");
   check_pose(pose_q, "pose of Q");
   front::check_direction(d);
+  if (mixed_) return mesh3::cast(*mixed_, pose_p, pose_q, d);
   const front::Scale scale{scale_exp_};
   if (mesh_)
     return cast_answer(scale, mesh3::cast(*mesh_, engine_pose(scale, pose_p, "pose of P"), engine_pose(scale, pose_q, "pose of Q"), d));
@@ -471,7 +486,7 @@ Cast3 Pair3::cast(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const
 Depth3 Pair3::minimum(const Pose3& pose_p, const Pose3& pose_q, WarmStart3& warm) const {
   check_pose(pose_p, "pose of P");
   check_pose(pose_q, "pose of Q");
-  if (mesh_) return min_engine(pose_p, pose_q);  // no warm start on meshes
+  if (mesh_ || mixed_) return min_engine(pose_p, pose_q);  // no warm start on meshes
   if (is_flat(engine_P_) || is_flat(engine_Q_) || is_rounded(engine_P_, engine_Q_) || is_curved(engine_P_, engine_Q_))
     return min_engine(pose_p, pose_q);  // no warm start
   const front::Scale scale{scale_exp_};

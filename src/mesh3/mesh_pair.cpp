@@ -114,13 +114,22 @@ Depth3 minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q) {
       work += r.candidates;
       if (r.overlapping) deep.push_back({r.depth, r.normal});
     }
-  Depth3 best;
-  best.candidates = work;
-  if (deep.empty()) return best;
+  if (deep.empty()) {
+    Depth3 none;
+    none.candidates = work;
+    return none;
+  }
   std::sort(deep.begin(), deep.end(), [](const Deep& a, const Deep& b) { return a.s > b.s; });
-  const double lower = deep[0].s;
-  std::vector<Vec3> dirs;
-  for (std::size_t k = 0; k < std::min<std::size_t>(deep.size(), 4); ++k) dirs.push_back(deep[k].normal);
+  std::vector<Vec3> normals;
+  for (std::size_t k = 0; k < std::min<std::size_t>(deep.size(), 4); ++k) normals.push_back(deep[k].normal);
+  return least_directional(deep[0].s, normals, work,
+                           [&](const Vec3& d) { return along(m, pose_p, pose_q, d, false); });
+}
+
+Depth3 least_directional(double lower, const std::vector<Vec3>& normals, std::size_t work,
+                         const std::function<Depth3(const Vec3&)>& along_d) {
+  Depth3 best;
+  std::vector<Vec3> dirs = normals;
   for (int a = 0; a < 3; ++a) dirs.push_back(Vec3::Unit(a)), dirs.push_back(-Vec3::Unit(a));
   bool have = false;
   auto meets = [&](double upper) { return upper - lower <= 16 * std::numeric_limits<double>::epsilon() * upper; };
@@ -130,7 +139,7 @@ Depth3 minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q) {
     const Vec3 u = d.normalized();
     if (std::find(tried.begin(), tried.end(), u) != tried.end()) continue;
     tried.push_back(u);
-    const Depth3 r = along(m, pose_p, pose_q, d, false);
+    const Depth3 r = along_d(d);
     work += r.candidates;
     if (!have || r.depth < best.depth) best = r, have = true;
     if (meets(best.depth)) break;
@@ -140,7 +149,7 @@ Depth3 minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q) {
   for (int k = 0; k < 3 && !meets(best.depth); ++k) {
     const Vec3 d = best.facet_normal;
     if (!(d.allFinite() && d != Vec3::Zero()) || d == best.normal) break;
-    const Depth3 r = along(m, pose_p, pose_q, d, false);
+    const Depth3 r = along_d(d);
     work += r.candidates;
     if (!(r.depth < best.depth)) break;
     best = r;
@@ -148,7 +157,7 @@ Depth3 minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q) {
   best.kind = DepthKind::Minimum;
   best.overlapping = true;
   best.candidates = work;
-  best.upper_bound = best.depth;
+  best.upper_bound = std::max(best.upper_bound, best.depth);
   best.lower_bound = meets(best.depth) ? best.depth : std::min(lower, best.depth);
   return best;
 }

@@ -22,6 +22,7 @@
 #include <pendepth/pendepth.hpp>
 
 #include <array>
+#include <functional>
 #include <vector>
 
 namespace pendepth::mesh3 {
@@ -60,6 +61,15 @@ inline constexpr std::size_t kFacetPathMax = 400;
 /// σ with certified bounds: lower = max over overlapping piece pairs of the exact σ_ij, upper =
 /// the least σ_d over a set of directions (mesh_pair.cpp); depth = upper with its translation.
 Depth3 minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q);
+
+/// σ's upper bound by directions (meshes and mixed pairs, mesh_mixed.hpp): the least σ_d
+/// (along_d) over `normals` (the deepest pairs' first) and the six axes, stopping once it meets
+/// `lower` within 16 ulps, then up to three times along the facet normal where the best move
+/// ends while that improves. Returns that σ_d's answer as kind Minimum, overlapping,
+/// upper_bound = depth (or the answer's own upper bound), lower_bound = depth when the bounds
+/// meet, else min(lower, depth); candidates = work + the σ_d's.
+Depth3 least_directional(double lower, const std::vector<Vec3>& normals, std::size_t work,
+                         const std::function<Depth3(const Vec3&)>& along_d);
 
 /// Signed distance: apart / touching → min over piece pairs of the exact convex signed distance
 /// (pruned by box distances; exact); overlapping → −σ from minimum()'s bounds (distance =

@@ -286,4 +286,31 @@ TEST_F(CliMesh, HullFlagOnEveryCommand) {
   }
 }
 
+// A non-convex mesh against a point or a primitive (src/mesh3/mesh_mixed.cpp), either role: every
+// command but --generalized answers (exit 0), the JSON is the library's Pair3 answer.
+TEST_F(CliMesh, MeshAgainstPointAndPrimitives) {
+  const std::string l = write("L.obj", mesh3_test::write_obj(mesh3_test::polycube(mesh3_test::l_block())));
+  for (const std::string& q : {std::string("point:0.5,0.5,0.5"), std::string("sphere:0.3"), std::string("capsule:0.2,0.3")}) {
+    for (const auto& [cmd, args] : commands()) {
+      if (args.find("--generalized") != std::string::npos) continue;
+      for (const bool swap : {false, true}) {
+        const Result r = swap ? run3(cmd, q, l, args) : run3(cmd, l, q, args);
+        EXPECT_EQ(r.status, 0) << q << " " << cmd << " " << args << ": " << r.err;
+        EXPECT_FALSE(r.out.empty()) << q << " " << cmd << " " << args;
+      }
+    }
+  }
+  const Pair3 pair(Shape3::from_file(l, "P"), Shape3::point(Vec3(0.5, 0.5, 0.5)));
+  const Pose3 at(Vec3(0.3, -0.2, 0.1));
+  const auto js = nlohmann::json::parse(run3("depth", l, "point:0.5,0.5,0.5", "--offset 0.3,-0.2,0.1 --direction 1,0.5,-0.25 --json").out);
+  EXPECT_EQ(js["depth"].get<double>(), pair.along(Pose3(), at, Vec3(1, 0.5, -0.25)).depth);
+  EXPECT_GT(js["depth"].get<double>(), 0);
+  const auto jd = nlohmann::json::parse(run3("distance", l, "point:0.5,0.5,0.5", "--offset 0.3,-0.2,0.1 --json").out);
+  EXPECT_EQ(jd["distance"].get<double>(), pair.signed_distance(Pose3(), at).distance);
+  // Segments against a non-convex mesh: exit 2, one line naming the problem.
+  const Result seg = run3("depth", l, "segment:0,0,0,1,1,1", "");
+  EXPECT_EQ(seg.status, 2);
+  EXPECT_NE(seg.err.find("segment or flat polygon"), std::string::npos) << seg.err;
+}
+
 }  // namespace

@@ -1,0 +1,60 @@
+// Private: Pair3 on a non-convex mesh against a shape that is not a polytope — a point, segment
+// or flat polygon, a rounded shape (sphere, capsule, hull ⊕ ball) or a curved primitive — in
+// either role (issue 16 items 4–5 on the meshes of issue 17). Algorithms in mesh_mixed.cpp.
+//
+// The mesh's convex pieces K_i (Mesh3::decomposition()) cover it with disjoint interiors, so with
+// S the other shape the overlap set is O = ∪ int M_i, M_i = the sum of piece pair i (K_i and S in
+// their roles): the same union structure as mesh_pair.hpp with one shape a single piece. Each
+// piece pair is a convex Pair3 (the pair engines of src/front/pair3.cpp: flat shapes exact,
+// rounded shapes exact decisions with certified brackets for σ_d and casts, curved shapes
+// certified brackets), in world coordinates; each does its own numeric-domain scaling.
+#pragma once
+
+#include <pendepth/pendepth.hpp>
+
+#include "convex3/flat3.hpp"
+
+#include <array>
+#include <vector>
+
+namespace pendepth::mesh3 {
+
+struct MixedPair {
+  std::vector<Pair3> pieces;     ///< piece pair i: (K_i, S) when the mesh is P, (S, K_i) when it is Q
+  bool mesh_is_p = true;
+  std::vector<Vec3> center;      ///< a bounding ball of K_i in the mesh's frame: center, radius
+  std::vector<double> radius;
+  double radius_other = 0;       ///< a bounding ball of S about its frame's origin
+  /// S a point (mesh_point.cpp): the mesh's triangles (mesh frame), each also as a flat shape,
+  /// with their boxes; `pt` the point.
+  bool point = false;
+  convex3::FlatShape3 pt;
+  std::vector<std::array<Vec3, 3>> tri;
+  std::vector<convex3::FlatShape3> tri_flat;
+  std::vector<std::array<Vec3, 2>> tri_box;
+  std::vector<std::vector<std::array<Vec3, 3>>> piece_tri;  ///< each piece's outward triangles
+  /// The point path's numeric domain (src/front/scale.hpp): its data above are the input × 2^-e,
+  /// poses are converted in and answers scaled back (the piece pairs scale themselves).
+  int scale_exp = 0;
+  /// P or Q a non-convex mesh, the other a point, segment, flat polygon, rounded or curved shape.
+  static MixedPair make(const Shape3& P, const Shape3& Q);
+};
+
+bool overlapping(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q);
+/// σ_d (the first exit of the ray from O, a walk over exact overlap tests), or complete
+/// separation (the last exit of the ray from O) when `separation`.
+Depth3 along(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3& d, bool separation);
+/// σ: lower = the deepest piece pair's σ, upper = the least σ_d over a few directions.
+Depth3 minimum(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q);
+Distance3 signed_distance(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q);
+Cast3 cast(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3& d);
+
+// S a point (mesh_point.cpp): O = int P − q for the mesh P (the piece union misses the faces
+// shared by pieces, so these go through the mesh's triangles). Called by the functions above.
+bool point_overlapping(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q);
+Depth3 point_along(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3& d, bool separation);
+Depth3 point_minimum(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q);
+Distance3 point_distance(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q);
+Cast3 point_cast(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3& d);
+
+}  // namespace pendepth::mesh3

@@ -1,0 +1,325 @@
+// Pair3 on a non-convex mesh P against a point q, in either role (issue 16 item 4: "a point Q
+// gives the signed distance field of P"; contract in mesh_mixed.hpp).
+//
+// O = int P − q (overlap ⇔ the placed point is interior to the mesh). The union of the open
+// pieces misses the faces the decomposition's pieces share (a point moving through a polycube
+// crosses them), so the point pairs are answered on the mesh's own triangles (closed, outward):
+//   overlap   x ∈ int P ⇔ x lies in some closed piece (exact orient3d against its outward
+//             triangles; pieces pruned by their balls) and on no triangle (flat_flat_distance of triangle and point > 0, exact;
+//             only triangles whose box holds x, with a margin).
+//   σ, sd     dist(x, ∂P) = the least distance to a triangle (each flat_flat_distance: exact
+//             decisions, a few ulps), triangles in increasing box distance, stopping when the box
+//             distance exceeds the best: σ = that distance inside, sd = ± it (0 on the surface).
+//             Exact (lower == upper).
+//   σ_d, cast the first parameter λ >= 0 where the ray x + λ·d' meets a closed triangle (d' the
+//             direction in the mesh's frame; the point leaves int P, resp. first touches P, there;
+//             a cast from a point on the surface is 0, the nearest triangle's distance being 0):
+//             the line meets the closed triangle ⇔ the three Plücker signs d'·((a − x) × (b − x))
+//             over its edges do not disagree (exact signs), λ = n·(a − x)/(n·d') with its exact
+//             sign; a triangle whose plane holds the line is skipped (the line then reaches it
+//             through an edge shared with a triangle it crosses, at the same λ). x is the exact
+//             placed point R·p + tq − tp (R, tq, tp the relative pose in doubles, as the mesh
+//             engines); λ accurate to ~1 ulp; the least of accurate values is accurate.
+//   separation the last exit: the hits in increasing λ; between two consecutive distinct hits
+//             the point is inside or outside throughout, decided by the exact overlap test at the
+//             midpoint; the answer is the last hit preceded by an inside stretch (0 when none).
+// Cost: O(T) exact sign filters per ray (T triangles), O(k) flat distances for σ (k the
+// triangles the box pruning keeps), O(pieces) + O(triangles near x) for overlap.
+#include "mesh3/mesh_mixed.hpp"
+
+#include "geometry/exact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace pendepth::mesh3 {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+template <class T>
+using A3 = std::array<T, 3>;
+template <class L>
+auto lv(L lift, const Vec3& v) {
+  using T = decltype(lift(0.0));
+  return A3<T>{lift(v.x()), lift(v.y()), lift(v.z())};
+}
+template <class T>
+A3<T> sub(const A3<T>& a, const A3<T>& b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+template <class T>
+A3<T> cross(const A3<T>& a, const A3<T>& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+template <class T>
+T dot(const A3<T>& a, const A3<T>& b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+// The point in the mesh's frame, exactly x = R p + tq − tp, and the ray's direction there.
+struct Frame {
+  Eigen::Matrix3d Rm;  // the mesh's rotation
+  Vec3 tm;             // the mesh's translation
+  Eigen::Matrix3d R;
+  Vec3 p, tq, tp, d;
+  Vec3 x;  // rounded
+  template <class L>
+  auto placed(L lift) const {
+    const auto q = lv(lift, p);
+    A3<decltype(lift(0.0))> r;
+    for (int i = 0; i < 3; ++i)
+      r[i] = lift(R(i, 0)) * q[0] + lift(R(i, 1)) * q[1] + lift(R(i, 2)) * q[2] + lift(tq[i]) - lift(tp[i]);
+    return r;
+  }
+};
+
+// Q's pose moved by v.
+Pose3 moved(const Pose3& pose_q, const Vec3& v) {
+  Pose3 q = pose_q;
+  q.translation += v;
+  return q;
+}
+
+Frame frame(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3* d) {
+  const Pose3& pm = m.mesh_is_p ? pose_p : pose_q;
+  const Pose3& po = m.mesh_is_p ? pose_q : pose_p;
+  Frame f;
+  f.Rm = pm.matrix();
+  f.tm = pm.translation;
+  f.R = f.Rm.transpose() * po.matrix();
+  f.p = m.pt.v[0];
+  f.tq = f.Rm.transpose() * po.translation;
+  f.tp = f.Rm.transpose() * pm.translation;
+  f.x = f.R * f.p + (f.tq - f.tp);
+  if (d) {
+    f.d = f.Rm.transpose() * *d;
+    if (!m.mesh_is_p) f.d = -f.d;  // the mesh moves along d: the point, relatively, along −d
+    if (f.d == Vec3::Zero()) throw InvalidInput("direction: underflows to zero in the mesh's frame");
+  }
+  return f;
+}
+
+double box_distance(const std::array<Vec3, 2>& b, const Vec3& x) {
+  Vec3 g = Vec3::Zero();
+  for (int k = 0; k < 3; ++k) g[k] = x[k] < b[0][k] ? b[0][k] - x[k] : x[k] > b[1][k] ? x[k] - b[1][k] : 0.0;
+  return g.norm();
+}
+
+double margin(const Frame& f, const MixedPair& m) {
+  return 0x1p-30 * (f.x.norm() + f.tq.norm() + f.tp.norm() + f.p.norm() + m.radius_other) + 0x1p-1000;
+}
+
+// The exact distance of triangle i and the point (mesh pair roles: triangle as A).
+Distance3 tri_distance(const MixedPair& m, std::size_t i, const Pose3& pose_p, const Pose3& pose_q) {
+  const Pose3& pm = m.mesh_is_p ? pose_p : pose_q;
+  const Pose3& po = m.mesh_is_p ? pose_q : pose_p;
+  return convex3::flat_flat_distance(m.tri_flat[i], pm, m.pt, po);
+}
+
+struct Hit {
+  double lambda;  // in units of f.d
+  std::size_t t;
+};
+
+// Every λ >= 0 where the ray meets a closed triangle (unsorted).
+std::vector<Hit> hits(const MixedPair& m, const Frame& f) {
+  std::vector<Hit> out;
+  for (std::size_t t = 0; t < m.tri.size(); ++t) {
+    const auto& T = m.tri[t];
+    const int den = exact::exact_sign([&](auto L) {
+      return dot(cross(sub(lv(L, T[1]), lv(L, T[0])), sub(lv(L, T[2]), lv(L, T[0]))), lv(L, f.d));
+    });
+    if (den == 0) continue;  // the line is parallel to the plane (or in it: file comment)
+    bool pos = false, neg = false;
+    for (int e = 0; e < 3 && !(pos && neg); ++e) {
+      const int s = exact::exact_sign([&](auto L) {
+        const auto x = f.placed(L);
+        return dot(lv(L, f.d), cross(sub(lv(L, T[e]), x), sub(lv(L, T[(e + 1) % 3]), x)));
+      });
+      pos = pos || s > 0, neg = neg || s < 0;
+    }
+    if (pos && neg) continue;
+    auto num = [&](auto L) {
+      return dot(cross(sub(lv(L, T[1]), lv(L, T[0])), sub(lv(L, T[2]), lv(L, T[0]))), sub(lv(L, T[0]), f.placed(L)));
+    };
+    const int sn = exact::exact_sign(num);
+    if (sn * den < 0) continue;  // behind the start
+    const double lambda = sn == 0 ? 0.0 : exact::accurate_ratio(num, [&](auto L) {
+      return dot(cross(sub(lv(L, T[1]), lv(L, T[0])), sub(lv(L, T[2]), lv(L, T[0]))), lv(L, f.d));
+    });
+    out.push_back({lambda, t});
+  }
+  return out;
+}
+
+// The outward unit normal of triangle t in the world frame.
+Vec3 tri_normal(const Frame& f, const MixedPair& m, std::size_t t) {
+  const auto& T = m.tri[t];
+  return (f.Rm * (T[1] - T[0]).cross(T[2] - T[0])).normalized();
+}
+
+// Features: the point's vertex 0; on the mesh's side none (the triangle t is no piece's feature:
+// piece_p / piece_q stay −1, and formatters index pieces or the hull).
+template <class R>
+void set_features(const MixedPair& m, R& r, std::size_t) {
+  const Feature3 pt{FeatureKind3::Vertex, 0};
+  (m.mesh_is_p ? r.feature_q : r.feature_p) = pt;
+  (m.mesh_is_p ? r.feature_p : r.feature_q) = Feature3{};
+}
+
+// The nearest triangle: its exact distance (best), and its index; triangles by box distance.
+Distance3 nearest(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, std::size_t& at) {
+  const Frame f = frame(m, pose_p, pose_q, nullptr);
+  const double e = margin(f, m);
+  std::vector<std::pair<double, std::size_t>> c;
+  c.reserve(m.tri.size());
+  for (std::size_t t = 0; t < m.tri.size(); ++t) c.push_back({box_distance(m.tri_box[t], f.x) * (1 - 0x1p-40) - e, t});
+  std::sort(c.begin(), c.end());
+  Distance3 best;
+  bool have = false;
+  for (const auto& [lb, t] : c) {
+    if (have && lb > best.distance) break;
+    const Distance3 r = tri_distance(m, t, pose_p, pose_q);
+    if (!have || r.distance < best.distance) best = r, at = t, have = true;
+  }
+  return best;
+}
+
+}  // namespace
+
+bool point_overlapping(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
+  const Frame f = frame(m, pose_p, pose_q, nullptr);
+  const double e = margin(f, m);
+  bool inside = false;
+  for (std::size_t i = 0; i < m.piece_tri.size() && !inside; ++i) {
+    if ((f.x - m.center[i]).norm() > m.radius[i] + e) continue;
+    inside = true;  // x in the closed piece: on the inner side of every outward triangle's plane
+    for (const auto& T : m.piece_tri[i])
+      if (exact::exact_sign([&](auto L) {
+            return dot(cross(sub(lv(L, T[1]), lv(L, T[0])), sub(lv(L, T[2]), lv(L, T[0]))), sub(f.placed(L), lv(L, T[0])));
+          }) > 0) {
+        inside = false;
+        break;
+      }
+  }
+  if (!inside) return false;
+  for (std::size_t t = 0; t < m.tri.size(); ++t)
+    if (box_distance(m.tri_box[t], f.x) <= e && tri_distance(m, t, pose_p, pose_q).distance == 0) return false;
+  return true;
+}
+
+Depth3 point_minimum(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
+  Depth3 r;
+  if (!point_overlapping(m, pose_p, pose_q)) return r;
+  std::size_t t = 0;
+  const Distance3 n = nearest(m, pose_p, pose_q, t);
+  r.overlapping = true;
+  r.depth = r.lower_bound = r.upper_bound = n.distance;
+  // The distance engine's translation brings its B (the point) onto the triangle; when the mesh
+  // is Q, the mesh moves instead: the opposite vector.
+  r.translation = m.mesh_is_p ? n.translation : Vec3(-n.translation);
+  r.normal = r.depth > 0 ? Vec3(r.translation / r.depth) : Vec3::Zero();
+  r.facet_normal = r.normal;
+  r.witness_p = r.witness_q = m.mesh_is_p ? n.witness_p : n.witness_q;
+  r.candidates = m.tri.size();
+  set_features(m, r, t);
+  return r;
+}
+
+Distance3 point_distance(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
+  if (point_overlapping(m, pose_p, pose_q)) {
+    const Depth3 s = point_minimum(m, pose_p, pose_q);
+    Distance3 o;
+    o.overlapping = true;
+    o.distance = o.lower_bound = o.upper_bound = -s.depth;
+    o.translation = s.translation, o.normal = s.normal;
+    o.witness_p = s.witness_p, o.witness_q = s.witness_q;
+    o.feature_p = s.feature_p, o.feature_q = s.feature_q;
+    return o;
+  }
+  std::size_t t = 0;
+  Distance3 r = nearest(m, pose_p, pose_q, t);
+  if (!m.mesh_is_p) {  // seen from the other side (pair3.cpp's flat_distance)
+    r.normal = -r.normal, r.translation = -r.translation;
+    std::swap(r.witness_p, r.witness_q);
+  }
+  r.lower_bound = r.upper_bound = r.distance;
+  set_features(m, r, t);
+  return r;
+}
+
+Depth3 point_along(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3& d, bool separation) {
+  Depth3 r;
+  r.kind = separation ? DepthKind::Separation : DepthKind::Directional;
+  r.overlapping = point_overlapping(m, pose_p, pose_q);
+  if (!r.overlapping && !separation) return r;
+  const Frame f = frame(m, pose_p, pose_q, &d);
+  std::vector<Hit> h = hits(m, f);
+  r.candidates = m.tri.size();
+  std::sort(h.begin(), h.end(), [](const Hit& a, const Hit& b) { return a.lambda < b.lambda; });
+  const Hit* pick = nullptr;
+  if (!separation) {
+    if (!h.empty()) pick = &h[0];  // inside: the first hit is at λ > 0
+  } else {
+    const double dn = f.d.norm();
+    bool inside = r.overlapping;  // the state before the current hit
+    double prev = 0;
+    for (std::size_t k = 0; k < h.size(); ++k) {
+      if (k > 0 && h[k].lambda == prev) continue;
+      if (k > 0 || h[k].lambda > 0) {
+        if (k > 0) {  // the stretch (prev, λ_k): inside or out throughout
+          const double mid = 0.5 * (prev + h[k].lambda) * dn;
+          inside = point_overlapping(m, pose_p, moved(pose_q, mid * d.normalized()));
+        }
+        if (inside) pick = &h[k];
+      }
+      prev = h[k].lambda;
+    }
+  }
+  if (!pick) return r;
+  const double s = pick->lambda * f.d.norm();
+  const Vec3 u = d.normalized();
+  r.depth = r.lower_bound = r.upper_bound = s;
+  r.translation = s * u;
+  r.normal = u;
+  r.facet_normal = m.mesh_is_p ? tri_normal(f, m, pick->t) : Vec3(-tri_normal(f, m, pick->t));
+  r.witness_p = r.witness_q = f.Rm * (f.x + pick->lambda * f.d) + f.tm;
+  set_features(m, r, pick->t);
+  return r;
+}
+
+Cast3 point_cast(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) {
+  Cast3 r;
+  r.distance = r.lower_bound = r.upper_bound = kInf;
+  if (point_overlapping(m, pose_p, pose_q)) {
+    r.distance = r.lower_bound = r.upper_bound = 0;
+    r.hit = r.overlapping = true;
+    return r;
+  }
+  const Frame f = frame(m, pose_p, pose_q, &d);
+  std::size_t at = 0;
+  const Distance3 n = nearest(m, pose_p, pose_q, at);
+  if (n.distance == 0) {  // touching: on the surface (also when the ray then slides along it)
+    r.distance = r.lower_bound = r.upper_bound = 0;
+    r.hit = true;
+    r.normal = m.mesh_is_p ? tri_normal(f, m, at) : Vec3(-tri_normal(f, m, at));
+    r.witness_p = r.witness_q = m.mesh_is_p ? n.witness_q : n.witness_p;
+    set_features(m, r, at);
+    return r;
+  }
+  const std::vector<Hit> h = hits(m, f);
+  if (h.empty()) return r;
+  const Hit& k = *std::min_element(h.begin(), h.end(), [](const Hit& a, const Hit& b) { return a.lambda < b.lambda; });
+  const double s = k.lambda * f.d.norm();
+  r.hit = true;
+  r.distance = r.lower_bound = r.upper_bound = s;
+  r.translation = s * d.normalized();
+  r.normal = m.mesh_is_p ? tri_normal(f, m, k.t) : Vec3(-tri_normal(f, m, k.t));
+  r.witness_p = r.witness_q = f.Rm * (f.x + k.lambda * f.d) + f.tm;
+  set_features(m, r, k.t);
+  return r;
+}
+
+}  // namespace pendepth::mesh3
