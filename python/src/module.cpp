@@ -916,7 +916,7 @@ validated once), allowed_orientations (degrees; [0.0] when absent)). Bad input r
                   "hull(points, name=\"points\") -> Shape3\n\nExact convex hull of an (n, 3) array. Raises InvalidInput for non-finite or flat input.")
       .def_static("from_file", [](const std::string& path, const std::string& name, bool hull) { return Shape3::from_file(path, name, hull); },
                   py::arg("path"), py::arg("name") = "shape", py::arg("hull") = false,
-                  "from_file(path, name=\"shape\", hull=False) -> Shape3\n\nA .obj, .off, .stl or .ply file: without faces the hull of its vertices; with faces a closed mesh\n(validated; a convex one takes the convex path, a non-convex one cannot be paired yet); hull=True: the\nhull of the vertices, faces ignored. Raises InvalidInput \"PATH:LINE: problem\".")
+                  "from_file(path, name=\"shape\", hull=False) -> Shape3\n\nA .obj, .off, .stl or .ply file: without faces the hull of its vertices; with faces a closed mesh\n(validated; a convex one takes the convex path, a non-convex one is answered piece by piece: with another mesh, a polytope,\na point or a solid primitive; segments and flat polygons are refused); hull=True: the\nhull of the vertices, faces ignored. Raises InvalidInput \"PATH:LINE: problem\".")
       // Lower-dimensional shapes and primitives (docs/python.md "Primitives").
       .def_static("point", [](const py::object& p, const std::string& name) { return Shape3::point(vec3_of(p, name), name); },
                   py::arg("p"), py::arg("name") = "point", "point(p, name=\"point\") -> Shape3: a point (dimension 0).")
