@@ -545,15 +545,16 @@ struct Classifier {
       bool ca = false, cb = false;
       const double a = walk(0.0, 1.0, ca);  // [0, a] in O when ca
       if (ca && a == 1) {
-        buf.dead[k] = 1;
+        buf.dead[k] = 1, ++nfp_trim_stats().dead;
         continue;
       }
       const double b = walk(1.0, ca ? a : 0.0, cb);  // [b, 1] in O when cb
       if (cb && b == (ca ? a : 0.0)) {
-        buf.dead[k] = 1;
+        buf.dead[k] = 1, ++nfp_trim_stats().dead;
         continue;
       }
       if (!ca && !cb) continue;
+      ++nfp_trim_stats().trimmed;
       double ta, tb;
       const Vec2 ma = value_point(c, ca ? a : 0.0, ta), mb = value_point(c, cb ? b : 1.0, tb);
       const double t = std::max(ta, tb);
@@ -859,7 +860,7 @@ struct Classifier {
 
   // The pieces of every candidate that is not redundant, appended to out (nfp_classify).
   void run(std::vector<NfpPiece>& out) {
-    trimmed = !flat.empty() ? false : cands.size() > 64;
+    trimmed = flat.empty() && cands.size() > 64 && nfp_trim_enabled();
     if (trimmed) trim_deep();  // 0. the parts of candidates certified in O (large shapes)
     find_splits();  // 1. split points of every meeting pair of candidates
     group_splits(); //    grouped by candidate
@@ -951,6 +952,7 @@ struct Classifier {
           st.push_back(N.left);
           st.push_back(N.right);
         } else if (N.tri > li) {
+          ++nfp_trim_stats().meets;
           meet(live[li], live[N.tri]);
         }
       }
@@ -1086,6 +1088,15 @@ struct Classifier {
 };
 
 }  // namespace
+
+bool& nfp_trim_enabled() {
+  thread_local bool on = true;
+  return on;
+}
+NfpTrimStats& nfp_trim_stats() {
+  thread_local NfpTrimStats stats;
+  return stats;
+}
 
 bool convex_shape(const Polygon& S) {
   if (S.hole_count() != 0) return false;
