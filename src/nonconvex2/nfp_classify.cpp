@@ -173,10 +173,11 @@ struct Buffers {
   // trim_deep: per candidate the box of its part not certified in O, and whether none is left.
   std::vector<Vec2> act_lo, act_hi;
   std::vector<char> dead;
+  BoxTree cand_tree;
   void trim() {
     const std::size_t big = std::size_t(1) << 14;
     if (vertex_table.capacity() > big || found.capacity() > big || act_lo.capacity() > big || hdx.capacity() > big || !vertex_map.empty() ||
-        tree_p.nodes.capacity() + tree_b.nodes.capacity() > big)
+        tree_p.nodes.capacity() + tree_b.nodes.capacity() + cand_tree.nodes.capacity() > big)
       *this = Buffers();
     pp.trim(), pb.trim(), rp.trim(), rb.trim();
   }
@@ -459,10 +460,11 @@ struct Classifier {
   // of a candidate inward, one convex pair sum at a time, certifies a prefix [0, a] and a suffix
   // [b, 1] in O (floating filters with static error bounds only, never a wrong "in O"); step 1
   // then pairs only the boxes of the rest [a, b], and a candidate certified whole gives no piece.
-  bool trimmed = false;
+  bool trimmed = false, have_tree = false;  // have_tree: buf.cand_tree holds the candidates' boxes
   static constexpr int kTrimRounds = 8;      // sums chained per end
-  static constexpr int kProbeLeaves = 128;   // piece pairs visited per probe
+  static constexpr int kProbeLeaves = 16;    // piece pairs visited per probe
   static constexpr int kProbeSure = 4;       // sums surely holding the probe point tried per probe
+  static constexpr std::size_t kCrowded = 16;  // box-overlapping candidates that make one worth trimming
 
   // c(μ) for a double μ, to within tol (covered_point's bound for an exact parameter).
   static Vec2 value_point(const NfpCandidate& c, double mu, double& tol) {
@@ -530,9 +532,39 @@ struct Classifier {
     const std::size_t K = cands.size();
     buf.act_lo.resize(K), buf.act_hi.resize(K);
     buf.dead.assign(K, 0);
+    // Crowded candidates only: those whose box meets at least kCrowded others' (a counting pass
+    // over a box tree of all candidates, stopped there). Elsewhere the pairing is cheap and the
+    // probes would cost more than they save (combs, spirals).
+    std::vector<Tri> boxes(K);
+    for (std::size_t k = 0; k < K; ++k) boxes[k].lo = cands[k].lo, boxes[k].hi = cands[k].hi;
+    BoxTree& tree = buf.cand_tree;  // refitted to the trimmed boxes by find_splits
+    tree.build(boxes);
+    have_tree = true;
+    std::vector<std::int32_t> st;
+    auto crowded = [&](std::size_t k) {
+      const Vec2 &lo = cands[k].lo, &hi = cands[k].hi;
+      std::size_t count = 0;
+      st.assign(1, 0);
+      while (!st.empty() && count < kCrowded) {
+        const auto& N = tree.nodes[st.back()];
+        st.pop_back();
+        if (N.lo.x() > hi.x() || lo.x() > N.hi.x() || N.lo.y() > hi.y() || lo.y() > N.hi.y()) continue;
+        if (N.left >= 0) st.push_back(N.left), st.push_back(N.right);
+        else count += N.tri != k;
+      }
+      return count >= kCrowded;
+    };
+    // A sample first (every 8th candidate): few crowded ones, and the pairing is left as it is.
+    std::size_t sampled = 0, crowded_sampled = 0;
+    for (std::size_t k = 0; k < K; k += 8) ++sampled, crowded_sampled += crowded(k);
+    if (8 * crowded_sampled < sampled) {
+      trimmed = false;
+      return;
+    }
     for (std::size_t k = 0; k < K; ++k) {
       const NfpCandidate& c = cands[k];
       buf.act_lo[k] = c.lo, buf.act_hi[k] = c.hi;
+      if (!crowded(k)) continue;
       auto walk = [&](double from, double to, bool& moved) {
         double cur = from;
         for (int r = 0; r < kTrimRounds && cur != to; ++r) {
@@ -923,26 +955,33 @@ struct Classifier {
           if (boxes_meet(cands[i], cands[j])) meet(i, j);
       return;
     }
-    // Trimmed (trim_deep): the boxes of the parts not certified in O, candidates wholly in O left
-    // out. A split point not in O lies on both candidates outside their certified parts, so its
-    // pair still meets; points in O may be missed, which changes no part's class (the parts next
-    // to a point of the open set O are in O) and no piece.
-    std::vector<std::uint32_t> live;
-    std::vector<Tri> boxes;
-    live.reserve(K), boxes.reserve(K);
-    for (std::size_t k = 0; k < K; ++k) {
-      if (trimmed && buf.dead[k]) continue;
-      live.push_back(static_cast<std::uint32_t>(k));
-      Tri t{};
-      t.lo = trimmed ? buf.act_lo[k] : cands[k].lo, t.hi = trimmed ? buf.act_hi[k] : cands[k].hi;
-      boxes.push_back(t);
+    // Trimmed (trim_deep): its tree of the candidates' boxes refitted to the boxes of the parts
+    // not certified in O (empty for candidates wholly in O). A split point not in O lies on both
+    // candidates outside their certified parts, so its pair still meets; points in O may be
+    // missed, which changes no part's class (the parts next to a point of the open set O are in
+    // O) and no piece.
+    BoxTree local;
+    BoxTree& tree = trimmed || have_tree ? buf.cand_tree : local;
+    if (trimmed) {
+      for (std::size_t k = tree.nodes.size(); k-- > 0;) {
+        auto& N = tree.nodes[k];
+        if (N.left < 0) {
+          N.lo = buf.dead[N.tri] ? Vec2(INFINITY, INFINITY) : buf.act_lo[N.tri];
+          N.hi = buf.dead[N.tri] ? Vec2(-INFINITY, -INFINITY) : buf.act_hi[N.tri];
+        } else {
+          N.lo = tree.nodes[N.left].lo.cwiseMin(tree.nodes[N.right].lo);
+          N.hi = tree.nodes[N.left].hi.cwiseMax(tree.nodes[N.right].hi);
+        }
+      }
+    } else if (!have_tree) {
+      std::vector<Tri> boxes(K);
+      for (std::size_t k = 0; k < K; ++k) boxes[k].lo = cands[k].lo, boxes[k].hi = cands[k].hi;
+      tree.build(boxes);
     }
-    if (boxes.empty()) return;
-    BoxTree tree;
-    tree.build(boxes);
     std::vector<std::int32_t> st;
-    for (std::size_t li = 0; li < live.size(); ++li) {
-      const Vec2 &lo = boxes[li].lo, &hi = boxes[li].hi;
+    for (std::size_t i = 0; i < K; ++i) {
+      if (trimmed && buf.dead[i]) continue;
+      const Vec2 &lo = trimmed ? buf.act_lo[i] : cands[i].lo, &hi = trimmed ? buf.act_hi[i] : cands[i].hi;
       st.assign(1, 0);
       while (!st.empty()) {
         const auto& N = tree.nodes[st.back()];
@@ -951,9 +990,9 @@ struct Classifier {
         if (N.left >= 0) {
           st.push_back(N.left);
           st.push_back(N.right);
-        } else if (N.tri > li) {
+        } else if (N.tri > i) {
           ++nfp_trim_stats().meets;
-          meet(live[li], live[N.tri]);
+          meet(i, N.tri);
         }
       }
     }
