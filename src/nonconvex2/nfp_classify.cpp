@@ -462,7 +462,7 @@ struct Classifier {
   // then pairs only the boxes of the rest [a, b], and a candidate certified whole gives no piece.
   bool trimmed = false, have_tree = false;  // have_tree: buf.cand_tree holds the candidates' boxes
   static constexpr int kTrimRounds = 8;      // sums chained per end
-  static constexpr int kProbeLeaves = 16;    // piece pairs visited per probe
+  static constexpr int kProbeLeaves = 128;   // piece pairs visited per probe
   static constexpr int kProbeSure = 4;       // sums surely holding the probe point tried per probe
   static constexpr std::size_t kCrowded = 16;  // box-overlapping candidates that make one worth trimming
 
@@ -554,17 +554,19 @@ struct Classifier {
       }
       return count >= kCrowded;
     };
-    // A sample first (every 8th candidate): few crowded ones, and the pairing is left as it is.
+    // A sample first (every 32nd candidate): less than half crowded (combs: the teeth's candidates
+    // meet their neighbours', most of them on ∂O), and the pairing is left as it is.
     std::size_t sampled = 0, crowded_sampled = 0;
-    for (std::size_t k = 0; k < K; k += 8) ++sampled, crowded_sampled += crowded(k);
-    if (8 * crowded_sampled < sampled) {
+    for (std::size_t k = 0; k < K; k += 32) ++sampled, crowded_sampled += crowded(k);
+    const bool all = nfp_trim_mode() == kTrimAll;
+    if (!all && 2 * crowded_sampled < sampled) {
       trimmed = false;
       return;
     }
     for (std::size_t k = 0; k < K; ++k) {
       const NfpCandidate& c = cands[k];
       buf.act_lo[k] = c.lo, buf.act_hi[k] = c.hi;
-      if (!crowded(k)) continue;
+      if (!all && !crowded(k)) continue;
       auto walk = [&](double from, double to, bool& moved) {
         double cur = from;
         for (int r = 0; r < kTrimRounds && cur != to; ++r) {
@@ -892,7 +894,7 @@ struct Classifier {
 
   // The pieces of every candidate that is not redundant, appended to out (nfp_classify).
   void run(std::vector<NfpPiece>& out) {
-    trimmed = flat.empty() && cands.size() > 64 && nfp_trim_enabled();
+    trimmed = flat.empty() && cands.size() > 64 && nfp_trim_mode() != kTrimOff;
     if (trimmed) trim_deep();  // 0. the parts of candidates certified in O (large shapes)
     find_splits();  // 1. split points of every meeting pair of candidates
     group_splits(); //    grouped by candidate
@@ -1128,9 +1130,9 @@ struct Classifier {
 
 }  // namespace
 
-bool& nfp_trim_enabled() {
-  thread_local bool on = true;
-  return on;
+int& nfp_trim_mode() {
+  thread_local int mode = kTrimAuto;
+  return mode;
 }
 NfpTrimStats& nfp_trim_stats() {
   thread_local NfpTrimStats stats;

@@ -55,12 +55,15 @@ void nfp_classify(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& ca
 
 /// nfp_classify's step 0 on large shapes (trim_deep: the parts of candidates certified in O are
 /// left out of the pairing, candidates certified whole give no piece), per thread, for the tests:
-/// nfp_trim_enabled() = false classifies without it (the reference they compare with);
-/// nfp_trim_stats() accumulates candidates certified whole (dead), trimmed, and pairs met.
+/// nfp_trim_mode() = kTrimOff classifies without it (the reference they compare with), kTrimAuto
+/// (the default) where candidates are crowded, kTrimAll on every candidate of a large pair (the
+/// tests, to exercise it on every input); nfp_trim_stats() accumulates candidates certified whole
+/// (dead), trimmed, and pairs met.
 struct NfpTrimStats {
   std::size_t dead = 0, trimmed = 0, meets = 0;
 };
-bool& nfp_trim_enabled();
+constexpr int kTrimOff = 0, kTrimAuto = 1, kTrimAll = 2;
+int& nfp_trim_mode();
 NfpTrimStats& nfp_trim_stats();
 
 /// One ring and no right turn (straight vertices allowed): a convex polygon (exact turns).

@@ -1,14 +1,15 @@
 // The classification's step 0 on large shapes (src/nonconvex2/nfp_classify.cpp trim_deep: the
 // parts of candidates certified in O are left out of the pairing, candidates certified whole give
 // no piece; issue 19 item 4, stars) against the same classification without it
-// (nfc::nfp_trim_enabled() = false, the method before the change) and against the reference
+// (nc::nfp_trim_mode() = kTrimOff, the method before the change) and against the reference
 // cutting (nfp_cut.cpp, every open pair sum cut exactly from the candidate): the same pieces
 // piece by piece (candidate, exact ends by compare_params, in the same order), and the same
 // exported no-fit polygon (NoFitPolygon2's rings, slits and points) bit for bit. Inputs where the
 // trimming acts (checked: candidates certified whole and trimmed, fewer pairs met): dense random
 // stars against an L, a small star and a square (real and integer coordinates: exact ties),
 // spirals, combs whose gaps a tooth fits exactly (slits), polygons with holes, swapped roles.
-// Pinned seeds.
+// The trimming runs on every candidate there (kTrimAll); its default mode, on crowded stars only,
+// is compared too. Pinned seeds.
 #include <gtest/gtest.h>
 
 #include <pendepth/nfp2.hpp>
@@ -36,15 +37,15 @@ Totals& totals() {
   return t;
 }
 
-// Restores the switch on scope exit (a failed assertion returns early).
+// Sets the mode, restored on scope exit (a failed assertion returns early).
 struct TrimSwitch {
-  explicit TrimSwitch(bool on) { nc::nfp_trim_enabled() = on; }
-  ~TrimSwitch() { nc::nfp_trim_enabled() = true; }
+  explicit TrimSwitch(int mode) { nc::nfp_trim_mode() = mode; }
+  ~TrimSwitch() { nc::nfp_trim_mode() = nc::kTrimAuto; }
 };
 
-std::vector<nc::NfpPiece> classify(const pendepth::PairDepth2::Impl& S, const std::vector<nc::NfpCandidate>& cands, bool trim,
+std::vector<nc::NfpPiece> classify(const pendepth::PairDepth2::Impl& S, const std::vector<nc::NfpCandidate>& cands, int mode,
                                    nc::NfpTrimStats& stats) {
-  TrimSwitch sw(trim);
+  TrimSwitch sw(mode);
   nc::nfp_trim_stats() = {};
   std::vector<nc::NfpPiece> out;
   nc::nfp_classify(S, cands, out);
@@ -63,15 +64,17 @@ void same(const std::vector<nc::NfpPiece>& got, const std::vector<nc::NfpPiece>&
   }
 }
 
-// Pieces with and without the trimming, and (with `cut`) the reference cutting; then the exported
-// no-fit polygons of both builds.
+// Pieces with the trimming on every candidate (kTrimAll, so every input exercises it), in its
+// default mode and without it, and (with `cut`) the reference cutting; then the exported no-fit
+// polygons of the builds with and without it.
 void check(const Polygon& P, const Polygon& Q, const std::string& what, bool cut = true) {
   const pendepth::PairDepth2::Impl S(P, Q);
   const auto cands = nc::nfp_candidates(P, Q);
-  nc::NfpTrimStats on, off;
-  const auto got = classify(S, cands, true, on);
-  const auto ref = classify(S, cands, false, off);
+  nc::NfpTrimStats on, off, automatic;
+  const auto got = classify(S, cands, nc::kTrimAll, on);
+  const auto ref = classify(S, cands, nc::kTrimOff, off);
   same(got, ref, what + " (trim / no trim)");
+  same(classify(S, cands, nc::kTrimAuto, automatic), ref, what + " (default / no trim)");
   if (cut) {
     std::vector<nc::NfpPiece> exact;
     for (const auto& c : cands)
@@ -79,9 +82,12 @@ void check(const Polygon& P, const Polygon& Q, const std::string& what, bool cut
     same(got, exact, what + " (trim / reference cutting)");
   }
   EXPECT_EQ(off.dead + off.trimmed, 0u) << what;
-  const pendepth::NoFitPolygon2 a(P, Q);
+  pendepth::NoFitPolygon2 a = [&] {
+    TrimSwitch sw(nc::kTrimAll);
+    return pendepth::NoFitPolygon2(P, Q);
+  }();
   pendepth::NoFitPolygon2 b = [&] {
-    TrimSwitch sw(false);
+    TrimSwitch sw(nc::kTrimOff);
     return pendepth::NoFitPolygon2(P, Q);
   }();
   ASSERT_EQ(a.polygons().size(), b.polygons().size()) << what;
@@ -145,6 +151,8 @@ TEST(NfpTrim, SpiralsCombsHoles) {
   std::cout << "[nfp trim] pairs " << t.pairs << ", pieces " << t.pieces << " identical with and without the trimming; candidates "
             << t.dead << " certified whole in O, " << t.trimmed << " trimmed; pairs met " << t.meets_on << " (without: " << t.meets_off
             << ")\n";
+  EXPECT_GT(t.dead, 0u);  // the comparisons are not vacuous
+  EXPECT_GT(t.trimmed, 0u);
 }
 
 // The comparisons above are not vacuous: the trimming acted, and it removed most pair meetings
@@ -155,7 +163,7 @@ TEST(NfpTrim, ActsOnStars) {
   nc::NfpTrimStats on, off;
   const pendepth::PairDepth2::Impl S(P, L_shape(1));
   const auto cands = nc::nfp_candidates(P, L_shape(1));
-  same(classify(S, cands, true, on), classify(S, cands, false, off), "star 3000 / L");
+  same(classify(S, cands, nc::kTrimAuto, on), classify(S, cands, nc::kTrimOff, off), "star 3000 / L");
   std::cout << "[nfp trim] star 3000 / L: " << cands.size() << " candidates, " << on.dead << " certified whole in O, " << on.trimmed
             << " trimmed; pairs met " << on.meets << " (without: " << off.meets << ")\n";
   EXPECT_GT(on.dead, cands.size() / 2);
