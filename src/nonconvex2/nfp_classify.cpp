@@ -401,10 +401,10 @@ struct Classifier {
     return b == edge_part_q[E.q0] && has_vertex(rp, a, E.p0);
   }
   // Large shapes: the dual descent of the pieces' box trees over the piece pairs whose sum box
-  // meets [mlo, mhi], nearer pair first (the child pair whose sum box's centre is nearer m is
-  // visited first: deep points of dense shapes, e.g. a star's spikes, are then surely held by the
-  // first sums reached rather than after O(n) far ones). leaf(a, b) returns true to stop.
-  template <class Leaf>
+  // meets [mlo, mhi]; `Nearer`: the child pair whose sum box's centre is nearer m first (trim_deep's
+  // probes: deep points of dense shapes, e.g. a star's spikes, are then surely held by the first
+  // sums reached rather than after O(n) far ones). leaf(a, b) returns true to stop.
+  template <bool Nearer, class Leaf>
   void descend_pieces(const Vec2& m, const Vec2& mlo, const Vec2& mhi, Leaf&& leaf) {
     stack.assign(1, {0, 0});
     while (!stack.empty()) {
@@ -424,7 +424,7 @@ struct Classifier {
           const auto &X = tree_p.nodes[x], &Y = tree_b.nodes[y];
           return (0.5 * (X.lo + X.hi + Y.lo + Y.hi) - m).squaredNorm();
         };
-        if (dist(a0, b0) < dist(a1, b1)) std::swap(a0, a1), std::swap(b0, b1);
+        if (Nearer && dist(a0, b0) < dist(a1, b1)) std::swap(a0, a1), std::swap(b0, b1);
         stack.push_back({a0, b0});
         stack.push_back({a1, b1});
       };
@@ -442,7 +442,7 @@ struct Classifier {
     auto& undecided = buf.undecided_pairs;
     undecided.clear();
     bool sure = false;
-    descend_pieces(m, mlo, mhi, [&](std::uint32_t a, std::uint32_t b) {
+    descend_pieces<false>(m, mlo, mhi, [&](std::uint32_t a, std::uint32_t b) {
       if (c.strict && own_edge_piece(a, b, c.E)) return false;
       const int r = in_piece_sum(a, b, c, p, m, tol, false, 0);
       if (r == 0) undecided.push_back({a, b});
@@ -516,7 +516,7 @@ struct Classifier {
     double best = cur;
     int leaves = 0, sure = 0;
     const Param p{Param::Value, {}, cur};
-    descend_pieces(m, mlo, mhi, [&](std::uint32_t a, std::uint32_t b) {
+    descend_pieces<true>(m, mlo, mhi, [&](std::uint32_t a, std::uint32_t b) {
       ++leaves;
       if (in_piece_sum(a, b, c, p, m, tol, false, 0) > 0) {
         ++sure;
@@ -981,6 +981,7 @@ struct Classifier {
       tree.build(boxes);
     }
     std::vector<std::int32_t> st;
+    std::size_t meets = 0;
     for (std::size_t i = 0; i < K; ++i) {
       if (trimmed && buf.dead[i]) continue;
       const Vec2 &lo = trimmed ? buf.act_lo[i] : cands[i].lo, &hi = trimmed ? buf.act_hi[i] : cands[i].hi;
@@ -993,11 +994,12 @@ struct Classifier {
           st.push_back(N.left);
           st.push_back(N.right);
         } else if (N.tri > i) {
-          ++nfp_trim_stats().meets;
+          ++meets;
           meet(i, N.tri);
         }
       }
     }
+    nfp_trim_stats().meets += meets;
   }
 
   // Step 1: the split parameters grouped by candidate (counting sort): candidate k's are
