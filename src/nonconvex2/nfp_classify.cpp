@@ -7,6 +7,16 @@
 // so another candidate d meets c there: crossing or touching c's line, or collinear with an end
 // there. Hence c, split at every point where another candidate meets it, consists of open parts
 // that lie wholly in O or wholly on ∂O, and one exact point per part decides it.
+//  0. Large shapes whose candidates are crowded (at least half of a sample have 16 or more
+//     box-overlapping neighbours: a dense star against a small Q, where box-overlapping pairs grow
+//     as n², issue 19 item 4): trim_deep walks each crowded candidate from each end inward, one
+//     convex pair sum of pieces at a time (a sum surely holding the probe point, found nearest
+//     first in the pieces' box trees, clipped to the farthest parameter whose point it also surely
+//     holds: floating filters with static error bounds, never a wrong "in O"), and drops the
+//     certified prefix and suffix from the candidate's box; a candidate certified whole gives no
+//     piece and meets nothing. Split points not in O lie on both candidates' remaining parts, so
+//     step 1 still finds them; the ones in O it may miss change no part's class (the parts next to
+//     a point of the open set O are in O), hence no piece.
 //  1. Split points: for each pair of candidates with overlapping boxes, non-parallel: the
 //     crossing of their lines when it lies on both closed segments (4 exact comparisons);
 //     collinear: the ends of each strictly inside the other (the end as the crossing with a line of
@@ -49,8 +59,10 @@
 // rounded ends come from the split values when their error bounds certify 8 ulps.
 // Two convex shapes: every candidate at a strictly convex vertex is a whole edge of the convex
 // sum and is kept whole without a test (nfp_classify below).
-// Cost: candidate pairs by boxes (all pairs for K ≤ 64, else a box hierarchy), O(1) exact tests per
-// meeting pair; per part or point the pair sums whose boxes hold the point, O(1) tests each. For
+// Cost: candidate pairs by boxes (all pairs for K ≤ 64, else a box hierarchy; after step 0 only the
+// boxes of the uncertified parts), O(1) exact tests per meeting pair; step 0 at most 8 probes per
+// end of a crowded candidate, each a descent reaching at most 128 piece pairs; per part or point
+// the pair sums whose boxes hold the point, O(1) tests each. For
 // X box-overlapping pairs: O(K log K + X + (K + X)·v), v sums per point (worst O(nm)); a
 // candidate met by more than kMaxSplits others is cut by the reference instead.
 // Redundant candidates (nfp_build.cpp step 1) split the others where they end on a collinear
