@@ -7,6 +7,16 @@
 // so another candidate d meets c there: crossing or touching c's line, or collinear with an end
 // there. Hence c, split at every point where another candidate meets it, consists of open parts
 // that lie wholly in O or wholly on ∂O, and one exact point per part decides it.
+//  0. Large shapes whose candidates are crowded (at least half of a sample have 16 or more
+//     box-overlapping neighbours: a dense star against a small Q, where box-overlapping pairs grow
+//     as n², issue 19 item 4): trim_deep walks each crowded candidate from each end inward, one
+//     convex pair sum of pieces at a time (a sum surely holding the probe point, found nearest
+//     first in the pieces' box trees, clipped to the farthest parameter whose point it also surely
+//     holds: floating filters with static error bounds, never a wrong "in O"), and drops the
+//     certified prefix and suffix from the candidate's box; a candidate certified whole gives no
+//     piece and meets nothing. Split points not in O lie on both candidates' remaining parts, so
+//     step 1 still finds them; the ones in O it may miss change no part's class (the parts next to
+//     a point of the open set O are in O), hence no piece.
 //  1. Split points: for each pair of candidates with overlapping boxes, non-parallel: the
 //     crossing of their lines when it lies on both closed segments (4 exact comparisons);
 //     collinear: the ends of each strictly inside the other (the end as the crossing with a line of
@@ -51,8 +61,10 @@
 // sum and is kept whole without a test, and so is one at a straight vertex whose shape lies on
 // the candidate's outer side (two exact comparisons of input coordinates); the other straight
 // candidates are cut by the reference (nfp_classify below).
-// Cost: candidate pairs by boxes (all pairs for K ≤ 64, else a box hierarchy), O(1) exact tests per
-// meeting pair; per part or point the pair sums whose boxes hold the point, O(1) tests each. For
+// Cost: candidate pairs by boxes (all pairs for K ≤ 64, else a box hierarchy; after step 0 only the
+// boxes of the uncertified parts), O(1) exact tests per meeting pair; step 0 at most 8 probes per
+// end of a crowded candidate, each a descent reaching at most 128 piece pairs; per part or point
+// the pair sums whose boxes hold the point, O(1) tests each. For
 // X box-overlapping pairs: O(K log K + X + (K + X)·v), v sums per point (worst O(nm)); a
 // candidate met by more than kMaxSplits others is cut by the reference instead.
 // Redundant candidates (nfp_build.cpp step 1) split the others where they end on a collinear
@@ -172,10 +184,14 @@ struct Buffers {
   std::vector<std::pair<std::uint32_t, Split>> found;  // (candidate, split parameter)
   std::vector<char> reference, part, vert;
   std::vector<Split*> grouped, sp;
+  // trim_deep: per candidate the box of its part not certified in O, and whether none is left.
+  std::vector<Vec2> act_lo, act_hi;
+  std::vector<char> dead;
+  BoxTree cand_tree;
   void trim() {
     const std::size_t big = std::size_t(1) << 14;
-    if (vertex_table.capacity() > big || found.capacity() > big || hdx.capacity() > big || !vertex_map.empty() ||
-        tree_p.nodes.capacity() + tree_b.nodes.capacity() > big)
+    if (vertex_table.capacity() > big || found.capacity() > big || act_lo.capacity() > big || hdx.capacity() > big || !vertex_map.empty() ||
+        tree_p.nodes.capacity() + tree_b.nodes.capacity() + cand_tree.nodes.capacity() > big)
       *this = Buffers();
     pp.trim(), pb.trim(), rp.trim(), rb.trim();
   }
@@ -398,14 +414,12 @@ struct Classifier {
     if (E.q0 == E.q1) return a == edge_part_p[E.p0] && has_vertex(rb, b, E.q0);
     return b == edge_part_q[E.q0] && has_vertex(rp, a, E.p0);
   }
-  // Large shapes: m (within [mlo, mhi]) in O, by a dual descent of the pieces' box trees; the
-  // floating filters first over every piece pair whose sum box holds m (stopping at one that
-  // surely holds it), then the exact test of the undecided pairs.
-  template <class DenSign>
-  bool covered_by_pieces(const NfpCandidate& c, const Param& p, const Vec2& m, double tol, const Vec2& mlo, const Vec2& mhi,
-                         DenSign&& den_sign) {
-    auto& undecided = buf.undecided_pairs;
-    undecided.clear();
+  // Large shapes: the dual descent of the pieces' box trees over the piece pairs whose sum box
+  // meets [mlo, mhi]; `Nearer`: the child pair whose sum box's centre is nearer m first (trim_deep's
+  // probes: deep points of dense shapes, e.g. a star's spikes, are then surely held by the first
+  // sums reached rather than after O(n) far ones). leaf(a, b) returns true to stop.
+  template <bool Nearer, class Leaf>
+  void descend_pieces(const Vec2& m, const Vec2& mlo, const Vec2& mhi, Leaf&& leaf) {
     stack.assign(1, {0, 0});
     while (!stack.empty()) {
       const auto [a, b] = stack.back();
@@ -416,23 +430,187 @@ struct Classifier {
       if (lo.x() > mhi.x() || hi.x() < mlo.x() || lo.y() > mhi.y() || hi.y() < mlo.y()) continue;
       const bool la = A.left < 0, lb = B.left < 0;
       if (la && lb) {
-        if (c.strict && own_edge_piece(A.tri, B.tri, c.E)) continue;
-        const int r = in_piece_sum(A.tri, B.tri, c, p, m, tol, false, 0);
-        if (r > 0) return true;
-        if (r == 0) undecided.push_back({A.tri, B.tri});
+        if (leaf(A.tri, B.tri)) return;
         continue;
       }
-      if (lb || (!la && (A.hi - A.lo).sum() >= (B.hi - B.lo).sum())) {
-        stack.push_back({A.left, b});
-        stack.push_back({A.right, b});
-      } else {
-        stack.push_back({a, B.left});
-        stack.push_back({a, B.right});
-      }
+      auto push = [&](std::int32_t a0, std::int32_t b0, std::int32_t a1, std::int32_t b1) {
+        auto dist = [&](std::int32_t x, std::int32_t y) {
+          const auto &X = tree_p.nodes[x], &Y = tree_b.nodes[y];
+          return (0.5 * (X.lo + X.hi + Y.lo + Y.hi) - m).squaredNorm();
+        };
+        if (Nearer && dist(a0, b0) < dist(a1, b1)) std::swap(a0, a1), std::swap(b0, b1);
+        stack.push_back({a0, b0});
+        stack.push_back({a1, b1});
+      };
+      if (lb || (!la && (A.hi - A.lo).sum() >= (B.hi - B.lo).sum())) push(A.left, b, A.right, b);
+      else push(a, B.left, a, B.right);
     }
+  }
+
+  // Large shapes: m (within [mlo, mhi]) in O; the floating filters first over every piece pair
+  // whose sum box holds m (stopping at one that surely holds it), then the exact test of the
+  // undecided pairs.
+  template <class DenSign>
+  bool covered_by_pieces(const NfpCandidate& c, const Param& p, const Vec2& m, double tol, const Vec2& mlo, const Vec2& mhi,
+                         DenSign&& den_sign) {
+    auto& undecided = buf.undecided_pairs;
+    undecided.clear();
+    bool sure = false;
+    descend_pieces<false>(m, mlo, mhi, [&](std::uint32_t a, std::uint32_t b) {
+      if (c.strict && own_edge_piece(a, b, c.E)) return false;
+      const int r = in_piece_sum(a, b, c, p, m, tol, false, 0);
+      if (r == 0) undecided.push_back({a, b});
+      return sure = r > 0;
+    });
+    if (sure) return true;
     for (const auto& [a, b] : undecided)
       if (in_piece_sum(a, b, c, p, m, tol, true, den_sign()) > 0) return true;
     return false;
+  }
+
+  // ---- Step 0 (large shapes, trim_deep): the parts of the candidates certified in O ----
+  // Dense shapes (a star's spikes against a small Q) have candidates met by O(n) others, nearly
+  // all of it deep in O: box-overlapping pairs and split points grow as n². Walking from each end
+  // of a candidate inward, one convex pair sum at a time, certifies a prefix [0, a] and a suffix
+  // [b, 1] in O (floating filters with static error bounds only, never a wrong "in O"); step 1
+  // then pairs only the boxes of the rest [a, b], and a candidate certified whole gives no piece.
+  bool trimmed = false, have_tree = false;  // have_tree: buf.cand_tree holds the candidates' boxes
+  static constexpr int kTrimRounds = 8;      // sums chained per end
+  static constexpr int kProbeLeaves = 128;   // piece pairs visited per probe
+  static constexpr int kProbeSure = 4;       // sums surely holding the probe point tried per probe
+  static constexpr std::size_t kCrowded = 16;  // box-overlapping candidates that make one worth trimming
+
+  // c(μ) for a double μ, to within tol (covered_point's bound for an exact parameter).
+  static Vec2 value_point(const NfpCandidate& c, double mu, double& tol) {
+    tol = (c.A.cwiseAbs().maxCoeff() + c.B.cwiseAbs().maxCoeff()) * 0x1p-40 + 0x1p-1000;
+    return c.A + mu * (c.B - c.A);
+  }
+  // c(cur) surely in the open sum of pieces a, b: the farthest μ' from cur toward `to` (inclusive)
+  // found with c(μ') surely in that sum too, so every point of c between them is (a convex set);
+  // cur when none. The half-planes' floating values, linear in μ, give the candidate μ'; the
+  // point filter in_piece_sum certifies it (halving the step up to three times).
+  double sum_reach(std::uint32_t a, std::uint32_t b, const NfpCandidate& c, double cur, double to) const {
+    double tol;
+    const Vec2 m = value_point(c, cur, tol), D = c.B - c.A;
+    const double dir = to > cur ? 1 : -1, span = std::abs(to - cur);
+    const double S = std::max({smax_p[a], smax_b[b], c.A.cwiseAbs().maxCoeff(), c.B.cwiseAbs().maxCoeff()});
+    const double slack = 2 * (tol + 16 * S * 0x1p-53);
+    double lim = span;
+    for (int side = 0; side < 2; ++side) {
+      const ConvexParts& X = side == 0 ? rp : rb;
+      const ConvexParts& Y = side == 0 ? rb : rp;
+      const std::uint32_t kx = side == 0 ? a : b, ky = side == 0 ? b : a;
+      const std::uint32_t x0i = X.start[kx], xn = X.start[kx + 1] - x0i;
+      for (std::uint32_t i = 0; i < xn; ++i) {
+        const Vec2& x0 = X.v[x0i + i];
+        const Vec2 d = X.v[x0i + (i + 1) % xn] - x0;
+        double lo = INFINITY;
+        for (std::uint32_t j = Y.start[ky]; j < Y.start[ky + 1]; ++j) lo = std::min(lo, d.x() * Y.v[j].y() - d.y() * Y.v[j].x());
+        const double val = d.x() * m.y() - d.y() * m.x() - (d.x() * x0.y() - d.y() * x0.x() + lo);
+        const double rate = dir * (d.x() * D.y() - d.y() * D.x()), err = (std::abs(d.x()) + std::abs(d.y())) * slack;
+        if (rate < 0) lim = std::min(lim, (val - 4 * err) / -rate);
+      }
+    }
+    if (!(lim > 0)) return cur;
+    for (int tries = 0; tries < 4; ++tries, lim *= 0.5) {
+      const double t = tries == 0 && lim >= span ? to : cur + dir * std::min(lim, span) * 0.99;
+      if (t == cur || !(std::abs(t - cur) <= span)) return cur;
+      double tt;
+      const Vec2 mt = value_point(c, t, tt);
+      if (in_piece_sum(a, b, c, Param{Param::Value, {}, t}, mt, tt, false, 0) > 0) return t;
+    }
+    return cur;
+  }
+  // The farthest μ' toward `to` with c between cur and μ' certified in O through one of the pair
+  // sums surely holding c(cur) (nearer first, a few); cur when none.
+  double probe(const NfpCandidate& c, double cur, double to) {
+    double tol;
+    const Vec2 m = value_point(c, cur, tol);
+    const Vec2 mlo = m.array() - tol, mhi = m.array() + tol;
+    double best = cur;
+    int leaves = 0, sure = 0;
+    const Param p{Param::Value, {}, cur};
+    descend_pieces<true>(m, mlo, mhi, [&](std::uint32_t a, std::uint32_t b) {
+      ++leaves;
+      if (in_piece_sum(a, b, c, p, m, tol, false, 0) > 0) {
+        ++sure;
+        const double r = sum_reach(a, b, c, cur, to);
+        if (std::abs(r - cur) > std::abs(best - cur)) best = r;
+      }
+      return best == to || sure >= kProbeSure || leaves >= kProbeLeaves;
+    });
+    return best;
+  }
+  // buf.dead, buf.act_lo / act_hi for every candidate (see above).
+  void trim_deep() {
+    const std::size_t K = cands.size();
+    buf.act_lo.resize(K), buf.act_hi.resize(K);
+    buf.dead.assign(K, 0);
+    // Crowded candidates only: those whose box meets at least kCrowded others' (a counting pass
+    // over a box tree of all candidates, stopped there). Elsewhere the pairing is cheap and the
+    // probes would cost more than they save (combs, spirals).
+    std::vector<Tri> boxes(K);
+    for (std::size_t k = 0; k < K; ++k) boxes[k].lo = cands[k].lo, boxes[k].hi = cands[k].hi;
+    BoxTree& tree = buf.cand_tree;  // refitted to the trimmed boxes by find_splits
+    tree.build(boxes);
+    have_tree = true;
+    std::vector<std::int32_t> st;
+    auto crowded = [&](std::size_t k) {
+      const Vec2 &lo = cands[k].lo, &hi = cands[k].hi;
+      std::size_t count = 0;
+      st.assign(1, 0);
+      while (!st.empty() && count < kCrowded) {
+        const auto& N = tree.nodes[st.back()];
+        st.pop_back();
+        if (N.lo.x() > hi.x() || lo.x() > N.hi.x() || N.lo.y() > hi.y() || lo.y() > N.hi.y()) continue;
+        if (N.left >= 0) st.push_back(N.left), st.push_back(N.right);
+        else count += N.tri != k;
+      }
+      return count >= kCrowded;
+    };
+    // A sample first (every 32nd candidate): less than half crowded (combs: the teeth's candidates
+    // meet their neighbours', most of them on ∂O), and the pairing is left as it is.
+    std::size_t sampled = 0, crowded_sampled = 0;
+    for (std::size_t k = 0; k < K; k += 32) ++sampled, crowded_sampled += crowded(k);
+    const bool all = nfp_trim_mode() == kTrimAll;
+    if (!all && 2 * crowded_sampled < sampled) {
+      trimmed = false;
+      return;
+    }
+    for (std::size_t k = 0; k < K; ++k) {
+      const NfpCandidate& c = cands[k];
+      buf.act_lo[k] = c.lo, buf.act_hi[k] = c.hi;
+      if (!all && !crowded(k)) continue;
+      auto walk = [&](double from, double to, bool& moved) {
+        double cur = from;
+        for (int r = 0; r < kTrimRounds && cur != to; ++r) {
+          const double next = probe(c, cur, to);
+          if (next == cur) break;
+          cur = next, moved = true;
+        }
+        return cur;
+      };
+      bool ca = false, cb = false;
+      const double a = walk(0.0, 1.0, ca);  // [0, a] in O when ca
+      if (ca && a == 1) {
+        buf.dead[k] = 1, ++nfp_trim_stats().dead;
+        continue;
+      }
+      const double b = walk(1.0, ca ? a : 0.0, cb);  // [b, 1] in O when cb
+      if (cb && b == (ca ? a : 0.0)) {
+        buf.dead[k] = 1, ++nfp_trim_stats().dead;
+        continue;
+      }
+      if (!ca && !cb) continue;
+      ++nfp_trim_stats().trimmed;
+      double ta, tb;
+      const Vec2 ma = value_point(c, ca ? a : 0.0, ta), mb = value_point(c, cb ? b : 1.0, tb);
+      const double t = std::max(ta, tb);
+      auto lower = [&](double x) { return x - std::abs(x) * 0x1p-44 - t; };
+      auto upper = [&](double x) { return x + std::abs(x) * 0x1p-44 + t; };
+      buf.act_lo[k] = Vec2(std::max(c.lo.x(), lower(std::min(ma.x(), mb.x()))), std::max(c.lo.y(), lower(std::min(ma.y(), mb.y()))));
+      buf.act_hi[k] = Vec2(std::min(c.hi.x(), upper(std::max(ma.x(), mb.x()))), std::min(c.hi.y(), upper(std::max(ma.y(), mb.y()))));
+    }
   }
 
   // Half-planes of A ⊕ B for convex A, B: for each edge d of one part from x0, m is inside iff
@@ -730,6 +908,8 @@ struct Classifier {
 
   // The pieces of every candidate that is not redundant, appended to out (nfp_classify).
   void run(std::vector<NfpPiece>& out) {
+    trimmed = flat.empty() && cands.size() > 64 && nfp_trim_mode() != kTrimOff;
+    if (trimmed) trim_deep();  // 0. the parts of candidates certified in O (large shapes)
     find_splits();  // 1. split points of every meeting pair of candidates
     group_splits(); //    grouped by candidate
     for (std::size_t k = 0; k < cands.size(); ++k) classify_candidate(k, out);  // 2.–4.
@@ -791,26 +971,49 @@ struct Classifier {
           if (boxes_meet(cands[i], cands[j])) meet(i, j);
       return;
     }
-    std::vector<Tri> boxes(K);
-    for (std::size_t k = 0; k < K; ++k) boxes[k].lo = cands[k].lo, boxes[k].hi = cands[k].hi;
-    BoxTree tree;
-    tree.build(boxes);
+    // Trimmed (trim_deep): its tree of the candidates' boxes refitted to the boxes of the parts
+    // not certified in O (empty for candidates wholly in O). A split point not in O lies on both
+    // candidates outside their certified parts, so its pair still meets; points in O may be
+    // missed, which changes no part's class (the parts next to a point of the open set O are in
+    // O) and no piece.
+    BoxTree local;
+    BoxTree& tree = trimmed || have_tree ? buf.cand_tree : local;
+    if (trimmed) {
+      for (std::size_t k = tree.nodes.size(); k-- > 0;) {
+        auto& N = tree.nodes[k];
+        if (N.left < 0) {
+          N.lo = buf.dead[N.tri] ? Vec2(INFINITY, INFINITY) : buf.act_lo[N.tri];
+          N.hi = buf.dead[N.tri] ? Vec2(-INFINITY, -INFINITY) : buf.act_hi[N.tri];
+        } else {
+          N.lo = tree.nodes[N.left].lo.cwiseMin(tree.nodes[N.right].lo);
+          N.hi = tree.nodes[N.left].hi.cwiseMax(tree.nodes[N.right].hi);
+        }
+      }
+    } else if (!have_tree) {
+      std::vector<Tri> boxes(K);
+      for (std::size_t k = 0; k < K; ++k) boxes[k].lo = cands[k].lo, boxes[k].hi = cands[k].hi;
+      tree.build(boxes);
+    }
     std::vector<std::int32_t> st;
+    std::size_t meets = 0;
     for (std::size_t i = 0; i < K; ++i) {
+      if (trimmed && buf.dead[i]) continue;
+      const Vec2 &lo = trimmed ? buf.act_lo[i] : cands[i].lo, &hi = trimmed ? buf.act_hi[i] : cands[i].hi;
       st.assign(1, 0);
       while (!st.empty()) {
         const auto& N = tree.nodes[st.back()];
         st.pop_back();
-        if (N.lo.x() > cands[i].hi.x() || cands[i].lo.x() > N.hi.x() || N.lo.y() > cands[i].hi.y() || cands[i].lo.y() > N.hi.y())
-          continue;
+        if (N.lo.x() > hi.x() || lo.x() > N.hi.x() || N.lo.y() > hi.y() || lo.y() > N.hi.y()) continue;
         if (N.left >= 0) {
           st.push_back(N.left);
           st.push_back(N.right);
         } else if (N.tri > i) {
+          ++meets;
           meet(i, N.tri);
         }
       }
     }
+    nfp_trim_stats().meets += meets;
   }
 
   // Step 1: the split parameters grouped by candidate (counting sort): candidate k's are
@@ -834,6 +1037,7 @@ struct Classifier {
   void classify_candidate(std::size_t k, std::vector<NfpPiece>& out) {
     const NfpCandidate& c = cands[k];
     if (c.redundant) return;  // its points are on kept candidates (nfp_candidates)
+    if (trimmed && buf.dead[k]) return;  // wholly in O (trim_deep): no piece
     if (buf.reference[k]) {
       nfp_cut(S, c, out);
       return;
@@ -941,6 +1145,15 @@ struct Classifier {
 };
 
 }  // namespace
+
+int& nfp_trim_mode() {
+  thread_local int mode = kTrimAuto;
+  return mode;
+}
+NfpTrimStats& nfp_trim_stats() {
+  thread_local NfpTrimStats stats;
+  return stats;
+}
 
 bool convex_shape(const Polygon& S) {
   if (S.hole_count() != 0) return false;

@@ -53,6 +53,19 @@ void nfp_cut(const PairDepth2::Impl& S, const NfpCandidate& c, std::vector<NfpPi
 /// testing one point per part (nfp_classify.cpp).
 void nfp_classify(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& cands, std::vector<NfpPiece>& out);
 
+/// nfp_classify's step 0 on large shapes (trim_deep: the parts of candidates certified in O are
+/// left out of the pairing, candidates certified whole give no piece), per thread, for the tests:
+/// nfp_trim_mode() = kTrimOff classifies without it (the reference they compare with), kTrimAuto
+/// (the default) where candidates are crowded, kTrimAll on every candidate of a large pair (the
+/// tests, to exercise it on every input); nfp_trim_stats() accumulates candidates certified whole
+/// (dead), trimmed, and pairs met.
+struct NfpTrimStats {
+  std::size_t dead = 0, trimmed = 0, meets = 0;
+};
+constexpr int kTrimOff = 0, kTrimAuto = 1, kTrimAll = 2;
+int& nfp_trim_mode();
+NfpTrimStats& nfp_trim_stats();
+
 /// One ring and no right turn (straight vertices allowed): a convex polygon (exact turns).
 bool convex_shape(const Polygon& S);
 
