@@ -1,12 +1,13 @@
 // Pair3 on a non-convex mesh P against a point q, in either role (issue 16 item 4: "a point Q
 // gives the signed distance field of P"; contract in mesh_mixed.hpp).
 //
-// O = int P − q (overlap ⇔ the placed point is interior to the mesh). The union of the open
-// pieces misses the faces the decomposition's pieces share (a point moving through a polycube
-// crosses them), so the point pairs are answered on the mesh's own triangles (closed, outward):
-//   overlap   x ∈ int P ⇔ x lies in some closed piece (exact orient3d against its outward
-//             triangles; pieces pruned by their balls) and on no triangle (flat_flat_distance of triangle and point > 0, exact;
-//             only triangles whose box holds x, with a margin).
+// O = int P − q (overlap ⇔ the placed point is interior to the mesh). Everything is decided on
+// the mesh's own triangles (closed, outward; the convex decomposition is not used, so overlap, σ,
+// σ_d and the distance agree to the last bit of the exact placed point):
+//   overlap   x ∈ int P ⇔ x on no triangle (exact: in its plane and inside its three edges) and
+//             an odd number of proper crossings of a ray from x (exact signs; a ray through an
+//             edge or a vertex, or in a triangle's plane, is detected exactly and replaced by the
+//             next direction of the moment curve (1, s, s²): parity_inside).
 //   σ, sd     dist(x, ∂P) = the least distance to a triangle (each flat_flat_distance: exact
 //             decisions, a few ulps), triangles in increasing box distance, stopping when the box
 //             distance exceeds the best: σ = that distance inside, sd = ± it (0 on the surface).
@@ -23,8 +24,13 @@
 //   separation the last exit: the hits in increasing λ; between two consecutive distinct hits
 //             the point is inside or outside throughout, decided by the exact overlap test at the
 //             midpoint; the answer is the last hit preceded by an inside stretch (0 when none).
-// Cost: O(T) exact sign filters per ray (T triangles), O(k) flat distances for σ (k the
-// triangles the box pruning keeps), O(pieces) + O(triangles near x) for overlap.
+// Ties: σ / sd take the least triangle index among equal distances, rays the least (λ, index).
+// Searches go through the box tree over the triangles (tri_tree.hpp, built once per pair): the
+// nearest triangle best-first by box distance, the ray's triangles by a conservative ray–box
+// test; the tree only prunes, so the answers equal the linear scan's (MixedPair::linear, the
+// tests' reference) bit for bit.
+// Cost: O(log T + k) nodes and k exact tests per query typically (T triangles, k the triangles
+// near x or along the ray), O(T) worst case (a ray grazing many boxes); build O(T log T).
 #include "mesh3/mesh_mixed.hpp"
 
 #include "geometry/exact.hpp"
