@@ -329,9 +329,10 @@ bool point_overlapping(const MixedPair& m, const Pose3& pose_p, const Pose3& pos
   return !on_surface(m, f) && parity_inside(m, f);
 }
 
-Depth3 point_minimum(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
+namespace {
+// σ for an overlapping placement.
+Depth3 minimum_inside(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
   Depth3 r;
-  if (!point_overlapping(m, pose_p, pose_q)) return r;
   std::size_t t = 0;
   const Distance3 n = nearest(m, pose_p, pose_q, t);
   r.overlapping = true;
@@ -346,10 +347,15 @@ Depth3 point_minimum(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_
   set_features(m, r, t);
   return r;
 }
+}  // namespace
+
+Depth3 point_minimum(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
+  return point_overlapping(m, pose_p, pose_q) ? minimum_inside(m, pose_p, pose_q) : Depth3{};
+}
 
 Distance3 point_distance(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
   if (point_overlapping(m, pose_p, pose_q)) {
-    const Depth3 s = point_minimum(m, pose_p, pose_q);
+    const Depth3 s = minimum_inside(m, pose_p, pose_q);
     Distance3 o;
     o.overlapping = true;
     o.distance = o.lower_bound = o.upper_bound = -s.depth;
