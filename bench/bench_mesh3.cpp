@@ -285,7 +285,15 @@ void BM_MeshHullError(benchmark::State& st) {
 // radius 0.4 (the piece walk: src/mesh3/mesh_mixed.cpp): µs per query. Args: mesh case (1 comb of
 // 8 teeth, 2 comb of 32, 4 torus 16 × 8 — points only: its rounded decomposition has pieces too
 // thin for the rounded-shape engine), shape (0 point, 1 sphere), query (0 signed distance, 1 σ_d,
-// 2 σ, 3 cast). Translations uniform in the mesh's box (about half inside), random directions.
+// 2 σ, 3 cast; 100 a fine torus 64 × 32 = 4096 triangles, points only). Translations uniform in the
+// mesh's box (about half inside), random directions.
+constexpr std::size_t kFineTorus = 100;
+io::MeshFile mixed_mesh(std::size_t mesh) { return mesh == kFineTorus ? torus(64, 32) : mesh_cases()[mesh].p; }
+std::string mixed_name(std::size_t mesh) {
+  if (mesh == kFineTorus) return "torus64";
+  const std::string& n = mesh_cases()[mesh].name;
+  return n.substr(0, n.find('_'));
+}
 struct Mixed {
   pendepth::Pair3 pair;
   std::vector<pendepth::Pose3> poses;
@@ -295,7 +303,7 @@ const Mixed& mixed(std::size_t mesh, int shape) {
   static std::map<std::pair<std::size_t, int>, std::unique_ptr<Mixed>> cache;
   auto& e = cache[{mesh, shape}];
   if (!e) {
-    const pendepth::Mesh3 m = pendepth::Mesh3::validate(mesh_cases()[mesh].p, "P");
+    const pendepth::Mesh3 m = pendepth::Mesh3::validate(mixed_mesh(mesh), "P");
     const pendepth::Shape3 s = shape == 0 ? pendepth::Shape3::point(Vec3::Zero()) : pendepth::Shape3::sphere(0.4);
     e.reset(new Mixed{pendepth::Pair3(pendepth::Shape3::from_mesh(m), s), {}, {}});
     Vec3 lo = m.points()[0], hi = lo;
@@ -323,7 +331,7 @@ void BM_MeshMixed(benchmark::State& st) {
     else benchmark::DoNotOptimize(x.pair.cast(id, x.poses[k], x.dirs[k]));
   }
   static const char* q[] = {"distance", "along", "minimum", "cast"};
-  st.SetLabel(mesh_cases()[mesh].name.substr(0, mesh_cases()[mesh].name.find('_')) + (shape ? "_sphere_" : "_point_") + q[query]);
+  st.SetLabel(mixed_name(mesh) + (shape ? "_sphere_" : "_point_") + q[query]);
   int over = 0;
   for (const auto& pose : x.poses) over += x.pair.overlapping(id, pose);
   st.counters["overlapping"] = over;
@@ -346,7 +354,7 @@ BENCHMARK(BM_MeshMinimumBoundsDescent)->Apply(mesh_args);
 BENCHMARK(BM_MeshHullError)->Apply(mesh_args);
 BENCHMARK(BM_MeshMixed)
     ->Apply([](benchmark::internal::Benchmark* b) {
-      for (const auto& [mesh, shape] : {std::pair{1, 0}, {4, 0}, {1, 1}, {2, 1}})
+      for (const auto& [mesh, shape] : {std::pair<int, int>{1, 0}, {4, 0}, {static_cast<int>(kFineTorus), 0}, {1, 1}, {2, 1}})
         for (int q = 0; q < 4; ++q) b->Args({mesh, shape, q});
     })
     ->Unit(benchmark::kMicrosecond);

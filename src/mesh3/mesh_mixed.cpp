@@ -142,8 +142,6 @@ MixedPair MixedPair::make(const Shape3& P, const Shape3& Q) {
     throw InvalidInput("pair: a non-convex mesh against a segment or flat polygon (P " + P.name() + ", Q " + Q.name() +
                        ") is not implemented (points, rounded shapes and curved primitives are; use the mesh's hull: "
                        "Shape3::from_file(path, name, true) / --hull, or the segment ⊕ a small ball)");
-  bool exact = true;
-  const std::vector<ConvexPolytope> pieces = pieces_of(mesh, exact);
   front::Scale scale;
   if (other.dimension() == 0) {  // a point: the mesh's triangles (mesh_point.cpp), scaled
     m.point = true;
@@ -152,8 +150,6 @@ MixedPair MixedPair::make(const Shape3& P, const Shape3& Q) {
     const auto pts = mm.points();
     front::Extent x;
     x.add_point(m.pt.v[0].cwiseAbs().maxCoeff());
-    for (const ConvexPolytope& k : pieces)
-      for (const Vec3& v : k.vertices()) x.add_point(v.cwiseAbs().maxCoeff());
     for (const auto& t : mm.triangles())
       for (int e = 0; e < 3; ++e) x.add_point(pts[t[e]].cwiseAbs().maxCoeff()), x.add_edge(pts[t[e]], pts[t[(e + 1) % 3]]);
     scale = front::Scale::for_pair(x, front::kBand3);
@@ -166,8 +162,14 @@ MixedPair MixedPair::make(const Shape3& P, const Shape3& Q) {
       m.tri.push_back(T);
       m.tri_flat.push_back(convex3::flat_shape(T, "triangle"));
       m.tri_box.push_back({T[0].cwiseMin(T[1]).cwiseMin(T[2]), T[0].cwiseMax(T[1]).cwiseMax(T[2])});
+      m.tri_zero.push_back(point_zero_area(T));
     }
+    m.tree.build(m.tri_box);
+    m.radius_other = primitives::support_of(other).rho;
+    return m;  // the point path needs no pieces (mesh_point.cpp)
   }
+  bool exact = true;
+  const std::vector<ConvexPolytope> pieces = pieces_of(mesh, exact);
   m.radius_other = primitives::support_of(other).rho;
   for (const ConvexPolytope& k : pieces) {
     std::vector<Vec3> kv(k.vertices().begin(), k.vertices().end());
@@ -179,11 +181,6 @@ MixedPair MixedPair::make(const Shape3& P, const Shape3& Q) {
     for (const Vec3& v : kv) r = std::max(r, (v - c).norm());
     m.center.push_back(c);
     m.radius.push_back(r * (1 + 0x1p-40) + 0x1p-1000);
-    if (m.point) {  // the point path needs no piece pairs (mesh_point.cpp)
-      auto& tris = m.piece_tri.emplace_back();
-      for (const auto& t : k.triangles()) tris.push_back({kv[t[0]], kv[t[1]], kv[t[2]]});
-      continue;
-    }
     if (!other.curved()) {  // the flat and rounded engines need the piece's outer hierarchy
       try {
         (void)k.face_count();

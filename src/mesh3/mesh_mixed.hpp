@@ -13,6 +13,7 @@
 #include <pendepth/pendepth.hpp>
 
 #include "convex3/flat3.hpp"
+#include "mesh3/tri_tree.hpp"
 
 #include <array>
 #include <vector>
@@ -26,13 +27,17 @@ struct MixedPair {
   std::vector<double> radius;
   double radius_other = 0;       ///< a bounding ball of S about its frame's origin
   /// S a point (mesh_point.cpp): the mesh's triangles (mesh frame), each also as a flat shape,
-  /// with their boxes; `pt` the point.
+  /// with their boxes and the box tree over them; `pt` the point. No pieces: the point path
+  /// decides everything on the triangles.
   bool point = false;
   convex3::FlatShape3 pt;
   std::vector<std::array<Vec3, 3>> tri;
   std::vector<convex3::FlatShape3> tri_flat;
   std::vector<std::array<Vec3, 2>> tri_box;
-  std::vector<std::vector<std::array<Vec3, 3>>> piece_tri;  ///< each piece's outward triangles
+  std::vector<char> tri_zero;  ///< triangle of zero area (exactly): no plane, skipped by the parity
+  TriTree tree;
+  /// The reference path: every triangle scanned, no tree (tests compare the two bit for bit).
+  bool linear = false;
   /// The point path's numeric domain (src/front/scale.hpp): its data above are the input × 2^-e,
   /// poses are converted in and answers scaled back (the piece pairs scale themselves).
   int scale_exp = 0;
@@ -56,5 +61,7 @@ Depth3 point_along(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q,
 Depth3 point_minimum(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q);
 Distance3 point_distance(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q);
 Cast3 point_cast(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3& d);
+/// Is the triangle of zero area (its three vertices collinear, exactly)?
+bool point_zero_area(const std::array<Vec3, 3>& T);
 
 }  // namespace pendepth::mesh3

@@ -1,12 +1,13 @@
 // Pair3 on a non-convex mesh P against a point q, in either role (issue 16 item 4: "a point Q
 // gives the signed distance field of P"; contract in mesh_mixed.hpp).
 //
-// O = int P − q (overlap ⇔ the placed point is interior to the mesh). The union of the open
-// pieces misses the faces the decomposition's pieces share (a point moving through a polycube
-// crosses them), so the point pairs are answered on the mesh's own triangles (closed, outward):
-//   overlap   x ∈ int P ⇔ x lies in some closed piece (exact orient3d against its outward
-//             triangles; pieces pruned by their balls) and on no triangle (flat_flat_distance of triangle and point > 0, exact;
-//             only triangles whose box holds x, with a margin).
+// O = int P − q (overlap ⇔ the placed point is interior to the mesh). Everything is decided on
+// the mesh's own triangles (closed, outward; the convex decomposition is not used, so overlap, σ,
+// σ_d and the distance agree to the last bit of the exact placed point):
+//   overlap   x ∈ int P ⇔ x on no triangle (exact: in its plane and inside its three edges) and
+//             an odd number of proper crossings of a ray from x (exact signs; a ray through an
+//             edge or a vertex, or in a triangle's plane, is detected exactly and replaced by the
+//             next direction of the moment curve (1, s, s²): parity_inside).
 //   σ, sd     dist(x, ∂P) = the least distance to a triangle (each flat_flat_distance: exact
 //             decisions, a few ulps), triangles in increasing box distance, stopping when the box
 //             distance exceeds the best: σ = that distance inside, sd = ± it (0 on the surface).
@@ -23,15 +24,23 @@
 //   separation the last exit: the hits in increasing λ; between two consecutive distinct hits
 //             the point is inside or outside throughout, decided by the exact overlap test at the
 //             midpoint; the answer is the last hit preceded by an inside stretch (0 when none).
-// Cost: O(T) exact sign filters per ray (T triangles), O(k) flat distances for σ (k the
-// triangles the box pruning keeps), O(pieces) + O(triangles near x) for overlap.
+// Ties: σ / sd take the least triangle index among equal distances, rays the least (λ, index).
+// Searches go through the box tree over the triangles (tri_tree.hpp, built once per pair): the
+// nearest triangle best-first by box distance, the ray's triangles by a conservative ray–box
+// test; the tree only prunes, so the answers equal the linear scan's (MixedPair::linear, the
+// tests' reference) bit for bit.
+// Cost: O(log T + k) nodes and k exact tests per query typically (T triangles, k the triangles
+// near x or along the ray), O(T) worst case (a ray grazing many boxes); build O(T log T).
 #include "mesh3/mesh_mixed.hpp"
 
 #include "geometry/exact.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <functional>
 #include <limits>
+#include <stdexcept>
 
 namespace pendepth::mesh3 {
 namespace {
@@ -121,17 +130,29 @@ Distance3 tri_distance(const MixedPair& m, std::size_t i, const Pose3& pose_p, c
 struct Hit {
   double lambda;  // in units of f.d
   std::size_t t;
+  bool operator<(const Hit& o) const { return lambda < o.lambda || (lambda == o.lambda && t < o.t); }
 };
 
-// Every λ >= 0 where the ray meets a closed triangle (unsorted).
+// Visits the triangles a ray from the placed point may meet: all of them (linear reference) or
+// those whose box the tree's conservative ray–box test keeps.
+template <class F>
+void ray_candidates(const MixedPair& m, const Frame& f, const Vec3& d, F&& visit) {
+  if (m.linear) {
+    for (std::size_t t = 0; t < m.tri.size(); ++t) visit(t);
+  } else {
+    m.tree.along_ray(f.x, d, margin(f, m), [&](std::uint32_t t) { visit(t); });
+  }
+}
+
+// Every λ >= 0 where the ray meets a closed triangle, sorted by (λ, triangle).
 std::vector<Hit> hits(const MixedPair& m, const Frame& f) {
   std::vector<Hit> out;
-  for (std::size_t t = 0; t < m.tri.size(); ++t) {
+  ray_candidates(m, f, f.d, [&](std::size_t t) {
     const auto& T = m.tri[t];
     const int den = exact::exact_sign([&](auto L) {
       return dot(cross(sub(lv(L, T[1]), lv(L, T[0])), sub(lv(L, T[2]), lv(L, T[0]))), lv(L, f.d));
     });
-    if (den == 0) continue;  // the line is parallel to the plane (or in it: file comment)
+    if (den == 0) return;  // the line is parallel to the plane (or in it: file comment)
     bool pos = false, neg = false;
     for (int e = 0; e < 3 && !(pos && neg); ++e) {
       const int s = exact::exact_sign([&](auto L) {
@@ -140,18 +161,91 @@ std::vector<Hit> hits(const MixedPair& m, const Frame& f) {
       });
       pos = pos || s > 0, neg = neg || s < 0;
     }
-    if (pos && neg) continue;
+    if (pos && neg) return;
     auto num = [&](auto L) {
       return dot(cross(sub(lv(L, T[1]), lv(L, T[0])), sub(lv(L, T[2]), lv(L, T[0]))), sub(lv(L, T[0]), f.placed(L)));
     };
     const int sn = exact::exact_sign(num);
-    if (sn * den < 0) continue;  // behind the start
+    if (sn * den < 0) return;  // behind the start
     const double lambda = sn == 0 ? 0.0 : exact::accurate_ratio(num, [&](auto L) {
       return dot(cross(sub(lv(L, T[1]), lv(L, T[0])), sub(lv(L, T[2]), lv(L, T[0]))), lv(L, f.d));
     });
     out.push_back({lambda, t});
-  }
+  });
+  std::sort(out.begin(), out.end());
   return out;
+}
+
+// Is the exact placed point on the closed triangle T (of nonzero area)? In T's plane, and on the
+// inner side (or on) each edge within that plane: n·((b − a) × (x − a)) >= 0, n = (T1 − T0) × (T2 − T0).
+bool on_triangle(const std::array<Vec3, 3>& T, const Frame& f) {
+  auto n = [&](auto L) { return cross(sub(lv(L, T[1]), lv(L, T[0])), sub(lv(L, T[2]), lv(L, T[0]))); };
+  if (exact::exact_sign([&](auto L) { return dot(n(L), sub(f.placed(L), lv(L, T[0]))); }) != 0) return false;
+  for (int e = 0; e < 3; ++e)
+    if (exact::exact_sign([&](auto L) {
+          const auto a = lv(L, T[e]);
+          return dot(n(L), cross(sub(lv(L, T[(e + 1) % 3]), a), sub(f.placed(L), a)));
+        }) < 0)
+      return false;
+  return true;
+}
+
+// The exact placed point on the surface: on some closed triangle of nonzero area (a zero-area
+// triangle of a closed mesh lies on its neighbours' edges).
+bool on_surface(const MixedPair& m, const Frame& f) {
+  bool on = false;
+  auto test = [&](std::size_t t) { on = on || (!m.tri_zero[t] && on_triangle(m.tri[t], f)); };
+  if (m.linear) {
+    for (std::size_t t = 0; t < m.tri.size() && !on; ++t) test(t);
+  } else {
+    m.tree.near_point(f.x, margin(f, m), [&](std::uint32_t t) { test(t); });
+  }
+  return on;
+}
+
+// Ray parity, for a point on no triangle. The ray x + λ·d, λ > 0, d = (q², p·q, p²) (a point of
+// the moment curve (1, s, s²), s = p/q: any three are linearly independent, all components exact
+// doubles). Per triangle of nonzero area, exact signs: a proper crossing (λ > 0, the three
+// Plücker signs d·((a − x) × (b − x)) nonzero and equal) flips the parity; the ray through an edge
+// or vertex (a zero Plücker sign among non-disagreeing ones, λ > 0), or lying in a triangle's
+// plane, makes d degenerate: the next s is tried. The degenerate directions lie on the planes
+// through x and an edge or a triangle's plane (x on no triangle), each holding at most two
+// moment-curve directions: at most 2·(E + T) + 1 tries, in practice the first.
+bool parity_inside(const MixedPair& m, const Frame& f) {
+  constexpr double q = 8192;
+  for (int k = 0; k < 23000; ++k) {  // p < 2^26: p² exact
+    const double p = 5217 + 2897.0 * k;
+    const Vec3 d(q * q, p * q, p * p);
+    bool inside = false, degenerate = false;
+    ray_candidates(m, f, d, [&](std::size_t t) {
+      if (degenerate || m.tri_zero[t]) return;
+      const auto& T = m.tri[t];
+      auto n = [&](auto L) { return cross(sub(lv(L, T[1]), lv(L, T[0])), sub(lv(L, T[2]), lv(L, T[0]))); };
+      const int den = exact::exact_sign([&](auto L) { return dot(n(L), lv(L, d)); });
+      const int sn = exact::exact_sign([&](auto L) { return dot(n(L), sub(lv(L, T[0]), f.placed(L))); });
+      if (den == 0) {
+        degenerate = sn == 0;  // the ray in the triangle's plane
+        return;
+      }
+      if (sn * den <= 0) return;  // the plane is behind the start, or holds x (x on no triangle)
+      int pos = 0, neg = 0;
+      for (int e = 0; e < 3; ++e) {
+        const int s = exact::exact_sign([&](auto L) {
+          const auto x = f.placed(L);
+          return dot(lv(L, d), cross(sub(lv(L, T[e]), x), sub(lv(L, T[(e + 1) % 3]), x)));
+        });
+        pos += s > 0, neg += s < 0;
+      }
+      if (pos > 0 && neg > 0) return;  // misses
+      if (pos + neg < 3) {
+        degenerate = true;  // through an edge or a vertex
+        return;
+      }
+      inside = !inside;
+    });
+    if (!degenerate) return inside;
+  }
+  throw std::logic_error("mesh point: no non-degenerate parity ray among 23000 directions");
 }
 
 // The outward unit normal of triangle t in the world frame.
@@ -169,50 +263,76 @@ void set_features(const MixedPair& m, R& r, std::size_t) {
   (m.mesh_is_p ? r.feature_p : r.feature_q) = Feature3{};
 }
 
-// The nearest triangle: its exact distance (best), and its index; triangles by box distance.
+// The nearest triangle: its exact distance (best) and its index `at`, the least index among equal
+// distances. Only triangles whose lower bound (box distance less a margin) is <= best are
+// evaluated, the others cannot be nearer: linearly (by increasing bound) or best-first over the
+// tree (a node's bound is <= its triangles'); both evaluate every triangle with bound <= the
+// answer, so they agree bit for bit.
 Distance3 nearest(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, std::size_t& at) {
   const Frame f = frame(m, pose_p, pose_q, nullptr);
   const double e = margin(f, m);
-  std::vector<std::pair<double, std::size_t>> c;
-  c.reserve(m.tri.size());
-  for (std::size_t t = 0; t < m.tri.size(); ++t) c.push_back({box_distance(m.tri_box[t], f.x) * (1 - 0x1p-40) - e, t});
-  std::sort(c.begin(), c.end());
+  auto bound = [&](const std::array<Vec3, 2>& b) { return box_distance(b, f.x) * (1 - 0x1p-40) - e; };
   Distance3 best;
   bool have = false;
-  for (const auto& [lb, t] : c) {
-    if (have && lb > best.distance) break;
+  auto eval = [&](std::size_t t) {
     const Distance3 r = tri_distance(m, t, pose_p, pose_q);
-    if (!have || r.distance < best.distance) best = r, at = t, have = true;
+    if (!have || r.distance < best.distance || (r.distance == best.distance && t < at)) best = r, at = t, have = true;
+  };
+  if (m.linear) {
+    std::vector<std::pair<double, std::size_t>> c;
+    c.reserve(m.tri.size());
+    for (std::size_t t = 0; t < m.tri.size(); ++t) c.push_back({bound(m.tri_box[t]), t});
+    std::sort(c.begin(), c.end());
+    for (const auto& [lb, t] : c) {
+      if (have && lb > best.distance) break;
+      eval(t);
+    }
+    return best;
+  }
+  using Entry = std::pair<double, std::uint32_t>;  // (bound, node)
+  std::vector<Entry> heap;
+  auto push = [&](std::uint32_t n) {
+    const auto& N = m.tree.nodes[n];
+    heap.push_back({bound({N.lo, N.hi}), n});
+    std::push_heap(heap.begin(), heap.end(), std::greater<>());
+  };
+  if (!m.tree.nodes.empty()) push(0);
+  while (!heap.empty()) {
+    std::pop_heap(heap.begin(), heap.end(), std::greater<>());
+    const auto [lb, n] = heap.back();
+    heap.pop_back();
+    if (have && lb > best.distance) break;
+    const auto& N = m.tree.nodes[n];
+    if (N.left >= 0) {
+      push(static_cast<std::uint32_t>(N.left)), push(static_cast<std::uint32_t>(N.right));
+      continue;
+    }
+    for (std::uint32_t i = N.b; i < N.e; ++i) {
+      const std::uint32_t t = m.tree.items[i];
+      if (!have || bound(m.tri_box[t]) <= best.distance) eval(t);
+    }
   }
   return best;
 }
 
 }  // namespace
 
-bool point_overlapping(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
-  const Frame f = frame(m, pose_p, pose_q, nullptr);
-  const double e = margin(f, m);
-  bool inside = false;
-  for (std::size_t i = 0; i < m.piece_tri.size() && !inside; ++i) {
-    if ((f.x - m.center[i]).norm() > m.radius[i] + e) continue;
-    inside = true;  // x in the closed piece: on the inner side of every outward triangle's plane
-    for (const auto& T : m.piece_tri[i])
-      if (exact::exact_sign([&](auto L) {
-            return dot(cross(sub(lv(L, T[1]), lv(L, T[0])), sub(lv(L, T[2]), lv(L, T[0]))), sub(f.placed(L), lv(L, T[0])));
-          }) > 0) {
-        inside = false;
-        break;
-      }
-  }
-  if (!inside) return false;
-  for (std::size_t t = 0; t < m.tri.size(); ++t)
-    if (box_distance(m.tri_box[t], f.x) <= e && tri_distance(m, t, pose_p, pose_q).distance == 0) return false;
+bool point_zero_area(const std::array<Vec3, 3>& T) {
+  for (int k = 0; k < 3; ++k)
+    if (exact::exact_sign([&](auto L) { return cross(sub(lv(L, T[1]), lv(L, T[0])), sub(lv(L, T[2]), lv(L, T[0])))[k]; }) != 0)
+      return false;
   return true;
 }
 
-Depth3 point_minimum(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
+bool point_overlapping(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
+  const Frame f = frame(m, pose_p, pose_q, nullptr);
+  return !on_surface(m, f) && parity_inside(m, f);
+}
+
+namespace {
+// σ for an overlapping placement.
+Depth3 minimum_inside(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
   Depth3 r;
-  if (!point_overlapping(m, pose_p, pose_q)) return r;
   std::size_t t = 0;
   const Distance3 n = nearest(m, pose_p, pose_q, t);
   r.overlapping = true;
@@ -227,10 +347,15 @@ Depth3 point_minimum(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_
   set_features(m, r, t);
   return r;
 }
+}  // namespace
+
+Depth3 point_minimum(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
+  return point_overlapping(m, pose_p, pose_q) ? minimum_inside(m, pose_p, pose_q) : Depth3{};
+}
 
 Distance3 point_distance(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
   if (point_overlapping(m, pose_p, pose_q)) {
-    const Depth3 s = point_minimum(m, pose_p, pose_q);
+    const Depth3 s = minimum_inside(m, pose_p, pose_q);
     Distance3 o;
     o.overlapping = true;
     o.distance = o.lower_bound = o.upper_bound = -s.depth;
@@ -256,9 +381,8 @@ Depth3 point_along(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q,
   r.overlapping = point_overlapping(m, pose_p, pose_q);
   if (!r.overlapping && !separation) return r;
   const Frame f = frame(m, pose_p, pose_q, &d);
-  std::vector<Hit> h = hits(m, f);
+  const std::vector<Hit> h = hits(m, f);
   r.candidates = m.tri.size();
-  std::sort(h.begin(), h.end(), [](const Hit& a, const Hit& b) { return a.lambda < b.lambda; });
   const Hit* pick = nullptr;
   if (!separation) {
     if (!h.empty()) pick = &h[0];  // inside: the first hit is at λ > 0
@@ -311,7 +435,7 @@ Cast3 point_cast(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, c
   }
   const std::vector<Hit> h = hits(m, f);
   if (h.empty()) return r;
-  const Hit& k = *std::min_element(h.begin(), h.end(), [](const Hit& a, const Hit& b) { return a.lambda < b.lambda; });
+  const Hit& k = h.front();  // the least (λ, triangle)
   const double s = k.lambda * f.d.norm();
   r.hit = true;
   r.distance = r.lower_bound = r.upper_bound = s;
