@@ -36,6 +36,7 @@
 #include "geometry/exact.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -210,11 +211,16 @@ bool on_surface(const MixedPair& m, const Frame& f) {
 // or vertex (a zero Plücker sign among non-disagreeing ones, λ > 0), or lying in a triangle's
 // plane, makes d degenerate: the next s is tried. The degenerate directions lie on the planes
 // through x and an edge or a triangle's plane (x on no triangle), each holding at most two
-// moment-curve directions: at most 2·(E + T) + 1 tries, in practice the first.
+// moment-curve directions: at most 2·(E + T) + 1 tries, in practice the first. The tries are the
+// reduced fractions s = p/q, 4096 ≤ q ≤ 8192, p < 2^26 (so q², p·q, p² are exact): distinct
+// fractions are distinct directions, ~9·10⁷ of them: more than 2·(E + T) + 1 below ~1.8·10⁷
+// triangles (a mesh beyond that could, in theory, reach the logic_error below).
 bool parity_inside(const MixedPair& m, const Frame& f) {
-  constexpr double q = 8192;
-  for (int k = 0; k < 23000; ++k) {  // p < 2^26: p² exact
-    const double p = 5217 + 2897.0 * k;
+  for (long qi = 8192; qi >= 4096; --qi)
+  for (long k = 0; k < 23000; ++k) {
+    const long pi = 5217 + 2897 * k;
+    if (std::gcd(pi, qi) != 1) continue;
+    const double p = static_cast<double>(pi), q = static_cast<double>(qi);
     const Vec3 d(q * q, p * q, p * p);
     bool inside = false, degenerate = false;
     ray_candidates(m, f, d, [&](std::size_t t) {
@@ -245,7 +251,7 @@ bool parity_inside(const MixedPair& m, const Frame& f) {
     });
     if (!degenerate) return inside;
   }
-  throw std::logic_error("mesh point: no non-degenerate parity ray among 23000 directions");
+  throw std::logic_error("mesh point: no non-degenerate parity ray among ~9e7 directions (more than 2(E+T)+1)");
 }
 
 // The outward unit normal of triangle t in the world frame.
