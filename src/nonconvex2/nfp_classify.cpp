@@ -67,6 +67,7 @@
 
 #include "geometry/exact.hpp"
 #include "nonconvex2/convex_parts.hpp"
+#include "nonconvex2/shape_side.hpp"
 #include "nonconvex2/nfp_impl.hpp"
 
 namespace pendepth::nonconvex2 {
@@ -157,7 +158,6 @@ struct PartPair {
 struct Buffers {
   std::vector<std::uint32_t> prevP, prevQ, edge_part_p, edge_part_q;
   PairDepth2::Impl::DescentStack stack;
-  ConvexParts pp, pb;
   // Large shapes: the pieces (convex parts reduced to their corners, split when many) and their
   // box trees, per-piece coordinate bounds, undecided piece pairs of a point test.
   ConvexParts rp, rb;
@@ -177,7 +177,7 @@ struct Buffers {
     if (vertex_table.capacity() > big || found.capacity() > big || hdx.capacity() > big || !vertex_map.empty() ||
         tree_p.nodes.capacity() + tree_b.nodes.capacity() > big)
       *this = Buffers();
-    pp.trim(), pb.trim(), rp.trim(), rb.trim();
+    rp.trim(), rb.trim();
   }
 };
 
@@ -239,10 +239,11 @@ struct Classifier {
   std::vector<std::uint32_t>&prevP = buf.prevP, &prevQ = buf.prevQ;  // filled on first use
   PairDepth2::Impl::DescentStack& stack = buf.stack;
 
-  // Convex parts of P and of −Q (convex_parts.hpp) and all their pairs with the sums' boxes, when
+  // Convex parts of P and of −Q (convex_parts.hpp; per shape and role, shared by every pair built
+  // from the same sides: shape_side.hpp) and all their pairs with the sums' boxes, when
   // there are few (≤ 256): a point is then tested against the sums of parts (the same union O as
   // the sums of triangles), scanned flat; each pair's half-planes are computed on first use.
-  ConvexParts &pp = buf.pp, &pb = buf.pb;
+  const ConvexParts &pp = S.sp->parts(), &pb = S.sb->parts();
   std::vector<PartPair>& flat = buf.flat;
   std::vector<double>&hdx = buf.hdx, &hdy = buf.hdy, &hc = buf.hc, &he = buf.he;
   // The part holding each boundary edge g → next(g) of P (of −Q: −h → −next(h)); a boundary edge
@@ -259,8 +260,6 @@ struct Classifier {
   Classifier(const PairDepth2::Impl& s, const std::vector<NfpCandidate>& c) : S(s), cands(c) {
     prevP.clear(), prevQ.clear(), flat.clear(), vertex_map.clear();
     if (small_table) vertex_table.assign(S.P.size() * qn, -1);
-    convex_parts(S.tp, S.P.hole_count() == 0, pp);
-    convex_parts(S.tb, S.Q.hole_count() == 0, pb);
     if (pp.size() * pb.size() > 256) {  // large shapes: the pieces and their dual descent
       make_pieces(pp, S.P, rp, edge_part_p, smax_p);
       make_pieces(pb, S.Q, rb, edge_part_q, smax_b);

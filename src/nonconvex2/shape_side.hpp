@@ -1,0 +1,57 @@
+// Private: the per-shape work of the polygon × polygon structures (PairDepth2, NoFitPolygon2),
+// computed once per shape and role and shared by every pair built from it (issue 19 item 2).
+//
+// A ShapeSide is one polygon in one role: as P (its triangles as they are) or as Q (the triangles
+// of −Q, vertex ids Q's), with the box hierarchy over those triangles and, on first use, their
+// convex parts (convex_parts.hpp; Hertel–Mehlhorn merge when the polygon has no holes). Every
+// field is a deterministic function of the polygon and the role, so a pair built from shared
+// sides is the same bits as one built from fresh ones, whatever the order or thread of the pairs.
+// A ShapeCache (owned by Shape2's shared data, src/front/shape2_data.hpp) makes each role's side
+// on first request, thread-safe (std::call_once); nfp-all's parallel pairs share them.
+// Cost: triangulation O(n log n), hierarchy O(n log n), parts O(n·d) (convex_parts.hpp), once per
+// shape and role instead of once per pair.
+#pragma once
+
+#include <pendepth/polygon.hpp>
+
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "nonconvex2/convex_parts.hpp"
+#include "nonconvex2/pair_sums.hpp"
+
+namespace pendepth::nonconvex2 {
+
+struct ShapeSide {
+  Polygon shape;           // the polygon (not negated: ids and next() are the shape's)
+  bool negated = false;    // role Q: the triangles are those of −shape
+  std::vector<Tri> tris;   // normal form (pair_depth.cpp)
+  BoxTree tree;            // over tris
+  ShapeSide(const Polygon& s, bool negate);
+  /// The convex parts of tris (built on first use, thread-safe).
+  const ConvexParts& parts() const;
+
+ private:
+  mutable std::once_flag parts_once_;
+  mutable ConvexParts parts_;
+};
+
+/// A fresh side (no cache): the engine-level constructors.
+std::shared_ptr<const ShapeSide> make_side(const Polygon& shape, bool negate);
+
+/// Both roles of one shape, each made on first request (thread-safe).
+class ShapeCache {
+ public:
+  std::shared_ptr<const ShapeSide> side(const Polygon& shape, bool negate) const {
+    const int r = negate ? 1 : 0;
+    std::call_once(once_[r], [&] { side_[r] = make_side(shape, negate); });
+    return side_[r];
+  }
+
+ private:
+  mutable std::once_flag once_[2];
+  mutable std::shared_ptr<const ShapeSide> side_[2];
+};
+
+}  // namespace pendepth::nonconvex2
