@@ -31,10 +31,24 @@ struct ShapeSide {
   ShapeSide(const Polygon& s, bool negate);
   /// The convex parts of tris (built on first use, thread-safe).
   const ConvexParts& parts() const;
+  /// The no-fit polygon classifier's per-shape data (nfp_classify.cpp), each built on first use,
+  /// thread-safe: the part of parts() holding each boundary edge g → next(g) (~0 for none), and
+  /// for large pairs the pieces (parts without straight vertices, split at 12 corners), the piece
+  /// holding each boundary edge, per-piece coordinate bounds and the box tree over the pieces.
+  struct Pieces {
+    ConvexParts r;
+    std::vector<std::uint32_t> edge_piece;
+    std::vector<double> smax;
+    BoxTree tree;
+  };
+  const std::vector<std::uint32_t>& edge_parts() const;
+  const Pieces& pieces() const;
 
  private:
-  mutable std::once_flag parts_once_;
+  mutable std::once_flag parts_once_, edge_once_, pieces_once_;
   mutable ConvexParts parts_;
+  mutable std::vector<std::uint32_t> edge_parts_;
+  mutable Pieces pieces_;
 };
 
 /// A fresh side (no cache): the engine-level constructors.
