@@ -3,7 +3,8 @@
 //
 // A ShapeSide is one polygon in one role: as P (its triangles as they are) or as Q (the triangles
 // of −Q, vertex ids Q's), with the box hierarchy over those triangles and, on first use, their
-// convex parts (convex_parts.hpp; Hertel–Mehlhorn merge when the polygon has no holes). Every
+// convex parts (convex_parts.hpp; Hertel–Mehlhorn merge when the polygon has no holes) and the
+// no-fit polygon classifier's per-shape maps and pieces (nfp_classify.cpp). Every
 // field is a deterministic function of the polygon and the role, so a pair built from shared
 // sides is the same bits as one built from fresh ones, whatever the order or thread of the pairs.
 // A ShapeCache (owned by Shape2's shared data, src/front/shape2_data.hpp) makes each role's side
