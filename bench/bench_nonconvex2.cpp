@@ -419,6 +419,28 @@ void BM_build_pendepth(benchmark::State& state, Case* c) {
   state.counters["bytes"] = double(total.bytes) / k;
 }
 
+// The whole-instance path of pendepth nfp / nfp-all (issue 19 item 2): one Shape2 per piece, made
+// anew each iteration (so each piece's triangulation and convex parts are made once per
+// iteration, shared by its pairs), and no_fit_polygon for every ordered pair (the rings only, no
+// query structures). `c` is a nesting-all case: pair i·N + j is (piece i, piece j). `share` false
+// (build/pendepth_unshared): new Shape2 objects for every pair, so nothing is shared (the export-
+// only build's own share of the gain).
+void BM_build_shapes(benchmark::State& state, Case* c, bool share) {
+  const auto N = static_cast<std::size_t>(std::lround(std::sqrt(double(c->pairs.size()))));
+  for (auto _ : state) {
+    std::vector<pendepth::Shape2> shapes;
+    shapes.reserve(N);
+    for (std::size_t i = 0; i < N; ++i) shapes.emplace_back(c->pairs[i * N].P);
+    for (std::size_t i = 0; i < N; ++i)
+      for (std::size_t j = 0; j < N; ++j)
+        benchmark::DoNotOptimize(
+            (share ? pendepth::no_fit_polygon(shapes[i], shapes[j])
+                   : pendepth::no_fit_polygon(pendepth::Shape2(c->pairs[i * N + j].P), pendepth::Shape2(c->pairs[i * N + j].Q)))
+                .polygons.size());
+  }
+  set_counters(state, *c);
+}
+
 void BM_build_peer(benchmark::State& state, Case* c, bool cgal) {
   std::size_t vertices = 0, rings = 0;
   for (auto _ : state) {
@@ -597,6 +619,8 @@ int main(int argc, char** argv) {
       Case& c = nesting_all_case(instance, instance == "gardeyn2" || instance == "gardeyn6" ? cap : 0);
       const std::string tag = instance + "-all/" + std::to_string(c.n) + "/" + std::to_string(c.m);
       benchmark::RegisterBenchmark(("build/pendepth/" + tag).c_str(), BM_build_pendepth, &c)->Unit(benchmark::kMicrosecond);
+      benchmark::RegisterBenchmark(("build/pendepth_shapes/" + tag).c_str(), BM_build_shapes, &c, true)->Unit(benchmark::kMicrosecond);
+      benchmark::RegisterBenchmark(("build/pendepth_unshared/" + tag).c_str(), BM_build_shapes, &c, false)->Unit(benchmark::kMicrosecond);
       benchmark::RegisterBenchmark(("build/cgal/" + tag).c_str(), BM_build_peer, &c, true)->Unit(benchmark::kMicrosecond);
 #ifdef PENDEPTH_BENCH_CLIPPER
       if (double(c.n) * double(c.m) <= clipper_budget)

@@ -110,8 +110,11 @@ class NoFitPolygon2 {
   struct Impl;
   /// Test hook (private header nfp_impl.hpp has Impl): the stored pieces and rings.
   friend const Impl& nfp_impl(const NoFitPolygon2& nfp);
+  /// Internal (src/front/pair2.cpp): wraps a built Impl (one made from shared per-shape sides).
+  friend NoFitPolygon2 nfp_from_impl(std::unique_ptr<Impl> impl);
 
  private:
+  explicit NoFitPolygon2(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
 };
 

@@ -148,6 +148,8 @@ class Shape2 {
   static bool rotation_is_exact(double degrees);
 
   struct Data;
+  /// Internal (src/front/shape2_data.hpp): the shared data and its per-shape caches.
+  friend const Data& shape_data(const Shape2& s);
 
  private:
   Shape2() = default;
@@ -185,8 +187,9 @@ struct NoFitPolygonEntry {
 /// do not commute, so every combination is built. rotations[i] lists shape i's angles in degrees
 /// (rotations.size() == shapes.size()), or rotations has one list shared by every shape.
 /// Order: i, then a (in list order), then j, then b. Per-shape work is done once: the rotated
-/// copies (validated once each, Shape2::rotated) are shared by every pair (the triangulations are
-/// still made per pair inside no_fit_polygon, issue 19 item 2); each pair goes through
+/// copies (validated once each, Shape2::rotated) are shared by every pair, and so is each copy's
+/// triangulation, hierarchy and convex parts in either role (made once, by the first pair that
+/// needs them; issue 19 item 2); each pair goes through
 /// no_fit_polygon (the same scaling to the numeric domain). Pairs run in parallel (TBB; threads
 /// as Pair2's batches: 0 every core, 1 the calling thread) and every entry is bit-identical
 /// whatever the thread count. progress(done, total) is called in the calling thread after each

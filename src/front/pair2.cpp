@@ -15,6 +15,8 @@
 #include "front/pair2_flat.hpp"
 #include "convex2/convex_cast.hpp"
 #include "front/scale.hpp"
+#include "front/shape2_data.hpp"
+#include "nonconvex2/nfp_impl.hpp"
 #include "nonconvex2/boundary_distance.hpp"
 
 #include <cmath>
@@ -39,6 +41,14 @@ namespace {
 
 NoFitPolygonParts parts_of(const NoFitPolygon2& n) {
   return NoFitPolygonParts{n.polygons(), n.slits(), n.points()};
+}
+
+// The no-fit polygon's rings of two solid shapes (engine coordinates) from their shared per-shape
+// sides (front/shape2_data.hpp), without the query structures (NoFitPolygon2::Impl, queries
+// false): the same bits as NoFitPolygon2(P.polygon(), Q.polygon())'s export.
+NoFitPolygonParts export_only(const Shape2& P, const Shape2& Q) {
+  NoFitPolygon2::Impl I(front::shape_side(P, false), front::shape_side(Q, true), false);
+  return NoFitPolygonParts{std::move(I.polys), std::move(I.slits), std::move(I.points)};
 }
 
 // The sizes of a shape's normal form: its largest coordinate and its smallest edge.
@@ -93,7 +103,7 @@ NoFitPolygonParts no_fit_polygon(const Shape2& P, const Shape2& Q) {
   if (P.dimension() < 2 || Q.dimension() < 2) return Pair2(P, Q, Prepare::Queries).no_fit_polygon();
   const front::Scale scale = pair_scale(P, Q);
   const Shape2 Pe = engine_shape(P, scale, "P"), Qe = engine_shape(Q, scale, "Q");
-  return scaled_back(parts_of(NoFitPolygon2(Pe.polygon(), Qe.polygon())), scale);
+  return scaled_back(export_only(Pe, Qe), scale);
 }
 
 // Pair2::Impl answers in engine coordinates (P, Q scaled by 2^-scale.e, see src/front/scale.hpp);
@@ -169,7 +179,9 @@ struct Pair2::Impl {
       case Engine2::PolygonConvex: polygon.emplace(P.polygon(), Q.convex()); break;
       case Engine2::PolygonConvexSwapped: polygon.emplace(Q.polygon(), P.convex()); break;
       case Engine2::PairPerQuery: pair.emplace(P.polygon(), Q.polygon()); break;
-      case Engine2::NoFitPolygon: nfp.emplace(P.polygon(), Q.polygon()); break;
+      case Engine2::NoFitPolygon:
+        nfp.emplace(nfp_from_impl(std::make_unique<NoFitPolygon2::Impl>(front::shape_side(P, false), front::shape_side(Q, true))));
+        break;
     }
   }
 
@@ -299,7 +311,7 @@ struct Pair2::Impl {
         exported.emplace(scaled_back(flat->parts(), scale));
         return;
       }
-      exported.emplace(scaled_back(nfp ? parts_of(*nfp) : parts_of(NoFitPolygon2(P.polygon(), Q.polygon())), scale));
+      exported.emplace(scaled_back(nfp ? parts_of(*nfp) : export_only(P, Q), scale));
     });
     return *exported;
   }

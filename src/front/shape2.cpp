@@ -13,15 +13,15 @@
 #include <optional>
 #include <stdexcept>
 
+#include "front/shape2_data.hpp"
+
 namespace pendepth {
 
-struct Shape2::Data {
-  std::optional<ConvexPolygon> convex;
-  mutable std::optional<Polygon> polygon;  // for a convex shape: built on first use
-  mutable std::once_flag polygon_once;
-  std::string name;
-  std::vector<Vec2> flat;  // a point (one vertex) or a segment (two): no convex, no polygon
-};
+const Shape2::Data& shape_data(const Shape2& s) { return *s.d_; }
+
+std::shared_ptr<const nonconvex2::ShapeSide> front::shape_side(const Shape2& s, bool negate) {
+  return shape_data(s).sides.side(s.polygon(), negate);
+}
 
 namespace {
 

@@ -43,6 +43,7 @@
 
 #include "geometry/exact.hpp"
 #include "nonconvex2/nfp_impl.hpp"
+#include "nonconvex2/shape_side.hpp"
 
 namespace pendepth {
 
@@ -270,9 +271,12 @@ namespace {
 constexpr std::size_t kInOrderTreeMax = 64;
 }  // namespace
 
-NoFitPolygon2::Impl::Impl(const Polygon& P, const Polygon& Q) : S(P, Q) {
+NoFitPolygon2::Impl::Impl(const Polygon& P, const Polygon& Q) : Impl(nonconvex2::make_side(P, false), nonconvex2::make_side(Q, true)) {}
+
+NoFitPolygon2::Impl::Impl(std::shared_ptr<const nonconvex2::ShapeSide> p, std::shared_ptr<const nonconvex2::ShapeSide> q, bool queries)
+    : S(std::move(p), std::move(q)) {
   // Step 1: candidates.
-  const std::vector<nonconvex2::NfpCandidate> cand = nonconvex2::nfp_candidates(P, Q);
+  const std::vector<nonconvex2::NfpCandidate> cand = nonconvex2::nfp_candidates(S.P, S.Q);
   sz.candidates = cand.size();
   // Step 2: their uncovered closed pieces. Usually about one per candidate (a candidate is cut
   // into few pieces, many are covered whole): reserving that many saves the growth of a vector
@@ -287,6 +291,10 @@ NoFitPolygon2::Impl::Impl(const Polygon& P, const Polygon& Q) : S(P, Q) {
   // candidate in convolution order (P's edges, then Q's, each in ring order), so runs of
   // consecutive pieces are mostly spatially close: for few pieces the linear in-order pairing
   // makes a tree nearly as good for the queries as the sorting median split, built far cheaper.
+  if (!queries) {
+    nfp_export(*this);
+    return;
+  }
   const auto lo = [&](std::size_t k) -> const Vec2& { return pieces[k].blo; };
   const auto hi = [&](std::size_t k) -> const Vec2& { return pieces[k].bhi; };
   if (pieces.size() <= kInOrderTreeMax) tree.build_in_order(pieces.size(), lo, hi);
@@ -296,6 +304,8 @@ NoFitPolygon2::Impl::Impl(const Polygon& P, const Polygon& Q) : S(P, Q) {
 }
 
 NoFitPolygon2::NoFitPolygon2(const Polygon& P, const Polygon& Q) : impl_(std::make_unique<Impl>(P, Q)) {}
+NoFitPolygon2::NoFitPolygon2(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+NoFitPolygon2 nfp_from_impl(std::unique_ptr<NoFitPolygon2::Impl> impl) { return NoFitPolygon2(std::move(impl)); }
 NoFitPolygon2::~NoFitPolygon2() = default;
 NoFitPolygon2::NoFitPolygon2(NoFitPolygon2&&) noexcept = default;
 NoFitPolygon2& NoFitPolygon2::operator=(NoFitPolygon2&&) noexcept = default;

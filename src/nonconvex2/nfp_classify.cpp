@@ -79,6 +79,7 @@
 
 #include "geometry/exact.hpp"
 #include "nonconvex2/convex_parts.hpp"
+#include "nonconvex2/shape_side.hpp"
 #include "nonconvex2/nfp_impl.hpp"
 
 namespace pendepth::nonconvex2 {
@@ -167,14 +168,9 @@ struct PartPair {
 // The classifier's scratch, reused by the thread's next pair (no allocation per pair on small
 // pieces); released after a large pair (trim).
 struct Buffers {
-  std::vector<std::uint32_t> prevP, prevQ, edge_part_p, edge_part_q;
+  std::vector<std::uint32_t> prevP, prevQ;
   PairDepth2::Impl::DescentStack stack;
-  ConvexParts pp, pb;
-  // Large shapes: the pieces (convex parts reduced to their corners, split when many) and their
-  // box trees, per-piece coordinate bounds, undecided piece pairs of a point test.
-  ConvexParts rp, rb;
-  BoxTree tree_p, tree_b;
-  std::vector<double> smax_p, smax_b;
+  // Large shapes: the undecided piece pairs of a point test.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> undecided_pairs;
   std::vector<PartPair> flat;
   std::vector<double> hdx, hdy, hc, he;
@@ -191,9 +187,8 @@ struct Buffers {
   void trim() {
     const std::size_t big = std::size_t(1) << 14;
     if (vertex_table.capacity() > big || found.capacity() > big || act_lo.capacity() > big || hdx.capacity() > big || !vertex_map.empty() ||
-        tree_p.nodes.capacity() + tree_b.nodes.capacity() + cand_tree.nodes.capacity() > big)
+        cand_tree.nodes.capacity() > big)
       *this = Buffers();
-    pp.trim(), pb.trim(), rp.trim(), rb.trim();
   }
 };
 
@@ -255,19 +250,29 @@ struct Classifier {
   std::vector<std::uint32_t>&prevP = buf.prevP, &prevQ = buf.prevQ;  // filled on first use
   PairDepth2::Impl::DescentStack& stack = buf.stack;
 
-  // Convex parts of P and of −Q (convex_parts.hpp) and all their pairs with the sums' boxes, when
+  // Convex parts of P and of −Q (convex_parts.hpp; per shape and role, shared by every pair built
+  // from the same sides: shape_side.hpp) and all their pairs with the sums' boxes, when
   // there are few (≤ 256): a point is then tested against the sums of parts (the same union O as
   // the sums of triangles), scanned flat; each pair's half-planes are computed on first use.
-  ConvexParts &pp = buf.pp, &pb = buf.pb;
+  const ConvexParts &pp = S.sp->parts(), &pb = S.sb->parts();
   std::vector<PartPair>& flat = buf.flat;
   std::vector<double>&hdx = buf.hdx, &hdy = buf.hdy, &hc = buf.hc, &he = buf.he;
   // The part holding each boundary edge g → next(g) of P (of −Q: −h → −next(h)); a boundary edge
   // lies in exactly one triangle, hence one part.
-  std::vector<std::uint32_t>&edge_part_p = buf.edge_part_p, &edge_part_q = buf.edge_part_q;
-  // Large shapes: the pieces of P and −Q (make_pieces), their box trees and coordinate bounds.
-  ConvexParts &rp = buf.rp, &rb = buf.rb;
-  BoxTree &tree_p = buf.tree_p, &tree_b = buf.tree_b;
-  std::vector<double>&smax_p = buf.smax_p, &smax_b = buf.smax_b;
+  // Large shapes (more than 256 part pairs): the pieces of P and −Q (make_pieces), the piece
+  // holding each boundary edge instead, their box trees and coordinate bounds. All per shape and
+  // role, shared (ShapeSide::edge_parts, ShapeSide::pieces).
+  bool large = pp.size() * pb.size() > 256;
+  const ShapeSide::Pieces &pieces_p = large ? S.sp->pieces() : no_pieces(), &pieces_b = large ? S.sb->pieces() : no_pieces();
+  const std::vector<std::uint32_t>&edge_part_p = large ? pieces_p.edge_piece : S.sp->edge_parts(),
+                                   &edge_part_q = large ? pieces_b.edge_piece : S.sb->edge_parts();
+  const ConvexParts &rp = pieces_p.r, &rb = pieces_b.r;
+  const BoxTree &tree_p = pieces_p.tree, &tree_b = pieces_b.tree;
+  const std::vector<double>&smax_p = pieces_p.smax, &smax_b = pieces_b.smax;
+  static const ShapeSide::Pieces& no_pieces() {
+    static const ShapeSide::Pieces none;
+    return none;
+  }
   // The coverage of sum vertices (vertex_state): a table over all (P, Q) vertex pairs when small.
   std::size_t qn = S.Q.size();
   bool small_table = std::uint64_t(S.P.size()) * S.Q.size() <= (std::uint64_t(1) << 20);
@@ -275,15 +280,7 @@ struct Classifier {
   Classifier(const PairDepth2::Impl& s, const std::vector<NfpCandidate>& c) : S(s), cands(c) {
     prevP.clear(), prevQ.clear(), flat.clear(), vertex_map.clear();
     if (small_table) vertex_table.assign(S.P.size() * qn, -1);
-    convex_parts(S.tp, S.P.hole_count() == 0, pp);
-    convex_parts(S.tb, S.Q.hole_count() == 0, pb);
-    if (pp.size() * pb.size() > 256) {  // large shapes: the pieces and their dual descent
-      make_pieces(pp, S.P, rp, edge_part_p, smax_p);
-      make_pieces(pb, S.Q, rb, edge_part_q, smax_b);
-      tree_p.build_boxes(rp.size(), [&](std::size_t k) -> const Vec2& { return rp.lo[k]; }, [&](std::size_t k) -> const Vec2& { return rp.hi[k]; });
-      tree_b.build_boxes(rb.size(), [&](std::size_t k) -> const Vec2& { return rb.lo[k]; }, [&](std::size_t k) -> const Vec2& { return rb.hi[k]; });
-      return;
-    }
+    if (large) return;  // large shapes: the pieces and their dual descent
     flat.reserve(pp.size() * pb.size());
     std::uint32_t off = 0;
     for (std::uint32_t a = 0; a < pp.size(); ++a)
@@ -294,16 +291,6 @@ struct Classifier {
         off += (pp.start[a + 1] - pp.start[a]) + (pb.start[b + 1] - pb.start[b]);
       }
     hdx.resize(off), hdy.resize(off), hc.resize(off), he.resize(off);
-    auto edge_parts = [](const ConvexParts& X, const Polygon& shape, std::vector<std::uint32_t>& out) {
-      out.assign(shape.size(), ~std::uint32_t(0));
-      for (std::uint32_t k = 0; k < X.size(); ++k) {
-        const std::uint32_t s = X.start[k], n = X.start[k + 1] - s;
-        for (std::uint32_t i = 0; i < n; ++i)
-          if (shape.next(X.id[s + i]) == X.id[s + (i + 1) % n]) out[X.id[s + i]] = k;
-      }
-    };
-    edge_parts(pp, S.P, edge_part_p);
-    edge_parts(pb, S.Q, edge_part_q);
   }
 
   // Large shapes: the pieces of one shape (P's, or −Q's) from its convex parts X. A part's
@@ -1153,6 +1140,28 @@ int& nfp_trim_mode() {
 NfpTrimStats& nfp_trim_stats() {
   thread_local NfpTrimStats stats;
   return stats;
+}
+
+const std::vector<std::uint32_t>& ShapeSide::edge_parts() const {
+  std::call_once(edge_once_, [&] {
+    const ConvexParts& X = parts();
+    edge_parts_.assign(shape.size(), ~std::uint32_t(0));
+    for (std::uint32_t k = 0; k < X.size(); ++k) {
+      const std::uint32_t s = X.start[k], n = X.start[k + 1] - s;
+      for (std::uint32_t i = 0; i < n; ++i)
+        if (shape.next(X.id[s + i]) == X.id[s + (i + 1) % n]) edge_parts_[X.id[s + i]] = k;
+    }
+  });
+  return edge_parts_;
+}
+
+const ShapeSide::Pieces& ShapeSide::pieces() const {
+  std::call_once(pieces_once_, [&] {
+    Pieces& p = pieces_;
+    Classifier::make_pieces(parts(), shape, p.r, p.edge_piece, p.smax);
+    p.tree.build_boxes(p.r.size(), [&](std::size_t k) -> const Vec2& { return p.r.lo[k]; }, [&](std::size_t k) -> const Vec2& { return p.r.hi[k]; });
+  });
+  return pieces_;
 }
 
 bool convex_shape(const Polygon& S) {

@@ -167,8 +167,12 @@ struct NoFitPolygon2::Impl {
   NfpSize sz;
   nonconvex2::NfpFlat flat;  // the fast path (built last, from pieces and rings)
   Impl(const Polygon& P, const Polygon& Q);
+  /// From shared per-shape sides (shape_side.hpp: p made with negate false, q with true); the
+  /// same bits as Impl(p->shape, q->shape). `queries` false: only the export (polys, slits,
+  /// points) is made, not the query structures (tree, flat): for callers that only read the rings.
+  Impl(std::shared_ptr<const nonconvex2::ShapeSide> p, std::shared_ptr<const nonconvex2::ShapeSide> q, bool queries = true);
 
-  // Queries on validated input (nfp_query.cpp). The plain ones take the certified floating fast
+  // Queries on validated input (only when built with queries) (nfp_query.cpp). The plain ones take the certified floating fast
   // path and run the exact decisions only where it is undecided; the `_exact` ones (kept for the
   // tests, which compare the two bit for bit) skip it: the pair-sum overlap test and the best-first
   // traversal of the piece hierarchy. Among pieces exactly equally near (a shared vertex), both

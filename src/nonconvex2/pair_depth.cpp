@@ -7,6 +7,7 @@
 #include "geometry/exact.hpp"
 #include "nonconvex2/pair_sums.hpp"
 #include "nonconvex2/query.hpp"
+#include "nonconvex2/shape_side.hpp"
 #include "polygon2/triangulation.hpp"
 
 namespace pendepth {
@@ -21,8 +22,8 @@ void require_finite(const Vec2& v, const char* what) {
 // vertex ids.
 void normal_triangles(const Polygon& shape, bool negate, std::vector<nonconvex2::Tri>& out) {
   const auto V = shape.vertices();
-  // The triangulation's id triples, kept by the thread: this runs twice per pair (the no-fit
-  // polygon builds one PairDepth2::Impl per pair), a fresh vector was an allocation each time.
+  // The triangulation's id triples, kept by the thread (once per shape and role, shape_side.hpp;
+  // engine-level pairs without a cache run it twice per pair).
   thread_local std::vector<polygon2::TriangleIds> tris;
   polygon2::triangulate(shape, tris);
   out.resize(tris.size());
@@ -46,12 +47,26 @@ void normal_triangles(const Polygon& shape, bool negate, std::vector<nonconvex2:
 
 }  // namespace
 
-PairDepth2::Impl::Impl(const Polygon& p, const Polygon& q) : P(p), Q(q) {
-  normal_triangles(P, false, tp);
-  normal_triangles(Q, true, tb);
-  hp.build(tp);
-  hb.build(tb);
+namespace nonconvex2 {
+
+ShapeSide::ShapeSide(const Polygon& s, bool negate) : shape(s), negated(negate) {
+  normal_triangles(shape, negate, tris);
+  tree.build(tris);
 }
+
+const ConvexParts& ShapeSide::parts() const {
+  std::call_once(parts_once_, [&] { convex_parts(tris, shape.hole_count() == 0, parts_); });
+  return parts_;
+}
+
+std::shared_ptr<const ShapeSide> make_side(const Polygon& shape, bool negate) { return std::make_shared<const ShapeSide>(shape, negate); }
+
+}  // namespace nonconvex2
+
+PairDepth2::Impl::Impl(const Polygon& p, const Polygon& q) : Impl(nonconvex2::make_side(p, false), nonconvex2::make_side(q, true)) {}
+
+PairDepth2::Impl::Impl(std::shared_ptr<const nonconvex2::ShapeSide> p, std::shared_ptr<const nonconvex2::ShapeSide> q)
+    : sp(std::move(p)), sb(std::move(q)), P(sp->shape), Q(sb->shape), tp(sp->tris), tb(sb->tris), hp(sp->tree), hb(sb->tree) {}
 
 PairDepth2::PairDepth2(const Polygon& P, const Polygon& Q) : impl_(std::make_unique<Impl>(P, Q)) {}
 PairDepth2::~PairDepth2() = default;

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "geometry/box_tree.hpp"
@@ -122,15 +123,23 @@ Sum make_sum(const Tri& T, const Tri& B);
 /// inflated outwards by a few ulps so the rounding of the sums never shrinks it.
 void sum_box(const Vec2& alo, const Vec2& ahi, const Vec2& blo, const Vec2& bhi, Vec2& lo, Vec2& hi);
 
+struct ShapeSide;  // shape_side.hpp: one shape's triangles, hierarchy and convex parts in one role
+
 }  // namespace pendepth::nonconvex2
 
 namespace pendepth {
 
 struct PairDepth2::Impl {
-  Polygon P, Q;
-  std::vector<nonconvex2::Tri> tp, tb;  // P triangles; −Q triangles (vertex ids are Q's)
-  nonconvex2::BoxTree hp, hb;
+  // The per-shape work (shape_side.hpp), shared with every other pair built from the same sides;
+  // the names below are views into it.
+  std::shared_ptr<const nonconvex2::ShapeSide> sp, sb;  // P as P; Q as −Q
+  const Polygon &P, &Q;
+  const std::vector<nonconvex2::Tri>&tp, &tb;  // P triangles; −Q triangles (vertex ids are Q's)
+  const nonconvex2::BoxTree &hp, &hb;
+  /// Fresh sides (nothing shared).
   Impl(const Polygon& p, const Polygon& q);
+  /// Given sides: sp made with negate false, sb with negate true (shape_side.hpp).
+  Impl(std::shared_ptr<const nonconvex2::ShapeSide> p, std::shared_ptr<const nonconvex2::ShapeSide> q);
 
   /// Visits the leaf pairs (i, j) whose sum box passes `accept(lo, hi)`; `leaf(i, j)` returns true
   /// to stop. Returns true if stopped. `stack`: a caller's scratch buffer (no allocation per call).

@@ -2,6 +2,7 @@
 // no_fit_polygon of the rotated pair bit for bit, at 1 and 2 threads and with a progress callback;
 // the order i, a, j, b; quarter turns give the exactly rotated no-fit polygon; errors.
 #include <pendepth/nesting.hpp>
+#include <pendepth/nfp2.hpp>
 #include <pendepth/pendepth.hpp>
 
 #include <gtest/gtest.h>
@@ -89,6 +90,52 @@ TEST(NoFitPolygons, EveryPairEqualsTheSingleCallAtAnyThreadCount) {
   EXPECT_GT(calls, 2u);
   ASSERT_EQ(two.size(), one.size());
   for (std::size_t k = 0; k < one.size(); ++k) EXPECT_TRUE(same_parts(one[k].nfp, two[k].nfp)) << k;
+}
+
+// Issue 19 item 2: a Shape2 triangulates itself (and makes its convex parts) once per role, and
+// every pair built from it reuses that. The answers must not depend on which pair filled the
+// cache: pairs built in reverse order, in parallel, and through Pair2's no-fit-polygon engine all
+// equal the engine-level NoFitPolygon2 on the bare polygons (its own fresh triangulations, full
+// build with the query structures), bit for bit, exports and queries.
+TEST(NoFitPolygons, SharedPerShapeWorkGivesTheFreshBuildInAnyOrder) {
+  std::vector<Shape2> shapes = shapes_of(read_nesting_instance(instance("albano")));
+  if (shapes.size() > 6) shapes.erase(shapes.begin() + 6, shapes.end());
+  shapes.push_back(shapes[0].rotated(45));  // a rounded rotation too
+  const std::size_t n = shapes.size();
+  std::vector<NoFitPolygonParts> fresh(n * n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j) {
+      const NoFitPolygon2 f(shapes[i].polygon(), shapes[j].polygon());
+      fresh[i * n + j] = NoFitPolygonParts{f.polygons(), f.slits(), f.points()};
+    }
+  // Reverse order first (each shape's Q side is made before its P side), on new shape objects.
+  std::vector<Shape2> copies;
+  for (const Shape2& s : shapes) copies.push_back(s.rotated(0));  // a new Shape2, same rings
+  for (std::size_t k = n * n; k-- > 0;)
+    EXPECT_TRUE(same_parts(no_fit_polygon(copies[k / n], copies[k % n]), fresh[k])) << "pair " << k / n << ", " << k % n;
+  // In parallel on the same (now filled) shapes, and on other new copies filled by the threads.
+  const std::vector<std::vector<double>> zero{{0}};
+  for (const auto& got : {no_fit_polygons(copies, zero, 2), no_fit_polygons(shapes, zero, 2)}) {
+    ASSERT_EQ(got.size(), n * n);
+    for (std::size_t k = 0; k < n * n; ++k) EXPECT_TRUE(same_parts(got[k].nfp, fresh[k])) << "entry " << k;
+  }
+  // Pair2's engine on the shared sides: the same export and the same query answers.
+  const std::array<Vec2, 4> ts{Vec2(0, 0), Vec2(1.5, -2.25), Vec2(-7, 3), Vec2(12.5, 0.75)};
+  std::size_t engine_pairs = 0;
+  for (std::size_t i = 0; i < n; i += 2)
+    for (std::size_t j = 0; j < n; j += 3) {
+      const Pair2 pair(copies[i], copies[j], Prepare::Full);
+      if (pair.engine() != Engine2::NoFitPolygon) continue;  // a convex piece: not this engine
+      ++engine_pairs;
+      EXPECT_TRUE(same_parts(pair.no_fit_polygon(), fresh[i * n + j]));
+      const NoFitPolygon2 f(shapes[i].polygon(), shapes[j].polygon());
+      for (const Vec2& t : ts) {
+        EXPECT_EQ(pair.overlapping(t), f.overlapping(t));
+        const Depth2 a = pair.minimum(t), b = f.minimum(t);
+        EXPECT_TRUE(same_bits(a.depth, b.depth) && same_vec(a.translation, b.translation)) << i << ", " << j;
+      }
+    }
+  EXPECT_GT(engine_pairs, 3u);
 }
 
 TEST(NoFitPolygons, PerShapeRotationListsFromTheInstance) {
