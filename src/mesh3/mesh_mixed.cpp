@@ -286,11 +286,7 @@ Depth3 along(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const
 Depth3 minimum(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
   if (m.point) return front::Scale{m.scale_exp}.answer(point_minimum(m, ep(m, pose_p, "P"), ep(m, pose_q, "Q")));
   const Offsets x = offsets(m, pose_p, pose_q);
-  struct Deep {
-    double s;
-    Vec3 normal;
-  };
-  std::vector<Deep> deep;
+  std::vector<DeepPair> deep;
   std::size_t work = 0;
   for (std::size_t i = 0; i < m.pieces.size(); ++i) {
     if (!near(x, i, Vec3::Zero())) continue;
@@ -298,16 +294,7 @@ Depth3 minimum(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
     work += r.candidates;
     if (r.overlapping) deep.push_back({r.lower_bound, r.normal});
   }
-  if (deep.empty()) {
-    Depth3 none;
-    none.candidates = work;
-    return none;
-  }
-  std::sort(deep.begin(), deep.end(), [](const Deep& a, const Deep& b) { return a.s > b.s; });
-  std::vector<Vec3> normals;
-  for (std::size_t k = 0; k < std::min<std::size_t>(deep.size(), 4); ++k) normals.push_back(deep[k].normal);
-  Depth3 r = least_directional(deep[0].s, normals, work, [&](const Vec3& d) { return along(m, pose_p, pose_q, d, false); });
-  return r;
+  return least_from_deep(std::move(deep), work, [&](const Vec3& d) { return along(m, pose_p, pose_q, d, false); });
 }
 
 Distance3 signed_distance(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {

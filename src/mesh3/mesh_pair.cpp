@@ -101,11 +101,7 @@ bool overlapping(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q) {
 
 Depth3 minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q) {
   const Placed pl = place(m, pose_p, pose_q);
-  struct Deep {
-    double s;
-    Vec3 normal;
-  };
-  std::vector<Deep> deep;
+  std::vector<DeepPair> deep;
   std::size_t work = 0;
   for (std::size_t i = 0; i < m.P.size(); ++i)
     for (std::size_t j = 0; j < m.Q.size(); ++j) {
@@ -114,16 +110,20 @@ Depth3 minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q) {
       work += r.candidates;
       if (r.overlapping) deep.push_back({r.depth, r.normal});
     }
+  return least_from_deep(std::move(deep), work, [&](const Vec3& d) { return along(m, pose_p, pose_q, d, false); });
+}
+
+Depth3 least_from_deep(std::vector<DeepPair> deep, std::size_t work,
+                       const std::function<Depth3(const Vec3&)>& along_d) {
   if (deep.empty()) {
     Depth3 none;
     none.candidates = work;
     return none;
   }
-  std::sort(deep.begin(), deep.end(), [](const Deep& a, const Deep& b) { return a.s > b.s; });
+  std::sort(deep.begin(), deep.end(), [](const DeepPair& a, const DeepPair& b) { return a.s > b.s; });
   std::vector<Vec3> normals;
   for (std::size_t k = 0; k < std::min<std::size_t>(deep.size(), 4); ++k) normals.push_back(deep[k].normal);
-  return least_directional(deep[0].s, normals, work,
-                           [&](const Vec3& d) { return along(m, pose_p, pose_q, d, false); });
+  return least_directional(deep[0].s, normals, work, along_d);
 }
 
 Depth3 least_directional(double lower, const std::vector<Vec3>& normals, std::size_t work,

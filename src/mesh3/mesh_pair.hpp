@@ -71,6 +71,17 @@ Depth3 minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q);
 Depth3 least_directional(double lower, const std::vector<Vec3>& normals, std::size_t work,
                          const std::function<Depth3(const Vec3&)>& along_d);
 
+/// One overlapping piece pair's σ (or its lower bound) and normal: the input of least_from_deep.
+struct DeepPair {
+  double s;
+  Vec3 normal;
+};
+
+/// σ of a union from its overlapping piece pairs: none → not overlapping (candidates = work);
+/// else least_directional with lower = the deepest s and the normals of the four deepest first.
+Depth3 least_from_deep(std::vector<DeepPair> deep, std::size_t work,
+                       const std::function<Depth3(const Vec3&)>& along_d);
+
 /// Signed distance: apart / touching → min over piece pairs of the exact convex signed distance
 /// (pruned by box distances; exact); overlapping → −σ from minimum()'s bounds (distance =
 /// −upper, lower_bound = −upper, upper_bound = −lower).

@@ -34,6 +34,7 @@
 #include "mesh3/mesh_mixed.hpp"
 
 #include "geometry/exact.hpp"
+#include "mesh3/lifted3.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -48,25 +49,11 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-template <class T>
-using A3 = std::array<T, 3>;
-template <class L>
-auto lv(L lift, const Vec3& v) {
-  using T = decltype(lift(0.0));
-  return A3<T>{lift(v.x()), lift(v.y()), lift(v.z())};
-}
-template <class T>
-A3<T> sub(const A3<T>& a, const A3<T>& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-template <class T>
-A3<T> cross(const A3<T>& a, const A3<T>& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-template <class T>
-T dot(const A3<T>& a, const A3<T>& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
+using lifted::A3;
+using lifted::cross;
+using lifted::dot;
+using lifted::lv;
+using lifted::sub;
 
 // The point in the mesh's frame, exactly x = R p + tq − tp, and the ray's direction there.
 struct Frame {
