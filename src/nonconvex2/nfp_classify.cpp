@@ -366,6 +366,27 @@ struct Classifier {
     const double S = std::max({smax_p[a], smax_b[b], m.cwiseAbs().maxCoeff()});
     const double slack = 2 * (tol + 16 * S * 0x1p-53);
     bool sure = true;
+    const bool inside = each_sum_edge(a, b, [&](const Vec2& x0, const Vec2& x1, const Vec2& d, double hc, const ConvexParts& Y,
+                                                std::uint32_t ky) {
+      const double val = d.x() * m.y() - d.y() * m.x() - hc, err = (std::abs(d.x()) + std::abs(d.y())) * slack;
+      if (val < -err) return false;
+      if (val > err) return true;
+      if (!exact) {
+        sure = false;
+        return true;
+      }
+      return edge_holds(x0, x1, Y, ky, c, p, m, slack, den);
+    });
+    if (!inside) return -1;
+    return sure ? 1 : 0;
+  }
+  // Each edge x0 → x1 of piece a of P (side 0), then of piece b of −Q (side 1), as a supporting
+  // line of the pieces' sum: d = x1 − x0 and the offset hc = cross(d, x0) + min over the other
+  // piece's vertices y of cross(d, y) (in exact arithmetic m is strictly inside the sum iff
+  // cross(d, m) − hc > 0 for every edge), in floating point; f(x0, x1, d, hc, other piece's parts,
+  // its index) returns false to stop. Returns false when f stopped.
+  template <class F>
+  bool each_sum_edge(std::uint32_t a, std::uint32_t b, F&& f) const {
     for (int side = 0; side < 2; ++side) {
       const ConvexParts& X = side == 0 ? rp : rb;
       const ConvexParts& Y = side == 0 ? rb : rp;
@@ -373,22 +394,14 @@ struct Classifier {
       const std::uint32_t x0i = X.start[kx], xn = X.start[kx + 1] - x0i;
       for (std::uint32_t i = 0; i < xn; ++i) {
         const Vec2& x0 = X.v[x0i + i];
-        const std::uint32_t i1 = x0i + (i + 1) % xn;
-        const Vec2 d = X.v[i1] - x0;
+        const Vec2& x1 = X.v[x0i + (i + 1) % xn];
+        const Vec2 d = x1 - x0;
         double lo = INFINITY;
         for (std::uint32_t j = Y.start[ky]; j < Y.start[ky + 1]; ++j) lo = std::min(lo, d.x() * Y.v[j].y() - d.y() * Y.v[j].x());
-        const double hc = d.x() * x0.y() - d.y() * x0.x() + lo;
-        const double val = d.x() * m.y() - d.y() * m.x() - hc, err = (std::abs(d.x()) + std::abs(d.y())) * slack;
-        if (val < -err) return -1;
-        if (val > err) continue;
-        if (!exact) {
-          sure = false;
-          continue;
-        }
-        if (!edge_holds(x0, X.v[i1], Y, ky, c, p, m, slack, den)) return -1;
+        if (!f(x0, x1, d, d.x() * x0.y() - d.y() * x0.x() + lo, Y, ky)) return false;
       }
     }
-    return sure ? 1 : 0;
+    return true;
   }
   // Symbolic: c's line is an edge line of the pieces' sum (own_edge_part; c strict, so its
   // convex vertex is a corner of every piece holding it).
@@ -483,21 +496,12 @@ struct Classifier {
     const double S = std::max({smax_p[a], smax_b[b], c.A.cwiseAbs().maxCoeff(), c.B.cwiseAbs().maxCoeff()});
     const double slack = 2 * (tol + 16 * S * 0x1p-53);
     double lim = span;
-    for (int side = 0; side < 2; ++side) {
-      const ConvexParts& X = side == 0 ? rp : rb;
-      const ConvexParts& Y = side == 0 ? rb : rp;
-      const std::uint32_t kx = side == 0 ? a : b, ky = side == 0 ? b : a;
-      const std::uint32_t x0i = X.start[kx], xn = X.start[kx + 1] - x0i;
-      for (std::uint32_t i = 0; i < xn; ++i) {
-        const Vec2& x0 = X.v[x0i + i];
-        const Vec2 d = X.v[x0i + (i + 1) % xn] - x0;
-        double lo = INFINITY;
-        for (std::uint32_t j = Y.start[ky]; j < Y.start[ky + 1]; ++j) lo = std::min(lo, d.x() * Y.v[j].y() - d.y() * Y.v[j].x());
-        const double val = d.x() * m.y() - d.y() * m.x() - (d.x() * x0.y() - d.y() * x0.x() + lo);
-        const double rate = dir * (d.x() * D.y() - d.y() * D.x()), err = (std::abs(d.x()) + std::abs(d.y())) * slack;
-        if (rate < 0) lim = std::min(lim, (val - 4 * err) / -rate);
-      }
-    }
+    each_sum_edge(a, b, [&](const Vec2&, const Vec2&, const Vec2& d, double hc, const ConvexParts&, std::uint32_t) {
+      const double val = d.x() * m.y() - d.y() * m.x() - hc;
+      const double rate = dir * (d.x() * D.y() - d.y() * D.x()), err = (std::abs(d.x()) + std::abs(d.y())) * slack;
+      if (rate < 0) lim = std::min(lim, (val - 4 * err) / -rate);
+      return true;
+    });
     if (!(lim > 0)) return cur;
     for (int tries = 0; tries < 4; ++tries, lim *= 0.5) {
       const double t = tries == 0 && lim >= span ? to : cur + dir * std::min(lim, span) * 0.99;
