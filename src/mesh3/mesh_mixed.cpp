@@ -317,17 +317,7 @@ Distance3 signed_distance(const MixedPair& m, const Pose3& pose_p, const Pose3& 
     if (have && k.lb > best.upper_bound) break;
     Distance3 r = m.pieces[k.i].signed_distance(pose_p, pose_q);
     if (r.overlapping) {  // −σ, from σ's bounds
-      const Depth3 s = minimum(m, pose_p, pose_q);
-      Distance3 o;
-      o.overlapping = true;
-      o.distance = o.lower_bound = -s.upper_bound;
-      o.upper_bound = -s.lower_bound;
-      o.translation = s.translation;
-      o.normal = s.normal;
-      o.witness_p = s.witness_p, o.witness_q = s.witness_q;
-      o.feature_p = s.feature_p, o.feature_q = s.feature_q;
-      o.piece_p = s.piece_p, o.piece_q = s.piece_q;
-      return o;
+      return overlap_distance3(minimum(m, pose_p, pose_q));
     }
     lower = std::min(lower, r.lower_bound);
     if (!have || r.upper_bound < best.upper_bound || (r.upper_bound == best.upper_bound && r.distance < best.distance)) {

@@ -113,6 +113,19 @@ Depth3 minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q) {
   return least_from_deep(std::move(deep), work, [&](const Vec3& d) { return along(m, pose_p, pose_q, d, false); });
 }
 
+Distance3 overlap_distance3(const Depth3& s) {
+  Distance3 o;
+  o.overlapping = true;
+  o.distance = o.lower_bound = -s.upper_bound;
+  o.upper_bound = -s.lower_bound;
+  o.translation = s.translation;
+  o.normal = s.normal;
+  o.witness_p = s.witness_p, o.witness_q = s.witness_q;
+  o.feature_p = s.feature_p, o.feature_q = s.feature_q;
+  o.piece_p = s.piece_p, o.piece_q = s.piece_q;
+  return o;
+}
+
 Depth3 least_from_deep(std::vector<DeepPair> deep, std::size_t work,
                        const std::function<Depth3(const Vec3&)>& along_d) {
   if (deep.empty()) {
@@ -180,17 +193,7 @@ Distance3 signed_distance(const MeshPair& m, const Pose3& pose_p, const Pose3& p
     if (have && k.lb > best.distance) break;
     Distance3 r = pendepth::signed_distance(m.P[k.i], pose_p, m.Q[k.j], pose_q);
     if (r.overlapping) {  // −σ of the meshes, from σ's bounds
-      const Depth3 s = minimum(m, pose_p, pose_q);
-      Distance3 o;
-      o.overlapping = true;
-      o.distance = o.lower_bound = -s.upper_bound;
-      o.upper_bound = -s.lower_bound;
-      o.translation = s.translation;
-      o.normal = s.normal;
-      o.witness_p = s.witness_p, o.witness_q = s.witness_q;
-      o.feature_p = s.feature_p, o.feature_q = s.feature_q;
-      o.piece_p = s.piece_p, o.piece_q = s.piece_q;
-      return o;
+      return overlap_distance3(minimum(m, pose_p, pose_q));
     }
     if (!have || r.distance < best.distance) {
       best = r, have = true;

@@ -71,6 +71,11 @@ Depth3 minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q);
 Depth3 least_directional(double lower, const std::vector<Vec3>& normals, std::size_t work,
                          const std::function<Depth3(const Vec3&)>& along_d);
 
+/// The signed distance of an overlapping union from its σ answer s: distance = lower_bound =
+/// −s.upper_bound, upper_bound = −s.lower_bound, and s's translation, normal, witnesses, features
+/// and pieces.
+Distance3 overlap_distance3(const Depth3& s);
+
 /// One overlapping piece pair's σ (or its lower bound) and normal: the input of least_from_deep.
 struct DeepPair {
   double s;
