@@ -399,7 +399,8 @@ class WarmStart3 {
 /// (its signed distance field; features of the mesh none, pieces −1); the other shapes by one
 /// convex pair per piece — σ_d by a walk over overlap tests (moving by the answer separates),
 /// brackets as their convex pairs', σ as bounds. A segment or flat polygon against a non-convex
-/// mesh is InvalidInput (not implemented).
+/// mesh is InvalidInput: the pieces' union is not O for a non-solid Q (the faces the pieces share
+/// lie inside the mesh), and no method on the mesh's own faces exists for them yet (issue 17).
 /// Costs: docs/benchmarks.md.
 class Pair3 {
  public:

@@ -140,7 +140,8 @@ MixedPair MixedPair::make(const Shape3& P, const Shape3& Q) {
   const Shape3& other = m.mesh_is_p ? Q : P;
   if (other.dimension() == 1 || other.dimension() == 2)
     throw InvalidInput("pair: a non-convex mesh against a segment or flat polygon (P " + P.name() + ", Q " + Q.name() +
-                       ") is not implemented (points, rounded shapes and curved primitives are; use the mesh's hull: "
+                       ") is not supported: its depth is not the union of the convex pieces' sums, whose shared faces "
+                       "lie inside the mesh (points, solid primitives and rounded shapes are; use the mesh's hull: "
                        "Shape3::from_file(path, name, true) / --hull, or the segment ⊕ a small ball)");
   front::Scale scale;
   if (other.dimension() == 0) {  // a point: the mesh's triangles (mesh_point.cpp), scaled
