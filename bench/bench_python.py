@@ -8,8 +8,11 @@ For each pair (one per 2D engine, and a 3D pair) it times, best of 3:
   batch/1  one pair.minimum(ts, threads=1) call (same thread: the per-call overhead removed)
   batch    one pair.minimum(ts) call on every core (threads=None)
 and prints microseconds per query and the ratios. The batch answers equal the loop's bit for bit
-(checked).
+(checked). Then, on the per-query pair, two Python threads each running a threads=1 batch against
+the same two batches one after the other, with the C++ batch on 2 threads as the reference (the
+GIL is released around the C++ call, so the threads should scale like the C++ batch).
 """
+import threading
 import os
 import pathlib
 import sys
@@ -68,6 +71,25 @@ def main():
     for name, m, loop, one, every in rows:
         print(f"{name:38s} {m:6d} {loop / m * 1e6:9.2f} {one / m * 1e6:11.2f} {every / m * 1e6:9.2f} "
               f"{loop / one:12.1f} {loop / every:11.1f}")
+
+    two_python_threads(pairs[-1][1], offsets(pairs[-1][1], pairs[-1][2] * 6, seed=2))
+
+
+def two_python_threads(pair, t):
+    """Best of 5: (one after the other) / (two Python threads), and the same for the C++ batch on
+    2 threads."""
+    run = lambda threads=1: pair.minimum(t, threads=threads)  # noqa: E731
+    seq = best(lambda: (run(), run()), reps=5)
+    def both():
+        th = [threading.Thread(target=run) for _ in range(2)]
+        for x in th:
+            x.start()
+        for x in th:
+            x.join()
+    py = best(both, reps=5)
+    cpp = best(lambda: (run(2), run(2)), reps=5)
+    print(f"two Python threads, {len(t)} placements each (per-query pair): sequential {seq:.3f} s, "
+          f"two threads {py:.3f} s ({seq / py:.2f}x), C++ batch on 2 threads {cpp:.3f} s ({seq / cpp:.2f}x)")
 
 
 if __name__ == "__main__":
