@@ -236,6 +236,8 @@ struct Facet {
   double dist = 0;               // accurate distance (once refined)
   double unit[3];                // n/|n| from the double-double normal (once refined)
   int hsign = 1;                 // Phase A: exact sign of h
+  int mark = 0;                  // search stamp (find_horizon, the warm seed's walk)
+  int pos = -1;                  // index in the live list alive_ (−1: dead)
   bool refined = false;
 };
 
@@ -307,10 +309,10 @@ struct Workspace {
   SupportSet sp, sq;  // contact_point
   Stack<Vert> V;
   Stack<Facet> F;
-  Stack<int> mark, vis;
+  Stack<int> vis;
   std::vector<int> by_start, by_end;
   Stack<std::pair<int, int>> hor;
-  Stack<int> alive, pos;  // live facets (dense) and each facet's index there (−1: dead)
+  Stack<int> alive;  // live facets (dense); each facet's index there is Facet::pos
   Stack<double> keys;     // Phase B key of alive[k]; +inf: not a candidate
   std::vector<int> ties, face;  // Phase B: facets exactly as near as the best; a flat face's triangles
   std::vector<int> face_verts;  // the warm seed: vertices of the answer's flat face
@@ -329,9 +331,9 @@ class Expander {
  public:
   [[gnu::always_inline]] Expander(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel, Workspace& ws)
       : P_(convex3::data_of(Pp)), Q_(convex3::data_of(Qp)), AP_(vertex_adjacency(P_)), AQ_(vertex_adjacency(Q_)), R_(rel.R),
-        V_(ws.V), F_(ws.F), mark_(ws.mark), vis_(ws.vis), by_start_(ws.by_start), by_end_(ws.by_end),
-        hor_(ws.hor), alive_(ws.alive), pos_(ws.pos), keys_(ws.keys), ties_(ws.ties), face_(ws.face), face_verts_(ws.face_verts), sp_(ws.sp), sq_(ws.sq) {
-    V_.clear(), F_.clear(), mark_.clear(), alive_.clear(), pos_.clear(), keys_.clear();
+        V_(ws.V), F_(ws.F), vis_(ws.vis), by_start_(ws.by_start), by_end_(ws.by_end),
+        hor_(ws.hor), alive_(ws.alive), keys_(ws.keys), ties_(ws.ties), face_(ws.face), face_verts_(ws.face_verts), sp_(ws.sp), sq_(ws.sq) {
+    V_.clear(), F_.clear(), alive_.clear(), keys_.clear();
     init_coordinate_bounds(rel);
     init_normal_bounds();
     fold_facet_constants();
@@ -428,13 +430,11 @@ class Expander {
   double co_, bo_[3], ch_, bh_[3], cep_, bp_[3], ceq_, bqn_[3], bqw_[3];
   Stack<Vert>& V_;
   Stack<Facet>& F_;
-  Stack<int>& mark_;
   Stack<int>& vis_;
   std::vector<int>& by_start_;
   std::vector<int>& by_end_;
   Stack<std::pair<int, int>>& hor_;
   Stack<int>& alive_;
-  Stack<int>& pos_;
   Stack<double>& keys_;
   std::vector<int>& ties_;
   std::vector<int>& face_;
@@ -611,17 +611,17 @@ class Expander {
     const double a0 = std::abs(f.n[0]), a1 = std::abs(f.n[1]), a2 = std::abs(f.n[2]);
     f.he = ch_ + a0 * bh_[0] + a1 * bh_[1] + a2 * bh_[2];  // = bound_zero(n, ne_)
     f.eo = co_ + a0 * bo_[0] + a1 * bo_[1] + a2 * bo_[2];  // = bound_side(n, ne_)
-    mark_.push_back(0);
-    pos_.push_back(static_cast<int>(alive_.size()));
+    f.mark = 0;
+    f.pos = static_cast<int>(alive_.size());
     alive_.push_back(id);
     keys_.push_back(std::numeric_limits<double>::infinity());
     return id;
   }
   void kill(int f) {
-    int k = pos_[f], last = alive_.back();
-    alive_[k] = last, keys_[k] = keys_.back(), pos_[last] = k;
+    int k = F_[f].pos, last = alive_.back();
+    alive_[k] = last, keys_[k] = keys_.back(), F_[last].pos = k;
     alive_.pop_back(), keys_.pop_back();
-    pos_[f] = -1;
+    F_[f].pos = -1;
   }
 
   // ---- exact predicates --------------------------------------------------------------------
@@ -958,19 +958,19 @@ class Expander {
     vis_.clear();
     hor_.clear();
     vis_.push_back(f0);
-    mark_[f0] = vis;
+    F_[f0].mark = vis;
     for (std::size_t q = 0; q < vis_.size(); ++q) {
       int f = vis_[q];
       for (int k = 0; k < 3; ++k) {
         int g = F_[f].nb[k];
-        if (mark_[g] == vis) continue;
-        if (mark_[g] != hid) {
+        if (F_[g].mark == vis) continue;
+        if (F_[g].mark != hid) {
           if (orient(g, s) > 0) {
-            mark_[g] = vis;
+            F_[g].mark = vis;
             vis_.push_back(g);
             continue;
           }
-          mark_[g] = hid;
+          F_[g].mark = hid;
         }
         hor_.push_back({f, k});
       }
@@ -990,9 +990,10 @@ class Expander {
       int a = F_[f].v[k], b = F_[f].v[(k + 1) % 3], g = F_[f].nb[k];
       int id = add_facet(a, b, s);
       F_[id].nb[0] = g;
+      // G's edge b -> a is the one whose neighbour is f (two facets of K share at most one edge).
       Facet& G = F_[g];
       for (int e = 0; e < 3; ++e)
-        if (G.v[e] == b && G.v[(e + 1) % 3] == a) G.nb[e] = id;
+        if (G.nb[e] == f) G.nb[e] = id;
       by_start_[a] = id;
       by_end_[b] = id;
     }
@@ -1002,7 +1003,7 @@ class Expander {
       N.nb[2] = by_end_[N.v[0]];
       assert(F_[N.nb[1]].v[0] == N.v[1] && F_[N.nb[2]].v[1] == N.v[0]);
       if (mode == Mode::A) N.hsign = hsign(id);
-      else if (mode == Mode::B) keys_[pos_[id]] = lower_key(id);
+      else if (mode == Mode::B) keys_[F_[id].pos] = lower_key(id);
     }
   }
 
@@ -1174,7 +1175,7 @@ class Expander {
       assert(o >= 0 && "a support point below the facet's plane");
       if (o <= 0) {  // f's plane supports M
         V_.pop_back();
-        keys_[pos_[f]] = std::numeric_limits<double>::infinity();
+        keys_[F_[f].pos] = std::numeric_limits<double>::infinity();
         if (c == 0) {  // another facet of M at distance σ
           ties_.push_back(f);
           continue;
@@ -1664,7 +1665,7 @@ class Expander {
     ++stamp_;
     const int seen = 2 * stamp_;
     vis_.assign(1, best);
-    mark_[best] = seen;
+    F_[best].mark = seen;
     std::size_t level_end = 1;
     for (std::size_t q = 0, depth = 0; q < vis_.size() && depth <= kSeedDepth; ++q) {
       if (q == level_end) ++depth, level_end = vis_.size();
@@ -1672,7 +1673,7 @@ class Expander {
       for (int k = 0; k < 3; ++k) {
         add(F_[vis_[q]].v[k]);
         const int g = F_[vis_[q]].nb[k];
-        if (mark_[g] != seen) mark_[g] = seen, vis_.push_back(g);
+        if (F_[g].mark != seen) F_[g].mark = seen, vis_.push_back(g);
       }
     }
   }
@@ -1740,7 +1741,7 @@ class Expander {
       }
       V_.pop_back();
     }
-    F_.clear(), mark_.clear(), alive_.clear(), pos_.clear(), keys_.clear();
+    F_.clear(), alive_.clear(), keys_.clear();
     if (s4 < 0) {  // the pairs are collinear now (their normal is 0) or M is flat: start cold
       V_.clear();
       return false;
