@@ -31,12 +31,19 @@
 #include "geometry/box_tree.hpp"
 
 #include <cstddef>
+#include <memory>
 
 namespace pendepth::nonconvex2 {
 
 class BoundaryPair2 {
  public:
   BoundaryPair2(const Polygon& P, const Polygon& Q);
+  /// The same with the shapes' edge trees given (edge_tree(P), edge_tree(Q), shared per shape:
+  /// shape_side.hpp's ShapeCache); the same bits as building them here.
+  BoundaryPair2(const Polygon& P, const Polygon& Q, std::shared_ptr<const geometry::BoxTree> p_tree,
+                std::shared_ptr<const geometry::BoxTree> q_tree);
+  /// The box tree over S's edges (leaf k: edge k, global vertex k to next(k)). O(n log n).
+  static std::shared_ptr<const geometry::BoxTree> edge_tree(const Polygon& S);
 
   /// Distance of P and Q + t (precondition: interiors do not overlap). `overlapping` false;
   /// distance 0 and normal 0 when touching; features as in Distance2 (global vertex/edge indices).
@@ -50,7 +57,8 @@ class BoundaryPair2 {
 
  private:
   const Polygon &P_, &Q_;
-  geometry::BoxTree p_edges_, q_edges_;  // leaf k: edge k (global vertex k to next(k))
+  std::shared_ptr<const geometry::BoxTree> p_tree_, q_tree_;  // owners (possibly shared per shape)
+  const geometry::BoxTree &p_edges_, &q_edges_;             // leaf k: edge k (global vertex k to next(k))
 };
 
 }  // namespace pendepth::nonconvex2
