@@ -13,6 +13,7 @@
 //     (both ways round), and huge shapes whose pairs are scaled by different powers of two.
 #include <pendepth/depth2_polygon_convex.hpp>
 #include <pendepth/depth2_polygon_polygon.hpp>
+#include <pendepth/motion.hpp>
 #include <pendepth/nesting.hpp>
 #include <pendepth/pendepth.hpp>
 
@@ -233,6 +234,36 @@ TEST(SharedShapes2, ScaledPairsShareTheScaledCopyAndEqualTheFreshBuild) {
     EXPECT_GE(d.scaled.size(), 2u) << "shape " << k;             // scaled differently by different partners
     EXPECT_LE(d.scaled.size(), huge.size()) << "shape " << k;    // one copy per exponent, not per pair
   }
+}
+
+// generalized_depth (PD_g) takes the convex parts of a non-convex shape from the same per-shape
+// cache (role P's side): the same bounds and motion as on fresh copies, with the shapes' caches
+// already filled by pairs in both roles, and a shape against itself.
+TEST(SharedShapes2, GeneralizedDepthUsesTheSharedConvexParts) {
+  const std::vector<Shape2> shapes = nesting_shapes();
+  for (std::size_t i : {0u, 4u})
+    for (std::size_t j : {1u, 4u}) {
+      (void)Pair2(shapes[j], shapes[i], Prepare::Full).minimum(Vec2(0, 0));  // fill both roles' caches
+      GeneralizedOptions2 o;
+      o.max_intervals = 16;
+      ASSERT_FALSE(shapes[i].is_convex() && shapes[j].is_convex());  // the parts path
+      // The first placement of a grid where the pair overlaps.
+      const Probe p = probe(shapes[i], shapes[j], 7 * i + j);
+      const Pair2 fresh_pair(fresh_copy(shapes[i]), fresh_copy(shapes[j]), Prepare::Queries);
+      Vec2 t = p.ts[0];
+      for (const Vec2& c : p.ts)
+        if (fresh_pair.overlapping(c)) {
+          t = c;
+          break;
+        }
+      const GeneralizedDepth2 a = generalized_depth(shapes[i], shapes[j], t, o);
+      const GeneralizedDepth2 b = generalized_depth(fresh_copy(shapes[i]), fresh_copy(shapes[j]), t, o);
+      EXPECT_TRUE(a.overlapping) << i << ", " << j;
+      EXPECT_TRUE(same_bits(a.depth, b.depth) && same_bits(a.lower_bound, b.lower_bound) &&
+                  same_bits(a.upper_bound, b.upper_bound) && same_bits(a.angle, b.angle) &&
+                  same_bits_v(a.translation, b.translation) && a.intervals == b.intervals)
+          << i << ", " << j << ": " << a.lower_bound << " ≤ " << a.upper_bound << " vs " << b.lower_bound << " ≤ " << b.upper_bound;
+    }
 }
 
 }  // namespace
