@@ -19,7 +19,8 @@
 // candidate in a fixed visiting order (so the features do not depend on threads or history).
 // The squared distance and the ray parameter are evaluated to ~1 ulp and rounded once; the
 // distance is their square root (a few ulps).
-// Complexity. Box trees over the edges of P and of Q (O(n log n + m log m), built once). A
+// Complexity. Box trees over the edges of P and of Q (O(n log n + m log m), built once; through
+// Pair2 once per shape, shared by its pairs: shape_side.hpp's ShapeCache). A
 // query visits every vertex of both shapes and searches the other shape's tree: branch and bound
 // with the best distance so far (distance), or the ray against the boxes cut at the best
 // parameter so far (cast): O((n + m) log(n + m)) typical, O(nm) worst case.
