@@ -10,6 +10,7 @@
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -189,6 +190,96 @@ THREADS(BM_star_nfp_sigma);
 THREADS(BM_convex3_sigma);
 THREADS(BM_convex3_sigma_d);
 THREADS(BM_ellipsoids_sigma);
+
+// ---- Per-pair setup with per-shape work shared (issue 19 item 2) ----
+// Pair2(P, Q, Prepare::Queries) over every ordered pair of an instance's pieces (PairDepth2 for
+// two non-convex pieces, PolygonDepth2 for a convex one against a non-convex one, nothing for two
+// convex pieces). Arg 0 "cold": each pair gets brand-new Shape2 copies (made outside the timed
+// region), so it triangulates both pieces as every pair did before Shape2 shared that work;
+// arg 1 "shared": the same Shape2 objects for every pair (their caches filled by the first
+// iteration). Time per iteration / `pairs` = setup per pair. Arguments: cold/shared, then the
+// pair selection (setup_instance).
+Shape2 fresh_copy(const Shape2& s) { return s.is_convex() ? Shape2(ConvexPolygon(s.convex())) : Shape2(Polygon(s.polygon())); }
+
+void pair_setup(benchmark::State& s, const std::vector<Shape2>& pieces, const std::vector<std::pair<int, int>>& pairs) {
+  const bool shared = s.range(0) == 1;
+  std::vector<Shape2> ps, qs;
+  for (auto _ : s) {
+    if (!shared) {
+      s.PauseTiming();
+      ps.clear(), qs.clear();
+      for (const auto& [i, j] : pairs) ps.push_back(fresh_copy(pieces[i])), qs.push_back(fresh_copy(pieces[j]));
+      s.ResumeTiming();
+    }
+    for (std::size_t k = 0; k < pairs.size(); ++k) {
+      const Pair2 pair = shared ? Pair2(pieces[pairs[k].first], pieces[pairs[k].second], Prepare::Queries)
+                                : Pair2(ps[k], qs[k], Prepare::Queries);
+      benchmark::DoNotOptimize(pair.engine());
+    }
+  }
+  s.counters["pairs"] = double(pairs.size());
+}
+
+std::vector<std::pair<int, int>> all_pairs(std::size_t n) {
+  std::vector<std::pair<int, int>> p;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j) p.emplace_back(int(i), int(j));
+  return p;
+}
+
+// Every ordered pair of the instance's pieces (arg 2 = 0), or only the pairs of two non-convex
+// pieces (arg 2 = 1: the PairDepth2 engine alone, without the polygon × convex union boundaries).
+void setup_instance(benchmark::State& s, const std::vector<Shape2>& pieces) {
+  std::vector<std::pair<int, int>> pairs = all_pairs(pieces.size());
+  if (s.range(1) == 1)
+    std::erase_if(pairs, [&](const auto& p) { return pieces[p.first].is_convex() || pieces[p.second].is_convex(); });
+  pair_setup(s, pieces, pairs);
+}
+void BM_pair2_setup_albano(benchmark::State& s) {
+  static const auto pieces = nesting_pieces("albano");
+  setup_instance(s, pieces);
+}
+void BM_pair2_setup_shirts(benchmark::State& s) {
+  static const auto pieces = nesting_pieces("shirts");
+  setup_instance(s, pieces);
+}
+void BM_pair2_setup_trousers(benchmark::State& s) {
+  static const auto pieces = nesting_pieces("trousers");
+  setup_instance(s, pieces);
+}
+
+// A polygon with holes (a 64-gon with six 12-gon holes) against six convex polygons, both ways
+// round (polygon-convex and convex-polygon engines: PolygonDepth2 on the polygon's triangulation).
+void BM_pair2_setup_holes_convex(benchmark::State& s) {
+  static const std::vector<Shape2> pieces = [] {
+    auto ngon = [](int n, double r, Vec2 c, double phase) {
+      std::vector<Vec2> v;
+      for (int k = 0; k < n; ++k) {
+        const double a = phase + 2 * M_PI * k / n;
+        v.emplace_back(c.x() + r * std::cos(a), c.y() + r * std::sin(a));
+      }
+      return v;
+    };
+    std::vector<std::vector<Vec2>> holes;
+    for (int h = 0; h < 6; ++h) {
+      auto ring = ngon(12, 9, Vec2(55 * std::cos(h * M_PI / 3), 55 * std::sin(h * M_PI / 3)), 0.1);
+      std::reverse(ring.begin(), ring.end());
+      holes.push_back(ring);
+    }
+    std::vector<Shape2> out{Shape2(ngon(64, 100, Vec2(0, 0), 0), holes, "holed")};
+    for (int m : {3, 4, 6, 8, 16, 32}) out.push_back(Shape2(ngon(m, 7, Vec2(0, 0), 0.3), {}, "convex"));
+    return out;
+  }();
+  std::vector<std::pair<int, int>> pairs;
+  for (int c = 1; c < 7; ++c) pairs.emplace_back(0, c), pairs.emplace_back(c, 0);
+  pair_setup(s, pieces, pairs);
+}
+
+#define SETUP(b) BENCHMARK(b)->ArgsProduct({{0, 1}, {0, 1}})->Unit(benchmark::kMicrosecond)
+SETUP(BM_pair2_setup_albano);
+SETUP(BM_pair2_setup_shirts);
+SETUP(BM_pair2_setup_trousers);
+BENCHMARK(BM_pair2_setup_holes_convex)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 

@@ -72,8 +72,11 @@ class PolygonDepth2 {
   /// Test and benchmark hook: the private header src/polygon2/query_impl.hpp has Impl and the
   /// reference query paths (along_scan, along_triangles, separation_triangles).
   friend const Impl& polygon_depth_impl(const PolygonDepth2& pd);
+  /// Internal (src/front/pair2.cpp): wraps a built Impl (one made from a shape's shared triangulation).
+  friend PolygonDepth2 polygon_depth_from_impl(std::unique_ptr<Impl> impl);
 
  private:
+  explicit PolygonDepth2(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
 };
 

@@ -77,8 +77,11 @@ class PairDepth2 {
   std::size_t triangle_count_q() const;
 
   struct Impl;
+  /// Internal (src/front/pair2.cpp): wraps a built Impl (one made from shared per-shape sides).
+  friend PairDepth2 pair_from_impl(std::unique_ptr<Impl> impl);
 
  private:
+  explicit PairDepth2(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
 };
 

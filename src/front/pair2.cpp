@@ -18,6 +18,7 @@
 #include "front/shape2_data.hpp"
 #include "nonconvex2/nfp_impl.hpp"
 #include "nonconvex2/boundary_distance.hpp"
+#include "polygon2/query_impl.hpp"
 
 #include <cmath>
 #include <mutex>
@@ -71,8 +72,7 @@ front::Scale pair_scale(const Shape2& P, const Shape2& Q) {
 
 // `s` in engine coordinates: a copy scaled by 2^-e (exact, checked), with the same normal form
 // and so the same feature numbering (scaling by a power of two keeps every orientation).
-Shape2 engine_shape(const Shape2& s, const front::Scale& scale, const char* which) {
-  if (scale.identity()) return s;
+Shape2 engine_shape_fresh(const Shape2& s, const front::Scale& scale, const char* which) {
   auto rings = s.rings();
   if (s.dimension() < 2) {  // a point or a segment
     for (Vec2& p : rings[0]) p = scale.vec_to_engine(p, std::string(which) + " (" + s.name() + "):");
@@ -84,6 +84,14 @@ Shape2 engine_shape(const Shape2& s, const front::Scale& scale, const char* whic
                                                          std::to_string(k) + " vertex " + std::to_string(i) + ":");
   if (s.is_convex()) return Shape2(ConvexPolygon(rings[0], s.name()));
   return Shape2(Polygon(rings, s.name()));
+}
+
+// The same, made once per shape and exponent and shared by every pair scaled alike (with the
+// scaled copy's per-shape caches): whether it throws, and what, depends only on the shape and
+// the exponent, so a cached copy is what a fresh one would be.
+Shape2 engine_shape(const Shape2& s, const front::Scale& scale, const char* which) {
+  if (scale.identity()) return s;
+  return front::scaled_shape(s, scale.e, [&] { return engine_shape_fresh(s, scale, which); });
 }
 
 // Parts in engine coordinates back to input coordinates.
@@ -176,9 +184,9 @@ struct Pair2::Impl {
       case Engine2::Convex:
         if (prepare == Prepare::Full) depth_field();
         break;
-      case Engine2::PolygonConvex: polygon.emplace(P.polygon(), Q.convex()); break;
-      case Engine2::PolygonConvexSwapped: polygon.emplace(Q.polygon(), P.convex()); break;
-      case Engine2::PairPerQuery: pair.emplace(P.polygon(), Q.polygon()); break;
+      case Engine2::PolygonConvex: polygon.emplace(polygon_engine_of(P, Q)); break;
+      case Engine2::PolygonConvexSwapped: polygon.emplace(polygon_engine_of(Q, P)); break;
+      case Engine2::PairPerQuery: pair.emplace(pair_engine_of(P, Q)); break;
       case Engine2::NoFitPolygon:
         nfp.emplace(nfp_from_impl(std::make_unique<NoFitPolygon2::Impl>(front::shape_side(P, false), front::shape_side(Q, true))));
         break;
@@ -192,9 +200,21 @@ struct Pair2::Impl {
 
   const PairDepth2& pair_engine() const {
     std::call_once(pair_once, [&] {
-      if (!pair) pair.emplace(P.polygon(), Q.polygon());
+      if (!pair) pair.emplace(pair_engine_of(P, Q));
     });
     return *pair;
+  }
+
+  // PolygonDepth2 with the polygon's shared triangulation: the same bits as
+  // PolygonDepth2(p.polygon(), c.convex()).
+  static PolygonDepth2 polygon_engine_of(const Shape2& p, const Shape2& c) {
+    return polygon_depth_from_impl(std::make_unique<PolygonDepth2::Impl>(p.polygon(), c.convex(), &front::shape_cache(p).triangles(p.polygon())));
+  }
+
+  // PairDepth2 on the shapes' shared per-shape sides (front/shape2_data.hpp): the same bits as
+  // PairDepth2(P.polygon(), Q.polygon()), without re-triangulating per pair.
+  static PairDepth2 pair_engine_of(const Shape2& p, const Shape2& q) {
+    return pair_from_impl(std::make_unique<PairDepth2::Impl>(front::shape_side(p, false), front::shape_side(q, true)));
   }
 
   bool swapped() const { return engine == Engine2::PolygonConvexSwapped; }
@@ -271,7 +291,9 @@ struct Pair2::Impl {
   // Signed distance (issue 16 item 2): overlapping placements from the engine's σ (Distance2's
   // witness_q is on the unmoved Q), the others on the boundaries (src/nonconvex2/boundary_distance).
   const nonconvex2::BoundaryPair2& boundary_engine() const {
-    std::call_once(boundary_once, [&] { boundary.emplace(P.polygon(), Q.polygon()); });
+    std::call_once(boundary_once, [&] {  // the edge trees are per shape (shape_side.hpp)
+      boundary.emplace(P.polygon(), Q.polygon(), front::shape_cache(P).edge_tree(P.polygon()), front::shape_cache(Q).edge_tree(Q.polygon()));
+    });
     return *boundary;
   }
 

@@ -23,6 +23,26 @@ std::shared_ptr<const nonconvex2::ShapeSide> front::shape_side(const Shape2& s, 
   return shape_data(s).sides.side(s.polygon(), negate);
 }
 
+const nonconvex2::ShapeCache& front::shape_cache(const Shape2& s) { return shape_data(s).sides; }
+
+Shape2 front::scaled_shape(const Shape2& s, int e, const std::function<Shape2()>& make) {
+  const Shape2::Data& d = shape_data(s);
+  auto find = [&]() -> const Shape2* {
+    for (const auto& [k, c] : d.scaled)
+      if (k == e) return &c;
+    return nullptr;
+  };
+  {
+    std::lock_guard lock(d.scaled_mutex);
+    if (const Shape2* c = find()) return *c;
+  }
+  Shape2 made = make();  // outside the lock: validation is O(n log n)
+  std::lock_guard lock(d.scaled_mutex);
+  if (const Shape2* c = find()) return *c;  // another thread was first: the same shape, keep one
+  d.scaled.emplace_back(e, made);
+  return made;
+}
+
 namespace {
 
 std::shared_ptr<Shape2::Data> from_io(io::Shape2 s, std::string_view name) {

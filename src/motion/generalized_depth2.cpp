@@ -62,8 +62,8 @@
 #include "geometry/exact.hpp"
 #include "motion/free_space2.hpp"
 #include "front/scale.hpp"
+#include "front/shape2_data.hpp"
 #include "nonconvex2/convex_parts.hpp"
-#include "polygon2/triangulation.hpp"
 
 #include <algorithm>
 #include <array>
@@ -110,27 +110,11 @@ struct Turn {
 };
 
 // Convex parts of a shape: itself when convex, else the Hertel–Mehlhorn parts of its triangulation
-// (nonconvex2/convex_parts.hpp; the triangles themselves for a shape with holes).
+// (nonconvex2/convex_parts.hpp; the triangles themselves for a shape with holes), made once per
+// shape and shared with its other pairs and calls (the shape's role-P side, front/shape2_data.hpp).
 std::vector<ConvexPolygon> convex_parts_of(const Shape2& S) {
   if (S.is_convex()) return {S.convex()};
-  const Polygon& poly = S.polygon();
-  const auto V = poly.vertices();
-  std::vector<polygon2::TriangleIds> ids;
-  polygon2::triangulate(poly, ids);
-  std::vector<nonconvex2::Tri> tris(ids.size());
-  for (std::size_t k = 0; k < ids.size(); ++k) {
-    int low = 0;
-    for (int i = 1; i < 3; ++i) {
-      const Vec2 &a = V[ids[k][i]], &b = V[ids[k][low]];
-      if (a.y() < b.y() || (a.y() == b.y() && a.x() < b.x())) low = i;
-    }
-    nonconvex2::Tri& T = tris[k];
-    for (int j = 0, i = low; j < 3; ++j, i = i == 2 ? 0 : i + 1) T.v[j] = V[ids[k][i]], T.id[j] = ids[k][i];
-    T.lo = T.v[0].cwiseMin(T.v[1]).cwiseMin(T.v[2]);
-    T.hi = T.v[0].cwiseMax(T.v[1]).cwiseMax(T.v[2]);
-  }
-  nonconvex2::ConvexParts cp;
-  nonconvex2::convex_parts(tris, poly.hole_count() == 0, cp);
+  const nonconvex2::ConvexParts& cp = front::shape_side(S, false)->parts();
   std::vector<ConvexPolygon> out;
   out.reserve(cp.size());
   for (std::size_t k = 0; k < cp.size(); ++k)

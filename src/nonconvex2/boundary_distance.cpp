@@ -282,10 +282,17 @@ Distance2 assemble(const Nearest& near, const Polygon& P_, const Polygon& Q_, co
 
 }  // namespace
 
-BoundaryPair2::BoundaryPair2(const Polygon& P, const Polygon& Q) : P_(P), Q_(Q) {
-  build_tree(P_, p_edges_);
-  build_tree(Q_, q_edges_);
+std::shared_ptr<const geometry::BoxTree> BoundaryPair2::edge_tree(const Polygon& S) {
+  auto tree = std::make_shared<geometry::BoxTree>();
+  build_tree(S, *tree);
+  return tree;
 }
+
+BoundaryPair2::BoundaryPair2(const Polygon& P, const Polygon& Q) : BoundaryPair2(P, Q, edge_tree(P), edge_tree(Q)) {}
+
+BoundaryPair2::BoundaryPair2(const Polygon& P, const Polygon& Q, std::shared_ptr<const geometry::BoxTree> p_tree,
+                             std::shared_ptr<const geometry::BoxTree> q_tree)
+    : P_(P), Q_(Q), p_tree_(std::move(p_tree)), q_tree_(std::move(q_tree)), p_edges_(*p_tree_), q_edges_(*q_tree_) {}
 
 Distance2 BoundaryPair2::distance(const Vec2& t) const {
   Nearest near;

@@ -19,7 +19,8 @@
 // candidate in a fixed visiting order (so the features do not depend on threads or history).
 // The squared distance and the ray parameter are evaluated to ~1 ulp and rounded once; the
 // distance is their square root (a few ulps).
-// Complexity. Box trees over the edges of P and of Q (O(n log n + m log m), built once). A
+// Complexity. Box trees over the edges of P and of Q (O(n log n + m log m), built once; through
+// Pair2 once per shape, shared by its pairs: shape_side.hpp's ShapeCache). A
 // query visits every vertex of both shapes and searches the other shape's tree: branch and bound
 // with the best distance so far (distance), or the ray against the boxes cut at the best
 // parameter so far (cast): O((n + m) log(n + m)) typical, O(nm) worst case.
@@ -31,12 +32,19 @@
 #include "geometry/box_tree.hpp"
 
 #include <cstddef>
+#include <memory>
 
 namespace pendepth::nonconvex2 {
 
 class BoundaryPair2 {
  public:
   BoundaryPair2(const Polygon& P, const Polygon& Q);
+  /// The same with the shapes' edge trees given (edge_tree(P), edge_tree(Q), shared per shape:
+  /// shape_side.hpp's ShapeCache); the same bits as building them here.
+  BoundaryPair2(const Polygon& P, const Polygon& Q, std::shared_ptr<const geometry::BoxTree> p_tree,
+                std::shared_ptr<const geometry::BoxTree> q_tree);
+  /// The box tree over S's edges (leaf k: edge k, global vertex k to next(k)). O(n log n).
+  static std::shared_ptr<const geometry::BoxTree> edge_tree(const Polygon& S);
 
   /// Distance of P and Q + t (precondition: interiors do not overlap). `overlapping` false;
   /// distance 0 and normal 0 when touching; features as in Distance2 (global vertex/edge indices).
@@ -50,7 +58,8 @@ class BoundaryPair2 {
 
  private:
   const Polygon &P_, &Q_;
-  geometry::BoxTree p_edges_, q_edges_;  // leaf k: edge k (global vertex k to next(k))
+  std::shared_ptr<const geometry::BoxTree> p_tree_, q_tree_;  // owners (possibly shared per shape)
+  const geometry::BoxTree &p_edges_, &q_edges_;             // leaf k: edge k (global vertex k to next(k))
 };
 
 }  // namespace pendepth::nonconvex2

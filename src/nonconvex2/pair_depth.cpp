@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "geometry/exact.hpp"
+#include "nonconvex2/boundary_distance.hpp"
 #include "nonconvex2/pair_sums.hpp"
 #include "nonconvex2/query.hpp"
 #include "nonconvex2/shape_side.hpp"
@@ -61,6 +62,20 @@ const ConvexParts& ShapeSide::parts() const {
 
 std::shared_ptr<const ShapeSide> make_side(const Polygon& shape, bool negate) { return std::make_shared<const ShapeSide>(shape, negate); }
 
+const std::vector<polygon2::TriangleIds>& ShapeCache::triangles(const Polygon& shape) const {
+  std::call_once(tri_once_, [&] {
+    const auto s = side(shape, false);
+    tri_.reserve(s->tris.size());
+    for (const Tri& T : s->tris) tri_.push_back(T.id);
+  });
+  return tri_;
+}
+
+std::shared_ptr<const BoxTree> ShapeCache::edge_tree(const Polygon& shape) const {
+  std::call_once(edge_once_, [&] { edge_ = BoundaryPair2::edge_tree(shape); });
+  return edge_;
+}
+
 }  // namespace nonconvex2
 
 PairDepth2::Impl::Impl(const Polygon& p, const Polygon& q) : Impl(nonconvex2::make_side(p, false), nonconvex2::make_side(q, true)) {}
@@ -69,6 +84,8 @@ PairDepth2::Impl::Impl(std::shared_ptr<const nonconvex2::ShapeSide> p, std::shar
     : sp(std::move(p)), sb(std::move(q)), P(sp->shape), Q(sb->shape), tp(sp->tris), tb(sb->tris), hp(sp->tree), hb(sb->tree) {}
 
 PairDepth2::PairDepth2(const Polygon& P, const Polygon& Q) : impl_(std::make_unique<Impl>(P, Q)) {}
+PairDepth2::PairDepth2(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+PairDepth2 pair_from_impl(std::unique_ptr<PairDepth2::Impl> impl) { return PairDepth2(std::move(impl)); }
 PairDepth2::~PairDepth2() = default;
 PairDepth2::PairDepth2(PairDepth2&&) noexcept = default;
 PairDepth2& PairDepth2::operator=(PairDepth2&&) noexcept = default;

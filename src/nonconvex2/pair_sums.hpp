@@ -161,6 +161,9 @@ struct PairDepth2::Impl {
   Depth2 contact_features(const nonconvex2::Line& E, const Vec2& t, const Vec2& translation, int end) const;
 };
 
+/// Internal (src/front/pair2.cpp): wraps a built Impl (one made from shared per-shape sides).
+PairDepth2 pair_from_impl(std::unique_ptr<PairDepth2::Impl> impl);
+
 template <class Accept, class Leaf>
 bool PairDepth2::Impl::descend(Accept&& accept, Leaf&& leaf, PairQueryStats* stats, DescentStack& stack) const {
   stack.assign(1, {0, 0});

@@ -21,6 +21,7 @@
 
 #include "nonconvex2/convex_parts.hpp"
 #include "nonconvex2/pair_sums.hpp"
+#include "polygon2/triangulation.hpp"
 
 namespace pendepth::nonconvex2 {
 
@@ -55,7 +56,10 @@ struct ShapeSide {
 /// A fresh side (no cache): the engine-level constructors.
 std::shared_ptr<const ShapeSide> make_side(const Polygon& shape, bool negate);
 
-/// Both roles of one shape, each made on first request (thread-safe).
+/// Both roles of one shape, each made on first request (thread-safe), and the role-free pieces
+/// other engines share: the triangulation's id triples (role P's, normal form; polygon × convex,
+/// polygon2::ConvolvedTriangles) and the box tree over the edges (BoundaryPair2, signed distance
+/// and cast).
 class ShapeCache {
  public:
   std::shared_ptr<const ShapeSide> side(const Polygon& shape, bool negate) const {
@@ -63,10 +67,14 @@ class ShapeCache {
     std::call_once(once_[r], [&] { side_[r] = make_side(shape, negate); });
     return side_[r];
   }
+  const std::vector<polygon2::TriangleIds>& triangles(const Polygon& shape) const;  // pair_depth.cpp
+  std::shared_ptr<const BoxTree> edge_tree(const Polygon& shape) const;             // pair_depth.cpp
 
  private:
-  mutable std::once_flag once_[2];
+  mutable std::once_flag once_[2], tri_once_, edge_once_;
   mutable std::shared_ptr<const ShapeSide> side_[2];
+  mutable std::vector<polygon2::TriangleIds> tri_;
+  mutable std::shared_ptr<const BoxTree> edge_;
 };
 
 }  // namespace pendepth::nonconvex2

@@ -128,7 +128,7 @@ double cut_value(const Cut& c, const Vec2& t, const Vec2& d) {
   return exact::accurate_ratio([&](auto L) { return cut_num(c, t, L); }, [&](auto L) { return cut_den(c, d, L); });
 }
 
-ConvolvedTriangles::ConvolvedTriangles(const Polygon& P, const ConvexPolygon& Q) {
+ConvolvedTriangles::ConvolvedTriangles(const Polygon& P, const ConvexPolygon& Q, const std::vector<TriangleIds>* tris) {
   const std::size_t m = Q.size();
   q_top_ = Q.top();
   b_.resize(m);
@@ -173,7 +173,9 @@ ConvolvedTriangles::ConvolvedTriangles(const Polygon& P, const ConvexPolygon& Q)
     }
   };
   auto lower_left = [](const Vec2& a, const Vec2& l) { return a.y() < l.y() || (a.y() == l.y() && a.x() < l.x()); };
-  for (const TriangleIds& ids : triangulate(P)) {
+  std::vector<TriangleIds> own;
+  if (!tris) tris = &(own = triangulate(P));
+  for (const TriangleIds& ids : *tris) {  // rotated to normal form below (idempotent)
     Tri T;
     int low = 0;
     for (int j = 1; j < 3; ++j)

@@ -49,8 +49,10 @@ struct LineDir {
 
 class ConvolvedTriangles {
  public:
-  /// Triangulates P and builds the implicit R_i. O(N log N + N log m).
-  ConvolvedTriangles(const Polygon& P, const ConvexPolygon& Q);
+  /// Triangulates P (or takes `tris`, a triangulation of P: triangulate(P)'s triangles in its
+  /// order, each possibly rotated — the per-shape one, src/front/shape2_data.hpp) and builds the
+  /// implicit R_i. O(N log N + N log m); O(N log m) given the triangles.
+  ConvolvedTriangles(const Polygon& P, const ConvexPolygon& Q, const std::vector<TriangleIds>* tris = nullptr);
 
   std::size_t size() const { return tri_.size(); }
   /// Vertices of B = −Q: b_j = −Q[(Q.top() + j) mod m].

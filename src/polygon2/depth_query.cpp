@@ -14,6 +14,8 @@ void require_finite(const Vec2& v, const char* what) {
 }  // namespace
 
 PolygonDepth2::PolygonDepth2(const Polygon& P, const ConvexPolygon& Q) : impl_(std::make_unique<Impl>(P, Q)) {}
+PolygonDepth2::PolygonDepth2(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+PolygonDepth2 polygon_depth_from_impl(std::unique_ptr<PolygonDepth2::Impl> impl) { return PolygonDepth2(std::move(impl)); }
 const PolygonDepth2::Impl& polygon_depth_impl(const PolygonDepth2& pd) { return *pd.impl_; }
 PolygonDepth2::~PolygonDepth2() = default;
 PolygonDepth2::PolygonDepth2(PolygonDepth2&&) noexcept = default;

@@ -13,8 +13,13 @@ struct PolygonDepth2::Impl {
   ConvexPolygon Q;
   polygon2::ConvolvedTriangles R;
   polygon2::UnionBoundary U;  ///< refers to P and R above (Impl is never moved: held by unique_ptr)
-  Impl(const Polygon& p, const ConvexPolygon& q) : P(p), Q(q), R(P, Q), U(P, R) {}
+  /// `tris`: P's triangulation when already made (ConvolvedTriangles), else triangulated here.
+  Impl(const Polygon& p, const ConvexPolygon& q, const std::vector<polygon2::TriangleIds>* tris = nullptr)
+      : P(p), Q(q), R(P, Q, tris), U(P, R) {}
 };
+
+/// Internal (src/front/pair2.cpp): wraps a built Impl (one made from a shape's shared triangulation).
+PolygonDepth2 polygon_depth_from_impl(std::unique_ptr<PolygonDepth2::Impl> impl);
 
 const PolygonDepth2::Impl& polygon_depth_impl(const PolygonDepth2& pd);
 
