@@ -38,6 +38,10 @@ struct MixedPair {
   TriTree tree;
   /// The reference path: every triangle scanned, no tree (tests compare the two bit for bit).
   bool linear = false;
+  /// S a segment (mesh_segment.cpp): its end points `seg` (engine frame, scaled as the triangles
+  /// above, which it also uses); the pieces too, for distance, cast and σ's lower bound.
+  bool segment = false;
+  std::array<Vec3, 2> seg{};
   /// The point path's numeric domain (src/front/scale.hpp): its data above are the input × 2^-e,
   /// poses are converted in and answers scaled back (the piece pairs scale themselves).
   int scale_exp = 0;
@@ -61,6 +65,11 @@ Depth3 point_along(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q,
 Depth3 point_minimum(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q);
 Distance3 point_distance(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q);
 Cast3 point_cast(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3& d);
+// S a segment (mesh_segment.cpp): O = {v : (S + v) ∩ int P ≠ ∅} decided on the mesh's
+// triangles with exact rationals (the pieces' union misses S lying in a shared internal face).
+bool segment_overlapping(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q);
+Depth3 segment_along(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3& d, bool separation);
+
 /// Is the triangle of zero area (its three vertices collinear, exactly)?
 bool point_zero_area(const std::array<Vec3, 3>& T);
 
