@@ -295,6 +295,31 @@ TEST(MeshSegment, RotatedSamplesAndTree) {
   EXPECT_GE(agree, n * 9 / 10) << "sampling should see nearly every overlap";
 }
 
+// The numeric domain (src/front/scale.hpp): the comb and segment scaled by 2^±300 give the same
+// answers scaled (the triangles' path is scaled into the engine's band, the pieces scale
+// themselves).
+TEST(MeshSegment, HugeAndTinyScale) {
+  for (const int e : {300, -300}) {
+    Gen g = polycube(kComb);
+    for (Vec3& v : g.points) v = std::ldexp(1.0, e) * v;
+    const Shape3 mesh = mesh_of(g, "comb");
+    auto S = [&](double x) { return std::ldexp(x, e); };
+    const Pair3 p(mesh, Shape3::segment(Vec3(S(0.5), S(1.5), S(0.5)), Vec3(S(1.5), S(1.5), S(0.5)), "seg"));
+    EXPECT_TRUE(p.overlapping(Pose3(), Pose3()));
+    EXPECT_EQ(p.along(Pose3(), Pose3(), Vec3(1, 0, 0)).depth, S(0.5));
+    EXPECT_EQ(p.along(Pose3(), Pose3(), Vec3(0, -1, 0)).depth, S(1.5));
+    EXPECT_EQ(p.minimum(Pose3(), Pose3()).upper_bound, S(0.5));
+    EXPECT_FALSE(p.overlapping(Pose3(), Pose3(Vec3(S(0.5), 0, 0))));
+    const Pair3 fit(mesh, Shape3::segment(Vec3(S(1), S(1.5), S(0.5)), Vec3(S(2), S(1.5), S(0.5)), "seg"));
+    EXPECT_FALSE(fit.overlapping(Pose3(), Pose3()));
+    EXPECT_EQ(fit.signed_distance(Pose3(), Pose3()).distance, 0.0);
+    EXPECT_EQ(Pair3(Shape3::segment(Vec3(S(0.5), S(1.5), S(0.5)), Vec3(S(1.5), S(1.5), S(0.5)), "seg"), mesh)
+                  .along(Pose3(), Pose3(Vec3(0, 0, S(0.25))), Vec3(0, 0, -1))
+                  .depth,
+              S(0.75));  // the mesh moves down: the segment leaves through the comb's top (z = 1)
+  }
+}
+
 TEST(MeshSegment, FlatPolygonStillRefused) {
   const Shape3 mesh = mesh_of(polycube(kComb), "comb");
   try {
