@@ -66,7 +66,7 @@ def test_mesh_against_point_and_sphere(tmp_path):
     seg = pendepth.Pair3(mesh, pendepth.Shape3.segment([1.0, 0.25, 0.5], [1.0, 0.75, 0.5]))
     assert seg.overlapping([0.0, 0.0, 0.0])
     assert seg.along([0.0, 0.0, 0.0], [0.0, 0.0, 1.0]).depth == 0.5
-    assert not seg.overlapping([0.5, 0.75, 0.0])  # on the face y = 1 of voxel (1, 0, 0)
+    assert not seg.overlapping([0.5, 0.75, 0.0])  # outside the L, one end on the face y = 1
     assert seg.signed_distance([0.5, 0.75, 0.0]).distance == 0.0
     with pytest.raises(pendepth.InvalidInput, match="flat polygon"):
         pendepth.Pair3(mesh, pendepth.Shape3.flat([[0, 0, 0], [1, 0, 0], [0, 1, 0]]))
