@@ -254,11 +254,14 @@ Depth3 segment_along(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_
   auto in_o = [&](const FT& mu) { return seg_overlap(m, f.A + mu * dv, f.B + mu * dv); };
   const Cand* pick = nullptr;
   if (!separation) {
+    FT last(0);  // the last μ tested (in O): equal candidates are tested once
     for (const Cand& k : c) {
-      if (!(k.mu > 0) || (pick && k.mu == pick->mu)) continue;
-      pick = &k;
-      if (!in_o(k.mu)) break;
-      pick = nullptr;
+      if (!(k.mu > last)) continue;
+      if (!in_o(k.mu)) {
+        pick = &k;
+        break;
+      }
+      last = k.mu;
     }
     if (!pick) throw std::logic_error("mesh segment σ_d: the ray does not leave O (O is bounded)");
   } else {
