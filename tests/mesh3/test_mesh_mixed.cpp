@@ -361,7 +361,7 @@ TEST(MeshMixed, HugeAndTinyScale) {
 
 TEST(MeshMixed, BatchesEqualSinglesAndErrors) {
   const Shape3 mesh = mesh_of(polycube(comb(3)), "comb");
-  for (const Shape3& s : {Shape3::sphere(0.4), Shape3::point(Vec3(0, 0, 0))}) {
+  for (const Shape3& s : {Shape3::sphere(0.4), Shape3::point(Vec3(0, 0, 0)), Shape3::segment(Vec3(0, 0, 0), Vec3(0.75, 0.5, 0.25))}) {
     const Pair3 pair(mesh, s);
     std::mt19937_64 rng(3);
     std::uniform_real_distribution<double> U(-0.5, 4);
