@@ -176,6 +176,7 @@ MixedPair MixedPair::make(const Shape3& P, const Shape3& Q) {
     // pair scales itself) answer distance, cast and σ's lower bound
     m.segment = true;
     m.seg = {in(fs.v[0], other.name() + " end point:"), in(fs.v[1], other.name() + " end point:")};
+    m.seg_tri = segment_triangles(m);
   }
   bool exact = true;
   const std::vector<ConvexPolytope> pieces = pieces_of(mesh, exact);

@@ -46,6 +46,13 @@
 #include <stdexcept>
 
 namespace pendepth::mesh3 {
+
+// The mesh's triangles as exact points, built once per pair (CGAL's lazy points from doubles:
+// their exact values are computed on demand under a once-flag, safe to share between threads).
+struct SegmentTriangles {
+  std::vector<std::array<CGAL::Epeck::Point_3, 3>> T;
+};
+
 namespace {
 
 using K = CGAL::Epeck;
@@ -92,7 +99,8 @@ double dbl(const FT& x) {
 }
 Vec3 approx(const P3& p) { return Vec3(dbl(p.x()), dbl(p.y()), dbl(p.z())); }
 P3 pt(const Vec3& v) { return P3(v[0], v[1], v[2]); }
-K::Triangle_3 tri(const MixedPair& m, std::size_t t) { return {pt(m.tri[t][0]), pt(m.tri[t][1]), pt(m.tri[t][2])}; }
+const std::array<P3, 3>& tp3(const MixedPair& m, std::size_t t) { return m.seg_tri->T[t]; }
+K::Triangle_3 tri(const MixedPair& m, std::size_t t) { return {tp3(m, t)[0], tp3(m, t)[1], tp3(m, t)[2]}; }
 
 // A margin far above the rounding of approx() (exact value to double: 1 ulp) for box tests.
 double margin(const Vec3& c, double h) { return 0x1p-30 * (c.norm() + h) + 0x1p-1000; }
@@ -139,7 +147,7 @@ bool parity_inside(const MixedPair& m, const P3& X) {
       bool inside = false, degenerate = false;
       along_ray(m, xa, 0, d, [&](std::size_t t) {
         if (degenerate || m.tri_zero[t]) return;
-        const P3 T0 = pt(m.tri[t][0]), T1 = pt(m.tri[t][1]), T2 = pt(m.tri[t][2]);
+        const P3 &T0 = tp3(m, t)[0], &T1 = tp3(m, t)[1], &T2 = tp3(m, t)[2];
         const int den = CGAL::orientation(T0, T1, T2, T0 + dv);
         const int sx = CGAL::orientation(T0, T1, T2, X);
         if (den == 0) {
@@ -221,7 +229,7 @@ std::vector<Cand> candidates(const MixedPair& m, const Frame& f) {
   const Vec3 a = approx(f.A), b = approx(f.B);
   along_ray(m, 0.5 * (a + b), 0.5 * (a - b).cwiseAbs().maxCoeff(), f.d, [&](std::size_t t) {
     if (m.tri_zero[t]) return;
-    const P3 T[3] = {pt(m.tri[t][0]), pt(m.tri[t][1]), pt(m.tri[t][2])};
+    const auto& T = tp3(m, t);
     shoot(f.A, T[0], T[1], T[2]);  // v ∈ T − A: the end A on the triangle
     shoot(f.B, T[0], T[1], T[2]);
     for (int e = 0; e < 3; ++e) {  // v ∈ e ⊕ [−B, −A]: the segment through the edge
@@ -236,6 +244,13 @@ std::vector<Cand> candidates(const MixedPair& m, const Frame& f) {
 }
 
 }  // namespace
+
+std::shared_ptr<const SegmentTriangles> segment_triangles(const MixedPair& m) {
+  auto s = std::make_shared<SegmentTriangles>();
+  s->T.reserve(m.tri.size());
+  for (const auto& t : m.tri) s->T.push_back({pt(t[0]), pt(t[1]), pt(t[2])});
+  return s;
+}
 
 bool segment_overlapping(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
   const Frame f = frame(m, pose_p, pose_q, nullptr);
