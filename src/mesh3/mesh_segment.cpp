@@ -31,6 +31,7 @@
 // The box tree over the triangles (tri_tree.hpp) prunes: segment tests visit the triangles whose
 // box meets the segment's box, the ray the triangles whose box, grown by the segment box's half
 // extent, the ray from its centre meets (a superset of the polygons the exact ray can meet).
+// The triangles' exact points are built once per pair (SegmentTriangles, shared by the queries).
 // Cost: per overlap test O(log T + k) exact segment–triangle tests and one parity ray; σ_d: the
 // candidates along the ray (k' polygons) plus one overlap test per candidate up to the exit.
 #include "mesh3/mesh_mixed.hpp"
@@ -130,8 +131,8 @@ bool on_surface(const MixedPair& m, const P3& X) {
 }
 
 // Ray parity for a rational point on no triangle (mesh_point.cpp's parity_inside, on exact
-// orientations): per triangle of nonzero area, the ray X + μ d crosses its plane at μ > 0 iff X
-// and X + d... lie so that orient(T, X) and orient(T0, T1, T2, T0 + d) have opposite signs; then
+// orientations): per triangle of nonzero area, the ray X + μ d crosses its plane at μ > 0 iff
+// orient(T0, T1, T2, X) and orient(T0, T1, T2, T0 + d) are nonzero with opposite signs; then
 // the three orientations (X, X + d, T_e, T_e+1) decide: all nonzero and equal, a proper crossing;
 // of both signs, a miss; else (through an edge or vertex) degenerate. In the plane: degenerate.
 bool parity_inside(const MixedPair& m, const P3& X) {
