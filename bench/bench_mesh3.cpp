@@ -281,11 +281,13 @@ void BM_MeshHullError(benchmark::State& st) {
   st.counters["hull_says_overlap_when_apart"] = false_hits;
 }
 
-// A mesh against a point (its signed distance field: src/mesh3/mesh_point.cpp) or a sphere of
-// radius 0.4 (the piece walk: src/mesh3/mesh_mixed.cpp): µs per query. Args: mesh case (1 comb of
-// 8 teeth, 2 comb of 32, 4 torus 16 × 8 — points only: its rounded decomposition has pieces too
-// thin for the rounded-shape engine), shape (0 point, 1 sphere), query (0 signed distance, 1 σ_d,
-// 2 σ, 3 cast; 100 a fine torus 64 × 32 = 4096 triangles, points only). Translations uniform in the
+// A mesh against a point (its signed distance field: src/mesh3/mesh_point.cpp), a sphere of
+// radius 0.4 (the piece walk: src/mesh3/mesh_mixed.cpp) or a segment of length ~1.2 (exact
+// rationals on the triangles: src/mesh3/mesh_segment.cpp): µs per query. Args: mesh case (1 comb
+// of 8 teeth, 2 comb of 32, 4 torus 16 × 8 — points only: its rounded decomposition has pieces too
+// thin for the flat and rounded-shape engines), shape (0 point, 1 sphere, 2 segment), query (0
+// signed distance, 1 σ_d, 2 σ, 3 cast, 4 overlap; 100 a fine torus 64 × 32 = 4096 triangles,
+// points only). Translations uniform in the
 // mesh's box (about half inside), random directions.
 constexpr std::size_t kFineTorus = 100;
 io::MeshFile mixed_mesh(std::size_t mesh) { return mesh == kFineTorus ? torus(64, 32) : mesh_cases()[mesh].p; }
@@ -304,7 +306,9 @@ const Mixed& mixed(std::size_t mesh, int shape) {
   auto& e = cache[{mesh, shape}];
   if (!e) {
     const pendepth::Mesh3 m = pendepth::Mesh3::validate(mixed_mesh(mesh), "P");
-    const pendepth::Shape3 s = shape == 0 ? pendepth::Shape3::point(Vec3::Zero()) : pendepth::Shape3::sphere(0.4);
+    const pendepth::Shape3 s = shape == 0   ? pendepth::Shape3::point(Vec3::Zero())
+                               : shape == 1 ? pendepth::Shape3::sphere(0.4)
+                                            : pendepth::Shape3::segment(Vec3(-0.5, -0.3, -0.2), Vec3(0.5, 0.3, 0.2));
     e.reset(new Mixed{pendepth::Pair3(pendepth::Shape3::from_mesh(m), s), {}, {}});
     Vec3 lo = m.points()[0], hi = lo;
     for (const Vec3& v : m.points()) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
@@ -328,10 +332,12 @@ void BM_MeshMixed(benchmark::State& st) {
     if (query == 0) benchmark::DoNotOptimize(x.pair.signed_distance(id, x.poses[k]));
     else if (query == 1) benchmark::DoNotOptimize(x.pair.along(id, x.poses[k], x.dirs[k]));
     else if (query == 2) benchmark::DoNotOptimize(x.pair.minimum(id, x.poses[k]));
-    else benchmark::DoNotOptimize(x.pair.cast(id, x.poses[k], x.dirs[k]));
+    else if (query == 3) benchmark::DoNotOptimize(x.pair.cast(id, x.poses[k], x.dirs[k]));
+    else benchmark::DoNotOptimize(x.pair.overlapping(id, x.poses[k]));
   }
-  static const char* q[] = {"distance", "along", "minimum", "cast"};
-  st.SetLabel(mixed_name(mesh) + (shape ? "_sphere_" : "_point_") + q[query]);
+  static const char* q[] = {"distance", "along", "minimum", "cast", "overlap"};
+  static const char* sh[] = {"_point_", "_sphere_", "_segment_"};
+  st.SetLabel(mixed_name(mesh) + sh[shape] + q[query]);
   int over = 0;
   for (const auto& pose : x.poses) over += x.pair.overlapping(id, pose);
   st.counters["overlapping"] = over;
@@ -354,8 +360,9 @@ BENCHMARK(BM_MeshMinimumBoundsDescent)->Apply(mesh_args);
 BENCHMARK(BM_MeshHullError)->Apply(mesh_args);
 BENCHMARK(BM_MeshMixed)
     ->Apply([](benchmark::internal::Benchmark* b) {
-      for (const auto& [mesh, shape] : {std::pair<int, int>{1, 0}, {4, 0}, {static_cast<int>(kFineTorus), 0}, {1, 1}, {2, 1}})
-        for (int q = 0; q < 4; ++q) b->Args({mesh, shape, q});
+      for (const auto& [mesh, shape] :
+           {std::pair<int, int>{1, 0}, {4, 0}, {static_cast<int>(kFineTorus), 0}, {1, 1}, {2, 1}, {1, 2}, {2, 2}})
+        for (int q = 0; q < 5; ++q) b->Args({mesh, shape, q});
     })
     ->Unit(benchmark::kMicrosecond);
 

@@ -398,9 +398,10 @@ class WarmStart3 {
 /// (src/mesh3/mesh_mixed.hpp, docs/design.md): a point is answered exactly on the mesh's triangles
 /// (its signed distance field; features of the mesh none, pieces −1); the other shapes by one
 /// convex pair per piece — σ_d by a walk over overlap tests (moving by the answer separates),
-/// brackets as their convex pairs', σ as bounds. A segment or flat polygon against a non-convex
-/// mesh is InvalidInput: the pieces' union is not O for a non-solid Q (the faces the pieces share
-/// lie inside the mesh), and no method on the mesh's own faces exists for them yet (issue 17).
+/// brackets as their convex pairs', σ as bounds. A segment: overlap and σ_d exact on the mesh's
+/// triangles in rationals (src/mesh3/mesh_segment.cpp: the pieces' union misses a segment lying
+/// in a face two pieces share), distance and cast by the pieces, σ as bounds. A flat polygon
+/// against a non-convex mesh is InvalidInput (the same shared-face problem; not built).
 /// Costs: docs/benchmarks.md.
 class Pair3 {
  public:

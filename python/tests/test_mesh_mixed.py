@@ -1,5 +1,5 @@
-"""A non-convex mesh against a point and a sphere through Pair3 (src/mesh3/mesh_mixed.cpp,
-mesh_point.cpp): closed forms on an L of five unit voxels, both roles, batches."""
+"""A non-convex mesh against a point, a segment and a sphere through Pair3 (src/mesh3/mesh_mixed.cpp,
+mesh_point.cpp, mesh_segment.cpp): closed forms on an L of five unit voxels, both roles, batches."""
 import numpy as np
 import pytest
 
@@ -61,5 +61,12 @@ def test_mesh_against_point_and_sphere(tmp_path):
     batch = field.signed_distance(ts)
     assert list(batch.overlapping) == [True, False, False]
     assert [field.signed_distance(t).distance for t in ts] == list(batch.distance)
-    with pytest.raises(pendepth.InvalidInput, match="segment or flat polygon"):
-        pendepth.Pair3(mesh, pendepth.Shape3.segment([0, 0, 0], [1, 0, 0]))
+    # A segment (src/mesh3/mesh_segment.cpp): in the face x = 1 inside the L (overlapping), on the
+    # surface (touching); a flat polygon is still refused.
+    seg = pendepth.Pair3(mesh, pendepth.Shape3.segment([1.0, 0.25, 0.5], [1.0, 0.75, 0.5]))
+    assert seg.overlapping([0.0, 0.0, 0.0])
+    assert seg.along([0.0, 0.0, 0.0], [0.0, 0.0, 1.0]).depth == 0.5
+    assert not seg.overlapping([0.5, 0.75, 0.0])  # outside the L, one end on the face y = 1
+    assert seg.signed_distance([0.5, 0.75, 0.0]).distance == 0.0
+    with pytest.raises(pendepth.InvalidInput, match="flat polygon"):
+        pendepth.Pair3(mesh, pendepth.Shape3.flat([[0, 0, 0], [1, 0, 0], [0, 1, 0]]))

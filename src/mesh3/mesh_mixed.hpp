@@ -16,9 +16,12 @@
 #include "mesh3/tri_tree.hpp"
 
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace pendepth::mesh3 {
+
+struct SegmentTriangles;  // mesh_segment.cpp: the triangles as CGAL exact points
 
 struct MixedPair {
   std::vector<Pair3> pieces;     ///< piece pair i: (K_i, S) when the mesh is P, (S, K_i) when it is Q
@@ -38,6 +41,11 @@ struct MixedPair {
   TriTree tree;
   /// The reference path: every triangle scanned, no tree (tests compare the two bit for bit).
   bool linear = false;
+  /// S a segment (mesh_segment.cpp): its end points `seg` (engine frame, scaled as the triangles
+  /// above, which it also uses); the pieces too, for distance, cast and σ's lower bound.
+  bool segment = false;
+  std::array<Vec3, 2> seg{};
+  std::shared_ptr<const SegmentTriangles> seg_tri;  ///< the triangles as exact points, built once
   /// The point path's numeric domain (src/front/scale.hpp): its data above are the input × 2^-e,
   /// poses are converted in and answers scaled back (the piece pairs scale themselves).
   int scale_exp = 0;
@@ -61,6 +69,12 @@ Depth3 point_along(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q,
 Depth3 point_minimum(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q);
 Distance3 point_distance(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q);
 Cast3 point_cast(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3& d);
+// S a segment (mesh_segment.cpp): O = {v : (S + v) ∩ int P ≠ ∅} decided on the mesh's
+// triangles with exact rationals (the pieces' union misses S lying in a shared internal face).
+std::shared_ptr<const SegmentTriangles> segment_triangles(const MixedPair& m);
+bool segment_overlapping(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q);
+Depth3 segment_along(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3& d, bool separation);
+
 /// Is the triangle of zero area (its three vertices collinear, exactly)?
 bool point_zero_area(const std::array<Vec3, 3>& T);
 

@@ -286,7 +286,7 @@ TEST_F(CliMesh, HullFlagOnEveryCommand) {
   }
 }
 
-// A non-convex mesh against a point or a primitive (src/mesh3/mesh_mixed.cpp), either role: every
+// A non-convex mesh against a point, a segment or a primitive (src/mesh3/mesh_mixed.cpp), either role: every
 // command but --generalized answers (exit 0), the JSON is the library's Pair3 answer.
 TEST_F(CliMesh, MeshAgainstPointAndPrimitives) {
   const std::string l = write("L.obj", mesh3_test::write_obj(mesh3_test::polycube(mesh3_test::l_block())));
@@ -307,10 +307,21 @@ TEST_F(CliMesh, MeshAgainstPointAndPrimitives) {
   EXPECT_GT(js["depth"].get<double>(), 0);
   const auto jd = nlohmann::json::parse(run3("distance", l, "point:0.5,0.5,0.5", "--offset 0.3,-0.2,0.1 --json").out);
   EXPECT_EQ(jd["distance"].get<double>(), pair.signed_distance(Pose3(), at).distance);
-  // Segments against a non-convex mesh: exit 2, one line naming the problem.
-  const Result seg = run3("depth", l, "segment:0,0,0,1,1,1", "");
-  EXPECT_EQ(seg.status, 2);
-  EXPECT_NE(seg.err.find("segment or flat polygon"), std::string::npos) << seg.err;
+  // A segment (src/mesh3/mesh_segment.cpp): the JSON is the library's answer, both roles.
+  const std::string sq = "segment:0.25,0.5,0.5,1.25,0.5,0.5";
+  const Pair3 sp(Shape3::from_file(l, "P"), Shape3::segment(Vec3(0.25, 0.5, 0.5), Vec3(1.25, 0.5, 0.5)));
+  const auto ss = nlohmann::json::parse(run3("depth", l, sq, "--offset 0.3,-0.2,0.1 --direction 1,0.5,-0.25 --json").out);
+  EXPECT_EQ(ss["depth"].get<double>(), sp.along(Pose3(), at, Vec3(1, 0.5, -0.25)).depth);
+  EXPECT_GT(ss["depth"].get<double>(), 0);
+  const auto sd = nlohmann::json::parse(run3("distance", l, sq, "--offset 0,1.5,0 --json").out);
+  EXPECT_EQ(sd["distance"].get<double>(), sp.signed_distance(Pose3(), Pose3(Vec3(0, 1.5, 0))).distance);
+  for (const auto& [cmd, args] : commands()) {
+    if (args.find("--generalized") != std::string::npos) continue;
+    for (const bool swap : {false, true}) {
+      const Result r = swap ? run3(cmd, sq, l, args) : run3(cmd, l, sq, args);
+      EXPECT_EQ(r.status, 0) << sq << " " << cmd << " " << args << ": " << r.err;
+    }
+  }
 }
 
 }  // namespace

@@ -1,0 +1,305 @@
+// Pair3 on a non-convex mesh P against a segment S = [a, b], in either role (issue 16 item 4 on
+// the meshes of issue 17; contract in mesh_mixed.hpp). O = {v : (S + v) ∩ int P ≠ ∅}, open.
+//
+// The union of the convex pieces' sums is not O for a segment: S lying in a face shared by two
+// pieces is inside int P but in no open piece sum. So overlap and σ_d are decided on the mesh's
+// own triangles, with exact rationals (CGAL Epeck: lazy GMP rationals with interval filters).
+// A, B are the exact placed end points in the mesh's frame, A = R a + tq − tp (R, tq, tp the
+// relative pose in doubles, as the point path mesh_point.cpp); everything below is exact on them.
+//
+//   inside(X)  X ∈ int P for a rational point X: on no closed triangle (exact has_on) and an odd
+//              number of proper crossings of a ray X + μ·d, μ > 0 (d on the moment curve
+//              (q², pq, p²) as mesh_point.cpp's parity; a ray through an edge or vertex, or in a
+//              triangle's plane, is detected by exact orientations and the next direction tried).
+//   overlap    the parameters λ ∈ [0, 1] where [A, B] meets a closed triangle (CGAL's exact
+//              segment–triangle intersection: a point, or the two ends of a coplanar overlap) are
+//              the ends of the components of {λ : A + λ(B − A) ∈ ∂P} (each triangle contributes a
+//              closed interval); between two consecutive distinct ones (with 0 and 1) the point
+//              misses ∂P, so it is in int P throughout or nowhere: overlap ⇔ some such midpoint
+//              is inside. (The λ themselves lie on ∂P and are never interior.)
+//   σ_d        ∂O ⊆ (∂P − A) ∪ (∂P − B) ∪ ⋃_edges e (e ⊕ [−B, −A]): translated triangles and
+//              parallelograms (split into two triangles; an edge parallel to S gives a segment,
+//              covered by the parallelograms of the other edges at its end vertices). The ray
+//              v = μ·d' (d' the direction in the mesh's frame, negated when the mesh moves)
+//              meets them at exact μ (a point, or both ends of a coplanar overlap); between
+//              consecutive candidates the ray does not cross ∂O, so membership is constant. From
+//              v = 0 ∈ O (open) the exit is the first candidate μ > 0 with S + μ d' not
+//              overlapping (exact test above); each candidate found in O carries the next open
+//              stretch into O. separation: the end of the last stretch whose midpoint is in O.
+//              The answer is RN(μ) · |d'| (as the point path; exact when d' is a unit axis and
+//              μ a double, else within ~1 ulp: the rounded exit may lie just inside O).
+// The box tree over the triangles (tri_tree.hpp) prunes: segment tests visit the triangles whose
+// box meets the segment's box, the ray the triangles whose box, grown by the segment box's half
+// extent, the ray from its centre meets (a superset of the polygons the exact ray can meet).
+// The triangles' exact points are built once per pair (SegmentTriangles, shared by the queries).
+// Cost: per overlap test O(log T + k) exact segment–triangle tests and one parity ray; σ_d: the
+// candidates along the ray (k' polygons) plus one overlap test per candidate up to the exit.
+#include "mesh3/mesh_mixed.hpp"
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/intersections.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+
+namespace pendepth::mesh3 {
+
+// The mesh's triangles as exact points, built once per pair (CGAL's lazy points from doubles:
+// their exact values are computed on demand under a once-flag, safe to share between threads).
+struct SegmentTriangles {
+  std::vector<std::array<CGAL::Epeck::Point_3, 3>> T;
+};
+
+namespace {
+
+using K = CGAL::Epeck;
+using FT = K::FT;
+using P3 = K::Point_3;
+using V3 = K::Vector_3;
+
+struct Frame {
+  Eigen::Matrix3d Rm;  // the mesh's rotation and translation (world)
+  Vec3 tm;
+  Vec3 d;              // the ray's direction in the mesh's frame (doubles, exact as given)
+  P3 A, B;             // the exact placed end points
+};
+
+P3 place(const Eigen::Matrix3d& R, const Vec3& p, const Vec3& tq, const Vec3& tp) {
+  FT c[3];
+  for (int i = 0; i < 3; ++i) c[i] = FT(R(i, 0)) * p[0] + FT(R(i, 1)) * p[1] + FT(R(i, 2)) * p[2] + FT(tq[i]) - FT(tp[i]);
+  return P3(c[0], c[1], c[2]);
+}
+
+Frame frame(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3* d) {
+  const Pose3& pm = m.mesh_is_p ? pose_p : pose_q;
+  const Pose3& po = m.mesh_is_p ? pose_q : pose_p;
+  Frame f;
+  f.Rm = pm.matrix();
+  f.tm = pm.translation;
+  const Eigen::Matrix3d R = f.Rm.transpose() * po.matrix();
+  const Vec3 tq = f.Rm.transpose() * po.translation, tp = f.Rm.transpose() * pm.translation;
+  f.A = place(R, m.seg[0], tq, tp), f.B = place(R, m.seg[1], tq, tp);
+  if (d) {
+    f.d = f.Rm.transpose() * *d;
+    if (!m.mesh_is_p) f.d = -f.d;  // the mesh moves along d: the segment, relatively, along −d
+    if (f.d == Vec3::Zero()) throw InvalidInput("direction: underflows to zero in the mesh's frame");
+  }
+  return f;
+}
+
+// The double nearest to the exact x (gmpxx's get_d truncates: compare the two neighbours exactly).
+double dbl(const FT& x) {
+  const mpq_class& e = x.exact();
+  const double t = e.get_d();
+  const double n = std::nextafter(t, e > 0 ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity());
+  return std::isfinite(n) && abs(e - mpq_class(n)) < abs(e - mpq_class(t)) ? n : t;
+}
+Vec3 approx(const P3& p) { return Vec3(dbl(p.x()), dbl(p.y()), dbl(p.z())); }
+P3 pt(const Vec3& v) { return P3(v[0], v[1], v[2]); }
+const std::array<P3, 3>& tp3(const MixedPair& m, std::size_t t) { return m.seg_tri->T[t]; }
+K::Triangle_3 tri(const MixedPair& m, std::size_t t) { return {tp3(m, t)[0], tp3(m, t)[1], tp3(m, t)[2]}; }
+
+// A margin far above the rounding of approx() (exact value to double: 1 ulp) for box tests.
+double margin(const Vec3& c, double h) { return 0x1p-30 * (c.norm() + h) + 0x1p-1000; }
+
+// Visits the triangles whose box meets the box [c − h, c + h] (componentwise, grown by a margin).
+template <class F>
+void near_box(const MixedPair& m, const Vec3& c, double h, F&& visit) {
+  if (m.linear) {
+    for (std::size_t t = 0; t < m.tri.size(); ++t) visit(t);
+  } else {
+    m.tree.near_point(c, h + margin(c, h), [&](std::uint32_t t) { visit(t); });
+  }
+}
+template <class F>
+void along_ray(const MixedPair& m, const Vec3& c, double h, const Vec3& d, F&& visit) {
+  if (m.linear) {
+    for (std::size_t t = 0; t < m.tri.size(); ++t) visit(t);
+  } else {
+    m.tree.along_ray(c, d, h + margin(c, h), [&](std::uint32_t t) { visit(t); });
+  }
+}
+
+bool on_surface(const MixedPair& m, const P3& X) {
+  bool on = false;
+  near_box(m, approx(X), 0, [&](std::size_t t) { on = on || (!m.tri_zero[t] && tri(m, t).has_on(X)); });
+  return on;
+}
+
+// Ray parity for a rational point on no triangle (mesh_point.cpp's parity_inside, on exact
+// orientations): per triangle of nonzero area, the ray X + μ d crosses its plane at μ > 0 iff
+// orient(T0, T1, T2, X) and orient(T0, T1, T2, T0 + d) are nonzero with opposite signs; then
+// the three orientations (X, X + d, T_e, T_e+1) decide: all nonzero and equal, a proper crossing;
+// of both signs, a miss; else (through an edge or vertex) degenerate. In the plane: degenerate.
+bool parity_inside(const MixedPair& m, const P3& X) {
+  const Vec3 xa = approx(X);
+  for (long qi = 8192; qi >= 4096; --qi)
+    for (long k = 0; k < 23000; ++k) {
+      const long pi = 5217 + 2897 * k;
+      if (std::gcd(pi, qi) != 1) continue;
+      const double p = static_cast<double>(pi), q = static_cast<double>(qi);
+      const Vec3 d(q * q, p * q, p * p);
+      const V3 dv(d[0], d[1], d[2]);
+      const P3 Y = X + dv;
+      bool inside = false, degenerate = false;
+      along_ray(m, xa, 0, d, [&](std::size_t t) {
+        if (degenerate || m.tri_zero[t]) return;
+        const P3 &T0 = tp3(m, t)[0], &T1 = tp3(m, t)[1], &T2 = tp3(m, t)[2];
+        const int den = CGAL::orientation(T0, T1, T2, T0 + dv);
+        const int sx = CGAL::orientation(T0, T1, T2, X);
+        if (den == 0) {
+          degenerate = sx == 0;  // the ray in the triangle's plane
+          return;
+        }
+        if (sx == 0 || sx == den) return;  // the plane holds X (X on no triangle) or is behind
+        const P3* T[3] = {&T0, &T1, &T2};
+        int pos = 0, neg = 0;
+        for (int e = 0; e < 3; ++e) {
+          const int s = CGAL::orientation(X, Y, *T[e], *T[(e + 1) % 3]);
+          pos += s > 0, neg += s < 0;
+        }
+        if (pos > 0 && neg > 0) return;
+        if (pos + neg < 3) {
+          degenerate = true;
+          return;
+        }
+        inside = !inside;
+      });
+      if (!degenerate) return inside;
+    }
+  throw std::logic_error("mesh segment: no non-degenerate parity ray among ~9e7 directions");
+}
+
+bool inside(const MixedPair& m, const P3& X) { return !on_surface(m, X) && parity_inside(m, X); }
+
+// CGAL 5's intersection results are boost::variant (std::variant from CGAL 6 on).
+// Adds the points of an exact intersection result (a point, or a segment's two ends) to `out`.
+template <class R, class F>
+void points_of(const R& r, F&& add) {
+  if (!r) return;
+  if (const P3* p = boost::get<P3>(&*r)) add(*p);
+  else if (const K::Segment_3* s = boost::get<K::Segment_3>(&*r)) add(s->source()), add(s->target());
+}
+
+// Does [A, B] meet int P? (file comment)
+bool seg_overlap(const MixedPair& m, const P3& A, const P3& B) {
+  if (A == B) return inside(m, A);
+  const V3 AB = B - A;
+  const FT L = AB.squared_length();
+  const K::Segment_3 S(A, B);
+  std::vector<FT> lam{FT(0), FT(1)};
+  const Vec3 a = approx(A), b = approx(B);
+  near_box(m, 0.5 * (a + b), 0.5 * (a - b).cwiseAbs().maxCoeff(), [&](std::size_t t) {
+    if (m.tri_zero[t]) return;
+    const K::Triangle_3 T = tri(m, t);
+    if (!CGAL::do_intersect(S, T)) return;
+    points_of(CGAL::intersection(S, T), [&](const P3& X) { lam.push_back(((X - A) * AB) / L); });
+  });
+  std::sort(lam.begin(), lam.end());
+  lam.erase(std::unique(lam.begin(), lam.end()), lam.end());
+  for (std::size_t k = 0; k + 1 < lam.size(); ++k)
+    if (inside(m, A + ((lam[k] + lam[k + 1]) / 2) * AB)) return true;
+  return false;
+}
+
+// A candidate of σ_d: the ray parameter μ (units of d') and its polygon's normal (mesh frame).
+struct Cand {
+  FT mu;
+  Vec3 normal;
+};
+
+// Every μ >= 0 where the ray μ·d' meets a polygon of the ∂O superset (file comment), sorted.
+std::vector<Cand> candidates(const MixedPair& m, const Frame& f) {
+  const V3 dv(f.d[0], f.d[1], f.d[2]);
+  const FT dd = dv.squared_length();
+  const P3 O = CGAL::ORIGIN;
+  const V3 AB = f.B - f.A;
+  std::vector<Cand> out;
+  auto shoot = [&](const P3& from, const P3& p, const P3& q, const P3& r) {
+    if (CGAL::collinear(p, q, r)) return;
+    const K::Triangle_3 T(p, q, r);
+    const K::Ray_3 ray(from, dv);
+    if (!CGAL::do_intersect(ray, T)) return;
+    const Vec3 n = (approx(q) - approx(p)).cross(approx(r) - approx(p));
+    points_of(CGAL::intersection(ray, T), [&](const P3& X) { out.push_back({((X - from) * dv) / dd, n}); });
+  };
+  const Vec3 a = approx(f.A), b = approx(f.B);
+  along_ray(m, 0.5 * (a + b), 0.5 * (a - b).cwiseAbs().maxCoeff(), f.d, [&](std::size_t t) {
+    if (m.tri_zero[t]) return;
+    const auto& T = tp3(m, t);
+    shoot(f.A, T[0], T[1], T[2]);  // v ∈ T − A: the end A on the triangle
+    shoot(f.B, T[0], T[1], T[2]);
+    for (int e = 0; e < 3; ++e) {  // v ∈ e ⊕ [−B, −A]: the segment through the edge
+      const V3 p = T[e] - CGAL::ORIGIN, q = T[(e + 1) % 3] - CGAL::ORIGIN;
+      const P3 pA = O + (p - (f.A - O)), qA = O + (q - (f.A - O)), qB = O + (q - (f.B - O)), pB = O + (p - (f.B - O));
+      shoot(O, pA, qA, qB);
+      shoot(O, pA, qB, pB);
+    }
+  });
+  std::sort(out.begin(), out.end(), [](const Cand& x, const Cand& y) { return x.mu < y.mu; });
+  return out;
+}
+
+}  // namespace
+
+std::shared_ptr<const SegmentTriangles> segment_triangles(const MixedPair& m) {
+  auto s = std::make_shared<SegmentTriangles>();
+  s->T.reserve(m.tri.size());
+  for (const auto& t : m.tri) s->T.push_back({pt(t[0]), pt(t[1]), pt(t[2])});
+  return s;
+}
+
+bool segment_overlapping(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
+  const Frame f = frame(m, pose_p, pose_q, nullptr);
+  return seg_overlap(m, f.A, f.B);
+}
+
+Depth3 segment_along(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3& d, bool separation) {
+  Depth3 r;
+  r.kind = separation ? DepthKind::Separation : DepthKind::Directional;
+  const Frame f = frame(m, pose_p, pose_q, &d);
+  r.overlapping = seg_overlap(m, f.A, f.B);
+  if (!r.overlapping && !separation) return r;
+  const V3 dv(f.d[0], f.d[1], f.d[2]);
+  const std::vector<Cand> c = candidates(m, f);
+  r.candidates = c.size();
+  auto in_o = [&](const FT& mu) { return seg_overlap(m, f.A + mu * dv, f.B + mu * dv); };
+  const Cand* pick = nullptr;
+  if (!separation) {
+    FT last(0);  // the last μ tested (in O): equal candidates are tested once
+    for (const Cand& k : c) {
+      if (!(k.mu > last)) continue;
+      if (!in_o(k.mu)) {
+        pick = &k;
+        break;
+      }
+      last = k.mu;
+    }
+    if (!pick) throw std::logic_error("mesh segment σ_d: the ray does not leave O (O is bounded)");
+  } else {
+    FT prev(0);
+    for (const Cand& k : c) {
+      if (!(k.mu > prev)) continue;
+      if (in_o((prev + k.mu) / 2)) pick = &k;
+      prev = k.mu;
+    }
+    if (!pick) return r;
+  }
+  const Vec3 u = d.normalized();
+  const double s = dbl(pick->mu) * f.d.norm();
+  r.depth = r.lower_bound = r.upper_bound = s;
+  r.translation = s * u;
+  r.normal = u;
+  Vec3 n = (f.Rm * pick->normal).normalized();
+  if (n.dot(u) < 0) n = -n;
+  r.facet_normal = n.allFinite() ? n : u;
+  // The witness: the segment's first end point at the exit (the mesh's frame back to world).
+  r.witness_p = r.witness_q = f.Rm * (approx(f.A) + dbl(pick->mu) * f.d) + f.tm;
+  return r;
+}
+
+}  // namespace pendepth::mesh3
