@@ -32,7 +32,10 @@
 //     parts without their straight vertices, split by diagonals when they have more than 12
 //     corners — by a dual descent of the pieces' box trees (make_pieces: a triangulation fans long
 //     straight runs from far vertices, and those thin triangles' boxes made the triangle pairs'
-//     descent meet O(n) sums per point on combs). No test
+//     descent meet O(n) sums per point on combs); the descent also prunes a node pair by the
+//     nodes' extents along the two diagonals (an 8-DOP with the boxes, PieceDop: a separating
+//     diagonal with a margin above the roundings), as a star's thin radial pieces at diagonal
+//     angles have boxes as long as the spike holding O(n) points of ∂O each. No test
 //     is needed for a part next to a crossing where c enters the left of a strict candidate d
 //     inside both: d is an edge of an open pair sum lying on d's left (nfp_build.cpp step 1), so
 //     c's points just past the crossing, hence the whole part, are in O. Each split point not
