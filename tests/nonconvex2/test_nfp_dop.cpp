@@ -7,10 +7,10 @@
 // point tests of step 3 meet every candidate, not only the probes of step 0), and the same
 // exported no-fit polygon bit for bit. Inputs: dense random stars (real and integer coordinates:
 // exact ties on the diagonals) against an L, a small star and a square, the roles swapped, stars
-// scaled by 2^±300 (the margin's relative and absolute terms), spirals, combs with exact fits and
-// polygons with holes. The pruning must act (node pairs pruned by the DOP that the boxes kept),
-// and a planted wrong margin (kDopPlanted: each extent shrunk by 1/64 of its width) must change
-// the pieces: the comparison can fail. Pinned seeds.
+// scaled by 2^±300 (the margin's relative and absolute terms), spirals, combs with exact fits (also
+// rotated by 45°) and polygons with holes. The pruning must act (node pairs pruned by the DOP
+// that the boxes kept), and a planted wrong margin (kDopPlanted: each extent shrunk by 1/64 of
+// its width) must change the pieces: the comparison can fail. Pinned seeds.
 #include <gtest/gtest.h>
 
 #include <pendepth/nfp2.hpp>
@@ -161,6 +161,12 @@ TEST(NfpDop, SpiralsCombsHoles) {
   const Polygon tooth = Polygon::simple(std::vector<Vec2>{{0, 0}, {1, 0}, {1, 10}, {0, 10}}, "tooth");
   check(comb, tooth, "comb / tooth", true);
   check(comb, L_shape(1), "comb / L");
+  // Rotated by 45° (coordinates rounded): long thin pieces along a diagonal, whose extents along
+  // the other diagonal are what the pruning tests.
+  const double c = std::sqrt(0.5);
+  const Polygon turned = nonconvex2_test::mapped(comb, [&](const Vec2& p) { return Vec2(c * p.x() - c * p.y(), c * p.x() + c * p.y()); });
+  check(turned, L_shape(1), "comb rotated 45° / L", true);
+  check(L_shape(1), turned, "L / comb rotated 45°");
   for (int it = 0; it < pendepth_test::scaled(3); ++it) {
     const Polygon W = polygon2_test::random_polygon(rng, it % 2 ? 80 : 300, 1 + int(rng() % 3), it % 2);
     check(W, L_shape(1), "holes / L " + std::to_string(it));
