@@ -32,7 +32,10 @@
 //     parts without their straight vertices, split by diagonals when they have more than 12
 //     corners — by a dual descent of the pieces' box trees (make_pieces: a triangulation fans long
 //     straight runs from far vertices, and those thin triangles' boxes made the triangle pairs'
-//     descent meet O(n) sums per point on combs). No test
+//     descent meet O(n) sums per point on combs); the descent also prunes a node pair by the
+//     nodes' extents along the two diagonals (an 8-DOP with the boxes, PieceDop: a separating
+//     diagonal with a margin above the roundings), as a star's thin radial pieces at diagonal
+//     angles have boxes as long as the spike holding O(n) points of ∂O each. No test
 //     is needed for a part next to a crossing where c enters the left of a strict candidate d
 //     inside both: d is an edge of an open pair sum lying on d's left (nfp_build.cpp step 1), so
 //     c's points just past the crossing, hence the whole part, are in O. Each split point not
@@ -157,6 +160,18 @@ bool origin_on_line(const Ray& a, const Ray& b) {
          }) == 0;
 }
 
+// Large shapes: a box-tree node's extents along the two diagonals (with the node's box, an
+// 8-DOP), from the projections x ± y of its pieces' corners, each rounded once. A spike's thin
+// radial piece at a diagonal angle has a box as long as the spike in both axes but a narrow extent
+// across it along one diagonal, so the descent of covered_by_pieces / probe meets far fewer pair
+// sums (issue 19 item 4, stars). Pruning only, certified (dop_misses). (A 16-DOP, with (2, ±1) and
+// (1, ±2) too, measured no faster on the stars: the pruned descent is no longer the cost.)
+constexpr int kDopDirs = 2;
+constexpr std::array<std::array<double, 2>, kDopDirs> kDopDir{{{1, 1}, {1, -1}}};
+struct PieceDop {
+  std::array<double, kDopDirs> lo, hi;
+};
+
 struct PartPair {
   Vec2 lo, hi;
   std::uint32_t a, b;
@@ -184,10 +199,12 @@ struct Buffers {
   std::vector<Vec2> act_lo, act_hi;
   std::vector<char> dead;
   BoxTree cand_tree;
+  // Large shapes: the pieces' box-tree nodes' extents along the diagonal directions (PieceDop).
+  std::vector<PieceDop> dop_p, dop_b;
   void trim() {
     const std::size_t big = std::size_t(1) << 14;
     if (vertex_table.capacity() > big || found.capacity() > big || act_lo.capacity() > big || hdx.capacity() > big || !vertex_map.empty() ||
-        cand_tree.nodes.capacity() > big)
+        cand_tree.nodes.capacity() > big || dop_p.capacity() > big)
       *this = Buffers();
   }
 };
@@ -273,6 +290,61 @@ struct Classifier {
     static const ShapeSide::Pieces none;
     return none;
   }
+  // Large shapes: per node of tree_p / tree_b its extents along kDopDir (PieceDop); dop_scale:
+  // the largest |coordinate| of P's pieces plus that of −Q's.
+  const int dop_mode = nfp_dop_mode();
+  const bool dop_on = large && dop_mode != kDopOff;
+  std::vector<PieceDop>&dop_p = buf.dop_p, &dop_b = buf.dop_b;
+  double dop_scale = 0;
+  std::size_t dop_pruned = 0;  // added to nfp_trim_stats() by run()
+  // The nodes' extents bottom-up (an explicit post-order; one-item leaves: `tri` is the piece).
+  static void node_dops(const BoxTree& T, const ConvexParts& X, std::vector<PieceDop>& D) {
+    D.resize(T.nodes.size());
+    if (T.nodes.empty()) return;
+    std::vector<std::int32_t> order, st{0};
+    order.reserve(T.nodes.size());
+    while (!st.empty()) {
+      const std::int32_t n = st.back();
+      st.pop_back();
+      order.push_back(n);
+      if (T.nodes[n].left >= 0) st.push_back(T.nodes[n].left), st.push_back(T.nodes[n].right);
+    }
+    for (auto it = order.rbegin(); it != order.rend(); ++it) {
+      const auto& N = T.nodes[*it];
+      PieceDop& d = D[*it];
+      if (N.left >= 0) {
+        const PieceDop &l = D[N.left], &r = D[N.right];
+        for (int j = 0; j < kDopDirs; ++j) d.lo[j] = std::min(l.lo[j], r.lo[j]), d.hi[j] = std::max(l.hi[j], r.hi[j]);
+        continue;
+      }
+      d.lo.fill(INFINITY), d.hi.fill(-INFINITY);
+      for (std::uint32_t i = X.start[N.tri]; i < X.start[N.tri + 1]; ++i)
+        for (int j = 0; j < kDopDirs; ++j) {
+          const double v = kDopDir[j][0] * X.v[i].x() + kDopDir[j][1] * X.v[i].y();
+          d.lo[j] = std::min(d.lo[j], v), d.hi[j] = std::max(d.hi[j], v);
+        }
+    }
+  }
+  // Certified: the exact point M (|M − m| ≤ tol per coordinate, mmax = max |m|) lies outside the
+  // closed sum of every pair of pieces under nodes A (of P) and B (of −Q), by a separating
+  // direction u = (a, b) of kDopDir: u·M > h_A(u) + h_B(u) (or below the minima) by more than
+  // the roundings. Bounds (w = |a| + |b| = 2, u₅₃ = 2⁻⁵³, G = dop_scale ≥ max coordinate of A's
+  // corners + max of B's): each stored projection is within u₅₃·w·G of the exact one (a·x exact,
+  // one rounded sum), their sum adds u₅₃·w·G·(1 + u₅₃); u·m (one rounded sum) is within u₅₃·w·mmax
+  // of the exact u·m, and |u·M − u·m| ≤ w·tol; the subtraction of the margin rounds once more.
+  // Margin w·(tol + (G + mmax)·2⁻⁴⁹): four times the sum of those. Never drops a sum that holds
+  // M, as a box test never does; kDopPlanted (tests only) shrinks each extent by 1/64 of its width
+  // instead, a wrong pruning the tests must catch.
+  bool dop_misses(const PieceDop& A, const PieceDop& B, const Vec2& m, double mmax, double tol) const {
+    const double g = (dop_scale + mmax) * 0x1p-49;
+    for (int j = 0; j < kDopDirs; ++j) {
+      const double a = kDopDir[j][0], b = kDopDir[j][1], w = std::abs(a) + std::abs(b);
+      const double s = a * m.x() + b * m.y(), lo = A.lo[j] + B.lo[j], hi = A.hi[j] + B.hi[j];
+      const double margin = dop_mode == kDopPlanted ? -(hi - lo) / 64 : w * (tol + g);
+      if (s - margin > hi || s + margin < lo) return true;
+    }
+    return false;
+  }
   // The coverage of sum vertices (vertex_state): a table over all (P, Q) vertex pairs when small.
   std::size_t qn = S.Q.size();
   bool small_table = std::uint64_t(S.P.size()) * S.Q.size() <= (std::uint64_t(1) << 20);
@@ -280,7 +352,16 @@ struct Classifier {
   Classifier(const PairDepth2::Impl& s, const std::vector<NfpCandidate>& c) : S(s), cands(c) {
     prevP.clear(), prevQ.clear(), flat.clear(), vertex_map.clear();
     if (small_table) vertex_table.assign(S.P.size() * qn, -1);
-    if (large) return;  // large shapes: the pieces and their dual descent
+    if (large) {  // large shapes: the pieces and their dual descent, with the nodes' k-DOPs
+      if (dop_on) {
+        node_dops(tree_p, rp, buf.dop_p), node_dops(tree_b, rb, buf.dop_b);
+        for (const double x : smax_p) dop_scale = std::max(dop_scale, x);
+        double sb = 0;
+        for (const double x : smax_b) sb = std::max(sb, x);
+        dop_scale += sb;
+      }
+      return;
+    }
     flat.reserve(pp.size() * pb.size());
     std::uint32_t off = 0;
     for (std::uint32_t a = 0; a < pp.size(); ++a)
@@ -418,8 +499,10 @@ struct Classifier {
   // meets [mlo, mhi]; `Nearer`: the child pair whose sum box's centre is nearer m first (trim_deep's
   // probes: deep points of dense shapes, e.g. a star's spikes, are then surely held by the first
   // sums reached rather than after O(n) far ones). leaf(a, b) returns true to stop.
+  // Node pairs are also pruned by their k-DOPs (dop_misses; m within tol of the exact point).
   template <bool Nearer, class Leaf>
-  void descend_pieces(const Vec2& m, const Vec2& mlo, const Vec2& mhi, Leaf&& leaf) {
+  void descend_pieces(const Vec2& m, double tol, const Vec2& mlo, const Vec2& mhi, Leaf&& leaf) {
+    const double mmax = m.cwiseAbs().maxCoeff();
     stack.assign(1, {0, 0});
     while (!stack.empty()) {
       const auto [a, b] = stack.back();
@@ -428,6 +511,10 @@ struct Classifier {
       Vec2 lo, hi;
       sum_box(A.lo, A.hi, B.lo, B.hi, lo, hi);
       if (lo.x() > mhi.x() || hi.x() < mlo.x() || lo.y() > mhi.y() || hi.y() < mlo.y()) continue;
+      if (dop_on && dop_misses(dop_p[a], dop_b[b], m, mmax, tol)) {
+        ++dop_pruned;
+        continue;
+      }
       const bool la = A.left < 0, lb = B.left < 0;
       if (la && lb) {
         if (leaf(A.tri, B.tri)) return;
@@ -456,7 +543,7 @@ struct Classifier {
     auto& undecided = buf.undecided_pairs;
     undecided.clear();
     bool sure = false;
-    descend_pieces<false>(m, mlo, mhi, [&](std::uint32_t a, std::uint32_t b) {
+    descend_pieces<false>(m, tol, mlo, mhi, [&](std::uint32_t a, std::uint32_t b) {
       if (c.strict && own_edge_piece(a, b, c.E)) return false;
       const int r = in_piece_sum(a, b, c, p, m, tol, false, 0);
       if (r == 0) undecided.push_back({a, b});
@@ -521,7 +608,7 @@ struct Classifier {
     double best = cur;
     int leaves = 0, sure = 0;
     const Param p{Param::Value, {}, cur};
-    descend_pieces<true>(m, mlo, mhi, [&](std::uint32_t a, std::uint32_t b) {
+    descend_pieces<true>(m, tol, mlo, mhi, [&](std::uint32_t a, std::uint32_t b) {
       ++leaves;
       if (in_piece_sum(a, b, c, p, m, tol, false, 0) > 0) {
         ++sure;
@@ -904,6 +991,7 @@ struct Classifier {
     find_splits();  // 1. split points of every meeting pair of candidates
     group_splits(); //    grouped by candidate
     for (std::size_t k = 0; k < cands.size(); ++k) classify_candidate(k, out);  // 2.–4.
+    nfp_trim_stats().dop_pruned += dop_pruned;
   }
 
  private:
@@ -1139,6 +1227,10 @@ struct Classifier {
 
 int& nfp_trim_mode() {
   thread_local int mode = kTrimAuto;
+  return mode;
+}
+int& nfp_dop_mode() {
+  thread_local int mode = kDopOn;
   return mode;
 }
 NfpTrimStats& nfp_trim_stats() {

@@ -61,10 +61,17 @@ void nfp_classify(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& ca
 /// (dead), trimmed, and pairs met.
 struct NfpTrimStats {
   std::size_t dead = 0, trimmed = 0, meets = 0;
+  std::size_t dop_pruned = 0;  // node pairs of the pieces' descent pruned by their k-DOPs, not by their boxes
 };
 constexpr int kTrimOff = 0, kTrimAuto = 1, kTrimAll = 2;
 int& nfp_trim_mode();
 NfpTrimStats& nfp_trim_stats();
+
+/// nfp_classify's k-DOP pruning of the pieces' dual descent on large shapes (nfp_classify.cpp,
+/// PieceDop), per thread, for the tests: kDopOn (the default), kDopOff (boxes only, the method
+/// before it: the reference they compare with), kDopPlanted (a wrong margin the tests must catch).
+constexpr int kDopOff = 0, kDopOn = 1, kDopPlanted = 2;
+int& nfp_dop_mode();
 
 /// One ring and no right turn (straight vertices allowed): a convex polygon (exact turns).
 bool convex_shape(const Polygon& S);
