@@ -76,6 +76,15 @@ struct NfpSize {
   std::size_t bytes = 0;       // heap bytes of the structure (pieces + index + exported rings)
 };
 
+/// The lean answer of NoFitPolygon2::depth_value / directional_depth_value (issue 19 item 1, for
+/// nesting loops): the depth and the translation only, each bit for bit the field of the full
+/// query's Depth2 (same value, no features, witnesses or normal computed).
+struct DepthValue2 {
+  double depth = 0;          ///< Depth2::depth (0 when not overlapping)
+  Vec2 translation{0, 0};    ///< Depth2::translation
+  bool overlapping = false;  ///< Depth2::overlapping
+};
+
 /// The per-pair no-fit polygon of two simple polygons with holes (issue 5 item 4): the boundary of
 /// the overlap set O (same O as PairDepth2: O = ∪ int S_ij = {t : int P ∩ int(Q+t) ≠ ∅}), built
 /// once, exactly, with a spatial index for batches of queries.
@@ -95,6 +104,11 @@ class NoFitPolygon2 {
   /// σ, same contract, kind and value (to a few ulps) as PairDepth2::minimum: 0 for t ∉ O, else
   /// the distance from t to the nearest point of ∂O (slits and points included).
   Depth2 minimum(const Vec2& t) const;
+  /// Lean σ and σ_d: minimum(t) / along(t, d) without the contact's features, witnesses and
+  /// normal — depth, translation and overlapping bit for bit those of the full query (the same
+  /// winner and values), for loops that only need the move. Same input checks.
+  DepthValue2 depth_value(const Vec2& t) const;
+  DepthValue2 directional_depth_value(const Vec2& t, const Vec2& d) const;
 
   /// cl(O) as polygons with holes: polygons()[k][0] is an outer ring (CCW), polygons()[k][1..]
   /// its holes (CW); no closing vertex repeated. Vertices are the exact vertices of ∂O rounded to

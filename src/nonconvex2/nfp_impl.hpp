@@ -181,6 +181,9 @@ struct NoFitPolygon2::Impl {
   bool overlapping_exact(const Vec2& t) const;
   Depth2 minimum(const Vec2& t, bool exact_path = false) const;
   Depth2 along(const Vec2& t, const Vec2& d, bool exact_path = false) const;  // d from check_and_scale
+  // The lean queries: the same winner and values as minimum / along, no contact features.
+  DepthValue2 minimum_value(const Vec2& t, bool exact_path = false) const;
+  DepthValue2 along_value(const Vec2& t, const Vec2& d, bool exact_path = false) const;  // d scaled
 };
 
 /// Links the pieces into rings, slits and isolated points (nfp_rings.cpp).

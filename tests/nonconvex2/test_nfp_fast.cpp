@@ -1,7 +1,9 @@
 // NoFitPolygon2's floating fast path (nfp_fast.cpp, issue 19 item 1) against its exact path
 // (NoFitPolygon2::Impl::overlapping_exact / minimum(t, true) / along(t, d, true): the pair-sum
 // overlap test and the best-first hierarchy traversals with every decision exact): every answer
-// bit for bit equal — overlap decisions, depth, translation, normal, witnesses, features — on
+// bit for bit equal — overlap decisions, depth, translation, normal, witnesses, features; the
+// lean queries depth_value / directional_depth_value (fast, and minimum_value / along_value on
+// the exact path) give the exact full answer's depth, translation and overlap bit for bit — on
 // placements where the floating decisions must defer: ring vertices and points on ring edges, each
 // moved by ±1 and ±2 ulps, slits (ends, middles, beside them), isolated points, integer grid points
 // of integer-coordinate pairs (rays through vertices, placements level with vertices), plus random
@@ -58,6 +60,14 @@ bool same(const Vec2& a, const Vec2& b) { return same(a.x(), b.x()) && same(a.y(
                                        << b.feature_q.index << ")";
 }
 
+// The lean answer's fields against the full answer's.
+::testing::AssertionResult same(const pendepth::DepthValue2& a, const Depth2& b) {
+  if (same(a.depth, b.depth) && same(a.translation, b.translation) && a.overlapping == b.overlapping) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "lean depth " << a.depth << " (" << a.translation.transpose() << ", overlapping "
+                                       << a.overlapping << ") vs full " << b.depth << " (" << b.translation.transpose()
+                                       << ", overlapping " << b.overlapping << ")";
+}
+
 struct Counts {
   std::size_t queries = 0, certified = 0, deferred = 0, overlapping = 0;
 };
@@ -87,11 +97,19 @@ void check_at(const NoFitPolygon2& nfp, const Vec2& t, const std::vector<Vec2>& 
   const bool exact = N.overlapping_exact(t);
   c.overlapping += exact;
   ASSERT_EQ(nfp.overlapping(t), exact) << what << " t = " << t.transpose();
-  ASSERT_TRUE(same(nfp.minimum(t), N.minimum(t, true))) << what << " σ at t = " << t.transpose();
+  const Depth2 sigma_exact = N.minimum(t, true);
+  ASSERT_TRUE(same(nfp.minimum(t), sigma_exact)) << what << " σ at t = " << t.transpose();
+  // The lean query (fast and exact path) against the full exact answer's fields, bit for bit.
+  ASSERT_TRUE(same(nfp.depth_value(t), sigma_exact)) << what << " lean σ at t = " << t.transpose();
+  ASSERT_TRUE(same(N.minimum_value(t, true), sigma_exact)) << what << " lean exact σ at t = " << t.transpose();
   for (const Vec2& d_in : dirs) {
     if (d_in.x() == 0 && d_in.y() == 0) continue;
     const Vec2 d = pendepth::nonconvex2::check_and_scale(t, d_in);
-    ASSERT_TRUE(same(nfp.along(t, d_in), N.along(t, d, true))) << what << " σ_d at t = " << t.transpose() << " d = " << d_in.transpose();
+    const Depth2 along_exact = N.along(t, d, true);
+    ASSERT_TRUE(same(nfp.along(t, d_in), along_exact)) << what << " σ_d at t = " << t.transpose() << " d = " << d_in.transpose();
+    ASSERT_TRUE(same(nfp.directional_depth_value(t, d_in), along_exact))
+        << what << " lean σ_d at t = " << t.transpose() << " d = " << d_in.transpose();
+    ASSERT_TRUE(same(N.along_value(t, d, true), along_exact)) << what << " lean exact σ_d at t = " << t.transpose();
   }
 }
 
