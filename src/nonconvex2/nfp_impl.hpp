@@ -155,6 +155,9 @@ namespace nonconvex2 {
 /// NfpFlat::pdd for every piece (nfp_value.cpp), one piece's from its edge ray.
 void build_values(const NoFitPolygon2::Impl& nfp, std::vector<NfpFlat::PieceDD>& out);
 NfpFlat::PieceDD piece_dd(const Ray& E, const Line* edge = nullptr);
+/// Whether NfpFlat's values use the FMA instruction (default: when the processor has it); the same
+/// doubles either way. Tests set it to run both builds.
+bool& nfp_values_fma();
 }  // namespace nonconvex2
 
 struct NoFitPolygon2::Impl {
