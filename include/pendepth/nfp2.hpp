@@ -76,15 +76,6 @@ struct NfpSize {
   std::size_t bytes = 0;       // heap bytes of the structure (pieces + index + exported rings)
 };
 
-/// The lean answer of NoFitPolygon2::depth_value / directional_depth_value (issue 19 item 1, for
-/// nesting loops): the depth and the translation only, each bit for bit the field of the full
-/// query's Depth2 (same value, no features, witnesses or normal computed).
-struct DepthValue2 {
-  double depth = 0;          ///< Depth2::depth (0 when not overlapping)
-  Vec2 translation{0, 0};    ///< Depth2::translation
-  bool overlapping = false;  ///< Depth2::overlapping
-};
-
 /// The per-pair no-fit polygon of two simple polygons with holes (issue 5 item 4): the boundary of
 /// the overlap set O (same O as PairDepth2: O = ∪ int S_ij = {t : int P ∩ int(Q+t) ≠ ∅}), built
 /// once, exactly, with a spatial index for batches of queries.

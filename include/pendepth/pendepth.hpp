@@ -219,6 +219,11 @@ class Pair2 {
   Depth2 minimum(const Vec2& t) const;
   /// σ_d: the shortest move along d (kind Directional). d may have any non-zero finite length.
   Depth2 along(const Vec2& t, const Vec2& d) const;
+  /// Lean σ / σ_d for nesting loops: depth, translation and overlapping of minimum(t) / along(t,
+  /// d), bit for bit, without features, witnesses and normal (on the no-fit polygon engine these
+  /// are not computed: NoFitPolygon2::depth_value; other engines take them from the full query).
+  DepthValue2 depth_value(const Vec2& t) const;
+  DepthValue2 directional_depth_value(const Vec2& t, const Vec2& d) const;
   /// Complete separation along d (DHS §6; kind Separation): the shortest move along d after
   /// which Q can slide on to infinity without overlap (positive also when t ∉ O but the ray
   /// meets O later; `overlapping` tells t ∈ O).
