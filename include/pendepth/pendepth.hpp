@@ -7,6 +7,7 @@
 //   Pair2 pair(P, Q);                                   // picks the engine, preprocesses once
 //   Depth2 s = pair.minimum(t);  pair.along(t, d);  pair.separation(t, d);  pair.overlapping(t);
 //   pair.minimum(ts, out);                              // batch: parallel, bit-identical to singles
+//   DepthValue2 v = pair.depth_value(t);                // lean σ (depth, translation; same bits)
 //   Shape3 A = Shape3::hull(points), B = Shape3::from_file("part.obj");
 //   Pair3 pair3(A, B);  pair3.minimum(pose_p, pose_q);  pair3.along(pose_p, pose_q, d);
 //
