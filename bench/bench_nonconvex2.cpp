@@ -13,7 +13,10 @@
 //                       the swept quads cover ∂P ⊕ ∂(−Q) only, and A ⊕ B = (∂A ⊕ ∂B) ∪ (A + b) ∪
 //                       (a + B) for simple polygons, as Clipper's documentation of MinkowskiSum
 //                       suggests for filled results
-//   sigma/pendepth_nfp, sigma_d/pendepth_nfp    NoFitPolygon2::minimum / ::along
+//   sigma/pendepth_nfp, sigma_d/pendepth_nfp    NoFitPolygon2::minimum / ::along (the full Depth2:
+//                       depth, translation, normal, witnesses, features)
+//   sigma/pendepth_nfp_lean, sigma_d/pendepth_nfp_lean  NoFitPolygon2::depth_value /
+//                       ::directional_depth_value (depth and translation only, the same bits)
 //   sigma/pendepth_pair, sigma_d/pendepth_pair  PairDepth2::minimum / ::along (no NFP)
 //   sigma/pendepth_pair2, sigma_d/pendepth_pair2  the front door: Pair2(P, Q, Prepare::Full)
 //                       ::minimum / ::along (its engine: the no-fit polygon when neither piece is
@@ -463,11 +466,16 @@ void BM_build_peer(benchmark::State& state, Case* c, bool cgal) {
   state.counters["sum_rings"] = double(rings) / double(c->pairs.size());
 }
 
-enum class Impl { Nfp, Pair, CgalScan, ClipperScan, Front };
+enum class Impl { Nfp, NfpLean, Pair, CgalScan, ClipperScan, Front };
 
 double answer(Case& c, const Query& q, Impl impl, bool minimum) {
   switch (impl) {
     case Impl::Nfp: return minimum ? c.nfp(q.pair).minimum(q.t).depth : c.nfp(q.pair).along(q.t, q.d).depth;
+    case Impl::NfpLean: {
+      const pendepth::DepthValue2 v = minimum ? c.nfp(q.pair).depth_value(q.t) : c.nfp(q.pair).directional_depth_value(q.t, q.d);
+      benchmark::DoNotOptimize(v.translation);
+      return v.depth;
+    }
     case Impl::Pair: return minimum ? c.pair(q.pair).minimum(q.t).depth : c.pair(q.pair).along(q.t, q.d).depth;
     case Impl::Front: return minimum ? c.front(q.pair).minimum(q.t).depth : c.front(q.pair).along(q.t, q.d).depth;
     case Impl::CgalScan:
@@ -513,7 +521,8 @@ void BM_query(benchmark::State& state, Case* c, Impl impl, bool minimum) {
 
 bool overlaps(Case& c, const Query& q, Impl impl) {
   switch (impl) {
-    case Impl::Nfp: return c.nfp(q.pair).overlapping(q.t);
+    case Impl::Nfp:
+    case Impl::NfpLean: return c.nfp(q.pair).overlapping(q.t);
     case Impl::Pair: return c.pair(q.pair).overlapping(q.t);
     case Impl::Front: return c.front(q.pair).overlapping(q.t);
     case Impl::CgalScan:
@@ -576,6 +585,7 @@ void register_case(Case& c, const std::string& tag, double nfp_budget, double bu
   for (bool minimum : {true, false}) {
     const std::string q = minimum ? "sigma" : "sigma_d";
     if (c.with_nfp) benchmark::RegisterBenchmark((q + "/pendepth_nfp/" + tag).c_str(), BM_query, &c, Impl::Nfp, minimum);
+    if (c.with_nfp) benchmark::RegisterBenchmark((q + "/pendepth_nfp_lean/" + tag).c_str(), BM_query, &c, Impl::NfpLean, minimum);
     if (c.with_nfp) benchmark::RegisterBenchmark((q + "/pendepth_pair2/" + tag).c_str(), BM_query, &c, Impl::Front, minimum);
     if (!minimum || nm <= pair_sigma_budget)
       benchmark::RegisterBenchmark((q + "/pendepth_pair/" + tag).c_str(), BM_query, &c, Impl::Pair, minimum);

@@ -48,6 +48,15 @@ struct Depth2 {
   DepthKind kind = DepthKind::Minimum;
 };
 
+/// The lean answer of σ / σ_d (Pair2::depth_value / directional_depth_value,
+/// NoFitPolygon2::depth_value / directional_depth_value; issue 19 item 1, for nesting loops): the
+/// depth and the translation only, each bit for bit the field of the full query's Depth2.
+struct DepthValue2 {
+  double depth = 0;          ///< Depth2::depth (0 when not overlapping)
+  Vec2 translation{0, 0};    ///< Depth2::translation
+  bool overlapping = false;  ///< Depth2::overlapping
+};
+
 /// Signed distance (docs/design.md §1; the FCL / Drake / Coal convention): `distance` > 0 when
 /// the shapes are apart (their Euclidean distance), 0 when they touch, −σ(t) when the interiors
 /// overlap. Uniformly: witness_p ∈ ∂P and witness_q ∈ ∂(Q + t) (the unmoved Q, world frame) with

@@ -95,6 +95,11 @@ class NoFitPolygon2 {
   /// σ, same contract, kind and value (to a few ulps) as PairDepth2::minimum: 0 for t ∉ O, else
   /// the distance from t to the nearest point of ∂O (slits and points included).
   Depth2 minimum(const Vec2& t) const;
+  /// Lean σ and σ_d: minimum(t) / along(t, d) without the contact's features, witnesses and
+  /// normal — depth, translation and overlapping bit for bit those of the full query (the same
+  /// winner and values), for loops that only need the move. Same input checks.
+  DepthValue2 depth_value(const Vec2& t) const;
+  DepthValue2 directional_depth_value(const Vec2& t, const Vec2& d) const;
 
   /// cl(O) as polygons with holes: polygons()[k][0] is an outer ring (CCW), polygons()[k][1..]
   /// its holes (CW); no closing vertex repeated. Vertices are the exact vertices of ∂O rounded to

@@ -7,6 +7,7 @@
 //   Pair2 pair(P, Q);                                   // picks the engine, preprocesses once
 //   Depth2 s = pair.minimum(t);  pair.along(t, d);  pair.separation(t, d);  pair.overlapping(t);
 //   pair.minimum(ts, out);                              // batch: parallel, bit-identical to singles
+//   DepthValue2 v = pair.depth_value(t);                // lean σ (depth, translation; same bits)
 //   Shape3 A = Shape3::hull(points), B = Shape3::from_file("part.obj");
 //   Pair3 pair3(A, B);  pair3.minimum(pose_p, pose_q);  pair3.along(pose_p, pose_q, d);
 //
@@ -219,6 +220,11 @@ class Pair2 {
   Depth2 minimum(const Vec2& t) const;
   /// σ_d: the shortest move along d (kind Directional). d may have any non-zero finite length.
   Depth2 along(const Vec2& t, const Vec2& d) const;
+  /// Lean σ / σ_d for nesting loops: depth, translation and overlapping of minimum(t) / along(t,
+  /// d), bit for bit, without features, witnesses and normal (on the no-fit polygon engine these
+  /// are not computed: NoFitPolygon2::depth_value; other engines take them from the full query).
+  DepthValue2 depth_value(const Vec2& t) const;
+  DepthValue2 directional_depth_value(const Vec2& t, const Vec2& d) const;
   /// Complete separation along d (DHS §6; kind Separation): the shortest move along d after
   /// which Q can slide on to infinity without overlap (positive also when t ∉ O but the ray
   /// meets O later; `overlapping` tells t ∈ O).

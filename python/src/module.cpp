@@ -579,6 +579,37 @@ py::object distance_result(const std::vector<R>& out, bool single) {
   return py::module_::import("types").attr("SimpleNamespace")(**d);
 }
 
+// Lean σ / σ_d answers (DepthValue2, issue 19 item 1) as a namespace of numpy arrays: depth (N,),
+// translation (N, 2), overlapping (N,) bool; scalars and (2,) for one point.
+py::object value_result(const std::vector<DepthValue2>& out, bool single) {
+  const std::size_t n = out.size();
+  auto depth = scalars(n);
+  auto tr = vectors(n, 2);
+  py::array_t<bool> ov(static_cast<py::ssize_t>(n));
+  for (std::size_t i = 0; i < n; ++i) {
+    depth.mutable_data()[i] = out[i].depth;
+    put(tr.mutable_data(), i, out[i].translation);
+    ov.mutable_data()[i] = out[i].overlapping;
+  }
+  py::dict d;
+  d["depth"] = squeeze(depth, single);
+  d["translation"] = squeeze(tr, single);
+  d["overlapping"] = squeeze(ov, single);
+  return py::module_::import("types").attr("SimpleNamespace")(**d);
+}
+
+constexpr const char* kDepthValueDoc = R"(depth_value(offsets) -> namespace
+
+Lean sigma for nesting loops: depth (N,), translation (N, 2) and overlapping (N,) bool, bit for bit
+those of minimum(offsets), without normal, witnesses and features (on the no-fit polygon engine
+they are not computed). Raises InvalidInput for non-finite offsets.)";
+
+constexpr const char* kDirectionalDepthValueDoc = R"(directional_depth_value(offsets, directions) -> namespace
+
+Lean sigma_d: depth, translation and overlapping of along(offsets, directions), bit for bit.
+directions: (N, 2) or one (2,) for all. Raises InvalidInput for non-finite offsets and zero or
+non-finite directions.)";
+
 constexpr const char* kSignedDistanceDoc = R"(signed_distance(offsets, threads=None, progress=False) -> namespace
 
 Signed distance (FCL / Drake / Coal convention): distance > 0 when P and Q + t are apart (their
@@ -882,6 +913,26 @@ validated once), allowed_orientations (degrees; [0.0] when absent)). Bad input r
              });
              return distance_result(out, ts.single);
            }, py::arg("offsets"), py::kw_only(), py::arg("threads") = py::none(), py::arg("progress") = false, kSignedDistanceDoc)
+      .def("depth_value", [](const PyPair2& p, const py::object& offsets) {
+             Points<2> ts = points<2>(offsets, "offsets");
+             front::check_batch<Vec2>(ts.v, {}, ts.v.size(), false);
+             std::vector<DepthValue2> out(ts.v.size());
+             {
+               py::gil_scoped_release nogil;
+               for (std::size_t i = 0; i < out.size(); ++i) out[i] = p.pair.depth_value(ts.v[i]);
+             }
+             return value_result(out, ts.single);
+           }, py::arg("offsets"), kDepthValueDoc)
+      .def("directional_depth_value", [](const PyPair2& p, const py::object& offsets, const py::object& directions) {
+             Points<2> ts = points<2>(offsets, "offsets"), ds = points<2>(directions, "directions");
+             front::check_batch<Vec2>(ts.v, ds.v, ts.v.size(), true);
+             std::vector<DepthValue2> out(ts.v.size());
+             {
+               py::gil_scoped_release nogil;
+               for (std::size_t i = 0; i < out.size(); ++i) out[i] = p.pair.directional_depth_value(ts.v[i], ds.v[ds.v.size() == 1 ? 0 : i]);
+             }
+             return value_result(out, ts.single);
+           }, py::arg("offsets"), py::arg("directions"), kDirectionalDepthValueDoc)
       .def("cast", [](const PyPair2& p, const py::object& offsets, const py::object& directions) {
              Points<2> ts = points<2>(offsets, "offsets"), ds = points<2>(directions, "directions");
              front::check_batch<Vec2>(ts.v, ds.v, ts.v.size(), true);

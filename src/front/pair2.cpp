@@ -275,6 +275,18 @@ struct Pair2::Impl {
     return {};
   }
 
+  // The lean queries: the no-fit polygon's own, else the full answer's fields.
+  DepthValue2 minimum_value(const Vec2& t) const {
+    if (engine == Engine2::NoFitPolygon) return nfp->depth_value(t);
+    const Depth2 r = minimum(t);
+    return {r.depth, r.translation, r.overlapping};
+  }
+  DepthValue2 along_value(const Vec2& t, const Vec2& d) const {
+    if (engine == Engine2::NoFitPolygon) return nfp->directional_depth_value(t, d);
+    const Depth2 r = along(t, d);
+    return {r.depth, r.translation, r.overlapping};
+  }
+
   Depth2 separation(const Vec2& t, const Vec2& d) const {
     switch (engine) {
       case Engine2::Flat: return flat->separation(t, d);
@@ -388,6 +400,33 @@ Depth2 Pair2::along(const Vec2& t, const Vec2& d) const {
   front::check_placement(t);
   front::check_direction(d);
   return I.scale.answer(I.along(engine_placement(I.scale, t), d));
+}
+
+namespace {
+// A lean answer in engine coordinates back to input units (as Scale::answer does for Depth2).
+DepthValue2 scaled_value(const front::Scale& scale, DepthValue2 r) {
+  if (scale.identity()) return r;
+  r.depth = scale.length(r.depth);
+  r.translation = scale.vec(r.translation);
+  return r;
+}
+}  // namespace
+
+DepthValue2 Pair2::depth_value(const Vec2& t) const {
+  const Impl& I = *impl_;
+  if (plain(I.scale, t)) [[likely]]
+    return I.minimum_value(t);
+  front::check_placement(t);
+  return scaled_value(I.scale, I.minimum_value(engine_placement(I.scale, t)));
+}
+
+DepthValue2 Pair2::directional_depth_value(const Vec2& t, const Vec2& d) const {
+  const Impl& I = *impl_;
+  if (plain(I.scale, t) && std::isfinite(d.x()) && std::isfinite(d.y()) && (d.x() != 0 || d.y() != 0)) [[likely]]
+    return I.along_value(t, d);
+  front::check_placement(t);
+  front::check_direction(d);
+  return scaled_value(I.scale, I.along_value(engine_placement(I.scale, t), d));
 }
 
 Depth2 Pair2::separation(const Vec2& t, const Vec2& d) const {

@@ -162,6 +162,9 @@ namespace nonconvex2 {
 /// NfpFlat::pdd for every piece (nfp_value.cpp), one piece's from its edge ray.
 void build_values(const NoFitPolygon2::Impl& nfp, std::vector<NfpFlat::PieceDD>& out);
 NfpFlat::PieceDD piece_dd(const Ray& E, const Line* edge = nullptr);
+/// Whether NfpFlat's values use the FMA instruction (default: when the processor has it); the same
+/// doubles either way. Tests set it to run both builds.
+bool& nfp_values_fma();
 }  // namespace nonconvex2
 
 struct NoFitPolygon2::Impl {
@@ -188,6 +191,9 @@ struct NoFitPolygon2::Impl {
   bool overlapping_exact(const Vec2& t) const;
   Depth2 minimum(const Vec2& t, bool exact_path = false) const;
   Depth2 along(const Vec2& t, const Vec2& d, bool exact_path = false) const;  // d from check_and_scale
+  // The lean queries: the same winner and values as minimum / along, no contact features.
+  DepthValue2 minimum_value(const Vec2& t, bool exact_path = false) const;
+  DepthValue2 along_value(const Vec2& t, const Vec2& d, bool exact_path = false) const;  // d scaled
 };
 
 /// Links the pieces into rings, slits and isolated points (nfp_rings.cpp).

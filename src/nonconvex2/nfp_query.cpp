@@ -185,42 +185,52 @@ struct AlongBest {
   }
 };
 
-// σ's running best: the exact nearest point, ties to the lowest piece index.
+// σ's running best: the exact nearest point, ties to the lowest piece index. Kept as the piece
+// index and which point of it (no Cand copies in the loop); the winner's Cand is made once.
 struct MinBest {
-  Cand cand;
   std::uint32_t index = 0;
+  std::uint8_t at = 0;  // 0: t's projection on the piece's line; 1: its lo end; 2: its hi end
   bool found = false;
-  bool inside = false;  // cand is t's projection, strictly inside its piece (so at no end of its edge)
+  bool inside = false;  // the projection, strictly inside its piece (so at no end of its edge)
+  static Cand cand_of(const NoFitPolygon2::Impl& N, std::uint32_t k, std::uint8_t at) {
+    const NfpPiece& pc = N.pieces[k];
+    return Cand{pc.E, at == 0 ? Param{Param::Proj, {}} : at == 1 ? pc.lo : pc.hi, pc.edge};
+  }
+  Cand cand(const NoFitPolygon2::Impl& N) const { return cand_of(N, index, at); }
   // `flags`: t's projection certified strictly inside the piece (NfpFlat::kInside), before its lo
   // end (kBeforeLo) or beyond its hi end (kBeyondHi) by the fast path; else decided exactly.
   void consider(const NoFitPolygon2::Impl& N, std::uint32_t k, const Vec2& t, std::uint32_t flags = 0) {
     const NfpPiece& pc = N.pieces[k];
-    const Param proj{Param::Proj, {}};
-    Cand c{pc.E, proj, pc.edge};
+    std::uint8_t a = 0;
     const bool proj_inside = (flags & NfpFlat::kInside) != 0;
     if (proj_inside) {
-    } else if (flags & NfpFlat::kBeforeLo) c.at = pc.lo;
-    else if (flags & NfpFlat::kBeyondHi) c.at = pc.hi;
-    else if (nonconvex2::compare_params(proj, pc.lo, pc.E, t) <= 0) c.at = pc.lo;
-    else if (nonconvex2::compare_params(proj, pc.hi, pc.E, t) >= 0) c.at = pc.hi;
+    } else if (flags & NfpFlat::kBeforeLo) a = 1;
+    else if (flags & NfpFlat::kBeyondHi) a = 2;
+    else {
+      const Param proj{Param::Proj, {}};
+      if (nonconvex2::compare_params(proj, pc.lo, pc.E, t) <= 0) a = 1;
+      else if (nonconvex2::compare_params(proj, pc.hi, pc.E, t) >= 0) a = 2;
+    }
     if (found) {
       // A shared vertex of two pieces is recognised symbolically.
-      const int s = nonconvex2::same_point(c, cand) ? 0 : exact_sign([&](auto L) {
+      const Cand c = cand_of(N, k, a), b = cand(N);
+      const int s = nonconvex2::same_point(c, b) ? 0 : exact_sign([&](auto L) {
         auto [n1, d1] = nonconvex2::sq_dist(c, t, L);
-        auto [n2, d2] = nonconvex2::sq_dist(cand, t, L);
+        auto [n2, d2] = nonconvex2::sq_dist(b, t, L);
         return n1 * d2 - n2 * d1;
       });
       if (s > 0 || (s == 0 && k > index)) return;
     }
-    cand = c;
     index = k;
+    at = a;
     found = true;
     inside = proj_inside;
   }
   // σ = √RN(σ²) of the best candidate (a function of the candidate alone, evaluated once;
   // `exact`: rationals only).
-  double value(const Vec2& t, bool exact) const {
-    return std::sqrt(exact::rounded_ratio_of([&](auto L) { return nonconvex2::sq_dist(cand, t, L); }, exact));
+  double value(const NoFitPolygon2::Impl& N, const Vec2& t, bool exact) const {
+    const Cand c = cand(N);
+    return std::sqrt(exact::rounded_ratio_of([&](auto L) { return nonconvex2::sq_dist(c, t, L); }, exact));
   }
 };
 
@@ -254,23 +264,24 @@ struct Job {
 
 }  // namespace
 
-Depth2 NoFitPolygon2::Impl::along(const Vec2& t, const Vec2& d, bool exact_path) const {
-  Depth2 r;
-  r.kind = DepthKind::Directional;
-  if (pieces.empty() || !(exact_path ? overlapping_exact(t) : overlapping(t))) return r;
+namespace {
+
+// σ_d's winner and RN(λ) (λ on the scaled d), shared by along and along_value; false when t ∉ O.
+bool along_winner(const NoFitPolygon2::Impl& N, const Vec2& t, const Vec2& d, bool exact_path, AlongBest& best, double& value) {
+  if (N.pieces.empty() || !(exact_path ? N.overlapping_exact(t) : N.overlapping(t))) return false;
   const Ray ray = Ray::query(t, d);
-  AlongBest best;
-  double value = std::numeric_limits<double>::infinity();
+  value = std::numeric_limits<double>::infinity();
+  const NfpFlat& flat = N.flat;
   if (flat.usable && !exact_path) {
     std::vector<std::uint32_t>& cand = scratch();
     flat.first_hit_candidates(t, d, cand);
-    for (std::uint32_t k : cand) best.consider(*this, k & ~NfpFlat::kInside, ray, t, d, (k & NfpFlat::kInside) != 0);
+    for (std::uint32_t k : cand) best.consider(N, k & ~NfpFlat::kInside, ray, t, d, (k & NfpFlat::kInside) != 0);
   } else {
     // Best-first traversal of the piece hierarchy by conservative box entry λ.
     std::priority_queue<Job, std::vector<Job>, std::greater<Job>> jobs;
     auto push = [&](std::int32_t node) {
       double l0, l1;
-      if (!nonconvex2::ray_box(t, d, tree.nodes[node].lo, tree.nodes[node].hi, l0, l1) || l1 < 0) return;
+      if (!nonconvex2::ray_box(t, d, N.tree.nodes[node].lo, N.tree.nodes[node].hi, l0, l1) || l1 < 0) return;
       jobs.push({l0, node});
     };
     push(0);
@@ -278,7 +289,7 @@ Depth2 NoFitPolygon2::Impl::along(const Vec2& t, const Vec2& d, bool exact_path)
       const Job J = jobs.top();
       jobs.pop();
       if (best.found && J.key > value + std::abs(value) * 0x1p-40) break;
-      const auto& node = tree.nodes[J.node];
+      const auto& node = N.tree.nodes[J.node];
       if (node.left >= 0) {
         push(node.left);
         push(node.right);
@@ -286,14 +297,72 @@ Depth2 NoFitPolygon2::Impl::along(const Vec2& t, const Vec2& d, bool exact_path)
       }
       const std::uint32_t before = best.index;
       const bool had = best.found;
-      best.consider(*this, node.tri, ray, t, d);
+      best.consider(N, node.tri, ray, t, d);
       if (best.found && (!had || best.index != before)) value = best.value(ray, t, exact_path);
     }
   }
-  if (!best.found) return r;  // unreachable for t ∈ O (O is bounded)
+  if (!best.found) return false;  // unreachable for t ∈ O (O is bounded)
   // RN(λ): a crossing from the piece's double-doubles (nfp_value.cpp) when certified, else the
   // generic rounded evaluation.
   if (!exact_path && !(!best.hit.end && flat.crossing_value(best.index, t, d, value)) && flat.usable) value = best.value(ray, t, false);
+  return true;
+}
+
+// σ's winner, σ and its translation, shared by minimum and minimum_value; false when t ∉ O.
+bool min_winner(const NoFitPolygon2::Impl& N, const Vec2& t, bool exact_path, MinBest& best, double& value, Vec2& translation) {
+  if (N.pieces.empty() || !(exact_path ? N.overlapping_exact(t) : N.overlapping(t))) return false;
+  value = std::numeric_limits<double>::infinity();
+  const NfpFlat& flat = N.flat;
+  if (flat.usable && !exact_path) {
+    std::vector<std::uint32_t>& cand = scratch();
+    flat.nearest_candidates(t, cand);
+    for (std::uint32_t k : cand) best.consider(N, k & ~NfpFlat::kFlags, t, k & NfpFlat::kFlags);
+  } else {
+    // Branch and bound on the hierarchy with conservative box distances; every piece as near as
+    // the best is visited (its box key is below its distance), so ties resolve by index.
+    std::priority_queue<Job, std::vector<Job>, std::greater<Job>> jobs;
+    jobs.push({0, 0});
+    while (!jobs.empty()) {
+      const Job J = jobs.top();
+      jobs.pop();
+      if (best.found && J.key > value * (1 + 0x1p-40)) break;
+      const auto& node = N.tree.nodes[J.node];
+      if (node.left >= 0) {
+        for (std::int32_t c : {node.left, node.right}) jobs.push({box_distance(t, N.tree.nodes[c].lo, N.tree.nodes[c].hi), c});
+        continue;
+      }
+      const std::uint32_t before = best.index;
+      const bool had = best.found;
+      best.consider(N, node.tri, t);
+      if (best.found && (!had || best.index != before)) value = best.value(N, t, exact_path);
+    }
+  }
+  if (!best.found) return false;  // unreachable for t ∈ O
+  // σ = √RN(σ²) and the translation RN per coordinate: at a projection from the piece's
+  // double-doubles (nfp_value.cpp) when certified, else the generic rounded evaluation.
+  double s2;
+  // The winner at a sum vertex (its piece's end is the symbolic μ = 0 or 1): which one, else -1.
+  const Param::Kind kind = best.at == 0 ? Param::Proj : best.at == 1 ? N.pieces[best.index].lo.kind : N.pieces[best.index].hi.kind;
+  const int vertex = kind == Param::Zero ? 0 : kind == Param::One ? 1 : -1;
+  if (!exact_path && best.at == 0 && flat.projection_values(best.index, t, s2, translation)) {
+    value = std::sqrt(s2);
+  } else if (!exact_path && vertex >= 0 && flat.vertex_values(best.index, vertex, t, s2, translation)) {
+    value = std::sqrt(s2);  // at a sum vertex (nfp_value.cpp)
+  } else {
+    if (!exact_path && flat.usable) value = best.value(N, t, false);
+    translation = rounded_translation(best.cand(N), t, exact_path);
+  }
+  return true;
+}
+
+}  // namespace
+
+Depth2 NoFitPolygon2::Impl::along(const Vec2& t, const Vec2& d, bool exact_path) const {
+  Depth2 r;
+  r.kind = DepthKind::Directional;
+  AlongBest best;
+  double value;
+  if (!along_winner(*this, t, d, exact_path, best, value)) return r;
   const double dn = nonconvex2::norm_accurate(d);
   const double depth = std::max(0.0, value * dn);
   const Line& E = best.hit.piece->edge;
@@ -306,57 +375,36 @@ Depth2 NoFitPolygon2::Impl::along(const Vec2& t, const Vec2& d, bool exact_path)
   return r;
 }
 
+DepthValue2 NoFitPolygon2::Impl::along_value(const Vec2& t, const Vec2& d, bool exact_path) const {
+  AlongBest best;
+  double value;
+  if (!along_winner(*this, t, d, exact_path, best, value)) return {};
+  const double dn = nonconvex2::norm_accurate(d);
+  const double depth = std::max(0.0, value * dn);
+  return {depth, depth * (d / dn), true};
+}
+
 Depth2 NoFitPolygon2::Impl::minimum(const Vec2& t, bool exact_path) const {
   Depth2 r;
   r.kind = DepthKind::Minimum;
-  if (pieces.empty() || !(exact_path ? overlapping_exact(t) : overlapping(t))) return r;
   MinBest best;
-  double value = std::numeric_limits<double>::infinity();
-  if (flat.usable && !exact_path) {
-    std::vector<std::uint32_t>& cand = scratch();
-    flat.nearest_candidates(t, cand);
-    for (std::uint32_t k : cand) best.consider(*this, k & ~NfpFlat::kFlags, t, k & NfpFlat::kFlags);
-  } else {
-    // Branch and bound on the hierarchy with conservative box distances; every piece as near as
-    // the best is visited (its box key is below its distance), so ties resolve by index.
-    std::priority_queue<Job, std::vector<Job>, std::greater<Job>> jobs;
-    jobs.push({0, 0});
-    while (!jobs.empty()) {
-      const Job J = jobs.top();
-      jobs.pop();
-      if (best.found && J.key > value * (1 + 0x1p-40)) break;
-      const auto& node = tree.nodes[J.node];
-      if (node.left >= 0) {
-        for (std::int32_t c : {node.left, node.right}) jobs.push({box_distance(t, tree.nodes[c].lo, tree.nodes[c].hi), c});
-        continue;
-      }
-      const std::uint32_t before = best.index;
-      const bool had = best.found;
-      best.consider(*this, node.tri, t);
-      if (best.found && (!had || best.index != before)) value = best.value(t, exact_path);
-    }
-  }
-  if (!best.found) return r;  // unreachable for t ∈ O
-  const Cand& c = best.cand;
-  // σ = √RN(σ²) and the translation RN per coordinate: at a projection from the piece's
-  // double-doubles (nfp_value.cpp) when certified, else the generic rounded evaluation.
+  double value;
   Vec2 translation;
-  double s2;
-  const bool vertex = c.at.kind == Param::Zero || c.at.kind == Param::One;
-  if (!exact_path && c.at.kind == Param::Proj && flat.projection_values(best.index, t, s2, translation)) {
-    value = std::sqrt(s2);
-  } else if (!exact_path && vertex && flat.vertex_values(best.index, c.at.kind == Param::One, t, s2, translation)) {
-    value = std::sqrt(s2);  // at a sum vertex (nfp_value.cpp)
-  } else {
-    if (!exact_path && flat.usable) value = best.value(t, false);
-    translation = rounded_translation(c, t, exact_path);
-  }
+  if (!min_winner(*this, t, exact_path, best, value, translation)) return r;
   // A projection strictly inside its piece is at no end of the edge (the piece lies in it).
-  r = S.contact(c.edge, t, translation, best.inside ? -1 : nonconvex2::cand_end(c, t));
+  r = S.contact(pieces[best.index].edge, t, translation, best.inside ? -1 : nonconvex2::cand_end(best.cand(*this), t));
   r.depth = value;
   r.kind = DepthKind::Minimum;
   r.overlapping = true;
   return r;
+}
+
+DepthValue2 NoFitPolygon2::Impl::minimum_value(const Vec2& t, bool exact_path) const {
+  MinBest best;
+  double value;
+  Vec2 translation;
+  if (!min_winner(*this, t, exact_path, best, value, translation)) return {};
+  return {value, translation, true};
 }
 
 bool NoFitPolygon2::overlapping(const Vec2& t) const {
@@ -372,6 +420,16 @@ Depth2 NoFitPolygon2::along(const Vec2& t, const Vec2& d_in) const {
 Depth2 NoFitPolygon2::minimum(const Vec2& t) const {
   nonconvex2::check_point(t);
   return impl_->minimum(t);
+}
+
+DepthValue2 NoFitPolygon2::directional_depth_value(const Vec2& t, const Vec2& d_in) const {
+  const Vec2 d = nonconvex2::check_and_scale(t, d_in);
+  return impl_->along_value(t, d);
+}
+
+DepthValue2 NoFitPolygon2::depth_value(const Vec2& t) const {
+  nonconvex2::check_point(t);
+  return impl_->minimum_value(t);
 }
 
 }  // namespace pendepth

@@ -61,24 +61,34 @@ inline double residual(double a, double b, double p) {
   return ((ah * bh - p) + ah * bl + al * bh) + al * bl;
 }
 
-inline D2 mul(D2 a, D2 b) {
+// F: the residual by the FMA instruction (the same double: both are exact here; used only in the
+// functions compiled for it, below), else by splitting.
+template <bool F>
+[[gnu::always_inline]] inline double residual_of(double a, double b, double p) {
+  if constexpr (F) return std::fma(a, b, -p);
+  else return residual(a, b, p);
+}
+
+template <bool F = false>
+[[gnu::always_inline]] inline D2 mul(D2 a, D2 b) {
   const double p = a.hi * b.hi;
-  const double e = residual(a.hi, b.hi, p) + (a.hi * b.lo + a.lo * b.hi);
+  const double e = residual_of<F>(a.hi, b.hi, p) + (a.hi * b.lo + a.lo * b.hi);
   D2 r;
   quick_two_sum(p, e, r.hi, r.lo);
   return r;
 }
 
-inline D2 add(D2 a, D2 b) {
+[[gnu::always_inline]] inline D2 add(D2 a, D2 b) {
   const exact::DD r = exact::DD{a.hi, a.lo, 0} + exact::DD{b.hi, b.lo, 0};
   return {r.hi, r.lo};
 }
 
 // exact::dd_div(a, b) with the residual above (the same steps, so the same double-double when every
 // product's residual is exact: |a|, |b.hi| and |q1| below 2⁹⁹⁶, |q1·b.hi| ≈ |a.hi| ≥ 2⁻⁸⁰⁰).
-inline D2 div(D2 a, D2 b) {
+template <bool F = false>
+[[gnu::always_inline]] inline D2 div(D2 a, D2 b) {
   const double q1 = a.hi / b.hi;
-  const D2 p = mul({q1, 0}, b);
+  const D2 p = mul<F>({q1, 0}, b);
   const D2 r = add(a, {-p.hi, -p.lo});
   D2 q;
   quick_two_sum(q1, r.hi / b.hi, q.hi, q.lo);
@@ -147,8 +157,9 @@ void build_values(const NoFitPolygon2::Impl& N, std::vector<NfpFlat::PieceDD>& o
   for (const NfpPiece& pc : N.pieces) out.push_back(piece_dd(pc.E, &pc.edge));
 }
 
-bool NfpFlat::projection_values(std::uint32_t k, const Vec2& t, double& sigma2, Vec2& translation, ProjectionDiag* diag) const {
-  const PieceDD& v = pdd[k];
+template <bool F>
+[[gnu::always_inline]] inline bool projection_values_body(const NfpFlat& self, std::uint32_t k, const Vec2& t, double& sigma2, Vec2& translation, NfpFlat::ProjectionDiag* diag) {
+  const NfpFlat::PieceDD& v = self.pdd[k];
   if (!v.ok || !in_range(t.x()) || !in_range(t.y())) return false;
   D2 wx, wy;
   double ewx, ewy;
@@ -163,7 +174,7 @@ bool NfpFlat::projection_values(std::uint32_t k, const Vec2& t, double& sigma2, 
     const bool horizontal = v.dy == 0;
     const D2 w = horizontal ? wy : wx;
     if ((horizontal ? ewy : ewx) != 0 || w.hi == 0) return false;
-    const D2 w2 = mul(w, w);
+    const D2 w2 = mul<F>(w, w);
     if (diag) *diag = {{w2.hi, horizontal ? 0.0 : -w.hi, horizontal ? -w.hi : 0.0}, {w2.lo, horizontal ? 0.0 : -w.lo, horizontal ? -w.lo : 0.0},
                        {0x1p-102 * std::abs(w2.hi), 0, 0}, true};
     if (!exact::rounds_to(w2.hi, w2.lo, 0x1p-102 * std::abs(w2.hi))) return false;
@@ -171,24 +182,24 @@ bool NfpFlat::projection_values(std::uint32_t k, const Vec2& t, double& sigma2, 
     translation = horizontal ? Vec2(0, -w.hi) : Vec2(-w.hi, 0);
     return true;
   }
-  const D2 p1 = mul(wx, Dy), p2 = mul(wy, Dx);
+  const D2 p1 = mul<F>(wx, Dy), p2 = mul<F>(wy, Dx);
   const D2 c = add(p1, {-p2.hi, -p2.lo});
   const double ac = std::abs(c.hi);
   if (!(ac >= 0x1p-800 && ac <= 0x1p800)) return false;
   const double ec = (std::abs(v.dy) * ewx + std::abs(v.dx) * ewy) * (1 + 0x1p-50) + 0x1p-99 * (std::abs(p1.hi) + std::abs(p2.hi));
   const double rc = ec / ac * (1 + 0x1p-50);
   if (!(rc <= 0x1p-60)) return false;
-  const D2 q = div(c, {v.dd, v.ddl});
+  const D2 q = div<F>(c, {v.dd, v.ddl});
   const double rq = (rc + 0x1p-99) * (1 + 0x1p-40) + exact::kDivBound;
-  const D2 s2 = mul(c, q);
+  const D2 s2 = mul<F>(c, q);
   const double rs = (rc + rq) * (1 + 0x1p-40) + 0x1p-102;
   const double bs = rs * std::abs(s2.hi) * (1 + 0x1p-40);
   if (diag) diag->hi[0] = s2.hi, diag->lo[0] = s2.lo, diag->bound[0] = bs, diag->set = false;
   const bool ok_s = exact::rounds_to(s2.hi, s2.lo, bs);
   if (!ok_s && !diag) return false;
   // A component: q·f for f = −Dy or Dx; exactly 0 when f is.
-  auto comp = [&](D2 f, double& out, int i) {
-    const D2 x = f.hi == 0 ? D2{0, 0} : mul(q, f);
+  auto comp = [&](D2 f, double& out, int i) __attribute__((always_inline)) {
+    const D2 x = f.hi == 0 ? D2{0, 0} : mul<F>(q, f);
     const double b = (rq + 0x1p-102) * (1 + 0x1p-40) * std::abs(x.hi) * (1 + 0x1p-40);
     if (diag) diag->hi[i] = x.hi, diag->lo[i] = x.lo, diag->bound[i] = b;
     out = x.hi;
@@ -208,8 +219,9 @@ bool NfpFlat::projection_values(std::uint32_t k, const Vec2& t, double& sigma2, 
 // e_V = e_W + 2⁻¹⁰⁰·(|D_hi| + |W̃_hi|)(1 + 2⁻⁵⁰). σ² = Vx² + Vy²: |Ṽ² − V²| ≤ e_V·(2|Ṽ| + e_V) per
 // axis, each dd square ≤ 9u²·|Ṽ_hi²|(1 + 2u), the sum ≤ 2⁻¹⁰⁰ of the squares' magnitudes: in all
 // e_σ = Σ e_V(2|Ṽ_hi|(1 + 2⁻⁵⁰) + e_V) + 2⁻⁹⁹·(Ṽx_hi² + Ṽy_hi²), inflated by 2⁻⁴⁰ relative.
-bool NfpFlat::vertex_values(std::uint32_t k, int end, const Vec2& t, double& sigma2, Vec2& translation, ProjectionDiag* diag) const {
-  const PieceDD& v = pdd[k];
+template <bool F>
+[[gnu::always_inline]] inline bool vertex_values_body(const NfpFlat& self, std::uint32_t k, int end, const Vec2& t, double& sigma2, Vec2& translation, NfpFlat::ProjectionDiag* diag) {
+  const NfpFlat::PieceDD& v = self.pdd[k];
   if (!v.ok || !in_range(t.x()) || !in_range(t.y())) return false;
   D2 w[2];
   double e[2];
@@ -227,7 +239,7 @@ bool NfpFlat::vertex_values(std::uint32_t k, int end, const Vec2& t, double& sig
       if (!in_range(V[i].hi)) return false;
     }
   }
-  const D2 s0 = mul(V[0], V[0]), s1 = mul(V[1], V[1]);
+  const D2 s0 = mul<F>(V[0], V[0]), s1 = mul<F>(V[1], V[1]);
   const D2 s2 = add(s0, s1);
   double bs = 0x1p-99 * (std::abs(s0.hi) + std::abs(s1.hi));
   for (int i = 0; i < 2; ++i) bs += e[i] * (2 * std::abs(V[i].hi) * (1 + 0x1p-50) + e[i]);
@@ -241,8 +253,9 @@ bool NfpFlat::vertex_values(std::uint32_t k, int end, const Vec2& t, double& sig
   return true;
 }
 
-bool NfpFlat::crossing_value(std::uint32_t k, const Vec2& t, const Vec2& d, double& lambda, ProjectionDiag* diag) const {
-  const PieceDD& v = pdd[k];
+template <bool F>
+[[gnu::always_inline]] inline bool crossing_value_body(const NfpFlat& self, std::uint32_t k, const Vec2& t, const Vec2& d, double& lambda, NfpFlat::ProjectionDiag* diag) {
+  const NfpFlat::PieceDD& v = self.pdd[k];
   if (!v.line_ok || !in_range(t.x()) || !in_range(t.y()) || !in_range(d.x()) || !in_range(d.y())) return false;
   // λ = ((C − t) × E) / (d × E), C = c1 + c2, E = e1 − e0 (exact double-doubles).
   D2 wx, wy;
@@ -251,9 +264,9 @@ bool NfpFlat::crossing_value(std::uint32_t k, const Vec2& t, const Vec2& d, doub
   diff(v.cy, t.y(), -v.cyl, wy, ewy);
   if (!in_range(wx.hi) || !in_range(wy.hi)) return false;
   const D2 Ex{v.ex, v.exl}, Ey{v.ey, v.eyl};
-  const D2 n1 = mul(wx, Ey), n2 = mul(wy, Ex);
+  const D2 n1 = mul<F>(wx, Ey), n2 = mul<F>(wy, Ex);
   const D2 num = add(n1, {-n2.hi, -n2.lo});
-  const D2 m1 = mul({d.x(), 0}, Ey), m2 = mul({d.y(), 0}, Ex);
+  const D2 m1 = mul<F>({d.x(), 0}, Ey), m2 = mul<F>({d.y(), 0}, Ex);
   const D2 den = add(m1, {-m2.hi, -m2.lo});
   const double an = std::abs(num.hi), ad = std::abs(den.hi);
   if (!(an >= 0x1p-800 && an <= 0x1p800 && ad >= 0x1p-800 && ad <= 0x1p800)) return false;
@@ -261,12 +274,43 @@ bool NfpFlat::crossing_value(std::uint32_t k, const Vec2& t, const Vec2& d, doub
   const double ed = 0x1p-99 * (std::abs(m1.hi) + std::abs(m2.hi));
   const double rn = en / an * (1 + 0x1p-50), rd = ed / ad * (1 + 0x1p-50);
   if (!(rn <= 0x1p-60 && rd <= 0x1p-60)) return false;
-  const D2 q = div(num, den);
+  const D2 q = div<F>(num, den);
   const double b = ((rn + rd) * (1 + 0x1p-40) + exact::kDivBound) * std::abs(q.hi) * (1 + 0x1p-40);
   if (diag) *diag = {{q.hi, 0, 0}, {q.lo, 0, 0}, {b, 0, 0}, true};
   if (!exact::rounds_to(q.hi, q.lo, b)) return false;
   lambda = q.hi;
   return true;
+}
+
+// The members: the FMA build of each body where the processor has the instruction (the baseline
+// target has none: libm's fma would be a call), else the portable one; the same doubles.
+namespace {
+[[gnu::target("fma")]] bool projection_fma(const NfpFlat& f, std::uint32_t k, const Vec2& t, double& s2, Vec2& tr, NfpFlat::ProjectionDiag* diag) {
+  return projection_values_body<true>(f, k, t, s2, tr, diag);
+}
+[[gnu::target("fma")]] bool vertex_fma(const NfpFlat& f, std::uint32_t k, int end, const Vec2& t, double& s2, Vec2& tr, NfpFlat::ProjectionDiag* diag) {
+  return vertex_values_body<true>(f, k, end, t, s2, tr, diag);
+}
+[[gnu::target("fma")]] bool crossing_fma(const NfpFlat& f, std::uint32_t k, const Vec2& t, const Vec2& d, double& lambda, NfpFlat::ProjectionDiag* diag) {
+  return crossing_value_body<true>(f, k, t, d, lambda, diag);
+}
+}  // namespace
+
+bool& nfp_values_fma() {
+  static bool use = __builtin_cpu_supports("fma");
+  return use;
+}
+
+bool NfpFlat::projection_values(std::uint32_t k, const Vec2& t, double& sigma2, Vec2& translation, ProjectionDiag* diag) const {
+  return nfp_values_fma() ? projection_fma(*this, k, t, sigma2, translation, diag) : projection_values_body<false>(*this, k, t, sigma2, translation, diag);
+}
+
+bool NfpFlat::vertex_values(std::uint32_t k, int end, const Vec2& t, double& sigma2, Vec2& translation, ProjectionDiag* diag) const {
+  return nfp_values_fma() ? vertex_fma(*this, k, end, t, sigma2, translation, diag) : vertex_values_body<false>(*this, k, end, t, sigma2, translation, diag);
+}
+
+bool NfpFlat::crossing_value(std::uint32_t k, const Vec2& t, const Vec2& d, double& lambda, ProjectionDiag* diag) const {
+  return nfp_values_fma() ? crossing_fma(*this, k, t, d, lambda, diag) : crossing_value_body<false>(*this, k, t, d, lambda, diag);
 }
 
 }  // namespace pendepth::nonconvex2

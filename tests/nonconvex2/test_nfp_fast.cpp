@@ -1,7 +1,9 @@
 // NoFitPolygon2's floating fast path (nfp_fast.cpp, issue 19 item 1) against its exact path
 // (NoFitPolygon2::Impl::overlapping_exact / minimum(t, true) / along(t, d, true): the pair-sum
 // overlap test and the best-first hierarchy traversals with every decision exact): every answer
-// bit for bit equal — overlap decisions, depth, translation, normal, witnesses, features — on
+// bit for bit equal — overlap decisions, depth, translation, normal, witnesses, features; the
+// lean queries depth_value / directional_depth_value (fast, and minimum_value / along_value on
+// the exact path) give the exact full answer's depth, translation and overlap bit for bit — on
 // placements where the floating decisions must defer: ring vertices and points on ring edges, each
 // moved by ±1 and ±2 ulps, slits (ends, middles, beside them), isolated points, integer grid points
 // of integer-coordinate pairs (rays through vertices, placements level with vertices), plus random
@@ -58,6 +60,14 @@ bool same(const Vec2& a, const Vec2& b) { return same(a.x(), b.x()) && same(a.y(
                                        << b.feature_q.index << ")";
 }
 
+// The lean answer's fields against the full answer's.
+::testing::AssertionResult same(const pendepth::DepthValue2& a, const Depth2& b) {
+  if (same(a.depth, b.depth) && same(a.translation, b.translation) && a.overlapping == b.overlapping) return ::testing::AssertionSuccess();
+  return ::testing::AssertionFailure() << "lean depth " << a.depth << " (" << a.translation.transpose() << ", overlapping "
+                                       << a.overlapping << ") vs full " << b.depth << " (" << b.translation.transpose()
+                                       << ", overlapping " << b.overlapping << ")";
+}
+
 struct Counts {
   std::size_t queries = 0, certified = 0, deferred = 0, overlapping = 0;
 };
@@ -87,11 +97,19 @@ void check_at(const NoFitPolygon2& nfp, const Vec2& t, const std::vector<Vec2>& 
   const bool exact = N.overlapping_exact(t);
   c.overlapping += exact;
   ASSERT_EQ(nfp.overlapping(t), exact) << what << " t = " << t.transpose();
-  ASSERT_TRUE(same(nfp.minimum(t), N.minimum(t, true))) << what << " σ at t = " << t.transpose();
+  const Depth2 sigma_exact = N.minimum(t, true);
+  ASSERT_TRUE(same(nfp.minimum(t), sigma_exact)) << what << " σ at t = " << t.transpose();
+  // The lean query (fast and exact path) against the full exact answer's fields, bit for bit.
+  ASSERT_TRUE(same(nfp.depth_value(t), sigma_exact)) << what << " lean σ at t = " << t.transpose();
+  ASSERT_TRUE(same(N.minimum_value(t, true), sigma_exact)) << what << " lean exact σ at t = " << t.transpose();
   for (const Vec2& d_in : dirs) {
     if (d_in.x() == 0 && d_in.y() == 0) continue;
     const Vec2 d = pendepth::nonconvex2::check_and_scale(t, d_in);
-    ASSERT_TRUE(same(nfp.along(t, d_in), N.along(t, d, true))) << what << " σ_d at t = " << t.transpose() << " d = " << d_in.transpose();
+    const Depth2 along_exact = N.along(t, d, true);
+    ASSERT_TRUE(same(nfp.along(t, d_in), along_exact)) << what << " σ_d at t = " << t.transpose() << " d = " << d_in.transpose();
+    ASSERT_TRUE(same(nfp.directional_depth_value(t, d_in), along_exact))
+        << what << " lean σ_d at t = " << t.transpose() << " d = " << d_in.transpose();
+    ASSERT_TRUE(same(N.along_value(t, d, true), along_exact)) << what << " lean exact σ_d at t = " << t.transpose();
   }
 }
 
@@ -346,7 +364,7 @@ Ray edge_ray(const Vec2& o1, const Vec2& o2, const Vec2& a1, const Vec2& a2, con
 // ASSERT_LE above). Inputs: the pieces of real no-fit polygons with random placements and
 // placements ulps from the edge lines, random edges over 2^±200 magnitudes, axis-parallel edges
 // with placements whose exact offset is a rounding tie, and dyadic ties at direction (1, 2).
-TEST(NfpFastPath, ProjectionValuesAgainstRationals) {
+void projection_values_against_rationals() {
   std::mt19937_64 rng(19005);
   ValueStats st;
   const auto albano = instance("albano.json");
@@ -573,7 +591,7 @@ namespace {
 // the σ² bound is not loose by more than 2¹² on these inputs (shrinking it that much, or dropping
 // it, fails). Inputs: the ends of real no-fit polygon edges with placements at random distances,
 // ulps away and on an axis through the vertex (an exact zero coordinate), random rays over 2^±200.
-TEST(NfpFastPath, VertexValuesAgainstRationals) {
+void vertex_values_against_rationals() {
   using pendepth::exact::LiftQ;
   using namespace pendepth::nonconvex2;
   std::mt19937_64 rng(19008);
@@ -637,6 +655,80 @@ TEST(NfpFastPath, VertexValuesAgainstRationals) {
   std::cout << "[vertex values] " << tried << " tried, " << certified << " certified; worst error / bound " << worst << "\n";
   EXPECT_GT(certified, tried * 9 / 10);
   EXPECT_GT(worst, 0x1p-12);
+}
+
+// The value functions have two builds (nfp_value.cpp): with the FMA instruction where the
+// processor has it, else the residuals by splitting; both must give the same doubles. Each value
+// test runs in both, and the two builds' outputs (values, certificates, the diagnostics' double-
+// doubles and bounds) are compared bit for bit, plus the fast-vs-exact answers in the other build.
+struct ValuesBuild {
+  bool saved = pendepth::nonconvex2::nfp_values_fma();
+  explicit ValuesBuild(bool fma) { pendepth::nonconvex2::nfp_values_fma() = fma && __builtin_cpu_supports("fma"); }
+  ~ValuesBuild() { pendepth::nonconvex2::nfp_values_fma() = saved; }
+};
+
+TEST(NfpFastPath, ProjectionValuesAgainstRationals) {
+  for (bool fma : {true, false}) {
+    const ValuesBuild b(fma);
+    projection_values_against_rationals();
+  }
+}
+
+TEST(NfpFastPath, VertexValuesAgainstRationals) {
+  for (bool fma : {true, false}) {
+    const ValuesBuild b(fma);
+    vertex_values_against_rationals();
+  }
+}
+
+TEST(NfpFastPath, FmaAndPortableValuesAgree) {
+  // (Without FMA on this processor both runs take the portable build: the comparison is then trivial.)
+  using pendepth::nonconvex2::NfpFlat;
+  std::mt19937_64 rng(19005);
+  const auto albano = instance("albano.json");
+  std::size_t compared = 0, certified = 0;
+  auto same_diag = [](const NfpFlat::ProjectionDiag& a, const NfpFlat::ProjectionDiag& b) {
+    for (int i = 0; i < 3; ++i)
+      if (!same(a.hi[i], b.hi[i]) || !same(a.lo[i], b.lo[i]) || !same(a.bound[i], b.bound[i])) return false;
+    return a.set == b.set;
+  };
+  for (std::size_t i = 0; i < albano.size(); i += 2)
+    for (std::size_t j = 1; j < albano.size(); j += 3) {
+      const NoFitPolygon2 nfp(albano[i], albano[j]);
+      const NfpFlat& F = nfp_impl(nfp).flat;
+      std::uniform_real_distribution<double> f(0, 1), a(0, 2 * M_PI);
+      for (std::uint32_t k = 0; k < F.pdd.size(); ++k) {
+        const auto& pc = nfp_impl(nfp).pieces[k];
+        const Vec2 t = pc.a + f(rng) * (pc.b - pc.a) + Vec2(f(rng) - 0.5, f(rng) - 0.5) * 50;
+        const double an = a(rng);
+        const Vec2 d = pendepth::nonconvex2::check_and_scale(t, Vec2(std::cos(an), std::sin(an)));
+        double v[2][4] = {};
+        Vec2 tr[2][2];
+        bool ok[2][4];
+        NfpFlat::ProjectionDiag dg[2][4];
+        for (int m = 0; m < 2; ++m) {
+          const ValuesBuild b(m == 0);
+          ok[m][0] = F.projection_values(k, t, v[m][0], tr[m][0], &dg[m][0]);
+          ok[m][1] = F.vertex_values(k, 0, t, v[m][1], tr[m][1], &dg[m][1]);
+          ok[m][2] = F.vertex_values(k, 1, t, v[m][2], tr[m][1], &dg[m][2]);
+          ok[m][3] = F.crossing_value(k, t, d, v[m][3], &dg[m][3]);
+        }
+        for (int q = 0; q < 4; ++q) {
+          ASSERT_EQ(ok[0][q], ok[1][q]) << i << " " << j << " piece " << k << " value " << q;
+          ASSERT_TRUE(same_diag(dg[0][q], dg[1][q])) << i << " " << j << " piece " << k << " value " << q;
+          if (ok[0][q]) ASSERT_TRUE(same(v[0][q], v[1][q])) << i << " " << j << " piece " << k << " value " << q;
+          ++compared, certified += ok[0][q];
+        }
+        ASSERT_TRUE(same(tr[0][0], tr[1][0]) && same(tr[0][1], tr[1][1])) << i << " " << j << " piece " << k;
+      }
+    }
+  EXPECT_GT(certified, compared / 2);
+  std::cout << "[fma vs portable] " << compared << " values compared, " << certified << " certified\n";
+  // The answers in the portable build, against the exact path (the default build runs above).
+  const ValuesBuild b(false);
+  std::mt19937_64 rng2(19006);
+  for (std::size_t i = 0; i < albano.size(); i += 3)
+    for (std::size_t j = 0; j < albano.size(); j += 2) check_pair(albano[i], albano[j], rng2, 10, "portable albano " + std::to_string(i) + " " + std::to_string(j));
 }
 
 }  // namespace
