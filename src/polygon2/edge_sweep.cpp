@@ -3,12 +3,11 @@
 // degenerate cases as in de Berg et al., Computational Geometry, §2.1.
 //
 // Which contacts are allowed: only the shared vertex of two ring-adjacent edges that do not fold
-// back. Two pre-passes remove every violation at which both edges meet at an endpoint of both:
-//   (a) ring-adjacent pairs are checked directly (fold-back), O(N);
-//   (b) a vertex of one ring equal to a vertex of another ring is found by sorting, O(N log N)
-//       (within a ring, step 1 already refused repeated vertices).
-// After them, every violating pair meets only at points interior to at least one of its edges,
-// and the sweep finds one: events are the edges' endpoints in lexicographic (x, y) order (the
+// back. A violating pair may meet only at an endpoint of both when a vertex of one ring equals a
+// vertex of another (within a ring, step 1 already refused repeated vertices): (a) a pre-pass
+// finds those by sorting the vertices, O(N log N). Every other violating pair (fold-backs
+// included: they overlap along a segment) meets at a point interior to one of its edges, and
+// (b) the sweep finds one: events are the edges' endpoints in lexicographic (x, y) order (the
 // sweep line is x = const tilted infinitesimally, so a vertical edge runs from its lower to its
 // upper end); at a point, edges ending there leave the status before edges starting there enter.
 // The status is ordered at the current event by orient2d: a new edge whose left end lies on
@@ -16,9 +15,10 @@
 // it) — a violation, reported at once; otherwise it lies strictly above or below. Each insertion
 // checks the new edge against its two neighbours, each deletion the neighbours that become
 // adjacent. Proof sketch: let q be the lexicographically first point where a violating pair
-// meets. If q is an edge's left end, inserting that edge compares it with an active edge through q
-// (the status is a sorted sequence; edges through q would otherwise lie between the insertion
-// point's neighbours) — a contact. Else, after the last event before q, the edges squeezed
+// meets. If q is the left end of one edge of the pair, the other contains q in its interior and is
+// active when the first edge starting at q is inserted; that insertion compares the new edge with
+// some active edge through q (the status is sorted; edges through q would otherwise lie between
+// the insertion point's two compared neighbours) — a contact, q interior to that edge. Else, after the last event before q, the edges squeezed
 // between the two edges of the pair all pass through q; the edge next to one whose interior
 // contains q then meets it there, a violation, and the two were checked when they became adjacent.
 // No contact before q changes the order (allowed contacts are shared vertices: both ends are
@@ -135,11 +135,7 @@ void check_edges_sweep(const std::vector<std::vector<Vec2>>& rings, const std::s
     if (auto msg = edge_pair_violation(rings, a, i, b, j)) throw InvalidInput(name + ": " + *msg);
   };
 
-  // (a) Ring-adjacent pairs: fold-back.
-  for (std::size_t k = 0; k < rings.size(); ++k)
-    for (std::size_t i = 0, n = rings[k].size(); i < n; ++i) check(k, i, k, (i + 1) % n);
-
-  // (b) A vertex shared by two rings (vertex i starts edge i).
+  // (a) A vertex shared by two rings (vertex i starts edge i).
   struct Vertex {
     Vec2 p;
     std::size_t ring, i;
@@ -153,7 +149,7 @@ void check_edges_sweep(const std::vector<std::vector<Vec2>>& rings, const std::s
   for (std::size_t t = 1; t < vs.size(); ++t)
     if (vs[t].p == vs[t - 1].p && vs[t].ring != vs[t - 1].ring) check(vs[t - 1].ring, vs[t - 1].i, vs[t].ring, vs[t].i);
 
-  // (c) The sweep.
+  // (b) The sweep.
   std::vector<SweepEdge> edges;
   for (std::size_t k = 0; k < rings.size(); ++k)
     for (std::size_t i = 0, n = rings[k].size(); i < n; ++i) {
