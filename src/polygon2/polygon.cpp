@@ -1,8 +1,8 @@
 // Polygon (simple, with holes): validation and normal form (docs/design.md §1.3).
 //
 // Every decision is an exact predicate on the input doubles. Ring simplicity and ring–ring
-// disjointness are checked together by a Shamos–Hoey sweep over the edges
-// (src/polygon2/edge_sweep.cpp): O(N log N). Containment of the holes: one exact point-in-ring
+// disjointness are checked together by a sweep over the edges (src/polygon2/edge_sweep.cpp: a
+// box sweep with an O(N) budget, then a Shamos–Hoey sweep): O(N log N). Containment of the holes: one exact point-in-ring
 // test per (hole, ring) pair, O(h·N).
 #include <pendepth/polygon.hpp>
 
@@ -92,7 +92,7 @@ Polygon::Polygon(const std::vector<std::vector<Vec2>>& rings_in, std::string_vie
 
   // 2. Edge sweep: within a ring, non-adjacent edges must not meet and adjacent edges must not
   // fold back; edges of different rings must not meet at all.
-  polygon2::check_edges_sweep(rings, name);
+  polygon2::check_edges(rings, name);
 
   // 3. Orientation (the lowest-leftmost vertex of a simple ring is strictly convex) and
   // containment of the holes (rings are now pairwise disjoint, so one vertex decides).

@@ -1,5 +1,6 @@
-// Polygon validation step 2 (src/polygon2/edge_sweep.cpp): the O(N log N) Shamos–Hoey sweep
-// against the brute force over all edge pairs with the same pairwise rule
+// Polygon validation step 2 (src/polygon2/edge_sweep.cpp): the O(N log N) Shamos–Hoey sweep, the
+// box sweep and their combination check_edges (box sweep, budget exhausted, Shamos–Hoey) against
+// the brute force over all edge pairs with the same pairwise rule
 // (polygon2::edge_pair_violation, the rule the former box sweep applied) on random rings full of
 // degeneracies, and the large families (star, comb, spiral of 10^5 vertices) accepted.
 #include <pendepth/polygon.hpp>
@@ -9,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <optional>
 #include <random>
 #include <set>
 #include <string>
@@ -47,15 +50,24 @@ std::set<std::string> brute_force(const Rings& rings) {
   return msgs;
 }
 
-// nullopt: accepted; else the message.
-std::optional<std::string> sweep(const Rings& rings) {
+// nullopt: accepted; else the message. impl 0: the Shamos–Hoey sweep alone; 1: the box sweep
+// without budget; 2: check_edges with a budget of 1 pair per edge (the box sweep gives up early on
+// most inputs and the Shamos–Hoey sweep finishes).
+std::optional<std::string> run(const Rings& rings, int impl) {
   try {
-    pg::check_edges_sweep(rings, "T");
+    if (impl == 0) {
+      pg::check_edges_sweep(rings, "T");
+    } else if (impl == 1) {
+      EXPECT_TRUE(pg::check_edges_boxes(rings, "T", std::numeric_limits<std::size_t>::max()));
+    } else {
+      pg::check_edges(rings, "T", 1);
+    }
     return std::nullopt;
   } catch (const InvalidInput& e) {
     return std::string(e.what());
   }
 }
+std::optional<std::string> sweep(const Rings& rings) { return run(rings, 0); }
 
 struct Tally {
   int accepted = 0, rejected = 0;
@@ -65,14 +77,14 @@ struct Tally {
 void compare(const Rings& rings, Tally& t, const std::string& what) {
   if (!preconditions(rings)) return;
   const auto bf = brute_force(rings);
-  const auto sw = sweep(rings);
-  ASSERT_EQ(bf.empty(), !sw.has_value()) << what << (sw ? ": sweep rejected: " + *sw : ": sweep accepted, brute force: " + *bf.begin());
-  if (sw) {
-    EXPECT_TRUE(bf.count(*sw)) << what << ": " << *sw;
-    ++t.rejected;
-  } else {
-    ++t.accepted;
+  for (int impl = 0; impl < 3; ++impl) {
+    const auto sw = run(rings, impl);
+    ASSERT_EQ(bf.empty(), !sw.has_value())
+        << "impl " << impl << ": " << what
+        << (sw ? ": rejected: " + *sw : ": accepted, brute force: " + *bf.begin());
+    if (sw) EXPECT_TRUE(bf.count(*sw)) << "impl " << impl << ": " << what << ": " << *sw;
   }
+  ++(bf.empty() ? t.accepted : t.rejected);
 }
 
 void report(const Tally& t) {
@@ -209,7 +221,9 @@ TEST(EdgeSweep, Degenerate) {
   };
   for (std::size_t c = 0; c < cases.size(); ++c) {
     EXPECT_EQ(brute_force(cases[c].rings).empty(), cases[c].valid) << "case " << c;
-    EXPECT_EQ(!sweep(cases[c].rings).has_value(), cases[c].valid) << "case " << c << ": " << sweep(cases[c].rings).value_or("");
+    for (int impl = 0; impl < 3; ++impl)
+      EXPECT_EQ(!run(cases[c].rings, impl).has_value(), cases[c].valid)
+          << "case " << c << ", impl " << impl << ": " << run(cases[c].rings, impl).value_or("");
   }
 }
 
@@ -224,6 +238,7 @@ TEST(EdgeSweep, LargeFamilies) {
   rings.push_back(polygon2_test::spiral_ring(20, 30 / (2 * polygon2_test::kPi), 1.5, 5, n / 2));
   for (auto& r : rings) {
     ASSERT_GE(r.size(), std::size_t(n / 2));
+    EXPECT_NO_THROW(pg::check_edges_sweep(Rings{r}, "big"));
     EXPECT_NO_THROW(Polygon(Rings{r}, "big"));
     std::vector<Vec2> bad = r;
     std::swap(bad[10], bad[bad.size() / 2]);  // two spikes across the ring
