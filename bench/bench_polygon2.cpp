@@ -15,6 +15,12 @@
 //   sigma/pendepth        PolygonDepth2::minimum, σ (DHS §4.2, Lemma 4.3)
 //   build/pendepth_fixed8 PolygonDirectionSet for 8 directions (DHS §6); counter bytes_per_direction
 //   sigma_d/pendepth_fixed PolygonDirectionSet::along, query i along direction i mod 8
+//   validate/pendepth     Polygon construction (validation + normal form; step 2 is
+//                         polygon2::check_edges of src/polygon2/edge_sweep.cpp: box sweep with
+//                         an O(N) budget, then the O(N log N) Shamos–Hoey sweep)
+//   validate/edge_sweep   polygon2::check_edges_sweep alone (Shamos–Hoey)
+//   validate/box_sweep    polygon2::check_edges_boxes without budget (the former step 2: every
+//                         pair of edges with overlapping boxes checked, O(N log N + K))
 //   sigma_d/cgal_scan, sigma/cgal_scan, sigma_d/clipper_scan, sigma/clipper_scan
 //                         scans of an explicit sum: point in polygon (crossing number with the
 //                         exact orientation predicate on the doubles), then the nearest edge
@@ -39,6 +45,7 @@
 #include <benchmark/benchmark.h>
 #include <pendepth/depth2_polygon_convex.hpp>
 
+#include "polygon2/edge_sweep.hpp"
 #include "polygon2/query_impl.hpp"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -361,6 +368,23 @@ void BM_query_scan(benchmark::State& state, std::string shape, std::size_t n, st
   state.counters["overlapping"] = overlapping;
 }
 
+void BM_validate(benchmark::State& state, std::string shape, std::size_t n, std::size_t m, int impl) {
+  Case& c = get_case(shape, n, m);
+  const auto r = c.P->ring(0);
+  const std::vector<std::vector<Vec2>> rings{std::vector<Vec2>(r.begin(), r.end())};
+  for (auto _ : state) {
+    if (impl == 0) {
+      Polygon P(rings, "P");
+      benchmark::DoNotOptimize(P.size());
+    } else if (impl == 1) {
+      pendepth::polygon2::check_edges_sweep(rings, "P");
+    } else {
+      pendepth::polygon2::check_edges_boxes(rings, "P", std::numeric_limits<std::size_t>::max());
+    }
+  }
+  state.counters["n"] = double(c.n);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -379,6 +403,14 @@ int main(int argc, char** argv) {
         (void)clipper;
         benchmark::RegisterBenchmark(("build/pendepth/" + tag).c_str(), BM_build_pendepth, shape, n, m)
             ->Unit(benchmark::kMicrosecond);
+        if (m == ms.front()) {
+          const std::string vtag = shape + "/" + std::to_string(n);
+          const char* impls[] = {"pendepth", "edge_sweep", "box_sweep"};
+          for (int impl = 0; impl < 3; ++impl)
+            benchmark::RegisterBenchmark(("validate/" + std::string(impls[impl]) + "/" + vtag).c_str(), BM_validate,
+                                         shape, n, m, impl)
+                ->Unit(benchmark::kMillisecond);
+        }
         if (shape == "spiral") continue;  // the scaling plot's third family: the build only
         if (peers) {
           benchmark::RegisterBenchmark(("build/cgal/" + tag).c_str(), BM_build_cgal, shape, n, m)

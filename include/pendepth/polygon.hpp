@@ -74,9 +74,9 @@ class ConvexPolygon {
 /// self-intersecting ring (edges i and j touch or cross, or adjacent edges fold back), two rings
 /// touching or crossing (any common point is rejected: holes must lie strictly inside the outer
 /// ring and be pairwise disjoint as closed sets), a hole outside the outer ring, a hole inside
-/// another hole. All decisions are exact predicates. Cost: O(N log N + K) with K the number of
-/// edge pairs whose bounding boxes overlap (sort-and-sweep on x; O(N^2) in the worst case),
-/// plus O(h·N) point-in-ring tests for the containment of h holes.
+/// another hole. All decisions are exact predicates. Cost: O(N log N) for the edges (a box sweep
+/// with a budget of O(N) box-overlapping pairs, then a Shamos–Hoey sweep;
+/// src/polygon2/edge_sweep.cpp), plus O(h·N) point-in-ring tests for the containment of h holes.
 class Polygon {
  public:
   explicit Polygon(const std::vector<std::vector<Vec2>>& rings, std::string_view name = "polygon");

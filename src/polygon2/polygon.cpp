@@ -1,11 +1,12 @@
 // Polygon (simple, with holes): validation and normal form (docs/design.md §1.3).
 //
 // Every decision is an exact predicate on the input doubles. Ring simplicity and ring–ring
-// disjointness are checked together by a sort-and-sweep over the edges' x-extents with a y-extent
-// prefilter: O(N log N + K), K = edge pairs with overlapping bounding boxes (O(N^2) worst case,
-// linear-ish on real pieces). Containment of the holes: one exact point-in-ring test per
-// (hole, ring) pair, O(h·N).
+// disjointness are checked together by a sweep over the edges (src/polygon2/edge_sweep.cpp: a
+// box sweep with an O(N) budget, then a Shamos–Hoey sweep): O(N log N). Containment of the holes: one exact point-in-ring
+// test per (hole, ring) pair, O(h·N).
 #include <pendepth/polygon.hpp>
+
+#include "polygon2/edge_sweep.hpp"
 
 #include <gmpxx.h>
 
@@ -24,30 +25,13 @@ using predicates::orient2d;
   throw InvalidInput(name + ": " + what);
 }
 
-std::string ring_name(std::size_t k) {
-  return k == 0 ? "ring 0 (outer)" : "ring " + std::to_string(k) + " (hole " + std::to_string(k) + ")";
-}
+std::string ring_name(std::size_t k) { return polygon2::validation_ring_name(k); }
 
 std::string fmt_point(const Vec2& p) {
   std::ostringstream s;
   s.precision(17);
   s << "(" << p.x() << ", " << p.y() << ")";
   return s.str();
-}
-
-// r on the closed segment pq, given orient(p, q, r) == 0.
-bool on_collinear_segment(const Vec2& p, const Vec2& q, const Vec2& r) {
-  return std::min(p.x(), q.x()) <= r.x() && r.x() <= std::max(p.x(), q.x()) &&
-         std::min(p.y(), q.y()) <= r.y() && r.y() <= std::max(p.y(), q.y());
-}
-
-// Do the closed segments a0a1 and b0b1 share a point?
-bool segments_intersect(const Vec2& a0, const Vec2& a1, const Vec2& b0, const Vec2& b1) {
-  int o1 = orient2d(a0, a1, b0), o2 = orient2d(a0, a1, b1);
-  int o3 = orient2d(b0, b1, a0), o4 = orient2d(b0, b1, a1);
-  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
-  return (o1 == 0 && on_collinear_segment(a0, a1, b0)) || (o2 == 0 && on_collinear_segment(a0, a1, b1)) ||
-         (o3 == 0 && on_collinear_segment(b0, b1, a0)) || (o4 == 0 && on_collinear_segment(b0, b1, a1));
 }
 
 // Winding number of ring r around p (p not on the ring), exact: half-open rule on y.
@@ -63,12 +47,6 @@ int winding(std::span<const Vec2> r, const Vec2& p) {
   }
   return w;
 }
-
-struct Edge {
-  std::size_t ring, i;  // ring index, input edge index
-  Vec2 a, b;
-  double xlo, xhi, ylo, yhi;
-};
 
 }  // namespace
 
@@ -114,43 +92,7 @@ Polygon::Polygon(const std::vector<std::vector<Vec2>>& rings_in, std::string_vie
 
   // 2. Edge sweep: within a ring, non-adjacent edges must not meet and adjacent edges must not
   // fold back; edges of different rings must not meet at all.
-  std::vector<Edge> edges;
-  for (std::size_t k = 0; k < rings.size(); ++k)
-    for (std::size_t i = 0, n = rings[k].size(); i < n; ++i) {
-      const Vec2 &a = rings[k][i], &b = rings[k][(i + 1) % n];
-      edges.push_back({k, i, a, b, std::min(a.x(), b.x()), std::max(a.x(), b.x()), std::min(a.y(), b.y()),
-                       std::max(a.y(), b.y())});
-    }
-  std::sort(edges.begin(), edges.end(), [](const Edge& e, const Edge& f) { return e.xlo < f.xlo; });
-  for (std::size_t u = 0; u < edges.size(); ++u) {
-    const Edge& e = edges[u];
-    for (std::size_t w = u + 1; w < edges.size() && edges[w].xlo <= e.xhi; ++w) {
-      const Edge& f = edges[w];
-      if (f.ylo > e.yhi || e.ylo > f.yhi) continue;
-      if (e.ring != f.ring) {
-        if (segments_intersect(e.a, e.b, f.a, f.b)) {
-          const Edge &x = e.ring < f.ring ? e : f, &y = e.ring < f.ring ? f : e;
-          fail(name, ring_name(x.ring) + " and " + ring_name(y.ring) + " touch or cross (edge " +
-                         std::to_string(x.i) + " of ring " + std::to_string(x.ring) + ", edge " +
-                         std::to_string(y.i) + " of ring " + std::to_string(y.ring) + ")");
-        }
-        continue;
-      }
-      const std::size_t n = rings[e.ring].size();
-      const Edge &x = e.i < f.i ? e : f, &y = e.i < f.i ? f : e;  // x.i < y.i
-      bool bad;
-      if (y.i == x.i + 1) {  // share x.b == y.a
-        bad = orient2d(x.a, x.b, y.b) == 0 && predicates::dot_edges(x.a, x.b, y.a, y.b) < 0;
-      } else if (x.i == 0 && y.i == n - 1) {  // share y.b == x.a
-        bad = orient2d(y.a, y.b, x.b) == 0 && predicates::dot_edges(y.a, y.b, x.a, x.b) < 0;
-      } else {
-        bad = segments_intersect(x.a, x.b, y.a, y.b);
-      }
-      if (bad)
-        fail(name, ring_name(e.ring) + ": self-intersecting (edges " + std::to_string(x.i) + " and " +
-                       std::to_string(y.i) + " intersect)");
-    }
-  }
+  polygon2::check_edges(rings, name);
 
   // 3. Orientation (the lowest-leftmost vertex of a simple ring is strictly convex) and
   // containment of the holes (rings are now pairwise disjoint, so one vertex decides).
