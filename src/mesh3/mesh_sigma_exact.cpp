@@ -201,6 +201,21 @@ bool line_far(const Ctx& c, const Plane& f, const Plane& g, const Sum& sk, doubl
   return (l2 + I(mn) * I(mn) * u2).inf() >= bound2;
 }
 
+// Interval filter of a covering sum: true when L ∩ int S_l is certainly empty or certainly
+// disjoint from (a_inf, b_sup) ⊇ the segment [a, b].
+bool open_misses(const Ctx& c, const Sum& s, const IV3& x0, const IV3& u, double a_inf, double b_sup) {
+  double lo = -INFINITY, hi = INFINITY;  // ⊇ the open interval
+  for (std::size_t p = s.first; p < s.first + s.count; ++p) {
+    const Plane& m = c.planes[p];
+    const I a = dot(m.ni, u), b = m.ci - dot(m.ni, x0);
+    if (a.inf() > 0) hi = std::min(hi, (b / a).sup());
+    else if (a.sup() < 0) lo = std::max(lo, (b / a).inf());
+    else if (a.inf() == 0 && a.sup() == 0 && b.sup() <= 0) return true;  // n·u = 0 exactly, n·x0 >= c
+    if (lo >= hi || hi <= a_inf || lo >= b_sup) return true;
+  }
+  return false;
+}
+
 bool boxes_meet(const Box3& a, const Box3& b) {
   return (a.lo.array() <= b.hi.array()).all() && (b.lo.array() <= a.hi.array()).all();
 }
@@ -291,6 +306,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
     const Plane& f = c.planes[fi];
     if (!near(f.dist)) break;
     const Sum& sk = c.sums[f.sum];
+    if (!near(sk.box_dist)) continue;  // f ⊂ S_k lies beyond the best
     cover.clear(), sources.clear();
     for (std::size_t l = 0; l < c.sums.size(); ++l)
       if (l == f.sum || (near(c.sums[l].box_dist) && boxes_meet(c.sums[l].box, sk.box))) {  // else ∂S_l misses f
@@ -335,17 +351,20 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
         if (!a || !b) continue;  // unreachable: S_k is bounded
         ++lines;
         // Covering open intervals (the ones meeting [a, b]).
-        std::vector<std::pair<FT, FT>> iv;
+        std::vector<std::pair<FT, FT>> ivs;
+        const IV3 x0i{iv(x0.x), iv(x0.y), iv(x0.z)}, ui{iv(u.x), iv(u.y), iv(u.z)};
+        const double a_inf = CGAL::to_interval(*a).first, b_sup = CGAL::to_interval(*b).second;
         for (std::size_t l2i : cover) {
+          if (open_misses(c, c.sums[l2i], x0i, ui, a_inf, b_sup)) continue;
           std::optional<FT> lo, hi;
           if (!line_interval(c, c.sums[l2i], x0, u, true, lo, hi) || !lo || !hi) continue;
           if (*hi <= *a || *lo >= *b) continue;
-          iv.emplace_back(*lo, *hi);
+          ivs.emplace_back(*lo, *hi);
         }
         std::vector<FT> cand;
         cand.push_back(CGAL::is_positive(*a) ? *a : CGAL::is_negative(*b) ? *b : FT(0));
         cand.push_back(*a), cand.push_back(*b);
-        for (const auto& [lo, hi] : iv) {
+        for (const auto& [lo, hi] : ivs) {
           if (lo >= *a) cand.push_back(lo);
           if (hi <= *b) cand.push_back(hi);
         }
@@ -354,7 +373,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
           const FT e2 = l2 + lam * lam * u2;
           if (best.d2 && !(e2 < *best.d2)) break;
           bool covered = false;
-          for (const auto& [lo, hi] : iv)
+          for (const auto& [lo, hi] : ivs)
             if (lo < lam && lam < hi) {
               covered = true;
               break;

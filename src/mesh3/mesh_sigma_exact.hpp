@@ -11,9 +11,10 @@ namespace pendepth::mesh3 {
 /// Size limit of the exact path: the total number of candidate facet normals
 /// (convex3::minkowski_facets) of the piece pairs whose sum box meets the ball B(0, upper).
 /// Beyond it minimum() keeps the certified bounds. Measured (docs/benchmarks.md): combs against
-/// an L block have 200–450 facets in range and take 0.1–1 s per exact σ (polycubes are
-/// degenerate: many exact ties); a torus 8×4 pair has ~16 000 and took minutes: hence 1 000.
-inline constexpr std::size_t kExactSigmaMaxFacets = 1000;
+/// an L block have 200–450 facets in range and take 0.1–1 s per exact σ (ties at the pieces'
+/// internal cuts and coplanar facets go to the lazy numbers' rationals); a torus 8×4 pair has
+/// ~16 000 and took minutes. 300 keeps the front door's cost near the bounds' on most pairs.
+inline constexpr std::size_t kExactSigmaMaxFacets = 300;
 
 /// σ = dist(0, complement of O) exactly, given a certified upper bound `upper` >= σ (today's
 /// least σ_d): depth = σ rounded to nearest, lower_bound <= σ <= upper_bound adjacent doubles
