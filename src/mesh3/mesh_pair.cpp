@@ -114,7 +114,7 @@ Depth3 minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q) {
     }
   Depth3 r = least_from_deep(std::move(deep), work, [&](const Vec3& d) { return along(m, pose_p, pose_q, d, false); });
   // Bounds apart: the exact σ (mesh_sigma_exact.cpp) when the pairs in range are small enough.
-  if (exact_sigma && r.overlapping && r.lower_bound < r.upper_bound)
+  if (exact_sigma && SigmaBoundsOnly::depth == 0 && r.overlapping && r.lower_bound < r.upper_bound)
     if (std::optional<Depth3> x = exact_minimum(m, pose_p, pose_q, r.upper_bound)) {
       x->candidates += r.candidates;
       return *x;

@@ -68,6 +68,16 @@ Depth3 minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q);
 /// σ). Set only while no query runs (not synchronised).
 inline bool exact_sigma = true;
 
+/// While alive on this thread, minimum() stays on the bounds (thread-local). For callers whose
+/// lower bound must be the pairs' max σ_ij rather than σ (generalized depth: rotations can beat σ).
+struct SigmaBoundsOnly {
+  static inline thread_local int depth = 0;
+  SigmaBoundsOnly() { ++depth; }
+  ~SigmaBoundsOnly() { --depth; }
+  SigmaBoundsOnly(const SigmaBoundsOnly&) = delete;
+  SigmaBoundsOnly& operator=(const SigmaBoundsOnly&) = delete;
+};
+
 /// σ's upper bound by directions (meshes and mixed pairs, mesh_mixed.hpp): the least σ_d
 /// (along_d) over `normals` (the deepest pairs' first) and the six axes, stopping once it meets
 /// `lower` within 16 ulps, then up to three times along the facet normal where the best move

@@ -36,6 +36,8 @@
 // Numeric domain: every query goes through Pair3 (its power-of-two scaling, src/front/scale.hpp);
 //   DISP is evaluated on operands scaled by a power of two (exact) so that it neither overflows
 //   nor underflows.
+#include "mesh3/mesh_pair.hpp"
+
 #include <pendepth/motion.hpp>
 #include <pendepth/pendepth.hpp>
 
@@ -175,7 +177,12 @@ struct Search {
 GeneralizedDepth3 generalized_depth(const Shape3& P, const Pose3& pose_p, const Shape3& Q, const Pose3& pose_q,
                                     const GeneralizedOptions3& o) {
   const Pair3 pair(P, Q);
-  const Depth3 s = pair.minimum(pose_p, pose_q);  // checks the poses, scales the pair
+  // Checks the poses, scales the pair. Meshes: the bounds alone — the lower bound must stay the
+  // pairs' max σ_ij (a rotation can beat σ), not the exact σ (mesh_sigma_exact.cpp).
+  const Depth3 s = [&] {
+    const mesh3::SigmaBoundsOnly bounds_only;
+    return pair.minimum(pose_p, pose_q);
+  }();
   GeneralizedDepth3 r;
   r.overlapping = s.overlapping;
   r.depth = r.sigma = s.depth;

@@ -17,6 +17,7 @@
 
 #include "mesh3/mesh_gen.hpp"
 
+#include "mesh3/mesh_pair.hpp"
 #include <gtest/gtest.h>
 #include <gmpxx.h>
 
@@ -63,7 +64,10 @@ mpq_class disp2(const Shape3& Q, const Pose3& a, const Pose3& b) {
 mpq_class check_answer(const Shape3& P, const Pose3& pp, const Shape3& Q, const Pose3& pq, const GeneralizedDepth3& r,
                        const std::string& what, double tolerance = 1e-9) {
   const Pair3 pair(P, Q);
-  const Depth3 s = pair.minimum(pp, pq);
+  const Depth3 s = [&] {  // σ's bounds (the pairs' max σ_ij below), as generalized_depth uses them
+    const mesh3::SigmaBoundsOnly bounds_only;
+    return pair.minimum(pp, pq);
+  }();
   EXPECT_EQ(r.overlapping, s.overlapping) << what;
   if (!s.overlapping) return 0;
   EXPECT_EQ(r.sigma, s.depth) << what;
