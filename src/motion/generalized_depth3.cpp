@@ -177,12 +177,14 @@ struct Search {
 GeneralizedDepth3 generalized_depth(const Shape3& P, const Pose3& pose_p, const Shape3& Q, const Pose3& pose_q,
                                     const GeneralizedOptions3& o) {
   const Pair3 pair(P, Q);
-  // Checks the poses, scales the pair. Meshes: the bounds alone — the lower bound must stay the
-  // pairs' max σ_ij (a rotation can beat σ), not the exact σ (mesh_sigma_exact.cpp).
-  const Depth3 s = [&] {
+  const Depth3 s = pair.minimum(pose_p, pose_q);  // checks the poses, scales the pair
+  // Meshes: PD_g's lower bound is the pairs' max σ_ij (σ's bounds' lower end: a rotation can beat
+  // σ), not the exact σ that minimum() may return (mesh_sigma_exact.cpp).
+  double pair_lower = s.lower_bound;
+  if (s.overlapping && !(P.is_convex() && Q.is_convex())) {
     const mesh3::SigmaBoundsOnly bounds_only;
-    return pair.minimum(pose_p, pose_q);
-  }();
+    pair_lower = pair.minimum(pose_p, pose_q).lower_bound;
+  }
   GeneralizedDepth3 r;
   r.overlapping = s.overlapping;
   r.depth = r.sigma = s.depth;
@@ -217,7 +219,7 @@ GeneralizedDepth3 generalized_depth(const Shape3& P, const Pose3& pose_p, const 
   }
 
   // The search stops when the gap is within the tolerance (the bounds stay as they are).
-  auto closed = [&](double upper) { return upper - s.lower_bound <= o.tolerance * upper; };
+  auto closed = [&](double upper) { return upper - pair_lower <= o.tolerance * upper; };
 
   // Pattern search on the rotation vector.
   double rmax = 0;
@@ -252,7 +254,7 @@ GeneralizedDepth3 generalized_depth(const Shape3& P, const Pose3& pose_p, const 
   r.sigma = s.depth;
   r.depth = r.upper_bound = S.best;
   r.converged = closed(S.best);
-  r.lower_bound = std::min(s.lower_bound, S.best);
+  r.lower_bound = std::min(pair_lower, S.best);
   return r;
 }
 
