@@ -17,6 +17,9 @@
 //             stop as soon as upper meets lower. Bounds within 16 ulps are reported equal (exact
 //             to a few ulps).
 //             Cost: k σ_d queries (mesh_line.cpp) after the n·m pair tests.
+//             When the bounds do not meet and the pairs in range are small (kExactSigmaMaxFacets):
+//             the exact σ from mesh_sigma_exact.cpp, a 1-ulp bracket (off: exact_sigma = false,
+//             or a SigmaBoundsOnly guard on the thread).
 #include "mesh3/mesh_pair.hpp"
 
 #include "mesh3/mesh_sigma_exact.hpp"
