@@ -36,6 +36,8 @@
 // Numeric domain: every query goes through Pair3 (its power-of-two scaling, src/front/scale.hpp);
 //   DISP is evaluated on operands scaled by a power of two (exact) so that it neither overflows
 //   nor underflows.
+#include "mesh3/mesh_pair.hpp"
+
 #include <pendepth/motion.hpp>
 #include <pendepth/pendepth.hpp>
 
@@ -176,6 +178,13 @@ GeneralizedDepth3 generalized_depth(const Shape3& P, const Pose3& pose_p, const 
                                     const GeneralizedOptions3& o) {
   const Pair3 pair(P, Q);
   const Depth3 s = pair.minimum(pose_p, pose_q);  // checks the poses, scales the pair
+  // Meshes: PD_g's lower bound is the pairs' max σ_ij (σ's bounds' lower end: a rotation can beat
+  // σ), not the exact σ that minimum() may return (mesh_sigma_exact.cpp).
+  double pair_lower = s.lower_bound;
+  if (s.overlapping && !(P.is_convex() && Q.is_convex())) {
+    const mesh3::SigmaBoundsOnly bounds_only;
+    pair_lower = pair.minimum(pose_p, pose_q).lower_bound;
+  }
   GeneralizedDepth3 r;
   r.overlapping = s.overlapping;
   r.depth = r.sigma = s.depth;
@@ -210,7 +219,7 @@ GeneralizedDepth3 generalized_depth(const Shape3& P, const Pose3& pose_p, const 
   }
 
   // The search stops when the gap is within the tolerance (the bounds stay as they are).
-  auto closed = [&](double upper) { return upper - s.lower_bound <= o.tolerance * upper; };
+  auto closed = [&](double upper) { return upper - pair_lower <= o.tolerance * upper; };
 
   // Pattern search on the rotation vector.
   double rmax = 0;
@@ -245,7 +254,7 @@ GeneralizedDepth3 generalized_depth(const Shape3& P, const Pose3& pose_p, const 
   r.sigma = s.depth;
   r.depth = r.upper_bound = S.best;
   r.converged = closed(S.best);
-  r.lower_bound = std::min(s.lower_bound, S.best);
+  r.lower_bound = std::min(pair_lower, S.best);
   return r;
 }
 

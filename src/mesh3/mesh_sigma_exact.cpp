@@ -1,0 +1,454 @@
+// The exact σ of a pair of meshes (issue 17 item 4; survey §3.5–§4, DHS §6: σ of a union as the
+// distance to the union's boundary). Contract in mesh_sigma_exact.hpp.
+//
+// O = ∪_k int S_k, S_k = P_i ⊕ (−Q'_j) (pieces have disjoint interiors and cover the solids).
+// For 0 ∈ O, σ = dist(0, Oᶜ) and the nearest point of Oᶜ lies on ∂O ⊂ ∪ ∂S_k, so
+//   σ = min over facets f of every S_k of dist(0, R_f),  R_f = f \ ∪_l int S_l
+// (R_f ⊂ Oᶜ, closed). Seams where two sums touch along coplanar facets are not in O (exact fits):
+// they are points of R_f, as they must be. dist(0, R_f): the foot p of 0 on plane(f) when
+// p ∈ R_f; otherwise the nearest point lies on the relative boundary of R_f, i.e. on a line
+// L = plane(f) ∩ plane(g) for a facet g of some S_l (f's own edges included). On L the set
+// R_f ∩ L is the closed segment L ∩ S_k minus the open intervals L ∩ int S_l, and its point
+// nearest 0 is the foot of 0 on L when uncovered, else an uncovered interval end.
+//
+// Representation: every S_k by its supporting planes n·x <= c from convex3::minkowski_facets (a
+// superset of its facet normals, each plane supporting S_k: offset = support value), rebuilt
+// exactly from the defining features as CGAL lazy exact numbers (Epeck::FT: interval filters,
+// rationals only near ties) — q' = R q + tq − tp exactly for the doubles R, tq, tp as in the
+// convex engines. Every decision (inside / strictly inside / interval order / distance order)
+// is an exact comparison; σ² is rational, σ = RN(√σ²) with a certified 1-ulp bracket.
+//
+// Pruning by the certified upper bound U (today's least σ_d): only sums whose box meets B(0, U)
+// can matter, only facets whose plane lies within the running best, processed nearest plane
+// first and stopping when the next plane is farther than the best; lines only from planes
+// within the best, covering sets only from sums whose box meets B(0, best). The double
+// distances used for pruning are accurate to a few ulps (minkowski_facets) and compared with a
+// 2⁻⁴⁰ relative margin, so pruning never drops a candidate nearer than the best.
+// Cost: for F facets in range and K sums, O(F) projections of O(K·f̄) tests each, and up to
+// O(F²) lines of O(K·f̄ + K²) each in the worst case (f̄ = facets per sum); in practice the
+// projections settle most facets.
+#include "mesh3/mesh_sigma_exact.hpp"
+
+#include "convex3/minkowski_facets.hpp"
+#include "convex3/polytope_data.hpp"
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace pendepth::mesh3 {
+namespace {
+
+using FT = CGAL::Exact_predicates_exact_constructions_kernel::FT;
+using I = CGAL::Interval_nt<true>;  // the filter: intervals that hold the exact values
+
+struct IV3 {
+  I x, y, z;
+};
+I iv(const FT& v) {
+  const auto r = CGAL::to_interval(v);
+  return I(r.first, r.second);
+}
+I dot(const IV3& a, const IV3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+IV3 cross(const IV3& a, const IV3& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+IV3 operator+(const IV3& a, const IV3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+IV3 operator*(const I& s, const IV3& a) { return {s * a.x, s * a.y, s * a.z}; }
+
+struct V3 {
+  FT x, y, z;
+};
+V3 lift(const Vec3& v) { return {FT(v.x()), FT(v.y()), FT(v.z())}; }
+V3 operator-(const V3& a, const V3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+V3 operator+(const V3& a, const V3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+V3 operator*(const FT& s, const V3& a) { return {s * a.x, s * a.y, s * a.z}; }
+FT dot(const V3& a, const V3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+V3 cross(const V3& a, const V3& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+bool is_zero(const V3& a) { return CGAL::is_zero(a.x) && CGAL::is_zero(a.y) && CGAL::is_zero(a.z); }
+Vec3 to_vec(const V3& a) { return {CGAL::to_double(a.x), CGAL::to_double(a.y), CGAL::to_double(a.z)}; }
+
+Box3 box_of_sum(const MeshPair& m, const Placed& pl, std::size_t i, std::size_t j) { return sum_box(m, pl, i, j); }
+
+double box_distance(const Box3& b) {  // distance from 0 to the box, rounded
+  Vec3 c = Vec3::Zero();
+  for (int k = 0; k < 3; ++k) c[k] = b.lo[k] > 0 ? b.lo[k] : b.hi[k] < 0 ? -b.hi[k] : 0.0;
+  return c.norm();
+}
+
+// A supporting plane n·x <= c of a sum, with its defining candidate.
+struct Plane {
+  V3 n;
+  FT c;
+  IV3 ni;  // intervals of n and c
+  I ci;
+  double dist = 0;  // |c|/|n|, a few ulps
+  std::size_t sum = 0;
+  convex3::FacetCandidate k;
+};
+
+struct Sum {
+  std::size_t i = 0, j = 0;
+  std::size_t first = 0, count = 0;  // planes[first, first + count)
+  double box_dist = 0;
+  Box3 box;
+};
+
+struct Ctx {
+  const MeshPair& m;
+  Placed pl;
+  std::vector<Sum> sums;
+  std::vector<Plane> planes;
+  std::vector<V3> qcache;  // placed Q vertices of the current pair
+};
+
+V3 placed(const Placed& pl, const Vec3& q) {
+  V3 r;
+  FT* out[3] = {&r.x, &r.y, &r.z};
+  for (int a = 0; a < 3; ++a)
+    *out[a] = FT(pl.R(a, 0)) * FT(q.x()) + FT(pl.R(a, 1)) * FT(q.y()) + FT(pl.R(a, 2)) * FT(q.z()) + FT(pl.tq[a]) -
+              FT(pl.tp[a]);
+  return r;
+}
+V3 rotated(const Placed& pl, const V3& e) {
+  return {FT(pl.R(0, 0)) * e.x + FT(pl.R(0, 1)) * e.y + FT(pl.R(0, 2)) * e.z,
+          FT(pl.R(1, 0)) * e.x + FT(pl.R(1, 1)) * e.y + FT(pl.R(1, 2)) * e.z,
+          FT(pl.R(2, 0)) * e.x + FT(pl.R(2, 1)) * e.y + FT(pl.R(2, 2)) * e.z};
+}
+
+// The exact plane of a candidate (the normals of minkowski_facets, the same polynomials).
+Plane plane_of(const Placed& pl, const convex3::PolytopeData& P, const convex3::PolytopeData& Q,
+               const convex3::FacetCandidate& k) {
+  const convex3::DKLevel &LP = P.levels[0], &LQ = Q.levels[0];
+  V3 u;
+  switch (k.source) {
+    case convex3::FacetSource::FaceP: {
+      const auto& t = P.tris[k.p_feature];
+      const V3 a = lift(P.v[t[0]]);
+      u = cross(lift(P.v[t[1]]) - a, lift(P.v[t[2]]) - a);
+      break;
+    }
+    case convex3::FacetSource::FaceQ: {
+      const auto& t = Q.tris[k.q_feature];
+      const V3 a = lift(Q.v[t[0]]);
+      u = cross(rotated(pl, lift(Q.v[t[2]]) - a), rotated(pl, lift(Q.v[t[1]]) - a));
+      break;
+    }
+    case convex3::FacetSource::EdgeEdge: {
+      const V3 ep = lift(P.v[LP.target(k.p_feature)]) - lift(P.v[LP.origin(k.p_feature)]);
+      const V3 eq = rotated(pl, lift(Q.v[LQ.target(k.q_feature)]) - lift(Q.v[LQ.origin(k.q_feature)]));
+      u = cross(ep, eq);
+      // minkowski_facets orients u by the edges' extremality; recover the sign from P's apex.
+      const V3 pc = lift(P.v[LP.target(LP.next(k.p_feature))]), pe = lift(P.v[LP.target(LP.next(LP.twin[k.p_feature]))]);
+      const V3 pa = lift(P.v[LP.origin(k.p_feature)]);
+      const FT s1 = dot(u, pc - pa), s2 = dot(u, pe - pa);
+      if (CGAL::is_positive(s1) || CGAL::is_positive(s2)) u = FT(-1) * u;
+      break;
+    }
+  }
+  Plane r;
+  r.n = u;
+  r.c = dot(u, lift(P.v[k.p_vertex]) - placed(pl, Q.v[k.q_vertex]));
+  r.ni = {iv(u.x), iv(u.y), iv(u.z)};
+  r.ci = iv(r.c);
+  r.dist = std::abs(k.distance);
+  r.k = k;
+  return r;
+}
+
+// x in the closed S (all planes), skipping plane `skip`.
+// (xi: intervals of x.)
+bool in_closed(const Ctx& c, const Sum& s, const V3& x, const IV3& xi, std::size_t skip) {
+  for (std::size_t p = s.first; p < s.first + s.count; ++p) {
+    if (p == skip) continue;
+    const I v = dot(c.planes[p].ni, xi) - c.planes[p].ci;
+    if (v.inf() > 0) return false;
+    if (v.sup() <= 0) continue;
+    if (dot(c.planes[p].n, x) > c.planes[p].c) return false;
+  }
+  return true;
+}
+bool in_open(const Ctx& c, const Sum& s, const V3& x, const IV3& xi) {
+  for (std::size_t p = s.first; p < s.first + s.count; ++p) {
+    const I v = dot(c.planes[p].ni, xi) - c.planes[p].ci;
+    if (v.sup() < 0) continue;
+    if (v.inf() >= 0) return false;
+    if (!(dot(c.planes[p].n, x) < c.planes[p].c)) return false;
+  }
+  return true;
+}
+
+// Interval filter of a line plane(f) ∩ plane(g): true when certainly no point of L ∩ S_k lies
+// nearer than √bound2 (or L ∩ S_k is certainly empty).
+bool line_far(const Ctx& c, const Plane& f, const Plane& g, const Sum& sk, double bound2) {
+  const IV3 u = cross(f.ni, g.ni);
+  const I u2 = dot(u, u);
+  if (!(u2.inf() > 0)) return false;
+  const IV3 x0 = (I(1) / u2) * (f.ci * cross(g.ni, u) + g.ci * cross(u, f.ni));
+  const I l2 = dot(x0, x0);
+  if (l2.inf() >= bound2) return true;
+  double lo = -INFINITY, hi = INFINITY;  // λ ∈ [lo, hi] ⊇ L ∩ S_k
+  for (std::size_t p = sk.first; p < sk.first + sk.count; ++p) {
+    const Plane& m = c.planes[p];
+    const I a = dot(m.ni, u), b = m.ci - dot(m.ni, x0);
+    if (a.inf() > 0) hi = std::min(hi, (b / a).sup());
+    else if (a.sup() < 0) lo = std::max(lo, (b / a).inf());
+    if (lo > hi) return true;
+  }
+  const double mn = lo > 0 ? lo : hi < 0 ? -hi : 0.0;
+  return (l2 + I(mn) * I(mn) * u2).inf() >= bound2;
+}
+
+// Interval filter of a covering sum: true when L ∩ int S_l is certainly empty or certainly
+// disjoint from (a_inf, b_sup) ⊇ the segment [a, b].
+bool open_misses(const Ctx& c, const Sum& s, const IV3& x0, const IV3& u, double a_inf, double b_sup) {
+  double lo = -INFINITY, hi = INFINITY;  // ⊇ the open interval
+  for (std::size_t p = s.first; p < s.first + s.count; ++p) {
+    const Plane& m = c.planes[p];
+    const I a = dot(m.ni, u), b = m.ci - dot(m.ni, x0);
+    if (a.inf() > 0) hi = std::min(hi, (b / a).sup());
+    else if (a.sup() < 0) lo = std::max(lo, (b / a).inf());
+    else if (a.inf() == 0 && a.sup() == 0 && b.sup() <= 0) return true;  // n·u = 0 exactly, n·x0 >= c
+    if (lo >= hi || hi <= a_inf || lo >= b_sup) return true;
+  }
+  return false;
+}
+
+bool boxes_meet(const Box3& a, const Box3& b) {
+  return (a.lo.array() <= b.hi.array()).all() && (b.lo.array() <= a.hi.array()).all();
+}
+
+// The interval of λ with x0 + λu in S: closed (strict = false) or open (strict = true).
+// False when empty.
+bool line_interval(const Ctx& c, const Sum& s, const V3& x0, const V3& u, bool strict, std::optional<FT>& lo,
+                   std::optional<FT>& hi) {
+  lo.reset(), hi.reset();
+  for (std::size_t p = s.first; p < s.first + s.count; ++p) {
+    const Plane& pl = c.planes[p];
+    const FT a = dot(pl.n, u), b = pl.c - dot(pl.n, x0);
+    const CGAL::Sign sa = CGAL::sign(a);
+    if (sa == CGAL::ZERO) {
+      if (strict ? !CGAL::is_positive(b) : CGAL::is_negative(b)) return false;
+      continue;
+    }
+    const FT l = b / a;
+    if (sa == CGAL::POSITIVE) {
+      if (!hi || l < *hi) hi = l;
+    } else {
+      if (!lo || l > *lo) lo = l;
+    }
+    if (lo && hi && (strict ? !(*lo < *hi) : *lo > *hi)) return false;
+  }
+  return true;
+}
+
+struct Best {
+  std::optional<FT> d2;
+  V3 x;
+  std::size_t plane = 0;
+  double radius;  // >= √d2 (or the search radius U), for the double prunes
+};
+
+void offer(Best& b, const FT& d2, const V3& x, std::size_t plane) {
+  if (b.d2 && !(d2 < *b.d2)) return;
+  b.d2 = d2, b.x = x, b.plane = plane;
+  b.radius = std::min(b.radius, std::sqrt(CGAL::to_double(d2)) * (1 + 0x1p-40) + 0x1p-1000);
+}
+
+Feature3 feat(FeatureKind3 k, int i) { return Feature3{k, i}; }
+
+}  // namespace
+
+std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, double upper,
+                                    std::size_t max_facets, bool skip_cover) {
+  if (!(upper >= 0) || !std::isfinite(upper)) return std::nullopt;
+  Ctx c{m, place(m, pose_p, pose_q), {}, {}, {}};
+  const convex3::RelativePose rel{c.pl.R, c.pl.tq, c.pl.tp};
+  const double reach = upper * (1 + 0x1p-30) + 0x1p-1000;
+  // The sums in range and their planes.
+  std::size_t total = 0;
+  for (std::size_t i = 0; i < m.P.size(); ++i)
+    for (std::size_t j = 0; j < m.Q.size(); ++j) {
+      const double bd = box_distance(box_of_sum(m, c.pl, i, j));
+      if (bd * (1 - 0x1p-30) > reach) continue;
+      const auto cand = convex3::minkowski_facets(m.P[i], m.Q[j], rel, std::nullopt);
+      total += cand.size();
+      if (total > max_facets) return std::nullopt;
+      const convex3::PolytopeData& P = convex3::data_of(m.P[i]);
+      const convex3::PolytopeData& Q = convex3::data_of(m.Q[j]);
+      Sum s{i, j, c.planes.size(), cand.size(), bd, box_of_sum(m, c.pl, i, j)};
+      for (const auto& k : cand) {
+        c.planes.push_back(plane_of(c.pl, P, Q, k));
+        c.planes.back().sum = c.sums.size();
+      }
+      c.sums.push_back(s);
+    }
+  // 0 ∈ O?
+  const V3 zero{FT(0), FT(0), FT(0)};
+  bool inside = false;
+  const IV3 zi{I(0), I(0), I(0)};
+  for (const Sum& s : c.sums) inside = inside || in_open(c, s, zero, zi);
+  if (!inside) return std::nullopt;
+
+  std::vector<std::size_t> order(c.planes.size());
+  for (std::size_t p = 0; p < order.size(); ++p) order[p] = p;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return c.planes[a].dist < c.planes[b].dist; });
+
+  Best best;
+  best.radius = reach;
+  auto near = [&](double d) { return d * (1 - 0x1p-40) <= best.radius; };
+  std::vector<std::size_t> cover;    // sums whose box meets B(0, best.radius): they cover
+  std::vector<std::size_t> sources;  // the same and f's own sum: their planes cut f's lines
+  std::size_t lines = 0;
+  for (std::size_t fi : order) {
+    const Plane& f = c.planes[fi];
+    if (!near(f.dist)) break;
+    const Sum& sk = c.sums[f.sum];
+    if (!near(sk.box_dist)) continue;  // f ⊂ S_k lies beyond the best
+    cover.clear(), sources.clear();
+    for (std::size_t l = 0; l < c.sums.size(); ++l)
+      if (l == f.sum || (near(c.sums[l].box_dist) && boxes_meet(c.sums[l].box, sk.box))) {  // else ∂S_l misses f
+        sources.push_back(l);
+        if (!skip_cover) cover.push_back(l);
+      }
+    const FT n2 = dot(f.n, f.n);
+    if (CGAL::is_zero(n2)) continue;  // a degenerate candidate normal supports nothing
+    // The foot of 0 on plane(f).
+    const FT d2 = f.c * f.c / n2;
+    if (best.d2 && !(d2 < *best.d2)) continue;
+    const V3 p = (f.c / n2) * f.n;
+    const IV3 pi{iv(p.x), iv(p.y), iv(p.z)};
+    if (in_closed(c, sk, p, pi, fi)) {
+      bool covered = false;
+      for (std::size_t l : cover)
+        if (in_open(c, c.sums[l], p, pi)) {
+          covered = true;
+          break;
+        }
+      if (!covered) {
+        offer(best, d2, p, fi);
+        continue;  // the foot is the nearest point of the plane
+      }
+    }
+    // Lines plane(f) ∩ plane(g).
+    for (std::size_t l : sources) {
+      const Sum& sl = c.sums[l];
+      for (std::size_t gi = sl.first; gi < sl.first + sl.count; ++gi) {
+        const Plane& g = c.planes[gi];
+        if (gi == fi || !near(g.dist)) continue;
+        const double bound2 = best.d2 ? CGAL::to_interval(*best.d2).second : reach * reach * (1 + 0x1p-40);
+        if (line_far(c, f, g, sk, bound2)) continue;
+        const V3 u = cross(f.n, g.n);
+        if (is_zero(u)) continue;
+        const FT u2 = dot(u, u);
+        const V3 x0 = (FT(1) / u2) * (f.c * cross(g.n, u) + g.c * cross(u, f.n));
+        const FT l2 = dot(x0, x0);
+        if (best.d2 && !(l2 < *best.d2)) continue;
+        std::optional<FT> a, b;
+        if (!line_interval(c, sk, x0, u, false, a, b)) continue;
+        if (!a || !b) continue;  // unreachable: S_k is bounded
+        ++lines;
+        // Covering open intervals (the ones meeting [a, b]).
+        std::vector<std::pair<FT, FT>> ivs;
+        const IV3 x0i{iv(x0.x), iv(x0.y), iv(x0.z)}, ui{iv(u.x), iv(u.y), iv(u.z)};
+        const double a_inf = CGAL::to_interval(*a).first, b_sup = CGAL::to_interval(*b).second;
+        for (std::size_t l2i : cover) {
+          if (open_misses(c, c.sums[l2i], x0i, ui, a_inf, b_sup)) continue;
+          std::optional<FT> lo, hi;
+          if (!line_interval(c, c.sums[l2i], x0, u, true, lo, hi) || !lo || !hi) continue;
+          if (*hi <= *a || *lo >= *b) continue;
+          ivs.emplace_back(*lo, *hi);
+        }
+        std::vector<FT> cand;
+        cand.push_back(CGAL::is_positive(*a) ? *a : CGAL::is_negative(*b) ? *b : FT(0));
+        cand.push_back(*a), cand.push_back(*b);
+        for (const auto& [lo, hi] : ivs) {
+          if (lo >= *a) cand.push_back(lo);
+          if (hi <= *b) cand.push_back(hi);
+        }
+        std::sort(cand.begin(), cand.end(), [](const FT& x, const FT& y) { return CGAL::abs(x) < CGAL::abs(y); });
+        for (const FT& lam : cand) {
+          const FT e2 = l2 + lam * lam * u2;
+          if (best.d2 && !(e2 < *best.d2)) break;
+          bool covered = false;
+          for (const auto& [lo, hi] : ivs)
+            if (lo < lam && lam < hi) {
+              covered = true;
+              break;
+            }
+          if (!covered) {
+            offer(best, e2, x0 + lam * u, fi);
+            break;
+          }
+        }
+      }
+    }
+  }
+  // No point of Oᶜ within `upper`: it was not an upper bound (a caller's bug): no answer.
+  if (!best.d2 || *best.d2 > FT(reach) * FT(reach)) return std::nullopt;
+
+  // σ = RN(√σ²) and a certified bracket.
+  const FT q = *best.d2;
+  double s = std::sqrt(CGAL::to_double(q));
+  auto cmp = [&](double v) { return CGAL::compare(FT(v) * FT(v), q); };  // sign(v² − σ²)
+  while (cmp(s) == CGAL::SMALLER) s = std::nextafter(s, INFINITY);
+  while (s > 0 && cmp(std::nextafter(s, 0.0)) != CGAL::SMALLER) s = std::nextafter(s, 0.0);
+  // Now s = the least double with s² >= σ².
+  double lo = s, hi = s;
+  if (cmp(s) != CGAL::EQUAL) lo = std::nextafter(s, 0.0);
+  double depth = hi;
+  if (lo != hi) {
+    const FT mid = (FT(lo) + FT(hi)) / 2;
+    const CGAL::Comparison_result r = CGAL::compare(mid * mid, q);
+    depth = r == CGAL::LARGER ? lo : r == CGAL::SMALLER ? hi : (std::bit_cast<std::uint64_t>(lo) % 2 == 0 ? lo : hi);
+  }
+
+  const Plane& f = c.planes[best.plane];
+  const Sum& sk = c.sums[f.sum];
+  const Vec3 x = to_vec(best.x);
+  Depth3 r;
+  r.kind = DepthKind::Minimum;
+  r.overlapping = true;
+  r.depth = depth;
+  r.lower_bound = lo;
+  r.upper_bound = hi;
+  const Vec3 dir = x.norm() > 0 ? Vec3(x.normalized()) : f.k.unit;
+  r.translation = c.pl.Rp * (depth * dir);
+  r.normal = c.pl.Rp * dir;
+  r.facet_normal = c.pl.Rp * f.k.unit;
+  // Contact: p − q' = x with p, q' on the facet's defining features (rounded).
+  const convex3::PolytopeData& P = convex3::data_of(m.P[sk.i]);
+  const convex3::PolytopeData& Q = convex3::data_of(m.Q[sk.j]);
+  const Vec3 qv = c.pl.R * Q.v[f.k.q_vertex] + (c.pl.tq - c.pl.tp);
+  Vec3 contact = P.v[f.k.p_vertex];
+  switch (f.k.source) {
+    case convex3::FacetSource::FaceP:
+      contact = x + qv;
+      r.feature_p = feat(FeatureKind3::Face, f.k.p_feature), r.feature_q = feat(FeatureKind3::Vertex, f.k.q_vertex);
+      break;
+    case convex3::FacetSource::FaceQ:
+      r.feature_p = feat(FeatureKind3::Vertex, f.k.p_vertex), r.feature_q = feat(FeatureKind3::Face, f.k.q_feature);
+      break;
+    case convex3::FacetSource::EdgeEdge: {
+      // p = pa + α ep, q' = qa' + β eq with p − q' = x: least squares in (α, β).
+      const convex3::DKLevel &LP = P.levels[0], &LQ = Q.levels[0];
+      const Vec3 pa = P.v[LP.origin(f.k.p_feature)], ep = P.v[LP.target(f.k.p_feature)] - pa;
+      const Vec3 qa = c.pl.R * Q.v[LQ.origin(f.k.q_feature)] + (c.pl.tq - c.pl.tp);
+      const Vec3 eq = c.pl.R * (Q.v[LQ.target(f.k.q_feature)] - Q.v[LQ.origin(f.k.q_feature)]);
+      Eigen::Matrix<double, 3, 2> A;
+      A.col(0) = ep, A.col(1) = -eq;
+      const Eigen::Vector2d ab = A.colPivHouseholderQr().solve(Vec3(x + qa - pa));
+      contact = pa + ab[0] * ep;
+      r.feature_p = feat(FeatureKind3::Edge, f.k.p_feature), r.feature_q = feat(FeatureKind3::Edge, f.k.q_feature);
+      break;
+    }
+  }
+  r.witness_p = r.witness_q = c.pl.Rp * contact + c.pl.tp_world;
+  r.piece_p = static_cast<int>(sk.i), r.piece_q = static_cast<int>(sk.j);
+  r.candidates = c.planes.size() + lines;
+  return r;
+}
+
+}  // namespace pendepth::mesh3

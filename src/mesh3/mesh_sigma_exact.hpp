@@ -1,0 +1,28 @@
+// Private: the exact σ of a mesh pair (issue 17 item 4), the refinement of minimum()'s bounds
+// (mesh_pair.hpp) on pairs small enough; see mesh_sigma_exact.cpp.
+#pragma once
+
+#include "mesh3/mesh_pair.hpp"
+
+#include <optional>
+
+namespace pendepth::mesh3 {
+
+/// Size limit of the exact path: the total number of candidate facet normals
+/// (convex3::minkowski_facets) of the piece pairs whose sum box meets the ball B(0, upper).
+/// Beyond it minimum() keeps the certified bounds. Measured (docs/benchmarks.md): combs against
+/// an L block have 200–450 facets in range and take 0.1–1 s per exact σ (ties at the pieces'
+/// internal cuts and coplanar facets go to the lazy numbers' rationals); a torus 8×4 pair has
+/// ~16 000 and took minutes. 300 keeps the front door's cost near the bounds' on most pairs.
+inline constexpr std::size_t kExactSigmaMaxFacets = 300;
+
+/// σ = dist(0, complement of O) exactly, given a certified upper bound `upper` >= σ (today's
+/// least σ_d): depth = σ rounded to nearest, lower_bound <= σ <= upper_bound adjacent doubles
+/// (equal when σ is a double), translation / normal / witnesses / features / pieces of the
+/// nearest point's facet. nullopt when the pairs in range exceed `max_facets`, when 0 is not in
+/// O, or when no point of the complement is found within `upper` (upper not an upper bound).
+/// `skip_cover` (tests only: the planted bug) omits the removal of covered points.
+std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, double upper,
+                                    std::size_t max_facets = kExactSigmaMaxFacets, bool skip_cover = false);
+
+}  // namespace pendepth::mesh3
