@@ -232,7 +232,7 @@ void BM_MeshCast(benchmark::State& st) {
   mesh_query(st, [](const Prepared& p, std::size_t i) { benchmark::DoNotOptimize(p.pair.cast(pendepth::Pose3(), p.poses[i], p.dirs[i])); });
 }
 // σ (minimum): the exact σ where the pairs in range are small enough (mesh_sigma_exact.cpp), and
-// the same query on the bounds alone (mesh3::exact_sigma = false: the path before it).
+// the same query on the bounds alone (a mesh3::SigmaBoundsOnly guard: the path before it).
 void minimum_query(benchmark::State& st) {
   mesh_query(st, [](const Prepared& p, std::size_t i) { benchmark::DoNotOptimize(p.pair.minimum(pendepth::Pose3(), p.poses[i])); });
   // How often the certified bounds meet (equal or adjacent doubles: exact), and their mean
@@ -254,9 +254,8 @@ void minimum_query(benchmark::State& st) {
 }
 void BM_MeshMinimumBounds(benchmark::State& st) { minimum_query(st); }
 void BM_MeshMinimumBoundsOnly(benchmark::State& st) {
-  pendepth::mesh3::exact_sigma = false;
+  pendepth::mesh3::SigmaBoundsOnly bounds_only;  // the benchmark runs its loop on this thread
   minimum_query(st);
-  pendepth::mesh3::exact_sigma = true;
 }
 // The hulls of both meshes (what users do today) against the exact σ_d.
 void BM_MeshHullError(benchmark::State& st) {

@@ -60,16 +60,14 @@ inline constexpr std::size_t kFacetPathMax = 400;
 
 /// σ with certified bounds: lower = max over overlapping piece pairs of the exact σ_ij, upper =
 /// the least σ_d over a set of directions (mesh_pair.cpp); depth = upper with its translation.
-/// When those bounds do not meet and the pairs in range are small enough (exact_sigma and
-/// kExactSigmaMaxFacets, mesh_sigma_exact.hpp): the exact σ (lower, upper = a 1-ulp bracket).
+/// When those bounds do not meet and the pairs in range are small enough (kExactSigmaMaxFacets,
+/// mesh_sigma_exact.hpp; no SigmaBoundsOnly on the thread): the exact σ (lower, upper = a 1-ulp
+/// bracket).
 Depth3 minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q);
 
-/// Private (tests, bench): false keeps minimum() on the bounds alone (the path before the exact
-/// σ). Set only while no query runs (not synchronised).
-inline bool exact_sigma = true;
-
 /// While alive on this thread, minimum() stays on the bounds (thread-local). For callers whose
-/// lower bound must be the pairs' max σ_ij rather than σ (generalized depth: rotations can beat σ).
+/// lower bound must be the pairs' max σ_ij rather than σ (generalized depth: rotations can beat
+/// σ), and for tests and the bench (the path before the exact σ).
 struct SigmaBoundsOnly {
   static inline thread_local int depth = 0;
   SigmaBoundsOnly() { ++depth; }

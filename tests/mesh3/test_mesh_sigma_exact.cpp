@@ -10,7 +10,7 @@
 //  * a rotated comb and cup: properties — moving Q by the answer's
 //    translation ×(1 + 1e-9) leaves the interiors disjoint and ×(1 − 1e-9) does not (exact
 //    overlap test), σ <= σ_d in 64 random directions, the bracket is 1 ulp at most, and the old
-//    certified bounds (minimum() with exact_sigma off) contain the new value;
+//    certified bounds (minimum() under a SigmaBoundsOnly guard) contain the new value;
 //  * the planted bug (exact_minimum's skip_cover: no removal of covered points) must disagree
 //    with the voxel oracle — it does, so the oracle test can fail.
 #include <pendepth/mesh3.hpp>
@@ -43,14 +43,9 @@ mesh3::MeshPair direct(const Shape3& a, const Shape3& b) {
 // The algorithm is tested beyond the front door's size policy (kExactSigmaMaxFacets).
 constexpr std::size_t kTestMaxFacets = 2000;
 
-struct FlagGuard {
-  ~FlagGuard() { mesh3::exact_sigma = true; }
-};
-
 // The old certified bounds (minimum() without the exact path).
 Depth3 old_bounds(const mesh3::MeshPair& m, const Pose3& pp, const Pose3& pq) {
-  FlagGuard g;
-  mesh3::exact_sigma = false;
+  mesh3::SigmaBoundsOnly bounds_only;
   return mesh3::minimum(m, pp, pq);
 }
 
