@@ -34,6 +34,7 @@
 // The triangles' exact points are built once per pair (SegmentTriangles, shared by the queries).
 // Cost: per overlap test O(log T + k) exact segment–triangle tests and one parity ray; σ_d: the
 // candidates along the ray (k' polygons) plus one overlap test per candidate up to the exit.
+#include "geometry/rounded.hpp"
 #include "mesh3/mesh_mixed.hpp"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -91,13 +92,9 @@ Frame frame(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const 
   return f;
 }
 
-// The double nearest to the exact x (gmpxx's get_d truncates: compare the two neighbours exactly).
-double dbl(const FT& x) {
-  const mpq_class& e = x.exact();
-  const double t = e.get_d();
-  const double n = std::nextafter(t, e > 0 ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity());
-  return std::isfinite(n) && abs(e - mpq_class(n)) < abs(e - mpq_class(t)) ? n : t;
-}
+// The double nearest to the exact x (ties to even).
+double dbl(const FT& x) { return exact::round_nearest(x.exact()); }
+
 Vec3 approx(const P3& p) { return Vec3(dbl(p.x()), dbl(p.y()), dbl(p.z())); }
 P3 pt(const Vec3& v) { return P3(v[0], v[1], v[2]); }
 const std::array<P3, 3>& tp3(const MixedPair& m, std::size_t t) { return m.seg_tri->T[t]; }
