@@ -47,8 +47,10 @@
 //     a part found on ∂O are on ∂O (recorded for the other candidates through them).
 //  4. Maximal runs of boundary parts and points are the pieces: the same closed maximal uncovered
 //     intervals as the reference cutting nfp_cut.cpp, which is used instead for a candidate whose
-//     parts cannot be sampled (a part too short for a double between its ends) or whose
-//     collinear neighbour's end has no usable line (four input edges parallel to c).
+//     parts cannot be sampled (a part too short for a double between its ends). A collinear
+//     neighbour's end whose four input edges are all parallel to c (straight vertices of both
+//     shapes: rectilinear pieces) is split by a line through that sum vertex across c
+//     (cross_line_through).
 // Filters that keep the exact arithmetic rare (each sound on its own; the exact test follows when
 // one cannot decide): neighbours along the convolution sharing an end vertex meet only there;
 // segment pairs apart by a floating margin; splits ordered by certified approximations; at a
@@ -63,7 +65,8 @@
 // Two convex shapes: every candidate at a strictly convex vertex is a whole edge of the convex
 // sum and is kept whole without a test, and so is one at a straight vertex whose shape lies on
 // the candidate's outer side (two exact comparisons of input coordinates); the other straight
-// candidates are cut by the reference (nfp_classify below).
+// candidates lie in O but for those of their ends on ∂K (K = P ⊕ (−Q)), found on the candidates
+// kept whole by exact signs of degree 2 (convex_inner_straight), no reference cut.
 // Cost: candidate pairs by boxes (all pairs for K ≤ 64, else a box hierarchy; after step 0 only the
 // boxes of the uncertified parts), O(1) exact tests per meeting pair; step 0 at most 8 probes per
 // end of a crowded candidate, each a descent reaching at most 128 piece pairs; per part or point
@@ -508,9 +511,11 @@ struct Classifier {
       const auto [a, b] = stack.back();
       stack.pop_back();
       const auto &A = tree_p.nodes[a], &B = tree_b.nodes[b];
-      Vec2 lo, hi;
-      sum_box(A.lo, A.hi, B.lo, B.hi, lo, hi);
-      if (lo.x() > mhi.x() || hi.x() < mlo.x() || lo.y() > mhi.y() || hi.y() < mlo.y()) continue;
+      // sum_box's test (pair_sums.cpp), inlined: the descent's innermost step.
+      using geometry::widen_down, geometry::widen_up;
+      if (widen_down(A.lo.x() + B.lo.x()) > mhi.x() || widen_up(A.hi.x() + B.hi.x()) < mlo.x() || widen_down(A.lo.y() + B.lo.y()) > mhi.y() ||
+          widen_up(A.hi.y() + B.hi.y()) < mlo.y())
+        continue;
       if (dop_on && dop_misses(dop_p[a], dop_b[b], m, mmax, tol)) {
         ++dop_pruned;
         continue;
@@ -836,6 +841,22 @@ struct Classifier {
     return true;
   }
 
+  // When the four input edges at the sum vertex (p, q) are all parallel to `avoid` (straight
+  // vertices of both shapes on a collinear run: common on rectilinear pieces), a line through the
+  // vertex across `avoid`: direction the normal (−dy, dx) of avoid's direction (a1 − b1 rounded
+  // once, negation exact), anchored at P's p and −Q's q; ids p0 = p1 = p, q0 = q1 = q (it passes
+  // through that sum vertex, which known_lambda and the tests by ids may use; no input edge has
+  // both pairs equal, so same_line never ties it symbolically). The crossing with avoid's line is
+  // the vertex itself, as with an input edge's line; false (reference cut) when the direction is
+  // exactly parallel after all (a zero direction).
+  bool cross_line_through(std::uint32_t p, std::uint32_t q, const Ray& avoid, Line& out) const {
+    const Vec2 dir = avoid.a1 - avoid.b1, e1(-dir.y(), dir.x()), e0(0, 0);
+    if (predicates::cross_edges(avoid.b1, avoid.a1, e0, e1) == 0) return false;
+    out.c1 = S.P.vertices()[p], out.c2 = -S.Q.vertices()[q], out.e0 = e0, out.e1 = e1;
+    out.p0 = out.p1 = p, out.q0 = out.q1 = q, out.q_edge = false;
+    return true;
+  }
+
   // Exact: the point at parameter p (value v to a few ulps) of candidate c lies in O. Sum
   // vertices (the ends of most parts) are looked up once: each ends two or more candidates.
   // (A table over all (P, Q) vertex pairs when small, else a hash map.)
@@ -975,7 +996,7 @@ struct Classifier {
         if (along(0) <= 0 || along(1) >= 0) continue;
       }
       Line l;
-      if (!line_through(p, q, c.E, l)) return false;
+      if (!line_through(p, q, c.E, l) && !cross_line_through(p, q, c.E, l)) return false;
       const Param pm{Param::Cut, l, 0};
       Split sp = split(pm, c.E);
       sp.key = vertex_key(p, q);
@@ -1260,6 +1281,59 @@ const ShapeSide::Pieces& ShapeSide::pieces() const {
   return pieces_;
 }
 
+namespace {
+// Two convex shapes, K = P ⊕ (−Q) convex (nfp_classify below): the pieces of a straight candidate
+// c whose shape lies on its inner side. Its relative interior lies in O = int K, so its pieces are
+// its ends lying on ∂K, each a zero-length piece, in order A then B — what the reference cut
+// finds. ∂K is the union of the candidates kept whole (`whole`: strict or outer straight, redundant
+// ones included; each lies on ∂K, and they cover ∂K: every point of ∂K is on a candidate, and
+// the inner straight ones only add their ends, finitely many points, to a closed union). An end
+// (sum vertex (p, q)) is on ∂K iff it is an end of such a candidate (same ids) or lies on its
+// closed segment: exact signs of degree 2 (on its line, then between its ends along it), after a
+// box filter.
+void convex_inner_straight(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& cands, const std::vector<char>& whole,
+                           const NfpCandidate& c, std::vector<NfpPiece>& out) {
+  const auto VP = S.P.vertices(), VQ = S.Q.vertices();
+  auto on_boundary = [&](std::uint32_t p, std::uint32_t q) {
+    const Vec2 v = VP[p] - VQ[q];  // rounded once
+    const double marg = v.cwiseAbs().maxCoeff() * 0x1p-44 + 0x1p-1000;
+    for (std::size_t k = 0; k < cands.size(); ++k) {
+      if (!whole[k]) continue;
+      const NfpCandidate& d = cands[k];
+      const Ray& E = d.E;
+      if ((E.p0 == p && E.q0 == q) || (E.p1 == p && E.q1 == q)) return true;
+      if (v.x() < d.lo.x() - marg || v.x() > d.hi.x() + marg || v.y() < d.lo.y() - marg || v.y() > d.hi.y() + marg) continue;
+      auto rel = [&](auto L, int end) {  // v − (the end of d), and d's direction
+        auto x = L(VP[p].x()) - L(VQ[q].x()) - L(E.o1.x()) - L(E.o2.x());
+        auto y = L(VP[p].y()) - L(VQ[q].y()) - L(E.o1.y()) - L(E.o2.y());
+        auto dx = ray_dx(E, L), dy = ray_dy(E, L);
+        if (end == 1) x = x - dx, y = y - dy;
+        return std::array{x, y, dx, dy};
+      };
+      if (exact::exact_sign([&](auto L) {
+            const auto t = rel(L, 0);
+            return t[2] * t[1] - t[3] * t[0];
+          }) != 0)
+        continue;
+      if (exact::exact_sign([&](auto L) {
+            const auto t = rel(L, 0);
+            return t[0] * t[2] + t[1] * t[3];
+          }) < 0)
+        continue;
+      if (exact::exact_sign([&](auto L) {
+            const auto t = rel(L, 1);
+            return t[0] * t[2] + t[1] * t[3];
+          }) > 0)
+        continue;
+      return true;
+    }
+    return false;
+  };
+  if (on_boundary(c.E.p0, c.E.q0)) out.push_back(make_piece(c, kZero, kZero));
+  if (on_boundary(c.E.p1, c.E.q1)) out.push_back(make_piece(c, kOne, kOne));
+}
+}  // namespace
+
 bool convex_shape(const Polygon& S) {
   if (S.hole_count() != 0) return false;
   const auto V = S.vertices();
@@ -1284,7 +1358,8 @@ void nfp_classify(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& ca
   // along d. Then no placement on the candidate overlaps: the piece is [0, 1] again (what the
   // cutting finds: no open sum meets the candidate). The direction of u against d is read off one
   // non-zero coordinate of d (exactly parallel vectors: exact comparisons of input doubles).
-  // Otherwise the candidate's inside lies in O, and it is cut exactly.
+  // Otherwise the candidate's inside lies in O, and its pieces are its ends on ∂K
+  // (convex_inner_straight).
   if (convex_shape(S.P) && convex_shape(S.Q)) {
     const auto VP = S.P.vertices(), VQ = S.Q.vertices();
     auto outer_straight = [&](const NfpCandidate& c) {
@@ -1295,10 +1370,14 @@ void nfp_classify(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& ca
       const bool same = E.a1.x() != E.b1.x() ? (E.a1.x() > E.b1.x()) == (u1.x() > u0.x()) : (E.a1.y() > E.b1.y()) == (u1.y() > u0.y());
       return q_edge ? same : !same;
     };
-    for (const NfpCandidate& c : cands) {
+    auto& whole = thread_buffers().part;  // per candidate: on ∂K whole (strict or outer straight)
+    whole.resize(cands.size());
+    for (std::size_t k = 0; k < cands.size(); ++k) whole[k] = cands[k].strict || outer_straight(cands[k]);
+    for (std::size_t k = 0; k < cands.size(); ++k) {
+      const NfpCandidate& c = cands[k];
       if (c.redundant) continue;
-      if (c.strict || outer_straight(c)) out.push_back(make_piece(c, kZero, kOne));
-      else nfp_cut(S, c, out);
+      if (whole[k]) out.push_back(make_piece(c, kZero, kOne));
+      else convex_inner_straight(S, cands, whole, c, out);
     }
     return;
   }

@@ -18,6 +18,9 @@ using exact::exact_sign;
 bool same_line(const Line& a, const Line& b) {
   const bool same_edge = (a.e0 == b.e0 && a.e1 == b.e1) || (a.e0 == b.e1 && a.e1 == b.e0);
   if (!same_edge || a.q_edge != b.q_edge) return false;
+  // A line through one sum vertex only (p0 = p1 and q0 = q1: nfp_classify's cross line at a
+  // straight vertex of both shapes) is no input edge's line: never a symbolic tie.
+  if ((a.p0 == a.p1 && a.q0 == a.q1) || (b.p0 == b.p1 && b.q0 == b.q1)) return false;
   // A triangle edge of P translated by the same −Q vertex, or an edge of −U by the same P vertex
   // (the anchor c1 resp. c2 is an endpoint of the edge itself).
   return a.q_edge ? a.c1 == b.c1 : a.c2 == b.c2;

@@ -332,6 +332,38 @@ TEST(NfpClassify, ConvexPairs) {
   }
 }
 
+// Straight vertices in both shapes on parallel runs (rectilinear pieces such as baldacci4's): a
+// collinear neighbour's end whose four input edges are all parallel to the candidate is split by a
+// line across it through that sum vertex (cross_line_through), and for two convex shapes the
+// straight candidates with the shape on their inner side give their ends on ∂K only
+// (convex_inner_straight); both against the reference cutting, piece by piece. Subdivided
+// histograms against each other and turned, subdivided rectangles and hulls, and every ordered
+// pair of baldacci4's first 6 pieces.
+TEST(NfpClassify, StraightRunsInBothShapes) {
+  std::mt19937_64 rng(1919);
+  const std::size_t points0 = counts().points;
+  for (int it = 0; it < pendepth_test::scaled(60); ++it) {
+    const Polygon P = nonconvex2_test::histogram(rng, 2 + int(rng() % 6), 4), Q = nonconvex2_test::histogram(rng, 1 + int(rng() % 4), 3);
+    const Polygon R = nonconvex2_test::mapped(Q, [](const Vec2& p) { return Vec2(-p); });
+    const std::string tag = " " + std::to_string(it);
+    same_pieces(nonconvex2_test::subdivided(P), nonconvex2_test::subdivided(Q), "straight histograms" + tag);
+    same_pieces(nonconvex2_test::subdivided(P), nonconvex2_test::subdivided(R), "straight histogram / turned" + tag);
+    const double w = 1 + double(rng() % 5), h = 1 + double(rng() % 5);
+    const Polygon rect = Polygon::simple(std::vector<Vec2>{{0, 0}, {w, 0}, {w, h}, {0, h}}, "rectangle");
+    const Polygon H = nonconvex2_test::convex_hull(rng, 3 + int(rng() % 12), 2 + int(rng() % 9));
+    same_pieces(nonconvex2_test::subdivided(rect), nonconvex2_test::subdivided(rect), "straight rectangles" + tag);
+    same_pieces(nonconvex2_test::subdivided(rect), nonconvex2_test::subdivided(H), "straight rectangle / hull" + tag);
+    same_pieces(nonconvex2_test::subdivided(H), nonconvex2_test::subdivided(rect), "straight hull / rectangle" + tag);
+  }
+  auto polys = nonconvex2_test::instance("baldacci4.json");
+  ASSERT_GE(polys.size(), 6u);
+  polys.erase(polys.begin() + 6, polys.end());
+  for (const Polygon& P : polys)
+    for (const Polygon& Q : polys) same_pieces(P, Q, "baldacci4 " + P.name() + " / " + Q.name());
+  // Zero-length pieces (ends of inner straight candidates on ∂K among them) do occur.
+  EXPECT_GT(counts().points, points0);
+}
+
 TEST(NfpClassify, NestingInstances) {
   for (const char* name : {"albano", "shirts", "trousers"}) {
     const auto polys = nonconvex2_test::instance(std::string(name) + ".json");
