@@ -65,8 +65,7 @@
 // Two convex shapes: every candidate at a strictly convex vertex is a whole edge of the convex
 // sum and is kept whole without a test, and so is one at a straight vertex whose shape lies on
 // the candidate's outer side (two exact comparisons of input coordinates); the other straight
-// candidates lie in O but for those of their ends on ∂K (K = P ⊕ (−Q)), found on the candidates
-// kept whole by exact signs of degree 2 (convex_inner_straight), no reference cut.
+// candidates lie wholly in O, ends included (nfp_classify below), and give no piece.
 // Cost: candidate pairs by boxes (all pairs for K ≤ 64, else a box hierarchy; after step 0 only the
 // boxes of the uncertified parts), O(1) exact tests per meeting pair; step 0 at most 8 probes per
 // end of a crowded candidate, each a descent reaching at most 128 piece pairs; per part or point
@@ -1281,59 +1280,6 @@ const ShapeSide::Pieces& ShapeSide::pieces() const {
   return pieces_;
 }
 
-namespace {
-// Two convex shapes, K = P ⊕ (−Q) convex (nfp_classify below): the pieces of a straight candidate
-// c whose shape lies on its inner side. Its relative interior lies in O = int K, so its pieces are
-// its ends lying on ∂K, each a zero-length piece, in order A then B — what the reference cut
-// finds. ∂K is the union of the candidates kept whole (`whole`: strict or outer straight, redundant
-// ones included; each lies on ∂K, and they cover ∂K: every point of ∂K is on a candidate, and
-// the inner straight ones only add their ends, finitely many points, to a closed union). An end
-// (sum vertex (p, q)) is on ∂K iff it is an end of such a candidate (same ids) or lies on its
-// closed segment: exact signs of degree 2 (on its line, then between its ends along it), after a
-// box filter.
-void convex_inner_straight(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& cands, const std::vector<char>& whole,
-                           const NfpCandidate& c, std::vector<NfpPiece>& out) {
-  const auto VP = S.P.vertices(), VQ = S.Q.vertices();
-  auto on_boundary = [&](std::uint32_t p, std::uint32_t q) {
-    const Vec2 v = VP[p] - VQ[q];  // rounded once
-    const double marg = v.cwiseAbs().maxCoeff() * 0x1p-44 + 0x1p-1000;
-    for (std::size_t k = 0; k < cands.size(); ++k) {
-      if (!whole[k]) continue;
-      const NfpCandidate& d = cands[k];
-      const Ray& E = d.E;
-      if ((E.p0 == p && E.q0 == q) || (E.p1 == p && E.q1 == q)) return true;
-      if (v.x() < d.lo.x() - marg || v.x() > d.hi.x() + marg || v.y() < d.lo.y() - marg || v.y() > d.hi.y() + marg) continue;
-      auto rel = [&](auto L, int end) {  // v − (the end of d), and d's direction
-        auto x = L(VP[p].x()) - L(VQ[q].x()) - L(E.o1.x()) - L(E.o2.x());
-        auto y = L(VP[p].y()) - L(VQ[q].y()) - L(E.o1.y()) - L(E.o2.y());
-        auto dx = ray_dx(E, L), dy = ray_dy(E, L);
-        if (end == 1) x = x - dx, y = y - dy;
-        return std::array{x, y, dx, dy};
-      };
-      if (exact::exact_sign([&](auto L) {
-            const auto t = rel(L, 0);
-            return t[2] * t[1] - t[3] * t[0];
-          }) != 0)
-        continue;
-      if (exact::exact_sign([&](auto L) {
-            const auto t = rel(L, 0);
-            return t[0] * t[2] + t[1] * t[3];
-          }) < 0)
-        continue;
-      if (exact::exact_sign([&](auto L) {
-            const auto t = rel(L, 1);
-            return t[0] * t[2] + t[1] * t[3];
-          }) > 0)
-        continue;
-      return true;
-    }
-    return false;
-  };
-  if (on_boundary(c.E.p0, c.E.q0)) out.push_back(make_piece(c, kZero, kZero));
-  if (on_boundary(c.E.p1, c.E.q1)) out.push_back(make_piece(c, kOne, kOne));
-}
-}  // namespace
-
 bool convex_shape(const Polygon& S) {
   if (S.hole_count() != 0) return false;
   const auto V = S.vertices();
@@ -1358,8 +1304,13 @@ void nfp_classify(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& ca
   // along d. Then no placement on the candidate overlaps: the piece is [0, 1] again (what the
   // cutting finds: no open sum meets the candidate). The direction of u against d is read off one
   // non-zero coordinate of d (exactly parallel vectors: exact comparisons of input doubles).
-  // Otherwise the candidate's inside lies in O, and its pieces are its ends on ∂K
-  // (convex_inner_straight).
+  // Otherwise (u along d for P's edge: Q's straight vertex q has −Q's outward normal −n there,
+  // n the edge's outward normal) the whole candidate, ends included, lies in O = int K,
+  // K = P ⊕ (−Q): a point x − y (x ∈ P, y ∈ Q) is on ∂K only if one direction w supports P at x
+  // and −Q at −y; at the straight vertex −q the only such w is −n (its normal cone is one ray),
+  // and x on P's edge is extreme along +n, so P would lie on one line. The same for −Q's edge
+  // with P's straight vertex. Such a candidate gives no piece (what the reference cut finds:
+  // ConvexPairs, StraightRunsInBothShapes compare them).
   if (convex_shape(S.P) && convex_shape(S.Q)) {
     const auto VP = S.P.vertices(), VQ = S.Q.vertices();
     auto outer_straight = [&](const NfpCandidate& c) {
@@ -1370,14 +1321,10 @@ void nfp_classify(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& ca
       const bool same = E.a1.x() != E.b1.x() ? (E.a1.x() > E.b1.x()) == (u1.x() > u0.x()) : (E.a1.y() > E.b1.y()) == (u1.y() > u0.y());
       return q_edge ? same : !same;
     };
-    auto& whole = thread_buffers().part;  // per candidate: on ∂K whole (strict or outer straight)
-    whole.resize(cands.size());
-    for (std::size_t k = 0; k < cands.size(); ++k) whole[k] = cands[k].strict || outer_straight(cands[k]);
-    for (std::size_t k = 0; k < cands.size(); ++k) {
-      const NfpCandidate& c = cands[k];
+    for (const NfpCandidate& c : cands) {
       if (c.redundant) continue;
-      if (whole[k]) out.push_back(make_piece(c, kZero, kOne));
-      else convex_inner_straight(S, cands, whole, c, out);
+      if (c.strict || outer_straight(c)) out.push_back(make_piece(c, kZero, kOne));
+      // else: an inner straight candidate lies in O, ends included: no piece.
     }
     return;
   }

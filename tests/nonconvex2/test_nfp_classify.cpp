@@ -335,8 +335,8 @@ TEST(NfpClassify, ConvexPairs) {
 // Straight vertices in both shapes on parallel runs (rectilinear pieces such as baldacci4's): a
 // collinear neighbour's end whose four input edges are all parallel to the candidate is split by a
 // line across it through that sum vertex (cross_line_through), and for two convex shapes the
-// straight candidates with the shape on their inner side give their ends on ∂K only
-// (convex_inner_straight); both against the reference cutting, piece by piece. Subdivided
+// straight candidates with the shape on their inner side give no piece (they lie in O, ends
+// included); both against the reference cutting, piece by piece. Subdivided
 // histograms against each other and turned, subdivided rectangles and hulls, and every ordered
 // pair of baldacci4's first 6 pieces.
 TEST(NfpClassify, StraightRunsInBothShapes) {
@@ -360,7 +360,7 @@ TEST(NfpClassify, StraightRunsInBothShapes) {
   polys.erase(polys.begin() + 6, polys.end());
   for (const Polygon& P : polys)
     for (const Polygon& Q : polys) same_pieces(P, Q, "baldacci4 " + P.name() + " / " + Q.name());
-  // Zero-length pieces (ends of inner straight candidates on ∂K among them) do occur.
+  // Zero-length pieces (isolated points of ∂O on the candidates, split at collinear ends) occur.
   EXPECT_GT(counts().points, points0);
 }
 
