@@ -196,7 +196,7 @@ MixedPair MixedPair::make(const Shape3& P, const Shape3& Q) {
         (void)k.face_count();
       } catch (const InvalidInput& e) {
         throw InvalidInput("pair: " + mesh.name() + " against " + other.name() + ": a piece of the mesh's decomposition is " +
-                           "too thin for the rounded-shape engine (" + e.what() + "); use the mesh's hull (--hull)");
+                           "too thin for the rounded or flat engine (" + e.what() + "); use the mesh's hull (--hull)");
       }
     }
     const Shape3 piece(k);

@@ -317,7 +317,7 @@ TEST(MeshFlat, RotatedSamplesAndTree) {
     const double R = mesh == &cupm ? 2 : 3.5;
     const Vec3 c = mesh == &cupm ? Vec3(1.5, 1.5, 1.5) : Vec3(2.5, 1.5, 0.5);
     for (int it = 0; it < 12; ++it) {
-      // A dyadic triangle (so its barycentric samples with weights i/16 are exact).
+      // A dyadic triangle (so its barycentric samples with weights i/8 are exact).
       Vec3 a, b, e;
       for (int k = 0; k < 3; ++k) a[k] = dy(c[k] + R * U(rng));
       for (int k = 0; k < 3; ++k) b[k] = dy(a[k] + 1.5 * U(rng)), e[k] = dy(a[k] + 1.5 * U(rng));
@@ -335,9 +335,9 @@ TEST(MeshFlat, RotatedSamplesAndTree) {
       const Pair3 p(*mesh, *fs);
       const bool over = p.overlapping(pm, pf);
       bool sample_in = false;
-      for (int i = 0; i <= 16 && !sample_in; ++i)
-        for (int j = 0; i + j <= 16 && !sample_in; ++j) {
-          const Vec3 x = a + (i / 16.0) * (b - a) + (j / 16.0) * (e - a);
+      for (int i = 0; i <= 8 && !sample_in; ++i)
+        for (int j = 0; i + j <= 8 && !sample_in; ++j) {
+          const Vec3 x = a + (i / 8.0) * (b - a) + (j / 8.0) * (e - a);
           sample_in = Pair3(*mesh, Shape3::point(x)).overlapping(pm, pf);
         }
       ++n;
