@@ -10,7 +10,9 @@
 //              of relint F − ∂P lies in int P (membership is constant on a cell). In F's plane H,
 //              ∂P ∩ H is a union of segments (triangles crossing H; CGAL's exact plane–triangle
 //              intersection), isolated points, and triangles lying in H (their edges bound the
-//              cells). Let φ(X) = (X − F_0)·(F_1 − F_0) and V the φ values of the arrangement's
+//              cells). Let φ(X) = (π X − π F_0)·(π F_1 − π F_0), π the projection of H along a
+//              coordinate axis its normal is not orthogonal to (injective on H: the crossings
+//              below are exact 2D segment intersections), and V the φ values of the arrangement's
 //              vertices: F's vertices, the segments' (and H-triangles' edges') end points and the
 //              points where two of these segments or a segment and an edge of F meet (exact
 //              segment–segment intersections). A cell C is open, so φ(C) is an open interval whose
@@ -44,6 +46,7 @@ namespace pendepth::mesh3 {
 namespace {
 
 using namespace exact3;
+using P2 = K::Point_2;
 
 struct Frame {
   Eigen::Matrix3d Rm;  // the mesh's rotation and translation (world)
@@ -85,18 +88,25 @@ bool flat_overlap(const MixedPair& m, const std::vector<P3>& F) {
   std::size_t j2 = 2;
   while (j2 + 1 < k && CGAL::collinear(F[0], F[1], F[j2])) ++j2;
   const K::Plane_3 H(F[0], F[1], F[j2]);
-  const V3 e = F[1] - F[0];
-  auto phi = [&](const P3& X) { return (X - F[0]) * e; };
+  // φ on H's projection along a coordinate axis the normal is not orthogonal to (injective on H;
+  // the crossings are then exact 2D segment intersections, where the filters decide).
+  const V3 N = CGAL::cross_product(F[1] - F[0], F[j2] - F[0]);
+  const FT ax = CGAL::abs(N.x()), ay = CGAL::abs(N.y()), az = CGAL::abs(N.z());
+  const int drop = ax >= ay && ax >= az ? 0 : ay >= az ? 1 : 2;
+  auto pr = [&](const P3& X) { return drop == 0 ? P2(X.y(), X.z()) : drop == 1 ? P2(X.z(), X.x()) : P2(X.x(), X.y()); };
+  const P2 f0 = pr(F[0]);
+  const K::Vector_2 e = pr(F[1]) - f0;
+  auto phi = [&](const P2& X) { return (X - f0) * e; };
   std::vector<FT> fv(k);
-  for (std::size_t i = 0; i < k; ++i) fv[i] = phi(F[i]);
+  for (std::size_t i = 0; i < k; ++i) fv[i] = phi(pr(F[i]));
   const FT lo = *std::min_element(fv.begin(), fv.end()), hi = *std::max_element(fv.begin(), fv.end());
   std::vector<FT> V(fv);
-  auto add = [&](const P3& X) {
+  auto add = [&](const P2& X) {
     const FT x = phi(X);
     if (lo < x && x < hi) V.push_back(x);
   };
   // ∂P ∩ H near F: segments (a crossing triangle, or an edge of a triangle lying in H), points.
-  std::vector<K::Segment_3> cut;
+  std::vector<K::Segment_2> cut;
   Vec3 c;
   double h;
   box_of(F, c, h);
@@ -106,18 +116,24 @@ bool flat_overlap(const MixedPair& m, const std::vector<P3>& F) {
     if (!CGAL::do_intersect(H, T)) return;
     const auto r = CGAL::intersection(H, T);
     if (!r) return;
-    if (const P3* p = boost::get<P3>(&*r)) add(*p);
-    else if (const K::Segment_3* s = boost::get<K::Segment_3>(&*r)) cut.push_back(*s);
+    if (const P3* p = boost::get<P3>(&*r)) add(pr(*p));
+    else if (const K::Segment_3* s = boost::get<K::Segment_3>(&*r)) cut.emplace_back(pr(s->source()), pr(s->target()));
     else if (boost::get<K::Triangle_3>(&*r))
-      for (int j = 0; j < 3; ++j) cut.emplace_back(tp3(m, t)[j], tp3(m, t)[(j + 1) % 3]);
+      for (int j = 0; j < 3; ++j) cut.emplace_back(pr(tp3(m, t)[j]), pr(tp3(m, t)[(j + 1) % 3]));
   });
-  for (const K::Segment_3& s : cut) add(s.source()), add(s.target());
+  std::vector<K::Segment_2> edges;
+  for (std::size_t i = 0; i < k; ++i) edges.emplace_back(pr(F[i]), pr(F[(i + 1) % k]));
+  for (const K::Segment_2& s : cut) add(s.source()), add(s.target());
   for (std::size_t a = 0; a < cut.size(); ++a) {
-    auto meet = [&](const K::Segment_3& s) {
-      if (CGAL::do_intersect(cut[a], s)) points_of(CGAL::intersection(cut[a], s), add);
+    auto meet = [&](const K::Segment_2& s) {
+      if (!CGAL::do_intersect(cut[a], s)) return;
+      const auto r = CGAL::intersection(cut[a], s);
+      if (!r) return;
+      if (const P2* p = boost::get<P2>(&*r)) add(*p);
+      else if (const K::Segment_2* g = boost::get<K::Segment_2>(&*r)) add(g->source()), add(g->target());
     };
     for (std::size_t b = a + 1; b < cut.size(); ++b) meet(cut[b]);
-    for (std::size_t i = 0; i < k; ++i) meet(K::Segment_3(F[i], F[(i + 1) % k]));
+    for (const K::Segment_2& f : edges) meet(f);
   }
   std::sort(V.begin(), V.end());
   V.erase(std::unique(V.begin(), V.end()), V.end());
