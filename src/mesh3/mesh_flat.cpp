@@ -15,9 +15,10 @@
 //              below are exact 2D segment intersections), and V the φ values of the arrangement's
 //              vertices: F's vertices, the segments' (and H-triangles' edges') end points and the
 //              points where two of these segments or a segment and an edge of F meet (exact
-//              segment–segment intersections). A cell C is open, so φ(C) is an open interval whose
-//              ends are the max and min of φ on ∂C, attained at a vertex (on a segment's relative
-//              interior away from vertices, φ either grows along it or is that of its end points).
+//              segment–segment intersections), those in F only. A cell C is open, so φ(C) is an open
+//              interval whose ends are the max and min of φ on ∂C ⊂ F, attained at a vertex (on a
+//              segment's relative interior away from vertices, φ either grows along it or is that
+//              of its end points).
 //              Hence C meets the chord {X ∈ F : φ(X) = c} for c the midpoint of some two
 //              consecutive values of V within [φ_min, φ_max] of F: overlap ⇔ one of these chords
 //              (exact segments of F) meets int P, decided by the segment's exact test.
@@ -101,9 +102,17 @@ bool flat_overlap(const MixedPair& m, const std::vector<P3>& F) {
   for (std::size_t i = 0; i < k; ++i) fv[i] = phi(pr(F[i]));
   const FT lo = *std::min_element(fv.begin(), fv.end()), hi = *std::max_element(fv.begin(), fv.end());
   std::vector<FT> V(fv);
-  auto add = [&](const P2& X) {
+  std::vector<P2> f2;
+  for (const P3& p : F) f2.push_back(pr(p));
+  const CGAL::Orientation turn = CGAL::orientation(f2[0], f2[1], pr(F[j2]));
+  auto in_f = [&](const P2& X) {  // X in the closed (projected) polygon
+    for (std::size_t i = 0; i < k; ++i)
+      if (CGAL::orientation(f2[i], f2[(i + 1) % k], X) == -turn) return false;
+    return true;
+  };
+  auto add = [&](const P2& X) {  // a vertex of the arrangement: only those in F bound a cell
     const FT x = phi(X);
-    if (lo < x && x < hi) V.push_back(x);
+    if (lo < x && x < hi && in_f(X)) V.push_back(x);
   };
   // ∂P ∩ H near F: segments (a crossing triangle, or an edge of a triangle lying in H), points.
   std::vector<K::Segment_2> cut;
@@ -122,9 +131,9 @@ bool flat_overlap(const MixedPair& m, const std::vector<P3>& F) {
       for (int j = 0; j < 3; ++j) cut.emplace_back(pr(tp3(m, t)[j]), pr(tp3(m, t)[(j + 1) % 3]));
   });
   std::vector<K::Segment_2> edges;
-  for (std::size_t i = 0; i < k; ++i) edges.emplace_back(pr(F[i]), pr(F[(i + 1) % k]));
+  for (std::size_t i = 0; i < k; ++i) edges.emplace_back(f2[i], f2[(i + 1) % k]);
   for (const K::Segment_2& s : cut) add(s.source()), add(s.target());
-  for (std::size_t a = 0; a < cut.size(); ++a) {
+  for (std::size_t a = 0; a < cut.size() && m.flat_drop_family != 4; ++a) {
     auto meet = [&](const K::Segment_2& s) {
       if (!CGAL::do_intersect(cut[a], s)) return;
       const auto r = CGAL::intersection(cut[a], s);

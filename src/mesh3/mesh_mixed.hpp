@@ -51,7 +51,7 @@ struct MixedPair {
   bool flat = false;
   std::vector<Vec3> flat_v;
   /// Tests only: σ_d's candidates of mesh_flat.cpp leave out family 1 (∂P − F's vertices), 2 (the
-  /// edge–edge parallelograms) or 3 (mesh vertices − F) — the planted bug the oracle must catch.
+  /// edge–edge parallelograms) or 3 (mesh vertices − F), or 4: the overlap test's crossings.
   int flat_drop_family = 0;
   /// The point path's numeric domain (src/front/scale.hpp): its data above are the input × 2^-e,
   /// poses are converted in and answers scaled back (the piece pairs scale themselves).

@@ -16,8 +16,9 @@
 //  - Closed forms on a comb: a polygon lying in a face two decomposition pieces share (no piece
 //    pair overlaps, the polygon does), polygons on the surface (touching, not overlapping), exact
 //    fits in a slot, σ_d, σ, distance and cast; 2^±300 scaled copies give the same answers scaled.
-//  - The planted bug: σ_d with each candidate family left out (MixedPair::flat_drop_family) must
-//    disagree with the oracle somewhere on a fixed sample — each family is needed.
+//  - The planted bugs: σ_d with each candidate family left out (MixedPair::flat_drop_family) must
+//    disagree with the oracle somewhere on a fixed sample — each family is needed; the overlap
+//    test without the segments' crossings misses a corner of a triangle poking into a tooth.
 #include <pendepth/mesh3.hpp>
 #include <pendepth/pendepth.hpp>
 
@@ -302,6 +303,24 @@ TEST(MeshFlat, PlantedBugIsCaught) {
     }
     EXPECT_GT(wrong, 0) << "dropping candidate family " << family << " went unnoticed over " << tried << " σ_d";
   }
+}
+
+// The overlap test's planted bug: without the crossings of the cut segments with F's edges, the
+// chords miss a small corner of a large triangle that pokes into a tooth (the crossings bound that
+// cell's φ-extent); the exact test sees it, as does the point path at a point of the corner.
+TEST(MeshFlat, PlantedOverlapBugIsCaught) {
+  const Shape3 mesh = mesh_of(polycube(kComb), "comb");
+  // The vertex (0.25, 2.875) is 1/8 below the top y = 3 of tooth 0 (x ∈ [0, 1]); the edges from
+  // it leave the tooth through its top at x = 0.15 and ≈ 0.33 (the top's cut by F's plane ends at
+  // x = 0, 1 and its diagonal's crossing x = 0.5, all outside F); the rest of F is above the comb.
+  const std::vector<Vec3> tri{Vec3(0.25, 2.875, 0.5), Vec3(-2.25, 6, 0.5), Vec3(2.75, 7, 0.5)};
+  const Shape3 f = Shape3::flat(tri, "tri");
+  EXPECT_TRUE(Pair3(mesh, Shape3::point(Vec3(0.25, 2.95, 0.5))).overlapping(Pose3(), Pose3()));
+  EXPECT_TRUE(Pair3(mesh, f).overlapping(Pose3(), Pose3()));
+  EXPECT_FALSE(Pair3(mesh, f).overlapping(Pose3(), Pose3(Vec3(0, 0.125, 0))));  // the vertex on the top: touching
+  mesh3::MixedPair m = mesh3::MixedPair::make(mesh, f);
+  m.flat_drop_family = 4;
+  EXPECT_FALSE(mesh3::overlapping(m, Pose3(), Pose3())) << "the planted bug went unnoticed";
 }
 
 // General polygons under rotated poses: overlap against the point path on exact samples of the
