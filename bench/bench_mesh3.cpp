@@ -7,7 +7,7 @@
 // mesh size — a comb of k teeth against an L block, a torus against a smaller torus, CGAL sample
 // meshes (libcgal-demo: cross, star, tripod, against themselves) — at random translations where
 // the boxes overlap, and the error of "the hulls of both meshes" against the exact σ_d; a mesh
-// against a point and a sphere (BM_MeshMixed).
+// against a point, a sphere, a segment and a triangle (BM_MeshMixed).
 #include <pendepth/io.hpp>
 #include <pendepth/mesh3.hpp>
 #include <pendepth/pendepth.hpp>
@@ -316,7 +316,10 @@ const Mixed& mixed(std::size_t mesh, int shape) {
     const pendepth::Mesh3 m = pendepth::Mesh3::validate(mixed_mesh(mesh), "P");
     const pendepth::Shape3 s = shape == 0   ? pendepth::Shape3::point(Vec3::Zero())
                                : shape == 1 ? pendepth::Shape3::sphere(0.4)
-                                            : pendepth::Shape3::segment(Vec3(-0.5, -0.3, -0.2), Vec3(0.5, 0.3, 0.2));
+                               : shape == 2 ? pendepth::Shape3::segment(Vec3(-0.5, -0.3, -0.2), Vec3(0.5, 0.3, 0.2))
+                                            : pendepth::Shape3::flat(std::vector<Vec3>{Vec3(-0.5, -0.3, -0.2), Vec3(0.5, 0.3, 0.2),
+                                                                                       Vec3(0.1, -0.4, 0.3)},
+                                                                     "triangle");
     e.reset(new Mixed{pendepth::Pair3(pendepth::Shape3::from_mesh(m), s), {}, {}});
     Vec3 lo = m.points()[0], hi = lo;
     for (const Vec3& v : m.points()) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
@@ -344,7 +347,7 @@ void BM_MeshMixed(benchmark::State& st) {
     else benchmark::DoNotOptimize(x.pair.overlapping(id, x.poses[k]));
   }
   static const char* q[] = {"distance", "along", "minimum", "cast", "overlap"};
-  static const char* sh[] = {"_point_", "_sphere_", "_segment_"};
+  static const char* sh[] = {"_point_", "_sphere_", "_segment_", "_triangle_"};
   st.SetLabel(mixed_name(mesh) + sh[shape] + q[query]);
   int over = 0;
   for (const auto& pose : x.poses) over += x.pair.overlapping(id, pose);
@@ -370,7 +373,7 @@ BENCHMARK(BM_MeshHullError)->Apply(mesh_args);
 BENCHMARK(BM_MeshMixed)
     ->Apply([](benchmark::internal::Benchmark* b) {
       for (const auto& [mesh, shape] :
-           {std::pair<int, int>{1, 0}, {4, 0}, {static_cast<int>(kFineTorus), 0}, {1, 1}, {2, 1}, {1, 2}, {2, 2}})
+           {std::pair<int, int>{1, 0}, {4, 0}, {static_cast<int>(kFineTorus), 0}, {1, 1}, {2, 1}, {1, 2}, {2, 2}, {1, 3}, {2, 3}})
         for (int q = 0; q < 5; ++q) b->Args({mesh, shape, q});
     })
     ->Unit(benchmark::kMicrosecond);

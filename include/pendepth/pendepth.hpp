@@ -406,8 +406,8 @@ class WarmStart3 {
 /// convex pair per piece — σ_d by a walk over overlap tests (moving by the answer separates),
 /// brackets as their convex pairs', σ as bounds. A segment: overlap and σ_d exact on the mesh's
 /// triangles in rationals (src/mesh3/mesh_segment.cpp: the pieces' union misses a segment lying
-/// in a face two pieces share), distance and cast by the pieces, σ as bounds. A flat polygon
-/// against a non-convex mesh is InvalidInput (the same shared-face problem; not built).
+/// in a face two pieces share), distance and cast by the pieces, σ as bounds. A flat convex polygon:
+/// the same (src/mesh3/mesh_flat.cpp: overlap by exact chords through its cells, σ_d by ∂O's crossings).
 /// Costs: docs/benchmarks.md.
 class Pair3 {
  public:

@@ -62,11 +62,17 @@ def test_mesh_against_point_and_sphere(tmp_path):
     assert list(batch.overlapping) == [True, False, False]
     assert [field.signed_distance(t).distance for t in ts] == list(batch.distance)
     # A segment (src/mesh3/mesh_segment.cpp): in the face x = 1 inside the L (overlapping), on the
-    # surface (touching); a flat polygon is still refused.
+    # surface (touching); the same for a flat polygon (src/mesh3/mesh_flat.cpp).
     seg = pendepth.Pair3(mesh, pendepth.Shape3.segment([1.0, 0.25, 0.5], [1.0, 0.75, 0.5]))
     assert seg.overlapping([0.0, 0.0, 0.0])
     assert seg.along([0.0, 0.0, 0.0], [0.0, 0.0, 1.0]).depth == 0.5
     assert not seg.overlapping([0.5, 0.75, 0.0])  # outside the L, one end on the face y = 1
     assert seg.signed_distance([0.5, 0.75, 0.0]).distance == 0.0
-    with pytest.raises(pendepth.InvalidInput, match="flat polygon"):
-        pendepth.Pair3(mesh, pendepth.Shape3.flat([[0, 0, 0], [1, 0, 0], [0, 1, 0]]))
+    square = pendepth.Shape3.flat([[1.0, 0.25, 0.25], [1.0, 0.75, 0.25], [1.0, 0.75, 0.75], [1.0, 0.25, 0.75]])
+    flat = pendepth.Pair3(mesh, square)  # in the face x = 1 two pieces share: inside the L
+    assert flat.overlapping([0.0, 0.0, 0.0])
+    assert flat.along([0.0, 0.0, 0.0], [0.0, 0.0, 1.0]).depth == 0.75
+    assert pendepth.Pair3(square, mesh).along([0.0, 0.0, 0.0], [0.0, 0.0, -1.0]).depth == 0.75
+    floor = pendepth.Pair3(mesh, pendepth.Shape3.flat([[0, 0, 0], [1, 0, 0], [0, 1, 0]]))
+    assert not floor.overlapping([0.0, 0.0, 0.0])  # on the face z = 0: touching
+    assert floor.signed_distance([0.0, 0.0, 0.0]).distance == 0.0

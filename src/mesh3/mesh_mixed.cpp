@@ -138,19 +138,14 @@ MixedPair MixedPair::make(const Shape3& P, const Shape3& Q) {
   m.mesh_is_p = !P.is_convex();
   const Shape3& mesh = m.mesh_is_p ? P : Q;
   const Shape3& other = m.mesh_is_p ? Q : P;
-  if (other.dimension() == 2)
-    throw InvalidInput("pair: a non-convex mesh against a flat polygon (P " + P.name() + ", Q " + Q.name() +
-                       ") is not supported: its depth is not the union of the convex pieces' sums, whose shared faces "
-                       "lie inside the mesh (points, segments, solid primitives and rounded shapes are; use the mesh's "
-                       "hull: Shape3::from_file(path, name, true) / --hull, or the polygon ⊕ a small ball)");
   front::Scale scale;
-  if (other.dimension() == 0 || other.dimension() == 1) {  // the mesh's triangles (mesh_point / mesh_segment.cpp)
+  if (other.dimension() <= 2) {  // the mesh's triangles (mesh_point / mesh_segment / mesh_flat.cpp)
     const convex3::FlatShape3 fs = *other.flat_shape();
     const Mesh3& mm = *mesh.mesh();
     const auto pts = mm.points();
     front::Extent x;
     for (const Vec3& v : fs.v) x.add_point(v.cwiseAbs().maxCoeff());
-    if (fs.v.size() == 2) x.add_edge(fs.v[0], fs.v[1]);
+    for (std::size_t j = 0; fs.v.size() > 1 && j < fs.v.size(); ++j) x.add_edge(fs.v[j], fs.v[(j + 1) % fs.v.size()]);
     for (const auto& t : mm.triangles())
       for (int e = 0; e < 3; ++e) x.add_point(pts[t[e]].cwiseAbs().maxCoeff()), x.add_edge(pts[t[e]], pts[t[(e + 1) % 3]]);
     const front::Scale ts = front::Scale::for_pair(x, front::kBand3);
@@ -172,11 +167,16 @@ MixedPair MixedPair::make(const Shape3& P, const Shape3& Q) {
       m.pt.v[0] = in(m.pt.v[0], other.name() + " point:");
       return m;  // the point path needs no pieces (mesh_point.cpp)
     }
-    // a segment: its end points on the triangles' scale; the pieces below (identity scale, each
-    // pair scales itself) answer distance, cast and σ's lower bound
-    m.segment = true;
-    m.seg = {in(fs.v[0], other.name() + " end point:"), in(fs.v[1], other.name() + " end point:")};
+    // a segment or flat polygon: its points on the triangles' scale; the pieces below (identity
+    // scale, each pair scales itself) answer distance, cast and σ's lower bound
     m.seg_tri = segment_triangles(m);
+    if (other.dimension() == 1) {
+      m.segment = true;
+      m.seg = {in(fs.v[0], other.name() + " end point:"), in(fs.v[1], other.name() + " end point:")};
+    } else {
+      m.flat = true;
+      for (const Vec3& v : fs.v) m.flat_v.push_back(in(v, other.name() + " vertex:"));
+    }
   }
   bool exact = true;
   const std::vector<ConvexPolytope> pieces = pieces_of(mesh, exact);
@@ -196,7 +196,7 @@ MixedPair MixedPair::make(const Shape3& P, const Shape3& Q) {
         (void)k.face_count();
       } catch (const InvalidInput& e) {
         throw InvalidInput("pair: " + mesh.name() + " against " + other.name() + ": a piece of the mesh's decomposition is " +
-                           "too thin for the rounded-shape engine (" + e.what() + "); use the mesh's hull (--hull)");
+                           "too thin for the rounded or flat engine (" + e.what() + "); use the mesh's hull (--hull)");
       }
     }
     const Shape3 piece(k);
@@ -208,6 +208,7 @@ MixedPair MixedPair::make(const Shape3& P, const Shape3& Q) {
 bool overlapping(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
   if (m.point) return point_overlapping(m, ep(m, pose_p, "P"), ep(m, pose_q, "Q"));
   if (m.segment) return segment_overlapping(m, ep(m, pose_p, "P"), ep(m, pose_q, "Q"));
+  if (m.flat) return flat_overlapping(m, ep(m, pose_p, "P"), ep(m, pose_q, "Q"));
   const Offsets x = offsets(m, pose_p, pose_q);
   for (std::size_t i = 0; i < m.pieces.size(); ++i)
     if (near(x, i, Vec3::Zero()) && m.pieces[i].overlapping(pose_p, pose_q)) return true;
@@ -218,6 +219,7 @@ Depth3 along(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const
   if (m.point) return front::Scale{m.scale_exp}.answer(point_along(m, ep(m, pose_p, "P"), ep(m, pose_q, "Q"), d, separation));
   if (m.segment)
     return front::Scale{m.scale_exp}.answer(segment_along(m, ep(m, pose_p, "P"), ep(m, pose_q, "Q"), d, separation));
+  if (m.flat) return front::Scale{m.scale_exp}.answer(flat_along(m, ep(m, pose_p, "P"), ep(m, pose_q, "Q"), d, separation));
   const Vec3 u = d.normalized();
   const Offsets x = offsets(m, pose_p, pose_q);
   Depth3 r;
@@ -307,14 +309,14 @@ Depth3 minimum(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
     work += r.candidates;
     if (r.overlapping) deep.push_back({r.lower_bound, r.normal});
   }
-  if (m.segment && deep.empty() && overlapping(m, pose_p, pose_q))  // in a face the pieces share: σ >= 0
+  if ((m.segment || m.flat) && deep.empty() && overlapping(m, pose_p, pose_q))  // in a face the pieces share: σ >= 0
     return least_directional(0, {}, work, [&](const Vec3& d) { return along(m, pose_p, pose_q, d, false); });
   return least_from_deep(std::move(deep), work, [&](const Vec3& d) { return along(m, pose_p, pose_q, d, false); });
 }
 
 Distance3 signed_distance(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
   if (m.point) return back(m, point_distance(m, ep(m, pose_p, "P"), ep(m, pose_q, "Q")));
-  if (m.segment && overlapping(m, pose_p, pose_q)) return overlap_distance3(minimum(m, pose_p, pose_q));
+  if ((m.segment || m.flat) && overlapping(m, pose_p, pose_q)) return overlap_distance3(minimum(m, pose_p, pose_q));
   const Offsets x = offsets(m, pose_p, pose_q);
   struct Cand {
     double lb;

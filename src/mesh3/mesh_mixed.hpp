@@ -46,6 +46,13 @@ struct MixedPair {
   bool segment = false;
   std::array<Vec3, 2> seg{};
   std::shared_ptr<const SegmentTriangles> seg_tri;  ///< the triangles as exact points, built once
+  /// S a flat convex polygon (mesh_flat.cpp): its vertices `flat_v` (engine frame, the triangles'
+  /// scale; seg_tri as for the segment); the pieces too, for distance, cast and σ's lower bound.
+  bool flat = false;
+  std::vector<Vec3> flat_v;
+  /// Tests only: σ_d's candidates of mesh_flat.cpp leave out family 1 (∂P − F's vertices), 2 (the
+  /// edge–edge parallelograms) or 3 (mesh vertices − F), or 4: the overlap test's crossings.
+  int flat_drop_family = 0;
   /// The point path's numeric domain (src/front/scale.hpp): its data above are the input × 2^-e,
   /// poses are converted in and answers scaled back (the piece pairs scale themselves).
   int scale_exp = 0;
@@ -74,6 +81,11 @@ Cast3 point_cast(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, c
 std::shared_ptr<const SegmentTriangles> segment_triangles(const MixedPair& m);
 bool segment_overlapping(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q);
 Depth3 segment_along(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3& d, bool separation);
+
+// S a flat convex polygon (mesh_flat.cpp): O = {v : (F + v) ∩ int P ≠ ∅} on the mesh's triangles,
+// exact (the pieces' union misses F lying in an internal face).
+bool flat_overlapping(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q);
+Depth3 flat_along(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3& d, bool separation);
 
 /// Is the triangle of zero area (its three vertices collinear, exactly)?
 bool point_zero_area(const std::array<Vec3, 3>& T);

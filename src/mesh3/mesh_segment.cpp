@@ -35,10 +35,7 @@
 // Cost: per overlap test O(log T + k) exact segment–triangle tests and one parity ray; σ_d: the
 // candidates along the ray (k' polygons) plus one overlap test per candidate up to the exit.
 #include "geometry/rounded.hpp"
-#include "mesh3/mesh_mixed.hpp"
-
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/intersections.h>
+#include "mesh3/mesh_exact.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -48,19 +45,21 @@
 #include <stdexcept>
 
 namespace pendepth::mesh3 {
+namespace exact3 {
 
-// The mesh's triangles as exact points, built once per pair (CGAL's lazy points from doubles:
-// their exact values are computed on demand under a once-flag, safe to share between threads).
-struct SegmentTriangles {
-  std::vector<std::array<CGAL::Epeck::Point_3, 3>> T;
-};
+P3 place(const Eigen::Matrix3d& R, const Vec3& p, const Vec3& tq, const Vec3& tp) {
+  FT c[3];
+  for (int i = 0; i < 3; ++i) c[i] = FT(R(i, 0)) * p[0] + FT(R(i, 1)) * p[1] + FT(R(i, 2)) * p[2] + FT(tq[i]) - FT(tp[i]);
+  return P3(c[0], c[1], c[2]);
+}
+
+double dbl(const FT& x) { return exact::round_nearest(x.exact()); }
+
+}  // namespace exact3
 
 namespace {
 
-using K = CGAL::Epeck;
-using FT = K::FT;
-using P3 = K::Point_3;
-using V3 = K::Vector_3;
+using namespace exact3;
 
 struct Frame {
   Eigen::Matrix3d Rm;  // the mesh's rotation and translation (world)
@@ -68,12 +67,6 @@ struct Frame {
   Vec3 d;              // the ray's direction in the mesh's frame (doubles, exact as given)
   P3 A, B;             // the exact placed end points
 };
-
-P3 place(const Eigen::Matrix3d& R, const Vec3& p, const Vec3& tq, const Vec3& tp) {
-  FT c[3];
-  for (int i = 0; i < 3; ++i) c[i] = FT(R(i, 0)) * p[0] + FT(R(i, 1)) * p[1] + FT(R(i, 2)) * p[2] + FT(tq[i]) - FT(tp[i]);
-  return P3(c[0], c[1], c[2]);
-}
 
 Frame frame(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3* d) {
   const Pose3& pm = m.mesh_is_p ? pose_p : pose_q;
@@ -92,34 +85,7 @@ Frame frame(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const 
   return f;
 }
 
-// The double nearest to the exact x (ties to even).
-double dbl(const FT& x) { return exact::round_nearest(x.exact()); }
-
-Vec3 approx(const P3& p) { return Vec3(dbl(p.x()), dbl(p.y()), dbl(p.z())); }
 P3 pt(const Vec3& v) { return P3(v[0], v[1], v[2]); }
-const std::array<P3, 3>& tp3(const MixedPair& m, std::size_t t) { return m.seg_tri->T[t]; }
-K::Triangle_3 tri(const MixedPair& m, std::size_t t) { return {tp3(m, t)[0], tp3(m, t)[1], tp3(m, t)[2]}; }
-
-// A margin far above the rounding of approx() (exact value to double: 1 ulp) for box tests.
-double margin(const Vec3& c, double h) { return 0x1p-30 * (c.norm() + h) + 0x1p-1000; }
-
-// Visits the triangles whose box meets the box [c − h, c + h] (componentwise, grown by a margin).
-template <class F>
-void near_box(const MixedPair& m, const Vec3& c, double h, F&& visit) {
-  if (m.linear) {
-    for (std::size_t t = 0; t < m.tri.size(); ++t) visit(t);
-  } else {
-    m.tree.near_point(c, h + margin(c, h), [&](std::uint32_t t) { visit(t); });
-  }
-}
-template <class F>
-void along_ray(const MixedPair& m, const Vec3& c, double h, const Vec3& d, F&& visit) {
-  if (m.linear) {
-    for (std::size_t t = 0; t < m.tri.size(); ++t) visit(t);
-  } else {
-    m.tree.along_ray(c, d, h + margin(c, h), [&](std::uint32_t t) { visit(t); });
-  }
-}
 
 bool on_surface(const MixedPair& m, const P3& X) {
   bool on = false;
@@ -171,16 +137,11 @@ bool parity_inside(const MixedPair& m, const P3& X) {
   throw std::logic_error("mesh segment: no non-degenerate parity ray among ~9e7 directions");
 }
 
-bool inside(const MixedPair& m, const P3& X) { return !on_surface(m, X) && parity_inside(m, X); }
+}  // namespace
 
-// CGAL 5's intersection results are boost::variant (std::variant from CGAL 6 on).
-// Adds the points of an exact intersection result (a point, or a segment's two ends) to `out`.
-template <class R, class F>
-void points_of(const R& r, F&& add) {
-  if (!r) return;
-  if (const P3* p = boost::get<P3>(&*r)) add(*p);
-  else if (const K::Segment_3* s = boost::get<K::Segment_3>(&*r)) add(s->source()), add(s->target());
-}
+namespace exact3 {
+
+bool inside(const MixedPair& m, const P3& X) { return !on_surface(m, X) && parity_inside(m, X); }
 
 // Does [A, B] meet int P? (file comment)
 bool seg_overlap(const MixedPair& m, const P3& A, const P3& B) {
@@ -202,6 +163,10 @@ bool seg_overlap(const MixedPair& m, const P3& A, const P3& B) {
     if (inside(m, A + ((lam[k] + lam[k + 1]) / 2) * AB)) return true;
   return false;
 }
+
+}  // namespace exact3
+
+namespace {
 
 // A candidate of σ_d: the ray parameter μ (units of d') and its polygon's normal (mesh frame).
 struct Cand {

@@ -286,7 +286,7 @@ TEST_F(CliMesh, HullFlagOnEveryCommand) {
   }
 }
 
-// A non-convex mesh against a point, a segment or a primitive (src/mesh3/mesh_mixed.cpp), either role: every
+// A non-convex mesh against a point, a segment, a flat polygon or a primitive (src/mesh3/mesh_mixed.cpp), either role: every
 // command but --generalized answers (exit 0), the JSON is the library's Pair3 answer.
 TEST_F(CliMesh, MeshAgainstPointAndPrimitives) {
   const std::string l = write("L.obj", mesh3_test::write_obj(mesh3_test::polycube(mesh3_test::l_block())));
@@ -320,6 +320,23 @@ TEST_F(CliMesh, MeshAgainstPointAndPrimitives) {
     for (const bool swap : {false, true}) {
       const Result r = swap ? run3(cmd, sq, l, args) : run3(cmd, l, sq, args);
       EXPECT_EQ(r.status, 0) << sq << " " << cmd << " " << args << ": " << r.err;
+    }
+  }
+  // A flat polygon file (a lone face; src/mesh3/mesh_flat.cpp) in the face x = 1 two pieces
+  // share: the JSON is the library's answer, both roles.
+  const std::string fq = write("square.off", "OFF\n4 1 0\n1 0.25 0.25\n1 0.75 0.25\n1 0.75 0.75\n1 0.25 0.75\n4 0 1 2 3\n");
+  const std::vector<Vec3> sqv{Vec3(1, 0.25, 0.25), Vec3(1, 0.75, 0.25), Vec3(1, 0.75, 0.75), Vec3(1, 0.25, 0.75)};
+  const Pair3 fp(Shape3::from_file(l, "P"), Shape3::flat(sqv));
+  const auto fs = nlohmann::json::parse(run3("depth", l, fq, "--direction 0,0,1 --json").out);
+  EXPECT_EQ(fs["depth"].get<double>(), 0.75);
+  EXPECT_EQ(fs["depth"].get<double>(), fp.along(Pose3(), Pose3(), Vec3(0, 0, 1)).depth);
+  const auto fd = nlohmann::json::parse(run3("distance", l, fq, "--offset 0,1.5,0 --json").out);
+  EXPECT_EQ(fd["distance"].get<double>(), fp.signed_distance(Pose3(), Pose3(Vec3(0, 1.5, 0))).distance);
+  for (const auto& [cmd, args] : commands()) {
+    if (args.find("--generalized") != std::string::npos) continue;
+    for (const bool swap : {false, true}) {
+      const Result r = swap ? run3(cmd, fq, l, args) : run3(cmd, l, fq, args);
+      EXPECT_EQ(r.status, 0) << fq << " " << cmd << " " << args << ": " << r.err;
     }
   }
 }

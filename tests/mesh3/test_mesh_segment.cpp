@@ -320,16 +320,4 @@ TEST(MeshSegment, HugeAndTinyScale) {
   }
 }
 
-TEST(MeshSegment, FlatPolygonStillRefused) {
-  const Shape3 mesh = mesh_of(polycube(kComb), "comb");
-  try {
-    const std::vector<Vec3> tri{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
-    Pair3(mesh, Shape3::flat(tri, "tri"));
-    FAIL() << "accepted";
-  } catch (const InvalidInput& e) {
-    EXPECT_NE(std::string(e.what()).find("flat polygon"), std::string::npos) << e.what();
-    EXPECT_NE(std::string(e.what()).find("tri"), std::string::npos) << e.what();
-  }
-}
-
 }  // namespace
