@@ -54,6 +54,7 @@ namespace pendepth {
 class Mesh3;  // include/pendepth/mesh3.hpp
 namespace mesh3 {
 struct MeshPair;  // src/mesh3/mesh_pair.hpp
+struct LazyMeshPair;  // src/front/mesh_shapes.hpp: MeshPair built on first use
 struct MixedPair;  // src/mesh3/mesh_mixed.hpp
 }
 namespace convex3 {
@@ -389,7 +390,9 @@ class WarmStart3 {
 /// docs/robustness.md "Curved primitives"). Queries are const and thread-safe.
 ///
 /// Meshes (either shape non-convex; docs/design.md "Meshes", src/mesh3/mesh_pair.hpp): answered
-/// on the pieces of Mesh3::decomposition() (a convex shape is one piece), built at construction.
+/// on the pieces of Mesh3::decomposition() (a convex shape is one piece), built on the first query
+/// that needs them, once per pair, thread-safe (construction never decomposes; an InvalidInput of
+/// the pieces — numeric domain, too thin — comes from that query, prefixed with the mesh's source).
 /// overlapping, along, separation and signed_distance when apart or touching are exact; minimum
 /// gives certified bounds (lower = the deepest overlapping piece pair's σ, upper = the least σ_d
 /// over a few directions, depth = upper with its translation; lower_bound == upper_bound when
@@ -461,7 +464,7 @@ class Pair3 {
   // (the same objects unless the pair lies outside the comfort band).
   int scale_exp_ = 0;
   Shape3 engine_P_, engine_Q_;
-  std::shared_ptr<const mesh3::MeshPair> mesh_;  // either shape non-convex (pair3_mesh.cpp)
+  std::shared_ptr<const mesh3::LazyMeshPair> mesh_;  // either shape non-convex: pieces on first use (pair3_mesh.cpp)
   std::shared_ptr<const mesh3::MixedPair> mixed_;  // a mesh against a point / rounded / curved shape
   Depth3 min_engine(const Pose3& pose_p, const Pose3& pose_q) const;
   Depth3 along_engine(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const;

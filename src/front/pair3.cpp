@@ -148,6 +148,13 @@ bool mixed_pair(const Shape3& P, const Shape3& Q) {
 }
 }  // namespace
 
+namespace {
+// The pair's scale exponent: a mesh pair's comes with its pieces (built here on first use).
+int exp_of(const std::shared_ptr<const mesh3::LazyMeshPair>& mesh, int convex_exp) {
+  return mesh ? mesh->scale_exp() : convex_exp;
+}
+}  // namespace
+
 Pair3::Pair3(Shape3 P, Shape3 Q, Prepare)
     : P_(supported_pair(std::move(P), Q)),
       Q_(std::move(Q)),
@@ -159,7 +166,8 @@ Pair3::Pair3(Shape3 P, Shape3 Q, Prepare)
     return;
   }
   if (!P_.is_convex() || !Q_.is_convex()) {
-    mesh_ = front::mesh_pair(P_, Q_, scale_exp_);  // pieces in engine coordinates (pair3_mesh.cpp)
+    mesh_ = front::mesh_pair(P_, Q_);  // pieces in engine coordinates on first use (pair3_mesh.cpp)
+    if (mesh3::eager_pieces) mesh_->pair();  // tests: the eager path
     return;
   }
   engine_P_ = engine_shape(P_, front::Scale{scale_exp_}, "P");
@@ -265,13 +273,13 @@ auto curved_query(const front::Scale& scale, const Shape3& P, const Pose3& pose_
 // One query in engine coordinates: poses converted in (checked), the answer scaled back.
 Depth3 Pair3::min_engine(const Pose3& pose_p, const Pose3& pose_q) const {
   if (mixed_) return mesh3::minimum(*mixed_, pose_p, pose_q);
-  const front::Scale scale{scale_exp_};
+  const front::Scale scale{exp_of(mesh_, scale_exp_)};
   if (is_curved(engine_P_, engine_Q_))
     return scale.answer(curved_query(scale, engine_P_, pose_p, engine_Q_, pose_q, [](auto&&... a) {
       return primitives::curved_minimum(a...);
     }));
   if (mesh_)
-    return scale.answer(mesh3::minimum(*mesh_, engine_pose(scale, pose_p, "pose of P"), engine_pose(scale, pose_q, "pose of Q")));
+    return scale.answer(mesh3::minimum(mesh_->pair(), engine_pose(scale, pose_p, "pose of P"), engine_pose(scale, pose_q, "pose of Q")));
   if (is_rounded(engine_P_, engine_Q_)) {
     const Pose3 ep = engine_pose(scale, pose_p, "pose of P"), eq = engine_pose(scale, pose_q, "pose of Q");
     return scale.answer(primitives::rounded_minimum(core_distance(engine_P_, ep, engine_Q_, eq),
@@ -287,13 +295,13 @@ Depth3 Pair3::min_engine(const Pose3& pose_p, const Pose3& pose_q) const {
 
 Depth3 Pair3::along_engine(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const {
   if (mixed_) return mesh3::along(*mixed_, pose_p, pose_q, d, false);
-  const front::Scale scale{scale_exp_};
+  const front::Scale scale{exp_of(mesh_, scale_exp_)};
   if (is_curved(engine_P_, engine_Q_))
     return scale.answer(curved_query(scale, engine_P_, pose_p, engine_Q_, pose_q, [&](auto&&... a) {
       return primitives::curved_along(a..., d);
     }));
   if (mesh_)
-    return scale.answer(mesh3::along(*mesh_, engine_pose(scale, pose_p, "pose of P"), engine_pose(scale, pose_q, "pose of Q"), d, false));
+    return scale.answer(mesh3::along(mesh_->pair(), engine_pose(scale, pose_p, "pose of P"), engine_pose(scale, pose_q, "pose of Q"), d, false));
   if (is_rounded(engine_P_, engine_Q_)) {
     const Pose3 ep = engine_pose(scale, pose_p, "pose of P"), eq = engine_pose(scale, pose_q, "pose of Q");
     return scale.answer(primitives::rounded_along(core_distance(engine_P_, ep, engine_Q_, eq),
@@ -312,8 +320,8 @@ bool Pair3::overlapping(const Pose3& pose_p, const Pose3& pose_q) const {
   check_pose(pose_p, "pose of P");
   check_pose(pose_q, "pose of Q");
   if (mixed_) return mesh3::overlapping(*mixed_, pose_p, pose_q);
-  const front::Scale scale{scale_exp_};
-  return mesh3::overlapping(*mesh_, engine_pose(scale, pose_p, "pose of P"), engine_pose(scale, pose_q, "pose of Q"));
+  const front::Scale scale{exp_of(mesh_, scale_exp_)};
+  return mesh3::overlapping(mesh_->pair(), engine_pose(scale, pose_p, "pose of P"), engine_pose(scale, pose_q, "pose of Q"));
 }
 
 Depth3 Pair3::minimum(const Pose3& pose_p, const Pose3& pose_q) const {
@@ -340,8 +348,8 @@ Depth3 Pair3::separation(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d
     check_pose(pose_p, "pose of P");
     check_pose(pose_q, "pose of Q");
     front::check_direction(d);
-    const front::Scale scale{scale_exp_};
-    return scale.answer(mesh3::along(*mesh_, engine_pose(scale, pose_p, "pose of P"), engine_pose(scale, pose_q, "pose of Q"), d, true));
+    const front::Scale scale{exp_of(mesh_, scale_exp_)};
+    return scale.answer(mesh3::along(mesh_->pair(), engine_pose(scale, pose_p, "pose of P"), engine_pose(scale, pose_q, "pose of Q"), d, true));
   }
   Depth3 r = along(pose_p, pose_q, d);
   r.kind = DepthKind::Separation;
@@ -349,7 +357,7 @@ Depth3 Pair3::separation(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d
 }
 
 void Pair3::overlapping(std::span<const Pose3> poses_q, std::span<bool> out, unsigned threads) const {
-  check_poses(poses_q, out.size(), scale_exp_);
+  check_poses(poses_q, out.size(), exp_of(mesh_, scale_exp_));
   const Pose3 pose_p;
   front::parallel_for(poses_q.size(), threads, [&](std::size_t i) {
     out[i] = mesh_ || mixed_ ? overlapping(pose_p, poses_q[i]) : min_engine(pose_p, poses_q[i]).overlapping;
@@ -368,16 +376,16 @@ void Pair3::along(std::span<const Pose3> poses_q, std::span<const Vec3> ds, std:
 void Pair3::minimum(const Pose3& pose_p, std::span<const Pose3> poses_q, std::span<Depth3> out,
                     unsigned threads) const {
   check_pose(pose_p, "pose of P");
-  check_poses(poses_q, out.size(), scale_exp_);
-  engine_pose(front::Scale{scale_exp_}, pose_p, "pose of P");
+  check_poses(poses_q, out.size(), exp_of(mesh_, scale_exp_));
+  engine_pose(front::Scale{exp_of(mesh_, scale_exp_)}, pose_p, "pose of P");
   front::parallel_for(poses_q.size(), threads, [&](std::size_t i) { out[i] = min_engine(pose_p, poses_q[i]); });
 }
 
 void Pair3::along(const Pose3& pose_p, std::span<const Pose3> poses_q, std::span<const Vec3> ds,
                   std::span<Depth3> out, unsigned threads) const {
   check_pose(pose_p, "pose of P");
-  check_poses(poses_q, out.size(), scale_exp_);
-  engine_pose(front::Scale{scale_exp_}, pose_p, "pose of P");
+  check_poses(poses_q, out.size(), exp_of(mesh_, scale_exp_));
+  engine_pose(front::Scale{exp_of(mesh_, scale_exp_)}, pose_p, "pose of P");
   if (poses_q.empty()) return;
   check_directions(ds, poses_q.size());
   const bool one = ds.size() == 1;
@@ -416,13 +424,13 @@ Cast3 cast_answer(const front::Scale& scale, Cast3 r) {
 
 Distance3 Pair3::distance_engine(const Pose3& pose_p, const Pose3& pose_q) const {
   if (mixed_) return mesh3::signed_distance(*mixed_, pose_p, pose_q);
-  const front::Scale scale{scale_exp_};
+  const front::Scale scale{exp_of(mesh_, scale_exp_)};
   if (is_curved(engine_P_, engine_Q_))
     return distance_answer(scale, curved_query(scale, engine_P_, pose_p, engine_Q_, pose_q, [](auto&&... a) {
                              return primitives::curved_distance(a...);
                            }));
   if (mesh_)
-    return distance_answer(scale, mesh3::signed_distance(*mesh_, engine_pose(scale, pose_p, "pose of P"),
+    return distance_answer(scale, mesh3::signed_distance(mesh_->pair(), engine_pose(scale, pose_p, "pose of P"),
                                                          engine_pose(scale, pose_q, "pose of Q")));
   if (is_rounded(engine_P_, engine_Q_)) {
     const Pose3 ep = engine_pose(scale, pose_p, "pose of P"), eq = engine_pose(scale, pose_q, "pose of Q");
@@ -450,8 +458,8 @@ void Pair3::signed_distance(std::span<const Pose3> poses_q, std::span<Distance3>
 void Pair3::signed_distance(const Pose3& pose_p, std::span<const Pose3> poses_q, std::span<Distance3> out,
                             unsigned threads) const {
   check_pose(pose_p, "pose of P");
-  check_poses(poses_q, out.size(), scale_exp_);
-  engine_pose(front::Scale{scale_exp_}, pose_p, "pose of P");
+  check_poses(poses_q, out.size(), exp_of(mesh_, scale_exp_));
+  engine_pose(front::Scale{exp_of(mesh_, scale_exp_)}, pose_p, "pose of P");
   front::parallel_for(poses_q.size(), threads, [&](std::size_t i) { out[i] = distance_engine(pose_p, poses_q[i]); });
 }
 
@@ -460,9 +468,9 @@ Cast3 Pair3::cast(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) const
   check_pose(pose_q, "pose of Q");
   front::check_direction(d);
   if (mixed_) return mesh3::cast(*mixed_, pose_p, pose_q, d);
-  const front::Scale scale{scale_exp_};
+  const front::Scale scale{exp_of(mesh_, scale_exp_)};
   if (mesh_)
-    return cast_answer(scale, mesh3::cast(*mesh_, engine_pose(scale, pose_p, "pose of P"), engine_pose(scale, pose_q, "pose of Q"), d));
+    return cast_answer(scale, mesh3::cast(mesh_->pair(), engine_pose(scale, pose_p, "pose of P"), engine_pose(scale, pose_q, "pose of Q"), d));
   if (is_curved(engine_P_, engine_Q_))
     return cast_answer(scale, curved_query(scale, engine_P_, pose_p, engine_Q_, pose_q, [&](auto&&... a) {
                          return primitives::curved_cast(a..., d);
@@ -489,7 +497,7 @@ Depth3 Pair3::minimum(const Pose3& pose_p, const Pose3& pose_q, WarmStart3& warm
   if (mesh_ || mixed_) return min_engine(pose_p, pose_q);  // no warm start on meshes
   if (is_flat(engine_P_) || is_flat(engine_Q_) || is_rounded(engine_P_, engine_Q_) || is_curved(engine_P_, engine_Q_))
     return min_engine(pose_p, pose_q);  // no warm start
-  const front::Scale scale{scale_exp_};
+  const front::Scale scale{exp_of(mesh_, scale_exp_)};
   const Pose3 ep = engine_pose(scale, pose_p, "pose of P"), eq = engine_pose(scale, pose_q, "pose of Q");
   const void *p = &engine_P_.polytope(), *q = &engine_Q_.polytope();
   convex3::ExpandSeed seed;
@@ -502,8 +510,8 @@ Depth3 Pair3::minimum(const Pose3& pose_p, const Pose3& pose_q, WarmStart3& warm
 
 std::vector<Depth3> Pair3::trajectory(const Pose3& pose_p, std::span<const Pose3> poses_q, bool warm) const {
   check_pose(pose_p, "pose of P");
-  check_poses(poses_q, poses_q.size(), scale_exp_);
-  engine_pose(front::Scale{scale_exp_}, pose_p, "pose of P");
+  check_poses(poses_q, poses_q.size(), exp_of(mesh_, scale_exp_));
+  engine_pose(front::Scale{exp_of(mesh_, scale_exp_)}, pose_p, "pose of P");
   std::vector<Depth3> out(poses_q.size());
   WarmStart3 state;
   for (std::size_t i = 0; i < poses_q.size(); ++i)

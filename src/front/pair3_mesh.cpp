@@ -1,13 +1,17 @@
 // Pair3's mesh pairs (either shape non-convex): the pieces of both decompositions in engine
 // coordinates (src/front/scale.hpp, the same numeric domain as the convex pairs), built once per
-// pair. The queries are in src/mesh3/mesh_pair.cpp and mesh_line.cpp.
+// pair on its first query (mesh3/lazy.hpp). The queries are in src/mesh3/mesh_pair.cpp and
+// mesh_line.cpp.
 #include "front/mesh_shapes.hpp"
 #include "front/scale.hpp"
 #include "mesh3/mesh_pair.hpp"
 
-namespace pendepth::front {
+#include <pendepth/mesh3.hpp>
 
-std::shared_ptr<const mesh3::MeshPair> mesh_pair(const Shape3& P, const Shape3& Q, int& scale_exp) {
+namespace pendepth::front {
+namespace {
+
+mesh3::LazyMeshPair::Built build(const Shape3& P, const Shape3& Q) {
   bool exact = true;
   std::vector<ConvexPolytope> pp = mesh3::pieces_of(P, exact), qq = mesh3::pieces_of(Q, exact);
   Extent x;
@@ -18,7 +22,6 @@ std::shared_ptr<const mesh3::MeshPair> mesh_pair(const Shape3& P, const Shape3& 
         for (int k = 0; k < 3; ++k) x.add_edge(c[t[k]], c[t[(k + 1) % 3]]);
     }
   const Scale scale = Scale::for_pair(x, kBand3);
-  scale_exp = scale.e;
   if (!scale.identity()) {
     auto to_engine = [&](std::vector<ConvexPolytope>& list, const Shape3& s, const char* which) {
       for (std::size_t i = 0; i < list.size(); ++i) {
@@ -33,7 +36,25 @@ std::shared_ptr<const mesh3::MeshPair> mesh_pair(const Shape3& P, const Shape3& 
     to_engine(pp, P, "P");
     to_engine(qq, Q, "Q");
   }
-  return std::make_shared<const mesh3::MeshPair>(mesh3::MeshPair::make(std::move(pp), std::move(qq), exact));
+  return {std::make_shared<const mesh3::MeshPair>(mesh3::MeshPair::make(std::move(pp), std::move(qq), exact)), scale.e};
+}
+
+}  // namespace
+
+void rethrow_with_mesh_source(const Shape3& P, const Shape3& Q, const InvalidInput& e) {
+  const Shape3& s = !P.is_convex() ? P : Q;
+  if (!s.mesh() || s.mesh()->source().empty()) throw e;
+  throw InvalidInput(s.mesh()->source() + ": " + e.what());
+}
+
+std::shared_ptr<const mesh3::LazyMeshPair> mesh_pair(const Shape3& P, const Shape3& Q) {
+  return std::make_shared<const mesh3::LazyMeshPair>([P, Q]() -> mesh3::LazyMeshPair::Built {
+    try {
+      return build(P, Q);
+    } catch (const InvalidInput& e) {
+      rethrow_with_mesh_source(P, Q, e);
+    }
+  });
 }
 
 }  // namespace pendepth::front

@@ -40,6 +40,7 @@
 // src/convex3/flat3.cpp; rounded: a few exact GJKs; curved: the certified engine).
 #include "mesh3/mesh_mixed.hpp"
 
+#include "front/mesh_shapes.hpp"
 #include "front/scale.hpp"
 #include "mesh3/mesh_pair.hpp"
 #include "primitives/support3.hpp"
@@ -68,14 +69,15 @@ Offsets offsets(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
   const Pose3& po = m.mesh_is_p ? pose_q : pose_p;
   const Eigen::Matrix3d R = pm.matrix();
   const double s = m.mesh_is_p ? 1 : -1;
-  x.o.reserve(m.center.size()), x.reach.reserve(m.center.size());
-  for (std::size_t i = 0; i < m.center.size(); ++i) {
-    const Vec3 c = R * m.center[i] + pm.translation;
+  const MixedPair::Pieces& b = m.built();
+  x.o.reserve(b.center.size()), x.reach.reserve(b.center.size());
+  for (std::size_t i = 0; i < b.center.size(); ++i) {
+    const Vec3 c = R * b.center[i] + pm.translation;
     const Vec3 o = s * (c - po.translation);
-    const double e = 0x1p-30 * (c.norm() + po.translation.norm() + m.center[i].norm() + m.radius[i] + m.radius_other) +
+    const double e = 0x1p-30 * (c.norm() + po.translation.norm() + b.center[i].norm() + b.radius[i] + m.radius_other) +
                      0x1p-1000;
     x.o.push_back(o);
-    x.reach.push_back(m.radius[i] + m.radius_other + e);
+    x.reach.push_back(b.radius[i] + m.radius_other + e);
   }
   return x;
 }
@@ -131,6 +133,36 @@ R& name_piece(const MixedPair& m, R& r, std::size_t i) {
   return r;
 }
 
+// The piece pairs of `mesh`'s convex pieces with `other` and their bounding balls (MixedPair::make).
+MixedPair::Pieces piece_pairs(const Shape3& mesh, const Shape3& other, bool mesh_is_p) {
+  MixedPair::Pieces m;
+  const front::Scale scale;
+  bool exact = true;
+  const std::vector<ConvexPolytope> pieces = pieces_of(mesh, exact);
+  for (const ConvexPolytope& k : pieces) {
+    std::vector<Vec3> kv(k.vertices().begin(), k.vertices().end());
+    for (Vec3& v : kv) v = scale.vec_to_engine(v, mesh.name() + " piece vertex:");
+    Vec3 lo = kv[0], hi = kv[0];
+    for (const Vec3& v : kv) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
+    const Vec3 c = 0.5 * (lo + hi);
+    double r = 0;
+    for (const Vec3& v : kv) r = std::max(r, (v - c).norm());
+    m.center.push_back(c);
+    m.radius.push_back(r * (1 + 0x1p-40) + 0x1p-1000);
+    if (!other.curved()) {  // the flat and rounded engines need the piece's outer hierarchy
+      try {
+        (void)k.face_count();
+      } catch (const InvalidInput& e) {
+        throw InvalidInput("pair: " + mesh.name() + " against " + other.name() + ": a piece of the mesh's decomposition is " +
+                           "too thin for the rounded or flat engine (" + e.what() + "); use the mesh's hull (--hull)");
+      }
+    }
+    const Shape3 piece(k);
+    m.pieces.push_back(mesh_is_p ? Pair3(piece, other) : Pair3(other, piece));
+  }
+  return m;
+}
+
 }  // namespace
 
 MixedPair MixedPair::make(const Shape3& P, const Shape3& Q) {
@@ -138,7 +170,6 @@ MixedPair MixedPair::make(const Shape3& P, const Shape3& Q) {
   m.mesh_is_p = !P.is_convex();
   const Shape3& mesh = m.mesh_is_p ? P : Q;
   const Shape3& other = m.mesh_is_p ? Q : P;
-  front::Scale scale;
   if (other.dimension() <= 2) {  // the mesh's triangles (mesh_point / mesh_segment / mesh_flat.cpp)
     const convex3::FlatShape3 fs = *other.flat_shape();
     const Mesh3& mm = *mesh.mesh();
@@ -178,30 +209,16 @@ MixedPair MixedPair::make(const Shape3& P, const Shape3& Q) {
       for (const Vec3& v : fs.v) m.flat_v.push_back(in(v, other.name() + " vertex:"));
     }
   }
-  bool exact = true;
-  const std::vector<ConvexPolytope> pieces = pieces_of(mesh, exact);
   m.radius_other = primitives::support_of(other).rho;
-  for (const ConvexPolytope& k : pieces) {
-    std::vector<Vec3> kv(k.vertices().begin(), k.vertices().end());
-    for (Vec3& v : kv) v = scale.vec_to_engine(v, mesh.name() + " piece vertex:");
-    Vec3 lo = kv[0], hi = kv[0];
-    for (const Vec3& v : kv) lo = lo.cwiseMin(v), hi = hi.cwiseMax(v);
-    const Vec3 c = 0.5 * (lo + hi);
-    double r = 0;
-    for (const Vec3& v : kv) r = std::max(r, (v - c).norm());
-    m.center.push_back(c);
-    m.radius.push_back(r * (1 + 0x1p-40) + 0x1p-1000);
-    if (!other.curved()) {  // the flat and rounded engines need the piece's outer hierarchy
-      try {
-        (void)k.face_count();
-      } catch (const InvalidInput& e) {
-        throw InvalidInput("pair: " + mesh.name() + " against " + other.name() + ": a piece of the mesh's decomposition is " +
-                           "too thin for the rounded or flat engine (" + e.what() + "); use the mesh's hull (--hull)");
-      }
+  // The piece pairs (identity scale: each pair scales itself), built on first use (lazy.hpp).
+  m.lazy = std::make_shared<const Lazy<MixedPair::Pieces>>([P, Q, mesh_is_p = m.mesh_is_p]() {
+    try {
+      return piece_pairs(mesh_is_p ? P : Q, mesh_is_p ? Q : P, mesh_is_p);
+    } catch (const InvalidInput& e) {
+      front::rethrow_with_mesh_source(P, Q, e);
     }
-    const Shape3 piece(k);
-    m.pieces.push_back(m.mesh_is_p ? Pair3(piece, other) : Pair3(other, piece));
-  }
+  });
+  if (eager_pieces) m.built();  // tests: the eager path
   return m;
 }
 
@@ -210,8 +227,8 @@ bool overlapping(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
   if (m.segment) return segment_overlapping(m, ep(m, pose_p, "P"), ep(m, pose_q, "Q"));
   if (m.flat) return flat_overlapping(m, ep(m, pose_p, "P"), ep(m, pose_q, "Q"));
   const Offsets x = offsets(m, pose_p, pose_q);
-  for (std::size_t i = 0; i < m.pieces.size(); ++i)
-    if (near(x, i, Vec3::Zero()) && m.pieces[i].overlapping(pose_p, pose_q)) return true;
+  for (std::size_t i = 0; i < m.built().pieces.size(); ++i)
+    if (near(x, i, Vec3::Zero()) && m.built().pieces[i].overlapping(pose_p, pose_q)) return true;
   return false;
 }
 
@@ -227,10 +244,10 @@ Depth3 along(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const
   std::size_t work = 0;
   if (separation) {
     r.overlapping = overlapping(m, pose_p, pose_q);
-    for (std::size_t i = 0; i < m.pieces.size(); ++i) {
+    for (std::size_t i = 0; i < m.built().pieces.size(); ++i) {
       double lo, hi;
       if (!ray_ball(x, i, u, lo, hi) || !std::isfinite(hi)) continue;
-      const Pair3& pc = m.pieces[i];
+      const Pair3& pc = m.built().pieces[i];
       ++work;
       const double S = std::max(hi, 0.0);
       const Cast3 back = pc.cast(pose_p, moved(pose_q, S * u), -d);
@@ -258,7 +275,7 @@ Depth3 along(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const
   Depth3 last;
   std::size_t last_piece = 0;
   bool any = false;
-  const std::size_t max_steps = 4 * m.pieces.size() + 64;
+  const std::size_t max_steps = 4 * m.built().pieces.size() + 64;
   for (std::size_t step = 0;; ++step) {
     if (step > max_steps) throw std::logic_error("mixed σ_d: the walk does not end");
     const Vec3 v = cur * u;
@@ -266,15 +283,15 @@ Depth3 along(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const
     std::size_t best_i = 0;
     Depth3 best;
     bool found = false;
-    for (std::size_t i = 0; i < m.pieces.size(); ++i) {
+    for (std::size_t i = 0; i < m.built().pieces.size(); ++i) {
       if (!near(x, i, v)) continue;
-      const Depth3 s = m.pieces[i].along(pose_p, q, d);
+      const Depth3 s = m.built().pieces[i].along(pose_p, q, d);
       work += s.candidates + 1;
       if (!s.overlapping) continue;
       if (!found || s.depth > best.depth) best = s, best_i = i, found = true;
     }
     if (gap_lo < gap_hi) {  // was the previous step's gap covered by the piece now holding cur?
-      if (!found || !m.pieces[best_i].overlapping(pose_p, moved(pose_q, gap_lo * u))) lower = std::min(lower, gap_lo);
+      if (!found || !m.built().pieces[best_i].overlapping(pose_p, moved(pose_q, gap_lo * u))) lower = std::min(lower, gap_lo);
       gap_lo = gap_hi = 0;
     }
     if (!found) break;
@@ -303,9 +320,9 @@ Depth3 minimum(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
   const Offsets x = offsets(m, pose_p, pose_q);
   std::vector<DeepPair> deep;
   std::size_t work = 0;
-  for (std::size_t i = 0; i < m.pieces.size(); ++i) {
+  for (std::size_t i = 0; i < m.built().pieces.size(); ++i) {
     if (!near(x, i, Vec3::Zero())) continue;
-    const Depth3 r = m.pieces[i].minimum(pose_p, pose_q);
+    const Depth3 r = m.built().pieces[i].minimum(pose_p, pose_q);
     work += r.candidates;
     if (r.overlapping) deep.push_back({r.lower_bound, r.normal});
   }
@@ -323,7 +340,7 @@ Distance3 signed_distance(const MixedPair& m, const Pose3& pose_p, const Pose3& 
     std::size_t i;
   };
   std::vector<Cand> c;
-  for (std::size_t i = 0; i < m.pieces.size(); ++i) {
+  for (std::size_t i = 0; i < m.built().pieces.size(); ++i) {
     const double g = x.o[i].norm() - x.reach[i];
     c.push_back({std::isfinite(g) ? g * (1 - 0x1p-30) : -kInf, i});
   }
@@ -333,7 +350,7 @@ Distance3 signed_distance(const MixedPair& m, const Pose3& pose_p, const Pose3& 
   double lower = kInf;
   for (const Cand& k : c) {
     if (have && k.lb > best.upper_bound) break;
-    Distance3 r = m.pieces[k.i].signed_distance(pose_p, pose_q);
+    Distance3 r = m.built().pieces[k.i].signed_distance(pose_p, pose_q);
     if (r.overlapping) {  // −σ, from σ's bounds
       return overlap_distance3(minimum(m, pose_p, pose_q));
     }
@@ -363,7 +380,7 @@ Cast3 cast(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const V
     std::size_t i;
   };
   std::vector<Cand> c;
-  for (std::size_t i = 0; i < m.pieces.size(); ++i) {
+  for (std::size_t i = 0; i < m.built().pieces.size(); ++i) {
     double lo, hi;
     if (ray_ball(x, i, u, lo, hi)) c.push_back({std::max(lo, 0.0), i});
   }
@@ -371,7 +388,7 @@ Cast3 cast(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const V
   double lower = kInf;
   for (const Cand& k : c) {
     if (best.hit && k.entry > best.upper_bound) break;
-    Cast3 r = m.pieces[k.i].cast(pose_p, pose_q, d);
+    Cast3 r = m.built().pieces[k.i].cast(pose_p, pose_q, d);
     if (!r.hit) continue;
     lower = std::min(lower, r.lower_bound);
     if (best.hit && !(r.distance < best.distance)) continue;

@@ -13,6 +13,7 @@
 #include <pendepth/pendepth.hpp>
 
 #include "convex3/flat3.hpp"
+#include "mesh3/lazy.hpp"
 #include "mesh3/tri_tree.hpp"
 
 #include <array>
@@ -24,14 +25,19 @@ namespace pendepth::mesh3 {
 struct SegmentTriangles;  // mesh_segment.cpp: the triangles as CGAL exact points
 
 struct MixedPair {
-  std::vector<Pair3> pieces;     ///< piece pair i: (K_i, S) when the mesh is P, (S, K_i) when it is Q
+  /// The piece pairs, built on the first query that needs them (mesh3/lazy.hpp; shared by copies).
+  struct Pieces {
+    std::vector<Pair3> pieces;   ///< piece pair i: (K_i, S) when the mesh is P, (S, K_i) when it is Q
+    std::vector<Vec3> center;    ///< a bounding ball of K_i in the mesh's frame: center, radius
+    std::vector<double> radius;
+  };
+  std::shared_ptr<const Lazy<Pieces>> lazy;
+  const Pieces& built() const { return lazy->get(); }
   bool mesh_is_p = true;
-  std::vector<Vec3> center;      ///< a bounding ball of K_i in the mesh's frame: center, radius
-  std::vector<double> radius;
   double radius_other = 0;       ///< a bounding ball of S about its frame's origin
   /// S a point (mesh_point.cpp): the mesh's triangles (mesh frame), each also as a flat shape,
   /// with their boxes and the box tree over them; `pt` the point. No pieces: the point path
-  /// decides everything on the triangles.
+  /// decides everything on the triangles (never builds the pieces).
   bool point = false;
   convex3::FlatShape3 pt;
   std::vector<std::array<Vec3, 3>> tri;
@@ -42,7 +48,8 @@ struct MixedPair {
   /// The reference path: every triangle scanned, no tree (tests compare the two bit for bit).
   bool linear = false;
   /// S a segment (mesh_segment.cpp): its end points `seg` (engine frame, scaled as the triangles
-  /// above, which it also uses); the pieces too, for distance, cast and σ's lower bound.
+  /// above, which it also uses); the pieces too, for distance, cast and σ's lower bound (overlap
+  /// and σ_d never build them).
   bool segment = false;
   std::array<Vec3, 2> seg{};
   std::shared_ptr<const SegmentTriangles> seg_tri;  ///< the triangles as exact points, built once
