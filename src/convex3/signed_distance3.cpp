@@ -421,15 +421,19 @@ Feature3 feature_of(const ConvexPolytope& S, const int* vs, int nv, const Vec3& 
     } while (h != h0);
   };
   if (simple) {
+    // The half-edges around vs[0] in the order `around` visits them (the adjacency's he is that
+    // walk, stored flat): the same answer without the dependent twin/prev chain.
+    const VertexAdjacency& A = vertex_adjacency(D);
     int found = -1;
-    around(vs[0], [&](int h) {
-      if (nv == 2 && L0.target(h) == vs[1]) found = h;
+    for (int k = A.start[vs[0]], end = A.start[vs[0] + 1]; k < end; ++k) {
+      const int h = A.he[k];
+      if (nv == 2 && A.nbr[k] == vs[1]) found = h;
       if (nv == 3) {
         const auto& T = D.tris[h / 3];
         auto has = [&](int x) { return T[0] == x || T[1] == x || T[2] == x; };
         if (has(vs[1]) && has(vs[2])) found = h / 3;
       }
-    });
+    }
     if (found >= 0) return {nv == 2 ? FeatureKind3::Edge : FeatureKind3::Face, found};
   }
   if (nv == 2) {
