@@ -39,7 +39,7 @@
 // rigorous error bound (exact::Fl), then exact::exact_sign (double-double, expansions, GMP).
 //
 // Fast path (gjk_fast, tried first): the loop in plain doubles (supports by a linear scan of
-// shapes of ≤ 64 vertices), then one filtered certificate of its final simplex that also proves
+// shapes of ≤ 128 vertices), then one filtered certificate of its final simplex that also proves
 // it non-degenerate (support faces exactly S's vertices), so the exact loop could only have
 // ended on the same S; the value is computed by the same code on S in canonical order: the same
 // bits (see gjk_fast). Uncertified → the exact loop. The value's double-double evaluation
@@ -709,8 +709,9 @@ std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const V
   auto approx = [&](PairId s) { return Vec3(PD.v[s.i] - (rel.R * QD.v[s.j] + tqp)); };
   Vec3 v = aP.centroid - (rel.R * aQ.centroid + tqp);
   if (!v.allFinite() || v == Vec3::Zero()) v = Vec3::UnitX();
-  // Supports: a linear scan for up to 64 vertices (as Bullet; measured faster than climbing on
-  // such hulls), else rounded hill climbing from the previous answer. Proposals only: the
+  // Supports: a linear scan for up to 128 vertices (as Bullet; measured faster than climbing on
+  // such hulls: 64 → 128 saved ~4 % on the real hulls), else rounded hill climbing from the
+  // previous answer. Proposals only: the
   // certificate decides.
   auto scan = [](const PolytopeData& d, const Vec3& u) {
     const Vec3* x = d.v.data();
@@ -722,10 +723,11 @@ std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const V
     }
     return bi;
   };
+  constexpr std::size_t kScanMax = 128;
   auto support = [&](const Vec3& u, int i0, int j0) {
     const Vec3 uq = rel.R.transpose() * u;
-    return PairId{PD.v.size() <= 64 ? scan(PD, -u) : climb_rounded(PD, aP, -u, i0 >= 0 ? i0 : seed_vertex(aP, -u)),
-                  QD.v.size() <= 64 ? scan(QD, uq) : climb_rounded(QD, aQ, uq, j0 >= 0 ? j0 : seed_vertex(aQ, uq))};
+    return PairId{PD.v.size() <= kScanMax ? scan(PD, -u) : climb_rounded(PD, aP, -u, i0 >= 0 ? i0 : seed_vertex(aP, -u)),
+                  QD.v.size() <= kScanMax ? scan(QD, uq) : climb_rounded(QD, aQ, uq, j0 >= 0 ? j0 : seed_vertex(aQ, uq))};
   };
   PairId s = support(v, -1, -1);
   PairId ids[4] = {s};
