@@ -11,9 +11,7 @@
 #include "convex3/minkowski_facets.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
-#include <cstdint>
 #include <limits>
 
 namespace pendepth {
@@ -28,21 +26,11 @@ using convex3::RelativePose;
 // magnitude (2^±1000 quaternions are valid rotations).
 Eigen::Matrix3d Pose3::matrix() const {
   const Eigen::Vector4d c = rotation.coeffs();
-  // The identity quaternion (the default pose): the general path below gives exactly I.
-  if (c[0] == 0 && c[1] == 0 && c[2] == 0 && c[3] == 1) return Eigen::Matrix3d::Identity();
   const double big = c.cwiseAbs().maxCoeff();
   if (!c.allFinite() || big == 0) throw InvalidInput("pose: rotation quaternion is zero or non-finite");
+  const int e = std::ilogb(big);
   Eigen::Quaterniond q;
-  if (big >= std::numeric_limits<double>::min() && big < 0x1p1023) {
-    // ldexp(x, −e) for big's exponent e ∈ [−1022, 1022] as a product with the power of two 2^−e
-    // (a normal double): the same correctly rounded result without two libm calls.
-    const int e = static_cast<int>((std::bit_cast<std::uint64_t>(big) >> 52) & 0x7ff) - 1023;
-    const double s = std::bit_cast<double>(static_cast<std::uint64_t>(1023 - e) << 52);
-    for (int k = 0; k < 4; ++k) q.coeffs()[k] = c[k] * s;
-  } else {
-    const int e = std::ilogb(big);
-    for (int k = 0; k < 4; ++k) q.coeffs()[k] = std::ldexp(c[k], -e);
-  }
+  for (int k = 0; k < 4; ++k) q.coeffs()[k] = std::ldexp(c[k], -e);
   return q.normalized().toRotationMatrix();
 }
 

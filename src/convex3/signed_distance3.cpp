@@ -39,7 +39,7 @@
 // rigorous error bound (exact::Fl), then exact::exact_sign (double-double, expansions, GMP).
 //
 // Fast path (gjk_fast, tried first): the loop in plain doubles (supports by a linear scan of
-// shapes of ≤ 128 vertices), then one filtered certificate of its final simplex that also proves
+// shapes of ≤ 64 vertices), then one filtered certificate of its final simplex that also proves
 // it non-degenerate (support faces exactly S's vertices), so the exact loop could only have
 // ended on the same S; the value is computed by the same code on S in canonical order: the same
 // bits (see gjk_fast). Uncertified → the exact loop. The value's double-double evaluation
@@ -421,19 +421,15 @@ Feature3 feature_of(const ConvexPolytope& S, const int* vs, int nv, const Vec3& 
     } while (h != h0);
   };
   if (simple) {
-    // The half-edges around vs[0] in the order `around` visits them (the adjacency's he is that
-    // walk, stored flat): the same answer without the dependent twin/prev chain.
-    const VertexAdjacency& A = vertex_adjacency(D);
     int found = -1;
-    for (int k = A.start[vs[0]], end = A.start[vs[0] + 1]; k < end; ++k) {
-      const int h = A.he[k];
-      if (nv == 2 && A.nbr[k] == vs[1]) found = h;
+    around(vs[0], [&](int h) {
+      if (nv == 2 && L0.target(h) == vs[1]) found = h;
       if (nv == 3) {
         const auto& T = D.tris[h / 3];
         auto has = [&](int x) { return T[0] == x || T[1] == x || T[2] == x; };
         if (has(vs[1]) && has(vs[2])) found = h / 3;
       }
-    }
+    });
     if (found >= 0) return {nv == 2 ? FeatureKind3::Edge : FeatureKind3::Face, found};
   }
   if (nv == 2) {
@@ -709,9 +705,8 @@ std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const V
   auto approx = [&](PairId s) { return Vec3(PD.v[s.i] - (rel.R * QD.v[s.j] + tqp)); };
   Vec3 v = aP.centroid - (rel.R * aQ.centroid + tqp);
   if (!v.allFinite() || v == Vec3::Zero()) v = Vec3::UnitX();
-  // Supports: a linear scan for up to 128 vertices (as Bullet; measured faster than climbing on
-  // such hulls: 64 → 128 saved ~4 % on the real hulls), else rounded hill climbing from the
-  // previous answer. Proposals only: the
+  // Supports: a linear scan for up to 64 vertices (as Bullet; measured faster than climbing on
+  // such hulls), else rounded hill climbing from the previous answer. Proposals only: the
   // certificate decides.
   auto scan = [](const PolytopeData& d, const Vec3& u) {
     const Vec3* x = d.v.data();
@@ -723,11 +718,10 @@ std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const V
     }
     return bi;
   };
-  constexpr std::size_t kScanMax = 128;
   auto support = [&](const Vec3& u, int i0, int j0) {
     const Vec3 uq = rel.R.transpose() * u;
-    return PairId{PD.v.size() <= kScanMax ? scan(PD, -u) : climb_rounded(PD, aP, -u, i0 >= 0 ? i0 : seed_vertex(aP, -u)),
-                  QD.v.size() <= kScanMax ? scan(QD, uq) : climb_rounded(QD, aQ, uq, j0 >= 0 ? j0 : seed_vertex(aQ, uq))};
+    return PairId{PD.v.size() <= 64 ? scan(PD, -u) : climb_rounded(PD, aP, -u, i0 >= 0 ? i0 : seed_vertex(aP, -u)),
+                  QD.v.size() <= 64 ? scan(QD, uq) : climb_rounded(QD, aQ, uq, j0 >= 0 ? j0 : seed_vertex(aQ, uq))};
   };
   PairId s = support(v, -1, -1);
   PairId ids[4] = {s};

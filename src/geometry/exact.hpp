@@ -126,25 +126,9 @@ inline DD operator+(const DD& a, const DD& b) {
 }
 inline DD operator-(const DD& a) { return {-a.hi, -a.lo, a.e}; }
 inline DD operator-(const DD& a, const DD& b) { return a + (-b); }
-/// a·b − p for p = fl(a·b), exactly as std::fma(a, b, −p) gives it. Without -mfma std::fma is a
-/// library call (and spills every live xmm register around it); in the range where Dekker's
-/// product (Veltkamp split by 2²⁷ + 1, Shewchuk's Two_Product_Tail) is exact — no overflow in
-/// the split, no product below 2⁻⁹⁰⁰ — it gives the same (exact, unique) value in a few
-/// multiplications; elsewhere (zeros, huge or tiny operands, inf, NaN) the FMA decides.
-inline double two_prod_err(double a, double b, double p) {
-  const double ap = std::abs(p);
-  if (ap >= 0x1p-900 && ap <= 0x1p900 && std::abs(a) < 0x1p995 && std::abs(b) < 0x1p995) {
-    constexpr double kSplit = 134217729.0;  // 2^27 + 1
-    const double ca = kSplit * a, ah = ca - (ca - a), al = a - ah;
-    const double cb = kSplit * b, bh = cb - (cb - b), bl = b - bh;
-    const double e1 = p - ah * bh, e2 = e1 - al * bh, e3 = e2 - ah * bl;
-    return (al * bl - e3) + 0.0;  // + 0.0: an exact zero as +0, as the FMA gives it (p ≠ 0)
-  }
-  return std::fma(a, b, -p);
-}
 inline DD operator*(const DD& a, const DD& b) {
   double p = a.hi * b.hi;
-  double err = two_prod_err(a.hi, b.hi, p);
+  double err = std::fma(a.hi, b.hi, -p);
   err += a.hi * b.lo + a.lo * b.hi;
   DD r;
   quick_two_sum(p, err, r.hi, r.lo);
