@@ -5,8 +5,9 @@
 //   overlap   int P ∩ int Q' ≠ ∅ ⇔ some 0 ∈ int M_ij (pieces have disjoint interiors and cover
 //             the solids): the pairs whose box sum holds 0, each by the exact convex test.
 //             O(n·m) box tests + the candidates' convex tests.
-//   distance  apart / touching: min over pairs of the exact convex signed distances (a min of
-//             correctly rounded values is the correctly rounded min), pairs in increasing box
+//   distance  apart / touching: min over pairs of the convex signed distances (each within a few
+//             ulps of its exact value, so their min is too; not always correctly rounded: two
+//             decompositions of one mesh can differ by an ulp), pairs in increasing box
 //             distance, stopping when the box distance exceeds the best; overlapping: −σ's bounds.
 //   σ         O ⊇ int M_ij for every pair, so σ = dist(0, ∂O) >= σ_ij = dist(0, ∂M_ij) on every
 //             overlapping pair: lower = max σ_ij. Moving by σ_d along any d separates, so every
