@@ -83,6 +83,7 @@
 #include "geometry/exact.hpp"
 #include "nonconvex2/convex_parts.hpp"
 #include "nonconvex2/shape_side.hpp"
+#include "nonconvex2/strip_pieces.hpp"
 #include "nonconvex2/nfp_impl.hpp"
 
 namespace pendepth::nonconvex2 {
@@ -435,7 +436,7 @@ struct Classifier {
         out.lo.push_back(lo), out.hi.push_back(hi), smax.push_back(m);
       }
       for (std::uint32_t i = 0; i < n; ++i)
-        if (shape.next(X.id[s + i]) == X.id[s + (i + 1) % n]) edge_piece[X.id[s + i]] = corner_piece[at[i]];
+        if (X.id[s + i] != kSteiner && shape.next(X.id[s + i]) == X.id[s + (i + 1) % n]) edge_piece[X.id[s + i]] = corner_piece[at[i]];
     }
     out.start.push_back(static_cast<std::uint32_t>(out.v.size()));
   }
@@ -1254,7 +1255,10 @@ const std::vector<std::uint32_t>& ShapeSide::edge_parts() const {
 const ShapeSide::Pieces& ShapeSide::pieces() const {
   std::call_once(pieces_once_, [&] {
     Pieces& p = pieces_;
-    Classifier::make_pieces(parts(), shape, p.r, p.edge_piece, p.smax);
+    // Fans of a long edge re-covered with Steiner pieces first (strip_pieces.hpp).
+    ConvexParts stripped;
+    const bool strip = strip_fans(parts(), stripped);
+    Classifier::make_pieces(strip ? stripped : parts(), shape, p.r, p.edge_piece, p.smax);
     p.tree.build_boxes(p.r.size(), [&](std::size_t k) -> const Vec2& { return p.r.lo[k]; }, [&](std::size_t k) -> const Vec2& { return p.r.hi[k]; });
   });
   return pieces_;
