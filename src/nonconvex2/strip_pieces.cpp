@@ -105,7 +105,7 @@ bool cover(const std::vector<Vec2>& w, const std::vector<std::uint32_t>& cid, bo
     const std::size_t m = q.v.size();
     for (std::size_t i = 0; i < m; ++i)
       if (orient2d(q.v[i], q.v[(i + 1) % m], q.v[(i + 2) % m]) <= 0) return false;
-    if (planted && j == K / 2) continue;  // kStripPlanted: a gap in the cover
+    if (planted && (j == K / 2 || j == K / 2 + 1)) continue;  // kStripPlanted: a gap in the cover
     out.push_back(std::move(q));
   }
   for (Piece& p : out) pieces.push_back(std::move(p));

@@ -43,7 +43,7 @@ namespace pendepth::nonconvex2 {
 constexpr std::uint32_t kSteiner = ~std::uint32_t(0);
 
 /// Tests: kStripOn (default), kStripOff (the parts as they are: the method before), kStripPlanted
-/// (a wrong cover: one piece Q_j left out, which the tests must catch). Per thread; read when a
+/// (a wrong cover: two pieces Q_j left out, which the tests must catch). Per thread; read when a
 /// ShapeSide makes its pieces.
 constexpr int kStripOff = 0, kStripOn = 1, kStripPlanted = 2;
 int& nfp_strip_mode();
