@@ -387,7 +387,9 @@ struct Classifier {
   // of any decomposition into non-degenerate convex pieces ({t : int P ∩ int(Q + t) ≠ ∅}), and
   // every decision is exact, so the answers are the same as with triangles.
   // edge_piece[g]: the piece holding boundary edge g → next(g) (on one of its corner edges);
-  // smax[k] bounds piece k's coordinates. O(parts' size) plus O(log) per split.
+  // smax[k] bounds piece k's coordinates. O(parts' size) plus O(log) per split. ShapeSide::pieces
+  // first re-covers the fans of a long edge with Steiner pieces (strip_pieces.hpp: a rotated comb);
+  // their Steiner vertices carry id kSteiner and hold no boundary edge.
   static constexpr std::size_t kMaxCorners = 12;
   static void make_pieces(const ConvexParts& X, const Polygon& shape, ConvexParts& out, std::vector<std::uint32_t>& edge_piece,
                           std::vector<double>& smax) {
