@@ -38,7 +38,7 @@
 //   <instance>-<kind>   build only: every ordered pair of the instance in which both pieces are
 //                       convex (kind convex), one is (mixed) or neither is (nonconvex).
 //   star/<n>/<m>        random star-shaped P (radii [60, 100]) and Q (radii [6, 10]), n = m.
-//   scale-<family>/<n>/6  build only, one pair, once: P a comb (teeth and gaps 1 wide), a random
+//   scale-<family>/<n>/6  build only, one pair, once: P a comb (teeth and gaps 1 wide; comb45: rotated by 45°, rounded), a random
 //                       star or a thick 5-turn spiral of about n vertices, Q an L-shape of 6
 //                       (PENDEPTH_BENCH_SCALE_N, default 1000,3000,10000): the growth with n.
 // Queries: kQueries placements t = p − centroid(Q) with p uniform in P (nearly all overlap) and
@@ -375,7 +375,7 @@ std::vector<Vec2> spiral_ring(std::size_t steps) {
   return ring;
 }
 
-// family: comb, star (random radii [60, 100]) or spiral; Q an L whose 0.5-wide arm points down
+// family: comb, comb45 (the comb rotated by 45°, rounded), star (random radii [60, 100]) or spiral; Q an L whose 0.5-wide arm points down
 // (it enters the comb's gaps).
 Case& family_case(const std::string& family, std::size_t n) {
   auto& slot = cases()["scale/" + family + "/" + std::to_string(n)];
@@ -384,7 +384,11 @@ Case& family_case(const std::string& family, std::size_t n) {
   slot->name = "scale-" + family;
   pb::Rng rng(0x2545f491u ^ (n * 1000003u));
   const std::vector<Vec2> L{{0, 0}, {0.5, 0}, {0.5, 2.5}, {3, 2.5}, {3, 3}, {0, 3}};
-  const std::vector<Vec2> p = family == "comb" ? comb_ring((n + 2) / 4) : family == "spiral" ? spiral_ring(n / 2 - 1) : star_ring(n, 60, 100, rng);
+  std::vector<Vec2> p = family == "comb" || family == "comb45" ? comb_ring((n + 2) / 4) : family == "spiral" ? spiral_ring(n / 2 - 1) : star_ring(n, 60, 100, rng);
+  if (family == "comb45") {  // rotated by 45° as a user would (cos and sin of π/4 differ in the last bit), rounded
+    const double c = std::cos(std::numbers::pi / 4), s = std::sin(std::numbers::pi / 4);
+    for (Vec2& v : p) v = Vec2(c * v.x() - s * v.y(), s * v.x() + c * v.y());
+  }
   slot->add_pair(p, L);
   return *slot;
 }
@@ -644,7 +648,7 @@ int main(int argc, char** argv) {
                   pair_sigma_budget);
   }
   // Scaling of the build with n (issue 19 item 4): comb, star and spiral against an L-shape.
-  for (const std::string family : {"comb", "star", "spiral"})
+  for (const std::string family : {"comb", "comb45", "star", "spiral"})
     for (std::size_t n : env_sizes("PENDEPTH_BENCH_SCALE_N", {1000, 3000, 10000})) {
       Case& c = family_case(family, n);
       benchmark::RegisterBenchmark(("build/pendepth/scale-" + family + "/" + std::to_string(c.n) + "/" + std::to_string(c.m)).c_str(),

@@ -77,7 +77,7 @@ def main():
     load_avg = load(pg_json)["context"].get("load_avg", [])
 
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.6), sharey=False)
-    colors = {"comb": "tab:blue", "star": "tab:red", "spiral": "tab:green"}
+    colors = {"comb": "tab:blue", "comb45": "tab:purple", "star": "tab:red", "spiral": "tab:green"}
     panels = [(axes[0], nc, "no-fit polygon (NoFitPolygon2) vs an L of 6"),
               (axes[1], pg, f"polygon × convex (PolygonDepth2) vs convex Q of {m}")]
     for ax, data, title in panels:

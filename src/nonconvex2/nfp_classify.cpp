@@ -85,6 +85,7 @@
 #include "geometry/exact.hpp"
 #include "nonconvex2/convex_parts.hpp"
 #include "nonconvex2/shape_side.hpp"
+#include "nonconvex2/strip_pieces.hpp"
 #include "nonconvex2/nfp_impl.hpp"
 
 namespace pendepth::nonconvex2 {
@@ -388,7 +389,9 @@ struct Classifier {
   // of any decomposition into non-degenerate convex pieces ({t : int P ∩ int(Q + t) ≠ ∅}), and
   // every decision is exact, so the answers are the same as with triangles.
   // edge_piece[g]: the piece holding boundary edge g → next(g) (on one of its corner edges);
-  // smax[k] bounds piece k's coordinates. O(parts' size) plus O(log) per split.
+  // smax[k] bounds piece k's coordinates. O(parts' size) plus O(log) per split. ShapeSide::pieces
+  // first re-covers the fans of a long edge with Steiner pieces (strip_pieces.hpp: a rotated comb);
+  // their Steiner vertices carry id kSteiner and hold no boundary edge.
   static constexpr std::size_t kMaxCorners = 12;
   static void make_pieces(const ConvexParts& X, const Polygon& shape, ConvexParts& out, std::vector<std::uint32_t>& edge_piece,
                           std::vector<double>& smax) {
@@ -437,7 +440,7 @@ struct Classifier {
         out.lo.push_back(lo), out.hi.push_back(hi), smax.push_back(m);
       }
       for (std::uint32_t i = 0; i < n; ++i)
-        if (shape.next(X.id[s + i]) == X.id[s + (i + 1) % n]) edge_piece[X.id[s + i]] = corner_piece[at[i]];
+        if (X.id[s + i] != kSteiner && shape.next(X.id[s + i]) == X.id[s + (i + 1) % n]) edge_piece[X.id[s + i]] = corner_piece[at[i]];
     }
     out.start.push_back(static_cast<std::uint32_t>(out.v.size()));
   }
@@ -1274,7 +1277,10 @@ const std::vector<std::uint32_t>& ShapeSide::edge_parts() const {
 const ShapeSide::Pieces& ShapeSide::pieces() const {
   std::call_once(pieces_once_, [&] {
     Pieces& p = pieces_;
-    Classifier::make_pieces(parts(), shape, p.r, p.edge_piece, p.smax);
+    // Fans of a long edge re-covered with Steiner pieces first (strip_pieces.hpp).
+    ConvexParts stripped;
+    const bool strip = strip_fans(parts(), stripped);
+    Classifier::make_pieces(strip ? stripped : parts(), shape, p.r, p.edge_piece, p.smax);
     p.tree.build_boxes(p.r.size(), [&](std::size_t k) -> const Vec2& { return p.r.lo[k]; }, [&](std::size_t k) -> const Vec2& { return p.r.hi[k]; });
   });
   return pieces_;
