@@ -22,6 +22,19 @@ inline constexpr std::size_t kExactSigmaMaxFacets = 300;
 /// nearest point's facet. nullopt when the pairs in range exceed `max_facets`, when 0 is not in
 /// O, or when no point of the complement is found within `upper` (upper not an upper bound).
 /// `skip_cover` (tests only: the planted bug) omits the removal of covered points.
+/// The tiers (tests and the bench): while a SigmaExactUnfiltered is alive on this thread,
+/// exact_minimum decides everything with the exact numbers (no interval filters, no filtered
+/// prunes) — the reference the filtered tier must equal bit for bit. `planted` (tests only) plants
+/// a bug in the filtered prunes (mesh_sigma_exact.cpp) so that the equality test can fail.
+struct SigmaExactUnfiltered {
+  static inline thread_local int depth = 0;
+  static inline thread_local bool planted = false;
+  SigmaExactUnfiltered() { ++depth; }
+  ~SigmaExactUnfiltered() { --depth; }
+  SigmaExactUnfiltered(const SigmaExactUnfiltered&) = delete;
+  SigmaExactUnfiltered& operator=(const SigmaExactUnfiltered&) = delete;
+};
+
 std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, double upper,
                                     std::size_t max_facets = kExactSigmaMaxFacets, bool skip_cover = false);
 
