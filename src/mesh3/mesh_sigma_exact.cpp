@@ -18,6 +18,21 @@
 // convex engines. Every decision (inside / strictly inside / interval order / distance order)
 // is an exact comparison; σ² is rational, σ = RN(√σ²) with a certified 1-ulp bracket.
 //
+// Ties handled structurally (exact tests, both tiers): planes of one sum that are the same
+// half-space (minkowski_facets repeats a plane through FaceP / FaceQ / EdgeEdge candidates) are
+// kept once; for each facet plane f, the planes of the sums in range equal to plane(f) (either
+// side: f's own, a neighbour touching along the seam) are marked once — a sum holding one has no
+// interior point on plane(f), so it never covers there, its marked planes are no constraint on
+// the foot or on lines in plane(f), and the line's own plane g empties its sum's open interval.
+// Those are exactly the ties (zero signs) that otherwise went to the rationals.
+// Tiers: the filtered tier (default) decides by Interval_nt enclosures (outward rounding: a
+// proven forward error bound) and falls back to the exact numbers when a sign is uncertain; it
+// also prunes a line L = plane(f) ∩ plane(g), g of S_l, when L ∩ box ∩ S_k ∩ S_l is certainly
+// empty or certainly beyond the best (only there can R_f's relative boundary on L lie: a
+// boundary point x of R_f off relbd f lies on ∂S_l for some covering S_l, on a plane g of S_l
+// active at x and not parallel to f), and drops sums whose box certainly misses plane(f). Under a
+// SigmaExactUnfiltered guard every decision is exact and those prunes are off: the reference the
+// filtered tier must equal bit for bit (tests/mesh3/test_mesh_sigma_tiers.cpp).
 // Pruning by the certified upper bound U (today's least σ_d): only sums whose box meets B(0, U)
 // can matter, only facets whose plane lies within the running best, processed nearest plane
 // first and stopping when the next plane is farther than the best; lines only from planes
