@@ -10,11 +10,13 @@ namespace pendepth::mesh3 {
 
 /// Size limit of the exact path: the total number of candidate facet normals
 /// (convex3::minkowski_facets) of the piece pairs whose sum box meets the ball B(0, upper).
-/// Beyond it minimum() keeps the certified bounds. Measured (docs/benchmarks.md): combs against
-/// an L block have 200–450 facets in range and take 0.1–1 s per exact σ (ties at the pieces'
-/// internal cuts and coplanar facets go to the lazy numbers' rationals); a torus 8×4 pair has
-/// ~16 000 and took minutes. 300 keeps the front door's cost near the bounds' on most pairs.
-inline constexpr std::size_t kExactSigmaMaxFacets = 300;
+/// Beyond it minimum() keeps the certified bounds. Measured (docs/benchmarks.md "Exact mesh σ"):
+/// combs against an L block, CGAL's cross and star have 200–1 100 candidates in range (18–315
+/// distinct planes) and take 9–52 ms per exact σ; a torus 8×4 pair has ~16 900 distinct planes
+/// over 437 sums and still takes minutes, the tripod pair is beyond 1 000. 600 lets every
+/// overlapping bench pose of the combs, the cross and the star meet while keeping
+/// tests/mesh3's CGAL sample-mesh properties at ~10 s.
+inline constexpr std::size_t kExactSigmaMaxFacets = 600;
 
 /// σ = dist(0, complement of O) exactly, given a certified upper bound `upper` >= σ (today's
 /// least σ_d): depth = σ rounded to nearest, lower_bound <= σ <= upper_bound adjacent doubles
