@@ -13,6 +13,7 @@
 #include <pendepth/pendepth.hpp>
 
 #include "mesh3/mesh_pair.hpp"
+#include "mesh3/mesh_sigma_exact.hpp"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
@@ -22,7 +23,9 @@
 
 #include <cmath>
 #include <filesystem>
+#include <cstdint>
 #include <map>
+#include <optional>
 #include <random>
 
 namespace {
@@ -257,6 +260,43 @@ void BM_MeshMinimumBoundsOnly(benchmark::State& st) {
   pendepth::mesh3::SigmaBoundsOnly bounds_only;  // the benchmark runs its loop on this thread
   minimum_query(st);
 }
+// The exact σ alone (mesh3::exact_minimum, no size limit) on the poses among the first 16 whose
+// certified bounds do not meet (the ones minimum() sends to it). Args: mesh case, tier (0 the
+// filtered tier, 1 everything exact: a mesh3::SigmaExactUnfiltered guard — the reference).
+// Counters: queries, mean candidate facets in range.
+void BM_MeshSigmaExact(benchmark::State& st) {
+  if (static_cast<std::size_t>(st.range(0)) >= mesh_cases().size()) {
+    st.SkipWithError("no such mesh case (CGAL sample meshes not found)");
+    return;
+  }
+  const Prepared& p = prepared(static_cast<std::size_t>(st.range(0)));
+  bool exact = true;
+  const pendepth::mesh3::MeshPair m = pendepth::mesh3::MeshPair::make(
+      pendepth::mesh3::pieces_of(p.pair.P(), exact), pendepth::mesh3::pieces_of(p.pair.Q(), exact), exact);
+  std::vector<std::pair<std::size_t, double>> q;  // pose, upper bound
+  {
+    pendepth::mesh3::SigmaBoundsOnly bounds_only;
+    for (std::size_t k = 0; k < 16; ++k) {
+      const pendepth::Depth3 r = pendepth::mesh3::minimum(m, pendepth::Pose3(), p.poses[k]);
+      if (r.overlapping && r.lower_bound < r.upper_bound) q.emplace_back(k, r.upper_bound);
+    }
+  }
+  std::optional<pendepth::mesh3::SigmaExactUnfiltered> unfiltered;
+  if (st.range(1) == 1) unfiltered.emplace();
+  std::size_t i = 0;
+  double facets = 0;
+  for (auto _ : st) {
+    if (q.empty()) continue;
+    const auto& [k, upper] = q[i % q.size()];
+    const auto r = pendepth::mesh3::exact_minimum(m, pendepth::Pose3(), p.poses[k], upper, SIZE_MAX);
+    facets += r ? static_cast<double>(r->candidates) : 0;
+    ++i;
+  }
+  st.SetLabel(mesh_cases()[static_cast<std::size_t>(st.range(0))].name + (st.range(1) ? " exact" : " filtered"));
+  st.counters["queries"] = static_cast<double>(q.size());
+  st.counters["candidates"] = i ? facets / static_cast<double>(i) : 0;
+}
+
 // The hulls of both meshes (what users do today) against the exact σ_d.
 void BM_MeshHullError(benchmark::State& st) {
   mesh_query(st, [](const Prepared& p, std::size_t i) { benchmark::DoNotOptimize(p.hulls.along(pendepth::Pose3(), p.poses[i], p.dirs[i])); });
@@ -367,6 +407,7 @@ BENCHMARK(BM_MeshDistance)->Apply(mesh_args);
 BENCHMARK(BM_MeshCast)->Apply(mesh_args);
 BENCHMARK(BM_MeshMinimumBounds)->Apply(mesh_args);
 BENCHMARK(BM_MeshMinimumBoundsOnly)->Apply(mesh_args);
+BENCHMARK(BM_MeshSigmaExact)->ArgsProduct({{0, 1, 2, 3, 4, 5, 6, 7}, {0, 1}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_MeshAlongDescent)->Apply(mesh_args);
 BENCHMARK(BM_MeshMinimumBoundsDescent)->Apply(mesh_args);
 BENCHMARK(BM_MeshHullError)->Apply(mesh_args);

@@ -18,6 +18,21 @@
 // convex engines. Every decision (inside / strictly inside / interval order / distance order)
 // is an exact comparison; σ² is rational, σ = RN(√σ²) with a certified 1-ulp bracket.
 //
+// Ties handled structurally (exact tests, both tiers): planes of one sum that are the same
+// half-space (minkowski_facets repeats a plane through FaceP / FaceQ / EdgeEdge candidates) are
+// kept once; for each facet plane f, the planes of the sums in range equal to plane(f) (either
+// side: f's own, a neighbour touching along the seam) are marked once — a sum holding one has no
+// interior point on plane(f), so it never covers there, its marked planes are no constraint on
+// the foot or on lines in plane(f), and the line's own plane g empties its sum's open interval.
+// Those are exactly the ties (zero signs) that otherwise went to the rationals.
+// Tiers: the filtered tier (default) decides by Interval_nt enclosures (outward rounding: a
+// proven forward error bound) and falls back to the exact numbers when a sign is uncertain; it
+// also prunes a line L = plane(f) ∩ plane(g), g of S_l, when L ∩ box ∩ S_k ∩ S_l is certainly
+// empty or certainly beyond the best (only there can R_f's relative boundary on L lie: a
+// boundary point x of R_f off relbd f lies on ∂S_l for some covering S_l, on a plane g of S_l
+// active at x and not parallel to f), and drops sums whose box certainly misses plane(f). Under a
+// SigmaExactUnfiltered guard every decision is exact and those prunes are off: the reference the
+// filtered tier must equal bit for bit (tests/mesh3/test_mesh_sigma_tiers.cpp).
 // Pruning by the certified upper bound U (today's least σ_d): only sums whose box meets B(0, U)
 // can matter, only facets whose plane lies within the running best, processed nearest plane
 // first and stopping when the next plane is farther than the best; lines only from planes
@@ -102,6 +117,9 @@ struct Ctx {
   std::vector<Sum> sums;
   std::vector<Plane> planes;
   std::vector<V3> qcache;  // placed Q vertices of the current pair
+  bool filt = true;        // the interval tier (false: SigmaExactUnfiltered, every decision exact)
+  bool planted = false;    // tests: the planted bug in the filtered prunes
+  std::vector<char> on_f;  // planes equal to the current plane(f), either side (exact)
 };
 
 V3 placed(const Placed& pl, const Vec3& q) {
@@ -158,47 +176,129 @@ Plane plane_of(const Placed& pl, const convex3::PolytopeData& P, const convex3::
   return r;
 }
 
-// x in the closed S (all planes), skipping plane `skip`.
+bool certainly_nonzero(const I& v) { return v.inf() > 0 || v.sup() < 0; }
+bool certainly_zero(const I& v) { return v.inf() == 0 && v.sup() == 0; }
+
+// n = 0 exactly (exact when the filter cannot tell).
+bool zero_normal(const Plane& a, bool filt) {
+  if (filt) {
+    if (certainly_nonzero(a.ni.x) || certainly_nonzero(a.ni.y) || certainly_nonzero(a.ni.z)) return false;
+    if (certainly_zero(a.ni.x) && certainly_zero(a.ni.y) && certainly_zero(a.ni.z)) return true;
+  }
+  return is_zero(a.n);
+}
+
+// The same half-space: b.n = t·a.n with t > 0 and b.c = t·a.c, exactly (interval filter first).
+bool same_plane(const Plane& a, const Plane& b, bool filt) {
+  if (filt) {
+    const IV3 x = cross(a.ni, b.ni);
+    if (certainly_nonzero(x.x) || certainly_nonzero(x.y) || certainly_nonzero(x.z)) return false;
+    if (!(dot(a.ni, b.ni).sup() > 0)) return false;
+    if (certainly_nonzero(a.ci * dot(b.ni, a.ni) - b.ci * dot(a.ni, a.ni))) return false;
+  }
+  if (!is_zero(cross(a.n, b.n))) return false;
+  const FT ab = dot(a.n, b.n);
+  return CGAL::is_positive(ab) && a.c * ab == b.c * dot(a.n, a.n);
+}
+
+// The same plane, either side: b.n = t·a.n (t != 0) and b.c = t·a.c, exactly (filter first).
+bool same_plane_any(const Plane& a, const Plane& b, bool filt) {
+  if (filt) {
+    const IV3 x = cross(a.ni, b.ni);
+    if (certainly_nonzero(x.x) || certainly_nonzero(x.y) || certainly_nonzero(x.z)) return false;
+    if (certainly_nonzero(a.ci * dot(b.ni, a.ni) - b.ci * dot(a.ni, a.ni))) return false;
+  }
+  if (!is_zero(cross(a.n, b.n))) return false;
+  return a.c * dot(a.n, b.n) == b.c * dot(a.n, a.n);
+}
+
+// x in the closed S (all planes), skipping plane `skip` and the planes equal to plane(f) (x is
+// on plane(f): those hold with equality).
 // (xi: intervals of x.)
 bool in_closed(const Ctx& c, const Sum& s, const V3& x, const IV3& xi, std::size_t skip) {
   for (std::size_t p = s.first; p < s.first + s.count; ++p) {
-    if (p == skip) continue;
-    const I v = dot(c.planes[p].ni, xi) - c.planes[p].ci;
-    if (v.inf() > 0) return false;
-    if (v.sup() <= 0) continue;
+    if (p == skip || c.on_f[p]) continue;
+    if (c.filt) {
+      const I v = dot(c.planes[p].ni, xi) - c.planes[p].ci;
+      if (v.inf() > 0) return false;
+      if (v.sup() <= 0) continue;
+    }
     if (dot(c.planes[p].n, x) > c.planes[p].c) return false;
   }
   return true;
 }
 bool in_open(const Ctx& c, const Sum& s, const V3& x, const IV3& xi) {
   for (std::size_t p = s.first; p < s.first + s.count; ++p) {
-    const I v = dot(c.planes[p].ni, xi) - c.planes[p].ci;
-    if (v.sup() < 0) continue;
-    if (v.inf() >= 0) return false;
+    if (c.filt) {
+      const I v = dot(c.planes[p].ni, xi) - c.planes[p].ci;
+      if (v.sup() < 0) continue;
+      if (v.inf() >= 0) return false;
+    }
     if (!(dot(c.planes[p].n, x) < c.planes[p].c)) return false;
   }
   return true;
 }
 
-// Interval filter of a line plane(f) ∩ plane(g): true when certainly no point of L ∩ S_k lies
-// nearer than √bound2 (or L ∩ S_k is certainly empty).
-bool line_far(const Ctx& c, const Plane& f, const Plane& g, const Sum& sk, double bound2) {
-  const IV3 u = cross(f.ni, g.ni);
-  const I u2 = dot(u, u);
-  if (!(u2.inf() > 0)) return false;
-  const IV3 x0 = (I(1) / u2) * (f.ci * cross(g.ni, u) + g.ci * cross(u, f.ni));
-  const I l2 = dot(x0, x0);
-  if (l2.inf() >= bound2) return true;
-  double lo = -INFINITY, hi = INFINITY;  // λ ∈ [lo, hi] ⊇ L ∩ S_k
-  for (std::size_t p = sk.first; p < sk.first + sk.count; ++p) {
+I comp(const IV3& v, int a) { return a == 0 ? v.x : a == 1 ? v.y : v.z; }
+
+// Clips the λ-range [lo, hi] of the line x0 + λu (intervals holding the exact values) to a
+// superset of its part in the convex set of the planes [first, first + count). False when that
+// part is certainly empty.
+bool clip_planes(const Ctx& c, std::size_t first, std::size_t count, const IV3& x0, const IV3& u, double& lo,
+                 double& hi) {
+  for (std::size_t p = first; p < first + count; ++p) {
     const Plane& m = c.planes[p];
     const I a = dot(m.ni, u), b = m.ci - dot(m.ni, x0);
     if (a.inf() > 0) hi = std::min(hi, (b / a).sup());
     else if (a.sup() < 0) lo = std::max(lo, (b / a).inf());
+    if (lo > hi) return false;
+  }
+  return true;
+}
+
+// Interval filter of a line L = plane(f) ∩ plane(g), g a plane of the sum S_l: true when
+// certainly no point of L ∩ S_k ∩ S_l lies nearer than √bound2 (or that set is certainly empty).
+// Only L ∩ S_k ∩ S_l can hold the relative boundary of R_f on L (file comment), so the line is
+// not needed otherwise. Every quantity is an interval holding the exact value (Interval_nt:
+// outward rounding, a proven forward error bound); nothing is decided on a rounded value.
+bool line_far(const Ctx& c, const Plane& f, const Plane& g, const Sum& sk, const Sum& sl, double bound2) {
+  if (c.planted) bound2 *= 1e-6;  // the planted bug (tests): the bound /1e6, lines nearer than the best pruned
+  const IV3 u = cross(f.ni, g.ni);
+  const I u2 = dot(u, u);
+  if (u2.sup() <= 0) return true;  // u = 0 exactly: parallel planes, no line
+  if (!(u2.inf() > 0)) return false;
+  const IV3 x0 = (I(1) / u2) * (f.ci * cross(g.ni, u) + g.ci * cross(u, f.ni));
+  const I l2 = dot(x0, x0);
+  if (l2.inf() >= bound2) return true;
+  double lo = -INFINITY, hi = INFINITY;  // λ ∈ [lo, hi] ⊇ L ∩ S_k ∩ S_l
+  // The boxes first (certified enclosures of the sums: sum_box widens outward).
+  for (int a = 0; a < 3; ++a) {
+    double blo = std::max(sk.box.lo[a], sl.box.lo[a]), bhi = std::min(sk.box.hi[a], sl.box.hi[a]);
+    if (blo > bhi) return true;
+    const I ua = comp(u, a), xa = comp(x0, a);
+    if (ua.inf() > 0) {
+      lo = std::max(lo, ((I(blo) - xa) / ua).inf()), hi = std::min(hi, ((I(bhi) - xa) / ua).sup());
+    } else if (ua.sup() < 0) {
+      lo = std::max(lo, ((I(bhi) - xa) / ua).inf()), hi = std::min(hi, ((I(blo) - xa) / ua).sup());
+    } else if (ua.inf() == 0 && ua.sup() == 0 && (xa.inf() > bhi || xa.sup() < blo)) {
+      return true;  // u_a = 0 exactly: the line is parallel to the slab and outside it
+    }
     if (lo > hi) return true;
   }
+  if (!clip_planes(c, sk.first, sk.count, x0, u, lo, hi)) return true;
+  if (&sl != &sk && !clip_planes(c, sl.first, sl.count, x0, u, lo, hi)) return true;
   const double mn = lo > 0 ? lo : hi < 0 ? -hi : 0.0;
   return (l2 + I(mn) * I(mn) * u2).inf() >= bound2;
+}
+
+// Certainly: the plane n·x = c misses the box (the whole box strictly on one side).
+bool plane_misses_box(const Plane& f, const Box3& b) {
+  I lo(0), hi(0);
+  for (int a = 0; a < 3; ++a) {
+    const I n = comp(f.ni, a), x = n * I(b.lo[a]), y = n * I(b.hi[a]);
+    lo = lo + I(std::min(x.inf(), y.inf())), hi = hi + I(std::max(x.sup(), y.sup()));
+  }
+  return (lo - f.ci).inf() > 0 || (hi - f.ci).sup() < 0;
 }
 
 // Interval filter of a covering sum: true when L ∩ int S_l is certainly empty or certainly
@@ -222,10 +322,16 @@ bool boxes_meet(const Box3& a, const Box3& b) {
 
 // The interval of λ with x0 + λu in S: closed (strict = false) or open (strict = true).
 // False when empty.
+// The planes equal to plane(f) and the plane g (index `gp`) contain the line (a = b = 0 exactly,
+// by construction of x0 and u): no constraint when closed, an empty open interval.
 bool line_interval(const Ctx& c, const Sum& s, const V3& x0, const V3& u, bool strict, std::optional<FT>& lo,
-                   std::optional<FT>& hi) {
+                   std::optional<FT>& hi, std::size_t gp) {
   lo.reset(), hi.reset();
   for (std::size_t p = s.first; p < s.first + s.count; ++p) {
+    if (p == gp || c.on_f[p]) {
+      if (strict) return false;
+      continue;
+    }
     const Plane& pl = c.planes[p];
     const FT a = dot(pl.n, u), b = pl.c - dot(pl.n, x0);
     const CGAL::Sign sa = CGAL::sign(a);
@@ -264,7 +370,7 @@ Feature3 feat(FeatureKind3 k, int i) { return Feature3{k, i}; }
 std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, double upper,
                                     std::size_t max_facets, bool skip_cover) {
   if (!(upper >= 0) || !std::isfinite(upper)) return std::nullopt;
-  Ctx c{m, place(m, pose_p, pose_q), {}, {}, {}};
+  Ctx c{m, place(m, pose_p, pose_q), {}, {}, {}, SigmaExactUnfiltered::depth == 0, SigmaExactUnfiltered::planted};
   const convex3::RelativePose rel{c.pl.R, c.pl.tq, c.pl.tp};
   const double reach = upper * (1 + 0x1p-30) + 0x1p-1000;
   // The sums in range and their planes.
@@ -280,9 +386,15 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
       const convex3::PolytopeData& Q = convex3::data_of(m.Q[j]);
       Sum s{i, j, c.planes.size(), cand.size(), bd, box_of_sum(m, c.pl, i, j)};
       for (const auto& k : cand) {
-        c.planes.push_back(plane_of(c.pl, P, Q, k));
-        c.planes.back().sum = c.sums.size();
+        Plane pl = plane_of(c.pl, P, Q, k);
+        if (zero_normal(pl, c.filt)) continue;  // supports nothing (0·x <= 0)
+        bool dup = false;  // the same plane, the same side: one constraint, one facet, one set of lines
+        for (std::size_t e = s.first; e < c.planes.size() && !dup; ++e) dup = same_plane(c.planes[e], pl, c.filt);
+        if (dup) continue;
+        pl.sum = c.sums.size();
+        c.planes.push_back(std::move(pl));
       }
+      s.count = c.planes.size() - s.first;
       c.sums.push_back(s);
     }
   // 0 ∈ O?
@@ -301,6 +413,8 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
   auto near = [&](double d) { return d * (1 - 0x1p-40) <= best.radius; };
   std::vector<std::size_t> cover;    // sums whose box meets B(0, best.radius): they cover
   std::vector<std::size_t> sources;  // the same and f's own sum: their planes cut f's lines
+  std::vector<std::size_t> marked;   // the planes set in c.on_f
+  c.on_f.assign(c.planes.size(), 0);
   std::size_t lines = 0;
   for (std::size_t fi : order) {
     const Plane& f = c.planes[fi];
@@ -308,10 +422,20 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
     const Sum& sk = c.sums[f.sum];
     if (!near(sk.box_dist)) continue;  // f ⊂ S_k lies beyond the best
     cover.clear(), sources.clear();
+    for (std::size_t p : marked) c.on_f[p] = 0;
+    marked.clear();
     for (std::size_t l = 0; l < c.sums.size(); ++l)
-      if (l == f.sum || (near(c.sums[l].box_dist) && boxes_meet(c.sums[l].box, sk.box))) {  // else ∂S_l misses f
+      if (l == f.sum || (near(c.sums[l].box_dist) && boxes_meet(c.sums[l].box, sk.box) &&
+                         !(c.filt && plane_misses_box(f, c.sums[l].box)))) {  // else ∂S_l misses f
         sources.push_back(l);
-        if (!skip_cover) cover.push_back(l);
+        // Seams (exact ties, handled once): a sum with plane(f) among its planes (f's own sum, a
+        // neighbour touching along it, or lying on its other side) has no interior point on
+        // plane(f), so it covers nothing there; its planes equal to plane(f) are marked.
+        bool twin = false;
+        const Sum& sl = c.sums[l];
+        for (std::size_t p = sl.first; p < sl.first + sl.count; ++p)
+          if (p == fi || same_plane_any(c.planes[p], f, c.filt)) c.on_f[p] = 1, marked.push_back(p), twin = true;
+        if (!skip_cover && !twin) cover.push_back(l);
       }
     const FT n2 = dot(f.n, f.n);
     if (CGAL::is_zero(n2)) continue;  // a degenerate candidate normal supports nothing
@@ -339,7 +463,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
         const Plane& g = c.planes[gi];
         if (gi == fi || !near(g.dist)) continue;
         const double bound2 = best.d2 ? CGAL::to_interval(*best.d2).second : reach * reach * (1 + 0x1p-40);
-        if (line_far(c, f, g, sk, bound2)) continue;
+        if (c.filt && line_far(c, f, g, sk, sl, bound2)) continue;
         const V3 u = cross(f.n, g.n);
         if (is_zero(u)) continue;
         const FT u2 = dot(u, u);
@@ -347,7 +471,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
         const FT l2 = dot(x0, x0);
         if (best.d2 && !(l2 < *best.d2)) continue;
         std::optional<FT> a, b;
-        if (!line_interval(c, sk, x0, u, false, a, b)) continue;
+        if (!line_interval(c, sk, x0, u, false, a, b, gi)) continue;
         if (!a || !b) continue;  // unreachable: S_k is bounded
         ++lines;
         // Covering open intervals (the ones meeting [a, b]).
@@ -355,9 +479,9 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
         const IV3 x0i{iv(x0.x), iv(x0.y), iv(x0.z)}, ui{iv(u.x), iv(u.y), iv(u.z)};
         const double a_inf = CGAL::to_interval(*a).first, b_sup = CGAL::to_interval(*b).second;
         for (std::size_t l2i : cover) {
-          if (open_misses(c, c.sums[l2i], x0i, ui, a_inf, b_sup)) continue;
+          if (c.filt && open_misses(c, c.sums[l2i], x0i, ui, a_inf, b_sup)) continue;
           std::optional<FT> lo, hi;
-          if (!line_interval(c, c.sums[l2i], x0, u, true, lo, hi) || !lo || !hi) continue;
+          if (!line_interval(c, c.sums[l2i], x0, u, true, lo, hi, gi) || !lo || !hi) continue;
           if (*hi <= *a || *lo >= *b) continue;
           ivs.emplace_back(*lo, *hi);
         }

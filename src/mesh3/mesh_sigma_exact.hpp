@@ -10,11 +10,13 @@ namespace pendepth::mesh3 {
 
 /// Size limit of the exact path: the total number of candidate facet normals
 /// (convex3::minkowski_facets) of the piece pairs whose sum box meets the ball B(0, upper).
-/// Beyond it minimum() keeps the certified bounds. Measured (docs/benchmarks.md): combs against
-/// an L block have 200–450 facets in range and take 0.1–1 s per exact σ (ties at the pieces'
-/// internal cuts and coplanar facets go to the lazy numbers' rationals); a torus 8×4 pair has
-/// ~16 000 and took minutes. 300 keeps the front door's cost near the bounds' on most pairs.
-inline constexpr std::size_t kExactSigmaMaxFacets = 300;
+/// Beyond it minimum() keeps the certified bounds. Measured (docs/benchmarks.md "Exact mesh σ"):
+/// combs against an L block, CGAL's cross and star have 200–1 100 candidates in range (18–315
+/// distinct planes) and take 9–52 ms per exact σ; a torus 8×4 pair has ~16 900 distinct planes
+/// over 437 sums and still takes minutes, the tripod pair is beyond 1 000. 600 lets every
+/// overlapping bench pose of the combs, the cross and the star meet while keeping
+/// tests/mesh3's CGAL sample-mesh properties at ~10 s.
+inline constexpr std::size_t kExactSigmaMaxFacets = 600;
 
 /// σ = dist(0, complement of O) exactly, given a certified upper bound `upper` >= σ (today's
 /// least σ_d): depth = σ rounded to nearest, lower_bound <= σ <= upper_bound adjacent doubles
@@ -22,6 +24,19 @@ inline constexpr std::size_t kExactSigmaMaxFacets = 300;
 /// nearest point's facet. nullopt when the pairs in range exceed `max_facets`, when 0 is not in
 /// O, or when no point of the complement is found within `upper` (upper not an upper bound).
 /// `skip_cover` (tests only: the planted bug) omits the removal of covered points.
+/// The tiers (tests and the bench): while a SigmaExactUnfiltered is alive on this thread,
+/// exact_minimum decides everything with the exact numbers (no interval filters, no filtered
+/// prunes) — the reference the filtered tier must equal bit for bit. `planted` (tests only) plants
+/// a bug in the filtered prunes (mesh_sigma_exact.cpp) so that the equality test can fail.
+struct SigmaExactUnfiltered {
+  static inline thread_local int depth = 0;
+  static inline thread_local bool planted = false;
+  SigmaExactUnfiltered() { ++depth; }
+  ~SigmaExactUnfiltered() { --depth; }
+  SigmaExactUnfiltered(const SigmaExactUnfiltered&) = delete;
+  SigmaExactUnfiltered& operator=(const SigmaExactUnfiltered&) = delete;
+};
+
 std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, double upper,
                                     std::size_t max_facets = kExactSigmaMaxFacets, bool skip_cover = false);
 
