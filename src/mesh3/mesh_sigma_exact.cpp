@@ -370,7 +370,7 @@ Feature3 feat(FeatureKind3 k, int i) { return Feature3{k, i}; }
 std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, double upper,
                                     std::size_t max_facets, bool skip_cover) {
   if (!(upper >= 0) || !std::isfinite(upper)) return std::nullopt;
-  Ctx c{m, place(m, pose_p, pose_q), {}, {}, {}, SigmaExactUnfiltered::depth == 0, SigmaExactUnfiltered::planted};
+  Ctx c{m, place(m, pose_p, pose_q), {}, {}, {}, SigmaExactUnfiltered::depth == 0, SigmaExactUnfiltered::planted, {}};
   const convex3::RelativePose rel{c.pl.R, c.pl.tq, c.pl.tp};
   const double reach = upper * (1 + 0x1p-30) + 0x1p-1000;
   // The sums in range and their planes.
