@@ -11,6 +11,8 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace pendepth::mesh3 {
@@ -71,6 +73,54 @@ void points_of(const R& r, F&& add) {
 bool inside(const MixedPair& m, const P3& X);
 /// [A, B] ∩ int P ≠ ∅.
 bool seg_overlap(const MixedPair& m, const P3& A, const P3& B);
+
+/// A crossing of the ray μ·d' with a polygon of the ∂O superset: its exact parameter and the
+/// polygon's normal (mesh frame).
+struct Cand {
+  FT mu;
+  Vec3 normal;
+};
+
+/// Over the sorted candidates `c`: σ_d's exit = the first candidate where the moved shape is not in
+/// O (`in_o(μ)`; each candidate found in O carries the open stretch after it into O, equal
+/// candidates tested once), or a separation's = the end of the last stretch whose midpoint is in O
+/// (null: never in O). `what` names the engine in the logic error (O is bounded: σ_d always exits).
+template <class InO>
+const Cand* exit_candidate(const std::vector<Cand>& c, bool separation, InO&& in_o, const char* what) {
+  if (!separation) {
+    FT last(0);
+    for (const Cand& k : c) {
+      if (!(k.mu > last)) continue;
+      if (!in_o(k.mu)) return &k;
+      last = k.mu;
+    }
+    throw std::logic_error(std::string(what) + " σ_d: the ray does not leave O (O is bounded)");
+  }
+  const Cand* pick = nullptr;
+  FT prev(0);
+  for (const Cand& k : c) {
+    if (!(k.mu > prev)) continue;
+    if (in_o((prev + k.mu) / 2)) pick = &k;
+    prev = k.mu;
+  }
+  return pick;
+}
+
+/// Fills `r` with the move to candidate `k` along the world direction `d` (`d_mesh` the ray's
+/// direction in the mesh's frame Rm, tm): RN(μ)·|d_mesh|, the polygon's normal facing d, and the
+/// witness at the shape's first point `first` (mesh frame) moved there.
+inline void exit_answer(Depth3& r, const Cand& k, const Vec3& d, const Vec3& d_mesh, const Eigen::Matrix3d& Rm,
+                        const Vec3& tm, const Vec3& first) {
+  const Vec3 u = d.normalized();
+  const double s = dbl(k.mu) * d_mesh.norm();
+  r.depth = r.lower_bound = r.upper_bound = s;
+  r.translation = s * u;
+  r.normal = u;
+  Vec3 n = (Rm * k.normal).normalized();
+  if (n.dot(u) < 0) n = -n;
+  r.facet_normal = n.allFinite() ? n : u;
+  r.witness_p = r.witness_q = Rm * (first + dbl(k.mu) * d_mesh) + tm;
+}
 
 }  // namespace exact3
 }  // namespace pendepth::mesh3

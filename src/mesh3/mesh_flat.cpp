@@ -162,12 +162,6 @@ bool flat_overlap(const MixedPair& m, const std::vector<P3>& F) {
   return false;
 }
 
-// A candidate of σ_d: the ray parameter μ (units of d') and its polygon's normal (mesh frame).
-struct Cand {
-  FT mu;
-  Vec3 normal;
-};
-
 // Every μ >= 0 where the ray μ·d' meets a polygon of the ∂O superset (file comment), sorted.
 std::vector<Cand> candidates(const MixedPair& m, const Frame& f) {
   const V3 dv(f.d[0], f.d[1], f.d[2]);
@@ -231,37 +225,10 @@ Depth3 flat_along(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, 
   const std::vector<Cand> c = candidates(m, f);
   r.candidates = c.size();
   auto in_o = [&](const FT& mu) { return flat_overlap(m, moved(f.F, mu * dv)); };
-  const Cand* pick = nullptr;
-  if (!separation) {
-    FT last(0);  // the last μ tested (in O): equal candidates are tested once
-    for (const Cand& k : c) {
-      if (!(k.mu > last)) continue;
-      if (!in_o(k.mu)) {
-        pick = &k;
-        break;
-      }
-      last = k.mu;
-    }
-    if (!pick) throw std::logic_error("mesh flat σ_d: the ray does not leave O (O is bounded)");
-  } else {
-    FT prev(0);
-    for (const Cand& k : c) {
-      if (!(k.mu > prev)) continue;
-      if (in_o((prev + k.mu) / 2)) pick = &k;
-      prev = k.mu;
-    }
-    if (!pick) return r;
-  }
-  const Vec3 u = d.normalized();
-  const double s = dbl(pick->mu) * f.d.norm();
-  r.depth = r.lower_bound = r.upper_bound = s;
-  r.translation = s * u;
-  r.normal = u;
-  Vec3 n = (f.Rm * pick->normal).normalized();
-  if (n.dot(u) < 0) n = -n;
-  r.facet_normal = n.allFinite() ? n : u;
-  // The witness: the polygon's first vertex at the exit (the mesh's frame back to world).
-  r.witness_p = r.witness_q = f.Rm * (approx(f.F[0]) + dbl(pick->mu) * f.d) + f.tm;
+  const Cand* pick = exit_candidate(c, separation, in_o, "mesh flat");
+  if (!pick) return r;
+  // The witness: the polygon's first vertex at the exit.
+  exit_answer(r, *pick, d, f.d, f.Rm, f.tm, approx(f.F[0]));
   return r;
 }
 
