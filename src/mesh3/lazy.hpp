@@ -3,7 +3,7 @@
 // decompose its mesh at construction: only the queries that need the pieces build them (a mesh
 // against a point or a segment answers overlap and σ_d on the mesh's own triangles and never
 // does). A build that throws (InvalidInput: a piece outside the numeric domain, a piece too thin
-// for the rounded-shape engine) leaves the value unbuilt: every later query throws the same.
+// for the rounded or flat engine) leaves the value unbuilt: every later query throws the same.
 // Mesh3::decomposition() is itself built once per mesh (validate.cpp), so pairs sharing a mesh
 // share its decomposition.
 #pragma once

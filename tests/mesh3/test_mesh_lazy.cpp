@@ -170,7 +170,7 @@ TEST(MeshLazy, MeshMixedEqualsEager) {
 }
 
 TEST(MeshLazy, SegmentAnswersWithoutPieces) {
-  // torus(10, 6): its rounded decomposition has a piece too thin for the rounded-shape engine
+  // torus(10, 6): its rounded decomposition has a piece too thin for the rounded or flat engine
   // (test_mesh_mixed.cpp), which the pieces' build refuses. Overlap and σ_d of a segment are on
   // the triangles: they answer; the queries that need the pieces refuse, naming the mesh's source.
   const Shape3 tor = mesh(torus(10, 6), "torus")();
