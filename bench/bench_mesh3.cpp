@@ -7,7 +7,9 @@
 // mesh size — a comb of k teeth against an L block, a torus against a smaller torus, CGAL sample
 // meshes (libcgal-demo: cross, star, tripod, against themselves) — at random translations where
 // the boxes overlap, and the error of "the hulls of both meshes" against the exact σ_d; a mesh
-// against a point, a sphere, a segment and a triangle (BM_MeshMixed).
+// against a point, a sphere, a segment and a triangle (BM_MeshMixed). With FCL 0.7 (libfcl-dev):
+// its mesh–mesh collide (contacts, largest penetration_depth) and distance on the same poses —
+// µs per query (BM_MeshFcl) and error against the exact answers (BM_MeshFclError).
 #include <pendepth/io.hpp>
 #include <pendepth/mesh3.hpp>
 #include <pendepth/pendepth.hpp>
@@ -20,6 +22,11 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 #include <benchmark/benchmark.h>
+#ifdef PENDEPTH_BENCH_FCL
+#include <fcl/geometry/bvh/BVH_model.h>
+#include <fcl/narrowphase/collision.h>
+#include <fcl/narrowphase/distance.h>
+#endif
 
 #include <cmath>
 #include <filesystem>
@@ -329,6 +336,187 @@ void BM_MeshHullError(benchmark::State& st) {
   st.counters["hull_says_overlap_when_apart"] = false_hits;
 }
 
+#ifdef PENDEPTH_BENCH_FCL
+// ---- FCL 0.7 on the same meshes: what users read as "the mesh–mesh depth" today ----
+// fcl::collide on two fcl::BVHModel (enable_contact) tests triangle pairs only
+// (narrowphase/detail/traversal/collision/mesh_collision_traversal_node-inl.h, leafTesting →
+// Intersect::intersect_Triangle, intersect-inl.h): one Contact per intersecting triangle pair
+// (up to 2 points), whose penetration_depth is the smaller of (a) the depth of Q's triangle's
+// deepest vertex below P's triangle's plane and (b) the depth of P's deepest vertex below Q's
+// plane, with that plane's normal (n_P, or −n_Q) — a local, per-triangle-pair quantity, not a
+// translation of the meshes. Users take the largest one and its normal. A mesh inside the other
+// (no triangle pair crossing) is no collision. fcl::distance on two BVHModels is the least
+// triangle–triangle distance (TriangleDistance::triDistance): 0 when surfaces cross, never
+// negative, so enable_signed_distance (distance-inl.h: only when min_distance < 0) does nothing.
+template <class BV>
+std::shared_ptr<fcl::BVHModel<BV>> fcl_model(const pendepth::Mesh3& m) {
+  auto b = std::make_shared<fcl::BVHModel<BV>>();
+  std::vector<fcl::Vector3d> v(m.points().begin(), m.points().end());
+  std::vector<fcl::Triangle> t;
+  for (const auto& x : m.triangles()) t.emplace_back(x[0], x[1], x[2]);
+  b->beginModel();
+  b->addSubModel(v, t);
+  b->endModel();
+  return b;
+}
+
+struct FclPair {
+  std::shared_ptr<fcl::CollisionGeometryd> p[2], q[2];  // [0] OBBRSS, [1] AABB
+};
+const FclPair& fcl_pair(std::size_t index) {
+  static std::map<std::size_t, std::unique_ptr<FclPair>> cache;
+  auto& e = cache[index];
+  if (!e) {
+    const Prepared& p = prepared(index);
+    const pendepth::Mesh3 &mp = *p.pair.P().mesh(), &mq = *p.pair.Q().mesh();
+    e.reset(new FclPair{{fcl_model<fcl::OBBRSSd>(mp), fcl_model<fcl::AABBd>(mp)}, {fcl_model<fcl::OBBRSSd>(mq), fcl_model<fcl::AABBd>(mq)}});
+  }
+  return *e;
+}
+
+fcl::Transform3d fcl_pose(const pendepth::Pose3& pose) {
+  fcl::Transform3d t = fcl::Transform3d::Identity();
+  t.linear() = pose.rotation.toRotationMatrix();
+  t.translation() = pose.translation;
+  return t;
+}
+
+// What a user reads from fcl::collide with contacts: collision, the largest penetration_depth and
+// its normal (from P to Q: the direction to move Q).
+struct FclDepth {
+  bool collision = false;
+  std::size_t contacts = 0;
+  double depth = 0;
+  Vec3 normal{0, 0, 0};
+};
+FclDepth fcl_depth(const FclPair& f, int bv, const pendepth::Pose3& pose) {
+  fcl::CollisionRequestd req(std::size_t{1} << 24, true);  // never stop at a contact count
+  fcl::CollisionResultd res;
+  fcl::collide(f.p[bv].get(), fcl::Transform3d::Identity(), f.q[bv].get(), fcl_pose(pose), req, res);
+  FclDepth d{res.isCollision(), res.numContacts()};
+  for (std::size_t k = 0; k < res.numContacts(); ++k)
+    if (const auto& c = res.getContact(k); k == 0 || c.penetration_depth > d.depth) d.depth = c.penetration_depth, d.normal = c.normal;
+  return d;
+}
+double fcl_distance(const FclPair& f, int bv, const pendepth::Pose3& pose) {
+  fcl::DistanceRequestd req(false, true);  // signed requested: no effect on BVH pairs (above)
+  fcl::DistanceResultd res;
+  fcl::distance(f.p[bv].get(), fcl::Transform3d::Identity(), f.q[bv].get(), fcl_pose(pose), req, res);
+  return res.min_distance;
+}
+
+// µs per query of FCL on the 64 poses of mesh_query. Args: mesh case, BV (0 OBBRSS, 1 AABB),
+// query (0 collide without contacts: the overlap peer, 1 collide with all contacts: the depth
+// peer, 2 distance).
+void BM_MeshFcl(benchmark::State& st) {
+  const int bv = static_cast<int>(st.range(1)), query = static_cast<int>(st.range(2));
+  const FclPair& f = fcl_pair(static_cast<std::size_t>(st.range(0)));
+  mesh_query(st, [&](const Prepared& p, std::size_t i) {
+    if (query == 1) benchmark::DoNotOptimize(fcl_depth(f, bv, p.poses[i]));
+    else if (query == 2) benchmark::DoNotOptimize(fcl_distance(f, bv, p.poses[i]));
+    else {
+      fcl::CollisionRequestd req;
+      fcl::CollisionResultd res;
+      benchmark::DoNotOptimize(fcl::collide(f.p[bv].get(), fcl::Transform3d::Identity(), f.q[bv].get(), fcl_pose(p.poses[i]), req, res));
+    }
+  });
+  static const char* bvs[] = {" OBBRSS", " AABB"};
+  static const char* q[] = {" collide", " contacts", " distance"};
+  st.SetLabel(mesh_cases()[static_cast<std::size_t>(st.range(0))].name + bvs[bv] + q[query]);
+}
+
+// Relative error of `value` against an answer known to lie in [lo, hi] (0 < lo ≤ hi): the least
+// |value − x| / x over x in the bracket — exact when lo == hi, a certified lower bound otherwise.
+double rel_error(double value, double lo, double hi) {
+  if (value < lo) return (lo - value) / lo;
+  if (value > hi) return (value - hi) / hi;
+  return 0;
+}
+
+struct ErrorStat {
+  int n = 0;
+  double sum = 0, worst = 0;
+  void add(double e) { ++n, sum += e, worst = std::max(worst, e); }
+  void report(benchmark::State& st, const std::string& name) const {
+    st.counters[name + "_n"] = n;
+    st.counters[name + "_mean"] = n ? sum / n : 0;
+    st.counters[name + "_max"] = worst;
+  }
+};
+
+// FCL's mesh–mesh answer (OBBRSS; contacts do not depend on the BV) and the convex hulls' σ against
+// pendepth's exact answers on the 64 poses of mesh_query, outside any timing (1 iteration):
+// overlapping poses: FCL's largest depth against σ (exact where the bounds meet, else the bracket:
+// counters *_bracket), against the exact σ_d along FCL's own normal (does moving Q by FCL's answer
+// separate?), the hulls' σ against σ; apart poses: fcl::distance against the exact distance;
+// misses both ways (exact interior-overlap test).
+void BM_MeshFclError(benchmark::State& st) {
+  const std::size_t index = static_cast<std::size_t>(st.range(0));
+  const Prepared& p = prepared(index);
+  const FclPair& f = fcl_pair(index);
+  const pendepth::Pose3 id;
+  for (auto _ : st) {
+  }
+  int over = 0, met = 0, missed = 0, missed_bool = 0, false_hits = 0, hull_hits = 0, separates = 0, with_normal = 0, under = 0,
+      dist_zero = 0, dist_pos = 0;
+  ErrorStat sigma, sigma_bracket, along_normal, normal_excess, hull_sigma, hull_sigma_bracket, distance;
+  for (const pendepth::Pose3& pose : p.poses) {
+    const bool exact_over = p.pair.overlapping(id, pose);
+    const FclDepth fd = fcl_depth(f, 0, pose);
+    const double fdist = fcl_distance(f, 0, pose);
+    fcl::CollisionResultd plain;  // collide without contacts: the plain yes / no
+    fcl::collide(f.p[0].get(), fcl::Transform3d::Identity(), f.q[0].get(), fcl_pose(pose), fcl::CollisionRequestd(), plain);
+    if (!exact_over) {
+      false_hits += plain.isCollision();
+      hull_hits += p.hulls.overlapping(id, pose);
+      const double d = p.pair.signed_distance(id, pose).distance;
+      if (d > 0) distance.add(std::abs(fdist - d) / d);
+      continue;
+    }
+    ++over;
+    dist_zero += fdist == 0, dist_pos += fdist > 0;
+    const pendepth::Depth3 s = p.pair.minimum(id, pose), h = p.hulls.minimum(id, pose);
+    const bool exact = s.lower_bound == s.upper_bound;
+    met += exact;
+    (exact ? hull_sigma : hull_sigma_bracket).add(rel_error(h.depth, s.lower_bound, s.upper_bound));
+    missed_bool += !plain.isCollision();
+    if (!fd.collision) {
+      ++missed;
+      continue;
+    }
+    (exact ? sigma : sigma_bracket).add(rel_error(fd.depth, s.lower_bound, s.upper_bound));
+    under += fd.depth < s.lower_bound;
+    if (fd.normal.norm() > 0) {
+      ++with_normal;
+      const double a = p.pair.along(id, pose, fd.normal).depth;
+      separates += fd.depth >= a;
+      along_normal.add(std::abs(fd.depth - a) / a);
+      normal_excess.add(rel_error(a, s.lower_bound, s.upper_bound));  // FCL's direction against σ's
+    }
+  }
+  st.SetLabel(mesh_cases()[index].name);
+  st.counters["poses"] = static_cast<double>(p.poses.size());
+  st.counters["overlapping"] = over;
+  st.counters["sigma_exact"] = met;
+  st.counters["fcl_no_contact_overlap"] = missed;
+  st.counters["fcl_no_collision_overlap"] = missed_bool;
+  st.counters["fcl_collision_apart"] = false_hits;
+  st.counters["hull_overlap_apart"] = hull_hits;
+  st.counters["fcl_under_sigma"] = under;
+  st.counters["fcl_move_separates"] = separates;
+  st.counters["fcl_with_normal"] = with_normal;
+  st.counters["fcl_dist_zero_overlap"] = dist_zero;
+  st.counters["fcl_dist_pos_overlap"] = dist_pos;
+  sigma.report(st, "fcl_sigma");
+  sigma_bracket.report(st, "fcl_sigma_bracket");
+  along_normal.report(st, "fcl_sigma_d_normal");
+  normal_excess.report(st, "sigma_d_normal_over_sigma");
+  hull_sigma.report(st, "hull_sigma");
+  hull_sigma_bracket.report(st, "hull_sigma_bracket");
+  distance.report(st, "fcl_distance");
+}
+#endif
+
 // A mesh against a point (its signed distance field: src/mesh3/mesh_point.cpp), a sphere of
 // radius 0.4 (the piece walk: src/mesh3/mesh_mixed.cpp) or a segment of length ~1.2 (exact
 // rationals on the triangles: src/mesh3/mesh_segment.cpp): µs per query. Args: mesh case (1 comb
@@ -411,6 +599,10 @@ BENCHMARK(BM_MeshSigmaExact)->ArgsProduct({{0, 1, 2, 3, 4, 5, 6, 7}, {0, 1}})->U
 BENCHMARK(BM_MeshAlongDescent)->Apply(mesh_args);
 BENCHMARK(BM_MeshMinimumBoundsDescent)->Apply(mesh_args);
 BENCHMARK(BM_MeshHullError)->Apply(mesh_args);
+#ifdef PENDEPTH_BENCH_FCL
+BENCHMARK(BM_MeshFcl)->ArgsProduct({{0, 1, 2, 3, 4, 5, 6, 7}, {0, 1}, {0, 1, 2}})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_MeshFclError)->DenseRange(0, 7)->Iterations(1)->Unit(benchmark::kMillisecond);
+#endif
 BENCHMARK(BM_MeshMixed)
     ->Apply([](benchmark::internal::Benchmark* b) {
       for (const auto& [mesh, shape] :
