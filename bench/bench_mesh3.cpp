@@ -425,6 +425,33 @@ void BM_MeshFcl(benchmark::State& st) {
   st.SetLabel(mesh_cases()[static_cast<std::size_t>(st.range(0))].name + bvs[bv] + q[query]);
 }
 
+// The same peers on one side of the exact overlap test, so that the means compare like with like:
+// overlapping poses, pendepth σ against FCL's collide with all contacts; apart poses, pendepth's
+// signed distance against fcl::distance. Args: mesh case, side (0 overlapping, 1 apart), engine
+// (0 pendepth, 1 FCL OBBRSS, 2 FCL AABB).
+void BM_MeshFclSide(benchmark::State& st) {
+  const std::size_t index = static_cast<std::size_t>(st.range(0));
+  const bool apart = st.range(1) == 1;
+  const int engine = static_cast<int>(st.range(2));
+  const Prepared& p = prepared(index);
+  const FclPair& f = fcl_pair(index);
+  const pendepth::Pose3 id;
+  std::vector<pendepth::Pose3> poses;
+  for (const pendepth::Pose3& pose : p.poses)
+    if (p.pair.overlapping(id, pose) != apart) poses.push_back(pose);
+  std::size_t i = 0;
+  for (auto _ : st) {
+    const pendepth::Pose3& pose = poses[i++ % poses.size()];
+    if (engine == 0 && apart) benchmark::DoNotOptimize(p.pair.signed_distance(id, pose));
+    else if (engine == 0) benchmark::DoNotOptimize(p.pair.minimum(id, pose));
+    else if (apart) benchmark::DoNotOptimize(fcl_distance(f, engine - 1, pose));
+    else benchmark::DoNotOptimize(fcl_depth(f, engine - 1, pose));
+  }
+  static const char* e[] = {" pendepth", " FCL OBBRSS", " FCL AABB"};
+  st.SetLabel(mesh_cases()[index].name + (apart ? " apart: distance" : " overlapping: depth") + e[engine]);
+  st.counters["poses"] = static_cast<double>(poses.size());
+}
+
 // Relative error of `value` against an answer known to lie in [lo, hi] (0 < lo ≤ hi): the least
 // |value − x| / x over x in the bracket — exact when lo == hi, a certified lower bound otherwise.
 double rel_error(double value, double lo, double hi) {
@@ -449,7 +476,8 @@ struct ErrorStat {
 // overlapping poses: FCL's largest depth against σ (exact where the bounds meet, else the bracket:
 // counters *_bracket), against the exact σ_d along FCL's own normal (does moving Q by FCL's answer
 // separate?), the hulls' σ against σ; apart poses: fcl::distance against the exact distance;
-// misses both ways (exact interior-overlap test).
+// misses both ways (exact interior-overlap test); means of σ's upper bound, FCL's depth and its
+// contact count over the overlapping poses it reports.
 void BM_MeshFclError(benchmark::State& st) {
   const std::size_t index = static_cast<std::size_t>(st.range(0));
   const Prepared& p = prepared(index);
@@ -459,6 +487,7 @@ void BM_MeshFclError(benchmark::State& st) {
   }
   int over = 0, met = 0, missed = 0, missed_bool = 0, false_hits = 0, hull_hits = 0, separates = 0, with_normal = 0, under = 0,
       dist_zero = 0, dist_pos = 0;
+  double sigma_sum = 0, fcl_sum = 0, contacts = 0;  // over overlapping poses FCL reports
   ErrorStat sigma, sigma_bracket, along_normal, normal_excess, hull_sigma, hull_sigma_bracket, distance;
   for (const pendepth::Pose3& pose : p.poses) {
     const bool exact_over = p.pair.overlapping(id, pose);
@@ -485,6 +514,7 @@ void BM_MeshFclError(benchmark::State& st) {
       continue;
     }
     (exact ? sigma : sigma_bracket).add(rel_error(fd.depth, s.lower_bound, s.upper_bound));
+    sigma_sum += s.upper_bound, fcl_sum += fd.depth, contacts += static_cast<double>(fd.contacts);
     under += fd.depth < s.lower_bound;
     if (fd.normal.norm() > 0) {
       ++with_normal;
@@ -507,6 +537,10 @@ void BM_MeshFclError(benchmark::State& st) {
   st.counters["fcl_with_normal"] = with_normal;
   st.counters["fcl_dist_zero_overlap"] = dist_zero;
   st.counters["fcl_dist_pos_overlap"] = dist_pos;
+  const double reported = over - missed;
+  st.counters["sigma_upper_mean"] = reported ? sigma_sum / reported : 0;
+  st.counters["fcl_depth_mean"] = reported ? fcl_sum / reported : 0;
+  st.counters["fcl_contacts_mean"] = reported ? contacts / reported : 0;
   sigma.report(st, "fcl_sigma");
   sigma_bracket.report(st, "fcl_sigma_bracket");
   along_normal.report(st, "fcl_sigma_d_normal");
@@ -601,6 +635,7 @@ BENCHMARK(BM_MeshMinimumBoundsDescent)->Apply(mesh_args);
 BENCHMARK(BM_MeshHullError)->Apply(mesh_args);
 #ifdef PENDEPTH_BENCH_FCL
 BENCHMARK(BM_MeshFcl)->ArgsProduct({{0, 1, 2, 3, 4, 5, 6, 7}, {0, 1}, {0, 1, 2}})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_MeshFclSide)->ArgsProduct({{0, 1, 2, 3, 4, 5, 6, 7}, {0, 1}, {0, 1, 2}})->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_MeshFclError)->DenseRange(0, 7)->Iterations(1)->Unit(benchmark::kMillisecond);
 #endif
 BENCHMARK(BM_MeshMixed)
