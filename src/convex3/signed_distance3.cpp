@@ -387,18 +387,6 @@ double accurate_dd(F&& f) {
   return exact::accurate_value(std::forward<F>(f));
 }
 
-RelativePose relative_pose(const Pose3& pp, const Pose3& pq, Eigen::Matrix3d* Rp_out = nullptr) {
-  if (!pp.translation.allFinite()) throw InvalidInput("pose of P: non-finite translation");
-  if (!pq.translation.allFinite()) throw InvalidInput("pose of Q: non-finite translation");
-  const Eigen::Matrix3d Rp = pp.matrix(), Rq = pq.matrix();
-  if (Rp_out) *Rp_out = Rp;
-  RelativePose r;
-  r.R = Rp.transpose() * Rq;
-  r.tq = Rp.transpose() * pq.translation;
-  r.tp = Rp.transpose() * pp.translation;
-  return r;
-}
-
 // The feature of one side spanned by the distinct vertices vs (1–3) of S on that side, all on
 // the side's support plane for U: a vertex; a true edge (its two triangles not coplanar); else
 // the true face containing them (the support set is then that face), reported as its level-0
