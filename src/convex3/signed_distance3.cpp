@@ -1478,8 +1478,9 @@ int compare_on(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacency& a
 
 int distance_compare(const CorePoints& P, const Pose3& pp, const CorePoints& Q, const Pose3& pq, const Vec3& d,
                      double lambda, double rp, double rq, int* slope) {
-  const RelativePose rel = relative_pose(pp, pq);
-  const Eigen::Matrix3d RpT = pp.matrix().transpose();
+  Eigen::Matrix3d Rp;
+  const RelativePose rel = relative_pose(pp, pq, &Rp);
+  const Eigen::Matrix3d RpT = Rp.transpose();
   Ctx c{P.data(), Q.data(), rel};
   c.RpT = &RpT, c.od = d, c.lam = lambda;
   c.off_approx = RpT * (lambda * d);
@@ -1497,8 +1498,9 @@ int distance_compare(const CorePoints& P, const Pose3& pp, const CorePoints& Q, 
 
 int line_distance_compare(const CorePoints& P, const Pose3& pp, const CorePoints& Q, const Pose3& pq, const Vec3& d,
                           double rp, double rq) {
-  const RelativePose rel = relative_pose(pp, pq);
-  const Vec3 dp = pp.matrix().transpose() * d;
+  Eigen::Matrix3d Rp;
+  const RelativePose rel = relative_pose(pp, pq, &Rp);
+  const Vec3 dp = Rp.transpose() * d;
   Ctx c{P.data(), Q.data(), rel};
   c.proj = &dp;
   // π(v) = |d|²·(v's component across d): compare with ((rp + rq)·|d|²)².
