@@ -28,24 +28,36 @@ Eigen::Matrix3d Pose3::matrix() const {
   const Eigen::Vector4d c = rotation.coeffs();
   const double big = c.cwiseAbs().maxCoeff();
   if (!c.allFinite() || big == 0) throw InvalidInput("pose: rotation quaternion is zero or non-finite");
+  // No rotation (x = y = z = +0, as in most poses of a fixed P): I directly — the general path
+  // below gives exactly I then (w normalises to ±1 exactly, every other product is +0), through
+  // a square root and four divisions.
+  auto plus_zero = [](double x) { return x == 0 && !std::signbit(x); };
+  if (plus_zero(c[0]) && plus_zero(c[1]) && plus_zero(c[2])) return Eigen::Matrix3d::Identity();
   const int e = std::ilogb(big);
   Eigen::Quaterniond q;
   for (int k = 0; k < 4; ++k) q.coeffs()[k] = std::ldexp(c[k], -e);
   return q.normalized().toRotationMatrix();
 }
 
-namespace {
+namespace convex3 {
 
-RelativePose relative(const Pose3& pp, const Pose3& pq) {
+RelativePose relative_pose(const Pose3& pp, const Pose3& pq, Eigen::Matrix3d* Rp_out) {
   if (!pp.translation.allFinite()) throw InvalidInput("pose of P: non-finite translation");
   if (!pq.translation.allFinite()) throw InvalidInput("pose of Q: non-finite translation");
-  Eigen::Matrix3d Rp = pp.matrix(), Rq = pq.matrix();
+  const Eigen::Matrix3d Rp = pp.matrix(), Rq = pq.matrix();
+  if (Rp_out) *Rp_out = Rp;
   RelativePose r;
   r.R = Rp.transpose() * Rq;
   r.tq = Rp.transpose() * pq.translation;
   r.tp = Rp.transpose() * pp.translation;
   return r;
 }
+
+}  // namespace convex3
+
+namespace {
+
+using convex3::relative_pose;
 
 Feature3 feature_of(FacetSource s, bool of_p, int index) {
   if (s == FacetSource::EdgeEdge) return {FeatureKind3::Edge, index};
@@ -92,8 +104,9 @@ Depth3 finish(const ConvexPolytope& P, const ConvexPolytope& Q, const Pose3& pos
 // σ by certified expansion on the implicit M (minimum_expand.cpp); the O(n·m) enumeration of
 // minkowski_facets.cpp stays the reference in tests.
 Depth3 minimum_depth(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q, const Pose3& pose_q) {
-  RelativePose rel = relative(pose_p, pose_q);
-  return convex3::minimum_depth_expand(P, Q, rel, pose_p.matrix(), pose_p.translation);
+  Eigen::Matrix3d Rp;
+  const RelativePose rel = relative_pose(pose_p, pose_q, &Rp);
+  return convex3::minimum_depth_expand(P, Q, rel, Rp, pose_p.translation);
 }
 
 namespace convex3 {
@@ -101,8 +114,9 @@ namespace convex3 {
 // σ warm-started from a seed (minimum_expand.hpp): the same answer as minimum_depth.
 Depth3 minimum_depth_seeded(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
                             const Pose3& pose_q, ExpandSeed* seed) {
-  RelativePose rel = relative(pose_p, pose_q);
-  return minimum_depth_expand(P, Q, rel, pose_p.matrix(), pose_p.translation, seed);
+  Eigen::Matrix3d Rp;
+  const RelativePose rel = relative_pose(pose_p, pose_q, &Rp);
+  return minimum_depth_expand(P, Q, rel, Rp, pose_p.translation, seed);
 }
 
 namespace {
@@ -115,7 +129,8 @@ struct DirectionalInput {
 };
 DirectionalInput directional_input(const Pose3& pose_p, const Pose3& pose_q, const Vec3& d) {
   if (!d.allFinite() || d == Vec3::Zero()) throw InvalidInput("direction: zero or non-finite");
-  DirectionalInput in{relative(pose_p, pose_q), pose_p.matrix(), Vec3::Zero()};
+  DirectionalInput in;
+  in.rel = relative_pose(pose_p, pose_q, &in.Rp);
   in.d = in.Rp.transpose() * d;
   if (in.d == Vec3::Zero()) throw InvalidInput("direction: underflows to zero in P's frame");
   return in;
@@ -135,8 +150,9 @@ Depth3 directional_depth_expand(const ConvexPolytope& P, const Pose3& pose_p, co
 Depth3 directional_depth_facets(const ConvexPolytope& P, const Pose3& pose_p, const ConvexPolytope& Q,
                                 const Pose3& pose_q, const Vec3& d) {
   if (!d.allFinite() || d == Vec3::Zero()) throw InvalidInput("direction: zero or non-finite");
-  RelativePose rel = relative(pose_p, pose_q);
-  Vec3 dl = pose_p.matrix().transpose() * d;  // direction in P's frame
+  Eigen::Matrix3d Rp;
+  const RelativePose rel = relative_pose(pose_p, pose_q, &Rp);
+  Vec3 dl = Rp.transpose() * d;  // direction in P's frame
   auto cands = convex3::minkowski_facets(P, Q, rel, dl);
   Depth3 none;
   none.kind = DepthKind::Directional;

@@ -18,6 +18,11 @@ struct RelativePose {
   Vec3 place(const Vec3& q) const { return R * q + (tq - tp); }
 };
 
+/// Q's pose relative to P's (R = Rpᵀ Rq, tq = Rpᵀ t_q, tp = Rpᵀ t_p); P's rotation matrix into
+/// *Rp_out when given, so that a query computes each pose's matrix once. Throws InvalidInput on
+/// a non-finite translation (and, from Pose3::matrix, on a zero or non-finite quaternion).
+RelativePose relative_pose(const Pose3& pp, const Pose3& pq, Eigen::Matrix3d* Rp_out = nullptr);
+
 enum class FacetSource { FaceP, FaceQ, EdgeEdge };
 
 /// One candidate normal u of M (not normalised, known exactly as a polynomial in the inputs).

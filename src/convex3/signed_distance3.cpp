@@ -387,18 +387,6 @@ double accurate_dd(F&& f) {
   return exact::accurate_value(std::forward<F>(f));
 }
 
-RelativePose relative_pose(const Pose3& pp, const Pose3& pq, Eigen::Matrix3d* Rp_out = nullptr) {
-  if (!pp.translation.allFinite()) throw InvalidInput("pose of P: non-finite translation");
-  if (!pq.translation.allFinite()) throw InvalidInput("pose of Q: non-finite translation");
-  const Eigen::Matrix3d Rp = pp.matrix(), Rq = pq.matrix();
-  if (Rp_out) *Rp_out = Rp;
-  RelativePose r;
-  r.R = Rp.transpose() * Rq;
-  r.tq = Rp.transpose() * pq.translation;
-  r.tp = Rp.transpose() * pp.translation;
-  return r;
-}
-
 // The feature of one side spanned by the distinct vertices vs (1–3) of S on that side, all on
 // the side's support plane for U: a vertex; a true edge (its two triangles not coplanar); else
 // the true face containing them (the support set is then that face), reported as its level-0
@@ -1490,8 +1478,9 @@ int compare_on(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacency& a
 
 int distance_compare(const CorePoints& P, const Pose3& pp, const CorePoints& Q, const Pose3& pq, const Vec3& d,
                      double lambda, double rp, double rq, int* slope) {
-  const RelativePose rel = relative_pose(pp, pq);
-  const Eigen::Matrix3d RpT = pp.matrix().transpose();
+  Eigen::Matrix3d Rp;
+  const RelativePose rel = relative_pose(pp, pq, &Rp);
+  const Eigen::Matrix3d RpT = Rp.transpose();
   Ctx c{P.data(), Q.data(), rel};
   c.RpT = &RpT, c.od = d, c.lam = lambda;
   c.off_approx = RpT * (lambda * d);
@@ -1509,8 +1498,9 @@ int distance_compare(const CorePoints& P, const Pose3& pp, const CorePoints& Q, 
 
 int line_distance_compare(const CorePoints& P, const Pose3& pp, const CorePoints& Q, const Pose3& pq, const Vec3& d,
                           double rp, double rq) {
-  const RelativePose rel = relative_pose(pp, pq);
-  const Vec3 dp = pp.matrix().transpose() * d;
+  Eigen::Matrix3d Rp;
+  const RelativePose rel = relative_pose(pp, pq, &Rp);
+  const Vec3 dp = Rp.transpose() * d;
   Ctx c{P.data(), Q.data(), rel};
   c.proj = &dp;
   // π(v) = |d|²·(v's component across d): compare with ((rp + rq)·|d|²)².

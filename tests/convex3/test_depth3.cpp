@@ -7,7 +7,10 @@
 
 #include "shapes3.hpp"
 
+#include <cmath>
+#include <cstring>
 #include <limits>
+#include <random>
 #include "test_rotations.hpp"
 
 namespace pendepth {
@@ -222,6 +225,35 @@ TEST(Depth3, InvalidInput) {
   EXPECT_THROW(directional_depth(C, Pose3(), C, Pose3(), Vec3(NAN, 0, 1)), InvalidInput);
   EXPECT_THROW(minimum_depth(C, Pose3(), C, Pose3(Eigen::Quaterniond(0, 0, 0, 0), Vec3::Zero())), InvalidInput);
   EXPECT_THROW(minimum_depth(C, Pose3(Vec3(INFINITY, 0, 0)), C, Pose3()), InvalidInput);
+}
+
+// Pose3::matrix returns I directly for x = y = z = +0: the same bits as the general path (scale
+// by a power of two, normalise, Eigen's toRotationMatrix), written out here as the reference, for
+// w of every sign and magnitude; quaternions with a −0 component take the general path.
+TEST(Depth3, IdentityRotationMatrixIsTheGeneralOne) {
+  auto general = [](const Eigen::Quaterniond& q) {
+    const Eigen::Vector4d c = q.coeffs();
+    const int e = std::ilogb(c.cwiseAbs().maxCoeff());
+    Eigen::Quaterniond s;
+    for (int k = 0; k < 4; ++k) s.coeffs()[k] = std::ldexp(c[k], -e);
+    return Eigen::Matrix3d(s.normalized().toRotationMatrix());
+  };
+  auto same_bits = [](const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) {
+    return std::memcmp(a.data(), b.data(), sizeof(double) * 9) == 0;
+  };
+  std::mt19937_64 rng(16);
+  std::vector<double> ws = {1, -1, 0.5, 3, -7.25, 0x1p-1000, -0x1p1000, 0x1p-1074, 1.7976931348623157e308};
+  for (int k = 0; k < 1000; ++k)
+    ws.push_back(std::ldexp(std::uniform_real_distribution<double>(-1, 1)(rng), int(rng() % 2000) - 1000));
+  for (double w : ws) {
+    if (w == 0) continue;
+    for (int z = 0; z < 8; ++z) {  // each of x, y, z is +0 or −0
+      const Eigen::Quaterniond q(w, z & 1 ? -0.0 : 0.0, z & 2 ? -0.0 : 0.0, z & 4 ? -0.0 : 0.0);
+      const Eigen::Matrix3d R = Pose3(q, Vec3::Zero()).matrix();
+      EXPECT_TRUE(same_bits(R, general(q))) << "w = " << w << ", zeros " << z;
+      if (z == 0) EXPECT_TRUE(same_bits(R, Eigen::Matrix3d::Identity())) << "w = " << w;
+    }
+  }
 }
 
 }  // namespace
