@@ -645,10 +645,8 @@ struct Classifier {
     // Crowded candidates only: those whose box meets at least kCrowded others' (a counting pass
     // over a box tree of all candidates, stopped there). Elsewhere the pairing is cheap and the
     // probes would cost more than they save (combs, spirals).
-    std::vector<Tri> boxes(K);
-    for (std::size_t k = 0; k < K; ++k) boxes[k].lo = cands[k].lo, boxes[k].hi = cands[k].hi;
     BoxTree& tree = buf.cand_tree;  // refitted to the trimmed boxes by find_splits
-    tree.build(boxes);
+    build_candidate_tree(tree);
     have_tree = true;
     std::vector<std::int32_t> st;
     auto crowded = [&](std::size_t k) {
@@ -1109,6 +1107,12 @@ struct Classifier {
     }
   }
 
+  // The box tree over the candidates' boxes, read in place (no copy into records).
+  void build_candidate_tree(BoxTree& tree) const {
+    tree.build_boxes(cands.size(), [&](std::size_t k) -> const Vec2& { return cands[k].lo; },
+                     [&](std::size_t k) -> const Vec2& { return cands[k].hi; });
+  }
+
   // Step 1: buf.found, the split points of all candidates (meet over every pair with overlapping
   // boxes: all pairs for K ≤ 64, else a box hierarchy), and buf.reference.
   void find_splits() {
@@ -1142,9 +1146,7 @@ struct Classifier {
         }
       }
     } else if (!have_tree) {
-      std::vector<Tri> boxes(K);
-      for (std::size_t k = 0; k < K; ++k) boxes[k].lo = cands[k].lo, boxes[k].hi = cands[k].hi;
-      tree.build(boxes);
+      build_candidate_tree(tree);
     }
     std::vector<std::int32_t> st;
     std::size_t meets = 0;
