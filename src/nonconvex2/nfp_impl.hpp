@@ -108,6 +108,7 @@ struct NfpFlat {
   // exactly two doubles or magnitudes are out of the fast value's range (nfp_value.cpp).
   struct PieceDD {
     double ox, oxl, oy, oyl, dx, dxl, dy, dyl, dd, ddl;
+    double ddi;  // RN(1 / dd)
     bool ok = false;
     // The edge line's point c1 + c2 and direction e1 − e0, exact double-doubles (σ_d's crossing).
     double cx, cxl, cy, cyl, ex, exl, ey, eyl;

@@ -18,7 +18,7 @@
 //   dd sum (two two-sums, exact.hpp's operator+): ≤ 2⁻¹⁰⁰·(|a| + |b|) (exact.hpp's kUnitDD).
 //   c̃ = W̃x·Dy − W̃y·Dx: |c̃ − c| ≤ e_c = (|Dy|·e_Wx + |Dx|·e_Wy)(1 + 2⁻⁵⁰) + 2⁻⁹⁹·(|P1| + |P2|)
 //     (9u² + 2⁻¹⁰⁰ < 2⁻⁹⁹ per product's magnitude); ρ_c = e_c/|c̃| (required ≤ 2⁻⁶⁰).
-//   q̃ = c̃ / |D|² (exact::dd_div, 2⁻⁹⁷ for exact operands): ρ_q = (ρ_c + ρ_D)(1 + 2⁻⁴⁰) + 2⁻⁹⁷.
+//   q̃ = c̃ / |D|² (div below, by the stored 1/|D|²_hi; 2⁻⁹⁷ for exact operands): ρ_q = (ρ_c + ρ_D)(1 + 2⁻⁴⁰) + 2⁻⁹⁷.
 //   σ̃² = c̃·q̃: ρ_σ = (ρ_c + ρ_q)(1 + 2⁻⁴⁰) + 2⁻¹⁰²; translation q̃·(−Dy), q̃·Dx: ρ_q + 2⁻¹⁰²
 //     (a zero component of D gives an exact zero).
 // Axis-parallel edges (Dx or Dy exactly 0): X − t = −W on the other axis, σ² = W² (below). At a
@@ -85,15 +85,22 @@ template <bool F = false>
   return {r.hi, r.lo};
 }
 
-// exact::dd_div(a, b) with the residual above (the same steps, so the same double-double when every
-// product's residual is exact: |a|, |b.hi| and |q1| below 2⁹⁹⁶, |q1·b.hi| ≈ |a.hi| ≥ 2⁻⁸⁰⁰).
+// a / b in double-double from inv = RN(1 / b.hi) (per piece, built once, or computed off the
+// critical path): two products instead of exact::dd_div's two dependent divisions. Error (a, b
+// exact, normalised double-doubles; u = 2⁻⁵³): q1 = RN(a.hi·inv) = (a/b)(1 + η), |η| ≤ 4.1u (a.hi
+// against a, b.hi against b, inv and the product: u each); r = a − q1·b in double-double is −η·a
+// within 9u²·|a|(1 + 5u) (the product) + 2⁻¹⁰⁰·(|a| + |q1·b|) (the sum), < 140u²·|a|; q2 =
+// RN(r.hi·inv) is r/b within 4.1u, so |q2 − r/b| < 4.1u·(4.1u + 140u²)·|a/b| < 18u²·|a/b|; the
+// fast two-sum of q1 and q2 is exact: within 158u² < 2⁻⁹⁸ of a/b relative, under exact::kDivBound
+// (2⁻⁹⁷) as for dd_div. Products' residuals exact: |a|, |b.hi|, |q1| below 2⁹⁹⁶, |q1·b.hi| ≈ |a.hi|
+// ≥ 2⁻⁸⁰⁰ (the callers' range checks).
 template <bool F = false>
-[[gnu::always_inline]] inline D2 div(D2 a, D2 b) {
-  const double q1 = a.hi / b.hi;
+[[gnu::always_inline]] inline D2 div(D2 a, D2 b, double inv) {
+  const double q1 = a.hi * inv;
   const D2 p = mul<F>({q1, 0}, b);
   const D2 r = add(a, {-p.hi, -p.lo});
   D2 q;
-  quick_two_sum(q1, r.hi / b.hi, q.hi, q.lo);
+  quick_two_sum(q1, r.hi * inv, q.hi, q.lo);
   return q;
 }
 
@@ -150,6 +157,7 @@ NfpFlat::PieceDD piece_dd(const Ray& E, const Line* edge) {
   const D2 dd = add(mul({v.dx, v.dxl}, {v.dx, v.dxl}), mul({v.dy, v.dyl}, {v.dy, v.dyl}));
   v.dd = dd.hi, v.ddl = dd.lo;
   v.ok = dd.hi >= 0x1p-800;
+  v.ddi = 1 / dd.hi;
   return v;
 }
 
@@ -230,7 +238,7 @@ template <bool F>
   const double ec = (std::abs(v.dy) * ewx + std::abs(v.dx) * ewy) * (1 + 0x1p-50) + 0x1p-99 * (std::abs(p1.hi) + std::abs(p2.hi));
   const double rc = ec / ac * (1 + 0x1p-50);
   if (!(rc <= 0x1p-60)) return false;
-  const D2 q = div<F>(c, {v.dd, v.ddl});
+  const D2 q = div<F>(c, {v.dd, v.ddl}, v.ddi);
   const double rq = (rc + 0x1p-99) * (1 + 0x1p-40) + exact::kDivBound;
   const D2 s2 = mul<F>(c, q);
   const double rs = (rc + rq) * (1 + 0x1p-40) + 0x1p-102;
@@ -341,7 +349,7 @@ template <bool F>
   const double ed = 0x1p-99 * (std::abs(m1.hi) + std::abs(m2.hi));
   const double rn = en / an * (1 + 0x1p-50), rd = ed / ad * (1 + 0x1p-50);
   if (!(rn <= 0x1p-60 && rd <= 0x1p-60)) return false;
-  const D2 q = div<F>(num, den);
+  const D2 q = div<F>(num, den, 1 / den.hi);
   const double b = ((rn + rd) * (1 + 0x1p-40) + exact::kDivBound) * std::abs(q.hi) * (1 + 0x1p-40);
   if (diag) *diag = {{q.hi, 0, 0}, {q.lo, 0, 0}, {b, 0, 0}, true};
   if (!exact::rounds_to(q.hi, q.lo, b)) return false;
