@@ -175,8 +175,9 @@ namespace nonconvex2 {
 /// NfpFlat::pdd and pend for every piece (nfp_value.cpp); one piece's from its edge ray.
 void build_values(const NoFitPolygon2::Impl& nfp, std::vector<NfpFlat::PieceDD>& out, std::vector<std::array<NfpFlat::EndDD, 2>>& ends);
 NfpFlat::PieceDD piece_dd(const Ray& E, const Line* edge = nullptr);
-/// NfpFlat::pend's entry for the point at parameter p of E (ok false for μ = 0, 1 or a projection).
-NfpFlat::EndDD end_dd(const Ray& E, const Param& p);
+/// NfpFlat::pend's entry for the point at parameter p of E, v = piece_dd(E) (ok false for μ = 0, 1,
+/// a projection, or when v is not ok).
+NfpFlat::EndDD end_dd(const Ray& E, const Param& p, const NfpFlat::PieceDD& v);
 /// Whether NfpFlat's values use the FMA instruction (default: when the processor has it); the same
 /// doubles either way. Tests set it to run both builds.
 bool& nfp_values_fma();

@@ -163,27 +163,28 @@ NfpFlat::PieceDD piece_dd(const Ray& E, const Line* edge) {
 
 // A cut end X = o + μ·D, μ = line_num / line_den (edge_cut.hpp's point_nd with t = 0), one
 // coordinate at a time: o1 + o2 exactly (two-sum) when D is exactly 0 on that axis (axis-parallel
-// edges); else exact::dd_ratio's double-double and absolute bound (rounded.hpp; 2⁻⁹⁷ relative),
-// the bound dropped to 0 when X equals the double hi exactly (checked exactly only when |lo| is
-// within the bound: integer-like data), and an exact 0 recognised exactly. ok false when a
+// edges; D from the piece's PieceDD); else exact::dd_ratio's double-double and absolute bound
+// (rounded.hpp; 2⁻⁹⁷ relative), the bound dropped to 0 when X equals the double hi exactly
+// (checked only when |lo| is within the bound, exact-double tier first: integer-like data), and
+// an exact 0 recognised exactly. ok false when a
 // coordinate is out of range or the tier cannot bound it (then the generic tier answers).
-NfpFlat::EndDD end_dd(const Ray& E, const Param& p) {
+NfpFlat::EndDD end_dd(const Ray& E, const Param& p, const NfpFlat::PieceDD& v) {
   NfpFlat::EndDD r;
-  if (p.kind == Param::Zero || p.kind == Param::One || p.kind == Param::Proj) return r;
+  if (!v.ok || p.kind == Param::Zero || p.kind == Param::One || p.kind == Param::Proj) return r;
   const Vec2 origin(0, 0);
   auto coord = [&](int axis, double& hi, double& lo, double& e) {
     auto f = [&](auto L) { return point_nd(p, E, origin, axis, L); };
     e = 0;
-    if (exact::exact_sign([&](auto L) { return axis == 0 ? ray_dx(E, L) : ray_dy(E, L); }) == 0) {
+    if ((axis == 0 ? v.dx : v.dy) == 0) {  // v.ok: D exactly (hi, lo), so D = 0 on this axis iff hi = 0
       two_sum(axis == 0 ? E.o1.x() : E.o1.y(), axis == 0 ? E.o2.x() : E.o2.y(), hi, lo);
       return in_range(hi) && std::isfinite(lo);
     }
     double b;
     if (!exact::dd_ratio(f, hi, lo, b)) {
       hi = lo = 0;
-      return exact::exact_sign([&](auto L) { return f(L).first; }) == 0;
+      return exact::exact_sign_tie_likely([&](auto L) { return f(L).first; }) == 0;
     }
-    if (std::abs(lo) <= b && exact::exact_sign([&](auto L) {
+    if (std::abs(lo) <= b && exact::exact_sign_tie_likely([&](auto L) {
                                const auto q = f(L);
                                return q.first - L(hi) * q.second;
                              }) == 0)
@@ -202,7 +203,7 @@ void build_values(const NoFitPolygon2::Impl& N, std::vector<NfpFlat::PieceDD>& o
   ends.reserve(N.pieces.size());
   for (const NfpPiece& pc : N.pieces) {
     out.push_back(piece_dd(pc.E, &pc.edge));
-    ends.push_back({end_dd(pc.E, pc.lo), end_dd(pc.E, pc.hi)});
+    ends.push_back({end_dd(pc.E, pc.lo, out.back()), end_dd(pc.E, pc.hi, out.back())});
   }
 }
 
