@@ -118,15 +118,19 @@ inline bool surely_outside(const Sum& S, const Vec2& c0, const Vec2& c1, double 
   return false;
 }
 
+/// One coordinate (axis 0: x, 1: y) of the vector from t to the point at parameter p of E, as
+/// num / den (den: param_nd's); t = 0 gives the point's own coordinate.
+template <class L>
+auto point_nd(const Param& p, const Ray& E, const Vec2& t, int axis, L lift) {
+  auto [n, dd] = param_nd(p, E, t, lift);
+  auto o = axis == 0 ? lift(E.o1.x()) + lift(E.o2.x()) - lift(t.x()) : lift(E.o1.y()) + lift(E.o2.y()) - lift(t.y());
+  auto dv = axis == 0 ? ray_dx(E, lift) : ray_dy(E, lift);
+  return std::pair{o * dd + n * dv, dd};
+}
+
 /// One coordinate (axis 0: x, 1: y) of the vector from t to the candidate point, to a few ulps.
 inline double cand_coord(const Cand& c, const Vec2& t, int axis) {
-  const Ray& E = c.E;
-  return exact::accurate_ratio_of([&](auto L) {
-    auto [n, dd] = param_nd(c.at, E, t, L);
-    auto o = axis == 0 ? L(E.o1.x()) + L(E.o2.x()) - L(t.x()) : L(E.o1.y()) + L(E.o2.y()) - L(t.y());
-    auto dv = axis == 0 ? ray_dx(E, L) : ray_dy(E, L);
-    return std::pair{o * dd + n * dv, dd};
-  });
+  return exact::accurate_ratio_of([&](auto L) { return point_nd(c.at, c.E, t, axis, L); });
 }
 
 /// The vector from t to the candidate point, each coordinate to a few ulps.

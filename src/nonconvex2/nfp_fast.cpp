@@ -96,7 +96,7 @@ void NfpFlat::build(const NoFitPolygon2::Impl& N) {
     pinv.push_back(l2 > 0 ? 1 / l2 : 0.0);
     see(pc.a), see(pc.b);
   }
-  build_values(N, pdd);
+  build_values(N, pdd, pend);
   rmax = r;
   usable = !N.pieces.empty() && N.pieces.size() <= kFlatMax && r >= kLow && r <= kHigh;
   overlap_usable = !N.pieces.empty() && !rx0.empty() && r >= kLow && r <= kHigh;

@@ -108,12 +108,22 @@ struct NfpFlat {
   // exactly two doubles or magnitudes are out of the fast value's range (nfp_value.cpp).
   struct PieceDD {
     double ox, oxl, oy, oyl, dx, dxl, dy, dyl, dd, ddl;
+    double ddi;  // RN(1 / dd)
     bool ok = false;
     // The edge line's point c1 + c2 and direction e1 − e0, exact double-doubles (σ_d's crossing).
     double cx, cxl, cy, cyl, ex, exl, ey, eyl;
     bool line_ok = false;
   };
   std::vector<PieceDD> pdd;
+  // Per piece, its lo and hi ends when they are cut points (the crossing of the edge with another
+  // candidate's line: O's reflex vertices; sum vertices are exact in pdd): each coordinate a
+  // double-double (x + xl) within ex of the exact end, ex = 0 when exact (end_dd, nfp_value.cpp);
+  // ok false for sum vertices and where the double-double tier could not bound an end.
+  struct EndDD {
+    double x = 0, xl = 0, ex = 0, y = 0, yl = 0, ey = 0;
+    bool ok = false;
+  };
+  std::vector<std::array<EndDD, 2>> pend;
 
   void build(const NoFitPolygon2::Impl& nfp);
   std::size_t slab_of(double y, std::size_t count) const;
@@ -150,6 +160,9 @@ struct NfpFlat {
   /// of a pair sum: o, or o + D), each RN(exact), from the piece's double-doubles with a static
   /// error bound (nfp_value.cpp); false when not certified. `diag` as for projection_values.
   bool vertex_values(std::uint32_t k, int end, const Vec2& t, double& sigma2, Vec2& translation, ProjectionDiag* diag = nullptr) const;
+  /// The same at piece k's lo (end 0) or hi (end 1) end when it is a cut point, from pend (built
+  /// once with the no-fit polygon); false when not certified or not a tabled end.
+  bool end_values(std::uint32_t k, int end, const Vec2& t, double& sigma2, Vec2& translation, ProjectionDiag* diag = nullptr) const;
   /// RN(λ) of the crossing of the ray t + λ·d with piece k's edge line (line_num / line_den),
   /// from the piece's double-doubles with a static error bound; false when not certified. `diag`
   /// (tests): hi, lo and bound of λ in slot 0.
@@ -159,9 +172,12 @@ struct NfpFlat {
 }  // namespace nonconvex2
 
 namespace nonconvex2 {
-/// NfpFlat::pdd for every piece (nfp_value.cpp), one piece's from its edge ray.
-void build_values(const NoFitPolygon2::Impl& nfp, std::vector<NfpFlat::PieceDD>& out);
+/// NfpFlat::pdd and pend for every piece (nfp_value.cpp); one piece's from its edge ray.
+void build_values(const NoFitPolygon2::Impl& nfp, std::vector<NfpFlat::PieceDD>& out, std::vector<std::array<NfpFlat::EndDD, 2>>& ends);
 NfpFlat::PieceDD piece_dd(const Ray& E, const Line* edge = nullptr);
+/// NfpFlat::pend's entry for the point at parameter p of E, v = piece_dd(E) (ok false for μ = 0, 1,
+/// a projection, or when v is not ok).
+NfpFlat::EndDD end_dd(const Ray& E, const Param& p, const NfpFlat::PieceDD& v);
 /// Whether NfpFlat's values use the FMA instruction (default: when the processor has it); the same
 /// doubles either way. Tests set it to run both builds.
 bool& nfp_values_fma();

@@ -19,7 +19,8 @@
 // Both ways every piece that can win is compared exactly, so the fast and the exact path (the
 // `exact_path` flag, kept for the tests) pick the same piece. The winner's values are RN of the
 // exact reals (geometry/rounded.hpp): σ² and the translation at a projection, λ at a crossing from
-// the piece's double-doubles (nfp_value.cpp), other kinds from the generic double-double tier,
+// the piece's double-doubles (nfp_value.cpp), σ at a sum vertex or at a cut end (a reflex vertex
+// of O) from the per-piece tables built with the no-fit polygon, other kinds from the generic double-double tier,
 // each only when certified inside one rounding cell, else rationals — the exact path uses the
 // rationals alone, so the two agree bit for bit exactly when the certificates are right. Results go through
 // PairDepth2::Impl::contact, so kinds, features and witnesses follow depth2_polygon_polygon.hpp.
@@ -240,14 +241,7 @@ struct MinBest {
 Vec2 rounded_translation(const Cand& c, const Vec2& t, bool exact) {
   const Ray& E = c.E;
   auto coord = [&](int axis) {
-    return exact::rounded_ratio_of(
-        [&](auto L) {
-          auto [n, dd] = nonconvex2::param_nd(c.at, E, t, L);
-          auto o = axis == 0 ? L(E.o1.x()) + L(E.o2.x()) - L(t.x()) : L(E.o1.y()) + L(E.o2.y()) - L(t.y());
-          auto dv = axis == 0 ? nonconvex2::ray_dx(E, L) : nonconvex2::ray_dy(E, L);
-          return std::pair{o * dd + n * dv, dd};
-        },
-        exact);
+    return exact::rounded_ratio_of([&](auto L) { return nonconvex2::point_nd(c.at, E, t, axis, L); }, exact);
   };
   if (c.at.kind == Param::Proj) {
     if (exact_sign([&](auto L) { return nonconvex2::ray_dx(E, L); }) == 0) return Vec2(coord(0), 0);
@@ -348,6 +342,8 @@ bool min_winner(const NoFitPolygon2::Impl& N, const Vec2& t, bool exact_path, Mi
     value = std::sqrt(s2);
   } else if (!exact_path && vertex >= 0 && flat.vertex_values(best.index, vertex, t, s2, translation)) {
     value = std::sqrt(s2);  // at a sum vertex (nfp_value.cpp)
+  } else if (!exact_path && best.at != 0 && vertex < 0 && flat.end_values(best.index, best.at - 1, t, s2, translation)) {
+    value = std::sqrt(s2);  // at a cut end, from the piece's table built with the no-fit polygon
   } else {
     if (!exact_path && flat.usable) value = best.value(N, t, false);
     translation = rounded_translation(best.cand(N), t, exact_path);

@@ -18,11 +18,13 @@
 //   dd sum (two two-sums, exact.hpp's operator+): ≤ 2⁻¹⁰⁰·(|a| + |b|) (exact.hpp's kUnitDD).
 //   c̃ = W̃x·Dy − W̃y·Dx: |c̃ − c| ≤ e_c = (|Dy|·e_Wx + |Dx|·e_Wy)(1 + 2⁻⁵⁰) + 2⁻⁹⁹·(|P1| + |P2|)
 //     (9u² + 2⁻¹⁰⁰ < 2⁻⁹⁹ per product's magnitude); ρ_c = e_c/|c̃| (required ≤ 2⁻⁶⁰).
-//   q̃ = c̃ / |D|² (exact::dd_div, 2⁻⁹⁷ for exact operands): ρ_q = (ρ_c + ρ_D)(1 + 2⁻⁴⁰) + 2⁻⁹⁷.
+//   q̃ = c̃ / |D|² (div below, by the stored 1/|D|²_hi; 2⁻⁹⁷ for exact operands): ρ_q = (ρ_c + ρ_D)(1 + 2⁻⁴⁰) + 2⁻⁹⁷.
 //   σ̃² = c̃·q̃: ρ_σ = (ρ_c + ρ_q)(1 + 2⁻⁴⁰) + 2⁻¹⁰²; translation q̃·(−Dy), q̃·Dx: ρ_q + 2⁻¹⁰²
 //     (a zero component of D gives an exact zero).
 // Axis-parallel edges (Dx or Dy exactly 0): X − t = −W on the other axis, σ² = W² (below). At a
-// sum vertex (μ = 0 or 1): vertex_values (below).
+// sum vertex (μ = 0 or 1): vertex_values; at a cut end (O's reflex vertices, ~3 % of the σ
+// winners on nesting pieces, which took the generic tier before): end_values from the ends'
+// double-doubles tabled once per piece (end_dd; below).
 // Each value is returned only when rounds_to certifies the whole interval inside one rounding
 // cell; magnitudes are kept inside [2⁻⁸⁰⁰, 2⁸⁰⁰] (products' residuals representable) or zero.
 // Cost: ~80 flops per query, no branch on data beyond the range checks.
@@ -83,15 +85,22 @@ template <bool F = false>
   return {r.hi, r.lo};
 }
 
-// exact::dd_div(a, b) with the residual above (the same steps, so the same double-double when every
-// product's residual is exact: |a|, |b.hi| and |q1| below 2⁹⁹⁶, |q1·b.hi| ≈ |a.hi| ≥ 2⁻⁸⁰⁰).
+// a / b in double-double from inv = RN(1 / b.hi) (per piece, built once, or computed off the
+// critical path): two products instead of exact::dd_div's two dependent divisions. Error (a, b
+// exact, normalised double-doubles; u = 2⁻⁵³): q1 = RN(a.hi·inv) = (a/b)(1 + η), |η| ≤ 4.1u (a.hi
+// against a, b.hi against b, inv and the product: u each); r = a − q1·b in double-double is −η·a
+// within 9u²·|a|(1 + 5u) (the product) + 2⁻¹⁰⁰·(|a| + |q1·b|) (the sum), < 140u²·|a|; q2 =
+// RN(r.hi·inv) is r/b within 4.1u, so |q2 − r/b| < 4.1u·(4.1u + 140u²)·|a/b| < 18u²·|a/b|; the
+// fast two-sum of q1 and q2 is exact: within 158u² < 2⁻⁹⁸ of a/b relative, under exact::kDivBound
+// (2⁻⁹⁷) as for dd_div. Products' residuals exact: |a|, |b.hi|, |q1| below 2⁹⁹⁶, |q1·b.hi| ≈ |a.hi|
+// ≥ 2⁻⁸⁰⁰ (the callers' range checks).
 template <bool F = false>
-[[gnu::always_inline]] inline D2 div(D2 a, D2 b) {
-  const double q1 = a.hi / b.hi;
+[[gnu::always_inline]] inline D2 div(D2 a, D2 b, double inv) {
+  const double q1 = a.hi * inv;
   const D2 p = mul<F>({q1, 0}, b);
   const D2 r = add(a, {-p.hi, -p.lo});
   D2 q;
-  quick_two_sum(q1, r.hi / b.hi, q.hi, q.lo);
+  quick_two_sum(q1, r.hi * inv, q.hi, q.lo);
   return q;
 }
 
@@ -148,13 +157,54 @@ NfpFlat::PieceDD piece_dd(const Ray& E, const Line* edge) {
   const D2 dd = add(mul({v.dx, v.dxl}, {v.dx, v.dxl}), mul({v.dy, v.dyl}, {v.dy, v.dyl}));
   v.dd = dd.hi, v.ddl = dd.lo;
   v.ok = dd.hi >= 0x1p-800;
+  v.ddi = 1 / dd.hi;
   return v;
 }
 
-void build_values(const NoFitPolygon2::Impl& N, std::vector<NfpFlat::PieceDD>& out) {
+// A cut end X = o + μ·D, μ = line_num / line_den (edge_cut.hpp's point_nd with t = 0), one
+// coordinate at a time: o1 + o2 exactly (two-sum) when D is exactly 0 on that axis (axis-parallel
+// edges; D from the piece's PieceDD); else exact::dd_ratio's double-double and absolute bound
+// (rounded.hpp; 2⁻⁹⁷ relative), the bound dropped to 0 when X equals the double hi exactly
+// (checked only when |lo| is within the bound, exact-double tier first: integer-like data), and
+// an exact 0 recognised exactly. ok false when a
+// coordinate is out of range or the tier cannot bound it (then the generic tier answers).
+NfpFlat::EndDD end_dd(const Ray& E, const Param& p, const NfpFlat::PieceDD& v) {
+  NfpFlat::EndDD r;
+  if (!v.ok || p.kind == Param::Zero || p.kind == Param::One || p.kind == Param::Proj) return r;
+  const Vec2 origin(0, 0);
+  auto coord = [&](int axis, double& hi, double& lo, double& e) {
+    auto f = [&](auto L) { return point_nd(p, E, origin, axis, L); };
+    e = 0;
+    if ((axis == 0 ? v.dx : v.dy) == 0) {  // v.ok: D exactly (hi, lo), so D = 0 on this axis iff hi = 0
+      two_sum(axis == 0 ? E.o1.x() : E.o1.y(), axis == 0 ? E.o2.x() : E.o2.y(), hi, lo);
+      return in_range(hi) && std::isfinite(lo);
+    }
+    double b;
+    if (!exact::dd_ratio(f, hi, lo, b)) {
+      hi = lo = 0;
+      return exact::exact_sign_tie_likely([&](auto L) { return f(L).first; }) == 0;
+    }
+    if (std::abs(lo) <= b && exact::exact_sign_tie_likely([&](auto L) {
+                               const auto q = f(L);
+                               return q.first - L(hi) * q.second;
+                             }) == 0)
+      lo = 0;
+    else e = b;
+    return in_range(hi) && std::isfinite(e);
+  };
+  r.ok = coord(0, r.x, r.xl, r.ex) && coord(1, r.y, r.yl, r.ey);
+  return r;
+}
+
+void build_values(const NoFitPolygon2::Impl& N, std::vector<NfpFlat::PieceDD>& out, std::vector<std::array<NfpFlat::EndDD, 2>>& ends) {
   out.clear();
   out.reserve(N.pieces.size());
-  for (const NfpPiece& pc : N.pieces) out.push_back(piece_dd(pc.E, &pc.edge));
+  ends.clear();
+  ends.reserve(N.pieces.size());
+  for (const NfpPiece& pc : N.pieces) {
+    out.push_back(piece_dd(pc.E, &pc.edge));
+    ends.push_back({end_dd(pc.E, pc.lo, out.back()), end_dd(pc.E, pc.hi, out.back())});
+  }
 }
 
 template <bool F>
@@ -189,7 +239,7 @@ template <bool F>
   const double ec = (std::abs(v.dy) * ewx + std::abs(v.dx) * ewy) * (1 + 0x1p-50) + 0x1p-99 * (std::abs(p1.hi) + std::abs(p2.hi));
   const double rc = ec / ac * (1 + 0x1p-50);
   if (!(rc <= 0x1p-60)) return false;
-  const D2 q = div<F>(c, {v.dd, v.ddl});
+  const D2 q = div<F>(c, {v.dd, v.ddl}, v.ddi);
   const double rq = (rc + 0x1p-99) * (1 + 0x1p-40) + exact::kDivBound;
   const D2 s2 = mul<F>(c, q);
   const double rs = (rc + rq) * (1 + 0x1p-40) + 0x1p-102;
@@ -211,6 +261,24 @@ template <bool F>
   if (!cx || !cy || !ok_s) return false;
   sigma2 = s2.hi;
   translation = Vec2(tx, ty);
+  return true;
+}
+
+// σ² = |V|² and V from the double-doubles Ṽ with |V − Ṽ| ≤ e per axis (bound: vertex_values_body's
+// comment), each RN(exact) when certified.
+template <bool F>
+[[gnu::always_inline]] inline bool point_values(const D2 V[2], const double e[2], double& sigma2, Vec2& translation, NfpFlat::ProjectionDiag* diag) {
+  const D2 s0 = mul<F>(V[0], V[0]), s1 = mul<F>(V[1], V[1]);
+  const D2 s2 = add(s0, s1);
+  double bs = 0x1p-99 * (std::abs(s0.hi) + std::abs(s1.hi));
+  for (int i = 0; i < 2; ++i) bs += e[i] * (2 * std::abs(V[i].hi) * (1 + 0x1p-50) + e[i]);
+  bs *= 1 + 0x1p-40;
+  if (diag) *diag = {{s2.hi, V[0].hi, V[1].hi}, {s2.lo, V[0].lo, V[1].lo}, {bs, e[0], e[1]}, true};
+  // A zero coordinate (|V| = 0 exactly only when e = 0) is exact; else the interval must round to hi.
+  auto coord_ok = [&](int i) { return (V[i].hi == 0 && V[i].lo == 0 && e[i] == 0) || exact::rounds_to(V[i].hi, V[i].lo, e[i]); };
+  if (!coord_ok(0) || !coord_ok(1) || !exact::rounds_to(s2.hi, s2.lo, bs)) return false;
+  sigma2 = s2.hi;
+  translation = Vec2(V[0].hi + 0.0, V[1].hi + 0.0);  // + 0: an exact zero is +0, as RN(0) is
   return true;
 }
 
@@ -239,18 +307,26 @@ template <bool F>
       if (!in_range(V[i].hi)) return false;
     }
   }
-  const D2 s0 = mul<F>(V[0], V[0]), s1 = mul<F>(V[1], V[1]);
-  const D2 s2 = add(s0, s1);
-  double bs = 0x1p-99 * (std::abs(s0.hi) + std::abs(s1.hi));
-  for (int i = 0; i < 2; ++i) bs += e[i] * (2 * std::abs(V[i].hi) * (1 + 0x1p-50) + e[i]);
-  bs *= 1 + 0x1p-40;
-  if (diag) *diag = {{s2.hi, V[0].hi, V[1].hi}, {s2.lo, V[0].lo, V[1].lo}, {bs, e[0], e[1]}, true};
-  // A zero coordinate (|V| = 0 exactly only when e = 0) is exact; else the interval must round to hi.
-  auto coord_ok = [&](int i) { return (V[i].hi == 0 && V[i].lo == 0 && e[i] == 0) || exact::rounds_to(V[i].hi, V[i].lo, e[i]); };
-  if (!coord_ok(0) || !coord_ok(1) || !exact::rounds_to(s2.hi, s2.lo, bs)) return false;
-  sigma2 = s2.hi;
-  translation = Vec2(V[0].hi + 0.0, V[1].hi + 0.0);  // + 0: an exact zero is +0, as RN(0) is
-  return true;
+  return point_values<F>(V, e, sigma2, translation, diag);
+}
+
+// At a cut end (pend): X̃ = x + xl within e_X of X per coordinate, V = X − t = −W for W = t − X̃
+// from diff, so e_V = (e_W + e_X)(1 + 2⁻⁵⁰) (the sum's rounding); then as at a vertex.
+template <bool F>
+[[gnu::always_inline]] inline bool end_values_body(const NfpFlat& self, std::uint32_t k, int end, const Vec2& t, double& sigma2, Vec2& translation, NfpFlat::ProjectionDiag* diag) {
+  const NfpFlat::EndDD& x = self.pend[k][end];
+  if (!x.ok || !in_range(t.x()) || !in_range(t.y())) return false;
+  D2 w[2];
+  double e[2];
+  diff(t.x(), x.x, x.xl, w[0], e[0]);
+  diff(t.y(), x.y, x.yl, w[1], e[1]);
+  D2 V[2];
+  for (int i = 0; i < 2; ++i) {
+    if (!in_range(w[i].hi)) return false;
+    V[i] = {-w[i].hi, -w[i].lo};
+    e[i] = (e[i] + (i == 0 ? x.ex : x.ey)) * (1 + 0x1p-50);
+  }
+  return point_values<F>(V, e, sigma2, translation, diag);
 }
 
 template <bool F>
@@ -274,7 +350,7 @@ template <bool F>
   const double ed = 0x1p-99 * (std::abs(m1.hi) + std::abs(m2.hi));
   const double rn = en / an * (1 + 0x1p-50), rd = ed / ad * (1 + 0x1p-50);
   if (!(rn <= 0x1p-60 && rd <= 0x1p-60)) return false;
-  const D2 q = div<F>(num, den);
+  const D2 q = div<F>(num, den, 1 / den.hi);
   const double b = ((rn + rd) * (1 + 0x1p-40) + exact::kDivBound) * std::abs(q.hi) * (1 + 0x1p-40);
   if (diag) *diag = {{q.hi, 0, 0}, {q.lo, 0, 0}, {b, 0, 0}, true};
   if (!exact::rounds_to(q.hi, q.lo, b)) return false;
@@ -290,6 +366,9 @@ namespace {
 }
 [[gnu::target("fma")]] bool vertex_fma(const NfpFlat& f, std::uint32_t k, int end, const Vec2& t, double& s2, Vec2& tr, NfpFlat::ProjectionDiag* diag) {
   return vertex_values_body<true>(f, k, end, t, s2, tr, diag);
+}
+[[gnu::target("fma")]] bool end_fma(const NfpFlat& f, std::uint32_t k, int end, const Vec2& t, double& s2, Vec2& tr, NfpFlat::ProjectionDiag* diag) {
+  return end_values_body<true>(f, k, end, t, s2, tr, diag);
 }
 [[gnu::target("fma")]] bool crossing_fma(const NfpFlat& f, std::uint32_t k, const Vec2& t, const Vec2& d, double& lambda, NfpFlat::ProjectionDiag* diag) {
   return crossing_value_body<true>(f, k, t, d, lambda, diag);
@@ -307,6 +386,10 @@ bool NfpFlat::projection_values(std::uint32_t k, const Vec2& t, double& sigma2, 
 
 bool NfpFlat::vertex_values(std::uint32_t k, int end, const Vec2& t, double& sigma2, Vec2& translation, ProjectionDiag* diag) const {
   return nfp_values_fma() ? vertex_fma(*this, k, end, t, sigma2, translation, diag) : vertex_values_body<false>(*this, k, end, t, sigma2, translation, diag);
+}
+
+bool NfpFlat::end_values(std::uint32_t k, int end, const Vec2& t, double& sigma2, Vec2& translation, ProjectionDiag* diag) const {
+  return nfp_values_fma() ? end_fma(*this, k, end, t, sigma2, translation, diag) : end_values_body<false>(*this, k, end, t, sigma2, translation, diag);
 }
 
 bool NfpFlat::crossing_value(std::uint32_t k, const Vec2& t, const Vec2& d, double& lambda, ProjectionDiag* diag) const {

@@ -15,7 +15,8 @@
 // winner's values (RN of the exact reals, geometry/rounded.hpp) with rationals alone, so equal
 // bits also check the fast double-double values; ProjectionValuesAgainstRationals checks those
 // directly, and that every error bound holds (rationals) and is tight enough that shrinking it
-// by 2¹² fails; VertexValuesAgainstRationals the same for σ at a sum vertex;
+// by 2¹² fails; VertexValuesAgainstRationals the same for σ at a sum vertex, EndValuesAgainstRationals
+// for σ at a cut end (the per-piece table built with the no-fit polygon);
 // NearestCandidateFlagsAgainstExact checks σ's candidate set and its certified flags (projection
 // inside / before lo / beyond hi) against exact arithmetic, and the flags' error bound against
 // rationals (removing it, or shrinking it by 2¹³, fails). Pinned seeds.
@@ -657,6 +658,98 @@ void vertex_values_against_rationals() {
   EXPECT_GT(worst, 0x1p-12);
 }
 
+// nfp_value.cpp's table of cut ends (NfpFlat::pend: O's reflex vertices, the crossing of a piece's
+// edge with another candidate's line) and σ² and translation there against exact rationals: every
+// tabled coordinate lies within its bound of the exact end (a zero bound: exactly equal), every
+// certified value is RN(exact) bit for bit, every error bound holds, and the σ² bound is not loose
+// by more than 2¹² (shrinking it that much, or dropping it, fails). Inputs: every cut end of real
+// no-fit polygons (albano, and shirts / trousers with Q turned by 30°: ends not representable),
+// placements at random distances, ulps away and on an axis through the end (a zero coordinate).
+void end_values_against_rationals() {
+  using pendepth::exact::LiftQ;
+  using namespace pendepth::nonconvex2;
+  std::mt19937_64 rng(19009);
+  std::size_t ends = 0, tabled = 0, exact_coords = 0, tried = 0, certified = 0;
+  double worst = 0;
+  std::uniform_real_distribution<double> u(-1, 1);
+  auto check_nfp = [&](const NoFitPolygon2& nfp, const std::string& what) {
+    const auto& N = nfp_impl(nfp);
+    ASSERT_EQ(N.flat.pend.size(), N.pieces.size());
+    for (std::uint32_t k = 0; k < N.pieces.size(); ++k) {
+      const NfpPiece& pc = N.pieces[k];
+      for (int end = 0; end < 2; ++end) {
+        const Param& p = end == 0 ? pc.lo : pc.hi;
+        const NfpFlat::EndDD& x = N.flat.pend[k][end];
+        if (p.kind != Param::Cut) {
+          ASSERT_FALSE(x.ok) << what << " piece " << k;
+          continue;
+        }
+        ++ends;
+        if (!x.ok) continue;
+        ++tabled;
+        mpq_class X[2];
+        for (int axis = 0; axis < 2; ++axis) {
+          const auto nd = point_nd(p, pc.E, Vec2(0, 0), axis, LiftQ{});
+          X[axis] = nd.first.v / nd.second.v;
+          const double hi = axis == 0 ? x.x : x.y, lo = axis == 0 ? x.xl : x.yl, e = axis == 0 ? x.ex : x.ey;
+          ASSERT_LE(abs(X[axis] - mpq_class(hi) - mpq_class(lo)), mpq_class(e)) << what << " piece " << k << " end " << end;
+          exact_coords += e == 0;
+        }
+        // `far`: t at a query's usual distance; within ~2⁻⁴⁰·|X| of the end the table's bound
+        // (2⁻⁹⁷·|X|) cannot certify X − t's rounding and the generic tier answers.
+        auto check = [&](const Vec2& t, bool far) {
+          const mpq_class V[2] = {X[0] - mpq_class(t.x()), X[1] - mpq_class(t.y())};
+          const mpq_class s2x = V[0] * V[0] + V[1] * V[1];
+          if (sgn(s2x) == 0) return;
+          tried += far;
+          double s2;
+          Vec2 tr;
+          NfpFlat::ProjectionDiag diag;
+          const bool ok = N.flat.end_values(k, end, t, s2, tr, &diag);
+          if (diag.set) {
+            const mpq_class ex[3] = {s2x, V[0], V[1]};
+            for (int i = 0; i < 3; ++i) {
+              const mpq_class err = abs(ex[i] - mpq_class(diag.hi[i]) - mpq_class(diag.lo[i]));
+              ASSERT_LE(err, mpq_class(diag.bound[i])) << what << " value " << i << " t = " << t.transpose();
+              if (i == 0) worst = std::max(worst, mpq_class(err / mpq_class(diag.bound[0])).get_d());
+            }
+          }
+          if (!ok) return;
+          certified += far;
+          ASSERT_TRUE(same(s2, pendepth::exact::round_nearest(s2x))) << what << " σ² at t = " << t.transpose();
+          ASSERT_TRUE(same(tr.x(), pendepth::exact::round_nearest(V[0]))) << what << " x at t = " << t.transpose();
+          ASSERT_TRUE(same(tr.y(), pendepth::exact::round_nearest(V[1]))) << what << " y at t = " << t.transpose();
+        };
+        const Vec2 a = end == 0 ? pc.a : pc.b;
+        for (int r = 0; r < 4; ++r) check(a + Vec2(u(rng), u(rng)) * 30, true);
+        check(a + Vec2(u(rng), u(rng)) * 0x1p-30, false);
+        check(ulp_step(a, 1, -2), false);
+        check(Vec2(a.x(), a.y() + 7 * u(rng)), false);  // on an axis through the rounded end
+        check(Vec2(a.x() + 7 * u(rng), a.y()), false);
+      }
+    }
+  };
+  const auto albano = instance("albano.json");
+  for (std::size_t i = 0; i < albano.size(); i += 2)
+    for (std::size_t j = 1; j < albano.size(); j += 2) check_nfp(NoFitPolygon2(albano[i], albano[j]), "albano");
+  for (const std::string file : {"shirts", "trousers"}) {
+    const auto pieces = instance(file + ".json");
+    const double a = 30 * M_PI / 180, c = std::cos(a), s = std::sin(a);
+    for (int r = 0; r < 4; ++r) {
+      const std::size_t i = rng() % pieces.size(), j = rng() % pieces.size();
+      const Polygon Q = mapped(pieces[j], [&](const Vec2& p) { return Vec2(c * p.x() - s * p.y(), s * p.x() + c * p.y()); });
+      check_nfp(NoFitPolygon2(pieces[i], Q), file + " rotated");
+      check_nfp(NoFitPolygon2(pieces[i], pieces[j]), file);
+    }
+  }
+  std::cout << "[end values] " << ends << " cut ends, " << tabled << " tabled (" << exact_coords << " coordinates exact); " << tried
+            << " placements at query distances, " << certified << " certified; worst error / bound " << worst << "\n";
+  EXPECT_GT(tabled, ends * 9 / 10);
+  EXPECT_GT(exact_coords, 0u);
+  EXPECT_GT(certified, tried * 9 / 10);
+  EXPECT_GT(worst, 0x1p-12);
+}
+
 // The value functions have two builds (nfp_value.cpp): with the FMA instruction where the
 // processor has it, else the residuals by splitting; both must give the same doubles. Each value
 // test runs in both, and the two builds' outputs (values, certificates, the diagnostics' double-
@@ -681,6 +774,13 @@ TEST(NfpFastPath, VertexValuesAgainstRationals) {
   }
 }
 
+TEST(NfpFastPath, EndValuesAgainstRationals) {
+  for (bool fma : {true, false}) {
+    const ValuesBuild b(fma);
+    end_values_against_rationals();
+  }
+}
+
 TEST(NfpFastPath, FmaAndPortableValuesAgree) {
   // (Without FMA on this processor both runs take the portable build: the comparison is then trivial.)
   using pendepth::nonconvex2::NfpFlat;
@@ -702,22 +802,24 @@ TEST(NfpFastPath, FmaAndPortableValuesAgree) {
         const Vec2 t = pc.a + f(rng) * (pc.b - pc.a) + Vec2(f(rng) - 0.5, f(rng) - 0.5) * 50;
         const double an = a(rng);
         const Vec2 d = pendepth::nonconvex2::check_and_scale(t, Vec2(std::cos(an), std::sin(an)));
-        double v[2][4] = {};
+        double v[2][6] = {};
         Vec2 tr[2][2];
-        bool ok[2][4];
-        NfpFlat::ProjectionDiag dg[2][4];
+        bool ok[2][6];
+        NfpFlat::ProjectionDiag dg[2][6] = {};
         for (int m = 0; m < 2; ++m) {
           const ValuesBuild b(m == 0);
           ok[m][0] = F.projection_values(k, t, v[m][0], tr[m][0], &dg[m][0]);
           ok[m][1] = F.vertex_values(k, 0, t, v[m][1], tr[m][1], &dg[m][1]);
           ok[m][2] = F.vertex_values(k, 1, t, v[m][2], tr[m][1], &dg[m][2]);
+          ok[m][4] = F.end_values(k, 0, t, v[m][4], tr[m][1], &dg[m][4]);
+          ok[m][5] = F.end_values(k, 1, t, v[m][5], tr[m][1], &dg[m][5]);
           ok[m][3] = F.crossing_value(k, t, d, v[m][3], &dg[m][3]);
         }
-        for (int q = 0; q < 4; ++q) {
+        for (int q = 0; q < 6; ++q) {
           ASSERT_EQ(ok[0][q], ok[1][q]) << i << " " << j << " piece " << k << " value " << q;
           ASSERT_TRUE(same_diag(dg[0][q], dg[1][q])) << i << " " << j << " piece " << k << " value " << q;
           if (ok[0][q]) ASSERT_TRUE(same(v[0][q], v[1][q])) << i << " " << j << " piece " << k << " value " << q;
-          ++compared, certified += ok[0][q];
+          if (q < 4 || F.pend[k][q - 4].ok) ++compared, certified += ok[0][q];  // cut ends: tabled ones only
         }
         ASSERT_TRUE(same(tr[0][0], tr[1][0]) && same(tr[0][1], tr[1][1])) << i << " " << j << " piece " << k;
       }
