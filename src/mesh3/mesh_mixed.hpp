@@ -94,6 +94,22 @@ Depth3 segment_along(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_
 bool flat_overlapping(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q);
 Depth3 flat_along(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3& d, bool separation);
 
+/// The other shape S in the mesh's frame, where the point, segment and flat polygon paths decide
+/// on the mesh's own triangles: a point y of S's engine frame is placed at R y + tq − tp (the
+/// relative pose in doubles; each path evaluates that sum exactly or in its own certified way), and
+/// a ray along the world direction d moves S relatively along d' = Rmᵀ d, negated when the mesh is
+/// the moving shape Q.
+struct MeshFrame {
+  Eigen::Matrix3d Rm;  ///< the mesh's rotation and translation (world)
+  Vec3 tm;
+  Eigen::Matrix3d R;   ///< Rmᵀ R_S
+  Vec3 tq, tp;         ///< Rmᵀ t_S, Rmᵀ tm
+  Vec3 d = Vec3::Zero();  ///< d' (zero when no direction is given)
+};
+/// The frame of the pair at these poses; d' too when `d` is given (InvalidInput when it
+/// underflows to zero there). O(1).
+MeshFrame mesh_frame(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3* d);
+
 /// Is the triangle of zero area (its three vertices collinear, exactly)?
 bool point_zero_area(const std::array<Vec3, 3>& T);
 

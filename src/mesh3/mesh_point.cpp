@@ -56,11 +56,8 @@ using lifted::lv;
 using lifted::sub;
 
 // The point in the mesh's frame, exactly x = R p + tq − tp, and the ray's direction there.
-struct Frame {
-  Eigen::Matrix3d Rm;  // the mesh's rotation
-  Vec3 tm;             // the mesh's translation
-  Eigen::Matrix3d R;
-  Vec3 p, tq, tp, d;
+struct Frame : MeshFrame {
+  Vec3 p;
   Vec3 x;  // rounded
   template <class L>
   auto placed(L lift) const {
@@ -80,21 +77,8 @@ Pose3 moved(const Pose3& pose_q, const Vec3& v) {
 }
 
 Frame frame(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3* d) {
-  const Pose3& pm = m.mesh_is_p ? pose_p : pose_q;
-  const Pose3& po = m.mesh_is_p ? pose_q : pose_p;
-  Frame f;
-  f.Rm = pm.matrix();
-  f.tm = pm.translation;
-  f.R = f.Rm.transpose() * po.matrix();
-  f.p = m.pt.v[0];
-  f.tq = f.Rm.transpose() * po.translation;
-  f.tp = f.Rm.transpose() * pm.translation;
+  Frame f{mesh_frame(m, pose_p, pose_q, d), m.pt.v[0], {}};
   f.x = f.R * f.p + (f.tq - f.tp);
-  if (d) {
-    f.d = f.Rm.transpose() * *d;
-    if (!m.mesh_is_p) f.d = -f.d;  // the mesh moves along d: the point, relatively, along −d
-    if (f.d == Vec3::Zero()) throw InvalidInput("direction: underflows to zero in the mesh's frame");
-  }
   return f;
 }
 

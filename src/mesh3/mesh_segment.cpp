@@ -61,27 +61,14 @@ namespace {
 
 using namespace exact3;
 
-struct Frame {
-  Eigen::Matrix3d Rm;  // the mesh's rotation and translation (world)
-  Vec3 tm;
-  Vec3 d;              // the ray's direction in the mesh's frame (doubles, exact as given)
-  P3 A, B;             // the exact placed end points
+// The segment in the mesh's frame.
+struct Frame : MeshFrame {
+  P3 A, B;  // the exact placed end points
 };
 
 Frame frame(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3* d) {
-  const Pose3& pm = m.mesh_is_p ? pose_p : pose_q;
-  const Pose3& po = m.mesh_is_p ? pose_q : pose_p;
-  Frame f;
-  f.Rm = pm.matrix();
-  f.tm = pm.translation;
-  const Eigen::Matrix3d R = f.Rm.transpose() * po.matrix();
-  const Vec3 tq = f.Rm.transpose() * po.translation, tp = f.Rm.transpose() * pm.translation;
-  f.A = place(R, m.seg[0], tq, tp), f.B = place(R, m.seg[1], tq, tp);
-  if (d) {
-    f.d = f.Rm.transpose() * *d;
-    if (!m.mesh_is_p) f.d = -f.d;  // the mesh moves along d: the segment, relatively, along −d
-    if (f.d == Vec3::Zero()) throw InvalidInput("direction: underflows to zero in the mesh's frame");
-  }
+  Frame f{mesh_frame(m, pose_p, pose_q, d), {}, {}};
+  f.A = place(f.R, m.seg[0], f.tq, f.tp), f.B = place(f.R, m.seg[1], f.tq, f.tp);
   return f;
 }
 
