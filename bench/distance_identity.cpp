@@ -20,6 +20,8 @@
 #include <pendepth/io.hpp>
 #include <pendepth/polytope.hpp>
 
+#include "hulls3.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -33,6 +35,11 @@ using pendepth::ConvexPolytope;
 using pendepth::Distance3;
 using pendepth::Pose3;
 using pendepth::Vec3;
+using pendepth::bench::centroid;
+using pendepth::bench::radius;
+using pendepth::bench::random_in_ball;
+using pendepth::bench::random_rotation;
+using pendepth::bench::shared_hulls;
 
 namespace {
 
@@ -46,48 +53,9 @@ Distance3 dump(const ConvexPolytope& P, const Pose3& pp, const ConvexPolytope& Q
   return d;
 }
 
-// As bench_convex3.cpp (same draws, so the bench set is the benchmark's).
-Eigen::Quaterniond random_rotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  Eigen::Quaterniond q(g(rng), g(rng), g(rng), g(rng));
-  return q.normalized();
-}
-Vec3 random_in_ball(std::mt19937_64& rng, double r) {
-  std::uniform_real_distribution<double> U(-1, 1);
-  for (;;) {
-    Vec3 v(U(rng), U(rng), U(rng));
-    if (v.squaredNorm() <= 1) return r * v;
-  }
-}
-
-Vec3 centroid(const ConvexPolytope& S) {
-  Vec3 x = Vec3::Zero();
-  for (const Vec3& v : S.vertices()) x += v / double(S.size());
-  return x;
-}
-double radius(const ConvexPolytope& S) {
-  double r = 0;
-  const Vec3 cs = centroid(S);
-  for (const Vec3& v : S.vertices()) r = std::max(r, (v - cs).norm());
-  return r;
-}
-
-const std::vector<ConvexPolytope>& real_hulls() {
-  static const std::vector<ConvexPolytope> H = [] {
-    std::vector<std::string> files;
-    for (const auto& e : std::filesystem::directory_iterator(std::string(PENDEPTH_SHARED_DATA) + "/hulls"))
-      if (e.path().extension() == ".obj") files.push_back(e.path().string());
-    std::sort(files.begin(), files.end());
-    std::vector<ConvexPolytope> h;
-    for (const auto& f : files) h.push_back(ConvexPolytope::hull(pendepth::read_obj_vertices(f), f));
-    return h;
-  }();
-  return H;
-}
-
 // bench_convex3's sdist::dist_case, the cast draws included (they move the generator).
 void bench() {
-  const auto& H = real_hulls();
+  static const std::vector<ConvexPolytope> H = shared_hulls();
   std::mt19937_64 rng(0xd157);
   std::uniform_real_distribution<double> U(0.6, 1.6);
   const std::size_t want = 16 * H.size();
@@ -115,7 +83,7 @@ Eigen::Quaterniond quarter_turn(std::mt19937_64& rng) {
 }
 
 void hulls(unsigned seed) {
-  const auto& H = real_hulls();
+  static const std::vector<ConvexPolytope> H = shared_hulls();
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> U(0.3, 1.6);
   for (int k = 0; k < 3000; ++k) {

@@ -16,6 +16,8 @@
 #include <pendepth/io.hpp>
 #include <pendepth/polytope.hpp>
 
+#include "hulls3.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -29,6 +31,9 @@ using pendepth::ConvexPolytope;
 using pendepth::Depth3;
 using pendepth::Pose3;
 using pendepth::Vec3;
+using pendepth::bench::centroid;
+using pendepth::bench::random_rotation;
+using pendepth::bench::shared_hulls;
 
 namespace {
 
@@ -41,31 +46,8 @@ void dump(const ConvexPolytope& P, const Pose3& pp, const ConvexPolytope& Q, con
               d.feature_q.index, d.piece_p, d.piece_q, std::size_t(d.candidates));
 }
 
-Eigen::Quaterniond random_rotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> N;
-  Eigen::Quaterniond q(N(rng), N(rng), N(rng), N(rng));
-  q.normalize();
-  return q;
-}
-
-Vec3 centroid(const ConvexPolytope& S) {
-  Vec3 x = Vec3::Zero();
-  for (const Vec3& v : S.vertices()) x += v / double(S.size());
-  return x;
-}
-
-std::vector<ConvexPolytope> real_hulls() {
-  std::vector<std::string> files;
-  for (const auto& e : std::filesystem::directory_iterator(std::string(PENDEPTH_SHARED_DATA) + "/hulls"))
-    if (e.path().extension() == ".obj") files.push_back(e.path().string());
-  std::sort(files.begin(), files.end());
-  std::vector<ConvexPolytope> H;
-  for (const auto& f : files) H.push_back(ConvexPolytope::hull(pendepth::read_obj_vertices(f), f));
-  return H;
-}
-
 void hulls(unsigned seed) {
-  static const std::vector<ConvexPolytope> H = real_hulls();
+  static const std::vector<ConvexPolytope> H = shared_hulls();
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> U(-0.3, 0.3);
   for (int k = 0; k < 3000; ++k) {
@@ -145,7 +127,7 @@ void prisms() {
 }
 
 void slivers() {
-  static const std::vector<ConvexPolytope> H = real_hulls();
+  static const std::vector<ConvexPolytope> H = shared_hulls();
   std::mt19937_64 rng(13);
   std::uniform_real_distribution<double> U(-1, 1);
   std::vector<ConvexPolytope> F;
