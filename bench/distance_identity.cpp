@@ -35,7 +35,10 @@ using pendepth::ConvexPolytope;
 using pendepth::Distance3;
 using pendepth::Pose3;
 using pendepth::Vec3;
+using pendepth::bench::bipyramid;
+using pendepth::bench::box;
 using pendepth::bench::centroid;
+using pendepth::bench::prism;
 using pendepth::bench::radius;
 using pendepth::bench::random_in_ball;
 using pendepth::bench::random_rotation;
@@ -100,12 +103,6 @@ void hulls(unsigned seed) {
   }
 }
 
-ConvexPolytope box(double x, double y, double z) {
-  std::vector<Vec3> v;
-  for (int s = 0; s < 8; ++s) v.emplace_back(s & 1 ? x : -x, s & 2 ? y : -y, s & 4 ? z : -z);
-  return ConvexPolytope::hull(v);
-}
-
 std::vector<Eigen::Quaterniond> rotations(std::mt19937_64& rng) {
   std::vector<Eigen::Quaterniond> r;
   const double h = std::sqrt(0.5);
@@ -128,24 +125,6 @@ void boxes() {
           for (int y = -2; y <= 4; y += 3)
             for (int z : {-3, 0, 2, 5})
               dump(S[a], Pose3(), S[b], Pose3(q, Vec3(x, 0.5 * y, 0.5 * z)));
-}
-
-ConvexPolytope prism(int n, double r, double h) {
-  std::vector<Vec3> v;
-  for (int k = 0; k < n; ++k) {
-    const double t = 2 * M_PI * k / n;
-    v.emplace_back(std::round(r * std::cos(t)), std::round(r * std::sin(t)), -h);
-    v.emplace_back(std::round(r * std::cos(t)), std::round(r * std::sin(t)), h);
-  }
-  return ConvexPolytope::hull(v);
-}
-ConvexPolytope bipyramid(int n, double r, double h) {
-  std::vector<Vec3> v = {Vec3(0, 0, -h), Vec3(0, 0, h)};
-  for (int k = 0; k < n; ++k) {
-    const double t = 2 * M_PI * k / n;
-    v.emplace_back(std::round(r * std::cos(t)), std::round(r * std::sin(t)), 0);
-  }
-  return ConvexPolytope::hull(v);
 }
 
 void prisms() {

@@ -1,6 +1,7 @@
 // Shared by the 3D programs on the real game hulls (bench_convex3.cpp and the output identity
 // dumps sigma_identity.cpp, distance_identity.cpp, which replay its draws): the hulls, the draws
-// of random poses, a hull's centroid and radius. One definition, so the identity dumps' inputs
+// of random poses, a hull's centroid and radius, and the integer test solids (boxes, prisms,
+// bipyramids) of the identity dumps. One definition, so the identity dumps' inputs
 // stay the benchmark's bit for bit.
 #pragma once
 
@@ -9,6 +10,7 @@
 #include "convex3/shapes3.hpp"  // tests/: the shared hull files
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -47,6 +49,34 @@ inline double radius(const ConvexPolytope& S) {
   const Vec3 cs = centroid(S);
   for (const Vec3& v : S.vertices()) r = std::max(r, (v - cs).norm());
   return r;
+}
+
+/// The box [−x, x] × [−y, y] × [−z, z].
+inline ConvexPolytope box(double x, double y, double z) {
+  std::vector<Vec3> v;
+  for (int s = 0; s < 8; ++s) v.emplace_back(s & 1 ? x : -x, s & 2 ? y : -y, s & 4 ? z : -z);
+  return ConvexPolytope::hull(v);
+}
+
+/// A prism over a regular n-gon of radius r with vertices rounded to integers, z ∈ [−h, h].
+inline ConvexPolytope prism(int n, double r, double h) {
+  std::vector<Vec3> v;
+  for (int k = 0; k < n; ++k) {
+    const double t = 2 * M_PI * k / n;
+    v.emplace_back(std::round(r * std::cos(t)), std::round(r * std::sin(t)), -h);
+    v.emplace_back(std::round(r * std::cos(t)), std::round(r * std::sin(t)), h);
+  }
+  return ConvexPolytope::hull(v);
+}
+
+/// A bipyramid over the same rounded n-gon, apexes at z = ±h.
+inline ConvexPolytope bipyramid(int n, double r, double h) {
+  std::vector<Vec3> v = {Vec3(0, 0, -h), Vec3(0, 0, h)};
+  for (int k = 0; k < n; ++k) {
+    const double t = 2 * M_PI * k / n;
+    v.emplace_back(std::round(r * std::cos(t)), std::round(r * std::sin(t)), 0);
+  }
+  return ConvexPolytope::hull(v);
 }
 
 }  // namespace pendepth::bench

@@ -31,7 +31,10 @@ using pendepth::ConvexPolytope;
 using pendepth::Depth3;
 using pendepth::Pose3;
 using pendepth::Vec3;
+using pendepth::bench::bipyramid;
+using pendepth::bench::box;
 using pendepth::bench::centroid;
+using pendepth::bench::prism;
 using pendepth::bench::random_rotation;
 using pendepth::bench::shared_hulls;
 
@@ -60,12 +63,6 @@ void hulls(unsigned seed) {
   }
 }
 
-ConvexPolytope box(double x, double y, double z) {
-  std::vector<Vec3> v;
-  for (int s = 0; s < 8; ++s) v.emplace_back(s & 1 ? x : -x, s & 2 ? y : -y, s & 4 ? z : -z);
-  return ConvexPolytope::hull(v);
-}
-
 // Quarter turns about the axes (exact rotation matrices) and a few generic rotations.
 std::vector<Eigen::Quaterniond> rotations(std::mt19937_64& rng) {
   std::vector<Eigen::Quaterniond> r;
@@ -91,24 +88,6 @@ void boxes() {
           for (int y = -2; y <= 2; ++y)
             for (int z : {-2, 0, 1})
               dump(S[a], Pose3(), S[b], Pose3(q, Vec3(x, 0.5 * y, 0.5 * z)));
-}
-
-ConvexPolytope prism(int n, double r, double h) {
-  std::vector<Vec3> v;
-  for (int k = 0; k < n; ++k) {
-    const double t = 2 * M_PI * k / n;
-    v.emplace_back(std::round(r * std::cos(t)), std::round(r * std::sin(t)), -h);
-    v.emplace_back(std::round(r * std::cos(t)), std::round(r * std::sin(t)), h);
-  }
-  return ConvexPolytope::hull(v);
-}
-ConvexPolytope bipyramid(int n, double r, double h) {
-  std::vector<Vec3> v = {Vec3(0, 0, -h), Vec3(0, 0, h)};
-  for (int k = 0; k < n; ++k) {
-    const double t = 2 * M_PI * k / n;
-    v.emplace_back(std::round(r * std::cos(t)), std::round(r * std::sin(t)), 0);
-  }
-  return ConvexPolytope::hull(v);
 }
 
 void prisms() {
