@@ -31,12 +31,7 @@ using pendepth::ConvexPolytope;
 using pendepth::Depth3;
 using pendepth::Pose3;
 using pendepth::Vec3;
-using pendepth::bench::bipyramid;
-using pendepth::bench::box;
-using pendepth::bench::centroid;
-using pendepth::bench::prism;
-using pendepth::bench::random_rotation;
-using pendepth::bench::shared_hulls;
+using namespace pendepth::bench;  // hulls3.hpp: the shared hulls, draws and solids
 
 namespace {
 
