@@ -157,14 +157,7 @@ std::vector<Cand> candidates(const MixedPair& m, const Frame& f) {
   const std::vector<P3>& F = f.F;
   const std::size_t k = F.size();
   std::vector<Cand> out;
-  auto shoot = [&](const P3& from, const P3& p, const P3& q, const P3& r) {
-    if (CGAL::collinear(p, q, r)) return;
-    const K::Triangle_3 T(p, q, r);
-    const K::Ray_3 ray(from, dv);
-    if (!CGAL::do_intersect(ray, T)) return;
-    const Vec3 n = (approx(q) - approx(p)).cross(approx(r) - approx(p));
-    points_of(CGAL::intersection(ray, T), [&](const P3& X) { out.push_back({((X - from) * dv) / dd, n}); });
-  };
+  auto shoot = [&](const P3& from, const P3& p, const P3& q, const P3& r) { ray_crossings(from, dv, dd, p, q, r, out); };
   auto minus = [&](const P3& p, const P3& x) { return O + (p - x); };  // the point p − x
   Vec3 c;
   double h;

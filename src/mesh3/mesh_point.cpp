@@ -38,6 +38,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -187,12 +188,7 @@ bool on_surface(const MixedPair& m, const Frame& f) {
 // fractions are distinct directions, ~9·10⁷ of them: more than 2·(E + T) + 1 below ~1.8·10⁷
 // triangles (a mesh beyond that could, in theory, reach the logic_error below).
 bool parity_inside(const MixedPair& m, const Frame& f) {
-  for (long qi = 8192; qi >= 4096; --qi)
-  for (long k = 0; k < 23000; ++k) {
-    const long pi = 5217 + 2897 * k;
-    if (std::gcd(pi, qi) != 1) continue;
-    const double p = static_cast<double>(pi), q = static_cast<double>(qi);
-    const Vec3 d(q * q, p * q, p * p);
+  return moment_ray_parity("mesh point", [&](const Vec3& d) -> std::optional<bool> {
     bool inside = false, degenerate = false;
     ray_candidates(m, f, d, [&](std::size_t t) {
       if (degenerate || m.tri_zero[t]) return;
@@ -220,9 +216,8 @@ bool parity_inside(const MixedPair& m, const Frame& f) {
       }
       inside = !inside;
     });
-    if (!degenerate) return inside;
-  }
-  throw std::logic_error("mesh point: no non-degenerate parity ray among ~9e7 directions (more than 2(E+T)+1)");
+    return degenerate ? std::nullopt : std::optional<bool>(inside);
+  });
 }
 
 // The outward unit normal of triangle t in the world frame.
