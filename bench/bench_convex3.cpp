@@ -54,6 +54,7 @@
 #include "convex3/distance_compare.hpp"
 #include "convex3/minimum_expand.hpp"
 #include "convex3/minkowski_facets.hpp"
+#include "hulls3.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -122,19 +123,11 @@ std::vector<Vec3> ellipsoid_points(std::size_t n, std::mt19937_64& rng) {
   return p;
 }
 
-Eigen::Quaterniond random_rotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  Eigen::Quaterniond q(g(rng), g(rng), g(rng), g(rng));
-  return q.normalized();
-}
-
-Vec3 random_in_ball(std::mt19937_64& rng, double r) {
-  std::uniform_real_distribution<double> U(-1, 1);
-  for (;;) {
-    Vec3 v(U(rng), U(rng), U(rng));
-    if (v.squaredNorm() <= 1) return r * v;
-  }
-}
+using pendepth::bench::centroid;
+using pendepth::bench::radius;
+using pendepth::bench::random_in_ball;
+using pendepth::bench::random_rotation;
+using pendepth::bench::shared_hulls;
 
 // The O(n·m) exact reference for σ (as tests/convex3): min over every implicit facet of M.
 struct Ref {
@@ -615,23 +608,13 @@ const CrossCase& hulls_case() {
   if (p) return *p;
   p = std::make_unique<CrossCase>();
   CrossCase& c = *p;
-  std::vector<std::string> files;
-  for (const auto& e : std::filesystem::directory_iterator(std::string(PENDEPTH_SHARED_DATA) + "/hulls"))
-    if (e.path().extension() == ".obj") files.push_back(e.path().string());
-  std::sort(files.begin(), files.end());
-  std::vector<ConvexPolytope> H;
-  for (const auto& f : files) H.push_back(ConvexPolytope::hull(pendepth::read_obj_vertices(f), f));
+  const std::vector<ConvexPolytope> H = shared_hulls();
   if (H.size() < 8) {
     c.error = "shared hulls not found";
     return c;
   }
   std::mt19937_64 rng(0x6a11);
   std::uniform_real_distribution<double> U(-0.3, 0.3);
-  auto centroid = [](const ConvexPolytope& S) {
-    Vec3 x = Vec3::Zero();
-    for (const Vec3& v : S.vertices()) x += v / double(S.size());
-    return x;
-  };
   for (std::size_t i = 0; i < H.size(); ++i) c.P.push_back(H[i]), c.Q.push_back(H[(i + 7) % H.size()]);
   const std::size_t want = 16 * H.size();
   std::size_t attempts = 0;
@@ -639,9 +622,8 @@ const CrossCase& hulls_case() {
     CrossQuery q;
     q.pair = int(attempts % H.size());
     const ConvexPolytope &P = c.P[q.pair], &Q = c.Q[q.pair];
-    double r = 0;
     const Vec3 cp = centroid(P);
-    for (const Vec3& v : P.vertices()) r = std::max(r, (v - cp).norm());
+    const double r = radius(P);
     auto rot = random_rotation(rng);
     q.pose = Pose3(rot, cp - rot.toRotationMatrix() * centroid(Q) + r * Vec3(U(rng), U(rng), U(rng)));
     q.d = random_in_ball(rng, 1.0);
@@ -949,27 +931,11 @@ const DistCase& dist_case() {
   if (p) return *p;
   p = std::make_unique<DistCase>();
   DistCase& c = *p;
-  std::vector<std::string> files;
-  for (const auto& e : std::filesystem::directory_iterator(std::string(PENDEPTH_SHARED_DATA) + "/hulls"))
-    if (e.path().extension() == ".obj") files.push_back(e.path().string());
-  std::sort(files.begin(), files.end());
-  std::vector<ConvexPolytope> H;
-  for (const auto& f : files) H.push_back(ConvexPolytope::hull(pendepth::read_obj_vertices(f), f));
+  const std::vector<ConvexPolytope> H = shared_hulls();
   if (H.size() < 8) {
     c.error = "shared hulls not found";
     return c;
   }
-  auto centroid = [](const ConvexPolytope& S) {
-    Vec3 x = Vec3::Zero();
-    for (const Vec3& v : S.vertices()) x += v / double(S.size());
-    return x;
-  };
-  auto radius = [&](const ConvexPolytope& S) {
-    double r = 0;
-    const Vec3 cs = centroid(S);
-    for (const Vec3& v : S.vertices()) r = std::max(r, (v - cs).norm());
-    return r;
-  };
   for (std::size_t i = 0; i < H.size(); ++i) c.P.push_back(H[i]), c.Q.push_back(H[(i + 7) % H.size()]);
   std::mt19937_64 rng(0xd157);
   std::uniform_real_distribution<double> U(0.6, 1.6);

@@ -22,6 +22,8 @@
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp>
 
+#include "hulls3.hpp"
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -44,20 +46,12 @@ struct Case3 {
   std::size_t queries = 0;
 };
 
-Vec3 centroid(const ConvexPolytope& S) {
-  Vec3 x = Vec3::Zero();
-  for (const Vec3& v : S.vertices()) x += v / double(S.size());
-  return x;
-}
+using pendepth::bench::centroid;
 
 const std::vector<Shape3>& hulls() {
   static const std::vector<Shape3> H = [] {
-    std::vector<std::string> files;
-    for (const auto& e : std::filesystem::directory_iterator(std::string(PENDEPTH_SHARED_DATA) + "/hulls"))
-      if (e.path().extension() == ".obj") files.push_back(e.path().string());
-    std::sort(files.begin(), files.end());
     std::vector<Shape3> h;
-    for (const auto& f : files) h.push_back(Shape3::from_file(f, f));
+    for (const auto& f : pendepth::test3::shared_hull_files()) h.push_back(Shape3::from_file(f, f));
     return h;
   }();
   return H;

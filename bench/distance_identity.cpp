@@ -20,6 +20,8 @@
 #include <pendepth/io.hpp>
 #include <pendepth/polytope.hpp>
 
+#include "hulls3.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -33,6 +35,7 @@ using pendepth::ConvexPolytope;
 using pendepth::Distance3;
 using pendepth::Pose3;
 using pendepth::Vec3;
+using namespace pendepth::bench;  // hulls3.hpp: the shared hulls, draws and solids
 
 namespace {
 
@@ -46,48 +49,9 @@ Distance3 dump(const ConvexPolytope& P, const Pose3& pp, const ConvexPolytope& Q
   return d;
 }
 
-// As bench_convex3.cpp (same draws, so the bench set is the benchmark's).
-Eigen::Quaterniond random_rotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  Eigen::Quaterniond q(g(rng), g(rng), g(rng), g(rng));
-  return q.normalized();
-}
-Vec3 random_in_ball(std::mt19937_64& rng, double r) {
-  std::uniform_real_distribution<double> U(-1, 1);
-  for (;;) {
-    Vec3 v(U(rng), U(rng), U(rng));
-    if (v.squaredNorm() <= 1) return r * v;
-  }
-}
-
-Vec3 centroid(const ConvexPolytope& S) {
-  Vec3 x = Vec3::Zero();
-  for (const Vec3& v : S.vertices()) x += v / double(S.size());
-  return x;
-}
-double radius(const ConvexPolytope& S) {
-  double r = 0;
-  const Vec3 cs = centroid(S);
-  for (const Vec3& v : S.vertices()) r = std::max(r, (v - cs).norm());
-  return r;
-}
-
-const std::vector<ConvexPolytope>& real_hulls() {
-  static const std::vector<ConvexPolytope> H = [] {
-    std::vector<std::string> files;
-    for (const auto& e : std::filesystem::directory_iterator(std::string(PENDEPTH_SHARED_DATA) + "/hulls"))
-      if (e.path().extension() == ".obj") files.push_back(e.path().string());
-    std::sort(files.begin(), files.end());
-    std::vector<ConvexPolytope> h;
-    for (const auto& f : files) h.push_back(ConvexPolytope::hull(pendepth::read_obj_vertices(f), f));
-    return h;
-  }();
-  return H;
-}
-
 // bench_convex3's sdist::dist_case, the cast draws included (they move the generator).
 void bench() {
-  const auto& H = real_hulls();
+  static const std::vector<ConvexPolytope> H = shared_hulls();
   std::mt19937_64 rng(0xd157);
   std::uniform_real_distribution<double> U(0.6, 1.6);
   const std::size_t want = 16 * H.size();
@@ -115,7 +79,7 @@ Eigen::Quaterniond quarter_turn(std::mt19937_64& rng) {
 }
 
 void hulls(unsigned seed) {
-  const auto& H = real_hulls();
+  static const std::vector<ConvexPolytope> H = shared_hulls();
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> U(0.3, 1.6);
   for (int k = 0; k < 3000; ++k) {
@@ -130,12 +94,6 @@ void hulls(unsigned seed) {
     const Pose3 pq(rq, cp - rq.toRotationMatrix() * centroid(Q) + (radius(P) + radius(Q)) * U(rng) * dir.normalized());
     dump(P, Pose3(rp, tp), Q, pq);
   }
-}
-
-ConvexPolytope box(double x, double y, double z) {
-  std::vector<Vec3> v;
-  for (int s = 0; s < 8; ++s) v.emplace_back(s & 1 ? x : -x, s & 2 ? y : -y, s & 4 ? z : -z);
-  return ConvexPolytope::hull(v);
 }
 
 std::vector<Eigen::Quaterniond> rotations(std::mt19937_64& rng) {
@@ -160,24 +118,6 @@ void boxes() {
           for (int y = -2; y <= 4; y += 3)
             for (int z : {-3, 0, 2, 5})
               dump(S[a], Pose3(), S[b], Pose3(q, Vec3(x, 0.5 * y, 0.5 * z)));
-}
-
-ConvexPolytope prism(int n, double r, double h) {
-  std::vector<Vec3> v;
-  for (int k = 0; k < n; ++k) {
-    const double t = 2 * M_PI * k / n;
-    v.emplace_back(std::round(r * std::cos(t)), std::round(r * std::sin(t)), -h);
-    v.emplace_back(std::round(r * std::cos(t)), std::round(r * std::sin(t)), h);
-  }
-  return ConvexPolytope::hull(v);
-}
-ConvexPolytope bipyramid(int n, double r, double h) {
-  std::vector<Vec3> v = {Vec3(0, 0, -h), Vec3(0, 0, h)};
-  for (int k = 0; k < n; ++k) {
-    const double t = 2 * M_PI * k / n;
-    v.emplace_back(std::round(r * std::cos(t)), std::round(r * std::sin(t)), 0);
-  }
-  return ConvexPolytope::hull(v);
 }
 
 void prisms() {

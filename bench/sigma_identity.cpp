@@ -16,6 +16,8 @@
 #include <pendepth/io.hpp>
 #include <pendepth/polytope.hpp>
 
+#include "hulls3.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -29,6 +31,7 @@ using pendepth::ConvexPolytope;
 using pendepth::Depth3;
 using pendepth::Pose3;
 using pendepth::Vec3;
+using namespace pendepth::bench;  // hulls3.hpp: the shared hulls, draws and solids
 
 namespace {
 
@@ -41,31 +44,8 @@ void dump(const ConvexPolytope& P, const Pose3& pp, const ConvexPolytope& Q, con
               d.feature_q.index, d.piece_p, d.piece_q, std::size_t(d.candidates));
 }
 
-Eigen::Quaterniond random_rotation(std::mt19937_64& rng) {
-  std::normal_distribution<double> N;
-  Eigen::Quaterniond q(N(rng), N(rng), N(rng), N(rng));
-  q.normalize();
-  return q;
-}
-
-Vec3 centroid(const ConvexPolytope& S) {
-  Vec3 x = Vec3::Zero();
-  for (const Vec3& v : S.vertices()) x += v / double(S.size());
-  return x;
-}
-
-std::vector<ConvexPolytope> real_hulls() {
-  std::vector<std::string> files;
-  for (const auto& e : std::filesystem::directory_iterator(std::string(PENDEPTH_SHARED_DATA) + "/hulls"))
-    if (e.path().extension() == ".obj") files.push_back(e.path().string());
-  std::sort(files.begin(), files.end());
-  std::vector<ConvexPolytope> H;
-  for (const auto& f : files) H.push_back(ConvexPolytope::hull(pendepth::read_obj_vertices(f), f));
-  return H;
-}
-
 void hulls(unsigned seed) {
-  static const std::vector<ConvexPolytope> H = real_hulls();
+  static const std::vector<ConvexPolytope> H = shared_hulls();
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> U(-0.3, 0.3);
   for (int k = 0; k < 3000; ++k) {
@@ -76,12 +56,6 @@ void hulls(unsigned seed) {
     const auto rot = random_rotation(rng);
     dump(P, Pose3(), Q, Pose3(rot, cp - rot.toRotationMatrix() * centroid(Q) + r * Vec3(U(rng), U(rng), U(rng))));
   }
-}
-
-ConvexPolytope box(double x, double y, double z) {
-  std::vector<Vec3> v;
-  for (int s = 0; s < 8; ++s) v.emplace_back(s & 1 ? x : -x, s & 2 ? y : -y, s & 4 ? z : -z);
-  return ConvexPolytope::hull(v);
 }
 
 // Quarter turns about the axes (exact rotation matrices) and a few generic rotations.
@@ -111,24 +85,6 @@ void boxes() {
               dump(S[a], Pose3(), S[b], Pose3(q, Vec3(x, 0.5 * y, 0.5 * z)));
 }
 
-ConvexPolytope prism(int n, double r, double h) {
-  std::vector<Vec3> v;
-  for (int k = 0; k < n; ++k) {
-    const double t = 2 * M_PI * k / n;
-    v.emplace_back(std::round(r * std::cos(t)), std::round(r * std::sin(t)), -h);
-    v.emplace_back(std::round(r * std::cos(t)), std::round(r * std::sin(t)), h);
-  }
-  return ConvexPolytope::hull(v);
-}
-ConvexPolytope bipyramid(int n, double r, double h) {
-  std::vector<Vec3> v = {Vec3(0, 0, -h), Vec3(0, 0, h)};
-  for (int k = 0; k < n; ++k) {
-    const double t = 2 * M_PI * k / n;
-    v.emplace_back(std::round(r * std::cos(t)), std::round(r * std::sin(t)), 0);
-  }
-  return ConvexPolytope::hull(v);
-}
-
 void prisms() {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> U(-1, 1);
@@ -145,7 +101,7 @@ void prisms() {
 }
 
 void slivers() {
-  static const std::vector<ConvexPolytope> H = real_hulls();
+  static const std::vector<ConvexPolytope> H = shared_hulls();
   std::mt19937_64 rng(13);
   std::uniform_real_distribution<double> U(-1, 1);
   std::vector<ConvexPolytope> F;

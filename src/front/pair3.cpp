@@ -278,8 +278,13 @@ Depth3 Pair3::min_engine(const Pose3& pose_p, const Pose3& pose_q) const {
     return scale.answer(curved_query(scale, engine_P_, pose_p, engine_Q_, pose_q, [](auto&&... a) {
       return primitives::curved_minimum(a...);
     }));
-  if (mesh_)
-    return scale.answer(mesh3::minimum(mesh_->pair(), engine_pose(scale, pose_p, "pose of P"), engine_pose(scale, pose_q, "pose of Q")));
+  if (mesh_) {
+    mesh3::SigmaKeepBounds* keep = mesh3::SigmaKeepBounds::active;
+    if (keep) keep->bounds.reset();
+    const Depth3 r = scale.answer(mesh3::minimum(mesh_->pair(), engine_pose(scale, pose_p, "pose of P"), engine_pose(scale, pose_q, "pose of Q")));
+    if (keep && keep->bounds) keep->bounds = scale.answer(*keep->bounds);
+    return r;
+  }
   if (is_rounded(engine_P_, engine_Q_)) {
     const Pose3 ep = engine_pose(scale, pose_p, "pose of P"), eq = engine_pose(scale, pose_q, "pose of Q");
     return scale.answer(primitives::rounded_minimum(core_distance(engine_P_, ep, engine_Q_, eq),

@@ -81,6 +81,19 @@ struct Cand {
   Vec3 normal;
 };
 
+/// Adds to `out` the crossings of the ray from + μ·dv (μ >= 0; dd = |dv|²) with the closed triangle
+/// p, q, r (none when it is degenerate): μ = (X − from)·dv / dd, exact, for the intersection point X
+/// (both ends of a coplanar overlap), each with the triangle's normal from the rounded points.
+inline void ray_crossings(const P3& from, const V3& dv, const FT& dd, const P3& p, const P3& q, const P3& r,
+                          std::vector<Cand>& out) {
+  if (CGAL::collinear(p, q, r)) return;
+  const K::Triangle_3 T(p, q, r);
+  const K::Ray_3 ray(from, dv);
+  if (!CGAL::do_intersect(ray, T)) return;
+  const Vec3 n = (approx(q) - approx(p)).cross(approx(r) - approx(p));
+  points_of(CGAL::intersection(ray, T), [&](const P3& X) { out.push_back({((X - from) * dv) / dd, n}); });
+}
+
 /// Over the sorted candidates `c`: σ_d's exit = the first candidate where the moved shape is not in
 /// O (`in_o(μ)`; each candidate found in O carries the open stretch after it into O, equal
 /// candidates tested once), or a separation's = the end of the last stretch whose midpoint is in O

@@ -49,27 +49,14 @@ namespace {
 using namespace exact3;
 using P2 = K::Point_2;
 
-struct Frame {
-  Eigen::Matrix3d Rm;  // the mesh's rotation and translation (world)
-  Vec3 tm;
-  Vec3 d;              // the ray's direction in the mesh's frame
-  std::vector<P3> F;   // the exact placed vertices
+// The polygon in the mesh's frame.
+struct Frame : MeshFrame {
+  std::vector<P3> F;  // the exact placed vertices
 };
 
 Frame frame(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3* d) {
-  const Pose3& pm = m.mesh_is_p ? pose_p : pose_q;
-  const Pose3& po = m.mesh_is_p ? pose_q : pose_p;
-  Frame f;
-  f.Rm = pm.matrix();
-  f.tm = pm.translation;
-  const Eigen::Matrix3d R = f.Rm.transpose() * po.matrix();
-  const Vec3 tq = f.Rm.transpose() * po.translation, tp = f.Rm.transpose() * pm.translation;
-  for (const Vec3& v : m.flat_v) f.F.push_back(place(R, v, tq, tp));
-  if (d) {
-    f.d = f.Rm.transpose() * *d;
-    if (!m.mesh_is_p) f.d = -f.d;  // the mesh moves along d: the polygon, relatively, along −d
-    if (f.d == Vec3::Zero()) throw InvalidInput("direction: underflows to zero in the mesh's frame");
-  }
+  Frame f{mesh_frame(m, pose_p, pose_q, d), {}};
+  for (const Vec3& v : m.flat_v) f.F.push_back(place(f.R, v, f.tq, f.tp));
   return f;
 }
 
@@ -170,14 +157,7 @@ std::vector<Cand> candidates(const MixedPair& m, const Frame& f) {
   const std::vector<P3>& F = f.F;
   const std::size_t k = F.size();
   std::vector<Cand> out;
-  auto shoot = [&](const P3& from, const P3& p, const P3& q, const P3& r) {
-    if (CGAL::collinear(p, q, r)) return;
-    const K::Triangle_3 T(p, q, r);
-    const K::Ray_3 ray(from, dv);
-    if (!CGAL::do_intersect(ray, T)) return;
-    const Vec3 n = (approx(q) - approx(p)).cross(approx(r) - approx(p));
-    points_of(CGAL::intersection(ray, T), [&](const P3& X) { out.push_back({((X - from) * dv) / dd, n}); });
-  };
+  auto shoot = [&](const P3& from, const P3& p, const P3& q, const P3& r) { ray_crossings(from, dv, dd, p, q, r, out); };
   auto minus = [&](const P3& p, const P3& x) { return O + (p - x); };  // the point p − x
   Vec3 c;
   double h;

@@ -222,6 +222,23 @@ MixedPair MixedPair::make(const Shape3& P, const Shape3& Q) {
   return m;
 }
 
+MeshFrame mesh_frame(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3* d) {
+  const Pose3& pm = m.mesh_is_p ? pose_p : pose_q;
+  const Pose3& po = m.mesh_is_p ? pose_q : pose_p;
+  MeshFrame f;
+  f.Rm = pm.matrix();
+  f.tm = pm.translation;
+  f.R = f.Rm.transpose() * po.matrix();
+  f.tq = f.Rm.transpose() * po.translation;
+  f.tp = f.Rm.transpose() * pm.translation;
+  if (d) {
+    f.d = f.Rm.transpose() * *d;
+    if (!m.mesh_is_p) f.d = -f.d;  // the mesh moves along d: S, relatively, along −d
+    if (f.d == Vec3::Zero()) throw InvalidInput("direction: underflows to zero in the mesh's frame");
+  }
+  return f;
+}
+
 bool overlapping(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q) {
   if (m.point) return point_overlapping(m, ep(m, pose_p, "P"), ep(m, pose_q, "Q"));
   if (m.segment) return segment_overlapping(m, ep(m, pose_p, "P"), ep(m, pose_q, "Q"));

@@ -18,6 +18,10 @@
 
 #include <array>
 #include <memory>
+#include <numeric>
+#include <optional>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace pendepth::mesh3 {
@@ -93,6 +97,40 @@ Depth3 segment_along(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_
 // exact (the pieces' union misses F lying in an internal face).
 bool flat_overlapping(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q);
 Depth3 flat_along(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3& d, bool separation);
+
+/// The other shape S in the mesh's frame, where the point, segment and flat polygon paths decide
+/// on the mesh's own triangles: a point y of S's engine frame is placed at R y + tq − tp (the
+/// relative pose in doubles; each path evaluates that sum exactly or in its own certified way), and
+/// a ray along the world direction d moves S relatively along d' = Rmᵀ d, negated when the mesh is
+/// the moving shape Q.
+struct MeshFrame {
+  Eigen::Matrix3d Rm;  ///< the mesh's rotation and translation (world)
+  Vec3 tm;
+  Eigen::Matrix3d R;   ///< Rmᵀ R_S
+  Vec3 tq, tp;         ///< Rmᵀ t_S, Rmᵀ tm
+  Vec3 d = Vec3::Zero();  ///< d' (zero when no direction is given)
+};
+/// The frame of the pair at these poses; d' too when `d` is given (InvalidInput when it
+/// underflows to zero there). O(1).
+MeshFrame mesh_frame(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3* d);
+
+/// Ray parity for a point on no triangle (mesh_point.cpp's file comment; the segment and flat
+/// paths too): over the moment-curve directions d = (q², pq, p²), the reduced fractions s = p/q with
+/// 4096 ≤ q ≤ 8192 and p < 2^26 (exact doubles, distinct directions), the first answer of
+/// `parity(d)` — the crossing parity along d, or nullopt when d is degenerate (through an edge or a
+/// vertex, or in a triangle's plane). logic_error (naming `what`) when ~9·10⁷ directions are all
+/// degenerate (more than 2·(E + T) + 1: never below ~1.8·10⁷ triangles).
+template <class F>
+bool moment_ray_parity(const char* what, F&& parity) {
+  for (long qi = 8192; qi >= 4096; --qi)
+    for (long k = 0; k < 23000; ++k) {
+      const long pi = 5217 + 2897 * k;
+      if (std::gcd(pi, qi) != 1) continue;
+      const double p = static_cast<double>(pi), q = static_cast<double>(qi);
+      if (const std::optional<bool> in = parity(Vec3(q * q, p * q, p * p))) return *in;
+    }
+  throw std::logic_error(std::string(what) + ": no non-degenerate parity ray among ~9e7 directions (more than 2(E+T)+1)");
+}
 
 /// Is the triangle of zero area (its three vertices collinear, exactly)?
 bool point_zero_area(const std::array<Vec3, 3>& T);

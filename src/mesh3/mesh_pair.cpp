@@ -117,6 +117,7 @@ Depth3 minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q) {
       if (r.overlapping) deep.push_back({r.depth, r.normal});
     }
   Depth3 r = least_from_deep(std::move(deep), work, [&](const Vec3& d) { return along(m, pose_p, pose_q, d, false); });
+  if (SigmaKeepBounds* keep = SigmaKeepBounds::active) keep->bounds = r;
   // Bounds apart: the exact σ (mesh_sigma_exact.cpp) when the pairs in range are small enough.
   if (SigmaBoundsOnly::depth == 0 && r.overlapping && r.lower_bound < r.upper_bound)
     if (std::optional<Depth3> x = exact_minimum(m, pose_p, pose_q, r.upper_bound)) {

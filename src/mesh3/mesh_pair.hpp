@@ -23,6 +23,7 @@
 
 #include <array>
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace pendepth::mesh3 {
@@ -74,6 +75,23 @@ struct SigmaBoundsOnly {
   ~SigmaBoundsOnly() { --depth; }
   SigmaBoundsOnly(const SigmaBoundsOnly&) = delete;
   SigmaBoundsOnly& operator=(const SigmaBoundsOnly&) = delete;
+};
+
+/// While alive on this thread, minimum() also keeps in `bounds` its answer on the certified bounds
+/// alone (what it returns under SigmaBoundsOnly, before any exact σ), scaled back to input units by
+/// Pair3 as the answer is. For generalized depth, which needs σ and the pairs' max σ_ij from one
+/// query instead of two. Only the mesh engine fills it (a mixed pair's σ is its bounds' answer);
+/// the innermost guard on the thread receives it.
+struct SigmaKeepBounds {
+  static inline thread_local SigmaKeepBounds* active = nullptr;
+  std::optional<Depth3> bounds;
+  SigmaKeepBounds() : outer_(active) { active = this; }
+  ~SigmaKeepBounds() { active = outer_; }
+  SigmaKeepBounds(const SigmaKeepBounds&) = delete;
+  SigmaKeepBounds& operator=(const SigmaKeepBounds&) = delete;
+
+ private:
+  SigmaKeepBounds* outer_;
 };
 
 /// σ's upper bound by directions (meshes and mixed pairs, mesh_mixed.hpp): the least σ_d

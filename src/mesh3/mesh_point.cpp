@@ -38,6 +38,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -56,11 +57,8 @@ using lifted::lv;
 using lifted::sub;
 
 // The point in the mesh's frame, exactly x = R p + tq − tp, and the ray's direction there.
-struct Frame {
-  Eigen::Matrix3d Rm;  // the mesh's rotation
-  Vec3 tm;             // the mesh's translation
-  Eigen::Matrix3d R;
-  Vec3 p, tq, tp, d;
+struct Frame : MeshFrame {
+  Vec3 p;
   Vec3 x;  // rounded
   template <class L>
   auto placed(L lift) const {
@@ -80,21 +78,8 @@ Pose3 moved(const Pose3& pose_q, const Vec3& v) {
 }
 
 Frame frame(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3* d) {
-  const Pose3& pm = m.mesh_is_p ? pose_p : pose_q;
-  const Pose3& po = m.mesh_is_p ? pose_q : pose_p;
-  Frame f;
-  f.Rm = pm.matrix();
-  f.tm = pm.translation;
-  f.R = f.Rm.transpose() * po.matrix();
-  f.p = m.pt.v[0];
-  f.tq = f.Rm.transpose() * po.translation;
-  f.tp = f.Rm.transpose() * pm.translation;
+  Frame f{mesh_frame(m, pose_p, pose_q, d), m.pt.v[0], {}};
   f.x = f.R * f.p + (f.tq - f.tp);
-  if (d) {
-    f.d = f.Rm.transpose() * *d;
-    if (!m.mesh_is_p) f.d = -f.d;  // the mesh moves along d: the point, relatively, along −d
-    if (f.d == Vec3::Zero()) throw InvalidInput("direction: underflows to zero in the mesh's frame");
-  }
   return f;
 }
 
@@ -203,12 +188,7 @@ bool on_surface(const MixedPair& m, const Frame& f) {
 // fractions are distinct directions, ~9·10⁷ of them: more than 2·(E + T) + 1 below ~1.8·10⁷
 // triangles (a mesh beyond that could, in theory, reach the logic_error below).
 bool parity_inside(const MixedPair& m, const Frame& f) {
-  for (long qi = 8192; qi >= 4096; --qi)
-  for (long k = 0; k < 23000; ++k) {
-    const long pi = 5217 + 2897 * k;
-    if (std::gcd(pi, qi) != 1) continue;
-    const double p = static_cast<double>(pi), q = static_cast<double>(qi);
-    const Vec3 d(q * q, p * q, p * p);
+  return moment_ray_parity("mesh point", [&](const Vec3& d) -> std::optional<bool> {
     bool inside = false, degenerate = false;
     ray_candidates(m, f, d, [&](std::size_t t) {
       if (degenerate || m.tri_zero[t]) return;
@@ -236,9 +216,8 @@ bool parity_inside(const MixedPair& m, const Frame& f) {
       }
       inside = !inside;
     });
-    if (!degenerate) return inside;
-  }
-  throw std::logic_error("mesh point: no non-degenerate parity ray among ~9e7 directions (more than 2(E+T)+1)");
+    return degenerate ? std::nullopt : std::optional<bool>(inside);
+  });
 }
 
 // The outward unit normal of triangle t in the world frame.

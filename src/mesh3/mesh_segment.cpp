@@ -42,6 +42,7 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 
 namespace pendepth::mesh3 {
@@ -61,27 +62,14 @@ namespace {
 
 using namespace exact3;
 
-struct Frame {
-  Eigen::Matrix3d Rm;  // the mesh's rotation and translation (world)
-  Vec3 tm;
-  Vec3 d;              // the ray's direction in the mesh's frame (doubles, exact as given)
-  P3 A, B;             // the exact placed end points
+// The segment in the mesh's frame.
+struct Frame : MeshFrame {
+  P3 A, B;  // the exact placed end points
 };
 
 Frame frame(const MixedPair& m, const Pose3& pose_p, const Pose3& pose_q, const Vec3* d) {
-  const Pose3& pm = m.mesh_is_p ? pose_p : pose_q;
-  const Pose3& po = m.mesh_is_p ? pose_q : pose_p;
-  Frame f;
-  f.Rm = pm.matrix();
-  f.tm = pm.translation;
-  const Eigen::Matrix3d R = f.Rm.transpose() * po.matrix();
-  const Vec3 tq = f.Rm.transpose() * po.translation, tp = f.Rm.transpose() * pm.translation;
-  f.A = place(R, m.seg[0], tq, tp), f.B = place(R, m.seg[1], tq, tp);
-  if (d) {
-    f.d = f.Rm.transpose() * *d;
-    if (!m.mesh_is_p) f.d = -f.d;  // the mesh moves along d: the segment, relatively, along −d
-    if (f.d == Vec3::Zero()) throw InvalidInput("direction: underflows to zero in the mesh's frame");
-  }
+  Frame f{mesh_frame(m, pose_p, pose_q, d), {}, {}};
+  f.A = place(f.R, m.seg[0], f.tq, f.tp), f.B = place(f.R, m.seg[1], f.tq, f.tp);
   return f;
 }
 
@@ -100,41 +88,35 @@ bool on_surface(const MixedPair& m, const P3& X) {
 // of both signs, a miss; else (through an edge or vertex) degenerate. In the plane: degenerate.
 bool parity_inside(const MixedPair& m, const P3& X) {
   const Vec3 xa = approx(X);
-  for (long qi = 8192; qi >= 4096; --qi)
-    for (long k = 0; k < 23000; ++k) {
-      const long pi = 5217 + 2897 * k;
-      if (std::gcd(pi, qi) != 1) continue;
-      const double p = static_cast<double>(pi), q = static_cast<double>(qi);
-      const Vec3 d(q * q, p * q, p * p);
-      const V3 dv(d[0], d[1], d[2]);
-      const P3 Y = X + dv;
-      bool inside = false, degenerate = false;
-      along_ray(m, xa, 0, d, [&](std::size_t t) {
-        if (degenerate || m.tri_zero[t]) return;
-        const P3 &T0 = tp3(m, t)[0], &T1 = tp3(m, t)[1], &T2 = tp3(m, t)[2];
-        const int den = CGAL::orientation(T0, T1, T2, T0 + dv);
-        const int sx = CGAL::orientation(T0, T1, T2, X);
-        if (den == 0) {
-          degenerate = sx == 0;  // the ray in the triangle's plane
-          return;
-        }
-        if (sx == 0 || sx == den) return;  // the plane holds X (X on no triangle) or is behind
-        const P3* T[3] = {&T0, &T1, &T2};
-        int pos = 0, neg = 0;
-        for (int e = 0; e < 3; ++e) {
-          const int s = CGAL::orientation(X, Y, *T[e], *T[(e + 1) % 3]);
-          pos += s > 0, neg += s < 0;
-        }
-        if (pos > 0 && neg > 0) return;
-        if (pos + neg < 3) {
-          degenerate = true;
-          return;
-        }
-        inside = !inside;
-      });
-      if (!degenerate) return inside;
-    }
-  throw std::logic_error("mesh segment: no non-degenerate parity ray among ~9e7 directions");
+  return moment_ray_parity("mesh segment", [&](const Vec3& d) -> std::optional<bool> {
+    const V3 dv(d[0], d[1], d[2]);
+    const P3 Y = X + dv;
+    bool inside = false, degenerate = false;
+    along_ray(m, xa, 0, d, [&](std::size_t t) {
+      if (degenerate || m.tri_zero[t]) return;
+      const P3 &T0 = tp3(m, t)[0], &T1 = tp3(m, t)[1], &T2 = tp3(m, t)[2];
+      const int den = CGAL::orientation(T0, T1, T2, T0 + dv);
+      const int sx = CGAL::orientation(T0, T1, T2, X);
+      if (den == 0) {
+        degenerate = sx == 0;  // the ray in the triangle's plane
+        return;
+      }
+      if (sx == 0 || sx == den) return;  // the plane holds X (X on no triangle) or is behind
+      const P3* T[3] = {&T0, &T1, &T2};
+      int pos = 0, neg = 0;
+      for (int e = 0; e < 3; ++e) {
+        const int s = CGAL::orientation(X, Y, *T[e], *T[(e + 1) % 3]);
+        pos += s > 0, neg += s < 0;
+      }
+      if (pos > 0 && neg > 0) return;
+      if (pos + neg < 3) {
+        degenerate = true;
+        return;
+      }
+      inside = !inside;
+    });
+    return degenerate ? std::nullopt : std::optional<bool>(inside);
+  });
 }
 
 }  // namespace
@@ -175,14 +157,7 @@ std::vector<Cand> candidates(const MixedPair& m, const Frame& f) {
   const P3 O = CGAL::ORIGIN;
   const V3 AB = f.B - f.A;
   std::vector<Cand> out;
-  auto shoot = [&](const P3& from, const P3& p, const P3& q, const P3& r) {
-    if (CGAL::collinear(p, q, r)) return;
-    const K::Triangle_3 T(p, q, r);
-    const K::Ray_3 ray(from, dv);
-    if (!CGAL::do_intersect(ray, T)) return;
-    const Vec3 n = (approx(q) - approx(p)).cross(approx(r) - approx(p));
-    points_of(CGAL::intersection(ray, T), [&](const P3& X) { out.push_back({((X - from) * dv) / dd, n}); });
-  };
+  auto shoot = [&](const P3& from, const P3& p, const P3& q, const P3& r) { ray_crossings(from, dv, dd, p, q, r, out); };
   const Vec3 a = approx(f.A), b = approx(f.B);
   along_ray(m, 0.5 * (a + b), 0.5 * (a - b).cwiseAbs().maxCoeff(), f.d, [&](std::size_t t) {
     if (m.tri_zero[t]) return;

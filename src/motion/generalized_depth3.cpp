@@ -177,14 +177,11 @@ struct Search {
 GeneralizedDepth3 generalized_depth(const Shape3& P, const Pose3& pose_p, const Shape3& Q, const Pose3& pose_q,
                                     const GeneralizedOptions3& o) {
   const Pair3 pair(P, Q);
-  const Depth3 s = pair.minimum(pose_p, pose_q);  // checks the poses, scales the pair
   // Meshes: PD_g's lower bound is the pairs' max σ_ij (σ's bounds' lower end: a rotation can beat
-  // σ), not the exact σ that minimum() may return (mesh_sigma_exact.cpp).
-  double pair_lower = s.lower_bound;
-  if (s.overlapping && !(P.is_convex() && Q.is_convex())) {
-    const mesh3::SigmaBoundsOnly bounds_only;
-    pair_lower = pair.minimum(pose_p, pose_q).lower_bound;
-  }
+  // σ), not the exact σ that minimum() may return (mesh_sigma_exact.cpp): both from one query.
+  mesh3::SigmaKeepBounds keep;
+  const Depth3 s = pair.minimum(pose_p, pose_q);  // checks the poses, scales the pair
+  const double pair_lower = keep.bounds ? keep.bounds->lower_bound : s.lower_bound;
   GeneralizedDepth3 r;
   r.overlapping = s.overlapping;
   r.depth = r.sigma = s.depth;

@@ -82,12 +82,20 @@ inline std::vector<Vec3> random_ball(std::mt19937_64& rng, int n, double r = 1) 
 /// |a − b| in ulps of the larger magnitude (0 when both are 0).
 inline double ulps(double a, double b) { return pendepth_test::ulps_in_binade(a, b); }
 
+/// The .obj files of PENDEPTH_SHARED_DATA/hulls, sorted by name.
 inline std::vector<std::string> shared_hull_files() {
   std::vector<std::string> f;
   for (const auto& e : std::filesystem::directory_iterator(std::string(PENDEPTH_SHARED_DATA) + "/hulls"))
     if (e.path().extension() == ".obj") f.push_back(e.path().string());
   std::sort(f.begin(), f.end());
   return f;
+}
+
+/// The hulls of the shared hull files' vertices, in file order (each named by its file).
+inline std::vector<ConvexPolytope> shared_hulls() {
+  std::vector<ConvexPolytope> H;
+  for (const auto& f : shared_hull_files()) H.push_back(ConvexPolytope::hull(read_obj_vertices(f), f));
+  return H;
 }
 
 struct NamedCloud {

@@ -10,6 +10,7 @@
 #include <pendepth/io.hpp>
 
 #include "convex3/minimum_expand.hpp"
+#include "convex3/shapes3.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -32,12 +33,7 @@ Vec3 random_in_ball(std::mt19937_64& rng) {
 double ulps(double a, double b) { return pendepth_test::ulps_in_binade(a, b); }
 
 TEST(CastFast, SharedHullsFastPathAgreesWithDescent) {
-  std::vector<std::string> files;
-  for (const auto& e : std::filesystem::directory_iterator(std::string(PENDEPTH_SHARED_DATA) + "/hulls"))
-    if (e.path().extension() == ".obj") files.push_back(e.path().string());
-  std::sort(files.begin(), files.end());
-  std::vector<ConvexPolytope> H;
-  for (const auto& f : files) H.push_back(ConvexPolytope::hull(read_obj_vertices(f), f));
+  const std::vector<ConvexPolytope> H = test3::shared_hulls();
   ASSERT_GE(H.size(), 8u);
   auto centroid = [](const ConvexPolytope& S) {
     Vec3 x = Vec3::Zero();

@@ -81,16 +81,6 @@ void check(const ConvexPolytope& P, const Pose3& pp, const ConvexPolytope& Q, co
   t.mismatches_margin0 += !same(exact, fast0);
 }
 
-std::vector<ConvexPolytope> shared_hulls() {
-  std::vector<std::string> files;
-  for (const auto& e : std::filesystem::directory_iterator(std::string(PENDEPTH_SHARED_DATA) + "/hulls"))
-    if (e.path().extension() == ".obj") files.push_back(e.path().string());
-  std::sort(files.begin(), files.end());
-  std::vector<ConvexPolytope> H;
-  for (const auto& f : files) H.push_back(ConvexPolytope::hull(read_obj_vertices(f), f));
-  return H;
-}
-
 Vec3 centroid(const ConvexPolytope& S) {
   Vec3 x = Vec3::Zero();
   for (const Vec3& v : S.vertices()) x += v / double(S.size());
@@ -105,7 +95,7 @@ double radius(const ConvexPolytope& S) {
 // Random poses of the shared hulls, apart and overlapping, plus the same placements pushed to
 // touching (Q moved by the exact translation) and ±1–2 ulps around it.
 TEST(DistanceFast, SharedHullsBitForBit) {
-  const std::vector<ConvexPolytope> H = shared_hulls();
+  const std::vector<ConvexPolytope> H = test3::shared_hulls();
   ASSERT_GE(H.size(), 8u);
   std::mt19937_64 rng(0x5dfa57);
   std::uniform_real_distribution<double> U(0.3, 1.6);
@@ -215,7 +205,7 @@ TEST(DistanceFast, RandomHullsNearContactBitForBit) {
 // the exact one. This test fails if the margin stops mattering, e.g. if the certificate no longer
 // reads it — or if every close call were decided some other way, in which case it should go.
 TEST(DistanceFast, CertificateWithoutMarginIsDetected) {
-  const std::vector<ConvexPolytope> H = shared_hulls();
+  const std::vector<ConvexPolytope> H = test3::shared_hulls();
   ASSERT_GE(H.size(), 8u);
   std::mt19937_64 rng(0x0a12);
   std::uniform_real_distribution<double> U(0.3, 1.6);

@@ -12,6 +12,7 @@
 
 #include "mesh3/mesh_pair.hpp"
 #include "mesh3/mesh_sigma_exact.hpp"
+#include "mesh_direct.hpp"
 #include "mesh_gen.hpp"
 
 #include <gtest/gtest.h>
@@ -24,15 +25,6 @@ namespace {
 
 using namespace pendepth;
 using namespace mesh3_test;
-
-Shape3 mesh_shape(const Gen& g, const std::string& name) { return Shape3::from_mesh(Mesh3::validate(to_file(g, name), name)); }
-
-mesh3::MeshPair direct(const Shape3& a, const Shape3& b) {
-  bool exact = true;
-  auto P = mesh3::pieces_of(a, exact);
-  auto Q = mesh3::pieces_of(b, exact);
-  return mesh3::MeshPair::make(std::move(P), std::move(Q), exact);
-}
 
 constexpr std::size_t kNoLimit = 100000;
 

@@ -22,6 +22,7 @@
 #include <gmpxx.h>
 
 #include <cmath>
+#include <iostream>
 #include <random>
 
 namespace {
@@ -240,6 +241,37 @@ TEST(Generalized3Mesh, ApartZeroProbesAndScaling) {
     EXPECT_NEAR(g.upper_bound, std::ldexp(r.upper_bound, e), 1e-9 * std::ldexp(r.upper_bound, e)) << e;
     EXPECT_NEAR(g.lower_bound, std::ldexp(r.lower_bound, e), 1e-9 * std::ldexp(r.lower_bound, e)) << e;
   }
+}
+
+// generalized_depth takes σ and the pairs' max σ_ij from one query (mesh3::SigmaKeepBounds): the
+// kept answer must be, bit for bit, what the query returns on the bounds alone (a SigmaBoundsOnly
+// guard), also through Pair3's numeric-domain scaling; on some poses the query's own answer must be
+// the exact σ (another lower bound), so that the kept one is not just a copy of it.
+TEST(Generalized3Mesh, KeptBoundsAreTheBoundsOnlyAnswer) {
+  int refined = 0, compared = 0;
+  for (int e : {0, -300, 200}) {
+    const StuckBar s(e % 2 == 0, std::ldexp(1.0, e));
+    const Pair3 pair(s.P, s.Q);
+    for (double phi : {-0.05, -0.1, -0.2}) {
+      const Pose3 pq(Eigen::Quaterniond(Eigen::AngleAxisd(phi, Vec3::UnitZ())), std::ldexp(1.0, e) * Vec3(0.25, -0.125, 0.5));
+      mesh3::SigmaKeepBounds keep;
+      const Depth3 x = pair.minimum(Pose3(), pq);
+      const Depth3 b = [&] {
+        const mesh3::SigmaBoundsOnly bounds_only;
+        return pair.minimum(Pose3(), pq);
+      }();
+      const std::string what = "2^" + std::to_string(e) + " phi " + std::to_string(phi);
+      ASSERT_TRUE(keep.bounds.has_value()) << what;
+      const Depth3& k = *keep.bounds;
+      EXPECT_TRUE(k.overlapping == b.overlapping && k.depth == b.depth && k.lower_bound == b.lower_bound &&
+                  k.upper_bound == b.upper_bound && k.translation == b.translation && k.normal == b.normal)
+          << what << ": kept " << k.lower_bound << " " << k.upper_bound << " vs " << b.lower_bound << " " << b.upper_bound;
+      ++compared, refined += x.lower_bound != b.lower_bound;
+    }
+  }
+  EXPECT_EQ(compared, 9);
+  EXPECT_GT(refined, 0);  // the exact σ ran on some poses
+  std::cout << "[generalized3] kept bounds compared on " << compared << " poses, " << refined << " with the exact σ\n";
 }
 
 TEST(Generalized3Mesh, BadInput) {

@@ -20,6 +20,7 @@
 #include <random>
 #include <string>
 
+#include "nfp_compare.hpp"
 #include "nfp_shapes.hpp"
 #include "nonconvex2/nfp_impl.hpp"
 #include "polygon2/shapes.hpp"
@@ -30,6 +31,8 @@ namespace {
 using pendepth::Polygon;
 using pendepth::Vec2;
 namespace nc = pendepth::nonconvex2;
+using nonconvex2_test::nfp_difference;
+using nonconvex2_test::piece_difference;
 
 // Sets both modes, restored on scope exit (a failed assertion returns early).
 struct Modes {
@@ -45,20 +48,6 @@ std::vector<nc::NfpPiece> classify(const pendepth::PairDepth2::Impl& S, const st
   nc::nfp_classify(S, cands, out);
   if (pruned) *pruned += nc::nfp_trim_stats().dop_pruned;
   return out;
-}
-
-// Whether two piece lists differ (candidate or exact ends), and where.
-std::string difference(const std::vector<nc::NfpPiece>& got, const std::vector<nc::NfpPiece>& ref) {
-  if (got.size() != ref.size()) return "piece count " + std::to_string(got.size()) + " vs " + std::to_string(ref.size());
-  const Vec2 o(0, 0);
-  for (std::size_t k = 0; k < ref.size(); ++k) {
-    const nc::Ray& E = ref[k].E;
-    if (!(got[k].E.p0 == E.p0 && got[k].E.q0 == E.q0 && got[k].E.p1 == E.p1 && got[k].E.q1 == E.q1))
-      return "piece " + std::to_string(k) + " candidate";
-    if (nc::compare_params(got[k].lo, ref[k].lo, E, o) != 0) return "piece " + std::to_string(k) + " lo";
-    if (nc::compare_params(got[k].hi, ref[k].hi, E, o) != 0) return "piece " + std::to_string(k) + " hi";
-  }
-  return "";
 }
 
 struct Totals {
@@ -80,39 +69,25 @@ void check(const Polygon& P, const Polygon& Q, const std::string& what, bool cut
   for (const int trim : {nc::kTrimOff, nc::kTrimAuto, nc::kTrimAll}) {
     const auto off = classify(S, cands, nc::kDopOff, trim);
     const auto on = classify(S, cands, nc::kDopOn, trim, &t.pruned);
-    ASSERT_EQ(difference(on, off), "") << what << " (DOP / boxes only, trim mode " << trim << ")";
+    ASSERT_EQ(piece_difference(on, off), "") << what << " (DOP / boxes only, trim mode " << trim << ")";
     if (trim == nc::kTrimOff) ref = off;
   }
   if (cut) {
     std::vector<nc::NfpPiece> exact;
     for (const auto& c : cands)
       if (!c.redundant) nc::nfp_cut(S, c, exact);
-    ASSERT_EQ(difference(ref, exact), "") << what << " (DOP / reference cutting)";
+    ASSERT_EQ(piece_difference(ref, exact), "") << what << " (DOP / reference cutting)";
   }
   if (plant) {
     ++t.planted_tried;
-    t.planted_caught += !difference(classify(S, cands, nc::kDopPlanted, nc::kTrimOff), ref).empty();
+    t.planted_caught += !piece_difference(classify(S, cands, nc::kDopPlanted, nc::kTrimOff), ref).empty();
   }
   auto build = [&](int dop) {
     Modes m(dop, nc::kTrimAuto);
     return pendepth::NoFitPolygon2(P, Q);
   };
   const pendepth::NoFitPolygon2 a = build(nc::kDopOn), b = build(nc::kDopOff);
-  ASSERT_EQ(a.polygons().size(), b.polygons().size()) << what;
-  for (std::size_t i = 0; i < a.polygons().size(); ++i) {
-    ASSERT_EQ(a.polygons()[i].size(), b.polygons()[i].size()) << what;
-    for (std::size_t r = 0; r < a.polygons()[i].size(); ++r) {
-      const auto &x = a.polygons()[i][r], &y = b.polygons()[i][r];
-      ASSERT_EQ(x.size(), y.size()) << what << " polygon " << i << " ring " << r;
-      for (std::size_t v = 0; v < x.size(); ++v)
-        ASSERT_TRUE(x[v].x() == y[v].x() && x[v].y() == y[v].y()) << what << " polygon " << i << " ring " << r << " vertex " << v;
-    }
-  }
-  ASSERT_EQ(a.slits().size(), b.slits().size()) << what;
-  for (std::size_t i = 0; i < a.slits().size(); ++i)
-    for (int e = 0; e < 2; ++e) ASSERT_TRUE(a.slits()[i][e] == b.slits()[i][e]) << what << " slit " << i;
-  ASSERT_EQ(a.points().size(), b.points().size()) << what;
-  for (std::size_t i = 0; i < a.points().size(); ++i) ASSERT_TRUE(a.points()[i] == b.points()[i]) << what << " point " << i;
+  ASSERT_EQ(nfp_difference(a, b), "") << what;
   ++t.pairs, t.pieces += ref.size();
 }
 
@@ -184,8 +159,8 @@ TEST(NfpDop, ActsAndPlantedBugIsCaught) {
   const auto cands = nc::nfp_candidates(P, Q);
   std::size_t pruned = 0;
   const auto ref = classify(S, cands, nc::kDopOff, nc::kTrimOff);
-  ASSERT_EQ(difference(classify(S, cands, nc::kDopOn, nc::kTrimOff, &pruned), ref), "") << "star 3000 / L";
-  const std::string planted = difference(classify(S, cands, nc::kDopPlanted, nc::kTrimOff), ref);
+  ASSERT_EQ(piece_difference(classify(S, cands, nc::kDopOn, nc::kTrimOff, &pruned), ref), "") << "star 3000 / L";
+  const std::string planted = piece_difference(classify(S, cands, nc::kDopPlanted, nc::kTrimOff), ref);
   std::cout << "[nfp dop] star 3000 / L: " << cands.size() << " candidates, " << ref.size() << " pieces; node pairs pruned by the DOP "
             << pruned << "; planted wrong margin: " << (planted.empty() ? "not caught" : "caught (" + planted + ")") << "\n";
   EXPECT_GT(pruned, cands.size());

@@ -20,6 +20,7 @@
 #include <random>
 #include <string>
 
+#include "nfp_compare.hpp"
 #include "nfp_shapes.hpp"
 #include "nonconvex2/nfp_impl.hpp"
 #include "nonconvex2/strip_pieces.hpp"
@@ -31,6 +32,8 @@ namespace {
 using pendepth::Polygon;
 using pendepth::Vec2;
 namespace nc = pendepth::nonconvex2;
+using nonconvex2_test::nfp_difference;
+using nonconvex2_test::piece_difference;
 
 // Sets both modes, restored on scope exit (a failed assertion returns early).
 struct Modes {
@@ -48,19 +51,6 @@ std::vector<nc::NfpPiece> classify(const Polygon& P, const Polygon& Q, int strip
   nc::nfp_classify(S, cands, out);
   if (replaced) *replaced += nc::nfp_strip_stats().replaced;
   return out;
-}
-
-std::string difference(const std::vector<nc::NfpPiece>& got, const std::vector<nc::NfpPiece>& ref) {
-  if (got.size() != ref.size()) return "piece count " + std::to_string(got.size()) + " vs " + std::to_string(ref.size());
-  const Vec2 o(0, 0);
-  for (std::size_t k = 0; k < ref.size(); ++k) {
-    const nc::Ray& E = ref[k].E;
-    if (!(got[k].E.p0 == E.p0 && got[k].E.q0 == E.q0 && got[k].E.p1 == E.p1 && got[k].E.q1 == E.q1))
-      return "piece " + std::to_string(k) + " candidate";
-    if (nc::compare_params(got[k].lo, ref[k].lo, E, o) != 0) return "piece " + std::to_string(k) + " lo";
-    if (nc::compare_params(got[k].hi, ref[k].hi, E, o) != 0) return "piece " + std::to_string(k) + " hi";
-  }
-  return "";
 }
 
 struct Totals {
@@ -81,7 +71,7 @@ std::size_t check(const Polygon& P, const Polygon& Q, const std::string& what, b
   for (const int trim : {nc::kTrimOff, nc::kTrimAuto}) {
     const auto off = classify(P, Q, nc::kStripOff, trim);
     const auto on = classify(P, Q, nc::kStripOn, trim, &replaced);
-    EXPECT_EQ(difference(on, off), "") << what << " (Steiner pieces / parts, trim mode " << trim << ")";
+    EXPECT_EQ(piece_difference(on, off), "") << what << " (Steiner pieces / parts, trim mode " << trim << ")";
     if (trim == nc::kTrimOff) ref = off;
   }
   if (cut) {
@@ -89,11 +79,11 @@ std::size_t check(const Polygon& P, const Polygon& Q, const std::string& what, b
     std::vector<nc::NfpPiece> exact;
     for (const auto& c : nc::nfp_candidates(P, Q))
       if (!c.redundant) nc::nfp_cut(S, c, exact);
-    EXPECT_EQ(difference(classify(P, Q, nc::kStripOn, nc::kTrimOff), exact), "") << what << " (Steiner pieces / reference cutting)";
+    EXPECT_EQ(piece_difference(classify(P, Q, nc::kStripOn, nc::kTrimOff), exact), "") << what << " (Steiner pieces / reference cutting)";
   }
   if (plant) {
     ++t.planted_tried;
-    const bool caught = !difference(classify(P, Q, nc::kStripPlanted, nc::kTrimOff), ref).empty();
+    const bool caught = !piece_difference(classify(P, Q, nc::kStripPlanted, nc::kTrimOff), ref).empty();
     t.planted_caught += caught;
     if (caught) std::cout << "[nfp strip] planted wrong cover caught on " << what << "\n";
   }
@@ -102,21 +92,7 @@ std::size_t check(const Polygon& P, const Polygon& Q, const std::string& what, b
     return pendepth::NoFitPolygon2(P, Q);
   };
   const pendepth::NoFitPolygon2 a = build(nc::kStripOn), b = build(nc::kStripOff);
-  EXPECT_EQ(a.polygons().size(), b.polygons().size()) << what;
-  for (std::size_t i = 0; i < std::min(a.polygons().size(), b.polygons().size()); ++i) {
-    EXPECT_EQ(a.polygons()[i].size(), b.polygons()[i].size()) << what;
-    for (std::size_t r = 0; r < std::min(a.polygons()[i].size(), b.polygons()[i].size()); ++r) {
-      const auto &x = a.polygons()[i][r], &y = b.polygons()[i][r];
-      EXPECT_EQ(x.size(), y.size()) << what << " polygon " << i << " ring " << r;
-      for (std::size_t v = 0; v < std::min(x.size(), y.size()); ++v)
-        EXPECT_TRUE(x[v].x() == y[v].x() && x[v].y() == y[v].y()) << what << " polygon " << i << " ring " << r << " vertex " << v;
-    }
-  }
-  EXPECT_EQ(a.slits().size(), b.slits().size()) << what;
-  for (std::size_t i = 0; i < std::min(a.slits().size(), b.slits().size()); ++i)
-    for (int e = 0; e < 2; ++e) EXPECT_TRUE(a.slits()[i][e] == b.slits()[i][e]) << what << " slit " << i;
-  EXPECT_EQ(a.points().size(), b.points().size()) << what;
-  for (std::size_t i = 0; i < std::min(a.points().size(), b.points().size()); ++i) EXPECT_TRUE(a.points()[i] == b.points()[i]) << what << " point " << i;
+  EXPECT_EQ(nfp_difference(a, b), "") << what;
   ++t.pairs, t.pieces += ref.size(), t.replaced += replaced;
   return replaced;
 }
@@ -207,9 +183,9 @@ TEST(NfpStrip, ActsAndPlantedBugIsCaught) {
   const Polygon tooth = Polygon::simple(std::vector<Vec2>{{0, 0}, {kS, 0}, {kS, 10 * kS}, {0, 10 * kS}}, "tooth");
   const auto ref = classify(comb, tooth, nc::kStripOff, nc::kTrimOff);
   std::size_t replaced = 0;
-  EXPECT_EQ(difference(classify(comb, tooth, nc::kStripOn, nc::kTrimOff, &replaced), ref), "");
+  EXPECT_EQ(piece_difference(classify(comb, tooth, nc::kStripOn, nc::kTrimOff, &replaced), ref), "");
   EXPECT_GT(replaced, 0u);
-  const std::string planted = difference(classify(comb, tooth, nc::kStripPlanted, nc::kTrimOff), ref);
+  const std::string planted = piece_difference(classify(comb, tooth, nc::kStripPlanted, nc::kTrimOff), ref);
   std::cout << "[nfp strip] bumpy comb / tooth, 200 teeth: planted wrong cover " << (planted.empty() ? "not caught" : "caught (" + planted + ")")
             << "\n";
   EXPECT_NE(planted, "");

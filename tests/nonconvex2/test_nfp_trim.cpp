@@ -18,6 +18,7 @@
 #include <random>
 #include <string>
 
+#include "nfp_compare.hpp"
 #include "nfp_shapes.hpp"
 #include "nonconvex2/nfp_impl.hpp"
 #include "polygon2/shapes.hpp"
@@ -90,21 +91,7 @@ void check(const Polygon& P, const Polygon& Q, const std::string& what, bool cut
     TrimSwitch sw(nc::kTrimOff);
     return pendepth::NoFitPolygon2(P, Q);
   }();
-  ASSERT_EQ(a.polygons().size(), b.polygons().size()) << what;
-  for (std::size_t i = 0; i < a.polygons().size(); ++i) {
-    ASSERT_EQ(a.polygons()[i].size(), b.polygons()[i].size()) << what;
-    for (std::size_t r = 0; r < a.polygons()[i].size(); ++r) {
-      const auto &x = a.polygons()[i][r], &y = b.polygons()[i][r];
-      ASSERT_EQ(x.size(), y.size()) << what << " polygon " << i << " ring " << r;
-      for (std::size_t v = 0; v < x.size(); ++v)
-        ASSERT_TRUE(x[v].x() == y[v].x() && x[v].y() == y[v].y()) << what << " polygon " << i << " ring " << r << " vertex " << v;
-    }
-  }
-  ASSERT_EQ(a.slits().size(), b.slits().size()) << what;
-  for (std::size_t i = 0; i < a.slits().size(); ++i)
-    for (int e = 0; e < 2; ++e) ASSERT_TRUE(a.slits()[i][e] == b.slits()[i][e]) << what << " slit " << i;
-  ASSERT_EQ(a.points().size(), b.points().size()) << what;
-  for (std::size_t i = 0; i < a.points().size(); ++i) ASSERT_TRUE(a.points()[i] == b.points()[i]) << what << " point " << i;
+  ASSERT_EQ(nonconvex2_test::nfp_difference(a, b), "") << what;
   Totals& t = totals();
   ++t.pairs, t.dead += on.dead, t.trimmed += on.trimmed, t.meets_on += on.meets, t.meets_off += off.meets, t.pieces += ref.size();
 }
