@@ -328,10 +328,13 @@ bool clip_planes(const Ctx& c, std::size_t first, std::size_t count, const IV3& 
 // exact path's parametrisation), in intervals holding the exact values.
 struct LineI {
   IV3 u, x0;
-  I u2, l2;  // |u|², |x0|²
+  I u2, l2;                       // |u|², |x0|²
+  std::size_t f = 0, g = 0;       // the planes
+  mutable std::optional<V3> ue;   // the exact u, built on demand (exact_u)
 };
-LineI interval_line(const Plane& f, const Plane& g) {
+LineI interval_line(const Plane& f, const Plane& g, std::size_t fi, std::size_t gi) {
   LineI L;
+  L.f = fi, L.g = gi;
   L.u = cross(f.ni, g.ni);
   L.u2 = dot(L.u, L.u);
   L.x0 = (I(1) / L.u2) * (f.ci * cross(g.ni, L.u) + g.ci * cross(L.u, f.ni));
@@ -392,6 +395,32 @@ bool open_misses(const Ctx& c, const Sum& s, const IV3& x0, const IV3& u, double
   return false;
 }
 
+// The running best, and the cap reach² before there is one: points farther than reach are no
+// answer (σ <= upper < reach; the end returns nothing beyond it), so they are never offered.
+struct Best {
+  std::optional<FT> d2;
+  V3 x;
+  std::size_t plane = 0;
+  double radius;  // >= √d2 (or the search radius U), for the double prunes
+  FT cap2;        // reach², exact
+  double sup2;    // >= *d2, or >= cap2 without a best
+  // A point at squared distance e2 is no improvement: not nearer than the best, or beyond the cap.
+  bool beyond(const FT& e2) const { return d2 ? !(e2 < *d2) : e2 > cap2; }
+  // The same, certain on an enclosure of e2.
+  bool beyond(const I& e2) const { return d2 ? e2.inf() >= sup2 : e2.inf() > sup2; }
+};
+
+void offer(Best& b, const FT& d2, const V3& x, std::size_t plane) {
+  if (b.beyond(d2)) return;
+  b.d2 = d2, b.x = x, b.plane = plane, b.sup2 = CGAL::to_interval(d2).second;
+  b.radius = std::min(b.radius, std::sqrt(CGAL::to_double(d2)) * (1 + 0x1p-40) + 0x1p-1000);
+}
+
+const V3& exact_u(const Ctx& c, const LineI& L) {
+  if (!L.ue) L.ue = cross(exact_plane(c, L.f).n, exact_plane(c, L.g).n);
+  return *L.ue;
+}
+
 I imin(const I& a, const I& b) { return I(std::min(a.inf(), b.inf()), std::min(a.sup(), b.sup())); }
 I imax(const I& a, const I& b) { return I(std::max(a.inf(), b.inf()), std::max(a.sup(), b.sup())); }
 
@@ -407,14 +436,31 @@ Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I&
     }
     const Plane& pl = c.planes[p];
     const I a = dot(pl.ni, L.u), b = pl.ci - dot(pl.ni, L.x0);
-    if (certainly_zero(a)) {
+    // n·u near 0 is frequent (n parallel or nearly parallel to f's or g's normal: the same
+    // piece face in several sums, the faces of a symmetric mesh parallel up to rounding): its
+    // sign is taken from the exact numbers rather than giving up.
+    const CGAL::Sign sa = certainly_zero(a)        ? CGAL::ZERO
+                          : certainly_nonzero(a) ? (a.inf() > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE)
+                                                 : CGAL::sign(dot(exact_plane(c, p).n, exact_u(c, L)));
+    if (sa == CGAL::ZERO) {
       if (strict ? b.sup() <= 0 : b.sup() < 0) return Span::Empty;
       if (strict ? b.inf() > 0 : b.inf() >= 0) continue;
-      return Span::Unknown;
+      // b = 0 exactly when plane p is g's plane (a seam: S_k or S_l bounded by it too): the
+      // line lies in it, as for gp itself. Otherwise undecided.
+      if (!same_plane_any(c, p, L.g)) return Span::Unknown;
+      if (strict) return Span::Empty;
+      continue;
     }
-    if (!certainly_nonzero(a)) return Span::Unknown;
-    const I l = b / a;
-    if (a.inf() > 0) {
+    // λ = b/a (a of known sign): when a's enclosure holds 0, the side of λ that b's certain
+    // sign bounds (the other end unbounded).
+    I l;
+    if (certainly_nonzero(a)) l = b / a;
+    else if (!certainly_nonzero(b)) return Span::Unknown;
+    else if ((sa == CGAL::POSITIVE) == (b.inf() > 0))
+      l = I((I(b.inf() > 0 ? b.inf() : b.sup()) / I(sa == CGAL::POSITIVE ? a.sup() : a.inf())).inf(), INFINITY);
+    else
+      l = I(-INFINITY, (I(b.inf() > 0 ? b.inf() : b.sup()) / I(sa == CGAL::POSITIVE ? a.sup() : a.inf())).sup());
+    if (sa == CGAL::POSITIVE) {
       hi = has_hi ? imin(hi, l) : l, has_hi = true;
     } else {
       lo = has_lo ? imax(lo, l) : l, has_lo = true;
@@ -425,20 +471,29 @@ Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I&
   return (strict ? lo.sup() < hi.inf() : lo.sup() <= hi.inf()) ? Span::Range : Span::Unknown;
 }
 
+// Certainly: L's open interval in S (line_interval, strict) misses (a_inf, b_sup) ⊇ [a, b]:
+// the exact path would not list S among the covering intervals.
+bool cover_misses(const Ctx& c, const Sum& s, const LineI& L, std::size_t gp, double a_inf, double b_sup) {
+  if (open_misses(c, s, L.x0, L.u, a_inf, b_sup)) return true;
+  I lo, hi;
+  const Span sp = line_interval_i(c, s, L, true, lo, hi, gp);
+  return sp == Span::Empty || (sp == Span::Range && (hi.sup() <= a_inf || lo.inf() >= b_sup));
+}
+
 // The exact line stage (main loop) on the enclosures: true when it certainly offers nothing —
 // L ∩ S_k certainly empty, or every candidate point (a superset of the exact path's: the foot
 // of 0 clamped to [a, b], a, b, every covering interval's ends) certainly covered by an open
-// covering interval or certainly not nearer than the best (`best_sup` >= best σ², +inf without
-// one). False whenever a sign or an order is uncertain: the exact path decides.
+// covering interval or certainly beyond the best (Best::beyond). False whenever a sign or an
+// order is uncertain: the exact path decides.
 bool line_no_offer(const Ctx& c, const LineI& L, const Sum& sk, std::size_t gp, const std::vector<std::size_t>& cover,
-                   double best_sup, std::vector<std::pair<I, I>>& ivs) {
+                   const Best& best, std::vector<std::pair<I, I>>& ivs) {
   if (!(L.u2.inf() > 0)) return false;
   I a, b;
   const Span sp = line_interval_i(c, sk, L, false, a, b, gp);
   if (sp != Span::Range) return sp == Span::Empty;
   ivs.clear();
   for (std::size_t l : cover) {
-    if (open_misses(c, c.sums[l], L.x0, L.u, a.inf(), b.sup())) continue;
+    if (cover_misses(c, c.sums[l], L, gp, a.inf(), b.sup())) continue;
     I lo, hi;
     const Span sl = line_interval_i(c, c.sums[l], L, true, lo, hi, gp);
     if (sl == Span::Empty) continue;
@@ -448,7 +503,7 @@ bool line_no_offer(const Ctx& c, const LineI& L, const Sum& sk, std::size_t gp, 
     ivs.emplace_back(lo, hi);
   }
   auto settled = [&](const I& lam) {
-    if ((L.l2 + CGAL::square(lam) * L.u2).inf() >= best_sup) return true;
+    if (best.beyond(L.l2 + CGAL::square(lam) * L.u2)) return true;
     for (const auto& [lo, hi] : ivs)
       if (lo.sup() < lam.inf() && lam.sup() < hi.inf()) return true;
     return false;
@@ -497,18 +552,59 @@ bool line_interval(const Ctx& c, const Sum& s, const V3& x0, const V3& u, bool s
   return true;
 }
 
-struct Best {
-  std::optional<FT> d2;
-  V3 x;
-  std::size_t plane = 0;
-  double radius;  // >= √d2 (or the search radius U), for the double prunes
-};
-
-void offer(Best& b, const FT& d2, const V3& x, std::size_t plane) {
-  if (b.d2 && !(d2 < *b.d2)) return;
-  b.d2 = d2, b.x = x, b.plane = plane;
-  b.radius = std::min(b.radius, std::sqrt(CGAL::to_double(d2)) * (1 + 0x1p-40) + 0x1p-1000);
+// Enclosures of a superset of the vertices of the face f ∩ S_k = F_P(n) ⊕ −F_Q'(n) (n = f's
+// normal, S_k = P_i ⊕ −Q'_j, f a supporting plane): p − q' for every vertex p of P_i that may
+// maximise n·p and every q of Q_j that may minimise n·q' (interval comparisons against the
+// certain bounds: no vertex of either face is left out). Their hull contains the face.
+void face_points(const Ctx& c, std::size_t fi, std::vector<IV3>& pts) {
+  const Plane& f = c.planes[fi];
+  const Sum& s = c.sums[f.sum];
+  const convex3::PolytopeData &P = data_p(c, s), &Q = data_q(c, s);
+  std::vector<IV3> ps, qs;
+  std::vector<I> hp, hq;
+  double maxp = -INFINITY, minq = INFINITY;  // certain: max n·p >= maxp, min n·q' <= minq
+  for (const Vec3& v : P.v) {
+    ps.push_back(lift<I>(v)), hp.push_back(dot(f.ni, ps.back()));
+    maxp = std::max(maxp, hp.back().inf());
+  }
+  for (const Vec3& v : Q.v) {
+    qs.push_back(placed<I>(c.pl, v)), hq.push_back(dot(f.ni, qs.back()));
+    minq = std::min(minq, hq.back().sup());
+  }
+  pts.clear();
+  for (std::size_t a = 0; a < ps.size(); ++a)
+    if (hp[a].sup() >= maxp)
+      for (std::size_t b = 0; b < qs.size(); ++b)
+        if (hq[b].inf() <= minq) pts.push_back(ps[a] - qs[b]);
 }
+
+// The face f ∩ S_k certainly lies in the open S_l of one other sum: then R_f = f ∩ S_k \ ∪ int
+// S_l is empty and f holds no point of Oᶜ (the exact path would offer nothing from f). Checks
+// the face_points against S_l's planes (strictly inside, certain) — the hull of points of a
+// convex open set lies in it. Sums whose box does not certainly hold the points are skipped.
+// O(K·f̄·v) interval operations at worst (v face points, usually 3–4), most sums rejected by
+// their box or their first planes.
+bool face_inside_one_sum(const Ctx& c, std::size_t fi, std::vector<IV3>& pts) {
+  face_points(c, fi, pts);
+  Box3 b{Vec3::Constant(INFINITY), Vec3::Constant(-INFINITY)};
+  for (const IV3& x : pts)
+    for (int a = 0; a < 3; ++a) b.lo[a] = std::min(b.lo[a], comp(x, a).inf()), b.hi[a] = std::max(b.hi[a], comp(x, a).sup());
+  for (std::size_t l = 0; l < c.sums.size(); ++l) {
+    const Sum& s = c.sums[l];
+    if (l == c.planes[fi].sum || !(s.box.lo.array() < b.lo.array()).all() || !(b.hi.array() < s.box.hi.array()).all())
+      continue;
+    bool inside = true;
+    for (std::size_t p = s.first; p < s.first + s.count && inside; ++p)
+      for (const IV3& x : pts)
+        if (!((dot(c.planes[p].ni, x) - c.planes[p].ci).sup() < 0)) {
+          inside = false;
+          break;
+        }
+    if (inside) return true;
+  }
+  return false;
+}
+
 
 Feature3 feat(FeatureKind3 k, int i) { return Feature3{k, i}; }
 
@@ -558,6 +654,8 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
 
   Best best;
   best.radius = reach;
+  best.cap2 = FT(reach) * FT(reach);
+  best.sup2 = CGAL::to_interval(best.cap2).second;
   auto near = [&](double d) { return d * (1 - 0x1p-40) <= best.radius; };
   std::vector<std::size_t> cover;    // sums whose box meets B(0, best.radius): they cover
   std::vector<std::size_t> sources;  // the same and f's own sum: their planes cut f's lines
@@ -565,11 +663,13 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
   c.on_f.assign(c.planes.size(), 0);
   std::size_t lines = 0;
   std::vector<std::pair<I, I>> ivs_i;  // line_no_offer's scratch
+  std::vector<IV3> face;               // face_inside_one_sum's scratch
   for (std::size_t fi : order) {
     const Plane& f = c.planes[fi];
     if (!near(f.dist)) break;
     const Sum& sk = c.sums[f.sum];
     if (!near(sk.box_dist)) continue;  // f ⊂ S_k lies beyond the best
+    if (c.filt && !skip_cover && face_inside_one_sum(c, fi, face)) continue;  // R_f = ∅
     cover.clear(), sources.clear();
     for (std::size_t p : marked) c.on_f[p] = 0;
     marked.clear();
@@ -591,7 +691,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
     if (CGAL::is_zero(n2)) continue;  // a degenerate candidate normal supports nothing
     // The foot of 0 on plane(f).
     const FT d2 = fe.c * fe.c / n2;
-    if (best.d2 && !(d2 < *best.d2)) continue;
+    if (best.beyond(d2)) continue;
     const V3 p = (fe.c / n2) * fe.n;
     const IV3 pi = iv(p);
     if (in_closed(c, sk, p, pi, fi)) {
@@ -614,9 +714,9 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
         if (gi == fi || !near(g.dist)) continue;
         const double bound2 = best.d2 ? CGAL::to_interval(*best.d2).second : reach * reach * (1 + 0x1p-40);
         if (c.filt) {
-          const LineI L = interval_line(f, g);
+          const LineI L = interval_line(f, g, fi, gi);
           if (line_far(c, L, sk, sl, bound2) ||
-              line_no_offer(c, L, sk, gi, cover, best.d2 ? bound2 : INFINITY, ivs_i))
+              line_no_offer(c, L, sk, gi, cover, best, ivs_i))
             continue;
         }
         const ExactPlane& ge = exact_plane(c, gi);
@@ -625,17 +725,17 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
         const FT u2 = dot(u, u);
         const V3 x0 = (FT(1) / u2) * (fe.c * cross(ge.n, u) + ge.c * cross(u, fe.n));
         const FT l2 = dot(x0, x0);
-        if (best.d2 && !(l2 < *best.d2)) continue;
+        if (best.beyond(l2)) continue;
         std::optional<FT> a, b;
         if (!line_interval(c, sk, x0, u, false, a, b, gi)) continue;
         if (!a || !b) continue;  // unreachable: S_k is bounded
         ++lines;
         // Covering open intervals (the ones meeting [a, b]).
         std::vector<std::pair<FT, FT>> ivs;
-        const IV3 x0i = iv(x0), ui = iv(u);
+        const LineI Le{iv(u), iv(x0), iv(u2), iv(l2), fi, gi, u};
         const double a_inf = CGAL::to_interval(*a).first, b_sup = CGAL::to_interval(*b).second;
         for (std::size_t l2i : cover) {
-          if (c.filt && open_misses(c, c.sums[l2i], x0i, ui, a_inf, b_sup)) continue;
+          if (c.filt && cover_misses(c, c.sums[l2i], Le, gi, a_inf, b_sup)) continue;
           std::optional<FT> lo, hi;
           if (!line_interval(c, c.sums[l2i], x0, u, true, lo, hi, gi) || !lo || !hi) continue;
           if (*hi <= *a || *lo >= *b) continue;
@@ -651,7 +751,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
         std::sort(cand.begin(), cand.end(), [](const FT& x, const FT& y) { return CGAL::abs(x) < CGAL::abs(y); });
         for (const FT& lam : cand) {
           const FT e2 = l2 + lam * lam * u2;
-          if (best.d2 && !(e2 < *best.d2)) break;
+          if (best.beyond(e2)) break;
           bool covered = false;
           for (const auto& [lo, hi] : ivs)
             if (lo < lam && lam < hi) {
