@@ -12,12 +12,13 @@
 // nearest 0 is the foot of 0 on L when uncovered, else an uncovered interval end.
 //
 // Representation: every S_k by its supporting planes n·x <= c from convex3::minkowski_facets (a
-// superset of its facet normals, each plane supporting S_k: offset = support value), rebuilt
-// exactly from the defining features as CGAL lazy exact numbers (Epeck::FT: interval filters,
-// rationals only near ties) — q' = R q + tq − tp exactly for the doubles R, tq, tp as in the
-// convex engines. Every decision (inside / strictly inside / interval order / distance order)
-// is an exact comparison; σ² is rational, σ = RN(√σ²) with a certified 1-ulp bracket.
-//
+// superset of its facet normals, each plane supporting S_k: offset = support value), held as
+// interval enclosures of the exact polynomials in the input doubles (Interval_nt on the same
+// expressions: a proven forward error bound) and rebuilt exactly as CGAL lazy exact numbers
+// (Epeck::FT) only when a filter cannot decide (exact_plane, on demand) — q' = R q + tq − tp
+// exactly for the doubles R, tq, tp as in the convex engines. Every decision (inside / strictly
+// inside / interval order / distance order) is an exact comparison; σ² is rational,
+// σ = RN(√σ²) with a certified 1-ulp bracket.
 // Ties handled structurally (exact tests, both tiers): planes of one sum that are the same
 // half-space (minkowski_facets repeats a plane through FaceP / FaceQ / EdgeEdge candidates) are
 // kept once; for each facet plane f, the planes of the sums in range equal to plane(f) (either
@@ -33,15 +34,26 @@
 // active at x and not parallel to f), and drops sums whose box certainly misses plane(f). Under a
 // SigmaExactUnfiltered guard every decision is exact and those prunes are off: the reference the
 // filtered tier must equal bit for bit (tests/mesh3/test_mesh_sigma_tiers.cpp).
-// Pruning by the certified upper bound U (today's least σ_d): only sums whose box meets B(0, U)
-// can matter, only facets whose plane lies within the running best, processed nearest plane
-// first and stopping when the next plane is farther than the best; lines only from planes
+// Filtered tier, further (both decide nothing the exact path would not): a facet whose face
+// f ∩ S_k lies in the open S_l of one other sum (face_inside_one_sum: enclosures of a superset
+// of the face's vertices, each certainly strictly inside) has R_f = ∅ and is skipped; a line is
+// first run on enclosures (line_no_offer: its segment in S_k, the covering intervals, every
+// candidate certainly covered or certainly beyond the best), signs of n·u near 0 (planes nearly
+// parallel to the line: rounding in symmetric meshes) taken exactly, a plane equal to g's
+// (seams) by the exact plane test; the exact line stage runs only when that is undecided.
+// Pruning by the certified upper bound U (today's least σ_d): no point farther than reach
+// (U widened by 2⁻³⁰) is ever offered (Best::beyond: it cannot be the answer); only sums whose
+// box meets B(0, U) can matter, only facets whose plane lies within the running best,
+// processed nearest plane first and stopping when the next plane is farther than the best; lines only from planes
 // within the best, covering sets only from sums whose box meets B(0, best). The double
 // distances used for pruning are accurate to a few ulps (minkowski_facets) and compared with a
 // 2⁻⁴⁰ relative margin, so pruning never drops a candidate nearer than the best.
 // Cost: for F facets in range and K sums, O(F) projections of O(K·f̄) tests each, and up to
 // O(F²) lines of O(K·f̄ + K²) each in the worst case (f̄ = facets per sum); in practice the
-// projections settle most facets.
+// projections settle most facets. Measured (docs/benchmarks.md "Exact mesh σ: interval planes,
+// one-sum facet cover"): the tori and the tripod are still beyond reach — their facets near 0
+// are covered by unions of several sums and nearly coplanar planes (rounded symmetric meshes)
+// send lines to the exact stage, each exact line costs tens of ms over ~300 covering sums.
 #include "mesh3/mesh_sigma_exact.hpp"
 
 #include "convex3/minkowski_facets.hpp"
@@ -331,6 +343,7 @@ struct LineI {
   I u2, l2;                       // |u|², |x0|²
   std::size_t f = 0, g = 0;       // the planes
   mutable std::optional<V3> ue;   // the exact u, built on demand (exact_u)
+  mutable std::optional<V3> x0e;  // the exact x0, built on demand (exact_x0)
 };
 LineI interval_line(const Plane& f, const Plane& g, std::size_t fi, std::size_t gi) {
   LineI L;
@@ -421,6 +434,15 @@ const V3& exact_u(const Ctx& c, const LineI& L) {
   return *L.ue;
 }
 
+const V3& exact_x0(const Ctx& c, const LineI& L) {
+  if (!L.x0e) {
+    const ExactPlane &f = exact_plane(c, L.f), &g = exact_plane(c, L.g);
+    const V3& u = exact_u(c, L);
+    L.x0e = (FT(1) / dot(u, u)) * (f.c * cross(g.n, u) + g.c * cross(u, f.n));
+  }
+  return *L.x0e;
+}
+
 I imin(const I& a, const I& b) { return I(std::min(a.inf(), b.inf()), std::min(a.sup(), b.sup())); }
 I imax(const I& a, const I& b) { return I(std::max(a.inf(), b.inf()), std::max(a.sup(), b.sup())); }
 
@@ -442,21 +464,26 @@ Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I&
     const CGAL::Sign sa = certainly_zero(a)        ? CGAL::ZERO
                           : certainly_nonzero(a) ? (a.inf() > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE)
                                                  : CGAL::sign(dot(exact_plane(c, p).n, exact_u(c, L)));
+    // b near 0 too: plane p nearly holds the line (equal to g's plane at a seam, or nearly
+    // coplanar with f or g in a rounded symmetric mesh): b exactly, and λ exactly when a != 0
+    // (the exact number's enclosure after its exact evaluation is tight).
+    std::optional<FT> be;
+    if (!certainly_nonzero(a) && !certainly_nonzero(b) && !certainly_zero(b))
+      be = exact_plane(c, p).c - dot(exact_plane(c, p).n, exact_x0(c, L));
     if (sa == CGAL::ZERO) {
-      if (strict ? b.sup() <= 0 : b.sup() < 0) return Span::Empty;
-      if (strict ? b.inf() > 0 : b.inf() >= 0) continue;
-      // b = 0 exactly when plane p is g's plane (a seam: S_k or S_l bounded by it too): the
-      // line lies in it, as for gp itself. Otherwise undecided.
-      if (!same_plane_any(c, p, L.g)) return Span::Unknown;
-      if (strict) return Span::Empty;
+      const CGAL::Sign sb = be ? CGAL::sign(*be) : b.inf() > 0 ? CGAL::POSITIVE : b.sup() < 0 ? CGAL::NEGATIVE : CGAL::ZERO;
+      if (strict ? sb != CGAL::POSITIVE : sb == CGAL::NEGATIVE) return Span::Empty;
       continue;
     }
     // λ = b/a (a of known sign): when a's enclosure holds 0, the side of λ that b's certain
     // sign bounds (the other end unbounded).
     I l;
     if (certainly_nonzero(a)) l = b / a;
-    else if (!certainly_nonzero(b)) return Span::Unknown;
-    else if ((sa == CGAL::POSITIVE) == (b.inf() > 0))
+    else if (be) {
+      FT le = *be / dot(exact_plane(c, p).n, exact_u(c, L));
+      le.exact();
+      l = iv(le);
+    } else if ((sa == CGAL::POSITIVE) == (b.inf() > 0))
       l = I((I(b.inf() > 0 ? b.inf() : b.sup()) / I(sa == CGAL::POSITIVE ? a.sup() : a.inf())).inf(), INFINITY);
     else
       l = I(-INFINITY, (I(b.inf() > 0 ? b.inf() : b.sup()) / I(sa == CGAL::POSITIVE ? a.sup() : a.inf())).sup());
@@ -588,7 +615,8 @@ bool face_inside_one_sum(const Ctx& c, std::size_t fi, std::vector<IV3>& pts) {
   face_points(c, fi, pts);
   Box3 b{Vec3::Constant(INFINITY), Vec3::Constant(-INFINITY)};
   for (const IV3& x : pts)
-    for (int a = 0; a < 3; ++a) b.lo[a] = std::min(b.lo[a], comp(x, a).inf()), b.hi[a] = std::max(b.hi[a], comp(x, a).sup());
+    for (int a = 0; a < 3; ++a)
+      b.lo[a] = std::min(b.lo[a], comp(x, a).inf()), b.hi[a] = std::max(b.hi[a], comp(x, a).sup());
   for (std::size_t l = 0; l < c.sums.size(); ++l) {
     const Sum& s = c.sums[l];
     if (l == c.planes[fi].sum || !(s.box.lo.array() < b.lo.array()).all() || !(b.hi.array() < s.box.hi.array()).all())
@@ -732,7 +760,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
         ++lines;
         // Covering open intervals (the ones meeting [a, b]).
         std::vector<std::pair<FT, FT>> ivs;
-        const LineI Le{iv(u), iv(x0), iv(u2), iv(l2), fi, gi, u};
+        const LineI Le{iv(u), iv(x0), iv(u2), iv(l2), fi, gi, u, x0};
         const double a_inf = CGAL::to_interval(*a).first, b_sup = CGAL::to_interval(*b).second;
         for (std::size_t l2i : cover) {
           if (c.filt && cover_misses(c, c.sums[l2i], Le, gi, a_inf, b_sup)) continue;

@@ -101,7 +101,8 @@ TEST(MeshSigmaTiers, FilteredEqualsExactCgalMeshes) {
   std::mt19937_64 rng(7);
   int n = 0;
   for (const char* name : {"cross.off", "star.off"}) {
-    const Shape3 s = Shape3::from_mesh(Mesh3::validate(io::read_mesh(std::string(PENDEPTH_CGAL_MESHES) + "/" + name), name));
+    const std::string file = std::string(PENDEPTH_CGAL_MESHES) + "/" + name;
+    const Shape3 s = Shape3::from_mesh(Mesh3::validate(io::read_mesh(file), name));
     n += compare_tiers(s, s, rng, 3, 0.3, false, name, true).first;
   }
   EXPECT_GE(n, 4);
