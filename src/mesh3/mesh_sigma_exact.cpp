@@ -471,7 +471,10 @@ Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I&
     if (!certainly_nonzero(a) && !certainly_nonzero(b) && !certainly_zero(b))
       be = exact_plane(c, p).c - dot(exact_plane(c, p).n, exact_x0(c, L));
     if (sa == CGAL::ZERO) {
-      const CGAL::Sign sb = be ? CGAL::sign(*be) : b.inf() > 0 ? CGAL::POSITIVE : b.sup() < 0 ? CGAL::NEGATIVE : CGAL::ZERO;
+      const CGAL::Sign sb = be ? CGAL::sign(*be)
+                            : b.inf() > 0 ? CGAL::POSITIVE
+                            : b.sup() < 0 ? CGAL::NEGATIVE
+                                          : CGAL::ZERO;
       if (strict ? sb != CGAL::POSITIVE : sb == CGAL::NEGATIVE) return Span::Empty;
       continue;
     }
