@@ -12,12 +12,13 @@
 // nearest 0 is the foot of 0 on L when uncovered, else an uncovered interval end.
 //
 // Representation: every S_k by its supporting planes n·x <= c from convex3::minkowski_facets (a
-// superset of its facet normals, each plane supporting S_k: offset = support value), rebuilt
-// exactly from the defining features as CGAL lazy exact numbers (Epeck::FT: interval filters,
-// rationals only near ties) — q' = R q + tq − tp exactly for the doubles R, tq, tp as in the
-// convex engines. Every decision (inside / strictly inside / interval order / distance order)
-// is an exact comparison; σ² is rational, σ = RN(√σ²) with a certified 1-ulp bracket.
-//
+// superset of its facet normals, each plane supporting S_k: offset = support value), held as
+// interval enclosures of the exact polynomials in the input doubles (Interval_nt on the same
+// expressions: a proven forward error bound) and rebuilt exactly as CGAL lazy exact numbers
+// (Epeck::FT) only when a filter cannot decide (exact_plane, on demand) — q' = R q + tq − tp
+// exactly for the doubles R, tq, tp as in the convex engines. Every decision (inside / strictly
+// inside / interval order / distance order) is an exact comparison; σ² is rational,
+// σ = RN(√σ²) with a certified 1-ulp bracket.
 // Ties handled structurally (exact tests, both tiers): planes of one sum that are the same
 // half-space (minkowski_facets repeats a plane through FaceP / FaceQ / EdgeEdge candidates) are
 // kept once; for each facet plane f, the planes of the sums in range equal to plane(f) (either
@@ -33,15 +34,26 @@
 // active at x and not parallel to f), and drops sums whose box certainly misses plane(f). Under a
 // SigmaExactUnfiltered guard every decision is exact and those prunes are off: the reference the
 // filtered tier must equal bit for bit (tests/mesh3/test_mesh_sigma_tiers.cpp).
-// Pruning by the certified upper bound U (today's least σ_d): only sums whose box meets B(0, U)
-// can matter, only facets whose plane lies within the running best, processed nearest plane
-// first and stopping when the next plane is farther than the best; lines only from planes
+// Filtered tier, further (both decide nothing the exact path would not): a facet whose face
+// f ∩ S_k lies in the open S_l of one other sum (face_inside_one_sum: enclosures of a superset
+// of the face's vertices, each certainly strictly inside) has R_f = ∅ and is skipped; a line is
+// first run on enclosures (line_no_offer: its segment in S_k, the covering intervals, every
+// candidate certainly covered or certainly beyond the best), signs of n·u near 0 (planes nearly
+// parallel to the line: rounding in symmetric meshes) taken exactly, a plane equal to g's
+// (seams) by the exact plane test; the exact line stage runs only when that is undecided.
+// Pruning by the certified upper bound U (today's least σ_d): no point farther than reach
+// (U widened by 2⁻³⁰) is ever offered (Best::beyond: it cannot be the answer); only sums whose
+// box meets B(0, U) can matter, only facets whose plane lies within the running best,
+// processed nearest plane first and stopping when the next plane is farther than the best; lines only from planes
 // within the best, covering sets only from sums whose box meets B(0, best). The double
 // distances used for pruning are accurate to a few ulps (minkowski_facets) and compared with a
 // 2⁻⁴⁰ relative margin, so pruning never drops a candidate nearer than the best.
 // Cost: for F facets in range and K sums, O(F) projections of O(K·f̄) tests each, and up to
 // O(F²) lines of O(K·f̄ + K²) each in the worst case (f̄ = facets per sum); in practice the
-// projections settle most facets.
+// projections settle most facets. Measured (docs/benchmarks.md "Exact mesh σ: interval planes,
+// one-sum facet cover"): the tori and the tripod are still beyond reach — their facets near 0
+// are covered by unions of several sums and nearly coplanar planes (rounded symmetric meshes)
+// send lines to the exact stage, each exact line costs tens of ms over ~300 covering sums.
 #include "mesh3/mesh_sigma_exact.hpp"
 
 #include "convex3/minkowski_facets.hpp"
@@ -61,27 +73,42 @@ namespace {
 using FT = CGAL::Exact_predicates_exact_constructions_kernel::FT;
 using I = CGAL::Interval_nt<true>;  // the filter: intervals that hold the exact values
 
-struct IV3 {
-  I x, y, z;
+// Vectors of exact numbers (V3) or of intervals (IV3): the same polynomials in both.
+template <class T>
+struct Vec {
+  T x, y, z;
 };
+using V3 = Vec<FT>;
+using IV3 = Vec<I>;
+template <class T>
+Vec<T> lift(const Vec3& v) {
+  return {T(v.x()), T(v.y()), T(v.z())};
+}
+template <class T>
+Vec<T> operator-(const Vec<T>& a, const Vec<T>& b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+template <class T>
+Vec<T> operator+(const Vec<T>& a, const Vec<T>& b) {
+  return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+template <class T>
+Vec<T> operator*(const T& s, const Vec<T>& a) {
+  return {s * a.x, s * a.y, s * a.z};
+}
+template <class T>
+T dot(const Vec<T>& a, const Vec<T>& b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+template <class T>
+Vec<T> cross(const Vec<T>& a, const Vec<T>& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
 I iv(const FT& v) {
   const auto r = CGAL::to_interval(v);
   return I(r.first, r.second);
 }
-I dot(const IV3& a, const IV3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-IV3 cross(const IV3& a, const IV3& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-IV3 operator+(const IV3& a, const IV3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-IV3 operator*(const I& s, const IV3& a) { return {s * a.x, s * a.y, s * a.z}; }
-
-struct V3 {
-  FT x, y, z;
-};
-V3 lift(const Vec3& v) { return {FT(v.x()), FT(v.y()), FT(v.z())}; }
-V3 operator-(const V3& a, const V3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-V3 operator+(const V3& a, const V3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
-V3 operator*(const FT& s, const V3& a) { return {s * a.x, s * a.y, s * a.z}; }
-FT dot(const V3& a, const V3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-V3 cross(const V3& a, const V3& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+IV3 iv(const V3& v) { return {iv(v.x), iv(v.y), iv(v.z)}; }
 bool is_zero(const V3& a) { return CGAL::is_zero(a.x) && CGAL::is_zero(a.y) && CGAL::is_zero(a.z); }
 Vec3 to_vec(const V3& a) { return {CGAL::to_double(a.x), CGAL::to_double(a.y), CGAL::to_double(a.z)}; }
 
@@ -93,15 +120,19 @@ double box_distance(const Box3& b) {  // distance from 0 to the box, rounded
   return c.norm();
 }
 
-// A supporting plane n·x <= c of a sum, with its defining candidate.
+// A supporting plane n·x <= c of a sum, with its defining candidate: the enclosures of n and c
+// (intervals of the same polynomials evaluated on the input doubles: a proven forward error
+// bound); the exact n and c are built on demand (exact_plane) when a filter cannot decide.
 struct Plane {
-  V3 n;
-  FT c;
-  IV3 ni;  // intervals of n and c
+  IV3 ni;
   I ci;
   double dist = 0;  // |c|/|n|, a few ulps
   std::size_t sum = 0;
   convex3::FacetCandidate k;
+};
+struct ExactPlane {
+  V3 n;
+  FT c;
 };
 
 struct Sum {
@@ -116,63 +147,92 @@ struct Ctx {
   Placed pl;
   std::vector<Sum> sums;
   std::vector<Plane> planes;
-  std::vector<V3> qcache;  // placed Q vertices of the current pair
   bool filt = true;        // the interval tier (false: SigmaExactUnfiltered, every decision exact)
   bool planted = false;    // tests: the planted bug in the filtered prunes
   std::vector<char> on_f;  // planes equal to the current plane(f), either side (exact)
+  mutable std::vector<std::optional<ExactPlane>> exact;  // planes[p]'s exact numbers, on demand
 };
 
-V3 placed(const Placed& pl, const Vec3& q) {
-  V3 r;
-  FT* out[3] = {&r.x, &r.y, &r.z};
+template <class T>
+Vec<T> placed(const Placed& pl, const Vec3& q) {
+  T r[3];
   for (int a = 0; a < 3; ++a)
-    *out[a] = FT(pl.R(a, 0)) * FT(q.x()) + FT(pl.R(a, 1)) * FT(q.y()) + FT(pl.R(a, 2)) * FT(q.z()) + FT(pl.tq[a]) -
-              FT(pl.tp[a]);
-  return r;
+    r[a] = T(pl.R(a, 0)) * T(q.x()) + T(pl.R(a, 1)) * T(q.y()) + T(pl.R(a, 2)) * T(q.z()) + T(pl.tq[a]) - T(pl.tp[a]);
+  return {r[0], r[1], r[2]};
 }
-V3 rotated(const Placed& pl, const V3& e) {
-  return {FT(pl.R(0, 0)) * e.x + FT(pl.R(0, 1)) * e.y + FT(pl.R(0, 2)) * e.z,
-          FT(pl.R(1, 0)) * e.x + FT(pl.R(1, 1)) * e.y + FT(pl.R(1, 2)) * e.z,
-          FT(pl.R(2, 0)) * e.x + FT(pl.R(2, 1)) * e.y + FT(pl.R(2, 2)) * e.z};
+template <class T>
+Vec<T> rotated(const Placed& pl, const Vec<T>& e) {
+  return {T(pl.R(0, 0)) * e.x + T(pl.R(0, 1)) * e.y + T(pl.R(0, 2)) * e.z,
+          T(pl.R(1, 0)) * e.x + T(pl.R(1, 1)) * e.y + T(pl.R(1, 2)) * e.z,
+          T(pl.R(2, 0)) * e.x + T(pl.R(2, 1)) * e.y + T(pl.R(2, 2)) * e.z};
 }
 
-// The exact plane of a candidate (the normals of minkowski_facets, the same polynomials).
-Plane plane_of(const Placed& pl, const convex3::PolytopeData& P, const convex3::PolytopeData& Q,
-               const convex3::FacetCandidate& k) {
+// The plane n·x <= c of a candidate (the normals of minkowski_facets, the same polynomials), in
+// exact numbers (T = FT) or intervals (T = I: throws CGAL::Uncertain_conversion_exception when
+// the orientation of an edge–edge normal is not certain).
+template <class T>
+std::pair<Vec<T>, T> plane_poly(const Placed& pl, const convex3::PolytopeData& P, const convex3::PolytopeData& Q,
+                                const convex3::FacetCandidate& k) {
   const convex3::DKLevel &LP = P.levels[0], &LQ = Q.levels[0];
-  V3 u;
+  Vec<T> u;
   switch (k.source) {
     case convex3::FacetSource::FaceP: {
       const auto& t = P.tris[k.p_feature];
-      const V3 a = lift(P.v[t[0]]);
-      u = cross(lift(P.v[t[1]]) - a, lift(P.v[t[2]]) - a);
+      const Vec<T> a = lift<T>(P.v[t[0]]);
+      u = cross(lift<T>(P.v[t[1]]) - a, lift<T>(P.v[t[2]]) - a);
       break;
     }
     case convex3::FacetSource::FaceQ: {
       const auto& t = Q.tris[k.q_feature];
-      const V3 a = lift(Q.v[t[0]]);
-      u = cross(rotated(pl, lift(Q.v[t[2]]) - a), rotated(pl, lift(Q.v[t[1]]) - a));
+      const Vec<T> a = lift<T>(Q.v[t[0]]);
+      u = cross(rotated(pl, lift<T>(Q.v[t[2]]) - a), rotated(pl, lift<T>(Q.v[t[1]]) - a));
       break;
     }
     case convex3::FacetSource::EdgeEdge: {
-      const V3 ep = lift(P.v[LP.target(k.p_feature)]) - lift(P.v[LP.origin(k.p_feature)]);
-      const V3 eq = rotated(pl, lift(Q.v[LQ.target(k.q_feature)]) - lift(Q.v[LQ.origin(k.q_feature)]));
+      const Vec<T> ep = lift<T>(P.v[LP.target(k.p_feature)]) - lift<T>(P.v[LP.origin(k.p_feature)]);
+      const Vec<T> eq = rotated(pl, lift<T>(Q.v[LQ.target(k.q_feature)]) - lift<T>(Q.v[LQ.origin(k.q_feature)]));
       u = cross(ep, eq);
       // minkowski_facets orients u by the edges' extremality; recover the sign from P's apex.
-      const V3 pc = lift(P.v[LP.target(LP.next(k.p_feature))]), pe = lift(P.v[LP.target(LP.next(LP.twin[k.p_feature]))]);
-      const V3 pa = lift(P.v[LP.origin(k.p_feature)]);
-      const FT s1 = dot(u, pc - pa), s2 = dot(u, pe - pa);
-      if (CGAL::is_positive(s1) || CGAL::is_positive(s2)) u = FT(-1) * u;
+      const Vec<T> pc = lift<T>(P.v[LP.target(LP.next(k.p_feature))]);
+      const Vec<T> pe = lift<T>(P.v[LP.target(LP.next(LP.twin[k.p_feature]))]);
+      const Vec<T> pa = lift<T>(P.v[LP.origin(k.p_feature)]);
+      const T s1 = dot(u, pc - pa), s2 = dot(u, pe - pa);
+      if (CGAL::is_positive(s1) || CGAL::is_positive(s2)) u = T(-1) * u;
       break;
     }
   }
+  const T c = dot(u, lift<T>(P.v[k.p_vertex]) - placed<T>(pl, Q.v[k.q_vertex]));
+  return {u, c};
+}
+
+const convex3::PolytopeData& data_p(const Ctx& c, const Sum& s) { return convex3::data_of(c.m.P[s.i]); }
+const convex3::PolytopeData& data_q(const Ctx& c, const Sum& s) { return convex3::data_of(c.m.Q[s.j]); }
+
+// The exact numbers of planes[p] (built once, on first use).
+const ExactPlane& exact_plane(const Ctx& c, std::size_t p) {
+  auto& e = c.exact[p];
+  if (!e) {
+    const Sum& s = c.sums[c.planes[p].sum];
+    auto [n, off] = plane_poly<FT>(c.pl, data_p(c, s), data_q(c, s), c.planes[p].k);
+    e = ExactPlane{std::move(n), std::move(off)};
+  }
+  return *e;
+}
+
+// A candidate's plane as intervals; when its orientation is uncertain in intervals, from the
+// exact numbers (then stored in `exact`).
+Plane plane_of(const Placed& pl, const convex3::PolytopeData& P, const convex3::PolytopeData& Q,
+               const convex3::FacetCandidate& k, std::optional<ExactPlane>& exact) {
   Plane r;
-  r.n = u;
-  r.c = dot(u, lift(P.v[k.p_vertex]) - placed(pl, Q.v[k.q_vertex]));
-  r.ni = {iv(u.x), iv(u.y), iv(u.z)};
-  r.ci = iv(r.c);
   r.dist = std::abs(k.distance);
   r.k = k;
+  try {
+    std::tie(r.ni, r.ci) = plane_poly<I>(pl, P, Q, k);
+  } catch (const CGAL::Uncertain_conversion_exception&) {
+    auto [n, off] = plane_poly<FT>(pl, P, Q, k);
+    r.ni = iv(n), r.ci = iv(off);
+    exact = ExactPlane{std::move(n), std::move(off)};
+  }
   return r;
 }
 
@@ -180,36 +240,49 @@ bool certainly_nonzero(const I& v) { return v.inf() > 0 || v.sup() < 0; }
 bool certainly_zero(const I& v) { return v.inf() == 0 && v.sup() == 0; }
 
 // n = 0 exactly (exact when the filter cannot tell).
-bool zero_normal(const Plane& a, bool filt) {
-  if (filt) {
+bool zero_normal(const Ctx& c, std::size_t p) {
+  const Plane& a = c.planes[p];
+  if (c.filt) {
     if (certainly_nonzero(a.ni.x) || certainly_nonzero(a.ni.y) || certainly_nonzero(a.ni.z)) return false;
     if (certainly_zero(a.ni.x) && certainly_zero(a.ni.y) && certainly_zero(a.ni.z)) return true;
   }
-  return is_zero(a.n);
+  return is_zero(exact_plane(c, p).n);
+}
+
+// Certainly not the same plane: the distances from 0 (accurate to a few ulps, minkowski_facets;
+// the margin of the distance prunes) differ.
+bool distances_differ(const Plane& a, const Plane& b) {
+  return std::abs(a.dist - b.dist) > (a.dist + b.dist) * 0x1p-40 + 0x1p-1000;
 }
 
 // The same half-space: b.n = t·a.n with t > 0 and b.c = t·a.c, exactly (interval filter first).
-bool same_plane(const Plane& a, const Plane& b, bool filt) {
-  if (filt) {
+bool same_plane(const Ctx& c, std::size_t pa, std::size_t pb) {
+  const Plane &a = c.planes[pa], &b = c.planes[pb];
+  if (c.filt) {
+    if (distances_differ(a, b)) return false;
     const IV3 x = cross(a.ni, b.ni);
     if (certainly_nonzero(x.x) || certainly_nonzero(x.y) || certainly_nonzero(x.z)) return false;
     if (!(dot(a.ni, b.ni).sup() > 0)) return false;
     if (certainly_nonzero(a.ci * dot(b.ni, a.ni) - b.ci * dot(a.ni, a.ni))) return false;
   }
-  if (!is_zero(cross(a.n, b.n))) return false;
-  const FT ab = dot(a.n, b.n);
-  return CGAL::is_positive(ab) && a.c * ab == b.c * dot(a.n, a.n);
+  const ExactPlane &ea = exact_plane(c, pa), &eb = exact_plane(c, pb);
+  if (!is_zero(cross(ea.n, eb.n))) return false;
+  const FT ab = dot(ea.n, eb.n);
+  return CGAL::is_positive(ab) && ea.c * ab == eb.c * dot(ea.n, ea.n);
 }
 
 // The same plane, either side: b.n = t·a.n (t != 0) and b.c = t·a.c, exactly (filter first).
-bool same_plane_any(const Plane& a, const Plane& b, bool filt) {
-  if (filt) {
+bool same_plane_any(const Ctx& c, std::size_t pa, std::size_t pb) {
+  const Plane &a = c.planes[pa], &b = c.planes[pb];
+  if (c.filt) {
+    if (distances_differ(a, b)) return false;
     const IV3 x = cross(a.ni, b.ni);
     if (certainly_nonzero(x.x) || certainly_nonzero(x.y) || certainly_nonzero(x.z)) return false;
     if (certainly_nonzero(a.ci * dot(b.ni, a.ni) - b.ci * dot(a.ni, a.ni))) return false;
   }
-  if (!is_zero(cross(a.n, b.n))) return false;
-  return a.c * dot(a.n, b.n) == b.c * dot(a.n, a.n);
+  const ExactPlane &ea = exact_plane(c, pa), &eb = exact_plane(c, pb);
+  if (!is_zero(cross(ea.n, eb.n))) return false;
+  return ea.c * dot(ea.n, eb.n) == eb.c * dot(ea.n, ea.n);
 }
 
 // x in the closed S (all planes), skipping plane `skip` and the planes equal to plane(f) (x is
@@ -223,7 +296,8 @@ bool in_closed(const Ctx& c, const Sum& s, const V3& x, const IV3& xi, std::size
       if (v.inf() > 0) return false;
       if (v.sup() <= 0) continue;
     }
-    if (dot(c.planes[p].n, x) > c.planes[p].c) return false;
+    const ExactPlane& e = exact_plane(c, p);
+    if (dot(e.n, x) > e.c) return false;
   }
   return true;
 }
@@ -234,7 +308,8 @@ bool in_open(const Ctx& c, const Sum& s, const V3& x, const IV3& xi) {
       if (v.sup() < 0) continue;
       if (v.inf() >= 0) return false;
     }
-    if (!(dot(c.planes[p].n, x) < c.planes[p].c)) return false;
+    const ExactPlane& e = exact_plane(c, p);
+    if (!(dot(e.n, x) < e.c)) return false;
   }
   return true;
 }
@@ -261,14 +336,31 @@ bool clip_planes(const Ctx& c, std::size_t first, std::size_t count, const IV3& 
 // Only L ∩ S_k ∩ S_l can hold the relative boundary of R_f on L (file comment), so the line is
 // not needed otherwise. Every quantity is an interval holding the exact value (Interval_nt:
 // outward rounding, a proven forward error bound); nothing is decided on a rounded value.
-bool line_far(const Ctx& c, const Plane& f, const Plane& g, const Sum& sk, const Sum& sl, double bound2) {
+// The line L = plane(f) ∩ plane(g) as x0 + λu (x0 its point nearest 0, u = n_f × n_g, the
+// exact path's parametrisation), in intervals holding the exact values.
+struct LineI {
+  IV3 u, x0;
+  I u2, l2;                       // |u|², |x0|²
+  std::size_t f = 0, g = 0;       // the planes
+  mutable std::optional<V3> ue;   // the exact u, built on demand (exact_u)
+  mutable std::optional<V3> x0e;  // the exact x0, built on demand (exact_x0)
+};
+LineI interval_line(const Plane& f, const Plane& g, std::size_t fi, std::size_t gi) {
+  LineI L;
+  L.f = fi, L.g = gi;
+  L.u = cross(f.ni, g.ni);
+  L.u2 = dot(L.u, L.u);
+  L.x0 = (I(1) / L.u2) * (f.ci * cross(g.ni, L.u) + g.ci * cross(L.u, f.ni));
+  L.l2 = dot(L.x0, L.x0);
+  return L;
+}
+
+bool line_far(const Ctx& c, const LineI& L, const Sum& sk, const Sum& sl, double bound2) {
   if (c.planted) bound2 *= 1e-6;  // the planted bug (tests): the bound /1e6, lines nearer than the best pruned
-  const IV3 u = cross(f.ni, g.ni);
-  const I u2 = dot(u, u);
+  const IV3 &u = L.u, &x0 = L.x0;
+  const I &u2 = L.u2, &l2 = L.l2;
   if (u2.sup() <= 0) return true;  // u = 0 exactly: parallel planes, no line
   if (!(u2.inf() > 0)) return false;
-  const IV3 x0 = (I(1) / u2) * (f.ci * cross(g.ni, u) + g.ci * cross(u, f.ni));
-  const I l2 = dot(x0, x0);
   if (l2.inf() >= bound2) return true;
   double lo = -INFINITY, hi = INFINITY;  // λ ∈ [lo, hi] ⊇ L ∩ S_k ∩ S_l
   // The boxes first (certified enclosures of the sums: sum_box widens outward).
@@ -316,6 +408,146 @@ bool open_misses(const Ctx& c, const Sum& s, const IV3& x0, const IV3& u, double
   return false;
 }
 
+// The running best, and the cap reach² before there is one: points farther than reach are no
+// answer (σ <= upper < reach; the end returns nothing beyond it), so they are never offered.
+struct Best {
+  std::optional<FT> d2;
+  V3 x;
+  std::size_t plane = 0;
+  double radius;  // >= √d2 (or the search radius U), for the double prunes
+  FT cap2;        // reach², exact
+  double sup2;    // >= *d2, or >= cap2 without a best
+  // A point at squared distance e2 is no improvement: not nearer than the best, or beyond the cap.
+  bool beyond(const FT& e2) const { return d2 ? !(e2 < *d2) : e2 > cap2; }
+  // The same, certain on an enclosure of e2.
+  bool beyond(const I& e2) const { return d2 ? e2.inf() >= sup2 : e2.inf() > sup2; }
+};
+
+void offer(Best& b, const FT& d2, const V3& x, std::size_t plane) {
+  if (b.beyond(d2)) return;
+  b.d2 = d2, b.x = x, b.plane = plane, b.sup2 = CGAL::to_interval(d2).second;
+  b.radius = std::min(b.radius, std::sqrt(CGAL::to_double(d2)) * (1 + 0x1p-40) + 0x1p-1000);
+}
+
+const V3& exact_u(const Ctx& c, const LineI& L) {
+  if (!L.ue) L.ue = cross(exact_plane(c, L.f).n, exact_plane(c, L.g).n);
+  return *L.ue;
+}
+
+const V3& exact_x0(const Ctx& c, const LineI& L) {
+  if (!L.x0e) {
+    const ExactPlane &f = exact_plane(c, L.f), &g = exact_plane(c, L.g);
+    const V3& u = exact_u(c, L);
+    L.x0e = (FT(1) / dot(u, u)) * (f.c * cross(g.n, u) + g.c * cross(u, f.n));
+  }
+  return *L.x0e;
+}
+
+I imin(const I& a, const I& b) { return I(std::min(a.inf(), b.inf()), std::min(a.sup(), b.sup())); }
+I imax(const I& a, const I& b) { return I(std::max(a.inf(), b.inf()), std::max(a.sup(), b.sup())); }
+
+// line_interval (below) on the enclosures: Empty or Range only when the exact path certainly
+// decides the same (Range: lo, hi enclose its ends), Unknown when a sign or an order is uncertain.
+enum class Span { Empty, Range, Unknown };
+Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I& lo, I& hi, std::size_t gp) {
+  bool has_lo = false, has_hi = false;
+  for (std::size_t p = s.first; p < s.first + s.count; ++p) {
+    if (p == gp || c.on_f[p]) {
+      if (strict) return Span::Empty;
+      continue;
+    }
+    const Plane& pl = c.planes[p];
+    const I a = dot(pl.ni, L.u), b = pl.ci - dot(pl.ni, L.x0);
+    // n·u near 0 is frequent (n parallel or nearly parallel to f's or g's normal: the same
+    // piece face in several sums, the faces of a symmetric mesh parallel up to rounding): its
+    // sign is taken from the exact numbers rather than giving up.
+    const CGAL::Sign sa = certainly_zero(a)        ? CGAL::ZERO
+                          : certainly_nonzero(a) ? (a.inf() > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE)
+                                                 : CGAL::sign(dot(exact_plane(c, p).n, exact_u(c, L)));
+    // b near 0 too: plane p nearly holds the line (equal to g's plane at a seam, or nearly
+    // coplanar with f or g in a rounded symmetric mesh): b exactly, and λ exactly when a != 0
+    // (the exact number's enclosure after its exact evaluation is tight).
+    std::optional<FT> be;
+    if (!certainly_nonzero(a) && !certainly_nonzero(b) && !certainly_zero(b))
+      be = exact_plane(c, p).c - dot(exact_plane(c, p).n, exact_x0(c, L));
+    if (sa == CGAL::ZERO) {
+      const CGAL::Sign sb = be ? CGAL::sign(*be)
+                            : b.inf() > 0 ? CGAL::POSITIVE
+                            : b.sup() < 0 ? CGAL::NEGATIVE
+                                          : CGAL::ZERO;
+      if (strict ? sb != CGAL::POSITIVE : sb == CGAL::NEGATIVE) return Span::Empty;
+      continue;
+    }
+    // λ = b/a (a of known sign): when a's enclosure holds 0, the side of λ that b's certain
+    // sign bounds (the other end unbounded).
+    I l;
+    if (certainly_nonzero(a)) l = b / a;
+    else if (be) {
+      FT le = *be / dot(exact_plane(c, p).n, exact_u(c, L));
+      le.exact();
+      l = iv(le);
+    } else if ((sa == CGAL::POSITIVE) == (b.inf() > 0))
+      l = I((I(b.inf() > 0 ? b.inf() : b.sup()) / I(sa == CGAL::POSITIVE ? a.sup() : a.inf())).inf(), INFINITY);
+    else
+      l = I(-INFINITY, (I(b.inf() > 0 ? b.inf() : b.sup()) / I(sa == CGAL::POSITIVE ? a.sup() : a.inf())).sup());
+    if (sa == CGAL::POSITIVE) {
+      hi = has_hi ? imin(hi, l) : l, has_hi = true;
+    } else {
+      lo = has_lo ? imax(lo, l) : l, has_lo = true;
+    }
+    if (has_lo && has_hi && (strict ? lo.inf() >= hi.sup() : lo.inf() > hi.sup())) return Span::Empty;
+  }
+  if (!has_lo || !has_hi) return Span::Unknown;
+  return (strict ? lo.sup() < hi.inf() : lo.sup() <= hi.inf()) ? Span::Range : Span::Unknown;
+}
+
+// Certainly: L's open interval in S (line_interval, strict) misses (a_inf, b_sup) ⊇ [a, b]:
+// the exact path would not list S among the covering intervals.
+bool cover_misses(const Ctx& c, const Sum& s, const LineI& L, std::size_t gp, double a_inf, double b_sup) {
+  if (open_misses(c, s, L.x0, L.u, a_inf, b_sup)) return true;
+  I lo, hi;
+  const Span sp = line_interval_i(c, s, L, true, lo, hi, gp);
+  return sp == Span::Empty || (sp == Span::Range && (hi.sup() <= a_inf || lo.inf() >= b_sup));
+}
+
+// The exact line stage (main loop) on the enclosures: true when it certainly offers nothing —
+// L ∩ S_k certainly empty, or every candidate point (a superset of the exact path's: the foot
+// of 0 clamped to [a, b], a, b, every covering interval's ends) certainly covered by an open
+// covering interval or certainly beyond the best (Best::beyond). False whenever a sign or an
+// order is uncertain: the exact path decides.
+bool line_no_offer(const Ctx& c, const LineI& L, const Sum& sk, std::size_t gp, const std::vector<std::size_t>& cover,
+                   const Best& best, std::vector<std::pair<I, I>>& ivs) {
+  if (!(L.u2.inf() > 0)) return false;
+  I a, b;
+  const Span sp = line_interval_i(c, sk, L, false, a, b, gp);
+  if (sp != Span::Range) return sp == Span::Empty;
+  ivs.clear();
+  for (std::size_t l : cover) {
+    if (cover_misses(c, c.sums[l], L, gp, a.inf(), b.sup())) continue;
+    I lo, hi;
+    const Span sl = line_interval_i(c, c.sums[l], L, true, lo, hi, gp);
+    if (sl == Span::Empty) continue;
+    if (sl == Span::Unknown) return false;
+    if (hi.sup() <= a.inf() || lo.inf() >= b.sup()) continue;  // certainly hi <= a or lo >= b
+    if (!(hi.inf() > a.sup() && lo.sup() < b.inf())) return false;
+    ivs.emplace_back(lo, hi);
+  }
+  auto settled = [&](const I& lam) {
+    if (best.beyond(L.l2 + CGAL::square(lam) * L.u2)) return true;
+    for (const auto& [lo, hi] : ivs)
+      if (lo.sup() < lam.inf() && lam.sup() < hi.inf()) return true;
+    return false;
+  };
+  I foot(0);  // the exact path's clamp of 0 into [a, b]
+  if (a.inf() > 0) foot = a;
+  else if (b.sup() < 0) foot = b;
+  else if (!(a.sup() <= 0 && b.inf() >= 0)) return false;
+  if (!settled(foot) || !settled(a) || !settled(b)) return false;
+  for (const auto& [lo, hi] : ivs)
+    if (!settled(lo) || !settled(hi)) return false;
+  return true;
+}
+
 bool boxes_meet(const Box3& a, const Box3& b) {
   return (a.lo.array() <= b.hi.array()).all() && (b.lo.array() <= a.hi.array()).all();
 }
@@ -332,7 +564,7 @@ bool line_interval(const Ctx& c, const Sum& s, const V3& x0, const V3& u, bool s
       if (strict) return false;
       continue;
     }
-    const Plane& pl = c.planes[p];
+    const ExactPlane& pl = exact_plane(c, p);
     const FT a = dot(pl.n, u), b = pl.c - dot(pl.n, x0);
     const CGAL::Sign sa = CGAL::sign(a);
     if (sa == CGAL::ZERO) {
@@ -350,18 +582,60 @@ bool line_interval(const Ctx& c, const Sum& s, const V3& x0, const V3& u, bool s
   return true;
 }
 
-struct Best {
-  std::optional<FT> d2;
-  V3 x;
-  std::size_t plane = 0;
-  double radius;  // >= √d2 (or the search radius U), for the double prunes
-};
-
-void offer(Best& b, const FT& d2, const V3& x, std::size_t plane) {
-  if (b.d2 && !(d2 < *b.d2)) return;
-  b.d2 = d2, b.x = x, b.plane = plane;
-  b.radius = std::min(b.radius, std::sqrt(CGAL::to_double(d2)) * (1 + 0x1p-40) + 0x1p-1000);
+// Enclosures of a superset of the vertices of the face f ∩ S_k = F_P(n) ⊕ −F_Q'(n) (n = f's
+// normal, S_k = P_i ⊕ −Q'_j, f a supporting plane): p − q' for every vertex p of P_i that may
+// maximise n·p and every q of Q_j that may minimise n·q' (interval comparisons against the
+// certain bounds: no vertex of either face is left out). Their hull contains the face.
+void face_points(const Ctx& c, std::size_t fi, std::vector<IV3>& pts) {
+  const Plane& f = c.planes[fi];
+  const Sum& s = c.sums[f.sum];
+  const convex3::PolytopeData &P = data_p(c, s), &Q = data_q(c, s);
+  std::vector<IV3> ps, qs;
+  std::vector<I> hp, hq;
+  double maxp = -INFINITY, minq = INFINITY;  // certain: max n·p >= maxp, min n·q' <= minq
+  for (const Vec3& v : P.v) {
+    ps.push_back(lift<I>(v)), hp.push_back(dot(f.ni, ps.back()));
+    maxp = std::max(maxp, hp.back().inf());
+  }
+  for (const Vec3& v : Q.v) {
+    qs.push_back(placed<I>(c.pl, v)), hq.push_back(dot(f.ni, qs.back()));
+    minq = std::min(minq, hq.back().sup());
+  }
+  pts.clear();
+  for (std::size_t a = 0; a < ps.size(); ++a)
+    if (hp[a].sup() >= maxp)
+      for (std::size_t b = 0; b < qs.size(); ++b)
+        if (hq[b].inf() <= minq) pts.push_back(ps[a] - qs[b]);
 }
+
+// The face f ∩ S_k certainly lies in the open S_l of one other sum: then R_f = f ∩ S_k \ ∪ int
+// S_l is empty and f holds no point of Oᶜ (the exact path would offer nothing from f). Checks
+// the face_points against S_l's planes (strictly inside, certain) — the hull of points of a
+// convex open set lies in it. Sums whose box does not certainly hold the points are skipped.
+// O(K·f̄·v) interval operations at worst (v face points, usually 3–4), most sums rejected by
+// their box or their first planes.
+bool face_inside_one_sum(const Ctx& c, std::size_t fi, std::vector<IV3>& pts) {
+  face_points(c, fi, pts);
+  Box3 b{Vec3::Constant(INFINITY), Vec3::Constant(-INFINITY)};
+  for (const IV3& x : pts)
+    for (int a = 0; a < 3; ++a)
+      b.lo[a] = std::min(b.lo[a], comp(x, a).inf()), b.hi[a] = std::max(b.hi[a], comp(x, a).sup());
+  for (std::size_t l = 0; l < c.sums.size(); ++l) {
+    const Sum& s = c.sums[l];
+    if (l == c.planes[fi].sum || !(s.box.lo.array() < b.lo.array()).all() || !(b.hi.array() < s.box.hi.array()).all())
+      continue;
+    bool inside = true;
+    for (std::size_t p = s.first; p < s.first + s.count && inside; ++p)
+      for (const IV3& x : pts)
+        if (!((dot(c.planes[p].ni, x) - c.planes[p].ci).sup() < 0)) {
+          inside = false;
+          break;
+        }
+    if (inside) return true;
+  }
+  return false;
+}
+
 
 Feature3 feat(FeatureKind3 k, int i) { return Feature3{k, i}; }
 
@@ -370,7 +644,7 @@ Feature3 feat(FeatureKind3 k, int i) { return Feature3{k, i}; }
 std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, double upper,
                                     std::size_t max_facets, bool skip_cover) {
   if (!(upper >= 0) || !std::isfinite(upper)) return std::nullopt;
-  Ctx c{m, place(m, pose_p, pose_q), {}, {}, {}, SigmaExactUnfiltered::depth == 0, SigmaExactUnfiltered::planted, {}};
+  Ctx c{m, place(m, pose_p, pose_q), {}, {}, SigmaExactUnfiltered::depth == 0, SigmaExactUnfiltered::planted, {}, {}};
   const convex3::RelativePose rel{c.pl.R, c.pl.tq, c.pl.tp};
   const double reach = upper * (1 + 0x1p-30) + 0x1p-1000;
   // The sums in range and their planes.
@@ -385,17 +659,18 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
       const convex3::PolytopeData& P = convex3::data_of(m.P[i]);
       const convex3::PolytopeData& Q = convex3::data_of(m.Q[j]);
       Sum s{i, j, c.planes.size(), cand.size(), bd, box_of_sum(m, c.pl, i, j)};
-      for (const auto& k : cand) {
-        Plane pl = plane_of(c.pl, P, Q, k);
-        if (zero_normal(pl, c.filt)) continue;  // supports nothing (0·x <= 0)
-        bool dup = false;  // the same plane, the same side: one constraint, one facet, one set of lines
-        for (std::size_t e = s.first; e < c.planes.size() && !dup; ++e) dup = same_plane(c.planes[e], pl, c.filt);
-        if (dup) continue;
-        pl.sum = c.sums.size();
-        c.planes.push_back(std::move(pl));
-      }
-      s.count = c.planes.size() - s.first;
       c.sums.push_back(s);
+      for (const auto& k : cand) {
+        const std::size_t np = c.planes.size();
+        c.exact.emplace_back();
+        c.planes.push_back(plane_of(c.pl, P, Q, k, c.exact.back()));
+        c.planes.back().sum = c.sums.size() - 1;
+        bool drop = zero_normal(c, np);  // supports nothing (0·x <= 0)
+        // The same plane, the same side: one constraint, one facet, one set of lines.
+        for (std::size_t e = s.first; e < np && !drop; ++e) drop = same_plane(c, e, np);
+        if (drop) c.planes.pop_back(), c.exact.pop_back();
+      }
+      c.sums.back().count = c.planes.size() - s.first;
     }
   // 0 ∈ O?
   const V3 zero{FT(0), FT(0), FT(0)};
@@ -410,17 +685,22 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
 
   Best best;
   best.radius = reach;
+  best.cap2 = FT(reach) * FT(reach);
+  best.sup2 = CGAL::to_interval(best.cap2).second;
   auto near = [&](double d) { return d * (1 - 0x1p-40) <= best.radius; };
   std::vector<std::size_t> cover;    // sums whose box meets B(0, best.radius): they cover
   std::vector<std::size_t> sources;  // the same and f's own sum: their planes cut f's lines
   std::vector<std::size_t> marked;   // the planes set in c.on_f
   c.on_f.assign(c.planes.size(), 0);
   std::size_t lines = 0;
+  std::vector<std::pair<I, I>> ivs_i;  // line_no_offer's scratch
+  std::vector<IV3> face;               // face_inside_one_sum's scratch
   for (std::size_t fi : order) {
     const Plane& f = c.planes[fi];
     if (!near(f.dist)) break;
     const Sum& sk = c.sums[f.sum];
     if (!near(sk.box_dist)) continue;  // f ⊂ S_k lies beyond the best
+    if (c.filt && !skip_cover && face_inside_one_sum(c, fi, face)) continue;  // R_f = ∅
     cover.clear(), sources.clear();
     for (std::size_t p : marked) c.on_f[p] = 0;
     marked.clear();
@@ -434,16 +714,17 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
         bool twin = false;
         const Sum& sl = c.sums[l];
         for (std::size_t p = sl.first; p < sl.first + sl.count; ++p)
-          if (p == fi || same_plane_any(c.planes[p], f, c.filt)) c.on_f[p] = 1, marked.push_back(p), twin = true;
+          if (p == fi || same_plane_any(c, p, fi)) c.on_f[p] = 1, marked.push_back(p), twin = true;
         if (!skip_cover && !twin) cover.push_back(l);
       }
-    const FT n2 = dot(f.n, f.n);
+    const ExactPlane& fe = exact_plane(c, fi);
+    const FT n2 = dot(fe.n, fe.n);
     if (CGAL::is_zero(n2)) continue;  // a degenerate candidate normal supports nothing
     // The foot of 0 on plane(f).
-    const FT d2 = f.c * f.c / n2;
-    if (best.d2 && !(d2 < *best.d2)) continue;
-    const V3 p = (f.c / n2) * f.n;
-    const IV3 pi{iv(p.x), iv(p.y), iv(p.z)};
+    const FT d2 = fe.c * fe.c / n2;
+    if (best.beyond(d2)) continue;
+    const V3 p = (fe.c / n2) * fe.n;
+    const IV3 pi = iv(p);
     if (in_closed(c, sk, p, pi, fi)) {
       bool covered = false;
       for (std::size_t l : cover)
@@ -463,23 +744,29 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
         const Plane& g = c.planes[gi];
         if (gi == fi || !near(g.dist)) continue;
         const double bound2 = best.d2 ? CGAL::to_interval(*best.d2).second : reach * reach * (1 + 0x1p-40);
-        if (c.filt && line_far(c, f, g, sk, sl, bound2)) continue;
-        const V3 u = cross(f.n, g.n);
+        if (c.filt) {
+          const LineI L = interval_line(f, g, fi, gi);
+          if (line_far(c, L, sk, sl, bound2) ||
+              line_no_offer(c, L, sk, gi, cover, best, ivs_i))
+            continue;
+        }
+        const ExactPlane& ge = exact_plane(c, gi);
+        const V3 u = cross(fe.n, ge.n);
         if (is_zero(u)) continue;
         const FT u2 = dot(u, u);
-        const V3 x0 = (FT(1) / u2) * (f.c * cross(g.n, u) + g.c * cross(u, f.n));
+        const V3 x0 = (FT(1) / u2) * (fe.c * cross(ge.n, u) + ge.c * cross(u, fe.n));
         const FT l2 = dot(x0, x0);
-        if (best.d2 && !(l2 < *best.d2)) continue;
+        if (best.beyond(l2)) continue;
         std::optional<FT> a, b;
         if (!line_interval(c, sk, x0, u, false, a, b, gi)) continue;
         if (!a || !b) continue;  // unreachable: S_k is bounded
         ++lines;
         // Covering open intervals (the ones meeting [a, b]).
         std::vector<std::pair<FT, FT>> ivs;
-        const IV3 x0i{iv(x0.x), iv(x0.y), iv(x0.z)}, ui{iv(u.x), iv(u.y), iv(u.z)};
+        const LineI Le{iv(u), iv(x0), iv(u2), iv(l2), fi, gi, u, x0};
         const double a_inf = CGAL::to_interval(*a).first, b_sup = CGAL::to_interval(*b).second;
         for (std::size_t l2i : cover) {
-          if (c.filt && open_misses(c, c.sums[l2i], x0i, ui, a_inf, b_sup)) continue;
+          if (c.filt && cover_misses(c, c.sums[l2i], Le, gi, a_inf, b_sup)) continue;
           std::optional<FT> lo, hi;
           if (!line_interval(c, c.sums[l2i], x0, u, true, lo, hi, gi) || !lo || !hi) continue;
           if (*hi <= *a || *lo >= *b) continue;
@@ -495,7 +782,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
         std::sort(cand.begin(), cand.end(), [](const FT& x, const FT& y) { return CGAL::abs(x) < CGAL::abs(y); });
         for (const FT& lam : cand) {
           const FT e2 = l2 + lam * lam * u2;
-          if (best.d2 && !(e2 < *best.d2)) break;
+          if (best.beyond(e2)) break;
           bool covered = false;
           for (const auto& [lo, hi] : ivs)
             if (lo < lam && lam < hi) {

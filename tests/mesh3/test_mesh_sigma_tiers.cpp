@@ -7,6 +7,7 @@
 // the line prune's distance bound divided by 1e6, so lines nearer than the best are dropped)
 // must make the comparison fail on the rotated comb–cup poses (there the nearest points lie on
 // lines, not at feet of facet planes; on the axis-aligned poses they are all feet).
+#include <pendepth/io.hpp>
 #include <pendepth/mesh3.hpp>
 #include <pendepth/pendepth.hpp>
 
@@ -19,6 +20,7 @@
 
 #include <cmath>
 #include <optional>
+#include <string>
 #include <random>
 
 namespace {
@@ -82,6 +84,22 @@ TEST(MeshSigmaTiers, FilteredEqualsExactCombsAndCups) {
   n += compare_tiers(comb4, l, rng, 16, 2.5, true, "comb4-L axis-aligned", true).first;  // seams, exact ties
   EXPECT_GE(n, 6);
 }
+
+#ifdef PENDEPTH_CGAL_MESHES
+// CGAL's sample meshes (rotated poses: the nearest points on lines between many overlapping
+// sums, where the interval line stage, the one-sum facet cover and the exact-sign fallbacks of
+// nearly parallel planes decide most of the work).
+TEST(MeshSigmaTiers, FilteredEqualsExactCgalMeshes) {
+  std::mt19937_64 rng(7);
+  int n = 0;
+  for (const char* name : {"cross.off", "star.off"}) {
+    const std::string file = std::string(PENDEPTH_CGAL_MESHES) + "/" + name;
+    const Shape3 s = Shape3::from_mesh(Mesh3::validate(io::read_mesh(file), name));
+    n += compare_tiers(s, s, rng, 3, 0.3, false, name, true).first;
+  }
+  EXPECT_GE(n, 4);
+}
+#endif
 
 // The planted bug in the filtered tier must make the comparison fail.
 TEST(MeshSigmaTiers, PlantedFilterBugIsCaught) {
