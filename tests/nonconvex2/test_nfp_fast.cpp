@@ -587,6 +587,26 @@ TEST(NfpFastPath, NearestCandidateFlagsAgainstExact) {
 
 namespace {
 
+// One certified value against exact rationals (σ² = s2x, translation V): every error bound the
+// diagnostics report holds (the σ² one's tightness is kept in `worst`), and a certified answer
+// (ok) is RN(exact) bit for bit.
+void check_certified_values(const std::string& what, const Vec2& t, const mpq_class& s2x, const mpq_class V[2],
+                            const pendepth::nonconvex2::NfpFlat::ProjectionDiag& diag, bool ok, double s2,
+                            const Vec2& tr, double& worst) {
+  if (diag.set) {
+    const mpq_class ex[3] = {s2x, V[0], V[1]};
+    for (int i = 0; i < 3; ++i) {
+      const mpq_class err = abs(ex[i] - mpq_class(diag.hi[i]) - mpq_class(diag.lo[i]));
+      ASSERT_LE(err, mpq_class(diag.bound[i])) << what << " value " << i << " t = " << t.transpose();
+      if (i == 0) worst = std::max(worst, mpq_class(err / mpq_class(diag.bound[0])).get_d());
+    }
+  }
+  if (!ok) return;
+  ASSERT_TRUE(same(s2, pendepth::exact::round_nearest(s2x))) << what << " σ² at t = " << t.transpose();
+  ASSERT_TRUE(same(tr.x(), pendepth::exact::round_nearest(V[0]))) << what << " x at t = " << t.transpose();
+  ASSERT_TRUE(same(tr.y(), pendepth::exact::round_nearest(V[1]))) << what << " y at t = " << t.transpose();
+}
+
 // nfp_value.cpp's σ² and translation at a sum vertex (μ = 0: X = o, μ = 1: X = o + D) against
 // exact rationals: every certified value is RN(exact) bit for bit and every error bound holds;
 // the σ² bound is not loose by more than 2¹² on these inputs (shrinking it that much, or dropping
@@ -614,19 +634,8 @@ void vertex_values_against_rationals() {
     Vec2 tr;
     NfpFlat::ProjectionDiag diag;
     const bool ok = F.vertex_values(0, end, t, s2, tr, &diag);
-    if (diag.set) {
-      const mpq_class ex[3] = {s2x, V[0], V[1]};
-      for (int i = 0; i < 3; ++i) {
-        const mpq_class err = abs(ex[i] - mpq_class(diag.hi[i]) - mpq_class(diag.lo[i]));
-        ASSERT_LE(err, mpq_class(diag.bound[i])) << what << " value " << i << " t = " << t.transpose();
-        if (i == 0) worst = std::max(worst, mpq_class(err / mpq_class(diag.bound[0])).get_d());
-      }
-    }
-    if (!ok) return;
-    ++certified;
-    ASSERT_TRUE(same(s2, pendepth::exact::round_nearest(s2x))) << what << " σ² at t = " << t.transpose();
-    ASSERT_TRUE(same(tr.x(), pendepth::exact::round_nearest(V[0]))) << what << " x at t = " << t.transpose();
-    ASSERT_TRUE(same(tr.y(), pendepth::exact::round_nearest(V[1]))) << what << " y at t = " << t.transpose();
+    check_certified_values(what, t, s2x, V, diag, ok, s2, tr, worst);
+    certified += ok;
   };
   const auto albano = instance("albano.json");
   std::uniform_real_distribution<double> u(-1, 1);
@@ -706,19 +715,8 @@ void end_values_against_rationals() {
           Vec2 tr;
           NfpFlat::ProjectionDiag diag;
           const bool ok = N.flat.end_values(k, end, t, s2, tr, &diag);
-          if (diag.set) {
-            const mpq_class ex[3] = {s2x, V[0], V[1]};
-            for (int i = 0; i < 3; ++i) {
-              const mpq_class err = abs(ex[i] - mpq_class(diag.hi[i]) - mpq_class(diag.lo[i]));
-              ASSERT_LE(err, mpq_class(diag.bound[i])) << what << " value " << i << " t = " << t.transpose();
-              if (i == 0) worst = std::max(worst, mpq_class(err / mpq_class(diag.bound[0])).get_d());
-            }
-          }
-          if (!ok) return;
-          certified += far;
-          ASSERT_TRUE(same(s2, pendepth::exact::round_nearest(s2x))) << what << " σ² at t = " << t.transpose();
-          ASSERT_TRUE(same(tr.x(), pendepth::exact::round_nearest(V[0]))) << what << " x at t = " << t.transpose();
-          ASSERT_TRUE(same(tr.y(), pendepth::exact::round_nearest(V[1]))) << what << " y at t = " << t.transpose();
+          check_certified_values(what, t, s2x, V, diag, ok, s2, tr, worst);
+          certified += far && ok;
         };
         const Vec2 a = end == 0 ? pc.a : pc.b;
         for (int r = 0; r < 4; ++r) check(a + Vec2(u(rng), u(rng)) * 30, true);
