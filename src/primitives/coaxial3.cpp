@@ -162,6 +162,7 @@ double sd_bound(double R, double H, double r, const Vec3& q, int dir) {
 }  // namespace
 
 std::optional<CoaxialSum> coaxial_sum(const Support3& P, const Support3& Q, const Eigen::Matrix3d& R) {
+  if (!coaxial_enabled) return std::nullopt;
   const auto p = parts_of(P), q = parts_of(Q);
   if (!p || !q) return std::nullopt;
   if (q->axial() && !keeps_axis(R)) return std::nullopt;

@@ -23,6 +23,10 @@ struct CoaxialSum {
 /// exactly in doubles (R02 = R12 = R20 = R21 = 0, |R22| = 1). Otherwise nullopt (EPA answers).
 std::optional<CoaxialSum> coaxial_sum(const Support3& P, const Support3& Q, const Eigen::Matrix3d& R);
 
+/// Private (tests): while false, coaxial_sum declines every pair, so EPA answers (the reference
+/// the closed form is checked against). Set only while no query runs.
+inline bool coaxial_enabled = true;
+
 /// The signed distance of q from K, certified: lo <= sd_K(q) <= hi (directed roundings: lo = hi
 /// when every operation is exact), and the outward unit normal of K at a nearest boundary point
 /// (not certified; for the reported move and witnesses).
