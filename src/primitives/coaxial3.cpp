@@ -159,23 +159,40 @@ double sd_bound(double R, double H, double r, const Vec3& q, int dir) {
   return sub(core_distance(a, b, dir), r, dir);
 }
 
+// ‖R − R0‖_F·rho rounded up, R0 = R with its axis row and column replaced by ±e_z (the sign of
+// R22; +e_z when R22 = 0), and that R0.
+double tilt_of(const Eigen::Matrix3d& R, double rho, Eigen::Matrix3d& R0) {
+  R0 = R;
+  R0(0, 2) = R0(1, 2) = R0(2, 0) = R0(2, 1) = 0;
+  R0(2, 2) = R(2, 2) < 0 ? -1.0 : 1.0;
+  double sq = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      const double e = std::abs(sub(R(i, j), R0(i, j), R(i, j) >= R0(i, j) ? +1 : -1));
+      sq = add(sq, mul(e, e, +1), +1);
+    }
+  return mul(root(sq, +1), rho, +1);
+}
+
 }  // namespace
 
 std::optional<CoaxialSum> coaxial_sum(const Support3& P, const Support3& Q, const Eigen::Matrix3d& R) {
   if (!coaxial_enabled) return std::nullopt;
   const auto p = parts_of(P), q = parts_of(Q);
   if (!p || !q) return std::nullopt;
-  if (q->axial() && !keeps_axis(R)) return std::nullopt;
-  const Interval s = stretch(R);
+  Eigen::Matrix3d R0 = R;
+  double tilt = 0;
+  if (q->axial() && !keeps_axis(R)) tilt = tilt_of(R, Q.rho, R0);
+  const Interval s = stretch(R0);
   const Interval disk = p->disk + q->disk * s, seg = p->seg + q->seg, ball = p->ball + q->ball * s;
-  return CoaxialSum{disk.lo, disk.hi, seg.lo, seg.hi, ball.lo, ball.hi};
+  return CoaxialSum{disk.lo, disk.hi, seg.lo, seg.hi, ball.lo, ball.hi, tilt};
 }
 
 CoaxialSd coaxial_signed_distance(const CoaxialSum& K, const Vec3& q) {
   CoaxialSd out;
   // sd_K decreases as any size grows: the lower bound from the largest sizes, rounded down.
-  out.lo = sd_bound(K.R_hi, K.H_hi, K.r_hi, q, -1);
-  out.hi = sd_bound(K.R_lo, K.H_lo, K.r_lo, q, +1);
+  out.lo = sub(sd_bound(K.R_hi, K.H_hi, K.r_hi, q, -1), K.tilt, -1);
+  out.hi = add(sd_bound(K.R_lo, K.H_lo, K.r_lo, q, +1), K.tilt, +1);
   // The outward normal at a nearest boundary point of K (from the nearest core point).
   const double rho = std::hypot(q[0], q[1]);
   const Vec3 radial = rho > 0 ? Vec3(q[0] / rho, q[1] / rho, 0) : Vec3::UnitX();

@@ -751,11 +751,7 @@ Depth3 coaxial_minimum(const ClosedForm& c, const Frame& F) {
   return out;
 }
 
-}  // namespace
-
-Distance3 curved_distance(const Support3& P, const Pose3& pose_p, const Support3& Q, const Pose3& pose_q) {
-  const Frame F = frame_of(pose_p, pose_q);
-  if (const auto K = coaxial_sum(P, Q, F.R)) return coaxial_distance(closed_form(P, Q, F, *K), F);
+Distance3 epa_distance(const Support3& P, const Support3& Q, const Frame& F) {
   const Engine E(P, Q, F.R, F.t);
   const Sd s = signed_distance_at(E, false);
   Distance3 out;
@@ -781,9 +777,7 @@ Distance3 curved_distance(const Support3& P, const Pose3& pose_p, const Support3
   return out;
 }
 
-Depth3 curved_minimum(const Support3& P, const Pose3& pose_p, const Support3& Q, const Pose3& pose_q) {
-  const Frame F = frame_of(pose_p, pose_q);
-  if (const auto K = coaxial_sum(P, Q, F.R)) return coaxial_minimum(closed_form(P, Q, F, *K), F);
+Depth3 epa_minimum(const Support3& P, const Support3& Q, const Frame& F) {
   const Engine E(P, Q, F.R, F.t);
   const Sd s = signed_distance_at(E, false);
   Depth3 out;
@@ -801,6 +795,34 @@ Depth3 curved_minimum(const Support3& P, const Pose3& pose_p, const Support3& Q,
   out.translation = F.vec(s.U * s.U_dir.normalized());
   out.witness_p = out.witness_q = F.point(s.U_vert.p);
   return out;
+}
+
+// Coaxial pairs: the closed form; near-coaxial (a tilt bound > 0): the closed form when its
+// bracket meets EPA's own target, else the narrower of its bracket and EPA's (both certified;
+// EPA's answer, bit for bit, unless the closed form is narrower).
+template <class Result, class Closed, class Epa>
+Result coaxial_or_epa(const Support3& P, const Support3& Q, const Frame& F, Closed closed, Epa epa) {
+  const auto K = coaxial_sum(P, Q, F.R);
+  if (!K) return epa();
+  const Result c = closed(closed_form(P, Q, F, *K));
+  const double gap = c.upper_bound - c.lower_bound;
+  if (K->tilt == 0 || gap <= kCurvedTargetGap * std::max(std::abs(c.lower_bound), std::abs(c.upper_bound))) return c;
+  const Result e = epa();
+  return gap < e.upper_bound - e.lower_bound ? c : e;
+}
+
+}  // namespace
+
+Distance3 curved_distance(const Support3& P, const Pose3& pose_p, const Support3& Q, const Pose3& pose_q) {
+  const Frame F = frame_of(pose_p, pose_q);
+  return coaxial_or_epa<Distance3>(
+      P, Q, F, [&](const ClosedForm& c) { return coaxial_distance(c, F); }, [&] { return epa_distance(P, Q, F); });
+}
+
+Depth3 curved_minimum(const Support3& P, const Pose3& pose_p, const Support3& Q, const Pose3& pose_q) {
+  const Frame F = frame_of(pose_p, pose_q);
+  return coaxial_or_epa<Depth3>(
+      P, Q, F, [&](const ClosedForm& c) { return coaxial_minimum(c, F); }, [&] { return epa_minimum(P, Q, F); });
 }
 
 Depth3 curved_along(const Support3& P, const Pose3& pose_p, const Support3& Q, const Pose3& pose_q, const Vec3& dw) {
