@@ -519,6 +519,14 @@ TEST(Curved, CoaxialExactInputsGiveEqualBounds) {
   EXPECT_EQ(t.upper_bound, 0);
   EXPECT_FALSE(t.overlapping);
   EXPECT_FALSE(a.overlapping(Pose3(), Pose3(Vec3(0, 0, 1.75))));
+  // Huge and tiny pairs (through the scaling by a power of two): the same bits, scaled.
+  for (int e : {-300, 300}) {
+    const double s = std::ldexp(1.0, e);
+    const Pair3 big(Shape3::cylinder(s, s), Shape3::capsule(0.25 * s, 0.5 * s));
+    const Depth3 b = big.minimum(Pose3(), Pose3(Vec3(0.5 * s, 0, 0.25 * s)));
+    EXPECT_EQ(b.lower_bound, 0.75 * s) << e;
+    EXPECT_EQ(b.upper_bound, 0.75 * s) << e;
+  }
 }
 
 TEST(Curved, CoaxialPairsInsideTheNestedTessellationsAndTheEpaBracket) {
