@@ -6,6 +6,8 @@
 // the curved pairs' shapes and poses, checked against pendepth's certified brackets.
 #include <pendepth/pendepth.hpp>
 
+#include "primitives/coaxial3.hpp"
+
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -127,6 +129,49 @@ void run_curved(benchmark::State& state, bool distance) {
                                                       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
   state.counters["mean_rel_gap"] = gap / static_cast<double>(state.iterations());
 }
+// Coaxial and near-coaxial pairs (src/primitives/coaxial3.cpp): Q tilted by ε about a horizontal
+// axis (ε = 0: exactly coaxial, the closed form; ε > 0: EPA), 16 placements near the centre.
+// Args: pair (0: cylinder(1, 1) in rounded cylinder(1, 1) ⊕ 0.5, σ on a continuum at t = 0;
+// 1: cylinder(0.5, 0.7) vs capsule(0.2, 0.3)), −log10 ε (0: ε = 0), mode (0: σ; 1: σ with the
+// pre-step off, EPA; 2: σ_d along random directions, EPA). Counters: µs per query, the worst and
+// the mean relative gap.
+void BM_CurvedCoaxial(benchmark::State& state) {
+  const int kind = static_cast<int>(state.range(0)), k = static_cast<int>(state.range(1));
+  const double eps = k == 0 ? 0.0 : std::pow(10.0, -k);
+  const Pair3 pair = kind == 0 ? Pair3(Shape3::cylinder(1, 1), Shape3::rounded(Shape3::cylinder(1, 1), 0.5))
+                               : Pair3(Shape3::cylinder(0.5, 0.7), Shape3::capsule(0.2, 0.3));
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> U(-0.2, 0.2), A(0, 6.283185307179586);
+  std::vector<Pose3> poses;
+  for (int i = 0; i < 16; ++i) {
+    const double phi = A(rng);
+    const Vec3 t = i == 0 ? Vec3::Zero() : Vec3(U(rng), U(rng), U(rng));
+    poses.push_back(eps == 0 ? Pose3(t)
+                             : Pose3(Eigen::Quaterniond(Eigen::AngleAxisd(eps, Vec3(std::cos(phi), std::sin(phi), 0))), t));
+  }
+  std::vector<Vec3> dirs;
+  std::normal_distribution<double> g;
+  for (int i = 0; i < 16; ++i) dirs.emplace_back(g(rng), g(rng), g(rng));
+  const int mode = static_cast<int>(state.range(2));
+  primitives::coaxial_enabled = mode != 1;
+  std::size_t i = 0;
+  double sink = 0, gap = 0, worst = 0;
+  for (auto _ : state) {
+    const std::size_t k = i++ % poses.size();
+    const Depth3 r = mode == 2 ? pair.along(Pose3(), poses[k], dirs[k]) : pair.minimum(Pose3(), poses[k]);
+    const double g = (r.upper_bound - r.lower_bound) / r.depth;
+    sink += r.depth, gap += g, worst = std::max(worst, g);
+  }
+  primitives::coaxial_enabled = true;
+  benchmark::DoNotOptimize(sink);
+  state.SetLabel(std::string(kind == 0 ? "cyl in rounded cyl" : "cyl vs capsule") +
+                 (mode == 1 ? " EPA" : mode == 2 ? " sigma_d" : ""));
+  state.counters["us_per_query"] = benchmark::Counter(static_cast<double>(state.iterations()) * 1e-6,
+                                                      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["mean_rel_gap"] = gap / static_cast<double>(state.iterations());
+  state.counters["worst_rel_gap"] = worst;
+}
+
 void BM_CurvedSignedDistance(benchmark::State& s) { run_curved(s, true); }
 void BM_CurvedMinimum(benchmark::State& s) { run_curved(s, false); }
 
@@ -310,6 +355,8 @@ void BM_RoundedFlatCores(benchmark::State& state) {
 
 BENCHMARK(BM_CurvedSignedDistance)->DenseRange(0, 5);
 BENCHMARK(BM_CurvedMinimum)->DenseRange(0, 5);
+BENCHMARK(BM_CurvedCoaxial)->ArgsProduct({{0, 1}, {0, 3, 6, 9, 12}, {0}})->Args({0, 0, 1})->Args({1, 0, 1})
+    ->Args({0, 0, 2})->Args({1, 0, 2});
 #if PENDEPTH_BENCH_BULLET
 BENCHMARK(BM_CurvedBullet)->ArgsProduct({{0, 1, 2, 3, 4, 5}, {1, 0}, {1}})
     ->Args({2, 1, 2})->Args({2, 0, 2})->Args({3, 1, 2})->Args({3, 0, 2})->Args({5, 1, 2})->Args({5, 0, 2});

@@ -30,11 +30,16 @@
 // Decisions: overlap iff the signed-distance bracket is below 0, apart iff above; a bracket that
 // straddles 0 (a contact tangent to within the rounding floor, |sd| <~ δ) is reported as
 // touching (docs/robustness.md "Curved primitives").
+// Pre-step (σ and signed distance): when P's and Q's components (disk, axial segment, ball) are
+// exactly parallel, M is one rounded cylinder answered in closed form (coaxial3.cpp) — the
+// symmetric placements where σ is attained on a continuum and EPA cannot close its bracket.
 // Cost: O(k (f + s)) for k support queries, f facets, s the cost of one support (O(1) for
 // curved primitives, O(n) for a polytope's vertex scan); k is typically 20–150 for a 1e-13 gap.
 #include "primitives/support3.hpp"
 
 #include <pendepth/pendepth.hpp>
+
+#include "primitives/coaxial3.hpp"
 #include <pendepth/polytope.hpp>
 
 #include "convex3/flat3.hpp"
@@ -688,13 +693,65 @@ Vec3 combo(const Simplex& s, bool p) {
   return sw > 0 ? Vec3(x / sw) : x;
 }
 
+// ---- coaxial pairs: M = K − t in closed form (coaxial3.cpp) ---------------------------------
+// sd_M(0) = sd_K(t) and the support pair along K's outward normal n at the nearest point.
+struct ClosedForm {
+  CoaxialSd sd;
+  Vert touch{};
+};
+ClosedForm closed_form(const Support3& P, const Support3& Q, const Frame& F, const CoaxialSum& K) {
+  ClosedForm c;
+  c.sd = coaxial_signed_distance(K, F.t);
+  const Vec3& n = c.sd.normal;
+  c.touch.p = P.support(n);
+  c.touch.q = F.R * Q.support(F.R.transpose() * (-n)) + F.t;
+  return c;
+}
+
 double norm_up(const Vec3& d) { return upw(d.norm() * (1 + 4 * kU)); }
 double norm_down(const Vec3& d) { return down(d.norm() * (1 - 4 * kU)); }
 
-}  // namespace
+// The answers from the closed form, in the engine's bracket semantics (as below): apart when the
+// bracket of sd is above 0, overlapping when below, else touching with the bracket kept.
+Distance3 coaxial_distance(const ClosedForm& c, const Frame& F) {
+  Distance3 out;
+  out.lower_bound = c.sd.lo, out.upper_bound = c.sd.hi;
+  const Vec3 n = F.vec(c.sd.normal);
+  if (c.sd.lo > 0) {
+    out.distance = c.sd.hi;
+    out.normal = n;
+    out.translation = -out.distance * n + Vec3::Zero();
+    out.witness_p = F.point(c.touch.p), out.witness_q = F.point(c.touch.q);
+  } else if (c.sd.hi < 0) {
+    out.overlapping = true;
+    out.distance = c.sd.lo;
+    out.normal = n;
+    out.translation = -c.sd.lo * n + Vec3::Zero();
+    out.witness_p = F.point(c.touch.p), out.witness_q = F.point(c.touch.q);
+  } else {
+    out.witness_p = out.witness_q = F.point(c.touch.p);
+  }
+  return out;
+}
 
-Distance3 curved_distance(const Support3& P, const Pose3& pose_p, const Support3& Q, const Pose3& pose_q) {
-  const Frame F = frame_of(pose_p, pose_q);
+Depth3 coaxial_minimum(const ClosedForm& c, const Frame& F) {
+  Depth3 out;
+  out.kind = DepthKind::Minimum;
+  if (c.sd.lo > 0) return out;
+  if (!(c.sd.hi < 0)) {
+    out.upper_bound = std::max(0.0, -c.sd.lo);
+    return out;
+  }
+  out.overlapping = true;
+  out.depth = out.upper_bound = -c.sd.lo;
+  out.lower_bound = -c.sd.hi;
+  out.normal = out.facet_normal = F.vec(c.sd.normal);
+  out.translation = F.vec(out.depth * c.sd.normal);
+  out.witness_p = out.witness_q = F.point(c.touch.p);
+  return out;
+}
+
+Distance3 epa_distance(const Support3& P, const Support3& Q, const Frame& F) {
   const Engine E(P, Q, F.R, F.t);
   const Sd s = signed_distance_at(E, false);
   Distance3 out;
@@ -720,8 +777,7 @@ Distance3 curved_distance(const Support3& P, const Pose3& pose_p, const Support3
   return out;
 }
 
-Depth3 curved_minimum(const Support3& P, const Pose3& pose_p, const Support3& Q, const Pose3& pose_q) {
-  const Frame F = frame_of(pose_p, pose_q);
+Depth3 epa_minimum(const Support3& P, const Support3& Q, const Frame& F) {
   const Engine E(P, Q, F.R, F.t);
   const Sd s = signed_distance_at(E, false);
   Depth3 out;
@@ -739,6 +795,34 @@ Depth3 curved_minimum(const Support3& P, const Pose3& pose_p, const Support3& Q,
   out.translation = F.vec(s.U * s.U_dir.normalized());
   out.witness_p = out.witness_q = F.point(s.U_vert.p);
   return out;
+}
+
+// Coaxial pairs: the closed form; near-coaxial (a tilt bound > 0): the closed form when its
+// bracket meets EPA's own target, else the narrower of its bracket and EPA's (both certified;
+// EPA's answer, bit for bit, unless the closed form is narrower).
+template <class Result, class Closed, class Epa>
+Result coaxial_or_epa(const Support3& P, const Support3& Q, const Frame& F, Closed closed, Epa epa) {
+  const auto K = coaxial_sum(P, Q, F.R);
+  if (!K) return epa();
+  const Result c = closed(closed_form(P, Q, F, *K));
+  const double gap = c.upper_bound - c.lower_bound;
+  if (K->tilt == 0 || gap <= kCurvedTargetGap * std::max(std::abs(c.lower_bound), std::abs(c.upper_bound))) return c;
+  const Result e = epa();
+  return gap < e.upper_bound - e.lower_bound ? c : e;
+}
+
+}  // namespace
+
+Distance3 curved_distance(const Support3& P, const Pose3& pose_p, const Support3& Q, const Pose3& pose_q) {
+  const Frame F = frame_of(pose_p, pose_q);
+  return coaxial_or_epa<Distance3>(
+      P, Q, F, [&](const ClosedForm& c) { return coaxial_distance(c, F); }, [&] { return epa_distance(P, Q, F); });
+}
+
+Depth3 curved_minimum(const Support3& P, const Pose3& pose_p, const Support3& Q, const Pose3& pose_q) {
+  const Frame F = frame_of(pose_p, pose_q);
+  return coaxial_or_epa<Depth3>(
+      P, Q, F, [&](const ClosedForm& c) { return coaxial_minimum(c, F); }, [&] { return epa_minimum(P, Q, F); });
 }
 
 Depth3 curved_along(const Support3& P, const Pose3& pose_p, const Support3& Q, const Pose3& pose_q, const Vec3& dw) {
