@@ -154,7 +154,14 @@ Vec2 check_and_scale(const Vec2& t, const Vec2& d) {
 void check_point(const Vec2& t) { require_finite(t, "placement t"); }
 
 double norm_accurate(const Vec2& d) {
-  return std::sqrt(exact::accurate_value([&](auto L) { return L(d.x()) * L(d.x()) + L(d.y()) * L(d.y()); }));
+  const auto f = [&](auto L) { return L(d.x()) * L(d.x()) + L(d.y()) * L(d.y()); };
+  // accurate_value(f) starts with the Fl tier, which never certifies this sum of two squares (its
+  // bound is at least u·|v| plus 2⁻¹⁰⁰⁰ from each product, above the u·|v| it requires), then takes
+  // the DD tier's hi when its bound allows: that tier directly, the same operations and test
+  // (the same double); else the full chain as before.
+  const exact::DD s = f(exact::LiftDD{});
+  if (exact::dd_finite(s) && exact::safe_bound(s.e) <= std::abs(s.hi) * 0x1p-54) return std::sqrt(s.hi);
+  return std::sqrt(exact::accurate_value(f));
 }
 
 int end_on_ray(const Line& E, const Vec2& t, const Vec2& d) {

@@ -840,7 +840,8 @@ TEST(NfpFastPath, CrossingValuesAgainstRationals) {
   EXPECT_GT(certified, tried * 9 / 10);
 }
 
-// check_and_scale's power-of-two product against the ldexp reference (the former code): the same
+// check_and_scale's power-of-two product against the ldexp reference (the former code), and
+// norm_accurate against the full tiered evaluation (on the raw and the scaled directions): the same
 // doubles bit for bit on random directions over the whole exponent range, subnormal and
 // near-overflow components, and components whose scaled partner underflows (rounded).
 TEST(NfpFastPath, DirectionScalingMatchesLdexp) {
@@ -859,6 +860,11 @@ TEST(NfpFastPath, DirectionScalingMatchesLdexp) {
     if (d.x() == 0 && d.y() == 0) continue;
     ++compared;
     ASSERT_TRUE(same(pendepth::nonconvex2::check_and_scale(Vec2(0, 0), d), reference(d))) << std::hexfloat << d.transpose();
+    // norm_accurate's direct DD tier against the full tiered evaluation (the former code).
+    for (const Vec2& v : {d, pendepth::nonconvex2::check_and_scale(Vec2(0, 0), d)}) {
+      const double want = std::sqrt(pendepth::exact::accurate_value([&](auto L) { return L(v.x()) * L(v.x()) + L(v.y()) * L(v.y()); }));
+      ASSERT_TRUE(same(pendepth::nonconvex2::norm_accurate(v), want)) << std::hexfloat << v.transpose();
+    }
   }
   EXPECT_GT(compared, 200000u);
 }
