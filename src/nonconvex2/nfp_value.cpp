@@ -276,8 +276,12 @@ template <bool F>
   for (int i = 0; i < 2; ++i) bs += e[i] * (2 * std::abs(V[i].hi) * (1 + 0x1p-50) + e[i]);
   bs *= 1 + 0x1p-40;
   if (diag) *diag = {{s2.hi, V[0].hi, V[1].hi}, {s2.lo, V[0].lo, V[1].lo}, {bs, e[0], e[1]}, true};
-  // A zero coordinate (|V| = 0 exactly only when e = 0) is exact; else the interval must round to hi.
-  auto coord_ok = [&](int i) { return (V[i].hi == 0 && V[i].lo == 0 && e[i] == 0) || exact::rounds_to(V[i].hi, V[i].lo, e[i]); };
+  // e = 0: V is exactly hi + lo with hi = RN(hi + lo) (every caller's V with e = 0 is a two-sum's
+  // output, negated: the hardware's rounding of the exact sum, ties to even; zero included), so hi
+  // is the answer even when V is a rounding tie — frequent: the difference of two doubles whose
+  // exponents differ by one needs one bit more than a double; those went to the generic tier's
+  // exact midpoint test. Else the interval must round to hi.
+  auto coord_ok = [&](int i) { return e[i] == 0 || exact::rounds_to(V[i].hi, V[i].lo, e[i]); };
   if (!coord_ok(0) || !coord_ok(1) || !exact::rounds_to(s2.hi, s2.lo, bs)) return false;
   sigma2 = s2.hi;
   translation = Vec2(V[0].hi + 0.0, V[1].hi + 0.0);  // + 0: an exact zero is +0, as RN(0) is

@@ -666,7 +666,17 @@ void vertex_values_against_rationals() {
     const Ray E = edge_ray(v(), v() * 0x1p-20, v(), k % 2 ? v() * 0x1p-30 : Vec2(0, 0), Vec2(0, 0), Vec2(0, 0));
     check(E, k % 2, k % 3 ? v() : Vec2(E.o1 + E.o2) + v() * 0x1p-40, "random " + std::to_string(k));
   }
-  std::cout << "[vertex values] " << tried << " tried, " << certified << " certified; worst error / bound " << worst << "\n";
+  // X − t an exact rounding tie per coordinate: 1 + 2⁻⁵³ (RN = 1, even), 1 + 3·2⁻⁵³ (RN = 1 + 2⁻⁵¹),
+  // a tie in y only, and t beyond X; both ends (μ = 1: X = o + D, D exact).
+  std::size_t ties = 0;
+  for (const Vec2& t : {Vec2(-0x1p-53, 0.25), Vec2(-3 * 0x1p-53, -3 * 0x1p-53), Vec2(3 + 0x1p-52, 0.5), Vec2(0.5, -0x1p-53)})
+    for (int end = 0; end < 2; ++end) {
+      const std::size_t before = certified;
+      check(edge_ray(Vec2(end == 0 ? 1 : -1, end == 0 ? 1 : -2), Vec2(0, 0), Vec2(2, 3), Vec2(0, 0), Vec2(0, 0), Vec2(0, 0)), end, t, "tie");
+      ties += certified - before;
+    }
+  EXPECT_GT(ties, 0u);  // exact ties are certified (e = 0), and checked against RN above
+  std::cout << "[vertex values] " << ties << " of 8 exact ties certified; " << tried << " tried, " << certified << " certified; worst error / bound " << worst << "\n";
   EXPECT_GT(certified, tried * 9 / 10);
   EXPECT_GT(worst, 0x1p-12);
 }
