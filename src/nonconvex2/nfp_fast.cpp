@@ -245,16 +245,41 @@ void NfpFlat::first_hit_candidates(const Vec2& t, const Vec2& d, std::vector<std
   double los[kFlatMax];  // lower bounds of the kept pieces (n ≤ kFlatMax: usable)
   std::size_t kept = 0;
   const std::size_t first = out.size();
-  for (std::size_t k = 0; k < n; ++k) {
+  // Piece k once it may meet the ray's line (ca, cb: cross(d, a − t), cross(d, b − t)).
+  auto visit = [&](std::size_t k, double ca, double cb) {
     const double ax = x0[k] - tx, ay = y0[k] - ty, bx = x1[k] - tx, by = y1[k] - ty;
-    const double ca = dx * ay - dy * ax, cb = dx * by - dy * bx;
-    if ((ca > e && cb > e) || (ca < -e && cb < -e)) continue;  // misses the line
     const double pa = dx * ax + dy * ay, pb = dx * bx + dy * by;
     const double lo = std::min(pa, pb) - e, hi = std::max(pa, pb) + e;
-    if (hi <= 0) continue;  // behind t
+    if (hi <= 0) return;  // behind t
     const bool crosses = lo > 0 && ((ca > e && cb < -e) || (ca < -e && cb > e));
     if (crosses) U = std::min(U, hi);
     if (lo <= U) out.push_back(std::uint32_t(k) | (crosses ? kInside : 0u)), los[kept++] = lo;
+  };
+  std::size_t k = 0;
+#ifdef __SSE2__
+  // The line test two pieces per step (the same operations per lane as the scalar loop below);
+  // most pieces miss the line, so the step usually ends at the mask.
+  {
+    const __m128d Tx = _mm_set1_pd(tx), Ty = _mm_set1_pd(ty), Dx = _mm_set1_pd(dx), Dy = _mm_set1_pd(dy);
+    const __m128d E = _mm_set1_pd(e), mE = _mm_set1_pd(-e);
+    for (; k + 2 <= n; k += 2) {
+      const __m128d ax = _mm_sub_pd(_mm_loadu_pd(x0 + k), Tx), ay = _mm_sub_pd(_mm_loadu_pd(y0 + k), Ty);
+      const __m128d bx = _mm_sub_pd(_mm_loadu_pd(x1 + k), Tx), by = _mm_sub_pd(_mm_loadu_pd(y1 + k), Ty);
+      const __m128d ca = _mm_sub_pd(_mm_mul_pd(Dx, ay), _mm_mul_pd(Dy, ax)), cb = _mm_sub_pd(_mm_mul_pd(Dx, by), _mm_mul_pd(Dy, bx));
+      const __m128d miss = _mm_or_pd(_mm_and_pd(_mm_cmpgt_pd(ca, E), _mm_cmpgt_pd(cb, E)), _mm_and_pd(_mm_cmplt_pd(ca, mE), _mm_cmplt_pd(cb, mE)));
+      const int meet = ~_mm_movemask_pd(miss) & 3;
+      if (meet == 0) continue;
+      double c[2][2];
+      _mm_storeu_pd(c[0], ca), _mm_storeu_pd(c[1], cb);
+      if (meet & 1) visit(k, c[0][0], c[1][0]);
+      if (meet & 2) visit(k + 1, c[0][1], c[1][1]);
+    }
+  }
+#endif
+  for (; k < n; ++k) {
+    const double ca = dx * (y0[k] - ty) - dy * (x0[k] - tx), cb = dx * (y1[k] - ty) - dy * (x1[k] - tx);
+    if ((ca > e && cb > e) || (ca < -e && cb < -e)) continue;  // misses the line
+    visit(k, ca, cb);
   }
   // Keep those still within the final U (in increasing index order).
   std::size_t w = first;

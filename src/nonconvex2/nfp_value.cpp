@@ -26,9 +26,12 @@
 // winners on nesting pieces, which took the generic tier before): end_values from the ends'
 // double-doubles tabled once per piece (end_dd; below).
 // Each value is returned only when rounds_to certifies the whole interval inside one rounding
-// cell; magnitudes are kept inside [2⁻⁸⁰⁰, 2⁸⁰⁰] (products' residuals representable) or zero.
+// cell (or, for a coordinate at a vertex or cut end, when it is exact: point_values; σ_d's λ by
+// its residual instead: crossing_certified); magnitudes are kept inside [2⁻⁸⁰⁰, 2⁸⁰⁰] (products' residuals representable) or zero.
 // Cost: ~80 flops per query, no branch on data beyond the range checks.
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include "geometry/exact.hpp"
 #include "geometry/rounded.hpp"
@@ -274,8 +277,12 @@ template <bool F>
   for (int i = 0; i < 2; ++i) bs += e[i] * (2 * std::abs(V[i].hi) * (1 + 0x1p-50) + e[i]);
   bs *= 1 + 0x1p-40;
   if (diag) *diag = {{s2.hi, V[0].hi, V[1].hi}, {s2.lo, V[0].lo, V[1].lo}, {bs, e[0], e[1]}, true};
-  // A zero coordinate (|V| = 0 exactly only when e = 0) is exact; else the interval must round to hi.
-  auto coord_ok = [&](int i) { return (V[i].hi == 0 && V[i].lo == 0 && e[i] == 0) || exact::rounds_to(V[i].hi, V[i].lo, e[i]); };
+  // e = 0: V is exactly hi + lo with hi = RN(hi + lo) (every caller's V with e = 0 is a two-sum's
+  // output, negated: the hardware's rounding of the exact sum, ties to even; zero included), so hi
+  // is the answer even when V is a rounding tie — frequent: the difference of two doubles whose
+  // exponents differ by one needs one bit more than a double; those went to the generic tier's
+  // exact midpoint test. Else the interval must round to hi.
+  auto coord_ok = [&](int i) { return e[i] == 0 || exact::rounds_to(V[i].hi, V[i].lo, e[i]); };
   if (!coord_ok(0) || !coord_ok(1) || !exact::rounds_to(s2.hi, s2.lo, bs)) return false;
   sigma2 = s2.hi;
   translation = Vec2(V[0].hi + 0.0, V[1].hi + 0.0);  // + 0: an exact zero is +0, as RN(0) is
@@ -329,6 +336,26 @@ template <bool F>
   return point_values<F>(V, e, sigma2, translation, diag);
 }
 
+// λ = N/D from double-doubles num ≈ N (within en) and den ≈ D (within ed ≤ 2⁻⁶⁰·|den_hi|), without
+// a double-double division: a candidate double q is RN(λ) iff λ lies strictly inside q's rounding
+// cell, which holds when |λ − q| < h, h half the smaller gap next to q (as rounded.hpp's rounds_to:
+// powers of two safe, no tie certified). λ − q = (N − q·D)/D, and r̃ = num − q·den is evaluated as
+// ((num_hi − p) − ρ) + (num_lo − RN(q·den_lo)) with p = RN(q·den_hi) and ρ = q·den_hi − p exactly
+// (residual_of): num_hi − p is exact (Sterbenz: q is within 3u of num_hi/den_hi, so p is within a
+// factor 2 of num_hi); the four roundings left (ρ's subtraction, the product, two sums) are each
+// ≤ u of their result, in all below 2⁻⁵⁰·(|RN(q·den_lo)| + |num_lo| + |r̃|). So |N − q·D − r̃| ≤ E
+// = that + en + |q|·ed, and |D| ≥ |den_hi|·(1 − 2⁻⁵⁰) (|den_lo| ≤ u·|den_hi|, ed ≤ 2⁻⁶⁰·|den_hi|):
+// certified when (|r̃| + E)·(1 + 2⁻⁴⁰) < h·|den_hi|·(1 − 2⁻⁴⁰) (h·|den_hi| exact: h a power of two,
+// |q·den_hi| ≥ 2⁻⁸⁰⁰ so nothing underflows; the left side's own roundings are inside the 2⁻⁴⁰).
+// One division instead of three and no double-double quotient (the crossing value was a quarter of
+// σ_d lean's time): q = RN(num_hi/den_hi) is RN(λ) about three times in four; otherwise its
+// neighbour towards λ (one step of the last bit) is tried the same way.
+inline bool crossing_certified(double q, double r, double E, double den_hi) {
+  const double a = std::abs(q);
+  const double h = 0.5 * (a - std::bit_cast<double>(std::bit_cast<std::uint64_t>(a) - 1));  // exact (Sterbenz)
+  return (std::abs(r) + E) * (1 + 0x1p-40) < h * std::abs(den_hi) * (1 - 0x1p-40);
+}
+
 template <bool F>
 [[gnu::always_inline]] inline bool crossing_value_body(const NfpFlat& self, std::uint32_t k, const Vec2& t, const Vec2& d, double& lambda, NfpFlat::ProjectionDiag* diag) {
   const NfpFlat::PieceDD& v = self.pdd[k];
@@ -348,13 +375,28 @@ template <bool F>
   if (!(an >= 0x1p-800 && an <= 0x1p800 && ad >= 0x1p-800 && ad <= 0x1p800)) return false;
   const double en = (std::abs(v.ey) * ewx + std::abs(v.ex) * ewy) * (1 + 0x1p-50) + 0x1p-99 * (std::abs(n1.hi) + std::abs(n2.hi));
   const double ed = 0x1p-99 * (std::abs(m1.hi) + std::abs(m2.hi));
-  const double rn = en / an * (1 + 0x1p-50), rd = ed / ad * (1 + 0x1p-50);
-  if (!(rn <= 0x1p-60 && rd <= 0x1p-60)) return false;
-  const D2 q = div<F>(num, den, 1 / den.hi);
-  const double b = ((rn + rd) * (1 + 0x1p-40) + exact::kDivBound) * std::abs(q.hi) * (1 + 0x1p-40);
-  if (diag) *diag = {{q.hi, 0, 0}, {q.lo, 0, 0}, {b, 0, 0}, true};
-  if (!exact::rounds_to(q.hi, q.lo, b)) return false;
-  lambda = q.hi;
+  // The candidate q = RN(num_hi / den_hi), else its neighbour towards λ (num_lo and den_lo move λ
+  // by up to about an ulp of q), each certified by its residual (crossing_certified).
+  double q = num.hi / den.hi;
+  if (!(std::abs(q) >= 0x1p-800 && std::abs(q) <= 0x1p800) || !(ed <= 0x1p-60 * ad)) return false;
+  double r, E;
+  auto residual = [&](double x) __attribute__((always_inline)) {
+    const double p = x * den.hi, t2 = x * den.lo;
+    r = ((num.hi - p) - residual_of<F>(x, den.hi, p)) + (num.lo - t2);
+    E = 0x1p-50 * (std::abs(t2) + std::abs(num.lo) + std::abs(r)) + en + std::abs(x) * ed;
+  };
+  residual(q);
+  if (!crossing_certified(q, r, E, den.hi)) {
+    const bool up = (r > 0) == (den.hi > 0);  // λ − q has the sign of r·D
+    q = std::bit_cast<double>(std::bit_cast<std::uint64_t>(q) + (up == (q > 0) ? 1 : -1));
+    residual(q);
+    if (!crossing_certified(q, r, E, den.hi)) {
+      if (diag) *diag = {{q, r, den.hi}, {0, 0, den.lo}, {0, E, ed}, true};
+      return false;
+    }
+  }
+  if (diag) *diag = {{q, r, den.hi}, {0, 0, den.lo}, {0, E, ed}, true};
+  lambda = q;
   return true;
 }
 

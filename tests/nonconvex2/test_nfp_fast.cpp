@@ -428,9 +428,13 @@ void projection_values_against_rationals() {
         NfpFlat::ProjectionDiag diag;
         const bool ok = N.flat.crossing_value(std::uint32_t(k), t, d, l, &diag);
         if (diag.set) {
-          const mpq_class err = abs(lam - mpq_class(diag.hi[0]) - mpq_class(diag.lo[0]));
-          ASSERT_LE(err, mpq_class(diag.bound[0])) << "crossing " << k;
-          worst_cross = std::max(worst_cross, mpq_class(err / mpq_class(diag.bound[0])).get_d());
+          // The certificate's two bounds (nfp_value.cpp crossing_certified): the denominator's
+          // double-double within its bound, and the residual N − q·D within E of r̃.
+          const mpq_class num = pendepth::nonconvex2::line_num(pc.edge, ray, LiftQ{}).v;
+          ASSERT_LE(abs(den.v - mpq_class(diag.hi[2]) - mpq_class(diag.lo[2])), mpq_class(diag.bound[2])) << "crossing den " << k;
+          const mpq_class err = abs(num - mpq_class(diag.hi[0]) * den.v - mpq_class(diag.hi[1]));
+          ASSERT_LE(err, mpq_class(diag.bound[1])) << "crossing residual " << k;
+          worst_cross = std::max(worst_cross, mpq_class(err / mpq_class(diag.bound[1])).get_d());
         }
         if (!ok) continue;
         ++crossed;
@@ -662,7 +666,17 @@ void vertex_values_against_rationals() {
     const Ray E = edge_ray(v(), v() * 0x1p-20, v(), k % 2 ? v() * 0x1p-30 : Vec2(0, 0), Vec2(0, 0), Vec2(0, 0));
     check(E, k % 2, k % 3 ? v() : Vec2(E.o1 + E.o2) + v() * 0x1p-40, "random " + std::to_string(k));
   }
-  std::cout << "[vertex values] " << tried << " tried, " << certified << " certified; worst error / bound " << worst << "\n";
+  // X − t an exact rounding tie per coordinate: 1 + 2⁻⁵³ (RN = 1, even), 1 + 3·2⁻⁵³ (RN = 1 + 2⁻⁵¹),
+  // a tie in y only, and t beyond X; both ends (μ = 1: X = o + D, D exact).
+  std::size_t ties = 0;
+  for (const Vec2& t : {Vec2(-0x1p-53, 0.25), Vec2(-3 * 0x1p-53, -3 * 0x1p-53), Vec2(3 + 0x1p-52, 0.5), Vec2(0.5, -0x1p-53)})
+    for (int end = 0; end < 2; ++end) {
+      const std::size_t before = certified;
+      check(edge_ray(Vec2(end == 0 ? 1 : -1, end == 0 ? 1 : -2), Vec2(0, 0), Vec2(2, 3), Vec2(0, 0), Vec2(0, 0), Vec2(0, 0)), end, t, "tie");
+      ties += certified - before;
+    }
+  EXPECT_GT(ties, 0u);  // exact ties are certified (e = 0), and checked against RN above
+  std::cout << "[vertex values] " << ties << " of 8 exact ties certified; " << tried << " tried, " << certified << " certified; worst error / bound " << worst << "\n";
   EXPECT_GT(certified, tried * 9 / 10);
   EXPECT_GT(worst, 0x1p-12);
 }
@@ -777,6 +791,92 @@ TEST(NfpFastPath, EndValuesAgainstRationals) {
     const ValuesBuild b(fma);
     end_values_against_rationals();
   }
+}
+
+// σ_d's crossing value λ = line_num / line_den on synthetic lines, against the rationals: λ
+// exactly a double, exactly a rounding tie (never certified to the wrong side), one quarter-ulp
+// either side of a tie, next to powers of two (the smaller gap below), and random lines and rays
+// over 2^±200 magnitudes with inexact two-double points. Every certified value is RN(λ) bit for
+// bit, in the FMA and the portable build.
+TEST(NfpFastPath, CrossingValuesAgainstRationals) {
+  using pendepth::exact::LiftQ;
+  using pendepth::nonconvex2::Line;
+  std::size_t tried = 0, certified = 0;
+  auto check = [&](const Line& L, const Vec2& t, const Vec2& d, const std::string& what) {
+    const pendepth::nonconvex2::Ray ray = pendepth::nonconvex2::Ray::query(t, d);
+    const auto den = pendepth::nonconvex2::line_den(L, ray, LiftQ{});
+    if (sgn(den.v) == 0) return;
+    const mpq_class lam = pendepth::nonconvex2::line_num(L, ray, LiftQ{}).v / den.v;
+    NfpFlat F;
+    F.pdd = {pendepth::nonconvex2::piece_dd(pendepth::nonconvex2::Ray{}, &L)};
+    ++tried;
+    double v[2];
+    bool ok[2];
+    for (int m = 0; m < 2; ++m) {
+      const ValuesBuild b(m == 0);
+      ok[m] = F.crossing_value(0, t, d, v[m]);
+    }
+    ASSERT_EQ(ok[0], ok[1]) << what;
+    if (!ok[0]) return;
+    ++certified;
+    ASSERT_TRUE(same(v[0], v[1])) << what;
+    ASSERT_TRUE(same(v[0], pendepth::exact::round_nearest(lam))) << what << ": " << v[0] << " against " << lam.get_d();
+  };
+  auto line = [](const Vec2& c1, const Vec2& c2, const Vec2& e) {
+    Line L;
+    L.c1 = c1, L.c2 = c2, L.e0 = Vec2(0, 0), L.e1 = e;
+    return L;
+  };
+  // Vertical line x = C, ray from 0 along (3, 0): λ = C/3 with C = 3·(m + δ) exactly (c1 + c2).
+  std::size_t exact_ties = 0;
+  for (double m : {1.0, 1.5, 2.0, 0.75, 1.0 + 0x1p-52})
+    for (double frac : {0.0, 0.5, 0.25, 0.75, -0.5, -0.25, 1.0})
+      for (double sgn_d : {1.0, -1.0}) {
+        const double gap = m == 1.0 || m == 2.0 ? (frac < 0 ? 0.5 : 1.0) * 0x1p-52 * m : std::nextafter(m, 4.0) - m;
+        const double delta = frac * gap;  // λ = m + δ: a tie at frac = ±0.5
+        exact_ties += frac == 0.5 || frac == -0.5;
+        check(line(Vec2(3 * m * sgn_d, 0), Vec2(3 * delta * sgn_d, 0), Vec2(0, 1)), Vec2(0, 0), Vec2(3 * sgn_d, 0), "tie family");
+        check(line(Vec2(0, 5 * m), Vec2(0, 5 * delta), Vec2(1, 0)), Vec2(0, 0), Vec2(0, 5), "tie family y");
+      }
+  std::mt19937_64 rng(19011);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::uniform_int_distribution<int> ex(-200, 200);
+  for (int k = 0; k < 20000; ++k) {
+    const double s = std::ldexp(1.0, ex(rng));
+    auto v = [&]() -> Vec2 { return Vec2(u(rng), u(rng)) * s; };
+    check(line(v(), k % 2 ? v() * 0x1p-40 : Vec2(0, 0), v()), v(), Vec2(u(rng), u(rng)), "random " + std::to_string(k));
+  }
+  std::cout << "[crossing certificate] " << tried << " lines, " << certified << " certified, " << exact_ties << " exact ties\n";
+  EXPECT_GT(certified, tried * 9 / 10);
+}
+
+// check_and_scale's power-of-two product against the ldexp reference (the former code), and
+// norm_accurate against the full tiered evaluation (on the raw and the scaled directions): the same
+// doubles bit for bit on random directions over the whole exponent range, subnormal and
+// near-overflow components, and components whose scaled partner underflows (rounded).
+TEST(NfpFastPath, DirectionScalingMatchesLdexp) {
+  auto reference = [](const Vec2& d) {
+    const int e = std::ilogb(std::max(std::abs(d.x()), std::abs(d.y())));
+    return Vec2(std::ldexp(d.x(), -e), std::ldexp(d.y(), -e));
+  };
+  std::mt19937_64 rng(19012);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::uniform_int_distribution<int> ex(-1074, 1023);
+  std::vector<Vec2> ds = {{1, 0}, {0, -1}, {0x1p-1074, 0}, {-0x1p-1074, 0x1p-1060}, {0x1.fffffffffffffp1023, 1},
+                          {0x1p1023, -0x1p-1074}, {0x1p-1022, 0x1.8p-1074}, {0x1p1022, 0x1.3p-60}, {0x1.2345p1000, 0x1.5p-70}};
+  for (int k = 0; k < 200000; ++k) ds.emplace_back(std::ldexp(u(rng), ex(rng)), std::ldexp(u(rng), ex(rng)));
+  std::size_t compared = 0;
+  for (const Vec2& d : ds) {
+    if (d.x() == 0 && d.y() == 0) continue;
+    ++compared;
+    ASSERT_TRUE(same(pendepth::nonconvex2::check_and_scale(Vec2(0, 0), d), reference(d))) << std::hexfloat << d.transpose();
+    // norm_accurate's direct DD tier against the full tiered evaluation (the former code).
+    for (const Vec2& v : {d, pendepth::nonconvex2::check_and_scale(Vec2(0, 0), d)}) {
+      const double want = std::sqrt(pendepth::exact::accurate_value([&](auto L) { return L(v.x()) * L(v.x()) + L(v.y()) * L(v.y()); }));
+      ASSERT_TRUE(same(pendepth::nonconvex2::norm_accurate(v), want)) << std::hexfloat << v.transpose();
+    }
+  }
+  EXPECT_GT(compared, 200000u);
 }
 
 TEST(NfpFastPath, FmaAndPortableValuesAgree) {
