@@ -59,7 +59,10 @@
 #include "convex3/minkowski_facets.hpp"
 #include "convex3/polytope_data.hpp"
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include "mesh3/plane_number.hpp"
+
+#include <CGAL/Interval_nt.h>
+#include <CGAL/Uncertain.h>
 
 #include <algorithm>
 #include <bit>
@@ -70,7 +73,7 @@
 namespace pendepth::mesh3 {
 namespace {
 
-using FT = CGAL::Exact_predicates_exact_constructions_kernel::FT;
+using FT = PlaneNumber;  // exact, non-lazy (plane_number.hpp)
 using I = CGAL::Interval_nt<true>;  // the filter: intervals that hold the exact values
 
 // Vectors of exact numbers (V3) or of intervals (IV3): the same polynomials in both.
@@ -105,12 +108,12 @@ Vec<T> cross(const Vec<T>& a, const Vec<T>& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 I iv(const FT& v) {
-  const auto r = CGAL::to_interval(v);
+  const auto r = to_interval(v);
   return I(r.first, r.second);
 }
 IV3 iv(const V3& v) { return {iv(v.x), iv(v.y), iv(v.z)}; }
-bool is_zero(const V3& a) { return CGAL::is_zero(a.x) && CGAL::is_zero(a.y) && CGAL::is_zero(a.z); }
-Vec3 to_vec(const V3& a) { return {CGAL::to_double(a.x), CGAL::to_double(a.y), CGAL::to_double(a.z)}; }
+bool is_zero(const V3& a) { return is_zero(a.x) && is_zero(a.y) && is_zero(a.z); }
+Vec3 to_vec(const V3& a) { return {to_double(a.x), to_double(a.y), to_double(a.z)}; }
 
 Box3 box_of_sum(const MeshPair& m, const Placed& pl, std::size_t i, std::size_t j) { return sum_box(m, pl, i, j); }
 
@@ -197,7 +200,7 @@ std::pair<Vec<T>, T> plane_poly(const Placed& pl, const convex3::PolytopeData& P
       const Vec<T> pe = lift<T>(P.v[LP.target(LP.next(LP.twin[k.p_feature]))]);
       const Vec<T> pa = lift<T>(P.v[LP.origin(k.p_feature)]);
       const T s1 = dot(u, pc - pa), s2 = dot(u, pe - pa);
-      if (CGAL::is_positive(s1) || CGAL::is_positive(s2)) u = T(-1) * u;
+      if (is_positive(s1) || is_positive(s2)) u = T(-1) * u;
       break;
     }
   }
@@ -268,7 +271,7 @@ bool same_plane(const Ctx& c, std::size_t pa, std::size_t pb) {
   const ExactPlane &ea = exact_plane(c, pa), &eb = exact_plane(c, pb);
   if (!is_zero(cross(ea.n, eb.n))) return false;
   const FT ab = dot(ea.n, eb.n);
-  return CGAL::is_positive(ab) && ea.c * ab == eb.c * dot(ea.n, ea.n);
+  return is_positive(ab) && ea.c * ab == eb.c * dot(ea.n, ea.n);
 }
 
 // The same plane, either side: b.n = t·a.n (t != 0) and b.c = t·a.c, exactly (filter first).
@@ -425,8 +428,8 @@ struct Best {
 
 void offer(Best& b, const FT& d2, const V3& x, std::size_t plane) {
   if (b.beyond(d2)) return;
-  b.d2 = d2, b.x = x, b.plane = plane, b.sup2 = CGAL::to_interval(d2).second;
-  b.radius = std::min(b.radius, std::sqrt(CGAL::to_double(d2)) * (1 + 0x1p-40) + 0x1p-1000);
+  b.d2 = d2, b.x = x, b.plane = plane, b.sup2 = to_interval(d2).second;
+  b.radius = std::min(b.radius, std::sqrt(to_double(d2)) * (1 + 0x1p-40) + 0x1p-1000);
 }
 
 const V3& exact_u(const Ctx& c, const LineI& L) {
@@ -463,7 +466,7 @@ Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I&
     // sign is taken from the exact numbers rather than giving up.
     const CGAL::Sign sa = certainly_zero(a)        ? CGAL::ZERO
                           : certainly_nonzero(a) ? (a.inf() > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE)
-                                                 : CGAL::sign(dot(exact_plane(c, p).n, exact_u(c, L)));
+                                                 : sign(dot(exact_plane(c, p).n, exact_u(c, L)));
     // b near 0 too: plane p nearly holds the line (equal to g's plane at a seam, or nearly
     // coplanar with f or g in a rounded symmetric mesh): b exactly, and λ exactly when a != 0
     // (the exact number's enclosure after its exact evaluation is tight).
@@ -471,7 +474,7 @@ Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I&
     if (!certainly_nonzero(a) && !certainly_nonzero(b) && !certainly_zero(b))
       be = exact_plane(c, p).c - dot(exact_plane(c, p).n, exact_x0(c, L));
     if (sa == CGAL::ZERO) {
-      const CGAL::Sign sb = be ? CGAL::sign(*be)
+      const CGAL::Sign sb = be ? sign(*be)
                             : b.inf() > 0 ? CGAL::POSITIVE
                             : b.sup() < 0 ? CGAL::NEGATIVE
                                           : CGAL::ZERO;
@@ -483,8 +486,7 @@ Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I&
     I l;
     if (certainly_nonzero(a)) l = b / a;
     else if (be) {
-      FT le = *be / dot(exact_plane(c, p).n, exact_u(c, L));
-      le.exact();
+      const FT le = *be / dot(exact_plane(c, p).n, exact_u(c, L));
       l = iv(le);
     } else if ((sa == CGAL::POSITIVE) == (b.inf() > 0))
       l = I((I(b.inf() > 0 ? b.inf() : b.sup()) / I(sa == CGAL::POSITIVE ? a.sup() : a.inf())).inf(), INFINITY);
@@ -533,7 +535,7 @@ bool line_no_offer(const Ctx& c, const LineI& L, const Sum& sk, std::size_t gp, 
     ivs.emplace_back(lo, hi);
   }
   auto settled = [&](const I& lam) {
-    if (best.beyond(L.l2 + CGAL::square(lam) * L.u2)) return true;
+    if (best.beyond(L.l2 + square(lam) * L.u2)) return true;
     for (const auto& [lo, hi] : ivs)
       if (lo.sup() < lam.inf() && lam.sup() < hi.inf()) return true;
     return false;
@@ -566,9 +568,9 @@ bool line_interval(const Ctx& c, const Sum& s, const V3& x0, const V3& u, bool s
     }
     const ExactPlane& pl = exact_plane(c, p);
     const FT a = dot(pl.n, u), b = pl.c - dot(pl.n, x0);
-    const CGAL::Sign sa = CGAL::sign(a);
+    const CGAL::Sign sa = sign(a);
     if (sa == CGAL::ZERO) {
-      if (strict ? !CGAL::is_positive(b) : CGAL::is_negative(b)) return false;
+      if (strict ? !is_positive(b) : is_negative(b)) return false;
       continue;
     }
     const FT l = b / a;
@@ -686,7 +688,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
   Best best;
   best.radius = reach;
   best.cap2 = FT(reach) * FT(reach);
-  best.sup2 = CGAL::to_interval(best.cap2).second;
+  best.sup2 = to_interval(best.cap2).second;
   auto near = [&](double d) { return d * (1 - 0x1p-40) <= best.radius; };
   std::vector<std::size_t> cover;    // sums whose box meets B(0, best.radius): they cover
   std::vector<std::size_t> sources;  // the same and f's own sum: their planes cut f's lines
@@ -719,7 +721,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
       }
     const ExactPlane& fe = exact_plane(c, fi);
     const FT n2 = dot(fe.n, fe.n);
-    if (CGAL::is_zero(n2)) continue;  // a degenerate candidate normal supports nothing
+    if (is_zero(n2)) continue;  // a degenerate candidate normal supports nothing
     // The foot of 0 on plane(f).
     const FT d2 = fe.c * fe.c / n2;
     if (best.beyond(d2)) continue;
@@ -743,7 +745,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
       for (std::size_t gi = sl.first; gi < sl.first + sl.count; ++gi) {
         const Plane& g = c.planes[gi];
         if (gi == fi || !near(g.dist)) continue;
-        const double bound2 = best.d2 ? CGAL::to_interval(*best.d2).second : reach * reach * (1 + 0x1p-40);
+        const double bound2 = best.d2 ? to_interval(*best.d2).second : reach * reach * (1 + 0x1p-40);
         if (c.filt) {
           const LineI L = interval_line(f, g, fi, gi);
           if (line_far(c, L, sk, sl, bound2) ||
@@ -764,7 +766,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
         // Covering open intervals (the ones meeting [a, b]).
         std::vector<std::pair<FT, FT>> ivs;
         const LineI Le{iv(u), iv(x0), iv(u2), iv(l2), fi, gi, u, x0};
-        const double a_inf = CGAL::to_interval(*a).first, b_sup = CGAL::to_interval(*b).second;
+        const double a_inf = to_interval(*a).first, b_sup = to_interval(*b).second;
         for (std::size_t l2i : cover) {
           if (c.filt && cover_misses(c, c.sums[l2i], Le, gi, a_inf, b_sup)) continue;
           std::optional<FT> lo, hi;
@@ -773,13 +775,13 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
           ivs.emplace_back(*lo, *hi);
         }
         std::vector<FT> cand;
-        cand.push_back(CGAL::is_positive(*a) ? *a : CGAL::is_negative(*b) ? *b : FT(0));
+        cand.push_back(is_positive(*a) ? *a : is_negative(*b) ? *b : FT(0));
         cand.push_back(*a), cand.push_back(*b);
         for (const auto& [lo, hi] : ivs) {
           if (lo >= *a) cand.push_back(lo);
           if (hi <= *b) cand.push_back(hi);
         }
-        std::sort(cand.begin(), cand.end(), [](const FT& x, const FT& y) { return CGAL::abs(x) < CGAL::abs(y); });
+        std::sort(cand.begin(), cand.end(), [](const FT& x, const FT& y) { return abs(x) < abs(y); });
         for (const FT& lam : cand) {
           const FT e2 = l2 + lam * lam * u2;
           if (best.beyond(e2)) break;
@@ -802,8 +804,8 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
 
   // σ = RN(√σ²) and a certified bracket.
   const FT q = *best.d2;
-  double s = std::sqrt(CGAL::to_double(q));
-  auto cmp = [&](double v) { return CGAL::compare(FT(v) * FT(v), q); };  // sign(v² − σ²)
+  double s = std::sqrt(to_double(q));
+  auto cmp = [&](double v) { return compare(FT(v) * FT(v), q); };  // sign(v² − σ²)
   while (cmp(s) == CGAL::SMALLER) s = std::nextafter(s, INFINITY);
   while (s > 0 && cmp(std::nextafter(s, 0.0)) != CGAL::SMALLER) s = std::nextafter(s, 0.0);
   // Now s = the least double with s² >= σ².
@@ -812,7 +814,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
   double depth = hi;
   if (lo != hi) {
     const FT mid = (FT(lo) + FT(hi)) / 2;
-    const CGAL::Comparison_result r = CGAL::compare(mid * mid, q);
+    const CGAL::Comparison_result r = compare(mid * mid, q);
     depth = r == CGAL::LARGER ? lo : r == CGAL::SMALLER ? hi : (std::bit_cast<std::uint64_t>(lo) % 2 == 0 ? lo : hi);
   }
 
