@@ -14,9 +14,10 @@
 // Representation: every S_k by its supporting planes n·x <= c from convex3::minkowski_facets (a
 // superset of its facet normals, each plane supporting S_k: offset = support value), held as
 // interval enclosures of the exact polynomials in the input doubles (Interval_nt on the same
-// expressions: a proven forward error bound) and rebuilt exactly as CGAL lazy exact numbers
-// (Epeck::FT) only when a filter cannot decide (exact_plane, on demand) — q' = R q + tq − tp
-// exactly for the doubles R, tq, tp as in the convex engines. Every decision (inside / strictly
+// expressions: a proven forward error bound) and rebuilt exactly as PlaneNumbers (plane_number.hpp:
+// unreduced quotients of exact binary floats, no lazy DAG, no gcd) only when a filter cannot
+// decide (exact_plane, on demand) — q' = R q + tq − tp exactly for the doubles R, tq, tp as in
+// the convex engines. Every decision (inside / strictly
 // inside / interval order / distance order) is an exact comparison; σ² is rational,
 // σ = RN(√σ²) with a certified 1-ulp bracket.
 // Ties handled structurally (exact tests, both tiers): planes of one sum that are the same
@@ -51,9 +52,10 @@
 // Cost: for F facets in range and K sums, O(F) projections of O(K·f̄) tests each, and up to
 // O(F²) lines of O(K·f̄ + K²) each in the worst case (f̄ = facets per sum); in practice the
 // projections settle most facets. Measured (docs/benchmarks.md "Exact mesh σ: interval planes,
-// one-sum facet cover"): the tori and the tripod are still beyond reach — their facets near 0
-// are covered by unions of several sums and nearly coplanar planes (rounded symmetric meshes)
-// send lines to the exact stage, each exact line costs tens of ms over ~300 covering sums.
+// one-sum facet cover" and "Exact mesh σ: a plane number type"): the tori and the tripod are
+// still beyond reach — their facets near 0 are covered by unions of several sums and nearly
+// coplanar planes (rounded symmetric meshes) send lines to the exact stage: ~7 000 lines tried
+// and several hundred exact lines per facet, each exact line ~10 ms over ~300 covering sums.
 #include "mesh3/mesh_sigma_exact.hpp"
 
 #include "convex3/minkowski_facets.hpp"
@@ -555,33 +557,92 @@ bool boxes_meet(const Box3& a, const Box3& b) {
 }
 
 // The interval of λ with x0 + λu in S: closed (strict = false) or open (strict = true).
-// False when empty.
+// False when empty. x0, u: L's exact numbers (exact_x0, exact_u).
 // The planes equal to plane(f) and the plane g (index `gp`) contain the line (a = b = 0 exactly,
 // by construction of x0 and u): no constraint when closed, an empty open interval.
-bool line_interval(const Ctx& c, const Sum& s, const V3& x0, const V3& u, bool strict, std::optional<FT>& lo,
+// Filtered tier: the ends are the exact max / min of λ = b/a over the planes with a < 0 / a > 0;
+// each plane's a and λ are first enclosed in intervals (L's enclosures), and only the planes
+// whose λ may be the extremum (enclosure meeting the certain bound of the extremum) or whose sign
+// of a is uncertain are evaluated exactly — the same ends and the same emptiness as evaluating
+// every plane exactly (the unfiltered tier). O(f̄) interval operations and usually 1–3 exact λ.
+struct PlaneLambda {
+  std::size_t p;
+  I l;
+};
+bool line_interval(const Ctx& c, const Sum& s, const LineI& L, bool strict, std::optional<FT>& lo,
                    std::optional<FT>& hi, std::size_t gp) {
   lo.reset(), hi.reset();
-  for (std::size_t p = s.first; p < s.first + s.count; ++p) {
-    if (p == gp || c.on_f[p]) {
-      if (strict) return false;
-      continue;
-    }
+  const V3 &u = exact_u(c, L), &x0 = exact_x0(c, L);
+  auto exact_lambda = [&](std::size_t p, FT& l) {  // sign(a); λ = b/a when a != 0
     const ExactPlane& pl = exact_plane(c, p);
-    const FT a = dot(pl.n, u), b = pl.c - dot(pl.n, x0);
+    const FT a = dot(pl.n, u);
     const CGAL::Sign sa = sign(a);
-    if (sa == CGAL::ZERO) {
-      if (strict ? !is_positive(b) : is_negative(b)) return false;
-      continue;
-    }
-    const FT l = b / a;
+    if (sa != CGAL::ZERO) l = (pl.c - dot(pl.n, x0)) / a;
+    return sa;
+  };
+  auto zero_a_empty = [&](std::size_t p) {  // a = 0: the whole line on the wrong side of p
+    const ExactPlane& pl = exact_plane(c, p);
+    const FT b = pl.c - dot(pl.n, x0);
+    return strict ? !is_positive(b) : is_negative(b);
+  };
+  auto take = [&](CGAL::Sign sa, const FT& l) {
     if (sa == CGAL::POSITIVE) {
       if (!hi || l < *hi) hi = l;
     } else {
       if (!lo || l > *lo) lo = l;
     }
-    if (lo && hi && (strict ? !(*lo < *hi) : *lo > *hi)) return false;
+  };
+  if (!c.filt) {
+    for (std::size_t p = s.first; p < s.first + s.count; ++p) {
+      if (p == gp || c.on_f[p]) {
+        if (strict) return false;
+        continue;
+      }
+      FT l;
+      const CGAL::Sign sa = exact_lambda(p, l);
+      if (sa == CGAL::ZERO) {
+        if (zero_a_empty(p)) return false;
+        continue;
+      }
+      take(sa, l);
+      if (lo && hi && (strict ? !(*lo < *hi) : *lo > *hi)) return false;
+    }
+    return true;
   }
-  return true;
+  // Enclosures of λ for the planes of certain sign of a; exact at once for the others.
+  static thread_local std::vector<PlaneLambda> neg, pos;
+  neg.clear(), pos.clear();
+  double lo_bound = -INFINITY, hi_bound = INFINITY;  // certain: max λ⁻ >= lo_bound, min λ⁺ <= hi_bound
+  for (std::size_t p = s.first; p < s.first + s.count; ++p) {
+    if (p == gp || c.on_f[p]) {
+      if (strict) return false;
+      continue;
+    }
+    const Plane& pl = c.planes[p];
+    const I a = dot(pl.ni, L.u);
+    if (certainly_nonzero(a)) {
+      const I l = (pl.ci - dot(pl.ni, L.x0)) / a;
+      if (a.inf() > 0) pos.push_back({p, l}), hi_bound = std::min(hi_bound, l.sup());
+      else neg.push_back({p, l}), lo_bound = std::max(lo_bound, l.inf());
+      continue;
+    }
+    FT l;
+    const CGAL::Sign sa = exact_lambda(p, l);
+    if (sa == CGAL::ZERO) {
+      if (zero_a_empty(p)) return false;
+      continue;
+    }
+    const auto [li, ls] = to_interval(l);
+    if (sa == CGAL::POSITIVE) pos.push_back({p, I(li, ls)}), hi_bound = std::min(hi_bound, ls);
+    else neg.push_back({p, I(li, ls)}), lo_bound = std::max(lo_bound, li);
+  }
+  // The exact extremum over the planes that may attain it.
+  FT l;
+  for (const PlaneLambda& q : neg)
+    if (q.l.sup() >= lo_bound) take(exact_lambda(q.p, l), l);
+  for (const PlaneLambda& q : pos)
+    if (q.l.inf() <= hi_bound) take(exact_lambda(q.p, l), l);
+  return !(lo && hi && (strict ? !(*lo < *hi) : *lo > *hi));
 }
 
 // Enclosures of a superset of the vertices of the face f ∩ S_k = F_P(n) ⊕ −F_Q'(n) (n = f's
@@ -760,17 +821,17 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
         const FT l2 = dot(x0, x0);
         if (best.beyond(l2)) continue;
         std::optional<FT> a, b;
-        if (!line_interval(c, sk, x0, u, false, a, b, gi)) continue;
+        const LineI Le{iv(u), iv(x0), iv(u2), iv(l2), fi, gi, u, x0};
+        if (!line_interval(c, sk, Le, false, a, b, gi)) continue;
         if (!a || !b) continue;  // unreachable: S_k is bounded
         ++lines;
         // Covering open intervals (the ones meeting [a, b]).
         std::vector<std::pair<FT, FT>> ivs;
-        const LineI Le{iv(u), iv(x0), iv(u2), iv(l2), fi, gi, u, x0};
         const double a_inf = to_interval(*a).first, b_sup = to_interval(*b).second;
         for (std::size_t l2i : cover) {
           if (c.filt && cover_misses(c, c.sums[l2i], Le, gi, a_inf, b_sup)) continue;
           std::optional<FT> lo, hi;
-          if (!line_interval(c, c.sums[l2i], x0, u, true, lo, hi, gi) || !lo || !hi) continue;
+          if (!line_interval(c, c.sums[l2i], Le, true, lo, hi, gi) || !lo || !hi) continue;
           if (*hi <= *a || *lo >= *b) continue;
           ivs.emplace_back(*lo, *hi);
         }
