@@ -14,9 +14,10 @@
 // Representation: every S_k by its supporting planes n·x <= c from convex3::minkowski_facets (a
 // superset of its facet normals, each plane supporting S_k: offset = support value), held as
 // interval enclosures of the exact polynomials in the input doubles (Interval_nt on the same
-// expressions: a proven forward error bound) and rebuilt exactly as CGAL lazy exact numbers
-// (Epeck::FT) only when a filter cannot decide (exact_plane, on demand) — q' = R q + tq − tp
-// exactly for the doubles R, tq, tp as in the convex engines. Every decision (inside / strictly
+// expressions: a proven forward error bound) and rebuilt exactly as PlaneNumbers (plane_number.hpp:
+// unreduced quotients of exact binary floats, no lazy DAG, no gcd) only when a filter cannot
+// decide (exact_plane, on demand) — q' = R q + tq − tp exactly for the doubles R, tq, tp as in
+// the convex engines. Every decision (inside / strictly
 // inside / interval order / distance order) is an exact comparison; σ² is rational,
 // σ = RN(√σ²) with a certified 1-ulp bracket.
 // Ties handled structurally (exact tests, both tiers): planes of one sum that are the same
@@ -51,15 +52,19 @@
 // Cost: for F facets in range and K sums, O(F) projections of O(K·f̄) tests each, and up to
 // O(F²) lines of O(K·f̄ + K²) each in the worst case (f̄ = facets per sum); in practice the
 // projections settle most facets. Measured (docs/benchmarks.md "Exact mesh σ: interval planes,
-// one-sum facet cover"): the tori and the tripod are still beyond reach — their facets near 0
-// are covered by unions of several sums and nearly coplanar planes (rounded symmetric meshes)
-// send lines to the exact stage, each exact line costs tens of ms over ~300 covering sums.
+// one-sum facet cover" and "Exact mesh σ: a plane number type"): the tori and the tripod are
+// still beyond reach — their facets near 0 are covered by unions of several sums and nearly
+// coplanar planes (rounded symmetric meshes) send lines to the exact stage: ~7 000 lines tried
+// and several hundred exact lines per facet, each exact line ~10 ms over ~300 covering sums.
 #include "mesh3/mesh_sigma_exact.hpp"
 
 #include "convex3/minkowski_facets.hpp"
 #include "convex3/polytope_data.hpp"
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include "mesh3/plane_number.hpp"
+
+#include <CGAL/Interval_nt.h>
+#include <CGAL/Uncertain.h>
 
 #include <algorithm>
 #include <bit>
@@ -70,7 +75,7 @@
 namespace pendepth::mesh3 {
 namespace {
 
-using FT = CGAL::Exact_predicates_exact_constructions_kernel::FT;
+using FT = PlaneNumber;  // exact, non-lazy (plane_number.hpp)
 using I = CGAL::Interval_nt<true>;  // the filter: intervals that hold the exact values
 
 // Vectors of exact numbers (V3) or of intervals (IV3): the same polynomials in both.
@@ -105,12 +110,12 @@ Vec<T> cross(const Vec<T>& a, const Vec<T>& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 I iv(const FT& v) {
-  const auto r = CGAL::to_interval(v);
+  const auto r = to_interval(v);
   return I(r.first, r.second);
 }
 IV3 iv(const V3& v) { return {iv(v.x), iv(v.y), iv(v.z)}; }
-bool is_zero(const V3& a) { return CGAL::is_zero(a.x) && CGAL::is_zero(a.y) && CGAL::is_zero(a.z); }
-Vec3 to_vec(const V3& a) { return {CGAL::to_double(a.x), CGAL::to_double(a.y), CGAL::to_double(a.z)}; }
+bool is_zero(const V3& a) { return is_zero(a.x) && is_zero(a.y) && is_zero(a.z); }
+Vec3 to_vec(const V3& a) { return {to_double(a.x), to_double(a.y), to_double(a.z)}; }
 
 Box3 box_of_sum(const MeshPair& m, const Placed& pl, std::size_t i, std::size_t j) { return sum_box(m, pl, i, j); }
 
@@ -197,7 +202,7 @@ std::pair<Vec<T>, T> plane_poly(const Placed& pl, const convex3::PolytopeData& P
       const Vec<T> pe = lift<T>(P.v[LP.target(LP.next(LP.twin[k.p_feature]))]);
       const Vec<T> pa = lift<T>(P.v[LP.origin(k.p_feature)]);
       const T s1 = dot(u, pc - pa), s2 = dot(u, pe - pa);
-      if (CGAL::is_positive(s1) || CGAL::is_positive(s2)) u = T(-1) * u;
+      if (is_positive(s1) || is_positive(s2)) u = T(-1) * u;
       break;
     }
   }
@@ -268,7 +273,7 @@ bool same_plane(const Ctx& c, std::size_t pa, std::size_t pb) {
   const ExactPlane &ea = exact_plane(c, pa), &eb = exact_plane(c, pb);
   if (!is_zero(cross(ea.n, eb.n))) return false;
   const FT ab = dot(ea.n, eb.n);
-  return CGAL::is_positive(ab) && ea.c * ab == eb.c * dot(ea.n, ea.n);
+  return is_positive(ab) && ea.c * ab == eb.c * dot(ea.n, ea.n);
 }
 
 // The same plane, either side: b.n = t·a.n (t != 0) and b.c = t·a.c, exactly (filter first).
@@ -425,8 +430,8 @@ struct Best {
 
 void offer(Best& b, const FT& d2, const V3& x, std::size_t plane) {
   if (b.beyond(d2)) return;
-  b.d2 = d2, b.x = x, b.plane = plane, b.sup2 = CGAL::to_interval(d2).second;
-  b.radius = std::min(b.radius, std::sqrt(CGAL::to_double(d2)) * (1 + 0x1p-40) + 0x1p-1000);
+  b.d2 = d2, b.x = x, b.plane = plane, b.sup2 = to_interval(d2).second;
+  b.radius = std::min(b.radius, std::sqrt(to_double(d2)) * (1 + 0x1p-40) + 0x1p-1000);
 }
 
 const V3& exact_u(const Ctx& c, const LineI& L) {
@@ -463,7 +468,7 @@ Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I&
     // sign is taken from the exact numbers rather than giving up.
     const CGAL::Sign sa = certainly_zero(a)        ? CGAL::ZERO
                           : certainly_nonzero(a) ? (a.inf() > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE)
-                                                 : CGAL::sign(dot(exact_plane(c, p).n, exact_u(c, L)));
+                                                 : sign(dot(exact_plane(c, p).n, exact_u(c, L)));
     // b near 0 too: plane p nearly holds the line (equal to g's plane at a seam, or nearly
     // coplanar with f or g in a rounded symmetric mesh): b exactly, and λ exactly when a != 0
     // (the exact number's enclosure after its exact evaluation is tight).
@@ -471,7 +476,7 @@ Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I&
     if (!certainly_nonzero(a) && !certainly_nonzero(b) && !certainly_zero(b))
       be = exact_plane(c, p).c - dot(exact_plane(c, p).n, exact_x0(c, L));
     if (sa == CGAL::ZERO) {
-      const CGAL::Sign sb = be ? CGAL::sign(*be)
+      const CGAL::Sign sb = be ? sign(*be)
                             : b.inf() > 0 ? CGAL::POSITIVE
                             : b.sup() < 0 ? CGAL::NEGATIVE
                                           : CGAL::ZERO;
@@ -483,8 +488,7 @@ Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I&
     I l;
     if (certainly_nonzero(a)) l = b / a;
     else if (be) {
-      FT le = *be / dot(exact_plane(c, p).n, exact_u(c, L));
-      le.exact();
+      const FT le = *be / dot(exact_plane(c, p).n, exact_u(c, L));
       l = iv(le);
     } else if ((sa == CGAL::POSITIVE) == (b.inf() > 0))
       l = I((I(b.inf() > 0 ? b.inf() : b.sup()) / I(sa == CGAL::POSITIVE ? a.sup() : a.inf())).inf(), INFINITY);
@@ -533,7 +537,7 @@ bool line_no_offer(const Ctx& c, const LineI& L, const Sum& sk, std::size_t gp, 
     ivs.emplace_back(lo, hi);
   }
   auto settled = [&](const I& lam) {
-    if (best.beyond(L.l2 + CGAL::square(lam) * L.u2)) return true;
+    if (best.beyond(L.l2 + square(lam) * L.u2)) return true;
     for (const auto& [lo, hi] : ivs)
       if (lo.sup() < lam.inf() && lam.sup() < hi.inf()) return true;
     return false;
@@ -553,33 +557,92 @@ bool boxes_meet(const Box3& a, const Box3& b) {
 }
 
 // The interval of λ with x0 + λu in S: closed (strict = false) or open (strict = true).
-// False when empty.
+// False when empty. x0, u: L's exact numbers (exact_x0, exact_u).
 // The planes equal to plane(f) and the plane g (index `gp`) contain the line (a = b = 0 exactly,
 // by construction of x0 and u): no constraint when closed, an empty open interval.
-bool line_interval(const Ctx& c, const Sum& s, const V3& x0, const V3& u, bool strict, std::optional<FT>& lo,
+// Filtered tier: the ends are the exact max / min of λ = b/a over the planes with a < 0 / a > 0;
+// each plane's a and λ are first enclosed in intervals (L's enclosures), and only the planes
+// whose λ may be the extremum (enclosure meeting the certain bound of the extremum) or whose sign
+// of a is uncertain are evaluated exactly — the same ends and the same emptiness as evaluating
+// every plane exactly (the unfiltered tier). O(f̄) interval operations and usually 1–3 exact λ.
+struct PlaneLambda {
+  std::size_t p;
+  I l;
+};
+bool line_interval(const Ctx& c, const Sum& s, const LineI& L, bool strict, std::optional<FT>& lo,
                    std::optional<FT>& hi, std::size_t gp) {
   lo.reset(), hi.reset();
-  for (std::size_t p = s.first; p < s.first + s.count; ++p) {
-    if (p == gp || c.on_f[p]) {
-      if (strict) return false;
-      continue;
-    }
+  const V3 &u = exact_u(c, L), &x0 = exact_x0(c, L);
+  auto exact_lambda = [&](std::size_t p, FT& l) {  // sign(a); λ = b/a when a != 0
     const ExactPlane& pl = exact_plane(c, p);
-    const FT a = dot(pl.n, u), b = pl.c - dot(pl.n, x0);
-    const CGAL::Sign sa = CGAL::sign(a);
-    if (sa == CGAL::ZERO) {
-      if (strict ? !CGAL::is_positive(b) : CGAL::is_negative(b)) return false;
-      continue;
-    }
-    const FT l = b / a;
+    const FT a = dot(pl.n, u);
+    const CGAL::Sign sa = sign(a);
+    if (sa != CGAL::ZERO) l = (pl.c - dot(pl.n, x0)) / a;
+    return sa;
+  };
+  auto zero_a_empty = [&](std::size_t p) {  // a = 0: the whole line on the wrong side of p
+    const ExactPlane& pl = exact_plane(c, p);
+    const FT b = pl.c - dot(pl.n, x0);
+    return strict ? !is_positive(b) : is_negative(b);
+  };
+  auto take = [&](CGAL::Sign sa, const FT& l) {
     if (sa == CGAL::POSITIVE) {
       if (!hi || l < *hi) hi = l;
     } else {
       if (!lo || l > *lo) lo = l;
     }
-    if (lo && hi && (strict ? !(*lo < *hi) : *lo > *hi)) return false;
+  };
+  if (!c.filt) {
+    for (std::size_t p = s.first; p < s.first + s.count; ++p) {
+      if (p == gp || c.on_f[p]) {
+        if (strict) return false;
+        continue;
+      }
+      FT l;
+      const CGAL::Sign sa = exact_lambda(p, l);
+      if (sa == CGAL::ZERO) {
+        if (zero_a_empty(p)) return false;
+        continue;
+      }
+      take(sa, l);
+      if (lo && hi && (strict ? !(*lo < *hi) : *lo > *hi)) return false;
+    }
+    return true;
   }
-  return true;
+  // Enclosures of λ for the planes of certain sign of a; exact at once for the others.
+  static thread_local std::vector<PlaneLambda> neg, pos;
+  neg.clear(), pos.clear();
+  double lo_bound = -INFINITY, hi_bound = INFINITY;  // certain: max λ⁻ >= lo_bound, min λ⁺ <= hi_bound
+  for (std::size_t p = s.first; p < s.first + s.count; ++p) {
+    if (p == gp || c.on_f[p]) {
+      if (strict) return false;
+      continue;
+    }
+    const Plane& pl = c.planes[p];
+    const I a = dot(pl.ni, L.u);
+    if (certainly_nonzero(a)) {
+      const I l = (pl.ci - dot(pl.ni, L.x0)) / a;
+      if (a.inf() > 0) pos.push_back({p, l}), hi_bound = std::min(hi_bound, l.sup());
+      else neg.push_back({p, l}), lo_bound = std::max(lo_bound, l.inf());
+      continue;
+    }
+    FT l;
+    const CGAL::Sign sa = exact_lambda(p, l);
+    if (sa == CGAL::ZERO) {
+      if (zero_a_empty(p)) return false;
+      continue;
+    }
+    const auto [li, ls] = to_interval(l);
+    if (sa == CGAL::POSITIVE) pos.push_back({p, I(li, ls)}), hi_bound = std::min(hi_bound, ls);
+    else neg.push_back({p, I(li, ls)}), lo_bound = std::max(lo_bound, li);
+  }
+  // The exact extremum over the planes that may attain it.
+  FT l;
+  for (const PlaneLambda& q : neg)
+    if (q.l.sup() >= lo_bound) take(exact_lambda(q.p, l), l);
+  for (const PlaneLambda& q : pos)
+    if (q.l.inf() <= hi_bound) take(exact_lambda(q.p, l), l);
+  return !(lo && hi && (strict ? !(*lo < *hi) : *lo > *hi));
 }
 
 // Enclosures of a superset of the vertices of the face f ∩ S_k = F_P(n) ⊕ −F_Q'(n) (n = f's
@@ -686,7 +749,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
   Best best;
   best.radius = reach;
   best.cap2 = FT(reach) * FT(reach);
-  best.sup2 = CGAL::to_interval(best.cap2).second;
+  best.sup2 = to_interval(best.cap2).second;
   auto near = [&](double d) { return d * (1 - 0x1p-40) <= best.radius; };
   std::vector<std::size_t> cover;    // sums whose box meets B(0, best.radius): they cover
   std::vector<std::size_t> sources;  // the same and f's own sum: their planes cut f's lines
@@ -719,7 +782,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
       }
     const ExactPlane& fe = exact_plane(c, fi);
     const FT n2 = dot(fe.n, fe.n);
-    if (CGAL::is_zero(n2)) continue;  // a degenerate candidate normal supports nothing
+    if (is_zero(n2)) continue;  // a degenerate candidate normal supports nothing
     // The foot of 0 on plane(f).
     const FT d2 = fe.c * fe.c / n2;
     if (best.beyond(d2)) continue;
@@ -743,7 +806,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
       for (std::size_t gi = sl.first; gi < sl.first + sl.count; ++gi) {
         const Plane& g = c.planes[gi];
         if (gi == fi || !near(g.dist)) continue;
-        const double bound2 = best.d2 ? CGAL::to_interval(*best.d2).second : reach * reach * (1 + 0x1p-40);
+        const double bound2 = best.d2 ? to_interval(*best.d2).second : reach * reach * (1 + 0x1p-40);
         if (c.filt) {
           const LineI L = interval_line(f, g, fi, gi);
           if (line_far(c, L, sk, sl, bound2) ||
@@ -758,28 +821,28 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
         const FT l2 = dot(x0, x0);
         if (best.beyond(l2)) continue;
         std::optional<FT> a, b;
-        if (!line_interval(c, sk, x0, u, false, a, b, gi)) continue;
+        const LineI Le{iv(u), iv(x0), iv(u2), iv(l2), fi, gi, u, x0};
+        if (!line_interval(c, sk, Le, false, a, b, gi)) continue;
         if (!a || !b) continue;  // unreachable: S_k is bounded
         ++lines;
         // Covering open intervals (the ones meeting [a, b]).
         std::vector<std::pair<FT, FT>> ivs;
-        const LineI Le{iv(u), iv(x0), iv(u2), iv(l2), fi, gi, u, x0};
-        const double a_inf = CGAL::to_interval(*a).first, b_sup = CGAL::to_interval(*b).second;
+        const double a_inf = to_interval(*a).first, b_sup = to_interval(*b).second;
         for (std::size_t l2i : cover) {
           if (c.filt && cover_misses(c, c.sums[l2i], Le, gi, a_inf, b_sup)) continue;
           std::optional<FT> lo, hi;
-          if (!line_interval(c, c.sums[l2i], x0, u, true, lo, hi, gi) || !lo || !hi) continue;
+          if (!line_interval(c, c.sums[l2i], Le, true, lo, hi, gi) || !lo || !hi) continue;
           if (*hi <= *a || *lo >= *b) continue;
           ivs.emplace_back(*lo, *hi);
         }
         std::vector<FT> cand;
-        cand.push_back(CGAL::is_positive(*a) ? *a : CGAL::is_negative(*b) ? *b : FT(0));
+        cand.push_back(is_positive(*a) ? *a : is_negative(*b) ? *b : FT(0));
         cand.push_back(*a), cand.push_back(*b);
         for (const auto& [lo, hi] : ivs) {
           if (lo >= *a) cand.push_back(lo);
           if (hi <= *b) cand.push_back(hi);
         }
-        std::sort(cand.begin(), cand.end(), [](const FT& x, const FT& y) { return CGAL::abs(x) < CGAL::abs(y); });
+        std::sort(cand.begin(), cand.end(), [](const FT& x, const FT& y) { return abs(x) < abs(y); });
         for (const FT& lam : cand) {
           const FT e2 = l2 + lam * lam * u2;
           if (best.beyond(e2)) break;
@@ -802,8 +865,8 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
 
   // σ = RN(√σ²) and a certified bracket.
   const FT q = *best.d2;
-  double s = std::sqrt(CGAL::to_double(q));
-  auto cmp = [&](double v) { return CGAL::compare(FT(v) * FT(v), q); };  // sign(v² − σ²)
+  double s = std::sqrt(to_double(q));
+  auto cmp = [&](double v) { return compare(FT(v) * FT(v), q); };  // sign(v² − σ²)
   while (cmp(s) == CGAL::SMALLER) s = std::nextafter(s, INFINITY);
   while (s > 0 && cmp(std::nextafter(s, 0.0)) != CGAL::SMALLER) s = std::nextafter(s, 0.0);
   // Now s = the least double with s² >= σ².
@@ -812,7 +875,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
   double depth = hi;
   if (lo != hi) {
     const FT mid = (FT(lo) + FT(hi)) / 2;
-    const CGAL::Comparison_result r = CGAL::compare(mid * mid, q);
+    const CGAL::Comparison_result r = compare(mid * mid, q);
     depth = r == CGAL::LARGER ? lo : r == CGAL::SMALLER ? hi : (std::bit_cast<std::uint64_t>(lo) % 2 == 0 ? lo : hi);
   }
 
