@@ -93,6 +93,7 @@
 
 #include "convex3/polytope_data.hpp"
 #include "geometry/exact.hpp"
+#include "geometry/isa.hpp"
 
 #include <algorithm>
 #include <array>
@@ -166,7 +167,7 @@ template <class F>
 double accurate(F&& f) {
   DD r = f(LiftDD{});
   if (std::isfinite(r.hi) && std::isfinite(r.e) && safe_bound(r.e) <= std::abs(r.hi) * 0x1p-60) return r.hi;
-  return f(exact::LiftQ{}).v.get_d();
+  return exact::cold_eval(f, exact::LiftQ{}).v.get_d();
 }
 
 // ---- small vectors of lifted numbers ----------------------------------------------------------
@@ -1783,9 +1784,30 @@ Workspace& workspace() {
 
 }  // namespace
 
+namespace {
+
+Depth3 expand(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel, const Eigen::Matrix3d& Rp,
+              const Vec3& tp, ExpandSeed* seed) {
+  return Expander<false>(P, Q, rel, workspace()).run(Rp, tp, seed);
+}
+
+#if PENDEPTH_V3_CLONES
+// The same call tree compiled for x86-64-v3 (geometry/isa.hpp): the double-double products' fmas
+// become instructions instead of libm calls; the same bits.
+PENDEPTH_V3_CLONE Depth3 expand_v3(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,
+                                   const Eigen::Matrix3d& Rp, const Vec3& tp, ExpandSeed* seed) {
+  return expand(P, Q, rel, Rp, tp, seed);
+}
+#endif
+
+}  // namespace
+
 Depth3 minimum_depth_expand(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,
                             const Eigen::Matrix3d& Rp, const Vec3& tp, ExpandSeed* seed) {
-  return Expander<false>(P, Q, rel, workspace()).run(Rp, tp, seed);
+#if PENDEPTH_V3_CLONES
+  if (isa::use_v3()) return expand_v3(P, Q, rel, Rp, tp, seed);
+#endif
+  return expand(P, Q, rel, Rp, tp, seed);
 }
 
 Depth3 minimum_depth_expand_eager(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,

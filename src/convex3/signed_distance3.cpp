@@ -60,6 +60,7 @@
 #include "convex3/minimum_expand.hpp"
 #include "convex3/polytope_data.hpp"
 #include "geometry/exact.hpp"
+#include "geometry/isa.hpp"
 
 #include <algorithm>
 #include <array>
@@ -461,7 +462,9 @@ struct GjkResult {
   Reduced X;
   bool contact = false;
 };
-GjkResult gjk_loop(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacency& aQ) {
+// Out of line: the rare path (the fast path's certificate failed), kept out of the flattened
+// x86-64-v3 clone below (it would multiply the clone's size and compile time; geometry/isa.hpp).
+[[gnu::noinline]] GjkResult gjk_loop(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacency& aQ) {
   const PolytopeData& PD = c.P;
   const PolytopeData& QD = c.Q;
   const RelativePose& rel = c.rel;
@@ -832,9 +835,11 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
   return signed_distance_gjk(Pp, Qp, rel, Rp, tp_world, SignedDistancePath{}, nullptr);
 }
 
-Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel,
-                              const Eigen::Matrix3d& Rp, const Vec3& tp_world, const SignedDistancePath& path,
-                              bool* fast_used) {
+namespace {
+
+Distance3 signed_distance_body(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel,
+                               const Eigen::Matrix3d& Rp, const Vec3& tp_world, const SignedDistancePath& path,
+                               bool* fast_used) {
   const PolytopeData& PD = data_of(Pp);
   const PolytopeData& QD = data_of(Qp);
   const VertexAdjacency& aP = vertex_adjacency(PD);
@@ -1060,6 +1065,28 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
   r.feature_p = feature_of(Pp, vp, np, wp, fast.has_value());
   r.feature_q = feature_of(Qp, vq, nq, wq_own, fast.has_value());
   return r;
+}
+
+#if PENDEPTH_V3_CLONES
+// The same call tree (the fast path, the exact loop, the value) compiled for x86-64-v3
+// (geometry/isa.hpp); the same bits.
+PENDEPTH_V3_CLONE Distance3 signed_distance_v3(const ConvexPolytope& Pp, const ConvexPolytope& Qp,
+                                               const RelativePose& rel, const Eigen::Matrix3d& Rp,
+                                               const Vec3& tp_world, const SignedDistancePath& path,
+                                               bool* fast_used) {
+  return signed_distance_body(Pp, Qp, rel, Rp, tp_world, path, fast_used);
+}
+#endif
+
+}  // namespace
+
+Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel,
+                              const Eigen::Matrix3d& Rp, const Vec3& tp_world, const SignedDistancePath& path,
+                              bool* fast_used) {
+#if PENDEPTH_V3_CLONES
+  if (isa::use_v3()) return signed_distance_v3(Pp, Qp, rel, Rp, tp_world, path, fast_used);
+#endif
+  return signed_distance_body(Pp, Qp, rel, Rp, tp_world, path, fast_used);
 }
 
 
