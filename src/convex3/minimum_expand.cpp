@@ -145,7 +145,8 @@ inline void fast_two_sum(double a, double b, double& s, double& t) {
 inline DD operator-(const DD& x) { return {-x.hi, -x.lo, x.e}; }
 inline DD operator-(const DD& x, const DD& y) { return x + (-y); }
 // Same paper: DWTimesDW3 (relative error <= 4u²). std::fma is a library call in the portable
-// build (no -mfma), which also spills every live double: the two fmas of cl2 are skipped when
+// build (no -mfma; the x86-64-v3 clone expand_v3 below has the instruction, geometry/isa.hpp),
+// which also spills every live double: the two fmas of cl2 are skipped when
 // both low parts are zero (lifted doubles: the products of m_l and the per-query constants).
 // The same bits: cl2 is ±0 then, cl1 is +0 or nonzero (an exact fma result of 0 is +0), so
 // cl1 + cl2 = cl1 + 0; a NaN or infinite cl2 comes with a NaN or infinite ch and cl1 anyway.
