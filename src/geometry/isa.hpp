@@ -20,11 +20,13 @@
 #ifndef PENDEPTH_V3_CLONES  // -DPENDEPTH_V3_CLONES=0 builds without the clones
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 12
 #define PENDEPTH_V3_CLONES 1
-/// The attributes of a clone: the call tree inlined and compiled for x86-64-v3.
-#define PENDEPTH_V3_CLONE [[gnu::target("arch=x86-64-v3"), gnu::flatten]]
 #else
 #define PENDEPTH_V3_CLONES 0
 #endif
+#endif
+#if PENDEPTH_V3_CLONES
+/// The attributes of a clone: the call tree inlined and compiled for x86-64-v3.
+#define PENDEPTH_V3_CLONE [[gnu::target("arch=x86-64-v3"), gnu::flatten]]
 #endif
 
 namespace pendepth::isa {
