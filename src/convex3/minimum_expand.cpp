@@ -93,6 +93,7 @@
 
 #include "convex3/polytope_data.hpp"
 #include "geometry/exact.hpp"
+#include "geometry/isa.hpp"
 
 #include <algorithm>
 #include <array>
@@ -144,7 +145,8 @@ inline void fast_two_sum(double a, double b, double& s, double& t) {
 inline DD operator-(const DD& x) { return {-x.hi, -x.lo, x.e}; }
 inline DD operator-(const DD& x, const DD& y) { return x + (-y); }
 // Same paper: DWTimesDW3 (relative error <= 4u²). std::fma is a library call in the portable
-// build (no -mfma), which also spills every live double: the two fmas of cl2 are skipped when
+// build (no -mfma; the x86-64-v3 clone expand_v3 below has the instruction, geometry/isa.hpp),
+// which also spills every live double: the two fmas of cl2 are skipped when
 // both low parts are zero (lifted doubles: the products of m_l and the per-query constants).
 // The same bits: cl2 is ±0 then, cl1 is +0 or nonzero (an exact fma result of 0 is +0), so
 // cl1 + cl2 = cl1 + 0; a NaN or infinite cl2 comes with a NaN or infinite ch and cl1 anyway.
@@ -166,7 +168,7 @@ template <class F>
 double accurate(F&& f) {
   DD r = f(LiftDD{});
   if (std::isfinite(r.hi) && std::isfinite(r.e) && safe_bound(r.e) <= std::abs(r.hi) * 0x1p-60) return r.hi;
-  return f(exact::LiftQ{}).v.get_d();
+  return exact::cold_eval(f, exact::LiftQ{}).v.get_d();
 }
 
 // ---- small vectors of lifted numbers ----------------------------------------------------------
@@ -1783,9 +1785,30 @@ Workspace& workspace() {
 
 }  // namespace
 
+namespace {
+
+Depth3 expand(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel, const Eigen::Matrix3d& Rp,
+              const Vec3& tp, ExpandSeed* seed) {
+  return Expander<false>(P, Q, rel, workspace()).run(Rp, tp, seed);
+}
+
+#if PENDEPTH_V3_CLONES
+// The same call tree compiled for x86-64-v3 (geometry/isa.hpp): the double-double products' fmas
+// become instructions instead of libm calls; the same bits.
+PENDEPTH_V3_CLONE Depth3 expand_v3(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,
+                                   const Eigen::Matrix3d& Rp, const Vec3& tp, ExpandSeed* seed) {
+  return expand(P, Q, rel, Rp, tp, seed);
+}
+#endif
+
+}  // namespace
+
 Depth3 minimum_depth_expand(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,
                             const Eigen::Matrix3d& Rp, const Vec3& tp, ExpandSeed* seed) {
-  return Expander<false>(P, Q, rel, workspace()).run(Rp, tp, seed);
+#if PENDEPTH_V3_CLONES
+  if (isa::use_v3()) return expand_v3(P, Q, rel, Rp, tp, seed);
+#endif
+  return expand(P, Q, rel, Rp, tp, seed);
 }
 
 Depth3 minimum_depth_expand_eager(const ConvexPolytope& P, const ConvexPolytope& Q, const RelativePose& rel,

@@ -60,6 +60,7 @@
 #include "convex3/minimum_expand.hpp"
 #include "convex3/polytope_data.hpp"
 #include "geometry/exact.hpp"
+#include "geometry/isa.hpp"
 
 #include <algorithm>
 #include <array>
@@ -387,6 +388,13 @@ double accurate_dd(F&& f) {
   return exact::accurate_value(std::forward<F>(f));
 }
 
+// Ascending order of n ≤ 3 ints by insertion (std::sort's general case, inlined into the
+// flattened x86-64-v3 clone, draws false -Warray-bounds warnings there).
+void sort_small(int* a, int n) {
+  for (int k = 1; k < n; ++k)
+    for (int l = k; l > 0 && a[l] < a[l - 1]; --l) std::swap(a[l], a[l - 1]);
+}
+
 // The feature of one side spanned by the distinct vertices vs (1–3) of S on that side, all on
 // the side's support plane for U: a vertex; a true edge (its two triangles not coplanar); else
 // the true face containing them (the support set is then that face), reported as its level-0
@@ -461,7 +469,9 @@ struct GjkResult {
   Reduced X;
   bool contact = false;
 };
-GjkResult gjk_loop(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacency& aQ) {
+// Out of line: the rare path (the fast path's certificate failed), kept out of the flattened
+// x86-64-v3 clone below (it would multiply the clone's size and compile time; geometry/isa.hpp).
+[[gnu::noinline]] GjkResult gjk_loop(const Ctx& c, const VertexAdjacency& aP, const VertexAdjacency& aQ) {
   const PolytopeData& PD = c.P;
   const PolytopeData& QD = c.Q;
   const RelativePose& rel = c.rel;
@@ -642,7 +652,7 @@ static bool closest_simplex_double(PairId* id, Vec3* m, int& n, Vec3& v) {
       if (!(sd != 0)) return false;  // flat (or NaN)
       if (!(so * sd < 0)) continue;   // 0 on the tetrahedron's side of this face
       Vec3 x;
-      int k2[3], n2;
+      int k2[3] = {0, 0, 0}, n2;  // initialised: the flattened v3 clone warns otherwise
       closest_tri_double(m, f[0], f[1], f[2], x, k2, n2);
       if (x.squaredNorm() < best) best = x.squaredNorm(), v = x, nk = n2, std::copy(k2, k2 + 3, ks);
     }
@@ -832,9 +842,11 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
   return signed_distance_gjk(Pp, Qp, rel, Rp, tp_world, SignedDistancePath{}, nullptr);
 }
 
-Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel,
-                              const Eigen::Matrix3d& Rp, const Vec3& tp_world, const SignedDistancePath& path,
-                              bool* fast_used) {
+namespace {
+
+Distance3 signed_distance_body(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel,
+                               const Eigen::Matrix3d& Rp, const Vec3& tp_world, const SignedDistancePath& path,
+                               bool* fast_used) {
   const PolytopeData& PD = data_of(Pp);
   const PolytopeData& QD = data_of(Qp);
   const VertexAdjacency& aP = vertex_adjacency(PD);
@@ -1068,11 +1080,33 @@ Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp
     if (std::find(vp, vp + np, X.s[k].id.i) == vp + np) vp[np++] = X.s[k].id.i;
     if (std::find(vq, vq + nq, X.s[k].id.j) == vq + nq) vq[nq++] = X.s[k].id.j;
   }
-  if (!contact) std::sort(vp, vp + np), std::sort(vq, vq + nq);
+  if (!contact) sort_small(vp, np), sort_small(vq, nq);
   const Vec3 wq_own = rel.R.transpose() * (wq - (rel.tq - rel.tp));
   r.feature_p = feature_of(Pp, vp, np, wp, fast.has_value());
   r.feature_q = feature_of(Qp, vq, nq, wq_own, fast.has_value());
   return r;
+}
+
+#if PENDEPTH_V3_CLONES
+// The same call tree (the fast path, the exact loop, the value) compiled for x86-64-v3
+// (geometry/isa.hpp); the same bits.
+PENDEPTH_V3_CLONE Distance3 signed_distance_v3(const ConvexPolytope& Pp, const ConvexPolytope& Qp,
+                                               const RelativePose& rel, const Eigen::Matrix3d& Rp,
+                                               const Vec3& tp_world, const SignedDistancePath& path,
+                                               bool* fast_used) {
+  return signed_distance_body(Pp, Qp, rel, Rp, tp_world, path, fast_used);
+}
+#endif
+
+}  // namespace
+
+Distance3 signed_distance_gjk(const ConvexPolytope& Pp, const ConvexPolytope& Qp, const RelativePose& rel,
+                              const Eigen::Matrix3d& Rp, const Vec3& tp_world, const SignedDistancePath& path,
+                              bool* fast_used) {
+#if PENDEPTH_V3_CLONES
+  if (isa::use_v3()) return signed_distance_v3(Pp, Qp, rel, Rp, tp_world, path, fast_used);
+#endif
+  return signed_distance_body(Pp, Qp, rel, Rp, tp_world, path, fast_used);
 }
 
 

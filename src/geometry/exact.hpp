@@ -284,6 +284,14 @@ struct LiftQ {
   Rat operator()(double x) const { return {mpq_class(x)}; }
 };
 
+/// f(l) out of line, for the exact tiers (Ex, Rat): rarely run and large once inlined; a call
+/// keeps them out of their callers — in particular out of the flattened x86-64-v3 clones
+/// (geometry/isa.hpp), which would otherwise inline every one at every use (compile time).
+template <class F, class L>
+[[gnu::noinline, gnu::cold]] auto cold_eval(F& f, L l) {
+  return f(l);
+}
+
 /// Inflates a computed bound to cover the rounding of the bound computation itself.
 inline double safe_bound(double e) { return e * (1 + 16 * kUnit) + kTiny; }
 
@@ -305,9 +313,9 @@ int exact_sign_beyond_flx(F&& f) {
     if (d.hi > b) return 1;  // |lo| <= ulp(hi)/2, so hi beyond the bound fixes the sign
     if (d.hi < -b) return -1;
   }
-  const Ex e = f(LiftEx{});
+  const Ex e = cold_eval(f, LiftEx{});
   if (e.ok) return ex_sign(e);
-  Rat q = f(LiftQ{});
+  Rat q = cold_eval(f, LiftQ{});
   return sgn(q.v);
 }
 
@@ -351,9 +359,9 @@ int exact_sign_filtered(double approx, double bound, F&& f) {
     if (d.hi > b) return 1;
     if (d.hi < -b) return -1;
   }
-  const Ex e = f(LiftEx{});
+  const Ex e = cold_eval(f, LiftEx{});
   if (e.ok) return ex_sign(e);
-  Rat q = f(LiftQ{});
+  Rat q = cold_eval(f, LiftQ{});
   return sgn(q.v);
 }
 
@@ -376,7 +384,7 @@ bool floating_value(F&& f, double& out) {
     out = d.hi;  // hi = round(hi + lo); the error bound is far below half an ulp of hi
     return true;
   }
-  const Ex e = f(LiftEx{});  // exact: zeros and heavy cancellation
+  const Ex e = cold_eval(f, LiftEx{});  // exact: zeros and heavy cancellation
   if (e.ok) {
     out = ex_value(e);
     return std::isfinite(out);
@@ -390,7 +398,7 @@ template <class F>
 double accurate_value(F&& f) {
   double v;
   if (detail::floating_value(f, v)) return v;
-  Rat q = f(LiftQ{});
+  Rat q = cold_eval(f, LiftQ{});
   return q.v.get_d();
 }
 
@@ -402,7 +410,7 @@ double accurate_ratio(N&& num, D&& den) {
     double r = a / b;
     if (std::isfinite(r) && (r != 0 || a == 0)) return r;
   }
-  mpq_class q = num(LiftQ{}).v / den(LiftQ{}).v;
+  mpq_class q = cold_eval(num, LiftQ{}).v / cold_eval(den, LiftQ{}).v;
   return q.get_d();
 }
 
@@ -428,7 +436,7 @@ double accurate_ratio_of(F&& f) {
       if (got[k] != 1 && dd_finite(c[k]) && safe_bound(c[k].e) <= std::abs(c[k].hi) * 0x1p-54) v[k] = c[k].hi, got[k] = 1;
   }
   if (got[0] != 1 || got[1] != 1) {
-    const auto r = f(LiftEx{});
+    const auto r = cold_eval(f, LiftEx{});
     const Ex* c[2] = {&r.first, &r.second};
     for (int k = 0; k < 2; ++k)
       if (got[k] != 1) {
@@ -444,7 +452,7 @@ double accurate_ratio_of(F&& f) {
     const double q = v[0] / v[1];
     if (std::isfinite(q) && (q != 0 || v[0] == 0)) return q;
   }
-  const auto r = f(LiftQ{});
+  const auto r = cold_eval(f, LiftQ{});
   mpq_class q = r.first.v / r.second.v;
   return q.get_d();
 }
