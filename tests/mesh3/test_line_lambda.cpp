@@ -128,6 +128,9 @@ TEST(LineLambda, ExtremumInsideAnOverlappingEnclosure) {
   cs.v.push_back(ratio(6, 2, 1, 1, 0));                         // λ⁺ = 3, [3, 3]
   cs.v.push_back(ratio(3, 1, 1, 0.5, 0.5));                     // λ⁺ = 3, [3, 3]
   cs.v.push_back(ratio(3 + 0x1p-50, 1, 1, 0.1, 0.7, 3));        // λ⁺ = 3 + 2u', enclosure below 3
+  auto lam = [&](std::size_t p) { return cs.b_i(p) / cs.a_i(p); };  // the filter's enclosures
+  EXPECT_TRUE(lam(0).is_point() && lam(1).inf() < 1 && lam(1).sup() > 1 + 0x1p-51);
+  EXPECT_TRUE(lam(2).is_point() && lam(3).is_point() && lam(4).inf() < 3);
   check(cs);
 }
 
