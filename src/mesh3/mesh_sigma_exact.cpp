@@ -61,6 +61,7 @@
 #include "convex3/minkowski_facets.hpp"
 #include "convex3/polytope_data.hpp"
 
+#include "mesh3/line_lambda.hpp"
 #include "mesh3/plane_number.hpp"
 
 #include <CGAL/Interval_nt.h>
@@ -560,89 +561,27 @@ bool boxes_meet(const Box3& a, const Box3& b) {
 // False when empty. x0, u: L's exact numbers (exact_x0, exact_u).
 // The planes equal to plane(f) and the plane g (index `gp`) contain the line (a = b = 0 exactly,
 // by construction of x0 and u): no constraint when closed, an empty open interval.
-// Filtered tier: the ends are the exact max / min of λ = b/a over the planes with a < 0 / a > 0;
-// each plane's a and λ are first enclosed in intervals (L's enclosures), and only the planes
-// whose λ may be the extremum (enclosure meeting the certain bound of the extremum) or whose sign
-// of a is uncertain are evaluated exactly — the same ends and the same emptiness as evaluating
-// every plane exactly (the unfiltered tier). O(f̄) interval operations and usually 1–3 exact λ.
-struct PlaneLambda {
-  std::size_t p;
-  I l;
+// Both tiers: detail::lambda_interval (line_lambda.hpp) on the constraints a·λ <= b, a = n·u,
+// b = c − n·x0 of the sum's planes — the filtered tier evaluates exactly only the planes whose
+// λ enclosure may attain the extremum or whose sign of a is uncertain.
+struct LineConstraints {
+  const Ctx& c;
+  const LineI& L;
+  const V3 &u, &x0;
+  std::size_t gp;
+  bool on_line(std::size_t p) const { return p == gp || c.on_f[p]; }
+  I a_i(std::size_t p) const { return dot(c.planes[p].ni, L.u); }
+  I b_i(std::size_t p) const { return c.planes[p].ci - dot(c.planes[p].ni, L.x0); }
+  FT a_e(std::size_t p) const { return dot(exact_plane(c, p).n, u); }
+  FT b_e(std::size_t p) const {
+    const ExactPlane& e = exact_plane(c, p);
+    return e.c - dot(e.n, x0);
+  }
 };
 bool line_interval(const Ctx& c, const Sum& s, const LineI& L, bool strict, std::optional<FT>& lo,
                    std::optional<FT>& hi, std::size_t gp) {
-  lo.reset(), hi.reset();
-  const V3 &u = exact_u(c, L), &x0 = exact_x0(c, L);
-  auto exact_lambda = [&](std::size_t p, FT& l) {  // sign(a); λ = b/a when a != 0
-    const ExactPlane& pl = exact_plane(c, p);
-    const FT a = dot(pl.n, u);
-    const CGAL::Sign sa = sign(a);
-    if (sa != CGAL::ZERO) l = (pl.c - dot(pl.n, x0)) / a;
-    return sa;
-  };
-  auto zero_a_empty = [&](std::size_t p) {  // a = 0: the whole line on the wrong side of p
-    const ExactPlane& pl = exact_plane(c, p);
-    const FT b = pl.c - dot(pl.n, x0);
-    return strict ? !is_positive(b) : is_negative(b);
-  };
-  auto take = [&](CGAL::Sign sa, const FT& l) {
-    if (sa == CGAL::POSITIVE) {
-      if (!hi || l < *hi) hi = l;
-    } else {
-      if (!lo || l > *lo) lo = l;
-    }
-  };
-  if (!c.filt) {
-    for (std::size_t p = s.first; p < s.first + s.count; ++p) {
-      if (p == gp || c.on_f[p]) {
-        if (strict) return false;
-        continue;
-      }
-      FT l;
-      const CGAL::Sign sa = exact_lambda(p, l);
-      if (sa == CGAL::ZERO) {
-        if (zero_a_empty(p)) return false;
-        continue;
-      }
-      take(sa, l);
-      if (lo && hi && (strict ? !(*lo < *hi) : *lo > *hi)) return false;
-    }
-    return true;
-  }
-  // Enclosures of λ for the planes of certain sign of a; exact at once for the others.
-  static thread_local std::vector<PlaneLambda> neg, pos;
-  neg.clear(), pos.clear();
-  double lo_bound = -INFINITY, hi_bound = INFINITY;  // certain: max λ⁻ >= lo_bound, min λ⁺ <= hi_bound
-  for (std::size_t p = s.first; p < s.first + s.count; ++p) {
-    if (p == gp || c.on_f[p]) {
-      if (strict) return false;
-      continue;
-    }
-    const Plane& pl = c.planes[p];
-    const I a = dot(pl.ni, L.u);
-    if (certainly_nonzero(a)) {
-      const I l = (pl.ci - dot(pl.ni, L.x0)) / a;
-      if (a.inf() > 0) pos.push_back({p, l}), hi_bound = std::min(hi_bound, l.sup());
-      else neg.push_back({p, l}), lo_bound = std::max(lo_bound, l.inf());
-      continue;
-    }
-    FT l;
-    const CGAL::Sign sa = exact_lambda(p, l);
-    if (sa == CGAL::ZERO) {
-      if (zero_a_empty(p)) return false;
-      continue;
-    }
-    const auto [li, ls] = to_interval(l);
-    if (sa == CGAL::POSITIVE) pos.push_back({p, I(li, ls)}), hi_bound = std::min(hi_bound, ls);
-    else neg.push_back({p, I(li, ls)}), lo_bound = std::max(lo_bound, li);
-  }
-  // The exact extremum over the planes that may attain it.
-  FT l;
-  for (const PlaneLambda& q : neg)
-    if (q.l.sup() >= lo_bound) take(exact_lambda(q.p, l), l);
-  for (const PlaneLambda& q : pos)
-    if (q.l.inf() <= hi_bound) take(exact_lambda(q.p, l), l);
-  return !(lo && hi && (strict ? !(*lo < *hi) : *lo > *hi));
+  const LineConstraints cs{c, L, exact_u(c, L), exact_x0(c, L), gp};
+  return detail::lambda_interval(cs, s.first, s.count, strict, c.filt, lo, hi);
 }
 
 // Enclosures of a superset of the vertices of the face f ∩ S_k = F_P(n) ⊕ −F_Q'(n) (n = f's

@@ -6,6 +6,7 @@
 // rational, every comparison and sign equal, to_interval enclosing it, to_double its nearest
 // double.
 #include "mesh3/plane_number.hpp"
+#include "rational.hpp"
 
 #include <gmpxx.h>
 #include <gtest/gtest.h>
@@ -17,18 +18,8 @@
 
 namespace {
 
+using mesh3_test::rational;
 using pendepth::mesh3::PlaneNumber;
-
-mpq_class rational(const CGAL::Gmpzf& v) {
-  mpq_class r{mpz_class(v.man())};
-  if (v.exp() >= 0) mpq_mul_2exp(r.get_mpq_t(), r.get_mpq_t(), static_cast<mp_bitcnt_t>(v.exp()));
-  else mpq_div_2exp(r.get_mpq_t(), r.get_mpq_t(), static_cast<mp_bitcnt_t>(-v.exp()));
-  return r;
-}
-mpq_class rational(const PlaneNumber& v) {
-  EXPECT_GT(CGAL::sign(v.denominator()), 0);
-  return rational(v.numerator()) / rational(v.denominator());
-}
 
 double nearest(const mpq_class& q) {  // the double nearest q (one rounding)
   mpfr_t r;
