@@ -46,9 +46,14 @@ bool lambda_interval(const Cs& cs, std::size_t first, std::size_t count, bool st
     if (sa != CGAL::ZERO) l = cs.b_e(p) / a;
     return sa;
   };
-  auto zero_a_empty = [&](std::size_t p) {  // a = 0: the whole line on the wrong side of p
+  // Constraint p decided exactly: `lambda` (sa, l set), `skip` (a = 0, the whole line on the
+  // right side of p) or `empty` (a = 0, the whole line on the wrong side: the set is empty).
+  enum class Exact { lambda, skip, empty };
+  auto exact_constraint = [&](std::size_t p, CGAL::Sign& sa, PlaneNumber& l) {
+    sa = exact_lambda(p, l);
+    if (sa != CGAL::ZERO) return Exact::lambda;
     const PlaneNumber b = cs.b_e(p);
-    return strict ? !is_positive(b) : is_negative(b);
+    return (strict ? !is_positive(b) : is_negative(b)) ? Exact::empty : Exact::skip;
   };
   auto take = [&](CGAL::Sign sa, const PlaneNumber& l) {
     if (sa == CGAL::POSITIVE) {
@@ -65,9 +70,10 @@ bool lambda_interval(const Cs& cs, std::size_t first, std::size_t count, bool st
         continue;
       }
       PlaneNumber l;
-      const CGAL::Sign sa = exact_lambda(p, l);
-      if (sa == CGAL::ZERO) {
-        if (zero_a_empty(p)) return false;
+      CGAL::Sign sa;
+      const Exact e = exact_constraint(p, sa, l);
+      if (e != Exact::lambda) {
+        if (e == Exact::empty) return false;
         continue;
       }
       take(sa, l);
@@ -92,9 +98,9 @@ bool lambda_interval(const Cs& cs, std::size_t first, std::size_t count, bool st
       continue;
     }
     PlaneNumber l;
-    const CGAL::Sign sa = exact_lambda(p, l);
-    if (sa == CGAL::ZERO) {
-      if (zero_a_empty(p)) return false;
+    CGAL::Sign sa;
+    if (const Exact e = exact_constraint(p, sa, l); e != Exact::lambda) {
+      if (e == Exact::empty) return false;
       continue;
     }
     const auto [li, ls] = to_interval(l);
