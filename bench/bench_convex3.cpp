@@ -162,6 +162,19 @@ struct SigmaCase {
   std::string error;
 };
 
+// The hull set of the `sigma_hulls/` and `distance/` rows: the shared game hulls, or with
+// PENDEPTH_BENCH_GEN_HULLS=N sixty generated hulls of N points on random ellipsoids (inputs beyond
+// ../shared/data; the same placements, pairs and peers).
+std::vector<ConvexPolytope> real_or_generated_hulls() {
+  const char* g = std::getenv("PENDEPTH_BENCH_GEN_HULLS");
+  if (!g) return shared_hulls();
+  const std::size_t n = std::strtoull(g, nullptr, 10);
+  std::mt19937_64 rng(0x9e4d157 + n);
+  std::vector<ConvexPolytope> H;
+  for (int k = 0; k < 60 && n >= 4; ++k) H.push_back(ConvexPolytope::hull(ellipsoid_points(n, rng), "G"));
+  return H;
+}
+
 SigmaCase build_sigma_case(std::size_t n) {
   std::mt19937_64 rng(0x5eed3000 + n);
   auto pp = ellipsoid_points(n, rng), qp = ellipsoid_points(n, rng);
@@ -608,7 +621,7 @@ const CrossCase& hulls_case() {
   if (p) return *p;
   p = std::make_unique<CrossCase>();
   CrossCase& c = *p;
-  const std::vector<ConvexPolytope> H = shared_hulls();
+  const std::vector<ConvexPolytope> H = real_or_generated_hulls();
   if (H.size() < 8) {
     c.error = "shared hulls not found";
     return c;
@@ -931,7 +944,7 @@ const DistCase& dist_case() {
   if (p) return *p;
   p = std::make_unique<DistCase>();
   DistCase& c = *p;
-  const std::vector<ConvexPolytope> H = shared_hulls();
+  const std::vector<ConvexPolytope> H = real_or_generated_hulls();
   if (H.size() < 8) {
     c.error = "shared hulls not found";
     return c;
