@@ -67,8 +67,10 @@
 // sum and is kept whole without a test, and so is one at a straight vertex whose shape lies on
 // the candidate's outer side (two exact comparisons of input coordinates); the other straight
 // candidates lie wholly in O, ends included (nfp_classify below), and give no piece.
-// Cost: candidate pairs by boxes (all pairs for K ≤ 64, else a box hierarchy; after step 0 only the
-// boxes of the uncertified parts), O(1) exact tests per meeting pair; step 0 at most 8 probes per
+// Cost: candidate pairs by boxes (all pairs for K ≤ 64, else a sort of the boxes on x and a sweep,
+// or a box hierarchy when the sweep's x-overlap tests pass 32 per candidate; after step 0 only the
+// boxes of the uncertified parts; met in canonical order, i then j, whichever search found them),
+// O(1) exact tests per meeting pair; step 0 at most 8 probes per
 // end of a crowded candidate, each a descent reaching at most 128 piece pairs; per part or point
 // the pair sums whose boxes hold the point, O(1) tests each. For
 // X box-overlapping pairs: O(K log K + X + (K + X)·v), v sums per point (worst O(nm)); a
@@ -176,6 +178,12 @@ struct PieceDop {
   std::array<double, kDopDirs> lo, hi;
 };
 
+// A candidate's box and index, as step 1's sweep reads them (contiguous, sorted on lo.x).
+struct SweepBox {
+  double lx, hx, ly, hy;
+  std::uint32_t k;
+};
+
 struct PartPair {
   Vec2 lo, hi;
   std::uint32_t a, b;
@@ -200,6 +208,11 @@ struct Buffers {
   std::unordered_map<std::uint64_t, signed char> vertex_map;
   std::vector<std::uint32_t> undecided, first, at;
   std::vector<std::pair<std::uint32_t, Split>> found;  // (candidate, split parameter)
+  // Step 1: the candidates' boxes sorted on lo.x (sweep_pairs), the box-overlapping pairs i < j,
+  // the same in canonical order, and per candidate its number of box-overlapping others.
+  std::vector<SweepBox> sweep;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs, pairs_sorted;
+  std::vector<std::uint32_t> degree;
   std::vector<char> reference, part, vert;
   std::vector<Split*> grouped, sp;
   // trim_deep: per candidate the box of its part not certified in O, and whether none is left.
@@ -210,7 +223,7 @@ struct Buffers {
   std::vector<PieceDop> dop_p, dop_b;
   void trim() {
     const std::size_t big = std::size_t(1) << 14;
-    if (vertex_table.capacity() > big || found.capacity() > big || act_lo.capacity() > big || hdx.capacity() > big || !vertex_map.empty() ||
+    if (vertex_table.capacity() > big || found.capacity() > big || pairs.capacity() > big || sweep.capacity() > big || act_lo.capacity() > big || hdx.capacity() > big || !vertex_map.empty() ||
         cand_tree.nodes.capacity() > big || dop_p.capacity() > big || piece_slot.capacity() > big || piece_pairs.capacity() > big)
       *this = Buffers();
   }
@@ -580,6 +593,10 @@ struct Classifier {
   // [b, 1] in O (floating filters with static error bounds only, never a wrong "in O"); step 1
   // then pairs only the boxes of the rest [a, b], and a candidate certified whole gives no piece.
   bool trimmed = false, have_tree = false;  // have_tree: buf.cand_tree holds the candidates' boxes
+  // swept: buf.pairs holds every box-overlapping pair of the candidates' (untrimmed) boxes
+  // (sweep_pairs, tried once: sweep_tried).
+  bool sweep_tried = false, swept = false;
+  static constexpr std::size_t kSweepTests = 32;  // the sweep's budget: x-overlap tests per candidate
   static constexpr int kTrimRounds = 8;      // sums chained per end
   static constexpr int kProbeLeaves = 128;   // piece pairs visited per probe
   static constexpr int kProbeSure = 4;       // sums surely holding the probe point tried per probe
@@ -645,11 +662,20 @@ struct Classifier {
     // Crowded candidates only: those whose box meets at least kCrowded others' (a counting pass
     // over a box tree of all candidates, stopped there). Elsewhere the pairing is cheap and the
     // probes would cost more than they save (combs, spirals).
-    BoxTree& tree = buf.cand_tree;  // refitted to the trimmed boxes by find_splits
-    build_candidate_tree(tree);
-    have_tree = true;
+    // The counts come from step 1's pairs when the sweep finds them all within its budget (no
+    // tree), else from a box tree of the candidates (refitted to the trimmed boxes by find_splits).
+    BoxTree& tree = buf.cand_tree;
+    if (sweep_pairs()) {
+      auto& degree = buf.degree;
+      degree.assign(K, 0);
+      for (const auto& [i, j] : buf.pairs) ++degree[i], ++degree[j];
+    } else {
+      build_candidate_tree(tree);
+      have_tree = true;
+    }
     std::vector<std::int32_t> st;
     auto crowded = [&](std::size_t k) {
+      if (swept) return buf.degree[k] >= kCrowded;
       const Vec2 &lo = cands[k].lo, &hi = cands[k].hi;
       std::size_t count = 0;
       st.assign(1, 0);
@@ -1113,25 +1139,59 @@ struct Classifier {
                      [&](std::size_t k) -> const Vec2& { return cands[k].hi; });
   }
 
-  // Step 1: buf.found, the split points of all candidates (meet over every pair with overlapping
-  // boxes: all pairs for K ≤ 64, else a box hierarchy), and buf.reference.
-  void find_splits() {
-    const std::size_t K = cands.size();
-    auto& found = buf.found;
-    found.clear();
-    found.reserve(4 * K);
-    buf.reference.assign(K, 0);
-    if (K <= 64) {
-      for (std::size_t i = 0; i < K; ++i)
-        for (std::size_t j = i + 1; j < K; ++j)
-          if (boxes_meet(cands[i], cands[j])) meet(i, j);
-      return;
+  // Step 1: buf.pairs, the pairs i < j of candidates whose (untrimmed) boxes meet, each once, in
+  // no particular order: the boxes sorted on lo.x, then each box against the following ones up to
+  // its hi.x (a pair is found from its box of smaller lo.x). True when complete; false once the
+  // x-overlap tests pass kSweepTests · K (dense shapes, where box-overlapping pairs grow as n²:
+  // the box tree after step 0 instead). O(K log K + X_x) for X_x pairs overlapping in x; the same
+  // pairs as the tree's descents, for less than the tree's build on nesting pieces.
+  bool sweep_pairs() {
+    if (sweep_tried) return swept;
+    sweep_tried = true;
+    if (nfp_pairs_mode() == kPairsTree) return false;
+    const std::size_t K = cands.size(), budget = kSweepTests * K;
+    auto& box = buf.sweep;
+    box.resize(K);
+    for (std::size_t k = 0; k < K; ++k)
+      box[k] = {cands[k].lo.x(), cands[k].hi.x(), cands[k].lo.y(), cands[k].hi.y(), static_cast<std::uint32_t>(k)};
+    std::sort(box.begin(), box.end(), [](const SweepBox& x, const SweepBox& y) { return x.lx < y.lx; });
+    auto& pairs = buf.pairs;
+    pairs.clear();
+    std::size_t tests = 0;
+    for (std::size_t a = 0; a < K; ++a) {
+      const SweepBox& x = box[a];
+      for (std::size_t b = a + 1; b < K && box[b].lx <= x.hx; ++b) {
+        if (++tests > budget) return false;
+        const SweepBox& y = box[b];
+        if (y.ly <= x.hy && x.ly <= y.hy) pairs.push_back(std::minmax(x.k, y.k));
+      }
     }
-    // Trimmed (trim_deep): its tree of the candidates' boxes refitted to the boxes of the parts
-    // not certified in O (empty for candidates wholly in O). A split point not in O lies on both
-    // candidates outside their certified parts, so its pair still meets; points in O may be
-    // missed, which changes no part's class (the parts next to a point of the open set O are in
-    // O) and no piece.
+    swept = true;
+    return true;
+  }
+
+  // Step 1 after step 0 with the sweep's pairs: those of two live candidates whose boxes of the
+  // parts not certified in O meet (the pairs the refitted tree would give).
+  void keep_active_pairs() {
+    auto& pairs = buf.pairs;
+    std::size_t n = 0;
+    for (const auto& pr : pairs) {
+      const auto [i, j] = pr;
+      if (buf.dead[i] || buf.dead[j]) continue;
+      const Vec2 &li = buf.act_lo[i], &hi = buf.act_hi[i], &lj = buf.act_lo[j], &hj = buf.act_hi[j];
+      if (!(lj.x() > hi.x() || li.x() > hj.x() || lj.y() > hi.y() || li.y() > hj.y())) pairs[n++] = pr;
+    }
+    pairs.resize(n);
+  }
+
+  // Step 1 by the box tree (the sweep over budget): buf.pairs by one descent per candidate.
+  // Trimmed (trim_deep): its tree of the candidates' boxes refitted to the boxes of the parts
+  // not certified in O (empty for candidates wholly in O). A split point not in O lies on both
+  // candidates outside their certified parts, so its pair still meets; points in O may be
+  // missed, which changes no part's class (the parts next to a point of the open set O are in
+  // O) and no piece.
+  void tree_pairs() {
+    const std::size_t K = cands.size();
     BoxTree local;
     BoxTree& tree = trimmed || have_tree ? buf.cand_tree : local;
     if (trimmed) {
@@ -1148,8 +1208,9 @@ struct Classifier {
     } else if (!have_tree) {
       build_candidate_tree(tree);
     }
+    auto& pairs = buf.pairs;
+    pairs.clear();
     std::vector<std::int32_t> st;
-    std::size_t meets = 0;
     for (std::size_t i = 0; i < K; ++i) {
       if (trimmed && buf.dead[i]) continue;
       const Vec2 &lo = trimmed ? buf.act_lo[i] : cands[i].lo, &hi = trimmed ? buf.act_hi[i] : cands[i].hi;
@@ -1162,12 +1223,56 @@ struct Classifier {
           st.push_back(N.left);
           st.push_back(N.right);
         } else if (N.tri > i) {
-          ++meets;
-          meet(i, N.tri);
+          pairs.emplace_back(static_cast<std::uint32_t>(i), N.tri);
         }
       }
     }
-    nfp_trim_stats().meets += meets;
+  }
+
+  // buf.pairs_sorted: buf.pairs in canonical order, by i then j (a counting sort on i, then each
+  // i's few j's sorted). Each candidate then meets its partners in increasing order, whichever
+  // search found the pairs, so its split points reach sort_splits in the same order and the same
+  // one of two equal parameters represents the point (rounded ends). O(K + X log d), d the largest
+  // number of partners.
+  void order_pairs() {
+    const std::size_t K = cands.size();
+    const auto& in = buf.pairs;
+    auto& out = buf.pairs_sorted;
+    auto& end = buf.at;  // scratch (group_splits reassigns it)
+    end.assign(K + 1, 0);
+    for (const auto& pr : in) ++end[pr.first + 1];
+    for (std::size_t k = 0; k < K; ++k) end[k + 1] += end[k];
+    out.resize(in.size());
+    for (const auto& pr : in) out[end[pr.first]++] = pr;  // end[i]: the end of i's run
+    for (std::size_t i = 0, b = 0; i < K; b = end[i++])
+      if (end[i] - b > 1) std::sort(out.begin() + b, out.begin() + end[i]);
+  }
+
+  // Step 1: buf.found, the split points of all candidates (meet over every pair with overlapping
+  // boxes: all pairs for K ≤ 64, else the sweep's pairs or the box tree's, in canonical order),
+  // and buf.reference.
+  void find_splits() {
+    const std::size_t K = cands.size();
+    auto& found = buf.found;
+    found.clear();
+    found.reserve(4 * K);
+    buf.reference.assign(K, 0);
+    if (K <= 64) {
+      for (std::size_t i = 0; i < K; ++i)
+        for (std::size_t j = i + 1; j < K; ++j)
+          if (boxes_meet(cands[i], cands[j])) meet(i, j);
+      return;
+    }
+    if (sweep_pairs()) {
+      if (trimmed) keep_active_pairs();
+      ++nfp_trim_stats().swept;
+    } else {
+      tree_pairs();
+      ++nfp_trim_stats().tree_joins;
+    }
+    order_pairs();
+    for (const auto& [i, j] : buf.pairs_sorted) meet(i, j);
+    nfp_trim_stats().meets += buf.pairs_sorted.size();
   }
 
   // Step 1: the split parameters grouped by candidate (counting sort): candidate k's are
@@ -1299,6 +1404,11 @@ struct Classifier {
 };
 
 }  // namespace
+
+int& nfp_pairs_mode() {
+  thread_local int mode = kPairsAuto;
+  return mode;
+}
 
 int& nfp_trim_mode() {
   thread_local int mode = kTrimAuto;

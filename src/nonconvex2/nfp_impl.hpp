@@ -62,6 +62,7 @@ void nfp_classify(const PairDepth2::Impl& S, const std::vector<NfpCandidate>& ca
 struct NfpTrimStats {
   std::size_t dead = 0, trimmed = 0, meets = 0;
   std::size_t dop_pruned = 0;  // node pairs of the pieces' descent pruned by their k-DOPs, not by their boxes
+  std::size_t swept = 0, tree_joins = 0;  // pairs (K > 64) whose step 1 found its pairs by the sweep / the box tree
 };
 constexpr int kTrimOff = 0, kTrimAuto = 1, kTrimAll = 2;
 int& nfp_trim_mode();
@@ -72,6 +73,13 @@ NfpTrimStats& nfp_trim_stats();
 /// before it: the reference they compare with), kDopPlanted (a wrong margin the tests must catch).
 constexpr int kDopOff = 0, kDopOn = 1, kDopPlanted = 2;
 int& nfp_dop_mode();
+
+/// How nfp_classify's step 1 finds the box-overlapping candidate pairs when K > 64, per thread,
+/// for the tests: kPairsAuto (the default) by a sort-and-sweep on x within a budget of tests, else
+/// by the box tree; kPairsTree always by the box tree (the method before the sweep: the reference
+/// they compare with). Either way the pairs meet in canonical order, so the output is the same.
+constexpr int kPairsAuto = 0, kPairsTree = 1;
+int& nfp_pairs_mode();
 
 /// One ring and no right turn (straight vertices allowed): a convex polygon (exact turns).
 bool convex_shape(const Polygon& S);
