@@ -659,11 +659,11 @@ struct Classifier {
     const std::size_t K = cands.size();
     buf.act_lo.resize(K), buf.act_hi.resize(K);
     buf.dead.assign(K, 0);
-    // Crowded candidates only: those whose box meets at least kCrowded others' (a counting pass
-    // over a box tree of all candidates, stopped there). Elsewhere the pairing is cheap and the
-    // probes would cost more than they save (combs, spirals).
-    // The counts come from step 1's pairs when the sweep finds them all within its budget (no
-    // tree), else from a box tree of the candidates (refitted to the trimmed boxes by find_splits).
+    // Crowded candidates only: those whose box meets at least kCrowded others'. Elsewhere the
+    // pairing is cheap and the probes would cost more than they save (combs, spirals). The counts
+    // come from step 1's pairs when the sweep finds them all within its budget (no tree), else
+    // from a counting pass over a box tree of all candidates, stopped there (the tree refitted to
+    // the trimmed boxes by find_splits).
     BoxTree& tree = buf.cand_tree;
     if (sweep_pairs()) {
       auto& degree = buf.degree;
