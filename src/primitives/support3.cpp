@@ -422,6 +422,7 @@ struct Face {
   double est = 0, lo = 0;  // plane distance: estimate and rigorous lower bound
   double den_lo = 0;       // lower bound of |n_true|
   bool alive = true, final = false;
+  std::array<int, 3> nb{-1, -1, -1};  // the faces across edges (a, b), (b, c), (c, a)
 };
 
 class Epa {
@@ -435,11 +436,13 @@ class Epa {
       else
         add_face(k[0], k[1], k[2]);
     }
+    link_all();
   }
 
   // From any polytope given as vertices and outward triangles (0 strictly inside).
   Epa(const Engine& E, std::vector<Vert> verts, std::span<const std::array<int, 3>> tris) : E_(E), v_(std::move(verts)) {
     for (const auto& t : tris) add_face(t[0], t[1], t[2]);
+    link_all();
   }
 
   // Lower bound of σ at the query: every facet's lower bound, minus δ.
@@ -518,7 +521,6 @@ class Epa {
   const Engine& E_;
   std::vector<Vert> v_;
   std::vector<Face> f_;
-  std::unordered_map<std::uint64_t, int> edge_;  // directed edge (i, j) → its face
   // Min-heap of (lower bound, face index) over the faces with a finite lower bound; dead faces
   // are dropped when they reach the top.
   using Entry = std::pair<double, int>;
@@ -527,7 +529,8 @@ class Epa {
   std::vector<unsigned> seen_, vis_;
   unsigned stamp_ = 0;
   std::vector<int> stack_, visible_;
-  std::vector<std::pair<int, int>> horizon_;
+  std::vector<std::pair<int, int>> horizon_;  // (visible face, its edge k)
+  std::vector<int> from_, to_;                  // vertex → the new face whose horizon edge starts / ends there
   double U_ = kInf;
   Vec3 U_dir_ = Vec3::Zero();
   Vert U_vert_{};
@@ -536,6 +539,18 @@ class Epa {
   Vert lam_vert_{};
 
   static std::uint64_t key(int i, int j) { return static_cast<std::uint64_t>(i) << 32 | static_cast<std::uint32_t>(j); }
+  static std::pair<int, int> edge(const Face& F, int k) {
+    return k == 0 ? std::pair{F.a, F.b} : k == 1 ? std::pair{F.b, F.c} : std::pair{F.c, F.a};
+  }
+  // The initial polytope's adjacency (closed: every directed edge (i, j) has its twin (j, i)).
+  void link_all() {
+    std::unordered_map<std::uint64_t, int> owner;
+    for (std::size_t g = 0; g < f_.size(); ++g)
+      for (int k = 0; k < 3; ++k) owner[key(edge(f_[g], k).first, edge(f_[g], k).second)] = static_cast<int>(g);
+    for (Face& F : f_)
+      for (int k = 0; k < 3; ++k)
+        if (const auto it = owner.find(key(edge(F, k).second, edge(F, k).first)); it != owner.end()) F.nb[k] = it->second;
+  }
 
   void add_face(int a, int b, int c) {
     Face f{a, b, c, Vec3::Zero()};
@@ -557,13 +572,6 @@ class Epa {
     f_.push_back(f);
     seen_.push_back(0), vis_.push_back(0);
     if (f.lo < kInf) heap_.push({f.lo, id});  // (a NaN or +∞ bound is never the least)
-    edge_[key(a, b)] = id, edge_[key(b, c)] = id, edge_[key(c, a)] = id;
-  }
-  void kill(int fi) {
-    Face& f = f_[fi];
-    f.alive = false;
-    for (auto [i, j] : {std::pair{f.a, f.b}, std::pair{f.b, f.c}, std::pair{f.c, f.a}})
-      if (auto it = edge_.find(key(i, j)); it != edge_.end() && it->second == fi) edge_.erase(it);
   }
 
   void ray_plane(const Vec3& u, const Vert& v, const Vec3& d) {
@@ -596,7 +604,9 @@ class Epa {
     }
     const int nv = static_cast<int>(v_.size());
     v_.push_back(v);
-    // The visible faces (connected, from fi), then the horizon as directed edges.
+    // The visible faces (connected, from fi, by adjacency), then the horizon as directed edges
+    // (i, j) of visible faces with the face h beyond, in a fixed order: the new faces' indices,
+    // hence the heap's ties, do not depend on anything but the polytope.
     ++stamp_;
     stack_.assign(1, fi), visible_.clear(), horizon_.clear();
     seen_[fi] = stamp_, vis_[fi] = stamp_;
@@ -604,26 +614,32 @@ class Epa {
       const int g = stack_.back();
       stack_.pop_back();
       visible_.push_back(g);
-      const Face& F = f_[g];
-      for (auto [i, j] : {std::pair{F.a, F.b}, std::pair{F.b, F.c}, std::pair{F.c, F.a}}) {
-        const auto it = edge_.find(key(j, i));
-        if (it == edge_.end()) continue;
-        const int h = it->second;
-        if (seen_[h] == stamp_) continue;
+      for (const int h : f_[g].nb) {
+        if (h < 0 || seen_[h] == stamp_) continue;
         seen_[h] = stamp_;
         const Face& H = f_[h];
         if (predicates::orient3d(v_[H.a].x, v_[H.b].x, v_[H.c].x, v.x) > 0) vis_[h] = stamp_, stack_.push_back(h);
       }
     }
-    for (int g : visible_) {
-      const Face& F = f_[g];
-      for (auto [i, j] : {std::pair{F.a, F.b}, std::pair{F.b, F.c}, std::pair{F.c, F.a}}) {
-        const auto it = edge_.find(key(j, i));
-        if (it == edge_.end() || vis_[it->second] != stamp_) horizon_.push_back({i, j});
-      }
+    for (int g : visible_)
+      for (int k = 0; k < 3; ++k)
+        if (const int h = f_[g].nb[k]; h < 0 || vis_[h] != stamp_) horizon_.push_back({g, k});
+    for (int g : visible_) f_[g].alive = false;
+    // The cone from nv over the horizon (a simple cycle): face (i, j, nv) has h across (i, j), the
+    // new face starting at j across (j, nv), the one ending at i across (nv, i).
+    from_.resize(v_.size()), to_.resize(v_.size());
+    const int first = static_cast<int>(f_.size());
+    for (auto [g, k] : horizon_) {
+      const auto [i, j] = edge(f_[g], k);
+      const int h = f_[g].nb[k], id = static_cast<int>(f_.size());
+      add_face(i, j, nv);
+      f_[id].nb[0] = h;
+      if (h >= 0)
+        for (int m = 0; m < 3; ++m)
+          if (edge(f_[h], m) == std::pair{j, i}) f_[h].nb[m] = id;
+      from_[i] = id, to_[j] = id;
     }
-    for (int g : visible_) kill(g);
-    for (auto [i, j] : horizon_) add_face(i, j, nv);
+    for (int id = first; id < static_cast<int>(f_.size()); ++id) f_[id].nb[1] = from_[f_[id].b], f_[id].nb[2] = to_[f_[id].a];
   }
 };
 
@@ -903,7 +919,7 @@ Distance3 intersect(const Distance3& c, const Distance3& e) {
 // tilt, its upper end of σ tightened by the search above; kept alone when it meets EPA's target,
 // else intersected with EPA's bracket (EPA's answer bit for bit when the closed form narrows
 // neither end). EPA's budget: the supports a ring of almost-nearest directions of width ~tilt
-// needs are ~20·√(σ/tilt) (measured: docs/benchmarks.md "Long EPA runs"); past kMaxEpa only when
+// needs are ~13–18·√(σ/tilt) (measured: docs/benchmarks.md "Long EPA runs"); past kMaxEpa only when
 // that fits kMaxEpaLong (a scheduling estimate: the answer stays certified either way).
 template <class Result, class Closed, class Epa>
 Result coaxial_or_epa(const Support3& P, const Support3& Q, const Frame& F, Closed closed, Epa epa) {
@@ -914,7 +930,7 @@ Result coaxial_or_epa(const Support3& P, const Support3& Q, const Frame& F, Clos
   const Result c = closed(cf);
   const double scale = std::max(std::abs(c.lower_bound), std::abs(c.upper_bound));
   if (K->tilt == 0 || c.upper_bound - c.lower_bound <= kCurvedTargetGap * scale) return c;
-  const double need = 32 * std::sqrt(scale / K->tilt);
+  const double need = 24 * std::sqrt(scale / K->tilt);
   return intersect(c, epa(need <= kMaxEpaLong ? kMaxEpaLong : kMaxEpa));
 }
 
