@@ -33,8 +33,12 @@
 // Pre-step (σ and signed distance): when P's and Q's components (disk, axial segment, ball) are
 // exactly parallel, M is one rounded cylinder answered in closed form (coaxial3.cpp) — the
 // symmetric placements where σ is attained on a continuum and EPA cannot close its bracket.
-// Cost: O(k (f + s)) for k support queries, f facets, s the cost of one support (O(1) for
-// curved primitives, O(n) for a polytope's vertex scan); k is typically 20–150 for a 1e-13 gap.
+// Near-coaxial pairs (a tilt ε): the tilt-widened closed form, its upper end of σ tightened by a
+// compass search of h_M, intersected with EPA's bracket (coaxial_or_epa below).
+// Cost: O(k (log f + s + e)) for k support queries, f facets (a heap by lower bound), s the cost
+// of one support (O(1) for curved primitives, O(n) for a polytope's vertex scan), e the faces
+// seen around the horizon (by adjacency); k is typically 20–150 for a 1e-13 gap, up to
+// kMaxEpaLong near a continuum of almost-nearest points (docs/robustness.md).
 #include "primitives/support3.hpp"
 
 #include <pendepth/pendepth.hpp>

@@ -571,8 +571,9 @@ TEST(Curved, CoaxialPairsInsideTheNestedTessellationsAndTheEpaBracket) {
 
 TEST(Curved, NearCoaxialPairsTakeTheTiltBoundWhenNarrower) {
   // The centred cylinder in a rounded cylinder tilted by ε: σ still on a near-continuum, EPA's
-  // bracket ~1e-5–1e-4 wide; the closed form of the untilted sum widened by ‖R − R0‖·ρ_Q is
-  // certified (it must meet EPA's bracket) and ~ε wide.
+  // bracket ~1e-5–1e-4 wide at 600 supports (at 1e-6 its longer budget closes it); the closed
+  // form of the untilted sum widened by ‖R − R0‖·ρ_C is certified (it must meet EPA's bracket)
+  // and ~ε wide, and it narrows the answer.
   const Pair3 pair(Shape3::cylinder(1, 1), Shape3::rounded(Shape3::cylinder(1, 1), 0.5));
   for (double eps : {1e-6, 1e-9, 1e-12}) {
     const Pose3 pq(Eigen::Quaterniond(Eigen::AngleAxisd(eps, Vec3(0.6, 0.8, 0))), Vec3::Zero());
