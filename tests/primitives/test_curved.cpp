@@ -712,6 +712,46 @@ TEST(Curved, NearCoaxialOffCentrePairsInsideTheNestedTessellations) {
   }
 }
 
+TEST(Curved, NearCoaxialRandomPairsMeetEpaAndTheTiltBound) {
+  // Random decomposable pairs, Q tilted by 10^−U(3, 12) about a random horizontal axis after an
+  // axial rotation, offsets near and far: the answer (closed form ∩ search ∩ EPA) must meet EPA
+  // alone (pre-step off; both certified), meet 1e-12 or be no wider than EPA alone, and never
+  // be NaN.
+  std::mt19937_64 rng(1815);
+  std::uniform_real_distribution<double> off(-0.6, 0.6), L(3, 12), A(0, 2 * kPi);
+  int overlapping = 0;
+  for (int it = 0; it < 300; ++it) {
+    const bool p_solid = it % 2 == 0;
+    const Axial P = random_axial(rng, p_solid), Q = random_axial(rng, !p_solid);
+    if (!P.shape.curved() && !Q.shape.curved()) continue;
+    const double eps = std::pow(10.0, -L(rng)), phi = A(rng);
+    const Eigen::Quaterniond tilt(Eigen::AngleAxisd(eps, Vec3(std::cos(phi), std::sin(phi), 0)));
+    const Pose3 pq(tilt * axial_rotation(rng), Vec3(off(rng), off(rng), off(rng)) * (it % 3 == 0 ? 0.05 : 1.0));
+    const Pair3 pair(P.shape, Q.shape);
+    const Distance3 s = pair.signed_distance(Pose3(), pq);
+    const Depth3 m = pair.minimum(Pose3(), pq);
+    primitives::coaxial_enabled = false;
+    const Distance3 e = pair.signed_distance(Pose3(), pq);
+    const Depth3 em = pair.minimum(Pose3(), pq);
+    primitives::coaxial_enabled = true;
+    ASSERT_FALSE(std::isnan(s.lower_bound) || std::isnan(s.upper_bound) || std::isnan(m.lower_bound) || std::isnan(m.upper_bound)) << it;
+    ASSERT_LE(s.lower_bound, s.upper_bound) << it;
+    EXPECT_LE(s.lower_bound, e.upper_bound) << it;
+    EXPECT_GE(s.upper_bound, e.lower_bound) << it;
+    // The contract (1e-12 relative to a few ulps of the pair's size), or no wider than EPA alone
+    // (its budget may be longer than the one the near-coaxial path grants it).
+    const double scale = 1 + pq.translation.norm();
+    const auto target = [&](double lo, double hi) { return 1e-12 * std::max(std::abs(lo), std::abs(hi)) + 64 * 0x1p-53 * scale; };
+    EXPECT_LE(s.upper_bound - s.lower_bound, std::max(e.upper_bound - e.lower_bound, target(s.lower_bound, s.upper_bound))) << it;
+    if (!m.overlapping || !em.overlapping) continue;
+    ++overlapping;
+    EXPECT_LE(m.lower_bound, em.upper_bound) << it;
+    EXPECT_GE(m.upper_bound, em.lower_bound) << it;
+    EXPECT_LE(m.upper_bound - m.lower_bound, std::max(em.upper_bound - em.lower_bound, target(m.lower_bound, m.upper_bound))) << it;
+  }
+  EXPECT_GT(overlapping, 60);
+}
+
 TEST(Curved, NearSphericalEllipsoidClosesPastSixHundredSupports) {
   // A generic near-continuum (no closed form): ellipsoid(1, 1, 1 + 1e-7) ⊕ sphere(0.5) near the
   // centre, where EPA stopped at 600 supports 4e-7 mean / 4e-5 worst wide. Oracle: B(1) ⊆ E ⊆
