@@ -69,9 +69,13 @@ constexpr int kMaxEpa = 600;
 // σ past kMaxEpa: the budget doubles (checkpoints at 2, 4, … × kMaxEpa supports) while each
 // doubling at least halves the bracket — near a continuum of almost-nearest points the facets'
 // sagitta falls as 1/k² until the ring is resolved, then the bracket collapses (measured: a tilt
-// of 1e-6 needs ~19,400 supports); a doubling that does not halve it has met the rounding floor
-// or a continuum. Hard cap: kMaxEpaLong supports (~40 ms; docs/robustness.md "A continuum of
-// nearest points"). σ only (σ_d, casts: kMaxEpa).
+// of 1e-6 needs ~19,400 supports); a doubling that does not halve it has met the rounding floor.
+// On an exact continuum (a sphere on a cone's axis) the bracket also shrinks as 1/k² but never
+// collapses, and the run cannot tell the two apart: so generic pairs get kMaxEpaGeneric (~15 ms
+// at the measured ~3 µs per support), and only near-coaxial pairs whose ring the estimate of
+// coaxial_or_epa says will be resolved get kMaxEpaLong (docs/robustness.md "A continuum of
+// nearest points"). σ and the signed distance only (σ_d, casts: kMaxEpa).
+constexpr int kMaxEpaGeneric = 8 * kMaxEpa;
 constexpr int kMaxEpaLong = 64 * kMaxEpa;
 constexpr int kMaxCast = 200;
 
@@ -461,8 +465,8 @@ class Epa {
   // lower bound is positive), or until the facet with the least lower bound cannot be expanded.
   // The facet with the least lower bound comes from a heap (O(log f) per support; the same
   // facet as a scan in index order, ties to the lowest index). Budget: kMaxEpa supports, then
-  // doublings while each halves the bracket, up to kMaxEpaLong (σ only).
-  void minimum(bool certify, int budget = kMaxEpaLong) {
+  // doublings while each halves the bracket, up to `budget` (>= kMaxEpa; certify: kMaxEpa).
+  void minimum(bool certify, int budget) {
     double checkpoint_gap = kInf;
     for (int it = 0, checkpoint = kMaxEpa; it < budget; ++it) {
       while (!heap_.empty() && !f_[heap_.top().second].alive) heap_.pop();
@@ -677,7 +681,7 @@ struct Sd {
   Vert U_vert{};
 };
 
-Sd signed_distance_at(const Engine& E, bool certify_only, std::unique_ptr<Epa>* keep = nullptr, int budget = kMaxEpaLong) {
+Sd signed_distance_at(const Engine& E, bool certify_only, std::unique_ptr<Epa>* keep = nullptr, int budget = kMaxEpa) {
   Sd r;
   r.g = gjk(E, -(E.query()) + Vec3(0x1p-20, 0, 0));
   r.lo = r.g.lo, r.hi = r.g.hi;
@@ -796,7 +800,7 @@ Depth3 coaxial_minimum(const ClosedForm& c, const Frame& F) {
   return out;
 }
 
-Distance3 epa_distance(const Support3& P, const Support3& Q, const Frame& F, int budget = kMaxEpaLong) {
+Distance3 epa_distance(const Support3& P, const Support3& Q, const Frame& F, int budget) {
   const Engine E(P, Q, F.R, F.t);
   const Sd s = signed_distance_at(E, false, nullptr, budget);
   Distance3 out;
@@ -822,7 +826,7 @@ Distance3 epa_distance(const Support3& P, const Support3& Q, const Frame& F, int
   return out;
 }
 
-Depth3 epa_minimum(const Support3& P, const Support3& Q, const Frame& F, int budget = kMaxEpaLong) {
+Depth3 epa_minimum(const Support3& P, const Support3& Q, const Frame& F, int budget) {
   const Engine E(P, Q, F.R, F.t);
   const Sd s = signed_distance_at(E, false, nullptr, budget);
   Depth3 out;
@@ -928,7 +932,7 @@ Distance3 intersect(const Distance3& c, const Distance3& e) {
 template <class Result, class Closed, class Epa>
 Result coaxial_or_epa(const Support3& P, const Support3& Q, const Frame& F, Closed closed, Epa epa) {
   const auto K = coaxial_sum(P, Q, F.R);
-  if (!K) return epa(kMaxEpaLong);
+  if (!K) return epa(kMaxEpaGeneric);
   ClosedForm cf = closed_form(P, Q, F, *K);
   if (K->tilt > 0 && cf.sd.hi < 0) tighten_upper_by_search(P, Q, F, cf);
   const Result c = closed(cf);
