@@ -182,9 +182,12 @@ std::optional<CoaxialSum> coaxial_sum(const Support3& P, const Support3& Q, cons
   if (!p || !q) return std::nullopt;
   Eigen::Matrix3d R0 = R;
   double tilt = 0;
-  if (q->axial() && !keeps_axis(R)) tilt = tilt_of(R, Q.rho, R0);
-  const Interval s = stretch(R0);
-  const Interval disk = p->disk + q->disk * s, seg = p->seg + q->seg, ball = p->ball + q->ball * s;
+  // Tilted: Q = C ⊕ B(r) with C its disk ⊕ segment; R·B(r) is a ball stretched by R's own
+  // singular values whatever the tilt, so only C moves: tilt = ‖R − R0‖_F·ρ_C, ρ_C = |(R_Q, H_Q)|
+  // (not Q.rho, which holds the ball too).
+  if (q->axial() && !keeps_axis(R)) tilt = tilt_of(R, hypot_dir(q->disk.hi, q->seg.hi, +1), R0);
+  const Interval s = stretch(R0), s_ball = tilt > 0 ? stretch(R) : s;
+  const Interval disk = p->disk + q->disk * s, seg = p->seg + q->seg, ball = p->ball + q->ball * s_ball;
   return CoaxialSum{disk.lo, disk.hi, seg.lo, seg.hi, ball.lo, ball.hi, tilt};
 }
 

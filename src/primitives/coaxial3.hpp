@@ -14,7 +14,8 @@ namespace pendepth::primitives {
 /// singular values of the double relative rotation when it is not a signed permutation).
 /// M = K − t, so sd_M(0) = sd_K(t).
 /// Near-coaxial (`tilt` > 0): Q's axis is not exactly parallel; K is then the sum for R0 (R with
-/// its axis row and column replaced by ±e_z) and `tilt` >= ‖R − R0‖_F·ρ_Q bounds the Hausdorff
+/// its axis row and column replaced by ±e_z) and `tilt` >= ‖R − R0‖_F·ρ_C (ρ_C the radius of Q's
+/// disk ⊕ segment; its ball is R·B, stretched by R's own singular values) bounds the Hausdorff
 /// distance between R·Q and R0·Q, hence between M and K − t: sd_M = sd_K(t) ± tilt.
 struct CoaxialSum {
   double R_lo = 0, R_hi = 0, H_lo = 0, H_hi = 0, r_lo = 0, r_hi = 0;

@@ -33,8 +33,12 @@
 // Pre-step (σ and signed distance): when P's and Q's components (disk, axial segment, ball) are
 // exactly parallel, M is one rounded cylinder answered in closed form (coaxial3.cpp) — the
 // symmetric placements where σ is attained on a continuum and EPA cannot close its bracket.
-// Cost: O(k (f + s)) for k support queries, f facets, s the cost of one support (O(1) for
-// curved primitives, O(n) for a polytope's vertex scan); k is typically 20–150 for a 1e-13 gap.
+// Near-coaxial pairs (a tilt ε): the tilt-widened closed form, its upper end of σ tightened by a
+// compass search of h_M, intersected with EPA's bracket (coaxial_or_epa below).
+// Cost: O(k (log f + s + e)) for k support queries, f facets (a heap by lower bound), s the cost
+// of one support (O(1) for curved primitives, O(n) for a polytope's vertex scan), e the faces
+// seen around the horizon (by adjacency); k is typically 20–150 for a 1e-13 gap, up to
+// kMaxEpaLong near a continuum of almost-nearest points (docs/robustness.md).
 #include "primitives/support3.hpp"
 
 #include <pendepth/pendepth.hpp>
@@ -50,6 +54,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <queue>
 #include <span>
 #include <unordered_map>
 #include <vector>
@@ -61,6 +66,17 @@ constexpr double kU = 0x1p-53;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr int kMaxGjk = 200;
 constexpr int kMaxEpa = 600;
+// σ past kMaxEpa: the budget doubles (checkpoints at 2, 4, … × kMaxEpa supports) while each
+// doubling at least halves the bracket — near a continuum of almost-nearest points the facets'
+// sagitta falls as 1/k² until the ring is resolved, then the bracket collapses (measured: a tilt
+// of 1e-6 needs ~19,400 supports); a doubling that does not halve it has met the rounding floor.
+// On an exact continuum (a sphere on a cone's axis) the bracket also shrinks as 1/k² but never
+// collapses, and the run cannot tell the two apart: so generic pairs get kMaxEpaGeneric (~15 ms
+// at the measured ~3 µs per support), and only near-coaxial pairs whose ring the estimate of
+// coaxial_or_epa says will be resolved get kMaxEpaLong (docs/robustness.md "A continuum of
+// nearest points"). σ and the signed distance only (σ_d, casts: kMaxEpa).
+constexpr int kMaxEpaGeneric = 8 * kMaxEpa;
+constexpr int kMaxEpaLong = 64 * kMaxEpa;
 constexpr int kMaxCast = 200;
 
 void two_sum(double a, double b, double& s, double& e) {
@@ -414,6 +430,7 @@ struct Face {
   double est = 0, lo = 0;  // plane distance: estimate and rigorous lower bound
   double den_lo = 0;       // lower bound of |n_true|
   bool alive = true, final = false;
+  std::array<int, 3> nb{-1, -1, -1};  // the faces across edges (a, b), (b, c), (c, a)
 };
 
 class Epa {
@@ -427,11 +444,13 @@ class Epa {
       else
         add_face(k[0], k[1], k[2]);
     }
+    link_all();
   }
 
   // From any polytope given as vertices and outward triangles (0 strictly inside).
   Epa(const Engine& E, std::vector<Vert> verts, std::span<const std::array<int, 3>> tris) : E_(E), v_(std::move(verts)) {
     for (const auto& t : tris) add_face(t[0], t[1], t[2]);
+    link_all();
   }
 
   // Lower bound of σ at the query: every facet's lower bound, minus δ.
@@ -444,16 +463,23 @@ class Epa {
 
   // σ: expand until the bracket [lower, U] is within the target (or mode `certify`: until the
   // lower bound is positive), or until the facet with the least lower bound cannot be expanded.
-  void minimum(bool certify) {
-    for (int it = 0; it < kMaxEpa; ++it) {
-      int fi = -1;
-      double m = kInf;
-      for (std::size_t i = 0; i < f_.size(); ++i)
-        if (f_[i].alive && f_[i].lo < m) m = f_[i].lo, fi = static_cast<int>(i);
-      if (fi < 0) return;
-      const double L = down(m - E_.delta() * (1 + 0x1p-40));
+  // The facet with the least lower bound comes from a heap (O(log f) per support; the same
+  // facet as a scan in index order, ties to the lowest index). Budget: kMaxEpa supports, then
+  // doublings while each halves the bracket, up to `budget` (>= kMaxEpa; certify: kMaxEpa).
+  void minimum(bool certify, int budget) {
+    double checkpoint_gap = kInf;
+    for (int it = 0, checkpoint = kMaxEpa; it < budget; ++it) {
+      while (!heap_.empty() && !f_[heap_.top().second].alive) heap_.pop();
+      if (heap_.empty()) return;
+      const int fi = heap_.top().second;
+      const double L = down(heap_.top().first - E_.delta() * (1 + 0x1p-40));
       if (certify ? L > 0 : U_ < kInf && U_ - L <= kCurvedTargetGap * U_) return;
       if (f_[fi].final) return;
+      if (it == checkpoint) {  // past kMaxEpa only while each doubling halves the bracket
+        const double gap = U_ - L;
+        if (certify || !(gap <= 0.5 * checkpoint_gap)) return;
+        checkpoint_gap = gap, checkpoint *= 2;
+      }
       step(fi);
     }
   }
@@ -503,7 +529,16 @@ class Epa {
   const Engine& E_;
   std::vector<Vert> v_;
   std::vector<Face> f_;
-  std::unordered_map<std::uint64_t, int> edge_;  // directed edge (i, j) → its face
+  // Min-heap of (lower bound, face index) over the faces with a finite lower bound; dead faces
+  // are dropped when they reach the top.
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap_;
+  // step()'s scratch, kept across steps: marks by stamp (no per-step allocation of O(f)).
+  std::vector<unsigned> seen_, vis_;
+  unsigned stamp_ = 0;
+  std::vector<int> stack_, visible_;
+  std::vector<std::pair<int, int>> horizon_;  // (visible face, its edge k)
+  std::vector<int> from_, to_;                  // vertex → the new face whose horizon edge starts / ends there
   double U_ = kInf;
   Vec3 U_dir_ = Vec3::Zero();
   Vert U_vert_{};
@@ -512,6 +547,18 @@ class Epa {
   Vert lam_vert_{};
 
   static std::uint64_t key(int i, int j) { return static_cast<std::uint64_t>(i) << 32 | static_cast<std::uint32_t>(j); }
+  static std::pair<int, int> edge(const Face& F, int k) {
+    return k == 0 ? std::pair{F.a, F.b} : k == 1 ? std::pair{F.b, F.c} : std::pair{F.c, F.a};
+  }
+  // The initial polytope's adjacency (closed: every directed edge (i, j) has its twin (j, i)).
+  void link_all() {
+    std::unordered_map<std::uint64_t, int> owner;
+    for (std::size_t g = 0; g < f_.size(); ++g)
+      for (int k = 0; k < 3; ++k) owner[key(edge(f_[g], k).first, edge(f_[g], k).second)] = static_cast<int>(g);
+    for (Face& F : f_)
+      for (int k = 0; k < 3; ++k)
+        if (const auto it = owner.find(key(edge(F, k).second, edge(F, k).first)); it != owner.end()) F.nb[k] = it->second;
+  }
 
   void add_face(int a, int b, int c) {
     Face f{a, b, c, Vec3::Zero()};
@@ -531,13 +578,8 @@ class Epa {
     f.lo = num >= 0 ? down(num / den_up) : f.den_lo > 0 ? down(num / f.den_lo) : -kInf;
     const int id = static_cast<int>(f_.size());
     f_.push_back(f);
-    edge_[key(a, b)] = id, edge_[key(b, c)] = id, edge_[key(c, a)] = id;
-  }
-  void kill(int fi) {
-    Face& f = f_[fi];
-    f.alive = false;
-    for (auto [i, j] : {std::pair{f.a, f.b}, std::pair{f.b, f.c}, std::pair{f.c, f.a}})
-      if (auto it = edge_.find(key(i, j)); it != edge_.end() && it->second == fi) edge_.erase(it);
+    seen_.push_back(0), vis_.push_back(0);
+    if (f.lo < kInf) heap_.push({f.lo, id});  // (a NaN or +∞ bound is never the least)
   }
 
   void ray_plane(const Vec3& u, const Vert& v, const Vec3& d) {
@@ -570,35 +612,42 @@ class Epa {
     }
     const int nv = static_cast<int>(v_.size());
     v_.push_back(v);
-    // The visible faces (connected, from fi), then the horizon as directed edges.
-    std::vector<int> stack{fi}, visible;
-    std::vector<char> seen(f_.size(), 0), vis(f_.size(), 0);
-    seen[fi] = 1, vis[fi] = 1;
-    while (!stack.empty()) {
-      const int g = stack.back();
-      stack.pop_back();
-      visible.push_back(g);
-      const Face& F = f_[g];
-      for (auto [i, j] : {std::pair{F.a, F.b}, std::pair{F.b, F.c}, std::pair{F.c, F.a}}) {
-        const auto it = edge_.find(key(j, i));
-        if (it == edge_.end()) continue;
-        const int h = it->second;
-        if (seen[h]) continue;
-        seen[h] = 1;
+    // The visible faces (connected, from fi, by adjacency), then the horizon as directed edges
+    // (i, j) of visible faces with the face h beyond, in a fixed order: the new faces' indices,
+    // hence the heap's ties, do not depend on anything but the polytope.
+    ++stamp_;
+    stack_.assign(1, fi), visible_.clear(), horizon_.clear();
+    seen_[fi] = stamp_, vis_[fi] = stamp_;
+    while (!stack_.empty()) {
+      const int g = stack_.back();
+      stack_.pop_back();
+      visible_.push_back(g);
+      for (const int h : f_[g].nb) {
+        if (h < 0 || seen_[h] == stamp_) continue;
+        seen_[h] = stamp_;
         const Face& H = f_[h];
-        if (predicates::orient3d(v_[H.a].x, v_[H.b].x, v_[H.c].x, v.x) > 0) vis[h] = 1, stack.push_back(h);
+        if (predicates::orient3d(v_[H.a].x, v_[H.b].x, v_[H.c].x, v.x) > 0) vis_[h] = stamp_, stack_.push_back(h);
       }
     }
-    std::vector<std::pair<int, int>> horizon;
-    for (int g : visible) {
-      const Face& F = f_[g];
-      for (auto [i, j] : {std::pair{F.a, F.b}, std::pair{F.b, F.c}, std::pair{F.c, F.a}}) {
-        const auto it = edge_.find(key(j, i));
-        if (it == edge_.end() || !vis[it->second]) horizon.push_back({i, j});
-      }
+    for (int g : visible_)
+      for (int k = 0; k < 3; ++k)
+        if (const int h = f_[g].nb[k]; h < 0 || vis_[h] != stamp_) horizon_.push_back({g, k});
+    for (int g : visible_) f_[g].alive = false;
+    // The cone from nv over the horizon (a simple cycle): face (i, j, nv) has h across (i, j), the
+    // new face starting at j across (j, nv), the one ending at i across (nv, i).
+    from_.resize(v_.size()), to_.resize(v_.size());
+    const int first = static_cast<int>(f_.size());
+    for (auto [g, k] : horizon_) {
+      const auto [i, j] = edge(f_[g], k);
+      const int h = f_[g].nb[k], id = static_cast<int>(f_.size());
+      add_face(i, j, nv);
+      f_[id].nb[0] = h;
+      if (h >= 0)
+        for (int m = 0; m < 3; ++m)
+          if (edge(f_[h], m) == std::pair{j, i}) f_[h].nb[m] = id;
+      from_[i] = id, to_[j] = id;
     }
-    for (int g : visible) kill(g);
-    for (auto [i, j] : horizon) add_face(i, j, nv);
+    for (int id = first; id < static_cast<int>(f_.size()); ++id) f_[id].nb[1] = from_[f_[id].b], f_[id].nb[2] = to_[f_[id].a];
   }
 };
 
@@ -632,7 +681,7 @@ struct Sd {
   Vert U_vert{};
 };
 
-Sd signed_distance_at(const Engine& E, bool certify_only, std::unique_ptr<Epa>* keep = nullptr) {
+Sd signed_distance_at(const Engine& E, bool certify_only, std::unique_ptr<Epa>* keep = nullptr, int budget = kMaxEpa) {
   Sd r;
   r.g = gjk(E, -(E.query()) + Vec3(0x1p-20, 0, 0));
   r.lo = r.g.lo, r.hi = r.g.hi;
@@ -674,7 +723,7 @@ Sd signed_distance_at(const Engine& E, bool certify_only, std::unique_ptr<Epa>* 
     }
   }
   if (epa) {
-    epa->minimum(certify_only);
+    epa->minimum(certify_only, budget);
     r.L = epa->lower();
     r.U = epa->U();
     r.U_dir = epa->U_dir(), r.U_vert = epa->U_vert();
@@ -751,9 +800,9 @@ Depth3 coaxial_minimum(const ClosedForm& c, const Frame& F) {
   return out;
 }
 
-Distance3 epa_distance(const Support3& P, const Support3& Q, const Frame& F) {
+Distance3 epa_distance(const Support3& P, const Support3& Q, const Frame& F, int budget) {
   const Engine E(P, Q, F.R, F.t);
-  const Sd s = signed_distance_at(E, false);
+  const Sd s = signed_distance_at(E, false, nullptr, budget);
   Distance3 out;
   out.lower_bound = s.lo, out.upper_bound = s.hi;
   if (s.state > 0) {  // apart: the upper end, realised by a pair of points within rounding
@@ -777,9 +826,9 @@ Distance3 epa_distance(const Support3& P, const Support3& Q, const Frame& F) {
   return out;
 }
 
-Depth3 epa_minimum(const Support3& P, const Support3& Q, const Frame& F) {
+Depth3 epa_minimum(const Support3& P, const Support3& Q, const Frame& F, int budget) {
   const Engine E(P, Q, F.R, F.t);
-  const Sd s = signed_distance_at(E, false);
+  const Sd s = signed_distance_at(E, false, nullptr, budget);
   Depth3 out;
   out.kind = DepthKind::Minimum;
   out.candidates = static_cast<std::size_t>(E.supports);
@@ -797,18 +846,100 @@ Depth3 epa_minimum(const Support3& P, const Support3& Q, const Frame& F) {
   return out;
 }
 
-// Coaxial pairs: the closed form; near-coaxial (a tilt bound > 0): the closed form when its
-// bracket meets EPA's own target, else the narrower of its bracket and EPA's (both certified;
-// EPA's answer, bit for bit, unless the closed form is narrower).
+// Near-coaxial, overlapping: σ = min over unit u of h_{M}(u) (0 inside M), so every direction
+// gives a certified upper bound h_up(u)/|u| (as EPA's U). A compass search in the tangent basis
+// at u0 (horizontal e1 = e_z × u0 along the ring of almost-nearest directions, e2 across it: the
+// kinks of h_M run along these), steps halving from 1/4 to 2⁻⁵² (at most kMaxSearch supports).
+// Two starts, K's side normal towards t and its cap normal: with the query near K's centre both
+// are (almost) nearest and h_M has a local minimum at each. The upper end then sits on the tilted
+// M's true minimum to rounding, where the tilt bound only gives σ_K + tilt. The reported move is
+// along the best u.
+constexpr int kMaxSearch = 300;
+struct Searched {
+  double upper = kInf;
+  Vec3 u = Vec3::UnitX();
+  Vert v{};
+};
+Searched compass_search(const Engine& E, const Vec3& u0) {
+  Vec3 e1 = Vec3::UnitZ().cross(u0);
+  if (!(e1.norm() > 0.5)) e1 = Vec3::UnitX().cross(u0);  // (at the axis: any tangent pair)
+  e1.normalize();
+  const Vec3 e2 = u0.cross(e1);
+  auto upper = [&](const Vec3& u, Vert& v) {
+    v = E.support(u);
+    const auto nb = norm_bounds(u);
+    return div_up(E.value_up(v, u), nb[0], nb[1]);
+  };
+  Searched r;
+  r.u = u0;
+  r.upper = upper(u0, r.v);
+  const int end = E.supports + kMaxSearch;
+  for (double step = 0.25; step >= 0x1p-52 && E.supports < end;) {
+    bool moved = false;
+    for (const Vec3& d : {e1, Vec3(-e1), e2, Vec3(-e2)}) {
+      Vert v;
+      const Vec3 cand = r.u + step * d;
+      if (const double h = upper(cand, v); h < r.upper) r.upper = h, r.u = cand, r.v = v, moved = true;
+    }
+    if (!moved) step /= 2;
+  }
+  return r;
+}
+void tighten_upper_by_search(const Support3& P, const Support3& Q, const Frame& F, ClosedForm& c) {
+  const Engine E(P, Q, F.R, F.t);
+  const double rho = std::hypot(F.t[0], F.t[1]);
+  const Vec3 side = rho > 0 ? Vec3(F.t[0] / rho, F.t[1] / rho, 0) : Vec3::UnitX();
+  const Vec3 cap(0, 0, F.t[2] < 0 ? -1.0 : 1.0);
+  for (const Vec3& u0 : {side, cap}) {
+    const Searched r = compass_search(E, u0);
+    if (-r.upper > c.sd.lo) c.sd.lo = -r.upper, c.sd.normal = r.u.normalized(), c.touch = r.v;
+  }
+}
+
+// Both brackets are certified, so is their intersection: the reported value (and its move,
+// witnesses) from the result whose reporting end is better, the other end the better of the two.
+// When the two disagree on the state (overlapping / apart / touching): the narrower one.
+template <class Result>
+Result narrower(const Result& c, const Result& e) {
+  return c.upper_bound - c.lower_bound < e.upper_bound - e.lower_bound ? c : e;
+}
+Depth3 intersect(const Depth3& c, const Depth3& e) {  // reported: depth = upper_bound
+  if (!(c.overlapping && e.overlapping)) return narrower(c, e);
+  Depth3 r = c.upper_bound < e.upper_bound ? c : e;
+  r.lower_bound = std::max(c.lower_bound, e.lower_bound);
+  return r;
+}
+Distance3 intersect(const Distance3& c, const Distance3& e) {
+  if (c.overlapping && e.overlapping) {  // reported: distance = lower_bound (−σ's upper end)
+    Distance3 r = c.lower_bound > e.lower_bound ? c : e;
+    r.upper_bound = std::min(c.upper_bound, e.upper_bound);
+    return r;
+  }
+  if (c.lower_bound > 0 && e.lower_bound > 0) {  // apart, reported: distance = upper_bound
+    Distance3 r = c.upper_bound < e.upper_bound ? c : e;
+    r.lower_bound = std::max(c.lower_bound, e.lower_bound);
+    return r;
+  }
+  return narrower(c, e);
+}
+
+// Coaxial pairs: the closed form. Near-coaxial (a tilt bound > 0): the closed form widened by the
+// tilt, its upper end of σ tightened by the search above; kept alone when it meets EPA's target,
+// else intersected with EPA's bracket (EPA's answer bit for bit when the closed form narrows
+// neither end). EPA's budget: the supports a ring of almost-nearest directions of width ~tilt
+// needs are ~13–18·√(σ/tilt) (measured: docs/benchmarks.md "Long EPA runs"); past kMaxEpa only when
+// that fits kMaxEpaLong (a scheduling estimate: the answer stays certified either way).
 template <class Result, class Closed, class Epa>
 Result coaxial_or_epa(const Support3& P, const Support3& Q, const Frame& F, Closed closed, Epa epa) {
   const auto K = coaxial_sum(P, Q, F.R);
-  if (!K) return epa();
-  const Result c = closed(closed_form(P, Q, F, *K));
-  const double gap = c.upper_bound - c.lower_bound;
-  if (K->tilt == 0 || gap <= kCurvedTargetGap * std::max(std::abs(c.lower_bound), std::abs(c.upper_bound))) return c;
-  const Result e = epa();
-  return gap < e.upper_bound - e.lower_bound ? c : e;
+  if (!K) return epa(kMaxEpaGeneric);
+  ClosedForm cf = closed_form(P, Q, F, *K);
+  if (K->tilt > 0 && cf.sd.hi < 0) tighten_upper_by_search(P, Q, F, cf);
+  const Result c = closed(cf);
+  const double scale = std::max(std::abs(c.lower_bound), std::abs(c.upper_bound));
+  if (K->tilt == 0 || c.upper_bound - c.lower_bound <= kCurvedTargetGap * scale) return c;
+  const double need = 24 * std::sqrt(scale / K->tilt);
+  return intersect(c, epa(need <= kMaxEpaLong ? kMaxEpaLong : kMaxEpa));
 }
 
 }  // namespace
@@ -816,13 +947,13 @@ Result coaxial_or_epa(const Support3& P, const Support3& Q, const Frame& F, Clos
 Distance3 curved_distance(const Support3& P, const Pose3& pose_p, const Support3& Q, const Pose3& pose_q) {
   const Frame F = frame_of(pose_p, pose_q);
   return coaxial_or_epa<Distance3>(
-      P, Q, F, [&](const ClosedForm& c) { return coaxial_distance(c, F); }, [&] { return epa_distance(P, Q, F); });
+      P, Q, F, [&](const ClosedForm& c) { return coaxial_distance(c, F); }, [&](int budget) { return epa_distance(P, Q, F, budget); });
 }
 
 Depth3 curved_minimum(const Support3& P, const Pose3& pose_p, const Support3& Q, const Pose3& pose_q) {
   const Frame F = frame_of(pose_p, pose_q);
   return coaxial_or_epa<Depth3>(
-      P, Q, F, [&](const ClosedForm& c) { return coaxial_minimum(c, F); }, [&] { return epa_minimum(P, Q, F); });
+      P, Q, F, [&](const ClosedForm& c) { return coaxial_minimum(c, F); }, [&](int budget) { return epa_minimum(P, Q, F, budget); });
 }
 
 Depth3 curved_along(const Support3& P, const Pose3& pose_p, const Support3& Q, const Pose3& pose_q, const Vec3& dw) {
