@@ -34,7 +34,11 @@
 //                       ordered pair in row-major order, at most 24 (22 and 24 pairs). One benchmark
 //                       iteration of a build builds every pair of the instance; the counter
 //                       `pairs` gives the count, and the tables divide by it (per-pair times).
-//                       Queries cycle through the pairs. n, m: the largest piece sizes.
+//                       Queries cycle through the pairs (each query on the next pair, so the
+//                       structures of 22–64 pairs compete for the cache); with
+//                       PENDEPTH_BENCH_QUERY_ORDER=pair the same queries run grouped by pair (the
+//                       16–46 queries of one pair in a row: warm), for every implementation
+//                       alike. n, m: the largest piece sizes.
 //   <instance>-<kind>   build only: every ordered pair of the instance in which both pieces are
 //                       convex (kind convex), one is (mixed) or neither is (nonconvex).
 //   star/<n>/<m>        random star-shaped P (radii [60, 100]) and Q (radii [6, 10]), n = m.
@@ -198,6 +202,13 @@ struct Query {
   Vec2 t, d;
 };
 
+// PENDEPTH_BENCH_QUERY_ORDER=pair: a query list grouped by pair (stable), for the cache's share.
+void order_queries(std::vector<Query>& q) {
+  const char* v = std::getenv("PENDEPTH_BENCH_QUERY_ORDER");
+  if (v && std::string(v) == "pair")
+    std::stable_sort(q.begin(), q.end(), [](const Query& a, const Query& b) { return a.pair < b.pair; });
+}
+
 struct Case {
   std::string name;
   std::size_t n = 0, m = 0;
@@ -231,6 +242,7 @@ struct Case {
       const double a = rng.uniform(0, 2 * std::numbers::pi);
       queries.push_back(Query{i, p - c, Vec2(std::cos(a), std::sin(a))});
     }
+    order_queries(queries);
   }
 
   const NoFitPolygon2& nfp(std::size_t i) {
@@ -256,6 +268,7 @@ struct Case {
       lo -= pad, hi += pad;
       overlap_queries.push_back(Query{i, Vec2(rng.uniform(lo.x(), hi.x()), rng.uniform(lo.y(), hi.y())), Vec2(1, 0)});
     }
+    order_queries(overlap_queries);
   }
   const PairDepth2& pair(std::size_t i) {
     if (!pairs[i].pair) pairs[i].pair = std::make_unique<PairDepth2>(pairs[i].P, pairs[i].Q);
@@ -557,6 +570,7 @@ void BM_overlap(benchmark::State& state, Case* c, Impl impl) {
   state.counters["differ"] = differ;
   state.counters["overlapping"] = overlapping / double(c->overlap_queries.size());
 }
+
 
 double env_number(const char* name, double fallback) {
   const char* v = std::getenv(name);

@@ -24,7 +24,8 @@
 //   exact piece by the ends' displacement (≤ 2⁻⁵⁰·M·√2) and from its double evaluation (the
 //   projection parameter by a stored 1/|b − a|², clamped to [0, 1]: any clamped parameter gives a
 //   point of the segment, whose distance is off by a few ulps of M) by a few ulps of M:
-//   |d̂ − d*| < e = 2⁻⁴⁰·M. A piece can be nearest only if d̂ − e ≤ min d̂ + e. For each candidate,
+//   |d̂ − d*| < e = 2⁻⁴⁰·M. A piece can be nearest only if d̂ − e ≤ min d̂ + e, hence only if
+//   d̂² ≤ min d̂² + 2⁻³⁵·M² (the threshold taken, no square root). For each candidate,
 //   dot(t − a, b − a) and |b − a|² − dot against ±2⁻⁴⁰·M² (error ≪ that: the ends' displacement
 //   and rounding on terms ≤ 8M², checked against rationals in tests/nonconvex2/test_nfp_fast.cpp)
 //   flag t's projection as strictly inside the exact piece, before its lo end or beyond its hi end.
@@ -189,7 +190,7 @@ int NfpFlat::overlapping(const Vec2& t) const {
 }
 
 void NfpFlat::nearest_candidates(const Vec2& t, std::vector<std::uint32_t>& out) const {
-  const double tx = t.x(), ty = t.y(), M = bound_m(t, rmax), e = 0x1p-40 * M, B = 0x1p-40 * M * M;
+  const double tx = t.x(), ty = t.y(), M = bound_m(t, rmax), B = 0x1p-40 * M * M;
   const std::size_t n = px0.size();  // ≤ kFlatMax (usable)
   const double *x0 = px0.data(), *y0 = py0.data(), *ex = pex.data(), *ey = pey.data(), *il = pinv.data();
   // Pass 1, branch-free (the clamps are selects): the squared distance to every rounded piece.
@@ -221,8 +222,11 @@ void NfpFlat::nearest_candidates(const Vec2& t, std::vector<std::uint32_t>& out)
     q[k] = dx * dx + dy * dy;
     best = std::min(best, q[k]);
   }
-  const double r = std::sqrt(best) + 2 * e;
-  const double thr = r * r * (1 + 0x1p-40);
+  // A piece can be nearest only if q[k] ≤ (√best + 2e)²·(1 + 2⁻⁴⁰) (header); as √best ≤ 2√2·M,
+  // that is below best + 2⁻³⁵·M² (4e·2√2·M + 8M²·2⁻⁴⁰ + 4e² < 20·2⁻⁴⁰·M², the rest of the margin
+  // covering this sum's rounding): a superset of the same candidates, without the square root's
+  // latency before the second pass.
+  const double thr = best + 0x1p-35 * M * M;
   for (std::size_t k = 0; k < n; ++k)
     if (q[k] <= thr) {
       // dot(t − a, b − a) and dot(t − b, a − b) = |b − a|² − dot(t − a, b − a) against B: the
