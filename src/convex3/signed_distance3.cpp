@@ -129,6 +129,66 @@ struct LiftD {
   double operator()(double x) const { return x; }
 };
 
+// The first operations on input doubles, lift(a)·lift(b), lift(a) − lift(b) and lift(a)·x (mul, diff, mul_x), for
+// the filter's Fl and the double-double DD without the terms of a lifted double's zero error (and
+// lo) parts, which their operators compute (IEEE arithmetic cannot fold x·0): the value and the
+// bound e bit for bit — the dropped terms add +0 to a sum of non-negative terms, or ±0 to a
+// nonzero error term — DD's lo up to the sign of a zero. A zero's sign reaches no nonzero result
+// (x + ±0 = x, ±0·y = ±0, no division in these polynomials); non-finite stays non-finite in both.
+// The identity dumps (scripts/distance_identity.sha256, sigma_identity.sha256: hashed with the
+// lifted operators) keep their hashes on both paths. Other lifts: their operations.
+namespace plain {
+
+template <class L>
+Num<L> mul(L lift, double a, double b) {
+  if constexpr (std::is_same_v<L, LiftFl>) {
+    const double v = a * b;
+    return {v, std::abs(v) * exact::kUnit + exact::kTiny};
+  } else if constexpr (std::is_same_v<L, exact::LiftDD>) {
+    const double p = a * b;
+    exact::DD r;
+    exact::quick_two_sum(p, std::fma(a, b, -p), r.hi, r.lo);
+    const double ma = std::abs(a) * (1 + 0x1p-50), mb = std::abs(b) * (1 + 0x1p-50);
+    r.e = ma * mb * exact::kUnitDD + exact::kTiny;
+    return r;
+  } else {
+    return lift(a) * lift(b);
+  }
+}
+template <class L>
+Num<L> diff(L lift, double a, double b) {
+  if constexpr (std::is_same_v<L, LiftFl>) {
+    const double v = a - b;
+    return {v, std::abs(v) * exact::kUnit};
+  } else if constexpr (std::is_same_v<L, exact::LiftDD>) {
+    exact::DD r;
+    exact::two_sum(a, -b, r.hi, r.lo);  // the exact difference: DD's renormalisations keep it
+    r.e = (std::abs(a) + std::abs(b)) * exact::kUnitDD;
+    return r;
+  } else {
+    return lift(a) - lift(b);
+  }
+}
+template <class L>
+Num<L> mul_x(L lift, double a, const Num<L>& x) {
+  if constexpr (std::is_same_v<L, LiftFl>) {
+    const double v = a * x.v;
+    return {v, std::abs(a) * x.e + std::abs(v) * exact::kUnit + exact::kTiny};
+  } else if constexpr (std::is_same_v<L, exact::LiftDD>) {
+    const double p = a * x.hi;
+    const double err = std::fma(a, x.hi, -p) + a * x.lo;
+    exact::DD r;
+    exact::quick_two_sum(p, err, r.hi, r.lo);
+    const double ma = std::abs(a) * (1 + 0x1p-50), mb = std::abs(x.hi) * (1 + 0x1p-50);
+    r.e = ma * x.e + ma * mb * exact::kUnitDD + exact::kTiny;
+    return r;
+  } else {
+    return lift(a) * x;
+  }
+}
+
+}  // namespace plain
+
 struct PairId {
   int i = -1, j = -1;
   friend bool operator==(const PairId&, const PairId&) = default;
@@ -167,8 +227,8 @@ struct Ctx {
     const Vec3& q = Q.v[j];
     V3<Num<L>> r;
     for (int k = 0; k < 3; ++k)
-      r[k] = lift(rel.R(k, 0)) * lift(q[0]) + lift(rel.R(k, 1)) * lift(q[1]) + lift(rel.R(k, 2)) * lift(q[2]) +
-             (lift(rel.tq[k]) - lift(rel.tp[k]));
+      r[k] = plain::mul(lift, rel.R(k, 0), q[0]) + plain::mul(lift, rel.R(k, 1), q[1]) +
+             plain::mul(lift, rel.R(k, 2), q[2]) + plain::diff(lift, rel.tq[k], rel.tp[k]);
     if (RpT)
       for (int k = 0; k < 3; ++k)
         r[k] = r[k] + lift(lam) * (lift((*RpT)(k, 0)) * lift(od[0]) + lift((*RpT)(k, 1)) * lift(od[1]) +
@@ -199,11 +259,14 @@ struct Ctx {
   V3<Num<L>> dm(L lift, PairId x, PairId y) const {
     V3<Num<L>> r{lift(0.0), lift(0.0), lift(0.0)};
     if (x.i != y.i)
-      for (int k = 0; k < 3; ++k) r[k] = lift(P.v[x.i][k]) - lift(P.v[y.i][k]);
+      for (int k = 0; k < 3; ++k) r[k] = plain::diff(lift, P.v[x.i][k], P.v[y.i][k]);
     if (x.j != y.j) {
       const Vec3 &qa = Q.v[x.j], &qb = Q.v[y.j];
-      const Num<L> d0 = lift(qa[0]) - lift(qb[0]), d1 = lift(qa[1]) - lift(qb[1]), d2 = lift(qa[2]) - lift(qb[2]);
-      for (int k = 0; k < 3; ++k) r[k] = r[k] - (lift(rel.R(k, 0)) * d0 + lift(rel.R(k, 1)) * d1 + lift(rel.R(k, 2)) * d2);
+      const Num<L> d0 = plain::diff(lift, qa[0], qb[0]), d1 = plain::diff(lift, qa[1], qb[1]),
+                   d2 = plain::diff(lift, qa[2], qb[2]);
+      for (int k = 0; k < 3; ++k)
+        r[k] = r[k] - (plain::mul_x(lift, rel.R(k, 0), d0) + plain::mul_x(lift, rel.R(k, 1), d1) +
+                       plain::mul_x(lift, rel.R(k, 2), d2));
     }
     return project(lift, r);
   }
@@ -800,7 +863,8 @@ std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const V
   // for its own rounding plus an underflow term (exact::kTiny).
   V3<Fl> Wfl;
   for (int k = 0; k < 3; ++k)
-    Wfl[k] = F(rel.R(0, k)) * Ufl[0] + F(rel.R(1, k)) * Ufl[1] + F(rel.R(2, k)) * Ufl[2];
+    Wfl[k] = plain::mul_x(F, rel.R(0, k), Ufl[0]) + plain::mul_x(F, rel.R(1, k), Ufl[1]) +
+               plain::mul_x(F, rel.R(2, k), Ufl[2]);
   auto edge_sign = [margin](const V3<Fl>& w, double dx, double dy, double dz) {
     const double val = w[0].v * dx + w[1].v * dy + w[2].v * dz;
     const double S = std::abs(w[0].v * dx) + std::abs(w[1].v * dy) + std::abs(w[2].v * dz);
