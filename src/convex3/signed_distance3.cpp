@@ -808,22 +808,19 @@ std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const V
       break;
     }
   }
-  Reduced X;
-  X.size = n;
-  for (int k = 0; k < n; ++k) X.s[k].id = ids[k];
-  // (a) the pattern of S.
+  // (a) the pattern of S = ids[0..n).
   int sp[3], sq[3], np = 0, nq = 0;
-  for (int k = 0; k < X.size; ++k) {
-    if (std::find(sp, sp + np, X.s[k].id.i) == sp + np) sp[np++] = X.s[k].id.i;
-    if (std::find(sq, sq + nq, X.s[k].id.j) == sq + nq) sq[nq++] = X.s[k].id.j;
+  for (int k = 0; k < n; ++k) {
+    if (std::find(sp, sp + np, ids[k].i) == sp + np) sp[np++] = ids[k].i;
+    if (std::find(sq, sq + nq, ids[k].j) == sq + nq) sq[nq++] = ids[k].j;
   }
-  const bool ok_pattern = X.size == 3 ? (np == 3 && nq == 1) || (np == 1 && nq == 3) || (np == 2 && nq == 2)
-                                      : np + nq - 1 == X.size;
+  const bool ok_pattern =
+      n == 3 ? (np == 3 && nq == 1) || (np == 1 && nq == 3) || (np == 2 && nq == 2) : np + nq - 1 == n;
   if (!ok_pattern) return std::nullopt;
   // (b) with the members' filtered coordinates.
   Reduced R;
-  R.size = X.size;
-  for (int k = 0; k < X.size; ++k) R.s[k] = c.member(X.s[k].id);
+  R.size = n;
+  for (int k = 0; k < n; ++k) R.s[k] = c.member(ids[k]);
   const LiftFl F;
   const V3<Fl> a = R.s[0].fl;
   auto nonzero3 = [&](const V3<Fl>& x) { return fsign(x[0]) != 0 || fsign(x[1]) != 0 || fsign(x[2]) != 0; };
@@ -917,16 +914,13 @@ Distance3 signed_distance_body(const ConvexPolytope& Pp, const ConvexPolytope& Q
   const VertexAdjacency& aQ = vertex_adjacency(QD);
   const Ctx c{PD, QD, rel};
 
-  GjkResult g;
   std::optional<Reduced> fast;
   if (path.fast) fast = gjk_fast(c, aP, aQ, path.margin);
   if (fast_used) *fast_used = fast.has_value();
-  if (fast)
-    g.X = *fast;
-  else
-    g = gjk_loop(c, aP, aQ);
-  Reduced X = g.X;
-  const bool contact = g.contact;
+  GjkResult g;
+  if (!fast) g = gjk_loop(c, aP, aQ);
+  Reduced X = fast ? *fast : g.X;
+  const bool contact = !fast && g.contact;
   // Apart: S in a canonical order (by (i, j)), so that every path ending on the same set S gives
   // the same bits; V: the simplex the value and normal are computed on — S itself, except on a
   // parallelogram face of M (two P and two Q vertices: an edge–edge closest pair) where any
