@@ -954,11 +954,6 @@ Distance3 signed_distance_body(const ConvexPolytope& Pp, const ConvexPolytope& Q
       });
     }
   }
-  Dir U{};
-  auto set_dir = [&]() {
-    U = Dir{&c, X.size, {X.s[0], X.size > 1 ? X.s[1] : Member{}, X.size > 2 ? X.s[2] : Member{}}, X.tri_sign};
-  };
-  set_dir();
   Distance3 r;
   // Barycentric weights (rounded) of the closest point (or of 0) on S.
   std::array<double, 4> lam{1, 0, 0, 0};
@@ -1020,7 +1015,6 @@ Distance3 signed_distance_body(const ConvexPolytope& Pp, const ConvexPolytope& Q
     r.witness_p = Rp * wp + tp_world;
     r.witness_q = Rp * wq + tp_world;
     if (X.size == 4) X.size = 3;  // 0 on a face of the tetrahedron: report its first three pairs
-    set_dir();
   } else {
     // Distance |w_S| from accurately evaluated polynomials, one square root (on V: S, or the
     // canonical triangle of an edge–edge parallelogram).
@@ -1118,7 +1112,7 @@ Distance3 signed_distance_body(const ConvexPolytope& Pp, const ConvexPolytope& Q
         dist = std::abs(accurate_dd([&](auto L) { return dot(n(L), c.pt(L, a)); })) / acc3(n).stableNorm();
       }
       // normal = −U/|U|, U evaluated accurately per component.
-      U = Dir{&c, V.size, {V.s[0], V.size > 1 ? V.s[1] : Member{}, V.size > 2 ? V.s[2] : Member{}}, V.tri_sign};
+      const Dir U{&c, V.size, {V.s[0], V.size > 1 ? V.s[1] : Member{}, V.size > 2 ? V.s[2] : Member{}}, V.tri_sign};
       const auto ud = U(exact::LiftDD{});
       for (int k = 0; k < 3; ++k)
         u[k] = exact::dd_finite(ud[k]) && exact::safe_bound(ud[k].e) <= std::abs(ud[k].hi) * 0x1p-54
