@@ -129,14 +129,15 @@ struct LiftD {
   double operator()(double x) const { return x; }
 };
 
-// The first operations on input doubles, lift(a)·lift(b), lift(a) − lift(b) and lift(a)·x (mul, diff, mul_x), for
-// the filter's Fl and the double-double DD without the terms of a lifted double's zero error (and
-// lo) parts, which their operators compute (IEEE arithmetic cannot fold x·0): the value and the
-// bound e bit for bit — the dropped terms add +0 to a sum of non-negative terms, or ±0 to a
-// nonzero error term — DD's lo up to the sign of a zero. A zero's sign reaches no nonzero result
-// (x + ±0 = x, ±0·y = ±0, no division in these polynomials); non-finite stays non-finite in both.
-// The identity dumps (scripts/distance_identity.sha256, sigma_identity.sha256: hashed with the
-// lifted operators) keep their hashes on both paths. Other lifts: their operations.
+// The first operations on input doubles — lift(a)·lift(b), lift(a) − lift(b), lift(a)·x (mul,
+// diff, mul_x) — for the filter's Fl and the double-double DD (the value, and exact_sign's DD
+// tier) without the terms of a lifted double's zero error and lo parts, which their operators
+// compute (IEEE arithmetic cannot fold x·0): the value and the bound e bit for bit — the dropped
+// terms add +0 to a sum of non-negative terms, or ±0 to a nonzero error term — DD's lo up to the
+// sign of a zero. A zero's sign reaches no nonzero result (x + ±0 = x, ±0·y = ±0, no division in
+// these polynomials); non-finite stays non-finite in both. The identity dumps
+// (scripts/distance_identity.sha256, sigma_identity.sha256: hashed with the lifted operators)
+// keep their hashes on both paths. Other lifts: their own operations.
 namespace plain {
 
 template <class L>
