@@ -11,7 +11,9 @@
 #include "convex3/minkowski_facets.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace pendepth {
@@ -33,13 +35,45 @@ Eigen::Matrix3d Pose3::matrix() const {
   // a square root and four divisions.
   auto plus_zero = [](double x) { return x == 0 && !std::signbit(x); };
   if (plus_zero(c[0]) && plus_zero(c[1]) && plus_zero(c[2])) return Eigen::Matrix3d::Identity();
-  const int e = std::ilogb(big);
+  // ldexp(x, −e) is one correctly rounded product x·2^−e whenever 2^−e is a normal double (the
+  // exponent of a normal `big` read from its bits): the same bits without two libm calls per
+  // coefficient; ilogb / ldexp for a subnormal `big`.
+  const std::uint64_t bits = std::bit_cast<std::uint64_t>(big);
+  const int biased = static_cast<int>(bits >> 52 & 0x7ff);
   Eigen::Quaterniond q;
-  for (int k = 0; k < 4; ++k) q.coeffs()[k] = std::ldexp(c[k], -e);
+  if (biased > 1 && biased < 2046) {  // e = biased − 1023 ∈ [−1021, 1022]: 2^−e normal
+    const double s = std::bit_cast<double>(static_cast<std::uint64_t>(2046 - biased) << 52);  // 2^(1023 − biased)
+    for (int k = 0; k < 4; ++k) q.coeffs()[k] = c[k] * s;
+  } else {
+    const int e = std::ilogb(big);
+    for (int k = 0; k < 4; ++k) q.coeffs()[k] = std::ldexp(c[k], -e);
+  }
   return q.normalized().toRotationMatrix();
 }
 
 namespace convex3 {
+
+namespace {
+
+// Whether every off-diagonal zero of the identity matrix M is +0 (a −0 would make +0·x above
+// a −0·x).
+bool is_plus_zero_identity(const Eigen::Matrix3d& M) {
+  for (int i = 0; i < 3; ++i)
+    for (int k = 0; k < 3; ++k)
+      if (i != k && std::signbit(M(k, i))) return false;
+  return true;
+}
+
+// Iᵀ·x rounded as the product: x_i if x_i ≠ 0, else −0 iff x_i and both other terms are −0.
+Vec3 identity_times(const Vec3& x) {
+  Vec3 r;
+  for (int i = 0; i < 3; ++i)
+    r[i] = x[i] != 0 ? x[i]
+                     : std::signbit(x[0]) && std::signbit(x[1]) && std::signbit(x[2]) ? -0.0 : 0.0;
+  return r;
+}
+
+}  // namespace
 
 RelativePose relative_pose(const Pose3& pp, const Pose3& pq, Eigen::Matrix3d* Rp_out) {
   if (!pp.translation.allFinite()) throw InvalidInput("pose of P: non-finite translation");
@@ -47,6 +81,16 @@ RelativePose relative_pose(const Pose3& pp, const Pose3& pq, Eigen::Matrix3d* Rp
   const Eigen::Matrix3d Rp = pp.matrix(), Rq = pq.matrix();
   if (Rp_out) *Rp_out = Rp;
   RelativePose r;
+  if (Rp == Eigen::Matrix3d::Identity() && is_plus_zero_identity(Rp)) {
+    // Rp = I exactly (P unrotated: most poses of a fixed P): each coefficient of Iᵀ·x is the
+    // sum of x_i·1 = x_i and two terms +0·x_k = ±0 (the sign of x_k; everything finite), so in
+    // any order of summation it is x_i when x_i ≠ 0 and else a zero, −0 only when all three
+    // terms are: the products' bits without the 45 products.
+    for (int j = 0; j < 3; ++j) r.R.col(j) = identity_times(Rq.col(j));
+    r.tq = identity_times(pq.translation);
+    r.tp = identity_times(pp.translation);
+    return r;
+  }
   r.R = Rp.transpose() * Rq;
   r.tq = Rp.transpose() * pq.translation;
   r.tp = Rp.transpose() * pp.translation;

@@ -129,6 +129,67 @@ struct LiftD {
   double operator()(double x) const { return x; }
 };
 
+// The first operations on input doubles — lift(a)·lift(b), lift(a) − lift(b), lift(a)·x (mul,
+// diff, mul_x) — for the filter's Fl and the double-double DD (the value, and exact_sign's DD
+// tier) without the terms of a lifted double's zero error and lo parts, which their operators
+// compute (IEEE arithmetic cannot fold x·0): the value and the bound e bit for bit — the dropped
+// terms add +0 to a sum of non-negative terms, or ±0 to a nonzero error term — DD's lo up to the
+// sign of a zero. A zero's sign reaches no nonzero result (x + ±0 = x, ±0·y = ±0, no division in
+// these polynomials); non-finite stays non-finite in both. The identity dumps
+// (scripts/distance_identity.sha256, sigma_identity.sha256: hashed with the lifted operators)
+// keep their hashes on both paths. Other lifts: their own operations.
+namespace plain {
+
+template <class L>
+Num<L> mul(L lift, double a, double b) {
+  if constexpr (std::is_same_v<L, LiftFl>) {
+    const double v = a * b;
+    return {v, std::abs(v) * exact::kUnit + exact::kTiny};
+  } else if constexpr (std::is_same_v<L, exact::LiftDD>) {
+    const double p = a * b;
+    exact::DD r;
+    exact::quick_two_sum(p, std::fma(a, b, -p), r.hi, r.lo);
+    const double ma = std::abs(a) * (1 + 0x1p-50), mb = std::abs(b) * (1 + 0x1p-50);
+    r.e = ma * mb * exact::kUnitDD + exact::kTiny;
+    return r;
+  } else {
+    return lift(a) * lift(b);
+  }
+}
+template <class L>
+Num<L> diff(L lift, double a, double b) {
+  if constexpr (std::is_same_v<L, LiftFl>) {
+    const double v = a - b;
+    return {v, std::abs(v) * exact::kUnit};
+  } else if constexpr (std::is_same_v<L, exact::LiftDD>) {
+    exact::DD r;
+    exact::two_sum(a, -b, r.hi, r.lo);  // the exact difference: DD's renormalisations keep it
+    r.e = (std::abs(a) + std::abs(b)) * exact::kUnitDD;
+    return r;
+  } else {
+    return lift(a) - lift(b);
+  }
+}
+template <class L>
+Num<L> mul_x(L lift, double a, const Num<L>& x) {
+  if constexpr (std::is_same_v<L, LiftFl>) {
+    const double v = a * x.v;
+    return {v, std::abs(a) * x.e + std::abs(v) * exact::kUnit + exact::kTiny};
+  } else if constexpr (std::is_same_v<L, exact::LiftDD>) {
+    const double p = a * x.hi;
+    const double err = std::fma(a, x.hi, -p) + a * x.lo;
+    exact::DD r;
+    exact::quick_two_sum(p, err, r.hi, r.lo);
+    const double ma = std::abs(a) * (1 + 0x1p-50), mb = std::abs(x.hi) * (1 + 0x1p-50);
+    r.e = ma * x.e + ma * mb * exact::kUnitDD + exact::kTiny;
+    return r;
+  } else {
+    return lift(a) * x;
+  }
+}
+
+}  // namespace plain
+
 struct PairId {
   int i = -1, j = -1;
   friend bool operator==(const PairId&, const PairId&) = default;
@@ -167,8 +228,8 @@ struct Ctx {
     const Vec3& q = Q.v[j];
     V3<Num<L>> r;
     for (int k = 0; k < 3; ++k)
-      r[k] = lift(rel.R(k, 0)) * lift(q[0]) + lift(rel.R(k, 1)) * lift(q[1]) + lift(rel.R(k, 2)) * lift(q[2]) +
-             (lift(rel.tq[k]) - lift(rel.tp[k]));
+      r[k] = plain::mul(lift, rel.R(k, 0), q[0]) + plain::mul(lift, rel.R(k, 1), q[1]) +
+             plain::mul(lift, rel.R(k, 2), q[2]) + plain::diff(lift, rel.tq[k], rel.tp[k]);
     if (RpT)
       for (int k = 0; k < 3; ++k)
         r[k] = r[k] + lift(lam) * (lift((*RpT)(k, 0)) * lift(od[0]) + lift((*RpT)(k, 1)) * lift(od[1]) +
@@ -199,11 +260,14 @@ struct Ctx {
   V3<Num<L>> dm(L lift, PairId x, PairId y) const {
     V3<Num<L>> r{lift(0.0), lift(0.0), lift(0.0)};
     if (x.i != y.i)
-      for (int k = 0; k < 3; ++k) r[k] = lift(P.v[x.i][k]) - lift(P.v[y.i][k]);
+      for (int k = 0; k < 3; ++k) r[k] = plain::diff(lift, P.v[x.i][k], P.v[y.i][k]);
     if (x.j != y.j) {
       const Vec3 &qa = Q.v[x.j], &qb = Q.v[y.j];
-      const Num<L> d0 = lift(qa[0]) - lift(qb[0]), d1 = lift(qa[1]) - lift(qb[1]), d2 = lift(qa[2]) - lift(qb[2]);
-      for (int k = 0; k < 3; ++k) r[k] = r[k] - (lift(rel.R(k, 0)) * d0 + lift(rel.R(k, 1)) * d1 + lift(rel.R(k, 2)) * d2);
+      const Num<L> d0 = plain::diff(lift, qa[0], qb[0]), d1 = plain::diff(lift, qa[1], qb[1]),
+                   d2 = plain::diff(lift, qa[2], qb[2]);
+      for (int k = 0; k < 3; ++k)
+        r[k] = r[k] - (plain::mul_x(lift, rel.R(k, 0), d0) + plain::mul_x(lift, rel.R(k, 1), d1) +
+                       plain::mul_x(lift, rel.R(k, 2), d2));
     }
     return project(lift, r);
   }
@@ -745,22 +809,19 @@ std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const V
       break;
     }
   }
-  Reduced X;
-  X.size = n;
-  for (int k = 0; k < n; ++k) X.s[k].id = ids[k];
-  // (a) the pattern of S.
+  // (a) the pattern of S = ids[0..n).
   int sp[3], sq[3], np = 0, nq = 0;
-  for (int k = 0; k < X.size; ++k) {
-    if (std::find(sp, sp + np, X.s[k].id.i) == sp + np) sp[np++] = X.s[k].id.i;
-    if (std::find(sq, sq + nq, X.s[k].id.j) == sq + nq) sq[nq++] = X.s[k].id.j;
+  for (int k = 0; k < n; ++k) {
+    if (std::find(sp, sp + np, ids[k].i) == sp + np) sp[np++] = ids[k].i;
+    if (std::find(sq, sq + nq, ids[k].j) == sq + nq) sq[nq++] = ids[k].j;
   }
-  const bool ok_pattern = X.size == 3 ? (np == 3 && nq == 1) || (np == 1 && nq == 3) || (np == 2 && nq == 2)
-                                      : np + nq - 1 == X.size;
+  const bool ok_pattern =
+      n == 3 ? (np == 3 && nq == 1) || (np == 1 && nq == 3) || (np == 2 && nq == 2) : np + nq - 1 == n;
   if (!ok_pattern) return std::nullopt;
   // (b) with the members' filtered coordinates.
   Reduced R;
-  R.size = X.size;
-  for (int k = 0; k < X.size; ++k) R.s[k] = c.member(X.s[k].id);
+  R.size = n;
+  for (int k = 0; k < n; ++k) R.s[k] = c.member(ids[k]);
   const LiftFl F;
   const V3<Fl> a = R.s[0].fl;
   auto nonzero3 = [&](const V3<Fl>& x) { return fsign(x[0]) != 0 || fsign(x[1]) != 0 || fsign(x[2]) != 0; };
@@ -800,7 +861,8 @@ std::optional<Reduced> gjk_fast(const Ctx& c, const VertexAdjacency& aP, const V
   // for its own rounding plus an underflow term (exact::kTiny).
   V3<Fl> Wfl;
   for (int k = 0; k < 3; ++k)
-    Wfl[k] = F(rel.R(0, k)) * Ufl[0] + F(rel.R(1, k)) * Ufl[1] + F(rel.R(2, k)) * Ufl[2];
+    Wfl[k] = plain::mul_x(F, rel.R(0, k), Ufl[0]) + plain::mul_x(F, rel.R(1, k), Ufl[1]) +
+               plain::mul_x(F, rel.R(2, k), Ufl[2]);
   auto edge_sign = [margin](const V3<Fl>& w, double dx, double dy, double dz) {
     const double val = w[0].v * dx + w[1].v * dy + w[2].v * dz;
     const double S = std::abs(w[0].v * dx) + std::abs(w[1].v * dy) + std::abs(w[2].v * dz);
@@ -853,16 +915,13 @@ Distance3 signed_distance_body(const ConvexPolytope& Pp, const ConvexPolytope& Q
   const VertexAdjacency& aQ = vertex_adjacency(QD);
   const Ctx c{PD, QD, rel};
 
-  GjkResult g;
   std::optional<Reduced> fast;
   if (path.fast) fast = gjk_fast(c, aP, aQ, path.margin);
   if (fast_used) *fast_used = fast.has_value();
-  if (fast)
-    g.X = *fast;
-  else
-    g = gjk_loop(c, aP, aQ);
-  Reduced X = g.X;
-  const bool contact = g.contact;
+  GjkResult g;
+  if (!fast) g = gjk_loop(c, aP, aQ);
+  Reduced X = fast ? *fast : g.X;
+  const bool contact = !fast && g.contact;
   // Apart: S in a canonical order (by (i, j)), so that every path ending on the same set S gives
   // the same bits; V: the simplex the value and normal are computed on — S itself, except on a
   // parallelogram face of M (two P and two Q vertices: an edge–edge closest pair) where any
@@ -896,11 +955,6 @@ Distance3 signed_distance_body(const ConvexPolytope& Pp, const ConvexPolytope& Q
       });
     }
   }
-  Dir U{};
-  auto set_dir = [&]() {
-    U = Dir{&c, X.size, {X.s[0], X.size > 1 ? X.s[1] : Member{}, X.size > 2 ? X.s[2] : Member{}}, X.tri_sign};
-  };
-  set_dir();
   Distance3 r;
   // Barycentric weights (rounded) of the closest point (or of 0) on S.
   std::array<double, 4> lam{1, 0, 0, 0};
@@ -962,7 +1016,6 @@ Distance3 signed_distance_body(const ConvexPolytope& Pp, const ConvexPolytope& Q
     r.witness_p = Rp * wp + tp_world;
     r.witness_q = Rp * wq + tp_world;
     if (X.size == 4) X.size = 3;  // 0 on a face of the tetrahedron: report its first three pairs
-    set_dir();
   } else {
     // Distance |w_S| from accurately evaluated polynomials, one square root (on V: S, or the
     // canonical triangle of an edge–edge parallelogram).
@@ -1060,7 +1113,7 @@ Distance3 signed_distance_body(const ConvexPolytope& Pp, const ConvexPolytope& Q
         dist = std::abs(accurate_dd([&](auto L) { return dot(n(L), c.pt(L, a)); })) / acc3(n).stableNorm();
       }
       // normal = −U/|U|, U evaluated accurately per component.
-      U = Dir{&c, V.size, {V.s[0], V.size > 1 ? V.s[1] : Member{}, V.size > 2 ? V.s[2] : Member{}}, V.tri_sign};
+      const Dir U{&c, V.size, {V.s[0], V.size > 1 ? V.s[1] : Member{}, V.size > 2 ? V.s[2] : Member{}}, V.tri_sign};
       const auto ud = U(exact::LiftDD{});
       for (int k = 0; k < 3; ++k)
         u[k] = exact::dd_finite(ud[k]) && exact::safe_bound(ud[k].e) <= std::abs(ud[k].hi) * 0x1p-54
