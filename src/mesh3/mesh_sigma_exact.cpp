@@ -156,6 +156,7 @@ struct Ctx {
   bool filt = true;        // the interval tier (false: SigmaExactUnfiltered, every decision exact)
   bool planted = false;    // tests: the planted bug in the filtered prunes
   std::vector<char> on_f;  // planes equal to the current plane(f), either side (exact)
+  std::vector<std::size_t> cls;  // filtered tier: planes[p]'s class of equal planes (plane_classes)
   mutable std::vector<std::optional<ExactPlane>> exact;  // planes[p]'s exact numbers, on demand
 };
 
@@ -289,6 +290,30 @@ bool same_plane_any(const Ctx& c, std::size_t pa, std::size_t pb) {
   const ExactPlane &ea = exact_plane(c, pa), &eb = exact_plane(c, pb);
   if (!is_zero(cross(ea.n, eb.n))) return false;
   return ea.c * dot(ea.n, eb.n) == eb.c * dot(ea.n, ea.n);
+}
+
+// Classes of equal planes across sums (filtered tier): cls[p] = the first plane, in order of
+// distance from 0, that is the same plane as p on either side (same_plane_any: decided exactly,
+// the interval filter first). The same geometric plane recurs in many sums (a face of P_i with
+// the same extreme vertex of several pieces Q_j sharing it, seams of neighbouring sums), and a
+// line plane(f) ∩ plane(g) depends only on g's class: the main loop runs it once per facet.
+// Candidates are the representatives within the distance margin of p (distances_differ: equal
+// planes have equal distances up to a few ulps), so the sweep is O(P·w) filter tests for P planes
+// and w representatives at one distance (a symmetric mesh's planes at equal distances), one exact
+// test per plane equal to an earlier one. Missing an equality would only cost repeated work.
+// `order`: every plane, by increasing distance.
+void plane_classes(Ctx& c, const std::vector<std::size_t>& order) {
+  c.cls.assign(c.planes.size(), 0);
+  std::vector<std::size_t> reps;  // representatives, in order of distance
+  std::size_t start = 0;          // reps[start, end) are within the margin of the current plane
+  for (std::size_t p : order) {
+    while (start < reps.size() && distances_differ(c.planes[reps[start]], c.planes[p])) ++start;
+    std::size_t r = p;
+    for (std::size_t k = start; k < reps.size() && r == p; ++k)
+      if (same_plane_any(c, reps[k], p)) r = reps[k];
+    c.cls[p] = r;
+    if (r == p) reps.push_back(p);
+  }
 }
 
 // x in the closed S (all planes), skipping plane `skip` and the planes equal to plane(f) (x is
@@ -697,6 +722,12 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
   std::size_t lines = 0;
   std::vector<std::pair<I, I>> ivs_i;  // line_no_offer's scratch
   std::vector<IV3> face;               // face_inside_one_sum's scratch
+  // Filtered tier: the class of g whose line plane(f) ∩ plane(g) was run for the current facet
+  // (line_done[class] = fi): the same line from another plane of the class offers the same points
+  // (x0 + λu is the same point set; planes holding the line give the same empty or unconstrained
+  // intervals as g, exactly), and the best only decreases, so it is not run again.
+  std::vector<std::size_t> line_done;
+  if (c.filt) plane_classes(c, order), line_done.assign(c.planes.size(), SIZE_MAX);
   for (std::size_t fi : order) {
     const Plane& f = c.planes[fi];
     if (!near(f.dist)) break;
@@ -747,10 +778,11 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
         if (gi == fi || !near(g.dist)) continue;
         const double bound2 = best.d2 ? to_interval(*best.d2).second : reach * reach * (1 + 0x1p-40);
         if (c.filt) {
+          if (line_done[c.cls[gi]] == fi) continue;  // this line was run for f
           const LineI L = interval_line(f, g, fi, gi);
-          if (line_far(c, L, sk, sl, bound2) ||
-              line_no_offer(c, L, sk, gi, cover, best, ivs_i))
-            continue;
+          if (line_far(c, L, sk, sl, bound2)) continue;
+          line_done[c.cls[gi]] = fi;
+          if (line_no_offer(c, L, sk, gi, cover, best, ivs_i)) continue;
         }
         const ExactPlane& ge = exact_plane(c, gi);
         const V3 u = cross(fe.n, ge.n);
