@@ -42,6 +42,11 @@
 // candidate certainly covered or certainly beyond the best), signs of n·u near 0 (planes nearly
 // parallel to the line: rounding in symmetric meshes) taken exactly, a plane equal to g's
 // (seams) by the exact plane test; the exact line stage runs only when that is undecided.
+// Filtered tier, lines once per class: planes equal across sums (the same geometric plane, either
+// side, decided exactly) form classes (plane_classes), and for a facet f each line plane(f) ∩
+// plane(g) is run once per class of g — the same line offers the same points. The interval
+// products of the filters run as Interval_nt<false> under one rounding-mode guard (the same
+// enclosures, without Interval_nt<true>'s mode switch at every operation).
 // Pruning by the certified upper bound U (today's least σ_d): no point farther than reach
 // (U widened by 2⁻³⁰) is ever offered (Best::beyond: it cannot be the answer); only sums whose
 // box meets B(0, U) can matter, only facets whose plane lies within the running best,
@@ -106,6 +111,20 @@ template <class T>
 T dot(const Vec<T>& a, const Vec<T>& b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
+// The interval products of the filters under one rounding-mode guard: Interval_nt<false>
+// arithmetic with the FPU rounding upward gives the same enclosures, bit for bit, as
+// Interval_nt<true>, which switches the rounding mode twice at every operation (a dot product:
+// ten switches; half of the torus pair's profile, docs/benchmarks.md "Exact mesh σ: plane
+// classes, one rounding guard").
+using IF = CGAL::Interval_nt<false>;
+IF fast(const I& v) { return IF(v.inf(), v.sup()); }
+I safe(const IF& v) { return I(v.inf(), v.sup()); }
+IF dotf(const IV3& a, const IV3& b) { return fast(a.x) * fast(b.x) + fast(a.y) * fast(b.y) + fast(a.z) * fast(b.z); }
+template <>
+I dot<I>(const IV3& a, const IV3& b) {
+  CGAL::Protect_FPU_rounding<true> up;
+  return safe(dotf(a, b));
+}
 template <class T>
 Vec<T> cross(const Vec<T>& a, const Vec<T>& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
@@ -140,6 +159,12 @@ struct ExactPlane {
   V3 n;
   FT c;
 };
+
+// a = n·u and b = c − n·x0 of the plane m on the line x0 + λu: the constraint a·λ <= b, in
+// Interval_nt<false> — the caller holds the rounding guard (upward).
+std::pair<IF, IF> constraint_on_line(const Plane& m, const IV3& x0, const IV3& u) {
+  return {dotf(m.ni, u), fast(m.ci) - dotf(m.ni, x0)};
+}
 
 struct Sum {
   std::size_t i = 0, j = 0;
@@ -352,9 +377,9 @@ I comp(const IV3& v, int a) { return a == 0 ? v.x : a == 1 ? v.y : v.z; }
 // part is certainly empty.
 bool clip_planes(const Ctx& c, std::size_t first, std::size_t count, const IV3& x0, const IV3& u, double& lo,
                  double& hi) {
+  CGAL::Protect_FPU_rounding<true> up;  // IF arithmetic below
   for (std::size_t p = first; p < first + count; ++p) {
-    const Plane& m = c.planes[p];
-    const I a = dot(m.ni, u), b = m.ci - dot(m.ni, x0);
+    const auto [a, b] = constraint_on_line(c.planes[p], x0, u);
     if (a.inf() > 0) hi = std::min(hi, (b / a).sup());
     else if (a.sup() < 0) lo = std::max(lo, (b / a).inf());
     if (lo > hi) return false;
@@ -428,9 +453,9 @@ bool plane_misses_box(const Plane& f, const Box3& b) {
 // disjoint from (a_inf, b_sup) ⊇ the segment [a, b].
 bool open_misses(const Ctx& c, const Sum& s, const IV3& x0, const IV3& u, double a_inf, double b_sup) {
   double lo = -INFINITY, hi = INFINITY;  // ⊇ the open interval
+  CGAL::Protect_FPU_rounding<true> up;  // IF arithmetic below
   for (std::size_t p = s.first; p < s.first + s.count; ++p) {
-    const Plane& m = c.planes[p];
-    const I a = dot(m.ni, u), b = m.ci - dot(m.ni, x0);
+    const auto [a, b] = constraint_on_line(c.planes[p], x0, u);
     if (a.inf() > 0) hi = std::min(hi, (b / a).sup());
     else if (a.sup() < 0) lo = std::max(lo, (b / a).inf());
     else if (a.inf() == 0 && a.sup() == 0 && b.sup() <= 0) return true;  // n·u = 0 exactly, n·x0 >= c
@@ -487,8 +512,12 @@ Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I&
       if (strict) return Span::Empty;
       continue;
     }
-    const Plane& pl = c.planes[p];
-    const I a = dot(pl.ni, L.u), b = pl.ci - dot(pl.ni, L.x0);
+    I a, b;
+    {
+      CGAL::Protect_FPU_rounding<true> up;
+      const auto [af, bf] = constraint_on_line(c.planes[p], L.x0, L.u);
+      a = safe(af), b = safe(bf);
+    }
     // n·u near 0 is frequent (n parallel or nearly parallel to f's or g's normal: the same
     // piece face in several sums, the faces of a symmetric mesh parallel up to rounding): its
     // sign is taken from the exact numbers rather than giving up.
@@ -671,7 +700,7 @@ Feature3 feat(FeatureKind3 k, int i) { return Feature3{k, i}; }
 std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, double upper,
                                     std::size_t max_facets, bool skip_cover) {
   if (!(upper >= 0) || !std::isfinite(upper)) return std::nullopt;
-  Ctx c{m, place(m, pose_p, pose_q), {}, {}, SigmaExactUnfiltered::depth == 0, SigmaExactUnfiltered::planted, {}, {}};
+  Ctx c{m, place(m, pose_p, pose_q), {}, {}, SigmaExactUnfiltered::depth == 0, SigmaExactUnfiltered::planted, {}, {}, {}};
   const convex3::RelativePose rel{c.pl.R, c.pl.tq, c.pl.tp};
   const double reach = upper * (1 + 0x1p-30) + 0x1p-1000;
   // The sums in range and their planes.
