@@ -57,10 +57,11 @@
 // Cost: for F facets in range and K sums, O(F) projections of O(K·f̄) tests each, and up to
 // O(F²) lines of O(K·f̄ + K²) each in the worst case (f̄ = facets per sum); in practice the
 // projections settle most facets. Measured (docs/benchmarks.md "Exact mesh σ: interval planes,
-// one-sum facet cover" and "Exact mesh σ: a plane number type"): the tori and the tripod are
-// still beyond reach — their facets near 0 are covered by unions of several sums and nearly
-// coplanar planes (rounded symmetric meshes) send lines to the exact stage: ~7 000 lines tried
-// and several hundred exact lines per facet, each exact line ~10 ms over ~300 covering sums.
+// one-sum facet cover", "… a plane number type", "… plane classes, one rounding guard"): the
+// tripod pair takes ~1 200 facets and half a minute, the tori are still beyond reach — their
+// facets near 0 are covered by unions of several sums and nearly coplanar planes (rounded
+// symmetric meshes) send lines to the exact stage: ~7 000 lines tried and a few hundred exact
+// lines per facet, each over ~300 covering sums.
 #include "mesh3/mesh_sigma_exact.hpp"
 
 #include "convex3/minkowski_facets.hpp"
