@@ -42,6 +42,11 @@
 // candidate certainly covered or certainly beyond the best), signs of n·u near 0 (planes nearly
 // parallel to the line: rounding in symmetric meshes) taken exactly, a plane equal to g's
 // (seams) by the exact plane test; the exact line stage runs only when that is undecided.
+// Filtered tier, lines once per class: planes equal across sums (the same geometric plane, either
+// side, decided exactly) form classes (plane_classes), and for a facet f each line plane(f) ∩
+// plane(g) is run once per class of g — the same line offers the same points. The interval
+// products of the filters run as Interval_nt<false> under one rounding-mode guard (the same
+// enclosures, without Interval_nt<true>'s mode switch at every operation).
 // Pruning by the certified upper bound U (today's least σ_d): no point farther than reach
 // (U widened by 2⁻³⁰) is ever offered (Best::beyond: it cannot be the answer); only sums whose
 // box meets B(0, U) can matter, only facets whose plane lies within the running best,
@@ -52,10 +57,11 @@
 // Cost: for F facets in range and K sums, O(F) projections of O(K·f̄) tests each, and up to
 // O(F²) lines of O(K·f̄ + K²) each in the worst case (f̄ = facets per sum); in practice the
 // projections settle most facets. Measured (docs/benchmarks.md "Exact mesh σ: interval planes,
-// one-sum facet cover" and "Exact mesh σ: a plane number type"): the tori and the tripod are
-// still beyond reach — their facets near 0 are covered by unions of several sums and nearly
-// coplanar planes (rounded symmetric meshes) send lines to the exact stage: ~7 000 lines tried
-// and several hundred exact lines per facet, each exact line ~10 ms over ~300 covering sums.
+// one-sum facet cover", "… a plane number type", "… plane classes, one rounding guard"): the
+// tripod pair takes ~1 200 facets and half a minute, the tori are still beyond reach — their
+// facets near 0 are covered by unions of several sums and nearly coplanar planes (rounded
+// symmetric meshes) send lines to the exact stage: ~7 000 lines tried and a few hundred exact
+// lines per facet, each over ~300 covering sums.
 #include "mesh3/mesh_sigma_exact.hpp"
 
 #include "convex3/minkowski_facets.hpp"
@@ -106,6 +112,20 @@ template <class T>
 T dot(const Vec<T>& a, const Vec<T>& b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
+// The interval products of the filters under one rounding-mode guard: Interval_nt<false>
+// arithmetic with the FPU rounding upward gives the same enclosures, bit for bit, as
+// Interval_nt<true>, which switches the rounding mode twice at every operation (a dot product:
+// ten switches; half of the torus pair's profile, docs/benchmarks.md "Exact mesh σ: plane
+// classes, one rounding guard").
+using IF = CGAL::Interval_nt<false>;
+IF fast(const I& v) { return IF(v.inf(), v.sup()); }
+I safe(const IF& v) { return I(v.inf(), v.sup()); }
+IF dotf(const IV3& a, const IV3& b) { return fast(a.x) * fast(b.x) + fast(a.y) * fast(b.y) + fast(a.z) * fast(b.z); }
+template <>
+I dot<I>(const IV3& a, const IV3& b) {
+  CGAL::Protect_FPU_rounding<true> up;
+  return safe(dotf(a, b));
+}
 template <class T>
 Vec<T> cross(const Vec<T>& a, const Vec<T>& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
@@ -141,6 +161,12 @@ struct ExactPlane {
   FT c;
 };
 
+// a = n·u and b = c − n·x0 of the plane m on the line x0 + λu: the constraint a·λ <= b, in
+// Interval_nt<false> — the caller holds the rounding guard (upward).
+std::pair<IF, IF> constraint_on_line(const Plane& m, const IV3& x0, const IV3& u) {
+  return {dotf(m.ni, u), fast(m.ci) - dotf(m.ni, x0)};
+}
+
 struct Sum {
   std::size_t i = 0, j = 0;
   std::size_t first = 0, count = 0;  // planes[first, first + count)
@@ -156,6 +182,7 @@ struct Ctx {
   bool filt = true;        // the interval tier (false: SigmaExactUnfiltered, every decision exact)
   bool planted = false;    // tests: the planted bug in the filtered prunes
   std::vector<char> on_f;  // planes equal to the current plane(f), either side (exact)
+  std::vector<std::size_t> cls;  // filtered tier: planes[p]'s class of equal planes (plane_classes)
   mutable std::vector<std::optional<ExactPlane>> exact;  // planes[p]'s exact numbers, on demand
 };
 
@@ -291,6 +318,30 @@ bool same_plane_any(const Ctx& c, std::size_t pa, std::size_t pb) {
   return ea.c * dot(ea.n, eb.n) == eb.c * dot(ea.n, ea.n);
 }
 
+// Classes of equal planes across sums (filtered tier): cls[p] = the first plane, in order of
+// distance from 0, that is the same plane as p on either side (same_plane_any: decided exactly,
+// the interval filter first). The same geometric plane recurs in many sums (a face of P_i with
+// the same extreme vertex of several pieces Q_j sharing it, seams of neighbouring sums), and a
+// line plane(f) ∩ plane(g) depends only on g's class: the main loop runs it once per facet.
+// Candidates are the representatives within the distance margin of p (distances_differ: equal
+// planes have equal distances up to a few ulps), so the sweep is O(P·w) filter tests for P planes
+// and w representatives at one distance (a symmetric mesh's planes at equal distances), one exact
+// test per plane equal to an earlier one. Missing an equality would only cost repeated work.
+// `order`: every plane, by increasing distance.
+void plane_classes(Ctx& c, const std::vector<std::size_t>& order) {
+  c.cls.assign(c.planes.size(), 0);
+  std::vector<std::size_t> reps;  // representatives, in order of distance
+  std::size_t start = 0;          // reps[start, end) are within the margin of the current plane
+  for (std::size_t p : order) {
+    while (start < reps.size() && distances_differ(c.planes[reps[start]], c.planes[p])) ++start;
+    std::size_t r = p;
+    for (std::size_t k = start; k < reps.size() && r == p; ++k)
+      if (same_plane_any(c, reps[k], p)) r = reps[k];
+    c.cls[p] = r;
+    if (r == p) reps.push_back(p);
+  }
+}
+
 // x in the closed S (all planes), skipping plane `skip` and the planes equal to plane(f) (x is
 // on plane(f): those hold with equality).
 // (xi: intervals of x.)
@@ -327,9 +378,9 @@ I comp(const IV3& v, int a) { return a == 0 ? v.x : a == 1 ? v.y : v.z; }
 // part is certainly empty.
 bool clip_planes(const Ctx& c, std::size_t first, std::size_t count, const IV3& x0, const IV3& u, double& lo,
                  double& hi) {
+  CGAL::Protect_FPU_rounding<true> up;  // IF arithmetic below
   for (std::size_t p = first; p < first + count; ++p) {
-    const Plane& m = c.planes[p];
-    const I a = dot(m.ni, u), b = m.ci - dot(m.ni, x0);
+    const auto [a, b] = constraint_on_line(c.planes[p], x0, u);
     if (a.inf() > 0) hi = std::min(hi, (b / a).sup());
     else if (a.sup() < 0) lo = std::max(lo, (b / a).inf());
     if (lo > hi) return false;
@@ -403,9 +454,9 @@ bool plane_misses_box(const Plane& f, const Box3& b) {
 // disjoint from (a_inf, b_sup) ⊇ the segment [a, b].
 bool open_misses(const Ctx& c, const Sum& s, const IV3& x0, const IV3& u, double a_inf, double b_sup) {
   double lo = -INFINITY, hi = INFINITY;  // ⊇ the open interval
+  CGAL::Protect_FPU_rounding<true> up;  // IF arithmetic below
   for (std::size_t p = s.first; p < s.first + s.count; ++p) {
-    const Plane& m = c.planes[p];
-    const I a = dot(m.ni, u), b = m.ci - dot(m.ni, x0);
+    const auto [a, b] = constraint_on_line(c.planes[p], x0, u);
     if (a.inf() > 0) hi = std::min(hi, (b / a).sup());
     else if (a.sup() < 0) lo = std::max(lo, (b / a).inf());
     else if (a.inf() == 0 && a.sup() == 0 && b.sup() <= 0) return true;  // n·u = 0 exactly, n·x0 >= c
@@ -462,8 +513,12 @@ Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I&
       if (strict) return Span::Empty;
       continue;
     }
-    const Plane& pl = c.planes[p];
-    const I a = dot(pl.ni, L.u), b = pl.ci - dot(pl.ni, L.x0);
+    I a, b;
+    {
+      CGAL::Protect_FPU_rounding<true> up;
+      const auto [af, bf] = constraint_on_line(c.planes[p], L.x0, L.u);
+      a = safe(af), b = safe(bf);
+    }
     // n·u near 0 is frequent (n parallel or nearly parallel to f's or g's normal: the same
     // piece face in several sums, the faces of a symmetric mesh parallel up to rounding): its
     // sign is taken from the exact numbers rather than giving up.
@@ -646,7 +701,7 @@ Feature3 feat(FeatureKind3 k, int i) { return Feature3{k, i}; }
 std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, double upper,
                                     std::size_t max_facets, bool skip_cover) {
   if (!(upper >= 0) || !std::isfinite(upper)) return std::nullopt;
-  Ctx c{m, place(m, pose_p, pose_q), {}, {}, SigmaExactUnfiltered::depth == 0, SigmaExactUnfiltered::planted, {}, {}};
+  Ctx c{m, place(m, pose_p, pose_q), {}, {}, SigmaExactUnfiltered::depth == 0, SigmaExactUnfiltered::planted, {}, {}, {}};
   const convex3::RelativePose rel{c.pl.R, c.pl.tq, c.pl.tp};
   const double reach = upper * (1 + 0x1p-30) + 0x1p-1000;
   // The sums in range and their planes.
@@ -697,6 +752,12 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
   std::size_t lines = 0;
   std::vector<std::pair<I, I>> ivs_i;  // line_no_offer's scratch
   std::vector<IV3> face;               // face_inside_one_sum's scratch
+  // Filtered tier: the class of g whose line plane(f) ∩ plane(g) was run for the current facet
+  // (line_done[class] = fi): the same line from another plane of the class offers the same points
+  // (x0 + λu is the same point set; planes holding the line give the same empty or unconstrained
+  // intervals as g, exactly), and the best only decreases, so it is not run again.
+  std::vector<std::size_t> line_done;
+  if (c.filt) plane_classes(c, order), line_done.assign(c.planes.size(), SIZE_MAX);
   for (std::size_t fi : order) {
     const Plane& f = c.planes[fi];
     if (!near(f.dist)) break;
@@ -747,10 +808,11 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
         if (gi == fi || !near(g.dist)) continue;
         const double bound2 = best.d2 ? to_interval(*best.d2).second : reach * reach * (1 + 0x1p-40);
         if (c.filt) {
+          if (line_done[c.cls[gi]] == fi) continue;  // this line was run for f
           const LineI L = interval_line(f, g, fi, gi);
-          if (line_far(c, L, sk, sl, bound2) ||
-              line_no_offer(c, L, sk, gi, cover, best, ivs_i))
-            continue;
+          if (line_far(c, L, sk, sl, bound2)) continue;
+          line_done[c.cls[gi]] = fi;
+          if (line_no_offer(c, L, sk, gi, cover, best, ivs_i)) continue;
         }
         const ExactPlane& ge = exact_plane(c, gi);
         const V3 u = cross(fe.n, ge.n);

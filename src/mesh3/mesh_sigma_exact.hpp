@@ -12,8 +12,8 @@ namespace pendepth::mesh3 {
 /// (convex3::minkowski_facets) of the piece pairs whose sum box meets the ball B(0, upper).
 /// Beyond it minimum() keeps the certified bounds. Measured (docs/benchmarks.md "Exact mesh σ"):
 /// combs against an L block, CGAL's cross and star have 200–1 100 candidates in range (18–315
-/// distinct planes) and take 3–19 ms per exact σ (PlaneNumber: "Exact mesh σ: a plane number
-/// type"); a torus 8×4 pair has ~16 900 distinct planes over 437 sums and still takes minutes
+/// distinct planes) and take 3–10 ms per exact σ ("Exact mesh σ: plane classes, one rounding
+/// guard"); a torus 8×4 pair has ~16 900 distinct planes over 437 sums and still takes minutes
 /// (the count of lines, not the numbers, is its cost), the tripod pair is beyond 1 000. 600 lets every
 /// overlapping bench pose of the combs, the cross and the star meet while keeping
 /// tests/mesh3's CGAL sample-mesh properties at ~10 s.

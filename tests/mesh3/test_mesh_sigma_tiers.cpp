@@ -31,9 +31,12 @@ using namespace mesh3_test;
 constexpr std::size_t kNoLimit = 100000;
 
 // Poses: Q's translation uniform in ±spread (half of them on the half-integer grid when `grid`),
-// rotations random unless `axis_aligned`. Returns (compared, mismatched) over the overlapping poses.
+// rotations random unless `axis_aligned`; `same_pose`: Q at P's pose (a mesh against itself: O
+// is centrally symmetric, every plane has its mirror at the same distance from 0). Returns
+// (compared, mismatched) over the overlapping poses.
 std::pair<int, int> compare_tiers(const Shape3& sp, const Shape3& sq, std::mt19937_64& rng, int poses, double spread,
-                                  bool axis_aligned, const std::string& name, bool expect_equal) {
+                                  bool axis_aligned, const std::string& name, bool expect_equal,
+                                  bool same_pose = false) {
   std::uniform_real_distribution<double> U(-1, 1);
   const mesh3::MeshPair m = direct(sp, sq);
   const Pair3 pair(sp, sq);
@@ -49,6 +52,7 @@ std::pair<int, int> compare_tiers(const Shape3& sp, const Shape3& sq, std::mt199
       pp = Pose3(rp, Vec3(0.1 * U(rng), 0.1 * U(rng), 0.1 * U(rng)));
       pq = Pose3(rq, Vec3(spread * U(rng), spread * U(rng), spread * U(rng)));
     }
+    if (same_pose) pq = pp;
     if (!pair.overlapping(pp, pq)) continue;
     Depth3 old;
     {
@@ -83,6 +87,15 @@ TEST(MeshSigmaTiers, FilteredEqualsExactCombsAndCups) {
   n += compare_tiers(comb3, cup2, rng, 3, 1.5, false, "comb3-cup2 rotated", true).first;
   n += compare_tiers(comb4, l, rng, 16, 2.5, true, "comb4-L axis-aligned", true).first;  // seams, exact ties
   EXPECT_GE(n, 6);
+}
+
+// A mesh against itself at one rotated pose: each plane's mirror lies at the same distance, and
+// the same planes recur across many sums — the classes of equal planes (plane_classes: a line
+// run once per facet and class) must merge only planes that are exactly equal.
+TEST(MeshSigmaTiers, FilteredEqualsExactSymmetricPoses) {
+  std::mt19937_64 rng(5);
+  const Shape3 l = mesh_shape(polycube(l_block()), "L");
+  EXPECT_EQ(compare_tiers(l, l, rng, 2, 0, false, "L itself", true, true).first, 2);
 }
 
 #ifdef PENDEPTH_CGAL_MESHES
