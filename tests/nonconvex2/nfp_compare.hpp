@@ -1,5 +1,6 @@
 // Bit-for-bit comparisons shared by the no-fit polygon tests that check a fast or pruned path
-// against the method before it (test_nfp_dop.cpp, test_nfp_strip.cpp, test_nfp_trim.cpp): each
+// against the method before it (test_nfp_dop.cpp, test_nfp_strip.cpp, test_nfp_trim.cpp,
+// test_nfp_pairs.cpp): each
 // returns "" when the two are the same, else where they first differ.
 #pragma once
 
@@ -55,5 +56,25 @@ inline std::string nfp_difference(const pendepth::NoFitPolygon2& a, const pendep
     if (!(a.points()[i] == b.points()[i])) return "point " + std::to_string(i);
   return "";
 }
+
+/// Sets one method switch (`nfp_dop_mode()`, `nfp_strip_mode()`, `nfp_pairs_mode()`) and the trimming
+/// mode for a scope, and restores both defaults on exit, also when a failed assertion returns early.
+class ScopedModes {
+ public:
+  ScopedModes(int& mode, int value, int mode_default, int trim) : mode_(mode), default_(mode_default) {
+    mode_ = value;
+    pendepth::nonconvex2::nfp_trim_mode() = trim;
+  }
+  ~ScopedModes() {
+    mode_ = default_;
+    pendepth::nonconvex2::nfp_trim_mode() = pendepth::nonconvex2::kTrimAuto;
+  }
+  ScopedModes(const ScopedModes&) = delete;
+  ScopedModes& operator=(const ScopedModes&) = delete;
+
+ private:
+  int& mode_;
+  int default_;
+};
 
 }  // namespace nonconvex2_test

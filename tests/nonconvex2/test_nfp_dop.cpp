@@ -34,10 +34,9 @@ namespace nc = pendepth::nonconvex2;
 using nonconvex2_test::nfp_difference;
 using nonconvex2_test::piece_difference;
 
-// Sets both modes, restored on scope exit (a failed assertion returns early).
-struct Modes {
-  Modes(int dop, int trim) { nc::nfp_dop_mode() = dop, nc::nfp_trim_mode() = trim; }
-  ~Modes() { nc::nfp_dop_mode() = nc::kDopOn, nc::nfp_trim_mode() = nc::kTrimAuto; }
+// Sets both modes for a scope (nfp_compare.hpp).
+struct Modes : nonconvex2_test::ScopedModes {
+  Modes(int dop, int trim) : ScopedModes(nc::nfp_dop_mode(), dop, nc::kDopOn, trim) {}
 };
 
 std::vector<nc::NfpPiece> classify(const pendepth::PairDepth2::Impl& S, const std::vector<nc::NfpCandidate>& cands, int dop, int trim,

@@ -33,10 +33,9 @@ namespace nc = pendepth::nonconvex2;
 using nonconvex2_test::nfp_difference;
 using nonconvex2_test::piece_difference;
 
-// Sets both modes, restored on scope exit (a failed assertion returns early).
-struct Modes {
-  Modes(int pairs, int trim) { nc::nfp_pairs_mode() = pairs, nc::nfp_trim_mode() = trim; }
-  ~Modes() { nc::nfp_pairs_mode() = nc::kPairsAuto, nc::nfp_trim_mode() = nc::kTrimAuto; }
+// Sets both modes for a scope (nfp_compare.hpp).
+struct Modes : nonconvex2_test::ScopedModes {
+  Modes(int pairs, int trim) : ScopedModes(nc::nfp_pairs_mode(), pairs, nc::kPairsAuto, trim) {}
 };
 
 struct Totals {

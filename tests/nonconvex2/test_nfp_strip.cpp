@@ -35,10 +35,9 @@ namespace nc = pendepth::nonconvex2;
 using nonconvex2_test::nfp_difference;
 using nonconvex2_test::piece_difference;
 
-// Sets both modes, restored on scope exit (a failed assertion returns early).
-struct Modes {
-  Modes(int strip, int trim) { nc::nfp_strip_mode() = strip, nc::nfp_trim_mode() = trim; }
-  ~Modes() { nc::nfp_strip_mode() = nc::kStripOn, nc::nfp_trim_mode() = nc::kTrimAuto; }
+// Sets both modes for a scope (nfp_compare.hpp).
+struct Modes : nonconvex2_test::ScopedModes {
+  Modes(int strip, int trim) : ScopedModes(nc::nfp_strip_mode(), strip, nc::kStripOn, trim) {}
 };
 
 // The pieces are made per side on first use: a fresh pair per mode.
