@@ -1,7 +1,6 @@
 // Bit-for-bit comparisons shared by the no-fit polygon tests that check a fast or pruned path
 // against the method before it (test_nfp_dop.cpp, test_nfp_strip.cpp, test_nfp_trim.cpp,
-// test_nfp_pairs.cpp): each
-// returns "" when the two are the same, else where they first differ.
+// test_nfp_pairs.cpp): each returns "" when the two are the same, else where they first differ.
 #pragma once
 
 #include <pendepth/nfp2.hpp>
