@@ -11,7 +11,8 @@
 // distinct planes at equal distance never carry the answer, so a too-coarse class escaped them.
 // Planted by hand (not committed), each made these tests fail: planes merged by equal distance
 // alone (`ps.dist(reps[k]) == ps.dist(p)` for the same_plane test), and merged within 1 % of
-// their distance (the same with |Δdist| <= 1 % of dist).
+// their distance (the same with |Δdist| <= 1 % of dist), and same_plane's exact offset test
+// dropped (parallel planes equal).
 #include "mesh3/plane_classes.hpp"
 #include "rational.hpp"
 
