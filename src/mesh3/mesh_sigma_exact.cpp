@@ -68,6 +68,7 @@
 #include "convex3/polytope_data.hpp"
 
 #include "mesh3/line_lambda.hpp"
+#include "mesh3/plane_classes.hpp"
 #include "mesh3/plane_number.hpp"
 
 #include <CGAL/Interval_nt.h>
@@ -282,65 +283,33 @@ bool zero_normal(const Ctx& c, std::size_t p) {
   return is_zero(exact_plane(c, p).n);
 }
 
-// Certainly not the same plane: the distances from 0 (accurate to a few ulps, minkowski_facets;
-// the margin of the distance prunes) differ.
-bool distances_differ(const Plane& a, const Plane& b) {
-  return std::abs(a.dist - b.dist) > (a.dist + b.dist) * 0x1p-40 + 0x1p-1000;
-}
+// The planes of the sums as detail::same_plane / plane_classes see them (plane_classes.hpp).
+struct CtxPlanes {
+  const Ctx& c;
+  double dist(std::size_t p) const { return c.planes[p].dist; }
+  const IV3& ni(std::size_t p) const { return c.planes[p].ni; }
+  const I& ci(std::size_t p) const { return c.planes[p].ci; }
+  const ExactPlane& exact(std::size_t p) const { return exact_plane(c, p); }
+};
 
 // The same half-space: b.n = t·a.n with t > 0 and b.c = t·a.c, exactly (interval filter first).
 bool same_plane(const Ctx& c, std::size_t pa, std::size_t pb) {
-  const Plane &a = c.planes[pa], &b = c.planes[pb];
-  if (c.filt) {
-    if (distances_differ(a, b)) return false;
-    const IV3 x = cross(a.ni, b.ni);
-    if (certainly_nonzero(x.x) || certainly_nonzero(x.y) || certainly_nonzero(x.z)) return false;
-    if (!(dot(a.ni, b.ni).sup() > 0)) return false;
-    if (certainly_nonzero(a.ci * dot(b.ni, a.ni) - b.ci * dot(a.ni, a.ni))) return false;
-  }
-  const ExactPlane &ea = exact_plane(c, pa), &eb = exact_plane(c, pb);
-  if (!is_zero(cross(ea.n, eb.n))) return false;
-  const FT ab = dot(ea.n, eb.n);
-  return is_positive(ab) && ea.c * ab == eb.c * dot(ea.n, ea.n);
+  return detail::same_plane(CtxPlanes{c}, pa, pb, true, c.filt);
 }
 
 // The same plane, either side: b.n = t·a.n (t != 0) and b.c = t·a.c, exactly (filter first).
 bool same_plane_any(const Ctx& c, std::size_t pa, std::size_t pb) {
-  const Plane &a = c.planes[pa], &b = c.planes[pb];
-  if (c.filt) {
-    if (distances_differ(a, b)) return false;
-    const IV3 x = cross(a.ni, b.ni);
-    if (certainly_nonzero(x.x) || certainly_nonzero(x.y) || certainly_nonzero(x.z)) return false;
-    if (certainly_nonzero(a.ci * dot(b.ni, a.ni) - b.ci * dot(a.ni, a.ni))) return false;
-  }
-  const ExactPlane &ea = exact_plane(c, pa), &eb = exact_plane(c, pb);
-  if (!is_zero(cross(ea.n, eb.n))) return false;
-  return ea.c * dot(ea.n, eb.n) == eb.c * dot(ea.n, ea.n);
+  return detail::same_plane(CtxPlanes{c}, pa, pb, false, c.filt);
 }
 
-// Classes of equal planes across sums (filtered tier): cls[p] = the first plane, in order of
-// distance from 0, that is the same plane as p on either side (same_plane_any: decided exactly,
-// the interval filter first). The same geometric plane recurs in many sums (a face of P_i with
-// the same extreme vertex of several pieces Q_j sharing it, seams of neighbouring sums), and a
-// line plane(f) ∩ plane(g) depends only on g's class: the main loop runs it once per facet.
-// Candidates are the representatives within the distance margin of p (distances_differ: equal
-// planes have equal distances up to a few ulps), so the sweep is O(P·w) filter tests for P planes
-// and w representatives at one distance (a symmetric mesh's planes at equal distances), one exact
-// test per plane equal to an earlier one. Missing an equality would only cost repeated work.
-// `order`: every plane, by increasing distance.
-void plane_classes(Ctx& c, const std::vector<std::size_t>& order) {
-  c.cls.assign(c.planes.size(), 0);
-  std::vector<std::size_t> reps;  // representatives, in order of distance
-  std::size_t start = 0;          // reps[start, end) are within the margin of the current plane
-  for (std::size_t p : order) {
-    while (start < reps.size() && distances_differ(c.planes[reps[start]], c.planes[p])) ++start;
-    std::size_t r = p;
-    for (std::size_t k = start; k < reps.size() && r == p; ++k)
-      if (same_plane_any(c, reps[k], p)) r = reps[k];
-    c.cls[p] = r;
-    if (r == p) reps.push_back(p);
-  }
-}
+// Classes of equal planes across sums (filtered tier; detail::plane_classes: cls[p] = the first
+// plane, in order of distance from 0, that is the same plane as p on either side, decided
+// exactly). The same geometric plane recurs in many sums (a face of P_i with the same extreme
+// vertex of several pieces Q_j sharing it, seams of neighbouring sums), and a line
+// plane(f) ∩ plane(g) depends only on g's class: the main loop runs it once per facet. Missing an
+// equality would only cost repeated work; merging distinct planes would skip lines (tested:
+// tests/mesh3/test_plane_classes.cpp). `order`: every plane, by increasing distance.
+void plane_classes(Ctx& c, const std::vector<std::size_t>& order) { detail::plane_classes(CtxPlanes{c}, order, c.cls); }
 
 // x in the closed S (all planes), skipping plane `skip` and the planes equal to plane(f) (x is
 // on plane(f): those hold with equality).
