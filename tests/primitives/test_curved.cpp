@@ -449,6 +449,20 @@ std::array<Big, 2> stretch_oracle(const Eigen::Matrix3d& R) {
   return {boost::multiprecision::sqrt(mid - rad), boost::multiprecision::sqrt(mid + rad)};
 }
 
+// σ and the signed distance at Q's pose pq with the coaxial closed form switched off (EPA
+// alone); the switch is restored on exit.
+struct EpaAlone {
+  Depth3 minimum;
+  Distance3 distance;
+};
+EpaAlone without_closed_form(const Pair3& pair, const Pose3& pq) {
+  struct Off {
+    Off() { primitives::coaxial_enabled = false; }
+    ~Off() { primitives::coaxial_enabled = true; }
+  } off;
+  return {pair.minimum(Pose3(), pq), pair.signed_distance(Pose3(), pq)};
+}
+
 TEST(Curved, CoaxialPairsAgainstHighPrecisionOracle) {
   // P at the identity, Q rotated about z or by a half turn: the relative pose is Q's own (exact),
   // so the oracle sees the engine's R and t. sd lies in [sd(largest sizes), sd(smallest)].
@@ -550,10 +564,7 @@ TEST(Curved, CoaxialPairsInsideTheNestedTessellationsAndTheEpaBracket) {
     const Depth3 m = pair.minimum(Pose3(), pq);
     EXPECT_GE(m.upper_bound, inner.minimum(Pose3(), pq).depth - 1e-15) << it;
     EXPECT_LE(m.lower_bound, outer.minimum(Pose3(), pq).depth + 1e-15) << it;
-    primitives::coaxial_enabled = false;
-    const Distance3 e = pair.signed_distance(Pose3(), pq);
-    const Depth3 em = pair.minimum(Pose3(), pq);
-    primitives::coaxial_enabled = true;
+    const auto [em, e] = without_closed_form(pair, pq);
     EXPECT_LE(s.lower_bound, e.upper_bound) << it;
     EXPECT_GE(s.upper_bound, e.lower_bound) << it;
     EXPECT_LE(s.upper_bound - s.lower_bound, e.upper_bound - e.lower_bound + 1e-16) << it;
@@ -578,9 +589,7 @@ TEST(Curved, NearCoaxialPairsTakeTheTiltBoundWhenNarrower) {
   for (double eps : {1e-6, 1e-9, 1e-12}) {
     const Pose3 pq(Eigen::Quaterniond(Eigen::AngleAxisd(eps, Vec3(0.6, 0.8, 0))), Vec3::Zero());
     const Depth3 m = pair.minimum(Pose3(), pq);
-    primitives::coaxial_enabled = false;
-    const Depth3 e = pair.minimum(Pose3(), pq);
-    primitives::coaxial_enabled = true;
+    const Depth3 e = without_closed_form(pair, pq).minimum;
     ASSERT_TRUE(m.overlapping && e.overlapping);
     EXPECT_LE(m.lower_bound, e.upper_bound) << eps;
     EXPECT_GE(m.upper_bound, e.lower_bound) << eps;
@@ -615,10 +624,7 @@ TEST(Curved, NonParallelPairsFallThroughToEpaBitForBit) {
                               : Pose3(Eigen::Quaterniond(1, 0.5e-9, 0, 0), Vec3(off(rng), off(rng), off(rng)));
       const Depth3 m = pair.minimum(Pose3(), pq);
       const Distance3 d = pair.signed_distance(Pose3(), pq);
-      primitives::coaxial_enabled = false;
-      const Depth3 em = pair.minimum(Pose3(), pq);
-      const Distance3 ed = pair.signed_distance(Pose3(), pq);
-      primitives::coaxial_enabled = true;
+      const auto [em, ed] = without_closed_form(pair, pq);
       if (it % 2 == 0 && m.upper_bound - m.lower_bound < em.upper_bound - em.lower_bound) {
         EXPECT_LE(m.lower_bound, em.upper_bound) << n;
         EXPECT_GE(m.upper_bound, em.lower_bound) << n;
@@ -730,10 +736,7 @@ TEST(Curved, NearCoaxialRandomPairsMeetEpaAndTheTiltBound) {
     const Pair3 pair(P.shape, Q.shape);
     const Distance3 s = pair.signed_distance(Pose3(), pq);
     const Depth3 m = pair.minimum(Pose3(), pq);
-    primitives::coaxial_enabled = false;
-    const Distance3 e = pair.signed_distance(Pose3(), pq);
-    const Depth3 em = pair.minimum(Pose3(), pq);
-    primitives::coaxial_enabled = true;
+    const auto [em, e] = without_closed_form(pair, pq);
     ASSERT_FALSE(std::isnan(s.lower_bound) || std::isnan(s.upper_bound) || std::isnan(m.lower_bound) || std::isnan(m.upper_bound)) << it;
     ASSERT_LE(s.lower_bound, s.upper_bound) << it;
     EXPECT_LE(s.lower_bound, e.upper_bound) << it;
