@@ -75,6 +75,7 @@
 #include <CGAL/Uncertain.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -608,10 +609,28 @@ bool line_interval(const Ctx& c, const Sum& s, const LineI& L, bool strict, std:
   return detail::lambda_interval(cs, s.first, s.count, strict, c.filt, lo, hi);
 }
 
-// Enclosures of a superset of the vertices of the face f ∩ S_k = F_P(n) ⊕ −F_Q'(n) (n = f's
-// normal, S_k = P_i ⊕ −Q'_j, f a supporting plane): p − q' for every vertex p of P_i that may
-// maximise n·p and every q of Q_j that may minimise n·q' (interval comparisons against the
-// certain bounds: no vertex of either face is left out). Their hull contains the face.
+// Of the candidates `idx` (those whose enclosure may attain the extremum), keeps the ones whose
+// exact value (value(i), exact) is the maximum (`max`) or the minimum: the ties the intervals
+// cannot split (faces coplanar up to rounding, e.g. a mesh's planar quads split in two triangles)
+// are decided exactly, so a face keeps its true vertices only.
+template <class Value>
+void keep_extreme(std::vector<std::size_t>& idx, bool max, Value value) {
+  if (idx.size() < 2) return;
+  std::vector<FT> v;
+  for (std::size_t i : idx) v.push_back(value(i));
+  FT best = v[0];
+  for (const FT& x : v)
+    if (max ? x > best : x < best) best = x;
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < idx.size(); ++i)
+    if (v[i] == best) idx[k++] = idx[i];
+  idx.resize(k);
+}
+
+// Enclosures of the vertices of the face f ∩ S_k = F_P(n) ⊕ −F_Q'(n) (n = f's normal,
+// S_k = P_i ⊕ −Q'_j, f a supporting plane): p − q' for every vertex p of P_i maximising n·p and
+// every q of Q_j minimising n·q' (interval comparisons against the certain bounds first, the
+// remaining ties exactly: keep_extreme). Their hull is the face.
 void face_points(const Ctx& c, std::size_t fi, std::vector<IV3>& pts) {
   const Plane& f = c.planes[fi];
   const Sum& s = c.sums[f.sum];
@@ -627,41 +646,106 @@ void face_points(const Ctx& c, std::size_t fi, std::vector<IV3>& pts) {
     qs.push_back(placed<I>(c.pl, v)), hq.push_back(dot(f.ni, qs.back()));
     minq = std::min(minq, hq.back().sup());
   }
-  pts.clear();
+  std::vector<std::size_t> A, B;
   for (std::size_t a = 0; a < ps.size(); ++a)
-    if (hp[a].sup() >= maxp)
-      for (std::size_t b = 0; b < qs.size(); ++b)
-        if (hq[b].inf() <= minq) pts.push_back(ps[a] - qs[b]);
+    if (hp[a].sup() >= maxp) A.push_back(a);
+  for (std::size_t b = 0; b < qs.size(); ++b)
+    if (hq[b].inf() <= minq) B.push_back(b);
+  const V3& n = exact_plane(c, fi).n;
+  keep_extreme(A, true, [&](std::size_t a) { return dot(n, lift<FT>(P.v[a])); });
+  keep_extreme(B, false, [&](std::size_t b) { return dot(n, placed<FT>(c.pl, Q.v[b])); });
+  pts.clear();
+  for (std::size_t a : A)
+    for (std::size_t b : B) pts.push_back(ps[a] - qs[b]);
 }
 
-// The face f ∩ S_k certainly lies in the open S_l of one other sum: then R_f = f ∩ S_k \ ∪ int
-// S_l is empty and f holds no point of Oᶜ (the exact path would offer nothing from f). Checks
-// the face_points against S_l's planes (strictly inside, certain) — the hull of points of a
-// convex open set lies in it. Sums whose box does not certainly hold the points are skipped.
-// O(K·f̄·v) interval operations at worst (v face points, usually 3–4), most sums rejected by
-// their box or their first planes.
-bool face_inside_one_sum(const Ctx& c, std::size_t fi, std::vector<IV3>& pts) {
-  face_points(c, fi, pts);
-  Box3 b{Vec3::Constant(INFINITY), Vec3::Constant(-INFINITY)};
-  for (const IV3& x : pts)
-    for (int a = 0; a < 3; ++a)
-      b.lo[a] = std::min(b.lo[a], comp(x, a).inf()), b.hi[a] = std::max(b.hi[a], comp(x, a).sup());
-  for (std::size_t l = 0; l < c.sums.size(); ++l) {
-    const Sum& s = c.sums[l];
-    if (l == c.planes[fi].sum || !(s.box.lo.array() < b.lo.array()).all() || !(b.hi.array() < s.box.hi.array()).all())
-      continue;
-    bool inside = true;
-    for (std::size_t p = s.first; p < s.first + s.count && inside; ++p)
-      for (const IV3& x : pts)
-        if (!((dot(c.planes[p].ni, x) - c.planes[p].ci).sup() < 0)) {
-          inside = false;
-          break;
-        }
-    if (inside) return true;
+// An enclosure of the squared distance from 0 to the box b.
+I box_distance2(const Box3& b) {
+  I d2(0);
+  for (int a = 0; a < 3; ++a) {
+    const double g = b.lo[a] > 0 ? b.lo[a] : b.hi[a] < 0 ? -b.hi[a] : 0.0;
+    d2 += I(g) * I(g);
   }
-  return false;
+  return d2;
 }
 
+// A box holding the enclosures `pts`.
+Box3 box_of(const IV3* pts, std::size_t n) {
+  Box3 b{Vec3::Constant(INFINITY), Vec3::Constant(-INFINITY)};
+  for (std::size_t i = 0; i < n; ++i)
+    for (int a = 0; a < 3; ++a)
+      b.lo[a] = std::min(b.lo[a], comp(pts[i], a).inf()), b.hi[a] = std::max(b.hi[a], comp(pts[i], a).sup());
+  return b;
+}
+
+// The enclosures t certainly lie in the open S (each strictly inside every plane): then their
+// hull does (S open and convex).
+bool strictly_inside(const Ctx& c, const Sum& s, const std::array<IV3, 3>& t) {
+  for (std::size_t p = s.first; p < s.first + s.count; ++p)
+    for (const IV3& x : t)
+      if (!((dot(c.planes[p].ni, x) - c.planes[p].ci).sup() < 0)) return false;
+  return true;
+}
+
+// Depth of the subdivision in face_covered (each level splits a triangle into 4 at its edge
+// midpoints): a face whose union cover needs finer pieces goes to the line stage.
+constexpr int kCoverDepth = 4;
+
+// The triangle of enclosures t (its hull, a superset of the true triangle) certainly offers no
+// point: it lies beyond the best (Best::beyond on its box's distance), or in
+// ∪ int S_l over the sums `cand` (those whose box meets it): in one of them whole, or, down to
+// `depth` more levels, each of its four midpoint sub-triangles (midpoints as enclosures of the
+// exact midpoints: the four hulls cover the true triangle). Only strict, certain inclusions
+// count, so a point on a seam where two sums meet (in neither open sum) is never covered unless
+// a third sum holds it in its interior. `hint`: the sum tried first (the one found last).
+bool triangle_covered(const Ctx& c, const std::array<IV3, 3>& t, const std::vector<std::size_t>& cand,
+                      const Best& best, int depth, std::size_t& hint) {
+  const Box3 b = box_of(t.data(), 3);
+  if (best.beyond(box_distance2(b))) return true;  // every point is beyond the best: no offer
+  auto holds = [&](std::size_t l) {
+    const Sum& s = c.sums[l];
+    return (s.box.lo.array() < b.lo.array()).all() && (b.hi.array() < s.box.hi.array()).all() &&
+           strictly_inside(c, s, t);
+  };
+  if (hint < c.sums.size() && holds(hint)) return true;
+  for (std::size_t l : cand)
+    if (l != hint && holds(l)) return hint = l, true;
+  if (depth == 0) return false;
+  std::vector<std::size_t> sub;  // the sums whose box meets t's: only they can hold a part of it
+  for (std::size_t l : cand)
+    if (boxes_meet(c.sums[l].box, b)) sub.push_back(l);
+  if (sub.size() < 2) return false;  // one sum does not hold t: its parts would not be covered either
+  const I h(0.5);
+  auto mid = [&](const IV3& x, const IV3& y) { return h * (x + y); };
+  const IV3 m01 = mid(t[0], t[1]), m12 = mid(t[1], t[2]), m20 = mid(t[2], t[0]);
+  for (const std::array<IV3, 3>& q : {std::array<IV3, 3>{t[0], m01, m20}, std::array<IV3, 3>{m01, t[1], m12},
+                                      std::array<IV3, 3>{m20, m12, t[2]}, std::array<IV3, 3>{m01, m12, m20}})
+    if (!triangle_covered(c, q, sub, best, depth - 1, hint)) return false;
+  return true;
+}
+
+// The face f ∩ S_k certainly offers nothing: its part within the best lies in ∪ int S_l over
+// the other sums, so R_f = f ∩ S_k \ ∪ int S_l holds no point nearer than the best (the exact
+// path would offer nothing from f: its offers are points of R_f, and the best does not change
+// between this test and f's lines). The face
+// is the hull of its face_points, covered by the fan triangles from the first point over every
+// pair of the others; each triangle must be covered (triangle_covered). Sums whose box does not
+// meet the face's are left out. Cost: O(K) box tests per triangle tried, and per sum tried its
+// planes against 3 points; at most 4^kCoverDepth triangles per fan triangle (measured in
+// docs/benchmarks.md "Exact mesh σ: a facet cover by unions").
+bool face_covered(const Ctx& c, std::size_t fi, const Best& best, std::vector<IV3>& pts, int depth = kCoverDepth) {
+  face_points(c, fi, pts);
+  if (pts.size() < 3 || pts.size() > 32) return false;
+  const Box3 b = box_of(pts.data(), pts.size());
+  std::vector<std::size_t> cand;
+  for (std::size_t l = 0; l < c.sums.size(); ++l)
+    if (l != c.planes[fi].sum && boxes_meet(c.sums[l].box, b)) cand.push_back(l);
+  std::size_t hint = SIZE_MAX;
+  for (std::size_t i = 1; i < pts.size(); ++i)
+    for (std::size_t j = i + 1; j < pts.size(); ++j)
+      if (!triangle_covered(c, {pts[0], pts[i], pts[j]}, cand, best, depth, hint)) return false;
+  return true;
+}
 
 Feature3 feat(FeatureKind3 k, int i) { return Feature3{k, i}; }
 
@@ -720,7 +804,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
   c.on_f.assign(c.planes.size(), 0);
   std::size_t lines = 0;
   std::vector<std::pair<I, I>> ivs_i;  // line_no_offer's scratch
-  std::vector<IV3> face;               // face_inside_one_sum's scratch
+  std::vector<IV3> face;               // face_covered's scratch
   // Filtered tier: the class of g whose line plane(f) ∩ plane(g) was run for the current facet
   // (line_done[class] = fi): the same line from another plane of the class offers the same points
   // (x0 + λu is the same point set; planes holding the line give the same empty or unconstrained
@@ -732,7 +816,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
     if (!near(f.dist)) break;
     const Sum& sk = c.sums[f.sum];
     if (!near(sk.box_dist)) continue;  // f ⊂ S_k lies beyond the best
-    if (c.filt && !skip_cover && face_inside_one_sum(c, fi, face)) continue;  // R_f = ∅
+    if (c.filt && !skip_cover && face_covered(c, fi, best, face)) continue;  // R_f = ∅
     cover.clear(), sources.clear();
     for (std::size_t p : marked) c.on_f[p] = 0;
     marked.clear();
