@@ -36,8 +36,11 @@
 // SigmaExactUnfiltered guard every decision is exact and those prunes are off: the reference the
 // filtered tier must equal bit for bit (tests/mesh3/test_mesh_sigma_tiers.cpp).
 // Filtered tier, further (both decide nothing the exact path would not): a facet whose face
-// f ∩ S_k lies in the open S_l of one other sum (face_inside_one_sum: enclosures of a superset
-// of the face's vertices, each certainly strictly inside) has R_f = ∅ and is skipped; a line is
+// f ∩ S_k, within the best, lies in the union of the other open sums (face_covered: the face's
+// vertices as enclosures, ties decided exactly; fan triangles, each certainly strictly inside one
+// open sum, or beyond the best, or split at its midpoints into four, kCoverDepth levels) has no
+// point of R_f nearer than the best and is skipped — a seam where two sums meet is in neither
+// open sum, so it is covered only when a third sum holds it strictly; a line is
 // first run on enclosures (line_no_offer: its segment in S_k, the covering intervals, every
 // candidate certainly covered or certainly beyond the best), signs of n·u near 0 (planes nearly
 // parallel to the line: rounding in symmetric meshes) taken exactly, a plane equal to g's
@@ -57,11 +60,10 @@
 // Cost: for F facets in range and K sums, O(F) projections of O(K·f̄) tests each, and up to
 // O(F²) lines of O(K·f̄ + K²) each in the worst case (f̄ = facets per sum); in practice the
 // projections settle most facets. Measured (docs/benchmarks.md "Exact mesh σ: interval planes,
-// one-sum facet cover", "… a plane number type", "… plane classes, one rounding guard"): the
-// tripod pair takes ~1 200 facets and half a minute, the tori are still beyond reach — their
-// facets near 0 are covered by unions of several sums and nearly coplanar planes (rounded
-// symmetric meshes) send lines to the exact stage: ~7 000 lines tried and a few hundred exact
-// lines per facet, each over ~300 covering sums.
+// one-sum facet cover", "… a plane number type", "… plane classes, one rounding guard", "… a
+// facet cover by unions"): with the union cover the tripod pair takes ~2 000 facets (2 reach the
+// lines) and half a second; a torus 8×4 pair ~8 900 facets (~190 reach the lines: each still
+// ~7 000 lines tried, a few hundred exact, over ~300 covering sums) and about a minute.
 #include "mesh3/mesh_sigma_exact.hpp"
 
 #include "convex3/minkowski_facets.hpp"
@@ -444,6 +446,7 @@ struct Best {
   double radius;  // >= √d2 (or the search radius U), for the double prunes
   FT cap2;        // reach², exact
   double sup2;    // >= *d2, or >= cap2 without a best
+  std::size_t offers = 0;  // points accepted so far (SigmaCoverCheck)
   // A point at squared distance e2 is no improvement: not nearer than the best, or beyond the cap.
   bool beyond(const FT& e2) const { return d2 ? !(e2 < *d2) : e2 > cap2; }
   // The same, certain on an enclosure of e2.
@@ -452,7 +455,7 @@ struct Best {
 
 void offer(Best& b, const FT& d2, const V3& x, std::size_t plane) {
   if (b.beyond(d2)) return;
-  b.d2 = d2, b.x = x, b.plane = plane, b.sup2 = to_interval(d2).second;
+  b.d2 = d2, b.x = x, b.plane = plane, b.sup2 = to_interval(d2).second, ++b.offers;
   b.radius = std::min(b.radius, std::sqrt(to_double(d2)) * (1 + 0x1p-40) + 0x1p-1000);
 }
 
@@ -659,14 +662,15 @@ void face_points(const Ctx& c, std::size_t fi, std::vector<IV3>& pts) {
     for (std::size_t b : B) pts.push_back(ps[a] - qs[b]);
 }
 
-// An enclosure of the squared distance from 0 to the box b.
+// An enclosure of the squared distance from 0 to the box b (IF: the caller holds the rounding
+// guard).
 I box_distance2(const Box3& b) {
-  I d2(0);
+  IF d2(0);
   for (int a = 0; a < 3; ++a) {
     const double g = b.lo[a] > 0 ? b.lo[a] : b.hi[a] < 0 ? -b.hi[a] : 0.0;
-    d2 += I(g) * I(g);
+    d2 += IF(g) * IF(g);
   }
-  return d2;
+  return safe(d2);
 }
 
 // A box holding the enclosures `pts`.
@@ -679,12 +683,22 @@ Box3 box_of(const IV3* pts, std::size_t n) {
 }
 
 // The enclosures t certainly lie in the open S (each strictly inside every plane): then their
-// hull does (S open and convex).
+// hull does (S open and convex). IF: the caller holds the rounding guard.
 bool strictly_inside(const Ctx& c, const Sum& s, const std::array<IV3, 3>& t) {
   for (std::size_t p = s.first; p < s.first + s.count; ++p)
     for (const IV3& x : t)
-      if (!((dot(c.planes[p].ni, x) - c.planes[p].ci).sup() < 0)) return false;
+      if (!((dotf(c.planes[p].ni, x) - fast(c.planes[p].ci)).sup() < 0)) return false;
   return true;
+}
+
+// The enclosure x certainly lies outside the open S (on or beyond one of its planes). IF: the
+// caller holds the rounding guard.
+bool certainly_outside(const Ctx& c, const Sum& s, const IV3& x) {
+  for (int a = 0; a < 3; ++a)
+    if (comp(x, a).sup() <= s.box.lo[a] || comp(x, a).inf() >= s.box.hi[a]) return true;
+  for (std::size_t p = s.first; p < s.first + s.count; ++p)
+    if ((dotf(c.planes[p].ni, x) - fast(c.planes[p].ci)).inf() >= 0) return true;
+  return false;
 }
 
 // Depth of the subdivision in face_covered (each level splits a triangle into 4 at its edge
@@ -700,6 +714,7 @@ constexpr int kCoverDepth = 4;
 // a third sum holds it in its interior. `hint`: the sum tried first (the one found last).
 bool triangle_covered(const Ctx& c, const std::array<IV3, 3>& t, const std::vector<std::size_t>& cand,
                       const Best& best, int depth, std::size_t& hint) {
+  CGAL::Protect_FPU_rounding<true> up;  // IF arithmetic below
   const Box3 b = box_of(t.data(), 3);
   if (best.beyond(box_distance2(b))) return true;  // every point is beyond the best: no offer
   auto holds = [&](std::size_t l) {
@@ -711,12 +726,19 @@ bool triangle_covered(const Ctx& c, const std::array<IV3, 3>& t, const std::vect
   for (std::size_t l : cand)
     if (l != hint && holds(l)) return hint = l, true;
   if (depth == 0) return false;
+  // A vertex certainly in no open sum and not certainly beyond the best may be a point of R_f:
+  // stop here (the lines decide) rather than subdivide around it.
+  for (const IV3& x : t)
+    if (!best.beyond(safe(dotf(x, x))) && std::all_of(cand.begin(), cand.end(), [&](std::size_t l) { return certainly_outside(c, c.sums[l], x); }))
+      return false;
   std::vector<std::size_t> sub;  // the sums whose box meets t's: only they can hold a part of it
   for (std::size_t l : cand)
     if (boxes_meet(c.sums[l].box, b)) sub.push_back(l);
   if (sub.size() < 2) return false;  // one sum does not hold t: its parts would not be covered either
-  const I h(0.5);
-  auto mid = [&](const IV3& x, const IV3& y) { return h * (x + y); };
+  auto mid = [&](const IV3& x, const IV3& y) {
+    return IV3{safe(IF(0.5) * (fast(x.x) + fast(y.x))), safe(IF(0.5) * (fast(x.y) + fast(y.y))),
+               safe(IF(0.5) * (fast(x.z) + fast(y.z)))};
+  };
   const IV3 m01 = mid(t[0], t[1]), m12 = mid(t[1], t[2]), m20 = mid(t[2], t[0]);
   for (const std::array<IV3, 3>& q : {std::array<IV3, 3>{t[0], m01, m20}, std::array<IV3, 3>{m01, t[1], m12},
                                       std::array<IV3, 3>{m20, m12, t[2]}, std::array<IV3, 3>{m01, m12, m20}})
@@ -811,12 +833,23 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
   // intervals as g, exactly), and the best only decreases, so it is not run again.
   std::vector<std::size_t> line_done;
   if (c.filt) plane_classes(c, order), line_done.assign(c.planes.size(), SIZE_MAX);
+  // SigmaCoverCheck (tests): a facet found covered is processed anyway; an offer from it is a
+  // violation (checked when the next facet starts and after the loop).
+  std::size_t checked_offers = SIZE_MAX;  // best.offers when the last covered facet started
+  auto check_cover = [&] {
+    if (checked_offers != SIZE_MAX && best.offers != checked_offers) ++SigmaCoverCheck::violations;
+    checked_offers = SIZE_MAX;
+  };
   for (std::size_t fi : order) {
+    check_cover();
     const Plane& f = c.planes[fi];
     if (!near(f.dist)) break;
     const Sum& sk = c.sums[f.sum];
     if (!near(sk.box_dist)) continue;  // f ⊂ S_k lies beyond the best
-    if (c.filt && !skip_cover && face_covered(c, fi, best, face)) continue;  // R_f = ∅
+    if (c.filt && !skip_cover && face_covered(c, fi, best, face)) {  // no point of R_f nearer than the best
+      if (SigmaCoverCheck::depth == 0) continue;
+      ++SigmaCoverCheck::covered, checked_offers = best.offers;
+    }
     cover.clear(), sources.clear();
     for (std::size_t p : marked) c.on_f[p] = 0;
     marked.clear();
@@ -914,6 +947,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
       }
     }
   }
+  check_cover();
   // No point of Oᶜ within `upper`: it was not an upper bound (a caller's bug): no answer.
   if (!best.d2 || *best.d2 > FT(reach) * FT(reach)) return std::nullopt;
 

@@ -13,8 +13,9 @@ namespace pendepth::mesh3 {
 /// Beyond it minimum() keeps the certified bounds. Measured (docs/benchmarks.md "Exact mesh σ"):
 /// combs against an L block, CGAL's cross and star have 200–1 100 candidates in range (18–315
 /// distinct planes) and take 3–10 ms per exact σ ("Exact mesh σ: plane classes, one rounding
-/// guard"); a torus 8×4 pair has ~16 900 distinct planes over 437 sums and still takes minutes
-/// (the count of lines, not the numbers, is its cost), the tripod pair is beyond 1 000. 600 lets every
+/// guard"); a torus 8×4 pair has ~16 900 distinct planes over 437 sums and takes about a minute
+/// even with the facet cover by unions (its ~190 facets that reach the lines are the cost), the
+/// tripod pair (beyond 1 000) half a second ("… a facet cover by unions"). 600 lets every
 /// overlapping bench pose of the combs, the cross and the star meet while keeping
 /// tests/mesh3's CGAL sample-mesh properties at ~10 s.
 inline constexpr std::size_t kExactSigmaMaxFacets = 600;
@@ -36,6 +37,19 @@ struct SigmaExactUnfiltered {
   ~SigmaExactUnfiltered() { --depth; }
   SigmaExactUnfiltered(const SigmaExactUnfiltered&) = delete;
   SigmaExactUnfiltered& operator=(const SigmaExactUnfiltered&) = delete;
+};
+
+/// Tests only: while a SigmaCoverCheck is alive on this thread, the filtered tier processes the
+/// facets its union cover (mesh_sigma_exact.cpp, face_covered) would skip and counts in
+/// `covered` those facets and in `violations` those that offered a point nonetheless (a cover
+/// that is not one: must stay 0).
+struct SigmaCoverCheck {
+  static inline thread_local int depth = 0;
+  static inline thread_local std::size_t covered = 0, violations = 0;
+  SigmaCoverCheck() { ++depth; }
+  ~SigmaCoverCheck() { --depth; }
+  SigmaCoverCheck(const SigmaCoverCheck&) = delete;
+  SigmaCoverCheck& operator=(const SigmaCoverCheck&) = delete;
 };
 
 std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, double upper,
