@@ -40,7 +40,9 @@
 // vertices as enclosures, ties decided exactly; fan triangles, each certainly strictly inside one
 // open sum, or beyond the best, or split at its midpoints into four, kCoverDepth levels) has no
 // point of R_f nearer than the best and is skipped — a seam where two sums meet is in neither
-// open sum, so it is covered only when a third sum holds it strictly; a line is
+// open sum, so it is covered only when a third sum holds it strictly; when it is not covered,
+// its unsettled triangles (boxes) hold R_f ∩ B(0, best), and a line whose plane g certainly
+// misses them all is not run (line_misses_leaves); a line is
 // first run on enclosures (line_no_offer: its segment in S_k, the covering intervals, every
 // candidate certainly covered or certainly beyond the best), signs of n·u near 0 (planes nearly
 // parallel to the line: rounding in symmetric meshes) taken exactly, a plane equal to g's
@@ -62,8 +64,8 @@
 // projections settle most facets. Measured (docs/benchmarks.md "Exact mesh σ: interval planes,
 // one-sum facet cover", "… a plane number type", "… plane classes, one rounding guard", "… a
 // facet cover by unions"): with the union cover the tripod pair takes ~2 000 facets (2 reach the
-// lines) and half a second; a torus 8×4 pair ~8 900 facets (~190 reach the lines: each still
-// ~7 000 lines tried, a few hundred exact, over ~300 covering sums) and about a minute.
+// lines) and 0.4 s; a torus 8×4 pair ~8 900 facets (~190 reach the lines, fewer of their lines
+// run: those through unsettled triangles) and half a minute.
 #include "mesh3/mesh_sigma_exact.hpp"
 
 #include "convex3/minkowski_facets.hpp"
@@ -712,8 +714,21 @@ constexpr int kCoverDepth = 4;
 // exact midpoints: the four hulls cover the true triangle). Only strict, certain inclusions
 // count, so a point on a seam where two sums meet (in neither open sum) is never covered unless
 // a third sum holds it in its interior. `hint`: the sum tried first (the one found last).
+// The triangles left unsettled (boxes of their hulls): with the settled ones they cover the face,
+// so R_f ∩ B(0, best) lies in their union. `complete` false: exploration stopped at `max`.
+struct Leaves {
+  std::vector<Box3> boxes;
+  bool complete = true;
+  std::size_t max = 0;
+};
+// At most kMaxLeaves unsettled triangles are kept, and only for faces that kLeavesMinSums other
+// sums' boxes meet (the line stage's cost grows with them; below, the first unsettled triangle
+// ends the cover test as the one-sum test did: the full exploration cost 8–23 % on the combs and
+// the cross, docs/benchmarks.md "Exact mesh σ: a facet cover by unions").
+constexpr std::size_t kMaxLeaves = 64, kLeavesMinSums = 32;
+
 bool triangle_covered(const Ctx& c, const std::array<IV3, 3>& t, const std::vector<std::size_t>& cand,
-                      const Best& best, int depth, std::size_t& hint) {
+                      const Best& best, int depth, std::size_t& hint, Leaves& out) {
   CGAL::Protect_FPU_rounding<true> up;  // IF arithmetic below
   const Box3 b = box_of(t.data(), 3);
   if (best.beyond(box_distance2(b))) return true;  // every point is beyond the best: no offer
@@ -725,25 +740,33 @@ bool triangle_covered(const Ctx& c, const std::array<IV3, 3>& t, const std::vect
   if (hint < c.sums.size() && holds(hint)) return true;
   for (std::size_t l : cand)
     if (l != hint && holds(l)) return hint = l, true;
-  if (depth == 0) return false;
+  auto leaf = [&] {
+    if (out.boxes.size() >= out.max) out.complete = false;
+    else out.boxes.push_back(b);
+    return false;
+  };
+  if (depth == 0) return leaf();
   // A vertex certainly in no open sum and not certainly beyond the best may be a point of R_f:
   // stop here (the lines decide) rather than subdivide around it.
   for (const IV3& x : t)
     if (!best.beyond(safe(dotf(x, x))) && std::all_of(cand.begin(), cand.end(), [&](std::size_t l) { return certainly_outside(c, c.sums[l], x); }))
-      return false;
+      return leaf();
   std::vector<std::size_t> sub;  // the sums whose box meets t's: only they can hold a part of it
   for (std::size_t l : cand)
     if (boxes_meet(c.sums[l].box, b)) sub.push_back(l);
-  if (sub.size() < 2) return false;  // one sum does not hold t: its parts would not be covered either
+  if (sub.size() < 2) return leaf();  // one sum does not hold t: its parts would not be covered either
   auto mid = [&](const IV3& x, const IV3& y) {
     return IV3{safe(IF(0.5) * (fast(x.x) + fast(y.x))), safe(IF(0.5) * (fast(x.y) + fast(y.y))),
                safe(IF(0.5) * (fast(x.z) + fast(y.z)))};
   };
   const IV3 m01 = mid(t[0], t[1]), m12 = mid(t[1], t[2]), m20 = mid(t[2], t[0]);
+  bool all = true;
   for (const std::array<IV3, 3>& q : {std::array<IV3, 3>{t[0], m01, m20}, std::array<IV3, 3>{m01, t[1], m12},
-                                      std::array<IV3, 3>{m20, m12, t[2]}, std::array<IV3, 3>{m01, m12, m20}})
-    if (!triangle_covered(c, q, sub, best, depth - 1, hint)) return false;
-  return true;
+                                      std::array<IV3, 3>{m20, m12, t[2]}, std::array<IV3, 3>{m01, m12, m20}}) {
+    all = triangle_covered(c, q, sub, best, depth - 1, hint, out) && all;
+    if (!out.complete) return false;
+  }
+  return all;
 }
 
 // The face f ∩ S_k certainly offers nothing: its part within the best lies in ∪ int S_l over
@@ -755,18 +778,29 @@ bool triangle_covered(const Ctx& c, const std::array<IV3, 3>& t, const std::vect
 // meet the face's are left out. Cost: O(K) box tests per triangle tried, and per sum tried its
 // planes against 3 points; at most 4^kCoverDepth triangles per fan triangle (measured in
 // docs/benchmarks.md "Exact mesh σ: a facet cover by unions").
-bool face_covered(const Ctx& c, std::size_t fi, const Best& best, std::vector<IV3>& pts, int depth = kCoverDepth) {
+// `out`: the unsettled triangles' boxes (complete = false when not all were explored).
+bool face_covered(const Ctx& c, std::size_t fi, const Best& best, std::vector<IV3>& pts, Leaves& out) {
+  out.boxes.clear(), out.complete = true;
   face_points(c, fi, pts);
-  if (pts.size() < 3 || pts.size() > 32) return false;
+  if (pts.size() < 3 || pts.size() > 32) return out.complete = false;
   const Box3 b = box_of(pts.data(), pts.size());
   std::vector<std::size_t> cand;
   for (std::size_t l = 0; l < c.sums.size(); ++l)
     if (l != c.planes[fi].sum && boxes_meet(c.sums[l].box, b)) cand.push_back(l);
+  out.max = cand.size() >= kLeavesMinSums ? kMaxLeaves : 0;
   std::size_t hint = SIZE_MAX;
-  for (std::size_t i = 1; i < pts.size(); ++i)
-    for (std::size_t j = i + 1; j < pts.size(); ++j)
-      if (!triangle_covered(c, {pts[0], pts[i], pts[j]}, cand, best, depth, hint)) return false;
-  return true;
+  bool all = true;
+  for (std::size_t i = 1; i < pts.size() && out.complete; ++i)
+    for (std::size_t j = i + 1; j < pts.size() && out.complete; ++j)
+      all = triangle_covered(c, {pts[0], pts[i], pts[j]}, cand, best, kCoverDepth, hint, out) && all;
+  return all && out.complete;
+}
+
+// The line plane(f) ∩ plane(g) certainly misses every unsettled triangle of f's face (plane(g)
+// misses their boxes): it holds no point of R_f nearer than the best, so it offers nothing.
+bool line_misses_leaves(const Plane& g, const Leaves& leaves) {
+  return leaves.complete && std::all_of(leaves.boxes.begin(), leaves.boxes.end(),
+                                        [&](const Box3& b) { return plane_misses_box(g, b); });
 }
 
 Feature3 feat(FeatureKind3 k, int i) { return Feature3{k, i}; }
@@ -827,6 +861,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
   std::size_t lines = 0;
   std::vector<std::pair<I, I>> ivs_i;  // line_no_offer's scratch
   std::vector<IV3> face;               // face_covered's scratch
+  Leaves leaves;                       // face_covered's unsettled triangles of the current facet
   // Filtered tier: the class of g whose line plane(f) ∩ plane(g) was run for the current facet
   // (line_done[class] = fi): the same line from another plane of the class offers the same points
   // (x0 + λu is the same point set; planes holding the line give the same empty or unconstrained
@@ -846,9 +881,10 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
     if (!near(f.dist)) break;
     const Sum& sk = c.sums[f.sum];
     if (!near(sk.box_dist)) continue;  // f ⊂ S_k lies beyond the best
-    if (c.filt && !skip_cover && face_covered(c, fi, best, face)) {  // no point of R_f nearer than the best
+    if (c.filt && !skip_cover && face_covered(c, fi, best, face, leaves)) {  // no point of R_f nearer than the best
       if (SigmaCoverCheck::depth == 0) continue;
       ++SigmaCoverCheck::covered, checked_offers = best.offers;
+      leaves.complete = false;  // every line of the facet runs
     }
     cover.clear(), sources.clear();
     for (std::size_t p : marked) c.on_f[p] = 0;
@@ -895,6 +931,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
         const double bound2 = best.d2 ? to_interval(*best.d2).second : reach * reach * (1 + 0x1p-40);
         if (c.filt) {
           if (line_done[c.cls[gi]] == fi) continue;  // this line was run for f
+          if (!skip_cover && line_misses_leaves(g, leaves)) continue;
           const LineI L = interval_line(f, g, fi, gi);
           if (line_far(c, L, sk, sl, bound2)) continue;
           line_done[c.cls[gi]] = fi;

@@ -13,7 +13,7 @@ namespace pendepth::mesh3 {
 /// Beyond it minimum() keeps the certified bounds. Measured (docs/benchmarks.md "Exact mesh σ"):
 /// combs against an L block, CGAL's cross and star have 200–1 100 candidates in range (18–315
 /// distinct planes) and take 3–10 ms per exact σ ("Exact mesh σ: plane classes, one rounding
-/// guard"); a torus 8×4 pair has ~16 900 distinct planes over 437 sums and takes about a minute
+/// guard"); a torus 8×4 pair has ~16 900 distinct planes over 437 sums and takes half a minute
 /// even with the facet cover by unions (its ~190 facets that reach the lines are the cost), the
 /// tripod pair (beyond 1 000) half a second ("… a facet cover by unions"). 600 lets every
 /// overlapping bench pose of the combs, the cross and the star meet while keeping
