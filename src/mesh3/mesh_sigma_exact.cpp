@@ -415,13 +415,15 @@ bool line_far(const Ctx& c, const LineI& L, const Sum& sk, const Sum& sl, double
 }
 
 // Certainly: the plane n·x = c misses the box (the whole box strictly on one side).
+// (Interval_nt<false> under one rounding guard: the same enclosures.)
 bool plane_misses_box(const Plane& f, const Box3& b) {
-  I lo(0), hi(0);
+  CGAL::Protect_FPU_rounding<true> up;
+  IF lo(0), hi(0);
   for (int a = 0; a < 3; ++a) {
-    const I n = comp(f.ni, a), x = n * I(b.lo[a]), y = n * I(b.hi[a]);
-    lo = lo + I(std::min(x.inf(), y.inf())), hi = hi + I(std::max(x.sup(), y.sup()));
+    const IF n = fast(comp(f.ni, a)), x = n * IF(b.lo[a]), y = n * IF(b.hi[a]);
+    lo = lo + IF(std::min(x.inf(), y.inf())), hi = hi + IF(std::max(x.sup(), y.sup()));
   }
-  return (lo - f.ci).inf() > 0 || (hi - f.ci).sup() < 0;
+  return (lo - fast(f.ci)).inf() > 0 || (hi - fast(f.ci)).sup() < 0;
 }
 
 // Interval filter of a covering sum: true when L ∩ int S_l is certainly empty or certainly
