@@ -100,7 +100,7 @@ TEST(MeshSigmaTiers, FilteredEqualsExactSymmetricPoses) {
 
 #ifdef PENDEPTH_CGAL_MESHES
 // CGAL's sample meshes (rotated poses: the nearest points on lines between many overlapping
-// sums, where the interval line stage, the one-sum facet cover and the exact-sign fallbacks of
+// sums, where the interval line stage, the facet cover by unions and the exact-sign fallbacks of
 // nearly parallel planes decide most of the work).
 TEST(MeshSigmaTiers, FilteredEqualsExactCgalMeshes) {
   std::mt19937_64 rng(7);
