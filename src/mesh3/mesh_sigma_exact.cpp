@@ -771,15 +771,29 @@ bool triangle_covered(const Ctx& c, const std::array<IV3, 3>& t, const std::vect
   return all;
 }
 
+// The convex polygon hull(pts) (its vertices as enclosures, in any order) certainly offers no
+// point: the fan triangles from pts[0] over every pair of the others cover it, and each must be
+// covered by ∪ int S_l over `cand` or lie beyond the best (triangle_covered). `out.max`: the
+// unsettled triangles kept; `out`: their boxes (complete = false when not all were explored).
+bool polygon_covered(const Ctx& c, const std::vector<IV3>& pts, const std::vector<std::size_t>& cand, const Best& best,
+                     Leaves& out) {
+  out.boxes.clear(), out.complete = true;
+  std::size_t hint = SIZE_MAX;
+  bool all = true;
+  for (std::size_t i = 1; i < pts.size() && out.complete; ++i)
+    for (std::size_t j = i + 1; j < pts.size() && out.complete; ++j)
+      all = triangle_covered(c, {pts[0], pts[i], pts[j]}, cand, best, kCoverDepth, hint, out) && all;
+  return all && out.complete;
+}
+
 // The face f ∩ S_k certainly offers nothing: its part within the best lies in ∪ int S_l over
 // the other sums, so R_f = f ∩ S_k \ ∪ int S_l holds no point nearer than the best (the exact
 // path would offer nothing from f: its offers are points of R_f, and the best does not change
-// between this test and f's lines). The face
-// is the hull of its face_points, covered by the fan triangles from the first point over every
-// pair of the others; each triangle must be covered (triangle_covered). Sums whose box does not
-// meet the face's are left out. Cost: O(K) box tests per triangle tried, and per sum tried its
-// planes against 3 points; at most 4^kCoverDepth triangles per fan triangle (measured in
-// docs/benchmarks.md "Exact mesh σ: a facet cover by unions").
+// between this test and f's lines). The face is the hull of its face_points (polygon_covered;
+// tests/mesh3/test_union_cover.cpp checks it on constructed sets through detail::union_cover).
+// Sums whose box does not meet the face's are left out. Cost: O(K) box tests per triangle
+// tried, and per sum tried its planes against 3 points; at most 4^kCoverDepth triangles per fan
+// triangle (measured in docs/benchmarks.md "Exact mesh σ: a facet cover by unions").
 // `out`: the unsettled triangles' boxes (complete = false when not all were explored).
 bool face_covered(const Ctx& c, std::size_t fi, const Best& best, std::vector<IV3>& pts, Leaves& out) {
   out.boxes.clear(), out.complete = true;
@@ -790,12 +804,7 @@ bool face_covered(const Ctx& c, std::size_t fi, const Best& best, std::vector<IV
   for (std::size_t l = 0; l < c.sums.size(); ++l)
     if (l != c.planes[fi].sum && boxes_meet(c.sums[l].box, b)) cand.push_back(l);
   out.max = cand.size() >= kLeavesMinSums ? kMaxLeaves : 0;
-  std::size_t hint = SIZE_MAX;
-  bool all = true;
-  for (std::size_t i = 1; i < pts.size() && out.complete; ++i)
-    for (std::size_t j = i + 1; j < pts.size() && out.complete; ++j)
-      all = triangle_covered(c, {pts[0], pts[i], pts[j]}, cand, best, kCoverDepth, hint, out) && all;
-  return all && out.complete;
+  return polygon_covered(c, pts, cand, best, out);
 }
 
 // The line plane(f) ∩ plane(g) certainly misses every unsettled triangle of f's face (plane(g)
@@ -808,6 +817,38 @@ bool line_misses_leaves(const Plane& g, const Leaves& leaves) {
 Feature3 feat(FeatureKind3 k, int i) { return Feature3{k, i}; }
 
 }  // namespace
+
+namespace detail {
+
+// The sets as sums without pieces (a Ctx on an empty MeshPair: the cover reads only the sums'
+// boxes and their planes' enclosures, here the exact doubles), no best yet (beyond = past reach2).
+CoverResult union_cover(const std::vector<OpenConvex>& sets, const std::vector<Vec3>& polygon, double reach2,
+                        bool keep_leaves) {
+  static const MeshPair none{};
+  Ctx c{none, Placed{}, {}, {}, true, false, {}, {}, {}};
+  for (const OpenConvex& o : sets) {
+    Sum s;
+    s.first = c.planes.size(), s.count = o.planes.size(), s.box = o.box;
+    for (const auto& [n, d] : o.planes) c.planes.push_back(Plane{lift<I>(n), I(d), 0, c.sums.size(), {}});
+    c.sums.push_back(s);
+  }
+  std::vector<IV3> pts;
+  for (const Vec3& v : polygon) pts.push_back(lift<I>(v));
+  const Box3 b = box_of(pts.data(), pts.size());
+  std::vector<std::size_t> cand;
+  for (std::size_t l = 0; l < c.sums.size(); ++l)
+    if (boxes_meet(c.sums[l].box, b)) cand.push_back(l);
+  Best best{};
+  best.radius = std::sqrt(reach2), best.sup2 = reach2;
+  Leaves out;
+  out.max = keep_leaves ? kMaxLeaves : 0;
+  CoverResult r;
+  r.covered = polygon_covered(c, pts, cand, best, out);
+  r.leaves = std::move(out.boxes), r.complete = out.complete;
+  return r;
+}
+
+}  // namespace detail
 
 std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, double upper,
                                     std::size_t max_facets, bool skip_cover) {

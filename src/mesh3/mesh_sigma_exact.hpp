@@ -5,6 +5,8 @@
 #include "mesh3/mesh_pair.hpp"
 
 #include <optional>
+#include <utility>
+#include <vector>
 
 namespace pendepth::mesh3 {
 
@@ -51,6 +53,28 @@ struct SigmaCoverCheck {
   SigmaCoverCheck(const SigmaCoverCheck&) = delete;
   SigmaCoverCheck& operator=(const SigmaCoverCheck&) = delete;
 };
+
+namespace detail {
+
+/// Tests only: the union cover of the filtered tier (mesh_sigma_exact.cpp: polygon_covered, the
+/// fan and midpoint subdivision that face_covered runs on a facet's face) on given sets.
+/// OpenConvex: the open set {x : n·x < c for every plane (n, c)}, inside `box`.
+struct OpenConvex {
+  std::vector<std::pair<Vec3, double>> planes;
+  Box3 box;
+};
+/// `covered`: every point of hull(polygon) at squared distance <= reach2 from 0 is certainly in
+/// some open set. `leaves` (kept when keep_leaves, up to the cover's limit; `complete` false
+/// beyond it or when not kept): boxes of the unsettled triangles — with the settled ones they
+/// cover the polygon.
+struct CoverResult {
+  bool covered = false, complete = true;
+  std::vector<Box3> leaves;
+};
+CoverResult union_cover(const std::vector<OpenConvex>& sets, const std::vector<Vec3>& polygon, double reach2,
+                        bool keep_leaves);
+
+}  // namespace detail
 
 std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, double upper,
                                     std::size_t max_facets = kExactSigmaMaxFacets, bool skip_cover = false);
