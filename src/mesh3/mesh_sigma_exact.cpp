@@ -36,8 +36,13 @@
 // SigmaExactUnfiltered guard every decision is exact and those prunes are off: the reference the
 // filtered tier must equal bit for bit (tests/mesh3/test_mesh_sigma_tiers.cpp).
 // Filtered tier, further (both decide nothing the exact path would not): a facet whose face
-// f ∩ S_k lies in the open S_l of one other sum (face_inside_one_sum: enclosures of a superset
-// of the face's vertices, each certainly strictly inside) has R_f = ∅ and is skipped; a line is
+// f ∩ S_k, within the best, lies in the union of the other open sums (face_covered: the face's
+// vertices as enclosures, ties decided exactly; fan triangles, each certainly strictly inside one
+// open sum, or beyond the best, or split at its midpoints into four, kCoverDepth levels) has no
+// point of R_f nearer than the best and is skipped — a seam where two sums meet is in neither
+// open sum, so it is covered only when a third sum holds it strictly; when it is not covered,
+// its unsettled triangles (boxes) hold R_f ∩ B(0, best), and a line whose plane g certainly
+// misses them all is not run (line_misses_leaves); a line is
 // first run on enclosures (line_no_offer: its segment in S_k, the covering intervals, every
 // candidate certainly covered or certainly beyond the best), signs of n·u near 0 (planes nearly
 // parallel to the line: rounding in symmetric meshes) taken exactly, a plane equal to g's
@@ -57,11 +62,10 @@
 // Cost: for F facets in range and K sums, O(F) projections of O(K·f̄) tests each, and up to
 // O(F²) lines of O(K·f̄ + K²) each in the worst case (f̄ = facets per sum); in practice the
 // projections settle most facets. Measured (docs/benchmarks.md "Exact mesh σ: interval planes,
-// one-sum facet cover", "… a plane number type", "… plane classes, one rounding guard"): the
-// tripod pair takes ~1 200 facets and half a minute, the tori are still beyond reach — their
-// facets near 0 are covered by unions of several sums and nearly coplanar planes (rounded
-// symmetric meshes) send lines to the exact stage: ~7 000 lines tried and a few hundred exact
-// lines per facet, each over ~300 covering sums.
+// one-sum facet cover", "… a plane number type", "… plane classes, one rounding guard", "… a
+// facet cover by unions"): with the union cover the tripod pair takes ~2 000 facets (2 reach the
+// lines) and 0.4 s; a torus 8×4 pair ~8 900 facets (~190 reach the lines, fewer of their lines
+// run: those through unsettled triangles) and half a minute.
 #include "mesh3/mesh_sigma_exact.hpp"
 
 #include "convex3/minkowski_facets.hpp"
@@ -75,6 +79,7 @@
 #include <CGAL/Uncertain.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -410,13 +415,15 @@ bool line_far(const Ctx& c, const LineI& L, const Sum& sk, const Sum& sl, double
 }
 
 // Certainly: the plane n·x = c misses the box (the whole box strictly on one side).
+// (Interval_nt<false> under one rounding guard: the same enclosures.)
 bool plane_misses_box(const Plane& f, const Box3& b) {
-  I lo(0), hi(0);
+  CGAL::Protect_FPU_rounding<true> up;
+  IF lo(0), hi(0);
   for (int a = 0; a < 3; ++a) {
-    const I n = comp(f.ni, a), x = n * I(b.lo[a]), y = n * I(b.hi[a]);
-    lo = lo + I(std::min(x.inf(), y.inf())), hi = hi + I(std::max(x.sup(), y.sup()));
+    const IF n = fast(comp(f.ni, a)), x = n * IF(b.lo[a]), y = n * IF(b.hi[a]);
+    lo = lo + IF(std::min(x.inf(), y.inf())), hi = hi + IF(std::max(x.sup(), y.sup()));
   }
-  return (lo - f.ci).inf() > 0 || (hi - f.ci).sup() < 0;
+  return (lo - fast(f.ci)).inf() > 0 || (hi - fast(f.ci)).sup() < 0;
 }
 
 // Interval filter of a covering sum: true when L ∩ int S_l is certainly empty or certainly
@@ -443,6 +450,7 @@ struct Best {
   double radius;  // >= √d2 (or the search radius U), for the double prunes
   FT cap2;        // reach², exact
   double sup2;    // >= *d2, or >= cap2 without a best
+  std::size_t offers = 0;  // points accepted so far (SigmaCoverCheck)
   // A point at squared distance e2 is no improvement: not nearer than the best, or beyond the cap.
   bool beyond(const FT& e2) const { return d2 ? !(e2 < *d2) : e2 > cap2; }
   // The same, certain on an enclosure of e2.
@@ -451,7 +459,7 @@ struct Best {
 
 void offer(Best& b, const FT& d2, const V3& x, std::size_t plane) {
   if (b.beyond(d2)) return;
-  b.d2 = d2, b.x = x, b.plane = plane, b.sup2 = to_interval(d2).second;
+  b.d2 = d2, b.x = x, b.plane = plane, b.sup2 = to_interval(d2).second, ++b.offers;
   b.radius = std::min(b.radius, std::sqrt(to_double(d2)) * (1 + 0x1p-40) + 0x1p-1000);
 }
 
@@ -608,10 +616,28 @@ bool line_interval(const Ctx& c, const Sum& s, const LineI& L, bool strict, std:
   return detail::lambda_interval(cs, s.first, s.count, strict, c.filt, lo, hi);
 }
 
-// Enclosures of a superset of the vertices of the face f ∩ S_k = F_P(n) ⊕ −F_Q'(n) (n = f's
-// normal, S_k = P_i ⊕ −Q'_j, f a supporting plane): p − q' for every vertex p of P_i that may
-// maximise n·p and every q of Q_j that may minimise n·q' (interval comparisons against the
-// certain bounds: no vertex of either face is left out). Their hull contains the face.
+// Of the candidates `idx` (those whose enclosure may attain the extremum), keeps the ones whose
+// exact value (value(i), exact) is the maximum (`max`) or the minimum: the ties the intervals
+// cannot split (faces coplanar up to rounding, e.g. a mesh's planar quads split in two triangles)
+// are decided exactly, so a face keeps its true vertices only.
+template <class Value>
+void keep_extreme(std::vector<std::size_t>& idx, bool max, Value value) {
+  if (idx.size() < 2) return;
+  std::vector<FT> v;
+  for (std::size_t i : idx) v.push_back(value(i));
+  FT best = v[0];
+  for (const FT& x : v)
+    if (max ? x > best : x < best) best = x;
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < idx.size(); ++i)
+    if (v[i] == best) idx[k++] = idx[i];
+  idx.resize(k);
+}
+
+// Enclosures of the vertices of the face f ∩ S_k = F_P(n) ⊕ −F_Q'(n) (n = f's normal,
+// S_k = P_i ⊕ −Q'_j, f a supporting plane): p − q' for every vertex p of P_i maximising n·p and
+// every q of Q_j minimising n·q' (interval comparisons against the certain bounds first, the
+// remaining ties exactly: keep_extreme). Their hull is the face.
 void face_points(const Ctx& c, std::size_t fi, std::vector<IV3>& pts) {
   const Plane& f = c.planes[fi];
   const Sum& s = c.sums[f.sum];
@@ -627,45 +653,202 @@ void face_points(const Ctx& c, std::size_t fi, std::vector<IV3>& pts) {
     qs.push_back(placed<I>(c.pl, v)), hq.push_back(dot(f.ni, qs.back()));
     minq = std::min(minq, hq.back().sup());
   }
-  pts.clear();
+  std::vector<std::size_t> A, B;
   for (std::size_t a = 0; a < ps.size(); ++a)
-    if (hp[a].sup() >= maxp)
-      for (std::size_t b = 0; b < qs.size(); ++b)
-        if (hq[b].inf() <= minq) pts.push_back(ps[a] - qs[b]);
+    if (hp[a].sup() >= maxp) A.push_back(a);
+  for (std::size_t b = 0; b < qs.size(); ++b)
+    if (hq[b].inf() <= minq) B.push_back(b);
+  const V3& n = exact_plane(c, fi).n;
+  keep_extreme(A, true, [&](std::size_t a) { return dot(n, lift<FT>(P.v[a])); });
+  keep_extreme(B, false, [&](std::size_t b) { return dot(n, placed<FT>(c.pl, Q.v[b])); });
+  pts.clear();
+  for (std::size_t a : A)
+    for (std::size_t b : B) pts.push_back(ps[a] - qs[b]);
 }
 
-// The face f ∩ S_k certainly lies in the open S_l of one other sum: then R_f = f ∩ S_k \ ∪ int
-// S_l is empty and f holds no point of Oᶜ (the exact path would offer nothing from f). Checks
-// the face_points against S_l's planes (strictly inside, certain) — the hull of points of a
-// convex open set lies in it. Sums whose box does not certainly hold the points are skipped.
-// O(K·f̄·v) interval operations at worst (v face points, usually 3–4), most sums rejected by
-// their box or their first planes.
-bool face_inside_one_sum(const Ctx& c, std::size_t fi, std::vector<IV3>& pts) {
-  face_points(c, fi, pts);
-  Box3 b{Vec3::Constant(INFINITY), Vec3::Constant(-INFINITY)};
-  for (const IV3& x : pts)
-    for (int a = 0; a < 3; ++a)
-      b.lo[a] = std::min(b.lo[a], comp(x, a).inf()), b.hi[a] = std::max(b.hi[a], comp(x, a).sup());
-  for (std::size_t l = 0; l < c.sums.size(); ++l) {
-    const Sum& s = c.sums[l];
-    if (l == c.planes[fi].sum || !(s.box.lo.array() < b.lo.array()).all() || !(b.hi.array() < s.box.hi.array()).all())
-      continue;
-    bool inside = true;
-    for (std::size_t p = s.first; p < s.first + s.count && inside; ++p)
-      for (const IV3& x : pts)
-        if (!((dot(c.planes[p].ni, x) - c.planes[p].ci).sup() < 0)) {
-          inside = false;
-          break;
-        }
-    if (inside) return true;
+// An enclosure of the squared distance from 0 to the box b (IF: the caller holds the rounding
+// guard).
+I box_distance2(const Box3& b) {
+  IF d2(0);
+  for (int a = 0; a < 3; ++a) {
+    const double g = b.lo[a] > 0 ? b.lo[a] : b.hi[a] < 0 ? -b.hi[a] : 0.0;
+    d2 += IF(g) * IF(g);
   }
+  return safe(d2);
+}
+
+// A box holding the enclosures `pts`.
+Box3 box_of(const IV3* pts, std::size_t n) {
+  Box3 b{Vec3::Constant(INFINITY), Vec3::Constant(-INFINITY)};
+  for (std::size_t i = 0; i < n; ++i)
+    for (int a = 0; a < 3; ++a)
+      b.lo[a] = std::min(b.lo[a], comp(pts[i], a).inf()), b.hi[a] = std::max(b.hi[a], comp(pts[i], a).sup());
+  return b;
+}
+
+// The enclosures t certainly lie in the open S (each strictly inside every plane): then their
+// hull does (S open and convex). IF: the caller holds the rounding guard.
+bool strictly_inside(const Ctx& c, const Sum& s, const std::array<IV3, 3>& t) {
+  for (std::size_t p = s.first; p < s.first + s.count; ++p)
+    for (const IV3& x : t)
+      if (!((dotf(c.planes[p].ni, x) - fast(c.planes[p].ci)).sup() < 0)) return false;
+  return true;
+}
+
+// The enclosure x certainly lies outside the open S (on or beyond one of its planes). IF: the
+// caller holds the rounding guard.
+bool certainly_outside(const Ctx& c, const Sum& s, const IV3& x) {
+  for (int a = 0; a < 3; ++a)
+    if (comp(x, a).sup() <= s.box.lo[a] || comp(x, a).inf() >= s.box.hi[a]) return true;
+  for (std::size_t p = s.first; p < s.first + s.count; ++p)
+    if ((dotf(c.planes[p].ni, x) - fast(c.planes[p].ci)).inf() >= 0) return true;
   return false;
 }
 
+// Depth of the subdivision in face_covered (each level splits a triangle into 4 at its edge
+// midpoints): a face whose union cover needs finer pieces goes to the line stage.
+constexpr int kCoverDepth = 4;
+
+// The triangle of enclosures t (its hull, a superset of the true triangle) certainly offers no
+// point: it lies beyond the best (Best::beyond on its box's distance), or in
+// ∪ int S_l over the sums `cand` (those whose box meets it): in one of them whole, or, down to
+// `depth` more levels, each of its four midpoint sub-triangles (midpoints as enclosures of the
+// exact midpoints: the four hulls cover the true triangle). Only strict, certain inclusions
+// count, so a point on a seam where two sums meet (in neither open sum) is never covered unless
+// a third sum holds it in its interior. `hint`: the sum tried first (the one found last).
+// The triangles left unsettled (boxes of their hulls): with the settled ones they cover the face,
+// so R_f ∩ B(0, best) lies in their union. `complete` false: exploration stopped at `max`.
+struct Leaves {
+  std::vector<Box3> boxes;
+  bool complete = true;
+  std::size_t max = 0;
+};
+// At most kMaxLeaves unsettled triangles are kept, and only for faces that kLeavesMinSums other
+// sums' boxes meet (the line stage's cost grows with them; below, the first unsettled triangle
+// ends the cover test as the one-sum test did: the full exploration cost 8–23 % on the combs and
+// the cross, docs/benchmarks.md "Exact mesh σ: a facet cover by unions").
+constexpr std::size_t kMaxLeaves = 64, kLeavesMinSums = 32;
+
+bool triangle_covered(const Ctx& c, const std::array<IV3, 3>& t, const std::vector<std::size_t>& cand,
+                      const Best& best, int depth, std::size_t& hint, Leaves& out) {
+  CGAL::Protect_FPU_rounding<true> up;  // IF arithmetic below
+  const Box3 b = box_of(t.data(), 3);
+  if (best.beyond(box_distance2(b))) return true;  // every point is beyond the best: no offer
+  auto holds = [&](std::size_t l) {
+    const Sum& s = c.sums[l];
+    return (s.box.lo.array() < b.lo.array()).all() && (b.hi.array() < s.box.hi.array()).all() &&
+           strictly_inside(c, s, t);
+  };
+  if (hint < c.sums.size() && holds(hint)) return true;
+  for (std::size_t l : cand)
+    if (l != hint && holds(l)) return hint = l, true;
+  auto leaf = [&] {
+    if (out.boxes.size() >= out.max) out.complete = false;
+    else out.boxes.push_back(b);
+    return false;
+  };
+  if (depth == 0) return leaf();
+  // A vertex certainly in no open sum and not certainly beyond the best may be a point of R_f:
+  // stop here (the lines decide) rather than subdivide around it.
+  for (const IV3& x : t)
+    if (!best.beyond(safe(dotf(x, x))) && std::all_of(cand.begin(), cand.end(), [&](std::size_t l) { return certainly_outside(c, c.sums[l], x); }))
+      return leaf();
+  std::vector<std::size_t> sub;  // the sums whose box meets t's: only they can hold a part of it
+  for (std::size_t l : cand)
+    if (boxes_meet(c.sums[l].box, b)) sub.push_back(l);
+  if (sub.size() < 2) return leaf();  // one sum does not hold t: its parts would not be covered either
+  auto mid = [&](const IV3& x, const IV3& y) {
+    return IV3{safe(IF(0.5) * (fast(x.x) + fast(y.x))), safe(IF(0.5) * (fast(x.y) + fast(y.y))),
+               safe(IF(0.5) * (fast(x.z) + fast(y.z)))};
+  };
+  const IV3 m01 = mid(t[0], t[1]), m12 = mid(t[1], t[2]), m20 = mid(t[2], t[0]);
+  bool all = true;
+  for (const std::array<IV3, 3>& q : {std::array<IV3, 3>{t[0], m01, m20}, std::array<IV3, 3>{m01, t[1], m12},
+                                      std::array<IV3, 3>{m20, m12, t[2]}, std::array<IV3, 3>{m01, m12, m20}}) {
+    all = triangle_covered(c, q, sub, best, depth - 1, hint, out) && all;
+    if (!out.complete) return false;
+  }
+  return all;
+}
+
+// The convex polygon hull(pts) (its vertices as enclosures, in any order) certainly offers no
+// point: the fan triangles from pts[0] over every pair of the others cover it, and each must be
+// covered by ∪ int S_l over `cand` or lie beyond the best (triangle_covered). `out.max`: the
+// unsettled triangles kept; `out`: their boxes (complete = false when not all were explored).
+bool polygon_covered(const Ctx& c, const std::vector<IV3>& pts, const std::vector<std::size_t>& cand, const Best& best,
+                     Leaves& out) {
+  out.boxes.clear(), out.complete = true;
+  std::size_t hint = SIZE_MAX;
+  bool all = true;
+  for (std::size_t i = 1; i < pts.size() && out.complete; ++i)
+    for (std::size_t j = i + 1; j < pts.size() && out.complete; ++j)
+      all = triangle_covered(c, {pts[0], pts[i], pts[j]}, cand, best, kCoverDepth, hint, out) && all;
+  return all && out.complete;
+}
+
+// The face f ∩ S_k certainly offers nothing: its part within the best lies in ∪ int S_l over
+// the other sums, so R_f = f ∩ S_k \ ∪ int S_l holds no point nearer than the best (the exact
+// path would offer nothing from f: its offers are points of R_f, and the best does not change
+// between this test and f's lines). The face is the hull of its face_points (polygon_covered;
+// tests/mesh3/test_union_cover.cpp checks it on constructed sets through detail::union_cover).
+// Sums whose box does not meet the face's are left out. Cost: O(K) box tests per triangle
+// tried, and per sum tried its planes against 3 points; at most 4^kCoverDepth triangles per fan
+// triangle (measured in docs/benchmarks.md "Exact mesh σ: a facet cover by unions").
+// `out`: the unsettled triangles' boxes (complete = false when not all were explored).
+bool face_covered(const Ctx& c, std::size_t fi, const Best& best, std::vector<IV3>& pts, Leaves& out) {
+  out.boxes.clear(), out.complete = true;
+  face_points(c, fi, pts);
+  if (pts.size() < 3 || pts.size() > 32) return out.complete = false;
+  const Box3 b = box_of(pts.data(), pts.size());
+  std::vector<std::size_t> cand;
+  for (std::size_t l = 0; l < c.sums.size(); ++l)
+    if (l != c.planes[fi].sum && boxes_meet(c.sums[l].box, b)) cand.push_back(l);
+  out.max = cand.size() >= kLeavesMinSums ? kMaxLeaves : 0;
+  return polygon_covered(c, pts, cand, best, out);
+}
+
+// The line plane(f) ∩ plane(g) certainly misses every unsettled triangle of f's face (plane(g)
+// misses their boxes): it holds no point of R_f nearer than the best, so it offers nothing.
+bool line_misses_leaves(const Plane& g, const Leaves& leaves) {
+  return leaves.complete && std::all_of(leaves.boxes.begin(), leaves.boxes.end(),
+                                        [&](const Box3& b) { return plane_misses_box(g, b); });
+}
 
 Feature3 feat(FeatureKind3 k, int i) { return Feature3{k, i}; }
 
 }  // namespace
+
+namespace detail {
+
+// The sets as sums without pieces (a Ctx on an empty MeshPair: the cover reads only the sums'
+// boxes and their planes' enclosures, here the exact doubles), no best yet (beyond = past reach2).
+CoverResult union_cover(const std::vector<OpenConvex>& sets, const std::vector<Vec3>& polygon, double reach2,
+                        bool keep_leaves) {
+  static const MeshPair none{};
+  Ctx c{none, Placed{}, {}, {}, true, false, {}, {}, {}};
+  for (const OpenConvex& o : sets) {
+    Sum s;
+    s.first = c.planes.size(), s.count = o.planes.size(), s.box = o.box;
+    for (const auto& [n, d] : o.planes) c.planes.push_back(Plane{lift<I>(n), I(d), 0, c.sums.size(), {}});
+    c.sums.push_back(s);
+  }
+  std::vector<IV3> pts;
+  for (const Vec3& v : polygon) pts.push_back(lift<I>(v));
+  const Box3 b = box_of(pts.data(), pts.size());
+  std::vector<std::size_t> cand;
+  for (std::size_t l = 0; l < c.sums.size(); ++l)
+    if (boxes_meet(c.sums[l].box, b)) cand.push_back(l);
+  Best best{};
+  best.radius = std::sqrt(reach2), best.sup2 = reach2;
+  Leaves out;
+  out.max = keep_leaves ? kMaxLeaves : 0;
+  CoverResult r;
+  r.covered = polygon_covered(c, pts, cand, best, out);
+  r.leaves = std::move(out.boxes), r.complete = out.complete;
+  return r;
+}
+
+}  // namespace detail
 
 std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, double upper,
                                     std::size_t max_facets, bool skip_cover) {
@@ -720,19 +903,32 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
   c.on_f.assign(c.planes.size(), 0);
   std::size_t lines = 0;
   std::vector<std::pair<I, I>> ivs_i;  // line_no_offer's scratch
-  std::vector<IV3> face;               // face_inside_one_sum's scratch
+  std::vector<IV3> face;               // face_covered's scratch
+  Leaves leaves;                       // face_covered's unsettled triangles of the current facet
   // Filtered tier: the class of g whose line plane(f) ∩ plane(g) was run for the current facet
   // (line_done[class] = fi): the same line from another plane of the class offers the same points
   // (x0 + λu is the same point set; planes holding the line give the same empty or unconstrained
   // intervals as g, exactly), and the best only decreases, so it is not run again.
   std::vector<std::size_t> line_done;
   if (c.filt) plane_classes(c, order), line_done.assign(c.planes.size(), SIZE_MAX);
+  // SigmaCoverCheck (tests): a facet found covered is processed anyway; an offer from it is a
+  // violation (checked when the next facet starts and after the loop).
+  std::size_t checked_offers = SIZE_MAX;  // best.offers when the last covered facet started
+  auto check_cover = [&] {
+    if (checked_offers != SIZE_MAX && best.offers != checked_offers) ++SigmaCoverCheck::violations;
+    checked_offers = SIZE_MAX;
+  };
   for (std::size_t fi : order) {
+    check_cover();
     const Plane& f = c.planes[fi];
     if (!near(f.dist)) break;
     const Sum& sk = c.sums[f.sum];
     if (!near(sk.box_dist)) continue;  // f ⊂ S_k lies beyond the best
-    if (c.filt && !skip_cover && face_inside_one_sum(c, fi, face)) continue;  // R_f = ∅
+    if (c.filt && !skip_cover && face_covered(c, fi, best, face, leaves)) {  // no point of R_f nearer than the best
+      if (SigmaCoverCheck::depth == 0) continue;
+      ++SigmaCoverCheck::covered, checked_offers = best.offers;
+      leaves.complete = false;  // every line of the facet runs
+    }
     cover.clear(), sources.clear();
     for (std::size_t p : marked) c.on_f[p] = 0;
     marked.clear();
@@ -778,6 +974,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
         const double bound2 = best.d2 ? to_interval(*best.d2).second : reach * reach * (1 + 0x1p-40);
         if (c.filt) {
           if (line_done[c.cls[gi]] == fi) continue;  // this line was run for f
+          if (!skip_cover && line_misses_leaves(g, leaves)) continue;
           const LineI L = interval_line(f, g, fi, gi);
           if (line_far(c, L, sk, sl, bound2)) continue;
           line_done[c.cls[gi]] = fi;
@@ -830,6 +1027,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
       }
     }
   }
+  check_cover();
   // No point of Oᶜ within `upper`: it was not an upper bound (a caller's bug): no answer.
   if (!best.d2 || *best.d2 > FT(reach) * FT(reach)) return std::nullopt;
 

@@ -5,6 +5,8 @@
 #include "mesh3/mesh_pair.hpp"
 
 #include <optional>
+#include <utility>
+#include <vector>
 
 namespace pendepth::mesh3 {
 
@@ -13,8 +15,9 @@ namespace pendepth::mesh3 {
 /// Beyond it minimum() keeps the certified bounds. Measured (docs/benchmarks.md "Exact mesh σ"):
 /// combs against an L block, CGAL's cross and star have 200–1 100 candidates in range (18–315
 /// distinct planes) and take 3–10 ms per exact σ ("Exact mesh σ: plane classes, one rounding
-/// guard"); a torus 8×4 pair has ~16 900 distinct planes over 437 sums and still takes minutes
-/// (the count of lines, not the numbers, is its cost), the tripod pair is beyond 1 000. 600 lets every
+/// guard"); a torus 8×4 pair has ~16 900 distinct planes over 437 sums and takes half a minute
+/// even with the facet cover by unions (its ~190 facets that reach the lines are the cost), the
+/// tripod pair (beyond 1 000) half a second ("… a facet cover by unions"). 600 lets every
 /// overlapping bench pose of the combs, the cross and the star meet while keeping
 /// tests/mesh3's CGAL sample-mesh properties at ~10 s.
 inline constexpr std::size_t kExactSigmaMaxFacets = 600;
@@ -37,6 +40,41 @@ struct SigmaExactUnfiltered {
   SigmaExactUnfiltered(const SigmaExactUnfiltered&) = delete;
   SigmaExactUnfiltered& operator=(const SigmaExactUnfiltered&) = delete;
 };
+
+/// Tests only: while a SigmaCoverCheck is alive on this thread, the filtered tier processes the
+/// facets its union cover (mesh_sigma_exact.cpp, face_covered) would skip and counts in
+/// `covered` those facets and in `violations` those that offered a point nonetheless (a cover
+/// that is not one: must stay 0).
+struct SigmaCoverCheck {
+  static inline thread_local int depth = 0;
+  static inline thread_local std::size_t covered = 0, violations = 0;
+  SigmaCoverCheck() { ++depth; }
+  ~SigmaCoverCheck() { --depth; }
+  SigmaCoverCheck(const SigmaCoverCheck&) = delete;
+  SigmaCoverCheck& operator=(const SigmaCoverCheck&) = delete;
+};
+
+namespace detail {
+
+/// Tests only: the union cover of the filtered tier (mesh_sigma_exact.cpp: polygon_covered, the
+/// fan and midpoint subdivision that face_covered runs on a facet's face) on given sets.
+/// OpenConvex: the open set {x : n·x < c for every plane (n, c)}, inside `box`.
+struct OpenConvex {
+  std::vector<std::pair<Vec3, double>> planes;
+  Box3 box;
+};
+/// `covered`: every point of hull(polygon) at squared distance <= reach2 from 0 is certainly in
+/// some open set. `leaves` (kept when keep_leaves, up to the cover's limit; `complete` false
+/// beyond it or when not kept): boxes of the unsettled triangles — with the settled ones they
+/// cover the polygon.
+struct CoverResult {
+  bool covered = false, complete = true;
+  std::vector<Box3> leaves;
+};
+CoverResult union_cover(const std::vector<OpenConvex>& sets, const std::vector<Vec3>& polygon, double reach2,
+                        bool keep_leaves);
+
+}  // namespace detail
 
 std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, double upper,
                                     std::size_t max_facets = kExactSigmaMaxFacets, bool skip_cover = false);

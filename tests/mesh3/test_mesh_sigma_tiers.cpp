@@ -100,7 +100,7 @@ TEST(MeshSigmaTiers, FilteredEqualsExactSymmetricPoses) {
 
 #ifdef PENDEPTH_CGAL_MESHES
 // CGAL's sample meshes (rotated poses: the nearest points on lines between many overlapping
-// sums, where the interval line stage, the one-sum facet cover and the exact-sign fallbacks of
+// sums, where the interval line stage, the facet cover by unions and the exact-sign fallbacks of
 // nearly parallel planes decide most of the work).
 TEST(MeshSigmaTiers, FilteredEqualsExactCgalMeshes) {
   std::mt19937_64 rng(7);
@@ -113,6 +113,59 @@ TEST(MeshSigmaTiers, FilteredEqualsExactCgalMeshes) {
   EXPECT_GE(n, 4);
 }
 #endif
+
+// The union cover (face_covered: a facet whose face, within the best, lies in the union of the
+// other open sums is skipped) against the exact path itself: under a SigmaCoverCheck the skipped
+// facets are processed anyway, and none may offer a point (an offer is a point of R_f nearer
+// than the best: the facet was not covered). Poses where the cover does work (`covered` > 0):
+// rotated comb–cup, axis-aligned comb–L on the half-integer grid (seams: exact fits where two
+// sums meet and no third covers), CGAL's cross and star. Returns (covered, violations).
+std::pair<std::size_t, std::size_t> check_cover(const Shape3& sp, const Shape3& sq, std::mt19937_64& rng, int poses,
+                                                double spread, bool axis_aligned) {
+  std::uniform_real_distribution<double> U(-1, 1);
+  const mesh3::MeshPair m = direct(sp, sq);
+  const Pair3 pair(sp, sq);
+  mesh3::SigmaCoverCheck check;
+  mesh3::SigmaCoverCheck::covered = mesh3::SigmaCoverCheck::violations = 0;
+  for (int k = 0; k < poses; ++k) {
+    Pose3 pp, pq;
+    if (axis_aligned) {
+      pq = Pose3(Vec3((2 * Vec3(spread * U(rng), spread * U(rng), spread * U(rng))).array().round() / 2));
+    } else {
+      const Eigen::Quaterniond rq(U(rng), U(rng), U(rng), U(rng)), rp(U(rng), U(rng), U(rng), U(rng));
+      pp = Pose3(rp, Vec3(0.1 * U(rng), 0.1 * U(rng), 0.1 * U(rng)));
+      pq = Pose3(rq, Vec3(spread * U(rng), spread * U(rng), spread * U(rng)));
+    }
+    if (!pair.overlapping(pp, pq)) continue;
+    Depth3 old;
+    {
+      mesh3::SigmaBoundsOnly bounds_only;
+      old = mesh3::minimum(m, pp, pq);
+    }
+    EXPECT_TRUE(mesh3::exact_minimum(m, pp, pq, old.upper_bound, kNoLimit).has_value()) << k;
+  }
+  return {mesh3::SigmaCoverCheck::covered, mesh3::SigmaCoverCheck::violations};
+}
+
+TEST(MeshSigmaCover, CoveredFacetsOfferNothing) {
+  std::mt19937_64 rng(202);
+  const Shape3 comb3 = mesh_shape(polycube(comb(3)), "comb"), cup2 = mesh_shape(polycube(cup(2)), "cup");
+  const Shape3 comb4 = mesh_shape(polycube(comb(4)), "comb4"), l = mesh_shape(polycube(l_block()), "L");
+  for (const auto& [name, r] : {std::pair{"comb3-cup2 rotated", check_cover(comb3, cup2, rng, 16, 1.5, false)},
+                                std::pair{"comb4-L seams", check_cover(comb4, l, rng, 64, 2.5, true)}}) {
+    EXPECT_GE(r.first, 5u) << name;
+    EXPECT_EQ(r.second, 0u) << name << ": " << r.first << " covered";
+  }
+#ifdef PENDEPTH_CGAL_MESHES
+  for (const char* name : {"cross.off", "star.off"}) {
+    const std::string file = std::string(PENDEPTH_CGAL_MESHES) + "/" + name;
+    const Shape3 s = Shape3::from_mesh(Mesh3::validate(io::read_mesh(file), name));
+    const auto [covered, violations] = check_cover(s, s, rng, 4, 0.3, false);
+    EXPECT_GE(covered, 5u) << name;
+    EXPECT_EQ(violations, 0u) << name << ": " << covered << " covered";
+  }
+#endif
+}
 
 // The planted bug in the filtered tier must make the comparison fail.
 TEST(MeshSigmaTiers, PlantedFilterBugIsCaught) {
