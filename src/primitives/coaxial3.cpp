@@ -71,6 +71,15 @@ double root(double a, int dir) {  // a: a bound of a value >= 0 (a lower bound m
 // |(a, b)| rounded in direction dir.
 double hypot_dir(double a, double b, int dir) { return root(add(mul(a, a, dir), mul(b, b, dir), dir), dir); }
 
+// a / b (b > 0) rounded in direction dir: q·b − a has the sign of q − a/b.
+double quot(double a, double b, int dir) {
+  const double q = a / b;
+  if (std::abs(q) < kTiny && a != 0) return dir < 0 ? next_dn(q) : next_up(q);
+  const double e = std::fma(q, b, -a);
+  if (e == 0) return q;
+  return dir < 0 ? (e > 0 ? next_dn(q) : q) : (e < 0 ? next_up(q) : q);
+}
+
 // D(a, b) (see the header comment), rounded in direction dir; monotone, so bounds map to bounds.
 double core_distance(double a, double b, int dir) {
   if (a <= 0 && b <= 0) return std::max(a, b);
@@ -208,6 +217,193 @@ CoaxialSd coaxial_signed_distance(const CoaxialSum& K, const Vec3& q) {
     out.normal = n.normalized();
   }
   return out;
+}
+
+
+// ---- The tilted ring: a second-order lower bound of σ (near_coaxial_lower) --------------------
+//
+// Why. With Q tilted by ε the tilt bound |h_M − h_{K−t}| <= tilt ≈ ε·ρ_C is first order, and EPA's
+// inner polytope needs ~13–18·√(σ/ε) supports to resolve the ring of almost-nearest side
+// directions (docs/benchmarks.md "Long EPA runs"). But h_M is explicit, and at a centred placement
+// σ does not move at first order (the side direction orthogonal to both axes keeps h_M = σ_K):
+// a certified minimisation of h_M over the unit sphere, in three regions, closes the bracket.
+//
+// Notation (P's frame). Every size is replaced by its lower end (a smaller component gives a
+// smaller M, so a lower bound of its h is one of h_M). For unit u: s = u_z, ρ = |u_xy| = √(1 − s²),
+// v = R̃ᵀu (Q's frame; |v| ∈ [m, m̄], the bounds of R̃'s singular values, `stretch`), w = v_z =
+// ⟨a, u⟩ with a = R̃e_z (the double R̃'s third column). Then, exactly,
+//   h_M(u) = R_P ρ + H_P|s| + r_P + R_Q|v_xy| + H_Q|w| + r_Q|v| − ⟨t, u⟩,  |v_xy| = √(|v|² − w²).
+// Chord: on [0, b] (b < 1) the concave √(1 − x²) lies above its chord: √(1 − x²) >= 1 − k(b)·x,
+// k(b) = b / (1 + √(1 − b²)), increasing in b (so an upper bound of b and of k keeps it true);
+// scaled: √(c² − x²) >= c − k(b)·x for 0 <= x <= b·c.
+// Cover: every unit u has |s| <= β (the side band S), or ρ <= β (the caps C), or both > β (T).
+// S: ρ >= 1 − k(β)|s|. |w| <= |s| + |⟨a − ±e_z, u⟩| <= β + τ (τ >= |a ∓ e_z|), so with
+//    b_w >= (β + τ)/m: |v_xy| >= √(m² − w²) >= m − k(b_w)|w|, and r_Q|v| >= r_Q·m. Hence
+//      h_M(u) >= C_S + α|s| + γ|w| − ⟨t, u⟩,  C_S = R_P + r_P + (R_Q + r_Q)m,
+//      α = H_P − R_P k(β), γ = H_Q − R_Q k(b_w)
+//    (a negative coefficient is replaced by 0 and its least value, α·β or γ·(β + τ), moved into
+//    C_S). For y = a1·e_z + b1·a with |a1| <= α, |b1| <= γ: α|s| >= a1·s and γ|w| >= b1·w, so
+//    h_M(u) >= C_S + ⟨y − t, u⟩ >= C_S − |t − y|.
+// C: |s| = √(1 − ρ²) >= 1 − k(β)ρ. v_xy = B·u_xy + s·(R̃20, R̃21) with B a 2×2 block of R̃ᵀ
+//    (‖B‖ <= ‖R̃‖ <= m̄), so |v_xy| <= m̄β + τ3 (τ3 >= |(R̃20, R̃21)|), and with b_c >=
+//    (m̄β + τ3)/m: |w| = √(|v|² − |v_xy|²) >= m − k(b_c)|v_xy|. Hence
+//      h_M(u) >= C_C + α'ρ + γ'|v_xy| − ⟨t, u⟩,  C_C = H_P + r_P + (H_Q + r_Q)m,
+//      α' = R_P − H_P k(β), γ' = R_Q − H_Q k(b_c)   (negative: as above, with β and m̄β + τ3).
+//    For y = α'd1 + γ'R̃d2 with d1, d2 horizontal in the unit disk: α'ρ >= ⟨α'd1, u⟩ and
+//    γ'|v_xy| >= γ'⟨d2, v⟩ = ⟨γ'R̃d2, u⟩, so h_M(u) >= C_C − |t − y|.
+// T: the tilt bound (coaxial3.hpp): h_M(u) >= R_K ρ + H_K|s| + r_K − tilt − ⟨t, u⟩ (K's lower
+//    sizes) >= Aρ + B|s| + r_K − tilt, A = R_K − |t_xy|, B = H_K − |t_z|. (ρ, |s|) runs over the
+//    open arc of the unit circle where both exceed β; Aρ + B|s| = |(A, B)|·cos(angle to (A, B)) is
+//    least at an endpoint, (√(1 − β²), β) or (β, √(1 − β²)), unless the arc holds the direction
+//    −(A, B) — only when A < 0 and B < 0, and then −|(A, B)| bounds it.
+// So min(S, C, T) <= min over unit u of h_M(u), for every β; the bound is the best over
+// β = 2⁻¹ … 2⁻⁴⁰ (the tilt margin of T wants β·min(R_K, H_K) >~ tilt, the chords' loss grows
+// with β). Every operation is rounded towards the safe side (directed add/mul/quot/root,
+// intervals for |t − y|). The candidates y are the nearest points of the parallelogram
+// {a1·e_z + b1·a} and of the disk sum to t for a placement near the centre (any y is valid; a
+// poorer y only loosens the bound). At t = 0 both are 0 and the bound is min(C_S, C_C) when the
+// ring's kinks dominate (α, γ >= 0): σ to the stretch m (~1e-16). Cost: O(40) closed forms.
+namespace {
+
+struct Iv {  // a certified interval
+  double lo = 0, hi = 0;
+};
+Iv iv(double x) { return {x, x}; }
+Iv operator-(const Iv& a, const Iv& b) { return {sub(a.lo, b.hi, -1), sub(a.hi, b.lo, +1)}; }
+Iv operator+(const Iv& a, const Iv& b) { return {add(a.lo, b.lo, -1), add(a.hi, b.hi, +1)}; }
+Iv operator*(const Iv& a, const Iv& b) {
+  const double c[4] = {a.lo, a.lo, a.hi, a.hi}, d[4] = {b.lo, b.hi, b.lo, b.hi};
+  Iv r{kInf, -kInf};
+  for (int i = 0; i < 4; ++i) r.lo = std::min(r.lo, mul(c[i], d[i], -1)), r.hi = std::max(r.hi, mul(c[i], d[i], +1));
+  return r;
+}
+double abs_up(const Iv& a) { return std::max(std::abs(a.lo), std::abs(a.hi)); }
+// |z| rounded up for z bracketed componentwise.
+double norm_up(const Iv& x, const Iv& y, const Iv& z) {
+  const double a = abs_up(x), b = abs_up(y), c = abs_up(z);
+  return root(add(add(mul(a, a, +1), mul(b, b, +1), +1), mul(c, c, +1), +1), +1);
+}
+
+// k(b) of the chord, rounded up (b >= 0 an upper bound of the interval's end, b < 1).
+double chord_slope_up(double b) { return quot(b, add(1, root(sub(1, mul(b, b, +1), -1), -1), -1), +1); }
+
+double clamp_abs(double x, double c) { return std::clamp(x, -c, c); }
+// (x, y) scaled into the closed unit disk (certified by the rounded-up norm); 0 if it will not go.
+void into_unit_disk(double& x, double& y) {
+  for (int i = 0; i < 4 && hypot_dir(x, y, +1) > 1; ++i) {
+    const double n = std::hypot(x, y) * (1 + 0x1p-48);
+    x /= n, y /= n;
+  }
+  if (hypot_dir(x, y, +1) > 1) x = y = 0;
+}
+
+// The lower-end sizes of both shapes and the pose quantities every β shares.
+struct Ring {
+  double Rp, Hp, rp, Rq, Hq, rq;  // lower ends
+  double m, mbar, tau, tau3;
+  Eigen::Matrix3d R;
+  Vec3 t;
+  CoaxialSum K;
+};
+
+// Region S: C_S − |t − y|, y the parallelogram's point nearest t (b1 across, then a1 along z).
+double side_band(const Ring& g, double beta) {
+  const double bt = add(beta, g.tau, +1), bw = quot(bt, g.m, +1);
+  if (!(bw < 1)) return -kInf;
+  double alpha = sub(g.Hp, mul(g.Rp, chord_slope_up(beta), +1), -1);
+  double gamma = sub(g.Hq, mul(g.Rq, chord_slope_up(bw), +1), -1);
+  double C = add(add(g.Rp, g.rp, -1), mul(add(g.Rq, g.rq, -1), g.m, -1), -1);
+  if (alpha < 0) C = add(C, mul(alpha, beta, -1), -1), alpha = 0;
+  if (gamma < 0) C = add(C, mul(gamma, bt, -1), -1), gamma = 0;
+  const Eigen::Matrix3d& R = g.R;
+  const Vec3& t = g.t;
+  // b1 matches t across (along a_xy) as far as a1 can still match t_z (|t_z − b1·a_z| <= α).
+  const double n2 = R(0, 2) * R(0, 2) + R(1, 2) * R(1, 2);
+  double b1 = n2 > 0 ? clamp_abs((t[0] * R(0, 2) + t[1] * R(1, 2)) / n2, gamma) : 0.0;
+  if (R(2, 2) != 0) {
+    const double e1 = (t[2] - alpha) / R(2, 2), e2 = (t[2] + alpha) / R(2, 2);
+    b1 = std::clamp(b1, std::min(e1, e2), std::max(e1, e2));
+    b1 = clamp_abs(b1, gamma);
+  }
+  const double a1 = clamp_abs(t[2] - b1 * R(2, 2), alpha);
+  const Iv x = iv(t[0]) - iv(b1) * iv(R(0, 2)), y = iv(t[1]) - iv(b1) * iv(R(1, 2));
+  const Iv z = iv(t[2]) - iv(a1) - iv(b1) * iv(R(2, 2));
+  return sub(C, norm_up(x, y, z), -1);
+}
+
+// Region C: C_C − |t − y|, y = α'd1 + γ'R̃d2 with d2 along the tilt's steepest ascent (matching
+// t_z) and d1 the horizontal remainder.
+double caps(const Ring& g, double beta) {
+  const double vb = add(mul(g.mbar, beta, +1), g.tau3, +1), bc = quot(vb, g.m, +1);
+  if (!(bc < 1)) return -kInf;
+  double alpha = sub(g.Rp, mul(g.Hp, chord_slope_up(beta), +1), -1);
+  double gamma = sub(g.Rq, mul(g.Hq, chord_slope_up(bc), +1), -1);
+  double C = add(add(g.Hp, g.rp, -1), mul(add(g.Hq, g.rq, -1), g.m, -1), -1);
+  if (alpha < 0) C = add(C, mul(alpha, beta, -1), -1), alpha = 0;
+  if (gamma < 0) C = add(C, mul(gamma, vb, -1), -1), gamma = 0;
+  const Eigen::Matrix3d& R = g.R;
+  const Vec3& t = g.t;
+  double d2x = 0, d2y = 0, d1x = 0, d1y = 0;
+  const double n3 = std::hypot(R(2, 0), R(2, 1));
+  if (gamma > 0 && n3 > 0) {
+    // d2 = λ·ĝ, ĝ = ±(R̃20, R̃21)/n3 towards t_z: the height λγ'n3 matches t_z as far as λ <= 1
+    // and the horizontal remainder t_xy − λ·c (c = γ'(R̃ĝ)_xy) stays in α'D (the larger root of
+    // |t_xy − λc|² = α'²), so that d1 can take it.
+    const double sg = t[2] < 0 ? -1.0 : 1.0, gx = sg * R(2, 0) / n3, gy = sg * R(2, 1) / n3;
+    const double cx = gamma * (R(0, 0) * gx + R(0, 1) * gy), cy = gamma * (R(1, 0) * gx + R(1, 1) * gy);
+    const double cc = cx * cx + cy * cy, pc = t[0] * cx + t[1] * cy;
+    const double disc = pc * pc - cc * (t[0] * t[0] + t[1] * t[1] - alpha * alpha);
+    double lam = std::min(1.0, std::abs(t[2]) / (gamma * n3));
+    if (cc > 0 && disc >= 0) lam = std::clamp((pc + std::sqrt(disc)) / cc, 0.0, lam);
+    d2x = lam * gx, d2y = lam * gy;
+    into_unit_disk(d2x, d2y);
+  }
+  if (alpha > 0) {
+    d1x = (t[0] - gamma * (R(0, 0) * d2x + R(0, 1) * d2y)) / alpha;
+    d1y = (t[1] - gamma * (R(1, 0) * d2x + R(1, 1) * d2y)) / alpha;
+    into_unit_disk(d1x, d1y);
+  }
+  Iv z[3];
+  for (int i = 0; i < 3; ++i) {
+    const Iv d1 = iv(i == 0 ? d1x : i == 1 ? d1y : 0.0);
+    z[i] = iv(t[i]) - iv(alpha) * d1 - iv(gamma) * (iv(R(i, 0)) * iv(d2x) + iv(R(i, 1)) * iv(d2y));
+  }
+  return sub(C, norm_up(z[0], z[1], z[2]), -1);
+}
+
+// Region T: the tilt bound's least value over the arc between the band and the caps.
+double between(const Ring& g, double beta) {
+  const Vec3& t = g.t;
+  const double A = sub(g.K.R_lo, hypot_dir(t[0], t[1], +1), -1), B = sub(g.K.H_lo, std::abs(t[2]), -1);
+  double lin;
+  if (A < 0 && B < 0) {
+    lin = -root(add(mul(A, A, +1), mul(B, B, +1), +1), +1);
+  } else {
+    const double c_lo = root(sub(1, mul(beta, beta, +1), -1), -1), c_hi = root(sub(1, mul(beta, beta, -1), +1), +1);
+    const auto times_c = [&](double x) { return std::min(mul(x, c_lo, -1), mul(x, c_hi, -1)); };
+    lin = std::min(add(times_c(A), mul(B, beta, -1), -1), add(mul(A, beta, -1), times_c(B), -1));
+  }
+  return add(sub(g.K.r_lo, g.K.tilt, -1), lin, -1);
+}
+
+}  // namespace
+
+double near_coaxial_lower(const Support3& P, const Support3& Q, const Eigen::Matrix3d& R, const Vec3& t, const CoaxialSum& K) {
+  const auto p = parts_of(P), q = parts_of(Q);
+  if (!p || !q) return -kInf;
+  const Interval s = stretch(R);
+  Ring g{p->disk.lo, p->seg.lo, p->ball.lo, q->disk.lo, q->seg.lo, q->ball.lo, s.lo, s.hi, 0, 0, R, t, K};
+  const double sign = R(2, 2) < 0 ? -1.0 : 1.0;
+  const double d = std::abs(sub(R(2, 2), sign, R(2, 2) >= sign ? +1 : -1));
+  g.tau = root(add(add(mul(R(0, 2), R(0, 2), +1), mul(R(1, 2), R(1, 2), +1), +1), mul(d, d, +1), +1), +1);
+  g.tau3 = hypot_dir(R(2, 0), R(2, 1), +1);
+  if (!(g.m > 0)) return -kInf;
+  double best = -kInf;
+  for (int j = 1; j <= 40; ++j) {
+    const double beta = std::ldexp(1.0, -j);
+    best = std::max(best, std::min({side_band(g, beta), caps(g, beta), between(g, beta)}));
+  }
+  return std::isfinite(best) ? best : -kInf;
 }
 
 }  // namespace pendepth::primitives

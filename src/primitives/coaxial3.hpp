@@ -29,6 +29,13 @@ struct CoaxialSum {
 /// the caller keeps that bracket only when it is narrower than EPA's. Other shapes: nullopt.
 std::optional<CoaxialSum> coaxial_sum(const Support3& P, const Support3& Q, const Eigen::Matrix3d& R);
 
+/// Near-coaxial (K.tilt > 0): a certified lower bound of min over unit u of h_M(u), M = P ⊕ (−(R·Q + t))
+/// (that minimum is σ when positive and −sd_M(0) in general), second order in the tilt where the
+/// tilt bound of K is first order: exact (to a few ulps) for a centred pair whose σ lies on the
+/// ring of almost-nearest side directions. −∞ when it does not apply (P or Q not decomposable, a
+/// non-finite intermediate). Proof and cover of the sphere: coaxial3.cpp "The tilted ring".
+double near_coaxial_lower(const Support3& P, const Support3& Q, const Eigen::Matrix3d& R, const Vec3& t, const CoaxialSum& K);
+
 /// Private (tests): while false, coaxial_sum declines every pair, so EPA answers (the reference
 /// the closed form is checked against). Set only while no query runs.
 inline bool coaxial_enabled = true;

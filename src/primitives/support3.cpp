@@ -33,7 +33,8 @@
 // Pre-step (σ and signed distance): when P's and Q's components (disk, axial segment, ball) are
 // exactly parallel, M is one rounded cylinder answered in closed form (coaxial3.cpp) — the
 // symmetric placements where σ is attained on a continuum and EPA cannot close its bracket.
-// Near-coaxial pairs (a tilt ε): the tilt-widened closed form, its upper end of σ tightened by a
+// Near-coaxial pairs (a tilt ε): the tilt-widened closed form, its lower end of σ raised by a
+// second-order bound of min h_M over the sphere (coaxial3.cpp), its upper end tightened by a
 // compass search of h_M, intersected with EPA's bracket (coaxial_or_epa below).
 // Cost: O(k (log f + s + e)) for k support queries, f facets (a heap by lower bound), s the cost
 // of one support (O(1) for curved primitives, O(n) for a polytope's vertex scan), e the faces
@@ -850,8 +851,9 @@ Depth3 epa_minimum(const Support3& P, const Support3& Q, const Frame& F, int bud
 // gives a certified upper bound h_up(u)/|u| (as EPA's U). A compass search in the tangent basis
 // at u0 (horizontal e1 = e_z × u0 along the ring of almost-nearest directions, e2 across it: the
 // kinks of h_M run along these), steps halving from 1/4 to 2⁻⁵² (at most kMaxSearch supports).
-// Two starts, K's side normal towards t and its cap normal: with the query near K's centre both
-// are (almost) nearest and h_M has a local minimum at each. The upper end then sits on the tilted
+// Three starts, K's side normal towards t, its cap normal, and the ring direction orthogonal to
+// both axes: with the query near K's centre each is (almost) nearest and h_M has a local minimum
+// at each (the third is the ring's exact minimiser at t = 0). The upper end then sits on the tilted
 // M's true minimum to rounding, where the tilt bound only gives σ_K + tilt. The reported move is
 // along the best u.
 constexpr int kMaxSearch = 300;
@@ -890,7 +892,13 @@ void tighten_upper_by_search(const Support3& P, const Support3& Q, const Frame& 
   const double rho = std::hypot(F.t[0], F.t[1]);
   const Vec3 side = rho > 0 ? Vec3(F.t[0] / rho, F.t[1] / rho, 0) : Vec3::UnitX();
   const Vec3 cap(0, 0, F.t[2] < 0 ? -1.0 : 1.0);
-  for (const Vec3& u0 : {side, cap}) {
+  // The ring's own minimiser at t = 0: horizontal and orthogonal to Q's axis R·e_z (both kinks
+  // of h_M at once, where the ring bound of coaxial3.cpp is attained), turned towards t.
+  Vec3 ring = Vec3::UnitZ().cross(Vec3(F.R.col(2)));
+  if (ring.squaredNorm() > 0) ring.normalize();
+  if (ring.dot(F.t) < 0) ring = -ring;
+  for (const Vec3& u0 : {side, cap, ring}) {
+    if (!(u0.squaredNorm() > 0)) continue;
     const Searched r = compass_search(E, u0);
     if (-r.upper > c.sd.lo) c.sd.lo = -r.upper, c.sd.normal = r.u.normalized(), c.touch = r.v;
   }
@@ -924,7 +932,9 @@ Distance3 intersect(const Distance3& c, const Distance3& e) {
 }
 
 // Coaxial pairs: the closed form. Near-coaxial (a tilt bound > 0): the closed form widened by the
-// tilt, its upper end of σ tightened by the search above; kept alone when it meets EPA's target,
+// tilt, its lower end of σ (upper end of sd) raised by the second-order ring bound
+// (coaxial3.cpp near_coaxial_lower: min over the sphere of the explicit h_M, region by region),
+// its upper end of σ tightened by the search above; kept alone when it meets EPA's target,
 // else intersected with EPA's bracket (EPA's answer bit for bit when the closed form narrows
 // neither end). EPA's budget: the supports a ring of almost-nearest directions of width ~tilt
 // needs are ~13–18·√(σ/tilt) (measured: docs/benchmarks.md "Long EPA runs"); past kMaxEpa only when
@@ -934,6 +944,7 @@ Result coaxial_or_epa(const Support3& P, const Support3& Q, const Frame& F, Clos
   const auto K = coaxial_sum(P, Q, F.R);
   if (!K) return epa(kMaxEpaGeneric);
   ClosedForm cf = closed_form(P, Q, F, *K);
+  if (K->tilt > 0) cf.sd.hi = std::min(cf.sd.hi, -near_coaxial_lower(P, Q, F.R, F.t, *K));
   if (K->tilt > 0 && cf.sd.hi < 0) tighten_upper_by_search(P, Q, F, cf);
   const Result c = closed(cf);
   const double scale = std::max(std::abs(c.lower_bound), std::abs(c.upper_bound));
