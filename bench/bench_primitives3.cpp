@@ -355,7 +355,7 @@ void BM_RoundedFlatCores(benchmark::State& state) {
 
 BENCHMARK(BM_CurvedSignedDistance)->DenseRange(0, 5);
 BENCHMARK(BM_CurvedMinimum)->DenseRange(0, 5);
-BENCHMARK(BM_CurvedCoaxial)->ArgsProduct({{0, 1}, {0, 3, 6, 9, 12}, {0}})->Args({0, 0, 1})->Args({1, 0, 1})
+BENCHMARK(BM_CurvedCoaxial)->ArgsProduct({{0, 1}, {0, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}, {0}})->Args({0, 0, 1})->Args({1, 0, 1})
     ->Args({0, 0, 2})->Args({1, 0, 2});
 #if PENDEPTH_BENCH_BULLET
 BENCHMARK(BM_CurvedBullet)->ArgsProduct({{0, 1, 2, 3, 4, 5}, {1, 0}, {1}})

@@ -887,14 +887,17 @@ Searched compass_search(const Engine& E, const Vec3& u0) {
   }
   return r;
 }
-void tighten_upper_by_search(const Support3& P, const Support3& Q, const Frame& F, ClosedForm& c) {
+void tighten_upper_by_search(const Support3& P, const Support3& Q, const Frame& F, double tilt, ClosedForm& c) {
   const Engine E(P, Q, F.R, F.t);
   const double rho = std::hypot(F.t[0], F.t[1]);
   const Vec3 side = rho > 0 ? Vec3(F.t[0] / rho, F.t[1] / rho, 0) : Vec3::UnitX();
   const Vec3 cap(0, 0, F.t[2] < 0 ? -1.0 : 1.0);
   // The ring's own minimiser at t = 0: horizontal and orthogonal to Q's axis R·e_z (both kinks
-  // of h_M at once, where the ring bound of coaxial3.cpp is attained), turned towards t.
-  Vec3 ring = Vec3::UnitZ().cross(Vec3(F.R.col(2)));
+  // of h_M at once, where the ring bound of coaxial3.cpp is attained), turned towards t. Searched
+  // only while t's horizontal part is within a few tilts (past that the side start is the ring's
+  // minimiser to first order): a scheduling choice, the bracket is certified either way.
+  Vec3 ring = Vec3::Zero();
+  if (std::hypot(F.t[0], F.t[1]) <= 4 * tilt) ring = Vec3::UnitZ().cross(Vec3(F.R.col(2)));
   if (ring.squaredNorm() > 0) ring.normalize();
   if (ring.dot(F.t) < 0) ring = -ring;
   for (const Vec3& u0 : {side, cap, ring}) {
@@ -945,7 +948,7 @@ Result coaxial_or_epa(const Support3& P, const Support3& Q, const Frame& F, Clos
   if (!K) return epa(kMaxEpaGeneric);
   ClosedForm cf = closed_form(P, Q, F, *K);
   if (K->tilt > 0) cf.sd.hi = std::min(cf.sd.hi, -near_coaxial_lower(P, Q, F.R, F.t, *K));
-  if (K->tilt > 0 && cf.sd.hi < 0) tighten_upper_by_search(P, Q, F, cf);
+  if (K->tilt > 0 && cf.sd.hi < 0) tighten_upper_by_search(P, Q, F, K->tilt, cf);
   const Result c = closed(cf);
   const double scale = std::max(std::abs(c.lower_bound), std::abs(c.upper_bound));
   if (K->tilt == 0 || c.upper_bound - c.lower_bound <= kCurvedTargetGap * scale) return c;
