@@ -91,10 +91,15 @@ double core_distance(double a, double b, int dir) {
 struct Interval {
   double lo = 0, hi = 0;
   Interval operator+(const Interval& o) const { return {add(lo, o.lo, -1), add(hi, o.hi, +1)}; }
-  Interval operator*(const Interval& o) const {  // both >= 0
-    return {mul(lo, o.lo, -1), mul(hi, o.hi, +1)};
+  Interval operator-(const Interval& o) const { return {sub(lo, o.hi, -1), sub(hi, o.lo, +1)}; }
+  Interval operator*(const Interval& o) const {  // the least and greatest corner products, outward
+    const double a[4] = {lo, lo, hi, hi}, b[4] = {o.lo, o.hi, o.lo, o.hi};
+    Interval r{kInf, -kInf};
+    for (int i = 0; i < 4; ++i) r.lo = std::min(r.lo, mul(a[i], b[i], -1)), r.hi = std::max(r.hi, mul(a[i], b[i], +1));
+    return r;
   }
 };
+Interval iv(double x) { return {x, x}; }
 
 // A shape's components in its own frame (axis z).
 struct Parts {
@@ -265,21 +270,9 @@ CoaxialSd coaxial_signed_distance(const CoaxialSum& K, const Vec3& q) {
 // ring's kinks dominate (α, γ >= 0): σ to the stretch m (~1e-16). Cost: O(40) closed forms.
 namespace {
 
-struct Iv {  // a certified interval
-  double lo = 0, hi = 0;
-};
-Iv iv(double x) { return {x, x}; }
-Iv operator-(const Iv& a, const Iv& b) { return {sub(a.lo, b.hi, -1), sub(a.hi, b.lo, +1)}; }
-Iv operator+(const Iv& a, const Iv& b) { return {add(a.lo, b.lo, -1), add(a.hi, b.hi, +1)}; }
-Iv operator*(const Iv& a, const Iv& b) {
-  const double c[4] = {a.lo, a.lo, a.hi, a.hi}, d[4] = {b.lo, b.hi, b.lo, b.hi};
-  Iv r{kInf, -kInf};
-  for (int i = 0; i < 4; ++i) r.lo = std::min(r.lo, mul(c[i], d[i], -1)), r.hi = std::max(r.hi, mul(c[i], d[i], +1));
-  return r;
-}
-double abs_up(const Iv& a) { return std::max(std::abs(a.lo), std::abs(a.hi)); }
+double abs_up(const Interval& a) { return std::max(std::abs(a.lo), std::abs(a.hi)); }
 // |z| rounded up for z bracketed componentwise.
-double norm_up(const Iv& x, const Iv& y, const Iv& z) {
+double norm_up(const Interval& x, const Interval& y, const Interval& z) {
   const double a = abs_up(x), b = abs_up(y), c = abs_up(z);
   return root(add(add(mul(a, a, +1), mul(b, b, +1), +1), mul(c, c, +1), +1), +1);
 }
@@ -326,8 +319,8 @@ double side_band(const Ring& g, double beta) {
     b1 = clamp_abs(b1, gamma);
   }
   const double a1 = clamp_abs(t[2] - b1 * R(2, 2), alpha);
-  const Iv x = iv(t[0]) - iv(b1) * iv(R(0, 2)), y = iv(t[1]) - iv(b1) * iv(R(1, 2));
-  const Iv z = iv(t[2]) - iv(a1) - iv(b1) * iv(R(2, 2));
+  const Interval x = iv(t[0]) - iv(b1) * iv(R(0, 2)), y = iv(t[1]) - iv(b1) * iv(R(1, 2));
+  const Interval z = iv(t[2]) - iv(a1) - iv(b1) * iv(R(2, 2));
   return sub(C, norm_up(x, y, z), -1);
 }
 
@@ -363,9 +356,9 @@ double caps(const Ring& g, double beta) {
     d1y = (t[1] - gamma * (R(1, 0) * d2x + R(1, 1) * d2y)) / alpha;
     into_unit_disk(d1x, d1y);
   }
-  Iv z[3];
+  Interval z[3];
   for (int i = 0; i < 3; ++i) {
-    const Iv d1 = iv(i == 0 ? d1x : i == 1 ? d1y : 0.0);
+    const Interval d1 = iv(i == 0 ? d1x : i == 1 ? d1y : 0.0);
     z[i] = iv(t[i]) - iv(alpha) * d1 - iv(gamma) * (iv(R(i, 0)) * iv(d2x) + iv(R(i, 1)) * iv(d2y));
   }
   return sub(C, norm_up(z[0], z[1], z[2]), -1);
