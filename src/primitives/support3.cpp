@@ -940,8 +940,10 @@ Distance3 intersect(const Distance3& c, const Distance3& e) {
 // its upper end of σ tightened by the search above; kept alone when it meets EPA's target,
 // else intersected with EPA's bracket (EPA's answer bit for bit when the closed form narrows
 // neither end). EPA's budget: the supports a ring of almost-nearest directions of width ~tilt
-// needs are ~13–18·√(σ/tilt) (measured: docs/benchmarks.md "Long EPA runs"); past kMaxEpa only when
-// that fits kMaxEpaLong (a scheduling estimate: the answer stays certified either way).
+// needs are ~13–18·√(σ/tilt) (measured: docs/benchmarks.md "Long EPA runs"); kMaxEpaLong when
+// that fits it, else the generic pairs' kMaxEpaGeneric (was kMaxEpa: a placement off the centre by
+// |t| >> tilt, whose ring t breaks, closed within EPA alone's 4,800 supports but not in 600; a
+// scheduling estimate: the answer stays certified either way).
 template <class Result, class Closed, class Epa>
 Result coaxial_or_epa(const Support3& P, const Support3& Q, const Frame& F, Closed closed, Epa epa) {
   const auto K = coaxial_sum(P, Q, F.R);
@@ -953,7 +955,7 @@ Result coaxial_or_epa(const Support3& P, const Support3& Q, const Frame& F, Clos
   const double scale = std::max(std::abs(c.lower_bound), std::abs(c.upper_bound));
   if (K->tilt == 0 || c.upper_bound - c.lower_bound <= kCurvedTargetGap * scale) return c;
   const double need = 24 * std::sqrt(scale / K->tilt);
-  return intersect(c, epa(need <= kMaxEpaLong ? kMaxEpaLong : kMaxEpa));
+  return intersect(c, epa(need <= kMaxEpaLong ? kMaxEpaLong : kMaxEpaGeneric));
 }
 
 }  // namespace
