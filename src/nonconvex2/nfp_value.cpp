@@ -366,15 +366,30 @@ template <bool F>
   diff(v.cx, t.x(), -v.cxl, wx, ewx);  // C − t: (cx − t) + cxl
   diff(v.cy, t.y(), -v.cyl, wy, ewy);
   if (!in_range(wx.hi) || !in_range(wy.hi)) return false;
-  const D2 Ex{v.ex, v.exl}, Ey{v.ey, v.eyl};
-  const D2 n1 = mul<F>(wx, Ey), n2 = mul<F>(wy, Ex);
-  const D2 num = add(n1, {-n2.hi, -n2.lo});
-  const D2 m1 = mul<F>({d.x(), 0}, Ey), m2 = mul<F>({d.y(), 0}, Ex);
-  const D2 den = add(m1, {-m2.hi, -m2.lo});
+  D2 num, den;
+  double en, ed, sc[2] = {1, 0};  // num, den: N, D divided by sc[0] + sc[1] (diag)
+  if (v.ex == 0 || v.ey == 0) {
+    // An axis-parallel edge (a third to two thirds of the pieces' edges on nesting instances): with
+    // Ey = 0, N = −Ex·Wy and D = −Ex·dy, so λ = Wy/dy (Ex = 0: Wx/dx) — the numerator W̃ within
+    // e_W on that axis and the denominator the exact double d, without the four double-double
+    // products (the same certificate below, for the same RN(λ)).
+    const bool horizontal = v.ey == 0;  // the two-sum's hi is 0 iff E is exactly 0 on that axis
+    num = horizontal ? wy : wx;
+    en = horizontal ? ewy : ewx;
+    den = {horizontal ? d.y() : d.x(), 0};
+    ed = 0;
+    sc[0] = horizontal ? -v.ex : v.ey, sc[1] = horizontal ? -v.exl : v.eyl;
+  } else {
+    const D2 Ex{v.ex, v.exl}, Ey{v.ey, v.eyl};
+    const D2 n1 = mul<F>(wx, Ey), n2 = mul<F>(wy, Ex);
+    num = add(n1, {-n2.hi, -n2.lo});
+    const D2 m1 = mul<F>({d.x(), 0}, Ey), m2 = mul<F>({d.y(), 0}, Ex);
+    den = add(m1, {-m2.hi, -m2.lo});
+    en = (std::abs(v.ey) * ewx + std::abs(v.ex) * ewy) * (1 + 0x1p-50) + 0x1p-99 * (std::abs(n1.hi) + std::abs(n2.hi));
+    ed = 0x1p-99 * (std::abs(m1.hi) + std::abs(m2.hi));
+  }
   const double an = std::abs(num.hi), ad = std::abs(den.hi);
   if (!(an >= 0x1p-800 && an <= 0x1p800 && ad >= 0x1p-800 && ad <= 0x1p800)) return false;
-  const double en = (std::abs(v.ey) * ewx + std::abs(v.ex) * ewy) * (1 + 0x1p-50) + 0x1p-99 * (std::abs(n1.hi) + std::abs(n2.hi));
-  const double ed = 0x1p-99 * (std::abs(m1.hi) + std::abs(m2.hi));
   // The candidate q = RN(num_hi / den_hi), else its neighbour towards λ (num_lo and den_lo move λ
   // by up to about an ulp of q), each certified by its residual (crossing_certified).
   double q = num.hi / den.hi;
@@ -386,16 +401,16 @@ template <bool F>
     E = 0x1p-50 * (std::abs(t2) + std::abs(num.lo) + std::abs(r)) + en + std::abs(x) * ed;
   };
   residual(q);
+  auto report = [&] {
+    if (diag) *diag = {{q, r, den.hi}, {0, 0, den.lo}, {0, E, ed}, true, {sc[0], sc[1]}};
+  };
   if (!crossing_certified(q, r, E, den.hi)) {
     const bool up = (r > 0) == (den.hi > 0);  // λ − q has the sign of r·D
     q = std::bit_cast<double>(std::bit_cast<std::uint64_t>(q) + (up == (q > 0) ? 1 : -1));
     residual(q);
-    if (!crossing_certified(q, r, E, den.hi)) {
-      if (diag) *diag = {{q, r, den.hi}, {0, 0, den.lo}, {0, E, ed}, true};
-      return false;
-    }
+    if (!crossing_certified(q, r, E, den.hi)) return report(), false;
   }
-  if (diag) *diag = {{q, r, den.hi}, {0, 0, den.lo}, {0, E, ed}, true};
+  report();
   lambda = q;
   return true;
 }

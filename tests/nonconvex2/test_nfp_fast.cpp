@@ -405,7 +405,7 @@ void projection_values_against_rationals() {
   // as 1 + 2⁻⁵² nor mis-rounded).
   check_projection(edge_ray(Vec2(0, 0), Vec2(0, 0), Vec2(1, 2), Vec2(0, 0), Vec2(0, 0), Vec2(0, 0)), Vec2(5 * 0x1p-54, -5), st, "tie (1, 2)");
   // σ_d's crossing value λ = line_num / line_den on the same pieces, random rays.
-  std::size_t crossings = 0, crossed = 0;
+  std::size_t crossings = 0, crossed = 0, axis_crossings = 0;
   double worst_cross = 0;
   for (std::size_t i = 0; i < albano.size(); i += 3)
     for (std::size_t j = 1; j < albano.size(); j += 2) {
@@ -429,10 +429,14 @@ void projection_values_against_rationals() {
         const bool ok = N.flat.crossing_value(std::uint32_t(k), t, d, l, &diag);
         if (diag.set) {
           // The certificate's two bounds (nfp_value.cpp crossing_certified): the denominator's
-          // double-double within its bound, and the residual N − q·D within E of r̃.
-          const mpq_class num = pendepth::nonconvex2::line_num(pc.edge, ray, LiftQ{}).v;
-          ASSERT_LE(abs(den.v - mpq_class(diag.hi[2]) - mpq_class(diag.lo[2])), mpq_class(diag.bound[2])) << "crossing den " << k;
-          const mpq_class err = abs(num - mpq_class(diag.hi[0]) * den.v - mpq_class(diag.hi[1]));
+          // double-double within its bound, and the residual N − q·D within E of r̃ (N and D
+          // divided by the reported scale: an axis-parallel edge's ±E, else 1).
+          const mpq_class sc = mpq_class(diag.scale[0]) + mpq_class(diag.scale[1]);
+          ASSERT_NE(sgn(sc), 0) << "crossing scale " << k;
+          const mpq_class num = pendepth::nonconvex2::line_num(pc.edge, ray, LiftQ{}).v / sc, dens = den.v / sc;
+          axis_crossings += diag.scale[0] != 1 || diag.scale[1] != 0;
+          ASSERT_LE(abs(dens - mpq_class(diag.hi[2]) - mpq_class(diag.lo[2])), mpq_class(diag.bound[2])) << "crossing den " << k;
+          const mpq_class err = abs(num - mpq_class(diag.hi[0]) * dens - mpq_class(diag.hi[1]));
           ASSERT_LE(err, mpq_class(diag.bound[1])) << "crossing residual " << k;
           worst_cross = std::max(worst_cross, mpq_class(err / mpq_class(diag.bound[1])).get_d());
         }
@@ -441,8 +445,10 @@ void projection_values_against_rationals() {
         ASSERT_TRUE(same(l, pendepth::exact::round_nearest(lam))) << "crossing " << k << " t = " << t.transpose();
       }
     }
-  std::cout << "[crossing values] " << crossings << " rays, " << crossed << " certified; worst error / bound " << worst_cross << "\n";
+  std::cout << "[crossing values] " << crossings << " rays (" << axis_crossings << " on axis-parallel edges), " << crossed
+            << " certified; worst error / bound " << worst_cross << "\n";
   EXPECT_GT(crossed, crossings * 9 / 10);
+  EXPECT_GT(axis_crossings, crossings / 10);  // the axis-parallel shortcut is exercised
   EXPECT_GT(worst_cross, 0x1p-12);
   std::cout << "[projection values] " << st.pieces << " edges, " << st.tried << " tried, " << st.bounded << " bounded, " << st.certified
             << " certified; worst error / bound " << st.worst << "\n";
@@ -845,6 +851,16 @@ TEST(NfpFastPath, CrossingValuesAgainstRationals) {
     const double s = std::ldexp(1.0, ex(rng));
     auto v = [&]() -> Vec2 { return Vec2(u(rng), u(rng)) * s; };
     check(line(v(), k % 2 ? v() * 0x1p-40 : Vec2(0, 0), v()), v(), Vec2(u(rng), u(rng)), "random " + std::to_string(k));
+  }
+  // Axis-parallel lines (λ = W/d on one axis: nfp_value.cpp's shortcut), points c1 + c2 of one and
+  // two doubles, tails down to 2⁻⁶⁰ of the point (W inexact: its bound e_W), random and axis rays.
+  for (int k = 0; k < 20000; ++k) {
+    const double s = std::ldexp(1.0, ex(rng));
+    auto v = [&]() -> Vec2 { return Vec2(u(rng), u(rng)) * s; };
+    const Vec2 e = k % 2 ? Vec2(u(rng) * s, 0) : Vec2(0, u(rng) * s);
+    const Vec2 c2 = k % 3 == 0 ? Vec2(0, 0) : v() * std::ldexp(1.0, -20 - int(rng() % 41));
+    const Vec2 d = k % 5 == 0 ? Vec2(u(rng), 0) : k % 5 == 1 ? Vec2(0, u(rng)) : Vec2(u(rng), u(rng));
+    check(line(v(), c2, e), v(), d, "axis " + std::to_string(k));
   }
   std::cout << "[crossing certificate] " << tried << " lines, " << certified << " certified, " << exact_ties << " exact ties\n";
   EXPECT_GT(certified, tried * 9 / 10);
