@@ -948,3 +948,91 @@ TEST(NfpFastPath, FmaAndPortableValuesAgree) {
 }
 
 }  // namespace
+
+namespace {
+
+bool same(const pendepth::DepthValue2& a, const pendepth::DepthValue2& b) {
+  return same(a.depth, b.depth) && same(a.translation, b.translation) && a.overlapping == b.overlapping;
+}
+
+// The lean queries (NoFitPolygon2::depth_value / directional_depth_value: the fast path) against
+// the exact path's lean answers (minimum_value / along_value with exact_path: the hierarchy and
+// rationals only) bit for bit, in the FMA and the portable build, on placements that stress the
+// certified values: exactly on pieces (their rounded ends, ±1 ulp, points of axis-parallel pieces
+// at random abscissae — exactly on the edge line for integer data — and midpoints), exactly on
+// ring vertices, just inside O beside pieces (ulps to a tenth of the piece away), and random;
+// directions along the axes (rays parallel to the axis-parallel edges, and crossings that take
+// nfp_value's axis-parallel shortcut), diagonals and random ones. Pairs: albano (every ordered
+// pair), shirts, trousers, baldacci4 (random pairs), and pieces turned by 30° (coordinates
+// rounded: no axis-parallel edges, inexact ends).
+TEST(NfpFastPath, LeanValuesAgainstExactPath) {
+  using pendepth::DepthValue2;
+  std::mt19937_64 rng(19013);
+  std::uniform_real_distribution<double> f(0, 1), ang(0, 2 * M_PI);
+  std::size_t queries = 0, overlapping = 0, pairs = 0, flat = 0;
+  auto check = [&](const NoFitPolygon2& nfp, const Vec2& t, const std::string& what) {
+    const auto& N = nfp_impl(nfp);
+    const double a = ang(rng);
+    const std::vector<Vec2> dirs{{1, 0}, {0, 1}, {-1, 0}, {0, -1}, {1, -1}, {std::cos(a), std::sin(a)}};
+    const DepthValue2 se = N.minimum_value(t, true);
+    ++queries, overlapping += se.overlapping;
+    std::vector<DepthValue2> de;
+    for (const Vec2& d : dirs) de.push_back(N.along_value(t, pendepth::nonconvex2::check_and_scale(t, d), true));
+    for (int m = 0; m < 2; ++m) {
+      const ValuesBuild b(m == 0);
+      const DepthValue2 s = nfp.depth_value(t);
+      ASSERT_TRUE(same(s, se)) << what << (m ? " portable" : "") << " σ at " << std::hexfloat << t.transpose() << ": " << s.depth
+                               << " vs exact " << se.depth;
+      for (std::size_t i = 0; i < dirs.size(); ++i) {
+        const DepthValue2 v = nfp.directional_depth_value(t, dirs[i]);
+        ASSERT_TRUE(same(v, de[i])) << what << (m ? " portable" : "") << " σ_d at " << std::hexfloat << t.transpose() << " d "
+                                    << dirs[i].transpose() << ": " << v.depth << " vs exact " << de[i].depth;
+      }
+    }
+  };
+  auto pair = [&](const Polygon& P, const Polygon& Q, std::size_t piece_step, int random, const std::string& what) {
+    const NoFitPolygon2 nfp(P, Q);
+    const auto& N = nfp_impl(nfp);
+    ++pairs;
+    flat += N.flat.usable;  // beyond 256 pieces (baldacci4's larger pairs) the hierarchy answers
+    for (std::size_t k = 0; k < N.pieces.size(); k += piece_step) {
+      const Vec2 a = N.pieces[k].a, b = N.pieces[k].b;
+      for (const Vec2& p : {a, b, ulp_step(a, 1, 0), ulp_step(a, 0, -1), Vec2(0.5 * (a + b))}) check(nfp, p, what + " piece");
+      if (a.y() == b.y()) check(nfp, Vec2(a.x() + f(rng) * (b.x() - a.x()), a.y()), what + " horizontal piece");
+      if (a.x() == b.x()) check(nfp, Vec2(a.x(), a.y() + f(rng) * (b.y() - a.y())), what + " vertical piece");
+      // Just inside O (on the piece's left), from ulps to a tenth of its length away.
+      const Vec2 n(a.y() - b.y(), b.x() - a.x());
+      for (double h : {0x1p-40, 0x1p-12, 0.1}) check(nfp, a + f(rng) * (b - a) + h * f(rng) * n, what + " beside a piece");
+    }
+    Vec2 lo = N.pieces[0].a, hi = lo;
+    for (const auto& poly : nfp.polygons())
+      for (const auto& ring : poly)
+        for (std::size_t i = 0; i < ring.size(); ++i) {
+          lo = lo.cwiseMin(ring[i]), hi = hi.cwiseMax(ring[i]);
+          if (i % piece_step == 0) check(nfp, ring[i], what + " ring vertex");
+        }
+    for (int r = 0; r < random; ++r) check(nfp, Vec2(lo.x() + f(rng) * (hi.x() - lo.x()), lo.y() + f(rng) * (hi.y() - lo.y())), what + " random");
+  };
+  const auto albano = instance("albano.json");
+  for (std::size_t i = 0; i < albano.size(); ++i)
+    for (std::size_t j = 0; j < albano.size(); ++j) pair(albano[i], albano[j], 2, 20, "albano " + std::to_string(i) + " " + std::to_string(j));
+  for (const std::string file : {"shirts", "trousers", "baldacci4"}) {
+    const auto pieces = instance(file + ".json");
+    for (int k = 0; k < 8; ++k) {
+      const std::size_t i = rng() % pieces.size(), j = rng() % pieces.size();
+      pair(pieces[i], pieces[j], 2, 20, file + " " + std::to_string(i) + " " + std::to_string(j));
+    }
+  }
+  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+  for (int k = 0; k < 6; ++k) {
+    const std::size_t i = rng() % albano.size(), j = rng() % albano.size();
+    const Polygon Q = mapped(albano[j], [&](const Vec2& p) { return Vec2(c * p.x() - s * p.y(), s * p.x() + c * p.y()); });
+    pair(albano[i], Q, 2, 20, "albano " + std::to_string(i) + " " + std::to_string(j) + " Q turned 30°");
+  }
+  std::cout << "[lean vs exact] " << pairs << " pairs (" << flat << " on the flat scan), " << queries << " placements ("
+            << overlapping << " overlapping), σ and 6 σ_d each, both builds\n";
+  EXPECT_GT(overlapping, queries / 4);
+  EXPECT_GT(flat, pairs * 3 / 4);
+}
+
+}  // namespace
