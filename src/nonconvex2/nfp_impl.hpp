@@ -117,6 +117,8 @@ struct NfpFlat {
   struct PieceDD {
     double ox, oxl, oy, oyl, dx, dxl, dy, dyl, dd, ddl;
     double ddi;  // RN(1 / dd)
+    // o × D = ox·Dy − oy·Dx as a double-double (k + kl) within ke (σ's projection: c = t × D − o × D).
+    double k = 0, kl = 0, ke = 0;
     bool ok = false;
     // The edge line's point c1 + c2 and direction e1 − e0, exact double-doubles (σ_d's crossing).
     double cx, cxl, cy, cyl, ex, exl, ey, eyl;
@@ -162,6 +164,7 @@ struct NfpFlat {
   struct ProjectionDiag {
     double hi[3], lo[3], bound[3];
     bool set = false;
+    double scale[2] = {1, 0};  // crossing_value: num and den are N and D divided by scale[0] + scale[1]
   };
   bool projection_values(std::uint32_t k, const Vec2& t, double& sigma2, Vec2& translation, ProjectionDiag* diag = nullptr) const;
   /// σ² and the translation from t to the end μ = `end` (0 or 1) of piece k's edge ray (a vertex
@@ -173,7 +176,8 @@ struct NfpFlat {
   bool end_values(std::uint32_t k, int end, const Vec2& t, double& sigma2, Vec2& translation, ProjectionDiag* diag = nullptr) const;
   /// RN(λ) of the crossing of the ray t + λ·d with piece k's edge line (line_num / line_den),
   /// from the piece's double-doubles with a static error bound; false when not certified. `diag`
-  /// (tests): hi, lo and bound of λ in slot 0.
+  /// (tests): q, the residual r̃ and the denominator (hi, lo) in hi / lo, E and the denominator's
+  /// bound in bound[1], bound[2], the scale of N and D in scale (an axis-parallel edge's ±E).
   bool crossing_value(std::uint32_t k, const Vec2& t, const Vec2& d, double& lambda, ProjectionDiag* diag = nullptr) const;
 };
 

@@ -16,8 +16,11 @@
 //     al·bh), fast two-sum): the dropped al·bl (≤ u²), the two products' rounding (≤ 2u²) and the
 //     two sums' (≤ 5u²) stay below 9u²·|ah·bh|(1 + 2u).
 //   dd sum (two two-sums, exact.hpp's operator+): ≤ 2⁻¹⁰⁰·(|a| + |b|) (exact.hpp's kUnitDD).
-//   c̃ = W̃x·Dy − W̃y·Dx: |c̃ − c| ≤ e_c = (|Dy|·e_Wx + |Dx|·e_Wy)(1 + 2⁻⁵⁰) + 2⁻⁹⁹·(|P1| + |P2|)
-//     (9u² + 2⁻¹⁰⁰ < 2⁻⁹⁹ per product's magnitude); ρ_c = e_c/|c̃| (required ≤ 2⁻⁶⁰).
+//   c = t × D − k with k = o × D tabled per piece (k̃ from dd products and a dd sum: |k̃ − k| ≤ e_k =
+//     2⁻⁹⁹·(|k1| + |k2|)), so W is not formed on the general path (a shorter dependent chain):
+//     c̃ = (tx·Dy − ty·Dx) − k̃: |c̃ − c| ≤ e_c = 2⁻⁹⁹·(|P1| + |P2|) + 2⁻¹⁰⁰·(|S| + |k̃|) + e_k, inflated
+//     by 2⁻⁵⁰ (9u² + 2⁻¹⁰⁰ < 2⁻⁹⁹ per product's magnitude, S = P1 − P2); ρ_c = e_c/|c̃| (required
+//     ≤ 2⁻⁶⁰: a cancellation |k|/|c| up to about 2³⁸ still certifies, t nearer its line defers).
 //   q̃ = c̃ / |D|² (div below, by the stored 1/|D|²_hi; 2⁻⁹⁷ for exact operands): ρ_q = (ρ_c + ρ_D)(1 + 2⁻⁴⁰) + 2⁻⁹⁷.
 //   σ̃² = c̃·q̃: ρ_σ = (ρ_c + ρ_q)(1 + 2⁻⁴⁰) + 2⁻¹⁰²; translation q̃·(−Dy), q̃·Dx: ρ_q + 2⁻¹⁰²
 //     (a zero component of D gives an exact zero).
@@ -161,6 +164,10 @@ NfpFlat::PieceDD piece_dd(const Ray& E, const Line* edge) {
   v.dd = dd.hi, v.ddl = dd.lo;
   v.ok = dd.hi >= 0x1p-800;
   v.ddi = 1 / dd.hi;
+  // o × D (dd products ≤ 9u²·|hi| each, their difference 2⁻¹⁰⁰ of the operands: 2⁻⁹⁹ in all).
+  const D2 k1 = mul({v.ox, v.oxl}, {v.dy, v.dyl}), k2 = mul({v.oy, v.oyl}, {v.dx, v.dxl});
+  const D2 k = add(k1, {-k2.hi, -k2.lo});
+  v.k = k.hi, v.kl = k.lo, v.ke = 0x1p-99 * (std::abs(k1.hi) + std::abs(k2.hi)) * (1 + 0x1p-50);
   return v;
 }
 
@@ -214,19 +221,17 @@ template <bool F>
 [[gnu::always_inline]] inline bool projection_values_body(const NfpFlat& self, std::uint32_t k, const Vec2& t, double& sigma2, Vec2& translation, NfpFlat::ProjectionDiag* diag) {
   const NfpFlat::PieceDD& v = self.pdd[k];
   if (!v.ok || !in_range(t.x()) || !in_range(t.y())) return false;
-  D2 wx, wy;
-  double ewx, ewy;
-  diff(t.x(), v.ox, v.oxl, wx, ewx);
-  diff(t.y(), v.oy, v.oyl, wy, ewy);
-  if (!in_range(wx.hi) || !in_range(wy.hi)) return false;
   const D2 Dx{v.dx, v.dxl}, Dy{v.dy, v.dyl};
   // An axis-parallel edge (frequent on real pieces): X − t = −W along the other axis and σ² = W²
   // on it. When W = s + r exactly (e_W = 0), RN(W) is two-sum's hi (the hardware's rounding of
   // s + r: RN of the exact sum, ties to even), so no tie can defeat the certificate.
   if (v.dx == 0 || v.dy == 0) {
     const bool horizontal = v.dy == 0;
-    const D2 w = horizontal ? wy : wx;
-    if ((horizontal ? ewy : ewx) != 0 || w.hi == 0) return false;
+    D2 w;
+    double ew;
+    if (horizontal) diff(t.y(), v.oy, v.oyl, w, ew);
+    else diff(t.x(), v.ox, v.oxl, w, ew);
+    if (!in_range(w.hi) || ew != 0 || w.hi == 0) return false;
     const D2 w2 = mul<F>(w, w);
     if (diag) *diag = {{w2.hi, horizontal ? 0.0 : -w.hi, horizontal ? -w.hi : 0.0}, {w2.lo, horizontal ? 0.0 : -w.lo, horizontal ? -w.lo : 0.0},
                        {0x1p-102 * std::abs(w2.hi), 0, 0}, true};
@@ -235,11 +240,14 @@ template <bool F>
     translation = horizontal ? Vec2(0, -w.hi) : Vec2(-w.hi, 0);
     return true;
   }
-  const D2 p1 = mul<F>(wx, Dy), p2 = mul<F>(wy, Dx);
-  const D2 c = add(p1, {-p2.hi, -p2.lo});
+  // c = t × D − o × D: two products of a double by an exact double-double and two sums, with
+  // o × D tabled per piece (no t − o first: a shorter dependent chain).
+  const D2 p1 = mul<F>({t.x(), 0}, Dy), p2 = mul<F>({t.y(), 0}, Dx);
+  const D2 s = add(p1, {-p2.hi, -p2.lo});
+  const D2 c = add(s, {-v.k, -v.kl});
   const double ac = std::abs(c.hi);
   if (!(ac >= 0x1p-800 && ac <= 0x1p800)) return false;
-  const double ec = (std::abs(v.dy) * ewx + std::abs(v.dx) * ewy) * (1 + 0x1p-50) + 0x1p-99 * (std::abs(p1.hi) + std::abs(p2.hi));
+  const double ec = (0x1p-99 * (std::abs(p1.hi) + std::abs(p2.hi)) + 0x1p-100 * (std::abs(s.hi) + std::abs(v.k)) + v.ke) * (1 + 0x1p-50);
   const double rc = ec / ac * (1 + 0x1p-50);
   if (!(rc <= 0x1p-60)) return false;
   const D2 q = div<F>(c, {v.dd, v.ddl}, v.ddi);
@@ -366,15 +374,30 @@ template <bool F>
   diff(v.cx, t.x(), -v.cxl, wx, ewx);  // C − t: (cx − t) + cxl
   diff(v.cy, t.y(), -v.cyl, wy, ewy);
   if (!in_range(wx.hi) || !in_range(wy.hi)) return false;
-  const D2 Ex{v.ex, v.exl}, Ey{v.ey, v.eyl};
-  const D2 n1 = mul<F>(wx, Ey), n2 = mul<F>(wy, Ex);
-  const D2 num = add(n1, {-n2.hi, -n2.lo});
-  const D2 m1 = mul<F>({d.x(), 0}, Ey), m2 = mul<F>({d.y(), 0}, Ex);
-  const D2 den = add(m1, {-m2.hi, -m2.lo});
+  D2 num, den;
+  double en, ed, sc[2] = {1, 0};  // num, den: N, D divided by sc[0] + sc[1] (diag)
+  if (v.ex == 0 || v.ey == 0) {
+    // An axis-parallel edge (a third to two thirds of the pieces' edges on nesting instances): with
+    // Ey = 0, N = −Ex·Wy and D = −Ex·dy, so λ = Wy/dy (Ex = 0: Wx/dx) — the numerator W̃ within
+    // e_W on that axis and the denominator the exact double d, without the four double-double
+    // products (the same certificate below, for the same RN(λ)).
+    const bool horizontal = v.ey == 0;  // the two-sum's hi is 0 iff E is exactly 0 on that axis
+    num = horizontal ? wy : wx;
+    en = horizontal ? ewy : ewx;
+    den = {horizontal ? d.y() : d.x(), 0};
+    ed = 0;
+    sc[0] = horizontal ? -v.ex : v.ey, sc[1] = horizontal ? -v.exl : v.eyl;
+  } else {
+    const D2 Ex{v.ex, v.exl}, Ey{v.ey, v.eyl};
+    const D2 n1 = mul<F>(wx, Ey), n2 = mul<F>(wy, Ex);
+    num = add(n1, {-n2.hi, -n2.lo});
+    const D2 m1 = mul<F>({d.x(), 0}, Ey), m2 = mul<F>({d.y(), 0}, Ex);
+    den = add(m1, {-m2.hi, -m2.lo});
+    en = (std::abs(v.ey) * ewx + std::abs(v.ex) * ewy) * (1 + 0x1p-50) + 0x1p-99 * (std::abs(n1.hi) + std::abs(n2.hi));
+    ed = 0x1p-99 * (std::abs(m1.hi) + std::abs(m2.hi));
+  }
   const double an = std::abs(num.hi), ad = std::abs(den.hi);
   if (!(an >= 0x1p-800 && an <= 0x1p800 && ad >= 0x1p-800 && ad <= 0x1p800)) return false;
-  const double en = (std::abs(v.ey) * ewx + std::abs(v.ex) * ewy) * (1 + 0x1p-50) + 0x1p-99 * (std::abs(n1.hi) + std::abs(n2.hi));
-  const double ed = 0x1p-99 * (std::abs(m1.hi) + std::abs(m2.hi));
   // The candidate q = RN(num_hi / den_hi), else its neighbour towards λ (num_lo and den_lo move λ
   // by up to about an ulp of q), each certified by its residual (crossing_certified).
   double q = num.hi / den.hi;
@@ -386,16 +409,16 @@ template <bool F>
     E = 0x1p-50 * (std::abs(t2) + std::abs(num.lo) + std::abs(r)) + en + std::abs(x) * ed;
   };
   residual(q);
+  auto report = [&] {
+    if (diag) *diag = {{q, r, den.hi}, {0, 0, den.lo}, {0, E, ed}, true, {sc[0], sc[1]}};
+  };
   if (!crossing_certified(q, r, E, den.hi)) {
     const bool up = (r > 0) == (den.hi > 0);  // λ − q has the sign of r·D
     q = std::bit_cast<double>(std::bit_cast<std::uint64_t>(q) + (up == (q > 0) ? 1 : -1));
     residual(q);
-    if (!crossing_certified(q, r, E, den.hi)) {
-      if (diag) *diag = {{q, r, den.hi}, {0, 0, den.lo}, {0, E, ed}, true};
-      return false;
-    }
+    if (!crossing_certified(q, r, E, den.hi)) return report(), false;
   }
-  if (diag) *diag = {{q, r, den.hi}, {0, 0, den.lo}, {0, E, ed}, true};
+  report();
   lambda = q;
   return true;
 }

@@ -405,7 +405,7 @@ void projection_values_against_rationals() {
   // as 1 + 2⁻⁵² nor mis-rounded).
   check_projection(edge_ray(Vec2(0, 0), Vec2(0, 0), Vec2(1, 2), Vec2(0, 0), Vec2(0, 0), Vec2(0, 0)), Vec2(5 * 0x1p-54, -5), st, "tie (1, 2)");
   // σ_d's crossing value λ = line_num / line_den on the same pieces, random rays.
-  std::size_t crossings = 0, crossed = 0;
+  std::size_t crossings = 0, crossed = 0, axis_crossings = 0;
   double worst_cross = 0;
   for (std::size_t i = 0; i < albano.size(); i += 3)
     for (std::size_t j = 1; j < albano.size(); j += 2) {
@@ -429,10 +429,14 @@ void projection_values_against_rationals() {
         const bool ok = N.flat.crossing_value(std::uint32_t(k), t, d, l, &diag);
         if (diag.set) {
           // The certificate's two bounds (nfp_value.cpp crossing_certified): the denominator's
-          // double-double within its bound, and the residual N − q·D within E of r̃.
-          const mpq_class num = pendepth::nonconvex2::line_num(pc.edge, ray, LiftQ{}).v;
-          ASSERT_LE(abs(den.v - mpq_class(diag.hi[2]) - mpq_class(diag.lo[2])), mpq_class(diag.bound[2])) << "crossing den " << k;
-          const mpq_class err = abs(num - mpq_class(diag.hi[0]) * den.v - mpq_class(diag.hi[1]));
+          // double-double within its bound, and the residual N − q·D within E of r̃ (N and D
+          // divided by the reported scale: an axis-parallel edge's ±E, else 1).
+          const mpq_class sc = mpq_class(diag.scale[0]) + mpq_class(diag.scale[1]);
+          ASSERT_NE(sgn(sc), 0) << "crossing scale " << k;
+          const mpq_class num = pendepth::nonconvex2::line_num(pc.edge, ray, LiftQ{}).v / sc, dens = den.v / sc;
+          axis_crossings += diag.scale[0] != 1 || diag.scale[1] != 0;
+          ASSERT_LE(abs(dens - mpq_class(diag.hi[2]) - mpq_class(diag.lo[2])), mpq_class(diag.bound[2])) << "crossing den " << k;
+          const mpq_class err = abs(num - mpq_class(diag.hi[0]) * dens - mpq_class(diag.hi[1]));
           ASSERT_LE(err, mpq_class(diag.bound[1])) << "crossing residual " << k;
           worst_cross = std::max(worst_cross, mpq_class(err / mpq_class(diag.bound[1])).get_d());
         }
@@ -441,8 +445,10 @@ void projection_values_against_rationals() {
         ASSERT_TRUE(same(l, pendepth::exact::round_nearest(lam))) << "crossing " << k << " t = " << t.transpose();
       }
     }
-  std::cout << "[crossing values] " << crossings << " rays, " << crossed << " certified; worst error / bound " << worst_cross << "\n";
+  std::cout << "[crossing values] " << crossings << " rays (" << axis_crossings << " on axis-parallel edges), " << crossed
+            << " certified; worst error / bound " << worst_cross << "\n";
   EXPECT_GT(crossed, crossings * 9 / 10);
+  EXPECT_GT(axis_crossings, crossings / 10);  // the axis-parallel shortcut is exercised
   EXPECT_GT(worst_cross, 0x1p-12);
   std::cout << "[projection values] " << st.pieces << " edges, " << st.tried << " tried, " << st.bounded << " bounded, " << st.certified
             << " certified; worst error / bound " << st.worst << "\n";
@@ -846,6 +852,16 @@ TEST(NfpFastPath, CrossingValuesAgainstRationals) {
     auto v = [&]() -> Vec2 { return Vec2(u(rng), u(rng)) * s; };
     check(line(v(), k % 2 ? v() * 0x1p-40 : Vec2(0, 0), v()), v(), Vec2(u(rng), u(rng)), "random " + std::to_string(k));
   }
+  // Axis-parallel lines (λ = W/d on one axis: nfp_value.cpp's shortcut), points c1 + c2 of one and
+  // two doubles, tails down to 2⁻⁶⁰ of the point (W inexact: its bound e_W), random and axis rays.
+  for (int k = 0; k < 20000; ++k) {
+    const double s = std::ldexp(1.0, ex(rng));
+    auto v = [&]() -> Vec2 { return Vec2(u(rng), u(rng)) * s; };
+    const Vec2 e = k % 2 ? Vec2(u(rng) * s, 0) : Vec2(0, u(rng) * s);
+    const Vec2 c2 = k % 3 == 0 ? Vec2(0, 0) : v() * std::ldexp(1.0, -20 - int(rng() % 41));
+    const Vec2 d = k % 5 == 0 ? Vec2(u(rng), 0) : k % 5 == 1 ? Vec2(0, u(rng)) : Vec2(u(rng), u(rng));
+    check(line(v(), c2, e), v(), d, "axis " + std::to_string(k));
+  }
   std::cout << "[crossing certificate] " << tried << " lines, " << certified << " certified, " << exact_ties << " exact ties\n";
   EXPECT_GT(certified, tried * 9 / 10);
 }
@@ -929,6 +945,94 @@ TEST(NfpFastPath, FmaAndPortableValuesAgree) {
   std::mt19937_64 rng2(19006);
   for (std::size_t i = 0; i < albano.size(); i += 3)
     for (std::size_t j = 0; j < albano.size(); j += 2) check_pair(albano[i], albano[j], rng2, 10, "portable albano " + std::to_string(i) + " " + std::to_string(j));
+}
+
+}  // namespace
+
+namespace {
+
+bool same(const pendepth::DepthValue2& a, const pendepth::DepthValue2& b) {
+  return same(a.depth, b.depth) && same(a.translation, b.translation) && a.overlapping == b.overlapping;
+}
+
+// The lean queries (NoFitPolygon2::depth_value / directional_depth_value: the fast path) against
+// the exact path's lean answers (minimum_value / along_value with exact_path: the hierarchy and
+// rationals only) bit for bit, in the FMA and the portable build, on placements that stress the
+// certified values: exactly on pieces (their rounded ends, ±1 ulp, points of axis-parallel pieces
+// at random abscissae — exactly on the edge line for integer data — and midpoints), exactly on
+// ring vertices, just inside O beside pieces (ulps to a tenth of the piece away), and random;
+// directions along the axes (rays parallel to the axis-parallel edges, and crossings that take
+// nfp_value's axis-parallel shortcut), diagonals and random ones. Pairs: albano (every ordered
+// pair), shirts, trousers, baldacci4 (random pairs), and pieces turned by 30° (coordinates
+// rounded: no axis-parallel edges, inexact ends).
+TEST(NfpFastPath, LeanValuesAgainstExactPath) {
+  using pendepth::DepthValue2;
+  std::mt19937_64 rng(19013);
+  std::uniform_real_distribution<double> f(0, 1), ang(0, 2 * M_PI);
+  std::size_t queries = 0, overlapping = 0, pairs = 0, flat = 0;
+  auto check = [&](const NoFitPolygon2& nfp, const Vec2& t, const std::string& what) {
+    const auto& N = nfp_impl(nfp);
+    const double a = ang(rng);
+    const std::vector<Vec2> dirs{{1, 0}, {0, 1}, {-1, 0}, {0, -1}, {1, -1}, {std::cos(a), std::sin(a)}};
+    const DepthValue2 se = N.minimum_value(t, true);
+    ++queries, overlapping += se.overlapping;
+    std::vector<DepthValue2> de;
+    for (const Vec2& d : dirs) de.push_back(N.along_value(t, pendepth::nonconvex2::check_and_scale(t, d), true));
+    for (int m = 0; m < 2; ++m) {
+      const ValuesBuild b(m == 0);
+      const DepthValue2 s = nfp.depth_value(t);
+      ASSERT_TRUE(same(s, se)) << what << (m ? " portable" : "") << " σ at " << std::hexfloat << t.transpose() << ": " << s.depth
+                               << " vs exact " << se.depth;
+      for (std::size_t i = 0; i < dirs.size(); ++i) {
+        const DepthValue2 v = nfp.directional_depth_value(t, dirs[i]);
+        ASSERT_TRUE(same(v, de[i])) << what << (m ? " portable" : "") << " σ_d at " << std::hexfloat << t.transpose() << " d "
+                                    << dirs[i].transpose() << ": " << v.depth << " vs exact " << de[i].depth;
+      }
+    }
+  };
+  auto pair = [&](const Polygon& P, const Polygon& Q, std::size_t piece_step, int random, const std::string& what) {
+    const NoFitPolygon2 nfp(P, Q);
+    const auto& N = nfp_impl(nfp);
+    ++pairs;
+    flat += N.flat.usable;  // beyond 256 pieces (baldacci4's larger pairs) the hierarchy answers
+    for (std::size_t k = 0; k < N.pieces.size(); k += piece_step) {
+      const Vec2 a = N.pieces[k].a, b = N.pieces[k].b;
+      for (const Vec2& p : {a, b, ulp_step(a, 1, 0), ulp_step(a, 0, -1), Vec2(0.5 * (a + b))}) check(nfp, p, what + " piece");
+      if (a.y() == b.y()) check(nfp, Vec2(a.x() + f(rng) * (b.x() - a.x()), a.y()), what + " horizontal piece");
+      if (a.x() == b.x()) check(nfp, Vec2(a.x(), a.y() + f(rng) * (b.y() - a.y())), what + " vertical piece");
+      // Just inside O (on the piece's left), from ulps to a tenth of its length away.
+      const Vec2 n(a.y() - b.y(), b.x() - a.x());
+      for (double h : {0x1p-40, 0x1p-12, 0.1}) check(nfp, a + f(rng) * (b - a) + h * f(rng) * n, what + " beside a piece");
+    }
+    Vec2 lo = N.pieces[0].a, hi = lo;
+    for (const auto& poly : nfp.polygons())
+      for (const auto& ring : poly)
+        for (std::size_t i = 0; i < ring.size(); ++i) {
+          lo = lo.cwiseMin(ring[i]), hi = hi.cwiseMax(ring[i]);
+          if (i % piece_step == 0) check(nfp, ring[i], what + " ring vertex");
+        }
+    for (int r = 0; r < random; ++r) check(nfp, Vec2(lo.x() + f(rng) * (hi.x() - lo.x()), lo.y() + f(rng) * (hi.y() - lo.y())), what + " random");
+  };
+  const auto albano = instance("albano.json");
+  for (std::size_t i = 0; i < albano.size(); ++i)
+    for (std::size_t j = 0; j < albano.size(); ++j) pair(albano[i], albano[j], 2, 20, "albano " + std::to_string(i) + " " + std::to_string(j));
+  for (const std::string file : {"shirts", "trousers", "baldacci4"}) {
+    const auto pieces = instance(file + ".json");
+    for (int k = 0; k < 8; ++k) {
+      const std::size_t i = rng() % pieces.size(), j = rng() % pieces.size();
+      pair(pieces[i], pieces[j], 2, 20, file + " " + std::to_string(i) + " " + std::to_string(j));
+    }
+  }
+  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+  for (int k = 0; k < 6; ++k) {
+    const std::size_t i = rng() % albano.size(), j = rng() % albano.size();
+    const Polygon Q = mapped(albano[j], [&](const Vec2& p) { return Vec2(c * p.x() - s * p.y(), s * p.x() + c * p.y()); });
+    pair(albano[i], Q, 2, 20, "albano " + std::to_string(i) + " " + std::to_string(j) + " Q turned 30°");
+  }
+  std::cout << "[lean vs exact] " << pairs << " pairs (" << flat << " on the flat scan), " << queries << " placements ("
+            << overlapping << " overlapping), σ and 6 σ_d each, both builds\n";
+  EXPECT_GT(overlapping, queries / 4);
+  EXPECT_GT(flat, pairs * 3 / 4);
 }
 
 }  // namespace
