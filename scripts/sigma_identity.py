@@ -8,31 +8,63 @@ SHA-256 per set, with its number of placements.
 
   scripts/sigma_identity.py BUILD/bin/sigma_identity > hashes.txt                 # record
   scripts/sigma_identity.py BUILD/bin/sigma_identity --check scripts/sigma_identity.sha256
+  scripts/sigma_identity.py NEW/bin/sigma_identity --answers BASE/bin/sigma_identity  # see below
 
-The recorded file scripts/sigma_identity.sha256 is main 951d3af's output: a change of one bit
-of one field (the work counter `candidates` included) of one placement changes its set's hash.
-A change of the engine meant to keep the answers (speed) must keep every hash.
+The recorded file scripts/sigma_identity.sha256 is branch sigstart's output (commit 67a7298, on
+main 4f3112a): a change of one bit of one field (the work counter `candidates` included) of one
+placement changes its set's hash. A change of the engine meant to keep the answers (speed) must
+keep every hash. A change of σ's path (another start, other supports) changes `candidates` only:
+--answers runs both dumps and counts, per set, the placements whose fields other than the last
+(`candidates`) differ — all must be 0 — and prints the mean `candidates` of each. Recorded anew
+at 67a7298 because its first tetrahedron takes GJK's directions towards 0 (fewer supports):
+0 differing placements of 38,625 against 4f3112a, whose hashes (951d3af's) it replaces.
 """
 import hashlib, subprocess, sys
 
 
-def hashes(exe):
+def dump(exe):
+    """[(set name, [lines])] of the executable's output."""
     out = subprocess.run([exe], check=True, capture_output=True, text=True).stdout
     sets, name, lines = [], None, []
     for line in out.splitlines() + ["# set END"]:
         if line.startswith("# set "):
             if name is not None:
-                sets.append((name, hashlib.sha256("\n".join(lines).encode()).hexdigest(), len(lines)))
+                sets.append((name, lines))
             name, lines = line[6:], []
         else:
             lines.append(line)
     return sets
 
 
+def hashes(exe):
+    return [(name, hashlib.sha256("\n".join(lines).encode()).hexdigest(), len(lines)) for name, lines in dump(exe)]
+
+
+def same_answers(new_exe, base_exe):
+    """Per set: placements whose fields except the last (candidates) differ; 1 if any does."""
+    new, base = dump(new_exe), dump(base_exe)
+    if [n for n, _ in new] != [n for n, _ in base]:
+        print("the sets differ")
+        return 1
+    bad = 0
+    for (name, a), (_, b) in zip(new, base):
+        if len(a) != len(b):
+            print(f"{name}: {len(a)} placements against {len(b)}")
+            bad += 1
+            continue
+        differ = sum(x.rsplit(" ", 1)[0] != y.rsplit(" ", 1)[0] for x, y in zip(a, b))
+        mean = lambda ls: sum(int(x.rsplit(" ", 1)[1]) for x in ls) / max(1, len(ls))
+        print(f"{name} {len(a)} differing {differ}, candidates {mean(b):.3f} -> {mean(a):.3f}")
+        bad += differ
+    return 1 if bad else 0
+
+
 def main():
     if len(sys.argv) < 2:
         print(__doc__)
         return 2
+    if len(sys.argv) >= 4 and sys.argv[2] == "--answers":
+        return same_answers(sys.argv[1], sys.argv[3])
     got = hashes(sys.argv[1])
     if len(sys.argv) >= 4 and sys.argv[2] == "--check":
         want = {}

@@ -895,21 +895,31 @@ class Expander {
   }
 
   // s3: a support strictly off the line of s1, s2 (e = the rounded m_s2 − m_s1), along some
-  // ±(m_s2 − m_s1) × g_k (M is full-dimensional; the g_k are linearly independent). −1 when
-  // over budget.
+  // ±(m_s2 − m_s1) × g: first g = ê × m̂_s1 (normalised), so that the direction is GJK's, from the
+  // line towards 0, then the g_k (M is full-dimensional; the g_k are linearly independent). Any
+  // g is correct (the direction is exactly orthogonal to m_s2 − m_s1 for the doubles g); this
+  // one aims, as GJK, at a first tetrahedron that contains 0 (fewer supports and less time per
+  // σ: docs/benchmarks.md). σ only: its answer is canonical, the same from any start
+  // (scripts/sigma_identity.py diffs it), while σ_d's choice among facets tied at the exit point
+  // depends on K, so σ_d (kBudget) keeps the start it had. −1 when over budget.
   [[gnu::always_inline]] int third_support(int s1, int s2, const double e[3]) {
     int s3 = -1;
     const double bmax = std::max({B_[0], B_[1], B_[2]});
     const double cerr[3] = {2.02 * (ed_max_ + 2.02 * kU * bmax), 2.02 * (ed_max_ + 2.02 * kU * bmax),
                             2.02 * (ed_max_ + 2.02 * kU * bmax)};  // D̂ × g rounded, |g| <= 1
-    for (int k = 0; k < 3 && s3 < 0; ++k)
+    double towards0[3];
+    cross_r(e, V_[s1].mh, towards0);
+    const Vec3 t0 = Vec3(towards0[0], towards0[1], towards0[2]);
+    const double len = t0.norm();
+    const bool use_t0 = !kBudget && std::isfinite(len) && len > 0;
+    for (int k = use_t0 ? -1 : 0; k < 3 && s3 < 0; ++k)
       for (int sg : {1, -1}) {
         Dir D;
         D.kind = Dir::Cross;
         D.a = s1, D.b = s2, D.sgn = sg;
-        D.d = Vec3(kGeneric[k][0], kGeneric[k][1], kGeneric[k][2]);
-        double n[3];
-        cross_r(e, kGeneric[k], n);
+        D.d = k < 0 ? t0 * ((1 - 0x1p-50) / len) : Vec3(kGeneric[k][0], kGeneric[k][1], kGeneric[k][2]);
+        double g[3] = {D.d[0], D.d[1], D.d[2]}, n[3];
+        cross_r(e, g, n);
         D.n = sg * Vec3(n[0], n[1], n[2]);
         finish_dir(D, cerr);
         int x = support_cold(D);
@@ -926,15 +936,19 @@ class Expander {
   // budget.
   [[gnu::always_inline]] int fourth_support(int s1, int s2, int s3, const double e[3], int& o) {
     int s4 = -1;
-    for (int sg : {1, -1}) {
+    // σ: first towards 0 (GJK's choice: the tetrahedron then tends to contain 0); either order is
+    // correct. σ_d keeps + first (see third_support).
+    double e2[3], n[3];
+    diff_r(V_[s3], V_[s1], e2);
+    cross_r(e, e2, n);
+    const double* a = V_[s1].mh;
+    const int first = !kBudget && n[0] * a[0] + n[1] * a[1] + n[2] * a[2] > 0 ? -1 : 1;
+    for (int sg : {first, -first}) {
       Dir D;
       D.kind = Dir::Normal;
       D.a = s1, D.b = s2, D.c = s3, D.sgn = sg;
       D.structural = true;  // identities of the triangle hold for either sign
       D.t = pairs(s1, s2, s3);
-      double e2[3], n[3];
-      diff_r(V_[s3], V_[s1], e2);
-      cross_r(e, e2, n);
       D.n = sg * Vec3(n[0], n[1], n[2]);
       finish_dir(D, ne_);
       int x = support_cold(D);
