@@ -241,7 +241,7 @@ void BM_MeshDistance(benchmark::State& st) {
 void BM_MeshCast(benchmark::State& st) {
   mesh_query(st, [](const Prepared& p, std::size_t i) { benchmark::DoNotOptimize(p.pair.cast(pendepth::Pose3(), p.poses[i], p.dirs[i])); });
 }
-// σ (minimum): the exact σ where the pairs in range are small enough (mesh_sigma_exact.cpp), and
+// σ (minimum): the exact σ where it ends within its work limit (mesh_sigma_exact.cpp), and
 // the same query on the bounds alone (a mesh3::SigmaBoundsOnly guard: the path before it).
 void minimum_query(benchmark::State& st) {
   mesh_query(st, [](const Prepared& p, std::size_t i) { benchmark::DoNotOptimize(p.pair.minimum(pendepth::Pose3(), p.poses[i])); });
@@ -267,7 +267,7 @@ void BM_MeshMinimumBoundsOnly(benchmark::State& st) {
   pendepth::mesh3::SigmaBoundsOnly bounds_only;  // the benchmark runs its loop on this thread
   minimum_query(st);
 }
-// The exact σ alone (mesh3::exact_minimum, no size limit) on the poses among the first 16 whose
+// The exact σ alone (mesh3::exact_minimum, no work limit) on the poses among the first 16 whose
 // certified bounds do not meet (the ones minimum() sends to it). Args: mesh case, tier (0 the
 // filtered tier, 1 everything exact: a mesh3::SigmaExactUnfiltered guard — the reference).
 // Counters: queries, mean candidate facets in range.

@@ -18,9 +18,9 @@
 //             stop as soon as upper meets lower. Bounds within 16 ulps are reported equal (exact
 //             to a few ulps).
 //             Cost: k σ_d queries (mesh_line.cpp) after the n·m pair tests.
-//             When the bounds do not meet and the pairs in range are small (kExactSigmaMaxFacets):
-//             the exact σ from mesh_sigma_exact.cpp, a 1-ulp bracket (off: a SigmaBoundsOnly guard on
-//             the thread).
+//             When the bounds do not meet and the exact σ ends within its work limit
+//             (kExactSigmaMaxWork, a deterministic count): the exact σ from mesh_sigma_exact.cpp, a
+//             1-ulp bracket (off: a SigmaBoundsOnly guard on the thread).
 #include "mesh3/mesh_pair.hpp"
 
 #include "mesh3/mesh_sigma_exact.hpp"
@@ -118,7 +118,7 @@ Depth3 minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q) {
     }
   Depth3 r = least_from_deep(std::move(deep), work, [&](const Vec3& d) { return along(m, pose_p, pose_q, d, false); });
   if (SigmaKeepBounds* keep = SigmaKeepBounds::active) keep->bounds = r;
-  // Bounds apart: the exact σ (mesh_sigma_exact.cpp) when the pairs in range are small enough.
+  // Bounds apart: the exact σ (mesh_sigma_exact.cpp) when it ends within its work limit.
   if (SigmaBoundsOnly::depth == 0 && r.overlapping && r.lower_bound < r.upper_bound)
     if (std::optional<Depth3> x = exact_minimum(m, pose_p, pose_q, r.upper_bound)) {
       x->candidates += r.candidates;

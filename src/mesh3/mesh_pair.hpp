@@ -61,9 +61,9 @@ inline constexpr std::size_t kFacetPathMax = 400;
 
 /// σ with certified bounds: lower = max over overlapping piece pairs of the exact σ_ij, upper =
 /// the least σ_d over a set of directions (mesh_pair.cpp); depth = upper with its translation.
-/// When those bounds do not meet and the pairs in range are small enough (kExactSigmaMaxFacets,
-/// mesh_sigma_exact.hpp; no SigmaBoundsOnly on the thread): the exact σ (lower, upper = a 1-ulp
-/// bracket).
+/// When those bounds do not meet and the exact σ ends within its work limit (kExactSigmaMaxWork,
+/// mesh_sigma_exact.hpp: a deterministic count; no SigmaBoundsOnly on the thread): the exact σ
+/// (lower, upper = a 1-ulp bracket).
 Depth3 minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q);
 
 /// While alive on this thread, minimum() stays on the bounds (thread-local). For callers whose

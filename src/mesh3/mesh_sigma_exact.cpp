@@ -66,6 +66,10 @@
 // facet cover by unions"): with the union cover the tripod pair takes ~2 000 facets (2 reach the
 // lines) and 0.4 s; a torus 8×4 pair ~8 900 facets (~190 reach the lines, fewer of their lines
 // run: those through unsettled triangles) and half a minute.
+// Work limit (max_work, the front door's kExactSigmaMaxWork): a deterministic count of the setup's
+// candidate facets and of the line stage's line–sum tests; past it the query gives up (nullopt)
+// having decided nothing, so a limited run either equals the unlimited one or gives up
+// (tests/mesh3/test_mesh_sigma_exact.cpp, WorkLimitAnswersOrGivesUp).
 #include "mesh3/mesh_sigma_exact.hpp"
 
 #include "convex3/minkowski_facets.hpp"
@@ -851,20 +855,25 @@ CoverResult union_cover(const std::vector<OpenConvex>& sets, const std::vector<V
 }  // namespace detail
 
 std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, double upper,
-                                    std::size_t max_facets, bool skip_cover) {
+                                    std::size_t max_work, bool skip_cover) {
   if (!(upper >= 0) || !std::isfinite(upper)) return std::nullopt;
   Ctx c{m, place(m, pose_p, pose_q), {}, {}, SigmaExactUnfiltered::depth == 0, SigmaExactUnfiltered::planted, {}, {}, {}};
   const convex3::RelativePose rel{c.pl.R, c.pl.tq, c.pl.tp};
   const double reach = upper * (1 + 0x1p-30) + 0x1p-1000;
+  // The work count (mesh_sigma_exact.hpp, kExactSigmaMaxWork): deterministic, never a clock. A
+  // candidate facet of the setup (minkowski_facets, its plane, the repeated-plane test) weighs
+  // kSetupWeight line–sum tests: measured ~18 µs against ~1.7 µs (docs/benchmarks.md "Exact mesh σ:
+  // a work limit"), so that giving up costs about the same time whichever stage reaches the limit.
+  constexpr std::size_t kSetupWeight = 10;
+  std::size_t work = 0;
+  auto spend = [&](std::size_t units) { return (work += units) <= max_work; };
   // The sums in range and their planes.
-  std::size_t total = 0;
   for (std::size_t i = 0; i < m.P.size(); ++i)
     for (std::size_t j = 0; j < m.Q.size(); ++j) {
       const double bd = box_distance(box_of_sum(m, c.pl, i, j));
       if (bd * (1 - 0x1p-30) > reach) continue;
       const auto cand = convex3::minkowski_facets(m.P[i], m.Q[j], rel, std::nullopt);
-      total += cand.size();
-      if (total > max_facets) return std::nullopt;
+      if (!spend(kSetupWeight * cand.size())) return std::nullopt;
       const convex3::PolytopeData& P = convex3::data_of(m.P[i]);
       const convex3::PolytopeData& Q = convex3::data_of(m.Q[j]);
       Sum s{i, j, c.planes.size(), cand.size(), bd, box_of_sum(m, c.pl, i, j)};
@@ -978,6 +987,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
           const LineI L = interval_line(f, g, fi, gi);
           if (line_far(c, L, sk, sl, bound2)) continue;
           line_done[c.cls[gi]] = fi;
+          if (!spend(1 + cover.size())) return std::nullopt;
           if (line_no_offer(c, L, sk, gi, cover, best, ivs_i)) continue;
         }
         const ExactPlane& ge = exact_plane(c, gi);
@@ -992,6 +1002,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
         if (!line_interval(c, sk, Le, false, a, b, gi)) continue;
         if (!a || !b) continue;  // unreachable: S_k is bounded
         ++lines;
+        if (!spend(1 + cover.size())) return std::nullopt;
         // Covering open intervals (the ones meeting [a, b]).
         std::vector<std::pair<FT, FT>> ivs;
         const double a_inf = to_interval(*a).first, b_sup = to_interval(*b).second;

@@ -1,5 +1,5 @@
 // Private: the exact σ of a mesh pair (issue 17 item 4), the refinement of minimum()'s bounds
-// (mesh_pair.hpp) on pairs small enough; see mesh_sigma_exact.cpp.
+// (mesh_pair.hpp) where it ends within a work limit; see mesh_sigma_exact.cpp.
 #pragma once
 
 #include "mesh3/mesh_pair.hpp"
@@ -10,22 +10,24 @@
 
 namespace pendepth::mesh3 {
 
-/// Size limit of the exact path: the total number of candidate facet normals
-/// (convex3::minkowski_facets) of the piece pairs whose sum box meets the ball B(0, upper).
-/// Beyond it minimum() keeps the certified bounds. Measured (docs/benchmarks.md "Exact mesh σ"):
-/// combs against an L block, CGAL's cross and star have 200–1 100 candidates in range (18–315
-/// distinct planes) and take 3–10 ms per exact σ ("Exact mesh σ: plane classes, one rounding
-/// guard"); a torus 8×4 pair has ~16 900 distinct planes over 437 sums and takes half a minute
-/// even with the facet cover by unions (its ~190 facets that reach the lines are the cost), the
-/// tripod pair (beyond 1 000) half a second ("… a facet cover by unions"). 600 lets every
-/// overlapping bench pose of the combs, the cross and the star meet while keeping
-/// tests/mesh3's CGAL sample-mesh properties at ~10 s.
-inline constexpr std::size_t kExactSigmaMaxFacets = 600;
+/// Work limit of the exact path at the front door (minimum()): a deterministic count, never a
+/// clock, so that an answer does not depend on the machine or its load. Work = 10 × the candidate
+/// facets (convex3::minkowski_facets) of the piece pairs whose sum box meets B(0, upper) — the
+/// setup, ~10× a line–sum test per facet — plus, for every line plane(f) ∩ plane(g) that passes
+/// the interval prunes (line_far) and for every line of the exact stage, 1 + the number of
+/// covering sums it is tested against — the line stage, the cost that grows
+/// (mesh_sigma_exact.cpp). Beyond it exact_minimum gives up (nullopt) and minimum() keeps the
+/// certified bounds; giving up costs ~0.45 s here (1.8 µs per unit). Measured (docs/benchmarks.md
+/// "Exact mesh σ: a work limit"): combs against an L block, CGAL's cross and star spend 2 000–6 000
+/// units (3–10 ms); CGAL's tripod against itself 19 000–650 000 over 9 poses (0.1–4 s), 5 of them
+/// within the limit; a torus 8×4 pair 226 000 in its setup alone and ~16 million in all (half a
+/// minute). Replaces a limit of 600 candidate facets, which kept the tripod out.
+inline constexpr std::size_t kExactSigmaMaxWork = 250000;
 
 /// σ = dist(0, complement of O) exactly, given a certified upper bound `upper` >= σ (today's
 /// least σ_d): depth = σ rounded to nearest, lower_bound <= σ <= upper_bound adjacent doubles
 /// (equal when σ is a double), translation / normal / witnesses / features / pieces of the
-/// nearest point's facet. nullopt when the pairs in range exceed `max_facets`, when 0 is not in
+/// nearest point's facet. nullopt when the work exceeds `max_work`, when 0 is not in
 /// O, or when no point of the complement is found within `upper` (upper not an upper bound).
 /// `skip_cover` (tests only: the planted bug) omits the removal of covered points.
 /// The tiers (tests and the bench): while a SigmaExactUnfiltered is alive on this thread,
@@ -77,6 +79,6 @@ CoverResult union_cover(const std::vector<OpenConvex>& sets, const std::vector<V
 }  // namespace detail
 
 std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, double upper,
-                                    std::size_t max_facets = kExactSigmaMaxFacets, bool skip_cover = false);
+                                    std::size_t max_work = kExactSigmaMaxWork, bool skip_cover = false);
 
 }  // namespace pendepth::mesh3

@@ -25,6 +25,7 @@
 #include <gmpxx.h>
 
 #include <cmath>
+#include <cstdint>
 #include <random>
 
 namespace {
@@ -32,8 +33,8 @@ namespace {
 using namespace pendepth;
 using namespace mesh3_test;
 
-// The algorithm is tested beyond the front door's size policy (kExactSigmaMaxFacets).
-constexpr std::size_t kTestMaxFacets = 2000;
+// The algorithm is tested beyond the front door's work limit (kExactSigmaMaxWork).
+constexpr std::size_t kTestMaxWork = SIZE_MAX;
 
 // The old certified bounds (minimum() without the exact path).
 Depth3 old_bounds(const mesh3::MeshPair& m, const Pose3& pp, const Pose3& pq) {
@@ -135,14 +136,14 @@ TEST(MeshSigmaExact, PolycubesAgainstVoxelOracle) {
       const Depth3 old = old_bounds(m, Pose3(), Pose3(t));
       ASSERT_TRUE(old.overlapping) << what;
       unmet += old.lower_bound < old.upper_bound;
-      const auto x = mesh3::exact_minimum(m, Pose3(), Pose3(t), old.upper_bound, kTestMaxFacets);
+      const auto x = mesh3::exact_minimum(m, Pose3(), Pose3(t), old.upper_bound, kTestMaxWork);
       ASSERT_TRUE(x.has_value()) << what;
       EXPECT_TRUE(brackets(*x, q)) << what << " got " << x->depth << " want " << std::sqrt(q.get_d());
       EXPECT_TRUE(one_ulp(*x)) << what;
       EXPECT_TRUE(brackets(old, q)) << what;  // the old bounds hold the exact value
       if (k % 4) continue;
       const Depth3 s = pair.minimum(Pose3(), Pose3(t));
-      // Pair3: the exact path's bracket, or (beyond the size limit) the old bounds unchanged.
+      // Pair3: the exact path's bracket, or (beyond the work limit) the old bounds unchanged.
       if (s.lower_bound == old.lower_bound && s.upper_bound == old.upper_bound) continue;
       EXPECT_TRUE(one_ulp(s)) << what;
       EXPECT_TRUE(brackets(s, q)) << what;
@@ -166,7 +167,7 @@ TEST(MeshSigmaExact, SlotClosedForm) {
   } cases[] = {{{1, 0.5, 0}, 0.5}, {{0.25, 1.5, 0}, 0.75}, {{2, 2.75, 0.5}, 0.25}, {{1, 0.25, 0.5}, 0.5}};
   for (const Case& c : cases) {
     EXPECT_EQ(voxel_sigma2(P, Q, c.t), mpq_class(c.sigma) * mpq_class(c.sigma)) << show(c.t);
-    const auto x = mesh3::exact_minimum(m, Pose3(), Pose3(c.t), old_bounds(m, Pose3(), Pose3(c.t)).upper_bound, kTestMaxFacets);
+    const auto x = mesh3::exact_minimum(m, Pose3(), Pose3(c.t), old_bounds(m, Pose3(), Pose3(c.t)).upper_bound, kTestMaxWork);
     ASSERT_TRUE(x.has_value());
     EXPECT_EQ(x->depth, c.sigma) << show(c.t);
     EXPECT_EQ(x->lower_bound, c.sigma);
@@ -188,7 +189,7 @@ TEST(MeshSigmaExact, PlantedBugIsCaught) {
       const mpq_class q = voxel_sigma2(c.P, c.Q, t);
       if (q < 0) continue;
       const auto x = mesh3::exact_minimum(m, Pose3(), Pose3(t), old_bounds(m, Pose3(), Pose3(t)).upper_bound,
-                                          kTestMaxFacets, true);
+                                          kTestMaxWork, true);
       wrong += !x || !brackets(*x, q);
     }
   }
@@ -211,7 +212,7 @@ int check_properties(const Shape3& sp, const Shape3& sq, std::mt19937_64& rng, i
     const std::string what = name + " pose " + std::to_string(k);
     const Depth3 old = old_bounds(m, pp, pq);
     unmet += old.lower_bound < old.upper_bound;
-    const auto x = mesh3::exact_minimum(m, pp, pq, old.upper_bound, kTestMaxFacets);
+    const auto x = mesh3::exact_minimum(m, pp, pq, old.upper_bound, kTestMaxWork);
     EXPECT_TRUE(x.has_value()) << what;
     if (!x) continue;
     EXPECT_TRUE(one_ulp(*x)) << what;
@@ -227,11 +228,11 @@ int check_properties(const Shape3& sp, const Shape3& sq, std::mt19937_64& rng, i
       EXPECT_LE(x->lower_bound, pair.along(pp, pq, dir).upper_bound) << what << " d " << show(dir);
     }
     // The front door: the exact path, or the old bounds when they met within 16 ulps or the pair
-    // is beyond the size limit.
+    // is beyond the work limit.
     const Depth3 s = pair.minimum(pp, pq);
     if (old.lower_bound == old.upper_bound) EXPECT_NEAR(s.depth, x->depth, 16 * 0x1p-52 * x->depth) << what;
     if (old.lower_bound < old.upper_bound && !(s.lower_bound == old.lower_bound && s.upper_bound == old.upper_bound))
-      EXPECT_TRUE(one_ulp(s)) << what;  // else beyond the size limit: the old bounds unchanged
+      EXPECT_TRUE(one_ulp(s)) << what;  // else beyond the work limit: the old bounds unchanged
   }
   return overl;
 }
@@ -241,6 +242,57 @@ TEST(MeshSigmaExact, RotatedCombAndCup) {
   const Shape3 a = mesh_shape(polycube(comb(3)), "comb"), b = mesh_shape(polycube(cup(2)), "cup");
   int unmet = 0;
   EXPECT_GE(check_properties(a, b, rng, 4, 1.5, "comb-cup", unmet), 2);
+}
+
+// The work limit (kExactSigmaMaxWork: a count, never a clock): under any limit the exact path
+// either gives the unlimited answer, bit for bit, or gives up; it gives up below one threshold
+// and answers from it on (the count is deterministic and only grows); limit 0 gives up (the setup
+// spends); the front door equals the exact path under the default limit.
+TEST(MeshSigmaExact, WorkLimitAnswersOrGivesUp) {
+  std::mt19937_64 rng(41);
+  std::uniform_real_distribution<double> U(-1, 1);
+  const Shape3 sp = mesh_shape(polycube(comb(3)), "comb"), sq = mesh_shape(polycube(cup(2)), "cup");
+  const mesh3::MeshPair m = direct(sp, sq);
+  const Pair3 pair(sp, sq);
+  int answered = 0;
+  for (int k = 0; k < 12 && answered < 4; ++k) {
+    const Pose3 pq(Eigen::Quaterniond(U(rng), U(rng), U(rng), U(rng)), Vec3(1.5 * U(rng), 1.5 * U(rng), 1.5 * U(rng)));
+    if (!pair.overlapping(Pose3(), pq)) continue;
+    const Depth3 old = old_bounds(m, Pose3(), pq);
+    if (!(old.lower_bound < old.upper_bound)) continue;
+    const auto full = mesh3::exact_minimum(m, Pose3(), pq, old.upper_bound, SIZE_MAX);
+    ASSERT_TRUE(full.has_value()) << k;
+    ++answered;
+    EXPECT_FALSE(mesh3::exact_minimum(m, Pose3(), pq, old.upper_bound, 0).has_value()) << k;
+    bool gave_up = true;
+    for (std::size_t w = 1; w < (std::size_t{1} << 40); w = w * 3 / 2 + 1) {
+      const auto x = mesh3::exact_minimum(m, Pose3(), pq, old.upper_bound, w);
+      if (!x) {
+        EXPECT_TRUE(gave_up) << k << " gave up at " << w << " after answering below it";
+        continue;
+      }
+      gave_up = false;
+      EXPECT_EQ(x->depth, full->depth) << k << " w " << w;
+      EXPECT_EQ(x->lower_bound, full->lower_bound) << k << " w " << w;
+      EXPECT_EQ(x->upper_bound, full->upper_bound) << k << " w " << w;
+      EXPECT_EQ(x->translation, full->translation) << k << " w " << w;
+      EXPECT_EQ(x->piece_p, full->piece_p) << k << " w " << w;
+      EXPECT_EQ(x->piece_q, full->piece_q) << k << " w " << w;
+      if (w > mesh3::kExactSigmaMaxWork) break;
+    }
+    EXPECT_FALSE(gave_up) << k;
+    const auto limited = mesh3::exact_minimum(m, Pose3(), pq, old.upper_bound);
+    const Depth3 s = pair.minimum(Pose3(), pq);
+    if (limited) {
+      EXPECT_EQ(s.depth, limited->depth) << k;
+      EXPECT_EQ(s.lower_bound, limited->lower_bound) << k;
+      EXPECT_EQ(s.upper_bound, limited->upper_bound) << k;
+    } else {
+      EXPECT_EQ(s.lower_bound, old.lower_bound) << k;
+      EXPECT_EQ(s.upper_bound, old.upper_bound) << k;
+    }
+  }
+  EXPECT_GE(answered, 2);
 }
 
 

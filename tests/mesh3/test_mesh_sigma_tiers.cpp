@@ -19,6 +19,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <random>
@@ -28,7 +29,7 @@ namespace {
 using namespace pendepth;
 using namespace mesh3_test;
 
-constexpr std::size_t kNoLimit = 100000;
+constexpr std::size_t kNoLimit = SIZE_MAX;  // no work limit
 
 // Poses: Q's translation uniform in ±spread (half of them on the half-integer grid when `grid`),
 // rotations random unless `axis_aligned`; `same_pose`: Q at P's pose (a mesh against itself: O
