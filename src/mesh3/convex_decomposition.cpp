@@ -238,7 +238,8 @@ K::FT six_volume(const Poly& P) {
   return v;
 }
 
-// Exactly: no vertex of P strictly outside any facet's plane (orientation given by `sign` of the volume).
+// Exactly: no vertex of P strictly outside any facet's plane (outside: orientation POSITIVE for an
+// outward facet, CGAL's convention; `sign` is the sign of the volume, -1 when the facets face inwards).
 bool convex(const Poly& P, int sign) {
   for (auto f = P.facets_begin(); f != P.facets_end(); ++f) {
     std::vector<K::Point_3> fv;
@@ -248,7 +249,7 @@ bool convex(const Poly& P, int sign) {
     for (std::size_t j = 2; j < fv.size(); ++j) {
       if (CGAL::collinear(fv[0], fv[1], fv[j])) continue;
       for (auto v = P.vertices_begin(); v != P.vertices_end(); ++v)
-        if (CGAL::orientation(fv[0], fv[1], fv[j], v->point()) * sign == CGAL::NEGATIVE) return false;
+        if (CGAL::orientation(fv[0], fv[1], fv[j], v->point()) * sign == CGAL::POSITIVE) return false;
       break;
     }
   }
