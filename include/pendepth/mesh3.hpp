@@ -94,7 +94,8 @@ class Mesh3 {
 /// Convex decomposition of a validated mesh by CGAL's Nef_polyhedron_3 convex_decomposition_3
 /// (exact kernel; cuts through reflex edges), pieces rounded as ConvexDecomposition3 says. A mesh
 /// with more than 128 reflex edges is first cut exactly into cells by axis-parallel planes (a
-/// kd-tree over its reflex edges, ≤ 16 cells), each decomposed on its own: about 2× faster.
+/// kd-tree over its reflex edges, ≤ 16 cells), each decomposed on its own: 1.3–2× faster on
+/// most slow sample meshes (docs/benchmarks.md).
 /// O(r²) pieces for r reflex edges at worst; costly (seconds for thousands of triangles).
 ConvexDecomposition3 convex_decomposition(const Mesh3& mesh);
 
