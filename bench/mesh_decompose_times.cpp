@@ -6,7 +6,7 @@
 //
 //   mesh_decompose_times FILE   → one line: file, triangles, reflex edges, validate s, then (after
 //                                 a flush, so a killed run still shows its validation) pieces,
-//                                 rounded pieces, cut vertices, decomposition s — or "convex" /
+//                                 rounded pieces, cut vertices, cells, decomposition s — or "convex" /
 //                                 the InvalidInput message.
 #include <pendepth/io.hpp>
 #include <pendepth/mesh3.hpp>
@@ -35,8 +35,8 @@ int main(int argc, char** argv) {
     }
     const auto t1 = clock::now();
     const pendepth::ConvexDecomposition3 d = pendepth::convex_decomposition(m);
-    std::printf(" pieces %zu rounded %zu dropped %zu cut_vertices %zu decompose_s %.3f\n", d.pieces.size(),
-                d.rounded_pieces, d.dropped_slivers, d.cut_vertices, secs(t1));
+    std::printf(" pieces %zu rounded %zu dropped %zu cut_vertices %zu cells %zu decompose_s %.3f\n", d.pieces.size(),
+                d.rounded_pieces, d.dropped_slivers, d.cut_vertices, d.cells, secs(t1));
   } catch (const std::exception& e) {
     std::printf(" invalid: %s\n", e.what());
   }

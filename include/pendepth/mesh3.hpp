@@ -38,6 +38,9 @@ struct ConvexDecomposition3 {
   std::size_t cut_vertices = 0;
   /// Reflex edges of the mesh (edges whose dihedral angle exceeds π), the decomposition's input size.
   std::size_t reflex_edges = 0;
+  /// Cells the mesh was cut into (exactly, by axis-parallel planes) before each was decomposed
+  /// on its own; 1 when it was decomposed in one run (src/mesh3/convex_decomposition.cpp).
+  std::size_t cells = 1;
 };
 
 /// A validated closed, oriented, 2-manifold, non-self-intersecting triangle mesh bounding one
@@ -89,7 +92,10 @@ class Mesh3 {
 };
 
 /// Convex decomposition of a validated mesh by CGAL's Nef_polyhedron_3 convex_decomposition_3
-/// (exact kernel; cuts through reflex edges), pieces rounded as ConvexDecomposition3 says.
+/// (exact kernel; cuts through reflex edges), pieces rounded as ConvexDecomposition3 says. A mesh
+/// with more than 128 reflex edges is first cut exactly into cells by axis-parallel planes (a
+/// kd-tree over its reflex edges, ≤ 16 cells), each decomposed on its own: 1.3–2× faster on
+/// most slow sample meshes (docs/benchmarks.md).
 /// O(r²) pieces for r reflex edges at worst; costly (seconds for thousands of triangles).
 ConvexDecomposition3 convex_decomposition(const Mesh3& mesh);
 

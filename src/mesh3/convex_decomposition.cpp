@@ -14,18 +14,38 @@
 // only the mesh's own vertices does not exist in general (Schönhardt's polyhedron needs Steiner
 // points), so the rounding is stated rather than avoided.
 //
+// Split first (docs/benchmarks.md "Closed meshes: splitting before the Nef decomposition"): almost all of
+// convex_decomposition_3's time is ray shooting in the Nef point locator while it raises the walls
+// of reflex edges (perf: ~70% under SNC_point_locator::shoot, mostly exact evaluation of rays
+// against the walls already raised), and that cost grows faster than the number of reflex edges.
+// So a mesh with more than DecompositionSplit::max_reflex_per_cell reflex edges is first cut, exactly
+// (Nef intersection with a box), by an axis-parallel plane through the median of its reflex
+// edges' midpoints, recursively (a kd-tree over the reflex edges, at most max_depth levels), and
+// each cell is decomposed on its own. The cells tile the solid, so the union of their pieces is
+// the solid and their interiors are disjoint; each piece is convex. A cut plane passes through
+// no mesh vertex (it lies strictly between two consecutive vertex coordinates on its axis), so
+// every cell is a regular solid. The cuts add pieces where they cross a convex region (175 → 368
+// on sphere966; a few percent on most meshes); bounded walls sometimes make fewer (oblong). Should a Nef operation on a cell
+// throw, the whole mesh is decomposed again in one run (the reference path, max_depth = 0).
+//
 // The CGAL Nef headers are heavy to compile: they stay in this one file.
 #include <pendepth/mesh3.hpp>
 
+#include "mesh3/convex_decomposition_nef.hpp"
 #include "mesh3/mesh_impl.hpp"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Nef_polyhedron_3.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/generators.h>
 #include <CGAL/convex_decomposition_3.h>
 
+#include <algorithm>
+#include <cmath>
+#include <exception>
 #include <map>
+#include <optional>
 #include <set>
 
 namespace pendepth {
@@ -61,30 +81,194 @@ bool flat(const std::vector<Vec3>& v) {
   return true;
 }
 
-}  // namespace
+K::Point_3 point(const Vec3& p) { return K::Point_3(p.x(), p.y(), p.z()); }
 
-ConvexDecomposition3 convex_decomposition(const Mesh3& mesh) {
+// The mesh's solid as a Nef polyhedron (exact: doubles convert exactly).
+Nef mesh_nef(const Mesh3& mesh) {
   Mesh sm;
   const auto pts = mesh.points();
   std::map<std::size_t, Mesh::Vertex_index> vid;
   for (const auto& t : mesh.triangles())
     for (std::size_t v : t)
-      if (!vid.count(v)) vid.emplace(v, sm.add_vertex(K::Point_3(pts[v].x(), pts[v].y(), pts[v].z())));
+      if (!vid.count(v)) vid.emplace(v, sm.add_vertex(point(pts[v])));
   for (const auto& t : mesh.triangles()) sm.add_face(vid.at(t[0]), vid.at(t[1]), vid.at(t[2]));
+  return Nef(sm);
+}
 
-  Nef N(sm);
-  CGAL::convex_decomposition_3(N);
+struct ReflexEdge {
+  Vec3 a, b;
+};
 
+// The reflex edges as segments: the neighbour's vertex opposite the edge strictly outside the
+// (outward) triangle's plane, exact orient3d as in Mesh3::validate. Only where to cut depends on them.
+std::vector<ReflexEdge> reflex_edges(const Mesh3& mesh) {
+  const auto p = mesh.points();
+  const auto tris = mesh.triangles();
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> opposite;  // directed edge → third vertex
+  for (const auto& t : tris)
+    for (int k = 0; k < 3; ++k) opposite[{t[k], t[(k + 1) % 3]}] = t[(k + 2) % 3];
+  std::vector<ReflexEdge> out;
+  for (const auto& t : tris)
+    for (int k = 0; k < 3; ++k) {
+      const std::size_t u = t[k], v = t[(k + 1) % 3];
+      if (u > v) continue;
+      if (predicates::orient3d(p[t[0]], p[t[1]], p[t[2]], p[opposite.at({v, u})]) > 0) out.push_back({p[u], p[v]});
+    }
+  return out;
+}
+
+// Axis-parallel cuts through no mesh vertex, and the half-spaces (as boxes around the mesh) they bound.
+class Cutter {
+ public:
+  explicit Cutter(const Mesh3& mesh) {
+    for (int i = 0; i < 3; ++i) {
+      std::vector<double>& c = coords_[i];
+      for (const auto& t : mesh.triangles())
+        for (std::size_t v : t) c.push_back(mesh.points()[v][i]);
+      std::sort(c.begin(), c.end());
+      c.erase(std::unique(c.begin(), c.end()), c.end());
+      const double e = std::max({1.0, std::abs(c.front()), std::abs(c.back())});
+      lo_[i] = c.front() - e;  // strictly beyond the mesh, whatever the rounding
+      hi_[i] = c.back() + e;
+    }
+  }
+
+  struct Cut {
+    int axis;
+    double at;
+  };
+
+  // The plane through the median of the edges' midpoints on the axis where they spread most,
+  // moved to a double strictly between two consecutive vertex coordinates; none if there is no such double.
+  std::optional<Cut> choose(const std::vector<ReflexEdge>& edges) const {
+    int axis = 0;
+    double spread[3];
+    for (int i = 0; i < 3; ++i) {
+      const auto [lo, hi] = std::minmax_element(edges.begin(), edges.end(), [&](const ReflexEdge& x, const ReflexEdge& y) {
+        return mid(x, i) < mid(y, i);
+      });
+      spread[i] = mid(*hi, i) - mid(*lo, i);
+      if (spread[i] > spread[axis]) axis = i;
+    }
+    std::vector<double> m;
+    for (const auto& e : edges) m.push_back(mid(e, axis));
+    std::nth_element(m.begin(), m.begin() + m.size() / 2, m.end());
+    const std::vector<double>& c = coords_[axis];
+    const auto above = std::upper_bound(c.begin(), c.end(), m[m.size() / 2]);
+    if (above == c.begin() || above == c.end()) return std::nullopt;
+    const double a = *(above - 1), b = *above, at = a + (b - a) / 2;
+    if (!(a < at && at < b)) return std::nullopt;
+    return Cut{axis, at};
+  }
+
+  // The part of `solid` below (`upper` false) or above the cut.
+  Nef side(const Nef& solid, const Cut& cut, bool upper) const {
+    double l[3] = {lo_[0], lo_[1], lo_[2]}, h[3] = {hi_[0], hi_[1], hi_[2]};
+    (upper ? l : h)[cut.axis] = cut.at;
+    Mesh box;
+    auto P = [](double x, double y, double z) { return K::Point_3(x, y, z); };
+    CGAL::make_hexahedron(P(l[0], l[1], l[2]), P(h[0], l[1], l[2]), P(h[0], h[1], l[2]), P(l[0], h[1], l[2]),
+                          P(l[0], h[1], h[2]), P(l[0], l[1], h[2]), P(h[0], l[1], h[2]), P(h[0], h[1], h[2]), box);
+    return solid * Nef(box);
+  }
+
+ private:
+  static double mid(const ReflexEdge& e, int i) { return e.a[i] / 2 + e.b[i] / 2; }
+  std::vector<double> coords_[3];
+  double lo_[3], hi_[3];
+};
+
+// The marked bounded volumes of a decomposed Nef polyhedron, as polyhedra (the first volume is the outer one).
+void collect_pieces(Nef& decomposed, std::vector<Poly>& out) {
+  for (auto ci = ++decomposed.volumes_begin(); ci != decomposed.volumes_end(); ++ci) {
+    if (!ci->mark()) continue;
+    out.emplace_back();
+    decomposed.convert_inner_shell_to_polyhedron(ci->shells_begin(), out.back());
+  }
+}
+
+// Recursive step: cut `cell` while it meets too many reflex edges and a cut separates them, then
+// decompose each cell. Returns the number of cells.
+std::size_t decompose_cells(Nef cell, const std::vector<ReflexEdge>& edges, const Cutter& cutter,
+                            const detail::DecompositionSplit& split, int depth, std::vector<Poly>& out) {
+  std::optional<Cutter::Cut> cut;
+  std::vector<ReflexEdge> below, above;
+  if (edges.size() > split.max_reflex_per_cell && depth < split.max_depth && (cut = cutter.choose(edges))) {
+    for (const auto& e : edges) {
+      if (std::min(e.a[cut->axis], e.b[cut->axis]) < cut->at) below.push_back(e);
+      if (std::max(e.a[cut->axis], e.b[cut->axis]) > cut->at) above.push_back(e);
+    }
+    if (std::max(below.size(), above.size()) == edges.size()) cut.reset();  // no progress
+  }
+  if (!cut) {
+    CGAL::convex_decomposition_3(cell);
+    collect_pieces(cell, out);
+    return 1;
+  }
+  Nef lower = cutter.side(cell, *cut, false), upper = cutter.side(cell, *cut, true);
+  cell.clear();
+  return decompose_cells(std::move(lower), below, cutter, split, depth + 1, out) +
+         decompose_cells(std::move(upper), above, cutter, split, depth + 1, out);
+}
+
+// The exact pieces; the split path falls back to one run if a Nef operation throws.
+std::vector<Poly> exact_pieces(const Mesh3& mesh, const detail::DecompositionSplit& split, std::size_t& cells) {
+  const Nef solid = mesh_nef(mesh);
+  std::vector<Poly> out;
+  try {
+    cells = decompose_cells(solid, reflex_edges(mesh), Cutter(mesh), split, 0, out);
+  } catch (const std::exception&) {
+    if (split.max_depth == 0) throw;
+    out.clear();
+    cells = decompose_cells(solid, {}, Cutter(mesh), {split.max_reflex_per_cell, 0}, 0, out);
+  }
+  return out;
+}
+
+// Six times the signed volume of a closed polyhedron, exactly.
+K::FT six_volume(const Poly& P) {
+  K::FT v = 0;
+  for (auto f = P.facets_begin(); f != P.facets_end(); ++f) {
+    auto h = f->facet_begin();
+    const K::Point_3& a = h->vertex()->point();
+    for (++h; std::next(h) != f->facet_begin(); ++h)
+      v += CGAL::determinant(a - CGAL::ORIGIN, h->vertex()->point() - CGAL::ORIGIN,
+                             std::next(h)->vertex()->point() - CGAL::ORIGIN);
+  }
+  return v;
+}
+
+// Exactly: no vertex of P strictly outside any facet's plane (outside: orientation POSITIVE for an
+// outward facet, CGAL's convention; `sign` is the sign of the volume, -1 when the facets face inwards).
+bool convex(const Poly& P, int sign) {
+  for (auto f = P.facets_begin(); f != P.facets_end(); ++f) {
+    std::vector<K::Point_3> fv;
+    auto h = f->facet_begin();
+    do fv.push_back(h->vertex()->point());
+    while (++h != f->facet_begin());
+    for (std::size_t j = 2; j < fv.size(); ++j) {
+      if (CGAL::collinear(fv[0], fv[1], fv[j])) continue;
+      for (auto v = P.vertices_begin(); v != P.vertices_end(); ++v)
+        if (CGAL::orientation(fv[0], fv[1], fv[j], v->point()) * sign == CGAL::POSITIVE) return false;
+      break;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+namespace detail {
+
+ConvexDecomposition3 convex_decomposition(const Mesh3& mesh, const DecompositionSplit& split) {
   std::set<std::array<double, 3>> mesh_vertices;
-  for (const auto& [i, v] : vid) mesh_vertices.insert({pts[i].x(), pts[i].y(), pts[i].z()});
+  for (const auto& t : mesh.triangles())
+    for (std::size_t i : t) mesh_vertices.insert({mesh.points()[i].x(), mesh.points()[i].y(), mesh.points()[i].z()});
   std::set<std::array<double, 3>> cut;
 
   ConvexDecomposition3 out;
   out.reflex_edges = mesh.reflex_edges();
-  for (auto ci = ++N.volumes_begin(); ci != N.volumes_end(); ++ci) {  // the first is the outer volume
-    if (!ci->mark()) continue;
-    Poly P;
-    N.convert_inner_shell_to_polyhedron(ci->shells_begin(), P);
+  for (const Poly& P : exact_pieces(mesh, split, out.cells)) {
     std::vector<Vec3> v;
     bool rounded = false;
     for (auto it = P.points_begin(); it != P.points_end(); ++it) {
@@ -107,5 +291,34 @@ ConvexDecomposition3 convex_decomposition(const Mesh3& mesh) {
   out.cut_vertices = cut.size();
   return out;
 }
+
+DecompositionCheck check_decomposition(const Mesh3& mesh, const DecompositionSplit& split) {
+  DecompositionCheck c;
+  const std::vector<Poly> pieces = exact_pieces(mesh, split, c.cells);
+  c.pieces = pieces.size();
+  const Nef solid = mesh_nef(mesh);
+  Nef all;  // empty
+  K::FT sum = 0;
+  c.each_convex = true;
+  for (const Poly& P : pieces) {
+    Poly copy = P;
+    all += Nef(copy);
+    const K::FT v = six_volume(P);
+    const int sign = CGAL::sign(v);
+    sum += sign * v;
+    c.each_convex = c.each_convex && sign != 0 && convex(P, sign);
+  }
+  c.union_is_mesh = all == solid;
+  K::FT mesh_volume = 0;
+  for (const auto& t : mesh.triangles())
+    mesh_volume += CGAL::determinant(point(mesh.points()[t[0]]) - CGAL::ORIGIN, point(mesh.points()[t[1]]) - CGAL::ORIGIN,
+                                     point(mesh.points()[t[2]]) - CGAL::ORIGIN);
+  c.volumes_sum = sum == mesh_volume;
+  return c;
+}
+
+}  // namespace detail
+
+ConvexDecomposition3 convex_decomposition(const Mesh3& mesh) { return detail::convex_decomposition(mesh, {}); }
 
 }  // namespace pendepth
