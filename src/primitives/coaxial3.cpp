@@ -299,15 +299,29 @@ struct Ring {
   CoaxialSum K;
 };
 
+// The lower ends of a region's two half sizes and its constant, shared by both regions: P's half
+// size α' = kept_p − cut_p·slope(β) and Q's γ' = kept_q − cut_q·slope(β_q) (the chords of
+// √(1 − x²) over the region's widths β and β_q), C = (cut_p + r_P) + (cut_q + r_Q)·m. A negative
+// half size is moved into C times its width (β for P, w_q for Q) and becomes 0, so the region's
+// set stays a parallelogram / sum of disks. Rounded towards a lower bound throughout.
+struct RegionSizes {
+  double alpha, gamma, C;
+};
+RegionSizes region_sizes(const Ring& g, double kept_p, double cut_p, double kept_q, double cut_q,
+                         double beta, double beta_q, double w_q) {
+  RegionSizes r{sub(kept_p, mul(cut_p, chord_slope_up(beta), +1), -1),
+                sub(kept_q, mul(cut_q, chord_slope_up(beta_q), +1), -1),
+                add(add(cut_p, g.rp, -1), mul(add(cut_q, g.rq, -1), g.m, -1), -1)};
+  if (r.alpha < 0) r.C = add(r.C, mul(r.alpha, beta, -1), -1), r.alpha = 0;
+  if (r.gamma < 0) r.C = add(r.C, mul(r.gamma, w_q, -1), -1), r.gamma = 0;
+  return r;
+}
+
 // Region S: C_S − |t − y|, y the parallelogram's point nearest t (b1 across, then a1 along z).
 double side_band(const Ring& g, double beta) {
   const double bt = add(beta, g.tau, +1), bw = quot(bt, g.m, +1);
   if (!(bw < 1)) return -kInf;
-  double alpha = sub(g.Hp, mul(g.Rp, chord_slope_up(beta), +1), -1);
-  double gamma = sub(g.Hq, mul(g.Rq, chord_slope_up(bw), +1), -1);
-  double C = add(add(g.Rp, g.rp, -1), mul(add(g.Rq, g.rq, -1), g.m, -1), -1);
-  if (alpha < 0) C = add(C, mul(alpha, beta, -1), -1), alpha = 0;
-  if (gamma < 0) C = add(C, mul(gamma, bt, -1), -1), gamma = 0;
+  const auto [alpha, gamma, C] = region_sizes(g, g.Hp, g.Rp, g.Hq, g.Rq, beta, bw, bt);
   const Eigen::Matrix3d& R = g.R;
   const Vec3& t = g.t;
   // b1 matches t across (along a_xy) as far as a1 can still match t_z (|t_z − b1·a_z| <= α).
@@ -329,11 +343,7 @@ double side_band(const Ring& g, double beta) {
 double caps(const Ring& g, double beta) {
   const double vb = add(mul(g.mbar, beta, +1), g.tau3, +1), bc = quot(vb, g.m, +1);
   if (!(bc < 1)) return -kInf;
-  double alpha = sub(g.Rp, mul(g.Hp, chord_slope_up(beta), +1), -1);
-  double gamma = sub(g.Rq, mul(g.Hq, chord_slope_up(bc), +1), -1);
-  double C = add(add(g.Hp, g.rp, -1), mul(add(g.Hq, g.rq, -1), g.m, -1), -1);
-  if (alpha < 0) C = add(C, mul(alpha, beta, -1), -1), alpha = 0;
-  if (gamma < 0) C = add(C, mul(gamma, vb, -1), -1), gamma = 0;
+  const auto [alpha, gamma, C] = region_sizes(g, g.Rp, g.Hp, g.Rq, g.Hq, beta, bc, vb);
   const Eigen::Matrix3d& R = g.R;
   const Vec3& t = g.t;
   double d2x = 0, d2y = 0, d1x = 0, d1y = 0;
