@@ -44,6 +44,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -127,9 +128,12 @@ class Cutter {
         for (std::size_t v : t) c.push_back(mesh.points()[v][i]);
       std::sort(c.begin(), c.end());
       c.erase(std::unique(c.begin(), c.end()), c.end());
+      // Beyond the mesh by at least e: strictly, unless that overflows near ±DBL_MAX, where the
+      // box ends at the largest finite double (at worst on the mesh's extreme face, which the
+      // regularised intersection keeps), never at an infinity no kernel point can hold.
       const double e = std::max({1.0, std::abs(c.front()), std::abs(c.back())});
-      lo_[i] = c.front() - e;  // strictly beyond the mesh, whatever the rounding
-      hi_[i] = c.back() + e;
+      lo_[i] = std::max(c.front() - e, std::numeric_limits<double>::lowest());
+      hi_[i] = std::min(c.back() + e, std::numeric_limits<double>::max());
     }
   }
 

@@ -13,6 +13,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <optional>
 #include <random>
 #include <string>
@@ -63,6 +65,18 @@ TEST(MeshDecompositionSplit, GeneratedMeshesTileExactly) {
     SCOPED_TRACE("bumpy sphere");
     check_both(Mesh3::validate(to_file(bumpy_sphere(rng, 8, 6, 0.3)), "bumpy"));
   }
+}
+
+// Near the largest doubles: the cut boxes reach beyond the mesh by its own extent, which would
+// overflow to ±∞ at this scale; they stop at ±DBL_MAX instead and the tiling stays exact.
+TEST(MeshDecompositionSplit, HugeCoordinatesTileExactly) {
+  Gen g = polycube(comb(6));
+  double extent = 0;
+  for (const Vec3& p : g.points) extent = std::max(extent, p.cwiseAbs().maxCoeff());
+  const double scale = std::ldexp(1.0, 1023 - std::ilogb(extent));  // a power of two: exact, the top coordinate ≥ 2^1023
+  for (Vec3& p : g.points) p = (p * scale).eval();
+  for (Vec3& p : g.points) p.x() -= scale;  // both signs on x
+  check_both(Mesh3::validate(to_file(g), "huge comb"));
 }
 
 #ifdef PENDEPTH_CGAL_MESHES
