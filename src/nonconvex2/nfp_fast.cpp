@@ -36,6 +36,17 @@
 //   [min − e_d, max + e_d] of the end values; a piece with ends certified on opposite sides and
 //   min − e_d > 0 is hit at some λ ≤ (max + e_d)/|d|²: U is the least such bound, and only pieces
 //   with min − e_d ≤ U (and max + e_d > 0) can be hit first.
+// inside_by_candidates (nfp_impl.hpp) — the overlap test skipped: let δ be the least distance from
+//   t to a piece (σ) or λ* the ray's first hit (σ_d). The pieces cover ∂O (every boundary point of
+//   the union of open pair sums is uncovered on some sum's edge), so the open disk of radius δ
+//   about t (σ_d: the segment [t, t + λ*·d)) meets no point of ∂O and lies wholly in O or wholly
+//   outside it. A sole candidate holds every piece at distance δ (hit at λ*), so the nearest (first)
+//   point X is in the relative interior of that piece alone (kInside) and no other piece passes
+//   through X; points just left of X are inside the piece's open pair sum (O lies on a piece's
+//   left), so when t is strictly left of the piece's line (kFromO: cross(b − a, t − a) > B, the
+//   same bound as the dot products; σ_d: a right and b left of the ray, beyond e_d, so the ray
+//   meets X coming from the left), the points of the disk (segment) next to X are in O, hence t.
+//   Otherwise the caller runs the overlap test (t outside O, or two pieces near: no shortcut).
 // Range: used only when rmax ∈ [2⁻³⁰⁰, 2³⁰⁰] (no overflow or underflow of M², far below the
 // front door's own band, src/front/scale.hpp); σ and σ_d for at most kFlatMax pieces (beyond, the
 // hierarchy's O(log N) traversal wins over a linear scan); queries with |t| beyond 2³⁰⁰ are
@@ -51,7 +62,11 @@
 #include <emmintrin.h>
 #endif
 
+#include "geometry/isa.hpp"
 #include "nonconvex2/nfp_impl.hpp"
+#if PENDEPTH_V3_CLONES
+#include <immintrin.h>
+#endif
 
 namespace pendepth::nonconvex2 {
 
@@ -189,6 +204,66 @@ int NfpFlat::overlapping(const Vec2& t) const {
   return 1;
 }
 
+namespace {
+
+#if PENDEPTH_V3_CLONES
+// nearest_candidates' pass 1, four pieces per AVX step (x86-64-v3 processors, isa::use_v3()): the
+// same operations per lane as the two-wide and scalar loops (no fused multiply-add: each product
+// and sum rounds as there), so the same q[k] and the same least value; returns the index reached.
+[[gnu::target("arch=x86-64-v3")]] std::size_t distances_v3(const double* x0, const double* y0, const double* ex, const double* ey,
+                                                           const double* il, std::size_t n, double tx, double ty, double* q,
+                                                           double& best) {
+  const __m256d Tx = _mm256_set1_pd(tx), Ty = _mm256_set1_pd(ty), zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1);
+  __m256d lo4 = _mm256_set1_pd(INFINITY);
+  std::size_t k = 0;
+  for (; k + 4 <= n; k += 4) {
+    const __m256d Ex = _mm256_loadu_pd(ex + k), Ey = _mm256_loadu_pd(ey + k);
+    const __m256d wx = _mm256_sub_pd(Tx, _mm256_loadu_pd(x0 + k)), wy = _mm256_sub_pd(Ty, _mm256_loadu_pd(y0 + k));
+    __m256d s = _mm256_mul_pd(_mm256_add_pd(_mm256_mul_pd(wx, Ex), _mm256_mul_pd(wy, Ey)), _mm256_loadu_pd(il + k));
+    s = _mm256_min_pd(_mm256_max_pd(s, zero), one);
+    const __m256d dx = _mm256_sub_pd(wx, _mm256_mul_pd(s, Ex)), dy = _mm256_sub_pd(wy, _mm256_mul_pd(s, Ey));
+    const __m256d d2 = _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy));
+    _mm256_storeu_pd(q + k, d2);
+    lo4 = _mm256_min_pd(lo4, d2);
+  }
+  double l[4];
+  _mm256_storeu_pd(l, lo4);
+  best = std::min({best, l[0], l[1], l[2], l[3]});
+  return k;
+}
+
+// first_hit_candidates' line test, four pieces per AVX step (as distances_v3: the same operations
+// per lane as the narrower loops); `visit(k, ca, cb)` for each piece that may meet the ray's line,
+// in increasing order; returns the index reached.
+template <class Visit>
+[[gnu::target("arch=x86-64-v3")]] std::size_t line_test_v3(const double* x0, const double* y0, const double* x1, const double* y1,
+                                                            std::size_t n, double tx, double ty, double dx, double dy, double e,
+                                                            Visit& visit) {
+  const __m256d Tx = _mm256_set1_pd(tx), Ty = _mm256_set1_pd(ty), Dx = _mm256_set1_pd(dx), Dy = _mm256_set1_pd(dy);
+  const __m256d E = _mm256_set1_pd(e), mE = _mm256_set1_pd(-e);
+  std::size_t k = 0;
+  for (; k + 4 <= n; k += 4) {
+    const __m256d ax = _mm256_sub_pd(_mm256_loadu_pd(x0 + k), Tx), ay = _mm256_sub_pd(_mm256_loadu_pd(y0 + k), Ty);
+    const __m256d bx = _mm256_sub_pd(_mm256_loadu_pd(x1 + k), Tx), by = _mm256_sub_pd(_mm256_loadu_pd(y1 + k), Ty);
+    const __m256d ca = _mm256_sub_pd(_mm256_mul_pd(Dx, ay), _mm256_mul_pd(Dy, ax));
+    const __m256d cb = _mm256_sub_pd(_mm256_mul_pd(Dx, by), _mm256_mul_pd(Dy, bx));
+    const __m256d miss = _mm256_or_pd(_mm256_and_pd(_mm256_cmp_pd(ca, E, _CMP_GT_OQ), _mm256_cmp_pd(cb, E, _CMP_GT_OQ)),
+                                      _mm256_and_pd(_mm256_cmp_pd(ca, mE, _CMP_LT_OQ), _mm256_cmp_pd(cb, mE, _CMP_LT_OQ)));
+    int meet = ~_mm256_movemask_pd(miss) & 15;
+    if (meet == 0) continue;
+    double c[2][4];
+    _mm256_storeu_pd(c[0], ca), _mm256_storeu_pd(c[1], cb);
+    for (; meet != 0; meet &= meet - 1) {
+      const int i = __builtin_ctz(unsigned(meet));
+      visit(k + i, c[0][i], c[1][i]);
+    }
+  }
+  return k;
+}
+#endif
+
+}  // namespace
+
 void NfpFlat::nearest_candidates(const Vec2& t, std::vector<std::uint32_t>& out) const {
   const double tx = t.x(), ty = t.y(), M = bound_m(t, rmax), B = 0x1p-40 * M * M;
   const std::size_t n = px0.size();  // ≤ kFlatMax (usable)
@@ -197,10 +272,13 @@ void NfpFlat::nearest_candidates(const Vec2& t, std::vector<std::uint32_t>& out)
   double q[kFlatMax];
   double best = INFINITY;
   std::size_t k = 0;
+#if PENDEPTH_V3_CLONES
+  if (isa::use_v3()) k = distances_v3(x0, y0, ex, ey, il, n, tx, ty, q, best);
+#endif
 #ifdef __SSE2__
   // Two pieces per step (the same operations per lane as the scalar loop below).
   const __m128d Tx = _mm_set1_pd(tx), Ty = _mm_set1_pd(ty), zero = _mm_setzero_pd(), one = _mm_set1_pd(1);
-  __m128d lo2 = _mm_set1_pd(INFINITY);
+  __m128d lo2 = _mm_set1_pd(best);
   for (; k + 2 <= n; k += 2) {
     const __m128d Ex = _mm_loadu_pd(ex + k), Ey = _mm_loadu_pd(ey + k);
     const __m128d wx = _mm_sub_pd(Tx, _mm_loadu_pd(x0 + k)), wy = _mm_sub_pd(Ty, _mm_loadu_pd(y0 + k));
@@ -234,8 +312,9 @@ void NfpFlat::nearest_candidates(const Vec2& t, std::vector<std::uint32_t>& out)
       // strictly beyond its hi end (the same error reasoning as for the determinant; a point piece
       // gets no flag).
       const double wx = tx - x0[k], wy = ty - y0[k];
-      const double dot = wx * ex[k] + wy * ey[k], l2 = ex[k] * ex[k] + ey[k] * ey[k];
-      const std::uint32_t flag = dot > B && l2 - dot > B ? kInside : dot < -B ? kBeforeLo : l2 - dot < -B ? kBeyondHi : 0u;
+      // cross(b − a, t − a) against B likewise: t strictly on O's side (the piece's left).
+      const double dot = wx * ex[k] + wy * ey[k], l2 = ex[k] * ex[k] + ey[k] * ey[k], cross = ex[k] * wy - ey[k] * wx;
+      const std::uint32_t flag = dot > B && l2 - dot > B ? kInside | (cross > B ? kFromO : 0u) : dot < -B ? kBeforeLo : l2 - dot < -B ? kBeyondHi : 0u;
       out.push_back(std::uint32_t(k) | flag);
     }
 }
@@ -257,9 +336,13 @@ void NfpFlat::first_hit_candidates(const Vec2& t, const Vec2& d, std::vector<std
     if (hi <= 0) return;  // behind t
     const bool crosses = lo > 0 && ((ca > e && cb < -e) || (ca < -e && cb > e));
     if (crosses) U = std::min(U, hi);
-    if (lo <= U) out.push_back(std::uint32_t(k) | (crosses ? kInside : 0u)), los[kept++] = lo;
+    // From O's side (the piece's left) to its right: a strictly right of the ray, b strictly left.
+    if (lo <= U) out.push_back(std::uint32_t(k) | (crosses ? kInside | (ca < -e ? kFromO : 0u) : 0u)), los[kept++] = lo;
   };
   std::size_t k = 0;
+#if PENDEPTH_V3_CLONES
+  if (isa::use_v3()) k = line_test_v3(x0, y0, x1, y1, n, tx, ty, dx, dy, e, visit);
+#endif
 #ifdef __SSE2__
   // The line test two pieces per step (the same operations per lane as the scalar loop below);
   // most pieces miss the line, so the step usually ends at the mask.

@@ -145,7 +145,16 @@ struct NfpFlat {
   /// Flags of nearest_candidates: t's projection on the piece's line falls certainly strictly
   /// before its lo end (kBeforeLo) or beyond its hi end (kBeyondHi), so its nearest point is that end.
   static constexpr std::uint32_t kBeforeLo = 1u << 30, kBeyondHi = 1u << 29;
-  static constexpr std::uint32_t kFlags = kInside | kBeforeLo | kBeyondHi;
+  /// t certainly strictly on O's side (the left) of the piece's line (nearest_candidates, with
+  /// kInside), or the ray certainly crossing the piece from O's side (first_hit_candidates).
+  static constexpr std::uint32_t kFromO = 1u << 28;
+  static constexpr std::uint32_t kFlags = kInside | kBeforeLo | kBeyondHi | kFromO;
+  /// t ∈ O certified by σ's or σ_d's candidates alone, without the overlap test: one candidate,
+  /// t's nearest point on ∂O (or the ray's first) strictly inside it, O's side towards t (proof in
+  /// nfp_fast.cpp). False says nothing (the caller runs the overlap test).
+  static bool inside_by_candidates(const std::vector<std::uint32_t>& cand) {
+    return cand.size() == 1 && (cand[0] & (kInside | kFromO)) == (kInside | kFromO);
+  }
   /// Appends to `out`, in increasing order, the indices of every piece whose exact distance to t
   /// can be the minimum (a superset of the exact nearest pieces; usually one), flagged kInside when
   /// t's projection on the piece's line falls certainly strictly inside the piece, kBeforeLo or

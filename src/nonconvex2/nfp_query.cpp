@@ -262,14 +262,17 @@ namespace {
 
 // σ_d's winner and RN(λ) (λ on the scaled d), shared by along and along_value; false when t ∉ O.
 bool along_winner(const NoFitPolygon2::Impl& N, const Vec2& t, const Vec2& d, bool exact_path, AlongBest& best, double& value) {
-  if (N.pieces.empty() || !(exact_path ? N.overlapping_exact(t) : N.overlapping(t))) return false;
+  const NfpFlat& flat = N.flat;
+  const bool fast = flat.usable && !exact_path;
+  // The fast path names its candidates first: a sole one crossed from O's side proves t ∈ O
+  // (NfpFlat::inside_by_candidates), else the overlap test decides.
+  std::vector<std::uint32_t>& cand = scratch();
+  if (fast) flat.first_hit_candidates(t, d, cand);
+  if (N.pieces.empty() || !(fast ? NfpFlat::inside_by_candidates(cand) || N.overlapping(t) : N.overlapping_exact(t))) return false;
   const Ray ray = Ray::query(t, d);
   value = std::numeric_limits<double>::infinity();
-  const NfpFlat& flat = N.flat;
-  if (flat.usable && !exact_path) {
-    std::vector<std::uint32_t>& cand = scratch();
-    flat.first_hit_candidates(t, d, cand);
-    for (std::uint32_t k : cand) best.consider(N, k & ~NfpFlat::kInside, ray, t, d, (k & NfpFlat::kInside) != 0);
+  if (fast) {
+    for (std::uint32_t k : cand) best.consider(N, k & ~NfpFlat::kFlags, ray, t, d, (k & NfpFlat::kInside) != 0);
   } else {
     // Best-first traversal of the piece hierarchy by conservative box entry λ.
     std::priority_queue<Job, std::vector<Job>, std::greater<Job>> jobs;
@@ -304,12 +307,14 @@ bool along_winner(const NoFitPolygon2::Impl& N, const Vec2& t, const Vec2& d, bo
 
 // σ's winner, σ and its translation, shared by minimum and minimum_value; false when t ∉ O.
 bool min_winner(const NoFitPolygon2::Impl& N, const Vec2& t, bool exact_path, MinBest& best, double& value, Vec2& translation) {
-  if (N.pieces.empty() || !(exact_path ? N.overlapping_exact(t) : N.overlapping(t))) return false;
-  value = std::numeric_limits<double>::infinity();
   const NfpFlat& flat = N.flat;
-  if (flat.usable && !exact_path) {
-    std::vector<std::uint32_t>& cand = scratch();
-    flat.nearest_candidates(t, cand);
+  const bool fast = flat.usable && !exact_path;
+  // As along_winner: a sole nearest candidate with t on O's side proves t ∈ O.
+  std::vector<std::uint32_t>& cand = scratch();
+  if (fast) flat.nearest_candidates(t, cand);
+  if (N.pieces.empty() || !(fast ? NfpFlat::inside_by_candidates(cand) || N.overlapping(t) : N.overlapping_exact(t))) return false;
+  value = std::numeric_limits<double>::infinity();
+  if (fast) {
     for (std::uint32_t k : cand) best.consider(N, k & ~NfpFlat::kFlags, t, k & NfpFlat::kFlags);
   } else {
     // Branch and bound on the hierarchy with conservative box distances; every piece as near as

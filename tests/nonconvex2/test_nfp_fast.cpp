@@ -71,6 +71,8 @@ bool same(const Vec2& a, const Vec2& b) { return same(a.x(), b.x()) && same(a.y(
 
 struct Counts {
   std::size_t queries = 0, certified = 0, deferred = 0, overlapping = 0;
+  // NfpFlat::inside_by_candidates: t ∈ O proved by σ's (σ_d's) candidates, over the checks made.
+  std::size_t by_nearest = 0, by_first_hit = 0, first_hit_checks = 0;
 };
 Counts& counts() {
   static Counts c;
@@ -97,6 +99,14 @@ void check_at(const NoFitPolygon2& nfp, const Vec2& t, const std::vector<Vec2>& 
   }
   const bool exact = N.overlapping_exact(t);
   c.overlapping += exact;
+  // The overlap test skipped by σ's and σ_d's fast path: only ever for t ∈ O (exact test).
+  std::vector<std::uint32_t> cand;
+  if (N.flat.usable) {
+    N.flat.nearest_candidates(t, cand);
+    const bool by = pendepth::nonconvex2::NfpFlat::inside_by_candidates(cand);
+    c.by_nearest += by;
+    ASSERT_TRUE(!by || exact) << what << " σ's candidates prove t ∈ O wrongly, t = " << t.transpose();
+  }
   ASSERT_EQ(nfp.overlapping(t), exact) << what << " t = " << t.transpose();
   const Depth2 sigma_exact = N.minimum(t, true);
   ASSERT_TRUE(same(nfp.minimum(t), sigma_exact)) << what << " σ at t = " << t.transpose();
@@ -106,6 +116,13 @@ void check_at(const NoFitPolygon2& nfp, const Vec2& t, const std::vector<Vec2>& 
   for (const Vec2& d_in : dirs) {
     if (d_in.x() == 0 && d_in.y() == 0) continue;
     const Vec2 d = pendepth::nonconvex2::check_and_scale(t, d_in);
+    if (N.flat.usable) {
+      cand.clear();
+      N.flat.first_hit_candidates(t, d, cand);
+      const bool by = pendepth::nonconvex2::NfpFlat::inside_by_candidates(cand);
+      c.by_first_hit += by, ++c.first_hit_checks;
+      ASSERT_TRUE(!by || exact) << what << " σ_d's candidates prove t ∈ O wrongly, t = " << t.transpose() << " d = " << d.transpose();
+    }
     const Depth2 along_exact = N.along(t, d, true);
     ASSERT_TRUE(same(nfp.along(t, d_in), along_exact)) << what << " σ_d at t = " << t.transpose() << " d = " << d_in.transpose();
     ASSERT_TRUE(same(nfp.directional_depth_value(t, d_in), along_exact))
@@ -222,6 +239,13 @@ TEST(NfpFastPath, NestingPieces) {
       check_turned(pieces[i], pieces[j], rng, 10, file + " " + std::to_string(i) + " " + std::to_string(j));
     }
   }
+  // Both outcomes of inside_by_candidates occur (the shortcut, and the overlap test after it).
+  const Counts& c = counts();
+  EXPECT_GT(c.by_nearest, c.overlapping / 4);
+  EXPECT_LT(c.by_nearest, c.overlapping);
+  EXPECT_GT(c.by_first_hit, c.first_hit_checks / 20);
+  std::cout << "[inside by candidates] σ " << c.by_nearest << " of " << c.overlapping << " overlapping placements, σ_d "
+            << c.by_first_hit << " of " << c.first_hit_checks << " rays\n";
 }
 
 // Pieces turned by angles that are not quarter turns (coordinates rounded once): edge directions
@@ -520,8 +544,9 @@ void check_flags(const NoFitPolygon2& nfp, const Vec2& t, FlagStats& st, const s
     const mpq_class dot_exact = -(ax * (bx - ax) + ay * (by - ay));       // (t − A)·(B − A)
     const mpq_class rest_exact = bx * (bx - ax) + by * (by - ay);         // (B − t)·(B − A)
     const double wx = t.x() - F.px0[k], wy = t.y() - F.py0[k], ex = F.pex[k], ey = F.pey[k];
-    const double dot = wx * ex + wy * ey, rest = ex * ex + ey * ey - dot;
-    for (const auto& [f, x] : {std::pair{dot, dot_exact}, std::pair{rest, rest_exact}}) {
+    const mpq_class cross_exact = (bx - ax) * -ay - (by - ay) * -ax;      // (B − A) × (t − A)
+    const double dot = wx * ex + wy * ey, rest = ex * ex + ey * ey - dot, cross = ex * wy - ey * wx;
+    for (const auto& [f, x] : {std::pair{dot, dot_exact}, std::pair{rest, rest_exact}, std::pair{cross, cross_exact}}) {
       const mpq_class err = abs(x - mpq_class(f));
       ASSERT_LE(err, mpq_class(B)) << what << " piece " << k << " t = " << t.transpose();
       st.worst = std::max(st.worst, mpq_class(err / mpq_class(B)).get_d());
@@ -532,6 +557,14 @@ void check_flags(const NoFitPolygon2& nfp, const Vec2& t, FlagStats& st, const s
     ++st.candidates;
     const std::uint32_t k = c & ~NfpFlat::kFlags;
     const NfpPiece& pc = N.pieces[k];
+    if (c & NfpFlat::kFromO) {  // t strictly left of the exact piece (on O's side)
+      ASSERT_GT(pendepth::exact::exact_sign([&](auto L) {
+                  return ray_dx(pc.E, L) * (L(t.y()) - L(pc.E.o1.y()) - L(pc.E.o2.y())) -
+                         ray_dy(pc.E, L) * (L(t.x()) - L(pc.E.o1.x()) - L(pc.E.o2.x()));
+                }),
+                0)
+          << what << " piece " << k << " t = " << t.transpose();
+    }
     if (c & NfpFlat::kInside) {
       ++st.inside;
       ASSERT_GT(compare_params(proj, pc.lo, pc.E, t), 0) << what << " piece " << k << " t = " << t.transpose();
