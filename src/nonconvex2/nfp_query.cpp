@@ -268,7 +268,7 @@ bool along_winner(const NoFitPolygon2::Impl& N, const Vec2& t, const Vec2& d, bo
   // (NfpFlat::inside_by_candidates), else the overlap test decides.
   std::vector<std::uint32_t>& cand = scratch();
   if (fast) flat.first_hit_candidates(t, d, cand);
-  if (N.pieces.empty() || !(fast ? NfpFlat::inside_by_candidates(cand) || N.overlapping(t) : N.overlapping_exact(t))) return false;
+  if (N.pieces.empty() || !(fast ? NfpFlat::inside_by_candidates(cand) || N.overlapping(t) : exact_path ? N.overlapping_exact(t) : N.overlapping(t))) return false;
   const Ray ray = Ray::query(t, d);
   value = std::numeric_limits<double>::infinity();
   if (fast) {
@@ -312,7 +312,7 @@ bool min_winner(const NoFitPolygon2::Impl& N, const Vec2& t, bool exact_path, Mi
   // As along_winner: a sole nearest candidate with t on O's side proves t ∈ O.
   std::vector<std::uint32_t>& cand = scratch();
   if (fast) flat.nearest_candidates(t, cand);
-  if (N.pieces.empty() || !(fast ? NfpFlat::inside_by_candidates(cand) || N.overlapping(t) : N.overlapping_exact(t))) return false;
+  if (N.pieces.empty() || !(fast ? NfpFlat::inside_by_candidates(cand) || N.overlapping(t) : exact_path ? N.overlapping_exact(t) : N.overlapping(t))) return false;
   value = std::numeric_limits<double>::infinity();
   if (fast) {
     for (std::uint32_t k : cand) best.consider(N, k & ~NfpFlat::kFlags, t, k & NfpFlat::kFlags);
