@@ -53,9 +53,12 @@
 // undecided. Cost: one pass over the ring edges (overlap) — above kSlabMin edges only over those
 // of t's horizontal slab (about 4 edges per slab, at most 8 copies per edge; when tall edges leave
 // a slab with more than a sixteenth of the edges, all edges up to 256, else the exact pair-sum test)
-// — and two passes over the pieces (σ: the first branch-free, two pieces per SSE2 step, the second
-// over the stored distances; σ_d: the first skips pieces missing the ray's line early — a
-// branch-free two-wide version was 17 % slower at 117 pieces and no faster on nesting pieces).
+// — and two passes over the pieces (σ: the first branch-free, two pieces per SSE2 step, four per
+// AVX step where isa::use_v3() (the same operations per lane: the same doubles), the second over
+// the stored distances; σ_d: the first skips pieces missing the ray's line early, its line test
+// two or four pieces wide likewise — a branch-free version of the whole pass was 17 % slower at
+// 117 pieces and no faster on nesting pieces). σ and σ_d skip the overlap pass when
+// inside_by_candidates proves t ∈ O (about half of σ's overlapping placements in the tests, degenerate ones included).
 #include <algorithm>
 #include <cmath>
 #ifdef __SSE2__
