@@ -58,7 +58,8 @@
 // the stored distances; σ_d: the first skips pieces missing the ray's line early, its line test
 // two or four pieces wide likewise — a branch-free version of the whole pass was 17 % slower at
 // 117 pieces and no faster on nesting pieces). σ and σ_d skip the overlap pass when
-// inside_by_candidates proves t ∈ O (about half of σ's overlapping placements in the tests, degenerate ones included).
+// inside_by_candidates proves t ∈ O (about half of σ's overlapping placements in the tests,
+// degenerate ones included).
 #include <algorithm>
 #include <cmath>
 #ifdef __SSE2__

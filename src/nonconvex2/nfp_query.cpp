@@ -263,6 +263,15 @@ struct Job {
 
 namespace {
 
+// t ∈ O for σ's and σ_d's winner searches: on the fast path from the candidates named first
+// (`cand`, NfpFlat::inside_by_candidates) when they prove it, else by the overlap test (exact
+// alone on the exact path).
+bool winner_overlaps(const NoFitPolygon2::Impl& N, const Vec2& t, bool exact_path, bool fast, const std::vector<std::uint32_t>& cand) {
+  if (N.pieces.empty()) return false;
+  if (fast && NfpFlat::inside_by_candidates(cand)) return true;
+  return exact_path ? N.overlapping_exact(t) : N.overlapping(t);
+}
+
 // σ_d's winner and RN(λ) (λ on the scaled d), shared by along and along_value; false when t ∉ O.
 bool along_winner(const NoFitPolygon2::Impl& N, const Vec2& t, const Vec2& d, bool exact_path, AlongBest& best, double& value) {
   const NfpFlat& flat = N.flat;
@@ -271,7 +280,7 @@ bool along_winner(const NoFitPolygon2::Impl& N, const Vec2& t, const Vec2& d, bo
   // (NfpFlat::inside_by_candidates), else the overlap test decides.
   std::vector<std::uint32_t>& cand = scratch();
   if (fast) flat.first_hit_candidates(t, d, cand);
-  if (N.pieces.empty() || !(fast ? NfpFlat::inside_by_candidates(cand) || N.overlapping(t) : exact_path ? N.overlapping_exact(t) : N.overlapping(t))) return false;
+  if (!winner_overlaps(N, t, exact_path, fast, cand)) return false;
   const Ray ray = Ray::query(t, d);
   value = std::numeric_limits<double>::infinity();
   if (fast) {
@@ -315,7 +324,7 @@ bool min_winner(const NoFitPolygon2::Impl& N, const Vec2& t, bool exact_path, Mi
   // As along_winner: a sole nearest candidate with t on O's side proves t ∈ O.
   std::vector<std::uint32_t>& cand = scratch();
   if (fast) flat.nearest_candidates(t, cand);
-  if (N.pieces.empty() || !(fast ? NfpFlat::inside_by_candidates(cand) || N.overlapping(t) : exact_path ? N.overlapping_exact(t) : N.overlapping(t))) return false;
+  if (!winner_overlaps(N, t, exact_path, fast, cand)) return false;
   value = std::numeric_limits<double>::infinity();
   if (fast) {
     for (std::uint32_t k : cand) best.consider(N, k & ~NfpFlat::kFlags, t, k & NfpFlat::kFlags);
