@@ -958,11 +958,9 @@ Distance3 signed_distance_body(const ConvexPolytope& Pp, const ConvexPolytope& Q
   Distance3 r;
   // Barycentric weights (rounded) of the closest point (or of 0) on S.
   std::array<double, 4> lam{1, 0, 0, 0};
-  Vec3 ap[4], aq[4];  // the members' rounded points, once
-  for (int k = 0; k < X.size; ++k) ap[k] = c.approx_p(X.s[k].id.i), aq[k] = c.approx_q(X.s[k].id.j);
   {
     Vec3 m[4];
-    for (int k = 0; k < X.size; ++k) m[k] = ap[k] - aq[k];
+    for (int k = 0; k < X.size; ++k) m[k] = c.approx_p(X.s[k].id.i) - c.approx_q(X.s[k].id.j);
     if (X.size == 2) {
       const Vec3 e = m[1] - m[0];
       double t = e.squaredNorm() > 0 ? std::clamp(-m[0].dot(e) / e.squaredNorm(), 0.0, 1.0) : 0.0;
@@ -986,7 +984,7 @@ Distance3 signed_distance_body(const ConvexPolytope& Pp, const ConvexPolytope& Q
     }
   }
   Vec3 wp = Vec3::Zero(), wq = Vec3::Zero();
-  for (int k = 0; k < X.size; ++k) wp += lam[k] * ap[k], wq += lam[k] * aq[k];
+  for (int k = 0; k < X.size; ++k) wp += lam[k] * c.approx_p(X.s[k].id.i), wq += lam[k] * c.approx_q(X.s[k].id.j);
   if (edge_edge) {  // the closest points of the two edges (rounded), whichever triangle S is
     const Vec3 p1 = c.approx_p(V.s[0].id.i), ep = c.approx_p(V.s[2].id.i) - p1;
     const Vec3 q1 = c.approx_q(V.s[0].id.j), eq = c.approx_q(V.s[1].id.j) - q1;
