@@ -76,9 +76,9 @@ bool is_plus_zero_identity(const Eigen::Matrix3d& M) {
 }
 
 // Iᵀ·x rounded as the product: x_i if x_i ≠ 0, else −0 iff x_i and both other terms are −0.
-// (Measured: writing the coefficients straight into r.R, or building the vector in registers,
-// made the signed distance's portable path 3–5 % slower at 8 points — the readers of r.R load
-// its columns as 16 + 8 bytes; this form is stored that way.)
+// Returned whole and assigned per column on purpose: the readers of r.R load its columns as
+// 16 + 8 bytes, so coefficientwise stores into r.R stall their store forwarding (measured:
+// docs/benchmarks.md, σ section, Run 10).
 Vec3 identity_times(const Vec3& x) {
   Vec3 r;
   for (int i = 0; i < 3; ++i)
