@@ -22,6 +22,19 @@ using convex3::FacetCandidate;
 using convex3::FacetSource;
 using convex3::RelativePose;
 
+namespace {
+
+// No rotation: x = y = z = +0 (as in most poses of a fixed P) and w finite, nonzero. The matrix
+// is then I exactly — the general path of Pose3::matrix gives I (w normalises to ±1 exactly,
+// every other product is +0) through a square root and four divisions.
+[[gnu::always_inline]] inline bool unrotated(const Pose3& pose) {
+  const Eigen::Vector4d c = pose.rotation.coeffs();
+  auto plus_zero = [](double x) { return x == 0 && !std::signbit(x); };
+  return plus_zero(c[0]) && plus_zero(c[1]) && plus_zero(c[2]) && std::isfinite(c[3]) && c[3] != 0;
+}
+
+}  // namespace
+
 // The quaternion is first scaled by a power of two so that its largest |coefficient| lies in
 // [1, 2): exact (the same rotation, the same normalised quaternion bit for bit when nothing
 // over- or underflows), and its squared norm can then neither overflow nor underflow at any
@@ -30,11 +43,7 @@ Eigen::Matrix3d Pose3::matrix() const {
   const Eigen::Vector4d c = rotation.coeffs();
   const double big = c.cwiseAbs().maxCoeff();
   if (!c.allFinite() || big == 0) throw InvalidInput("pose: rotation quaternion is zero or non-finite");
-  // No rotation (x = y = z = +0, as in most poses of a fixed P): I directly — the general path
-  // below gives exactly I then (w normalises to ±1 exactly, every other product is +0), through
-  // a square root and four divisions.
-  auto plus_zero = [](double x) { return x == 0 && !std::signbit(x); };
-  if (plus_zero(c[0]) && plus_zero(c[1]) && plus_zero(c[2])) return Eigen::Matrix3d::Identity();
+  if (unrotated(*this)) return Eigen::Matrix3d::Identity();
   // ldexp(x, −e) is one correctly rounded product x·2^−e whenever 2^−e is a normal double (the
   // exponent of a normal `big` read from its bits): the same bits without two libm calls per
   // coefficient; ilogb / ldexp for a subnormal `big`.
@@ -43,7 +52,9 @@ Eigen::Matrix3d Pose3::matrix() const {
   Eigen::Quaterniond q;
   if (biased > 1 && biased < 2046) {  // e = biased − 1023 ∈ [−1021, 1022]: 2^−e normal
     const double s = std::bit_cast<double>(static_cast<std::uint64_t>(2046 - biased) << 52);  // 2^(1023 − biased)
-    for (int k = 0; k < 4; ++k) q.coeffs()[k] = c[k] * s;
+    // One vector product (the same four roundings): coefficientwise stores read back by the
+    // normalisation's 16-byte loads stalled store forwarding.
+    q.coeffs() = c * s;
   } else {
     const int e = std::ilogb(big);
     for (int k = 0; k < 4; ++k) q.coeffs()[k] = std::ldexp(c[k], -e);
@@ -65,6 +76,9 @@ bool is_plus_zero_identity(const Eigen::Matrix3d& M) {
 }
 
 // Iᵀ·x rounded as the product: x_i if x_i ≠ 0, else −0 iff x_i and both other terms are −0.
+// Returned whole and assigned per column on purpose: the readers of r.R load its columns as
+// 16 + 8 bytes, so coefficientwise stores into r.R stall their store forwarding (measured:
+// docs/benchmarks.md, σ section, Run 10).
 Vec3 identity_times(const Vec3& x) {
   Vec3 r;
   for (int i = 0; i < 3; ++i)
@@ -78,10 +92,13 @@ Vec3 identity_times(const Vec3& x) {
 RelativePose relative_pose(const Pose3& pp, const Pose3& pq, Eigen::Matrix3d* Rp_out) {
   if (!pp.translation.allFinite()) throw InvalidInput("pose of P: non-finite translation");
   if (!pq.translation.allFinite()) throw InvalidInput("pose of Q: non-finite translation");
-  const Eigen::Matrix3d Rp = pp.matrix(), Rq = pq.matrix();
+  // P unrotated (x = y = z = +0, most poses of a fixed P) is known from the quaternion: its
+  // matrix is I with +0 off the diagonal, with neither the conversion nor the comparison below.
+  const bool unrot = unrotated(pp);
+  const Eigen::Matrix3d Rp = unrot ? Eigen::Matrix3d::Identity() : pp.matrix(), Rq = pq.matrix();
   if (Rp_out) *Rp_out = Rp;
   RelativePose r;
-  if (Rp == Eigen::Matrix3d::Identity() && is_plus_zero_identity(Rp)) {
+  if (unrot || (Rp == Eigen::Matrix3d::Identity() && is_plus_zero_identity(Rp))) {
     // Rp = I exactly (P unrotated: most poses of a fixed P): each coefficient of Iᵀ·x is the
     // sum of x_i·1 = x_i and two terms +0·x_k = ±0 (the sign of x_k; everything finite), so in
     // any order of summation it is x_i when x_i ≠ 0 and else a zero, −0 only when all three

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <mutex>
 #include <string>
@@ -71,8 +72,11 @@ struct PolytopeData {
   std::vector<int> edges;
   std::array<int, 4> protected_tet{};
   /// Lazily built VertexAdjacency (thread-safe); a copy starts empty and rebuilds on use.
+  /// `ready` (set with release order once `value` is built) lets every later call skip
+  /// std::call_once, which costs a thread-local setup and a pthread_once call per query.
   struct AdjacencyCache {
     std::once_flag once;
+    std::atomic<bool> ready{false};
     VertexAdjacency value;
     AdjacencyCache() = default;
     AdjacencyCache(const AdjacencyCache&) {}

@@ -83,6 +83,7 @@ void build_flat_faces(const PolytopeData& d, VertexAdjacency& a) {
 }  // namespace
 
 const VertexAdjacency& vertex_adjacency(const PolytopeData& d) {
+  if (d.adjacency_cache.ready.load(std::memory_order_acquire)) return d.adjacency_cache.value;
   std::call_once(d.adjacency_cache.once, [&] {
     VertexAdjacency& a = d.adjacency_cache.value;
     const DKLevel& L = d.levels[0];
@@ -125,6 +126,7 @@ const VertexAdjacency& vertex_adjacency(const PolytopeData& d) {
           a.cube[(face * k + i) * k + j] = v;
         }
     build_flat_faces(d, a);
+    d.adjacency_cache.ready.store(true, std::memory_order_release);
   });
   return d.adjacency_cache.value;
 }

@@ -88,5 +88,29 @@ TEST(RelativePose, IdentityRotationOfPMatchesTheProducts) {
   EXPECT_GT(n, 4000);
 }
 
+// Every pose of P (unrotated with any w, zeros of both signs, rotated, 2^±1000 scales) against
+// the products by its matrix: the quaternion test of the unrotated P and the matrix comparison
+// after it must together give the products' bits.
+TEST(RelativePose, AnyRotationOfPMatchesTheProducts) {
+  const std::vector<Pose3> ps = poses();
+  int n = 0, unrotated = 0;
+  for (std::size_t a = 0; a < ps.size(); a += 3)
+    for (std::size_t b = 1; b < ps.size(); b += 7) {
+      const Pose3 &pp = ps[a], &pq = ps[b];
+      if (pp.rotation.coeffs().cwiseAbs().maxCoeff() == 0 || pq.rotation.coeffs().cwiseAbs().maxCoeff() == 0) continue;
+      const Eigen::Matrix3d Rp = matrix_reference(pp), Rq = matrix_reference(pq);
+      Eigen::Matrix3d Rp_out;
+      const convex3::RelativePose r = convex3::relative_pose(pp, pq, &Rp_out);
+      EXPECT_TRUE(same_bits(Rp_out, Rp)) << pp.rotation.coeffs().transpose();
+      EXPECT_TRUE(same_bits(r.R, Eigen::Matrix3d(Rp.transpose() * Rq))) << pp.rotation.coeffs().transpose();
+      EXPECT_TRUE(same_bits(r.tq, Vec3(Rp.transpose() * pq.translation))) << pp.rotation.coeffs().transpose();
+      EXPECT_TRUE(same_bits(r.tp, Vec3(Rp.transpose() * pp.translation))) << pp.rotation.coeffs().transpose();
+      unrotated += Rp == Eigen::Matrix3d::Identity();
+      ++n;
+    }
+  EXPECT_GT(n, 20000);
+  EXPECT_GT(unrotated, 1000);
+}
+
 }  // namespace
 }  // namespace pendepth
