@@ -44,6 +44,7 @@
 
 #include <pendepth/pendepth.hpp>
 
+#include "primitives/ball3.hpp"
 #include "primitives/coaxial3.hpp"
 #include <pendepth/polytope.hpp>
 
@@ -947,7 +948,10 @@ Distance3 intersect(const Distance3& c, const Distance3& e) {
 template <class Result, class Closed, class Epa>
 Result coaxial_or_epa(const Support3& P, const Support3& Q, const Frame& F, Closed closed, Epa epa) {
   const auto K = coaxial_sum(P, Q, F.R);
-  if (!K) return epa(kMaxEpaGeneric);
+  if (!K) {
+    if (const auto b = ball_signed_distance(P, Q, F.R, F.t)) return closed(ClosedForm{{b->lo, b->hi, b->normal}, {Vec3::Zero(), b->touch_p, b->touch_q}});
+    return epa(kMaxEpaGeneric);
+  }
   ClosedForm cf = closed_form(P, Q, F, *K);
   if (K->tilt > 0) cf.sd.hi = std::min(cf.sd.hi, -near_coaxial_lower(P, Q, F.R, F.t, *K));
   if (K->tilt > 0 && cf.sd.hi < 0) tighten_upper_by_search(P, Q, F, K->tilt, cf);
