@@ -47,6 +47,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 namespace pendepth::primitives {
 
@@ -64,16 +65,20 @@ std::optional<Ball> ball_of(const Support3& s) {
   return std::nullopt;
 }
 
-// The right half of a body's meridian section (see the header), top to bottom; nullopt for a
-// body this file does not answer.
+// The right half of a body's meridian section (see the header), top to bottom, or (ellipse) the
+// spheroid's meridian ellipse of semi-axes a along ρ and c along z; nullopt for a body this file
+// does not answer.
 struct Section {
   std::array<Vec2, 4> v{};
-  int n = 0;  // vertices
+  int n = 0;  // polygon vertices
+  bool ellipse = false;
+  double a = 0, c = 0;
 };
 std::optional<Section> section_of(const Support3& s) {
   const double R = s.a, H = s.b;
   if (s.kind == Support3::Kind::Cone) return Section{{Vec2(0, H), Vec2(R, -H), Vec2(0, -H)}, 3};
   if (s.kind == Support3::Kind::Cylinder) return Section{{Vec2(0, H), Vec2(R, H), Vec2(R, -H), Vec2(0, -H)}, 4};
+  if (s.kind == Support3::Kind::Ellipsoid && s.a == s.b) return Section{{}, 0, true, s.a, s.c};
   return std::nullopt;
 }
 
@@ -139,6 +144,86 @@ Foot section_foot(const Section& T, const Vec2& p) {
   return best;
 }
 
+// ---- The spheroid's meridian ellipse E (semi-axes a along ρ, c along z) -------------------------
+// sd_E(p) = max over unit u of ⟨u, p⟩ − h_E(u), h_E(u) = |(a·u_ρ, c·u_z)| (fact (2)), both inside
+// and outside; with p in the closed first quadrant (z replaced by |z|: E is symmetric) a maximiser
+// lies in the closed first quadrant too (turning a component of u to p's sign raises ⟨u, p⟩ and
+// keeps h_E). That quadrant is covered by u = (1, s) and u = (s, 1), s ∈ [0, 1] (unnormalised: the
+// value is G(s) = (⟨u, p⟩ − h_E(u))/|u|, h_E 1-homogeneous). So sd_E(p) = max of G over the two
+// halves, a 1D maximisation, certified by branch and bound:
+//  lower: G at any s (an outward interval's lower end) — a supporting line;
+//  upper: on a box S with midpoint m, G(S) ⊆ G(m) + G'(S)·(S − m) (mean value theorem, G smooth:
+//    h_E > 0 on u ≠ 0), G'(S) an interval enclosure; a second-order enclosure near the
+//    maximiser, where G' ~ 0, so the kept boxes stay few. Boxes whose upper end falls below the
+//    best lower bound cannot hold the maximum and are dropped; the upper bound is the largest
+//    upper end of the kept boxes (together they cover both halves).
+// In one half's own names, u = (1, s) with p = (p_f, p_v) and semi-axes (k_f, k_v) along them
+// (the other half swaps ρ and z): N = p_f + p_v·s − S, S = √(k_f² + k_v² s²), W = √(1 + s²),
+// G = N/W, G' = (p_v − k_v² s/S)/W − N·s/W³.
+// On the spheroid's axis with the centre inside (a ring of nearest points in 3D) the maximiser is
+// the end s = 0 of the half u = (1, s): no continuum in the meridian plane.
+// Cost: the boxes to reach a 2⁻⁴⁴ relative gap, about 2·log2(1/√gap) + a few (≤ kMaxEllipseBoxes).
+constexpr int kMaxEllipseBoxes = 2000;
+
+struct Half {
+  Interval pf, pv;
+  double kf, kv;
+};
+Interval half_value(const Half& h, const Interval& s) {
+  const Interval S = sqrt(iv(h.kf) * iv(h.kf) + iv(h.kv) * iv(h.kv) * (s * s)), W = sqrt(iv(1) + s * s);
+  return (h.pf + h.pv * s - S) / W;
+}
+Interval half_slope(const Half& h, const Interval& s) {
+  const Interval S = sqrt(iv(h.kf) * iv(h.kf) + iv(h.kv) * iv(h.kv) * (s * s)), W2 = iv(1) + s * s, W = sqrt(W2);
+  const Interval N = h.pf + h.pv * s - S;
+  return (h.pv - iv(h.kv) * iv(h.kv) * s / S) / W - N * s / (W2 * W);
+}
+
+struct EllipseSd {
+  Interval sd;
+  Foot foot;
+};
+EllipseSd ellipse_sd(const Section& E, const Interval& rho, double z0) {
+  const double z = std::abs(z0);
+  const std::array<Half, 2> halves{Half{rho, iv(z), E.a, E.c}, Half{iv(z), rho, E.c, E.a}};
+  struct Box {
+    int half;
+    double s0, s1, up;
+  };
+  std::vector<Box> boxes;
+  const double scale = rho.hi + z + std::max(E.a, E.c);
+  double lower = -kInf;
+  int best_half = 0;
+  double best_s = 0;
+  const auto value_at = [&](int k, double s) {
+    if (const double v = half_value(halves[k], iv(s)).lo; v > lower) lower = v, best_half = k, best_s = s;
+  };
+  const auto push = [&](int k, double s0, double s1) {
+    const double m = s0 + (s1 - s0) / 2;
+    value_at(k, m);
+    const Interval box{s0, s1}, vm = half_value(halves[k], iv(m));
+    const double mean_value = (vm + half_slope(halves[k], box) * Interval{sub(s0, m, -1), sub(s1, m, +1)}).hi;
+    boxes.push_back({k, s0, s1, std::min(mean_value, half_value(halves[k], box).hi)});
+  };
+  for (int k = 0; k < 2; ++k) value_at(k, 0), value_at(k, 1), push(k, 0, 1);
+  for (int n = 2; n < kMaxEllipseBoxes; n += 2) {
+    std::erase_if(boxes, [&](const Box& b) { return b.up < lower; });
+    const auto top = std::max_element(boxes.begin(), boxes.end(), [](const Box& x, const Box& y) { return x.up < y.up; });
+    if (top->up - lower <= std::max(0x1p-46 * std::abs(lower), 0x1p-52 * scale)) break;  // the target, or the floor
+    const Box b = *top;
+    const double m = b.s0 + (b.s1 - b.s0) / 2;
+    if (!(m > b.s0 && m < b.s1)) break;  // (the rounding floor: s cannot be split further)
+    boxes.erase(top);
+    push(b.half, b.s0, m), push(b.half, m, b.s1);
+  }
+  double upper = -kInf;
+  for (const Box& b : boxes) upper = std::max(upper, b.up);
+  // The foot along the best direction: the boundary point with outward normal u (∇h_E(u)).
+  const Vec2 u = (best_half == 0 ? Vec2(1, best_s) : Vec2(best_s, 1)).normalized();
+  const double h = std::hypot(E.a * u[0], E.c * u[1]), sz = z0 < 0 ? -1.0 : 1.0;
+  return {{lower, std::max(upper, lower)}, Foot{Vec2(E.a * E.a * u[0] / h, sz * E.c * E.c * u[1] / h), Vec2(u[0], sz * u[1])}};
+}
+
 // The body's signed distance at a point x known to within e (its own frame), the normal and the
 // point of ∂A nearest x (rounding included).
 struct BodySd {
@@ -149,11 +234,14 @@ BodySd body_sd(const Support3& A, const Section& T, const Vec3& x, double e) {
   const double rho_lo = hypot_dir(x[0], x[1], -1), rho_hi = hypot_dir(x[0], x[1], +1);
   BodySd out;
   // (4): monotone in ρ; (1): e and the rounding radius shift both ends.
-  const double lo = section_sd(T, Vec2(rho_lo, x[2])).lo, hi = section_sd(T, Vec2(rho_hi, x[2])).hi;
-  out.sd = {sub(sub(lo, e, -1), A.radius, -1), sub(add(hi, e, +1), A.radius, +1)};
   const double rho = std::hypot(x[0], x[1]);
+  EllipseSd es;
+  if (T.ellipse) es = ellipse_sd(T, Interval{rho_lo, rho_hi}, x[2]);
+  const double lo = T.ellipse ? es.sd.lo : section_sd(T, Vec2(rho_lo, x[2])).lo;
+  const double hi = T.ellipse ? es.sd.hi : section_sd(T, Vec2(rho_hi, x[2])).hi;
+  out.sd = {sub(sub(lo, e, -1), A.radius, -1), sub(add(hi, e, +1), A.radius, +1)};
   const Vec3 radial = rho > 0 ? Vec3(x[0] / rho, x[1] / rho, 0) : Vec3::UnitX();
-  const Foot f = section_foot(T, Vec2(rho, x[2]));
+  const Foot f = T.ellipse ? es.foot : section_foot(T, Vec2(rho, x[2]));
   out.normal = (f.n[0] * radial + Vec3(0, 0, f.n[1])).normalized();
   out.surface = f.y[0] * radial + Vec3(0, 0, f.y[1]) + A.radius * out.normal;
   return out;

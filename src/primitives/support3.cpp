@@ -935,6 +935,20 @@ Distance3 intersect(const Distance3& c, const Distance3& e) {
   return narrower(c, e);
 }
 
+// Ball pairs (ball3.cpp): the closed form, kept alone when it meets EPA's target or, at a contact,
+// the floor 2⁻⁴⁴ of the pair's size (the rounding of the pose, |sd| ~ 0); else — a spheroid whose
+// branch and bound ran out of boxes on a near-flat maximum (near-spherical, centre near its
+// centre) — intersected with EPA's bracket. Other pairs: EPA.
+template <class Result, class Closed, class Epa>
+Result ball_or_epa(const Support3& P, const Support3& Q, const Frame& F, Closed closed, Epa epa) {
+  const auto b = ball_signed_distance(P, Q, F.R, F.t);
+  if (!b) return epa(kMaxEpaGeneric);
+  const Result c = closed(ClosedForm{{b->lo, b->hi, b->normal}, {Vec3::Zero(), b->touch_p, b->touch_q}});
+  const double scale = std::max(std::abs(c.lower_bound), std::abs(c.upper_bound)), size = P.rho + Q.rho + F.t.norm();
+  if (c.upper_bound - c.lower_bound <= std::max(kCurvedTargetGap * scale, 0x1p-44 * size)) return c;
+  return intersect(c, epa(kMaxEpaGeneric));
+}
+
 // Coaxial pairs: the closed form. Near-coaxial (a tilt bound > 0): the closed form widened by the
 // tilt, its lower end of σ (upper end of sd) raised by the second-order ring bound
 // (coaxial3.cpp near_coaxial_lower: min over the sphere of the explicit h_M, region by region),
@@ -948,10 +962,7 @@ Distance3 intersect(const Distance3& c, const Distance3& e) {
 template <class Result, class Closed, class Epa>
 Result coaxial_or_epa(const Support3& P, const Support3& Q, const Frame& F, Closed closed, Epa epa) {
   const auto K = coaxial_sum(P, Q, F.R);
-  if (!K) {
-    if (const auto b = ball_signed_distance(P, Q, F.R, F.t)) return closed(ClosedForm{{b->lo, b->hi, b->normal}, {Vec3::Zero(), b->touch_p, b->touch_q}});
-    return epa(kMaxEpaGeneric);
-  }
+  if (!K) return ball_or_epa<Result>(P, Q, F, closed, epa);
   ClosedForm cf = closed_form(P, Q, F, *K);
   if (K->tilt > 0) cf.sd.hi = std::min(cf.sd.hi, -near_coaxial_lower(P, Q, F.R, F.t, *K));
   if (K->tilt > 0 && cf.sd.hi < 0) tighten_upper_by_search(P, Q, F, K->tilt, cf);
