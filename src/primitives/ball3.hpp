@@ -1,7 +1,7 @@
 // Private: ball pairs in closed form, the second pre-step of the curved engine (ball3.cpp;
 // docs/algorithms.md §R4.8 "Ball pairs"): when one shape is a ball (a sphere, a point ⊕ ball, a
-// point) and the other a solid of revolution whose meridian section is a polygon (cone, cylinder,
-// each optionally ⊕ ball), σ and the signed distance reduce to the signed distance of the ball's
+// point) and the other a solid of revolution (cone, cylinder, spheroid ellipsoid(A, A, C), each
+// optionally ⊕ ball), σ and the signed distance reduce to the signed distance of the ball's
 // centre from the other shape — a 2D problem in its meridian plane, answered with directed
 // rounding (no support query).
 #pragma once
@@ -24,8 +24,9 @@ struct BallSd {
 };
 
 /// The closed form when P or Q is a ball (Support3 Points with one point ⊕ radius >= 0, or an
-/// ellipsoid with equal axes ⊕ radius) and the other a cone or cylinder (⊕ radius >= 0); else
-/// nullopt (the caller goes on to EPA). Cost O(1).
+/// ellipsoid with equal axes ⊕ radius) and the other a cone, cylinder or spheroid (⊕ radius >= 0);
+/// else nullopt (the caller goes on to EPA). Cost O(1); a spheroid: a branch and bound of
+/// 100–180 boxes (at most 2,000, then the bracket may miss the target: the caller checks).
 std::optional<BallSd> ball_signed_distance(const Support3& P, const Support3& Q, const Eigen::Matrix3d& R, const Vec3& t);
 
 /// Private (tests, benchmarks): while false, ball_signed_distance declines every pair, so EPA

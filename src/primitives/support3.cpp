@@ -35,7 +35,10 @@
 // symmetric placements where σ is attained on a continuum and EPA cannot close its bracket.
 // Near-coaxial pairs (a tilt ε): the tilt-widened closed form, its lower end of σ raised by a
 // second-order bound of min h_M over the sphere (coaxial3.cpp), its upper end tightened by a
-// compass search of h_M, intersected with EPA's bracket (coaxial_or_epa below).
+// compass search of h_M, intersected with EPA's bracket (coaxial_or_epa below). Then ball pairs
+// (a ball against a cone, cylinder or spheroid): the signed distance of the ball's centre in the
+// other shape's meridian plane, certified (ball3.cpp) — a ring of nearest points on the axis is
+// one point there.
 // Cost: O(k (log f + s + e)) for k support queries, f facets (a heap by lower bound), s the cost
 // of one support (O(1) for curved primitives, O(n) for a polytope's vertex scan), e the faces
 // seen around the horizon (by adjacency); k is typically 20–150 for a 1e-13 gap, up to
@@ -72,8 +75,9 @@ constexpr int kMaxEpa = 600;
 // doubling at least halves the bracket — near a continuum of almost-nearest points the facets'
 // sagitta falls as 1/k² until the ring is resolved, then the bracket collapses (measured: a tilt
 // of 1e-6 needs ~19,400 supports); a doubling that does not halve it has met the rounding floor.
-// On an exact continuum (a sphere on a cone's axis) the bracket also shrinks as 1/k² but never
-// collapses, and the run cannot tell the two apart: so generic pairs get kMaxEpaGeneric (~15 ms
+// On an exact continuum without a closed form the bracket also shrinks as 1/k² but never
+// collapses (a sphere on a cone's axis did, before ball3.cpp: 7e-7 at 4,800 supports), and the
+// run cannot tell the two apart: so generic pairs get kMaxEpaGeneric (~15 ms
 // at the measured ~3 µs per support), and only near-coaxial pairs whose ring the estimate of
 // coaxial_or_epa says will be resolved get kMaxEpaLong (docs/robustness.md "A continuum of
 // nearest points"). σ and the signed distance only (σ_d, casts: kMaxEpa).
