@@ -292,8 +292,7 @@ BallSd ball_p(const Ball& p, const Support3& Q, const Section& T, const Eigen::M
   const Interval s = stretch(R);
   const double eta = std::max(sub(1, s.lo, +1), sub(s.hi, 1, +1));
   if (eta > 0) {
-    const double ny = root(add(add(mul(y[0].mag(), y[0].mag(), +1), mul(y[1].mag(), y[1].mag(), +1), +1), mul(y[2].mag(), y[2].mag(), +1), +1), +1);
-    x.e = add(x.e, mul(eta, add(Q.rho, ny, +1), +1), +1);
+    x.e = add(x.e, mul(eta, add(Q.rho, norm_up(y[0], y[1], y[2]), +1), +1), +1);
   }
   const BodySd b = body_sd(Q, T, x.x, x.e);
   BallSd out;

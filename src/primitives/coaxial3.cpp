@@ -186,11 +186,6 @@ CoaxialSd coaxial_signed_distance(const CoaxialSum& K, const Vec3& q) {
 // ring's kinks dominate (α, γ >= 0): σ to the stretch m (~1e-16). Cost: O(40) closed forms.
 namespace {
 
-// |z| rounded up for z bracketed componentwise.
-double norm_up(const Interval& x, const Interval& y, const Interval& z) {
-  const double a = x.mag(), b = y.mag(), c = z.mag();
-  return root(add(add(mul(a, a, +1), mul(b, b, +1), +1), mul(c, c, +1), +1), +1);
-}
 
 // k(b) of the chord, rounded up (b >= 0 an upper bound of the interval's end, b < 1).
 double chord_slope_up(double b) { return quot(b, add(1, root(sub(1, mul(b, b, +1), -1), -1), -1), +1); }

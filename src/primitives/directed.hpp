@@ -84,6 +84,12 @@ inline Interval hypot(const Interval& a, const Interval& b) {
   return {hypot_dir(least(a), least(b), -1), hypot_dir(a.mag(), b.mag(), +1)};
 }
 
+/// |(x, y, z)| rounded up for x, y, z bracketed componentwise.
+inline double norm_up(const Interval& x, const Interval& y, const Interval& z) {
+  const double a = x.mag(), b = y.mag(), c = z.mag();
+  return root(add(add(mul(a, a, +1), mul(b, b, +1), +1), mul(c, c, +1), +1), +1);
+}
+
 /// Every entry 0 or ±1, one non-zero per row and column: an exact isometry.
 inline bool signed_permutation(const Eigen::Matrix3d& R) {
   for (int i = 0; i < 3; ++i) {
@@ -99,18 +105,24 @@ inline bool signed_permutation(const Eigen::Matrix3d& R) {
 
 /// [σ_min, σ_max] of R, outward. G = RᵀR − I by nested FMAs: each of the three roundings errs by
 /// at most u·2 (|R_ij| <= 1 + 4u for the matrix of a normalised quaternion, so every partial sum
-/// is below 2 in magnitude), so |G_ij − G̃_ij| <= 8u; ‖G‖₂ <= Σ|G_ij|; σ² ∈ [1 − η, 1 + η].
+/// is below 2 in magnitude), so |G_ij − G̃_ij| <= 8u; G is symmetric, so ‖G‖₂ <= ‖G‖∞ <= η =
+/// max_i Σ_j |G̃_ij| + 24u, and σ² ∈ [1 − η, 1 + η]. Then √(1 + η) <= 1 + η/2 (square both sides)
+/// and, for η <= 1/2, √(1 − η) >= 1 − η/2 − η² ((1 − η/2 − η²)² = 1 − η − 7η²/4 + η³ + η⁴).
 inline Interval stretch(const Eigen::Matrix3d& R) {
   if (signed_permutation(R)) return {1, 1};
   double eta = 0;
-  for (int i = 0; i < 3; ++i)
+  for (int i = 0; i < 3; ++i) {
+    double row = 0;
     for (int j = 0; j < 3; ++j) {
       const double g = std::fma(R(0, i), R(0, j), std::fma(R(1, i), R(1, j), std::fma(R(2, i), R(2, j), i == j ? -1.0 : 0.0)));
-      eta = add(eta, std::abs(g), +1);
+      row = add(row, std::abs(g), +1);
     }
-  eta = add(eta, 72 * kU, +1);
-  // √(1 ± η) lies within 1 ± η.
-  return {std::max(0.0, sub(1, eta, -1)), add(1, eta, +1)};
+    eta = std::max(eta, row);
+  }
+  eta = add(eta, 24 * kU, +1);
+  if (!(eta <= 0.5)) return {std::max(0.0, sub(1, eta, -1)), add(1, eta, +1)};  // (not a rotation: √(1 ± η) ∈ 1 ± η)
+  const double half = eta / 2;  // exact
+  return {sub(sub(1, half, -1), mul(eta, eta, +1), -1), add(1, half, +1)};
 }
 
 }  // namespace pendepth::primitives::directed
