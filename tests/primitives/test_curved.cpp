@@ -792,7 +792,8 @@ TEST(Curved, BallPairsAgainstHighPrecisionOracleAtRandomPlacements) {
     EXPECT_LE(Big(w.lower_bound), ref + slack_w) << what;
     EXPECT_GE(Big(w.upper_bound), ref - slack_w) << what;
     // (At a contact the floor is the double rotation's distance from an orthogonal one, η <=
-    // 72u + Σ|R̃ᵀR̃ − I| (ball3.cpp), times the cone's size and the offset: 512 ulps here.)
+    // 24u + max row sum of |R̃ᵀR̃ − I| (directed.hpp stretch), times the body's size and the
+    // offset: 512 ulps here.)
     EXPECT_LE(w.upper_bound - w.lower_bound, std::max(1e-12 * std::abs(w.distance), 512 * 0x1p-53 * (1 + c.norm()))) << what;
     (ref < 0 ? overlapping : apart) += 1;
   }
