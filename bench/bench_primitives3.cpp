@@ -6,6 +6,7 @@
 // the curved pairs' shapes and poses, checked against pendepth's certified brackets.
 #include <pendepth/pendepth.hpp>
 
+#include "primitives/ball3.hpp"
 #include "primitives/coaxial3.hpp"
 
 #include <benchmark/benchmark.h>
@@ -166,6 +167,57 @@ void BM_CurvedCoaxial(benchmark::State& state) {
   benchmark::DoNotOptimize(sink);
   state.SetLabel(std::string(kind == 0 ? "cyl in rounded cyl" : "cyl vs capsule") +
                  (mode == 1 ? " EPA" : mode == 2 ? " sigma_d" : ""));
+  state.counters["us_per_query"] = benchmark::Counter(static_cast<double>(state.iterations()) * 1e-6,
+                                                      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["mean_rel_gap"] = gap / static_cast<double>(state.iterations());
+  state.counters["worst_rel_gap"] = worst;
+}
+
+// Ball pairs (src/primitives/ball3.cpp): a sphere against a solid of revolution, σ on a ring of
+// nearest points when the centre is on the axis. Args: pair (0: sphere(0.2) on the axis of
+// cone(1, 1) at (0, 0, −0.3), the one placement; 1: sphere(0.2) vs cone(1, 1), 16 overlapping
+// placements U(−0.6, 0.6)³, Q randomly rotated; 2: rounded point (0.05, 0, 0) ⊕ 0.2 vs
+// cylinder(0.6, 0.8), likewise; 3: sphere(0.2) vs the spheroid ellipsoid(1, 1, 1.5), likewise (no
+// closed form: EPA in both modes); 4: sphere(0.2) on the spheroid's axis at (0, 0, 0.3), a ring of
+// nearest points, EPA in both modes), mode (0: σ; 1: σ with the ball pre-step off — EPA, BASE's
+// path; 2: signed distance; 3: signed distance, pre-step off). Counters: µs per query, the worst
+// and the mean relative gap (upper − lower)/|value|.
+void BM_CurvedBall(benchmark::State& state) {
+  const int kind = static_cast<int>(state.range(0)), mode = static_cast<int>(state.range(1));
+  const Shape3 ball = kind == 2 ? Shape3::rounded(Shape3::point(Vec3(0.05, 0, 0)), 0.2) : Shape3::sphere(0.2);
+  const Shape3 body = kind <= 1 ? Shape3::cone(1, 1) : kind == 2 ? Shape3::cylinder(0.6, 0.8) : Shape3::ellipsoid(1, 1, 1.5);
+  const Pair3 pair(body, ball);
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> U(-0.6, 0.6);
+  std::normal_distribution<double> g;
+  std::vector<Pose3> poses;
+  if (kind == 0) poses.emplace_back(Vec3(0, 0, -0.3));
+  if (kind == 4) poses.emplace_back(Vec3(0, 0, 0.3));
+  while (poses.size() < 16 && kind > 0 && kind < 4) {
+    const Pose3 q(Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)), Vec3(U(rng), U(rng), U(rng)));
+    if (pair.overlapping(Pose3(), q)) poses.push_back(q);
+  }
+  primitives::ball_enabled = mode == 0 || mode == 2;
+  std::size_t i = 0;
+  double sink = 0, gap = 0, worst = 0;
+  for (auto _ : state) {
+    const std::size_t k = i++ % poses.size();
+    double lo, hi, v;
+    if (mode >= 2) {
+      const Distance3 r = pair.signed_distance(Pose3(), poses[k]);
+      lo = r.lower_bound, hi = r.upper_bound, v = r.distance;
+    } else {
+      const Depth3 r = pair.minimum(Pose3(), poses[k]);
+      lo = r.lower_bound, hi = r.upper_bound, v = r.depth;
+    }
+    const double e = (hi - lo) / std::abs(v);
+    sink += v, gap += e, worst = std::max(worst, e);
+  }
+  primitives::ball_enabled = true;
+  benchmark::DoNotOptimize(sink);
+  static const char* names[] = {"sphere on cone axis", "sphere vs cone", "rounded point vs cylinder", "sphere vs spheroid",
+                                "sphere on spheroid axis"};
+  state.SetLabel(std::string(names[kind]) + (mode >= 2 ? " sd" : " sigma") + (mode % 2 ? " EPA" : ""));
   state.counters["us_per_query"] = benchmark::Counter(static_cast<double>(state.iterations()) * 1e-6,
                                                       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
   state.counters["mean_rel_gap"] = gap / static_cast<double>(state.iterations());
@@ -353,6 +405,7 @@ void BM_RoundedFlatCores(benchmark::State& state) {
 
 }  // namespace
 
+BENCHMARK(BM_CurvedBall)->ArgsProduct({{0, 1, 2, 3, 4}, {0, 1, 2, 3}});
 BENCHMARK(BM_CurvedSignedDistance)->DenseRange(0, 5);
 BENCHMARK(BM_CurvedMinimum)->DenseRange(0, 5);
 BENCHMARK(BM_CurvedCoaxial)->ArgsProduct({{0, 1}, {0, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}, {0}})->Args({0, 0, 1})->Args({1, 0, 1})

@@ -26,6 +26,8 @@
 // Cost: O(1), no support query.
 #include "primitives/coaxial3.hpp"
 
+#include "primitives/directed.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -34,51 +36,7 @@
 namespace pendepth::primitives {
 
 namespace {
-constexpr double kU = 0x1p-53;
-constexpr double kInf = std::numeric_limits<double>::infinity();
-// Below this magnitude a product or residual may have underflowed: widened by one step.
-constexpr double kTiny = 0x1p-960;
-
-double next_dn(double x) { return std::nextafter(x, -kInf); }
-double next_up(double x) { return std::nextafter(x, kInf); }
-
-// a + b, a · b, √a, rounded towards −∞ (dir < 0) or +∞ (dir > 0): the round-to-nearest result,
-// moved one step only when the exact residual says the true value lies beyond it.
-double add(double a, double b, int dir) {
-  const double s = a + b, bb = s - a;
-  const double e = (a - (s - bb)) + (b - bb);  // TwoSum: s + e = a + b exactly
-  if (e == 0) return s;
-  return dir < 0 ? (e < 0 ? next_dn(s) : s) : (e > 0 ? next_up(s) : s);
-}
-double sub(double a, double b, int dir) { return add(a, -b, dir); }
-double mul(double a, double b, int dir) {
-  const double p = a * b;
-  if (p != 0 && std::abs(p) < kTiny) return dir < 0 ? next_dn(p) : next_up(p);
-  if (p == 0 && a != 0 && b != 0) return dir < 0 ? -std::numeric_limits<double>::denorm_min() : std::numeric_limits<double>::denorm_min();
-  const double e = std::fma(a, b, -p);  // a·b − p exactly (no underflow here)
-  if (e == 0) return p;
-  return dir < 0 ? (e < 0 ? next_dn(p) : p) : (e > 0 ? next_up(p) : p);
-}
-double root(double a, int dir) {  // a: a bound of a value >= 0 (a lower bound may be < 0)
-  if (a <= 0) return 0.0;
-  const double s = std::sqrt(a);
-  const double e = std::fma(s, s, -a);  // s² − a: its sign is that of s − √a
-  if (std::abs(s * s) < kTiny) return dir < 0 ? next_dn(s) : next_up(s);
-  if (e == 0) return s;
-  return dir < 0 ? (e > 0 ? next_dn(s) : s) : (e < 0 ? next_up(s) : s);
-}
-
-// |(a, b)| rounded in direction dir.
-double hypot_dir(double a, double b, int dir) { return root(add(mul(a, a, dir), mul(b, b, dir), dir), dir); }
-
-// a / b (b > 0) rounded in direction dir: q·b − a has the sign of q − a/b.
-double quot(double a, double b, int dir) {
-  const double q = a / b;
-  if (std::abs(q) < kTiny && a != 0) return dir < 0 ? next_dn(q) : next_up(q);
-  const double e = std::fma(q, b, -a);
-  if (e == 0) return q;
-  return dir < 0 ? (e > 0 ? next_dn(q) : q) : (e < 0 ? next_up(q) : q);
-}
+using namespace directed;
 
 // D(a, b) (see the header comment), rounded in direction dir; monotone, so bounds map to bounds.
 double core_distance(double a, double b, int dir) {
@@ -87,19 +45,6 @@ double core_distance(double a, double b, int dir) {
   if (b <= 0) return a;
   return hypot_dir(a, b, dir);
 }
-
-struct Interval {
-  double lo = 0, hi = 0;
-  Interval operator+(const Interval& o) const { return {add(lo, o.lo, -1), add(hi, o.hi, +1)}; }
-  Interval operator-(const Interval& o) const { return {sub(lo, o.hi, -1), sub(hi, o.lo, +1)}; }
-  Interval operator*(const Interval& o) const {  // the least and greatest corner products, outward
-    const double a[4] = {lo, lo, hi, hi}, b[4] = {o.lo, o.hi, o.lo, o.hi};
-    Interval r{kInf, -kInf};
-    for (int i = 0; i < 4; ++i) r.lo = std::min(r.lo, mul(a[i], b[i], -1)), r.hi = std::max(r.hi, mul(a[i], b[i], +1));
-    return r;
-  }
-};
-Interval iv(double x) { return {x, x}; }
 
 // A shape's components in its own frame (axis z).
 struct Parts {
@@ -135,35 +80,6 @@ std::optional<Parts> parts_of(const Support3& s) {
 // R maps z to ±z exactly (and the plane z = 0 to itself).
 bool keeps_axis(const Eigen::Matrix3d& R) {
   return R(0, 2) == 0 && R(1, 2) == 0 && R(2, 0) == 0 && R(2, 1) == 0 && std::abs(R(2, 2)) == 1;
-}
-
-// Every entry 0 or ±1, one non-zero per row and column: an exact isometry.
-bool signed_permutation(const Eigen::Matrix3d& R) {
-  for (int i = 0; i < 3; ++i) {
-    int row = 0, col = 0;
-    for (int j = 0; j < 3; ++j) {
-      if (R(i, j) != 0 && std::abs(R(i, j)) != 1) return false;
-      row += R(i, j) != 0, col += R(j, i) != 0;
-    }
-    if (row != 1 || col != 1) return false;
-  }
-  return true;
-}
-
-// [σ_min, σ_max] of R, outward. G = RᵀR − I by nested FMAs: each of the three roundings errs by
-// at most u·2 (|R_ij| <= 1 + 4u for the matrix of a normalised quaternion, so every partial sum
-// is below 2 in magnitude), so |G_ij − G̃_ij| <= 8u; ‖G‖₂ <= Σ|G_ij|; σ² ∈ [1 − η, 1 + η].
-Interval stretch(const Eigen::Matrix3d& R) {
-  if (signed_permutation(R)) return {1, 1};
-  double eta = 0;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) {
-      const double g = std::fma(R(0, i), R(0, j), std::fma(R(1, i), R(1, j), std::fma(R(2, i), R(2, j), i == j ? -1.0 : 0.0)));
-      eta = add(eta, std::abs(g), +1);
-    }
-  eta = add(eta, 72 * kU, +1);
-  // √(1 ± η) lies within 1 ± η.
-  return {std::max(0.0, sub(1, eta, -1)), add(1, eta, +1)};
 }
 
 // sd_K(q) with the sizes (R, H, r) rounded in direction dir: the bound of that side.
@@ -270,12 +186,6 @@ CoaxialSd coaxial_signed_distance(const CoaxialSum& K, const Vec3& q) {
 // ring's kinks dominate (α, γ >= 0): σ to the stretch m (~1e-16). Cost: O(40) closed forms.
 namespace {
 
-double abs_up(const Interval& a) { return std::max(std::abs(a.lo), std::abs(a.hi)); }
-// |z| rounded up for z bracketed componentwise.
-double norm_up(const Interval& x, const Interval& y, const Interval& z) {
-  const double a = abs_up(x), b = abs_up(y), c = abs_up(z);
-  return root(add(add(mul(a, a, +1), mul(b, b, +1), +1), mul(c, c, +1), +1), +1);
-}
 
 // k(b) of the chord, rounded up (b >= 0 an upper bound of the interval's end, b < 1).
 double chord_slope_up(double b) { return quot(b, add(1, root(sub(1, mul(b, b, +1), -1), -1), -1), +1); }

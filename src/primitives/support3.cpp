@@ -35,7 +35,10 @@
 // symmetric placements where σ is attained on a continuum and EPA cannot close its bracket.
 // Near-coaxial pairs (a tilt ε): the tilt-widened closed form, its lower end of σ raised by a
 // second-order bound of min h_M over the sphere (coaxial3.cpp), its upper end tightened by a
-// compass search of h_M, intersected with EPA's bracket (coaxial_or_epa below).
+// compass search of h_M, intersected with EPA's bracket (coaxial_or_epa below). Then ball pairs
+// (a ball against a cone, cylinder or spheroid): the signed distance of the ball's centre in the
+// other shape's meridian plane, certified (ball3.cpp) — a ring of nearest points on the axis is
+// one point there.
 // Cost: O(k (log f + s + e)) for k support queries, f facets (a heap by lower bound), s the cost
 // of one support (O(1) for curved primitives, O(n) for a polytope's vertex scan), e the faces
 // seen around the horizon (by adjacency); k is typically 20–150 for a 1e-13 gap, up to
@@ -44,6 +47,7 @@
 
 #include <pendepth/pendepth.hpp>
 
+#include "primitives/ball3.hpp"
 #include "primitives/coaxial3.hpp"
 #include <pendepth/polytope.hpp>
 
@@ -71,8 +75,9 @@ constexpr int kMaxEpa = 600;
 // doubling at least halves the bracket — near a continuum of almost-nearest points the facets'
 // sagitta falls as 1/k² until the ring is resolved, then the bracket collapses (measured: a tilt
 // of 1e-6 needs ~19,400 supports); a doubling that does not halve it has met the rounding floor.
-// On an exact continuum (a sphere on a cone's axis) the bracket also shrinks as 1/k² but never
-// collapses, and the run cannot tell the two apart: so generic pairs get kMaxEpaGeneric (~15 ms
+// On an exact continuum without a closed form the bracket also shrinks as 1/k² but never
+// collapses (a sphere on a cone's axis did, before ball3.cpp: 7e-7 at 4,800 supports), and the
+// run cannot tell the two apart: so generic pairs get kMaxEpaGeneric (~15 ms
 // at the measured ~3 µs per support), and only near-coaxial pairs whose ring the estimate of
 // coaxial_or_epa says will be resolved get kMaxEpaLong (docs/robustness.md "A continuum of
 // nearest points"). σ and the signed distance only (σ_d, casts: kMaxEpa).
@@ -934,6 +939,20 @@ Distance3 intersect(const Distance3& c, const Distance3& e) {
   return narrower(c, e);
 }
 
+// Ball pairs (ball3.cpp): the closed form, kept alone when it meets EPA's target or, at a contact,
+// the floor 2⁻⁴⁴ of the pair's size (the rounding of the pose, |sd| ~ 0); else — a spheroid whose
+// branch and bound ran out of boxes on a near-flat maximum (near-spherical, centre near its
+// centre) — intersected with EPA's bracket. Other pairs: EPA.
+template <class Result, class Closed, class Epa>
+Result ball_or_epa(const Support3& P, const Support3& Q, const Frame& F, Closed closed, Epa epa) {
+  const auto b = ball_signed_distance(P, Q, F.R, F.t);
+  if (!b) return epa(kMaxEpaGeneric);
+  const Result c = closed(ClosedForm{{b->lo, b->hi, b->normal}, {Vec3::Zero(), b->touch_p, b->touch_q}});
+  const double scale = std::max(std::abs(c.lower_bound), std::abs(c.upper_bound)), size = P.rho + Q.rho + F.t.norm();
+  if (c.upper_bound - c.lower_bound <= std::max(kCurvedTargetGap * scale, 0x1p-44 * size)) return c;
+  return intersect(c, epa(kMaxEpaGeneric));
+}
+
 // Coaxial pairs: the closed form. Near-coaxial (a tilt bound > 0): the closed form widened by the
 // tilt, its lower end of σ (upper end of sd) raised by the second-order ring bound
 // (coaxial3.cpp near_coaxial_lower: min over the sphere of the explicit h_M, region by region),
@@ -947,7 +966,7 @@ Distance3 intersect(const Distance3& c, const Distance3& e) {
 template <class Result, class Closed, class Epa>
 Result coaxial_or_epa(const Support3& P, const Support3& Q, const Frame& F, Closed closed, Epa epa) {
   const auto K = coaxial_sum(P, Q, F.R);
-  if (!K) return epa(kMaxEpaGeneric);
+  if (!K) return ball_or_epa<Result>(P, Q, F, closed, epa);
   ClosedForm cf = closed_form(P, Q, F, *K);
   if (K->tilt > 0) cf.sd.hi = std::min(cf.sd.hi, -near_coaxial_lower(P, Q, F.R, F.t, *K));
   if (K->tilt > 0 && cf.sd.hi < 0) tighten_upper_by_search(P, Q, F, K->tilt, cf);

@@ -12,6 +12,7 @@
 
 #include <pendepth/pendepth.hpp>
 
+#include "primitives/ball3.hpp"
 #include "primitives/coaxial3.hpp"
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
@@ -449,16 +450,16 @@ std::array<Big, 2> stretch_oracle(const Eigen::Matrix3d& R) {
   return {boost::multiprecision::sqrt(mid - rad), boost::multiprecision::sqrt(mid + rad)};
 }
 
-// σ and the signed distance at Q's pose pq with the coaxial closed form switched off (EPA
-// alone); the switch is restored on exit.
+// σ and the signed distance at Q's pose pq with the closed forms (coaxial, ball) switched off
+// (EPA alone); the switches are restored on exit.
 struct EpaAlone {
   Depth3 minimum;
   Distance3 distance;
 };
 EpaAlone without_closed_form(const Pair3& pair, const Pose3& pq) {
   struct Off {
-    Off() { primitives::coaxial_enabled = false; }
-    ~Off() { primitives::coaxial_enabled = true; }
+    Off() { primitives::coaxial_enabled = primitives::ball_enabled = false; }
+    ~Off() { primitives::coaxial_enabled = primitives::ball_enabled = true; }
   } off;
   return {pair.minimum(Pose3(), pq), pair.signed_distance(Pose3(), pq)};
 }
@@ -602,19 +603,20 @@ TEST(Curved, NearCoaxialPairsTakeTheTiltBoundWhenNarrower) {
 }
 
 TEST(Curved, NonParallelPairsFallThroughToEpaBitForBit) {
-  // Tilted axes (z not mapped to ±z exactly), cones, ellipsoids, polytopes, off-centre points:
-  // the answers are EPA's, bit for bit — except a near-coaxial tilt (1e-9 rad), where the closed
-  // form widened by the tilt bound is kept when its bracket is narrower (it must meet EPA's).
+  // Tilted axes (z not mapped to ±z exactly), cones against non-balls, general ellipsoids, polytopes,
+  // off-centre segments: the answers are EPA's, bit for bit (a ball against a cone, cylinder or
+  // spheroid: the ball closed form, "Ball pairs" below) — except a near-coaxial tilt (1e-9 rad),
+  // where the closed form widened by the tilt bound is kept when its bracket is narrower (it must meet EPA's).
   std::mt19937_64 rng(29);
   std::uniform_real_distribution<double> off(-0.3, 0.3);
   const std::vector<std::pair<Shape3, Shape3>> pairs{
       {Shape3::cylinder(0.3, 0.2), Shape3::rounded(Shape3::cylinder(0.2, 0.3), 0.05)},
       {Shape3::cylinder(0.3, 0.2), Shape3::cylinder(0.2, 0.1)},
       {Shape3::cylinder(0.3, 0.2), Shape3::capsule(0.1, 0.2)},
-      {Shape3::cone(0.3, 0.2), Shape3::sphere(0.1)},
-      {Shape3::ellipsoid(0.3, 0.3, 0.2), Shape3::sphere(0.1)},
+      {Shape3::cone(0.3, 0.2), Shape3::capsule(0.1, 0.05)},
+      {Shape3::ellipsoid(0.3, 0.25, 0.2), Shape3::sphere(0.1)},
       {Shape3::cylinder(0.3, 0.2), Shape3::box(0.1, 0.1, 0.1)},
-      {Shape3::cylinder(0.3, 0.2), Shape3::point(Vec3(0.01, 0, 0))}};
+      {Shape3::cylinder(0.3, 0.2), Shape3::segment(Vec3(0.01, 0, 0), Vec3(0.01, 0, 0.1))}};
   int n = 0, narrower = 0;
   for (const auto& [P, Q] : pairs) {
     const Pair3 pair(P, Q);
@@ -645,6 +647,214 @@ TEST(Curved, NonParallelPairsFallThroughToEpaBitForBit) {
   EXPECT_LT(narrower, n / 4);  // off-centre tilted pairs have isolated nearest points: EPA closes
 }
 
+
+// ---- ball pairs: the closed form of src/primitives/ball3.cpp --------------------------------
+// A ball Q = B(c, r) against a cone: sd_M(0) = sd_cone(c) − r. The independent oracle, in 100
+// digits: inside the triangle section (both line functions <= 0) the larger line function, else
+// the least distance to its two right-half edges, each by clamped projection.
+Big segment_distance(const Big& pr, const Big& pz, const Big& ar, const Big& az, const Big& br, const Big& bz) {
+  const Big dr = br - ar, dz = bz - az;
+  Big lam = ((pr - ar) * dr + (pz - az) * dz) / (dr * dr + dz * dz);
+  if (lam < 0) lam = 0;
+  if (lam > 1) lam = 1;
+  const Big er = pr - ar - lam * dr, ez = pz - az - lam * dz;
+  return boost::multiprecision::sqrt(er * er + ez * ez);
+}
+Big oracle_cone_sd(double R0, double H0, const Vec3& x) {
+  const Big R = R0, H = H0, z = x[2];
+  const Big rho = boost::multiprecision::sqrt(Big(x[0]) * x[0] + Big(x[1]) * x[1]);
+  const Big fs = (2 * H * rho + R * z - R * H) / boost::multiprecision::sqrt(4 * H * H + R * R), fb = -z - H;
+  if (fs <= 0 && fb <= 0) return fs > fb ? fs : fb;
+  const Big a = segment_distance(rho, z, 0, H, R, -H), b = segment_distance(rho, z, R, -H, 0, -H);
+  return a < b ? a : b;
+}
+
+// The spheroid ellipsoid(A, A, C): sd of its meridian ellipse, the max over θ ∈ [0, π/2] of
+// ⟨u, p⟩ − h(u), u = (cos θ, sin θ), p = (ρ, |z|) — a 256-point grid, then golden sections
+// around each grid local maximum, in 100 digits (the max is smooth or at an end: ~1e-40 in θ).
+Big oracle_spheroid_sd(double A0, double C0, const Vec3& x) {
+  const Big A = A0, C = C0, z = boost::multiprecision::abs(Big(x[2]));
+  const Big rho = boost::multiprecision::sqrt(Big(x[0]) * x[0] + Big(x[1]) * x[1]);
+  const Big half_pi = boost::multiprecision::acos(Big(0));
+  const auto g = [&](const Big& th) {
+    const Big c = boost::multiprecision::cos(th), s = boost::multiprecision::sin(th);
+    return rho * c + z * s - boost::multiprecision::sqrt(A * A * c * c + C * C * s * s);
+  };
+  constexpr int kGrid = 256;
+  std::vector<Big> v(kGrid + 1);
+  for (int i = 0; i <= kGrid; ++i) v[i] = g(half_pi * i / kGrid);
+  Big best = v[0];
+  const Big phi = (boost::multiprecision::sqrt(Big(5)) - 1) / 2;
+  for (int i = 0; i <= kGrid; ++i) {  // every grid local maximum refined (two near-equal maxima)
+    if ((i > 0 && v[i] < v[i - 1]) || (i < kGrid && v[i] < v[i + 1])) continue;
+    Big lo = half_pi * std::max(0, i - 1) / kGrid, hi = half_pi * std::min(kGrid, i + 1) / kGrid;
+    for (int it = 0; it < 120; ++it) {
+      const Big m1 = hi - phi * (hi - lo), m2 = lo + phi * (hi - lo);
+      if (g(m1) < g(m2)) lo = m1;
+      else hi = m2;
+    }
+    const Big m = g((lo + hi) / 2);
+    best = std::max({best, v[i], m});
+  }
+  return best;
+}
+
+// The bracket holds the oracle and is at most 1e-12 relative wide (64 ulps of the scale at a
+// contact, where sd ~ 0).
+void expect_certified(const Distance3& s, const Big& ref, double scale, const std::string& what) {
+  EXPECT_LE(Big(s.lower_bound), ref) << what;
+  EXPECT_GE(Big(s.upper_bound), ref) << what;
+  EXPECT_LE(s.upper_bound - s.lower_bound, std::max(1e-12 * std::abs(s.distance), 64 * 0x1p-53 * scale)) << what;
+}
+
+TEST(Curved, SphereOnConeAxisAgainstHighPrecisionOracle) {
+  // The exact continuum (a ring of nearest points) EPA could not close (7e-7 after 4,800
+  // supports): inside, near the apex, near the base, touching the apex and the base, apart.
+  // P at the identity, Q translated only: the engine's relative pose is exact, the oracle one value.
+  for (const auto& [R, H, r] : {std::array<double, 3>{1, 1, 0.2}, {0.6, 0.7, 0.1}, {0.12, 0.15, 0.01}}) {
+    const Pair3 pair(Shape3::cone(R, H), Shape3::sphere(r)), swapped(Shape3::sphere(r), Shape3::cone(R, H));
+    for (const double f : {-1.2, -0.999, -0.95, -0.3, 0.0, 0.5, 0.9, 0.999, 1.0, 1.2, 1.3}) {
+      const double z = f * H + (f == 1.2 ? r - 0.2 * H : f == -1.2 ? 0.2 * H - r : 0.0);  // ±1.2: touching
+      const Vec3 c(0, 0, z);
+      const Big ref = oracle_cone_sd(R, H, c) - Big(r);
+      const std::string what = "cone(" + std::to_string(R) + ", " + std::to_string(H) + ") z = " + std::to_string(z);
+      const Distance3 s = pair.signed_distance(Pose3(), Pose3(c));
+      expect_certified(s, ref, 1 + R + H, what);
+      // The roles swapped: the ball at the identity, the cone moved by −c (an exact negation).
+      expect_certified(swapped.signed_distance(Pose3(), Pose3(-c)), ref, 1 + R + H, what + " swapped");
+      const Depth3 m = pair.minimum(Pose3(), Pose3(c));
+      if (ref < 0) {
+        ASSERT_TRUE(m.overlapping) << what;
+        EXPECT_LE(Big(m.lower_bound), -ref) << what;
+        EXPECT_GE(Big(m.upper_bound), -ref) << what;
+        EXPECT_LE(m.upper_bound - m.lower_bound, std::max(1e-12 * m.depth, 64 * 0x1p-53 * (1 + R + H))) << what;
+        Pose3 moved(c);  // the move separates, to touching within rounding
+        moved.translation += m.translation;
+        EXPECT_LE(std::abs(pair.signed_distance(Pose3(), moved).distance), 1e-14 * (1 + R + H)) << what;
+      } else {
+        EXPECT_FALSE(m.overlapping) << what;
+      }
+    }
+  }
+}
+
+TEST(Curved, SphereOnSpheroidAxisAgainstHighPrecisionOracle) {
+  // The same continuum on a spheroid's axis (prolate: the ring at the equator's height; oblate:
+  // the poles nearest): inside, near the pole, touching, apart; either role.
+  for (const auto& [A, C, r] : {std::array<double, 3>{1, 1.5, 0.2}, {1.5, 1, 0.2}, {0.3, 0.5, 0.05}}) {
+    const Pair3 pair(Shape3::ellipsoid(A, A, C), Shape3::sphere(r)), swapped(Shape3::sphere(r), Shape3::ellipsoid(A, A, C));
+    for (const double f : {0.0, 0.2, -0.5, 0.9, 0.999, 1.0, 1.1, 1.5}) {
+      const Vec3 c(0, 0, f * C);
+      const Big ref = oracle_spheroid_sd(A, C, c) - Big(r);
+      const std::string what = "spheroid(" + std::to_string(A) + ", " + std::to_string(C) + ") z = " + std::to_string(c[2]);
+      expect_certified(pair.signed_distance(Pose3(), Pose3(c)), ref, 1 + A + C, what);
+      expect_certified(swapped.signed_distance(Pose3(), Pose3(-c)), ref, 1 + A + C, what + " swapped");
+      const Depth3 m = pair.minimum(Pose3(), Pose3(c));
+      EXPECT_EQ(m.overlapping, ref < 0) << what;
+      if (!m.overlapping) continue;
+      EXPECT_LE(Big(m.lower_bound), -ref) << what;
+      EXPECT_GE(Big(m.upper_bound), -ref) << what;
+      Pose3 moved(c);  // the move separates, to touching within rounding
+      moved.translation += m.translation;
+      EXPECT_LE(std::abs(pair.signed_distance(Pose3(), moved).distance), 1e-14 * (1 + A + C)) << what;
+    }
+  }
+}
+
+TEST(Curved, BallPairsAgainstHighPrecisionOracleAtRandomPlacements) {
+  // Spheres, points ⊕ balls and points around a cone or a spheroid (either role), P at the identity and Q
+  // translated (exact relative pose), plus rotated poses of Q (the ball's radius then within the
+  // stretch of the double rotation: the oracle's bracket [ref − r·1e-15, ref + r·1e-15]).
+  std::mt19937_64 rng(20261127);
+  std::uniform_real_distribution<double> size(0.05, 0.6), off(-1.0, 1.0);
+  int overlapping = 0, apart = 0;
+  for (int it = 0; it < 1200; ++it) {
+    const double R = size(rng), H = size(rng), r = it % 5 == 0 ? 0.0 : size(rng) * 0.5;
+    const bool cone = it % 4 < 2;  // else the spheroid ellipsoid(R, R, H)
+    const Shape3 body = cone ? Shape3::cone(R, H) : Shape3::ellipsoid(R, R, H);
+    const Vec3 q0 = it % 3 == 0 ? Vec3(Vec3(off(rng), off(rng), off(rng)) * 0.1) : Vec3(Vec3::Zero());
+    const Shape3 ball = it % 5 == 0 ? Shape3::point(q0) : Shape3::rounded(Shape3::point(q0), r);
+    const bool rotated = it % 2 == 1;
+    const Pose3 pq(rotated ? random_pose(rng, 0).rotation.normalized() : Eigen::Quaterniond::Identity(),
+                   Vec3(off(rng), off(rng), off(rng)) * (it % 4 < 2 ? 0.4 : 1.0));
+    const Vec3 c = pq.apply(q0);  // the centre; rounded when rotated (the oracle's slack below)
+    const Big ref = (cone ? oracle_cone_sd(R, H, c) : oracle_spheroid_sd(R, H, c)) - Big(r);
+    const Big slack = rotated ? Big(1e-15) * (1 + c.norm()) : Big(q0 == Vec3::Zero() ? 0 : 1e-15);
+    const std::string what = "it " + std::to_string(it);
+    const Distance3 s = Pair3(body, ball).signed_distance(Pose3(), pq);
+    EXPECT_LE(Big(s.lower_bound), ref + slack) << what;
+    EXPECT_GE(Big(s.upper_bound), ref - slack) << what;
+    EXPECT_LE(s.upper_bound - s.lower_bound, std::max(1e-12 * std::abs(s.distance), 64 * 0x1p-53 * (1 + c.norm()))) << what;
+    // Swapped roles: the ball at the identity, the cone at the inverse pose.
+    const Pose3 inv(pq.rotation.conjugate(), -(pq.rotation.conjugate() * pq.translation));
+    const Distance3 w = Pair3(ball, body).signed_distance(Pose3(), inv);
+    const Big slack_w = Big(1e-15) * (1 + c.norm());
+    EXPECT_LE(Big(w.lower_bound), ref + slack_w) << what;
+    EXPECT_GE(Big(w.upper_bound), ref - slack_w) << what;
+    // (At a contact the floor is the double rotation's distance from an orthogonal one, η <=
+    // 24u + max row sum of |R̃ᵀR̃ − I| (directed.hpp stretch), times the body's size and the
+    // offset: 512 ulps here.)
+    EXPECT_LE(w.upper_bound - w.lower_bound, std::max(1e-12 * std::abs(w.distance), 512 * 0x1p-53 * (1 + c.norm()))) << what;
+    (ref < 0 ? overlapping : apart) += 1;
+  }
+  EXPECT_GT(overlapping, 200);
+  EXPECT_GT(apart, 200);
+}
+
+TEST(Curved, BallPairsInsideTheNestedTessellationsAndTheEpaBracket) {
+  // Random poses of both shapes (the cone's axis anywhere in the world): the closed form must meet
+  // EPA's own bracket (the pre-step switched off) and the polytope brackets I ⊆ cone ⊆ O, and
+  // cylinders against off-centre rounded points (the coaxial form declines those) likewise.
+  std::mt19937_64 rng(31);
+  const Curved cone{K::Cone, 0.3, 0.25, 0}, cyl{K::Cyl, 0.2, 0.3, 0}, spheroid{K::Ell, 0.3, 0.3, 0.2};
+  int checked = 0, narrower = 0;
+  for (const Curved& k : {cone, cyl, spheroid}) {
+    const int n = k.k == K::Ell ? 24 : 64;  // (the ellipsoid's grid has 2n(n − 1) + 2 points)
+    const Shape3 in = tessellation(k, n, false), out = tessellation(k, n, true);
+    verify_nesting(k, in, out);
+    for (const Shape3& ball : {Shape3::sphere(0.1), Shape3::rounded(Shape3::point(Vec3(0.03, -0.02, 0.05)), 0.07),
+                               Shape3::point(Vec3(0.01, 0.02, 0))}) {
+      for (const bool swap : {false, true}) {
+        const Pair3 pair = swap ? Pair3(ball, k.shape()) : Pair3(k.shape(), ball);
+        const Pair3 inner = swap ? Pair3(ball, in) : Pair3(in, ball), outer = swap ? Pair3(ball, out) : Pair3(out, ball);
+        for (int it = 0; it < 25; ++it) {
+          const Pose3 pp = random_pose(rng, 0.3), pq = random_pose(rng, 0.3);
+          const Distance3 s = pair.signed_distance(pp, pq);
+          const Depth3 m = pair.minimum(pp, pq);
+          EXPECT_LE(s.lower_bound, inner.signed_distance(pp, pq).distance + 1e-15) << it;
+          EXPECT_GE(s.upper_bound, outer.signed_distance(pp, pq).distance - 1e-15) << it;
+          EXPECT_GE(m.upper_bound, inner.minimum(pp, pq).depth - 1e-15) << it;
+          EXPECT_LE(m.lower_bound, outer.minimum(pp, pq).depth + 1e-15) << it;
+          struct Off {
+            Off() { primitives::ball_enabled = false; }
+            ~Off() { primitives::ball_enabled = true; }
+          };
+          Distance3 e;
+          Depth3 em;
+          {
+            const Off off;
+            e = pair.signed_distance(pp, pq), em = pair.minimum(pp, pq);
+          }
+          EXPECT_LE(s.lower_bound, e.upper_bound) << it;
+          EXPECT_GE(s.upper_bound, e.lower_bound) << it;
+          const double scale = 1 + (pq.translation - pp.translation).norm();
+          EXPECT_LE(s.upper_bound - s.lower_bound, std::max(1e-12 * std::abs(s.distance), 512 * 0x1p-53 * scale)) << it;
+          narrower += s.upper_bound - s.lower_bound <= e.upper_bound - e.lower_bound;
+          EXPECT_EQ(m.overlapping, s.overlapping) << it;
+          ++checked;
+          if (!m.overlapping || !em.overlapping) continue;
+          EXPECT_LE(m.lower_bound, em.upper_bound) << it;
+          EXPECT_GE(m.upper_bound, em.lower_bound) << it;
+          Pose3 moved = pq;  // the move separates (to touching within rounding)
+          moved.translation += m.translation * (1 + 1e-12);
+          EXPECT_GE(pair.signed_distance(pp, moved).upper_bound, 0) << it;
+        }
+      }
+    }
+  }
+  EXPECT_EQ(checked, 3 * 3 * 2 * 25);
+  std::printf("ball pairs: the closed form's bracket no wider than EPA's in %d of %d\n", narrower, checked);
+}
 
 // ---- near-coaxial pairs to 1e-12 (docs/robustness.md "A continuum of nearest points") ---------
 // The centred cylinder(1, 1) in the rounded cylinder(1, 1) ⊕ 0.5, Q tilted by ε about a
