@@ -18,15 +18,19 @@
 // convex_decomposition_3's time is ray shooting in the Nef point locator while it raises the walls
 // of reflex edges (perf: ~70% under SNC_point_locator::shoot, mostly exact evaluation of rays
 // against the walls already raised), and that cost grows faster than the number of reflex edges.
-// So a mesh with more than DecompositionSplit::max_reflex_per_cell reflex edges is first cut, exactly
-// (Nef intersection with a box), by an axis-parallel plane through the median of its reflex
-// edges' midpoints, recursively (a kd-tree over the reflex edges, at most max_depth levels), and
-// each cell is decomposed on its own. The cells tile the solid, so the union of their pieces is
-// the solid and their interiors are disjoint; each piece is convex. A cut plane passes through
-// no mesh vertex (it lies strictly between two consecutive vertex coordinates on its axis), so
-// every cell is a regular solid. The cuts add pieces where they cross a convex region (175 → 368
-// on sphere966; a few percent on most meshes); bounded walls sometimes make fewer (oblong). Should a Nef operation on a cell
-// throw, the whole mesh is decomposed again in one run (the reference path, max_depth = 0).
+// So a mesh with more than DecompositionSplit::max_reflex_per_cell reflex edges is first split by
+// axis-parallel planes through the median of its reflex edges' midpoints, recursively (a kd-tree
+// over the reflex edges' coordinates alone, at most max_depth levels); each leaf box is then
+// intersected, exactly, with the whole solid (one Nef intersection per cell, never of a cell with
+// a further box, so cell vertices stay first-degree rationals at any depth) and each cell is
+// decomposed on its own. The leaf boxes tile the box around the mesh, so the cells tile the solid: the union of their
+// pieces is the solid and their interiors are disjoint; each piece is convex. A cut plane passes
+// through no mesh vertex (it lies strictly between two consecutive vertex coordinates on its
+// axis), so every cell is a regular solid. The cuts add pieces where they cross a convex region (175 → 368
+// on sphere966; a few percent on most meshes); bounded walls sometimes make fewer (oblong). Smaller
+// cells do not pay: convex_decomposition_3's CPU time is about linear in the reflex edges at ≤ 128
+// per cell, and the cut faces add pieces (docs/benchmarks.md "… leaf boxes"). Should a Nef
+// operation on a cell throw, the whole mesh is decomposed again in one run (the reference path, max_depth = 0).
 //
 // The CGAL Nef headers are heavy to compile: they stay in this one file.
 #include <pendepth/mesh3.hpp>
@@ -209,11 +213,10 @@ void split_boxes(const Box& box, const std::vector<ReflexEdge>& edges, const Cut
 
 // The solid's part inside `box`: one exact Nef intersection of the whole solid with the box, never
 // of a cell with a further box. So every vertex of a cell is a mesh vertex, a box corner, or a mesh
-// edge / face meeting a box face / edge: a rational of the first degree in the input doubles,
-// whatever the depth of the kd-tree. Cells cut from cells carry constructions of constructions,
-// and their exact evaluation grows with the depth (oblong at ≤ 32 reflex edges per cell: 137 s in
-// the cuts that way, 0.24 s this way; docs/benchmarks.md "… leaf boxes"). O(n log n) per cell in
-// Nef's overlay, cheap next to convex_decomposition_3.
+// edge / face meeting a box face / edge — a rational of the first degree in the input doubles at
+// any depth of the kd-tree — and the cells depend on the solid alone, not on one another. O(n log n)
+// per cell in Nef's overlay: ~3% of the time at the default split (anchor), 9–14% at 8–32 reflex
+// edges per cell (docs/benchmarks.md "… leaf boxes").
 Nef cell_of(const Nef& solid, const Box& b) {
   const auto P = [](double x, double y, double z) { return K::Point_3(x, y, z); };
   Mesh box;
