@@ -11,13 +11,16 @@
 #include <pendepth/io.hpp>
 #include <pendepth/mesh3.hpp>
 
+#include "mesh3/convex_decomposition_nef.hpp"
+
 #include <chrono>
 #include <cstdio>
 #include <exception>
+#include <string>
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: mesh_decompose_times FILE\n");
+  if (argc != 2 && argc != 4) {
+    std::fprintf(stderr, "usage: mesh_decompose_times FILE [MAX_REFLEX_PER_CELL MAX_DEPTH]\n");
     return 2;
   }
   using clock = std::chrono::steady_clock;
@@ -34,7 +37,9 @@ int main(int argc, char** argv) {
       return 0;
     }
     const auto t1 = clock::now();
-    const pendepth::ConvexDecomposition3 d = pendepth::convex_decomposition(m);
+    const pendepth::ConvexDecomposition3 d =
+        argc == 4 ? pendepth::detail::convex_decomposition(m, {std::stoul(argv[2]), std::stoi(argv[3])})
+                  : pendepth::convex_decomposition(m);
     std::printf(" pieces %zu rounded %zu dropped %zu cut_vertices %zu cells %zu decompose_s %.3f\n", d.pieces.size(),
                 d.rounded_pieces, d.dropped_slivers, d.cut_vertices, d.cells, secs(t1));
   } catch (const std::exception& e) {

@@ -18,15 +18,19 @@
 // convex_decomposition_3's time is ray shooting in the Nef point locator while it raises the walls
 // of reflex edges (perf: ~70% under SNC_point_locator::shoot, mostly exact evaluation of rays
 // against the walls already raised), and that cost grows faster than the number of reflex edges.
-// So a mesh with more than DecompositionSplit::max_reflex_per_cell reflex edges is first cut, exactly
-// (Nef intersection with a box), by an axis-parallel plane through the median of its reflex
-// edges' midpoints, recursively (a kd-tree over the reflex edges, at most max_depth levels), and
-// each cell is decomposed on its own. The cells tile the solid, so the union of their pieces is
-// the solid and their interiors are disjoint; each piece is convex. A cut plane passes through
-// no mesh vertex (it lies strictly between two consecutive vertex coordinates on its axis), so
-// every cell is a regular solid. The cuts add pieces where they cross a convex region (175 → 368
-// on sphere966; a few percent on most meshes); bounded walls sometimes make fewer (oblong). Should a Nef operation on a cell
-// throw, the whole mesh is decomposed again in one run (the reference path, max_depth = 0).
+// So a mesh with more than DecompositionSplit::max_reflex_per_cell reflex edges is first split by
+// axis-parallel planes through the median of its reflex edges' midpoints, recursively (a kd-tree
+// over the reflex edges' coordinates alone, at most max_depth levels); each leaf box is then
+// intersected, exactly, with the whole solid (one Nef intersection per cell, never of a cell with
+// a further box, so cell vertices stay first-degree rationals at any depth) and each cell is
+// decomposed on its own. The leaf boxes tile the box around the mesh, so the cells tile the solid: the union of their
+// pieces is the solid and their interiors are disjoint; each piece is convex. A cut plane passes
+// through no mesh vertex (it lies strictly between two consecutive vertex coordinates on its
+// axis), so every cell is a regular solid. The cuts add pieces where they cross a convex region (175 → 368
+// on sphere966; a few percent on most meshes); bounded walls sometimes make fewer (oblong). Smaller
+// cells do not pay: convex_decomposition_3's CPU time is about linear in the reflex edges at ≤ 128
+// per cell, and the cut faces add pieces (docs/benchmarks.md "… leaf boxes"). Should a Nef
+// operation on a cell throw, the whole mesh is decomposed again in one run (the reference path, max_depth = 0).
 //
 // The CGAL Nef headers are heavy to compile: they stay in this one file.
 #include <pendepth/mesh3.hpp>
@@ -84,8 +88,8 @@ bool flat(const std::vector<Vec3>& v) {
 
 K::Point_3 point(const Vec3& p) { return K::Point_3(p.x(), p.y(), p.z()); }
 
-// The mesh's solid as a Nef polyhedron (exact: doubles convert exactly).
-Nef mesh_nef(const Mesh3& mesh) {
+// The mesh as a CGAL surface mesh (exact: doubles convert exactly).
+Mesh surface_mesh(const Mesh3& mesh) {
   Mesh sm;
   const auto pts = mesh.points();
   std::map<std::size_t, Mesh::Vertex_index> vid;
@@ -93,7 +97,7 @@ Nef mesh_nef(const Mesh3& mesh) {
     for (std::size_t v : t)
       if (!vid.count(v)) vid.emplace(v, sm.add_vertex(point(pts[v])));
   for (const auto& t : mesh.triangles()) sm.add_face(vid.at(t[0]), vid.at(t[1]), vid.at(t[2]));
-  return Nef(sm);
+  return sm;
 }
 
 struct ReflexEdge {
@@ -118,7 +122,12 @@ std::vector<ReflexEdge> reflex_edges(const Mesh3& mesh) {
   return out;
 }
 
-// Axis-parallel cuts through no mesh vertex, and the half-spaces (as boxes around the mesh) they bound.
+// An axis-parallel box (closed), a cell of the split: the solid's part inside it.
+struct Box {
+  double lo[3], hi[3];
+};
+
+// Axis-parallel cuts through no mesh vertex, and the boxes around the mesh they bound.
 class Cutter {
  public:
   explicit Cutter(const Mesh3& mesh) {
@@ -132,8 +141,8 @@ class Cutter {
       // box ends at the largest finite double (at worst on the mesh's extreme face, which the
       // regularised intersection keeps), never at an infinity no kernel point can hold.
       const double e = std::max({1.0, std::abs(c.front()), std::abs(c.back())});
-      lo_[i] = std::max(c.front() - e, std::numeric_limits<double>::lowest());
-      hi_[i] = std::min(c.back() + e, std::numeric_limits<double>::max());
+      around_.lo[i] = std::max(c.front() - e, std::numeric_limits<double>::lowest());
+      around_.hi[i] = std::min(c.back() + e, std::numeric_limits<double>::max());
     }
   }
 
@@ -141,6 +150,9 @@ class Cutter {
     int axis;
     double at;
   };
+
+  // The box around the whole mesh (the root cell).
+  const Box& around() const { return around_; }
 
   // The plane through the median of the edges' midpoints on the axis where they spread most,
   // moved to a double strictly between two consecutive vertex coordinates; none if there is no such double.
@@ -165,36 +177,23 @@ class Cutter {
     return Cut{axis, at};
   }
 
-  // The part of `solid` below (`upper` false) or above the cut.
-  Nef side(const Nef& solid, const Cut& cut, bool upper) const {
-    double l[3] = {lo_[0], lo_[1], lo_[2]}, h[3] = {hi_[0], hi_[1], hi_[2]};
-    (upper ? l : h)[cut.axis] = cut.at;
-    Mesh box;
-    auto P = [](double x, double y, double z) { return K::Point_3(x, y, z); };
-    CGAL::make_hexahedron(P(l[0], l[1], l[2]), P(h[0], l[1], l[2]), P(h[0], h[1], l[2]), P(l[0], h[1], l[2]),
-                          P(l[0], h[1], h[2]), P(l[0], l[1], h[2]), P(h[0], l[1], h[2]), P(h[0], h[1], h[2]), box);
-    return solid * Nef(box);
+  // The part of `box` below (`upper` false) or above the cut.
+  static Box side(Box box, const Cut& cut, bool upper) {
+    (upper ? box.lo : box.hi)[cut.axis] = cut.at;
+    return box;
   }
 
  private:
   static double mid(const ReflexEdge& e, int i) { return e.a[i] / 2 + e.b[i] / 2; }
   std::vector<double> coords_[3];
-  double lo_[3], hi_[3];
+  Box around_;
 };
 
-// The marked bounded volumes of a decomposed Nef polyhedron, as polyhedra (the first volume is the outer one).
-void collect_pieces(Nef& decomposed, std::vector<Poly>& out) {
-  for (auto ci = ++decomposed.volumes_begin(); ci != decomposed.volumes_end(); ++ci) {
-    if (!ci->mark()) continue;
-    out.emplace_back();
-    decomposed.convert_inner_shell_to_polyhedron(ci->shells_begin(), out.back());
-  }
-}
-
-// Recursive step: cut `cell` while it meets too many reflex edges and a cut separates them, then
-// decompose each cell. Returns the number of cells.
-std::size_t decompose_cells(Nef cell, const std::vector<ReflexEdge>& edges, const Cutter& cutter,
-                            const detail::DecompositionSplit& split, int depth, std::vector<Poly>& out) {
+// The leaves of a kd-tree over the reflex edges: cut `box` while it meets more than
+// split.max_reflex_per_cell of them and a cut separates them (neither side keeps them all), at
+// most split.max_depth levels. Only the reflex edges' coordinates are looked at: no Nef operation.
+void split_boxes(const Box& box, const std::vector<ReflexEdge>& edges, const Cutter& cutter,
+                 const detail::DecompositionSplit& split, int depth, std::vector<Box>& out) {
   std::optional<Cutter::Cut> cut;
   std::vector<ReflexEdge> below, above;
   if (edges.size() > split.max_reflex_per_cell && depth < split.max_depth && (cut = cutter.choose(edges))) {
@@ -205,26 +204,62 @@ std::size_t decompose_cells(Nef cell, const std::vector<ReflexEdge>& edges, cons
     if (std::max(below.size(), above.size()) == edges.size()) cut.reset();  // no progress
   }
   if (!cut) {
-    CGAL::convex_decomposition_3(cell);
-    collect_pieces(cell, out);
-    return 1;
+    out.push_back(box);
+    return;
   }
-  Nef lower = cutter.side(cell, *cut, false), upper = cutter.side(cell, *cut, true);
-  cell.clear();
-  return decompose_cells(std::move(lower), below, cutter, split, depth + 1, out) +
-         decompose_cells(std::move(upper), above, cutter, split, depth + 1, out);
+  split_boxes(Cutter::side(box, *cut, false), below, cutter, split, depth + 1, out);
+  split_boxes(Cutter::side(box, *cut, true), above, cutter, split, depth + 1, out);
+}
+
+// The solid's part inside `box`: one exact Nef intersection of the whole solid with the box, never
+// of a cell with a further box. So every vertex of a cell is a mesh vertex, a box corner, or a mesh
+// edge / face meeting a box face / edge — a rational of the first degree in the input doubles at
+// any depth of the kd-tree — and the cells depend on the solid alone, not on one another. O(n log n)
+// per cell in Nef's overlay: ~3% of the time at the default split (anchor), 9–14% at 8–32 reflex
+// edges per cell (docs/benchmarks.md "… leaf boxes").
+Nef cell_of(const Nef& solid, const Box& b) {
+  const auto P = [](double x, double y, double z) { return K::Point_3(x, y, z); };
+  Mesh box;
+  CGAL::make_hexahedron(P(b.lo[0], b.lo[1], b.lo[2]), P(b.hi[0], b.lo[1], b.lo[2]), P(b.hi[0], b.hi[1], b.lo[2]),
+                        P(b.lo[0], b.hi[1], b.lo[2]), P(b.lo[0], b.hi[1], b.hi[2]), P(b.lo[0], b.lo[1], b.hi[2]),
+                        P(b.hi[0], b.lo[1], b.hi[2]), P(b.hi[0], b.hi[1], b.hi[2]), box);
+  return solid * Nef(box);
+}
+
+// The marked bounded volumes of a decomposed Nef polyhedron, as polyhedra (the first volume is the outer one).
+void collect_pieces(Nef& decomposed, std::vector<Poly>& out) {
+  for (auto ci = ++decomposed.volumes_begin(); ci != decomposed.volumes_end(); ++ci) {
+    if (!ci->mark()) continue;
+    out.emplace_back();
+    decomposed.convert_inner_shell_to_polyhedron(ci->shells_begin(), out.back());
+  }
+}
+
+// CGAL's convex decomposition of one cell, its pieces appended to `out`.
+void decompose_into(Nef cell, std::vector<Poly>& out) {
+  CGAL::convex_decomposition_3(cell);
+  collect_pieces(cell, out);
 }
 
 // The exact pieces; the split path falls back to one run if a Nef operation throws.
 std::vector<Poly> exact_pieces(const Mesh3& mesh, const detail::DecompositionSplit& split, std::size_t& cells) {
-  const Nef solid = mesh_nef(mesh);
+  const Mesh sm = surface_mesh(mesh);
+  const Nef solid(sm);
+  const Cutter cutter(mesh);
+  std::vector<Box> boxes;
+  split_boxes(cutter.around(), reflex_edges(mesh), cutter, split, 0, boxes);
   std::vector<Poly> out;
+  cells = boxes.size();
+  if (boxes.size() == 1) {
+    decompose_into(solid, out);
+    return out;
+  }
   try {
-    cells = decompose_cells(solid, reflex_edges(mesh), Cutter(mesh), split, 0, out);
+    for (const Box& b : boxes) decompose_into(cell_of(solid, b), out);
   } catch (const std::exception&) {
-    if (split.max_depth == 0) throw;
     out.clear();
-    cells = decompose_cells(solid, {}, Cutter(mesh), {split.max_reflex_per_cell, 0}, 0, out);
+    cells = 1;
+    decompose_into(solid, out);
   }
   return out;
 }
@@ -300,7 +335,7 @@ DecompositionCheck check_decomposition(const Mesh3& mesh, const DecompositionSpl
   DecompositionCheck c;
   const std::vector<Poly> pieces = exact_pieces(mesh, split, c.cells);
   c.pieces = pieces.size();
-  const Nef solid = mesh_nef(mesh);
+  const Nef solid(surface_mesh(mesh));
   Nef all;  // empty
   K::FT sum = 0;
   c.each_convex = true;

@@ -4,7 +4,7 @@
 // volumes sum to the mesh's (so their interiors are disjoint) and each is convex (exact
 // orientation of every vertex against every facet plane). The one-run decomposition (max_depth 0,
 // the previous algorithm) is checked the same way as the reference. Splits are forced on small
-// meshes (few reflex edges per cell) so that the Nef unions stay cheap.
+// meshes (few reflex edges per cell, up to 8 levels) so that the Nef unions stay cheap.
 #include <pendepth/io.hpp>
 #include <pendepth/mesh3.hpp>
 
@@ -47,6 +47,12 @@ void check_both(const Mesh3& m, std::optional<bool> must_split = true) {
     SCOPED_TRACE("split: ≤ 2 reflex edges per cell, 3 levels");
     expect_exact_tiling(m, {2, 3}, must_split);
   }
+  {
+    // Deep kd-trees: every cell is cut from the solid by its own leaf box (never from a cell), so
+    // boxes' edges and corners meet mesh edges and faces in every way the levels allow.
+    SCOPED_TRACE("split: ≤ 1 reflex edge per cell, 8 levels");
+    expect_exact_tiling(m, {1, 8}, must_split);
+  }
 }
 
 }  // namespace
@@ -65,6 +71,27 @@ TEST(MeshDecompositionSplit, GeneratedMeshesTileExactly) {
     SCOPED_TRACE("bumpy sphere");
     check_both(Mesh3::validate(to_file(bumpy_sphere(rng, 8, 6, 0.3)), "bumpy"));
   }
+}
+
+// Random polycubes: integer vertices, cuts at half-integers, triangulated square faces whose
+// diagonals cross the boxes' edges at their midpoints and box corners on the faces — the
+// degenerate contacts between the leaf boxes and the mesh, decided exactly by Nef.
+TEST(MeshDecompositionSplit, RandomPolycubesTileExactlyUnderDeepSplits) {
+  std::mt19937_64 rng(17);
+  int checked = 0;
+  for (int trial = 0; trial < 12 && checked < 3; ++trial) {
+    std::optional<Mesh3> m;
+    try {
+      m = Mesh3::validate(to_file(polycube(random_polycube(rng, 10))), "polycube");
+    } catch (const InvalidInput&) {
+      continue;  // a non-manifold boundary (edge- or vertex-adjacent voxels)
+    }
+    if (m->convex() || m->reflex_edges() < 2) continue;
+    SCOPED_TRACE("polycube " + std::to_string(trial));
+    check_both(*m, std::nullopt);
+    ++checked;
+  }
+  EXPECT_EQ(checked, 3);
 }
 
 // Near the largest doubles: the cut boxes reach beyond the mesh by its own extent, which would
