@@ -47,7 +47,8 @@
 // candidate certainly covered or certainly beyond the best), signs of n·u near 0 (planes nearly
 // parallel to the line: rounding in symmetric meshes) taken exactly, a plane equal to g's
 // (seams) by the exact plane test; the exact line stage runs only when that is undecided, and
-// there (offer_on_line) a covering interval's exact ends are computed only when a comparison on
+// there (offer_on_line) a covering interval certainly holding the segment strictly ends the line
+// (as in line_no_offer), a covering interval's exact ends are computed only when a comparison on
 // their enclosures is undecided, and a line's λ on a plane once per class of equal planes.
 // Filtered tier, lines once per class: planes equal across sums (the same geometric plane, either
 // side, decided exactly) form classes (plane_classes), and for a facet f each line plane(f) ∩
@@ -67,7 +68,8 @@
 // one-sum facet cover", "… a plane number type", "… plane classes, one rounding guard", "… a
 // facet cover by unions"): with the union cover the tripod pair takes ~2 000 facets (2 reach the
 // lines) and 0.4 s; a torus 8×4 pair ~8 900 facets (~190 reach the lines, fewer of their lines
-// run: those through unsettled triangles) and half a minute.
+// run: those through unsettled triangles) and half a minute, ~8 s since a covering interval
+// certainly holding a line's segment ends the line ("… a covering interval holding the segment").
 // Work limit (max_work, the front door's kExactSigmaMaxWork): a deterministic count of the setup's
 // candidate facets and of the line stage's line–sum tests; past it the query gives up (nullopt)
 // having decided nothing, so a limited run either equals the unlimited one or gives up
@@ -443,7 +445,8 @@ bool plane_misses_box(const Plane& f, const Box3& b) {
 // disjoint from (a_inf, b_sup) ⊇ the segment [a, b]. First the segment's box (x0 + λu over
 // λ ∈ [a_inf, b_sup] in intervals) against S_l's box (S_l ⊂ box: a segment outside the box's
 // interior misses int S_l) — O(1), and on the torus pair it settles two thirds of the tests that
-// the planes' loop (O(planes)) settles (docs/benchmarks.md "Exact mesh σ: lazy covering ends").
+// the planes' loop (O(planes)) settles (docs/benchmarks.md "Exact mesh σ: a covering interval
+// holding the segment").
 bool open_misses(const Ctx& c, const Sum& s, const IV3& x0, const IV3& u, double a_inf, double b_sup) {
   double lo = -INFINITY, hi = INFINITY;  // ⊇ the open interval
   CGAL::Protect_FPU_rounding<true> up;  // IF arithmetic below
@@ -577,8 +580,9 @@ bool cover_misses(const Ctx& c, const Sum& s, const LineI& L, std::size_t gp, do
 // The exact line stage (main loop) on the enclosures: true when it certainly offers nothing —
 // L ∩ S_k certainly empty, or every candidate point (a superset of the exact path's: the foot
 // of 0 clamped to [a, b], a, b, every covering interval's ends) certainly covered by an open
-// covering interval or certainly beyond the best (Best::beyond). False whenever a sign or an
-// order is uncertain: the exact path decides.
+// covering interval or certainly beyond the best (Best::beyond) — at once when one covering
+// interval certainly holds [a, b] strictly. False whenever a sign or an order is uncertain: the
+// exact path decides.
 bool line_no_offer(const Ctx& c, const LineI& L, const Sum& sk, std::size_t gp, const std::vector<std::size_t>& cover,
                    const Best& best, std::vector<std::pair<I, I>>& ivs) {
   if (!(L.u2.inf() > 0)) return false;
@@ -593,6 +597,7 @@ bool line_no_offer(const Ctx& c, const LineI& L, const Sum& sk, std::size_t gp, 
     if (sl == Span::Empty) continue;
     if (sl == Span::Unknown) return false;
     if (hi.sup() <= a.inf() || lo.inf() >= b.sup()) continue;  // certainly hi <= a or lo >= b
+    if (lo.sup() < a.inf() && b.sup() < hi.inf()) return true;  // certainly [a, b] ⊂ (lo, hi): all covered
     if (!(hi.inf() > a.sup() && lo.sup() < b.inf())) return false;
     ivs.emplace_back(lo, hi);
   }
@@ -639,7 +644,8 @@ struct LineConstraints {
   // λ = b/a (a = a_e(p) != 0), once per class of equal planes per line in the filtered tier:
   // planes of one class are the same geometric plane (either side: n, c scaled by t != 0, so b/a
   // is the same number), and the covering sums of a line share planes (on the torus pair 13 % of
-  // the exact stage's 11 M λ: docs/benchmarks.md "Exact mesh σ: lazy covering ends").
+  // the exact stage's 11 M λ before offer_on_line's exit: docs/benchmarks.md "Exact mesh σ: a
+  // covering interval holding the segment").
   FT lambda_e(std::size_t p) const {
     if (!c.filt) return b_e(p) / a_e(p);
     const std::size_t k = c.cls[p];
@@ -723,10 +729,12 @@ struct LineCandidate {
 // same candidates in the same order, every comparison the same exact predicate — decided on the
 // enclosures when they are disjoint, else on the exact numbers, computed then (a covering sum's
 // exact interval only when one of its ends is compared undecided or is offered) — so the sort
-// sees the same outcomes and the same point is offered, bit for bit (the tiers' test). On the
-// torus pair (~42 covering intervals per exact line) it saves 14 % of the exact intervals only:
-// their ends tie exactly (shared planes and vertices), so most comparisons need the exact
-// numbers (docs/benchmarks.md "Exact mesh σ: lazy covering ends").
+// sees the same outcomes and the same point is offered, bit for bit (the tiers' test). A covering
+// interval that certainly holds [a, b] strictly ends the line at once: every candidate lies in
+// [a, b], so the reference offers nothing. On the torus pair (~42 covering intervals per exact
+// line, their ends tied exactly: shared planes and vertices, so the lazy ends alone saved 14 % of
+// the exact intervals) that exit makes the query 4–5× faster (docs/benchmarks.md "Exact mesh σ:
+// a covering interval holding the segment").
 void offer_on_line(const Ctx& c, const LineSegment& s, const std::vector<std::size_t>& cover, Best& best,
                    std::vector<CoverSpan>& spans) {
   auto value = [&](LazyEnd& x, CoverSpan* span) -> const FT& {
@@ -760,6 +768,9 @@ void offer_on_line(const Ctx& c, const LineSegment& s, const std::vector<std::si
       sp.lo = {iv(*lo), std::move(lo)}, sp.hi = {iv(*hi), std::move(hi)};
     }
     if (!less(a, nullptr, sp.hi, &sp) || !less(sp.lo, &sp, b, nullptr)) continue;  // hi <= a or lo >= b
+    // lo < a and b < hi certainly: every candidate (all in [a, b]) is covered, the reference
+    // offers nothing.
+    if (sp.lo.i.sup() < a.i.inf() && b.i.sup() < sp.hi.i.inf()) return;
     spans.push_back(std::move(sp));
   }
   std::vector<LineCandidate> cand{{&foot, nullptr}, {&a, nullptr}, {&b, nullptr}};
