@@ -46,8 +46,9 @@ bool lambda_interval(const Cs& cs, std::size_t first, std::size_t count, bool st
     else return PlaneNumber(cs.b_e(p) / cs.a_e(p));
   };
   auto exact_lambda = [&](std::size_t p, PlaneNumber& l) {  // sign(a); λ = b/a when a != 0
-    const CGAL::Sign sa = sign(cs.a_e(p));
-    if (sa != CGAL::ZERO) l = lambda_of(p);
+    const PlaneNumber a = cs.a_e(p);
+    const CGAL::Sign sa = sign(a);
+    if (sa != CGAL::ZERO) l = filtered ? lambda_of(p) : PlaneNumber(cs.b_e(p) / a);  // the reference as before
     return sa;
   };
   // Constraint p decided exactly: `lambda` (sa, l set), `skip` (a = 0, the whole line on the
