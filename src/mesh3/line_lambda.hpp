@@ -27,7 +27,8 @@ struct PlaneLambda {
 // lo > hi, resp. lo >= hi); lo and hi are then unspecified.
 // Cs gives for each p: on_line(p) (the constraint's plane holds the line, a = b = 0 exactly by
 // construction: no constraint when closed, the empty set when open); a_i(p), b_i(p): intervals
-// holding a and b exactly (a proven forward error bound); a_e(p), b_e(p): the exact values.
+// holding a and b exactly (a proven forward error bound); a_e(p), b_e(p): the exact values;
+// optionally lambda_e(p): the exact b_e(p) / a_e(p) for a_e(p) != 0 (a cache may answer it).
 // filtered = false: every constraint evaluated exactly (the reference tier). filtered = true: λ
 // enclosed as b_i / a_i when a_i certainly excludes 0, else exactly (a's sign, and λ when a != 0);
 // then only the constraints whose enclosure meets the certain bound of the extremum (lo_bound =
@@ -40,10 +41,14 @@ bool lambda_interval(const Cs& cs, std::size_t first, std::size_t count, bool st
                      std::optional<PlaneNumber>& lo, std::optional<PlaneNumber>& hi) {
   using I = CGAL::Interval_nt<true>;
   lo.reset(), hi.reset();
+  auto lambda_of = [&](std::size_t p) {  // λ = b/a, a != 0
+    if constexpr (requires { cs.lambda_e(p); }) return cs.lambda_e(p);
+    else return PlaneNumber(cs.b_e(p) / cs.a_e(p));
+  };
   auto exact_lambda = [&](std::size_t p, PlaneNumber& l) {  // sign(a); λ = b/a when a != 0
     const PlaneNumber a = cs.a_e(p);
     const CGAL::Sign sa = sign(a);
-    if (sa != CGAL::ZERO) l = cs.b_e(p) / a;
+    if (sa != CGAL::ZERO) l = filtered ? lambda_of(p) : PlaneNumber(cs.b_e(p) / a);  // the reference as before
     return sa;
   };
   // Constraint p decided exactly: `lambda` (sa, l set), `skip` (a = 0, the whole line on the
@@ -107,12 +112,12 @@ bool lambda_interval(const Cs& cs, std::size_t first, std::size_t count, bool st
     if (sa == CGAL::POSITIVE) pos.push_back({p, I(li, ls)}), hi_bound = std::min(hi_bound, ls);
     else neg.push_back({p, I(li, ls)}), lo_bound = std::max(lo_bound, li);
   }
-  // The exact extremum over the constraints that may attain it.
-  PlaneNumber l;
+  // The exact extremum over the constraints that may attain it (a's sign is known: certain in
+  // intervals, or exact above).
   for (const PlaneLambda& q : neg)
-    if (q.l.sup() >= lo_bound) take(exact_lambda(q.p, l), l);
+    if (q.l.sup() >= lo_bound) take(CGAL::NEGATIVE, lambda_of(q.p));
   for (const PlaneLambda& q : pos)
-    if (q.l.inf() <= hi_bound) take(exact_lambda(q.p, l), l);
+    if (q.l.inf() <= hi_bound) take(CGAL::POSITIVE, lambda_of(q.p));
   return !empty();
 }
 

@@ -46,7 +46,10 @@
 // first run on enclosures (line_no_offer: its segment in S_k, the covering intervals, every
 // candidate certainly covered or certainly beyond the best), signs of n·u near 0 (planes nearly
 // parallel to the line: rounding in symmetric meshes) taken exactly, a plane equal to g's
-// (seams) by the exact plane test; the exact line stage runs only when that is undecided.
+// (seams) by the exact plane test; the exact line stage runs only when that is undecided, and
+// there (offer_on_line) a covering interval certainly holding the segment strictly ends the line
+// (as in line_no_offer), a covering interval's exact ends are computed only when a comparison on
+// their enclosures is undecided, and a line's λ on a plane once per class of equal planes.
 // Filtered tier, lines once per class: planes equal across sums (the same geometric plane, either
 // side, decided exactly) form classes (plane_classes), and for a facet f each line plane(f) ∩
 // plane(g) is run once per class of g — the same line offers the same points. The interval
@@ -65,7 +68,8 @@
 // one-sum facet cover", "… a plane number type", "… plane classes, one rounding guard", "… a
 // facet cover by unions"): with the union cover the tripod pair takes ~2 000 facets (2 reach the
 // lines) and 0.4 s; a torus 8×4 pair ~8 900 facets (~190 reach the lines, fewer of their lines
-// run: those through unsettled triangles) and half a minute.
+// run: those through unsettled triangles) and half a minute, ~8 s since a covering interval
+// certainly holding a line's segment ends the line ("… a covering interval holding the segment").
 // Work limit (max_work, the front door's kExactSigmaMaxWork): a deterministic count of the setup's
 // candidate facets and of the line stage's line–sum tests; past it the query gives up (nullopt)
 // having decided nothing, so a limited run either equals the unlimited one or gives up
@@ -88,6 +92,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <stdexcept>
+#include <tuple>
 
 namespace pendepth::mesh3 {
 namespace {
@@ -193,6 +199,11 @@ struct Ctx {
   bool planted = false;    // tests: the planted bug in the filtered prunes
   std::vector<char> on_f;  // planes equal to the current plane(f), either side (exact)
   std::vector<std::size_t> cls;  // filtered tier: planes[p]'s class of equal planes (plane_classes)
+  // Filtered tier: the exact λ of the current exact line (line_id) on each class of planes, once
+  // computed (LineConstraints::lambda_e): lam_line[class] == line_id when lam_val[class] holds it.
+  std::size_t line_id = 0;
+  mutable std::vector<std::size_t> lam_line;
+  mutable std::vector<FT> lam_val;
   mutable std::vector<std::optional<ExactPlane>> exact;  // planes[p]'s exact numbers, on demand
 };
 
@@ -431,10 +442,21 @@ bool plane_misses_box(const Plane& f, const Box3& b) {
 }
 
 // Interval filter of a covering sum: true when L ∩ int S_l is certainly empty or certainly
-// disjoint from (a_inf, b_sup) ⊇ the segment [a, b].
+// disjoint from (a_inf, b_sup) ⊇ the segment [a, b]. First the segment's box (x0 + λu over
+// λ ∈ [a_inf, b_sup] in intervals) against S_l's box (S_l ⊂ box: a segment outside the box's
+// interior misses int S_l) — O(1), and on the torus pair it settles two thirds of the tests that
+// the planes' loop (O(planes)) settles (docs/benchmarks.md "Exact mesh σ: a covering interval
+// holding the segment").
 bool open_misses(const Ctx& c, const Sum& s, const IV3& x0, const IV3& u, double a_inf, double b_sup) {
   double lo = -INFINITY, hi = INFINITY;  // ⊇ the open interval
   CGAL::Protect_FPU_rounding<true> up;  // IF arithmetic below
+  if (std::isfinite(a_inf) && std::isfinite(b_sup)) {
+    const IF lam(a_inf, b_sup);
+    for (int a = 0; a < 3; ++a) {
+      const IF x = fast(comp(x0, a)) + lam * fast(comp(u, a));
+      if (x.sup() <= s.box.lo[a] || x.inf() >= s.box.hi[a]) return true;
+    }
+  }
   for (std::size_t p = s.first; p < s.first + s.count; ++p) {
     const auto [a, b] = constraint_on_line(c.planes[p], x0, u);
     if (a.inf() > 0) hi = std::min(hi, (b / a).sup());
@@ -454,16 +476,20 @@ struct Best {
   double radius;  // >= √d2 (or the search radius U), for the double prunes
   FT cap2;        // reach², exact
   double sup2;    // >= *d2, or >= cap2 without a best
+  double inf2;    // <= *d2, or <= cap2 without a best
   std::size_t offers = 0;  // points accepted so far (SigmaCoverCheck)
   // A point at squared distance e2 is no improvement: not nearer than the best, or beyond the cap.
   bool beyond(const FT& e2) const { return d2 ? !(e2 < *d2) : e2 > cap2; }
   // The same, certain on an enclosure of e2.
   bool beyond(const I& e2) const { return d2 ? e2.inf() >= sup2 : e2.inf() > sup2; }
+  // Certainly not beyond (an improvement), on an enclosure of e2.
+  bool within(const I& e2) const { return d2 ? e2.sup() < inf2 : e2.sup() <= inf2; }
 };
 
 void offer(Best& b, const FT& d2, const V3& x, std::size_t plane) {
   if (b.beyond(d2)) return;
-  b.d2 = d2, b.x = x, b.plane = plane, b.sup2 = to_interval(d2).second, ++b.offers;
+  const auto [inf2, sup2] = to_interval(d2);
+  b.d2 = d2, b.x = x, b.plane = plane, b.sup2 = sup2, b.inf2 = inf2, ++b.offers;
   b.radius = std::min(b.radius, std::sqrt(to_double(d2)) * (1 + 0x1p-40) + 0x1p-1000);
 }
 
@@ -554,8 +580,9 @@ bool cover_misses(const Ctx& c, const Sum& s, const LineI& L, std::size_t gp, do
 // The exact line stage (main loop) on the enclosures: true when it certainly offers nothing —
 // L ∩ S_k certainly empty, or every candidate point (a superset of the exact path's: the foot
 // of 0 clamped to [a, b], a, b, every covering interval's ends) certainly covered by an open
-// covering interval or certainly beyond the best (Best::beyond). False whenever a sign or an
-// order is uncertain: the exact path decides.
+// covering interval or certainly beyond the best (Best::beyond) — at once when one covering
+// interval certainly holds [a, b] strictly. False whenever a sign or an order is uncertain: the
+// exact path decides.
 bool line_no_offer(const Ctx& c, const LineI& L, const Sum& sk, std::size_t gp, const std::vector<std::size_t>& cover,
                    const Best& best, std::vector<std::pair<I, I>>& ivs) {
   if (!(L.u2.inf() > 0)) return false;
@@ -570,6 +597,7 @@ bool line_no_offer(const Ctx& c, const LineI& L, const Sum& sk, std::size_t gp, 
     if (sl == Span::Empty) continue;
     if (sl == Span::Unknown) return false;
     if (hi.sup() <= a.inf() || lo.inf() >= b.sup()) continue;  // certainly hi <= a or lo >= b
+    if (lo.sup() < a.inf() && b.sup() < hi.inf()) return true;  // certainly [a, b] ⊂ (lo, hi): all covered
     if (!(hi.inf() > a.sup() && lo.sup() < b.inf())) return false;
     ivs.emplace_back(lo, hi);
   }
@@ -613,11 +641,165 @@ struct LineConstraints {
     const ExactPlane& e = exact_plane(c, p);
     return e.c - dot(e.n, x0);
   }
+  // λ = b/a (a = a_e(p) != 0), once per class of equal planes per line in the filtered tier:
+  // planes of one class are the same geometric plane (either side: n, c scaled by t != 0, so b/a
+  // is the same number), and the covering sums of a line share planes (on the torus pair 13 % of
+  // the exact stage's 11 M λ before offer_on_line's exit: docs/benchmarks.md "Exact mesh σ: a
+  // covering interval holding the segment").
+  FT lambda_e(std::size_t p) const {
+    if (!c.filt) return b_e(p) / a_e(p);
+    const std::size_t k = c.cls[p];
+    if (c.lam_line[k] != c.line_id) c.lam_line[k] = c.line_id, c.lam_val[k] = b_e(p) / a_e(p);
+    return c.lam_val[k];
+  }
 };
 bool line_interval(const Ctx& c, const Sum& s, const LineI& L, bool strict, std::optional<FT>& lo,
                    std::optional<FT>& hi, std::size_t gp) {
   const LineConstraints cs{c, L, exact_u(c, L), exact_x0(c, L), gp};
   return detail::lambda_interval(cs, s.first, s.count, strict, c.filt, lo, hi);
+}
+
+// A line L = x0 + λu in plane(f) (exact x0, u; l2 = |x0|², u2 = |u|²) and its segment [a, b] in
+// S_k, exact: the point of R_f ∩ L nearest 0 — the segment minus the open intervals of the
+// covering sums — is offered. Candidates: the foot of 0 clamped to [a, b], a, b, and every
+// covering interval end within [a, b], by increasing |λ| (σ² = l2 + λ²u2 grows with |λ|); the
+// first one that no open interval covers is the nearest point, unless it is beyond the best.
+struct LineSegment {
+  const LineI& L;
+  const V3 &u, &x0;
+  const FT &l2, &u2, &a, &b;
+};
+
+// The reference (every number exact: the SigmaExactUnfiltered tier): each covering sum's open
+// interval by line_interval, every comparison on the exact numbers. O(K) exact intervals and
+// O(m log m) exact comparisons for m candidates.
+void offer_on_line_exact(const Ctx& c, const LineSegment& s, const std::vector<std::size_t>& cover, Best& best) {
+  const FT &a = s.a, &b = s.b;
+  // Covering open intervals (the ones meeting [a, b]).
+  std::vector<std::pair<FT, FT>> ivs;
+  for (std::size_t l : cover) {
+    std::optional<FT> lo, hi;
+    if (!line_interval(c, c.sums[l], s.L, true, lo, hi, s.L.g) || !lo || !hi) continue;
+    if (*hi <= a || *lo >= b) continue;
+    ivs.emplace_back(*lo, *hi);
+  }
+  std::vector<FT> cand;
+  cand.push_back(is_positive(a) ? a : is_negative(b) ? b : FT(0));
+  cand.push_back(a), cand.push_back(b);
+  for (const auto& [lo, hi] : ivs) {
+    if (lo >= a) cand.push_back(lo);
+    if (hi <= b) cand.push_back(hi);
+  }
+  std::sort(cand.begin(), cand.end(), [](const FT& x, const FT& y) { return abs(x) < abs(y); });
+  for (const FT& lam : cand) {
+    const FT e2 = s.l2 + lam * lam * s.u2;
+    if (best.beyond(e2)) break;
+    bool covered = false;
+    for (const auto& [lo, hi] : ivs)
+      if (lo < lam && lam < hi) {
+        covered = true;
+        break;
+      }
+    if (!covered) {
+      offer(best, e2, s.x0 + lam * s.u, s.L.f);
+      break;
+    }
+  }
+}
+
+// An end of an interval on the line: an enclosure of its exact value, and the value once a
+// comparison needs it (offer_on_line).
+struct LazyEnd {
+  I i;
+  std::optional<FT> e;
+};
+// A covering sum's open interval on the line: its ends as enclosures (line_interval_i) until a
+// comparison needs one exactly, then both by line_interval.
+struct CoverSpan {
+  std::size_t sum;
+  LazyEnd lo, hi;
+};
+// A candidate: an end, and the span it belongs to (nullptr: the segment's, exact from the start).
+struct LineCandidate {
+  LazyEnd* v;
+  CoverSpan* span;
+};
+
+// The filtered tier of offer_on_line_exact: the same covering intervals in the same order, the
+// same candidates in the same order, every comparison the same exact predicate — decided on the
+// enclosures when they are disjoint, else on the exact numbers, computed then (a covering sum's
+// exact interval only when one of its ends is compared undecided or is offered) — so the sort
+// sees the same outcomes and the same point is offered, bit for bit (the tiers' test). A covering
+// interval that certainly holds [a, b] strictly ends the line at once: every candidate lies in
+// [a, b], so the reference offers nothing. On the torus pair (~42 covering intervals per exact
+// line, their ends tied exactly: shared planes and vertices, so the lazy ends alone saved 14 % of
+// the exact intervals) that exit makes the query 4–5× faster (docs/benchmarks.md "Exact mesh σ:
+// a covering interval holding the segment").
+void offer_on_line(const Ctx& c, const LineSegment& s, const std::vector<std::size_t>& cover, Best& best,
+                   std::vector<CoverSpan>& spans) {
+  auto value = [&](LazyEnd& x, CoverSpan* span) -> const FT& {
+    if (!x.e) {
+      std::optional<FT> lo, hi;
+      if (!line_interval(c, c.sums[span->sum], s.L, true, lo, hi, s.L.g) || !lo || !hi)
+        throw std::logic_error("offer_on_line: an enclosed interval is empty exactly");
+      span->lo.e = std::move(lo), span->hi.e = std::move(hi);
+    }
+    return *x.e;
+  };
+  auto less = [&](LazyEnd& x, CoverSpan* sx, LazyEnd& y, CoverSpan* sy) {  // x < y, exactly
+    if (x.i.sup() < y.i.inf()) return true;
+    if (x.i.inf() >= y.i.sup()) return false;
+    return value(x, sx) < value(y, sy);
+  };
+  LazyEnd a{iv(s.a), s.a}, b{iv(s.b), s.b};
+  const FT foot_v = is_positive(s.a) ? s.a : is_negative(s.b) ? s.b : FT(0);
+  LazyEnd foot{iv(foot_v), foot_v};
+  // Covering open intervals (the ones meeting [a, b]): certainly missing ones (open_misses, an
+  // empty enclosure) dropped, the others' order against a and b decided as the reference does.
+  spans.clear();
+  for (std::size_t l : cover) {
+    if (open_misses(c, c.sums[l], s.L.x0, s.L.u, a.i.inf(), b.i.sup())) continue;
+    CoverSpan sp{l, {}, {}};
+    const Span r = line_interval_i(c, c.sums[l], s.L, true, sp.lo.i, sp.hi.i, s.L.g);
+    if (r == Span::Empty) continue;
+    if (r == Span::Unknown) {
+      std::optional<FT> lo, hi;
+      if (!line_interval(c, c.sums[l], s.L, true, lo, hi, s.L.g) || !lo || !hi) continue;
+      sp.lo = {iv(*lo), std::move(lo)}, sp.hi = {iv(*hi), std::move(hi)};
+    }
+    if (!less(a, nullptr, sp.hi, &sp) || !less(sp.lo, &sp, b, nullptr)) continue;  // hi <= a or lo >= b
+    // lo < a and b < hi certainly: every candidate (all in [a, b]) is covered, the reference
+    // offers nothing.
+    if (sp.lo.i.sup() < a.i.inf() && b.i.sup() < sp.hi.i.inf()) return;
+    spans.push_back(std::move(sp));
+  }
+  std::vector<LineCandidate> cand{{&foot, nullptr}, {&a, nullptr}, {&b, nullptr}};
+  for (CoverSpan& sp : spans) {
+    if (!less(sp.lo, &sp, a, nullptr)) cand.push_back({&sp.lo, &sp});
+    if (!less(b, nullptr, sp.hi, &sp)) cand.push_back({&sp.hi, &sp});
+  }
+  std::sort(cand.begin(), cand.end(), [&](const LineCandidate& x, const LineCandidate& y) {  // |x| < |y|
+    const I ax = CGAL::abs(x.v->i), ay = CGAL::abs(y.v->i);
+    if (ax.sup() < ay.inf()) return true;
+    if (ax.inf() >= ay.sup()) return false;
+    return abs(value(*x.v, x.span)) < abs(value(*y.v, y.span));
+  });
+  for (const LineCandidate& k : cand) {
+    const bool covered = std::any_of(spans.begin(), spans.end(), [&](CoverSpan& sp) {
+      return less(sp.lo, &sp, *k.v, k.span) && less(*k.v, k.span, sp.hi, &sp);
+    });
+    if (covered) {  // the reference goes on unless the point is beyond the best
+      const I e2 = s.L.l2 + square(k.v->i) * s.L.u2;
+      if (best.within(e2)) continue;
+      if (best.beyond(e2)) break;
+    }
+    const FT& lam = value(*k.v, k.span);
+    const FT e2 = s.l2 + lam * lam * s.u2;
+    if (best.beyond(e2)) break;
+    if (covered) continue;
+    offer(best, e2, s.x0 + lam * s.u, s.L.f);
+    break;
+  }
 }
 
 // Of the candidates `idx` (those whose enclosure may attain the extremum), keeps the ones whose
@@ -843,7 +1025,7 @@ CoverResult union_cover(const std::vector<OpenConvex>& sets, const std::vector<V
   for (std::size_t l = 0; l < c.sums.size(); ++l)
     if (boxes_meet(c.sums[l].box, b)) cand.push_back(l);
   Best best{};
-  best.radius = std::sqrt(reach2), best.sup2 = reach2;
+  best.radius = std::sqrt(reach2), best.sup2 = best.inf2 = reach2;
   Leaves out;
   out.max = keep_leaves ? kMaxLeaves : 0;
   CoverResult r;
@@ -904,7 +1086,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
   Best best;
   best.radius = reach;
   best.cap2 = FT(reach) * FT(reach);
-  best.sup2 = to_interval(best.cap2).second;
+  std::tie(best.inf2, best.sup2) = to_interval(best.cap2);
   auto near = [&](double d) { return d * (1 - 0x1p-40) <= best.radius; };
   std::vector<std::size_t> cover;    // sums whose box meets B(0, best.radius): they cover
   std::vector<std::size_t> sources;  // the same and f's own sum: their planes cut f's lines
@@ -912,6 +1094,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
   c.on_f.assign(c.planes.size(), 0);
   std::size_t lines = 0;
   std::vector<std::pair<I, I>> ivs_i;  // line_no_offer's scratch
+  std::vector<CoverSpan> spans;        // offer_on_line's scratch
   std::vector<IV3> face;               // face_covered's scratch
   Leaves leaves;                       // face_covered's unsettled triangles of the current facet
   // Filtered tier: the class of g whose line plane(f) ∩ plane(g) was run for the current facet
@@ -919,7 +1102,10 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
   // (x0 + λu is the same point set; planes holding the line give the same empty or unconstrained
   // intervals as g, exactly), and the best only decreases, so it is not run again.
   std::vector<std::size_t> line_done;
-  if (c.filt) plane_classes(c, order), line_done.assign(c.planes.size(), SIZE_MAX);
+  if (c.filt) {
+    plane_classes(c, order), line_done.assign(c.planes.size(), SIZE_MAX);
+    c.lam_line.assign(c.planes.size(), SIZE_MAX), c.lam_val.resize(c.planes.size());
+  }
   // SigmaCoverCheck (tests): a facet found covered is processed anyway; an offer from it is a
   // violation (checked when the next facet starts and after the loop).
   std::size_t checked_offers = SIZE_MAX;  // best.offers when the last covered facet started
@@ -999,42 +1185,14 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
         if (best.beyond(l2)) continue;
         std::optional<FT> a, b;
         const LineI Le{iv(u), iv(x0), iv(u2), iv(l2), fi, gi, u, x0};
+        ++c.line_id;  // a new line: no λ cached (LineConstraints::lambda_e)
         if (!line_interval(c, sk, Le, false, a, b, gi)) continue;
         if (!a || !b) continue;  // unreachable: S_k is bounded
         ++lines;
         if (!spend(1 + cover.size())) return std::nullopt;
-        // Covering open intervals (the ones meeting [a, b]).
-        std::vector<std::pair<FT, FT>> ivs;
-        const double a_inf = to_interval(*a).first, b_sup = to_interval(*b).second;
-        for (std::size_t l2i : cover) {
-          if (c.filt && cover_misses(c, c.sums[l2i], Le, gi, a_inf, b_sup)) continue;
-          std::optional<FT> lo, hi;
-          if (!line_interval(c, c.sums[l2i], Le, true, lo, hi, gi) || !lo || !hi) continue;
-          if (*hi <= *a || *lo >= *b) continue;
-          ivs.emplace_back(*lo, *hi);
-        }
-        std::vector<FT> cand;
-        cand.push_back(is_positive(*a) ? *a : is_negative(*b) ? *b : FT(0));
-        cand.push_back(*a), cand.push_back(*b);
-        for (const auto& [lo, hi] : ivs) {
-          if (lo >= *a) cand.push_back(lo);
-          if (hi <= *b) cand.push_back(hi);
-        }
-        std::sort(cand.begin(), cand.end(), [](const FT& x, const FT& y) { return abs(x) < abs(y); });
-        for (const FT& lam : cand) {
-          const FT e2 = l2 + lam * lam * u2;
-          if (best.beyond(e2)) break;
-          bool covered = false;
-          for (const auto& [lo, hi] : ivs)
-            if (lo < lam && lam < hi) {
-              covered = true;
-              break;
-            }
-          if (!covered) {
-            offer(best, e2, x0 + lam * u, fi);
-            break;
-          }
-        }
+        const LineSegment seg{Le, u, x0, l2, u2, *a, *b};
+        if (c.filt) offer_on_line(c, seg, cover, best, spans);
+        else offer_on_line_exact(c, seg, cover, best);
       }
     }
   }

@@ -67,9 +67,17 @@ std::pair<int, int> compare_tiers(const Shape3& sp, const Shape3& sq, std::mt199
       exact = mesh3::exact_minimum(m, pp, pq, old.upper_bound, kNoLimit);
     }
     ++compared;
+    // The whole answer, not σ's bits only: the same nearest point (translation, normal) on the
+    // same facet (features, pieces, witnesses) — the exact line stage's offer (offer_on_line
+    // against offer_on_line_exact) picks one of the points at the least distance.
     const bool same = filtered.has_value() == exact.has_value() &&
                       (!exact || (filtered->depth == exact->depth && filtered->lower_bound == exact->lower_bound &&
-                                  filtered->upper_bound == exact->upper_bound));
+                                  filtered->upper_bound == exact->upper_bound &&
+                                  filtered->translation == exact->translation && filtered->normal == exact->normal &&
+                                  filtered->facet_normal == exact->facet_normal &&
+                                  filtered->witness_p == exact->witness_p && filtered->witness_q == exact->witness_q &&
+                                  filtered->feature_p == exact->feature_p && filtered->feature_q == exact->feature_q &&
+                                  filtered->piece_p == exact->piece_p && filtered->piece_q == exact->piece_q));
     mismatched += !same;
     if (expect_equal) {
       EXPECT_TRUE(exact.has_value()) << name << " pose " << k;
