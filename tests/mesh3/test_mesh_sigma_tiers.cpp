@@ -241,7 +241,10 @@ std::vector<Vec3> grid_translations(const std::set<Voxel>& vp, const std::set<Vo
   Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
   for (const Voxel& a : vp)
     for (const Voxel& b : vq)
-      for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], double(a[i] - b[i])), hi[i] = std::max(hi[i], double(a[i] - b[i]));
+      for (int i = 0; i < 3; ++i) {
+        lo[i] = std::min(lo[i], double(a[i] - b[i]));
+        hi[i] = std::max(hi[i], double(a[i] - b[i]));
+      }
   const Vec3 mid = (lo + hi) / 2, half = (hi - lo) / 2 + Vec3::Constant(spread);
   const double g = integer ? 1 : 2;
   std::vector<Vec3> ts;
@@ -363,11 +366,15 @@ TEST(MeshSigmaLines, RandomPolycubesAtExactTies) {
 // both tiers' whole answers, σ against the voxel oracle.
 TEST(MeshSigmaLines, ExactFitsDecidedByATie) {
   const std::vector<std::tuple<const char*, std::set<Voxel>, std::set<Voxel>, Vec3>> fits{
-      {"fit 1", {{-1, -1, 0}, {-1, 0, 0}, {0, -1, -1}, {0, -1, 0}, {0, 0, 0}}, {{0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {1, 0, 0}},
+      {"fit 1",
+       {{-1, -1, 0}, {-1, 0, 0}, {0, -1, -1}, {0, -1, 0}, {0, 0, 0}},
+       {{0, 0, 0}, {0, 1, 0}, {0, 1, 1}, {1, 0, 0}},
        Vec3(-2, -1, 0)},
       {"fit 2", {{0, 0, 0}, {1, 0, 0}, {1, 0, 1}, {2, 0, 0}, {2, 1, 0}}, {{0, 0, 0}, {0, 0, 1}, {0, 0, 2}, {0, 1, 0}},
        Vec3(0, 0, 0)},
-      {"fit 3", {{-1, 0, 0}, {0, 0, -1}, {0, 0, 0}, {0, 1, -1}, {1, 0, -1}}, {{0, 0, -1}, {0, 0, 0}, {0, 0, 1}, {0, 1, 0}},
+      {"fit 3",
+       {{-1, 0, 0}, {0, 0, -1}, {0, 0, 0}, {0, 1, -1}, {1, 0, -1}},
+       {{0, 0, -1}, {0, 0, 0}, {0, 0, 1}, {0, 1, 0}},
        Vec3(-1, 0, -1)}};
   for (const auto& [name, vp, vq, t] : fits) {
     EXPECT_EQ(voxel_sigma2(vp, vq, t), 1) << name;
