@@ -802,6 +802,34 @@ void offer_on_line(const Ctx& c, const LineSegment& s, const std::vector<std::si
   }
 }
 
+// SigmaLineCheck (tests): the line through the filtered tier (offer_on_line, unless line_no_offer
+// settled it) and through the reference on a copy of the best; counts the lines whose outcomes
+// differ and those with exact ties among the ends of [a, b] and of the covering intervals.
+void check_line(const Ctx& c, const LineSegment& s, const std::vector<std::size_t>& cover, Best& best,
+                std::vector<CoverSpan>& spans, bool no_offer) {
+  Best ref = best;
+  offer_on_line_exact(c, s, cover, ref);
+  if (no_offer) {
+    ++SigmaLineCheck::no_offer;
+    SigmaLineCheck::no_offer_violations += ref.offers != best.offers;
+    return;
+  }
+  std::vector<FT> ends{s.a, s.b};
+  for (std::size_t l : cover) {
+    std::optional<FT> lo, hi;
+    if (!line_interval(c, c.sums[l], s.L, true, lo, hi, s.L.g) || !lo || !hi || *hi < s.a || *lo > s.b) continue;
+    ends.push_back(*lo), ends.push_back(*hi);
+  }
+  std::sort(ends.begin(), ends.end());
+  SigmaLineCheck::ties += std::adjacent_find(ends.begin(), ends.end()) != ends.end();
+  offer_on_line(c, s, cover, best, spans);
+  ++SigmaLineCheck::lines;
+  const bool same = ref.offers == best.offers &&
+                    (!ref.d2 || (*ref.d2 == *best.d2 && ref.plane == best.plane && ref.x.x == best.x.x &&
+                                 ref.x.y == best.x.y && ref.x.z == best.x.z));
+  SigmaLineCheck::mismatches += !same;
+}
+
 // Of the candidates `idx` (those whose enclosure may attain the extremum), keeps the ones whose
 // exact value (value(i), exact) is the maximum (`max`) or the minimum: the ties the intervals
 // cannot split (faces coplanar up to rounding, e.g. a mesh's planar quads split in two triangles)
@@ -1166,6 +1194,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
       for (std::size_t gi = sl.first; gi < sl.first + sl.count; ++gi) {
         const Plane& g = c.planes[gi];
         if (gi == fi || !near(g.dist)) continue;
+        bool no_offer = false;  // line_no_offer settled the line (run anyway under a SigmaLineCheck)
         const double bound2 = best.d2 ? to_interval(*best.d2).second : reach * reach * (1 + 0x1p-40);
         if (c.filt) {
           if (line_done[c.cls[gi]] == fi) continue;  // this line was run for f
@@ -1174,7 +1203,8 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
           if (line_far(c, L, sk, sl, bound2)) continue;
           line_done[c.cls[gi]] = fi;
           if (!spend(1 + cover.size())) return std::nullopt;
-          if (line_no_offer(c, L, sk, gi, cover, best, ivs_i)) continue;
+          no_offer = line_no_offer(c, L, sk, gi, cover, best, ivs_i);
+          if (no_offer && SigmaLineCheck::depth == 0) continue;
         }
         const ExactPlane& ge = exact_plane(c, gi);
         const V3 u = cross(fe.n, ge.n);
@@ -1191,7 +1221,8 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
         ++lines;
         if (!spend(1 + cover.size())) return std::nullopt;
         const LineSegment seg{Le, u, x0, l2, u2, *a, *b};
-        if (c.filt) offer_on_line(c, seg, cover, best, spans);
+        if (c.filt && SigmaLineCheck::depth) check_line(c, seg, cover, best, spans, no_offer);
+        else if (c.filt) offer_on_line(c, seg, cover, best, spans);
         else offer_on_line_exact(c, seg, cover, best);
       }
     }

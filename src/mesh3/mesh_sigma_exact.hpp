@@ -56,6 +56,22 @@ struct SigmaCoverCheck {
   SigmaCoverCheck& operator=(const SigmaCoverCheck&) = delete;
 };
 
+/// Tests only: while a SigmaLineCheck is alive on this thread, the filtered tier runs the
+/// reference offer_on_line_exact (mesh_sigma_exact.cpp) on a copy of the best beside every
+/// offer_on_line and counts in `mismatches` the lines where the two do not leave the same best
+/// (the same offer or none: squared distance, point and plane, exactly); the lines that
+/// line_no_offer settles are run by the reference anyway and counted in `no_offer_violations`
+/// when it offers a point. `lines`: lines compared; `ties`: those of them where a covering open
+/// interval's exact end equals an end of the segment [a, b] or another covering interval's end.
+struct SigmaLineCheck {
+  static inline thread_local int depth = 0;
+  static inline thread_local std::size_t lines = 0, ties = 0, mismatches = 0, no_offer = 0, no_offer_violations = 0;
+  SigmaLineCheck() { ++depth; }
+  ~SigmaLineCheck() { --depth; }
+  SigmaLineCheck(const SigmaLineCheck&) = delete;
+  SigmaLineCheck& operator=(const SigmaLineCheck&) = delete;
+};
+
 namespace detail {
 
 /// Tests only: the union cover of the filtered tier (mesh_sigma_exact.cpp: polygon_covered, the
