@@ -14,7 +14,9 @@
 //                         default gjk_tolerance 1e-6; its contact carries the depth negated, so
 //                         the magnitude is compared
 //   sigma/bullet          Bullet 3.24 float64 btGjkEpaSolver2::Penetration, btConvexHullShape
-//                         with margin 0
+//                         with margin 0; Q's rotation matrix made before timing
+//   sigma/bullet_q        the same, Q's pose made per query from the quaternion pendepth gets
+//                         (Bullet's setRotation), as pendepth converts its Pose3 per query
 //   sigma_hulls/<impl>/all  the σ peers above on the shared real hulls: the pairs and placements
 //                         of hulls/<q>/all below (960 queries, each checked against the O(n·m)
 //                         reference)
@@ -319,19 +321,30 @@ std::shared_ptr<btConvexHullShape> bullet_hull(const ConvexPolytope& S) {
   return h;
 }
 
-Factory bullet_factory() {
-  return [](const SigmaCase& c) -> DepthFn {
+// Q's pose for Bullet: from the query's rotation matrix (converted once, outside the timed loop),
+// or (`from_quaternion`, the rows …_q) from the same quaternion pendepth receives, converted per
+// query by Bullet's btMatrix3x3::setRotation — what pendepth pays for its Pose3 (40–50 ns).
+btTransform bullet_pose(const Mat3& R, const Pose3& pose, bool from_quaternion) {
+  const Vec3& t = pose.translation;
+  const btVector3 origin(t.x(), t.y(), t.z());
+  if (from_quaternion) {
+    const Eigen::Quaterniond& r = pose.rotation;
+    return btTransform(btQuaternion(r.x(), r.y(), r.z(), r.w()), origin);
+  }
+  return btTransform(btMatrix3x3(R(0, 0), R(0, 1), R(0, 2), R(1, 0), R(1, 1), R(1, 2), R(2, 0), R(2, 1), R(2, 2)), origin);
+}
+
+Factory bullet_factory(bool from_quaternion) {
+  return [from_quaternion](const SigmaCase& c) -> DepthFn {
     auto shapes = std::make_shared<std::vector<std::pair<std::shared_ptr<btConvexHullShape>, std::shared_ptr<btConvexHullShape>>>>();
     for (std::size_t k = 0; k < c.P.size(); ++k) shapes->emplace_back(bullet_hull(c.P[k]), bullet_hull(c.Q[k]));
-    return [shapes, &c](std::size_t i) {
+    return [shapes, from_quaternion, &c](std::size_t i) {
       const Query& q = c.queries[i];
       const auto& [a, b] = (*shapes)[q.pair];
-      const Mat3& R = q.R;
       const Vec3& t = q.pose.translation;
       btTransform ta;
       ta.setIdentity();
-      btTransform tb(btMatrix3x3(R(0, 0), R(0, 1), R(0, 2), R(1, 0), R(1, 1), R(1, 2), R(2, 0), R(2, 1), R(2, 2)),
-                     btVector3(t.x(), t.y(), t.z()));
+      const btTransform tb = bullet_pose(q.R, q.pose, from_quaternion);
       btVector3 guess = t.squaredNorm() > 0 ? btVector3(t.x(), t.y(), t.z()) : btVector3(1, 0, 0);
       btGjkEpaSolver2::sResults res;
       // The normal comes back in A's frame (here the world frame): only the distance is used.
@@ -914,6 +927,7 @@ void register_benchmarks() {
 //   distance/pendepth       pendepth::signed_distance: exact (exact GJK + certificate)
 //   distance/bullet_gjk     Bullet float64 btGjkPairDetector + btVoronoiSimplexSolver (the path
 //                           of Bullet's collision world), btConvexHullShape with margin 0
+//   distance/bullet_gjk_q   the same, Q's pose from the quaternion per query (as sigma/bullet_q)
 //   distance/bullet_gjk2    Bullet float64 btGjkEpaSolver2::Distance (margin 0)
 //   distance/fcl_ccd        FCL 0.7 fcl::distance, GST_LIBCCD (libccd's GJK), tolerance 1e-6
 //   distance/fcl_indep      FCL 0.7 fcl::distance, GST_INDEP (FCL's own GJK), tolerance 1e-6
@@ -1003,20 +1017,17 @@ DistFactory pendepth_distance_exact() {
 }
 
 #if PENDEPTH_BENCH_BULLET
-btTransform bt_transform(const Mat3& R, const Vec3& t) {
-  return btTransform(btMatrix3x3(R(0, 0), R(0, 1), R(0, 2), R(1, 0), R(1, 1), R(1, 2), R(2, 0), R(2, 1), R(2, 2)),
-                     btVector3(t.x(), t.y(), t.z()));
-}
-DistFactory bullet_distance(bool pair_detector) {
-  return [pair_detector](const DistCase& c) -> DistFn {
+btTransform bt_transform(const Mat3& R, const Vec3& t) { return bullet_pose(R, Pose3(t), false); }
+DistFactory bullet_distance(bool pair_detector, bool from_quaternion = false) {
+  return [pair_detector, from_quaternion](const DistCase& c) -> DistFn {
     auto hulls = std::make_shared<std::vector<std::pair<std::shared_ptr<btConvexHullShape>, std::shared_ptr<btConvexHullShape>>>>();
     for (std::size_t k = 0; k < c.P.size(); ++k) hulls->emplace_back(bullet_hull(c.P[k]), bullet_hull(c.Q[k]));
-    return [hulls, pair_detector, &c](std::size_t i) {
+    return [hulls, pair_detector, from_quaternion, &c](std::size_t i) {
       const DistQuery& q = c.queries[i];
       const auto& [a, b] = (*hulls)[q.pair];
       btTransform ta;
       ta.setIdentity();
-      const btTransform tb = bt_transform(q.R, q.pose.translation);
+      const btTransform tb = bullet_pose(q.R, q.pose, from_quaternion);
       if (pair_detector) {
         btVoronoiSimplexSolver simplex;
         btGjkEpaPenetrationDepthSolver epa;  // only consulted on penetration (never here)
@@ -1177,6 +1188,7 @@ void register_benchmarks() {
                                                          {"pendepth_exact", pendepth_distance_exact()}};
 #if PENDEPTH_BENCH_BULLET
   impls.emplace_back("bullet_gjk", bullet_distance(true));
+  impls.emplace_back("bullet_gjk_q", bullet_distance(true, true));
   impls.emplace_back("bullet_gjk2", bullet_distance(false));
 #endif
 #if PENDEPTH_BENCH_FCL
@@ -1210,7 +1222,8 @@ int main(int argc, char** argv) {
   impls.emplace_back("fcl_epa", fcl_factory(false));
 #endif
 #if PENDEPTH_BENCH_BULLET
-  impls.emplace_back("bullet", bullet_factory());
+  impls.emplace_back("bullet", bullet_factory(false));
+  impls.emplace_back("bullet_q", bullet_factory(true));
 #endif
   for (const auto& [name, make] : impls)  // the shared real hulls (n = 0)
     benchmark::RegisterBenchmark(("sigma_hulls/" + name + "/all").c_str(), bm_sigma, make, 0)
