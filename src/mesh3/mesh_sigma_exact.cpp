@@ -33,8 +33,15 @@
 // empty or certainly beyond the best (only there can R_f's relative boundary on L lie: a
 // boundary point x of R_f off relbd f lies on ∂S_l for some covering S_l, on a plane g of S_l
 // active at x and not parallel to f), and drops sums whose box certainly misses plane(f). Under a
-// SigmaExactUnfiltered guard every decision is exact and those prunes are off: the reference the
-// filtered tier must equal bit for bit (tests/mesh3/test_mesh_sigma_tiers.cpp).
+// SigmaExactUnfiltered guard every decision is exact and those prunes are off: the reference
+// whose σ the filtered tier must equal bit for bit — σ's rounding and bracket
+// (tests/mesh3/test_mesh_sigma_tiers.cpp). The rest of the answer (the nearest point x, its
+// facet: translation, normals, witnesses, features, pieces) is sure to equal the reference's
+// only when one point of Oᶜ is nearest: `offer` keeps the first of equal squared distances, and the
+// filtered prunes (line_far's S_l clipping and its >= bound, plane_misses_box) skip lines the
+// reference runs, lines that offer no point nearer than the best but can offer one at the same
+// distance first — another nearest point, the same σ (random polycubes at exact ties: 7 of 314
+// poses, RandomPolycubesAtExactTies).
 // Filtered tier, further (both decide nothing the exact path would not): a facet whose face
 // f ∩ S_k, within the best, lies in the union of the other open sums (face_covered: the face's
 // vertices as enclosures, ties decided exactly; fan triangles, each certainly strictly inside one

@@ -32,8 +32,11 @@ inline constexpr std::size_t kExactSigmaMaxWork = 250000;
 /// `skip_cover` (tests only: the planted bug) omits the removal of covered points.
 /// The tiers (tests and the bench): while a SigmaExactUnfiltered is alive on this thread,
 /// exact_minimum decides everything with the exact numbers (no interval filters, no filtered
-/// prunes) — the reference the filtered tier must equal bit for bit. `planted` (tests only) plants
-/// a bug in the filtered prunes (mesh_sigma_exact.cpp) so that the equality test can fail.
+/// prunes) — the reference whose σ (depth, bounds) the filtered tier must equal bit for bit; the
+/// nearest point and its facet are the reference's too when one point is nearest, and may be
+/// another nearest point at the same σ when several are (the tiers prune different lines and
+/// keep the first of equal distances: mesh_sigma_exact.cpp). `planted` (tests only) plants a bug
+/// in the filtered prunes (mesh_sigma_exact.cpp) so that the equality test can fail.
 struct SigmaExactUnfiltered {
   static inline thread_local int depth = 0;
   static inline thread_local bool planted = false;
