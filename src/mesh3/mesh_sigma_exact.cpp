@@ -1046,7 +1046,7 @@ namespace detail {
 CoverResult union_cover(const std::vector<OpenConvex>& sets, const std::vector<Vec3>& polygon, double reach2,
                         bool keep_leaves) {
   static const MeshPair none{};
-  Ctx c{none, Placed{}, {}, {}, true, false, {}, {}, {}};
+  Ctx c{none, Placed{}, {}, {}, true, false, {}, {}, 0, {}, {}, {}};
   for (const OpenConvex& o : sets) {
     Sum s;
     s.first = c.planes.size(), s.count = o.planes.size(), s.box = o.box;
@@ -1074,7 +1074,7 @@ CoverResult union_cover(const std::vector<OpenConvex>& sets, const std::vector<V
 std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, double upper,
                                     std::size_t max_work, bool skip_cover) {
   if (!(upper >= 0) || !std::isfinite(upper)) return std::nullopt;
-  Ctx c{m, place(m, pose_p, pose_q), {}, {}, SigmaExactUnfiltered::depth == 0, SigmaExactUnfiltered::planted, {}, {}, {}};
+  Ctx c{m, place(m, pose_p, pose_q), {}, {}, SigmaExactUnfiltered::depth == 0, SigmaExactUnfiltered::planted, {}, {}, 0, {}, {}, {}};
   const convex3::RelativePose rel{c.pl.R, c.pl.tq, c.pl.tp};
   const double reach = upper * (1 + 0x1p-30) + 0x1p-1000;
   // The work count (mesh_sigma_exact.hpp, kExactSigmaMaxWork): deterministic, never a clock. A

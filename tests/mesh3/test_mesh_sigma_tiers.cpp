@@ -49,6 +49,24 @@ bool same_answer(const std::optional<Depth3>& f, const std::optional<Depth3>& e)
                  f->feature_q == e->feature_q && f->piece_p == e->piece_p && f->piece_q == e->piece_q));
 }
 
+// The filtered tier's and the reference (all-exact) tier's exact σ at one pose, both searched
+// below the bounds-only upper bound, without a work limit.
+struct Tiers {
+  std::optional<Depth3> filtered, exact;
+};
+Tiers both_tiers(const mesh3::MeshPair& m, const Pose3& pp, const Pose3& pq) {
+  Depth3 old;
+  {
+    mesh3::SigmaBoundsOnly bounds_only;
+    old = mesh3::minimum(m, pp, pq);
+  }
+  Tiers r;
+  r.filtered = mesh3::exact_minimum(m, pp, pq, old.upper_bound, kNoLimit);
+  mesh3::SigmaExactUnfiltered unfiltered;
+  r.exact = mesh3::exact_minimum(m, pp, pq, old.upper_bound, kNoLimit);
+  return r;
+}
+
 // Poses: Q's translation uniform in ±spread (half of them on the half-integer grid when `grid`),
 // rotations random unless `axis_aligned`; `same_pose`: Q at P's pose (a mesh against itself: O
 // is centrally symmetric, every plane has its mirror at the same distance from 0). Returns
@@ -73,17 +91,7 @@ std::pair<int, int> compare_tiers(const Shape3& sp, const Shape3& sq, std::mt199
     }
     if (same_pose) pq = pp;
     if (!pair.overlapping(pp, pq)) continue;
-    Depth3 old;
-    {
-      mesh3::SigmaBoundsOnly bounds_only;
-      old = mesh3::minimum(m, pp, pq);
-    }
-    const auto filtered = mesh3::exact_minimum(m, pp, pq, old.upper_bound, kNoLimit);
-    std::optional<Depth3> exact;
-    {
-      mesh3::SigmaExactUnfiltered unfiltered;
-      exact = mesh3::exact_minimum(m, pp, pq, old.upper_bound, kNoLimit);
-    }
+    const auto [filtered, exact] = both_tiers(m, pp, pq);
     ++compared;
     // The whole answer, not σ's bits only: the same nearest point (translation, normal) on the
     // same facet (features, pieces, witnesses). Required on these poses (the nearest point is
@@ -271,17 +279,7 @@ LineCheckCounts check_lines(const std::set<Voxel>& vp, const std::set<Voxel>& vq
   for (const Vec3& t : ts) {
     const Pose3 pp, pq(t);
     if (!pair.overlapping(pp, pq)) continue;
-    Depth3 old;
-    {
-      mesh3::SigmaBoundsOnly bounds_only;
-      old = mesh3::minimum(m, pp, pq);
-    }
-    const auto d = mesh3::exact_minimum(m, pp, pq, old.upper_bound, kNoLimit);
-    std::optional<Depth3> exact;
-    {
-      mesh3::SigmaExactUnfiltered unfiltered;
-      exact = mesh3::exact_minimum(m, pp, pq, old.upper_bound, kNoLimit);
-    }
+    const auto [d, exact] = both_tiers(m, pp, pq);
     const double want = std::sqrt(voxel_sigma2(vp, vq, t));
     ++r.poses;
     const bool right = d && d->depth == want && d->lower_bound <= want && want <= d->upper_bound &&
