@@ -151,35 +151,88 @@ Foot section_foot(const Section& T, const Vec2& p) {
 // lies in the closed first quadrant too (turning a component of u to p's sign raises ⟨u, p⟩ and
 // keeps h_E). That quadrant is covered by u = (1, s) and u = (s, 1), s ∈ [0, 1] (unnormalised: the
 // value is G(s) = (⟨u, p⟩ − h_E(u))/|u|, h_E 1-homogeneous). So sd_E(p) = max of G over the two
-// halves, a 1D maximisation, certified by branch and bound:
-//  lower: G at any s (an outward interval's lower end) — a supporting line;
-//  upper: on a box S with midpoint m, G(S) ⊆ G(m) + G'(S)·(S − m) (mean value theorem, G smooth:
-//    h_E > 0 on u ≠ 0), G'(S) a naive interval enclosure; a second-order enclosure near the
-//    maximiser, where G' ~ 0, so the kept boxes stay few. Boxes whose upper end falls below the
-//    best lower bound cannot hold the maximum and are dropped; the upper bound is the largest
-//    upper end of the kept boxes (together they cover both halves).
+// halves, a 1D maximisation, certified in three steps:
+//  (a) the maximiser in doubles (not certified, only where to look): per half, G on a 9-point grid,
+//    then safeguarded Newton on G' = 0 in the grid cell around the best point (a step leaving the
+//    bracket where G' changes sign bisects instead), or the grid's end when G' does not change
+//    sign there; s*_k the result in half k;
+//  (b) lower: G at any s (an outward interval's lower end) — a supporting line; taken at s*_k and at
+//    every expansion point below, the best is the lower bound;
+//  (c) upper: each half's [0, 1] is covered by boxes S (at first [0, s* − w], [s* − w, s* + w],
+//    [s* + w, 1], w = 1/16, the empty ones left out); on S with an expansion point e ∈ S
+//    (s* when in S, else S's end nearest s*) and T = S − e, for every s ∈ S Taylor's theorem with
+//    the Lagrange remainder gives G(s) = G(e) + G'(e)(s − e) + ½G''(ξ)(s − e)², ξ between e and s
+//    (G is C² on [0, 1]: S > 0, W > 0 below), so G(S) ⊆ G(e) + G'(e)·T + ½G''(S)·T² (T² ⊆
+//    [0, max|T|²]), and the mean value theorem gives G(S) ⊆ G(e) + G'(S)·T; the box's upper end
+//    is the lesser of the two upper ends, G'(S), G''(S) naive interval enclosures. Near the
+//    maximiser G'(e) ~ 0 and G''(S) < 0 (a non-degenerate maximum), so the box [s* ± w] closes at
+//    once: its upper end is G(e) + |G'(e)|·w + (a non-positive term); away from it G falls and a
+//    few splits suffice. Boxes whose upper end falls below the lower bound cannot hold the
+//    maximum and are dropped; until the gap meets the target, the box of the largest upper end
+//    is halved (each half keeps an expansion point by the rule above); the upper bound is the
+//    largest upper end of the kept boxes (together they cover both halves).
+// (a) only chooses the boxes and expansion points, so a wrong s* costs boxes, never validity.
 // In one half's own names, u = (1, s) with p = (p_f, p_v) and semi-axes (k_f, k_v) along them
 // (the other half swaps ρ and z): N = p_f + p_v·s − S, S = √(k_f² + k_v² s²), W = √(1 + s²),
-// G = N/W, G' = (p_v − k_v² s/S)/W − N·s/W³.
+// G = N/W, G' = N'/W − N·s/W³, G'' = N''/W − 2N'·s/W³ + N·(2s² − 1)/W⁵ with N' = p_v − k_v² s/S,
+// N'' = −k_f² k_v²/S³ (S' = k_v² s/S, S'' = k_v²/S − k_v⁴ s²/S³ = k_f² k_v²/S³; (1/W)' = −s/W³,
+// (1/W)'' = (2s² − 1)/W⁵).
 // On the spheroid's axis with the centre inside (a ring of nearest points in 3D) the maximiser is
-// the end s = 0 of the half u = (1, s): no continuum in the meridian plane.
-// Cost: the boxes to a 2⁻⁴⁶ relative gap (or 2⁻⁵² of the scale at a contact): 100–180 measured,
-// a few live per level down to widths ~1e-7; at most kMaxEllipseBoxes (a near-flat maximum of a
-// near-spherical spheroid: the caller then intersects with EPA).
+// an end of a half: no continuum in the meridian plane.
+// Cost: the target is a 2⁻⁴⁶ relative gap (or 2⁻⁵² of the scale at a contact); 4–10 boxes measured
+// (docs/benchmarks.md "sphe16"); at most kMaxEllipseBoxes (a near-flat maximum of a near-spherical
+// spheroid: the caller then intersects with EPA).
 constexpr int kMaxEllipseBoxes = 2000;
 
 struct Half {
   Interval pf, pv;
   double kf, kv;
 };
-Interval half_value(const Half& h, const Interval& s) {
-  const Interval S = sqrt(iv(h.kf) * iv(h.kf) + iv(h.kv) * iv(h.kv) * (s * s)), W = sqrt(iv(1) + s * s);
-  return (h.pf + h.pv * s - S) / W;
+// G, G', G'' at s ∈ S (outward enclosures of each over the interval s).
+struct Jet {
+  Interval g, d1, d2;
+};
+Jet half_jet(const Half& h, const Interval& s) {
+  const Interval s2 = s * s, kv2 = iv(h.kv) * iv(h.kv), kf2 = iv(h.kf) * iv(h.kf);
+  const Interval S = sqrt(kf2 + kv2 * s2), W2 = iv(1) + s2, W = sqrt(W2), W3 = W2 * W;
+  const Interval N = h.pf + h.pv * s - S, N1 = h.pv - kv2 * s / S, N2 = -(kf2 * kv2 / (S * S * S));
+  return {N / W, N1 / W - N * s / W3, N2 / W - iv(2) * N1 * s / W3 + N * (iv(2) * s2 - iv(1)) / (W3 * W2)};
 }
-Interval half_slope(const Half& h, const Interval& s) {
-  const Interval S = sqrt(iv(h.kf) * iv(h.kf) + iv(h.kv) * iv(h.kv) * (s * s)), W2 = iv(1) + s * s, W = sqrt(W2);
-  const Interval N = h.pf + h.pv * s - S;
-  return (h.pv - iv(h.kv) * iv(h.kv) * s / S) / W - N * s / (W2 * W);
+
+// Step (a) in doubles: G and G' over G'' at s (the same formulas, rounded to nearest).
+struct HalfD {
+  double pf, pv, kf, kv;
+  double g(double s) const { return (pf + pv * s - std::sqrt(kf * kf + kv * kv * s * s)) / std::sqrt(1 + s * s); }
+  double d1(double s) const {
+    const double S = std::sqrt(kf * kf + kv * kv * s * s), W2 = 1 + s * s, W = std::sqrt(W2);
+    return (pv - kv * kv * s / S) / W - (pf + pv * s - S) * s / (W2 * W);
+  }
+  double d2(double s) const {
+    const double S = std::sqrt(kf * kf + kv * kv * s * s), W2 = 1 + s * s, W = std::sqrt(W2), W3 = W2 * W;
+    const double N = pf + pv * s - S, N1 = pv - kv * kv * s / S, N2 = -kf * kf * kv * kv / (S * S * S);
+    return N2 / W - 2 * N1 * s / W3 + N * (2 * s * s - 1) / (W3 * W2);
+  }
+};
+double half_argmax(const HalfD& h) {
+  constexpr int kGrid = 8;
+  int best = 0;
+  double best_g = -kInf;
+  for (int i = 0; i <= kGrid; ++i)
+    if (const double v = h.g(double(i) / kGrid); v > best_g) best_g = v, best = i;
+  double lo = std::max(0, best - 1) / double(kGrid), hi = std::min(kGrid, best + 1) / double(kGrid);
+  const bool rising = h.d1(lo) > 0, falling = h.d1(hi) < 0;
+  if (!rising || !falling) return !rising && best == 0 ? 0.0 : !falling && best == kGrid ? 1.0 : best / double(kGrid);
+  double s = best / double(kGrid);
+  for (int it = 0; it < 40; ++it) {  // the bracket [lo, hi] keeps G'(lo) > 0 > G'(hi)
+    const double d = h.d1(s);
+    if (d == 0 || !(std::isfinite(d))) break;
+    (d > 0 ? lo : hi) = s;
+    const double dd = h.d2(s), next = dd < 0 ? s - d / dd : lo + (hi - lo) / 2;
+    const double step = next > lo && next < hi ? next : lo + (hi - lo) / 2;
+    if (step == s || hi - lo <= 0x1p-50) break;
+    s = step;
+  }
+  return s;
 }
 
 struct EllipseSd {
@@ -189,31 +242,43 @@ struct EllipseSd {
 EllipseSd ellipse_sd(const Section& E, const Interval& rho, double z0) {
   const double z = std::abs(z0);
   const std::array<Half, 2> halves{Half{rho, iv(z), E.a, E.c}, Half{iv(z), rho, E.c, E.a}};
+  const double rho_mid = rho.lo + (rho.hi - rho.lo) / 2;
+  const std::array<double, 2> star{half_argmax({rho_mid, z, E.a, E.c}), half_argmax({z, rho_mid, E.c, E.a})};
   struct Box {
     int half;
-    double s0, s1, up;
+    double s0, s1, up, at;  // at: G(e)'s upper end
   };
   std::vector<Box> boxes;
+  boxes.reserve(16);
   const double scale = rho.hi + z + std::max(E.a, E.c);
   double lower = -kInf;
   int best_half = 0;
   double best_s = 0;
-  const auto value_at = [&](int k, double s) {
-    const Interval v = half_value(halves[k], iv(s));
+  const auto note = [&](int k, double s, const Interval& v) {
     if (v.lo > lower) lower = v.lo, best_half = k, best_s = s;
-    return v;
   };
-  const auto push = [&](int k, double s0, double s1) {
-    const double m = s0 + (s1 - s0) / 2;
-    const Interval box{s0, s1}, vm = value_at(k, m);
-    const double mean_value = (vm + half_slope(halves[k], box) * Interval{sub(s0, m, -1), sub(s1, m, +1)}).hi;
-    boxes.push_back({k, s0, s1, mean_value});
+  const auto push = [&](int k, double s0, double s1) {  // step (c) on [s0, s1]
+    const double s = star[k], e = s >= s0 && s <= s1 ? s : s < s0 ? s0 : s1;
+    const Jet at = half_jet(halves[k], iv(e)), over = half_jet(halves[k], Interval{s0, s1});
+    note(k, e, at.g);
+    const Interval T{sub(s0, e, -1), sub(s1, e, +1)};
+    const double t = std::max(-T.lo, T.hi), T2 = mul(t, t, +1);
+    const double taylor = (at.g + at.d1 * T + iv(0.5) * over.d2 * Interval{0, T2}).hi, mean_value = (at.g + over.d1 * T).hi;
+    boxes.push_back({k, s0, s1, std::min(taylor, mean_value), at.g.hi});
   };
-  for (int k = 0; k < 2; ++k) value_at(k, 0), value_at(k, 1), push(k, 0, 1);
-  for (int n = 2; n < kMaxEllipseBoxes; n += 2) {
+  constexpr double kW = 1.0 / 16;
+  for (int k = 0; k < 2; ++k) {
+    const double s = star[k], a = std::max(0.0, s - kW), b = std::min(1.0, s + kW);
+    if (a > 0) push(k, 0, a);
+    push(k, a, b);
+    if (b < 1) push(k, b, 1);
+  }
+  for (int n = int(boxes.size()); n < kMaxEllipseBoxes; n += 2) {
     std::erase_if(boxes, [&](const Box& b) { return b.up < lower; });
     const auto top = std::max_element(boxes.begin(), boxes.end(), [](const Box& x, const Box& y) { return x.up < y.up; });
-    if (top->up - lower <= std::max(0x1p-46 * std::abs(lower), 0x1p-52 * scale)) break;  // the target, or the floor
+    // The target, or the floor; or the top box's upper end is within it of G at its own
+    // expansion point (the rest of the gap is G's rounding there, which no split narrows).
+    if (top->up - std::max(lower, top->at) <= std::max(0x1p-46 * std::abs(lower), 0x1p-52 * scale)) break;
     const Box b = *top;
     const double m = b.s0 + (b.s1 - b.s0) / 2;
     if (!(m > b.s0 && m < b.s1)) break;  // (the rounding floor: s cannot be split further)
