@@ -243,7 +243,9 @@ EllipseSd ellipse_sd(const Section& E, const Interval& rho, double z0) {
   const double z = std::abs(z0);
   const std::array<Half, 2> halves{Half{rho, iv(z), E.a, E.c}, Half{iv(z), rho, E.c, E.a}};
   const double rho_mid = rho.lo + (rho.hi - rho.lo) / 2;
-  const std::array<double, 2> star{half_argmax({rho_mid, z, E.a, E.c}), half_argmax({z, rho_mid, E.c, E.a})};
+  const bool seeded = ellipse_seed >= 0 && ellipse_seed <= 1;
+  const std::array<double, 2> star = seeded ? std::array<double, 2>{ellipse_seed, ellipse_seed}
+                                            : std::array<double, 2>{half_argmax({rho_mid, z, E.a, E.c}), half_argmax({z, rho_mid, E.c, E.a})};
   struct Box {
     int half;
     double s0, s1, up, at;  // at: G(e)'s upper end

@@ -33,4 +33,9 @@ std::optional<BallSd> ball_signed_distance(const Support3& P, const Support3& Q,
 /// answers (the reference the closed form is checked against). Set only while no query runs.
 inline bool ball_enabled = true;
 
+/// Private (tests): when in [0, 1], the spheroid's maximiser in doubles is not searched and this s
+/// stands for it in both halves (ball3.cpp step (a)): a wrong maximiser costs boxes, never the
+/// bracket's validity, and the tests check that. Set only while no query runs.
+inline double ellipse_seed = -1;
+
 }  // namespace pendepth::primitives
