@@ -159,7 +159,7 @@ Foot section_foot(const Section& T, const Vec2& p) {
 //  (b) lower: G at any s (an outward interval's lower end) — a supporting line; taken at s*_k and at
 //    every expansion point below, the best is the lower bound;
 //  (c) upper: each half's [0, 1] is covered by boxes S (at first [0, s* − w], [s* − w, s* + w],
-//    [s* + w, 1], w = 1/16, the empty ones left out); on S with an expansion point e ∈ S
+//    [s* + w, 1], w = 1/4, the empty ones left out); on S with an expansion point e ∈ S
 //    (s* when in S, else S's end nearest s*) and T = S − e, for every s ∈ S Taylor's theorem with
 //    the Lagrange remainder gives G(s) = G(e) + G'(e)(s − e) + ½G''(ξ)(s − e)², ξ between e and s
 //    (G is C² on [0, 1]: S > 0, W > 0 below), so G(S) ⊆ G(e) + G'(e)·T + ½G''(S)·T² (T² ⊆
@@ -185,18 +185,43 @@ Foot section_foot(const Section& T, const Vec2& p) {
 constexpr int kMaxEllipseBoxes = 2000;
 
 struct Half {
-  Interval pf, pv;
+  Interval pf, pv;  // (both >= 0)
   double kf, kv;
+  Interval kf2, kv2, kfkv2;  // k_f², k_v², k_f² k_v²
+  Half(const Interval& f, const Interval& v, double a, double c) : pf(f), pv(v), kf(a), kv(c) {
+    kf2 = iv(a) * iv(a), kv2 = iv(c) * iv(c), kfkv2 = kf2 * kv2;
+  }
 };
-// G, G', G'' at s ∈ S (outward enclosures of each over the interval s).
-struct Jet {
-  Interval g, d1, d2;
+// G, G' at a point and G', G'' over a box, from the shared terms at s (outward enclosures over
+// the interval s ⊆ [0, 1]; the products with a factor >= 0 and the quotients by one > 0 by
+// directed.hpp's mul_nonneg and div_pos).
+struct Terms {
+  Interval s, s2, S, W2, W, W3, N, N1;
 };
-Jet half_jet(const Half& h, const Interval& s) {
-  const Interval s2 = s * s, kv2 = iv(h.kv) * iv(h.kv), kf2 = iv(h.kf) * iv(h.kf);
-  const Interval S = sqrt(kf2 + kv2 * s2), W2 = iv(1) + s2, W = sqrt(W2), W3 = W2 * W;
-  const Interval N = h.pf + h.pv * s - S, N1 = h.pv - kv2 * s / S, N2 = -(kf2 * kv2 / (S * S * S));
-  return {N / W, N1 / W - N * s / W3, N2 / W - iv(2) * N1 * s / W3 + N * (iv(2) * s2 - iv(1)) / (W3 * W2)};
+Terms half_terms(const Half& h, const Interval& s) {
+  Terms t;
+  t.s = s, t.s2 = mul_nonneg(s, s), t.S = sqrt(h.kf2 + mul_nonneg(h.kv2, t.s2));
+  t.W2 = iv(1) + t.s2, t.W = sqrt(t.W2), t.W3 = mul_nonneg(t.W2, t.W);
+  t.N = h.pf + mul_nonneg(h.pv, s) - t.S, t.N1 = h.pv - div_pos(mul_nonneg(h.kv2, s), t.S);
+  return t;
+}
+Interval slope(const Terms& t) { return div_pos(t.N1, t.W) - div_pos(mul_nonneg(t.N, t.s), t.W3); }
+struct PointJet {
+  Interval g, d1;
+};
+PointJet point_jet(const Half& h, double s) {
+  const Terms t = half_terms(h, iv(s));
+  return {div_pos(t.N, t.W), slope(t)};
+}
+struct BoxJet {
+  Interval d1, d2;
+};
+BoxJet box_jet(const Half& h, const Interval& s) {
+  const Terms t = half_terms(h, s);
+  const Interval N2 = -div_pos(h.kfkv2, mul_nonneg(mul_nonneg(t.S, t.S), t.S));
+  const Interval d2 = div_pos(N2, t.W) - div_pos(mul_nonneg(mul_nonneg(t.N1, s), iv(2)), t.W3) +
+                      div_pos(t.N * (iv(2) * t.s2 - iv(1)), mul_nonneg(t.W3, t.W2));
+  return {slope(t), d2};
 }
 
 // Step (a) in doubles: G and G' over G'' at s (the same formulas, rounded to nearest).
@@ -235,6 +260,16 @@ double half_argmax(const HalfD& h) {
   return s;
 }
 
+// An upper bound of b·t + ½c·t² over t ∈ [0, w] (rounded up): 0 when b <= 0 and c <= 0; for
+// c < 0 both b·w (the quadratic term is <= 0) and b²/(2|c|) (the parabola's vertex value); for
+// c >= 0, b·w + ½c·w² (each term at t = w is its largest, b > 0 or not: max with 0 at t = 0).
+double quadratic_rise(double b, double c, double w) {
+  if (!(std::isfinite(b) && std::isfinite(c))) return kInf;  // (no bound: the mean value form's stands)
+  if (b <= 0 && c <= 0) return 0;
+  if (c < 0) return std::min(mul(b, w, +1), quot(mul(b, b, +1), mul(2, -c, -1), +1));
+  return std::max(0.0, add(mul(b, w, +1), mul(mul(0.5, c, +1), mul(w, w, +1), +1), +1));
+}
+
 struct EllipseSd {
   Interval sd;
   Foot foot;
@@ -261,14 +296,15 @@ EllipseSd ellipse_sd(const Section& E, const Interval& rho, double z0) {
   };
   const auto push = [&](int k, double s0, double s1) {  // step (c) on [s0, s1]
     const double s = star[k], e = s >= s0 && s <= s1 ? s : s < s0 ? s0 : s1;
-    const Jet at = half_jet(halves[k], iv(e)), over = half_jet(halves[k], Interval{s0, s1});
+    const PointJet at = point_jet(halves[k], e);
+    const BoxJet over = box_jet(halves[k], Interval{s0, s1});
     note(k, e, at.g);
     const Interval T{sub(s0, e, -1), sub(s1, e, +1)};
-    const double t = std::max(-T.lo, T.hi), T2 = mul(t, t, +1);
-    const double taylor = (at.g + at.d1 * T + iv(0.5) * over.d2 * Interval{0, T2}).hi, mean_value = (at.g + over.d1 * T).hi;
+    const double rise = std::max(quadratic_rise(at.d1.hi, over.d2.hi, T.hi), quadratic_rise(-at.d1.lo, over.d2.hi, -T.lo));
+    const double taylor = add(at.g.hi, rise, +1), mean_value = (at.g + over.d1 * T).hi;
     boxes.push_back({k, s0, s1, std::min(taylor, mean_value), at.g.hi});
   };
-  constexpr double kW = 1.0 / 16;
+  constexpr double kW = 1.0 / 4;
   for (int k = 0; k < 2; ++k) {
     const double s = star[k], a = std::max(0.0, s - kW), b = std::min(1.0, s + kW);
     if (a > 0) push(k, 0, a);
