@@ -179,9 +179,11 @@ Foot section_foot(const Section& T, const Vec2& p) {
 // (1/W)'' = (2s² − 1)/W⁵).
 // On the spheroid's axis with the centre inside (a ring of nearest points in 3D) the maximiser is
 // an end of a half: no continuum in the meridian plane.
-// Cost: the target is a 2⁻⁴⁶ relative gap (or 2⁻⁵² of the scale at a contact); 4–10 boxes measured
-// (docs/benchmarks.md "sphe16"); at most kMaxEllipseBoxes (a near-flat maximum of a near-spherical
-// spheroid: the caller then intersects with EPA).
+// Cost: the target is a 2⁻⁴⁶ relative gap (or 2⁻⁵² of the scale at a contact, or G's own rounding
+// at the top box's expansion point); measured over 20,000 random spheroids and points: 4–10 boxes
+// for 86 %, mean 7.8, 99th percentile 22, worst 84 (deep inside, where G is flat); each box one G,
+// G' at a point and one G', G'' over the box (docs/benchmarks.md "Ball pairs against spheroids");
+// at most kMaxEllipseBoxes (the caller then intersects with EPA).
 constexpr int kMaxEllipseBoxes = 2000;
 
 struct Half {

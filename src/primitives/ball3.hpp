@@ -26,7 +26,7 @@ struct BallSd {
 /// The closed form when P or Q is a ball (Support3 Points with one point ⊕ radius >= 0, or an
 /// ellipsoid with equal axes ⊕ radius) and the other a cone, cylinder or spheroid (⊕ radius >= 0);
 /// else nullopt (the caller goes on to EPA). Cost O(1); a spheroid: a branch and bound of
-/// 100–180 boxes (at most 2,000, then the bracket may miss the target: the caller checks).
+/// mean ~8 boxes (at most 2,000, then the bracket may miss the target: the caller checks).
 std::optional<BallSd> ball_signed_distance(const Support3& P, const Support3& Q, const Eigen::Matrix3d& R, const Vec3& t);
 
 /// Private (tests, benchmarks): while false, ball_signed_distance declines every pair, so EPA
