@@ -48,6 +48,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <vector>
 
 namespace pendepth::primitives {
@@ -186,59 +187,60 @@ Foot section_foot(const Section& T, const Vec2& p) {
 // at most kMaxEllipseBoxes (the caller then intersects with EPA).
 constexpr int kMaxEllipseBoxes = 2000;
 
+// One half's terms, in doubles for step (a) and in outward intervals for (b), (c) — the same
+// formulas (header): Num = double (rounded to nearest) or Interval (the products with a factor
+// >= 0 and the quotients by one > 0 by directed.hpp's mul_nonneg and div_pos; each result an
+// enclosure over the interval s ⊆ [0, 1]).
+double mul_nonneg(double a, double b) { return a * b; }
+double div_pos(double a, double b) { return a / b; }
+double root_of(double x) { return std::sqrt(x); }
+Interval root_of(const Interval& x) { return sqrt(x); }
+template <class Num>
+Num lift(double x) {
+  if constexpr (std::is_same_v<Num, double>) return x;
+  else return iv(x);
+}
+template <class Num>
 struct Half {
-  Interval pf, pv;  // (both >= 0)
-  double kf, kv;
-  Interval kf2, kv2, kfkv2;  // k_f², k_v², k_f² k_v²
-  Half(const Interval& f, const Interval& v, double a, double c) : pf(f), pv(v), kf(a), kv(c) {
-    kf2 = iv(a) * iv(a), kv2 = iv(c) * iv(c), kfkv2 = kf2 * kv2;
+  Num pf, pv;  // (both >= 0)
+  Num kf2, kv2, kfkv2;  // k_f², k_v², k_f² k_v²
+  Half(const Num& f, const Num& v, double kf, double kv) : pf(f), pv(v) {
+    kf2 = lift<Num>(kf) * lift<Num>(kf), kv2 = lift<Num>(kv) * lift<Num>(kv), kfkv2 = kf2 * kv2;
   }
 };
-// G, G' at a point and G', G'' over a box, from the shared terms at s (outward enclosures over
-// the interval s ⊆ [0, 1]; the products with a factor >= 0 and the quotients by one > 0 by
-// directed.hpp's mul_nonneg and div_pos).
+template <class Num>
 struct Terms {
-  Interval s, s2, S, W2, W, W3, N, N1;
+  Num s, s2, S, W2, W, W3, N, N1;
 };
-Terms half_terms(const Half& h, const Interval& s) {
-  Terms t;
-  t.s = s, t.s2 = mul_nonneg(s, s), t.S = sqrt(h.kf2 + mul_nonneg(h.kv2, t.s2));
-  t.W2 = iv(1) + t.s2, t.W = sqrt(t.W2), t.W3 = mul_nonneg(t.W2, t.W);
+template <class Num>
+Terms<Num> half_terms(const Half<Num>& h, const Num& s) {
+  Terms<Num> t;
+  t.s = s, t.s2 = mul_nonneg(s, s), t.S = root_of(h.kf2 + mul_nonneg(h.kv2, t.s2));
+  t.W2 = lift<Num>(1) + t.s2, t.W = root_of(t.W2), t.W3 = mul_nonneg(t.W2, t.W);
   t.N = h.pf + mul_nonneg(h.pv, s) - t.S, t.N1 = h.pv - div_pos(mul_nonneg(h.kv2, s), t.S);
   return t;
 }
-Interval slope(const Terms& t) { return div_pos(t.N1, t.W) - div_pos(mul_nonneg(t.N, t.s), t.W3); }
-struct PointJet {
-  Interval g, d1;
-};
-PointJet point_jet(const Half& h, double s) {
-  const Terms t = half_terms(h, iv(s));
-  return {div_pos(t.N, t.W), slope(t)};
+template <class Num>
+Num value(const Terms<Num>& t) {
+  return div_pos(t.N, t.W);
 }
-struct BoxJet {
-  Interval d1, d2;
-};
-BoxJet box_jet(const Half& h, const Interval& s) {
-  const Terms t = half_terms(h, s);
-  const Interval N2 = -div_pos(h.kfkv2, mul_nonneg(mul_nonneg(t.S, t.S), t.S));
-  const Interval d2 = div_pos(N2, t.W) - div_pos(mul_nonneg(mul_nonneg(t.N1, s), iv(2)), t.W3) +
-                      div_pos(t.N * (iv(2) * t.s2 - iv(1)), mul_nonneg(t.W3, t.W2));
-  return {slope(t), d2};
+template <class Num>
+Num slope(const Terms<Num>& t) {
+  return div_pos(t.N1, t.W) - div_pos(mul_nonneg(t.N, t.s), t.W3);
+}
+template <class Num>
+Num curvature(const Half<Num>& h, const Terms<Num>& t) {
+  const Num N2 = -div_pos(h.kfkv2, mul_nonneg(mul_nonneg(t.S, t.S), t.S));
+  return div_pos(N2, t.W) - div_pos(mul_nonneg(mul_nonneg(t.N1, t.s), lift<Num>(2)), t.W3) +
+         div_pos(t.N * (lift<Num>(2) * t.s2 - lift<Num>(1)), mul_nonneg(t.W3, t.W2));
 }
 
-// Step (a) in doubles: G and G' over G'' at s (the same formulas, rounded to nearest).
+// Step (a) in doubles: G, G', G'' at s.
 struct HalfD {
-  double pf, pv, kf, kv;
-  double g(double s) const { return (pf + pv * s - std::sqrt(kf * kf + kv * kv * s * s)) / std::sqrt(1 + s * s); }
-  double d1(double s) const {
-    const double S = std::sqrt(kf * kf + kv * kv * s * s), W2 = 1 + s * s, W = std::sqrt(W2);
-    return (pv - kv * kv * s / S) / W - (pf + pv * s - S) * s / (W2 * W);
-  }
-  double d2(double s) const {
-    const double S = std::sqrt(kf * kf + kv * kv * s * s), W2 = 1 + s * s, W = std::sqrt(W2), W3 = W2 * W;
-    const double N = pf + pv * s - S, N1 = pv - kv * kv * s / S, N2 = -kf * kf * kv * kv / (S * S * S);
-    return N2 / W - 2 * N1 * s / W3 + N * (2 * s * s - 1) / (W3 * W2);
-  }
+  Half<double> h;
+  double g(double s) const { return value(half_terms(h, s)); }
+  double d1(double s) const { return slope(half_terms(h, s)); }
+  double d2(double s) const { return curvature(h, half_terms(h, s)); }
 };
 double half_argmax(const HalfD& h) {
   constexpr int kGrid = 8;
@@ -278,11 +280,12 @@ struct EllipseSd {
 };
 EllipseSd ellipse_sd(const Section& E, const Interval& rho, double z0) {
   const double z = std::abs(z0);
-  const std::array<Half, 2> halves{Half{rho, iv(z), E.a, E.c}, Half{iv(z), rho, E.c, E.a}};
+  const std::array<Half<Interval>, 2> halves{Half<Interval>{rho, iv(z), E.a, E.c}, Half<Interval>{iv(z), rho, E.c, E.a}};
   const double rho_mid = rho.lo + (rho.hi - rho.lo) / 2;
   const bool seeded = ellipse_seed >= 0 && ellipse_seed <= 1;
-  const std::array<double, 2> star = seeded ? std::array<double, 2>{ellipse_seed, ellipse_seed}
-                                            : std::array<double, 2>{half_argmax({rho_mid, z, E.a, E.c}), half_argmax({z, rho_mid, E.c, E.a})};
+  const std::array<double, 2> star =
+      seeded ? std::array<double, 2>{ellipse_seed, ellipse_seed}
+             : std::array<double, 2>{half_argmax({Half<double>{rho_mid, z, E.a, E.c}}), half_argmax({Half<double>{z, rho_mid, E.c, E.a}})};
   struct Box {
     int half;
     double s0, s1, up, at;  // at: G(e)'s upper end
@@ -298,13 +301,13 @@ EllipseSd ellipse_sd(const Section& E, const Interval& rho, double z0) {
   };
   const auto push = [&](int k, double s0, double s1) {  // step (c) on [s0, s1]
     const double s = star[k], e = s >= s0 && s <= s1 ? s : s < s0 ? s0 : s1;
-    const PointJet at = point_jet(halves[k], e);
-    const BoxJet over = box_jet(halves[k], Interval{s0, s1});
-    note(k, e, at.g);
+    const Terms<Interval> at = half_terms(halves[k], iv(e)), over = half_terms(halves[k], Interval{s0, s1});
+    const Interval g = value(at), d1 = slope(at), box_d1 = slope(over), box_d2 = curvature(halves[k], over);
+    note(k, e, g);
     const Interval T{sub(s0, e, -1), sub(s1, e, +1)};
-    const double rise = std::max(quadratic_rise(at.d1.hi, over.d2.hi, T.hi), quadratic_rise(-at.d1.lo, over.d2.hi, -T.lo));
-    const double taylor = add(at.g.hi, rise, +1), mean_value = (at.g + over.d1 * T).hi;
-    boxes.push_back({k, s0, s1, std::min(taylor, mean_value), at.g.hi});
+    const double rise = std::max(quadratic_rise(d1.hi, box_d2.hi, T.hi), quadratic_rise(-d1.lo, box_d2.hi, -T.lo));
+    const double taylor = add(g.hi, rise, +1), mean_value = (g + box_d1 * T).hi;
+    boxes.push_back({k, s0, s1, std::min(taylor, mean_value), g.hi});
   };
   constexpr double kW = 1.0 / 4;
   for (int k = 0; k < 2; ++k) {
