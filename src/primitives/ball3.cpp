@@ -163,12 +163,13 @@ Foot section_foot(const Section& T, const Vec2& p) {
 //    [s* + w, 1], w = 1/4, the empty ones left out); on S with an expansion point e ∈ S
 //    (s* when in S, else S's end nearest s*) and T = S − e, for every s ∈ S Taylor's theorem with
 //    the Lagrange remainder gives G(s) = G(e) + G'(e)(s − e) + ½G''(ξ)(s − e)², ξ between e and s
-//    (G is C² on [0, 1]: S > 0, W > 0 below), so G(S) ⊆ G(e) + G'(e)·T + ½G''(S)·T² (T² ⊆
-//    [0, max|T|²]), and the mean value theorem gives G(S) ⊆ G(e) + G'(S)·T; the box's upper end
-//    is the lesser of the two upper ends, G'(S), G''(S) naive interval enclosures. Near the
-//    maximiser G'(e) ~ 0 and G''(S) < 0 (a non-degenerate maximum), so the box [s* ± w] closes at
-//    once: its upper end is G(e) + |G'(e)|·w + (a non-positive term); away from it G falls and a
-//    few splits suffice. Boxes whose upper end falls below the lower bound cannot hold the
+//    (G is C² on [0, 1]: S > 0, W > 0 below), so on each side of e, with t = |s − e| ∈ [0, w_±],
+//    b = G'(e)'s upper (right) or minus its lower (left) end and c = G''(S)'s upper end,
+//    G(s) <= G(e) + b·t + ½c·t² <= G(e) + quadratic_rise(b, c, w_±) (proved at that function);
+//    and the mean value theorem gives G(S) ⊆ G(e) + G'(S)·T; the box's upper end is the lesser of
+//    the two, G'(S), G''(S) naive interval enclosures. Near the maximiser G'(e) ~ 0 and G''(S) < 0
+//    (a non-degenerate maximum), so the box [s* ± w] closes at once: its upper end is G(e) +
+//    min(|G'(e)|·w, G'(e)²/2|c|); away from it G falls and a few splits suffice. Boxes whose upper end falls below the lower bound cannot hold the
 //    maximum and are dropped; until the gap meets the target, the box of the largest upper end
 //    is halved (each half keeps an expansion point by the rule above); the upper bound is the
 //    largest upper end of the kept boxes (together they cover both halves).
