@@ -26,11 +26,16 @@ struct BallSd {
 /// The closed form when P or Q is a ball (Support3 Points with one point ⊕ radius >= 0, or an
 /// ellipsoid with equal axes ⊕ radius) and the other a cone, cylinder or spheroid (⊕ radius >= 0);
 /// else nullopt (the caller goes on to EPA). Cost O(1); a spheroid: a branch and bound of
-/// 100–180 boxes (at most 2,000, then the bracket may miss the target: the caller checks).
+/// mean ~8 boxes (at most 2,000, then the bracket may miss the target: the caller checks).
 std::optional<BallSd> ball_signed_distance(const Support3& P, const Support3& Q, const Eigen::Matrix3d& R, const Vec3& t);
 
 /// Private (tests, benchmarks): while false, ball_signed_distance declines every pair, so EPA
 /// answers (the reference the closed form is checked against). Set only while no query runs.
 inline bool ball_enabled = true;
+
+/// Private (tests): when in [0, 1], the spheroid's maximiser in doubles is not searched and this s
+/// stands for it in both halves (ball3.cpp step (a)): a wrong maximiser costs boxes, never the
+/// bracket's validity, and the tests check that. Set only while no query runs.
+inline double ellipse_seed = -1;
 
 }  // namespace pendepth::primitives

@@ -800,6 +800,59 @@ TEST(Curved, BallPairsAgainstHighPrecisionOracleAtRandomPlacements) {
   EXPECT_GT(overlapping, 200);
   EXPECT_GT(apart, 200);
 }
+TEST(Curved, SpheroidOffAxisBallsAgainstHighPrecisionOracle) {
+  // The spheroid's maximiser found in doubles, then certified (ball3.cpp "The spheroid's meridian
+  // ellipse"): random off-axis centres around oblate, prolate, flat (C/A down to 0.02), needle-like
+  // and near-spherical (|C/A − 1| = 1e-3) spheroids — deep inside, near the surface (±1e-9 to ±0.1
+  // of the size along the normal), apart — spheres and points, either role. P at the identity and
+  // Q translated only: the relative pose is exact, the oracle one 100-digit value. Then the same
+  // cases with the maximiser replaced by a wrong one (s = 0, 1/2, 1 in both halves): only the
+  // certified boxes then stand between a wrong answer and the bracket.
+  struct Case {
+    double A, C, r;
+    Vec3 c;
+    Big ref;
+  };
+  std::vector<Case> cases;
+  std::mt19937_64 rng(20261128);
+  std::uniform_real_distribution<double> unit(0.0, 1.0), off(-1.0, 1.0);
+  int inside = 0, outside = 0, near_surface = 0;
+  for (int it = 0; it < 300; ++it) {
+    const double A = 0.05 + unit(rng);
+    const double C = it % 5 == 0 ? A * (it % 2 ? 1 + 1e-3 : 1 - 1e-3) : A * std::exp(std::log(0.02) + unit(rng) * 2 * std::log(50.0));
+    const double r = it % 4 == 0 ? 0.0 : 0.3 * A * unit(rng);
+    Vec3 c;
+    if (it % 2 == 0) {  // a surface point (θ off the poles) moved along its normal
+      const double th = 0.05 + unit(rng) * (kPi - 0.1), ph = unit(rng) * 2 * kPi;
+      const Vec3 y(A * std::sin(th) * std::cos(ph), A * std::sin(th) * std::sin(ph), C * std::cos(th));
+      const Vec3 n = Vec3(y[0] / (A * A), y[1] / (A * A), y[2] / (C * C)).normalized();
+      const double d = std::array<double, 6>{1e-9, -1e-9, 1e-4, -1e-4, 0.1, -0.1}[it / 2 % 6] * std::max(A, C);
+      c = y + (d + r) * n;
+      ++near_surface;
+    } else {  // anywhere in the box around it, off the axis
+      c = Vec3(off(rng) * 1.5 * A, off(rng) * 1.5 * A, off(rng) * 1.5 * C);
+    }
+    ASSERT_GT(std::hypot(c[0], c[1]), 0) << it;
+    cases.push_back({A, C, r, c, oracle_spheroid_sd(A, C, c) - Big(r)});
+    (cases.back().ref < 0 ? inside : outside) += 1;
+  }
+  EXPECT_GT(inside, 90);
+  EXPECT_GT(outside, 90);
+  EXPECT_EQ(near_surface, 150);
+  for (const double seed : {-1.0, 0.0, 0.5, 1.0}) {
+    primitives::ellipse_seed = seed;
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+      const auto& [A, C, r, c, ref] = cases[i];
+      const Shape3 body = Shape3::ellipsoid(A, A, C), ball = r == 0 ? Shape3::point(Vec3::Zero()) : Shape3::sphere(r);
+      const std::string what = "case " + std::to_string(i) + " seed " + std::to_string(seed) + " spheroid(" + std::to_string(A) + ", " +
+                               std::to_string(C) + ")";
+      const double scale = 1 + A + C + c.norm();
+      expect_certified(Pair3(body, ball).signed_distance(Pose3(), Pose3(c)), ref, scale, what);
+      expect_certified(Pair3(ball, body).signed_distance(Pose3(), Pose3(Vec3(-c))), ref, scale, what + " swapped");
+    }
+  }
+  primitives::ellipse_seed = -1;
+}
 
 TEST(Curved, BallPairsInsideTheNestedTessellationsAndTheEpaBracket) {
   // Random poses of both shapes (the cone's axis anywhere in the world): the closed form must meet
