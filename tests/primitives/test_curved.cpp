@@ -14,10 +14,14 @@
 
 #include "primitives/ball3.hpp"
 #include "primitives/coaxial3.hpp"
+#include "primitives/directed.hpp"
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -1100,3 +1104,21 @@ TEST(Curved, NearSphericalEllipsoidClosesPastSixHundredSupports) {
 
 }  // namespace
 }  // namespace pendepth
+
+// directed.hpp's inline next_dn / next_up (bit steps) against std::nextafter: every special
+// value (±0, ±denorm_min, ±min normal, ±max, ±∞, NaN) and 10⁶ random bit patterns.
+TEST(Curved, DirectedStepsEqualNextafter) {
+  namespace d = pendepth::primitives::directed;
+  using L = std::numeric_limits<double>;
+  auto same = [](double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b) || (a != a && b != b); };
+  std::vector<double> xs = {0.0, -0.0, L::denorm_min(), -L::denorm_min(), L::min(), -L::min(), L::max(), -L::max(),
+                            L::infinity(), -L::infinity(), L::quiet_NaN(), 1.0, -1.0, 0x1p-1022 - 0x1p-1074};
+  std::mt19937_64 rng(20261128);
+  for (int i = 0; i < 1000000; ++i) xs.push_back(std::bit_cast<double>(rng()));
+  int bad = 0;
+  for (double x : xs) {
+    if (!same(d::next_dn(x), std::nextafter(x, -L::infinity()))) ++bad;
+    if (!same(d::next_up(x), std::nextafter(x, L::infinity()))) ++bad;
+  }
+  EXPECT_EQ(bad, 0);
+}
