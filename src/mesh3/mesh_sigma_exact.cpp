@@ -78,9 +78,11 @@
 // run: those through unsettled triangles) and half a minute, ~8 s since a covering interval
 // certainly holding a line's segment ends the line ("… a covering interval holding the segment").
 // Work limit (max_work, the front door's kExactSigmaMaxWork): a deterministic count of the setup's
-// candidate facets and of the line stage's line–sum tests; past it the query gives up (nullopt)
-// having decided nothing, so a limited run either equals the unlimited one or gives up
-// (tests/mesh3/test_mesh_sigma_exact.cpp, WorkLimitAnswersOrGivesUp).
+// candidate facets, of the line stage's line–sum tests done up to each line's early exit and of
+// its exact covering intervals, charged as the work is done; past it the query gives up (nullopt)
+// having decided nothing, so a limited run either equals the unlimited one or gives up, and
+// answers exactly from its own count on (tests/mesh3/test_mesh_sigma_exact.cpp,
+// WorkLimitAnswersOrGivesUp).
 #include "mesh3/mesh_sigma_exact.hpp"
 
 #include "convex3/minkowski_facets.hpp"
