@@ -21,7 +21,8 @@ namespace pendepth::mesh3 {
 /// done"): ~1.3 µs CPU per unit (±25 %), so the limit is ~1 s and giving up costs about that.
 /// Combs against an L block, CGAL's cross and star spend 3 000–9 000 units (3–10 ms); CGAL's
 /// tripod against itself 28 000–1.4 million over 9 poses (0.03–1.8 s), 8 of them within the
-/// limit; a torus 8×4 pair 0.54–16 million over 5 poses (1–15 s), 1 within. Replaces a limit of
+/// limit; a torus 8×4 pair 0.52–23 million over the 8 poses of the bench that reach it (0.7–32 s),
+/// 3 within; a torus 16×8 × 8×4 pair 2.6 million on its first (6 s). Replaces a limit of
 /// 250 000 units that charged every covering sum of a line before the line's early exits (16
 /// million on the torus pair's pose 0, whose exact σ takes 9 s) and let 5 tripod poses in.
 inline constexpr std::size_t kExactSigmaMaxWork = 750000;
