@@ -270,7 +270,7 @@ void BM_MeshMinimumBoundsOnly(benchmark::State& st) {
 // The exact σ alone (mesh3::exact_minimum, no work limit) on the poses among the first 16 whose
 // certified bounds do not meet (the ones minimum() sends to it). Args: mesh case, tier (0 the
 // filtered tier, 1 everything exact: a mesh3::SigmaExactUnfiltered guard — the reference).
-// Counters: queries, mean candidate facets in range.
+// Counters: queries, mean candidate facets in range, mean work (kExactSigmaMaxWork's units).
 void BM_MeshSigmaExact(benchmark::State& st) {
   if (static_cast<std::size_t>(st.range(0)) >= mesh_cases().size()) {
     st.SkipWithError("no such mesh case (CGAL sample meshes not found)");
@@ -291,17 +291,19 @@ void BM_MeshSigmaExact(benchmark::State& st) {
   std::optional<pendepth::mesh3::SigmaExactUnfiltered> unfiltered;
   if (st.range(1) == 1) unfiltered.emplace();
   std::size_t i = 0;
-  double facets = 0;
+  double facets = 0, work = 0;
   for (auto _ : st) {
     if (q.empty()) continue;
     const auto& [k, upper] = q[i % q.size()];
     const auto r = pendepth::mesh3::exact_minimum(m, pendepth::Pose3(), p.poses[k], upper, SIZE_MAX);
     facets += r ? static_cast<double>(r->candidates) : 0;
+    work += static_cast<double>(pendepth::mesh3::last_exact_work.units);
     ++i;
   }
   st.SetLabel(mesh_cases()[static_cast<std::size_t>(st.range(0))].name + (st.range(1) ? " exact" : " filtered"));
   st.counters["queries"] = static_cast<double>(q.size());
   st.counters["candidates"] = i ? facets / static_cast<double>(i) : 0;
+  st.counters["work"] = i ? work / static_cast<double>(i) : 0;  // kExactSigmaMaxWork's units
 }
 
 // The hulls of both meshes (what users do today) against the exact σ_d.

@@ -78,9 +78,11 @@
 // run: those through unsettled triangles) and half a minute, ~8 s since a covering interval
 // certainly holding a line's segment ends the line ("… a covering interval holding the segment").
 // Work limit (max_work, the front door's kExactSigmaMaxWork): a deterministic count of the setup's
-// candidate facets and of the line stage's line–sum tests; past it the query gives up (nullopt)
-// having decided nothing, so a limited run either equals the unlimited one or gives up
-// (tests/mesh3/test_mesh_sigma_exact.cpp, WorkLimitAnswersOrGivesUp).
+// candidate facets, of the line stage's line–sum tests done up to each line's early exit and of
+// its exact covering intervals, charged as the work is done; past it the query gives up (nullopt)
+// having decided nothing, so a limited run either equals the unlimited one or gives up, and
+// answers exactly from its own count on (tests/mesh3/test_mesh_sigma_exact.cpp,
+// WorkLimitAnswersOrGivesUp).
 #include "mesh3/mesh_sigma_exact.hpp"
 
 #include "convex3/minkowski_facets.hpp"
@@ -584,6 +586,13 @@ bool cover_misses(const Ctx& c, const Sum& s, const LineI& L, std::size_t gp, do
   return sp == Span::Empty || (sp == Span::Range && (hi.sup() <= a_inf || lo.inf() >= b_sup));
 }
 
+// The work of one line in the filtered tier, counted as it is done (exact_minimum's work count):
+// `tests` the covering sums looked at (each an O(f̄) interval test, before any early exit),
+// `exact` the covering sums' exact intervals computed (offer_on_line).
+struct LineWork {
+  std::size_t tests = 0, exact = 0;
+};
+
 // The exact line stage (main loop) on the enclosures: true when it certainly offers nothing —
 // L ∩ S_k certainly empty, or every candidate point (a superset of the exact path's: the foot
 // of 0 clamped to [a, b], a, b, every covering interval's ends) certainly covered by an open
@@ -591,13 +600,14 @@ bool cover_misses(const Ctx& c, const Sum& s, const LineI& L, std::size_t gp, do
 // interval certainly holds [a, b] strictly. False whenever a sign or an order is uncertain: the
 // exact path decides.
 bool line_no_offer(const Ctx& c, const LineI& L, const Sum& sk, std::size_t gp, const std::vector<std::size_t>& cover,
-                   const Best& best, std::vector<std::pair<I, I>>& ivs) {
+                   const Best& best, std::vector<std::pair<I, I>>& ivs, LineWork& work) {
   if (!(L.u2.inf() > 0)) return false;
   I a, b;
   const Span sp = line_interval_i(c, sk, L, false, a, b, gp);
   if (sp != Span::Range) return sp == Span::Empty;
   ivs.clear();
   for (std::size_t l : cover) {
+    ++work.tests;
     if (cover_misses(c, c.sums[l], L, gp, a.inf(), b.sup())) continue;
     I lo, hi;
     const Span sl = line_interval_i(c, c.sums[l], L, true, lo, hi, gp);
@@ -743,9 +753,10 @@ struct LineCandidate {
 // the exact intervals) that exit makes the query 4–5× faster (docs/benchmarks.md "Exact mesh σ:
 // a covering interval holding the segment").
 void offer_on_line(const Ctx& c, const LineSegment& s, const std::vector<std::size_t>& cover, Best& best,
-                   std::vector<CoverSpan>& spans) {
+                   std::vector<CoverSpan>& spans, LineWork& work) {
   auto value = [&](LazyEnd& x, CoverSpan* span) -> const FT& {
     if (!x.e) {
+      ++work.exact;
       std::optional<FT> lo, hi;
       if (!line_interval(c, c.sums[span->sum], s.L, true, lo, hi, s.L.g) || !lo || !hi)
         throw std::logic_error("offer_on_line: an enclosed interval is empty exactly");
@@ -765,11 +776,13 @@ void offer_on_line(const Ctx& c, const LineSegment& s, const std::vector<std::si
   // empty enclosure) dropped, the others' order against a and b decided as the reference does.
   spans.clear();
   for (std::size_t l : cover) {
+    ++work.tests;
     if (open_misses(c, c.sums[l], s.L.x0, s.L.u, a.i.inf(), b.i.sup())) continue;
     CoverSpan sp{l, {}, {}};
     const Span r = line_interval_i(c, c.sums[l], s.L, true, sp.lo.i, sp.hi.i, s.L.g);
     if (r == Span::Empty) continue;
     if (r == Span::Unknown) {
+      ++work.exact;
       std::optional<FT> lo, hi;
       if (!line_interval(c, c.sums[l], s.L, true, lo, hi, s.L.g) || !lo || !hi) continue;
       sp.lo = {iv(*lo), std::move(lo)}, sp.hi = {iv(*hi), std::move(hi)};
@@ -813,7 +826,7 @@ void offer_on_line(const Ctx& c, const LineSegment& s, const std::vector<std::si
 // settled it) and through the reference on a copy of the best; counts the lines whose outcomes
 // differ and those with exact ties among the ends of [a, b] and of the covering intervals.
 void check_line(const Ctx& c, const LineSegment& s, const std::vector<std::size_t>& cover, Best& best,
-                std::vector<CoverSpan>& spans, bool no_offer) {
+                std::vector<CoverSpan>& spans, bool no_offer, LineWork& work) {
   Best ref = best;
   offer_on_line_exact(c, s, cover, ref);
   if (no_offer) {
@@ -829,7 +842,7 @@ void check_line(const Ctx& c, const LineSegment& s, const std::vector<std::size_
   }
   std::sort(ends.begin(), ends.end());
   SigmaLineCheck::ties += std::adjacent_find(ends.begin(), ends.end()) != ends.end();
-  offer_on_line(c, s, cover, best, spans);
+  offer_on_line(c, s, cover, best, spans, work);
   ++SigmaLineCheck::lines;
   const bool same = ref.offers == best.offers &&
                     (!ref.d2 || (*ref.d2 == *best.d2 && ref.plane == best.plane && ref.x.x == best.x.x &&
@@ -1073,23 +1086,32 @@ CoverResult union_cover(const std::vector<OpenConvex>& sets, const std::vector<V
 
 std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, const Pose3& pose_q, double upper,
                                     std::size_t max_work, bool skip_cover) {
+  SigmaExactWork& stats = last_exact_work;
+  stats = {};
   if (!(upper >= 0) || !std::isfinite(upper)) return std::nullopt;
   Ctx c{m, place(m, pose_p, pose_q), {}, {}, SigmaExactUnfiltered::depth == 0, SigmaExactUnfiltered::planted, {}, {}, 0, {}, {}, {}};
   const convex3::RelativePose rel{c.pl.R, c.pl.tq, c.pl.tp};
   const double reach = upper * (1 + 0x1p-30) + 0x1p-1000;
-  // The work count (mesh_sigma_exact.hpp, kExactSigmaMaxWork): deterministic, never a clock. A
-  // candidate facet of the setup (minkowski_facets, its plane, the repeated-plane test) weighs
-  // kSetupWeight line–sum tests: measured ~18 µs against ~1.7 µs (docs/benchmarks.md "Exact mesh σ:
-  // a work limit"), so that giving up costs about the same time whichever stage reaches the limit.
-  constexpr std::size_t kSetupWeight = 10;
+  // The work count (mesh_sigma_exact.hpp, kExactSigmaMaxWork): deterministic, never a clock, in
+  // units of one line–sum interval test. Charged as done: a candidate facet of the setup
+  // (minkowski_facets, its plane, the repeated-plane test) kSetupWeight; a line past the interval
+  // prunes 1 + the covering sums line_no_offer looked at before it exits; a line of the exact stage
+  // kExactLineWeight (its exact u, x0, S_k's interval) + the covering sums offer_on_line looked
+  // at before its exit + kExactIntervalWeight per exact covering interval computed. Weights fitted
+  // to CPU time per query over the tripod's, the combs', the cross's, the star's and the torus
+  // pair's exact σ: ~1.3 µs per unit, within ±25 % (log sd 0.22) on queries over 20 ms
+  // (docs/benchmarks.md "Exact mesh σ: the work counted as done"), so that giving up costs about
+  // the same time whichever stage reaches the limit.
+  constexpr std::size_t kSetupWeight = 15, kExactLineWeight = 1, kExactIntervalWeight = 20;
   std::size_t work = 0;
-  auto spend = [&](std::size_t units) { return (work += units) <= max_work; };
+  auto spend = [&](std::size_t units) { return (stats.units = work += units) <= max_work; };
   // The sums in range and their planes.
   for (std::size_t i = 0; i < m.P.size(); ++i)
     for (std::size_t j = 0; j < m.Q.size(); ++j) {
       const double bd = box_distance(box_of_sum(m, c.pl, i, j));
       if (bd * (1 - 0x1p-30) > reach) continue;
       const auto cand = convex3::minkowski_facets(m.P[i], m.Q[j], rel, std::nullopt);
+      stats.setup += cand.size();
       if (!spend(kSetupWeight * cand.size())) return std::nullopt;
       const convex3::PolytopeData& P = convex3::data_of(m.P[i]);
       const convex3::PolytopeData& Q = convex3::data_of(m.Q[j]);
@@ -1209,9 +1231,13 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
           const LineI L = interval_line(f, g, fi, gi);
           if (line_far(c, L, sk, sl, bound2)) continue;
           line_done[c.cls[gi]] = fi;
-          if (!spend(1 + cover.size())) return std::nullopt;
-          no_offer = line_no_offer(c, L, sk, gi, cover, best, ivs_i);
+          LineWork w;
+          no_offer = line_no_offer(c, L, sk, gi, cover, best, ivs_i, w);
+          ++stats.lines, stats.tests += w.tests;
+          if (!spend(1 + w.tests)) return std::nullopt;
           if (no_offer && SigmaLineCheck::depth == 0) continue;
+          ++stats.exact_lines;  // its exact u, x0 and S_k's exact interval
+          if (!spend(kExactLineWeight)) return std::nullopt;
         }
         const ExactPlane& ge = exact_plane(c, gi);
         const V3 u = cross(fe.n, ge.n);
@@ -1226,11 +1252,17 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
         if (!line_interval(c, sk, Le, false, a, b, gi)) continue;
         if (!a || !b) continue;  // unreachable: S_k is bounded
         ++lines;
-        if (!spend(1 + cover.size())) return std::nullopt;
         const LineSegment seg{Le, u, x0, l2, u2, *a, *b};
-        if (c.filt && SigmaLineCheck::depth) check_line(c, seg, cover, best, spans, no_offer);
-        else if (c.filt) offer_on_line(c, seg, cover, best, spans);
-        else offer_on_line_exact(c, seg, cover, best);
+        if (!c.filt) {
+          if (!spend(1 + cover.size())) return std::nullopt;
+          offer_on_line_exact(c, seg, cover, best);
+          continue;
+        }
+        LineWork w;
+        if (SigmaLineCheck::depth) check_line(c, seg, cover, best, spans, no_offer, w);
+        else offer_on_line(c, seg, cover, best, spans, w);
+        stats.exact_tests += w.tests, stats.exact_intervals += w.exact;
+        if (!spend(w.tests + kExactIntervalWeight * w.exact)) return std::nullopt;
       }
     }
   }

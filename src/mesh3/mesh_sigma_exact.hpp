@@ -11,18 +11,21 @@
 namespace pendepth::mesh3 {
 
 /// Work limit of the exact path at the front door (minimum()): a deterministic count, never a
-/// clock, so that an answer does not depend on the machine or its load. Work = 10 × the candidate
-/// facets (convex3::minkowski_facets) of the piece pairs whose sum box meets B(0, upper) — the
-/// setup, ~10× a line–sum test per facet — plus, for every line plane(f) ∩ plane(g) that passes
-/// the interval prunes (line_far) and for every line of the exact stage, 1 + the number of
-/// covering sums it is tested against — the line stage, the cost that grows
-/// (mesh_sigma_exact.cpp). Beyond it exact_minimum gives up (nullopt) and minimum() keeps the
-/// certified bounds; giving up costs ~0.45 s here (1.8 µs per unit). Measured (docs/benchmarks.md
-/// "Exact mesh σ: a work limit"): combs against an L block, CGAL's cross and star spend 2 000–6 000
-/// units (3–10 ms); CGAL's tripod against itself 19 000–650 000 over 9 poses (0.1–4 s), 5 of them
-/// within the limit; a torus 8×4 pair 226 000 in its setup alone and ~16 million in all (half a
-/// minute). Replaces a limit of 600 candidate facets, which kept the tripod out.
-inline constexpr std::size_t kExactSigmaMaxWork = 250000;
+/// clock, so that an answer does not depend on the machine or its load. Work, in units of one
+/// line–sum interval test, charged as it is done (mesh_sigma_exact.cpp, exact_minimum): 15 per
+/// candidate facet (convex3::minkowski_facets) of the piece pairs whose sum box meets B(0, upper)
+/// — the setup; per line plane(f) ∩ plane(g) past the interval prunes (line_far), 1 + the covering
+/// sums looked at before line_no_offer exits; per line of the exact stage 1 + the covering sums
+/// looked at before offer_on_line exits (a covering interval holding the segment) + 20 per exact
+/// covering interval computed. Measured (docs/benchmarks.md "Exact mesh σ: the work counted as
+/// done"): ~1.3 µs CPU per unit (±25 %), so the limit is ~1 s and giving up costs about that.
+/// Combs against an L block, CGAL's cross and star spend 3 000–9 000 units (3–10 ms); CGAL's
+/// tripod against itself 28 000–1.4 million over 9 poses (0.03–1.8 s), 8 of them within the
+/// limit; a torus 8×4 pair 0.52–23 million over the 8 poses of the bench that reach it (0.7–32 s),
+/// 3 within; a torus 16×8 × 8×4 pair 2.6 million on its first (6 s). Replaces a limit of
+/// 250 000 units that charged every covering sum of a line before the line's early exits (16
+/// million on the torus pair's pose 0, whose exact σ takes 9 s) and let 5 tripod poses in.
+inline constexpr std::size_t kExactSigmaMaxWork = 750000;
 
 /// σ = dist(0, complement of O) exactly, given a certified upper bound `upper` >= σ (today's
 /// least σ_d): depth = σ rounded to nearest, lower_bound <= σ <= upper_bound adjacent doubles
@@ -74,6 +77,16 @@ struct SigmaLineCheck {
   SigmaLineCheck(const SigmaLineCheck&) = delete;
   SigmaLineCheck& operator=(const SigmaLineCheck&) = delete;
 };
+
+/// Tests and the bench (last_exact_work): the work count of the last exact_minimum on this thread (set when it
+/// returns, also when it gives up): `units` the count compared with max_work; its parts in the
+/// filtered tier — `setup` candidate facets, `lines` lines past the interval prunes and their
+/// `tests` (covering sums looked at), `exact_lines` lines of the exact stage, their
+/// `exact_tests` and `exact_intervals` (covering sums' exact intervals computed).
+struct SigmaExactWork {
+  std::size_t units = 0, setup = 0, lines = 0, tests = 0, exact_lines = 0, exact_tests = 0, exact_intervals = 0;
+};
+inline thread_local SigmaExactWork last_exact_work{};
 
 namespace detail {
 

@@ -247,7 +247,8 @@ TEST(MeshSigmaExact, RotatedCombAndCup) {
 // The work limit (kExactSigmaMaxWork: a count, never a clock): under any limit the exact path
 // either gives the unlimited answer, bit for bit, or gives up; it gives up below one threshold
 // and answers from it on (the count is deterministic and only grows); limit 0 gives up (the setup
-// spends); the front door equals the exact path under the default limit.
+// spends); the threshold is the unlimited run's own count (mesh3::last_exact_work.units: the
+// work is charged as done); the front door equals the exact path under the default limit.
 TEST(MeshSigmaExact, WorkLimitAnswersOrGivesUp) {
   std::mt19937_64 rng(41);
   std::uniform_real_distribution<double> U(-1, 1);
@@ -263,6 +264,12 @@ TEST(MeshSigmaExact, WorkLimitAnswersOrGivesUp) {
     const auto full = mesh3::exact_minimum(m, Pose3(), pq, old.upper_bound, SIZE_MAX);
     ASSERT_TRUE(full.has_value()) << k;
     ++answered;
+    // The count is the work done, deterministic: the run answers from exactly its own count on.
+    const std::size_t units = mesh3::last_exact_work.units;
+    ASSERT_GT(units, 0u) << k;
+    EXPECT_TRUE(mesh3::exact_minimum(m, Pose3(), pq, old.upper_bound, units).has_value()) << k;
+    EXPECT_EQ(mesh3::last_exact_work.units, units) << k;
+    EXPECT_FALSE(mesh3::exact_minimum(m, Pose3(), pq, old.upper_bound, units - 1).has_value()) << k;
     EXPECT_FALSE(mesh3::exact_minimum(m, Pose3(), pq, old.upper_bound, 0).has_value()) << k;
     bool gave_up = true;
     for (std::size_t w = 1; w < (std::size_t{1} << 40); w = w * 3 / 2 + 1) {
