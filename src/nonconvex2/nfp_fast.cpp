@@ -47,6 +47,21 @@
 //   same bound as the dot products; σ_d: a right and b left of the ray, beyond e_d, so the ray
 //   meets X coming from the left), the points of the disk (segment) next to X are in O, hence t.
 //   Otherwise the caller runs the overlap test (t outside O, or two pieces near: no shortcut).
+// inside_by_nearest (σ) — also the shared-vertex wedge: exactly two candidates i and j, i's hi end
+//   exactly j's lo end V, the boundary turning strictly right at V (Impl::wedge, exact at the
+//   export: u = i's direction, w = j's, cross(u, w) < 0), t's projection certainly beyond i's hi
+//   end and before j's lo end (kBeyondHi, kBeforeLo: v = t − V has dot(v, u) > 0 > dot(v, w), so
+//   t ≠ V). Then the nearest point of i and of j is V, so δ = |v| (the nearest piece is a
+//   candidate); every piece through V is at distance ≤ |v| = δ, hence a candidate: near V, ∂O is
+//   i ∪ j alone, two segments leaving V along −u and w, which cut a small disk about V into two
+//   open sectors, each wholly in O or wholly outside cl(O). The points just left of j next to V
+//   are in O (as above), so the sector swept counterclockwise from w to −u lies in O; the other,
+//   the cone C = {α·(−u) + β·w : α, β ≥ 0} (convex: the right turn puts −u and w less than π
+//   apart), lies outside. Every c ≠ 0 in C has dot(v, c) = −α·dot(v, u) + β·dot(v, w) < 0, so v ∉ C
+//   and V + s·v lies in O's sector for small s > 0; those points are in the open disk of radius δ
+//   about t, which meets no point of ∂O, so the disk and t lie in O. (At a convex vertex of O,
+//   cross(u, w) > 0, the same flags put t outside: no link. Pinch vertices, slits, collinear
+//   pieces and zero-length pieces at V give no link or a third candidate.)
 // Range: used only when rmax ∈ [2⁻³⁰⁰, 2³⁰⁰] (no overflow or underflow of M², far below the
 // front door's own band, src/front/scale.hpp); σ and σ_d for at most kFlatMax pieces (beyond, the
 // hierarchy's O(log N) traversal wins over a linear scan); queries with |t| beyond 2³⁰⁰ are
@@ -58,8 +73,8 @@
 // the stored distances; σ_d: the first skips pieces missing the ray's line early, its line test
 // two or four pieces wide likewise — a branch-free version of the whole pass was 17 % slower at
 // 117 pieces and no faster on nesting pieces). σ and σ_d skip the overlap pass when
-// inside_by_candidates proves t ∈ O (about half of σ's overlapping placements in the tests,
-// degenerate ones included).
+// inside_by_candidates (σ: inside_by_nearest) proves t ∈ O (about half of σ's overlapping
+// placements in the tests, degenerate ones included).
 #include <algorithm>
 #include <cmath>
 #ifdef __SSE2__
@@ -106,6 +121,7 @@ void NfpFlat::build(const NoFitPolygon2::Impl& N) {
       }
   slits = N.slits;
   points = N.points;
+  wedge = N.wedge;
   for (const auto& s : slits) see(s[0]), see(s[1]);
   for (const Vec2& p : points) see(p);
   for (const NfpPiece& pc : N.pieces) {

@@ -109,6 +109,7 @@ struct NfpFlat {
   std::vector<double> pinv;                // 1 / |b − a|² per piece (0 for a point)
   std::vector<std::array<Vec2, 2>> slits;   // copies of the export's, next to the edges
   std::vector<Vec2> points;
+  std::vector<std::int32_t> wedge;         // Impl::wedge (reflex vertices between two pieces)
   double rmax = 0;                         // largest |coordinate| stored here
   bool usable = false;                     // sizes and magnitudes inside the filters' range
   // Per piece: its edge ray's origin o = o1 + o2 and direction (a1 + a2) − (b1 + b2) as exact
@@ -154,6 +155,17 @@ struct NfpFlat {
   /// nfp_fast.cpp). False says nothing (the caller runs the overlap test).
   static bool inside_by_candidates(const std::vector<std::uint32_t>& cand) {
     return cand.size() == 1 && (cand[0] & (kInside | kFromO)) == (kInside | kFromO);
+  }
+  /// σ's version: inside_by_candidates, or two candidates meeting at a reflex vertex V of O
+  /// (`wedge`), t's projection certainly beyond the hi end of the one ending at V and before the lo
+  /// end of the one leaving it: t's nearest point on ∂O is V, seen from O's side (proof in
+  /// nfp_fast.cpp). False says nothing.
+  bool inside_by_nearest(const std::vector<std::uint32_t>& cand) const {
+    if (cand.size() != 2) return inside_by_candidates(cand);
+    auto ends_in = [&](std::uint32_t in, std::uint32_t out) {
+      return (in & kBeyondHi) && (out & kBeforeLo) && wedge[in & ~kFlags] == std::int32_t(out & ~kFlags);
+    };
+    return !wedge.empty() && (ends_in(cand[0], cand[1]) || ends_in(cand[1], cand[0]));
   }
   /// Appends to `out`, in increasing order, the indices of every piece whose exact distance to t
   /// can be the minimum (a superset of the exact nearest pieces; usually one), flagged kInside when
@@ -211,6 +223,11 @@ struct NoFitPolygon2::Impl {
   std::vector<std::vector<std::vector<Vec2>>> polys;
   std::vector<std::array<Vec2, 2>> slits;
   std::vector<Vec2> points;
+  // Per piece k: the piece j leaving k's hi end at a reflex vertex of O (nfp_export, nfp_rings.cpp:
+  // k's hi end is exactly j's lo end, j the only piece of positive length leaving it, and the
+  // boundary turns strictly right there), else -1; empty when no piece has one (the convex export).
+  // σ's fast path proves t ∈ O by such a wedge (NfpFlat::inside_by_nearest, nfp_fast.cpp).
+  std::vector<std::int32_t> wedge;
   NfpSize sz;
   nonconvex2::NfpFlat flat;  // the fast path (built last, from pieces and rings)
   Impl(const Polygon& P, const Polygon& Q);

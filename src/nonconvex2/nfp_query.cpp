@@ -263,12 +263,12 @@ struct Job {
 
 namespace {
 
-// t ∈ O for σ's and σ_d's winner searches: on the fast path from the candidates named first
-// (`cand`, NfpFlat::inside_by_candidates) when they prove it, else by the overlap test (exact
+// t ∈ O for σ's and σ_d's winner searches: `proved` when the fast path's candidates named first
+// prove it (NfpFlat::inside_by_candidates, inside_by_nearest), else by the overlap test (exact
 // alone on the exact path).
-bool winner_overlaps(const NoFitPolygon2::Impl& N, const Vec2& t, bool exact_path, bool fast, const std::vector<std::uint32_t>& cand) {
+bool winner_overlaps(const NoFitPolygon2::Impl& N, const Vec2& t, bool exact_path, bool proved) {
   if (N.pieces.empty()) return false;
-  if (fast && NfpFlat::inside_by_candidates(cand)) return true;
+  if (proved) return true;
   return exact_path ? N.overlapping_exact(t) : N.overlapping(t);
 }
 
@@ -280,7 +280,7 @@ bool along_winner(const NoFitPolygon2::Impl& N, const Vec2& t, const Vec2& d, bo
   // (NfpFlat::inside_by_candidates), else the overlap test decides.
   std::vector<std::uint32_t>& cand = scratch();
   if (fast) flat.first_hit_candidates(t, d, cand);
-  if (!winner_overlaps(N, t, exact_path, fast, cand)) return false;
+  if (!winner_overlaps(N, t, exact_path, fast && NfpFlat::inside_by_candidates(cand))) return false;
   const Ray ray = Ray::query(t, d);
   value = std::numeric_limits<double>::infinity();
   if (fast) {
@@ -321,10 +321,11 @@ bool along_winner(const NoFitPolygon2::Impl& N, const Vec2& t, const Vec2& d, bo
 bool min_winner(const NoFitPolygon2::Impl& N, const Vec2& t, bool exact_path, MinBest& best, double& value, Vec2& translation) {
   const NfpFlat& flat = N.flat;
   const bool fast = flat.usable && !exact_path;
-  // As along_winner: a sole nearest candidate with t on O's side proves t ∈ O.
+  // As along_winner: a sole nearest candidate with t on O's side, or two meeting at a reflex
+  // vertex of O that is t's nearest point, proves t ∈ O.
   std::vector<std::uint32_t>& cand = scratch();
   if (fast) flat.nearest_candidates(t, cand);
-  if (!winner_overlaps(N, t, exact_path, fast, cand)) return false;
+  if (!winner_overlaps(N, t, exact_path, fast && flat.inside_by_nearest(cand))) return false;
   value = std::numeric_limits<double>::infinity();
   if (fast) {
     for (std::uint32_t k : cand) best.consider(N, k & ~NfpFlat::kFlags, t, k & NfpFlat::kFlags);

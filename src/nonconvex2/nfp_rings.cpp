@@ -1300,6 +1300,27 @@ void place_holes(Workspace& W, int nv, std::vector<QP>& V) {
   }
 }
 
+// N.wedge: for each piece k of positive length, the piece j of positive length leaving the vertex
+// where k ends (vertex ids: the same exact point) when j is the only one leaving it and the
+// boundary turns strictly right from k to j (exact sign of k's direction × j's, both along their
+// rays' directions: lo to hi, O on the left): a reflex vertex of O between k and j. O(N) and one
+// exact sign (floating filter first) per linked vertex.
+void link_wedges(const Workspace& W, NoFitPolygon2::Impl& N, int nv) {
+  const std::vector<int>& id = W.id;
+  const std::size_t n = N.pieces.size();
+  std::vector<int> leaving(std::size_t(nv), -1);  // the piece leaving vertex v; -2 when several
+  for (std::size_t k = 0; k < n; ++k)
+    if (const int a = id[2 * k]; a != id[2 * k + 1]) leaving[std::size_t(a)] = leaving[std::size_t(a)] == -1 ? int(k) : -2;
+  N.wedge.assign(n, -1);
+  for (std::size_t k = 0; k < n; ++k) {
+    const int b = id[2 * k + 1];
+    if (b == id[2 * k]) continue;
+    const int j = leaving[std::size_t(b)];
+    if (j < 0 || std::size_t(j) == k) continue;
+    if (cross_sign(Dir{&N.pieces[k].E, 1}, Dir{&N.pieces[std::size_t(j)].E, 1}) < 0) N.wedge[k] = j;
+  }
+}
+
 // Steps 3–4: N.polys (each outer ring, then its holes), N.slits and N.points (the zero-length
 // pieces that are no vertex of an edge or slit, in exact (x, y) order), as rounded coordinates.
 void write_output(NoFitPolygon2::Impl& N, Workspace& W) {
@@ -1351,6 +1372,7 @@ bool nfp_export_by(NoFitPolygon2::Impl& N, NfpExportPath path) {
   // Two convex shapes: the pieces are edges of the convex sum, ordered by angle.
   if (path == NfpExportPath::Convex || (path == NfpExportPath::Any && nonconvex2::convex_shape(N.S.P) && nonconvex2::convex_shape(N.S.Q))) {
     if (nfp_export_convex(N)) {
+      N.wedge.clear();  // a convex O has no reflex vertex
       last_path = NfpExportPath::Convex;
       return true;
     }
@@ -1359,6 +1381,7 @@ bool nfp_export_by(NoFitPolygon2::Impl& N, NfpExportPath path) {
   thread_local Workspace W;
   round_ends(W, N);                  // 1. every end rounded to nearest
   const int nv = intern_ends(W);     //    and interned: vertex ids
+  link_wedges(W, N, nv);             //    reflex vertices between two pieces (σ's fast path)
   collect_segs(W, N);                //    pieces of positive length, zero-length points
   sort_vertices(W, nv);              //    vertices by rounded x
   clear_rings(W, nv);
