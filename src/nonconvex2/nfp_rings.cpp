@@ -1300,25 +1300,39 @@ void place_holes(Workspace& W, int nv, std::vector<QP>& V) {
   }
 }
 
-// N.wedge: for each piece k of positive length, the piece j of positive length leaving the vertex
-// where k ends (vertex ids: the same exact point) when j is the only one leaving it and the
-// boundary turns strictly right from k to j (exact sign of k's direction × j's, both along their
-// rays' directions: lo to hi, O on the left): a reflex vertex of O between k and j. O(N) and one
-// exact sign (floating filter first) per linked vertex.
+// N.wedge: the reflex vertices of O where σ's fast path may prove t ∈ O (nfp_fast.cpp). A vertex
+// v (vertex ids: one exact point) is one when at least one piece of positive length arrives at v
+// (its hi end) and one leaves it (its lo end), all arriving ones along one exact direction u, all
+// leaving ones along one direction w (exact signs: cross 0, dot > 0; pieces along their rays'
+// directions, lo to hi, O on the left), and the boundary turns strictly right from u to w
+// (cross(u, w) < 0); other pieces ending at v have length zero (a piece through v inside its
+// extent is no end here: σ's fast path then has a candidate without a wedge end, and no
+// shortcut). Per piece: the wedge vertex at
+// its lo end and at its hi end (both for a zero-length piece there), else -1. O(N) and O(1) exact
+// signs (floating filter first) per piece end.
 void link_wedges(const Workspace& W, NoFitPolygon2::Impl& N, int nv) {
   const std::vector<int>& id = W.id;
   const std::size_t n = N.pieces.size();
-  std::vector<int> leaving(std::size_t(nv), -1);  // the piece leaving vertex v; -2 when several
-  for (std::size_t k = 0; k < n; ++k)
-    if (const int a = id[2 * k]; a != id[2 * k + 1]) leaving[std::size_t(a)] = leaving[std::size_t(a)] == -1 ? int(k) : -2;
-  N.wedge.assign(n, -1);
+  // Per vertex: the first piece arriving and leaving (-1: none yet), and whether it still qualifies.
+  std::vector<std::array<int, 2>> first(std::size_t(nv), {-1, -1});
+  std::vector<char> ok(std::size_t(nv), 1);
+  auto dir = [&](int k) { return Dir{&N.pieces[std::size_t(k)].E, 1}; };
   for (std::size_t k = 0; k < n; ++k) {
-    const int b = id[2 * k + 1];
-    if (b == id[2 * k]) continue;
-    const int j = leaving[std::size_t(b)];
-    if (j < 0 || std::size_t(j) == k) continue;
-    if (cross_sign(Dir{&N.pieces[k].E, 1}, Dir{&N.pieces[std::size_t(j)].E, 1}) < 0) N.wedge[k] = j;
+    const int ends[2] = {id[2 * k], id[2 * k + 1]};
+    if (ends[0] == ends[1]) continue;
+    for (int side = 0; side < 2; ++side) {  // 0: k leaves ends[0]; 1: k arrives at ends[1]
+      const std::size_t v = std::size_t(ends[side]);
+      int& f = first[v][side];
+      if (f < 0) f = int(k);
+      else if (ok[v] && (cross_sign(dir(f), dir(int(k))) != 0 || dot_sign(dir(f), dir(int(k))) <= 0)) ok[v] = 0;
+    }
   }
+  for (std::size_t v = 0; v < std::size_t(nv); ++v)
+    ok[v] = ok[v] && first[v][0] >= 0 && first[v][1] >= 0 && cross_sign(dir(first[v][1]), dir(first[v][0])) < 0;
+  N.wedge.assign(n, {-1, -1});
+  for (std::size_t k = 0; k < n; ++k)
+    for (int side = 0; side < 2; ++side)
+      if (const int v = id[2 * k + side]; ok[std::size_t(v)]) N.wedge[k][side] = v;
 }
 
 // Steps 3–4: N.polys (each outer ring, then its holes), N.slits and N.points (the zero-length

@@ -19,7 +19,10 @@
 // for σ at a cut end (the per-piece table built with the no-fit polygon);
 // NearestCandidateFlagsAgainstExact checks σ's candidate set and its certified flags (projection
 // inside / before lo / beyond hi) against exact arithmetic, and the flags' error bound against
-// rationals (removing it, or shrinking it by 2¹³, fails). Pinned seeds.
+// rationals (removing it, or shrinking it by 2¹³, fails); ReflexWedges places t about every ring
+// vertex (on the bisector to either side, at the vertex, ulps off, scattered near it) so that σ's
+// shared-vertex wedge (NfpFlat::inside_by_nearest) fires, and checks it only ever does for t ∈ O
+// (linking convex vertices too fails it and ExactFits). Pinned seeds.
 #include <pendepth/nfp2.hpp>
 
 #include <gtest/gtest.h>
@@ -264,15 +267,31 @@ void check_wedges(const Polygon& P, const Polygon& Q, std::mt19937_64& rng, cons
   const NoFitPolygon2 nfp(P, Q);
   const NoFitPolygon2::Impl& N = nfp_impl(nfp);
   ASSERT_TRUE(N.flat.usable) << what;
-  for (std::size_t k = 0; k < N.wedge.size(); ++k) {
-    if (N.wedge[k] < 0) continue;
+  // Every wedge vertex: its pieces' rounded ends there meet within ulps; arriving and leaving
+  // rounded directions turn right where the rounding cannot flip the sign.
+  std::vector<std::vector<std::size_t>> at[2];  // per vertex id: pieces leaving (0), arriving (1)
+  for (std::size_t k = 0; k < N.wedge.size(); ++k)
+    for (int side = 0; side < 2; ++side)
+      if (const int v = N.wedge[k][side]; v >= 0) {
+        for (auto& a : at) a.resize(std::max(a.size(), std::size_t(v) + 1));
+        at[side][std::size_t(v)].push_back(k);
+      }
+  for (std::size_t v = 0; v < at[0].size(); ++v) {
+    if (at[0][v].empty()) continue;
     ++links;
-    const auto &pi = N.pieces[k], &pj = N.pieces[std::size_t(N.wedge[k])];
-    const double m = std::max({pi.b.cwiseAbs().maxCoeff(), pj.a.cwiseAbs().maxCoeff(), 1e-300});
-    ASSERT_LE((pi.b - pj.a).cwiseAbs().maxCoeff(), m * 0x1p-48) << what << " wedge " << k << " ends apart";
-    const Vec2 u = pi.b - pi.a, w = pj.b - pj.a;
-    const double cr = u.x() * w.y() - u.y() * w.x(), scale = u.norm() * w.norm();
-    ASSERT_FALSE(cr > scale * 0x1p-40) << what << " wedge " << k << " turns left";
+    const Vec2 V = N.pieces[at[0][v][0]].a;
+    for (int side = 0; side < 2; ++side)
+      for (std::size_t k : at[side][v]) {
+        const Vec2 e = side == 0 ? N.pieces[k].a : N.pieces[k].b;
+        ASSERT_LE((e - V).cwiseAbs().maxCoeff(), std::max(V.cwiseAbs().maxCoeff(), 1e-300) * 0x1p-48) << what << " wedge " << v << " ends apart";
+        if (N.pieces[k].a == N.pieces[k].b) continue;
+        for (std::size_t j : at[1 - side][v]) {
+          if (N.pieces[j].a == N.pieces[j].b) continue;
+          const Vec2 u = (side == 1 ? N.pieces[k] : N.pieces[j]).b - (side == 1 ? N.pieces[k] : N.pieces[j]).a;
+          const Vec2 w = (side == 1 ? N.pieces[j] : N.pieces[k]).b - (side == 1 ? N.pieces[j] : N.pieces[k]).a;
+          ASSERT_FALSE(u.x() * w.y() - u.y() * w.x() > u.norm() * w.norm() * 0x1p-40) << what << " wedge " << v << " turns left";
+        }
+      }
   }
   std::uniform_real_distribution<double> unit(-1, 1);
   const std::vector<Vec2> dirs{{1, 0}, {0, 1}, {-1, -1}};
