@@ -17,8 +17,10 @@
 //   conservative box distances; exact comparisons of squared distances (edge_cut.hpp, the same
 //   candidates as PairDepth2::minimum); equally near pieces go to the lowest index.
 // On the fast path the candidates come first: a sole candidate whose interior holds t's nearest
-// point (the ray's first) with O's side towards t proves t ∈ O (NfpFlat::inside_by_candidates,
-// proof in nfp_fast.cpp) and the overlap test is skipped; otherwise it runs as above.
+// point (the ray's first) with O's side towards t proves t ∈ O (NfpFlat::inside_by_candidates),
+// and so for σ do candidates all meeting at a reflex vertex of O that is t's nearest point
+// (NfpFlat::inside_by_nearest; proofs in nfp_fast.cpp): the overlap test is skipped; otherwise it
+// runs as above.
 // Both ways every piece that can win is compared exactly, so the fast and the exact path (the
 // `exact_path` flag, kept for the tests) pick the same piece. The winner's values are RN of the
 // exact reals (geometry/rounded.hpp): σ² and the translation at a projection, λ at a crossing from
