@@ -156,12 +156,12 @@ struct NfpFlat {
   static bool inside_by_candidates(const std::vector<std::uint32_t>& cand) {
     return cand.size() == 1 && (cand[0] & (kInside | kFromO)) == (kInside | kFromO);
   }
-  /// σ's version: inside_by_candidates, or candidates all meeting at one reflex vertex V of O
-  /// (`wedge`): t's projection certainly beyond the hi end of each arriving at V, before the lo end
-  /// of each leaving it, or a zero-length piece at V — t's nearest point on ∂O is V, seen from O's
-  /// side (proof in nfp_fast.cpp). False says nothing.
-  bool inside_by_nearest(const std::vector<std::uint32_t>& cand) const {
-    if (cand.size() < 2 || wedge.empty()) return inside_by_candidates(cand);
+  /// Candidates all meeting at one reflex vertex V of O (`wedge`): t's projection certainly
+  /// beyond the hi end of each arriving at V, before the lo end of each leaving it, or a
+  /// zero-length piece at V. Then V is every candidate's nearest point (all tie: σ's winner is the
+  /// first, the lowest index) and t ∈ O (proof in nfp_fast.cpp). False says nothing.
+  bool at_wedge(const std::vector<std::uint32_t>& cand) const {
+    if (cand.size() < 2 || wedge.empty()) return false;
     std::int32_t V = -1;
     for (std::uint32_t c : cand) {
       const auto& w = wedge[c & ~kFlags];
@@ -172,6 +172,8 @@ struct NfpFlat {
     }
     return true;
   }
+  /// σ's proof of t ∈ O: inside_by_candidates or at_wedge.
+  bool inside_by_nearest(const std::vector<std::uint32_t>& cand) const { return inside_by_candidates(cand) || at_wedge(cand); }
   /// Appends to `out`, in increasing order, the indices of every piece whose exact distance to t
   /// can be the minimum (a superset of the exact nearest pieces; usually one), flagged kInside when
   /// t's projection on the piece's line falls certainly strictly inside the piece, kBeforeLo or

@@ -323,14 +323,18 @@ bool along_winner(const NoFitPolygon2::Impl& N, const Vec2& t, const Vec2& d, bo
 bool min_winner(const NoFitPolygon2::Impl& N, const Vec2& t, bool exact_path, MinBest& best, double& value, Vec2& translation) {
   const NfpFlat& flat = N.flat;
   const bool fast = flat.usable && !exact_path;
-  // As along_winner: a sole nearest candidate with t on O's side, or two meeting at a reflex
-  // vertex of O that is t's nearest point, proves t ∈ O.
+  // As along_winner: a sole nearest candidate with t on O's side, or candidates all meeting at
+  // a reflex vertex of O that is t's nearest point (at_wedge), proves t ∈ O.
   std::vector<std::uint32_t>& cand = scratch();
   if (fast) flat.nearest_candidates(t, cand);
-  if (!winner_overlaps(N, t, exact_path, fast && flat.inside_by_nearest(cand))) return false;
+  const bool wedge = fast && flat.at_wedge(cand);
+  if (!winner_overlaps(N, t, exact_path, wedge || (fast && NfpFlat::inside_by_candidates(cand)))) return false;
   value = std::numeric_limits<double>::infinity();
   if (fast) {
-    for (std::uint32_t k : cand) best.consider(N, k & ~NfpFlat::kFlags, t, k & NfpFlat::kFlags);
+    // At a wedge every candidate's nearest point is the same exact vertex: all tie and the first
+    // (lowest index) wins, as the loop's exact comparisons would decide.
+    const std::size_t n = wedge ? 1 : cand.size();
+    for (std::size_t i = 0; i < n; ++i) best.consider(N, cand[i] & ~NfpFlat::kFlags, t, cand[i] & NfpFlat::kFlags);
   } else {
     // Branch and bound on the hierarchy with conservative box distances; every piece as near as
     // the best is visited (its box key is below its distance), so ties resolve by index.
