@@ -47,6 +47,24 @@
 //   same bound as the dot products; σ_d: a right and b left of the ray, beyond e_d, so the ray
 //   meets X coming from the left), the points of the disk (segment) next to X are in O, hence t.
 //   Otherwise the caller runs the overlap test (t outside O, or two pieces near: no shortcut).
+// inside_by_nearest (σ) — also the shared-vertex wedge: V a reflex vertex of O (Impl::wedge, exact
+//   at the export: the pieces of positive length ending at V all arrive along one direction u,
+//   those starting there all leave along w, cross(u, w) < 0), and every candidate one of them
+//   with t's projection certainly beyond its hi end (an arriving one, kBeyondHi) or before its lo
+//   end (a leaving one, kBeforeLo), or a zero-length piece at V. Then every candidate's nearest
+//   point is V, so δ = |v|, v = t − V (the nearest piece is a candidate), and t ≠ V (the flags are
+//   strict); every piece through V is at distance ≤ |v| = δ, hence a candidate, hence one of
+//   those (at least one arriving and one leaving: V is a wedge vertex): near V, ∂O is two
+//   segments leaving V along −u and w, which cut a small disk about V into two open sectors, each
+//   wholly in O or wholly outside cl(O). The points just left of a leaving piece next to V are in
+//   O (as above), so the sector swept counterclockwise from w to −u lies in O; the other, the cone
+//   C = {α·(−u) + β·w : α, β ≥ 0} (convex: the right turn puts −u and w less than π apart), lies
+//   outside. The flags give dot(v, u) > 0 > dot(v, w), so every c ≠ 0 in C has
+//   dot(v, c) = −α·dot(v, u) + β·dot(v, w) < 0: v ∉ C, and V + s·v lies in O's sector for small
+//   s > 0; those points are in the open disk of radius δ about t, which meets no point of ∂O, so
+//   the disk and t lie in O. (At a convex vertex of O, cross(u, w) > 0, the same flags hold with t
+//   outside: no wedge there. Pinch vertices, slits, and pieces through V inside their extent give
+//   no wedge or a candidate without a wedge end.)
 // Range: used only when rmax ∈ [2⁻³⁰⁰, 2³⁰⁰] (no overflow or underflow of M², far below the
 // front door's own band, src/front/scale.hpp); σ and σ_d for at most kFlatMax pieces (beyond, the
 // hierarchy's O(log N) traversal wins over a linear scan); queries with |t| beyond 2³⁰⁰ are
@@ -58,8 +76,8 @@
 // the stored distances; σ_d: the first skips pieces missing the ray's line early, its line test
 // two or four pieces wide likewise — a branch-free version of the whole pass was 17 % slower at
 // 117 pieces and no faster on nesting pieces). σ and σ_d skip the overlap pass when
-// inside_by_candidates proves t ∈ O (about half of σ's overlapping placements in the tests,
-// degenerate ones included).
+// inside_by_candidates (σ: inside_by_nearest) proves t ∈ O (about half of σ's overlapping
+// placements in the tests, degenerate ones included).
 #include <algorithm>
 #include <cmath>
 #ifdef __SSE2__
@@ -106,6 +124,7 @@ void NfpFlat::build(const NoFitPolygon2::Impl& N) {
       }
   slits = N.slits;
   points = N.points;
+  wedge = N.wedge;
   for (const auto& s : slits) see(s[0]), see(s[1]);
   for (const Vec2& p : points) see(p);
   for (const NfpPiece& pc : N.pieces) {

@@ -109,6 +109,7 @@ struct NfpFlat {
   std::vector<double> pinv;                // 1 / |b − a|² per piece (0 for a point)
   std::vector<std::array<Vec2, 2>> slits;   // copies of the export's, next to the edges
   std::vector<Vec2> points;
+  std::vector<std::array<std::int32_t, 2>> wedge;  // Impl::wedge (reflex vertices at the pieces' ends)
   double rmax = 0;                         // largest |coordinate| stored here
   bool usable = false;                     // sizes and magnitudes inside the filters' range
   // Per piece: its edge ray's origin o = o1 + o2 and direction (a1 + a2) − (b1 + b2) as exact
@@ -155,6 +156,24 @@ struct NfpFlat {
   static bool inside_by_candidates(const std::vector<std::uint32_t>& cand) {
     return cand.size() == 1 && (cand[0] & (kInside | kFromO)) == (kInside | kFromO);
   }
+  /// Candidates all meeting at one reflex vertex V of O (`wedge`): t's projection certainly
+  /// beyond the hi end of each arriving at V, before the lo end of each leaving it, or a
+  /// zero-length piece at V. Then V is every candidate's nearest point (all tie: σ's winner is the
+  /// first, the lowest index) and t ∈ O (proof in nfp_fast.cpp). False says nothing.
+  bool at_wedge(const std::vector<std::uint32_t>& cand) const {
+    if (cand.size() < 2 || wedge.empty()) return false;
+    std::int32_t V = -1;
+    for (std::uint32_t c : cand) {
+      const auto& w = wedge[c & ~kFlags];
+      // Unflagged: only a zero-length piece (both ends one vertex) has its nearest point known.
+      const std::int32_t at = (c & kBeyondHi) ? w[1] : (c & kBeforeLo) ? w[0] : (c & kFlags) == 0 && w[0] == w[1] ? w[0] : -1;
+      if (at < 0 || (V >= 0 && at != V)) return false;
+      V = at;
+    }
+    return true;
+  }
+  /// σ's proof of t ∈ O: inside_by_candidates or at_wedge.
+  bool inside_by_nearest(const std::vector<std::uint32_t>& cand) const { return inside_by_candidates(cand) || at_wedge(cand); }
   /// Appends to `out`, in increasing order, the indices of every piece whose exact distance to t
   /// can be the minimum (a superset of the exact nearest pieces; usually one), flagged kInside when
   /// t's projection on the piece's line falls certainly strictly inside the piece, kBeforeLo or
@@ -211,6 +230,12 @@ struct NoFitPolygon2::Impl {
   std::vector<std::vector<std::vector<Vec2>>> polys;
   std::vector<std::array<Vec2, 2>> slits;
   std::vector<Vec2> points;
+  // Per piece: the vertex id of a reflex vertex of O at its lo end and at its hi end (both for a
+  // zero-length piece there), else -1 (nfp_export, nfp_rings.cpp link_wedges: the pieces at such a
+  // vertex arrive along one direction and leave along another, turning strictly right); empty when
+  // no piece has one (the convex export). σ's fast path proves t ∈ O by such a wedge
+  // (NfpFlat::inside_by_nearest, nfp_fast.cpp).
+  std::vector<std::array<std::int32_t, 2>> wedge;
   NfpSize sz;
   nonconvex2::NfpFlat flat;  // the fast path (built last, from pieces and rings)
   Impl(const Polygon& P, const Polygon& Q);

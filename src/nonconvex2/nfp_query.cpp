@@ -17,8 +17,10 @@
 //   conservative box distances; exact comparisons of squared distances (edge_cut.hpp, the same
 //   candidates as PairDepth2::minimum); equally near pieces go to the lowest index.
 // On the fast path the candidates come first: a sole candidate whose interior holds t's nearest
-// point (the ray's first) with O's side towards t proves t ∈ O (NfpFlat::inside_by_candidates,
-// proof in nfp_fast.cpp) and the overlap test is skipped; otherwise it runs as above.
+// point (the ray's first) with O's side towards t proves t ∈ O (NfpFlat::inside_by_candidates),
+// and so for σ do candidates all meeting at a reflex vertex of O that is t's nearest point
+// (NfpFlat::inside_by_nearest; proofs in nfp_fast.cpp): the overlap test is skipped; otherwise it
+// runs as above.
 // Both ways every piece that can win is compared exactly, so the fast and the exact path (the
 // `exact_path` flag, kept for the tests) pick the same piece. The winner's values are RN of the
 // exact reals (geometry/rounded.hpp): σ² and the translation at a projection, λ at a crossing from
@@ -263,12 +265,12 @@ struct Job {
 
 namespace {
 
-// t ∈ O for σ's and σ_d's winner searches: on the fast path from the candidates named first
-// (`cand`, NfpFlat::inside_by_candidates) when they prove it, else by the overlap test (exact
+// t ∈ O for σ's and σ_d's winner searches: `proved` when the fast path's candidates named first
+// prove it (NfpFlat::inside_by_candidates, inside_by_nearest), else by the overlap test (exact
 // alone on the exact path).
-bool winner_overlaps(const NoFitPolygon2::Impl& N, const Vec2& t, bool exact_path, bool fast, const std::vector<std::uint32_t>& cand) {
+bool winner_overlaps(const NoFitPolygon2::Impl& N, const Vec2& t, bool exact_path, bool proved) {
   if (N.pieces.empty()) return false;
-  if (fast && NfpFlat::inside_by_candidates(cand)) return true;
+  if (proved) return true;
   return exact_path ? N.overlapping_exact(t) : N.overlapping(t);
 }
 
@@ -280,7 +282,7 @@ bool along_winner(const NoFitPolygon2::Impl& N, const Vec2& t, const Vec2& d, bo
   // (NfpFlat::inside_by_candidates), else the overlap test decides.
   std::vector<std::uint32_t>& cand = scratch();
   if (fast) flat.first_hit_candidates(t, d, cand);
-  if (!winner_overlaps(N, t, exact_path, fast, cand)) return false;
+  if (!winner_overlaps(N, t, exact_path, fast && NfpFlat::inside_by_candidates(cand))) return false;
   const Ray ray = Ray::query(t, d);
   value = std::numeric_limits<double>::infinity();
   if (fast) {
@@ -321,13 +323,18 @@ bool along_winner(const NoFitPolygon2::Impl& N, const Vec2& t, const Vec2& d, bo
 bool min_winner(const NoFitPolygon2::Impl& N, const Vec2& t, bool exact_path, MinBest& best, double& value, Vec2& translation) {
   const NfpFlat& flat = N.flat;
   const bool fast = flat.usable && !exact_path;
-  // As along_winner: a sole nearest candidate with t on O's side proves t ∈ O.
+  // As along_winner: a sole nearest candidate with t on O's side, or candidates all meeting at
+  // a reflex vertex of O that is t's nearest point (at_wedge), proves t ∈ O.
   std::vector<std::uint32_t>& cand = scratch();
   if (fast) flat.nearest_candidates(t, cand);
-  if (!winner_overlaps(N, t, exact_path, fast, cand)) return false;
+  const bool wedge = fast && flat.at_wedge(cand);
+  if (!winner_overlaps(N, t, exact_path, wedge || (fast && NfpFlat::inside_by_candidates(cand)))) return false;
   value = std::numeric_limits<double>::infinity();
   if (fast) {
-    for (std::uint32_t k : cand) best.consider(N, k & ~NfpFlat::kFlags, t, k & NfpFlat::kFlags);
+    // At a wedge every candidate's nearest point is the same exact vertex: all tie and the first
+    // (lowest index) wins, as the loop's exact comparisons would decide.
+    const std::size_t n = wedge ? 1 : cand.size();
+    for (std::size_t i = 0; i < n; ++i) best.consider(N, cand[i] & ~NfpFlat::kFlags, t, cand[i] & NfpFlat::kFlags);
   } else {
     // Branch and bound on the hierarchy with conservative box distances; every piece as near as
     // the best is visited (its box key is below its distance), so ties resolve by index.

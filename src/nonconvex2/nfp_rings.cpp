@@ -1300,6 +1300,41 @@ void place_holes(Workspace& W, int nv, std::vector<QP>& V) {
   }
 }
 
+// N.wedge: the reflex vertices of O where σ's fast path may prove t ∈ O (nfp_fast.cpp). A vertex
+// v (vertex ids: one exact point) is one when at least one piece of positive length arrives at v
+// (its hi end) and one leaves it (its lo end), all arriving ones along one exact direction u, all
+// leaving ones along one direction w (exact signs: cross 0, dot > 0; pieces along their rays'
+// directions, lo to hi, O on the left), and the boundary turns strictly right from u to w
+// (cross(u, w) < 0); other pieces ending at v have length zero (a piece through v inside its
+// extent is no end here: σ's fast path then has a candidate without a wedge end, and no
+// shortcut). Per piece: the wedge vertex at
+// its lo end and at its hi end (both for a zero-length piece there), else -1. O(N) and O(1) exact
+// signs (floating filter first) per piece end.
+void link_wedges(const Workspace& W, NoFitPolygon2::Impl& N, int nv) {
+  const std::vector<int>& id = W.id;
+  const std::size_t n = N.pieces.size();
+  // Per vertex: the first piece arriving and leaving (-1: none yet), and whether it still qualifies.
+  std::vector<std::array<int, 2>> first(std::size_t(nv), {-1, -1});
+  std::vector<char> ok(std::size_t(nv), 1);
+  auto dir = [&](int k) { return Dir{&N.pieces[std::size_t(k)].E, 1}; };
+  for (std::size_t k = 0; k < n; ++k) {
+    const int ends[2] = {id[2 * k], id[2 * k + 1]};
+    if (ends[0] == ends[1]) continue;
+    for (int side = 0; side < 2; ++side) {  // 0: k leaves ends[0]; 1: k arrives at ends[1]
+      const std::size_t v = std::size_t(ends[side]);
+      int& f = first[v][side];
+      if (f < 0) f = int(k);
+      else if (ok[v] && (cross_sign(dir(f), dir(int(k))) != 0 || dot_sign(dir(f), dir(int(k))) <= 0)) ok[v] = 0;
+    }
+  }
+  for (std::size_t v = 0; v < std::size_t(nv); ++v)
+    ok[v] = ok[v] && first[v][0] >= 0 && first[v][1] >= 0 && cross_sign(dir(first[v][1]), dir(first[v][0])) < 0;
+  N.wedge.assign(n, {-1, -1});
+  for (std::size_t k = 0; k < n; ++k)
+    for (int side = 0; side < 2; ++side)
+      if (const int v = id[2 * k + side]; ok[std::size_t(v)]) N.wedge[k][side] = v;
+}
+
 // Steps 3–4: N.polys (each outer ring, then its holes), N.slits and N.points (the zero-length
 // pieces that are no vertex of an edge or slit, in exact (x, y) order), as rounded coordinates.
 void write_output(NoFitPolygon2::Impl& N, Workspace& W) {
@@ -1351,6 +1386,7 @@ bool nfp_export_by(NoFitPolygon2::Impl& N, NfpExportPath path) {
   // Two convex shapes: the pieces are edges of the convex sum, ordered by angle.
   if (path == NfpExportPath::Convex || (path == NfpExportPath::Any && nonconvex2::convex_shape(N.S.P) && nonconvex2::convex_shape(N.S.Q))) {
     if (nfp_export_convex(N)) {
+      N.wedge.clear();  // a convex O has no reflex vertex
       last_path = NfpExportPath::Convex;
       return true;
     }
@@ -1359,6 +1395,7 @@ bool nfp_export_by(NoFitPolygon2::Impl& N, NfpExportPath path) {
   thread_local Workspace W;
   round_ends(W, N);                  // 1. every end rounded to nearest
   const int nv = intern_ends(W);     //    and interned: vertex ids
+  link_wedges(W, N, nv);             //    reflex vertices between two pieces (σ's fast path)
   collect_segs(W, N);                //    pieces of positive length, zero-length points
   sort_vertices(W, nv);              //    vertices by rounded x
   clear_rings(W, nv);

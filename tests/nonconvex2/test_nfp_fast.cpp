@@ -19,7 +19,10 @@
 // for σ at a cut end (the per-piece table built with the no-fit polygon);
 // NearestCandidateFlagsAgainstExact checks σ's candidate set and its certified flags (projection
 // inside / before lo / beyond hi) against exact arithmetic, and the flags' error bound against
-// rationals (removing it, or shrinking it by 2¹³, fails). Pinned seeds.
+// rationals (removing it, or shrinking it by 2¹³, fails); ReflexWedges places t about every ring
+// vertex (on the bisector to either side, at the vertex, ulps off, scattered near it) so that σ's
+// shared-vertex wedge (NfpFlat::inside_by_nearest) fires, and checks it only ever does for t ∈ O
+// (linking convex vertices too fails it and ExactFits). Pinned seeds.
 #include <pendepth/nfp2.hpp>
 
 #include <gtest/gtest.h>
@@ -71,8 +74,9 @@ bool same(const Vec2& a, const Vec2& b) { return same(a.x(), b.x()) && same(a.y(
 
 struct Counts {
   std::size_t queries = 0, certified = 0, deferred = 0, overlapping = 0;
-  // NfpFlat::inside_by_candidates: t ∈ O proved by σ's (σ_d's) candidates, over the checks made.
-  std::size_t by_nearest = 0, by_first_hit = 0, first_hit_checks = 0;
+  // NfpFlat::inside_by_nearest / inside_by_candidates: t ∈ O proved by σ's (σ_d's) candidates,
+  // over the checks made; by_wedge: by two candidates meeting at a reflex vertex of O.
+  std::size_t by_nearest = 0, by_wedge = 0, by_first_hit = 0, first_hit_checks = 0;
 };
 Counts& counts() {
   static Counts c;
@@ -103,8 +107,9 @@ void check_at(const NoFitPolygon2& nfp, const Vec2& t, const std::vector<Vec2>& 
   std::vector<std::uint32_t> cand;
   if (N.flat.usable) {
     N.flat.nearest_candidates(t, cand);
-    const bool by = pendepth::nonconvex2::NfpFlat::inside_by_candidates(cand);
+    const bool by = N.flat.inside_by_nearest(cand);
     c.by_nearest += by;
+    c.by_wedge += by && !pendepth::nonconvex2::NfpFlat::inside_by_candidates(cand);
     ASSERT_TRUE(!by || exact) << what << " σ's candidates prove t ∈ O wrongly, t = " << t.transpose();
   }
   ASSERT_EQ(nfp.overlapping(t), exact) << what << " t = " << t.transpose();
@@ -244,8 +249,99 @@ TEST(NfpFastPath, NestingPieces) {
   EXPECT_GT(c.by_nearest, c.overlapping / 4);
   EXPECT_LT(c.by_nearest, c.overlapping);
   EXPECT_GT(c.by_first_hit, c.first_hit_checks / 20);
-  std::cout << "[inside by candidates] σ " << c.by_nearest << " of " << c.overlapping << " overlapping placements, σ_d "
-            << c.by_first_hit << " of " << c.first_hit_checks << " rays\n";
+  EXPECT_GT(c.by_wedge, 0u);
+  std::cout << "[inside by candidates] σ " << c.by_nearest << " (" << c.by_wedge << " by a reflex wedge) of " << c.overlapping
+            << " overlapping placements, σ_d " << c.by_first_hit << " of " << c.first_hit_checks << " rays\n";
+}
+
+// σ's shared-vertex wedge (NfpFlat::inside_by_nearest): placements whose nearest point on ∂O is a
+// ring vertex V — on the bisector of the two edges at V, to either side (into O at a reflex vertex,
+// out of it at a convex one, where the same flags hold and the wedge must not fire), at several
+// distances, at V and ulps from it, and scattered in a small box about V — every answer against
+// the exact path (check_at: the shortcut only for t ∈ O, exact overlap test). Every wedge link
+// joins two pieces whose rounded ends meet (within ulps) with a right turn of their rounded
+// directions (where the rounding cannot flip the sign). Inputs with reflex vertices of O: exact
+// fits (a slot, a bottle, combs, a hole fit: shared vertices of both shapes' parallel edges),
+// shirts and trousers pieces, quarter turns.
+void check_wedges(const Polygon& P, const Polygon& Q, std::mt19937_64& rng, const std::string& what, std::size_t& links) {
+  const NoFitPolygon2 nfp(P, Q);
+  const NoFitPolygon2::Impl& N = nfp_impl(nfp);
+  ASSERT_TRUE(N.flat.usable) << what;
+  // Every wedge vertex: its pieces' rounded ends there meet within ulps; arriving and leaving
+  // rounded directions turn right where the rounding cannot flip the sign.
+  std::vector<std::vector<std::size_t>> at[2];  // per vertex id: pieces leaving (0), arriving (1)
+  for (std::size_t k = 0; k < N.wedge.size(); ++k)
+    for (int side = 0; side < 2; ++side)
+      if (const int v = N.wedge[k][side]; v >= 0) {
+        for (auto& a : at) a.resize(std::max(a.size(), std::size_t(v) + 1));
+        at[side][std::size_t(v)].push_back(k);
+      }
+  for (std::size_t v = 0; v < at[0].size(); ++v) {
+    if (at[0][v].empty()) continue;
+    ++links;
+    const Vec2 V = N.pieces[at[0][v][0]].a;
+    for (int side = 0; side < 2; ++side)
+      for (std::size_t k : at[side][v]) {
+        const Vec2 e = side == 0 ? N.pieces[k].a : N.pieces[k].b;
+        ASSERT_LE((e - V).cwiseAbs().maxCoeff(), std::max(V.cwiseAbs().maxCoeff(), 1e-300) * 0x1p-48) << what << " wedge " << v << " ends apart";
+        if (N.pieces[k].a == N.pieces[k].b) continue;
+        for (std::size_t j : at[1 - side][v]) {
+          if (N.pieces[j].a == N.pieces[j].b) continue;
+          const Vec2 u = (side == 1 ? N.pieces[k] : N.pieces[j]).b - (side == 1 ? N.pieces[k] : N.pieces[j]).a;
+          const Vec2 w = (side == 1 ? N.pieces[j] : N.pieces[k]).b - (side == 1 ? N.pieces[j] : N.pieces[k]).a;
+          ASSERT_FALSE(u.x() * w.y() - u.y() * w.x() > u.norm() * w.norm() * 0x1p-40) << what << " wedge " << v << " turns left";
+        }
+      }
+  }
+  std::uniform_real_distribution<double> unit(-1, 1);
+  const std::vector<Vec2> dirs{{1, 0}, {0, 1}, {-1, -1}};
+  for (const auto& poly : nfp.polygons())
+    for (const auto& ring : poly)
+      for (std::size_t i = 0; i < ring.size(); ++i) {
+        const Vec2 &a = ring[(i + ring.size() - 1) % ring.size()], &V = ring[i], &b = ring[(i + 1) % ring.size()];
+        const Vec2 bis = (V - a).normalized() - (b - V).normalized();  // into O at a reflex vertex
+        const double len = std::min((V - a).norm(), (b - V).norm());
+        for (double s : {0.5, 0.125, 0x1p-10, 0x1p-30})
+          for (double side : {1.0, -1.0}) check_at(nfp, V + side * s * len * bis, dirs, what);
+        check_at(nfp, V, dirs, what);
+        for (int dx = -1; dx <= 1; ++dx)
+          for (int dy = -1; dy <= 1; ++dy) check_at(nfp, ulp_step(V, dx, dy), dirs, what);
+        for (int r = 0; r < 4; ++r) check_at(nfp, V + 0.25 * len * Vec2(unit(rng), unit(rng)), dirs, what);
+      }
+}
+
+TEST(NfpFastPath, ReflexWedges) {
+  std::mt19937_64 rng(19007);
+  counts() = Counts{};
+  std::size_t links = 0;
+  const Polygon unit = Polygon::simple(std::vector<Vec2>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, "unit");
+  const Polygon square = Polygon::simple(std::vector<Vec2>{{0, 0}, {2, 0}, {2, 2}, {0, 2}}, "square");
+  const Polygon slot = Polygon::simple(std::vector<Vec2>{{0, 0}, {7, 0}, {7, 8}, {5, 8}, {5, 2}, {2, 2}, {2, 8}, {0, 8}}, "U");
+  const Polygon bottle = Polygon::simple(
+      std::vector<Vec2>{{0, 0}, {10, 0}, {10, 10}, {6, 10}, {6, 7}, {7, 7}, {7, 3}, {3, 3}, {3, 7}, {4, 7}, {4, 10}, {0, 10}}, "bottle");
+  const Polygon comb = Polygon::simple(polygon2_test::comb_ring(4, 3, 2, 5, 2), "comb P");
+  const Polygon plate({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{4, 4}, {6, 4}, {6, 6}, {4, 6}}}, "plate");
+  for (int k = 0; k < 4; ++k) {
+    const std::string turn = " Q turned " + std::to_string(k);
+    check_wedges(slot, quarter_turns(Polygon::simple(std::vector<Vec2>{{0, 0}, {3, 0}, {3, 1}, {0, 1}}, "block"), k), rng, "slot" + turn, links);
+    check_wedges(bottle, quarter_turns(square, k), rng, "bottle" + turn, links);
+    check_wedges(comb, quarter_turns(unit, k), rng, "comb" + turn, links);
+    check_wedges(plate, quarter_turns(unit, k), rng, "plate" + turn, links);
+    check_wedges(slot, quarter_turns(bottle, k), rng, "slot bottle" + turn, links);
+  }
+  for (const std::string file : {"shirts", "trousers", "albano"}) {
+    const auto pieces = instance(file + ".json");
+    for (std::size_t k = 0; k < 4; ++k) {
+      const std::size_t i = rng() % pieces.size(), j = rng() % pieces.size();
+      check_wedges(pieces[i], quarter_turns(pieces[j], int(k)), rng, file + " " + std::to_string(i) + " " + std::to_string(j), links);
+    }
+  }
+  const Counts& c = counts();
+  EXPECT_GT(links, 40u);
+  EXPECT_GT(c.by_wedge, 30u);  // the wedge fires (and, by check_at, only for t ∈ O)
+  EXPECT_LT(c.by_nearest, c.overlapping);
+  std::cout << "[reflex wedges] " << links << " links, σ proves t ∈ O " << c.by_nearest << " times (" << c.by_wedge
+            << " by a wedge) of " << c.overlapping << " overlapping of " << c.queries << " placements\n";
 }
 
 // Pieces turned by angles that are not quarter turns (coordinates rounded once): edge directions
