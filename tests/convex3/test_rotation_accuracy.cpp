@@ -155,8 +155,9 @@ TEST(RotationAccuracy, OneDivisionIsAsCloseAsNormalisingFirst) {
               n, all_new.entry, all_new.orth, all_old.entry, all_old.orth);
 }
 
-// Exactly representable rotations stay exact: the axis permutations and half-turns (coefficients
-// 0, ±1, ±½ at any power-of-two scale) give entries in {0, ±1} with no rounding.
+// Exactly representable rotations stay exact: half-turns, quarter turns written (1, 1, 0, 0)
+// (|q|² = 2, s = 1 — normalising first rounded 1/√2 and left 2.2e-16 on the diagonal) and the
+// axis permutations (±1, ±1, ±1, ±1), at any power-of-two scale, give entries in {0, ±1}.
 TEST(RotationAccuracy, SignedPermutationsAreExact) {
   const double vals[] = {0.0, 1.0, -1.0};
   int n = 0;
@@ -166,7 +167,7 @@ TEST(RotationAccuracy, SignedPermutationsAreExact) {
         for (double z : vals)
           for (double w : vals) {
             const int nonzero = (x != 0) + (y != 0) + (z != 0) + (w != 0);
-            if (nonzero != 1 && nonzero != 4) continue;  // |q|-normalised to 0/±1 or ±½ coefficients
+            if (nonzero == 0 || nonzero == 3) continue;  // zero; |q|² = 3: s = 2/3 rounds
             const Eigen::Vector4d c(x * scale, y * scale, z * scale, w * scale);
             const Eigen::Quaterniond q(c[3], c[0], c[1], c[2]);
             Big exact[3][3];
@@ -176,7 +177,7 @@ TEST(RotationAccuracy, SignedPermutationsAreExact) {
               for (int j = 0; j < 3; ++j) EXPECT_EQ(Big(R(i, j)), exact[i][j]) << c.transpose();
             ++n;
           }
-  EXPECT_EQ(n, 5 * (8 + 16));
+  EXPECT_EQ(n, 5 * (8 + 24 + 16));
 }
 
 }  // namespace
