@@ -18,6 +18,10 @@ keep every hash. A change of σ's path (another start, other supports) changes `
 (`candidates`) differ — all must be 0 — and prints the mean `candidates` of each. Recorded anew
 at 67a7298 because its first tetrahedron takes GJK's directions towards 0 (fewer supports):
 0 differing placements of 38,625 against 4f3112a, whose hashes (951d3af's) it replaces.
+Recorded anew (both files) on branch quat16: Pose3::matrix computes R with one division
+s = 2/|q|² instead of normalising q (docs/benchmarks.md, σ section, Run 12), which changes the
+bits of rotations whose |q|² does not round to a power of two (the quarter turns with
+h = fl(√½), most random ones); identity, half-turn and (½, ½, ½, ½) placements keep every bit.
 """
 import hashlib, subprocess, sys
 

@@ -2,7 +2,7 @@
 //
 // Notation: P fixed, Q moving; both carry a pose (only the relative pose matters). All work is
 // done in P's frame, where Q's vertices are q' = R q + t_Q − t_P with R = R_Pᵀ R_Q and
-// t_X = R_Pᵀ (translation of X), R the double matrix of the normalised quaternion. Exactness is
+// t_X = R_Pᵀ (translation of X), R the double matrix of the quaternion's rotation. Exactness is
 // with respect to these double R and t (a linear map with det > 0 keeps Q convex exactly);
 // with identity rotations it is exact in the input coordinates and translations.
 // M = P ⊕ (−Q'); interiors overlap ⇔ 0 ∈ int M. n = |P|, m = |Q|.
@@ -26,8 +26,9 @@ struct Pose3 {
   Pose3() = default;
   explicit Pose3(const Vec3& t) : translation(t) {}
   Pose3(const Eigen::Quaterniond& q, const Vec3& t) : rotation(q), translation(t) {}
-  /// Rotation matrix of the normalised quaternion, any magnitude (scaled by a power of two
-  /// first, exactly). Throws InvalidInput if the quaternion is zero or non-finite.
+  /// Rotation matrix of the quaternion q, any magnitude (scaled by a power of two first,
+  /// exactly): I + (2/|q|²)·[quadratic terms], one division; each entry within 4.4 ulps of 1 of
+  /// the exact rotation (measured). Throws InvalidInput if q is zero or non-finite.
   Eigen::Matrix3d matrix() const;
   Vec3 apply(const Vec3& x) const { return matrix() * x + translation; }
 };

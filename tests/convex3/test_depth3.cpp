@@ -228,16 +228,11 @@ TEST(Depth3, InvalidInput) {
 }
 
 // Pose3::matrix returns I directly for x = y = z = +0: the same bits as the general path (scale
-// by a power of two, normalise, Eigen's toRotationMatrix), written out here as the reference, for
-// w of every sign and magnitude; quaternions with a −0 component take the general path.
+// by a power of two, one division s = 2/|q|², the quadratic terms; test_rotations.hpp writes it
+// out as the reference), for w of every sign and magnitude; quaternions with a −0 component take
+// the general path.
 TEST(Depth3, IdentityRotationMatrixIsTheGeneralOne) {
-  auto general = [](const Eigen::Quaterniond& q) {
-    const Eigen::Vector4d c = q.coeffs();
-    const int e = std::ilogb(c.cwiseAbs().maxCoeff());
-    Eigen::Quaterniond s;
-    for (int k = 0; k < 4; ++k) s.coeffs()[k] = std::ldexp(c[k], -e);
-    return Eigen::Matrix3d(s.normalized().toRotationMatrix());
-  };
+  auto general = [](const Eigen::Quaterniond& q) { return pendepth_test::scaled_rotation_matrix(q); };
   auto same_bits = [](const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) {
     return std::memcmp(a.data(), b.data(), sizeof(double) * 9) == 0;
   };

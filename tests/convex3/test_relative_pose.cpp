@@ -9,6 +9,7 @@
 #include <pendepth/depth3.hpp>
 
 #include "convex3/minkowski_facets.hpp"
+#include "test_rotations.hpp"
 
 #include <cmath>
 #include <cstring>
@@ -21,15 +22,12 @@ namespace {
 bool same_bits(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 bool same_bits(const Vec3& a, const Vec3& b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
-// Pose3::matrix as it was: ldexp for every coefficient.
+// Pose3::matrix written plainly: ldexp for every coefficient, I for x = y = z = +0.
 Eigen::Matrix3d matrix_reference(const Pose3& p) {
   const Eigen::Vector4d c = p.rotation.coeffs();
   if (c[0] == 0 && !std::signbit(c[0]) && c[1] == 0 && !std::signbit(c[1]) && c[2] == 0 && !std::signbit(c[2]))
     return Eigen::Matrix3d::Identity();
-  const int e = std::ilogb(c.cwiseAbs().maxCoeff());
-  Eigen::Quaterniond q;
-  for (int k = 0; k < 4; ++k) q.coeffs()[k] = std::ldexp(c[k], -e);
-  return q.normalized().toRotationMatrix();
+  return pendepth_test::scaled_rotation_matrix(p.rotation);
 }
 
 std::vector<Pose3> poses() {
