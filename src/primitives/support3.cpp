@@ -13,8 +13,9 @@
 // Signed distance of M at a query point p (sd(p) < 0 ⇔ p ∈ int M, sd = −σ inside):
 //   * any unit direction w: sd(p) >= −h_{M−p}(w) (a supporting plane) — certified lower bounds;
 //   * any point y of M: sd(p) <= |y − p|; and when a polytope K ⊆ M holds B(p, L): sd(p) <= −L.
-// GJK (doubles; Johnson's sub-simplices by enumeration) walks towards p, recording both kinds
-// of bounds; when its simplex becomes a tetrahedron holding p strictly (exact orient3d on the
+// GJK (doubles; Johnson's sub-simplices by enumeration, a triangle's nearest point in an
+// orthogonal in-plane frame: triangle_nearest) walks towards p, recording both kinds of bounds;
+// when its simplex becomes a tetrahedron holding p strictly (exact orient3d on the
 // double points x̃), EPA expands that polytope K̃ = conv(x̃_i), every visibility an exact orient3d,
 // so K̃ stays convex with p strictly inside. Its facets' plane distances have rigorous lower
 // bounds (differences, cross product and dot with forward error bounds), and since the true
