@@ -13,8 +13,9 @@
 // Signed distance of M at a query point p (sd(p) < 0 ⇔ p ∈ int M, sd = −σ inside):
 //   * any unit direction w: sd(p) >= −h_{M−p}(w) (a supporting plane) — certified lower bounds;
 //   * any point y of M: sd(p) <= |y − p|; and when a polytope K ⊆ M holds B(p, L): sd(p) <= −L.
-// GJK (doubles; Johnson's sub-simplices by enumeration) walks towards p, recording both kinds
-// of bounds; when its simplex becomes a tetrahedron holding p strictly (exact orient3d on the
+// GJK (doubles; Johnson's sub-simplices by enumeration, a triangle's nearest point in an
+// orthogonal in-plane frame: triangle_nearest) walks towards p, recording both kinds of bounds;
+// when its simplex becomes a tetrahedron holding p strictly (exact orient3d on the
 // double points x̃), EPA expands that polytope K̃ = conv(x̃_i), every visibility an exact orient3d,
 // so K̃ stays convex with p strictly inside. Its facets' plane distances have rigorous lower
 // bounds (differences, cross product and dot with forward error bounds), and since the true
@@ -262,6 +263,39 @@ bool strictly_inside(const Simplex& s) {
   return true;
 }
 
+// The nearest point of the triangle ABC to the origin when it is the projection of the origin
+// onto ABC's plane, strictly inside ABC (else false: the nearest point lies on an edge, which the
+// enumeration covers). Why not Johnson's normal equations: near contact |y| << the triangle's
+// size L, and an in-plane error e of y adds |e|²/2|y| to |y|; on a ridge of M (a ruled strip —
+// a cone's slant line, a cylinder's side line, a box edge — against a rim) GJK's triangles are
+// slivers and needles whose Gram matrix squares their condition number, and the clamped,
+// misplaced y lost to the previous face: GJK cycled, its bracket stuck at 1e-12…3e-11
+// (docs/robustness.md "Gap"). Here an orthogonal in-plane frame instead: A, B the longest edge's
+// ends, e1 = B − A, e2 = C − A, n = e1 × e2 accurately (accurate_normal), p = n × e1 = |e1|²·e2⊥
+// (e2⊥ = e2 − c·e1, c = ⟨e2, e1⟩/|e1|²). The foot f = A + s·e1 + t·e2⊥ with s = −⟨A, e1⟩/|e1|²,
+// t = −⟨A, e2⊥⟩/|e2⊥|² = −⟨A, p⟩|e1|²/|p|², so f = A + (s − t·c)·e1 + t·e2. Rounding moves f by
+// Δs·|e1| + Δt·|e2⊥| + Δc·t·|e1| = O(u·(|A| + L)) in the plane, whatever the shape of ABC (Δt is
+// large for a needle, but it moves f along e2⊥, |e2⊥| ~ the needle's width). y = A + λ_B·e1 +
+// λ_C·e2 with λ_B, λ_C >= 0 and fl(λ_B + λ_C) < 1 (so λ_B + λ_C <= 1) is an exact convex
+// combination of A, B, C evaluated within 7.1u·m per component, m = max |x_i| (point_up).
+bool triangle_nearest(const std::array<const Vec3*, 3>& x, std::array<double, 3>& w, Vec3& y) {
+  const double e01 = (*x[1] - *x[0]).squaredNorm(), e12 = (*x[2] - *x[1]).squaredNorm(), e20 = (*x[0] - *x[2]).squaredNorm();
+  const int c = e01 >= e12 && e01 >= e20 ? 2 : e12 >= e20 ? 0 : 1, a = (c + 1) % 3, b = (c + 2) % 3;
+  const Vec3 &A = *x[a], &B = *x[b], &C = *x[c];
+  const Vec3 e1 = B - A, e2 = C - A;
+  double en = 0;
+  const Vec3 pn = accurate_normal(A, B, C, en).cross(e1);
+  const double e1e1 = e1.squaredNorm(), pp = pn.squaredNorm();
+  if (!(pp > 0 && e1e1 > 0) || !std::isfinite(pp)) return false;
+  const double s = -A.dot(e1) / e1e1, t = -A.dot(pn) / pp * e1e1, cc = e2.dot(e1) / e1e1;
+  const double lb = s - t * cc, lc = t;
+  if (!(lb > 0 && lc > 0 && lb + lc < 1)) return false;
+  // (A's weight kept > 0: the caller keeps A in the simplex, so point_up's m covers it)
+  w[b] = lb, w[c] = lc, w[a] = std::max(1 - lb - lc, std::numeric_limits<double>::denorm_min());
+  y = A + (lb * e1 + lc * e2);
+  return true;
+}
+
 // Reduces s to the face whose relative interior holds the nearest point (weights set) and returns
 // that point; `inside` when s is a tetrahedron holding 0 strictly (exact).
 Vec3 nearest(Simplex& s, bool& inside) {
@@ -285,6 +319,10 @@ Vec3 nearest(Simplex& s, bool& inside) {
     Vec3 y;
     if (k == 1) {
       w[idx[0]] = 1, y = a;
+    } else if (k == 3) {
+      std::array<double, 3> tw{};
+      if (!triangle_nearest({&s.v[idx[0]].x, &s.v[idx[1]].x, &s.v[idx[2]].x}, tw, y)) continue;
+      for (int j = 0; j < 3; ++j) w[idx[j]] = tw[j];
     } else {
       Eigen::Matrix<double, 3, Eigen::Dynamic> E(3, k - 1);
       for (int j = 1; j < k; ++j) E.col(j - 1) = s.v[idx[j]].x - a;
@@ -326,6 +364,13 @@ Vec3 nearest(Simplex& s, bool& inside) {
   return best_y;
 }
 
+// Whether a's points are b's first a.n points (b: a with one point appended).
+bool same_points(const Simplex& a, const Simplex& b) {
+  for (int i = 0; i < a.n; ++i)
+    if (a.v[i].x != b.v[i].x) return false;
+  return true;
+}
+
 struct GjkOut {
   bool tetra = false;  // s holds the query strictly (EPA can start)
   Simplex s;
@@ -335,11 +380,13 @@ struct GjkOut {
   Vec3 y = Vec3::Zero();  // the nearest point found (M − p coordinates)
 };
 
-// The upper bound |y| + error for a convex combination y of the simplex's points.
+// The upper bound |y| + error for a convex combination y of the simplex's points: y computed
+// within 8u·m of one (Johnson's weights) or within 7.1u·m per component, 12.3u·m in norm, of one
+// (triangle_nearest's anchored form); m = max |x_i|.
 double point_up(const Simplex& s, const Vec3& y, double delta) {
   double m = 0;
   for (int i = 0; i < s.n; ++i) m = std::max(m, s.v[i].x.norm());
-  return upw((y.norm() + delta + 8 * kU * m) * (1 + 4 * kU));
+  return upw((y.norm() + delta + 13 * kU * m) * (1 + 4 * kU));
 }
 
 GjkOut gjk(const Engine& E, Vec3 dir) {
@@ -356,11 +403,15 @@ GjkOut gjk(const Engine& E, Vec3 dir) {
   int blowups = 0;
   for (int it = 0; it < kMaxGjk; ++it) {
     bool inside = false;
+    const Simplex before = out.s;
     const Vec3 y = nearest(out.s, inside);
     if (inside) {
       out.tetra = true;
       return out;
     }
+    // The point just added was dropped and the simplex is the one before it, in the same order:
+    // every later iteration would repeat this one bit for bit (the rounding floor), so stop.
+    if (it > 0 && out.s.n == before.n - 1 && y == out.y && same_points(out.s, before)) break;
     out.y = y;
     const double yy = y.squaredNorm();
     Vert v;

@@ -15,6 +15,7 @@
 #include "primitives/ball3.hpp"
 #include "primitives/coaxial3.hpp"
 #include "primitives/directed.hpp"
+#include "primitives/tessellation.hpp"
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
@@ -29,93 +30,7 @@
 namespace pendepth {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kIn = 1 - 1e-10, kOut = 1 + 1e-10;
-
-enum class K { Cyl, Cone, Ell };
-struct Curved {
-  K k;
-  double a, b, c;
-  Shape3 shape() const {
-    return k == K::Cyl ? Shape3::cylinder(a, b) : k == K::Cone ? Shape3::cone(a, b) : Shape3::ellipsoid(a, b, c);
-  }
-  // The closed-form support function (independent of the engine's support points).
-  double h(const Vec3& n) const {
-    const double r = std::hypot(n[0], n[1]);
-    if (k == K::Cyl) return a * r + b * std::abs(n[2]);
-    if (k == K::Cone) return std::max(b * n[2], a * r - b * n[2]);
-    return std::sqrt(a * a * n[0] * n[0] + b * b * n[1] * n[1] + c * c * n[2] * n[2]);
-  }
-  // Whether x lies in the shape, with a relative margin 1e-12 (far above rounding).
-  bool contains(const Vec3& x) const {
-    const double m = 1 - 1e-12;
-    const double r = std::hypot(x[0], x[1]);
-    if (k == K::Cyl) return r <= a * m && std::abs(x[2]) <= b * m;
-    if (k == K::Cone) return std::abs(x[2]) <= b * m && r <= a * m * (b - x[2]) / (2 * b);
-    const double q = x[0] * x[0] / (a * a) + x[1] * x[1] / (b * b) + x[2] * x[2] / (c * c);
-    return q <= m;
-  }
-};
-
-// Unit sphere points: a latitude–longitude grid with poles.
-std::vector<Vec3> sphere_points(int n) {
-  std::vector<Vec3> v{Vec3(0, 0, 1), Vec3(0, 0, -1)};
-  for (int i = 1; i < n; ++i)
-    for (int j = 0; j < 2 * n; ++j) {
-      const double th = kPi * i / n, ph = kPi * j / n;
-      v.emplace_back(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th));
-    }
-  return v;
-}
-
-// The inscribed (outer = false) or circumscribed polytope with n segments.
-Shape3 tessellation(const Curved& c, int n, bool outer) {
-  std::vector<Vec3> v;
-  if (c.k == K::Ell) {
-    const auto s = sphere_points(n);
-    double rin = 1;
-    if (outer) {  // the inscribed polytope's inradius r: the sphere ⊆ (1/r)·hull
-      const Shape3 hs = Shape3::hull(s);
-      const ConvexPolytope& P = hs.polytope();
-      for (const auto& t : P.triangles()) {
-        const Vec3 nn = (P[t[1]] - P[t[0]]).cross(P[t[2]] - P[t[0]]);
-        rin = std::min(rin, nn.dot(P[t[0]]) / nn.norm());
-      }
-      rin *= 1 - 1e-12;
-    }
-    for (const Vec3& p : s) {
-      const double f = outer ? kOut / rin : kIn;
-      v.emplace_back(c.a * p[0] * f, c.b * p[1] * f, c.c * p[2] * f);
-    }
-  } else {
-    const double r = outer ? c.a / std::cos(kPi / n) * kOut : c.a * kIn;
-    const double hz = outer ? c.b * kOut : c.b * kIn;
-    for (int j = 0; j < n; ++j) {
-      const double ph = 2 * kPi * j / n;
-      v.emplace_back(r * std::cos(ph), r * std::sin(ph), -hz);
-      if (c.k == K::Cyl) v.emplace_back(r * std::cos(ph), r * std::sin(ph), hz);
-    }
-    if (c.k == K::Cone) {
-      if (outer) {  // apex raised so the slanted facets also clear the rounding of the base
-        v.emplace_back(0, 0, c.b * kOut);
-      } else {
-        v.emplace_back(0, 0, c.b * kIn);
-      }
-    }
-  }
-  return Shape3::hull(v);
-}
-
-// The containments I ⊆ C ⊆ O, verified.
-void verify_nesting(const Curved& c, const Shape3& in, const Shape3& out) {
-  for (const Vec3& p : in.polytope().vertices()) ASSERT_TRUE(c.contains(p)) << p.transpose();
-  const ConvexPolytope& P = out.polytope();
-  for (const auto& t : P.triangles()) {
-    const Vec3 nn = (P[t[1]] - P[t[0]]).cross(P[t[2]] - P[t[0]]);
-    const Vec3 u = nn / nn.norm();
-    ASSERT_LE(c.h(u) * (1 + 1e-13), u.dot(P[t[0]]));
-  }
-}
+using namespace curved_test;
 
 struct Case {
   Curved c;
@@ -144,11 +59,6 @@ std::vector<Case> cases() {
   return r;
 }
 
-Pose3 random_pose(std::mt19937_64& rng, double spread) {
-  std::normal_distribution<double> g;
-  std::uniform_real_distribution<double> u(-spread, spread);
-  return Pose3(Eigen::Quaterniond(g(rng), g(rng), g(rng), g(rng)), Vec3(u(rng), u(rng), u(rng)));
-}
 
 // The oracle pair for C (and the other shape's tessellation when it is curved too).
 Pair3 oracle_pair(const Case& k, int n, bool outer) {
@@ -191,10 +101,12 @@ TEST(Curved, NestedTessellationsBracketEveryQuery) {
       if (!m.overlapping) continue;
       ++checked_min;
       EXPECT_LE(m.upper_bound - m.lower_bound, 1e-12 * m.depth + floor);
-      // The reported move (slightly lengthened) separates, certified. (1e-6: near contact the
-      // bracket of some edge contacts is ~1e-11 wide, docs/robustness.md "Curved primitives".)
+      // The reported move lengthened by 1e-9 separates, certified: along its direction u,
+      // h_M(u) <= U (σ's upper end) and the move is U·u·(1 + 1e-9), so sd >= 1e-9·U up to the
+      // rounding of the poses, far above the bracket's floor (the near-contact ridges that kept
+      // ~1e-11 wide brackets close since GJK's triangle solve, test_near_contact.cpp).
       Pose3 moved = pq;
-      moved.translation += m.translation * (1 + 1e-6);
+      moved.translation += m.translation * (1 + 1e-9);
       EXPECT_GT(pair.signed_distance(pp, moved).lower_bound, 0) << it << " " << k.other.name() << " depth " << m.depth;
       // σ_d along a random direction: bracketed by the tessellations, σ <= σ_d.
       std::normal_distribution<double> g;
@@ -206,7 +118,7 @@ TEST(Curved, NestedTessellationsBracketEveryQuery) {
       EXPECT_LE(m.lower_bound, a.upper_bound);
       EXPECT_LE(a.upper_bound - a.lower_bound, 1e-11 * a.depth + 16 * floor);
       Pose3 moved_d = pq;
-      moved_d.translation += a.translation * (1 + 1e-6);
+      moved_d.translation += a.translation * (1 + 1e-9);  // likewise (the exit plane of σ_d's upper end)
       EXPECT_GT(pair.signed_distance(pp, moved_d).lower_bound, 0) << it;
       ++checked_dir;
     }
