@@ -589,6 +589,16 @@ namespace {
 // removing it (B = 0) fails (2), and shrinking it by more than the reported margin fails (3).
 // Placements: random, at piece ends and their perpendiculars with ±1–2 ulp moves (projections on
 // or next to an end), on albano pairs, rotated pieces (ends not representable) and an exact fit.
+// The exact end `p` of piece pc minus t on one axis (rationals).
+mpq_class exact_end_rel(const pendepth::nonconvex2::NfpPiece& pc, const pendepth::nonconvex2::Param& p, const Vec2& t, int axis) {
+  using namespace pendepth::nonconvex2;
+  using pendepth::exact::LiftQ;
+  auto [n, dd] = param_nd(p, pc.E, t, LiftQ{});
+  auto o = axis == 0 ? LiftQ{}(pc.E.o1.x()) + LiftQ{}(pc.E.o2.x()) - LiftQ{}(t.x()) : LiftQ{}(pc.E.o1.y()) + LiftQ{}(pc.E.o2.y()) - LiftQ{}(t.y());
+  auto dv = axis == 0 ? ray_dx(pc.E, LiftQ{}) : ray_dy(pc.E, LiftQ{});
+  return mpq_class((o * dd + n * dv).v / dd.v);
+}
+
 struct FlagStats {
   std::size_t queries = 0, candidates = 0, inside = 0, before = 0, beyond = 0, unflagged = 0, wrong_unguarded = 0;
   double worst = 0;  // largest |exact − floating| / B over the dot values checked
@@ -630,18 +640,13 @@ void check_flags(const NoFitPolygon2& nfp, const Vec2& t, FlagStats& st, const s
   // The floating dot values against the exact ends A, B (rationals), on every piece.
   for (std::size_t k = 0; k < N.pieces.size(); ++k) {
     const NfpPiece& pc = N.pieces[k];
-    auto rel = [&](const Param& p, int axis) {  // (end − t) on one axis
-      auto [n, dd] = param_nd(p, pc.E, t, LiftQ{});
-      auto o = axis == 0 ? LiftQ{}(pc.E.o1.x()) + LiftQ{}(pc.E.o2.x()) - LiftQ{}(t.x()) : LiftQ{}(pc.E.o1.y()) + LiftQ{}(pc.E.o2.y()) - LiftQ{}(t.y());
-      auto dv = axis == 0 ? ray_dx(pc.E, LiftQ{}) : ray_dy(pc.E, LiftQ{});
-      return mpq_class((o * dd + n * dv).v / dd.v);
-    };
-    const mpq_class ax = rel(pc.lo, 0), ay = rel(pc.lo, 1), bx = rel(pc.hi, 0), by = rel(pc.hi, 1);
+    const mpq_class ax = exact_end_rel(pc, pc.lo, t, 0), ay = exact_end_rel(pc, pc.lo, t, 1), bx = exact_end_rel(pc, pc.hi, t, 0),
+                    by = exact_end_rel(pc, pc.hi, t, 1);
     const mpq_class dot_exact = -(ax * (bx - ax) + ay * (by - ay));       // (t − A)·(B − A)
     const mpq_class rest_exact = bx * (bx - ax) + by * (by - ay);         // (B − t)·(B − A)
     const double wx = t.x() - F.px0[k], wy = t.y() - F.py0[k], ex = F.pex[k], ey = F.pey[k];
     const mpq_class cross_exact = (bx - ax) * -ay - (by - ay) * -ax;      // (B − A) × (t − A)
-    const double dot = wx * ex + wy * ey, rest = ex * ex + ey * ey - dot, cross = ex * wy - ey * wx;
+    const double dot = wx * ex + wy * ey, rest = ex * ex + ey * ey - dot, cross = F.side_of_piece(k, t.x(), t.y());
     for (const auto& [f, x] : {std::pair{dot, dot_exact}, std::pair{rest, rest_exact}, std::pair{cross, cross_exact}}) {
       const mpq_class err = abs(x - mpq_class(f));
       ASSERT_LE(err, mpq_class(B)) << what << " piece " << k << " t = " << t.transpose();
@@ -720,6 +725,130 @@ TEST(NfpFastPath, NearestCandidateFlagsAgainstExact) {
   EXPECT_GT(st.unflagged, 0u);
   EXPECT_GT(st.wrong_unguarded, 0u);  // the bound is needed: B = 0 would mis-flag these
   EXPECT_GT(st.worst, 0x1p-13);       // and B shrunk by 2¹³ fails the ASSERT_LE above
+}
+
+// nfp_fast.cpp's first_hit_candidates against exact arithmetic (rationals on the exact piece ends,
+// exact_end_rel): (1) every flag is right — kInside: the ray crosses the exact piece's interior
+// at some λ > 0 (ends strictly on opposite sides of the ray's line, λ = A × (B − A) / d × (B − A)
+// > 0 with A, B the ends minus t), kFromO: and its lo end strictly right of the ray — for any t
+// (inside_by_candidates trusts them before the overlap test); (2) for t ∈ O (exact test) every
+// piece hit first (least exact λ > 0 over all pieces: a crossing, or a collinear piece's nearer
+// end) is a candidate. Placements stress the pieces spanning t's perpendicular, whose side of
+// the crossing the scan now certifies by side_of_piece: t beside a piece's middle at 2⁻⁴⁰ to 0.5
+// of its length on either side, rays along the piece (parallel: undecided), turned by 2⁻³⁰ to
+// 0.3 rad either way (crossing just ahead or just behind t), and random t and d.
+struct HitStats {
+  std::size_t rays = 0, candidates = 0, crossing = 0, from_o = 0, spanning = 0, completeness = 0;
+};
+
+void check_first_hits(const NoFitPolygon2& nfp, const Vec2& t, const Vec2& d_in, HitStats& st, const std::string& what) {
+  using namespace pendepth::nonconvex2;
+  const auto& N = nfp_impl(nfp);
+  const NfpFlat& F = N.flat;
+  if (!F.usable || (d_in.x() == 0 && d_in.y() == 0)) return;
+  const Vec2 d = check_and_scale(t, d_in);
+  ++st.rays;
+  std::vector<std::uint32_t> cand;
+  F.first_hit_candidates(t, d, cand);
+  const mpq_class dx(d.x()), dy(d.y());
+  // Per piece: the exact λ of its first point on the ray (λ > 0), or none.
+  const std::size_t n = N.pieces.size();
+  std::vector<mpq_class> lambda(n);
+  std::vector<bool> hit(n, false);
+  std::vector<int> sa(n), sb(n), slam(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const NfpPiece& pc = N.pieces[k];
+    const mpq_class ax = exact_end_rel(pc, pc.lo, t, 0), ay = exact_end_rel(pc, pc.lo, t, 1), bx = exact_end_rel(pc, pc.hi, t, 0),
+                    by = exact_end_rel(pc, pc.hi, t, 1);
+    const mpq_class ca = dx * ay - dy * ax, cb = dx * by - dy * bx, den = cb - ca;
+    sa[k] = sgn(ca), sb[k] = sgn(cb), slam[k] = 0;
+    if (sa[k] * sb[k] > 0) continue;  // misses the line
+    if (den != 0) {
+      const mpq_class l = (ax * (by - ay) - ay * (bx - ax)) / den;
+      slam[k] = sgn(l);
+      if (l > 0) lambda[k] = l, hit[k] = true;
+    } else if (sa[k] == 0) {  // along the line: the nearer end ahead
+      const mpq_class la = (dx * ax + dy * ay) / (dx * dx + dy * dy), lb = (dx * bx + dy * by) / (dx * dx + dy * dy);
+      if (la > 0 && lb > 0) lambda[k] = std::min(la, lb), hit[k] = true;
+    }
+  }
+  std::vector<bool> is_cand(n, false);
+  for (std::uint32_t c : cand) {
+    ++st.candidates;
+    const std::uint32_t k = c & ~NfpFlat::kFlags;
+    is_cand[k] = true;
+    if (c & NfpFlat::kInside) {
+      ++st.crossing;
+      ASSERT_TRUE(sa[k] * sb[k] < 0 && slam[k] > 0) << what << " piece " << k << " flagged crossing, t = " << t.transpose() << " d = " << d.transpose();
+      if (std::min(mpq_class(d.x() * (F.px0[k] - t.x()) + d.y() * (F.py0[k] - t.y())),
+                   mpq_class(d.x() * (F.px1[k] - t.x()) + d.y() * (F.py1[k] - t.y()))) <= 0)
+        ++st.spanning;  // certified by the side of t, not by the dot products
+    }
+    if (c & NfpFlat::kFromO) {
+      ++st.from_o;
+      ASSERT_TRUE((c & NfpFlat::kInside) && sa[k] < 0) << what << " piece " << k << " flagged from O, t = " << t.transpose();
+    }
+  }
+  if (!N.overlapping_exact(t)) return;
+  const mpq_class* best = nullptr;
+  for (std::size_t k = 0; k < n; ++k)
+    if (hit[k] && (!best || lambda[k] < *best)) best = &lambda[k];
+  ASSERT_TRUE(best) << what << " t ∈ O but the ray hits no piece, t = " << t.transpose();
+  for (std::size_t k = 0; k < n; ++k)
+    if (hit[k] && lambda[k] == *best) {
+      ++st.completeness;
+      ASSERT_TRUE(is_cand[k]) << what << " first piece " << k << " not a candidate, t = " << t.transpose() << " d = " << d.transpose();
+    }
+}
+
+void check_first_hits_pair(const NoFitPolygon2& nfp, std::mt19937_64& rng, int random, HitStats& st, const std::string& what) {
+  const auto& N = nfp_impl(nfp);
+  if (N.pieces.empty()) return;
+  Vec2 lo = N.pieces[0].a, hi = lo;
+  for (const auto& pc : N.pieces) lo = lo.cwiseMin(pc.a).cwiseMin(pc.b), hi = hi.cwiseMax(pc.a).cwiseMax(pc.b);
+  std::uniform_real_distribution<double> ux(lo.x(), hi.x()), uy(lo.y(), hi.y()), ua(0, 2 * M_PI);
+  for (int k = 0; k < random; ++k) {
+    const double a = ua(rng);
+    check_first_hits(nfp, Vec2(ux(rng), uy(rng)), Vec2(std::cos(a), std::sin(a)), st, what);
+  }
+  auto turned = [](const Vec2& v, double a) { return Vec2(std::cos(a) * v.x() - std::sin(a) * v.y(), std::sin(a) * v.x() + std::cos(a) * v.y()); };
+  for (std::size_t k = 0; k < N.pieces.size(); k += std::max<std::size_t>(1, N.pieces.size() / 8)) {
+    const auto& pc = N.pieces[k];
+    const Vec2 e = pc.b - pc.a, nrm(-e.y(), e.x());
+    if (e.x() == 0 && e.y() == 0) continue;
+    for (double off : {0x1p-40, 0x1p-20, 0.01, 0.5})
+      for (double side : {1.0, -1.0}) {
+        const Vec2 t = 0.5 * (pc.a + pc.b) + side * off * nrm;
+        for (double dir : {1.0, -1.0})
+          for (double a : {0.0, 0x1p-30, -0x1p-30, 0.01, -0.01, 0.3, -0.3}) check_first_hits(nfp, t, turned(dir * e, a), st, what);
+      }
+  }
+}
+
+TEST(NfpFastPath, FirstHitCandidatesAgainstExact) {
+  std::mt19937_64 rng(19011);
+  HitStats st;
+  const auto albano = instance("albano.json");
+  for (std::size_t i = 0; i < albano.size(); i += 3)
+    for (std::size_t j = 1; j < albano.size(); j += 4)
+      check_first_hits_pair(NoFitPolygon2(albano[i], albano[j]), rng, 20, st, "albano " + std::to_string(i) + " " + std::to_string(j));
+  for (const std::string file : {"shirts", "trousers"}) {
+    const auto pieces = instance(file + ".json");
+    for (double deg : {0.0, 30.0}) {
+      const double a = deg * M_PI / 180, c = std::cos(a), s = std::sin(a);
+      const std::size_t i = rng() % pieces.size(), j = rng() % pieces.size();
+      const Polygon Q = mapped(pieces[j], [&](const Vec2& p) { return Vec2(c * p.x() - s * p.y(), s * p.x() + c * p.y()); });
+      check_first_hits_pair(NoFitPolygon2(pieces[i], Q), rng, 20, st, file + " rotated " + std::to_string(deg));
+    }
+  }
+  check_first_hits_pair(NoFitPolygon2(Polygon::simple(std::vector<Vec2>{{0, 0}, {0.7, 0}, {0.7, 0.8}, {0.5, 0.8}, {0.5, 0.2}, {0.4, 0.2}, {0.4, 0.8}, {0, 0.8}}, "thin U"),
+                                      Polygon::simple(std::vector<Vec2>{{0, 0}, {0.1, 0}, {0.1, 0.3}, {0, 0.3}}, "thin block")),
+                        rng, 40, st, "thin slot");
+  std::cout << "[first-hit flags] " << st.rays << " rays, " << st.candidates << " candidates: " << st.crossing << " crossing ("
+            << st.spanning << " spanning t's perpendicular), " << st.from_o << " from O; " << st.completeness << " first pieces found\n";
+  EXPECT_GT(st.spanning, st.rays / 50);  // the side certificate is exercised
+  EXPECT_GT(st.candidates, st.crossing);  // and undecided pieces occur
+  EXPECT_GT(st.completeness, st.rays / 4);
 }
 
 }  // namespace
