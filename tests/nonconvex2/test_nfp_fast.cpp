@@ -36,6 +36,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/isa.hpp"
 #include "nfp_shapes.hpp"
 #include "nonconvex2/nfp_impl.hpp"
 #include "nonconvex2/query.hpp"
@@ -1140,14 +1141,21 @@ TEST(NfpFastPath, DirectionScalingMatchesLdexp) {
                           {0x1p1023, -0x1p-1074}, {0x1p-1022, 0x1.8p-1074}, {0x1p1022, 0x1.3p-60}, {0x1.2345p1000, 0x1.5p-70}};
   for (int k = 0; k < 200000; ++k) ds.emplace_back(std::ldexp(u(rng), ex(rng)), std::ldexp(u(rng), ex(rng)));
   std::size_t compared = 0;
+  const bool saved = pendepth::isa::use_v3();
   for (const Vec2& d : ds) {
     if (d.x() == 0 && d.y() == 0) continue;
     ++compared;
     ASSERT_TRUE(same(pendepth::nonconvex2::check_and_scale(Vec2(0, 0), d), reference(d))) << std::hexfloat << d.transpose();
-    // norm_accurate's direct DD tier against the full tiered evaluation (the former code).
+    // norm_accurate's direct DD tier against the full tiered evaluation (the former code), on the
+    // portable path and on the x86-64-v3 clone where the processor has it.
     for (const Vec2& v : {d, pendepth::nonconvex2::check_and_scale(Vec2(0, 0), d)}) {
       const double want = std::sqrt(pendepth::exact::accurate_value([&](auto L) { return L(v.x()) * L(v.x()) + L(v.y()) * L(v.y()); }));
-      ASSERT_TRUE(same(pendepth::nonconvex2::norm_accurate(v), want)) << std::hexfloat << v.transpose();
+      for (bool v3 : {false, pendepth::isa::v3_available()}) {
+        pendepth::isa::use_v3() = v3;
+        const double got = pendepth::nonconvex2::norm_accurate(v);
+        pendepth::isa::use_v3() = saved;
+        ASSERT_TRUE(same(got, want)) << std::hexfloat << v.transpose() << " v3 " << v3;
+      }
     }
   }
   EXPECT_GT(compared, 200000u);
