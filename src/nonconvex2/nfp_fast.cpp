@@ -36,12 +36,13 @@
 //   [min − e_d, max + e_d] of the end values; a piece with ends certified on opposite sides and
 //   min − e_d > 0 is hit at some λ ≤ (max + e_d)/|d|²: U is the least such bound, and only pieces
 //   with min − e_d ≤ U (and max + e_d > 0) can be hit first. A piece with ends certified on
-//   opposite sides but min − e_d ≤ 0 (it spans t's perpendicular: a tenth to a fifth of the
-//   candidates on nesting pieces, each decided exactly before) meets the line at
-//   λ = cross(b − a, t − a)/cross(d, b − a), where cross(d, b − a) = cross(d, b − t) − cross(d, a − t)
-//   has the certified sign of cb − ca: with cross(b − a, t − a) certified by the bound of
-//   nearest_candidates (side_of_piece, 2⁻⁴⁰·M²) it is hit ahead (then as a piece with min − e_d > 0,
-//   λ ≤ (max + e_d)/|d|²) or behind t (dropped); else it stays an uncertified candidate.
+//   opposite sides but min − e_d ≤ 0 spans t's perpendicular (a third of the candidates on the
+//   bench's nesting pieces, half of them crossing behind t, each decided exactly before): it meets
+//   the line at λ = cross(b − a, t − a)/cross(d, b − a), and cross(d, b − a) = cb − ca has the
+//   certified sign of cb − ca (ca, cb: cross(d, a − t), cross(d, b − t)); with cross(b − a, t − a)
+//   certified by nearest_candidates' bound (side_of_piece, 2⁻⁴⁰·M²) it is hit ahead (then as a
+//   piece with min − e_d > 0: λ ≤ (max + e_d)/|d|²) or behind t (dropped); else it stays an
+//   uncertified candidate.
 // inside_by_candidates (nfp_impl.hpp) — the overlap test skipped: let δ be the least distance from
 //   t to a piece (σ) or λ* the ray's first hit (σ_d). The pieces cover ∂O (every boundary point of
 //   the union of open pair sums is uncovered on some sum's edge), so the open disk of radius δ

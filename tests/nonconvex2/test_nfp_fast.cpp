@@ -22,7 +22,10 @@
 // rationals (removing it, or shrinking it by 2¹³, fails); ReflexWedges places t about every ring
 // vertex (on the bisector to either side, at the vertex, ulps off, scattered near it) so that σ's
 // shared-vertex wedge (NfpFlat::inside_by_nearest) fires, and checks it only ever does for t ∈ O
-// (linking convex vertices too fails it and ExactFits). Pinned seeds.
+// (linking convex vertices too fails it and ExactFits); FirstHitCandidatesAgainstExact checks σ_d's
+// candidate flags (crossing ahead, from O) and that the first pieces hit are candidates against
+// rationals, with t beside pieces and rays nearly along them (the crossing's side certified by
+// side_of_piece). Pinned seeds.
 #include <pendepth/nfp2.hpp>
 
 #include <gtest/gtest.h>
