@@ -603,6 +603,36 @@ mpq_class exact_end_rel(const pendepth::nonconvex2::NfpPiece& pc, const pendepth
   return mpq_class((o * dd + n * dv).v / dd.v);
 }
 
+// The inputs of the candidate-flag suites: every third × fourth ordered albano pair, two random
+// shirts and trousers pairs each with Q turned by each of `degrees` (rounded: ends not
+// representable), and a thin slot (a non-dyadic exact fit, 40 random placements);
+// `check(nfp, random, what)` for each, `random` placements asked of the nesting pairs.
+template <class Check>
+void flag_inputs(std::mt19937_64& rng, std::initializer_list<double> degrees, int random, Check check) {
+  const auto albano = instance("albano.json");
+  for (std::size_t i = 0; i < albano.size(); i += 3)
+    for (std::size_t j = 1; j < albano.size(); j += 4)
+      check(NoFitPolygon2(albano[i], albano[j]), random, "albano " + std::to_string(i) + " " + std::to_string(j));
+  for (const std::string file : {"shirts", "trousers"}) {
+    const auto pieces = instance(file + ".json");
+    for (double deg : degrees) {
+      const double a = deg * M_PI / 180, c = std::cos(a), s = std::sin(a);
+      const std::size_t i = rng() % pieces.size(), j = rng() % pieces.size();
+      const Polygon Q = mapped(pieces[j], [&](const Vec2& p) { return Vec2(c * p.x() - s * p.y(), s * p.x() + c * p.y()); });
+      check(NoFitPolygon2(pieces[i], Q), random, file + " rotated " + std::to_string(deg));
+    }
+  }
+  check(NoFitPolygon2(Polygon::simple(std::vector<Vec2>{{0, 0}, {0.7, 0}, {0.7, 0.8}, {0.5, 0.8}, {0.5, 0.2}, {0.4, 0.2}, {0.4, 0.8}, {0, 0.8}}, "thin U"),
+                      Polygon::simple(std::vector<Vec2>{{0, 0}, {0.1, 0}, {0.1, 0.3}, {0, 0.3}}, "thin block")),
+        40, "thin slot");
+}
+
+// The box of the pieces' rounded ends.
+void piece_box(const NoFitPolygon2::Impl& N, Vec2& lo, Vec2& hi) {
+  lo = hi = N.pieces[0].a;
+  for (const auto& pc : N.pieces) lo = lo.cwiseMin(pc.a).cwiseMin(pc.b), hi = hi.cwiseMax(pc.a).cwiseMax(pc.b);
+}
+
 struct FlagStats {
   std::size_t queries = 0, candidates = 0, inside = 0, before = 0, beyond = 0, unflagged = 0, wrong_unguarded = 0;
   double worst = 0;  // largest |exact − floating| / B over the dot values checked
@@ -689,8 +719,8 @@ void check_flags(const NoFitPolygon2& nfp, const Vec2& t, FlagStats& st, const s
 void check_flags_pair(const NoFitPolygon2& nfp, std::mt19937_64& rng, int random, FlagStats& st, const std::string& what) {
   const auto& N = nfp_impl(nfp);
   if (N.pieces.empty()) return;
-  Vec2 lo = N.pieces[0].a, hi = lo;
-  for (const auto& pc : N.pieces) lo = lo.cwiseMin(pc.a).cwiseMin(pc.b), hi = hi.cwiseMax(pc.a).cwiseMax(pc.b);
+  Vec2 lo, hi;
+  piece_box(N, lo, hi);
   std::uniform_real_distribution<double> ux(lo.x(), hi.x()), uy(lo.y(), hi.y()), u(0.01, 1);
   for (int k = 0; k < random; ++k) check_flags(nfp, Vec2(ux(rng), uy(rng)), st, what);
   // Perpendiculars at the ends of a few pieces: the projection falls on the end, or ulps beside.
@@ -705,22 +735,9 @@ void check_flags_pair(const NoFitPolygon2& nfp, std::mt19937_64& rng, int random
 TEST(NfpFastPath, NearestCandidateFlagsAgainstExact) {
   std::mt19937_64 rng(19007);
   FlagStats st;
-  const auto albano = instance("albano.json");
-  for (std::size_t i = 0; i < albano.size(); i += 3)
-    for (std::size_t j = 1; j < albano.size(); j += 4)
-      check_flags_pair(NoFitPolygon2(albano[i], albano[j]), rng, 10, st, "albano " + std::to_string(i) + " " + std::to_string(j));
-  for (const std::string file : {"shirts", "trousers"}) {
-    const auto pieces = instance(file + ".json");
-    for (double deg : {30.0, 117.0}) {
-      const double a = deg * M_PI / 180, c = std::cos(a), s = std::sin(a);
-      const std::size_t i = rng() % pieces.size(), j = rng() % pieces.size();
-      const Polygon Q = mapped(pieces[j], [&](const Vec2& p) { return Vec2(c * p.x() - s * p.y(), s * p.x() + c * p.y()); });
-      check_flags_pair(NoFitPolygon2(pieces[i], Q), rng, 10, st, file + " rotated " + std::to_string(deg));
-    }
-  }
-  check_flags_pair(NoFitPolygon2(Polygon::simple(std::vector<Vec2>{{0, 0}, {0.7, 0}, {0.7, 0.8}, {0.5, 0.8}, {0.5, 0.2}, {0.4, 0.2}, {0.4, 0.8}, {0, 0.8}}, "thin U"),
-                                 Polygon::simple(std::vector<Vec2>{{0, 0}, {0.1, 0}, {0.1, 0.3}, {0, 0.3}}, "thin block")),
-                   rng, 40, st, "thin slot");
+  flag_inputs(rng, {30.0, 117.0}, 10, [&](const NoFitPolygon2& nfp, int random, const std::string& what) {
+    check_flags_pair(nfp, rng, random, st, what);
+  });
   std::cout << "[nearest flags] " << st.queries << " placements, " << st.candidates << " candidates: " << st.inside << " inside, "
             << st.before << " before lo, " << st.beyond << " beyond hi, " << st.unflagged << " decided exactly; floating sign wrong "
             << "without the bound " << st.wrong_unguarded << " times; worst error / bound " << st.worst << "\n";
@@ -808,8 +825,8 @@ void check_first_hits(const NoFitPolygon2& nfp, const Vec2& t, const Vec2& d_in,
 void check_first_hits_pair(const NoFitPolygon2& nfp, std::mt19937_64& rng, int random, HitStats& st, const std::string& what) {
   const auto& N = nfp_impl(nfp);
   if (N.pieces.empty()) return;
-  Vec2 lo = N.pieces[0].a, hi = lo;
-  for (const auto& pc : N.pieces) lo = lo.cwiseMin(pc.a).cwiseMin(pc.b), hi = hi.cwiseMax(pc.a).cwiseMax(pc.b);
+  Vec2 lo, hi;
+  piece_box(N, lo, hi);
   std::uniform_real_distribution<double> ux(lo.x(), hi.x()), uy(lo.y(), hi.y()), ua(0, 2 * M_PI);
   for (int k = 0; k < random; ++k) {
     const double a = ua(rng);
@@ -832,22 +849,9 @@ void check_first_hits_pair(const NoFitPolygon2& nfp, std::mt19937_64& rng, int r
 TEST(NfpFastPath, FirstHitCandidatesAgainstExact) {
   std::mt19937_64 rng(19011);
   HitStats st;
-  const auto albano = instance("albano.json");
-  for (std::size_t i = 0; i < albano.size(); i += 3)
-    for (std::size_t j = 1; j < albano.size(); j += 4)
-      check_first_hits_pair(NoFitPolygon2(albano[i], albano[j]), rng, 20, st, "albano " + std::to_string(i) + " " + std::to_string(j));
-  for (const std::string file : {"shirts", "trousers"}) {
-    const auto pieces = instance(file + ".json");
-    for (double deg : {0.0, 30.0}) {
-      const double a = deg * M_PI / 180, c = std::cos(a), s = std::sin(a);
-      const std::size_t i = rng() % pieces.size(), j = rng() % pieces.size();
-      const Polygon Q = mapped(pieces[j], [&](const Vec2& p) { return Vec2(c * p.x() - s * p.y(), s * p.x() + c * p.y()); });
-      check_first_hits_pair(NoFitPolygon2(pieces[i], Q), rng, 20, st, file + " rotated " + std::to_string(deg));
-    }
-  }
-  check_first_hits_pair(NoFitPolygon2(Polygon::simple(std::vector<Vec2>{{0, 0}, {0.7, 0}, {0.7, 0.8}, {0.5, 0.8}, {0.5, 0.2}, {0.4, 0.2}, {0.4, 0.8}, {0, 0.8}}, "thin U"),
-                                      Polygon::simple(std::vector<Vec2>{{0, 0}, {0.1, 0}, {0.1, 0.3}, {0, 0.3}}, "thin block")),
-                        rng, 40, st, "thin slot");
+  flag_inputs(rng, {0.0, 30.0}, 20, [&](const NoFitPolygon2& nfp, int random, const std::string& what) {
+    check_first_hits_pair(nfp, rng, random, st, what);
+  });
   std::cout << "[first-hit flags] " << st.rays << " rays, " << st.candidates << " candidates: " << st.crossing << " crossing ("
             << st.spanning << " spanning t's perpendicular), " << st.from_o << " from O; " << st.completeness << " first pieces found\n";
   EXPECT_GT(st.spanning, st.rays / 50);  // the side certificate is exercised
