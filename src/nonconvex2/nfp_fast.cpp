@@ -38,8 +38,8 @@
 //   with min − e_d ≤ U (and max + e_d > 0) can be hit first. A piece with ends certified on
 //   opposite sides but min − e_d ≤ 0 spans t's perpendicular (a third of the candidates on the
 //   bench's nesting pieces, half of them crossing behind t, each decided exactly before): it meets
-//   the line at λ = cross(b − a, t − a)/cross(d, b − a), and cross(d, b − a) = cb − ca has the
-//   certified sign of cb − ca (ca, cb: cross(d, a − t), cross(d, b − t)); with cross(b − a, t − a)
+//   the line at λ = cross(b − a, t − a)/cross(d, b − a), where cross(d, b − a) = cb − ca (ca, cb:
+//   cross(d, a − t), cross(d, b − t), certified of opposite signs) has a known sign; with cross(b − a, t − a)
 //   certified by nearest_candidates' bound (side_of_piece, 2⁻⁴⁰·M²) it is hit ahead (then as a
 //   piece with min − e_d > 0: λ ≤ (max + e_d)/|d|²) or behind t (dropped); else it stays an
 //   uncertified candidate.
