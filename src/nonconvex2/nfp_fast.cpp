@@ -35,7 +35,14 @@
 //   are beyond e_d on one side of the line misses it; a hit at λ has dot = λ·|d|² within
 //   [min − e_d, max + e_d] of the end values; a piece with ends certified on opposite sides and
 //   min − e_d > 0 is hit at some λ ≤ (max + e_d)/|d|²: U is the least such bound, and only pieces
-//   with min − e_d ≤ U (and max + e_d > 0) can be hit first.
+//   with min − e_d ≤ U (and max + e_d > 0) can be hit first. A piece with ends certified on
+//   opposite sides but min − e_d ≤ 0 spans t's perpendicular (a third of the candidates on the
+//   bench's nesting pieces, half of them crossing behind t, each decided exactly before): it meets
+//   the line at λ = cross(b − a, t − a)/cross(d, b − a), where cross(d, b − a) = cb − ca (ca, cb:
+//   cross(d, a − t), cross(d, b − t), certified of opposite signs) has a known sign; with cross(b − a, t − a)
+//   certified by nearest_candidates' bound (side_of_piece, 2⁻⁴⁰·M²) it is hit ahead (then as a
+//   piece with min − e_d > 0: λ ≤ (max + e_d)/|d|²) or behind t (dropped); else it stays an
+//   uncertified candidate.
 // inside_by_candidates (nfp_impl.hpp) — the overlap test skipped: let δ be the least distance from
 //   t to a piece (σ) or λ* the ray's first hit (σ_d). The pieces cover ∂O (every boundary point of
 //   the union of open pair sums is uncovered on some sum's edge), so the open disk of radius δ
@@ -336,7 +343,7 @@ void NfpFlat::nearest_candidates(const Vec2& t, std::vector<std::uint32_t>& out)
       // gets no flag).
       const double wx = tx - x0[k], wy = ty - y0[k];
       // cross(b − a, t − a) against B likewise: t strictly on O's side (the piece's left).
-      const double dot = wx * ex[k] + wy * ey[k], l2 = ex[k] * ex[k] + ey[k] * ey[k], cross = ex[k] * wy - ey[k] * wx;
+      const double dot = wx * ex[k] + wy * ey[k], l2 = ex[k] * ex[k] + ey[k] * ey[k], cross = side_of_piece(k, tx, ty);
       const std::uint32_t flag = dot > B && l2 - dot > B ? kInside | (cross > B ? kFromO : 0u) : dot < -B ? kBeforeLo : l2 - dot < -B ? kBeyondHi : 0u;
       out.push_back(std::uint32_t(k) | flag);
     }
@@ -344,7 +351,7 @@ void NfpFlat::nearest_candidates(const Vec2& t, std::vector<std::uint32_t>& out)
 
 void NfpFlat::first_hit_candidates(const Vec2& t, const Vec2& d, std::vector<std::uint32_t>& out) const {
   const double tx = t.x(), ty = t.y(), dx = d.x(), dy = d.y();
-  const double e = 0x1p-40 * bound_m(t, rmax) * (std::abs(dx) + std::abs(dy));
+  const double M = bound_m(t, rmax), e = 0x1p-40 * M * (std::abs(dx) + std::abs(dy)), B = 0x1p-40 * M * M;
   const std::size_t n = px0.size();
   const double *x0 = px0.data(), *y0 = py0.data(), *x1 = px1.data(), *y1 = py1.data();
   double U = INFINITY;
@@ -357,7 +364,15 @@ void NfpFlat::first_hit_candidates(const Vec2& t, const Vec2& d, std::vector<std
     const double pa = dx * ax + dy * ay, pb = dx * bx + dy * by;
     const double lo = std::min(pa, pb) - e, hi = std::max(pa, pb) + e;
     if (hi <= 0) return;  // behind t
-    const bool crosses = lo > 0 && ((ca > e && cb < -e) || (ca < -e && cb > e));
+    const bool opposite = (ca > e && cb < -e) || (ca < -e && cb > e);
+    bool crosses = opposite && lo > 0;
+    if (opposite && !crosses) {
+      // The piece spans t's perpendicular: the crossing's λ has the sign of cross(b − a, t − a)
+      // when a is right of the ray (of its opposite when left): ahead, behind, or undecided.
+      const double s = ca < 0 ? side_of_piece(k, tx, ty) : -side_of_piece(k, tx, ty);
+      if (s < -B) return;  // crosses the line behind t
+      crosses = s > B;
+    }
     if (crosses) U = std::min(U, hi);
     // From O's side (the piece's left) to its right: a strictly right of the ray, b strictly left.
     if (lo <= U) out.push_back(std::uint32_t(k) | (crosses ? kInside | (ca < -e ? kFromO : 0u) : 0u)), los[kept++] = lo;

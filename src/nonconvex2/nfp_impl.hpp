@@ -183,6 +183,10 @@ struct NfpFlat {
   /// of the exact first pieces), flagged kInside when the ray certainly crosses the piece's
   /// interior at some λ > 0 (the piece's ends strictly on either side of the ray's line).
   void first_hit_candidates(const Vec2& t, const Vec2& d, std::vector<std::uint32_t>& out) const;
+  /// cross(b − a, t − a) of piece k in doubles (from the rounded b − a): within 2⁻⁴⁰·M² of the
+  /// exact piece's (M = max(|t|∞, rmax); nfp_fast.cpp's header), so beyond that bound t is
+  /// certainly strictly left (> 0) or right (< 0) of the piece's line.
+  double side_of_piece(std::size_t k, double tx, double ty) const { return pex[k] * (ty - py0[k]) - pey[k] * (tx - px0[k]); }
   /// σ² and the translation from t to its projection on piece k's edge line, each RN(exact)
   /// (geometry/rounded.hpp), from the piece's double-doubles with a static error bound
   /// (nfp_value.cpp); false (nothing certified) when a value is too close to a rounding midpoint

@@ -117,9 +117,19 @@ inline bool in_range(double x) {
 }
 
 // W = t − (o + ol) as a double-double with its error bound (0 when exact).
+// With ol = ±0 (o a double: integer and most real data) the result is (s + 0, e + 0) for
+// two_sum(t, −o) = s + e, bit for bit what the two further two-sums give (r = e + ∓0 is e up to a
+// zero's sign, RN(s + r) = s as s = RN(t − o) and s + e = t − o, the error +0 + r; a zero's sign
+// normalised by + 0 as there; err 0), without their latency (a third of the chain before σ_d's
+// crossing and σ's axis-parallel projection).
 inline void diff(double t, double o, double ol, D2& w, double& err) {
   double s, e, r, r2;
   two_sum(t, -o, s, e);
+  if (ol == 0) {
+    w = {s + 0.0, e + 0.0};
+    err = 0;
+    return;
+  }
   two_sum(e, -ol, r, r2);
   two_sum(s, r, w.hi, w.lo);
   err = r2 == 0 ? 0.0 : 0x1p-52 * std::abs(r);  // 0: W = s + r exactly

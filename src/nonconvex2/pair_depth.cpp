@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "geometry/exact.hpp"
+#include "geometry/isa.hpp"
 #include "nonconvex2/boundary_distance.hpp"
 #include "nonconvex2/pair_sums.hpp"
 #include "nonconvex2/query.hpp"
@@ -153,15 +154,41 @@ Vec2 check_and_scale(const Vec2& t, const Vec2& d) {
 
 void check_point(const Vec2& t) { require_finite(t, "placement t"); }
 
+namespace {
+
+template <class L>
+auto norm_squared(const Vec2& d, L lift) {
+  return lift(d.x()) * lift(d.x()) + lift(d.y()) * lift(d.y());
+}
+
+// accurate_value(norm_squared) starts with the Fl tier, which never certifies this sum of two
+// squares (its bound is at least u·|v| plus 2⁻¹⁰⁰⁰ from each product, above the u·|v| it requires),
+// then takes the DD tier's hi when its bound allows: that tier directly, the same operations and
+// test (the same double); false where the full chain must decide.
+bool norm_dd(const Vec2& d, double& norm) {
+  const exact::DD s = norm_squared(d, exact::LiftDD{});
+  if (!(exact::dd_finite(s) && exact::safe_bound(s.e) <= std::abs(s.hi) * 0x1p-54)) return false;
+  norm = std::sqrt(s.hi);
+  return true;
+}
+
+#if PENDEPTH_V3_CLONES
+// The same compiled for x86-64-v3 (geometry/isa.hpp): the products' residuals (std::fma, exact
+// either way) by the instruction instead of libm's call, which was most of this function's ~8 %
+// of a lean σ_d query on nesting pieces; the same double.
+PENDEPTH_V3_CLONE bool norm_dd_v3(const Vec2& d, double& norm) { return norm_dd(d, norm); }
+#endif
+
+}  // namespace
+
 double norm_accurate(const Vec2& d) {
-  const auto f = [&](auto L) { return L(d.x()) * L(d.x()) + L(d.y()) * L(d.y()); };
-  // accurate_value(f) starts with the Fl tier, which never certifies this sum of two squares (its
-  // bound is at least u·|v| plus 2⁻¹⁰⁰⁰ from each product, above the u·|v| it requires), then takes
-  // the DD tier's hi when its bound allows: that tier directly, the same operations and test
-  // (the same double); else the full chain as before.
-  const exact::DD s = f(exact::LiftDD{});
-  if (exact::dd_finite(s) && exact::safe_bound(s.e) <= std::abs(s.hi) * 0x1p-54) return std::sqrt(s.hi);
-  return std::sqrt(exact::accurate_value(f));
+  double norm;
+#if PENDEPTH_V3_CLONES
+  if (isa::use_v3() ? norm_dd_v3(d, norm) : norm_dd(d, norm)) return norm;
+#else
+  if (norm_dd(d, norm)) return norm;
+#endif
+  return std::sqrt(exact::accurate_value([&](auto L) { return norm_squared(d, L); }));
 }
 
 int end_on_ray(const Line& E, const Vec2& t, const Vec2& d) {

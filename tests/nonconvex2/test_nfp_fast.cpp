@@ -22,7 +22,10 @@
 // rationals (removing it, or shrinking it by 2¹³, fails); ReflexWedges places t about every ring
 // vertex (on the bisector to either side, at the vertex, ulps off, scattered near it) so that σ's
 // shared-vertex wedge (NfpFlat::inside_by_nearest) fires, and checks it only ever does for t ∈ O
-// (linking convex vertices too fails it and ExactFits). Pinned seeds.
+// (linking convex vertices too fails it and ExactFits); FirstHitCandidatesAgainstExact checks σ_d's
+// candidate flags (crossing ahead, from O) and that the first pieces hit are candidates against
+// rationals, with t beside pieces and rays nearly along them (the crossing's side certified by
+// side_of_piece). Pinned seeds.
 #include <pendepth/nfp2.hpp>
 
 #include <gtest/gtest.h>
@@ -36,6 +39,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/isa.hpp"
 #include "nfp_shapes.hpp"
 #include "nonconvex2/nfp_impl.hpp"
 #include "nonconvex2/query.hpp"
@@ -589,6 +593,46 @@ namespace {
 // removing it (B = 0) fails (2), and shrinking it by more than the reported margin fails (3).
 // Placements: random, at piece ends and their perpendiculars with ±1–2 ulp moves (projections on
 // or next to an end), on albano pairs, rotated pieces (ends not representable) and an exact fit.
+// The exact end `p` of piece pc minus t on one axis (rationals).
+mpq_class exact_end_rel(const pendepth::nonconvex2::NfpPiece& pc, const pendepth::nonconvex2::Param& p, const Vec2& t, int axis) {
+  using namespace pendepth::nonconvex2;
+  using pendepth::exact::LiftQ;
+  auto [n, dd] = param_nd(p, pc.E, t, LiftQ{});
+  auto o = axis == 0 ? LiftQ{}(pc.E.o1.x()) + LiftQ{}(pc.E.o2.x()) - LiftQ{}(t.x()) : LiftQ{}(pc.E.o1.y()) + LiftQ{}(pc.E.o2.y()) - LiftQ{}(t.y());
+  auto dv = axis == 0 ? ray_dx(pc.E, LiftQ{}) : ray_dy(pc.E, LiftQ{});
+  return mpq_class((o * dd + n * dv).v / dd.v);
+}
+
+// The inputs of the candidate-flag suites: every third × fourth ordered albano pair, two random
+// shirts and trousers pairs each with Q turned by each of `degrees` (rounded: ends not
+// representable), and a thin slot (a non-dyadic exact fit, 40 random placements);
+// `check(nfp, random, what)` for each, `random` placements asked of the nesting pairs.
+template <class Check>
+void flag_inputs(std::mt19937_64& rng, std::initializer_list<double> degrees, int random, Check check) {
+  const auto albano = instance("albano.json");
+  for (std::size_t i = 0; i < albano.size(); i += 3)
+    for (std::size_t j = 1; j < albano.size(); j += 4)
+      check(NoFitPolygon2(albano[i], albano[j]), random, "albano " + std::to_string(i) + " " + std::to_string(j));
+  for (const std::string file : {"shirts", "trousers"}) {
+    const auto pieces = instance(file + ".json");
+    for (double deg : degrees) {
+      const double a = deg * M_PI / 180, c = std::cos(a), s = std::sin(a);
+      const std::size_t i = rng() % pieces.size(), j = rng() % pieces.size();
+      const Polygon Q = mapped(pieces[j], [&](const Vec2& p) { return Vec2(c * p.x() - s * p.y(), s * p.x() + c * p.y()); });
+      check(NoFitPolygon2(pieces[i], Q), random, file + " rotated " + std::to_string(deg));
+    }
+  }
+  check(NoFitPolygon2(Polygon::simple(std::vector<Vec2>{{0, 0}, {0.7, 0}, {0.7, 0.8}, {0.5, 0.8}, {0.5, 0.2}, {0.4, 0.2}, {0.4, 0.8}, {0, 0.8}}, "thin U"),
+                      Polygon::simple(std::vector<Vec2>{{0, 0}, {0.1, 0}, {0.1, 0.3}, {0, 0.3}}, "thin block")),
+        40, "thin slot");
+}
+
+// The box of the pieces' rounded ends.
+void piece_box(const NoFitPolygon2::Impl& N, Vec2& lo, Vec2& hi) {
+  lo = hi = N.pieces[0].a;
+  for (const auto& pc : N.pieces) lo = lo.cwiseMin(pc.a).cwiseMin(pc.b), hi = hi.cwiseMax(pc.a).cwiseMax(pc.b);
+}
+
 struct FlagStats {
   std::size_t queries = 0, candidates = 0, inside = 0, before = 0, beyond = 0, unflagged = 0, wrong_unguarded = 0;
   double worst = 0;  // largest |exact − floating| / B over the dot values checked
@@ -630,18 +674,13 @@ void check_flags(const NoFitPolygon2& nfp, const Vec2& t, FlagStats& st, const s
   // The floating dot values against the exact ends A, B (rationals), on every piece.
   for (std::size_t k = 0; k < N.pieces.size(); ++k) {
     const NfpPiece& pc = N.pieces[k];
-    auto rel = [&](const Param& p, int axis) {  // (end − t) on one axis
-      auto [n, dd] = param_nd(p, pc.E, t, LiftQ{});
-      auto o = axis == 0 ? LiftQ{}(pc.E.o1.x()) + LiftQ{}(pc.E.o2.x()) - LiftQ{}(t.x()) : LiftQ{}(pc.E.o1.y()) + LiftQ{}(pc.E.o2.y()) - LiftQ{}(t.y());
-      auto dv = axis == 0 ? ray_dx(pc.E, LiftQ{}) : ray_dy(pc.E, LiftQ{});
-      return mpq_class((o * dd + n * dv).v / dd.v);
-    };
-    const mpq_class ax = rel(pc.lo, 0), ay = rel(pc.lo, 1), bx = rel(pc.hi, 0), by = rel(pc.hi, 1);
+    const mpq_class ax = exact_end_rel(pc, pc.lo, t, 0), ay = exact_end_rel(pc, pc.lo, t, 1), bx = exact_end_rel(pc, pc.hi, t, 0),
+                    by = exact_end_rel(pc, pc.hi, t, 1);
     const mpq_class dot_exact = -(ax * (bx - ax) + ay * (by - ay));       // (t − A)·(B − A)
     const mpq_class rest_exact = bx * (bx - ax) + by * (by - ay);         // (B − t)·(B − A)
     const double wx = t.x() - F.px0[k], wy = t.y() - F.py0[k], ex = F.pex[k], ey = F.pey[k];
     const mpq_class cross_exact = (bx - ax) * -ay - (by - ay) * -ax;      // (B − A) × (t − A)
-    const double dot = wx * ex + wy * ey, rest = ex * ex + ey * ey - dot, cross = ex * wy - ey * wx;
+    const double dot = wx * ex + wy * ey, rest = ex * ex + ey * ey - dot, cross = F.side_of_piece(k, t.x(), t.y());
     for (const auto& [f, x] : {std::pair{dot, dot_exact}, std::pair{rest, rest_exact}, std::pair{cross, cross_exact}}) {
       const mpq_class err = abs(x - mpq_class(f));
       ASSERT_LE(err, mpq_class(B)) << what << " piece " << k << " t = " << t.transpose();
@@ -680,8 +719,8 @@ void check_flags(const NoFitPolygon2& nfp, const Vec2& t, FlagStats& st, const s
 void check_flags_pair(const NoFitPolygon2& nfp, std::mt19937_64& rng, int random, FlagStats& st, const std::string& what) {
   const auto& N = nfp_impl(nfp);
   if (N.pieces.empty()) return;
-  Vec2 lo = N.pieces[0].a, hi = lo;
-  for (const auto& pc : N.pieces) lo = lo.cwiseMin(pc.a).cwiseMin(pc.b), hi = hi.cwiseMax(pc.a).cwiseMax(pc.b);
+  Vec2 lo, hi;
+  piece_box(N, lo, hi);
   std::uniform_real_distribution<double> ux(lo.x(), hi.x()), uy(lo.y(), hi.y()), u(0.01, 1);
   for (int k = 0; k < random; ++k) check_flags(nfp, Vec2(ux(rng), uy(rng)), st, what);
   // Perpendiculars at the ends of a few pieces: the projection falls on the end, or ulps beside.
@@ -696,22 +735,9 @@ void check_flags_pair(const NoFitPolygon2& nfp, std::mt19937_64& rng, int random
 TEST(NfpFastPath, NearestCandidateFlagsAgainstExact) {
   std::mt19937_64 rng(19007);
   FlagStats st;
-  const auto albano = instance("albano.json");
-  for (std::size_t i = 0; i < albano.size(); i += 3)
-    for (std::size_t j = 1; j < albano.size(); j += 4)
-      check_flags_pair(NoFitPolygon2(albano[i], albano[j]), rng, 10, st, "albano " + std::to_string(i) + " " + std::to_string(j));
-  for (const std::string file : {"shirts", "trousers"}) {
-    const auto pieces = instance(file + ".json");
-    for (double deg : {30.0, 117.0}) {
-      const double a = deg * M_PI / 180, c = std::cos(a), s = std::sin(a);
-      const std::size_t i = rng() % pieces.size(), j = rng() % pieces.size();
-      const Polygon Q = mapped(pieces[j], [&](const Vec2& p) { return Vec2(c * p.x() - s * p.y(), s * p.x() + c * p.y()); });
-      check_flags_pair(NoFitPolygon2(pieces[i], Q), rng, 10, st, file + " rotated " + std::to_string(deg));
-    }
-  }
-  check_flags_pair(NoFitPolygon2(Polygon::simple(std::vector<Vec2>{{0, 0}, {0.7, 0}, {0.7, 0.8}, {0.5, 0.8}, {0.5, 0.2}, {0.4, 0.2}, {0.4, 0.8}, {0, 0.8}}, "thin U"),
-                                 Polygon::simple(std::vector<Vec2>{{0, 0}, {0.1, 0}, {0.1, 0.3}, {0, 0.3}}, "thin block")),
-                   rng, 40, st, "thin slot");
+  flag_inputs(rng, {30.0, 117.0}, 10, [&](const NoFitPolygon2& nfp, int random, const std::string& what) {
+    check_flags_pair(nfp, rng, random, st, what);
+  });
   std::cout << "[nearest flags] " << st.queries << " placements, " << st.candidates << " candidates: " << st.inside << " inside, "
             << st.before << " before lo, " << st.beyond << " beyond hi, " << st.unflagged << " decided exactly; floating sign wrong "
             << "without the bound " << st.wrong_unguarded << " times; worst error / bound " << st.worst << "\n";
@@ -720,6 +746,117 @@ TEST(NfpFastPath, NearestCandidateFlagsAgainstExact) {
   EXPECT_GT(st.unflagged, 0u);
   EXPECT_GT(st.wrong_unguarded, 0u);  // the bound is needed: B = 0 would mis-flag these
   EXPECT_GT(st.worst, 0x1p-13);       // and B shrunk by 2¹³ fails the ASSERT_LE above
+}
+
+// nfp_fast.cpp's first_hit_candidates against exact arithmetic (rationals on the exact piece ends,
+// exact_end_rel): (1) every flag is right — kInside: the ray crosses the exact piece's interior
+// at some λ > 0 (ends strictly on opposite sides of the ray's line, λ = A × (B − A) / d × (B − A)
+// > 0 with A, B the ends minus t), kFromO: and its lo end strictly right of the ray — for any t
+// (inside_by_candidates trusts them before the overlap test); (2) for t ∈ O (exact test) every
+// piece hit first (least exact λ > 0 over all pieces: a crossing, or a collinear piece's nearer
+// end) is a candidate. Placements stress the pieces spanning t's perpendicular, whose side of
+// the crossing the scan now certifies by side_of_piece: t beside a piece's middle at 2⁻⁴⁰ to 0.5
+// of its length on either side, rays along the piece (parallel: undecided), turned by 2⁻³⁰ to
+// 0.3 rad either way (crossing just ahead or just behind t), and random t and d.
+struct HitStats {
+  std::size_t rays = 0, candidates = 0, crossing = 0, from_o = 0, spanning = 0, completeness = 0;
+};
+
+void check_first_hits(const NoFitPolygon2& nfp, const Vec2& t, const Vec2& d_in, HitStats& st, const std::string& what) {
+  using namespace pendepth::nonconvex2;
+  const auto& N = nfp_impl(nfp);
+  const NfpFlat& F = N.flat;
+  if (!F.usable || (d_in.x() == 0 && d_in.y() == 0)) return;
+  const Vec2 d = check_and_scale(t, d_in);
+  ++st.rays;
+  std::vector<std::uint32_t> cand;
+  F.first_hit_candidates(t, d, cand);
+  const mpq_class dx(d.x()), dy(d.y());
+  // Per piece: the exact λ of its first point on the ray (λ > 0), or none.
+  const std::size_t n = N.pieces.size();
+  std::vector<mpq_class> lambda(n);
+  std::vector<bool> hit(n, false);
+  std::vector<int> sa(n), sb(n), slam(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    const NfpPiece& pc = N.pieces[k];
+    const mpq_class ax = exact_end_rel(pc, pc.lo, t, 0), ay = exact_end_rel(pc, pc.lo, t, 1), bx = exact_end_rel(pc, pc.hi, t, 0),
+                    by = exact_end_rel(pc, pc.hi, t, 1);
+    const mpq_class ca = dx * ay - dy * ax, cb = dx * by - dy * bx, den = cb - ca;
+    sa[k] = sgn(ca), sb[k] = sgn(cb), slam[k] = 0;
+    if (sa[k] * sb[k] > 0) continue;  // misses the line
+    if (den != 0) {
+      const mpq_class l = (ax * (by - ay) - ay * (bx - ax)) / den;
+      slam[k] = sgn(l);
+      if (l > 0) lambda[k] = l, hit[k] = true;
+    } else if (sa[k] == 0) {  // along the line: the nearer end ahead
+      const mpq_class la = (dx * ax + dy * ay) / (dx * dx + dy * dy), lb = (dx * bx + dy * by) / (dx * dx + dy * dy);
+      if (la > 0 && lb > 0) lambda[k] = std::min(la, lb), hit[k] = true;
+    }
+  }
+  std::vector<bool> is_cand(n, false);
+  for (std::uint32_t c : cand) {
+    ++st.candidates;
+    const std::uint32_t k = c & ~NfpFlat::kFlags;
+    is_cand[k] = true;
+    if (c & NfpFlat::kInside) {
+      ++st.crossing;
+      ASSERT_TRUE(sa[k] * sb[k] < 0 && slam[k] > 0) << what << " piece " << k << " flagged crossing, t = " << t.transpose() << " d = " << d.transpose();
+      if (std::min(mpq_class(d.x() * (F.px0[k] - t.x()) + d.y() * (F.py0[k] - t.y())),
+                   mpq_class(d.x() * (F.px1[k] - t.x()) + d.y() * (F.py1[k] - t.y()))) <= 0)
+        ++st.spanning;  // certified by the side of t, not by the dot products
+    }
+    if (c & NfpFlat::kFromO) {
+      ++st.from_o;
+      ASSERT_TRUE((c & NfpFlat::kInside) && sa[k] < 0) << what << " piece " << k << " flagged from O, t = " << t.transpose();
+    }
+  }
+  if (!N.overlapping_exact(t)) return;
+  const mpq_class* best = nullptr;
+  for (std::size_t k = 0; k < n; ++k)
+    if (hit[k] && (!best || lambda[k] < *best)) best = &lambda[k];
+  ASSERT_TRUE(best) << what << " t ∈ O but the ray hits no piece, t = " << t.transpose();
+  for (std::size_t k = 0; k < n; ++k)
+    if (hit[k] && lambda[k] == *best) {
+      ++st.completeness;
+      ASSERT_TRUE(is_cand[k]) << what << " first piece " << k << " not a candidate, t = " << t.transpose() << " d = " << d.transpose();
+    }
+}
+
+void check_first_hits_pair(const NoFitPolygon2& nfp, std::mt19937_64& rng, int random, HitStats& st, const std::string& what) {
+  const auto& N = nfp_impl(nfp);
+  if (N.pieces.empty()) return;
+  Vec2 lo, hi;
+  piece_box(N, lo, hi);
+  std::uniform_real_distribution<double> ux(lo.x(), hi.x()), uy(lo.y(), hi.y()), ua(0, 2 * M_PI);
+  for (int k = 0; k < random; ++k) {
+    const double a = ua(rng);
+    check_first_hits(nfp, Vec2(ux(rng), uy(rng)), Vec2(std::cos(a), std::sin(a)), st, what);
+  }
+  auto turned = [](const Vec2& v, double a) { return Vec2(std::cos(a) * v.x() - std::sin(a) * v.y(), std::sin(a) * v.x() + std::cos(a) * v.y()); };
+  for (std::size_t k = 0; k < N.pieces.size(); k += std::max<std::size_t>(1, N.pieces.size() / 8)) {
+    const auto& pc = N.pieces[k];
+    const Vec2 e = pc.b - pc.a, nrm(-e.y(), e.x());
+    if (e.x() == 0 && e.y() == 0) continue;
+    for (double off : {0x1p-40, 0x1p-20, 0.01, 0.5})
+      for (double side : {1.0, -1.0}) {
+        const Vec2 t = 0.5 * (pc.a + pc.b) + side * off * nrm;
+        for (double dir : {1.0, -1.0})
+          for (double a : {0.0, 0x1p-30, -0x1p-30, 0.01, -0.01, 0.3, -0.3}) check_first_hits(nfp, t, turned(dir * e, a), st, what);
+      }
+  }
+}
+
+TEST(NfpFastPath, FirstHitCandidatesAgainstExact) {
+  std::mt19937_64 rng(19011);
+  HitStats st;
+  flag_inputs(rng, {0.0, 30.0}, 20, [&](const NoFitPolygon2& nfp, int random, const std::string& what) {
+    check_first_hits_pair(nfp, rng, random, st, what);
+  });
+  std::cout << "[first-hit flags] " << st.rays << " rays, " << st.candidates << " candidates: " << st.crossing << " crossing ("
+            << st.spanning << " spanning t's perpendicular), " << st.from_o << " from O; " << st.completeness << " first pieces found\n";
+  EXPECT_GT(st.spanning, st.rays / 50);  // the side certificate is exercised
+  EXPECT_GT(st.candidates, st.crossing);  // and undecided pieces occur
+  EXPECT_GT(st.completeness, st.rays / 4);
 }
 
 }  // namespace
@@ -1011,14 +1148,21 @@ TEST(NfpFastPath, DirectionScalingMatchesLdexp) {
                           {0x1p1023, -0x1p-1074}, {0x1p-1022, 0x1.8p-1074}, {0x1p1022, 0x1.3p-60}, {0x1.2345p1000, 0x1.5p-70}};
   for (int k = 0; k < 200000; ++k) ds.emplace_back(std::ldexp(u(rng), ex(rng)), std::ldexp(u(rng), ex(rng)));
   std::size_t compared = 0;
+  const bool saved = pendepth::isa::use_v3();
   for (const Vec2& d : ds) {
     if (d.x() == 0 && d.y() == 0) continue;
     ++compared;
     ASSERT_TRUE(same(pendepth::nonconvex2::check_and_scale(Vec2(0, 0), d), reference(d))) << std::hexfloat << d.transpose();
-    // norm_accurate's direct DD tier against the full tiered evaluation (the former code).
+    // norm_accurate's direct DD tier against the full tiered evaluation (the former code), on the
+    // portable path and on the x86-64-v3 clone where the processor has it.
     for (const Vec2& v : {d, pendepth::nonconvex2::check_and_scale(Vec2(0, 0), d)}) {
       const double want = std::sqrt(pendepth::exact::accurate_value([&](auto L) { return L(v.x()) * L(v.x()) + L(v.y()) * L(v.y()); }));
-      ASSERT_TRUE(same(pendepth::nonconvex2::norm_accurate(v), want)) << std::hexfloat << v.transpose();
+      for (bool v3 : {false, pendepth::isa::v3_available()}) {
+        pendepth::isa::use_v3() = v3;
+        const double got = pendepth::nonconvex2::norm_accurate(v);
+        pendepth::isa::use_v3() = saved;
+        ASSERT_TRUE(same(got, want)) << std::hexfloat << v.transpose() << " v3 " << v3;
+      }
     }
   }
   EXPECT_GT(compared, 200000u);
