@@ -292,18 +292,25 @@ void BM_MeshSigmaExact(benchmark::State& st) {
   if (st.range(1) == 1) unfiltered.emplace();
   std::size_t i = 0;
   double facets = 0, work = 0;
+  std::map<std::string, double> parts;  // the work count's parts (mesh3::SigmaExactWork), summed
   for (auto _ : st) {
     if (q.empty()) continue;
     const auto& [k, upper] = q[i % q.size()];
     const auto r = pendepth::mesh3::exact_minimum(m, pendepth::Pose3(), p.poses[k], upper, SIZE_MAX);
     facets += r ? static_cast<double>(r->candidates) : 0;
-    work += static_cast<double>(pendepth::mesh3::last_exact_work.units);
+    const pendepth::mesh3::SigmaExactWork& w = pendepth::mesh3::last_exact_work;
+    work += static_cast<double>(w.units);
+    for (const auto& [k, v] : {std::pair{"w_setup", w.setup}, {"w_lines", w.lines}, {"w_tests", w.tests},
+                               {"w_exact_lines", w.exact_lines}, {"w_exact_tests", w.exact_tests},
+                               {"w_exact_intervals", w.exact_intervals}})
+      parts[k] += static_cast<double>(v);
     ++i;
   }
   st.SetLabel(mesh_cases()[static_cast<std::size_t>(st.range(0))].name + (st.range(1) ? " exact" : " filtered"));
   st.counters["queries"] = static_cast<double>(q.size());
   st.counters["candidates"] = i ? facets / static_cast<double>(i) : 0;
   st.counters["work"] = i ? work / static_cast<double>(i) : 0;  // kExactSigmaMaxWork's units
+  for (const auto& [k, v] : parts) st.counters[k] = i ? v / static_cast<double>(i) : 0;
 }
 
 // The hulls of both meshes (what users do today) against the exact σ_d.

@@ -522,8 +522,55 @@ I imax(const I& a, const I& b) { return I(std::max(a.inf(), b.inf()), std::max(a
 // line_interval (below) on the enclosures: Empty or Range only when the exact path certainly
 // decides the same (Range: lo, hi enclose its ends), Unknown when a sign or an order is uncertain.
 enum class Span { Empty, Range, Unknown };
+// The enclosure is finite and its width at most 2⁻³⁰ of its magnitude (the rounding of a
+// well-conditioned λ = b/a is ~2⁻⁵⁰).
+bool tight(const I& l) {
+  return std::isfinite(l.inf()) && std::isfinite(l.sup()) &&
+         l.sup() - l.inf() <= 0x1p-30 * std::max(std::abs(l.inf()), std::abs(l.sup()));
+}
+// The ends' enclosures lo = imax, hi = imin over the constraints' λ are as wide as the widest
+// constraint that may attain them (a or b of a large relative error: a plane nearly parallel to
+// the line, or nearly through its point x0), and wide ends leave a covering interval Unknown or
+// its comparisons undecided — each then an exact covering interval (the torus 8×4 pair's pose 0:
+// 111 000 Unknown covering intervals, a third of the undecided comparisons with enclosures wider
+// than the ends' distance). On a line whose exact x0 and u are known (the exact stage), the wide
+// constraints `ls` (side, λ enclosure) that may attain an end — their enclosure reaches past the
+// other constraints' certain bound — get the enclosure of the exact λ (tight: an exact number
+// rounded outward), and the ends are recomputed from all: still enclosures of the exact ends, so
+// no decision changes, only fewer are left to the exact intervals (docs/benchmarks.md "Exact mesh
+// σ: tight λ enclosures"). O(count) + an exact λ per refined constraint.
+struct SideLambda {
+  std::size_t p;
+  bool pos;  // a > 0: an upper bound on λ (else a lower bound)
+  I l;
+};
+void refine_ends(const Ctx& c, const LineI& L, std::vector<SideLambda>& ls, I& lo, I& hi) {
+  double lo_bound = -INFINITY, hi_bound = INFINITY;  // certain: max λ⁻ >= lo_bound, min λ⁺ <= hi_bound
+  for (const SideLambda& q : ls) {
+    if (q.pos) hi_bound = std::min(hi_bound, q.l.sup());
+    else lo_bound = std::max(lo_bound, q.l.inf());
+  }
+  for (SideLambda& q : ls) {
+    if (tight(q.l) || (q.pos ? q.l.inf() >= hi_bound : q.l.sup() <= lo_bound)) continue;  // cannot widen an end
+    const ExactPlane& e = exact_plane(c, q.p);
+    q.l = iv((e.c - dot(e.n, *L.x0e)) / dot(e.n, *L.ue));
+    SigmaLineCheck::refined += SigmaLineCheck::depth > 0;
+    if (q.pos) hi_bound = std::min(hi_bound, q.l.sup());
+    else lo_bound = std::max(lo_bound, q.l.inf());
+  }
+  double lo_sup = -INFINITY, hi_inf = INFINITY;
+  for (const SideLambda& q : ls) {
+    if (q.pos) hi_inf = std::min(hi_inf, q.l.inf());
+    else lo_sup = std::max(lo_sup, q.l.sup());
+  }
+  lo = I(lo_bound, lo_sup), hi = I(hi_inf, hi_bound);
+}
 Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I& lo, I& hi, std::size_t gp) {
   bool has_lo = false, has_hi = false;
+  const bool refine = L.x0e && L.ue;  // exact x0 and u known: wide ends are refined (refine_ends)
+  bool any_wide = false;
+  static thread_local std::vector<SideLambda> ls;
+  ls.clear();
   for (std::size_t p = s.first; p < s.first + s.count; ++p) {
     if (p == gp || c.on_f[p]) {
       if (strict) return Span::Empty;
@@ -536,11 +583,13 @@ Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I&
       a = safe(af), b = safe(bf);
     }
     // n·u near 0 is frequent (n parallel or nearly parallel to f's or g's normal: the same
-    // piece face in several sums, the faces of a symmetric mesh parallel up to rounding): its
-    // sign is taken from the exact numbers rather than giving up.
-    const CGAL::Sign sa = certainly_zero(a)        ? CGAL::ZERO
-                          : certainly_nonzero(a) ? (a.inf() > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE)
-                                                 : sign(dot(exact_plane(c, p).n, exact_u(c, L)));
+    // piece face in several sums, the faces of a symmetric mesh parallel up to rounding): a is
+    // taken from the exact numbers rather than giving up — its sign, and its value for λ below.
+    std::optional<FT> ae;
+    if (!certainly_zero(a) && !certainly_nonzero(a)) ae = dot(exact_plane(c, p).n, exact_u(c, L));
+    const CGAL::Sign sa = ae                  ? sign(*ae)
+                          : certainly_zero(a) ? CGAL::ZERO
+                                              : (a.inf() > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE);
     // b near 0 too: plane p nearly holds the line (equal to g's plane at a seam, or nearly
     // coplanar with f or g in a rounded symmetric mesh): b exactly, and λ exactly when a != 0
     // (the exact number's enclosure after its exact evaluation is tight).
@@ -555,14 +604,16 @@ Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I&
       if (strict ? sb != CGAL::POSITIVE : sb == CGAL::NEGATIVE) return Span::Empty;
       continue;
     }
-    // λ = b/a (a of known sign): when a's enclosure holds 0, the side of λ that b's certain
-    // sign bounds (the other end unbounded).
+    // λ = b/a (a of known sign). When a's enclosure holds 0: b/a on the enclosure of the exact a
+    // computed for its sign (tight: the exact number rounded outward) — finite, where a
+    // half-bounded λ widened the end (refine_ends); the side of λ that b's certain sign bounds
+    // only when that enclosure still holds 0 (underflow).
     I l;
+    const I at = ae ? iv(*ae) : a;
     if (certainly_nonzero(a)) l = b / a;
-    else if (be) {
-      const FT le = *be / dot(exact_plane(c, p).n, exact_u(c, L));
-      l = iv(le);
-    } else if ((sa == CGAL::POSITIVE) == (b.inf() > 0))
+    else if (be) l = iv(*be / *ae);
+    else if (certainly_nonzero(at)) l = b / at;
+    else if ((sa == CGAL::POSITIVE) == (b.inf() > 0))
       l = I((I(b.inf() > 0 ? b.inf() : b.sup()) / I(sa == CGAL::POSITIVE ? a.sup() : a.inf())).inf(), INFINITY);
     else
       l = I(-INFINITY, (I(b.inf() > 0 ? b.inf() : b.sup()) / I(sa == CGAL::POSITIVE ? a.sup() : a.inf())).sup());
@@ -571,9 +622,11 @@ Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I&
     } else {
       lo = has_lo ? imax(lo, l) : l, has_lo = true;
     }
+    if (refine) ls.push_back({p, sa == CGAL::POSITIVE, l}), any_wide = any_wide || !tight(l);
     if (has_lo && has_hi && (strict ? lo.inf() >= hi.sup() : lo.inf() > hi.sup())) return Span::Empty;
   }
   if (!has_lo || !has_hi) return Span::Unknown;
+  if (any_wide && !(tight(lo) && tight(hi))) refine_ends(c, L, ls, lo, hi);
   return (strict ? lo.sup() < hi.inf() : lo.sup() <= hi.inf()) ? Span::Range : Span::Unknown;
 }
 

@@ -68,10 +68,13 @@ struct SigmaCoverCheck {
 /// (the same offer or none: squared distance, point and plane, exactly); the lines that
 /// line_no_offer settles are run by the reference anyway and counted in `no_offer_violations`
 /// when it offers a point. `lines`: lines compared; `ties`: those of them where a covering open
-/// interval's exact end equals an end of the segment [a, b] or another covering interval's end.
+/// interval's exact end equals an end of the segment [a, b] or another covering interval's end;
+/// `refined`: the constraints whose wide λ enclosure was replaced by the exact λ's (the exact
+/// stage's close calls: mesh_sigma_exact.cpp, refine_ends), counted while a check is alive.
 struct SigmaLineCheck {
   static inline thread_local int depth = 0;
-  static inline thread_local std::size_t lines = 0, ties = 0, mismatches = 0, no_offer = 0, no_offer_violations = 0;
+  static inline thread_local std::size_t lines = 0, ties = 0, mismatches = 0, no_offer = 0, no_offer_violations = 0,
+                                         refined = 0;
   SigmaLineCheck() { ++depth; }
   ~SigmaLineCheck() { --depth; }
   SigmaLineCheck(const SigmaLineCheck&) = delete;
