@@ -302,7 +302,7 @@ void BM_MeshSigmaExact(benchmark::State& st) {
     work += static_cast<double>(w.units);
     for (const auto& [k, v] : {std::pair{"w_setup", w.setup}, {"w_lines", w.lines}, {"w_tests", w.tests},
                                {"w_exact_lines", w.exact_lines}, {"w_exact_tests", w.exact_tests},
-                               {"w_exact_intervals", w.exact_intervals}})
+                               {"w_exact_intervals", w.exact_intervals}, {"w_refined", w.refined}})
       parts[k] += static_cast<double>(v);
     ++i;
   }
@@ -311,6 +311,41 @@ void BM_MeshSigmaExact(benchmark::State& st) {
   st.counters["candidates"] = i ? facets / static_cast<double>(i) : 0;
   st.counters["work"] = i ? work / static_cast<double>(i) : 0;  // kExactSigmaMaxWork's units
   for (const auto& [k, v] : parts) st.counters[k] = i ? v / static_cast<double>(i) : 0;
+}
+
+// One query of BM_MeshSigmaExact's (args: mesh case, its index among the case's queries; one
+// iteration): CPU time and the work count's parts per query, to fit the work model's weights
+// (kExactSigmaMaxWork: docs/benchmarks.md "Exact mesh σ: tight λ enclosures").
+void BM_MeshSigmaExactQuery(benchmark::State& st) {
+  const std::size_t mc = static_cast<std::size_t>(st.range(0)), index = static_cast<std::size_t>(st.range(1));
+  if (mc >= mesh_cases().size()) {
+    st.SkipWithError("no such mesh case (CGAL sample meshes not found)");
+    return;
+  }
+  const Prepared& p = prepared(mc);
+  bool exact = true;
+  const pendepth::mesh3::MeshPair m = pendepth::mesh3::MeshPair::make(
+      pendepth::mesh3::pieces_of(p.pair.P(), exact), pendepth::mesh3::pieces_of(p.pair.Q(), exact), exact);
+  std::vector<std::pair<std::size_t, double>> q;  // pose, upper bound (as BM_MeshSigmaExact)
+  {
+    pendepth::mesh3::SigmaBoundsOnly bounds_only;
+    for (std::size_t k = 0; k < 16; ++k) {
+      const pendepth::Depth3 r = pendepth::mesh3::minimum(m, pendepth::Pose3(), p.poses[k]);
+      if (r.overlapping && r.lower_bound < r.upper_bound) q.emplace_back(k, r.upper_bound);
+    }
+  }
+  if (index >= q.size()) {
+    st.SkipWithError("no such query");
+    return;
+  }
+  for (auto _ : st)
+    benchmark::DoNotOptimize(pendepth::mesh3::exact_minimum(m, pendepth::Pose3(), p.poses[q[index].first], q[index].second, SIZE_MAX));
+  const pendepth::mesh3::SigmaExactWork& w = pendepth::mesh3::last_exact_work;
+  st.SetLabel(mesh_cases()[mc].name + " pose " + std::to_string(q[index].first));
+  for (const auto& [k, v] : {std::pair{"units", w.units}, {"setup", w.setup}, {"lines", w.lines}, {"tests", w.tests},
+                             {"exact_lines", w.exact_lines}, {"exact_tests", w.exact_tests},
+                             {"exact_intervals", w.exact_intervals}, {"refined", w.refined}})
+    st.counters[k] = static_cast<double>(v);
 }
 
 // The hulls of both meshes (what users do today) against the exact σ_d.
@@ -639,6 +674,7 @@ BENCHMARK(BM_MeshCast)->Apply(mesh_args);
 BENCHMARK(BM_MeshMinimumBounds)->Apply(mesh_args);
 BENCHMARK(BM_MeshMinimumBoundsOnly)->Apply(mesh_args);
 BENCHMARK(BM_MeshSigmaExact)->ArgsProduct({{0, 1, 2, 3, 4, 5, 6, 7}, {0, 1}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_MeshSigmaExactQuery)->ArgsProduct({{0, 1, 2, 3, 4, 5, 6, 7}, {0, 1, 2, 3, 4, 5, 6, 7, 8}})->Iterations(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_MeshAlongDescent)->Apply(mesh_args);
 BENCHMARK(BM_MeshMinimumBoundsDescent)->Apply(mesh_args);
 BENCHMARK(BM_MeshHullError)->Apply(mesh_args);

@@ -211,6 +211,7 @@ struct Ctx {
   // Filtered tier: the exact λ of the current exact line (line_id) on each class of planes, once
   // computed (LineConstraints::lambda_e): lam_line[class] == line_id when lam_val[class] holds it.
   std::size_t line_id = 0;
+  mutable std::size_t refined = 0;  // constraints refine_ends gave the exact λ (the work count)
   mutable std::vector<std::size_t> lam_line;
   mutable std::vector<FT> lam_val;
   mutable std::vector<std::optional<ExactPlane>> exact;  // planes[p]'s exact numbers, on demand
@@ -554,7 +555,7 @@ void refine_ends(const Ctx& c, const LineI& L, std::vector<SideLambda>& ls, I& l
     if (tight(q.l) || (q.pos ? q.l.inf() >= hi_bound : q.l.sup() <= lo_bound)) continue;  // cannot widen an end
     const ExactPlane& e = exact_plane(c, q.p);
     q.l = iv((e.c - dot(e.n, *L.x0e)) / dot(e.n, *L.ue));
-    SigmaLineCheck::refined += SigmaLineCheck::depth > 0;
+    ++c.refined, SigmaLineCheck::refined += SigmaLineCheck::depth > 0;
     if (q.pos) hi_bound = std::min(hi_bound, q.l.sup());
     else lo_bound = std::max(lo_bound, q.l.inf());
   }
@@ -1150,14 +1151,19 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
   // (minkowski_facets, its plane, the repeated-plane test) kSetupWeight; a line past the interval
   // prunes 1 + the covering sums line_no_offer looked at before it exits; a line of the exact stage
   // kExactLineWeight (its exact u, x0, S_k's interval) + the covering sums offer_on_line looked
-  // at before its exit + kExactIntervalWeight per exact covering interval computed. Weights fitted
-  // to CPU time per query over the tripod's, the combs', the cross's, the star's and the torus
-  // pair's exact σ: ~1.3 µs per unit, within ±25 % (log sd 0.22) on queries over 20 ms
-  // (docs/benchmarks.md "Exact mesh σ: the work counted as done"), so that giving up costs about
-  // the same time whichever stage reaches the limit.
-  constexpr std::size_t kSetupWeight = 15, kExactLineWeight = 1, kExactIntervalWeight = 20;
-  std::size_t work = 0;
-  auto spend = [&](std::size_t units) { return (stats.units = work += units) <= max_work; };
+  // at before its exit + kExactIntervalWeight per exact covering interval computed; in either
+  // stage kRefineWeight per constraint whose λ refine_ends made exact. Weights fitted to CPU time
+  // per query over the tripod's, the combs', the cross's, the star's and the torus pair's exact
+  // σ: ~1.3 µs per unit, within ±25 % (log sd 0.22) on queries over 20 ms (docs/benchmarks.md
+  // "Exact mesh σ: the work counted as done"; refit with kRefineWeight: 1.4 µs, log sd 0.22,
+  // "… tight λ enclosures"), so that giving up costs about the same time whichever stage
+  // reaches the limit.
+  constexpr std::size_t kSetupWeight = 15, kExactLineWeight = 1, kExactIntervalWeight = 20, kRefineWeight = 1;
+  std::size_t work = 0, refined_charged = 0;
+  auto spend = [&](std::size_t units) {  // + the exact λ of refine_ends since the last charge
+    units += kRefineWeight * (c.refined - refined_charged), refined_charged = stats.refined = c.refined;
+    return (stats.units = work += units) <= max_work;
+  };
   // The sums in range and their planes.
   for (std::size_t i = 0; i < m.P.size(); ++i)
     for (std::size_t j = 0; j < m.Q.size(); ++j) {

@@ -85,9 +85,11 @@ struct SigmaLineCheck {
 /// returns, also when it gives up): `units` the count compared with max_work; its parts in the
 /// filtered tier — `setup` candidate facets, `lines` lines past the interval prunes and their
 /// `tests` (covering sums looked at), `exact_lines` lines of the exact stage, their
-/// `exact_tests` and `exact_intervals` (covering sums' exact intervals computed).
+/// `exact_tests` and `exact_intervals` (covering sums' exact intervals computed), and `refined`
+/// (constraints whose wide λ enclosure got the exact λ's: mesh_sigma_exact.cpp, refine_ends).
 struct SigmaExactWork {
-  std::size_t units = 0, setup = 0, lines = 0, tests = 0, exact_lines = 0, exact_tests = 0, exact_intervals = 0;
+  std::size_t units = 0, setup = 0, lines = 0, tests = 0, exact_lines = 0, exact_tests = 0, exact_intervals = 0,
+              refined = 0;
 };
 inline thread_local SigmaExactWork last_exact_work{};
 
