@@ -17,14 +17,15 @@ namespace pendepth::mesh3 {
 /// — the setup; per line plane(f) ∩ plane(g) past the interval prunes (line_far), 1 + the covering
 /// sums looked at before line_no_offer exits; per line of the exact stage 1 + the covering sums
 /// looked at before offer_on_line exits (a covering interval holding the segment) + 20 per exact
-/// covering interval computed. Measured (docs/benchmarks.md "Exact mesh σ: the work counted as
-/// done"): ~1.3 µs CPU per unit (±25 %), so the limit is ~1 s and giving up costs about that.
-/// Combs against an L block, CGAL's cross and star spend 3 000–9 000 units (3–10 ms); CGAL's
-/// tripod against itself 28 000–1.4 million over 9 poses (0.03–1.8 s), 8 of them within the
-/// limit; a torus 8×4 pair 0.52–23 million over the 8 poses of the bench that reach it (0.7–32 s),
-/// 3 within; a torus 16×8 × 8×4 pair 2.6 million on its first (6 s). Replaces a limit of
-/// 250 000 units that charged every covering sum of a line before the line's early exits (16
-/// million on the torus pair's pose 0, whose exact σ takes 9 s) and let 5 tripod poses in.
+/// covering interval computed; 1 per constraint whose λ enclosure was made exact (refine_ends).
+/// Measured (docs/benchmarks.md "Exact mesh σ: the work counted as done", "… tight λ
+/// enclosures"): ~1.4 µs CPU per unit (±25 %), so the limit is ~1 s and giving up costs about
+/// that. Combs against an L block, CGAL's cross and star spend 3 000–9 000 units (3–10 ms);
+/// CGAL's tripod against itself 28 000–570 000 over 9 poses (0.02–0.95 s), all within the limit;
+/// a torus 8×4 pair 0.51–20 million over the 8 poses of the bench that reach it (0.6–22 s), 3
+/// within; a torus 16×8 × 8×4 pair 1.9 million on its first (3 s). Replaces a limit of 250 000
+/// units that charged every covering sum of a line before the line's early exits (16 million on
+/// the torus pair's pose 0, whose exact σ took 9 s) and let 5 tripod poses in.
 inline constexpr std::size_t kExactSigmaMaxWork = 750000;
 
 /// σ = dist(0, complement of O) exactly, given a certified upper bound `upper` >= σ (today's
