@@ -831,26 +831,40 @@ void offer_on_line(const Ctx& c, const LineSegment& s, const std::vector<std::si
   const FT foot_v = is_positive(s.a) ? s.a : is_negative(s.b) ? s.b : FT(0);
   LazyEnd foot{iv(foot_v), foot_v};
   // Covering open intervals (the ones meeting [a, b]): certainly missing ones (open_misses, an
-  // empty enclosure) dropped, the others' order against a and b decided as the reference does.
+  // empty enclosure) dropped; first on enclosures only, so that a covering interval certainly
+  // holding [a, b] strictly — lo < a and b < hi certainly: every candidate (all in [a, b]) is
+  // covered, the reference offers nothing — ends the line before any exact interval of the
+  // others is computed (docs/benchmarks.md "Exact mesh σ: tight λ enclosures").
   spans.clear();
+  static thread_local std::vector<Span> kinds;  // spans[k]'s line_interval_i outcome
+  kinds.clear();
+  auto holds = [&](const CoverSpan& sp) { return sp.lo.i.sup() < a.i.inf() && b.i.sup() < sp.hi.i.inf(); };
   for (std::size_t l : cover) {
     ++work.tests;
     if (open_misses(c, c.sums[l], s.L.x0, s.L.u, a.i.inf(), b.i.sup())) continue;
     CoverSpan sp{l, {}, {}};
     const Span r = line_interval_i(c, c.sums[l], s.L, true, sp.lo.i, sp.hi.i, s.L.g);
     if (r == Span::Empty) continue;
-    if (r == Span::Unknown) {
+    if (r == Span::Range && holds(sp)) return;
+    spans.push_back(std::move(sp)), kinds.push_back(r);
+  }
+  // Then in the reference's order: the undecided ones exactly, the order of each against a and b
+  // decided as the reference does.
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < spans.size(); ++k) {
+    CoverSpan& sp = spans[k];
+    if (kinds[k] == Span::Unknown) {
       ++work.exact;
       std::optional<FT> lo, hi;
-      if (!line_interval(c, c.sums[l], s.L, true, lo, hi, s.L.g) || !lo || !hi) continue;
+      if (!line_interval(c, c.sums[sp.sum], s.L, true, lo, hi, s.L.g) || !lo || !hi) continue;
       sp.lo = {iv(*lo), std::move(lo)}, sp.hi = {iv(*hi), std::move(hi)};
+      if (holds(sp)) return;
     }
     if (!less(a, nullptr, sp.hi, &sp) || !less(sp.lo, &sp, b, nullptr)) continue;  // hi <= a or lo >= b
-    // lo < a and b < hi certainly: every candidate (all in [a, b]) is covered, the reference
-    // offers nothing.
-    if (sp.lo.i.sup() < a.i.inf() && b.i.sup() < sp.hi.i.inf()) return;
-    spans.push_back(std::move(sp));
+    if (kept != k) spans[kept] = std::move(sp);
+    ++kept;
   }
+  spans.resize(kept);
   std::vector<LineCandidate> cand{{&foot, nullptr}, {&a, nullptr}, {&b, nullptr}};
   for (CoverSpan& sp : spans) {
     if (!less(sp.lo, &sp, a, nullptr)) cand.push_back({&sp.lo, &sp});
