@@ -21,9 +21,9 @@ namespace pendepth::mesh3 {
 /// Measured (docs/benchmarks.md "Exact mesh σ: the work counted as done", "… tight λ
 /// enclosures"): ~1.4 µs CPU per unit (±25 %), so the limit is ~1 s and giving up costs about
 /// that. Combs against an L block, CGAL's cross and star spend 3 000–9 000 units (3–10 ms);
-/// CGAL's tripod against itself 28 000–570 000 over 9 poses (0.02–0.95 s), all within the limit;
-/// a torus 8×4 pair 0.51–20 million over the 8 poses of the bench that reach it (0.6–22 s), 3
-/// within; a torus 16×8 × 8×4 pair 1.9 million on its first (3 s). Replaces a limit of 250 000
+/// CGAL's tripod against itself 28 000–560 000 over 9 poses (0.02–0.72 s), all within the limit;
+/// a torus 8×4 pair 0.51 to ~20 million over the 8 poses of the bench that reach it (0.6 s to
+/// ~20 s), 3 within; a torus 16×8 × 8×4 pair 1.9 million on its first (2.7 s). Replaces a limit of 250 000
 /// units that charged every covering sum of a line before the line's early exits (16 million on
 /// the torus pair's pose 0, whose exact σ took 9 s) and let 5 tripod poses in.
 inline constexpr std::size_t kExactSigmaMaxWork = 750000;
