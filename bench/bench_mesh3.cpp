@@ -267,43 +267,88 @@ void BM_MeshMinimumBoundsOnly(benchmark::State& st) {
   pendepth::mesh3::SigmaBoundsOnly bounds_only;  // the benchmark runs its loop on this thread
   minimum_query(st);
 }
-// The exact σ alone (mesh3::exact_minimum, no work limit) on the poses among the first 16 whose
-// certified bounds do not meet (the ones minimum() sends to it). Args: mesh case, tier (0 the
-// filtered tier, 1 everything exact: a mesh3::SigmaExactUnfiltered guard — the reference).
-// Counters: queries, mean candidate facets in range, mean work (kExactSigmaMaxWork's units).
+// The mesh pair of a case and its exact queries: the poses among the first 16 whose certified
+// bounds do not meet (the ones minimum() sends to the exact σ), each with its upper bound.
+struct ExactQueries {
+  pendepth::mesh3::MeshPair m;
+  std::vector<std::pair<std::size_t, double>> q;  // pose, upper bound
+};
+ExactQueries exact_queries(const Prepared& p) {
+  bool exact = true;
+  ExactQueries e{pendepth::mesh3::MeshPair::make(pendepth::mesh3::pieces_of(p.pair.P(), exact),
+                                                 pendepth::mesh3::pieces_of(p.pair.Q(), exact), exact),
+                 {}};
+  pendepth::mesh3::SigmaBoundsOnly bounds_only;
+  for (std::size_t k = 0; k < 16; ++k) {
+    const pendepth::Depth3 r = pendepth::mesh3::minimum(e.m, pendepth::Pose3(), p.poses[k]);
+    if (r.overlapping && r.lower_bound < r.upper_bound) e.q.emplace_back(k, r.upper_bound);
+  }
+  return e;
+}
+// The parts of the last exact query's work count (mesh3::SigmaExactWork), by name.
+std::vector<std::pair<const char*, double>> work_parts() {
+  const pendepth::mesh3::SigmaExactWork& w = pendepth::mesh3::last_exact_work;
+  std::vector<std::pair<const char*, double>> r;
+  for (const auto& [name, v] : {std::pair{"setup", w.setup}, {"lines", w.lines}, {"tests", w.tests},
+                                {"exact_lines", w.exact_lines}, {"exact_tests", w.exact_tests},
+                                {"exact_intervals", w.exact_intervals}, {"refined", w.refined}})
+    r.emplace_back(name, static_cast<double>(v));
+  return r;
+}
+
+// The exact σ alone (mesh3::exact_minimum, no work limit) on the case's exact queries, in turn.
+// Args: mesh case, tier (0 the filtered tier, 1 everything exact: a mesh3::SigmaExactUnfiltered
+// guard — the reference). Counters: queries, mean candidate facets in range, mean work
+// (kExactSigmaMaxWork's units) and its parts.
 void BM_MeshSigmaExact(benchmark::State& st) {
   if (static_cast<std::size_t>(st.range(0)) >= mesh_cases().size()) {
     st.SkipWithError("no such mesh case (CGAL sample meshes not found)");
     return;
   }
   const Prepared& p = prepared(static_cast<std::size_t>(st.range(0)));
-  bool exact = true;
-  const pendepth::mesh3::MeshPair m = pendepth::mesh3::MeshPair::make(
-      pendepth::mesh3::pieces_of(p.pair.P(), exact), pendepth::mesh3::pieces_of(p.pair.Q(), exact), exact);
-  std::vector<std::pair<std::size_t, double>> q;  // pose, upper bound
-  {
-    pendepth::mesh3::SigmaBoundsOnly bounds_only;
-    for (std::size_t k = 0; k < 16; ++k) {
-      const pendepth::Depth3 r = pendepth::mesh3::minimum(m, pendepth::Pose3(), p.poses[k]);
-      if (r.overlapping && r.lower_bound < r.upper_bound) q.emplace_back(k, r.upper_bound);
-    }
-  }
+  const ExactQueries e = exact_queries(p);
   std::optional<pendepth::mesh3::SigmaExactUnfiltered> unfiltered;
   if (st.range(1) == 1) unfiltered.emplace();
   std::size_t i = 0;
   double facets = 0, work = 0;
+  std::map<std::string, double> parts;  // the work count's parts, summed
   for (auto _ : st) {
-    if (q.empty()) continue;
-    const auto& [k, upper] = q[i % q.size()];
-    const auto r = pendepth::mesh3::exact_minimum(m, pendepth::Pose3(), p.poses[k], upper, SIZE_MAX);
+    if (e.q.empty()) continue;
+    const auto& [k, upper] = e.q[i % e.q.size()];
+    const auto r = pendepth::mesh3::exact_minimum(e.m, pendepth::Pose3(), p.poses[k], upper, SIZE_MAX);
     facets += r ? static_cast<double>(r->candidates) : 0;
     work += static_cast<double>(pendepth::mesh3::last_exact_work.units);
+    for (const auto& [name, v] : work_parts()) parts[name] += v;
     ++i;
   }
   st.SetLabel(mesh_cases()[static_cast<std::size_t>(st.range(0))].name + (st.range(1) ? " exact" : " filtered"));
-  st.counters["queries"] = static_cast<double>(q.size());
+  st.counters["queries"] = static_cast<double>(e.q.size());
   st.counters["candidates"] = i ? facets / static_cast<double>(i) : 0;
   st.counters["work"] = i ? work / static_cast<double>(i) : 0;  // kExactSigmaMaxWork's units
+  for (const auto& [name, v] : parts) st.counters["w_" + name] = i ? v / static_cast<double>(i) : 0;
+}
+
+// One of BM_MeshSigmaExact's queries (args: mesh case, its index among the case's queries; one
+// iteration): CPU time and the work count's parts per query, to fit the work model's weights
+// (kExactSigmaMaxWork: docs/benchmarks.md "Exact mesh σ: tight λ enclosures").
+void BM_MeshSigmaExactQuery(benchmark::State& st) {
+  const std::size_t mc = static_cast<std::size_t>(st.range(0)), index = static_cast<std::size_t>(st.range(1));
+  if (mc >= mesh_cases().size()) {
+    st.SkipWithError("no such mesh case (CGAL sample meshes not found)");
+    return;
+  }
+  const Prepared& p = prepared(mc);
+  const ExactQueries e = exact_queries(p);
+  if (index >= e.q.size()) {
+    st.SkipWithError("no such query");
+    return;
+  }
+  const auto& [k, upper] = e.q[index];
+  for (auto _ : st)
+    benchmark::DoNotOptimize(pendepth::mesh3::exact_minimum(e.m, pendepth::Pose3(), p.poses[k], upper, SIZE_MAX));
+  st.SetLabel(mesh_cases()[mc].name + " pose " + std::to_string(k));
+  st.counters["units"] = static_cast<double>(pendepth::mesh3::last_exact_work.units);
+  for (const auto& [name, v] : work_parts()) st.counters[name] = v;
 }
 
 // The hulls of both meshes (what users do today) against the exact σ_d.
@@ -632,6 +677,7 @@ BENCHMARK(BM_MeshCast)->Apply(mesh_args);
 BENCHMARK(BM_MeshMinimumBounds)->Apply(mesh_args);
 BENCHMARK(BM_MeshMinimumBoundsOnly)->Apply(mesh_args);
 BENCHMARK(BM_MeshSigmaExact)->ArgsProduct({{0, 1, 2, 3, 4, 5, 6, 7}, {0, 1}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_MeshSigmaExactQuery)->ArgsProduct({{0, 1, 2, 3, 4, 5, 6, 7}, {0, 1, 2, 3, 4, 5, 6, 7, 8}})->Iterations(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_MeshAlongDescent)->Apply(mesh_args);
 BENCHMARK(BM_MeshMinimumBoundsDescent)->Apply(mesh_args);
 BENCHMARK(BM_MeshHullError)->Apply(mesh_args);

@@ -55,8 +55,14 @@
 // parallel to the line: rounding in symmetric meshes) taken exactly, a plane equal to g's
 // (seams) by the exact plane test; the exact line stage runs only when that is undecided, and
 // there (offer_on_line) a covering interval certainly holding the segment strictly ends the line
-// (as in line_no_offer), a covering interval's exact ends are computed only when a comparison on
-// their enclosures is undecided, and a line's λ on a plane once per class of equal planes.
+// (as in line_no_offer; looked for on enclosures over all covering sums before any exact
+// interval), a covering interval's exact ends are computed only when a comparison on their
+// enclosures is undecided, and a line's λ on a plane once per class of equal planes; the
+// interval ends there are kept tight — a constraint whose λ enclosure is wide and may attain an
+// end gets the exact λ's (refine_ends), a = n·u near 0 its exact value — so that fewer covering
+// intervals are left Unknown and fewer comparisons undecided (the torus 8×4 pair's pose 0: 54 %
+// fewer exact intervals with the holder first, 5.2 s instead of 6.8; docs/benchmarks.md "… tight
+// λ enclosures").
 // Filtered tier, lines once per class: planes equal across sums (the same geometric plane, either
 // side, decided exactly) form classes (plane_classes), and for a facet f each line plane(f) ∩
 // plane(g) is run once per class of g — the same line offers the same points. The interval
@@ -211,6 +217,7 @@ struct Ctx {
   // Filtered tier: the exact λ of the current exact line (line_id) on each class of planes, once
   // computed (LineConstraints::lambda_e): lam_line[class] == line_id when lam_val[class] holds it.
   std::size_t line_id = 0;
+  mutable std::size_t refined = 0;  // constraints refine_ends gave the exact λ (the work count)
   mutable std::vector<std::size_t> lam_line;
   mutable std::vector<FT> lam_val;
   mutable std::vector<std::optional<ExactPlane>> exact;  // planes[p]'s exact numbers, on demand
@@ -522,8 +529,55 @@ I imax(const I& a, const I& b) { return I(std::max(a.inf(), b.inf()), std::max(a
 // line_interval (below) on the enclosures: Empty or Range only when the exact path certainly
 // decides the same (Range: lo, hi enclose its ends), Unknown when a sign or an order is uncertain.
 enum class Span { Empty, Range, Unknown };
+// The enclosure is finite and its width at most 2⁻³⁰ of its magnitude (the rounding of a
+// well-conditioned λ = b/a is ~2⁻⁵⁰).
+bool tight(const I& l) {
+  return std::isfinite(l.inf()) && std::isfinite(l.sup()) &&
+         l.sup() - l.inf() <= 0x1p-30 * std::max(std::abs(l.inf()), std::abs(l.sup()));
+}
+// The ends' enclosures lo = imax, hi = imin over the constraints' λ are as wide as the widest
+// constraint that may attain them (a or b of a large relative error: a plane nearly parallel to
+// the line, or nearly through its point x0), and wide ends leave a covering interval Unknown or
+// its comparisons undecided — each then an exact covering interval (the torus 8×4 pair's pose 0:
+// 111 000 Unknown covering intervals, a third of the undecided comparisons with enclosures wider
+// than the ends' distance). On a line whose exact x0 and u are known (the exact stage), the wide
+// constraints `ls` (side, λ enclosure) that may attain an end — their enclosure reaches past the
+// other constraints' certain bound — get the enclosure of the exact λ (tight: an exact number
+// rounded outward), and the ends are recomputed from all: still enclosures of the exact ends, so
+// no decision changes, only fewer are left to the exact intervals (docs/benchmarks.md "Exact mesh
+// σ: tight λ enclosures"). O(count) + an exact λ per refined constraint.
+struct SideLambda {
+  std::size_t p;
+  bool pos;  // a > 0: an upper bound on λ (else a lower bound)
+  I l;
+};
+void refine_ends(const Ctx& c, const LineI& L, std::vector<SideLambda>& ls, I& lo, I& hi) {
+  double lo_bound = -INFINITY, hi_bound = INFINITY;  // certain: max λ⁻ >= lo_bound, min λ⁺ <= hi_bound
+  for (const SideLambda& q : ls) {
+    if (q.pos) hi_bound = std::min(hi_bound, q.l.sup());
+    else lo_bound = std::max(lo_bound, q.l.inf());
+  }
+  for (SideLambda& q : ls) {
+    if (tight(q.l) || (q.pos ? q.l.inf() >= hi_bound : q.l.sup() <= lo_bound)) continue;  // cannot widen an end
+    const ExactPlane& e = exact_plane(c, q.p);
+    q.l = iv((e.c - dot(e.n, *L.x0e)) / dot(e.n, *L.ue));
+    ++c.refined, SigmaLineCheck::refined += SigmaLineCheck::depth > 0;
+    if (q.pos) hi_bound = std::min(hi_bound, q.l.sup());
+    else lo_bound = std::max(lo_bound, q.l.inf());
+  }
+  double lo_sup = -INFINITY, hi_inf = INFINITY;
+  for (const SideLambda& q : ls) {
+    if (q.pos) hi_inf = std::min(hi_inf, q.l.inf());
+    else lo_sup = std::max(lo_sup, q.l.sup());
+  }
+  lo = I(lo_bound, lo_sup), hi = I(hi_inf, hi_bound);
+}
 Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I& lo, I& hi, std::size_t gp) {
   bool has_lo = false, has_hi = false;
+  const bool refine = L.x0e && L.ue;  // exact x0 and u known: wide ends are refined (refine_ends)
+  bool any_wide = false;
+  static thread_local std::vector<SideLambda> ls;
+  ls.clear();
   for (std::size_t p = s.first; p < s.first + s.count; ++p) {
     if (p == gp || c.on_f[p]) {
       if (strict) return Span::Empty;
@@ -536,11 +590,13 @@ Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I&
       a = safe(af), b = safe(bf);
     }
     // n·u near 0 is frequent (n parallel or nearly parallel to f's or g's normal: the same
-    // piece face in several sums, the faces of a symmetric mesh parallel up to rounding): its
-    // sign is taken from the exact numbers rather than giving up.
-    const CGAL::Sign sa = certainly_zero(a)        ? CGAL::ZERO
-                          : certainly_nonzero(a) ? (a.inf() > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE)
-                                                 : sign(dot(exact_plane(c, p).n, exact_u(c, L)));
+    // piece face in several sums, the faces of a symmetric mesh parallel up to rounding): a is
+    // taken from the exact numbers rather than giving up — its sign, and its value for λ below.
+    std::optional<FT> ae;
+    if (!certainly_zero(a) && !certainly_nonzero(a)) ae = dot(exact_plane(c, p).n, exact_u(c, L));
+    const CGAL::Sign sa = ae                  ? sign(*ae)
+                          : certainly_zero(a) ? CGAL::ZERO
+                                              : (a.inf() > 0 ? CGAL::POSITIVE : CGAL::NEGATIVE);
     // b near 0 too: plane p nearly holds the line (equal to g's plane at a seam, or nearly
     // coplanar with f or g in a rounded symmetric mesh): b exactly, and λ exactly when a != 0
     // (the exact number's enclosure after its exact evaluation is tight).
@@ -555,14 +611,16 @@ Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I&
       if (strict ? sb != CGAL::POSITIVE : sb == CGAL::NEGATIVE) return Span::Empty;
       continue;
     }
-    // λ = b/a (a of known sign): when a's enclosure holds 0, the side of λ that b's certain
-    // sign bounds (the other end unbounded).
+    // λ = b/a (a of known sign). When a's enclosure holds 0: b/a on the enclosure of the exact a
+    // computed for its sign (tight: the exact number rounded outward) — finite, where a
+    // half-bounded λ widened the end (refine_ends); the side of λ that b's certain sign bounds
+    // only when that enclosure still holds 0 (underflow).
     I l;
+    const I at = ae ? iv(*ae) : a;
     if (certainly_nonzero(a)) l = b / a;
-    else if (be) {
-      const FT le = *be / dot(exact_plane(c, p).n, exact_u(c, L));
-      l = iv(le);
-    } else if ((sa == CGAL::POSITIVE) == (b.inf() > 0))
+    else if (be) l = iv(*be / *ae);
+    else if (certainly_nonzero(at)) l = b / at;
+    else if ((sa == CGAL::POSITIVE) == (b.inf() > 0))
       l = I((I(b.inf() > 0 ? b.inf() : b.sup()) / I(sa == CGAL::POSITIVE ? a.sup() : a.inf())).inf(), INFINITY);
     else
       l = I(-INFINITY, (I(b.inf() > 0 ? b.inf() : b.sup()) / I(sa == CGAL::POSITIVE ? a.sup() : a.inf())).sup());
@@ -571,9 +629,11 @@ Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I&
     } else {
       lo = has_lo ? imax(lo, l) : l, has_lo = true;
     }
+    if (refine) ls.push_back({p, sa == CGAL::POSITIVE, l}), any_wide = any_wide || !tight(l);
     if (has_lo && has_hi && (strict ? lo.inf() >= hi.sup() : lo.inf() > hi.sup())) return Span::Empty;
   }
   if (!has_lo || !has_hi) return Span::Unknown;
+  if (any_wide && !(tight(lo) && tight(hi))) refine_ends(c, L, ls, lo, hi);
   return (strict ? lo.sup() < hi.inf() : lo.sup() <= hi.inf()) ? Span::Range : Span::Unknown;
 }
 
@@ -773,26 +833,40 @@ void offer_on_line(const Ctx& c, const LineSegment& s, const std::vector<std::si
   const FT foot_v = is_positive(s.a) ? s.a : is_negative(s.b) ? s.b : FT(0);
   LazyEnd foot{iv(foot_v), foot_v};
   // Covering open intervals (the ones meeting [a, b]): certainly missing ones (open_misses, an
-  // empty enclosure) dropped, the others' order against a and b decided as the reference does.
+  // empty enclosure) dropped; first on enclosures only, so that a covering interval certainly
+  // holding [a, b] strictly — lo < a and b < hi certainly: every candidate (all in [a, b]) is
+  // covered, the reference offers nothing — ends the line before any exact interval of the
+  // others is computed (docs/benchmarks.md "Exact mesh σ: tight λ enclosures").
   spans.clear();
+  static thread_local std::vector<Span> kinds;  // spans[k]'s line_interval_i outcome
+  kinds.clear();
+  auto holds = [&](const CoverSpan& sp) { return sp.lo.i.sup() < a.i.inf() && b.i.sup() < sp.hi.i.inf(); };
   for (std::size_t l : cover) {
     ++work.tests;
     if (open_misses(c, c.sums[l], s.L.x0, s.L.u, a.i.inf(), b.i.sup())) continue;
     CoverSpan sp{l, {}, {}};
     const Span r = line_interval_i(c, c.sums[l], s.L, true, sp.lo.i, sp.hi.i, s.L.g);
     if (r == Span::Empty) continue;
-    if (r == Span::Unknown) {
+    if (r == Span::Range && holds(sp)) return;
+    spans.push_back(std::move(sp)), kinds.push_back(r);
+  }
+  // Then in the reference's order: the undecided ones exactly, the order of each against a and b
+  // decided as the reference does.
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < spans.size(); ++k) {
+    CoverSpan& sp = spans[k];
+    if (kinds[k] == Span::Unknown) {
       ++work.exact;
       std::optional<FT> lo, hi;
-      if (!line_interval(c, c.sums[l], s.L, true, lo, hi, s.L.g) || !lo || !hi) continue;
+      if (!line_interval(c, c.sums[sp.sum], s.L, true, lo, hi, s.L.g) || !lo || !hi) continue;
       sp.lo = {iv(*lo), std::move(lo)}, sp.hi = {iv(*hi), std::move(hi)};
+      if (holds(sp)) return;
     }
     if (!less(a, nullptr, sp.hi, &sp) || !less(sp.lo, &sp, b, nullptr)) continue;  // hi <= a or lo >= b
-    // lo < a and b < hi certainly: every candidate (all in [a, b]) is covered, the reference
-    // offers nothing.
-    if (sp.lo.i.sup() < a.i.inf() && b.i.sup() < sp.hi.i.inf()) return;
-    spans.push_back(std::move(sp));
+    if (kept != k) spans[kept] = std::move(sp);
+    ++kept;
   }
+  spans.resize(kept);
   std::vector<LineCandidate> cand{{&foot, nullptr}, {&a, nullptr}, {&b, nullptr}};
   for (CoverSpan& sp : spans) {
     if (!less(sp.lo, &sp, a, nullptr)) cand.push_back({&sp.lo, &sp});
@@ -1097,14 +1171,19 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
   // (minkowski_facets, its plane, the repeated-plane test) kSetupWeight; a line past the interval
   // prunes 1 + the covering sums line_no_offer looked at before it exits; a line of the exact stage
   // kExactLineWeight (its exact u, x0, S_k's interval) + the covering sums offer_on_line looked
-  // at before its exit + kExactIntervalWeight per exact covering interval computed. Weights fitted
-  // to CPU time per query over the tripod's, the combs', the cross's, the star's and the torus
-  // pair's exact σ: ~1.3 µs per unit, within ±25 % (log sd 0.22) on queries over 20 ms
-  // (docs/benchmarks.md "Exact mesh σ: the work counted as done"), so that giving up costs about
-  // the same time whichever stage reaches the limit.
-  constexpr std::size_t kSetupWeight = 15, kExactLineWeight = 1, kExactIntervalWeight = 20;
-  std::size_t work = 0;
-  auto spend = [&](std::size_t units) { return (stats.units = work += units) <= max_work; };
+  // at before its exit + kExactIntervalWeight per exact covering interval computed; in either
+  // stage kRefineWeight per constraint whose λ refine_ends made exact. Weights fitted to CPU time
+  // per query over the tripod's, the combs', the cross's, the star's and the torus pair's exact
+  // σ: ~1.3 µs per unit, within ±25 % (log sd 0.22) on queries over 20 ms (docs/benchmarks.md
+  // "Exact mesh σ: the work counted as done"; refit with kRefineWeight: 1.4 µs, log sd 0.22,
+  // "… tight λ enclosures"), so that giving up costs about the same time whichever stage
+  // reaches the limit.
+  constexpr std::size_t kSetupWeight = 15, kExactLineWeight = 1, kExactIntervalWeight = 20, kRefineWeight = 1;
+  std::size_t work = 0, refined_charged = 0;
+  auto spend = [&](std::size_t units) {  // + the exact λ of refine_ends since the last charge
+    units += kRefineWeight * (c.refined - refined_charged), refined_charged = stats.refined = c.refined;
+    return (stats.units = work += units) <= max_work;
+  };
   // The sums in range and their planes.
   for (std::size_t i = 0; i < m.P.size(); ++i)
     for (std::size_t j = 0; j < m.Q.size(); ++j) {

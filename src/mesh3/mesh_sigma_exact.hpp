@@ -17,14 +17,15 @@ namespace pendepth::mesh3 {
 /// — the setup; per line plane(f) ∩ plane(g) past the interval prunes (line_far), 1 + the covering
 /// sums looked at before line_no_offer exits; per line of the exact stage 1 + the covering sums
 /// looked at before offer_on_line exits (a covering interval holding the segment) + 20 per exact
-/// covering interval computed. Measured (docs/benchmarks.md "Exact mesh σ: the work counted as
-/// done"): ~1.3 µs CPU per unit (±25 %), so the limit is ~1 s and giving up costs about that.
-/// Combs against an L block, CGAL's cross and star spend 3 000–9 000 units (3–10 ms); CGAL's
-/// tripod against itself 28 000–1.4 million over 9 poses (0.03–1.8 s), 8 of them within the
-/// limit; a torus 8×4 pair 0.52–23 million over the 8 poses of the bench that reach it (0.7–32 s),
-/// 3 within; a torus 16×8 × 8×4 pair 2.6 million on its first (6 s). Replaces a limit of
-/// 250 000 units that charged every covering sum of a line before the line's early exits (16
-/// million on the torus pair's pose 0, whose exact σ takes 9 s) and let 5 tripod poses in.
+/// covering interval computed; 1 per constraint whose λ enclosure was made exact (refine_ends).
+/// Measured (docs/benchmarks.md "Exact mesh σ: the work counted as done", "… tight λ
+/// enclosures"): ~1.4 µs CPU per unit (±25 %), so the limit is ~1 s and giving up costs about
+/// that. Combs against an L block, CGAL's cross and star spend 3 000–9 000 units (3–10 ms);
+/// CGAL's tripod against itself 28 000–560 000 over 9 poses (0.02–0.72 s), all within the limit;
+/// a torus 8×4 pair 0.51 to ~20 million over the 8 poses of the bench that reach it (0.6 s to
+/// ~20 s), 3 within; a torus 16×8 × 8×4 pair 1.9 million on its first (2.7 s). Replaces a limit of 250 000
+/// units that charged every covering sum of a line before the line's early exits (16 million on
+/// the torus pair's pose 0, whose exact σ took 9 s) and let 5 tripod poses in.
 inline constexpr std::size_t kExactSigmaMaxWork = 750000;
 
 /// σ = dist(0, complement of O) exactly, given a certified upper bound `upper` >= σ (today's
@@ -68,10 +69,13 @@ struct SigmaCoverCheck {
 /// (the same offer or none: squared distance, point and plane, exactly); the lines that
 /// line_no_offer settles are run by the reference anyway and counted in `no_offer_violations`
 /// when it offers a point. `lines`: lines compared; `ties`: those of them where a covering open
-/// interval's exact end equals an end of the segment [a, b] or another covering interval's end.
+/// interval's exact end equals an end of the segment [a, b] or another covering interval's end;
+/// `refined`: the constraints whose wide λ enclosure was replaced by the exact λ's (the exact
+/// stage's close calls: mesh_sigma_exact.cpp, refine_ends), counted while a check is alive.
 struct SigmaLineCheck {
   static inline thread_local int depth = 0;
-  static inline thread_local std::size_t lines = 0, ties = 0, mismatches = 0, no_offer = 0, no_offer_violations = 0;
+  static inline thread_local std::size_t lines = 0, ties = 0, mismatches = 0, no_offer = 0, no_offer_violations = 0,
+                                         refined = 0;
   SigmaLineCheck() { ++depth; }
   ~SigmaLineCheck() { --depth; }
   SigmaLineCheck(const SigmaLineCheck&) = delete;
@@ -82,9 +86,11 @@ struct SigmaLineCheck {
 /// returns, also when it gives up): `units` the count compared with max_work; its parts in the
 /// filtered tier — `setup` candidate facets, `lines` lines past the interval prunes and their
 /// `tests` (covering sums looked at), `exact_lines` lines of the exact stage, their
-/// `exact_tests` and `exact_intervals` (covering sums' exact intervals computed).
+/// `exact_tests` and `exact_intervals` (covering sums' exact intervals computed), and `refined`
+/// (constraints whose wide λ enclosure got the exact λ's: mesh_sigma_exact.cpp, refine_ends).
 struct SigmaExactWork {
-  std::size_t units = 0, setup = 0, lines = 0, tests = 0, exact_lines = 0, exact_tests = 0, exact_intervals = 0;
+  std::size_t units = 0, setup = 0, lines = 0, tests = 0, exact_lines = 0, exact_tests = 0, exact_intervals = 0,
+              refined = 0;
 };
 inline thread_local SigmaExactWork last_exact_work{};
 

@@ -25,6 +25,7 @@
 #include <array>
 #include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <set>
 #include <tuple>
 #include <vector>
@@ -262,41 +263,61 @@ std::vector<Vec3> grid_translations(const std::set<Voxel>& vp, const std::set<Vo
   return ts;
 }
 
-// Runs the filtered tier under a SigmaLineCheck at the translations `ts` of Q (P at the identity)
-// and compares its answer to the reference tier's (SigmaExactUnfiltered: offer_on_line_exact on
-// every line) — the whole answer, or σ's bits only unless `whole_answer` (tiers_differ counts
-// the poses whose whole answers differ) — and σ to voxel_sigma2. Counts over the overlapping
-// poses.
-LineCheckCounts check_lines(const std::set<Voxel>& vp, const std::set<Voxel>& vq, const std::vector<Vec3>& ts,
-                            const std::string& name, bool whole_answer = true) {
-  const Shape3 sp = mesh_shape(polycube(vp), name + "-p"), sq = mesh_shape(polycube(vq), name + "-q");
+// Runs the filtered tier under a SigmaLineCheck at the poses `poses` (P's, Q's) and compares its
+// answer to the reference tier's (SigmaExactUnfiltered: offer_on_line_exact on every line) — the
+// whole answer, or σ's bits only unless `whole_answer` (tiers_differ counts the poses whose whole
+// answers differ) — and σ to `oracle(k)` when given (σ² of pose k). Counts over the overlapping
+// poses; `refined` the constraints whose λ enclosure refine_ends replaced.
+struct LineCheckRun {
+  LineCheckCounts counts;
+  std::size_t refined = 0;
+};
+LineCheckRun check_lines_at(const Shape3& sp, const Shape3& sq, const std::vector<std::pair<Pose3, Pose3>>& poses,
+                            const std::string& name, bool whole_answer,
+                            const std::function<double(std::size_t)>& oracle) {
   const mesh3::MeshPair m = direct(sp, sq);
   const Pair3 pair(sp, sq);
   mesh3::SigmaLineCheck check;
   mesh3::SigmaLineCheck::lines = mesh3::SigmaLineCheck::ties = mesh3::SigmaLineCheck::mismatches = 0;
-  mesh3::SigmaLineCheck::no_offer = mesh3::SigmaLineCheck::no_offer_violations = 0;
-  LineCheckCounts r;
-  for (const Vec3& t : ts) {
-    const Pose3 pp, pq(t);
+  mesh3::SigmaLineCheck::no_offer = mesh3::SigmaLineCheck::no_offer_violations = mesh3::SigmaLineCheck::refined = 0;
+  LineCheckRun run;
+  LineCheckCounts& r = run.counts;
+  for (std::size_t k = 0; k < poses.size(); ++k) {
+    const auto& [pp, pq] = poses[k];
     if (!pair.overlapping(pp, pq)) continue;
     const auto [d, exact] = both_tiers(m, pp, pq);
-    const double want = std::sqrt(voxel_sigma2(vp, vq, t));
     ++r.poses;
-    const bool right = d && d->depth == want && d->lower_bound <= want && want <= d->upper_bound &&
-                       d->upper_bound <= std::nextafter(d->lower_bound, INFINITY);  // σ rounded, bracketed
-    EXPECT_TRUE(right) << name << " t = " << t.transpose() << ": " << (d ? d->depth : -1) << ", oracle " << want;
+    if (oracle) {
+      const double want = std::sqrt(oracle(k));
+      const bool right = d && d->depth == want && d->lower_bound <= want && want <= d->upper_bound &&
+                         d->upper_bound <= std::nextafter(d->lower_bound, INFINITY);  // σ rounded, bracketed
+      EXPECT_TRUE(right) << name << " pose " << k << ": " << (d ? d->depth : -1) << ", oracle " << want;
+    }
     r.tiers_differ += !same_answer(d, exact);
     if (whole_answer)
-      EXPECT_TRUE(same_answer(d, exact)) << name << " t = " << t.transpose();
+      EXPECT_TRUE(same_answer(d, exact)) << name << " pose " << k;
     else
       EXPECT_TRUE(d && exact && d->depth == exact->depth && d->lower_bound == exact->lower_bound &&
                   d->upper_bound == exact->upper_bound)
-          << name << " t = " << t.transpose();
+          << name << " pose " << k;
   }
   r.lines = mesh3::SigmaLineCheck::lines, r.ties = mesh3::SigmaLineCheck::ties;
   r.mismatches = mesh3::SigmaLineCheck::mismatches, r.no_offer = mesh3::SigmaLineCheck::no_offer;
   r.no_offer_violations = mesh3::SigmaLineCheck::no_offer_violations;
-  return r;
+  run.refined = mesh3::SigmaLineCheck::refined;
+  return run;
+}
+
+// check_lines_at on polycubes at the translations `ts` of Q (P at the identity), σ against the
+// voxel oracle.
+LineCheckCounts check_lines(const std::set<Voxel>& vp, const std::set<Voxel>& vq, const std::vector<Vec3>& ts,
+                            const std::string& name, bool whole_answer = true) {
+  const Shape3 sp = mesh_shape(polycube(vp), name + "-p"), sq = mesh_shape(polycube(vq), name + "-q");
+  std::vector<std::pair<Pose3, Pose3>> poses;
+  for (const Vec3& t : ts) poses.emplace_back(Pose3(), Pose3(t));
+  return check_lines_at(sp, sq, poses, name, whole_answer,
+                        [&](std::size_t k) { return voxel_sigma2(vp, vq, ts[k]); })
+      .counts;
 }
 
 // Combs against an L block and a cup (teeth fitting slots exactly on the integer grid: sums that
@@ -389,6 +410,37 @@ TEST(MeshSigmaLines, ExactFitsDecidedByATie) {
     EXPECT_EQ(r.mismatches, 0u) << name << ": " << r.lines << " lines, " << r.ties << " with ties";
     EXPECT_EQ(r.no_offer_violations, 0u) << name << ": " << r.no_offer << " settled by line_no_offer";
   }
+}
+
+// The exact stage's close calls (refine_ends): Q turned by a tiny angle about a random axis
+// (1e-13 to 1e-5 rad; translations on the half-integer grid), so that the sums' planes are
+// nearly parallel to each other and to the lines of nearly parallel planes f, g: constraints
+// whose λ enclosure is wide (a = n·u near 0) and ends within a few ulps of each other. Every
+// line's outcome equals the reference's, line_no_offer settles no line that offers, σ's bits
+// equal the reference tier's, and the refinement is exercised.
+TEST(MeshSigmaLines, NearlyParallelPlanesRefineTheEnds) {
+  std::mt19937_64 rng(505);
+  std::uniform_real_distribution<double> U(-1, 1);
+  std::size_t lines = 0, refined = 0;
+  for (const auto& [name, vp, vq] : {std::tuple{"comb3-cup1", comb(3), cup(1)}, std::tuple{"comb4-L", comb(4), l_block()}}) {
+    const Shape3 sp = mesh_shape(polycube(vp), std::string(name) + "-p"), sq = mesh_shape(polycube(vq), std::string(name) + "-q");
+    std::vector<std::pair<Pose3, Pose3>> poses;
+    for (const Vec3& t : grid_translations(vp, vq, rng, 12, 0.5, false)) {
+      const double angle = std::pow(10.0, -13 + 8 * (U(rng) + 1) / 2);
+      const Eigen::Quaterniond q(Eigen::AngleAxisd(angle, Vec3(U(rng), U(rng), U(rng)).normalized()));
+      poses.emplace_back(Pose3(), Pose3(q, t));
+    }
+    const LineCheckRun run = check_lines_at(sp, sq, poses, name, false, nullptr);
+    const LineCheckCounts& r = run.counts;
+    std::printf("%s turned slightly: %d poses, %zu lines, %zu with ties, %zu settled by line_no_offer, %zu λ refined\n",
+                name, r.poses, r.lines, r.ties, r.no_offer, run.refined);
+    EXPECT_GE(r.poses, 4) << name;
+    EXPECT_EQ(r.mismatches, 0u) << name << ": " << r.lines << " lines";
+    EXPECT_EQ(r.no_offer_violations, 0u) << name << ": " << r.no_offer << " settled by line_no_offer";
+    lines += r.lines, refined += run.refined;
+  }
+  EXPECT_GE(lines, 50u);
+  EXPECT_GE(refined, 20u) << lines;
 }
 
 // The planted bug in the filtered tier must make the comparison fail.
