@@ -26,9 +26,9 @@
 //     ρ_i = (ρ_D + 2⁻⁹⁷)(1 + 2⁻⁴⁰) < 2⁻⁹⁶.
 //   q̃ = c̃·ĩ (a dd product, ≤ 9u²(1 + 2u) < 2⁻¹⁰² of |q| once the operands' errors are in): ρ_q =
 //     (ρ_c + ρ_i)(1 + 2⁻⁴⁰) + 2⁻¹⁰² ((1 + ε_c)(1 + ε_i) − 1 ≤ (ε_c + ε_i)(1 + 2⁻⁴⁰) as both are
-//     below 2⁻⁴⁰). A product instead of the division's dependent chain (two products, a dd sum, a
-//     third product: σ's value is a latency chain, nearly half of the winner's projection); it
-//     needs |q̃_hi| within [2⁻⁸⁰⁰, 2⁸⁰⁰] for the residual to be exact (else the generic tier).
+//     below 2⁻⁴⁰). One product instead of the division's dependent chain (two products, a dd
+//     sum, a third product, on the path to σ² = c·q); it needs |q̃_hi| within [2⁻⁸⁰⁰, 2⁸⁰⁰] for
+//     the residual to be exact (else the generic tier).
 //   σ̃² = c̃·q̃: ρ_σ = (ρ_c + ρ_q)(1 + 2⁻⁴⁰) + 2⁻¹⁰²; translation q̃·(−Dy), q̃·Dx: ρ_q + 2⁻¹⁰²
 //     (a zero component of D gives an exact zero).
 // Axis-parallel edges (Dx or Dy exactly 0): X − t = −W on the other axis, σ² = W² (below). At a

@@ -492,9 +492,10 @@ Ray edge_ray(const Vec2& o1, const Vec2& o2, const Vec2& a1, const Vec2& a2, con
 // nfp_value.cpp's double-double σ² and translation at a projection against exact rationals: every
 // certified value is RN(exact) bit for bit, and every error bound holds; the bounds are not loose
 // by more than 2¹² on these inputs (shrinking them that much, or dropping them, fails the
-// ASSERT_LE above); the per-piece 1/|D|² within its bound 2⁻⁹⁶ (rationals). Inputs: the pieces of real no-fit polygons with random placements and
-// placements ulps from the edge lines, random edges over 2^±200 magnitudes, axis-parallel edges
-// with placements whose exact offset is a rounding tie, and dyadic ties at direction (1, 2).
+// ASSERT_LE above); the per-piece 1/|D|² within its bound 2⁻⁹⁶ (rationals). Inputs: the pieces
+// of real no-fit polygons with random placements and placements ulps from the edge lines, random
+// edges over 2^±200 magnitudes, axis-parallel edges with placements whose exact offset is a
+// rounding tie, and dyadic ties at direction (1, 2).
 void projection_values_against_rationals() {
   std::mt19937_64 rng(19005);
   ValueStats st;
