@@ -117,7 +117,8 @@ struct NfpFlat {
   // exactly two doubles or magnitudes are out of the fast value's range (nfp_value.cpp).
   struct PieceDD {
     double ox, oxl, oy, oyl, dx, dxl, dy, dyl, dd, ddl;
-    double ddi;  // RN(1 / dd)
+    // 1/|D|² as a double-double (ddinv + ddinvl) within 2⁻⁹⁶ relative (nfp_value.cpp's header).
+    double ddinv = 0, ddinvl = 0;
     // o × D = ox·Dy − oy·Dx as a double-double (k + kl) within ke (σ's projection: c = t × D − o × D).
     double k = 0, kl = 0, ke = 0;
     bool ok = false;

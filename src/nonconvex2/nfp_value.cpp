@@ -21,7 +21,14 @@
 //     c̃ = (tx·Dy − ty·Dx) − k̃: |c̃ − c| ≤ e_c = 2⁻⁹⁹·(|P1| + |P2|) + 2⁻¹⁰⁰·(|S| + |k̃|) + e_k, inflated
 //     by 2⁻⁵⁰ (9u² + 2⁻¹⁰⁰ < 2⁻⁹⁹ per product's magnitude, S = P1 − P2); ρ_c = e_c/|c̃| (required
 //     ≤ 2⁻⁶⁰: a cancellation |k|/|c| up to about 2³⁸ still certifies, t nearer its line defers).
-//   q̃ = c̃ / |D|² (div below, by the stored 1/|D|²_hi; 2⁻⁹⁷ for exact operands): ρ_q = (ρ_c + ρ_D)(1 + 2⁻⁴⁰) + 2⁻⁹⁷.
+//   1/|D|² tabled per piece as a double-double ĩ (div below on |D|²'s double-double: 2⁻⁹⁷ for
+//     exact operands; |D|² itself within ρ_D, and 1/(x(1 + δ)) = (1/x)(1 − δ/(1 + δ))):
+//     ρ_i = (ρ_D + 2⁻⁹⁷)(1 + 2⁻⁴⁰) < 2⁻⁹⁶.
+//   q̃ = c̃·ĩ (a dd product, ≤ 9u²(1 + 2u) < 2⁻¹⁰² of |q| once the operands' errors are in): ρ_q =
+//     (ρ_c + ρ_i)(1 + 2⁻⁴⁰) + 2⁻¹⁰² ((1 + ε_c)(1 + ε_i) − 1 ≤ (ε_c + ε_i)(1 + 2⁻⁴⁰) as both are
+//     below 2⁻⁴⁰). One product instead of the division's dependent chain (two products, a dd
+//     sum, a third product, on the path to σ² = c·q); it needs |q̃_hi| within [2⁻⁸⁰⁰, 2⁸⁰⁰] for
+//     the residual to be exact (else the generic tier).
 //   σ̃² = c̃·q̃: ρ_σ = (ρ_c + ρ_q)(1 + 2⁻⁴⁰) + 2⁻¹⁰²; translation q̃·(−Dy), q̃·Dx: ρ_q + 2⁻¹⁰²
 //     (a zero component of D gives an exact zero).
 // Axis-parallel edges (Dx or Dy exactly 0): X − t = −W on the other axis, σ² = W² (below). At a
@@ -173,7 +180,8 @@ NfpFlat::PieceDD piece_dd(const Ray& E, const Line* edge) {
   const D2 dd = add(mul({v.dx, v.dxl}, {v.dx, v.dxl}), mul({v.dy, v.dyl}, {v.dy, v.dyl}));
   v.dd = dd.hi, v.ddl = dd.lo;
   v.ok = dd.hi >= 0x1p-800;
-  v.ddi = 1 / dd.hi;
+  const D2 inv = div({1, 0}, dd, 1 / dd.hi);  // 1/|D|², ρ_i (header): |D|² in [2⁻⁸⁰⁰, 2⁸⁰¹] when ok
+  v.ddinv = inv.hi, v.ddinvl = inv.lo;
   // o × D (dd products ≤ 9u²·|hi| each, their difference 2⁻¹⁰⁰ of the operands: 2⁻⁹⁹ in all).
   const D2 k1 = mul({v.ox, v.oxl}, {v.dy, v.dyl}), k2 = mul({v.oy, v.oyl}, {v.dx, v.dxl});
   const D2 k = add(k1, {-k2.hi, -k2.lo});
@@ -260,8 +268,10 @@ template <bool F>
   const double ec = (0x1p-99 * (std::abs(p1.hi) + std::abs(p2.hi)) + 0x1p-100 * (std::abs(s.hi) + std::abs(v.k)) + v.ke) * (1 + 0x1p-50);
   const double rc = ec / ac * (1 + 0x1p-50);
   if (!(rc <= 0x1p-60)) return false;
-  const D2 q = div<F>(c, {v.dd, v.ddl}, v.ddi);
-  const double rq = (rc + 0x1p-99) * (1 + 0x1p-40) + exact::kDivBound;
+  const D2 q = mul<F>(c, {v.ddinv, v.ddinvl});
+  const double aq = std::abs(q.hi);
+  if (!(aq >= 0x1p-800 && aq <= 0x1p800)) return false;
+  const double rq = (rc + (0x1p-99 + exact::kDivBound) * (1 + 0x1p-40)) * (1 + 0x1p-40) + 0x1p-102;
   const D2 s2 = mul<F>(c, q);
   const double rs = (rc + rq) * (1 + 0x1p-40) + 0x1p-102;
   const double bs = rs * std::abs(s2.hi) * (1 + 0x1p-40);

@@ -456,6 +456,12 @@ void check_projection(const Ray& E, const Vec2& t, ValueStats& st, const std::st
   ++st.pieces;
   if (!F.pdd[0].ok) return;
   ++st.tried;
+  {  // the tabled 1/|D|² (q = c·1/|D|²) within ρ_i < 2⁻⁹⁶ of the exact reciprocal
+    auto q = [](double x) { return mpq_class(x); };
+    const mpq_class dx = q(E.a1.x()) + q(E.a2.x()) - q(E.b1.x()) - q(E.b2.x()), dy = q(E.a1.y()) + q(E.a2.y()) - q(E.b1.y()) - q(E.b2.y());
+    const mpq_class inv = 1 / (dx * dx + dy * dy);
+    ASSERT_LE(abs(q(F.pdd[0].ddinv) + q(F.pdd[0].ddinvl) - inv), inv * q(0x1p-96)) << what << " 1/|D|²";
+  }
   const ExactProjection X = exact_projection(E, t);
   if (sgn(X.v[0]) == 0) return;  // t on the line: never a query (t ∈ O is on no piece)
   double s2;
@@ -486,9 +492,10 @@ Ray edge_ray(const Vec2& o1, const Vec2& o2, const Vec2& a1, const Vec2& a2, con
 // nfp_value.cpp's double-double σ² and translation at a projection against exact rationals: every
 // certified value is RN(exact) bit for bit, and every error bound holds; the bounds are not loose
 // by more than 2¹² on these inputs (shrinking them that much, or dropping them, fails the
-// ASSERT_LE above). Inputs: the pieces of real no-fit polygons with random placements and
-// placements ulps from the edge lines, random edges over 2^±200 magnitudes, axis-parallel edges
-// with placements whose exact offset is a rounding tie, and dyadic ties at direction (1, 2).
+// ASSERT_LE above); the per-piece 1/|D|² within its bound 2⁻⁹⁶ (rationals). Inputs: the pieces
+// of real no-fit polygons with random placements and placements ulps from the edge lines, random
+// edges over 2^±200 magnitudes, axis-parallel edges with placements whose exact offset is a
+// rounding tie, and dyadic ties at direction (1, 2).
 void projection_values_against_rationals() {
   std::mt19937_64 rng(19005);
   ValueStats st;
