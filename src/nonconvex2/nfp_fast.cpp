@@ -433,8 +433,13 @@ void NfpFlat::first_hit_candidates(const Vec2& t, const Vec2& d, std::vector<std
       crosses = s > B;
     }
     if (crosses) U = std::min(U, hi);
+    if (lo > U) continue;
     // From O's side (the piece's left) to its right: a strictly right of the ray, b strictly left.
-    if (lo <= U) out.push_back(k | (crosses ? kInside | (ca < -e ? kFromO : 0u) : 0u)), los[kept++] = lo;
+    out.push_back(k | (crosses ? kInside | (ca < -e ? kFromO : 0u) : 0u)), los[kept++] = lo;
+    // The winner's crossing value (nfp_value.cpp) reads the piece's line from pdd (two cache
+    // lines, rarely cached: each query is usually on another pair): fetched now, while the
+    // candidates are settled and t ∈ O is proved.
+    __builtin_prefetch(&pdd[k].cx), __builtin_prefetch(&pdd[k].line_ok);
   }
   // Keep those still within the final U (in increasing index order).
   std::size_t w = first;
