@@ -37,7 +37,8 @@
 // double-doubles tabled once per piece (end_dd; below).
 // Each value is returned only when rounds_to certifies the whole interval inside one rounding
 // cell (or, for a coordinate at a vertex or cut end, when it is exact: point_values; σ_d's λ by
-// its residual instead: crossing_certified); magnitudes are kept inside [2⁻⁸⁰⁰, 2⁸⁰⁰] (products' residuals representable) or zero.
+// its residual instead: crossing_certified, or by one division where it is a quotient of two
+// doubles: axis_crossing_exact); magnitudes are kept inside [2⁻⁸⁰⁰, 2⁸⁰⁰] (products' residuals representable) or zero.
 // Cost: ~80 flops per query, no branch on data beyond the range checks.
 #include <bit>
 #include <cmath>
