@@ -386,10 +386,11 @@ inline bool crossing_certified(double q, double r, double E, double den_hi) {
 }
 
 // λ = W/d on an axis-parallel edge (crossing_value_body) when W = c − t on that axis is exactly a
-// double: c = cx + cxl (or cy + cyl) with a zero tail and the two-sum c − t exact (half of σ_d's
-// crossings on nesting pieces: their edges' coordinates and the placements share exponents). Then
+// double: c = cx + cxl (or cy + cyl) with a zero tail and the two-sum c − t exact (a third to over
+// half of σ_d's winners' crossings on nesting pieces, docs/benchmarks.md "Fourteenth step"). Then
 // the division's correctly rounded quotient is RN(λ) itself — ties to even as RN; an exact tie
-// cannot occur (a quotient of two doubles is never a midpoint) — and normal by the range checks
+// cannot occur (a midpoint's odd significand has 54 bits, and W = q·d would need its odd part,
+// a multiple of it, within 53) — and normal by the range checks
 // (|W|, |d|, |q| within [2⁻⁸⁰⁰, 2⁸⁰⁰]): no residual and no certificate. False: not this case.
 inline bool axis_crossing_exact(const NfpFlat::PieceDD& v, const Vec2& t, const Vec2& d, double& lambda) {
   const bool horizontal = v.ey == 0;  // v.line_ok: E ≠ 0, so one of ex, ey is nonzero
@@ -451,10 +452,10 @@ template <bool F>
     r = ((num.hi - p) - residual_of<F>(x, den.hi, p)) + (num.lo - t2);
     E = 0x1p-50 * (std::abs(t2) + std::abs(num.lo) + std::abs(r)) + en + std::abs(x) * ed;
   };
+  residual(q);
   auto report = [&] {
     if (diag) *diag = {{q, r, den.hi}, {0, 0, den.lo}, {0, E, ed}, true, {sc[0], sc[1]}};
   };
-  residual(q);
   if (!crossing_certified(q, r, E, den.hi)) {
     const bool up = (r > 0) == (den.hi > 0);  // λ − q has the sign of r·D
     q = std::bit_cast<double>(std::bit_cast<std::uint64_t>(q) + (up == (q > 0) ? 1 : -1));
