@@ -80,9 +80,10 @@
 // a slab with more than a sixteenth of the edges, all edges up to 256, else the exact pair-sum test)
 // — and two passes over the pieces (σ: the first branch-free, two pieces per SSE2 step, four per
 // AVX step where isa::use_v3() (the same operations per lane: the same doubles), the second over
-// the stored distances; σ_d: the first skips pieces missing the ray's line early, its line test
-// two or four pieces wide likewise — a branch-free version of the whole pass was 17 % slower at
-// 117 pieces and no faster on nesting pieces). σ and σ_d skip the overlap pass when
+// the stored distances; σ_d: the first, its line test two or four pieces wide likewise, lists the
+// pieces meeting the ray's line ahead of t (the dot products only in steps where some lane meets
+// the line), the second visits that list — a branch-free version of the whole pass was 17 %
+// slower at 117 pieces and no faster on nesting pieces). σ and σ_d skip the overlap pass when
 // inside_by_candidates (σ: inside_by_nearest) proves t ∈ O (about half of σ's overlapping
 // placements in the tests, degenerate ones included).
 #include <algorithm>
@@ -236,6 +237,27 @@ int NfpFlat::overlapping(const Vec2& t) const {
 
 namespace {
 
+// The pieces that may meet σ_d's ray line ahead of t (first_hit_candidates' line test), in
+// increasing index order, with ca, cb = cross(d, a − t), cross(d, b − t) and pa, pb = dot(d, a − t),
+// dot(d, b − t). Filled by the line tests a lane mask at a time, then visited by one scalar loop
+// whose running bound and constants stay in registers (a visit inside the SIMD loop read them
+// through the closure's references after every store).
+struct LineMeets {
+  std::uint32_t idx[kFlatMax];
+  double v[4][kFlatMax];  // ca, cb, pa, pb
+  std::size_t n = 0;
+  // Lanes `lanes` (bit i: piece k + i) of a step whose values are c[j][i] (c: ca, cb, pa, pb).
+  template <std::size_t W>
+  void add(std::size_t k, int lanes, const double (&c)[4][W]) {
+    for (; lanes != 0; lanes &= lanes - 1) {
+      const int i = __builtin_ctz(unsigned(lanes));
+      idx[n] = std::uint32_t(k + i);
+      for (int j = 0; j < 4; ++j) v[j][n] = c[j][i];
+      ++n;
+    }
+  }
+};
+
 #if PENDEPTH_V3_CLONES
 // nearest_candidates' pass 1, four pieces per AVX step (x86-64-v3 processors, isa::use_v3()): the
 // same operations per lane as the two-wide and scalar loops (no fused multiply-add: each product
@@ -263,12 +285,11 @@ namespace {
 }
 
 // first_hit_candidates' line test, four pieces per AVX step (as distances_v3: the same operations
-// per lane as the narrower loops); `visit(k, ca, cb)` for each piece that may meet the ray's line,
-// in increasing order; returns the index reached.
-template <class Visit>
+// per lane as the narrower loops): appends each piece that may meet the ray's line ahead of t to
+// `meet`, in increasing order; returns the index reached.
 [[gnu::target("arch=x86-64-v3")]] std::size_t line_test_v3(const double* x0, const double* y0, const double* x1, const double* y1,
                                                             std::size_t n, double tx, double ty, double dx, double dy, double e,
-                                                            Visit& visit) {
+                                                            LineMeets& meet) {
   const __m256d Tx = _mm256_set1_pd(tx), Ty = _mm256_set1_pd(ty), Dx = _mm256_set1_pd(dx), Dy = _mm256_set1_pd(dy);
   const __m256d E = _mm256_set1_pd(e), mE = _mm256_set1_pd(-e);
   std::size_t k = 0;
@@ -279,14 +300,16 @@ template <class Visit>
     const __m256d cb = _mm256_sub_pd(_mm256_mul_pd(Dx, by), _mm256_mul_pd(Dy, bx));
     const __m256d miss = _mm256_or_pd(_mm256_and_pd(_mm256_cmp_pd(ca, E, _CMP_GT_OQ), _mm256_cmp_pd(cb, E, _CMP_GT_OQ)),
                                       _mm256_and_pd(_mm256_cmp_pd(ca, mE, _CMP_LT_OQ), _mm256_cmp_pd(cb, mE, _CMP_LT_OQ)));
-    int meet = ~_mm256_movemask_pd(miss) & 15;
-    if (meet == 0) continue;
-    double c[2][4];
-    _mm256_storeu_pd(c[0], ca), _mm256_storeu_pd(c[1], cb);
-    for (; meet != 0; meet &= meet - 1) {
-      const int i = __builtin_ctz(unsigned(meet));
-      visit(k + i, c[0][i], c[1][i]);
-    }
+    int lanes = ~_mm256_movemask_pd(miss) & 15;
+    if (lanes == 0) continue;
+    // Pieces meeting the line: behind t (both dot products certainly ≤ 0) dropped here.
+    const __m256d pa = _mm256_add_pd(_mm256_mul_pd(Dx, ax), _mm256_mul_pd(Dy, ay));
+    const __m256d pb = _mm256_add_pd(_mm256_mul_pd(Dx, bx), _mm256_mul_pd(Dy, by));
+    lanes &= _mm256_movemask_pd(_mm256_cmp_pd(_mm256_add_pd(_mm256_max_pd(pa, pb), E), _mm256_setzero_pd(), _CMP_GT_OQ));
+    if (lanes == 0) continue;
+    double c[4][4];
+    _mm256_storeu_pd(c[0], ca), _mm256_storeu_pd(c[1], cb), _mm256_storeu_pd(c[2], pa), _mm256_storeu_pd(c[3], pb);
+    meet.add(k, lanes, c);
   }
   return k;
 }
@@ -354,36 +377,15 @@ void NfpFlat::first_hit_candidates(const Vec2& t, const Vec2& d, std::vector<std
   const double M = bound_m(t, rmax), e = 0x1p-40 * M * (std::abs(dx) + std::abs(dy)), B = 0x1p-40 * M * M;
   const std::size_t n = px0.size();
   const double *x0 = px0.data(), *y0 = py0.data(), *x1 = px1.data(), *y1 = py1.data();
-  double U = INFINITY;
-  double los[kFlatMax];  // lower bounds of the kept pieces (n ≤ kFlatMax: usable)
-  std::size_t kept = 0;
-  const std::size_t first = out.size();
-  // Piece k once it may meet the ray's line (ca, cb: cross(d, a − t), cross(d, b − t)).
-  auto visit = [&](std::size_t k, double ca, double cb) {
-    const double ax = x0[k] - tx, ay = y0[k] - ty, bx = x1[k] - tx, by = y1[k] - ty;
-    const double pa = dx * ax + dy * ay, pb = dx * bx + dy * by;
-    const double lo = std::min(pa, pb) - e, hi = std::max(pa, pb) + e;
-    if (hi <= 0) return;  // behind t
-    const bool opposite = (ca > e && cb < -e) || (ca < -e && cb > e);
-    bool crosses = opposite && lo > 0;
-    if (opposite && !crosses) {
-      // The piece spans t's perpendicular: the crossing's λ has the sign of cross(b − a, t − a)
-      // when a is right of the ray (of its opposite when left): ahead, behind, or undecided.
-      const double s = ca < 0 ? side_of_piece(k, tx, ty) : -side_of_piece(k, tx, ty);
-      if (s < -B) return;  // crosses the line behind t
-      crosses = s > B;
-    }
-    if (crosses) U = std::min(U, hi);
-    // From O's side (the piece's left) to its right: a strictly right of the ray, b strictly left.
-    if (lo <= U) out.push_back(std::uint32_t(k) | (crosses ? kInside | (ca < -e ? kFromO : 0u) : 0u)), los[kept++] = lo;
-  };
+  // The line test: pieces with both ends certainly on one side of the ray's line miss it.
+  LineMeets meet;
   std::size_t k = 0;
 #if PENDEPTH_V3_CLONES
-  if (isa::use_v3()) k = line_test_v3(x0, y0, x1, y1, n, tx, ty, dx, dy, e, visit);
+  if (isa::use_v3()) k = line_test_v3(x0, y0, x1, y1, n, tx, ty, dx, dy, e, meet);
 #endif
 #ifdef __SSE2__
-  // The line test two pieces per step (the same operations per lane as the scalar loop below);
-  // most pieces miss the line, so the step usually ends at the mask.
+  // Two pieces per step (the same operations per lane as the scalar loop below); most pieces miss
+  // the line, so the step usually ends at the mask.
   {
     const __m128d Tx = _mm_set1_pd(tx), Ty = _mm_set1_pd(ty), Dx = _mm_set1_pd(dx), Dy = _mm_set1_pd(dy);
     const __m128d E = _mm_set1_pd(e), mE = _mm_set1_pd(-e);
@@ -392,19 +394,52 @@ void NfpFlat::first_hit_candidates(const Vec2& t, const Vec2& d, std::vector<std
       const __m128d bx = _mm_sub_pd(_mm_loadu_pd(x1 + k), Tx), by = _mm_sub_pd(_mm_loadu_pd(y1 + k), Ty);
       const __m128d ca = _mm_sub_pd(_mm_mul_pd(Dx, ay), _mm_mul_pd(Dy, ax)), cb = _mm_sub_pd(_mm_mul_pd(Dx, by), _mm_mul_pd(Dy, bx));
       const __m128d miss = _mm_or_pd(_mm_and_pd(_mm_cmpgt_pd(ca, E), _mm_cmpgt_pd(cb, E)), _mm_and_pd(_mm_cmplt_pd(ca, mE), _mm_cmplt_pd(cb, mE)));
-      const int meet = ~_mm_movemask_pd(miss) & 3;
-      if (meet == 0) continue;
-      double c[2][2];
-      _mm_storeu_pd(c[0], ca), _mm_storeu_pd(c[1], cb);
-      if (meet & 1) visit(k, c[0][0], c[1][0]);
-      if (meet & 2) visit(k + 1, c[0][1], c[1][1]);
+      int lanes = ~_mm_movemask_pd(miss) & 3;
+      if (lanes == 0) continue;
+      const __m128d pa = _mm_add_pd(_mm_mul_pd(Dx, ax), _mm_mul_pd(Dy, ay)), pb = _mm_add_pd(_mm_mul_pd(Dx, bx), _mm_mul_pd(Dy, by));
+      lanes &= _mm_movemask_pd(_mm_cmpgt_pd(_mm_add_pd(_mm_max_pd(pa, pb), E), _mm_setzero_pd()));
+      if (lanes == 0) continue;
+      double c[4][2];
+      _mm_storeu_pd(c[0], ca), _mm_storeu_pd(c[1], cb), _mm_storeu_pd(c[2], pa), _mm_storeu_pd(c[3], pb);
+      meet.add(k, lanes, c);
     }
   }
 #endif
   for (; k < n; ++k) {
-    const double ca = dx * (y0[k] - ty) - dy * (x0[k] - tx), cb = dx * (y1[k] - ty) - dy * (x1[k] - tx);
+    const double ax = x0[k] - tx, ay = y0[k] - ty, bx = x1[k] - tx, by = y1[k] - ty;
+    const double ca = dx * ay - dy * ax, cb = dx * by - dy * bx;
     if ((ca > e && cb > e) || (ca < -e && cb < -e)) continue;  // misses the line
-    visit(k, ca, cb);
+    const double pa = dx * ax + dy * ay, pb = dx * bx + dy * by;
+    if (!(std::max(pa, pb) + e > 0)) continue;  // behind t
+    const double c[4][1] = {{ca}, {cb}, {pa}, {pb}};
+    meet.add(k, 1, c);
+  }
+  // The visit of each piece that may meet the line ahead of t.
+  double U = INFINITY;
+  double los[kFlatMax];  // lower bounds of the kept pieces (n ≤ kFlatMax: usable)
+  std::size_t kept = 0;
+  const std::size_t first = out.size();
+  for (std::size_t i = 0; i < meet.n; ++i) {
+    const std::uint32_t k = meet.idx[i];
+    const double ca = meet.v[0][i], cb = meet.v[1][i], pa = meet.v[2][i], pb = meet.v[3][i];
+    const double lo = std::min(pa, pb) - e, hi = std::max(pa, pb) + e;  // hi > 0 (the line test)
+    const bool opposite = (ca > e && cb < -e) || (ca < -e && cb > e);
+    bool crosses = opposite && lo > 0;
+    if (opposite && !crosses) {
+      // The piece spans t's perpendicular: the crossing's λ has the sign of cross(b − a, t − a)
+      // when a is right of the ray (of its opposite when left): ahead, behind, or undecided.
+      const double s = ca < 0 ? side_of_piece(k, tx, ty) : -side_of_piece(k, tx, ty);
+      if (s < -B) continue;  // crosses the line behind t
+      crosses = s > B;
+    }
+    if (crosses) U = std::min(U, hi);
+    if (lo > U) continue;
+    // From O's side (the piece's left) to its right: a strictly right of the ray, b strictly left.
+    out.push_back(k | (crosses ? kInside | (ca < -e ? kFromO : 0u) : 0u)), los[kept++] = lo;
+    // The winner's crossing value (nfp_value.cpp) reads the piece's line from pdd (two cache
+    // lines, rarely cached: each query is usually on another pair): fetched now, while the
+    // candidates are settled and t ∈ O is proved.
+    __builtin_prefetch(&pdd[k].cx), __builtin_prefetch(&pdd[k].line_ok);
   }
   // Keep those still within the final U (in increasing index order).
   std::size_t w = first;

@@ -37,7 +37,8 @@
 // double-doubles tabled once per piece (end_dd; below).
 // Each value is returned only when rounds_to certifies the whole interval inside one rounding
 // cell (or, for a coordinate at a vertex or cut end, when it is exact: point_values; σ_d's λ by
-// its residual instead: crossing_certified); magnitudes are kept inside [2⁻⁸⁰⁰, 2⁸⁰⁰] (products' residuals representable) or zero.
+// its residual instead: crossing_certified, or by one division where it is a quotient of two
+// doubles: axis_crossing_exact); magnitudes are kept inside [2⁻⁸⁰⁰, 2⁸⁰⁰] (products' residuals representable) or zero.
 // Cost: ~80 flops per query, no branch on data beyond the range checks.
 #include <bit>
 #include <cmath>
@@ -384,30 +385,53 @@ inline bool crossing_certified(double q, double r, double E, double den_hi) {
   return (std::abs(r) + E) * (1 + 0x1p-40) < h * std::abs(den_hi) * (1 - 0x1p-40);
 }
 
+// λ = W/d on an axis-parallel edge (crossing_value_body) when W = c − t on that axis is exactly a
+// double: c = cx + cxl (or cy + cyl) with a zero tail and the two-sum c − t exact (a third to over
+// half of σ_d's winners' crossings on nesting pieces, docs/benchmarks.md "Fourteenth step"). Then
+// the division's correctly rounded quotient is RN(λ) itself — ties to even as RN; an exact tie
+// cannot occur (a midpoint's odd significand has 54 bits, and W = q·d would need its odd part,
+// a multiple of it, within 53) — and normal by the range checks
+// (|W|, |d|, |q| within [2⁻⁸⁰⁰, 2⁸⁰⁰]): no residual and no certificate. False: not this case.
+inline bool axis_crossing_exact(const NfpFlat::PieceDD& v, const Vec2& t, const Vec2& d, double& lambda) {
+  const bool horizontal = v.ey == 0;  // v.line_ok: E ≠ 0, so one of ex, ey is nonzero
+  if (!v.line_ok || (v.ex != 0 && !horizontal) || (horizontal ? v.cyl : v.cxl) != 0) return false;
+  double w, e;
+  two_sum(horizontal ? v.cy : v.cx, -(horizontal ? t.y() : t.x()), w, e);
+  const double den = horizontal ? d.y() : d.x(), q = w / den;
+  const double aw = std::abs(w), ad = std::abs(den), aq = std::abs(q);
+  if (e != 0 || !(aw >= 0x1p-800 && aw <= 0x1p800 && ad >= 0x1p-800 && ad <= 0x1p800 && aq >= 0x1p-800 && aq <= 0x1p800)) return false;
+  lambda = q;
+  return true;
+}
+
 template <bool F>
 [[gnu::always_inline]] inline bool crossing_value_body(const NfpFlat& self, std::uint32_t k, const Vec2& t, const Vec2& d, double& lambda, NfpFlat::ProjectionDiag* diag) {
   const NfpFlat::PieceDD& v = self.pdd[k];
+  // (diag, tests: the general path's bounds are reported, so the shortcut is skipped.)
+  if (!diag && axis_crossing_exact(v, t, d, lambda)) return true;
   if (!v.line_ok || !in_range(t.x()) || !in_range(t.y()) || !in_range(d.x()) || !in_range(d.y())) return false;
   // λ = ((C − t) × E) / (d × E), C = c1 + c2, E = e1 − e0 (exact double-doubles).
-  D2 wx, wy;
-  double ewx, ewy;
-  diff(v.cx, t.x(), -v.cxl, wx, ewx);  // C − t: (cx − t) + cxl
-  diff(v.cy, t.y(), -v.cyl, wy, ewy);
-  if (!in_range(wx.hi) || !in_range(wy.hi)) return false;
   D2 num, den;
   double en, ed, sc[2] = {1, 0};  // num, den: N, D divided by sc[0] + sc[1] (diag)
   if (v.ex == 0 || v.ey == 0) {
     // An axis-parallel edge (a third to two thirds of the pieces' edges on nesting instances): with
     // Ey = 0, N = −Ex·Wy and D = −Ex·dy, so λ = Wy/dy (Ex = 0: Wx/dx) — the numerator W̃ within
-    // e_W on that axis and the denominator the exact double d, without the four double-double
-    // products (the same certificate below, for the same RN(λ)).
+    // e_W on that axis (W = C − t on the other axis not needed) and the denominator the exact
+    // double d, without the four double-double products (the same certificate below, for the
+    // same RN(λ)).
     const bool horizontal = v.ey == 0;  // the two-sum's hi is 0 iff E is exactly 0 on that axis
-    num = horizontal ? wy : wx;
-    en = horizontal ? ewy : ewx;
+    if (horizontal) diff(v.cy, t.y(), -v.cyl, num, en);  // C − t: (c − t) + cl
+    else diff(v.cx, t.x(), -v.cxl, num, en);
+    if (!in_range(num.hi)) return false;
     den = {horizontal ? d.y() : d.x(), 0};
     ed = 0;
     sc[0] = horizontal ? -v.ex : v.ey, sc[1] = horizontal ? -v.exl : v.eyl;
   } else {
+    D2 wx, wy;
+    double ewx, ewy;
+    diff(v.cx, t.x(), -v.cxl, wx, ewx);  // C − t: (cx − t) + cxl
+    diff(v.cy, t.y(), -v.cyl, wy, ewy);
+    if (!in_range(wx.hi) || !in_range(wy.hi)) return false;
     const D2 Ex{v.ex, v.exl}, Ey{v.ey, v.eyl};
     const D2 n1 = mul<F>(wx, Ey), n2 = mul<F>(wy, Ex);
     num = add(n1, {-n2.hi, -n2.lo});

@@ -778,6 +778,15 @@ void check_first_hits(const NoFitPolygon2& nfp, const Vec2& t, const Vec2& d_in,
   ++st.rays;
   std::vector<std::uint32_t> cand;
   F.first_hit_candidates(t, d, cand);
+  {
+    // The same list from the other ISA's line test (four lanes, two lanes and scalar steps).
+    std::vector<std::uint32_t> other;
+    const bool saved = pendepth::isa::use_v3();
+    pendepth::isa::use_v3() = !saved && pendepth::isa::v3_available();
+    F.first_hit_candidates(t, d, other);
+    pendepth::isa::use_v3() = saved;
+    ASSERT_EQ(cand, other) << what << " t = " << t.transpose() << " d = " << d.transpose();
+  }
   const mpq_class dx(d.x()), dy(d.y());
   // Per piece: the exact λ of its first point on the ray (λ > 0), or none.
   const std::size_t n = N.pieces.size();
@@ -1135,7 +1144,30 @@ TEST(NfpFastPath, CrossingValuesAgainstRationals) {
     const Vec2 d = k % 5 == 0 ? Vec2(u(rng), 0) : k % 5 == 1 ? Vec2(0, u(rng)) : Vec2(u(rng), u(rng));
     check(line(v(), c2, e), v(), d, "axis " + std::to_string(k));
   }
-  std::cout << "[crossing certificate] " << tried << " lines, " << certified << " certified, " << exact_ties << " exact ties\n";
+  // Axis-parallel lines whose W = c − t on that axis is exactly a double (nfp_value.cpp's
+  // axis_crossing_exact: λ = W/d by one division, no certificate): integer-like and binary-fraction
+  // coordinates and placements, t level with c (W = 0: no crossing value), rays along every
+  // quadrant, directions with one component a power of two or 1 + 2⁻⁵² (quotients on and next to
+  // rounding midpoints of λ's neighbours), and exponents over the whole range.
+  std::size_t exact_w = 0;
+  std::uniform_int_distribution<int> small(-1000, 1000);
+  for (int k = 0; k < 20000; ++k) {
+    const double s = std::ldexp(1.0, ex(rng) / 2);
+    const bool vertical = k % 2;
+    const double c = small(rng) * s * (k % 7 == 0 ? 0.125 : 1), tt = small(rng) * s * (k % 5 == 0 ? 0.5 : 1), other = u(rng) * s;
+    const double dc = k % 3 == 0 ? std::ldexp(1.0, int(rng() % 5)) * (k % 2 ? -1 : 1) : k % 3 == 1 ? 1 + 0x1p-52 : u(rng);
+    const Vec2 t = vertical ? Vec2(tt, other) : Vec2(other, tt);
+    const Vec2 d = vertical ? Vec2(dc, u(rng)) : Vec2(u(rng), dc);
+    const Vec2 e = vertical ? Vec2(0, u(rng) * s + s) : Vec2(-u(rng) * s - s, 0);
+    const Vec2 c1 = vertical ? Vec2(c, u(rng) * s) : Vec2(u(rng) * s, c);
+    double w, err;
+    pendepth::exact::two_sum(c, -tt, w, err);
+    exact_w += err == 0 && w != 0;
+    check(line(c1, Vec2(0, 0), e), t, d, "axis exact " + std::to_string(k));
+  }
+  std::cout << "[crossing certificate] " << tried << " lines, " << certified << " certified, " << exact_ties << " exact ties, " << exact_w
+            << " exact W on axis-parallel lines\n";
+  EXPECT_GT(exact_w, 10000u);  // the one-division shortcut is exercised
   EXPECT_GT(certified, tried * 9 / 10);
 }
 
