@@ -122,6 +122,9 @@ struct NfpFlat {
     // o × D = ox·Dy − oy·Dx as a double-double (k + kl) within ke (σ's projection: c = t × D − o × D).
     double k = 0, kl = 0, ke = 0;
     bool ok = false;
+    // The sum vertex o + D (μ = 1) exactly as a double-double, when v1_ok (σ's vertex_values).
+    double v1x = 0, v1xl = 0, v1y = 0, v1yl = 0;
+    bool v1_ok = false;
     // The edge line's point c1 + c2 and direction e1 − e0, exact double-doubles (σ_d's crossing).
     double cx, cxl, cy, cyl, ex, exl, ey, eyl;
     bool line_ok = false;
