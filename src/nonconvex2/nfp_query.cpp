@@ -15,7 +15,9 @@
 // minimum(t), t ∈ O: σ = min over pieces of the exact distance from t to the closed piece; the
 //   floating scan's candidates (up to 256 pieces) or branch and bound on the hierarchy with
 //   conservative box distances; exact comparisons of squared distances (edge_cut.hpp, the same
-//   candidates as PairDepth2::minimum); equally near pieces go to the lowest index.
+//   candidates as PairDepth2::minimum); equally near pieces go to the lowest index. On the fast
+//   path two projections on pieces of one exact line are a tie by NfpFlat's line table
+//   (nfp_lines.cpp) instead of same_point's exact collinearity test.
 // On the fast path the candidates come first: a sole candidate whose interior holds t's nearest
 // point (the ray's first) with O's side towards t proves t ∈ O (NfpFlat::inside_by_candidates),
 // and so for σ do candidates all meeting at a reflex vertex of O that is t's nearest point
