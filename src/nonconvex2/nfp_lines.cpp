@@ -33,9 +33,10 @@ namespace pendepth::nonconvex2 {
 
 void build_lines(const NoFitPolygon2::Impl& N, std::vector<std::uint32_t>& out) {
   const std::size_t n = N.pieces.size();
-  std::vector<double> a(n), h(n);
-  std::vector<std::uint32_t> order;  // the pieces with a key (a degenerate direction keeps its own id)
-  order.reserve(n);
+  // Scratch reused per thread (no allocation per build but the output).
+  thread_local std::vector<double> a, h;
+  thread_local std::vector<std::uint32_t> order;  // the pieces with a key (a degenerate direction keeps its own id)
+  a.resize(n), h.resize(n), order.clear();
   double M = 0;
   for (std::size_t k = 0; k < n; ++k) {
     const Line& l = N.pieces[k].edge;

@@ -181,8 +181,18 @@ NfpFlat::PieceDD piece_dd(const Ray& E, const Line* edge) {
   };
   dir(E.a1.x(), E.a2.x(), E.b1.x(), E.b2.x(), v.dx, v.dxl);
   dir(E.a1.y(), E.a2.y(), E.b1.y(), E.b2.y(), v.dy, v.dyl);
-  // The sum vertex at μ = 1, o + D (a P vertex plus a −Q vertex: two doubles), exactly.
+  // The sum vertex at μ = 1, o + D (a P vertex plus a −Q vertex: two doubles), exactly. The common
+  // case (a sum edge's ray: a2 = b2 = 0 and the edge's start b1 one of o's terms, so o + D is the
+  // other term plus a1) by one two-sum — the same normalised pair as the expansion (zeros as +0).
   auto end1 = [&](double o1, double o2, double a1, double a2, double b1, double b2, double& hi, double& lo) {
+    if (a2 == 0 && b2 == 0 && (o1 == b1 || o2 == b1)) {
+      two_sum(a1, o1 == b1 ? o2 : o1, hi, lo);
+      if (std::isfinite(hi) && std::isfinite(lo)) {
+        if (hi == 0) hi = 0;
+        if (lo == 0) lo = 0;
+        return true;
+      }
+    }
     const exact::LiftEx L;
     return exact_dd(L(o1) + L(o2) + L(a1) + L(a2) - L(b1) - L(b2), hi, lo);
   };
