@@ -375,8 +375,10 @@ TEST(NfpFastPath, RotatedPieces) {
 // overlap, t beside the overlap's middle on O's side (left of the piece) at several distances
 // (from 2⁻³⁰ to a quarter of the overlap) and at the middle itself — every answer against the exact
 // path (check_at, bit for bit), and the number of placements whose candidates include two
-// projections on pieces of one id (the lookup taken) counted. Merging parallel lines without the
-// exact test fails the first check; a tie decided for the later index fails check_at.
+// projections on pieces of one id (the lookup taken) counted. Near-collinear steps and tilts of
+// 2⁻⁴⁰ put distinct lines inside the grouping's windows. Merging parallel lines without the exact
+// test, or taking parallel exact-double lines as one, fails the first check; a tie decided for the
+// later index fails check_at.
 struct LineStats {
   std::size_t collinear = 0, missed = 0, placements = 0, lookups = 0;
 };
@@ -451,6 +453,17 @@ TEST(NfpFastPath, LineTableTies) {
   check_line_table(P, Polygon::simple(r, "comb Q"), rng, st, "combs");
   check_line_table(Polygon::simple(std::vector<Vec2>{{0, 0}, {7, 0}, {7, 8}, {5, 8}, {5, 2}, {2, 2}, {2, 8}, {0, 8}}, "U"),
                    Polygon::simple(std::vector<Vec2>{{0, 0}, {3, 0}, {3, 1}, {0, 1}}, "block"), rng, st, "slot");
+  // Near-collinear edges inside the grouping's windows (a step or a tilt of 2⁻⁴⁰ on the top edge):
+  // parallel lines 2⁻⁴⁰ apart and lines 2⁻⁴¹ off parallel, which only the exact test separates.
+  const Polygon unit = Polygon::simple(std::vector<Vec2>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, "unit");
+  for (const double e : {0x1p-40, -0x1p-40}) {
+    const Polygon step = Polygon::simple(std::vector<Vec2>{{0, 0}, {4, 0}, {4, 1}, {2, 1}, {2, 1 + e}, {0, 1 + e}}, "step");
+    const Polygon tilt = Polygon::simple(std::vector<Vec2>{{0, 0}, {4, 0}, {4, 1}, {2, 1}, {0, 1 + e}}, "tilt");
+    for (int k = 0; k < 4; ++k) {
+      check_line_table(quarter_turns(step, k), unit, rng, st, "step " + std::to_string(k));
+      check_line_table(quarter_turns(tilt, k), quarter_turns(step, 1), rng, st, "tilt " + std::to_string(k));
+    }
+  }
   std::cout << "[line table] " << st.collinear << " collinear piece pairs, " << st.missed << " not grouped; " << st.placements
             << " placements beside them, " << st.lookups << " with a tie taken by the table\n";
   EXPECT_GT(st.collinear, 100u);
