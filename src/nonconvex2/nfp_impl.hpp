@@ -229,8 +229,9 @@ namespace nonconvex2 {
 /// NfpFlat::pdd and pend for every piece (nfp_value.cpp); one piece's from its edge ray.
 void build_values(const NoFitPolygon2::Impl& nfp, std::vector<NfpFlat::PieceDD>& out, std::vector<std::array<NfpFlat::EndDD, 2>>& ends);
 NfpFlat::PieceDD piece_dd(const Ray& E, const Line* edge = nullptr);
-/// NfpFlat::pline for every piece (nfp_lines.cpp): pieces on one exact line share an id.
-void build_lines(const NoFitPolygon2::Impl& nfp, std::vector<std::uint32_t>& out);
+/// NfpFlat::pline for every piece (nfp_lines.cpp): pieces on one exact line share an id; pdd the
+/// pieces' PieceDD (build_values: the keys' rounded edge lines).
+void build_lines(const NoFitPolygon2::Impl& nfp, const std::vector<NfpFlat::PieceDD>& pdd, std::vector<std::uint32_t>& out);
 /// NfpFlat::pend's entry for the point at parameter p of E, v = piece_dd(E) (ok false for μ = 0, 1,
 /// a projection, or when v is not ok).
 NfpFlat::EndDD end_dd(const Ray& E, const Param& p, const NfpFlat::PieceDD& v);

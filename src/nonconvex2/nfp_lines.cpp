@@ -73,7 +73,7 @@ bool collinear_exact_doubles(const Line& l, const Line& m) {
 
 }  // namespace
 
-void build_lines(const NoFitPolygon2::Impl& N, std::vector<std::uint32_t>& out) {
+void build_lines(const NoFitPolygon2::Impl& N, const std::vector<NfpFlat::PieceDD>& pdd, std::vector<std::uint32_t>& out) {
   const std::size_t n = N.pieces.size();
   // Scratch reused per thread (no allocation per build but the output).
   thread_local std::vector<double> a, h;
@@ -81,9 +81,11 @@ void build_lines(const NoFitPolygon2::Impl& N, std::vector<std::uint32_t>& out) 
   a.resize(n), h.resize(n), order.clear();
   double M = 0;
   for (std::size_t k = 0; k < n; ++k) {
-    const Line& l = N.pieces[k].edge;
-    double ex = l.e1.x() - l.e0.x(), ey = l.e1.y() - l.e0.y();
-    const double cx = l.c1.x() + l.c2.x(), cy = l.c1.y() + l.c2.y();
+    // The rounded e1 − e0 and c1 + c2 from the compact per-piece table (the pieces' records are
+    // large: one more pass over them costs more than the keys).
+    const NfpFlat::PieceDD& v = pdd[k];
+    double ex = v.ex, ey = v.ey;
+    const double cx = v.cx, cy = v.cy;
     if (ex < 0 || (ex == 0 && ey < 0)) ex = -ex, ey = -ey;
     M = std::max({M, std::abs(cx), std::abs(cy)});
     const double norm = ex + std::abs(ey);
