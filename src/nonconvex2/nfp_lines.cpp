@@ -19,10 +19,10 @@
 // a few ulps (a: ~2⁻⁵⁰; h: ~2⁻⁴⁸·M, M the largest |c|) — far inside the windows taken, 2⁻³⁰ and
 // 2⁻³⁰·M. Pieces sorted by a; each pair within both windows and not yet in one group is tested
 // exactly and merged (union–find: one geometric line is an equivalence class, so merging is
-// exact). The exact test: where the directions, points and their difference are exact doubles
-// (integer-like data), the two degree-2 signs as equalities of exact products (each product's
-// rounding and its FMA residual); else edge_cut.hpp's collinear (symbolic same_line, then exact
-// signs, whose exact zeros need expansions).
+// exact). The exact test: where the directions and the points' difference are exact doubles
+// (integer-like data), the two degree-2 signs by exact::sign_ab_minus_cd (equal products compared
+// by their FMA residuals); else edge_cut.hpp's collinear (symbolic same_line, then exact signs,
+// whose exact zeros need expansions).
 // Cost: O(N log N) for N ≤ 256 pieces (the fast path's bound), plus O(N·w) key comparisons for w
 // lines within the angle window (parallel edges: axis-parallel ones on nesting pieces) and one
 // exact test per merge or near miss.
@@ -37,36 +37,21 @@ namespace pendepth::nonconvex2 {
 
 namespace {
 
-// a·b = c·d exactly, from each product's rounding and its exact residual (FMA; a·b = p + r
-// exactly): 1 equal, 0 not, -1 when a residual may be inexact (a product outside
-// [2⁻⁹⁰⁰, 2¹⁰⁰⁰], or rounded to 0 from nonzero factors).
-int equal_products(double a, double b, double c, double d) {
-  const double p = a * b, q = c * d;
-  auto exact = [](double x, double f, double g) { return x == 0 ? f == 0 || g == 0 : std::abs(x) >= 0x1p-900 && std::abs(x) <= 0x1p1000; };
-  if (!exact(p, a, b) || !exact(q, c, d)) return -1;
-  return p == q && std::fma(a, b, -p) == std::fma(c, d, -q);
-}
-
-// x + y when exactly a double (its two-sum's remainder 0), else NaN.
-double exact_sum(double x, double y) {
-  double s, e;
-  exact::two_sum(x, y, s, e);
-  return e == 0 ? s : NAN;
-}
-
-// collinear(l, m) (edge_cut.hpp) decided on doubles where the line's direction e1 − e0, its point
-// c1 + c2 and the difference of the two points are exact doubles (integer-like data): the two
-// degree-2 signs as comparisons of exact products. Else (or a residual out of range) collinear.
+// collinear(l, m) (edge_cut.hpp) decided on doubles where the lines' directions e1 − e0 and the
+// difference of their points c1 + c2 are exact doubles (integer-like data): the two degree-2 signs
+// by exact::sign_ab_minus_cd (equal products compared by their FMA residuals). Else (or a residual
+// out of range) collinear itself.
 bool collinear_exact_doubles(const Line& l, const Line& m) {
-  const double lx = exact_sum(l.e1.x(), -l.e0.x()), ly = exact_sum(l.e1.y(), -l.e0.y());
-  const double mx = exact_sum(m.e1.x(), -m.e0.x()), my = exact_sum(m.e1.y(), -m.e0.y());
-  const double wx = exact_sum(exact_sum(m.c1.x(), m.c2.x()), -exact_sum(l.c1.x(), l.c2.x()));
-  const double wy = exact_sum(exact_sum(m.c1.y(), m.c2.y()), -exact_sum(l.c1.y(), l.c2.y()));
-  if (std::isfinite(lx + ly + mx + my + wx + wy)) {
-    const int par = equal_products(lx, my, ly, mx);
-    if (par == 0) return false;
-    const int on = par == 1 ? equal_products(lx, wy, ly, wx) : -1;
-    if (on >= 0) return on == 1;
+  using exact::FlX;
+  auto d = [](const Vec2& a, const Vec2& b, int i) { return FlX{a[i]} - FlX{b[i]}; };
+  const FlX lx = d(l.e1, l.e0, 0), ly = d(l.e1, l.e0, 1), mx = d(m.e1, m.e0, 0), my = d(m.e1, m.e0, 1);
+  const FlX wx = FlX{m.c1.x()} + FlX{m.c2.x()} - FlX{l.c1.x()} - FlX{l.c2.x()};
+  const FlX wy = FlX{m.c1.y()} + FlX{m.c2.y()} - FlX{l.c1.y()} - FlX{l.c2.y()};
+  const int par = exact::sign_ab_minus_cd(lx, my, ly, mx);
+  if (par == 0) {
+    if (const int on = exact::sign_ab_minus_cd(lx, wy, ly, wx); on != 2) return on == 0;
+  } else if (par != 2) {
+    return false;
   }
   return collinear(l, m);
 }
