@@ -206,7 +206,7 @@ struct MinBest {
       else if (nonconvex2::compare_params(proj, pc.hi, pc.E, t) >= 0) a = 2;
     }
     if (found) {
-      // Projections on one line (the tabled line ids; on real pieces every tie of the fast path)
+      // Projections on one line (the tabled line ids; every tie of this loop on the bench's pieces)
       // are one point, so are the same point as the running best's: the later index loses.
       if (lines && a == 0 && at == 0 && lines->one_line(k, index)) {
         if (k > index) return;
