@@ -146,6 +146,21 @@ inline Vec2 cand_translation(const Cand& c, const Vec2& t) {
   return Vec2(coord(0), coord(1));
 }
 
+/// One geometric line: symbolically (same_line), or parallel with c1 + c2 of m on l (exact, degree
+/// 2; collinear edges from parallel edges of P and Q are common on real pieces, and their equality
+/// is an exact zero no floating filter can certify).
+inline bool collinear(const Line& l, const Line& m) {
+  if (same_line(l, m)) return true;
+  if (exact::exact_sign([&](auto L) {
+        return (L(l.e1.x()) - L(l.e0.x())) * (L(m.e1.y()) - L(m.e0.y())) - (L(l.e1.y()) - L(l.e0.y())) * (L(m.e1.x()) - L(m.e0.x()));
+      }) != 0)
+    return false;
+  return exact::exact_sign([&](auto L) {
+           auto x = L(m.c1.x()) + L(m.c2.x()) - L(l.c1.x()) - L(l.c2.x()), y = L(m.c1.y()) + L(m.c2.y()) - L(l.c1.y()) - L(l.c2.y());
+           return (L(l.e1.x()) - L(l.e0.x())) * y - (L(l.e1.y()) - L(l.e0.y())) * x;
+         }) == 0;
+}
+
 /// Symbolic identity of two candidate points (the same sum vertex, or the crossing of the same two
 /// symbolic lines); false when not provable this way (the caller then compares exactly).
 inline bool same_point(const Cand& a, const Cand& b) {
@@ -196,18 +211,6 @@ inline bool same_point(const Cand& a, const Cand& b) {
   }
   if (fa) return cut_at_vertex(a, pa, qa, b);
   if (fb) return cut_at_vertex(b, pb, qb, a);
-  // One geometric line: symbolically, or parallel with c1 + c2 of one on the other (exact, degree 2).
-  auto collinear = [](const Line& l, const Line& m) {
-    if (same_line(l, m)) return true;
-    const int par = exact::exact_sign([&](auto L) {
-      return (L(l.e1.x()) - L(l.e0.x())) * (L(m.e1.y()) - L(m.e0.y())) - (L(l.e1.y()) - L(l.e0.y())) * (L(m.e1.x()) - L(m.e0.x()));
-    });
-    if (par != 0) return false;
-    return exact::exact_sign([&](auto L) {
-             auto x = L(m.c1.x()) + L(m.c2.x()) - L(l.c1.x()) - L(l.c2.x()), y = L(m.c1.y()) + L(m.c2.y()) - L(l.c1.y()) - L(l.c2.y());
-             return (L(l.e1.x()) - L(l.e0.x())) * y - (L(l.e1.y()) - L(l.e0.y())) * x;
-           }) == 0;
-  };
   if (a.at.kind == Param::Cut && b.at.kind == Param::Cut)
     return (same_line(a.at.line, b.edge) && collinear(b.at.line, a.edge)) || (same_line(b.at.line, a.edge) && collinear(a.at.line, b.edge));
   // Projections of t on one geometric line (collinear candidates) are one point.

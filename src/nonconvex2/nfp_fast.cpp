@@ -146,6 +146,7 @@ void NfpFlat::build(const NoFitPolygon2::Impl& N) {
   build_values(N, pdd, pend);
   rmax = r;
   usable = !N.pieces.empty() && N.pieces.size() <= kFlatMax && r >= kLow && r <= kHigh;
+  if (usable) build_lines(N, pdd, pline);
   overlap_usable = !N.pieces.empty() && !rx0.empty() && r >= kLow && r <= kHigh;
   if (rx0.size() <= kSlabMin) return;
   // Slabs: about 4 edges per slab; an edge goes to every slab from slab_of(its lowest y) to

@@ -122,6 +122,9 @@ struct NfpFlat {
     // o × D = ox·Dy − oy·Dx as a double-double (k + kl) within ke (σ's projection: c = t × D − o × D).
     double k = 0, kl = 0, ke = 0;
     bool ok = false;
+    // The sum vertex o + D (μ = 1) exactly as a double-double, when v1_ok (σ's vertex_values).
+    double v1x = 0, v1xl = 0, v1y = 0, v1yl = 0;
+    bool v1_ok = false;
     // The edge line's point c1 + c2 and direction e1 − e0, exact double-doubles (σ_d's crossing).
     double cx, cxl, cy, cyl, ex, exl, ey, eyl;
     bool line_ok = false;
@@ -136,6 +139,12 @@ struct NfpFlat {
     bool ok = false;
   };
   std::vector<std::array<EndDD, 2>> pend;
+  // Per piece, when usable: an id of its edge's supporting line (build_lines, nfp_lines.cpp); one
+  // id only for one exact geometric line (collinear pieces the grouping's filter missed keep
+  // distinct ids). σ's winner search takes two projections on pieces of one id as a tie by this
+  // lookup (nfp_query.cpp MinBest) instead of same_point's exact zero tests.
+  std::vector<std::uint32_t> pline;
+  bool one_line(std::uint32_t i, std::uint32_t j) const { return pline[i] == pline[j]; }
 
   void build(const NoFitPolygon2::Impl& nfp);
   std::size_t slab_of(double y, std::size_t count) const;
@@ -220,6 +229,9 @@ namespace nonconvex2 {
 /// NfpFlat::pdd and pend for every piece (nfp_value.cpp); one piece's from its edge ray.
 void build_values(const NoFitPolygon2::Impl& nfp, std::vector<NfpFlat::PieceDD>& out, std::vector<std::array<NfpFlat::EndDD, 2>>& ends);
 NfpFlat::PieceDD piece_dd(const Ray& E, const Line* edge = nullptr);
+/// NfpFlat::pline for every piece (nfp_lines.cpp): pieces on one exact line share an id; pdd the
+/// pieces' PieceDD (build_values: the keys' rounded edge lines).
+void build_lines(const NoFitPolygon2::Impl& nfp, const std::vector<NfpFlat::PieceDD>& pdd, std::vector<std::uint32_t>& out);
 /// NfpFlat::pend's entry for the point at parameter p of E, v = piece_dd(E) (ok false for μ = 0, 1,
 /// a projection, or when v is not ok).
 NfpFlat::EndDD end_dd(const Ray& E, const Param& p, const NfpFlat::PieceDD& v);

@@ -15,7 +15,9 @@
 // minimum(t), t ∈ O: σ = min over pieces of the exact distance from t to the closed piece; the
 //   floating scan's candidates (up to 256 pieces) or branch and bound on the hierarchy with
 //   conservative box distances; exact comparisons of squared distances (edge_cut.hpp, the same
-//   candidates as PairDepth2::minimum); equally near pieces go to the lowest index.
+//   candidates as PairDepth2::minimum); equally near pieces go to the lowest index. On the fast
+//   path two projections on pieces of one exact line are a tie by NfpFlat's line table
+//   (nfp_lines.cpp) instead of same_point's exact collinearity test.
 // On the fast path the candidates come first: a sole candidate whose interior holds t's nearest
 // point (the ray's first) with O's side towards t proves t ∈ O (NfpFlat::inside_by_candidates),
 // and so for σ do candidates all meeting at a reflex vertex of O that is t's nearest point
@@ -148,21 +150,6 @@ std::vector<std::uint32_t>& scratch() {
   return v;
 }
 
-// One geometric line: symbolically, or parallel with a point of one on the other (exact, degree 2;
-// collinear pieces from parallel edges of P and Q are common on real pieces, and the degree-4 λ
-// comparison of two crossings of one line is an exact zero the floating tiers cannot certify).
-bool collinear(const Line& l, const Line& m) {
-  if (nonconvex2::same_line(l, m)) return true;
-  if (exact_sign([&](auto L) {
-        return (L(l.e1.x()) - L(l.e0.x())) * (L(m.e1.y()) - L(m.e0.y())) - (L(l.e1.y()) - L(l.e0.y())) * (L(m.e1.x()) - L(m.e0.x()));
-      }) != 0)
-    return false;
-  return exact_sign([&](auto L) {
-           auto x = L(m.c1.x()) + L(m.c2.x()) - L(l.c1.x()) - L(l.c2.x()), y = L(m.c1.y()) + L(m.c2.y()) - L(l.c1.y()) - L(l.c2.y());
-           return (L(l.e1.x()) - L(l.e0.x())) * y - (L(l.e1.y()) - L(l.e0.y())) * x;
-         }) == 0;
-}
-
 // σ_d's running best: the exact first hit, ties to the lowest piece index.
 struct AlongBest {
   Hit hit;
@@ -205,7 +192,8 @@ struct MinBest {
   Cand cand(const NoFitPolygon2::Impl& N) const { return cand_of(N, index, at); }
   // `flags`: t's projection certified strictly inside the piece (NfpFlat::kInside), before its lo
   // end (kBeforeLo) or beyond its hi end (kBeyondHi) by the fast path; else decided exactly.
-  void consider(const NoFitPolygon2::Impl& N, std::uint32_t k, const Vec2& t, std::uint32_t flags = 0) {
+  // `lines` (the fast path): NfpFlat::pline, two projections on one line being one point.
+  void consider(const NoFitPolygon2::Impl& N, std::uint32_t k, const Vec2& t, std::uint32_t flags = 0, const NfpFlat* lines = nullptr) {
     const NfpPiece& pc = N.pieces[k];
     std::uint8_t a = 0;
     const bool proj_inside = (flags & NfpFlat::kInside) != 0;
@@ -218,14 +206,20 @@ struct MinBest {
       else if (nonconvex2::compare_params(proj, pc.hi, pc.E, t) >= 0) a = 2;
     }
     if (found) {
-      // A shared vertex of two pieces is recognised symbolically.
-      const Cand c = cand_of(N, k, a), b = cand(N);
-      const int s = nonconvex2::same_point(c, b) ? 0 : exact_sign([&](auto L) {
-        auto [n1, d1] = nonconvex2::sq_dist(c, t, L);
-        auto [n2, d2] = nonconvex2::sq_dist(b, t, L);
-        return n1 * d2 - n2 * d1;
-      });
-      if (s > 0 || (s == 0 && k > index)) return;
+      // Projections on one line (the tabled line ids; every tie of this loop on the bench's pieces)
+      // are one point, so are the same point as the running best's: the later index loses.
+      if (lines && a == 0 && at == 0 && lines->one_line(k, index)) {
+        if (k > index) return;
+      } else {
+        // A shared vertex of two pieces is recognised symbolically.
+        const Cand c = cand_of(N, k, a), b = cand(N);
+        const int s = nonconvex2::same_point(c, b) ? 0 : exact_sign([&](auto L) {
+          auto [n1, d1] = nonconvex2::sq_dist(c, t, L);
+          auto [n2, d2] = nonconvex2::sq_dist(b, t, L);
+          return n1 * d2 - n2 * d1;
+        });
+        if (s > 0 || (s == 0 && k > index)) return;
+      }
     }
     index = k;
     at = a;
@@ -334,7 +328,7 @@ bool min_winner(const NoFitPolygon2::Impl& N, const Vec2& t, bool exact_path, Mi
     // At a wedge every candidate's nearest point is the same exact vertex: all tie and the first
     // (lowest index) wins, as the loop's exact comparisons would decide.
     const std::size_t n = wedge ? 1 : cand.size();
-    for (std::size_t i = 0; i < n; ++i) best.consider(N, cand[i] & ~NfpFlat::kFlags, t, cand[i] & NfpFlat::kFlags);
+    for (std::size_t i = 0; i < n; ++i) best.consider(N, cand[i] & ~NfpFlat::kFlags, t, cand[i] & NfpFlat::kFlags, &flat);
   } else {
     // Branch and bound on the hierarchy with conservative box distances; every piece as near as
     // the best is visited (its box key is below its distance), so ties resolve by index.

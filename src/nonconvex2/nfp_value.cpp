@@ -157,6 +157,14 @@ NfpFlat::PieceDD piece_dd(const Ray& E, const Line* edge) {
   two_sum(E.o1.x(), E.o2.x(), v.ox, v.oxl);
   two_sum(E.o1.y(), E.o2.y(), v.oy, v.oyl);
   bool ok = true;
+  // An exact expansion as a normalised double-double (zeros as +0), false when it needs more.
+  auto exact_dd = [](const exact::Ex& e, double& hi, double& lo) {
+    if (!e.ok || e.n > 2) return false;
+    if (e.n == 0) hi = lo = 0;
+    else if (e.n == 1) hi = e.c[0], lo = 0;
+    else two_sum(e.c[1], e.c[0], hi, lo);
+    return true;
+  };
   auto dir = [&](double a1, double a2, double b1, double b2, double& hi, double& lo) {
     // The common case (every candidate's ray: a2 = b2 = 0): D = a1 − b1, whose two-sum is the
     // same normalised pair as the general expansion below (RN of the exact value and the exact
@@ -169,14 +177,28 @@ NfpFlat::PieceDD piece_dd(const Ray& E, const Line* edge) {
         return;
       }
     }
-    const exact::Ex e = exact::LiftEx{}(a1) + exact::LiftEx{}(a2) - exact::LiftEx{}(b1) - exact::LiftEx{}(b2);
-    if (!e.ok || e.n > 2) return void(ok = false);
-    if (e.n == 0) return void(hi = lo = 0);
-    if (e.n == 1) return void((hi = e.c[0], lo = 0));
-    two_sum(e.c[1], e.c[0], hi, lo);
+    const exact::LiftEx L;
+    if (!exact_dd(L(a1) + L(a2) - L(b1) - L(b2), hi, lo)) ok = false;
   };
   dir(E.a1.x(), E.a2.x(), E.b1.x(), E.b2.x(), v.dx, v.dxl);
   dir(E.a1.y(), E.a2.y(), E.b1.y(), E.b2.y(), v.dy, v.dyl);
+  // The sum vertex at μ = 1, o + D (a P vertex plus a −Q vertex: two doubles), exactly. The common
+  // case (a sum edge's ray: a2 = b2 = 0 and the edge's start b1 one of o's terms, so o + D is the
+  // other term plus a1) by one two-sum — the same normalised pair as the expansion (zeros as +0).
+  auto end1 = [&](double o1, double o2, double a1, double a2, double b1, double b2, double& hi, double& lo) {
+    if (a2 == 0 && b2 == 0 && (o1 == b1 || o2 == b1)) {
+      two_sum(a1, o1 == b1 ? o2 : o1, hi, lo);
+      if (std::isfinite(hi) && std::isfinite(lo)) {
+        if (hi == 0) hi = 0;
+        if (lo == 0) lo = 0;
+        return true;
+      }
+    }
+    const exact::LiftEx L;
+    return exact_dd(L(o1) + L(o2) + L(a1) + L(a2) - L(b1) - L(b2), hi, lo);
+  };
+  v.v1_ok = end1(E.o1.x(), E.o2.x(), E.a1.x(), E.a2.x(), E.b1.x(), E.b2.x(), v.v1x, v.v1xl) && in_range(v.v1x) &&
+            end1(E.o1.y(), E.o2.y(), E.a1.y(), E.a2.y(), E.b1.y(), E.b2.y(), v.v1y, v.v1yl) && in_range(v.v1y);
   if (!ok || !in_range(v.ox) || !in_range(v.oy) || !in_range(v.dx) || !in_range(v.dy)) return v;
   const D2 dd = add(mul({v.dx, v.dxl}, {v.dx, v.dxl}), mul({v.dy, v.dyl}, {v.dy, v.dyl}));
   v.dd = dd.hi, v.ddl = dd.lo;
@@ -318,30 +340,25 @@ template <bool F>
   return true;
 }
 
-// At a vertex of the sum (μ = 0: X = o; μ = 1: X = o + D), V = X − t: at μ = 0, V = −W with W̃
-// from diff (|W̃ − W| ≤ e_W); at μ = 1, V = D − W̃ in double-double (dd sum: ≤ 2⁻¹⁰⁰·(|D| + |W̃|)),
-// e_V = e_W + 2⁻¹⁰⁰·(|D_hi| + |W̃_hi|)(1 + 2⁻⁵⁰). σ² = Vx² + Vy²: |Ṽ² − V²| ≤ e_V·(2|Ṽ| + e_V) per
+// At a vertex of the sum X (μ = 0: X = o; μ = 1: X = o + D, tabled exactly as v1), V = X − t = −W
+// with W̃ from diff(t, X) (|W̃ − W| ≤ e_W; e_W = 0 when exact, so a coordinate at a rounding tie is
+// certified, as for μ = 0 — at μ = 1 the former V = D − W̃ in double-double carried a bound and
+// sent every such tie to the generic tier's exact midpoint test: a quarter of shirts' σ winners at a
+// sum vertex). σ² = Vx² + Vy²: |Ṽ² − V²| ≤ e_V·(2|Ṽ| + e_V) per
 // axis, each dd square ≤ 9u²·|Ṽ_hi²|(1 + 2u), the sum ≤ 2⁻¹⁰⁰ of the squares' magnitudes: in all
 // e_σ = Σ e_V(2|Ṽ_hi|(1 + 2⁻⁵⁰) + e_V) + 2⁻⁹⁹·(Ṽx_hi² + Ṽy_hi²), inflated by 2⁻⁴⁰ relative.
 template <bool F>
 [[gnu::always_inline]] inline bool vertex_values_body(const NfpFlat& self, std::uint32_t k, int end, const Vec2& t, double& sigma2, Vec2& translation, NfpFlat::ProjectionDiag* diag) {
   const NfpFlat::PieceDD& v = self.pdd[k];
-  if (!v.ok || !in_range(t.x()) || !in_range(t.y())) return false;
+  if (!v.ok || (end == 1 && !v.v1_ok) || !in_range(t.x()) || !in_range(t.y())) return false;
   D2 w[2];
   double e[2];
-  diff(t.x(), v.ox, v.oxl, w[0], e[0]);
-  diff(t.y(), v.oy, v.oyl, w[1], e[1]);
-  const D2 D[2] = {{v.dx, v.dxl}, {v.dy, v.dyl}};
+  diff(t.x(), end == 0 ? v.ox : v.v1x, end == 0 ? v.oxl : v.v1xl, w[0], e[0]);
+  diff(t.y(), end == 0 ? v.oy : v.v1y, end == 0 ? v.oyl : v.v1yl, w[1], e[1]);
   D2 V[2];
   for (int i = 0; i < 2; ++i) {
     if (!in_range(w[i].hi)) return false;
-    if (end == 0) {
-      V[i] = {-w[i].hi, -w[i].lo};
-    } else {
-      V[i] = add(D[i], {-w[i].hi, -w[i].lo});
-      e[i] += 0x1p-100 * (std::abs(D[i].hi) + std::abs(w[i].hi)) * (1 + 0x1p-50);
-      if (!in_range(V[i].hi)) return false;
-    }
+    V[i] = {-w[i].hi, -w[i].lo};
   }
   return point_values<F>(V, e, sigma2, translation, diag);
 }

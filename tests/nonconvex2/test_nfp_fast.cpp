@@ -25,7 +25,9 @@
 // (linking convex vertices too fails it and ExactFits); FirstHitCandidatesAgainstExact checks σ_d's
 // candidate flags (crossing ahead, from O) and that the first pieces hit are candidates against
 // rationals, with t beside pieces and rays nearly along them (the crossing's side certified by
-// side_of_piece). Pinned seeds.
+// side_of_piece); LineTableTies checks σ's tie table (pieces grouped by exact line) against
+// rationals and places t where candidates on one line tie (albano, shirts, trousers, turned and
+// rotated, exact fits). Pinned seeds.
 #include <pendepth/nfp2.hpp>
 
 #include <gtest/gtest.h>
@@ -38,6 +40,8 @@
 #include <random>
 #include <string>
 #include <vector>
+
+#include <gmpxx.h>
 
 #include "geometry/isa.hpp"
 #include "nfp_shapes.hpp"
@@ -362,6 +366,109 @@ TEST(NfpFastPath, RotatedPieces) {
       check_pair(pieces[i], Q, rng, 15, file + " " + std::to_string(i) + " " + std::to_string(j) + " Q turned " + std::to_string(deg));
     }
   }
+}
+
+// σ's tie table (NfpFlat::pline, nfp_lines.cpp) against rationals: two pieces share an id only if
+// their edge lines are one exact line (cross of the directions and of the offset both 0 in mpq),
+// and on these inputs every collinear pair shares one (the filter's windows miss none). Then
+// placements where σ's candidates tie on one line: for each collinear pair whose rounded extents
+// overlap, t beside the overlap's middle on O's side (left of the piece) at several distances
+// (from 2⁻³⁰ to a quarter of the overlap) and at the middle itself — every answer against the exact
+// path (check_at, bit for bit), and the number of placements whose candidates include two
+// projections on pieces of one id (the lookup taken) counted. Near-collinear steps and tilts of
+// 2⁻⁴⁰ put distinct lines inside the grouping's windows. Merging parallel lines without the exact
+// test, or taking parallel exact-double lines as one, fails the first check; a tie decided for the
+// later index fails check_at.
+struct LineStats {
+  std::size_t collinear = 0, missed = 0, placements = 0, lookups = 0;
+};
+
+void check_line_table(const Polygon& P, const Polygon& Q, std::mt19937_64& rng, LineStats& st, const std::string& what) {
+  const NoFitPolygon2 nfp(P, Q);
+  const auto& N = nfp_impl(nfp);
+  if (!N.flat.usable) return;
+  ASSERT_EQ(N.flat.pline.size(), N.pieces.size()) << what;
+  auto q = [](double x) { return mpq_class(x); };
+  auto collinear = [&](const pendepth::nonconvex2::Line& l, const pendepth::nonconvex2::Line& m) {
+    const mpq_class lx = q(l.e1.x()) - q(l.e0.x()), ly = q(l.e1.y()) - q(l.e0.y());
+    const mpq_class mx = q(m.e1.x()) - q(m.e0.x()), my = q(m.e1.y()) - q(m.e0.y());
+    const mpq_class wx = q(m.c1.x()) + q(m.c2.x()) - q(l.c1.x()) - q(l.c2.x()), wy = q(m.c1.y()) + q(m.c2.y()) - q(l.c1.y()) - q(l.c2.y());
+    return sgn(lx * my - ly * mx) == 0 && sgn(lx * wy - ly * wx) == 0;
+  };
+  std::uniform_real_distribution<double> u(0.1, 0.9);
+  const std::vector<Vec2> dirs{{1, 0}, {0, 1}, {-1, -1}};
+  for (std::size_t i = 0; i < N.pieces.size(); ++i)
+    for (std::size_t j = i + 1; j < N.pieces.size(); ++j) {
+      const bool col = collinear(N.pieces[i].edge, N.pieces[j].edge), one = N.flat.one_line(std::uint32_t(i), std::uint32_t(j));
+      ASSERT_TRUE(!one || col) << what << " pieces " << i << ", " << j << " share a line id off one line";
+      st.collinear += col, st.missed += col && !one;
+      if (!col) continue;
+      // The overlap of the two rounded extents along piece i's direction.
+      const auto &a = N.pieces[i], &b = N.pieces[j];
+      const Vec2 e = a.b - a.a;
+      const double l2 = e.squaredNorm();
+      if (!(l2 > 0)) continue;
+      auto at = [&](const Vec2& p) { return (p - a.a).dot(e) / l2; };
+      const double s0 = std::max(0.0, std::min(at(b.a), at(b.b))), s1 = std::min(1.0, std::max(at(b.a), at(b.b)));
+      if (!(s1 - s0 > 0x1p-20)) continue;
+      const Vec2 X = a.a + (s0 + u(rng) * (s1 - s0)) * e, n = Vec2(-e.y(), e.x()) / std::sqrt(l2);  // O's side: the left
+      for (double d : {0.0, 0x1p-30, 0x1p-12, 0.01, 0.25 * (s1 - s0) * std::sqrt(l2)}) {
+        const Vec2 t = X + d * n;
+        std::vector<std::uint32_t> cand;
+        N.flat.nearest_candidates(t, cand);
+        bool tie = false;
+        for (std::size_t x = 0; x < cand.size(); ++x)
+          for (std::size_t y = x + 1; y < cand.size(); ++y)
+            tie |= (cand[x] & cand[y] & pendepth::nonconvex2::NfpFlat::kInside) != 0 &&
+                   N.flat.one_line(cand[x] & ~pendepth::nonconvex2::NfpFlat::kFlags, cand[y] & ~pendepth::nonconvex2::NfpFlat::kFlags);
+        st.lookups += tie && N.overlapping_exact(t);
+        ++st.placements;
+        check_at(nfp, t, dirs, what);
+      }
+    }
+}
+
+TEST(NfpFastPath, LineTableTies) {
+  std::mt19937_64 rng(19010);
+  LineStats st;
+  const auto albano = instance("albano.json");
+  for (std::size_t i = 0; i < albano.size(); ++i)
+    for (std::size_t j = i % 2; j < albano.size(); j += 2) check_line_table(albano[i], albano[j], rng, st, "albano " + std::to_string(i) + " " + std::to_string(j));
+  for (const std::string file : {"shirts", "trousers"}) {
+    const auto pieces = instance(file + ".json");
+    for (std::size_t k = 0; k < 8; ++k) {
+      const std::size_t i = rng() % pieces.size(), j = rng() % pieces.size();
+      const std::string name = file + " " + std::to_string(i) + " " + std::to_string(j);
+      check_line_table(pieces[i], pieces[j], rng, st, name);
+      check_line_table(pieces[i], quarter_turns(pieces[j], 1 + int(k % 3)), rng, st, name + " Q turned");
+      const double a = (30.0 + 29 * double(k)) * M_PI / 180, c = std::cos(a), s = std::sin(a);
+      const Polygon Q = mapped(pieces[j], [&](const Vec2& p) { return Vec2(c * p.x() - s * p.y(), s * p.x() + c * p.y()); });
+      check_line_table(pieces[i], Q, rng, st, name + " Q rotated");
+    }
+  }
+  // Exact fits: a comb in a comb, a slot (long collinear runs of both shapes' parallel edges).
+  const Polygon P = Polygon::simple(polygon2_test::comb_ring(4, 3, 2, 5, 2), "comb P");
+  auto r = polygon2_test::comb_ring(3, 2, 3, 5, 2);
+  for (auto& p : r) p = Vec2(p.x(), -p.y());
+  check_line_table(P, Polygon::simple(r, "comb Q"), rng, st, "combs");
+  check_line_table(Polygon::simple(std::vector<Vec2>{{0, 0}, {7, 0}, {7, 8}, {5, 8}, {5, 2}, {2, 2}, {2, 8}, {0, 8}}, "U"),
+                   Polygon::simple(std::vector<Vec2>{{0, 0}, {3, 0}, {3, 1}, {0, 1}}, "block"), rng, st, "slot");
+  // Near-collinear edges inside the grouping's windows (a step or a tilt of 2⁻⁴⁰ on the top edge):
+  // parallel lines 2⁻⁴⁰ apart and lines 2⁻⁴¹ off parallel, which only the exact test separates.
+  const Polygon unit = Polygon::simple(std::vector<Vec2>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, "unit");
+  for (const double e : {0x1p-40, -0x1p-40}) {
+    const Polygon step = Polygon::simple(std::vector<Vec2>{{0, 0}, {4, 0}, {4, 1}, {2, 1}, {2, 1 + e}, {0, 1 + e}}, "step");
+    const Polygon tilt = Polygon::simple(std::vector<Vec2>{{0, 0}, {4, 0}, {4, 1}, {2, 1}, {0, 1 + e}}, "tilt");
+    for (int k = 0; k < 4; ++k) {
+      check_line_table(quarter_turns(step, k), unit, rng, st, "step " + std::to_string(k));
+      check_line_table(quarter_turns(tilt, k), quarter_turns(step, 1), rng, st, "tilt " + std::to_string(k));
+    }
+  }
+  std::cout << "[line table] " << st.collinear << " collinear piece pairs, " << st.missed << " not grouped; " << st.placements
+            << " placements beside them, " << st.lookups << " with a tie taken by the table\n";
+  EXPECT_GT(st.collinear, 100u);
+  EXPECT_EQ(st.missed, 0u);
+  EXPECT_GT(st.lookups, st.placements / 20);
 }
 
 // Random star pairs with real and integer coordinates, holes included via the shared shapes.
@@ -963,7 +1070,7 @@ void vertex_values_against_rationals() {
       check(edge_ray(Vec2(end == 0 ? 1 : -1, end == 0 ? 1 : -2), Vec2(0, 0), Vec2(2, 3), Vec2(0, 0), Vec2(0, 0), Vec2(0, 0)), end, t, "tie");
       ties += certified - before;
     }
-  EXPECT_GT(ties, 0u);  // exact ties are certified (e = 0), and checked against RN above
+  EXPECT_EQ(ties, 8u);  // exact ties are certified at both ends (e = 0; μ = 1 from the tabled o + D), checked against RN above
   std::cout << "[vertex values] " << ties << " of 8 exact ties certified; " << tried << " tried, " << certified << " certified; worst error / bound " << worst << "\n";
   EXPECT_GT(certified, tried * 9 / 10);
   EXPECT_GT(worst, 0x1p-12);
