@@ -94,6 +94,7 @@
 #include "convex3/minkowski_facets.hpp"
 #include "convex3/polytope_data.hpp"
 
+#include "mesh3/fine_lambda.hpp"
 #include "mesh3/line_lambda.hpp"
 #include "mesh3/plane_classes.hpp"
 #include "mesh3/plane_number.hpp"
@@ -218,9 +219,11 @@ struct Ctx {
   // computed (LineConstraints::lambda_e): lam_line[class] == line_id when lam_val[class] holds it.
   std::size_t line_id = 0;
   mutable std::size_t refined = 0;  // constraints refine_ends gave the exact λ (the work count)
+  mutable std::size_t fined = 0;    // constraints refine_ends gave the head-and-tail λ (the work count)
   mutable std::vector<std::size_t> lam_line;
   mutable std::vector<FT> lam_val;
   mutable std::vector<std::optional<ExactPlane>> exact;  // planes[p]'s exact numbers, on demand
+  mutable std::vector<std::optional<detail::FinePlane>> fine;  // the same rounded once (fine_lambda.hpp), on demand
 };
 
 template <class T>
@@ -406,6 +409,7 @@ struct LineI {
   std::size_t f = 0, g = 0;       // the planes
   mutable std::optional<V3> ue;   // the exact u, built on demand (exact_u)
   mutable std::optional<V3> x0e;  // the exact x0, built on demand (exact_x0)
+  mutable std::optional<detail::FineLine> fl;  // the exact u and x0 rounded once (fine_lambda)
 };
 LineI interval_line(const Plane& f, const Plane& g, std::size_t fi, std::size_t gi) {
   LineI L;
@@ -529,11 +533,33 @@ I imax(const I& a, const I& b) { return I(std::max(a.inf(), b.inf()), std::max(a
 // line_interval (below) on the enclosures: Empty or Range only when the exact path certainly
 // decides the same (Range: lo, hi enclose its ends), Unknown when a sign or an order is uncertain.
 enum class Span { Empty, Range, Unknown };
-// The enclosure is finite and its width at most 2⁻³⁰ of its magnitude (the rounding of a
-// well-conditioned λ = b/a is ~2⁻⁵⁰).
-bool tight(const I& l) {
+// The enclosure is finite and its width at most 2^-bits of its magnitude: tight (2⁻³⁰) — the
+// double enclosure of a well-conditioned λ = b/a is ~2⁻⁵⁰ wide —, sharp (2⁻⁵⁰: a few ulps, the
+// rounding of a well-conditioned λ or of the head-and-tail λ, fine_lambda.hpp).
+bool narrow(const I& l, double rel) {
   return std::isfinite(l.inf()) && std::isfinite(l.sup()) &&
-         l.sup() - l.inf() <= 0x1p-30 * std::max(std::abs(l.inf()), std::abs(l.sup()));
+         l.sup() - l.inf() <= rel * std::max(std::abs(l.inf()), std::abs(l.sup()));
+}
+bool tight(const I& l) { return narrow(l, 0x1p-30); }
+bool sharp(const I& l) { return narrow(l, 0x1p-50); }
+// The head-and-tail enclosure of the exact λ of planes[p] on the line L (fine_lambda.hpp), from
+// the exact plane and L's exact u, x0 rounded once (cached per plane and per line); nullopt out
+// of its range.
+std::optional<I> fine_lambda(const Ctx& c, const LineI& L, std::size_t p) {
+  auto fine = [&](std::size_t q) -> const detail::FinePlane& {
+    auto& r = c.fine[q];
+    if (!r) {
+      const ExactPlane& e = exact_plane(c, q);
+      r = detail::fine_plane(e.n, e.c);
+    }
+    return *r;
+  };
+  if (!L.fl) L.fl = detail::fine_line(exact_u(c, L), exact_x0(c, L));  // rounded to nearest
+  const detail::FinePlane& fp = fine(p);
+  CGAL::Protect_FPU_rounding<true> up;  // the head-and-tail arithmetic: upward
+  const auto l = detail::fine_lambda(*L.fl, fp);
+  if (!l) return std::nullopt;
+  return I(l->first, l->second);
 }
 // The ends' enclosures lo = imax, hi = imin over the constraints' λ are as wide as the widest
 // constraint that may attain them (a or b of a large relative error: a plane nearly parallel to
@@ -558,10 +584,17 @@ void refine_ends(const Ctx& c, const LineI& L, std::vector<SideLambda>& ls, I& l
     else lo_bound = std::max(lo_bound, q.l.inf());
   }
   for (SideLambda& q : ls) {
-    if (tight(q.l) || (q.pos ? q.l.inf() >= hi_bound : q.l.sup() <= lo_bound)) continue;  // cannot widen an end
-    const ExactPlane& e = exact_plane(c, q.p);
-    q.l = iv((e.c - dot(e.n, *L.x0e)) / dot(e.n, *L.ue));
-    ++c.refined, SigmaLineCheck::refined += SigmaLineCheck::depth > 0;
+    if (sharp(q.l) || (q.pos ? q.l.inf() >= hi_bound : q.l.sup() <= lo_bound)) continue;  // cannot widen an end
+    if (const auto f = fine_lambda(c, L, q.p)) {  // both hold the exact λ: so does their intersection
+      q.l = I(std::max(q.l.inf(), f->inf()), std::min(q.l.sup(), f->sup()));
+      ++c.fined;
+    }
+    if (!tight(q.l)) {
+      const ExactPlane& e = exact_plane(c, q.p);
+      q.l = iv((e.c - dot(e.n, *L.x0e)) / dot(e.n, *L.ue));
+      ++c.refined;
+    }
+    SigmaLineCheck::refined += SigmaLineCheck::depth > 0;
     if (q.pos) hi_bound = std::min(hi_bound, q.l.sup());
     else lo_bound = std::max(lo_bound, q.l.inf());
   }
@@ -629,11 +662,11 @@ Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I&
     } else {
       lo = has_lo ? imax(lo, l) : l, has_lo = true;
     }
-    if (refine) ls.push_back({p, sa == CGAL::POSITIVE, l}), any_wide = any_wide || !tight(l);
+    if (refine) ls.push_back({p, sa == CGAL::POSITIVE, l}), any_wide = any_wide || !sharp(l);
     if (has_lo && has_hi && (strict ? lo.inf() >= hi.sup() : lo.inf() > hi.sup())) return Span::Empty;
   }
   if (!has_lo || !has_hi) return Span::Unknown;
-  if (any_wide && !(tight(lo) && tight(hi))) refine_ends(c, L, ls, lo, hi);
+  if (any_wide && !(sharp(lo) && sharp(hi))) refine_ends(c, L, ls, lo, hi);
   return (strict ? lo.sup() < hi.inf() : lo.sup() <= hi.inf()) ? Span::Range : Span::Unknown;
 }
 
@@ -1133,7 +1166,7 @@ namespace detail {
 CoverResult union_cover(const std::vector<OpenConvex>& sets, const std::vector<Vec3>& polygon, double reach2,
                         bool keep_leaves) {
   static const MeshPair none{};
-  Ctx c{none, Placed{}, {}, {}, true, false, {}, {}, 0, {}, {}, {}};
+  Ctx c{none, Placed{}, {}, {}, true, false, {}, {}, 0, {}, {}, {}, {}, {}, {}};
   for (const OpenConvex& o : sets) {
     Sum s;
     s.first = c.planes.size(), s.count = o.planes.size(), s.box = o.box;
@@ -1163,7 +1196,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
   SigmaExactWork& stats = last_exact_work;
   stats = {};
   if (!(upper >= 0) || !std::isfinite(upper)) return std::nullopt;
-  Ctx c{m, place(m, pose_p, pose_q), {}, {}, SigmaExactUnfiltered::depth == 0, SigmaExactUnfiltered::planted, {}, {}, 0, {}, {}, {}};
+  Ctx c{m, place(m, pose_p, pose_q), {}, {}, SigmaExactUnfiltered::depth == 0, SigmaExactUnfiltered::planted, {}, {}, 0, {}, {}, {}, {}, {}, {}};
   const convex3::RelativePose rel{c.pl.R, c.pl.tq, c.pl.tp};
   const double reach = upper * (1 + 0x1p-30) + 0x1p-1000;
   // The work count (mesh_sigma_exact.hpp, kExactSigmaMaxWork): deterministic, never a clock, in
@@ -1178,10 +1211,11 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
   // "Exact mesh σ: the work counted as done"; refit with kRefineWeight: 1.4 µs, log sd 0.22,
   // "… tight λ enclosures"), so that giving up costs about the same time whichever stage
   // reaches the limit.
-  constexpr std::size_t kSetupWeight = 15, kExactLineWeight = 1, kExactIntervalWeight = 20, kRefineWeight = 1;
-  std::size_t work = 0, refined_charged = 0;
+  constexpr std::size_t kSetupWeight = 15, kExactLineWeight = 1, kExactIntervalWeight = 20, kRefineWeight = 1, kFineWeight = 0;
+  std::size_t work = 0, refined_charged = 0, fined_charged = 0;
   auto spend = [&](std::size_t units) {  // + the exact λ of refine_ends since the last charge
     units += kRefineWeight * (c.refined - refined_charged), refined_charged = stats.refined = c.refined;
+    units += kFineWeight * (c.fined - fined_charged), fined_charged = stats.fined = c.fined;
     return (stats.units = work += units) <= max_work;
   };
   // The sums in range and their planes.
@@ -1215,6 +1249,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
   for (const Sum& s : c.sums) inside = inside || in_open(c, s, zero, zi);
   if (!inside) return std::nullopt;
 
+  c.fine.resize(c.planes.size());
   std::vector<std::size_t> order(c.planes.size());
   for (std::size_t p = 0; p < order.size(); ++p) order[p] = p;
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return c.planes[a].dist < c.planes[b].dist; });
@@ -1326,7 +1361,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
         const FT l2 = dot(x0, x0);
         if (best.beyond(l2)) continue;
         std::optional<FT> a, b;
-        const LineI Le{iv(u), iv(x0), iv(u2), iv(l2), fi, gi, u, x0};
+        const LineI Le{iv(u), iv(x0), iv(u2), iv(l2), fi, gi, u, x0, {}};
         ++c.line_id;  // a new line: no λ cached (LineConstraints::lambda_e)
         if (!line_interval(c, sk, Le, false, a, b, gi)) continue;
         if (!a || !b) continue;  // unreachable: S_k is bounded

@@ -90,7 +90,7 @@ struct SigmaLineCheck {
 /// (constraints whose wide λ enclosure got the exact λ's: mesh_sigma_exact.cpp, refine_ends).
 struct SigmaExactWork {
   std::size_t units = 0, setup = 0, lines = 0, tests = 0, exact_lines = 0, exact_tests = 0, exact_intervals = 0,
-              refined = 0;
+              refined = 0, fined = 0;
 };
 inline thread_local SigmaExactWork last_exact_work{};
 
