@@ -123,4 +123,20 @@ inline std::optional<std::pair<double, double>> fine_lambda(const FineLine& L, c
   return std::pair{l.inf(), l.sup()};
 }
 
+// Upward rounding (the caller's guard): the sign of λ_p − λ_q on L (−1, 0, 1) — of (b_p·a_q −
+// b_q·a_p) / (a_p·a_q), the numerator to ~2⁻¹⁰⁰ of its terms, so λ a fraction of an ulp apart are
+// ordered and exact ties whose residuals vanish exactly are found equal — or nullopt (out of
+// range, a sign of a or of the numerator uncertain).
+inline std::optional<int> fine_compare(const FineLine& L, const FinePlane& p, const FinePlane& q) {
+  if (!L.ok || !p.ok || !q.ok) return std::nullopt;
+  const Ht ap = dot(p.n, L.u), aq = dot(q.n, L.u);
+  const IFine api = enclose(ap), aqi = enclose(aq);
+  if (!(api.inf() > 0 || api.sup() < 0) || !(aqi.inf() > 0 || aqi.sup() < 0)) return std::nullopt;
+  const Ht bp = p.c - dot(p.n, L.x0), bq = q.c - dot(q.n, L.x0);
+  const IFine d = enclose(bp * aq - bq * ap);
+  const int sd = d.inf() > 0 ? 1 : d.sup() < 0 ? -1 : 0;
+  if (sd == 0 && !(d.inf() == 0 && d.sup() == 0)) return std::nullopt;
+  return (api.inf() > 0) == (aqi.inf() > 0) ? sd : -sd;
+}
+
 }  // namespace pendepth::mesh3::detail

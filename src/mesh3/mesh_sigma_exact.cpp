@@ -542,24 +542,36 @@ bool narrow(const I& l, double rel) {
 }
 bool tight(const I& l) { return narrow(l, 0x1p-30); }
 bool sharp(const I& l) { return narrow(l, 0x1p-50); }
-// The head-and-tail enclosure of the exact λ of planes[p] on the line L (fine_lambda.hpp), from
-// the exact plane and L's exact u, x0 rounded once (cached per plane and per line); nullopt out
-// of its range.
+// planes[p] and the line L rounded once (fine_lambda.hpp: the exact plane; L's exact u and x0),
+// cached per plane and per line.
+const detail::FinePlane& fine_plane(const Ctx& c, std::size_t p) {
+  auto& r = c.fine[p];
+  if (!r) {
+    const ExactPlane& e = exact_plane(c, p);
+    r = detail::fine_plane(e.n, e.c);
+  }
+  return *r;
+}
+const detail::FineLine& fine_line(const Ctx& c, const LineI& L) {
+  if (!L.fl) L.fl = detail::fine_line(exact_u(c, L), exact_x0(c, L));
+  return *L.fl;
+}
+// The head-and-tail enclosure of the exact λ of planes[p] on the line L (detail::fine_lambda);
+// nullopt out of its range.
 std::optional<I> fine_lambda(const Ctx& c, const LineI& L, std::size_t p) {
-  auto fine = [&](std::size_t q) -> const detail::FinePlane& {
-    auto& r = c.fine[q];
-    if (!r) {
-      const ExactPlane& e = exact_plane(c, q);
-      r = detail::fine_plane(e.n, e.c);
-    }
-    return *r;
-  };
-  if (!L.fl) L.fl = detail::fine_line(exact_u(c, L), exact_x0(c, L));  // rounded to nearest
-  const detail::FinePlane& fp = fine(p);
+  const detail::FineLine& fl = fine_line(c, L);  // rounded to nearest
+  const detail::FinePlane& fp = fine_plane(c, p);
   CGAL::Protect_FPU_rounding<true> up;  // the head-and-tail arithmetic: upward
-  const auto l = detail::fine_lambda(*L.fl, fp);
+  const auto l = detail::fine_lambda(fl, fp);
   if (!l) return std::nullopt;
   return I(l->first, l->second);
+}
+// The sign of λ_p − λ_q on L (detail::fine_compare), nullopt when undecided.
+std::optional<int> fine_compare(const Ctx& c, const LineI& L, std::size_t p, std::size_t q) {
+  const detail::FineLine& fl = fine_line(c, L);
+  const detail::FinePlane &fp = fine_plane(c, p), &fq = fine_plane(c, q);
+  CGAL::Protect_FPU_rounding<true> up;
+  return detail::fine_compare(fl, fp, fq);
 }
 // The ends' enclosures lo = imax, hi = imin over the constraints' λ are as wide as the widest
 // constraint that may attain them (a or b of a large relative error: a plane nearly parallel to
@@ -605,7 +617,33 @@ void refine_ends(const Ctx& c, const LineI& L, std::vector<SideLambda>& ls, I& l
   }
   lo = I(lo_bound, lo_sup), hi = I(hi_inf, hi_bound);
 }
-Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I& lo, I& hi, std::size_t gp) {
+// A plane attaining the end `end` of L (the least λ of the a > 0 side when `pos`, else the
+// greatest of a < 0): the extremum, by fine_compare, of the constraints that may attain it (their
+// enclosure reaches the end's enclosure; one class of planes, Ctx::cls, needs no comparison);
+// SIZE_MAX when a comparison is undecided. The exact end is the λ of a constraint that attains it,
+// which passes the test, so it is the λ of that plane — and of any plane of its class (one
+// geometric plane, either side: n, c scaled by t != 0, b/a unchanged): ends of one class on one
+// line are equal exactly, and ends of known planes are ordered by their planes (fine_compare) —
+// offer_on_line's exact ties and near ties decided without the exact numbers.
+std::size_t end_plane(const Ctx& c, const LineI& L, const std::vector<SideLambda>& ls, bool pos, const I& end) {
+  std::size_t k = SIZE_MAX;
+  for (const SideLambda& q : ls) {
+    if (q.pos != pos || (pos ? q.l.inf() > end.sup() : q.l.sup() < end.inf())) continue;
+    if (k == SIZE_MAX || c.cls[q.p] == c.cls[k]) {
+      if (k == SIZE_MAX) k = q.p;
+      continue;
+    }
+    const auto r = fine_compare(c, L, q.p, k);  // sign(λ_q − λ_k)
+    if (!r) return SIZE_MAX;
+    if (pos ? *r < 0 : *r > 0) k = q.p;
+  }
+  return k;
+}
+// `planes` (optional, the filtered tier's exact stage): planes attaining lo and hi (end_plane),
+// SIZE_MAX where not certain or not computed.
+Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I& lo, I& hi, std::size_t gp,
+                     std::array<std::size_t, 2>* planes = nullptr) {
+  if (planes) *planes = {SIZE_MAX, SIZE_MAX};
   bool has_lo = false, has_hi = false;
   const bool refine = L.x0e && L.ue;  // exact x0 and u known: wide ends are refined (refine_ends)
   bool any_wide = false;
@@ -667,6 +705,7 @@ Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I&
   }
   if (!has_lo || !has_hi) return Span::Unknown;
   if (any_wide && !(sharp(lo) && sharp(hi))) refine_ends(c, L, ls, lo, hi);
+  if (planes && refine) *planes = {end_plane(c, L, ls, false, lo), end_plane(c, L, ls, true, hi)};
   return (strict ? lo.sup() < hi.inf() : lo.sup() <= hi.inf()) ? Span::Range : Span::Unknown;
 }
 
@@ -822,6 +861,7 @@ void offer_on_line_exact(const Ctx& c, const LineSegment& s, const std::vector<s
 struct LazyEnd {
   I i;
   std::optional<FT> e;
+  std::size_t plane = SIZE_MAX;  // a plane attaining it, when certain (end_plane)
 };
 // A covering sum's open interval on the line: its ends as enclosures (line_interval_i) until a
 // comparison needs one exactly, then both by line_interval.
@@ -857,14 +897,28 @@ void offer_on_line(const Ctx& c, const LineSegment& s, const std::vector<std::si
     }
     return *x.e;
   };
+  // The order of two ends of known planes (end_plane): equal when of one class, else by the
+  // head-and-tail comparison of their planes' λ (fine_compare); nullopt when undecided.
+  auto plane_order = [&](const LazyEnd& x, const LazyEnd& y) -> std::optional<int> {
+    if (x.plane == SIZE_MAX || y.plane == SIZE_MAX) return std::nullopt;
+    if (c.cls[x.plane] == c.cls[y.plane]) return 0;
+    return fine_compare(c, s.L, x.plane, y.plane);
+  };
   auto less = [&](LazyEnd& x, CoverSpan* sx, LazyEnd& y, CoverSpan* sy) {  // x < y, exactly
     if (x.i.sup() < y.i.inf()) return true;
     if (x.i.inf() >= y.i.sup()) return false;
+    if (const auto r = plane_order(x, y)) return *r < 0;
     return value(x, sx) < value(y, sy);
   };
   LazyEnd a{iv(s.a), s.a}, b{iv(s.b), s.b};
+  {  // the classes attaining a and b (S_k's closed interval again on enclosures)
+    std::array<std::size_t, 2> k;
+    I ai, bi;
+    line_interval_i(c, c.sums[c.planes[s.L.f].sum], s.L, false, ai, bi, s.L.g, &k);
+    a.plane = k[0], b.plane = k[1];
+  }
   const FT foot_v = is_positive(s.a) ? s.a : is_negative(s.b) ? s.b : FT(0);
-  LazyEnd foot{iv(foot_v), foot_v};
+  LazyEnd foot{iv(foot_v), foot_v, is_positive(s.a) ? a.plane : is_negative(s.b) ? b.plane : SIZE_MAX};
   // Covering open intervals (the ones meeting [a, b]): certainly missing ones (open_misses, an
   // empty enclosure) dropped; first on enclosures only, so that a covering interval certainly
   // holding [a, b] strictly — lo < a and b < hi certainly: every candidate (all in [a, b]) is
@@ -878,7 +932,9 @@ void offer_on_line(const Ctx& c, const LineSegment& s, const std::vector<std::si
     ++work.tests;
     if (open_misses(c, c.sums[l], s.L.x0, s.L.u, a.i.inf(), b.i.sup())) continue;
     CoverSpan sp{l, {}, {}};
-    const Span r = line_interval_i(c, c.sums[l], s.L, true, sp.lo.i, sp.hi.i, s.L.g);
+    std::array<std::size_t, 2> k;
+    const Span r = line_interval_i(c, c.sums[l], s.L, true, sp.lo.i, sp.hi.i, s.L.g, &k);
+    sp.lo.plane = k[0], sp.hi.plane = k[1];
     if (r == Span::Empty) continue;
     if (r == Span::Range && holds(sp)) return;
     spans.push_back(std::move(sp)), kinds.push_back(r);
@@ -892,7 +948,7 @@ void offer_on_line(const Ctx& c, const LineSegment& s, const std::vector<std::si
       ++work.exact;
       std::optional<FT> lo, hi;
       if (!line_interval(c, c.sums[sp.sum], s.L, true, lo, hi, s.L.g) || !lo || !hi) continue;
-      sp.lo = {iv(*lo), std::move(lo)}, sp.hi = {iv(*hi), std::move(hi)};
+      sp.lo = {iv(*lo), std::move(lo), sp.lo.plane}, sp.hi = {iv(*hi), std::move(hi), sp.hi.plane};
       if (holds(sp)) return;
     }
     if (!less(a, nullptr, sp.hi, &sp) || !less(sp.lo, &sp, b, nullptr)) continue;  // hi <= a or lo >= b
@@ -909,6 +965,9 @@ void offer_on_line(const Ctx& c, const LineSegment& s, const std::vector<std::si
     const I ax = CGAL::abs(x.v->i), ay = CGAL::abs(y.v->i);
     if (ax.sup() < ay.inf()) return true;
     if (ax.inf() >= ay.sup()) return false;
+    const int sx = x.v->i.inf() > 0 ? 1 : x.v->i.sup() < 0 ? -1 : 0, sy = y.v->i.inf() > 0 ? 1 : y.v->i.sup() < 0 ? -1 : 0;
+    if (sx != 0 && sx == sy)  // of one certain sign: |x| < |y| is x < y (or y < x)
+      if (const auto r = plane_order(*x.v, *y.v)) return sx * *r < 0;
     return abs(value(*x.v, x.span)) < abs(value(*y.v, y.span));
   });
   for (const LineCandidate& k : cand) {

@@ -138,6 +138,37 @@ TEST(FineLambda, CloseCallsAreEnclosed) {
   EXPECT_EQ(sharp, n);  // given and a few ulps wide: the inputs carry no cancellation
 }
 
+// fine_compare: the order of two planes' λ on a line, against the exact λ — exact ties (both
+// planes through a vertex of the line: the same λ exactly) and near ties (one of them through a
+// point 1e-13 .. 1e-5 off that vertex): never a wrong sign; every near tie ordered; exact ties
+// found equal or left undecided (the exact σ then takes the exact numbers).
+TEST(FineLambda, ComparesTiesAndNearTies) {
+  std::mt19937_64 gen(29);
+  int near = 0, near_decided = 0, ties = 0;
+  for (int k = 0; k < 3000; ++k) {
+    const D3 a = rnd(gen, 1), b = rnd(gen, 1);
+    const Plane f = through(a, b, rnd(gen, 1)), g = through(a, b, rnd(gen, 1));
+    const double off = k % 2 ? 0.0 : std::pow(10.0, -5.0 - 8.0 * static_cast<double>(gen() % 1000) / 1000.0);
+    const Plane p = through(a, rnd(gen, 1), rnd(gen, 1)), q = through(add(a, rnd(gen, 1), off), rnd(gen, 1), rnd(gen, 1));
+    const Line L = line_of(f, g);
+    if (is_zero(dot(p.n, L.u)) || is_zero(dot(q.n, L.u))) continue;
+    const d::FineLine fl = d::fine_line(L.u, L.x0);
+    const d::FinePlane fp = d::fine_plane(p.n, p.c), fq = d::fine_plane(q.n, q.c);
+    std::optional<int> r;
+    {
+      CGAL::Protect_FPU_rounding<true> up;
+      r = d::fine_compare(fl, fp, fq);
+    }
+    const int want = cmp(exact_lambda(L, p), exact_lambda(L, q));
+    (want == 0 ? ties : near) += 1;
+    if (!r) continue;
+    near_decided += want != 0;
+    EXPECT_EQ(*r, want < 0 ? -1 : want > 0 ? 1 : 0) << k;  // a tie: 0 (its residuals vanished) or undecided
+  }
+  EXPECT_EQ(near_decided, near);  // every near tie ordered (1e-13 off: far above 2⁻¹⁰⁰)
+  EXPECT_GT(ties, 1000);
+}
+
 // Exactly parallel to the line: n·u = 0 — no enclosure (refused, the exact path decides).
 TEST(FineLambda, ParallelPlaneIsRefused) {
   const Plane f = through({0, 0, 0}, {1, 0, 0}, {0, 1, 0}), g = through({0, 0, 0}, {1, 0, 0}, {0, 0, 1}),
