@@ -58,11 +58,15 @@
 // (as in line_no_offer; looked for on enclosures over all covering sums before any exact
 // interval), a covering interval's exact ends are computed only when a comparison on their
 // enclosures is undecided, and a line's λ on a plane once per class of equal planes; the
-// interval ends there are kept tight — a constraint whose λ enclosure is wide and may attain an
-// end gets the exact λ's (refine_ends), a = n·u near 0 its exact value — so that fewer covering
-// intervals are left Unknown and fewer comparisons undecided (the torus 8×4 pair's pose 0: 54 %
-// fewer exact intervals with the holder first, 5.2 s instead of 6.8; docs/benchmarks.md "… tight
-// λ enclosures").
+// interval ends there are kept sharp — a constraint whose λ enclosure is wider than a few ulps and
+// may attain an end gets a head-and-tail enclosure of its λ from the exact line and plane rounded
+// once (fine_lambda.hpp: ~2⁻¹⁰⁰ of the terms, sound by construction), the exact λ only where that
+// is not tight (refine_ends), a = n·u near 0 its exact value — so that fewer covering intervals
+// are left Unknown and fewer comparisons undecided; and an end whose attaining plane is certain
+// (end_plane) is compared with another such end without the exact numbers: equal when their
+// planes are of one class, else by the head-and-tail order of their λ (fine_compare) — the torus
+// 8×4 pair's pose 0: 99 000 exact covering intervals and 638 000 exact λ before, 31 000 and 300
+// after (docs/benchmarks.md "… tight λ enclosures", "… a head-and-tail filter for λ").
 // Filtered tier, lines once per class: planes equal across sums (the same geometric plane, either
 // side, decided exactly) form classes (plane_classes), and for a facet f each line plane(f) ∩
 // plane(g) is run once per class of g — the same line offers the same points. The interval
@@ -1264,13 +1268,15 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
   // prunes 1 + the covering sums line_no_offer looked at before it exits; a line of the exact stage
   // kExactLineWeight (its exact u, x0, S_k's interval) + the covering sums offer_on_line looked
   // at before its exit + kExactIntervalWeight per exact covering interval computed; in either
-  // stage kRefineWeight per constraint whose λ refine_ends made exact. Weights fitted to CPU time
+  // stage kRefineWeight per constraint whose λ refine_ends made exact and kFineWeight per one it
+  // gave the head-and-tail λ (fine_lambda.hpp). Weights fitted to CPU time
   // per query over the tripod's, the combs', the cross's, the star's and the torus pair's exact
   // σ: ~1.3 µs per unit, within ±25 % (log sd 0.22) on queries over 20 ms (docs/benchmarks.md
   // "Exact mesh σ: the work counted as done"; refit with kRefineWeight: 1.4 µs, log sd 0.22,
-  // "… tight λ enclosures"), so that giving up costs about the same time whichever stage
-  // reaches the limit.
-  constexpr std::size_t kSetupWeight = 15, kExactLineWeight = 1, kExactIntervalWeight = 20, kRefineWeight = 1, kFineWeight = 0;
+  // "… tight λ enclosures"; with kFineWeight: 1.3 µs at load 5, log sd 0.20, "… a head-and-tail
+  // filter for λ"), so that giving up costs about the same time whichever stage reaches the limit.
+  constexpr std::size_t kSetupWeight = 15, kExactLineWeight = 1, kExactIntervalWeight = 20, kRefineWeight = 1,
+                        kFineWeight = 1;
   std::size_t work = 0, refined_charged = 0, fined_charged = 0;
   auto spend = [&](std::size_t units) {  // + the exact λ of refine_ends since the last charge
     units += kRefineWeight * (c.refined - refined_charged), refined_charged = stats.refined = c.refined;

@@ -6,7 +6,11 @@
 // vertex (degree 2 and 3 in the input doubles, exact PlaneNumbers) — and the cases are its close
 // calls: a plane nearly parallel to the line (its normal turned by 1e-13 to 1e-5 rad out of the
 // plane ⟂ u), the line's planes nearly parallel to each other, a plane nearly through the line's
-// point x0, magnitudes 2^±40, and out-of-range inputs (no enclosure, never a wrong one).
+// point x0, magnitudes 2^±40, and out-of-range inputs (no enclosure, never a wrong one); and the
+// order of two planes' λ (fine_compare) at exact and near ties.
+// Planted by hand (not committed), each made these tests fail: a product's residual dropped from
+// its tail (the enclosure tests and the order), fine_compare's sign not flipped when a_p and a_q
+// differ in sign (the order test).
 #include "mesh3/fine_lambda.hpp"
 #include "rational.hpp"
 
