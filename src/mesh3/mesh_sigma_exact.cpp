@@ -583,11 +583,14 @@ std::optional<int> fine_compare(const Ctx& c, const LineI& L, std::size_t p, std
 // its comparisons undecided — each then an exact covering interval (the torus 8×4 pair's pose 0:
 // 111 000 Unknown covering intervals, a third of the undecided comparisons with enclosures wider
 // than the ends' distance). On a line whose exact x0 and u are known (the exact stage), the wide
-// constraints `ls` (side, λ enclosure) that may attain an end — their enclosure reaches past the
-// other constraints' certain bound — get the enclosure of the exact λ (tight: an exact number
-// rounded outward), and the ends are recomputed from all: still enclosures of the exact ends, so
-// no decision changes, only fewer are left to the exact intervals (docs/benchmarks.md "Exact mesh
-// σ: tight λ enclosures"). O(count) + an exact λ per refined constraint.
+// constraints `ls` (side, λ enclosure; wide: not sharp) that may attain an end — their enclosure
+// reaches past the other constraints' certain bound — get the head-and-tail enclosure of their λ
+// (fine_lambda.hpp: an ulp or two), intersected with theirs, and the enclosure of the exact λ
+// (an exact number rounded outward) only when that is still not tight; the ends are recomputed
+// from all: still enclosures of the exact ends, so no decision changes, only fewer are left to
+// the exact intervals (docs/benchmarks.md "Exact mesh σ: tight λ enclosures", "… a head-and-tail
+// filter for λ"). O(count) + a head-and-tail λ per refined constraint (~12 operations; the line
+// and plane rounded once), rarely an exact one.
 struct SideLambda {
   std::size_t p;
   bool pos;  // a > 0: an upper bound on λ (else a lower bound)
