@@ -291,7 +291,7 @@ std::vector<std::pair<const char*, double>> work_parts() {
   std::vector<std::pair<const char*, double>> r;
   for (const auto& [name, v] : {std::pair{"setup", w.setup}, {"lines", w.lines}, {"tests", w.tests},
                                 {"exact_lines", w.exact_lines}, {"exact_tests", w.exact_tests},
-                                {"exact_intervals", w.exact_intervals}, {"refined", w.refined}})
+                                {"exact_intervals", w.exact_intervals}, {"refined", w.refined}, {"fined", w.fined}})
     r.emplace_back(name, static_cast<double>(v));
   return r;
 }

@@ -58,11 +58,15 @@
 // (as in line_no_offer; looked for on enclosures over all covering sums before any exact
 // interval), a covering interval's exact ends are computed only when a comparison on their
 // enclosures is undecided, and a line's λ on a plane once per class of equal planes; the
-// interval ends there are kept tight — a constraint whose λ enclosure is wide and may attain an
-// end gets the exact λ's (refine_ends), a = n·u near 0 its exact value — so that fewer covering
-// intervals are left Unknown and fewer comparisons undecided (the torus 8×4 pair's pose 0: 54 %
-// fewer exact intervals with the holder first, 5.2 s instead of 6.8; docs/benchmarks.md "… tight
-// λ enclosures").
+// interval ends there are kept sharp — a constraint whose λ enclosure is wider than a few ulps and
+// may attain an end gets a head-and-tail enclosure of its λ from the exact line and plane rounded
+// once (fine_lambda.hpp: ~2⁻¹⁰⁰ of the terms, sound by construction), the exact λ only where that
+// is not tight (refine_ends), a = n·u near 0 its exact value — so that fewer covering intervals
+// are left Unknown and fewer comparisons undecided; and an end whose attaining plane is certain
+// (end_plane) is compared with another such end without the exact numbers: equal when their
+// planes are of one class, else by the head-and-tail order of their λ (fine_compare) — the torus
+// 8×4 pair's pose 0: 99 000 exact covering intervals and 638 000 exact λ before, 31 000 and 300
+// after (docs/benchmarks.md "… tight λ enclosures", "… a head-and-tail filter for λ").
 // Filtered tier, lines once per class: planes equal across sums (the same geometric plane, either
 // side, decided exactly) form classes (plane_classes), and for a facet f each line plane(f) ∩
 // plane(g) is run once per class of g — the same line offers the same points. The interval
@@ -94,6 +98,7 @@
 #include "convex3/minkowski_facets.hpp"
 #include "convex3/polytope_data.hpp"
 
+#include "mesh3/fine_lambda.hpp"
 #include "mesh3/line_lambda.hpp"
 #include "mesh3/plane_classes.hpp"
 #include "mesh3/plane_number.hpp"
@@ -218,9 +223,11 @@ struct Ctx {
   // computed (LineConstraints::lambda_e): lam_line[class] == line_id when lam_val[class] holds it.
   std::size_t line_id = 0;
   mutable std::size_t refined = 0;  // constraints refine_ends gave the exact λ (the work count)
+  mutable std::size_t fined = 0;    // constraints refine_ends gave the head-and-tail λ (the work count)
   mutable std::vector<std::size_t> lam_line;
   mutable std::vector<FT> lam_val;
   mutable std::vector<std::optional<ExactPlane>> exact;  // planes[p]'s exact numbers, on demand
+  mutable std::vector<std::optional<detail::FinePlane>> fine;  // the same rounded once (fine_lambda.hpp), on demand
 };
 
 template <class T>
@@ -406,6 +413,7 @@ struct LineI {
   std::size_t f = 0, g = 0;       // the planes
   mutable std::optional<V3> ue;   // the exact u, built on demand (exact_u)
   mutable std::optional<V3> x0e;  // the exact x0, built on demand (exact_x0)
+  mutable std::optional<detail::FineLine> fl;  // the exact u and x0 rounded once (fine_lambda)
 };
 LineI interval_line(const Plane& f, const Plane& g, std::size_t fi, std::size_t gi) {
   LineI L;
@@ -529,11 +537,45 @@ I imax(const I& a, const I& b) { return I(std::max(a.inf(), b.inf()), std::max(a
 // line_interval (below) on the enclosures: Empty or Range only when the exact path certainly
 // decides the same (Range: lo, hi enclose its ends), Unknown when a sign or an order is uncertain.
 enum class Span { Empty, Range, Unknown };
-// The enclosure is finite and its width at most 2⁻³⁰ of its magnitude (the rounding of a
-// well-conditioned λ = b/a is ~2⁻⁵⁰).
-bool tight(const I& l) {
+// The enclosure is finite and its width at most 2^-bits of its magnitude: tight (2⁻³⁰) — the
+// double enclosure of a well-conditioned λ = b/a is ~2⁻⁵⁰ wide —, sharp (2⁻⁵⁰: a few ulps, the
+// rounding of a well-conditioned λ or of the head-and-tail λ, fine_lambda.hpp).
+bool narrow(const I& l, double rel) {
   return std::isfinite(l.inf()) && std::isfinite(l.sup()) &&
-         l.sup() - l.inf() <= 0x1p-30 * std::max(std::abs(l.inf()), std::abs(l.sup()));
+         l.sup() - l.inf() <= rel * std::max(std::abs(l.inf()), std::abs(l.sup()));
+}
+bool tight(const I& l) { return narrow(l, 0x1p-30); }
+bool sharp(const I& l) { return narrow(l, 0x1p-50); }
+// planes[p] and the line L rounded once (fine_lambda.hpp: the exact plane; L's exact u and x0),
+// cached per plane and per line.
+const detail::FinePlane& fine_plane(const Ctx& c, std::size_t p) {
+  auto& r = c.fine[p];
+  if (!r) {
+    const ExactPlane& e = exact_plane(c, p);
+    r = detail::fine_plane(e.n, e.c);
+  }
+  return *r;
+}
+const detail::FineLine& fine_line(const Ctx& c, const LineI& L) {
+  if (!L.fl) L.fl = detail::fine_line(exact_u(c, L), exact_x0(c, L));
+  return *L.fl;
+}
+// The head-and-tail enclosure of the exact λ of planes[p] on the line L (detail::fine_lambda);
+// nullopt out of its range.
+std::optional<I> fine_lambda(const Ctx& c, const LineI& L, std::size_t p) {
+  const detail::FineLine& fl = fine_line(c, L);  // rounded to nearest
+  const detail::FinePlane& fp = fine_plane(c, p);
+  CGAL::Protect_FPU_rounding<true> up;  // the head-and-tail arithmetic: upward
+  const auto l = detail::fine_lambda(fl, fp);
+  if (!l) return std::nullopt;
+  return I(l->first, l->second);
+}
+// The sign of λ_p − λ_q on L (detail::fine_compare), nullopt when undecided.
+std::optional<int> fine_compare(const Ctx& c, const LineI& L, std::size_t p, std::size_t q) {
+  const detail::FineLine& fl = fine_line(c, L);
+  const detail::FinePlane &fp = fine_plane(c, p), &fq = fine_plane(c, q);
+  CGAL::Protect_FPU_rounding<true> up;
+  return detail::fine_compare(fl, fp, fq);
 }
 // The ends' enclosures lo = imax, hi = imin over the constraints' λ are as wide as the widest
 // constraint that may attain them (a or b of a large relative error: a plane nearly parallel to
@@ -541,11 +583,14 @@ bool tight(const I& l) {
 // its comparisons undecided — each then an exact covering interval (the torus 8×4 pair's pose 0:
 // 111 000 Unknown covering intervals, a third of the undecided comparisons with enclosures wider
 // than the ends' distance). On a line whose exact x0 and u are known (the exact stage), the wide
-// constraints `ls` (side, λ enclosure) that may attain an end — their enclosure reaches past the
-// other constraints' certain bound — get the enclosure of the exact λ (tight: an exact number
-// rounded outward), and the ends are recomputed from all: still enclosures of the exact ends, so
-// no decision changes, only fewer are left to the exact intervals (docs/benchmarks.md "Exact mesh
-// σ: tight λ enclosures"). O(count) + an exact λ per refined constraint.
+// constraints `ls` (side, λ enclosure; wide: not sharp) that may attain an end — their enclosure
+// reaches past the other constraints' certain bound — get the head-and-tail enclosure of their λ
+// (fine_lambda.hpp: an ulp or two), intersected with theirs, and the enclosure of the exact λ
+// (an exact number rounded outward) only when that is still not tight; the ends are recomputed
+// from all: still enclosures of the exact ends, so no decision changes, only fewer are left to
+// the exact intervals (docs/benchmarks.md "Exact mesh σ: tight λ enclosures", "… a head-and-tail
+// filter for λ"). O(count) + a head-and-tail λ per refined constraint (~12 operations; the line
+// and plane rounded once), rarely an exact one.
 struct SideLambda {
   std::size_t p;
   bool pos;  // a > 0: an upper bound on λ (else a lower bound)
@@ -558,10 +603,17 @@ void refine_ends(const Ctx& c, const LineI& L, std::vector<SideLambda>& ls, I& l
     else lo_bound = std::max(lo_bound, q.l.inf());
   }
   for (SideLambda& q : ls) {
-    if (tight(q.l) || (q.pos ? q.l.inf() >= hi_bound : q.l.sup() <= lo_bound)) continue;  // cannot widen an end
-    const ExactPlane& e = exact_plane(c, q.p);
-    q.l = iv((e.c - dot(e.n, *L.x0e)) / dot(e.n, *L.ue));
-    ++c.refined, SigmaLineCheck::refined += SigmaLineCheck::depth > 0;
+    if (sharp(q.l) || (q.pos ? q.l.inf() >= hi_bound : q.l.sup() <= lo_bound)) continue;  // cannot widen an end
+    if (const auto f = fine_lambda(c, L, q.p)) {  // both hold the exact λ: so does their intersection
+      q.l = I(std::max(q.l.inf(), f->inf()), std::min(q.l.sup(), f->sup()));
+      ++c.fined;
+    }
+    if (!tight(q.l)) {
+      const ExactPlane& e = exact_plane(c, q.p);
+      q.l = iv((e.c - dot(e.n, *L.x0e)) / dot(e.n, *L.ue));
+      ++c.refined;
+    }
+    SigmaLineCheck::refined += SigmaLineCheck::depth > 0;
     if (q.pos) hi_bound = std::min(hi_bound, q.l.sup());
     else lo_bound = std::max(lo_bound, q.l.inf());
   }
@@ -572,7 +624,33 @@ void refine_ends(const Ctx& c, const LineI& L, std::vector<SideLambda>& ls, I& l
   }
   lo = I(lo_bound, lo_sup), hi = I(hi_inf, hi_bound);
 }
-Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I& lo, I& hi, std::size_t gp) {
+// A plane attaining the end `end` of L (the least λ of the a > 0 side when `pos`, else the
+// greatest of a < 0): the extremum, by fine_compare, of the constraints that may attain it (their
+// enclosure reaches the end's enclosure; one class of planes, Ctx::cls, needs no comparison);
+// SIZE_MAX when a comparison is undecided. The exact end is the λ of a constraint that attains it,
+// which passes the test, so it is the λ of that plane — and of any plane of its class (one
+// geometric plane, either side: n, c scaled by t != 0, b/a unchanged): ends of one class on one
+// line are equal exactly, and ends of known planes are ordered by their planes (fine_compare) —
+// offer_on_line's exact ties and near ties decided without the exact numbers.
+std::size_t end_plane(const Ctx& c, const LineI& L, const std::vector<SideLambda>& ls, bool pos, const I& end) {
+  std::size_t k = SIZE_MAX;
+  for (const SideLambda& q : ls) {
+    if (q.pos != pos || (pos ? q.l.inf() > end.sup() : q.l.sup() < end.inf())) continue;
+    if (k == SIZE_MAX || c.cls[q.p] == c.cls[k]) {
+      if (k == SIZE_MAX) k = q.p;
+      continue;
+    }
+    const auto r = fine_compare(c, L, q.p, k);  // sign(λ_q − λ_k)
+    if (!r) return SIZE_MAX;
+    if (pos ? *r < 0 : *r > 0) k = q.p;
+  }
+  return k;
+}
+// `planes` (optional, the filtered tier's exact stage): planes attaining lo and hi (end_plane),
+// SIZE_MAX where not certain or not computed.
+Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I& lo, I& hi, std::size_t gp,
+                     std::array<std::size_t, 2>* planes = nullptr) {
+  if (planes) *planes = {SIZE_MAX, SIZE_MAX};
   bool has_lo = false, has_hi = false;
   const bool refine = L.x0e && L.ue;  // exact x0 and u known: wide ends are refined (refine_ends)
   bool any_wide = false;
@@ -629,11 +707,12 @@ Span line_interval_i(const Ctx& c, const Sum& s, const LineI& L, bool strict, I&
     } else {
       lo = has_lo ? imax(lo, l) : l, has_lo = true;
     }
-    if (refine) ls.push_back({p, sa == CGAL::POSITIVE, l}), any_wide = any_wide || !tight(l);
+    if (refine) ls.push_back({p, sa == CGAL::POSITIVE, l}), any_wide = any_wide || !sharp(l);
     if (has_lo && has_hi && (strict ? lo.inf() >= hi.sup() : lo.inf() > hi.sup())) return Span::Empty;
   }
   if (!has_lo || !has_hi) return Span::Unknown;
-  if (any_wide && !(tight(lo) && tight(hi))) refine_ends(c, L, ls, lo, hi);
+  if (any_wide && !(sharp(lo) && sharp(hi))) refine_ends(c, L, ls, lo, hi);
+  if (planes && refine) *planes = {end_plane(c, L, ls, false, lo), end_plane(c, L, ls, true, hi)};
   return (strict ? lo.sup() < hi.inf() : lo.sup() <= hi.inf()) ? Span::Range : Span::Unknown;
 }
 
@@ -789,6 +868,7 @@ void offer_on_line_exact(const Ctx& c, const LineSegment& s, const std::vector<s
 struct LazyEnd {
   I i;
   std::optional<FT> e;
+  std::size_t plane = SIZE_MAX;  // a plane attaining it, when certain (end_plane)
 };
 // A covering sum's open interval on the line: its ends as enclosures (line_interval_i) until a
 // comparison needs one exactly, then both by line_interval.
@@ -824,14 +904,28 @@ void offer_on_line(const Ctx& c, const LineSegment& s, const std::vector<std::si
     }
     return *x.e;
   };
+  // The order of two ends of known planes (end_plane): equal when of one class, else by the
+  // head-and-tail comparison of their planes' λ (fine_compare); nullopt when undecided.
+  auto plane_order = [&](const LazyEnd& x, const LazyEnd& y) -> std::optional<int> {
+    if (x.plane == SIZE_MAX || y.plane == SIZE_MAX) return std::nullopt;
+    if (c.cls[x.plane] == c.cls[y.plane]) return 0;
+    return fine_compare(c, s.L, x.plane, y.plane);
+  };
   auto less = [&](LazyEnd& x, CoverSpan* sx, LazyEnd& y, CoverSpan* sy) {  // x < y, exactly
     if (x.i.sup() < y.i.inf()) return true;
     if (x.i.inf() >= y.i.sup()) return false;
+    if (const auto r = plane_order(x, y)) return *r < 0;
     return value(x, sx) < value(y, sy);
   };
   LazyEnd a{iv(s.a), s.a}, b{iv(s.b), s.b};
+  {  // the classes attaining a and b (S_k's closed interval again on enclosures)
+    std::array<std::size_t, 2> k;
+    I ai, bi;
+    line_interval_i(c, c.sums[c.planes[s.L.f].sum], s.L, false, ai, bi, s.L.g, &k);
+    a.plane = k[0], b.plane = k[1];
+  }
   const FT foot_v = is_positive(s.a) ? s.a : is_negative(s.b) ? s.b : FT(0);
-  LazyEnd foot{iv(foot_v), foot_v};
+  LazyEnd foot{iv(foot_v), foot_v, is_positive(s.a) ? a.plane : is_negative(s.b) ? b.plane : SIZE_MAX};
   // Covering open intervals (the ones meeting [a, b]): certainly missing ones (open_misses, an
   // empty enclosure) dropped; first on enclosures only, so that a covering interval certainly
   // holding [a, b] strictly — lo < a and b < hi certainly: every candidate (all in [a, b]) is
@@ -845,7 +939,9 @@ void offer_on_line(const Ctx& c, const LineSegment& s, const std::vector<std::si
     ++work.tests;
     if (open_misses(c, c.sums[l], s.L.x0, s.L.u, a.i.inf(), b.i.sup())) continue;
     CoverSpan sp{l, {}, {}};
-    const Span r = line_interval_i(c, c.sums[l], s.L, true, sp.lo.i, sp.hi.i, s.L.g);
+    std::array<std::size_t, 2> k;
+    const Span r = line_interval_i(c, c.sums[l], s.L, true, sp.lo.i, sp.hi.i, s.L.g, &k);
+    sp.lo.plane = k[0], sp.hi.plane = k[1];
     if (r == Span::Empty) continue;
     if (r == Span::Range && holds(sp)) return;
     spans.push_back(std::move(sp)), kinds.push_back(r);
@@ -859,7 +955,7 @@ void offer_on_line(const Ctx& c, const LineSegment& s, const std::vector<std::si
       ++work.exact;
       std::optional<FT> lo, hi;
       if (!line_interval(c, c.sums[sp.sum], s.L, true, lo, hi, s.L.g) || !lo || !hi) continue;
-      sp.lo = {iv(*lo), std::move(lo)}, sp.hi = {iv(*hi), std::move(hi)};
+      sp.lo = {iv(*lo), std::move(lo), sp.lo.plane}, sp.hi = {iv(*hi), std::move(hi), sp.hi.plane};
       if (holds(sp)) return;
     }
     if (!less(a, nullptr, sp.hi, &sp) || !less(sp.lo, &sp, b, nullptr)) continue;  // hi <= a or lo >= b
@@ -876,6 +972,9 @@ void offer_on_line(const Ctx& c, const LineSegment& s, const std::vector<std::si
     const I ax = CGAL::abs(x.v->i), ay = CGAL::abs(y.v->i);
     if (ax.sup() < ay.inf()) return true;
     if (ax.inf() >= ay.sup()) return false;
+    const int sx = x.v->i.inf() > 0 ? 1 : x.v->i.sup() < 0 ? -1 : 0, sy = y.v->i.inf() > 0 ? 1 : y.v->i.sup() < 0 ? -1 : 0;
+    if (sx != 0 && sx == sy)  // of one certain sign: |x| < |y| is x < y (or y < x)
+      if (const auto r = plane_order(*x.v, *y.v)) return sx * *r < 0;
     return abs(value(*x.v, x.span)) < abs(value(*y.v, y.span));
   });
   for (const LineCandidate& k : cand) {
@@ -1133,7 +1232,7 @@ namespace detail {
 CoverResult union_cover(const std::vector<OpenConvex>& sets, const std::vector<Vec3>& polygon, double reach2,
                         bool keep_leaves) {
   static const MeshPair none{};
-  Ctx c{none, Placed{}, {}, {}, true, false, {}, {}, 0, {}, {}, {}};
+  Ctx c{none, Placed{}, {}, {}, true, false, {}, {}, 0, {}, {}, {}, {}, {}, {}};
   for (const OpenConvex& o : sets) {
     Sum s;
     s.first = c.planes.size(), s.count = o.planes.size(), s.box = o.box;
@@ -1163,7 +1262,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
   SigmaExactWork& stats = last_exact_work;
   stats = {};
   if (!(upper >= 0) || !std::isfinite(upper)) return std::nullopt;
-  Ctx c{m, place(m, pose_p, pose_q), {}, {}, SigmaExactUnfiltered::depth == 0, SigmaExactUnfiltered::planted, {}, {}, 0, {}, {}, {}};
+  Ctx c{m, place(m, pose_p, pose_q), {}, {}, SigmaExactUnfiltered::depth == 0, SigmaExactUnfiltered::planted, {}, {}, 0, {}, {}, {}, {}, {}, {}};
   const convex3::RelativePose rel{c.pl.R, c.pl.tq, c.pl.tp};
   const double reach = upper * (1 + 0x1p-30) + 0x1p-1000;
   // The work count (mesh_sigma_exact.hpp, kExactSigmaMaxWork): deterministic, never a clock, in
@@ -1172,16 +1271,19 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
   // prunes 1 + the covering sums line_no_offer looked at before it exits; a line of the exact stage
   // kExactLineWeight (its exact u, x0, S_k's interval) + the covering sums offer_on_line looked
   // at before its exit + kExactIntervalWeight per exact covering interval computed; in either
-  // stage kRefineWeight per constraint whose λ refine_ends made exact. Weights fitted to CPU time
+  // stage kRefineWeight per constraint whose λ refine_ends made exact and kFineWeight per one it
+  // gave the head-and-tail λ (fine_lambda.hpp). Weights fitted to CPU time
   // per query over the tripod's, the combs', the cross's, the star's and the torus pair's exact
   // σ: ~1.3 µs per unit, within ±25 % (log sd 0.22) on queries over 20 ms (docs/benchmarks.md
   // "Exact mesh σ: the work counted as done"; refit with kRefineWeight: 1.4 µs, log sd 0.22,
-  // "… tight λ enclosures"), so that giving up costs about the same time whichever stage
-  // reaches the limit.
-  constexpr std::size_t kSetupWeight = 15, kExactLineWeight = 1, kExactIntervalWeight = 20, kRefineWeight = 1;
-  std::size_t work = 0, refined_charged = 0;
+  // "… tight λ enclosures"; with kFineWeight: 1.3 µs at load 5, log sd 0.20, "… a head-and-tail
+  // filter for λ"), so that giving up costs about the same time whichever stage reaches the limit.
+  constexpr std::size_t kSetupWeight = 15, kExactLineWeight = 1, kExactIntervalWeight = 20, kRefineWeight = 1,
+                        kFineWeight = 1;
+  std::size_t work = 0, refined_charged = 0, fined_charged = 0;
   auto spend = [&](std::size_t units) {  // + the exact λ of refine_ends since the last charge
     units += kRefineWeight * (c.refined - refined_charged), refined_charged = stats.refined = c.refined;
+    units += kFineWeight * (c.fined - fined_charged), fined_charged = stats.fined = c.fined;
     return (stats.units = work += units) <= max_work;
   };
   // The sums in range and their planes.
@@ -1215,6 +1317,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
   for (const Sum& s : c.sums) inside = inside || in_open(c, s, zero, zi);
   if (!inside) return std::nullopt;
 
+  c.fine.resize(c.planes.size());
   std::vector<std::size_t> order(c.planes.size());
   for (std::size_t p = 0; p < order.size(); ++p) order[p] = p;
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return c.planes[a].dist < c.planes[b].dist; });
@@ -1326,7 +1429,7 @@ std::optional<Depth3> exact_minimum(const MeshPair& m, const Pose3& pose_p, cons
         const FT l2 = dot(x0, x0);
         if (best.beyond(l2)) continue;
         std::optional<FT> a, b;
-        const LineI Le{iv(u), iv(x0), iv(u2), iv(l2), fi, gi, u, x0};
+        const LineI Le{iv(u), iv(x0), iv(u2), iv(l2), fi, gi, u, x0, {}};
         ++c.line_id;  // a new line: no λ cached (LineConstraints::lambda_e)
         if (!line_interval(c, sk, Le, false, a, b, gi)) continue;
         if (!a || !b) continue;  // unreachable: S_k is bounded

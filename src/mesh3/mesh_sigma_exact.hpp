@@ -17,7 +17,8 @@ namespace pendepth::mesh3 {
 /// — the setup; per line plane(f) ∩ plane(g) past the interval prunes (line_far), 1 + the covering
 /// sums looked at before line_no_offer exits; per line of the exact stage 1 + the covering sums
 /// looked at before offer_on_line exits (a covering interval holding the segment) + 20 per exact
-/// covering interval computed; 1 per constraint whose λ enclosure was made exact (refine_ends).
+/// covering interval computed; 1 per constraint whose λ enclosure was made exact or given its
+/// head-and-tail enclosure (refine_ends, fine_lambda.hpp).
 /// Measured (docs/benchmarks.md "Exact mesh σ: the work counted as done", "… tight λ
 /// enclosures"): ~1.4 µs CPU per unit (±25 %), so the limit is ~1 s and giving up costs about
 /// that. Combs against an L block, CGAL's cross and star spend 3 000–9 000 units (3–10 ms);
@@ -70,8 +71,9 @@ struct SigmaCoverCheck {
 /// line_no_offer settles are run by the reference anyway and counted in `no_offer_violations`
 /// when it offers a point. `lines`: lines compared; `ties`: those of them where a covering open
 /// interval's exact end equals an end of the segment [a, b] or another covering interval's end;
-/// `refined`: the constraints whose wide λ enclosure was replaced by the exact λ's (the exact
-/// stage's close calls: mesh_sigma_exact.cpp, refine_ends), counted while a check is alive.
+/// `refined`: the constraints whose wide λ enclosure was replaced by the head-and-tail or the exact
+/// λ's (the exact stage's close calls: mesh_sigma_exact.cpp, refine_ends), counted while a check
+/// is alive.
 struct SigmaLineCheck {
   static inline thread_local int depth = 0;
   static inline thread_local std::size_t lines = 0, ties = 0, mismatches = 0, no_offer = 0, no_offer_violations = 0,
@@ -87,10 +89,11 @@ struct SigmaLineCheck {
 /// filtered tier — `setup` candidate facets, `lines` lines past the interval prunes and their
 /// `tests` (covering sums looked at), `exact_lines` lines of the exact stage, their
 /// `exact_tests` and `exact_intervals` (covering sums' exact intervals computed), and `refined`
-/// (constraints whose wide λ enclosure got the exact λ's: mesh_sigma_exact.cpp, refine_ends).
+/// (constraints whose wide λ enclosure got the exact λ's: mesh_sigma_exact.cpp, refine_ends), `fined`
+/// (those that got the head-and-tail λ's instead: fine_lambda.hpp).
 struct SigmaExactWork {
   std::size_t units = 0, setup = 0, lines = 0, tests = 0, exact_lines = 0, exact_tests = 0, exact_intervals = 0,
-              refined = 0;
+              refined = 0, fined = 0;
 };
 inline thread_local SigmaExactWork last_exact_work{};
 

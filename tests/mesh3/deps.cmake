@@ -5,6 +5,7 @@
 find_package(CGAL REQUIRED)
 target_link_libraries(${target} PRIVATE CGAL::CGAL PkgConfig::GMPXX)
 set_source_files_properties(${CMAKE_CURRENT_LIST_DIR}/oracle_cgal.cpp ${CMAKE_CURRENT_LIST_DIR}/test_mesh_pair_nef.cpp
+                            ${CMAKE_CURRENT_LIST_DIR}/test_fine_lambda.cpp
                             PROPERTIES COMPILE_OPTIONS -frounding-math)
 set(PENDEPTH_CGAL_DATA_TGZ /usr/share/doc/libcgal-demo/data.tar.gz)
 if(EXISTS ${PENDEPTH_CGAL_DATA_TGZ})
