@@ -131,11 +131,12 @@ struct LiftD {
 
 // The first operations on input doubles — lift(a)·lift(b), lift(a) − lift(b), lift(a)·x (mul,
 // diff, mul_x) — for the filter's Fl and the double-double DD (the value, and exact_sign's DD
-// tier; DV: DD's hi and lo alone, by the same operations) without the terms of a lifted double's zero error and lo parts, which their operators
-// compute (IEEE arithmetic cannot fold x·0): the value and the bound e bit for bit — the dropped
-// terms add +0 to a sum of non-negative terms, or ±0 to a nonzero error term — DD's lo up to the
-// sign of a zero. A zero's sign reaches no nonzero result (x + ±0 = x, ±0·y = ±0, no division in
-// these polynomials); non-finite stays non-finite in both. The identity dumps
+// tier; DV: DD's hi and lo alone, by the same operations) without the terms of a lifted
+// double's zero error and lo parts, which their operators compute (IEEE arithmetic cannot fold
+// x·0): the value and the bound e bit for bit — the dropped terms add +0 to a sum of
+// non-negative terms, or ±0 to a nonzero error term — DD's lo up to the sign of a zero. A
+// zero's sign reaches no nonzero result (x + ±0 = x, ±0·y = ±0, no division in these
+// polynomials); non-finite stays non-finite in both. The identity dumps
 // (scripts/distance_identity.sha256, sigma_identity.sha256: hashed with the lifted operators)
 // keep their hashes on both paths. Other lifts: their own operations.
 namespace plain {
@@ -480,10 +481,11 @@ double accurate_dd(F&& f) {
 //   m:  three mul ≤ RmLq·u + τ, then diff(t) ≤ Lt·u: ≤ 11RmLq·u + 2Lt·u + 3τ, |hi| ≤ 3RmLq + Lt;
 //       p minus it:                     e(a_k) ≤ (Lp + 14RmLq + 3Lt)·u + 3τ         < Em
 // Then, for operands whose components have |hi| ≤ H1, H2 (the largest measured) and running
-// bounds ≤ E1, E2 (apriori_product, _cross, _dot: g ≤ 2 and the sums' |hi| ≤ 2·, 5·H1H2):
-//   product ≤ gH1E2 + gH2E1 + E1E2 + g²H1H2·u + τ              ≤ P = 2(H1E2 + H2E1 + E1E2 + H1H2·u + τ)
-//   cross component x − y ≤ 2P + (|x.hi| + |y.hi|)·u            ≤ 2P + 4H1H2·u
-//   dot (x + y) + z ≤ 3P + (|x.hi| + |y.hi|)·u + (|(x + y).hi| + |z.hi|)·u ≤ 3P + 11H1H2·u < 3P + 12H1H2·u
+// bounds ≤ E1, E2 (apriori_product, _cross, _dot; g ≤ 2, each product's |hi| ≤ 2H1H2, the
+// dot's partial sum ≤ 5H1H2; the dot's constant is 12):
+//   product: gH1E2 + gH2E1 + E1E2 + g²H1H2·u + τ ≤ P = 2(H1E2 + H2E1 + E1E2 + H1H2·u + τ)
+//   cross component x − y: ≤ 2P + (|x.hi| + |y.hi|)·u ≤ 2P + 4H1H2·u
+//   dot (x + y) + z: ≤ 3P + (|x.hi| + |y.hi|)·u + (|(x + y).hi| + |z.hi|)·u ≤ 3P + 11H1H2·u
 // and the segment's U_k = s1·a_k − s2·e_k (s1 = e·e, s2 = a·e, measured |hi|) by two products
 // and one difference likewise. A non-finite input makes a hi or lo non-finite or a bound
 // infinite: no pass.
@@ -542,8 +544,8 @@ bool value_a_priori(const Ctx& c, const Reduced& V, double& dist, Vec3& u) {
     const double Es1 = apriori_dot(He1, Ee, He1, Ee), Es2 = apriori_dot(Ha, Em, He1, Ee);
     const double EU = apriori_product(Hs1, Es1, Ha, Em) + apriori_product(Hs2, Es2, He1, Ee) +
                       2 * (Hs1 * Ha + Hs2 * He1) * uu;
-    if (!(apriori_pass(x, apriori_cross(He1, Ee, Ha, Em)) && apriori_pass(e1, Ee) && apriori_pass(U, EU)))
-      return false;
+    const double Ex = apriori_cross(He1, Ee, Ha, Em);
+    if (!(apriori_pass(x, Ex) && apriori_pass(e1, Ee) && apriori_pass(U, EU))) return false;
     u = hi3(U);
     dist = hi3(x).stableNorm() / hi3(e1).stableNorm();
     return true;

@@ -66,14 +66,17 @@ void check(const ConvexPolytope& P, const Pose3& pp, const ConvexPolytope& Q, co
   const Distance3 fast_general = convex3::signed_distance_path(P, pp, Q, pq, SignedDistancePath{true, 1.0, false});
   // The quick value checked against bounds proven in advance (DV) against the running
   // bounds alone (DD), on both paths.
-  const Distance3 exact_running = convex3::signed_distance_path(P, pp, Q, pq, SignedDistancePath{false, 1.0, true, false});
-  const Distance3 fast_running = convex3::signed_distance_path(P, pp, Q, pq, SignedDistancePath{true, 1.0, true, false});
+  const Distance3 exact_running =
+      convex3::signed_distance_path(P, pp, Q, pq, SignedDistancePath{false, 1.0, true, false});
+  const Distance3 fast_running =
+      convex3::signed_distance_path(P, pp, Q, pq, SignedDistancePath{true, 1.0, true, false});
   ++t.queries;
   t.fast += used;
   if (!same(exact, exact_running) || !same(fast, fast_running)) {
     ++t.mismatches;
-    ADD_FAILURE() << what << ": a priori bounds " << exact.distance << " vs running bounds " << exact_running.distance
-                  << " (normal " << exact.normal.transpose() << " vs " << exact_running.normal.transpose() << ")";
+    ADD_FAILURE() << what << ": a priori bounds " << exact.distance << " vs running bounds "
+                  << exact_running.distance << " (normal " << exact.normal.transpose() << " vs "
+                  << exact_running.normal.transpose() << ")";
   }
   if (!same(exact, exact_general) || !same(fast, fast_general)) {
     ++t.mismatches;
