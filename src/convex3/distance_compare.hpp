@@ -54,11 +54,15 @@ int line_distance_compare(const CorePoints& P, const Pose3& pp, const CorePoints
 /// (1: the proven bounds, as in the library; 0: plain floating signs — unsound, used only to
 /// show that the tests detect a certificate without its margin); `quick_value`: the value and
 /// normal from the double-double evaluation of the final simplex (exact zeros by FlX / FlZ) when
-/// its bounds hold, else (false) always the general per-component evaluation — the same bits.
+/// its bounds hold, else (false) always the general per-component evaluation — the same bits;
+/// `a_priori_value`: that double-double first without its running error bounds,
+/// checked against bounds proven from the inputs' magnitudes (false: running bounds only) — the
+/// same bits.
 struct SignedDistancePath {
   bool fast = true;
   double margin = 1.0;
   bool quick_value = true;
+  bool a_priori_value = true;
 };
 
 /// signed_distance_gjk along `path`; `fast_used` (if non-null) tells whether the certified fast

@@ -131,11 +131,12 @@ struct LiftD {
 
 // The first operations on input doubles — lift(a)·lift(b), lift(a) − lift(b), lift(a)·x (mul,
 // diff, mul_x) — for the filter's Fl and the double-double DD (the value, and exact_sign's DD
-// tier) without the terms of a lifted double's zero error and lo parts, which their operators
-// compute (IEEE arithmetic cannot fold x·0): the value and the bound e bit for bit — the dropped
-// terms add +0 to a sum of non-negative terms, or ±0 to a nonzero error term — DD's lo up to the
-// sign of a zero. A zero's sign reaches no nonzero result (x + ±0 = x, ±0·y = ±0, no division in
-// these polynomials); non-finite stays non-finite in both. The identity dumps
+// tier; DV: DD's hi and lo alone, by the same operations) without the terms of a lifted
+// double's zero error and lo parts, which their operators compute (IEEE arithmetic cannot fold
+// x·0): the value and the bound e bit for bit — the dropped terms add +0 to a sum of
+// non-negative terms, or ±0 to a nonzero error term — DD's lo up to the sign of a zero. A
+// zero's sign reaches no nonzero result (x + ±0 = x, ±0·y = ±0, no division in these
+// polynomials); non-finite stays non-finite in both. The identity dumps
 // (scripts/distance_identity.sha256, sigma_identity.sha256: hashed with the lifted operators)
 // keep their hashes on both paths. Other lifts: their own operations.
 namespace plain {
@@ -145,13 +146,15 @@ Num<L> mul(L lift, double a, double b) {
   if constexpr (std::is_same_v<L, LiftFl>) {
     const double v = a * b;
     return {v, std::abs(v) * exact::kUnit + exact::kTiny};
-  } else if constexpr (std::is_same_v<L, exact::LiftDD>) {
+  } else if constexpr (std::is_same_v<L, exact::LiftDV>) {
     const double p = a * b;
-    exact::DD r;
+    exact::DV r;
     exact::quick_two_sum(p, std::fma(a, b, -p), r.hi, r.lo);
-    const double ma = std::abs(a) * (1 + 0x1p-50), mb = std::abs(b) * (1 + 0x1p-50);
-    r.e = ma * mb * exact::kUnitDD + exact::kTiny;
     return r;
+  } else if constexpr (std::is_same_v<L, exact::LiftDD>) {
+    const exact::DV v = mul(exact::LiftDV{}, a, b);
+    const double ma = std::abs(a) * (1 + 0x1p-50), mb = std::abs(b) * (1 + 0x1p-50);
+    return {v.hi, v.lo, ma * mb * exact::kUnitDD + exact::kTiny};
   } else {
     return lift(a) * lift(b);
   }
@@ -161,11 +164,13 @@ Num<L> diff(L lift, double a, double b) {
   if constexpr (std::is_same_v<L, LiftFl>) {
     const double v = a - b;
     return {v, std::abs(v) * exact::kUnit};
-  } else if constexpr (std::is_same_v<L, exact::LiftDD>) {
-    exact::DD r;
+  } else if constexpr (std::is_same_v<L, exact::LiftDV>) {
+    exact::DV r;
     exact::two_sum(a, -b, r.hi, r.lo);  // the exact difference: DD's renormalisations keep it
-    r.e = (std::abs(a) + std::abs(b)) * exact::kUnitDD;
     return r;
+  } else if constexpr (std::is_same_v<L, exact::LiftDD>) {
+    const exact::DV v = diff(exact::LiftDV{}, a, b);
+    return {v.hi, v.lo, (std::abs(a) + std::abs(b)) * exact::kUnitDD};
   } else {
     return lift(a) - lift(b);
   }
@@ -175,14 +180,16 @@ Num<L> mul_x(L lift, double a, const Num<L>& x) {
   if constexpr (std::is_same_v<L, LiftFl>) {
     const double v = a * x.v;
     return {v, std::abs(a) * x.e + std::abs(v) * exact::kUnit + exact::kTiny};
-  } else if constexpr (std::is_same_v<L, exact::LiftDD>) {
+  } else if constexpr (std::is_same_v<L, exact::LiftDV>) {
     const double p = a * x.hi;
     const double err = std::fma(a, x.hi, -p) + a * x.lo;
-    exact::DD r;
+    exact::DV r;
     exact::quick_two_sum(p, err, r.hi, r.lo);
-    const double ma = std::abs(a) * (1 + 0x1p-50), mb = std::abs(x.hi) * (1 + 0x1p-50);
-    r.e = ma * x.e + ma * mb * exact::kUnitDD + exact::kTiny;
     return r;
+  } else if constexpr (std::is_same_v<L, exact::LiftDD>) {
+    const exact::DV v = mul_x(exact::LiftDV{}, a, exact::DV{x.hi, x.lo});
+    const double ma = std::abs(a) * (1 + 0x1p-50), mb = std::abs(x.hi) * (1 + 0x1p-50);
+    return {v.hi, v.lo, ma * x.e + ma * mb * exact::kUnitDD + exact::kTiny};
   } else {
     return lift(a) * x;
   }
@@ -450,6 +457,108 @@ double accurate_dd(F&& f) {
   const exact::FlX x = f(exact::LiftFlX{});  // exact zeros of float-like data (axis-aligned faces)
   if (x.exact) return x.v;
   return exact::accurate_value(std::forward<F>(f));
+}
+
+// The value of the final simplex V (vertex: dist = |a|, U = a; segment: dist = |e × a|/|e|,
+// U = (e·e)a − (a·e)e; triangle: dist = |n·a|/|n|, U = ±n, n = e1 × e2; e_k = m_k − m_0,
+// a = m_0) from double-doubles without their running error bounds (exact::DV), checked against
+// bounds proven in advance from the inputs' magnitudes instead. Returns false (dist, u
+// untouched) unless every check passes; the caller then runs the quick value with running
+// bounds (exact::DD). Same bits: DV computes hi and lo by DD's operations, and each bound here
+// is never smaller than the running bound DD computes for the same value, so a pass here is a
+// pass of `ok` there and both report the hi of the same double-doubles.
+//
+// Proof (u = kUnitDD, τ = kTiny, g = 1 + 2⁻⁵⁰). DD's running bound is e = a.e + b.e +
+// (|a.hi| + |b.hi|)·u for a sum or difference and g|a.hi|·b.e + g|b.hi|·a.e + a.e·b.e +
+// g²|a.hi||b.hi|·u + τ for a product (plain::mul, diff, mul_x: the same with a.e = 0 or lo = 0);
+// every result has |hi| ≤ g·(|a.hi| + |b.hi|) (sums) or ≤ g·|a.hi||b.hi| + 2⁻¹⁰⁷⁰ (products).
+// Inputs: Lp, Lq the largest |coordinate| of V's P and Q vertices, Rm the largest |R_kl|, Lt the
+// largest |tq_k| + |tp_k|. By induction along dm and m (each constant below is one more than
+// the derivation's, and one τ more: that covers the g factors, the floating evaluation of both
+// bounds and the absolute terms of underflow):
+//   dm: diff(q) ≤ 2Lq·u; mul_x ≤ 4RmLq·u + τ; their sum ≤ 22RmLq·u + 3τ, |hi| ≤ 6RmLq; minus
+//       diff(p) (≤ 2Lp·u, |hi| ≤ 2Lp):  e(e_k) ≤ (4Lp + 28RmLq)·u + 3τ            < Ee
+//   m:  three mul ≤ RmLq·u + τ, then diff(t) ≤ Lt·u: ≤ 11RmLq·u + 2Lt·u + 3τ, |hi| ≤ 3RmLq + Lt;
+//       p minus it:                     e(a_k) ≤ (Lp + 14RmLq + 3Lt)·u + 3τ         < Em
+// Then, for operands whose components have |hi| ≤ H1, H2 (the largest measured) and running
+// bounds ≤ E1, E2 (apriori_product, _cross, _dot; g ≤ 2, each product's |hi| ≤ 2H1H2, the
+// dot's partial sum ≤ 5H1H2; the dot's constant is 12):
+//   product: gH1E2 + gH2E1 + E1E2 + g²H1H2·u + τ ≤ P = 2(H1E2 + H2E1 + E1E2 + H1H2·u + τ)
+//   cross component x − y: ≤ 2P + (|x.hi| + |y.hi|)·u ≤ 2P + 4H1H2·u
+//   dot (x + y) + z: ≤ 3P + (|x.hi| + |y.hi|)·u + (|(x + y).hi| + |z.hi|)·u ≤ 3P + 11H1H2·u
+// and the segment's U_k = s1·a_k − s2·e_k (s1 = e·e, s2 = a·e, measured |hi|) by two products
+// and one difference likewise. A non-finite input makes a hi or lo non-finite or a bound
+// infinite: no pass.
+double apriori_product(double H1, double E1, double H2, double E2) {
+  return 2 * (H1 * E2 + H2 * E1 + E1 * E2 + H1 * H2 * exact::kUnitDD + exact::kTiny);
+}
+double apriori_cross(double H1, double E1, double H2, double E2) {
+  return 2 * apriori_product(H1, E1, H2, E2) + 4 * H1 * H2 * exact::kUnitDD;
+}
+double apriori_dot(double H1, double E1, double H2, double E2) {
+  return 3 * apriori_product(H1, E1, H2, E2) + 12 * H1 * H2 * exact::kUnitDD;
+}
+double max_hi(const V3<exact::DV>& x) {
+  return std::max({std::abs(x[0].hi), std::abs(x[1].hi), std::abs(x[2].hi)});
+}
+// DD's `ok` with a bound proven in advance: finite, and the bound below 2⁻⁵⁴|hi|.
+bool apriori_pass(const exact::DV& x, double bound) {
+  return exact::dv_finite(x) && exact::safe_bound(bound) <= std::abs(x.hi) * 0x1p-54;
+}
+bool apriori_pass(const V3<exact::DV>& x, double bound) {
+  return apriori_pass(x[0], bound) && apriori_pass(x[1], bound) && apriori_pass(x[2], bound);
+}
+Vec3 hi3(const V3<exact::DV>& x) { return {x[0].hi, x[1].hi, x[2].hi}; }
+
+bool value_a_priori(const Ctx& c, const Reduced& V, double& dist, Vec3& u) {
+  constexpr double uu = exact::kUnitDD, tau = exact::kTiny;
+  double Lp = 0, Lq = 0, Rm = 0, Lt = 0;
+  for (int k = 0; k < V.size; ++k)
+    for (int l = 0; l < 3; ++l) {
+      Lp = std::max(Lp, std::abs(c.P.v[V.s[k].id.i][l]));
+      Lq = std::max(Lq, std::abs(c.Q.v[V.s[k].id.j][l]));
+    }
+  for (int k = 0; k < 3; ++k) {
+    for (int l = 0; l < 3; ++l) Rm = std::max(Rm, std::abs(c.rel.R(k, l)));
+    Lt = std::max(Lt, std::abs(c.rel.tq[k]) + std::abs(c.rel.tp[k]));
+  }
+  const double RLq = Rm * Lq;
+  const double Ee = (5 * Lp + 29 * RLq) * uu + 4 * tau;
+  const double Em = (2 * Lp + 15 * RLq + 4 * Lt) * uu + 4 * tau;
+  const exact::LiftDV D;
+  const V3<exact::DV> a = c.m(D, V.s[0].id);
+  const double Ha = max_hi(a);
+  if (V.size == 1) {
+    if (!apriori_pass(a, Em)) return false;
+    u = hi3(a);
+    dist = u.stableNorm();
+    return true;
+  }
+  const V3<exact::DV> e1 = c.dm(D, V.s[1].id, V.s[0].id);
+  const double He1 = max_hi(e1);
+  if (V.size == 2) {
+    const V3<exact::DV> x = cross(e1, a);
+    const exact::DV s1 = dot(e1, e1), s2 = dot(a, e1);
+    const V3<exact::DV> U = sub(scale(s1, a), scale(s2, e1));
+    const double Hs1 = std::abs(s1.hi), Hs2 = std::abs(s2.hi);
+    const double Es1 = apriori_dot(He1, Ee, He1, Ee), Es2 = apriori_dot(Ha, Em, He1, Ee);
+    const double EU = apriori_product(Hs1, Es1, Ha, Em) + apriori_product(Hs2, Es2, He1, Ee) +
+                      2 * (Hs1 * Ha + Hs2 * He1) * uu;
+    const double Ex = apriori_cross(He1, Ee, Ha, Em);
+    if (!(apriori_pass(x, Ex) && apriori_pass(e1, Ee) && apriori_pass(U, EU))) return false;
+    u = hi3(U);
+    dist = hi3(x).stableNorm() / hi3(e1).stableNorm();
+    return true;
+  }
+  const V3<exact::DV> e2 = c.dm(D, V.s[2].id, V.s[0].id);
+  const V3<exact::DV> n = cross(e1, e2);
+  const exact::DV na = dot(n, a);
+  const double En = apriori_cross(He1, Ee, max_hi(e2), Ee);
+  if (!(apriori_pass(na, apriori_dot(max_hi(n), En, Ha, Em)) && apriori_pass(n, En))) return false;
+  const Vec3 nv = hi3(n);
+  u = V.tri_sign > 0 ? nv : Vec3(-nv);
+  dist = std::abs(na.hi) / nv.stableNorm();
+  return true;
 }
 
 // Ascending order of n ≤ 3 ints by insertion (std::sort's general case, inlined into the
@@ -1036,7 +1145,8 @@ Distance3 signed_distance_body(const ConvexPolytope& Pp, const ConvexPolytope& Q
     double dist = 0;
     Vec3 u;
     bool done = false;
-    if (path.quick_value) {
+    if (path.quick_value && path.a_priori_value) done = value_a_priori(c, V, dist, u);
+    if (path.quick_value && !done) {
       const exact::LiftDD D;
       auto ok = [](const exact::DD& x) {
         return exact::dd_finite(x) && exact::safe_bound(x.e) <= std::abs(x.hi) * 0x1p-54;

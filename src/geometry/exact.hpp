@@ -112,26 +112,34 @@ inline void quick_two_sum(double a, double b, double& s, double& err) {
   s = a + b;
   err = b - (s - a);
 }
-inline DD operator+(const DD& a, const DD& b) {
+/// The value parts (hi, lo) of the double-double sum and product, shared by DD (which adds its
+/// running bound e) and DV (none: callers that bound the error a priori).
+inline void dd_sum_value(double ahi, double alo, double bhi, double blo, double& hi, double& lo) {
   double s, e1, t, e2;
-  two_sum(a.hi, b.hi, s, e1);
-  two_sum(a.lo, b.lo, t, e2);
+  two_sum(ahi, bhi, s, e1);
+  two_sum(alo, blo, t, e2);
   e1 += t;
   quick_two_sum(s, e1, s, e1);
   e1 += e2;
+  quick_two_sum(s, e1, hi, lo);
+}
+inline void dd_product_value(double ahi, double alo, double bhi, double blo, double& hi, double& lo) {
+  double p = ahi * bhi;
+  double err = std::fma(ahi, bhi, -p);
+  err += ahi * blo + alo * bhi;
+  quick_two_sum(p, err, hi, lo);
+}
+inline DD operator+(const DD& a, const DD& b) {
   DD r;
-  quick_two_sum(s, e1, r.hi, r.lo);
+  dd_sum_value(a.hi, a.lo, b.hi, b.lo, r.hi, r.lo);
   r.e = a.e + b.e + (std::abs(a.hi) + std::abs(b.hi)) * kUnitDD;
   return r;
 }
 inline DD operator-(const DD& a) { return {-a.hi, -a.lo, a.e}; }
 inline DD operator-(const DD& a, const DD& b) { return a + (-b); }
 inline DD operator*(const DD& a, const DD& b) {
-  double p = a.hi * b.hi;
-  double err = std::fma(a.hi, b.hi, -p);
-  err += a.hi * b.lo + a.lo * b.hi;
   DD r;
-  quick_two_sum(p, err, r.hi, r.lo);
+  dd_product_value(a.hi, a.lo, b.hi, b.lo, r.hi, r.lo);
   double ma = std::abs(a.hi) * (1 + 0x1p-50), mb = std::abs(b.hi) * (1 + 0x1p-50);
   r.e = ma * b.e + mb * a.e + a.e * b.e + ma * mb * kUnitDD + kTiny;
   return r;
@@ -140,6 +148,29 @@ struct LiftDD {
   DD operator()(double x) const { return {x, 0, 0}; }
 };
 inline bool dd_finite(const DD& r) { return std::isfinite(r.hi) && std::isfinite(r.lo) && std::isfinite(r.e); }
+
+/// A double-double value without an error bound: hi and lo exactly as DD computes them from the
+/// same operations (the shared value parts above), for formulas whose bound is proven in advance
+/// from their inputs' magnitudes (signed_distance3.cpp: the distance of a triangle).
+struct DV {
+  double hi = 0, lo = 0;
+};
+inline DV operator+(const DV& a, const DV& b) {
+  DV r;
+  dd_sum_value(a.hi, a.lo, b.hi, b.lo, r.hi, r.lo);
+  return r;
+}
+inline DV operator-(const DV& a) { return {-a.hi, -a.lo}; }
+inline DV operator-(const DV& a, const DV& b) { return a + (-b); }
+inline DV operator*(const DV& a, const DV& b) {
+  DV r;
+  dd_product_value(a.hi, a.lo, b.hi, b.lo, r.hi, r.lo);
+  return r;
+}
+struct LiftDV {
+  DV operator()(double x) const { return {x, 0}; }
+};
+inline bool dv_finite(const DV& r) { return std::isfinite(r.hi) && std::isfinite(r.lo); }
 
 /// Exact floating-point expansion (Shewchuk 1997, "Adaptive precision floating-point arithmetic
 /// and fast robust geometric predicates"): the value is the exact sum of c[0..n), non-overlapping,

@@ -5,7 +5,8 @@
 //     boxes and prisms touching, apart by ±1–2 ulps, face on face (coplanar supports), parallel
 //     edges, a vertex over the edge and face regions' boundary of a rotated box;
 //   * the value's quick double-double evaluation (exact zeros proven by FlX / FlZ) equals the
-//     general per-component evaluation bit for bit, on both paths;
+//     general per-component evaluation bit for bit, on both paths, and so does the quick
+//     value checked against bounds proven in advance (a_priori_value) against running bounds;
 //   * the fast path answers most apart pairs (it is not a path that never runs);
 //   * the certificate's margin matters: with the error bounds removed (margin 0, plain floating
 //     signs) the same placements give results that differ from the exact path's — so a
@@ -63,8 +64,20 @@ void check(const ConvexPolytope& P, const Pose3& pp, const ConvexPolytope& Q, co
   // per-component one, on both paths.
   const Distance3 exact_general = convex3::signed_distance_path(P, pp, Q, pq, SignedDistancePath{false, 1.0, false});
   const Distance3 fast_general = convex3::signed_distance_path(P, pp, Q, pq, SignedDistancePath{true, 1.0, false});
+  // The quick value checked against bounds proven in advance (DV) against the running
+  // bounds alone (DD), on both paths.
+  const Distance3 exact_running =
+      convex3::signed_distance_path(P, pp, Q, pq, SignedDistancePath{false, 1.0, true, false});
+  const Distance3 fast_running =
+      convex3::signed_distance_path(P, pp, Q, pq, SignedDistancePath{true, 1.0, true, false});
   ++t.queries;
   t.fast += used;
+  if (!same(exact, exact_running) || !same(fast, fast_running)) {
+    ++t.mismatches;
+    ADD_FAILURE() << what << ": a priori bounds " << exact.distance << " vs running bounds "
+                  << exact_running.distance << " (normal " << exact.normal.transpose() << " vs "
+                  << exact_running.normal.transpose() << ")";
+  }
   if (!same(exact, exact_general) || !same(fast, fast_general)) {
     ++t.mismatches;
     ADD_FAILURE() << what << ": quick value " << exact.distance << " vs general " << exact_general.distance
