@@ -443,6 +443,37 @@ TEST(MeshSigmaLines, NearlyParallelPlanesRefineTheEnds) {
   EXPECT_GE(refined, 20u) << lines;
 }
 
+// Ends ordered by their planes (end_plane, fine_compare): Q turned by an angle of a few ulps
+// (1e-16 to 1e-14 rad; translations on the half-integer grid), so that the exact ties of the
+// polycubes split into near ties — several constraints of different planes whose λ lie within
+// an ulp of a covering interval's end, so that end_plane must keep the right extremum of them,
+// and ends within an ulp of each other, ordered by the planes kept. Every line's outcome equals
+// the reference's and σ's bits the reference tier's. (The ties of the tests above are exact:
+// either plane gives the same end, so a wrong extremum there goes unseen.)
+TEST(MeshSigmaLines, UlpTurnsOrderEndsByTheirPlanes) {
+  std::mt19937_64 rng(606);
+  std::uniform_real_distribution<double> U(-1, 1);
+  std::size_t lines = 0;
+  for (const auto& [name, vp, vq] : {std::tuple{"comb3-cup1", comb(3), cup(1)}, std::tuple{"comb4-L", comb(4), l_block()}}) {
+    const Shape3 sp = mesh_shape(polycube(vp), std::string(name) + "-p"), sq = mesh_shape(polycube(vq), std::string(name) + "-q");
+    std::vector<std::pair<Pose3, Pose3>> poses;
+    for (const Vec3& t : grid_translations(vp, vq, rng, 16, 0.5, false)) {
+      const double angle = std::pow(10.0, -16 + 2 * (U(rng) + 1) / 2);
+      const Eigen::Quaterniond q(Eigen::AngleAxisd(angle, Vec3(U(rng), U(rng), U(rng)).normalized()));
+      poses.emplace_back(Pose3(), Pose3(q, t));
+    }
+    const LineCheckRun run = check_lines_at(sp, sq, poses, name, false, nullptr);
+    const LineCheckCounts& r = run.counts;
+    std::printf("%s turned by ulps: %d poses, %zu lines, %zu with ties, %zu settled by line_no_offer, %zu λ refined\n",
+                name, r.poses, r.lines, r.ties, r.no_offer, run.refined);
+    EXPECT_GE(r.poses, 4) << name;
+    EXPECT_EQ(r.mismatches, 0u) << name << ": " << r.lines << " lines";
+    EXPECT_EQ(r.no_offer_violations, 0u) << name << ": " << r.no_offer << " settled by line_no_offer";
+    lines += r.lines;
+  }
+  EXPECT_GE(lines, 50u);
+}
+
 // The planted bug in the filtered tier must make the comparison fail.
 TEST(MeshSigmaTiers, PlantedFilterBugIsCaught) {
   std::mt19937_64 rng(101);  // the rotated comb–cup poses of FilteredEqualsExactCombsAndCups
