@@ -412,6 +412,29 @@ TEST(MeshSigmaLines, ExactFitsDecidedByATie) {
   }
 }
 
+// check_lines_at on polycubes with Q turned by an angle 10^e, e uniform in [e_lo, e_hi], about a
+// random axis, at `poses` translations on the half-integer grid; σ's bits against the reference
+// tier, every line's outcome against the reference's, line_no_offer settling no line that offers.
+LineCheckRun check_turned(const char* name, const std::set<Voxel>& vp, const std::set<Voxel>& vq, std::mt19937_64& rng,
+                          int poses, double e_lo, double e_hi, const char* how) {
+  std::uniform_real_distribution<double> U(-1, 1);
+  const Shape3 sp = mesh_shape(polycube(vp), std::string(name) + "-p"), sq = mesh_shape(polycube(vq), std::string(name) + "-q");
+  std::vector<std::pair<Pose3, Pose3>> ps;
+  for (const Vec3& t : grid_translations(vp, vq, rng, poses, 0.5, false)) {
+    const double angle = std::pow(10.0, e_lo + (e_hi - e_lo) * (U(rng) + 1) / 2);
+    const Eigen::Quaterniond q(Eigen::AngleAxisd(angle, Vec3(U(rng), U(rng), U(rng)).normalized()));
+    ps.emplace_back(Pose3(), Pose3(q, t));
+  }
+  const LineCheckRun run = check_lines_at(sp, sq, ps, name, false, nullptr);
+  const LineCheckCounts& r = run.counts;
+  std::printf("%s turned %s: %d poses, %zu lines, %zu with ties, %zu settled by line_no_offer, %zu λ refined\n", name,
+              how, r.poses, r.lines, r.ties, r.no_offer, run.refined);
+  EXPECT_GE(r.poses, 4) << name;
+  EXPECT_EQ(r.mismatches, 0u) << name << ": " << r.lines << " lines";
+  EXPECT_EQ(r.no_offer_violations, 0u) << name << ": " << r.no_offer << " settled by line_no_offer";
+  return run;
+}
+
 // The exact stage's close calls (refine_ends): Q turned by a tiny angle about a random axis
 // (1e-13 to 1e-5 rad; translations on the half-integer grid), so that the sums' planes are
 // nearly parallel to each other and to the lines of nearly parallel planes f, g: constraints
@@ -420,27 +443,28 @@ TEST(MeshSigmaLines, ExactFitsDecidedByATie) {
 // equal the reference tier's, and the refinement is exercised.
 TEST(MeshSigmaLines, NearlyParallelPlanesRefineTheEnds) {
   std::mt19937_64 rng(505);
-  std::uniform_real_distribution<double> U(-1, 1);
   std::size_t lines = 0, refined = 0;
   for (const auto& [name, vp, vq] : {std::tuple{"comb3-cup1", comb(3), cup(1)}, std::tuple{"comb4-L", comb(4), l_block()}}) {
-    const Shape3 sp = mesh_shape(polycube(vp), std::string(name) + "-p"), sq = mesh_shape(polycube(vq), std::string(name) + "-q");
-    std::vector<std::pair<Pose3, Pose3>> poses;
-    for (const Vec3& t : grid_translations(vp, vq, rng, 12, 0.5, false)) {
-      const double angle = std::pow(10.0, -13 + 8 * (U(rng) + 1) / 2);
-      const Eigen::Quaterniond q(Eigen::AngleAxisd(angle, Vec3(U(rng), U(rng), U(rng)).normalized()));
-      poses.emplace_back(Pose3(), Pose3(q, t));
-    }
-    const LineCheckRun run = check_lines_at(sp, sq, poses, name, false, nullptr);
-    const LineCheckCounts& r = run.counts;
-    std::printf("%s turned slightly: %d poses, %zu lines, %zu with ties, %zu settled by line_no_offer, %zu λ refined\n",
-                name, r.poses, r.lines, r.ties, r.no_offer, run.refined);
-    EXPECT_GE(r.poses, 4) << name;
-    EXPECT_EQ(r.mismatches, 0u) << name << ": " << r.lines << " lines";
-    EXPECT_EQ(r.no_offer_violations, 0u) << name << ": " << r.no_offer << " settled by line_no_offer";
-    lines += r.lines, refined += run.refined;
+    const LineCheckRun run = check_turned(name, vp, vq, rng, 12, -13, -5, "slightly");
+    lines += run.counts.lines, refined += run.refined;
   }
   EXPECT_GE(lines, 50u);
   EXPECT_GE(refined, 20u) << lines;
+}
+
+// Ends ordered by their planes (end_plane, fine_compare): Q turned by an angle of a few ulps
+// (1e-16 to 1e-14 rad; translations on the half-integer grid), so that the exact ties of the
+// polycubes split into near ties — several constraints of different planes whose λ lie within
+// an ulp of a covering interval's end, so that end_plane must keep the right extremum of them,
+// and ends within an ulp of each other, ordered by the planes kept. Every line's outcome equals
+// the reference's and σ's bits the reference tier's. (The ties of the tests above are exact:
+// either plane gives the same end, so a wrong extremum there goes unseen.)
+TEST(MeshSigmaLines, UlpTurnsOrderEndsByTheirPlanes) {
+  std::mt19937_64 rng(606);
+  std::size_t lines = 0;
+  for (const auto& [name, vp, vq] : {std::tuple{"comb3-cup1", comb(3), cup(1)}, std::tuple{"comb4-L", comb(4), l_block()}})
+    lines += check_turned(name, vp, vq, rng, 16, -16, -14, "by ulps").counts.lines;
+  EXPECT_GE(lines, 50u);
 }
 
 // The planted bug in the filtered tier must make the comparison fail.
